@@ -1,0 +1,77 @@
+//! Exact fields as runtime *domain values* (STYLE.md 7.3).
+//!
+//! A field is a cheap-to-clone value `K: Field` (zero-sized for [`Q`], a shared context for
+//! a number field) whose methods do the arithmetic on `K::Elem`. Elements are canonical, so
+//! `==` on elements is mathematical equality. [`crate::poly::Poly`] and
+//! [`crate::matrix::Matrix`] store one `K`.
+//!
+//! | field | type | elements |
+//! |---|---|---|
+//! | $\mathbb{Q}$ | [`Q`] | [`Rational`] |
+//! | $\mathbb{Q}(\sqrt d)$ | [`QuadraticField`] | [`Quadratic`] $= a + b\sqrt d$ |
+//! | $\mathbb{Q}[t]/(m)$ | [`NumberField`] | [`NfElem`]: polynomials of degree $< \deg m$ |
+//! | $F(i)$ over a real $F$ | [`ComplexField`] | pairs $a + b i$ |
+//!
+//! Why hand-written: no maintained pure-Rust crate offers exact number fields with runtime
+//! moduli, embeddings and the ordering that control-theory algorithms need.
+
+use std::fmt;
+
+pub mod rational;
+pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
+
+/// An exact field, as a domain value.
+pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
+    /// Canonical representation: `==` is mathematical equality.
+    type Elem: Clone + PartialEq + fmt::Debug + Send + Sync;
+
+    fn zero(&self) -> Self::Elem;
+    fn one(&self) -> Self::Elem;
+    fn is_zero(&self, a: &Self::Elem) -> bool;
+    fn is_one(&self, a: &Self::Elem) -> bool {
+        *a == self.one()
+    }
+    fn add(&self, a: &Self::Elem, b: &Self::Elem) -> Self::Elem;
+    fn sub(&self, a: &Self::Elem, b: &Self::Elem) -> Self::Elem;
+    fn mul(&self, a: &Self::Elem, b: &Self::Elem) -> Self::Elem;
+    fn neg(&self, a: &Self::Elem) -> Self::Elem;
+    /// Multiplicative inverse; `None` exactly when `a` is zero.
+    fn inv(&self, a: &Self::Elem) -> Option<Self::Elem>;
+    /// `a / b`; `None` exactly when `b` is zero.
+    fn div(&self, a: &Self::Elem, b: &Self::Elem) -> Option<Self::Elem> {
+        self.inv(b).map(|bi| self.mul(a, &bi))
+    }
+    /// The image of a rational number.
+    fn from_rational(&self, q: &Rational) -> Self::Elem;
+    fn from_i64(&self, n: i64) -> Self::Elem {
+        self.from_rational(&Rational::from_integer(n.into()))
+    }
+    /// `Some(q)` when `a` lies in the prime field $\mathbb{Q}$.
+    fn to_rational(&self, a: &Self::Elem) -> Option<Rational>;
+    /// `acc += a * b`; override when the representation has a fused form.
+    fn mul_add_assign(&self, acc: &mut Self::Elem, a: &Self::Elem, b: &Self::Elem) {
+        *acc = self.add(acc, &self.mul(a, b));
+    }
+    /// `acc -= a * b`.
+    fn mul_sub_assign(&self, acc: &mut Self::Elem, a: &Self::Elem, b: &Self::Elem) {
+        *acc = self.sub(acc, &self.mul(a, b));
+    }
+    /// Exact display of an element (e.g. `-3/7`, `1 - sqrt(2)/2`, `2 + i`).
+    fn fmt_elem(&self, a: &Self::Elem) -> String;
+    /// LaTeX display of an element.
+    fn latex_elem(&self, a: &Self::Elem) -> String {
+        self.fmt_elem(a)
+    }
+    /// Floating-point approximation `(re, im)` under the field's marked embedding.
+    fn approx(&self, a: &Self::Elem) -> (f64, f64);
+    /// Complex conjugate under the marked embedding, when the field is closed under it.
+    fn conj(&self, a: &Self::Elem) -> Option<Self::Elem> {
+        let _ = a;
+        None
+    }
+    /// Is `a` zero-or-positive-real? Meaningful for real fields only (`None` otherwise).
+    fn sign(&self, a: &Self::Elem) -> Option<std::cmp::Ordering> {
+        let _ = a;
+        None
+    }
+}

@@ -1,0 +1,13 @@
+//! # exactlti
+//!
+//! Exact structure of linear time-invariant systems: no round-off, ever, on the exact path.
+//!
+//! Layers (acyclic): [`field`] → [`poly`] → [`matrix`] → jordan → system → realization →
+//! structure; `float` is a separate nalgebra backend used for cross-checks.
+#![allow(non_snake_case)]
+#![allow(clippy::needless_range_loop)]
+
+pub mod error;
+pub mod field;
+
+pub use error::{Error, Result};
