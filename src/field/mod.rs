@@ -17,7 +17,9 @@
 
 use std::fmt;
 
+pub mod quadratic;
 pub mod rational;
+pub use quadratic::{Quadratic, QuadraticField};
 pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
 
 /// An exact field, as a domain value.
