@@ -1,0 +1,19 @@
+//! Univariate polynomials over any exact [`Field`](crate::field::Field).
+//!
+//! [`Poly<K>`] is dense, low degree first, canonical (no trailing zeros), and stores its
+//! domain value `K`. Arithmetic, division with remainder, gcd and extended gcd, derivative,
+//! square-free factorization (Yun), composition, evaluation, resultant (Euclidean remainder
+//! sequence over the field), parsing and display.
+//!
+//! | entry point | computes |
+//! |---|---|
+//! | [`Poly::divrem`] | $f = q g + r$, $\deg r < \deg g$ |
+//! | [`Poly::gcd`], [`Poly::xgcd`] | monic $g = s f + t h$ |
+//! | [`Poly::squarefree`] | $f = c \prod_i f_i^i$, $f_i$ square-free, coprime |
+//! | [`Poly::resultant`] | $\mathrm{Res}(f, g)$ |
+//! | [`parse_poly_q`] | `x^4 + 4*x^2 + 1` into `Poly<Q>` |
+
+mod arith;
+mod parse;
+pub use arith::*;
+pub use parse::parse_poly_q;
