@@ -9,6 +9,7 @@
 
 pub mod error;
 pub mod field;
+pub mod matrix;
 pub mod poly;
 
 pub use error::{Error, Result};
