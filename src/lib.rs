@@ -11,5 +11,6 @@ pub mod error;
 pub mod field;
 pub mod matrix;
 pub mod poly;
+pub mod report;
 
 pub use error::{Error, Result};
