@@ -11,6 +11,8 @@ pub mod error;
 pub mod field;
 pub mod matrix;
 pub mod poly;
+pub mod realization;
 pub mod report;
+pub mod system;
 
 pub use error::{Error, Result};
