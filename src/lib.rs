@@ -6,6 +6,7 @@
 //! structure; `float` is a separate nalgebra backend used for cross-checks.
 #![allow(non_snake_case)]
 #![allow(clippy::needless_range_loop)]
+#![allow(clippy::wrong_self_convention)]
 
 pub mod error;
 pub mod field;
