@@ -1,0 +1,102 @@
+//! One function per command: load, compute, report.
+
+use super::load::{Loaded, Typed, load_system};
+use super::{Command, Failure, LinalgOp, MethodArg};
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::realization::{self, MinrealMethod};
+use crate::report::{Report, Value, str_list};
+use std::path::Path;
+
+/// Dispatches a command.
+pub fn execute(cmd: &Command) -> Result<Report, Failure> {
+    match cmd {
+        Command::Linalg { op, file } => linalg(*op, file),
+        Command::Minreal { file, method } => minreal(file, *method),
+        Command::Standard { file } => standard(file),
+        other => Err(Failure { code: 2, message: format!("command not available in this build: {other:?}") }),
+    }
+}
+
+/// Runs `f` over whichever field the file is in.
+macro_rules! over_ground {
+    ($loaded:expr, |$t:ident| $body:expr) => {
+        match &$loaded {
+            Loaded::Q(_, $t) => $body,
+            Loaded::Quadratic(_, $t) => $body,
+        }
+    };
+}
+
+fn with_path(path: &Path, e: crate::error::Error) -> Failure {
+    let f: Failure = e.into();
+    Failure { code: f.code, message: format!("{}: {}", path.display(), f.message) }
+}
+
+fn linalg_typed<K: Field>(op: LinalgOp, a: &Matrix<K>, path: &Path) -> Result<Report, Failure> {
+    let e = |err| with_path(path, err);
+    let r = Report::titled(format!("linalg {op:?}").to_lowercase());
+    Ok(match op {
+        LinalgOp::Rank => r.int("rank", a.rank()),
+        LinalgOp::Det => r.str("det", a.field().fmt_elem(&a.det().map_err(e)?)),
+        LinalgOp::Charpoly => r.str("charpoly", a.charpoly().map_err(e)?.to_string()),
+        LinalgOp::Minpoly => r.str("minpoly", a.minpoly().map_err(e)?.to_string()),
+        LinalgOp::Inverse => r.matrix("matrix", &a.inverse().map_err(e)?),
+        LinalgOp::Rref => {
+            let (m, piv) = a.rref();
+            r.matrix("matrix", &m).with("pivots", Value::List(piv.iter().map(|&p| Value::Int(p as i64 + 1)).collect())).int("rank", piv.len())
+        }
+        LinalgOp::Nullspace => {
+            let n = a.nullspace();
+            let basis = (0..n.ncols()).map(|j| Value::List(n.col(j).iter().map(|x| Value::Str(a.field().fmt_elem(x))).collect())).collect();
+            r.with("basis", Value::List(basis)).int("nullity", n.ncols())
+        }
+    })
+}
+
+fn linalg(op: LinalgOp, file: &Path) -> Result<Report, Failure> {
+    let l = load_system(file)?;
+    over_ground!(l, |t| linalg_typed(op, &t.a_raw, file))
+}
+
+fn minreal_typed<K: Field>(t: &Typed<K>, m: MinrealMethod, path: &Path) -> Result<Report, Failure> {
+    let r = realization::minimal(&t.ss, m).map_err(|e| with_path(path, e))?;
+    Ok(r.report())
+}
+
+fn minreal(file: &Path, method: MethodArg) -> Result<Report, Failure> {
+    let l = load_system(file)?;
+    let m = match method {
+        MethodArg::Kalman => MinrealMethod::Kalman,
+        MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
+        MethodArg::HoKalman => MinrealMethod::HoKalman,
+        MethodArg::Jordan => MinrealMethod::Jordan,
+        MethodArg::Era => return Err(Failure { code: 2, message: "method era is not available in this build".into() }),
+    };
+    over_ground!(l, |t| minreal_typed(t, m, file))
+}
+
+fn standard_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
+    match &t.descriptor {
+        Some(d) => Ok(realization::descriptor_to_standard(d).map_err(|e| with_path(path, e))?.report()),
+        None => Ok(Report::titled("descriptor to standard form")
+            .int("order", t.ss.nstates())
+            .int("removed_infinite", 0)
+            .matrix("A", &t.ss.a)
+            .matrix("B", &t.ss.b)
+            .matrix("C", &t.ss.c)
+            .matrix("D", &t.ss.d)
+            .bool("verified", true)
+            .with("note", Value::Str("no E in the file: the system is already in standard form".into()))),
+    }
+}
+
+fn standard(file: &Path) -> Result<Report, Failure> {
+    let l = load_system(file)?;
+    over_ground!(l, |t| standard_typed(t, file))
+}
+
+#[allow(dead_code)]
+fn unused() -> Value {
+    str_list(vec![])
+}
