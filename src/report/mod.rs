@@ -5,6 +5,8 @@
 //! becomes `"T": [["1", "-1/2"], ...]` plus `"T_approx": [[1.0, -0.5], ...]` as the CLI
 //! contract requires.
 
+pub mod plot;
+
 use crate::field::Field;
 use crate::matrix::Matrix;
 use serde_json::{Map, Number, Value as Json};
