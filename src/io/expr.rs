@@ -549,7 +549,10 @@ mod tests {
         assert_eq!(ev("i^2").unwrap(), "-1");
         assert_eq!(ev("1.5e-3").unwrap(), "3/2000");
         assert_eq!(ev("2e").unwrap_err(), "'2e' is not a number");
-        assert_eq!(ev("2 e").unwrap_err(), "unexpected 'e' at position 3 in '2 e'");
+        assert_eq!(
+            ev("2 e").unwrap_err(),
+            "unexpected 'e' at position 3 in '2 e'"
+        );
     }
     #[test]
     fn errors() {

@@ -97,8 +97,11 @@ pub(crate) fn from_toml_text(text: &str, file: &str) -> Result<Raw, InputError> 
 }
 
 fn from_toml_table(t: DeTable<'_>) -> Raw {
+    // the map is ordered by key; restore file order from the key spans
+    let mut kv: Vec<_> = t.into_iter().collect();
+    kv.sort_by_key(|(k, _)| k.span().start);
     Raw::Table(
-        t.into_iter()
+        kv.into_iter()
             .map(|(k, v)| (k.into_inner().into_owned(), from_toml(v.into_inner())))
             .collect(),
     )
