@@ -19,7 +19,8 @@
 //! never parameter names.
 //!
 //! Every input gives a value or an [`ExprError`] in time bounded by the input length:
-//! exponents satisfy $|n| \le 10^4$, intermediate numbers stay below $2^{20}$ bits,
+//! exponents satisfy $|n| \le 10^4$ (also in literals such as `1e-3`), literals have at most
+//! 4000 characters, intermediate numbers stay below $2^{14}$ bits (about 4900 digits),
 //! nesting below 256 levels, radicands below $10^{18}$ (so the square-free split is exact).
 //!
 //! | entry point | computes |
@@ -36,7 +37,11 @@ use std::fmt;
 /// Largest accepted |exponent| in `x^n`.
 pub const MAX_EXPONENT: u32 = 10_000;
 /// Largest accepted size (bits of a numerator or denominator) of any intermediate value.
-pub const MAX_BITS: u64 = 1 << 20;
+/// num-bigint's gcd (binary, quadratic) makes one operation on numbers of this size cost
+/// tens of milliseconds at most; beyond it an input could stall for seconds.
+pub const MAX_BITS: u64 = 1 << 14;
+/// Longest accepted number literal (characters).
+pub const MAX_NUMBER_LEN: usize = 4_000;
 /// Largest accepted nesting depth of parentheses and unary operators.
 pub const MAX_DEPTH: usize = 256;
 
@@ -82,7 +87,7 @@ pub fn is_parameter_name(s: &str) -> bool {
 /// use exactlti::io::{ExactScalar, Ground, eval_expr};
 /// let p = vec![("m".to_string(), ExactScalar::from_i64(1500))];
 /// let (x, g) = eval_expr("1/m + 0.08", &p, &Ground::Rational).unwrap();
-/// assert_eq!(g.fmt_scalar(&x), "361/4500");
+/// assert_eq!(g.fmt_scalar(&x), "121/1500");
 /// let (x, g) = eval_expr("1 - sqrt(8)/4", &[], &Ground::Rational).unwrap();
 /// assert_eq!(g.fmt_scalar(&x), "1 - sqrt(2)/2");
 /// assert_eq!(g.to_string(), "QQ(sqrt(2))");
@@ -126,6 +131,41 @@ pub(crate) struct Value {
     pub k: Option<QuadraticField>,
 }
 
+/// `x + y`, skipping num-rational's gcd reduction when both are integers (its binary gcd
+/// is quadratic even for `gcd(x, 1)`).
+fn q_add(x: &Rational, y: &Rational) -> Rational {
+    if x.is_integer() && y.is_integer() {
+        Rational::from_integer(x.numer() + y.numer())
+    } else {
+        x + y
+    }
+}
+
+/// `x * y`, with the same integer shortcut as [`q_add`].
+fn q_mul(x: &Rational, y: &Rational) -> Rational {
+    if x.is_zero() || y.is_zero() {
+        Rational::zero()
+    } else if x.is_integer() && y.is_integer() {
+        Rational::from_integer(x.numer() * y.numer())
+    } else {
+        x * y
+    }
+}
+
+/// `x^n` for a rational `x`: numerator and denominator powered separately (already in
+/// lowest terms, no gcd needed). `x` must be non-zero when `n < 0`.
+fn q_pow(x: &Rational, n: u32, negative: bool) -> Rational {
+    let p = num_traits::pow(x.numer().clone(), n as usize);
+    let q = num_traits::pow(x.denom().clone(), n as usize);
+    if !negative {
+        Rational::new_raw(p, q)
+    } else if p.is_negative() {
+        Rational::new_raw(-q, -p)
+    } else {
+        Rational::new_raw(q, p)
+    }
+}
+
 fn bits(q: &Rational) -> u64 {
     q.numer().bits().max(q.denom().bits())
 }
@@ -162,7 +202,7 @@ impl Value {
     }
     fn add(&self, o: &Value) -> Result<Value, ExprError> {
         let k = self.join(o)?;
-        Value::new(&self.a + &o.a, &self.b + &o.b, k).checked()
+        Value::new(q_add(&self.a, &o.a), q_add(&self.b, &o.b), k).checked()
     }
     fn neg(&self) -> Value {
         Value::new(-&self.a, -&self.b, self.k.clone())
@@ -173,10 +213,10 @@ impl Value {
             Rational::zero()
         } else {
             let d = Rational::from_integer(k.as_ref().map_or_else(BigInt::zero, |k| k.d().clone()));
-            d * &self.b * &o.b
+            q_mul(&d, &q_mul(&self.b, &o.b))
         };
-        let a = &self.a * &o.a + bb;
-        let b = &self.a * &o.b + &self.b * &o.a;
+        let a = q_add(&q_mul(&self.a, &o.a), &bb);
+        let b = q_add(&q_mul(&self.a, &o.b), &q_mul(&self.b, &o.a));
         Value::new(a, b, k).checked()
     }
     fn inv(&self) -> Result<Value, ExprError> {
@@ -212,6 +252,9 @@ impl Value {
         }
         if self.size().saturating_mul(u64::from(n)) > MAX_BITS {
             return err(format!("power too large (more than {MAX_BITS} bits)"));
+        }
+        if self.k.is_none() {
+            return Value::rational(q_pow(&self.a, n, e.a.is_negative())).checked();
         }
         let mut result = Value::rational(Rational::one());
         let mut base = self.clone();
@@ -463,7 +506,7 @@ impl Parser<'_> {
         match tok {
             Tok::Num(s) => {
                 self.pos += 1;
-                let q = parse_rational(&s).map_err(|m| ExprError { msg: m })?;
+                let q = parse_number(&s)?;
                 let v = Value::rational(q).checked()?;
                 // `2i`, `0.5i`: an imaginary literal; any other letters glued on are an error
                 if let Some(Token {
@@ -512,6 +555,22 @@ impl Parser<'_> {
             }),
         }
     }
+}
+
+/// A number literal, within the size limits (checked before any big-number work).
+pub(crate) fn parse_number(s: &str) -> Result<Rational, ExprError> {
+    if s.len() > MAX_NUMBER_LEN {
+        return err(format!("number with more than {MAX_NUMBER_LEN} characters"));
+    }
+    if let Some(p) = s.find(['e', 'E']) {
+        let e = s[p + 1..].trim_start_matches(['+', '-']);
+        if e.len() > 5 || e.parse::<u32>().is_ok_and(|e| e > MAX_EXPONENT) {
+            return err(format!(
+                "exponent of '{s}' is too large (at most {MAX_EXPONENT} in absolute value)"
+            ));
+        }
+    }
+    parse_rational(s).map_err(|m| ExprError { msg: m })
 }
 
 fn imaginary_unit() -> Value {
@@ -584,6 +643,15 @@ mod tests {
                 .contains("nested too deeply")
         );
         assert!(ev("sqrt(10^40+1)").unwrap_err().contains("too large"));
+        assert!(ev("9999^9999").unwrap_err().contains("too large"));
+        assert!(ev("1e-10001").unwrap_err().contains("too large"));
+        assert!(
+            ev(&"1".repeat(6000))
+                .unwrap_err()
+                .contains("more than 4000")
+        );
+        assert_eq!(ev("(-2/3)^-3").unwrap(), "-27/8");
+        assert_eq!(ev("(-2/3)^3").unwrap(), "-8/27");
     }
     #[test]
     fn names() {

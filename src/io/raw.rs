@@ -85,7 +85,7 @@ pub(crate) fn from_toml_text(text: &str, file: &str) -> Result<Raw, InputError> 
         let at = e
             .span()
             .map(|s| {
-                let before = &text[..s.start.min(text.len())];
+                let before = text.get(..s.start).unwrap_or(text);
                 let line = before.matches('\n').count() + 1;
                 let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
                 format!(" at line {line}, column {col}")

@@ -32,7 +32,6 @@ use super::expr::{self, Value, is_parameter_name, referenced_names};
 use super::matlab::{FieldScan, ragged_msg, split_matlab_matrix};
 use super::raw::{self, Raw};
 use super::{ExactScalar, Ground, InputError, MatrixEntries};
-use crate::field::parse_rational;
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -329,7 +328,9 @@ fn eval_parameters(
 /// One entry: a number (exact text) or an expression string.
 fn eval_scalar(r: &Raw, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<Value, String> {
     match r {
-        Raw::Number(s) => parse_rational(s).map(Value::rational),
+        Raw::Number(s) => expr::parse_number(s)
+            .map(Value::rational)
+            .map_err(|e| e.msg),
         Raw::Str(s) => expr::eval_with(s, lookup).map_err(|e| e.msg),
         other => Err(format!(
             "expected a number or a string, found {}",
