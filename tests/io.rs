@@ -474,8 +474,17 @@ fn noise_strategy() -> impl Strategy<Value = String> {
     prop::collection::vec(piece, 0..40).prop_map(|v| v.concat())
 }
 
+/// 256 cases, scaled by `EXACTLTI_TEST_MULTIPLIER` (STYLE.md 7.5).
+fn cases() -> u32 {
+    let k = std::env::var("EXACTLTI_TEST_MULTIPLIER")
+        .ok()
+        .and_then(|v| v.parse::<u32>().ok())
+        .unwrap_or(1);
+    256 * k.max(1)
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
 
     #[test]
     fn random_valid_expressions_match_rational_arithmetic(x in ex_strategy()) {
