@@ -8,9 +8,10 @@
 #![allow(clippy::needless_range_loop)]
 #![allow(clippy::wrong_self_convention)]
 
-// pub mod cli; (enabled once io lands)
+pub mod cli;
 pub mod error;
 pub mod field;
+pub mod io;
 pub mod matrix;
 pub mod poly;
 pub mod realization;

@@ -14,7 +14,10 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         Command::Linalg { op, file } => linalg(*op, file),
         Command::Minreal { file, method } => minreal(file, *method),
         Command::Standard { file } => standard(file),
-        other => Err(Failure { code: 2, message: format!("command not available in this build: {other:?}") }),
+        other => Err(Failure {
+            code: 2,
+            message: format!("command not available in this build: {other:?}"),
+        }),
     }
 }
 
@@ -30,7 +33,10 @@ macro_rules! over_ground {
 
 fn with_path(path: &Path, e: crate::error::Error) -> Failure {
     let f: Failure = e.into();
-    Failure { code: f.code, message: format!("{}: {}", path.display(), f.message) }
+    Failure {
+        code: f.code,
+        message: format!("{}: {}", path.display(), f.message),
+    }
 }
 
 fn linalg_typed<K: Field>(op: LinalgOp, a: &Matrix<K>, path: &Path) -> Result<Report, Failure> {
@@ -44,12 +50,27 @@ fn linalg_typed<K: Field>(op: LinalgOp, a: &Matrix<K>, path: &Path) -> Result<Re
         LinalgOp::Inverse => r.matrix("matrix", &a.inverse().map_err(e)?),
         LinalgOp::Rref => {
             let (m, piv) = a.rref();
-            r.matrix("matrix", &m).with("pivots", Value::List(piv.iter().map(|&p| Value::Int(p as i64 + 1)).collect())).int("rank", piv.len())
+            r.matrix("matrix", &m)
+                .with(
+                    "pivots",
+                    Value::List(piv.iter().map(|&p| Value::Int(p as i64 + 1)).collect()),
+                )
+                .int("rank", piv.len())
         }
         LinalgOp::Nullspace => {
             let n = a.nullspace();
-            let basis = (0..n.ncols()).map(|j| Value::List(n.col(j).iter().map(|x| Value::Str(a.field().fmt_elem(x))).collect())).collect();
-            r.with("basis", Value::List(basis)).int("nullity", n.ncols())
+            let basis = (0..n.ncols())
+                .map(|j| {
+                    Value::List(
+                        n.col(j)
+                            .iter()
+                            .map(|x| Value::Str(a.field().fmt_elem(x)))
+                            .collect(),
+                    )
+                })
+                .collect();
+            r.with("basis", Value::List(basis))
+                .int("nullity", n.ncols())
         }
     })
 }
@@ -71,14 +92,21 @@ fn minreal(file: &Path, method: MethodArg) -> Result<Report, Failure> {
         MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
         MethodArg::HoKalman => MinrealMethod::HoKalman,
         MethodArg::Jordan => MinrealMethod::Jordan,
-        MethodArg::Era => return Err(Failure { code: 2, message: "method era is not available in this build".into() }),
+        MethodArg::Era => {
+            return Err(Failure {
+                code: 2,
+                message: "method era is not available in this build".into(),
+            });
+        }
     };
     over_ground!(l, |t| minreal_typed(t, m, file))
 }
 
 fn standard_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
     match &t.descriptor {
-        Some(d) => Ok(realization::descriptor_to_standard(d).map_err(|e| with_path(path, e))?.report()),
+        Some(d) => Ok(realization::descriptor_to_standard(d)
+            .map_err(|e| with_path(path, e))?
+            .report()),
         None => Ok(Report::titled("descriptor to standard form")
             .int("order", t.ss.nstates())
             .int("removed_infinite", 0)
@@ -87,7 +115,10 @@ fn standard_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure
             .matrix("C", &t.ss.c)
             .matrix("D", &t.ss.d)
             .bool("verified", true)
-            .with("note", Value::Str("no E in the file: the system is already in standard form".into()))),
+            .with(
+                "note",
+                Value::Str("no E in the file: the system is already in standard form".into()),
+            )),
     }
 }
 

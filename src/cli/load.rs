@@ -41,21 +41,43 @@ impl Loaded {
     pub fn rational(&self, what: &str) -> Result<&Typed<Q>, Failure> {
         match self {
             Loaded::Q(_, t) => Ok(t),
-            Loaded::Quadratic(f, _) => Err(Failure { code: 2, message: format!("{}: {what} needs rational matrices; this file's entries lie in {}", f.path, f.ground) }),
+            Loaded::Quadratic(f, _) => Err(Failure {
+                code: 2,
+                message: format!(
+                    "{}: {what} needs rational matrices; this file's entries lie in {}",
+                    f.path, f.ground
+                ),
+            }),
         }
     }
 }
 
 fn entries_q(m: &MatrixEntries) -> Matrix<Q> {
-    Matrix::from_vec(Q, m.nrows, m.ncols, m.data.iter().map(|x| x.a.clone()).collect())
+    Matrix::from_vec(
+        Q,
+        m.nrows,
+        m.ncols,
+        m.data.iter().map(|x| x.a.clone()).collect(),
+    )
 }
 
 fn entries_k(k: &QuadraticField, m: &MatrixEntries) -> Matrix<QuadraticField> {
-    Matrix::from_vec(k.clone(), m.nrows, m.ncols, m.data.iter().map(|x| x.to_quadratic()).collect())
+    Matrix::from_vec(
+        k.clone(),
+        m.nrows,
+        m.ncols,
+        m.data.iter().map(|x| x.to_quadratic()).collect(),
+    )
 }
 
-fn typed<K: Field>(f: &SystemFile, conv: impl Fn(&MatrixEntries) -> Matrix<K>) -> Result<Typed<K>, Failure> {
-    let fail = |e: crate::error::Error| Failure { code: 2, message: format!("{}: {e}", f.path) };
+fn typed<K: Field>(
+    f: &SystemFile,
+    conv: impl Fn(&MatrixEntries) -> Matrix<K>,
+) -> Result<Typed<K>, Failure> {
+    let fail = |e: crate::error::Error| Failure {
+        code: 2,
+        message: format!("{}: {e}", f.path),
+    };
     let get = |m: &Option<MatrixEntries>| m.as_ref().map(&conv);
     if let Some(a) = get(&f.a) {
         let b = get(&f.b).expect("validated");
@@ -64,20 +86,42 @@ fn typed<K: Field>(f: &SystemFile, conv: impl Fn(&MatrixEntries) -> Matrix<K>) -
         if let Some(e) = get(&f.e) {
             let desc = Descriptor::new(e, a, b, c, d).map_err(fail)?;
             let sf = descriptor_to_standard(&desc).map_err(fail)?;
-            return Ok(Typed { a_raw: desc.a.clone(), descriptor: Some(desc), ss: sf.system });
+            return Ok(Typed {
+                a_raw: desc.a.clone(),
+                descriptor: Some(desc),
+                ss: sf.system,
+            });
         }
         let ss = StateSpace::new(a, b, c, d).map_err(fail)?;
-        return Ok(Typed { a_raw: ss.a.clone(), descriptor: None, ss });
+        return Ok(Typed {
+            a_raw: ss.a.clone(),
+            descriptor: None,
+            ss,
+        });
     }
     let (m, l, k, ff) = (get(&f.m), get(&f.l), get(&f.k), get(&f.f));
     let (Some(m), Some(l), Some(k), Some(ff)) = (m, l, k, ff) else {
-        return Err(Failure { code: 2, message: format!("{}: the file gives neither A nor the second-order keys M, L, K, F", f.path) });
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{}: the file gives neither A nor the second-order keys M, L, K, F",
+                f.path
+            ),
+        });
     };
-    let ss = StateSpace::from_second_order(&m, &l, &k, &ff, get(&f.c).as_ref(), get(&f.d).as_ref()).map_err(|e| match e {
-        crate::error::Error::Singular => Failure { code: 2, message: format!("{}: key M: the mass matrix is singular", f.path) },
-        e => fail(e),
-    })?;
-    Ok(Typed { a_raw: ss.a.clone(), descriptor: None, ss })
+    let ss = StateSpace::from_second_order(&m, &l, &k, &ff, get(&f.c).as_ref(), get(&f.d).as_ref())
+        .map_err(|e| match e {
+            crate::error::Error::Singular => Failure {
+                code: 2,
+                message: format!("{}: key M: the mass matrix is singular", f.path),
+            },
+            e => fail(e),
+        })?;
+    Ok(Typed {
+        a_raw: ss.a.clone(),
+        descriptor: None,
+        ss,
+    })
 }
 
 /// Reads and types a system file.

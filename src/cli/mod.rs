@@ -28,7 +28,11 @@ pub enum Format {
 }
 
 #[derive(Parser, Debug)]
-#[command(name = "exactlti", version, about = "Exact structure of linear time-invariant systems: Jordan forms, minimal realizations, special coordinate basis, mechanical normal form")]
+#[command(
+    name = "exactlti",
+    version,
+    about = "Exact structure of linear time-invariant systems: Jordan forms, minimal realizations, special coordinate basis, mechanical normal form"
+)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
@@ -141,14 +145,24 @@ pub struct Failure {
 
 impl From<Error> for Failure {
     fn from(e: Error) -> Self {
-        let code = if matches!(e, Error::Verification(_)) { 1 } else { 2 };
-        Failure { code, message: e.to_string() }
+        let code = if matches!(e, Error::Verification(_)) {
+            1
+        } else {
+            2
+        };
+        Failure {
+            code,
+            message: e.to_string(),
+        }
     }
 }
 
 impl From<crate::io::InputError> for Failure {
     fn from(e: crate::io::InputError) -> Self {
-        Failure { code: 2, message: e.to_string() }
+        Failure {
+            code: 2,
+            message: e.to_string(),
+        }
     }
 }
 
@@ -166,15 +180,21 @@ pub fn run(cli: Cli) -> i32 {
     let format = cli.format;
     let limit = cli.max_seconds;
     let (tx, rx) = mpsc::channel();
-    let handle = std::thread::Builder::new().stack_size(256 << 20).spawn(move || {
-        let r = commands::execute(&cli.command);
-        let _ = tx.send(r);
-    });
+    let handle = std::thread::Builder::new()
+        .stack_size(256 << 20)
+        .spawn(move || {
+            let r = commands::execute(&cli.command);
+            let _ = tx.send(r);
+        });
     if handle.is_err() {
         eprintln!("exactlti: could not start the worker thread");
         return 1;
     }
-    let wait = if limit.is_finite() && limit > 0.0 { Duration::from_secs_f64(limit.min(1e7)) } else { Duration::from_secs(600) };
+    let wait = if limit.is_finite() && limit > 0.0 {
+        Duration::from_secs_f64(limit.min(1e7))
+    } else {
+        Duration::from_secs(600)
+    };
     match rx.recv_timeout(wait) {
         Ok(Ok(report)) => {
             print!("{}", render(&report, format));
@@ -191,7 +211,9 @@ pub fn run(cli: Cli) -> i32 {
             f.code
         }
         Err(mpsc::RecvTimeoutError::Timeout) => {
-            eprintln!("exactlti: stopped after --max-seconds {limit}: the exact computation did not finish in time");
+            eprintln!(
+                "exactlti: stopped after --max-seconds {limit}: the exact computation did not finish in time"
+            );
             2
         }
         Err(mpsc::RecvTimeoutError::Disconnected) => {
