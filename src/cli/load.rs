@@ -23,6 +23,7 @@ pub struct Typed<K: Field> {
 
 /// A loaded system file.
 #[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
 pub enum Loaded {
     Q(SystemFile, Typed<Q>),
     Quadratic(SystemFile, Typed<QuadraticField>),
