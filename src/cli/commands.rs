@@ -14,6 +14,7 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         Command::Linalg { op, file } => linalg(*op, file),
         Command::Minreal { file, method } => minreal(file, *method),
         Command::Standard { file } => standard(file),
+        Command::Analyze { file } => analyze(file.as_deref()),
         other => Err(Failure {
             code: 2,
             message: format!("command not available in this build: {other:?}"),
@@ -127,7 +128,77 @@ fn standard(file: &Path) -> Result<Report, Failure> {
     over_ground!(l, |t| standard_typed(t, file))
 }
 
-#[allow(dead_code)]
-fn unused() -> Value {
-    str_list(vec![])
+/// The built-in example of `analyze` without a file.
+pub const BUILTIN_EXAMPLE: &str = include_str!("../../data/sliding-masses.json");
+
+fn load_or_builtin(file: Option<&Path>) -> Result<Loaded, Failure> {
+    match file {
+        Some(f) => load_system(f),
+        None => super::load::load_text(BUILTIN_EXAMPLE, "built-in:sliding-masses.json"),
+    }
+}
+
+fn system_section<K: Field>(f: &crate::io::SystemFile, t: &Typed<K>) -> Report {
+    let mut r = Report::titled("system")
+        .str("file", f.path.clone())
+        .str("name", f.name.clone().unwrap_or_default())
+        .str("field", f.ground.to_string())
+        .int("states", t.ss.nstates())
+        .int("inputs", t.ss.ninputs())
+        .int("outputs", t.ss.noutputs());
+    if let Some(d) = &t.descriptor {
+        r = r
+            .str("form", "descriptor")
+            .int("descriptor_states", d.nstates());
+    } else if f.is_second_order() {
+        r = r.str("form", "second order");
+    } else {
+        r = r.str("form", "state space");
+    }
+    r.str(
+        "charpoly",
+        t.ss.a
+            .charpoly()
+            .map(|p| p.to_string_var("s"))
+            .unwrap_or_default(),
+    )
+}
+
+fn realization_section<K: Field>(t: &Typed<K>) -> Result<Report, Failure> {
+    let s = &t.ss;
+    let rc = realization::controllability_matrix(&s.a, &s.b).rank();
+    let ro = realization::observability_matrix(&s.a, &s.c).rank();
+    let min = realization::minimal(s, MinrealMethod::Kalman)?;
+    let tf = s.transfer_matrix()?;
+    Ok(Report::titled("realization")
+        .int("controllability_rank", rc)
+        .int("observability_rank", ro)
+        .bool("controllable", rc == s.nstates())
+        .bool("observable", ro == s.nstates())
+        .int("mcmillan_degree", min.order)
+        .with(
+            "transfer_matrix",
+            Value::List(tf.to_strings().into_iter().map(str_list).collect()),
+        )
+        .obj("minimal_realization", min.report()))
+}
+
+fn analyze_typed<K: Field>(f: &crate::io::SystemFile, t: &Typed<K>) -> Result<Report, Failure> {
+    let mut r = Report::titled(format!(
+        "exactlti analysis: {}",
+        f.name.clone().unwrap_or_else(|| f.path.clone())
+    ));
+    r.push("system", Value::Obj(system_section(f, t)));
+    if t.ss.ninputs() > 0 && t.ss.noutputs() > 0 {
+        r.push("realization", Value::Obj(realization_section(t)?));
+    }
+    Ok(r)
+}
+
+fn analyze(file: Option<&Path>) -> Result<Report, Failure> {
+    let l = load_or_builtin(file)?;
+    match &l {
+        Loaded::Q(f, t) => analyze_typed(f, t),
+        Loaded::Quadratic(f, t) => analyze_typed(f, t),
+    }
 }

@@ -2,7 +2,7 @@
 
 use super::Failure;
 use crate::field::{Field, Q, QuadraticField};
-use crate::io::{Ground, MatrixEntries, SystemFile, read_system_file};
+use crate::io::{Ground, MatrixEntries, SystemFile, parse_system_json, read_system_file};
 use crate::matrix::Matrix;
 use crate::realization::descriptor_to_standard;
 use crate::system::{Descriptor, StateSpace};
@@ -125,12 +125,23 @@ fn typed<K: Field>(
     })
 }
 
+/// Types a JSON system given as text (for built-in examples).
+///
+/// # Errors
+/// Exit 2 with the reader's message.
+pub fn load_text(text: &str, name: &str) -> Result<Loaded, Failure> {
+    type_file(parse_system_json(text, name)?)
+}
+
 /// Reads and types a system file.
 ///
 /// # Errors
 /// Exit 2 with the reader's one-line message.
 pub fn load_system(path: &Path) -> Result<Loaded, Failure> {
-    let f = read_system_file(path)?;
+    type_file(read_system_file(path)?)
+}
+
+fn type_file(f: SystemFile) -> Result<Loaded, Failure> {
     match f.ground.clone() {
         Ground::Rational => {
             let t = typed(&f, entries_q)?;

@@ -144,6 +144,7 @@ impl Report {
                     s.push_str(&format!("{pad}{k} ({}x{}) =\n", mo.nrows, mo.ncols));
                     s.push_str(&text_matrix(&mo.exact, indent + 2));
                 }
+                Value::Obj(r) if r.title.is_some() => r.text_into(s, indent),
                 Value::Obj(r) => {
                     s.push_str(&format!("{pad}{k}:\n"));
                     r.text_into(s, indent + 2);
