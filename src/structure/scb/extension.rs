@@ -27,7 +27,9 @@ impl<K: Field> Scb<K> {
         let aaa = self.a.submatrix(ra.start, ra.end, ra.start, ra.end);
         let acc = self.a.submatrix(rc.start, rc.end, rc.start, rc.end);
         let aca = self.a.submatrix(rc.start, rc.end, ra.start, ra.end);
-        let bc = self.b.submatrix(rc.start, rc.end, self.m0 + md, self.b.ncols());
+        let bc = self
+            .b
+            .submatrix(rc.start, rc.end, self.m0 + md, self.b.ncols());
         if na == 0 || nc == 0 {
             return Ok((self.clone(), Matrix::zeros(k, mc, na)));
         }
@@ -42,7 +44,9 @@ impl<K: Field> Scb<K> {
             .solve(&rhs)?
             .ok_or_else(|| Error::Verification("A_ca could not be matched with B_c".into()))?;
         let mm = sol.submatrix(0, nc * na, 0, 1).unvec(nc, na)?;
-        let e = sol.submatrix(nc * na, nc * na + mc * na, 0, 1).unvec(mc, na)?;
+        let e = sol
+            .submatrix(nc * na, nc * na + mc * na, 0, 1)
+            .unvec(mc, na)?;
         let n = self.nstates();
         let mut t = Matrix::identity(k.clone(), n); // x' = T x
         t.set_block(rc.start, ra.start, &mm);

@@ -148,7 +148,12 @@ pub fn scb<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>)
     Ok(s)
 }
 
-fn check_shapes<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>) -> Result<()> {
+fn check_shapes<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+) -> Result<()> {
     a.check_square("scb")?;
     let n = a.nrows();
     b.check_shape("scb (B)", (n, b.ncols()))?;
@@ -168,7 +173,12 @@ impl<K: Field> Scb<K> {
     /// State index ranges of $x_a, x_b, x_c, x_d$.
     pub fn ranges(&self) -> [std::ops::Range<usize>; 4] {
         let [na, nb, nc, nd] = self.dims;
-        [0..na, na..na + nb, na + nb..na + nb + nc, na + nb + nc..na + nb + nc + nd]
+        [
+            0..na,
+            na..na + nb,
+            na + nb..na + nb + nc,
+            na + nb + nc..na + nb + nc + nd,
+        ]
     }
     /// $A_{aa}$ (zero dynamics).
     pub fn a_aa(&self) -> Matrix<K> {
@@ -199,15 +209,25 @@ impl<K: Field> Scb<K> {
     /// Report with the CLI contract's keys for `scb`.
     pub fn report(&self) -> Report {
         let [na, nb, nc, nd] = self.dims;
-        let dims = Report::new().int("a", na).int("b", nb).int("c", nc).int("d", nd);
+        let dims = Report::new()
+            .int("a", na)
+            .int("b", nb)
+            .int("c", nc)
+            .int("d", nd);
         Report::titled("special coordinate basis")
             .obj("dims", dims)
             .list(
                 "chains",
                 self.chains.iter().map(|&q| Value::Int(q as i64)).collect(),
             )
-            .list("invariant_zeros", zero_items(&self.invariant_zero_polynomial()))
-            .str("zero_polynomial", self.invariant_zero_polynomial().to_string_var("s"))
+            .list(
+                "invariant_zeros",
+                zero_items(&self.invariant_zero_polynomial()),
+            )
+            .str(
+                "zero_polynomial",
+                self.invariant_zero_polynomial().to_string_var("s"),
+            )
             .bool("left_invertible", self.left_invertible)
             .bool("right_invertible", self.right_invertible)
             .with(
@@ -244,9 +264,10 @@ pub(crate) fn zero_items<K: Field>(p: &Poly<K>) -> Vec<Value> {
             if f.deg() == 1 {
                 let root = k.neg(&k.div(&f.coeff(0), &f.coeff(1)).expect("non-zero lc"));
                 let (re, im) = k.approx(&root);
-                r = r
-                    .str("value", k.fmt_elem(&root))
-                    .with("approx", Value::List(vec![Value::Float(re), Value::Float(im)]));
+                r = r.str("value", k.fmt_elem(&root)).with(
+                    "approx",
+                    Value::List(vec![Value::Float(re), Value::Float(im)]),
+                );
             }
             Value::Obj(r)
         })
@@ -289,5 +310,8 @@ pub fn hurwitz<K: Field>(p: &Poly<K>) -> Option<bool> {
         }
     }
     // also the first entry of every remaining row (the last row is the constant term)
-    Some(r0.first().is_none_or(|x| k.sign(x) == Some(std::cmp::Ordering::Greater)))
+    Some(
+        r0.first()
+            .is_none_or(|x| k.sign(x) == Some(std::cmp::Ordering::Greater)),
+    )
 }

@@ -75,7 +75,16 @@ pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -
     while !active.is_empty() {
         let i = active[0].nrows();
         // ---- S-bar_i: split the level-i rows by their input coefficients ----
-        let ci = vstack_all(&k, n, &active.iter().map(|ch| ch.select_rows(&[i - 1])).collect::<Vec<_>>().iter().collect::<Vec<_>>());
+        let ci = vstack_all(
+            &k,
+            n,
+            &active
+                .iter()
+                .map(|ch| ch.select_rows(&[i - 1]))
+                .collect::<Vec<_>>()
+                .iter()
+                .collect::<Vec<_>>(),
+        );
         let cib = &ci * b;
         let qbar = dbar.nrows();
         let nl = dbar.vstack(&cib).expect("same cols").left_nullspace();
@@ -109,7 +118,16 @@ pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -
         found.extend(bch.iter());
         found.extend(continuing.iter());
         let existing = vstack_all(&k, n, &found);
-        let tops = vstack_all(&k, n, &continuing.iter().map(|ch| ch.select_rows(&[i - 1])).collect::<Vec<_>>().iter().collect::<Vec<_>>());
+        let tops = vstack_all(
+            &k,
+            n,
+            &continuing
+                .iter()
+                .map(|ch| ch.select_rows(&[i - 1]))
+                .collect::<Vec<_>>()
+                .iter()
+                .collect::<Vec<_>>(),
+        );
         let cbar = &tops * a;
         let ne = existing.nrows();
         let nl = existing.vstack(&cbar).expect("same cols").left_nullspace();
@@ -131,7 +149,11 @@ pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -
             })
             .collect();
     }
-    Chains { d: ended, b: bch, dbar }
+    Chains {
+        d: ended,
+        b: bch,
+        dbar,
+    }
 }
 
 /// Removes from the $x_b$ rows their dependence on the non-output rows of $x_d$: returns

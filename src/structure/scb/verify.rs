@@ -22,7 +22,8 @@ fn fail(msg: impl Into<String>) -> Error {
 }
 
 fn zero_block<K: Field>(m: &Matrix<K>, rows: &std::ops::Range<usize>, cols: &[usize]) -> bool {
-    rows.clone().all(|i| cols.iter().all(|&j| m.field().is_zero(m.get(i, j))))
+    rows.clone()
+        .all(|i| cols.iter().all(|&j| m.field().is_zero(m.get(i, j))))
 }
 
 fn range_vec(r: &std::ops::Range<usize>) -> Vec<usize> {
@@ -111,7 +112,10 @@ pub fn check_pattern<K: Field>(
         for r in rd.clone() {
             let want = if r == bot { k.one() } else { k.zero() };
             if *b.get(r, ud.start + i) != want {
-                return Err(fail(format!("B_d is not the chain input pattern at chain {}", i + 1)));
+                return Err(fail(format!(
+                    "B_d is not the chain input pattern at chain {}",
+                    i + 1
+                )));
             }
         }
     }
@@ -125,7 +129,10 @@ pub fn check_pattern<K: Field>(
         for j in rd.clone() {
             let want = if j == f { k.one() } else { k.zero() };
             if *c.get(yd.start + i, j) != want {
-                return Err(fail(format!("C_d is not the chain output pattern at chain {}", i + 1)));
+                return Err(fail(format!(
+                    "C_d is not the chain output pattern at chain {}",
+                    i + 1
+                )));
             }
         }
     }
@@ -145,7 +152,9 @@ pub fn check_pattern<K: Field>(
     }
     for rows in [&ra, &rb, &rc] {
         if !zero_block(a, rows, &non_first_d) {
-            return Err(fail("x_a, x_b or x_c depends on x_d other than through y_d"));
+            return Err(fail(
+                "x_a, x_b or x_c depends on x_d other than through y_d",
+            ));
         }
     }
     for rows in [&ra, &rc] {
@@ -161,10 +170,18 @@ pub fn check_pattern<K: Field>(
                 let v = a.get(r, j);
                 if j == r + 1 {
                     if !k.is_one(v) {
-                        return Err(fail(format!("chain {} lacks its integrator at level {}", i + 1, lvl + 1)));
+                        return Err(fail(format!(
+                            "chain {} lacks its integrator at level {}",
+                            i + 1,
+                            lvl + 1
+                        )));
                     }
                 } else if !firsts.contains(&j) && !k.is_zero(v) {
-                    return Err(fail(format!("chain {} level {} has a term outside y_d", i + 1, lvl + 1)));
+                    return Err(fail(format!(
+                        "chain {} level {} has a term outside y_d",
+                        i + 1,
+                        lvl + 1
+                    )));
                 }
             }
         }
