@@ -550,3 +550,35 @@ fn zeros_examples_and_report() {
     assert_eq!(j["verified"], true);
     assert_eq!(j["invariant_zeros"][0]["value"], "0");
 }
+
+#[test]
+fn zeros_degenerate_normal_rank() {
+    // two equal outputs: P(s) has normal rank n + 1 < n + min(m, p)... and no zeros
+    let z = invariant_zeros(
+        &qmat![[0, 1], [0, 0]],
+        &qmat![[0], [1]],
+        &qmat![[1, 0], [1, 0]],
+        &qmat![[0], [0]],
+    )
+    .unwrap();
+    assert_eq!((z.normal_rank, z.count()), (3, 0));
+    // an uncontrollable and unobservable mode at 5 is an invariant zero
+    let z = invariant_zeros(
+        &qmat![[5, 0], [0, -1]],
+        &qmat![[0], [1]],
+        &qmat![[0, 1]],
+        &qmat![[0]],
+    )
+    .unwrap();
+    assert_eq!(z.polynomial.to_string(), "x - 5");
+    assert_eq!(z.report().to_json()["minimum_phase"], false);
+    // empty system
+    let z = invariant_zeros(
+        &Matrix::<Q>::zeros(Q, 0, 0),
+        &Matrix::zeros(Q, 0, 1),
+        &Matrix::zeros(Q, 1, 0),
+        &qmat![[0]],
+    )
+    .unwrap();
+    assert_eq!((z.normal_rank, z.count()), (0, 0));
+}

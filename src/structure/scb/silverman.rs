@@ -12,6 +12,7 @@
 //! Then $\bar\phi_i$ does the same with the candidate rows $\bar C_i = C_i \hat A$ against all
 //! rows found so far: dependent combinations end as $x_b$ chains of length $i$.
 
+use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
 
@@ -47,6 +48,12 @@ pub(crate) fn vstack_all<K: Field>(k: &K, ncols: usize, ms: &[&Matrix<K>]) -> Ma
     out
 }
 
+/// Row `level` of every chain, stacked.
+fn level_rows<K: Field>(k: &K, n: usize, chains: &[Matrix<K>], level: usize) -> Matrix<K> {
+    let rows: Vec<Matrix<K>> = chains.iter().map(|ch| ch.select_rows(&[level])).collect();
+    vstack_all(k, n, &rows.iter().collect::<Vec<_>>())
+}
+
 /// `acc += c * m` entry-wise.
 fn add_scaled<K: Field>(acc: &mut Matrix<K>, c: &K::Elem, m: &Matrix<K>, row_offset: usize) {
     let k = acc.field().clone();
@@ -75,16 +82,7 @@ pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -
     while !active.is_empty() {
         let i = active[0].nrows();
         // ---- S-bar_i: split the level-i rows by their input coefficients ----
-        let ci = vstack_all(
-            &k,
-            n,
-            &active
-                .iter()
-                .map(|ch| ch.select_rows(&[i - 1]))
-                .collect::<Vec<_>>()
-                .iter()
-                .collect::<Vec<_>>(),
-        );
+        let ci = level_rows(&k, n, &active, i - 1);
         let cib = &ci * b;
         let qbar = dbar.nrows();
         let nl = dbar.vstack(&cib).expect("same cols").left_nullspace();
@@ -118,16 +116,7 @@ pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -
         found.extend(bch.iter());
         found.extend(continuing.iter());
         let existing = vstack_all(&k, n, &found);
-        let tops = vstack_all(
-            &k,
-            n,
-            &continuing
-                .iter()
-                .map(|ch| ch.select_rows(&[i - 1]))
-                .collect::<Vec<_>>()
-                .iter()
-                .collect::<Vec<_>>(),
-        );
+        let tops = level_rows(&k, n, &continuing, i - 1);
         let cbar = &tops * a;
         let ne = existing.nrows();
         let nl = existing.vstack(&cbar).expect("same cols").left_nullspace();
@@ -160,22 +149,24 @@ pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -
 /// $T_b' = T_b + K T_d$ with $T_b' \hat A \in \operatorname{rowspan}(T_b') + Y_d$ ($Y_d$ the
 /// chains' first rows). Column $e_{l-1}$ of $K$ is $F_{bb} K_{e_l} - F_{bd,e_l}$, from each
 /// chain's bottom upwards ($K_{\text{bottom}} = 0$), where $T_b \hat A = F_{bb} T_b + F_{bd} T_d$.
-pub(crate) fn align_b<K: Field>(a: &Matrix<K>, tb: &Matrix<K>, d: &[Matrix<K>]) -> Matrix<K> {
+pub(crate) fn align_b<K: Field>(
+    a: &Matrix<K>,
+    tb: &Matrix<K>,
+    d: &[Matrix<K>],
+) -> Result<Matrix<K>> {
     let k = a.field().clone();
     let n = a.nrows();
     let nb = tb.nrows();
     if nb == 0 || d.is_empty() {
-        return tb.clone();
+        return Ok(tb.clone());
     }
     let td = vstack_all(&k, n, &d.iter().collect::<Vec<_>>());
     let nd = td.nrows();
     let r = tb.vstack(&td).expect("same cols");
     let rhs = (tb * a).transpose();
-    let (ft, _) = r
-        .transpose()
-        .solve(&rhs)
-        .expect("shapes agree")
-        .expect("x_b derivative lies in the span of the rows found");
+    let (ft, _) = r.transpose().solve(&rhs)?.ok_or_else(|| {
+        Error::Verification("scb: an x_b derivative left the span of the rows found".into())
+    })?;
     let f = ft.transpose(); // nb x (nb + nd)
     let fbb = f.submatrix(0, nb, 0, nb);
     let mut kk = Matrix::zeros(k.clone(), nb, nd);
@@ -193,5 +184,5 @@ pub(crate) fn align_b<K: Field>(a: &Matrix<K>, tb: &Matrix<K>, d: &[Matrix<K>]) 
         }
         off += q;
     }
-    tb + &(&kk * &td)
+    Ok(tb + &(&kk * &td))
 }

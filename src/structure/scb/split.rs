@@ -53,7 +53,7 @@ pub(crate) fn strictly_proper<K: Field>(
     let Chains { d, b: braw, dbar } = silverman(a, b, c);
     let md = d.len();
     let tb_raw = vstack_all(&k, n, &braw.iter().collect::<Vec<_>>());
-    let tb = align_b(a, &tb_raw, &d);
+    let tb = align_b(a, &tb_raw, &d)?;
     let td = vstack_all(&k, n, &d.iter().collect::<Vec<_>>());
     let (nb, nd) = (tb.nrows(), td.nrows());
     let g3 = input_transform(&dbar)?;
