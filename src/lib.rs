@@ -16,6 +16,7 @@ pub mod matrix;
 pub mod poly;
 pub mod realization;
 pub mod report;
+pub mod structure;
 pub mod system;
 
 pub use error::{Error, Result};

@@ -8,20 +8,6 @@ use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, str_list};
 use std::path::Path;
 
-/// Dispatches a command.
-pub fn execute(cmd: &Command) -> Result<Report, Failure> {
-    match cmd {
-        Command::Linalg { op, file } => linalg(*op, file),
-        Command::Minreal { file, method } => minreal(file, *method),
-        Command::Standard { file } => standard(file),
-        Command::Analyze { file } => analyze(file.as_deref()),
-        other => Err(Failure {
-            code: 2,
-            message: format!("command not available in this build: {other:?}"),
-        }),
-    }
-}
-
 /// Runs `f` over whichever field the file is in.
 macro_rules! over_ground {
     ($loaded:expr, |$t:ident| $body:expr) => {
@@ -30,6 +16,28 @@ macro_rules! over_ground {
             Loaded::Quadratic(_, $t) => $body,
         }
     };
+}
+
+/// Dispatches a command.
+pub fn execute(cmd: &Command) -> Result<Report, Failure> {
+    match cmd {
+        Command::Linalg { op, file } => linalg(*op, file),
+        Command::Minreal { file, method } => minreal(file, *method),
+        Command::Standard { file } => standard(file),
+        Command::Analyze { file } => analyze(file.as_deref()),
+        Command::Scb { file } => {
+            let l = load_system(file)?;
+            over_ground!(l, |t| scb_typed(t, file))
+        }
+        Command::Zeros { file } => {
+            let l = load_system(file)?;
+            over_ground!(l, |t| zeros_typed(t, file))
+        }
+        other => Err(Failure {
+            code: 2,
+            message: format!("command not available in this build: {other:?}"),
+        }),
+    }
 }
 
 fn with_path(path: &Path, e: crate::error::Error) -> Failure {
@@ -128,6 +136,19 @@ fn standard(file: &Path) -> Result<Report, Failure> {
     over_ground!(l, |t| standard_typed(t, file))
 }
 
+fn scb_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
+    let s = &t.ss;
+    let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(|e| with_path(path, e))?;
+    Ok(r.report())
+}
+
+fn zeros_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
+    let s = &t.ss;
+    let z = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)
+        .map_err(|e| with_path(path, e))?;
+    Ok(z.report())
+}
+
 /// The built-in example of `analyze` without a file.
 pub const BUILTIN_EXAMPLE: &str = include_str!("../../data/sliding-masses.json");
 
@@ -191,6 +212,20 @@ fn analyze_typed<K: Field>(f: &crate::io::SystemFile, t: &Typed<K>) -> Result<Re
     r.push("system", Value::Obj(system_section(f, t)));
     if t.ss.ninputs() > 0 && t.ss.noutputs() > 0 {
         r.push("realization", Value::Obj(realization_section(t)?));
+        // the SCB assumes [B; D] and [C, D] of full rank; report why when it does not apply
+        match crate::structure::scb::scb(&t.ss.a, &t.ss.b, &t.ss.c, &t.ss.d) {
+            Ok(scb) => r.push("structure", Value::Obj(scb.report())),
+            Err(e) => r.push(
+                "structure",
+                Value::Obj(
+                    Report::titled("special coordinate basis").str("not_applicable", e.to_string()),
+                ),
+            ),
+        };
+        if let Ok(z) = crate::structure::zeros::invariant_zeros(&t.ss.a, &t.ss.b, &t.ss.c, &t.ss.d)
+        {
+            r.push("zeros", Value::Obj(z.report()));
+        }
     }
     Ok(r)
 }
