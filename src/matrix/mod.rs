@@ -1,0 +1,2 @@
+pub mod fraction_free;
+pub mod modular;
