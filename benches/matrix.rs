@@ -47,6 +47,11 @@ fn to_q(a: &[i64]) -> Vec<Rational> {
 }
 
 fn time<T>(name: &str, reps: usize, mut f: impl FnMut() -> T) {
+    if let Ok(filter) = std::env::var("BENCH_FILTER")
+        && !name.contains(&filter)
+    {
+        return;
+    }
     let mut best = f64::INFINITY;
     for _ in 0..reps {
         let t = Instant::now();
@@ -63,6 +68,10 @@ fn main() {
     let low = to_q(&matmul(100, 50, 200, &l, &r));
     let sq = to_q(&g.matrix(100, 100));
     let reps = 5;
+    if std::env::var("KERNELS").is_ok() {
+        kernels(&sq, &low);
+        return;
+    }
 
     time("rank 100x200 r50", reps, || mm::rank_q(100, 200, &low));
     time("rref 100x200 r50", reps, || mm::rref_q(100, 200, &low));
@@ -98,4 +107,20 @@ fn main() {
             mm::rref_modular(n, 2 * n, &w)
         });
     }
+}
+#[allow(dead_code)]
+fn kernels(sq: &[Rational], low: &[Rational]) {
+    use mm::intmat::integer_rows;
+    let pr = mm::prime::nth_prime(0);
+    let (b, _) = integer_rows(100, 100, sq);
+    time("  integer_rows 100x100", 5, || integer_rows(100, 100, sq));
+    time("  reduce 100x100", 5, || b.reduce(&pr));
+    time("  hadamard 100x100", 5, || mm::det::hadamard_log2(&b));
+    let a0 = b.reduce(&pr);
+    time("  det_mod_p 100", 5, || mm::det::det_mod_p(&pr, 100, &mut a0.clone()));
+    time("  charpoly_mod_p 100", 5, || mm::charpoly::charpoly_mod_p(&pr, 100, &mut a0.clone()));
+    time("  inverse_mod_p 100", 5, || mm::inverse::inverse_mod_p(&pr, 100, &mut a0.clone()));
+    let (bl, _) = integer_rows(100, 200, low);
+    let l0 = bl.reduce(&pr);
+    time("  rref_mod_p 100x200", 5, || mm::rref::rref_mod_p(&pr, 100, 200, &mut l0.clone()));
 }

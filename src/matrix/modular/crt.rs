@@ -150,7 +150,7 @@ pub fn rational_reconstruct(
         t0 = std::mem::replace(&mut t1, t);
     }
     let (a, b) = if t1.is_negative() { (-r1, -t1) } else { (r1, t1) };
-    if b.is_zero() || &b > d_bound || !a.gcd(&b).is_one() {
+    if b.is_zero() || &b > d_bound || !super::gcd::gcd(&a, &b).is_one() {
         return None;
     }
     Some((a, b))
@@ -225,7 +225,7 @@ mod tests {
         let crt = Crt::new(&ps);
         let m = crt.modulus().clone();
         let b = crt.rr_bound();
-        let (num, den) = (BigInt::from(-355_113i64), BigInt::from(1_130_000_001i64));
+        let (num, den) = (BigInt::from(-355_113i64), BigInt::from(1_130_000_009i64));
         let u = (&num * den.modinv(&m).unwrap()).mod_floor(&m);
         assert_eq!(rational_reconstruct(&u, &m, &b, &b), Some((num, den.clone())));
         let us = vec![

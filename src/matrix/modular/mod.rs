@@ -37,6 +37,7 @@
 pub mod charpoly;
 pub mod crt;
 pub mod det;
+pub mod gcd;
 pub mod intmat;
 pub mod inverse;
 pub mod prime;
@@ -101,9 +102,9 @@ pub fn rref_modular(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<u
     let (b, _) = integer_rows(m, n, a);
     let res = rref::rref_int(&b);
     let mut out = vec![Rational::zero(); m * n];
-    for (x, nu) in out.iter_mut().zip(&res.num) {
+    for (x, nu) in out.iter_mut().zip(res.num) {
         if !nu.is_zero() {
-            *x = Rational::new(nu.clone(), res.den.clone());
+            *x = gcd::fraction(nu, &res.den);
         }
     }
     (out, res.pivots)
@@ -155,7 +156,7 @@ fn nullspace_impl(m: usize, n: usize, a: &[Rational], small: bool) -> Vec<Vec<Ra
             for (k, &c) in pivots.iter().enumerate() {
                 let x = &nums[k * n + f];
                 if !x.is_zero() {
-                    v[c] = Rational::new(-x, den.clone());
+                    v[c] = gcd::fraction(-x, &den);
                 }
             }
             v
@@ -251,15 +252,17 @@ pub fn inverse_modular(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
     // A = S B with S = diag(scales), so A^{-1} = B^{-1} S^{-1}: column j divided by s_j
     let (b, scales) = integer_rows(n, n, a);
     let (num, den) = inverse::inverse_int(&b)?;
-    let col_den: Vec<Rational> = scales.iter().map(|s| s.recip() / &den).collect();
+    // entry (i, j) is num_ij / (den s_j) = num_ij d_j / (den c_j), s_j = c_j / d_j
+    let col_den: Vec<BigInt> = scales.iter().map(|s| &den * s.numer()).collect();
     Some(
         num.into_iter()
             .enumerate()
             .map(|(idx, x)| {
-                if x.is_zero() {
-                    Rational::zero()
+                let j = idx % n;
+                if scales[j].denom().is_one() {
+                    gcd::fraction(x, &col_den[j])
                 } else {
-                    Rational::from_integer(x) * &col_den[idx % n]
+                    gcd::fraction(x * scales[j].denom(), &col_den[j])
                 }
             })
             .collect(),
