@@ -158,7 +158,8 @@ pub fn inverse_bareiss(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
         e[i * w + n + i] = BigInt::one();
     }
     let (pivots, den) = ff_gauss_jordan(n, w, &mut e);
-    if pivots.len() < n || pivots[n - 1] != n - 1 {
+    // invertible iff the first n pivots are the columns of B
+    if n > 0 && pivots.get(n - 1) != Some(&(n - 1)) {
         return None;
     }
     // A^{-1} = B^{-1} S^{-1}: column j divided by scale j
