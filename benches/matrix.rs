@@ -43,7 +43,9 @@ fn matmul(m: usize, k: usize, n: usize, a: &[i64], b: &[i64]) -> Vec<i64> {
 }
 
 fn to_q(a: &[i64]) -> Vec<Rational> {
-    a.iter().map(|&x| Rational::from_integer(x.into())).collect()
+    a.iter()
+        .map(|&x| Rational::from_integer(x.into()))
+        .collect()
 }
 
 fn time<T>(name: &str, reps: usize, mut f: impl FnMut() -> T) {
@@ -73,6 +75,10 @@ fn main() {
         return;
     }
 
+    let det = mm::det_q(100, &sq);
+    let check = det.numer() % num_bigint::BigInt::from(1_000_000_007u64);
+    let check = (check + 1_000_000_007u64) % 1_000_000_007u64;
+    println!("check det100 mod 1000000007: {check}");
     time("rank 100x200 r50", reps, || mm::rank_q(100, 200, &low));
     time("rref 100x200 r50", reps, || mm::rref_q(100, 200, &low));
     time("nullspace 100x200 r50", reps, || {
@@ -86,8 +92,12 @@ fn main() {
     for n in [4usize, 8, 12, 16, 24] {
         let a = to_q(&g.matrix(n, n));
         let w = to_q(&g.matrix(n, 2 * n));
-        time(&format!("det_bareiss n={n}"), reps, || ff::det_bareiss(n, &a));
-        time(&format!("det_modular n={n}"), reps, || mm::det_modular(n, &a));
+        time(&format!("det_bareiss n={n}"), reps, || {
+            ff::det_bareiss(n, &a)
+        });
+        time(&format!("det_modular n={n}"), reps, || {
+            mm::det_modular(n, &a)
+        });
         time(&format!("charpoly_berkowitz n={n}"), reps, || {
             ff::charpoly_berkowitz(n, &a)
         });
@@ -117,10 +127,18 @@ fn kernels(sq: &[Rational], low: &[Rational]) {
     time("  reduce 100x100", 5, || b.reduce(&pr));
     time("  hadamard 100x100", 5, || mm::det::hadamard_log2(&b));
     let a0 = b.reduce(&pr);
-    time("  det_mod_p 100", 5, || mm::det::det_mod_p(&pr, 100, &mut a0.clone()));
-    time("  charpoly_mod_p 100", 5, || mm::charpoly::charpoly_mod_p(&pr, 100, &mut a0.clone()));
-    time("  inverse_mod_p 100", 5, || mm::inverse::inverse_mod_p(&pr, 100, &mut a0.clone()));
+    time("  det_mod_p 100", 5, || {
+        mm::det::det_mod_p(&pr, 100, &mut a0.clone())
+    });
+    time("  charpoly_mod_p 100", 5, || {
+        mm::charpoly::charpoly_mod_p(&pr, 100, &mut a0.clone())
+    });
+    time("  inverse_mod_p 100", 5, || {
+        mm::inverse::inverse_mod_p(&pr, 100, &mut a0.clone())
+    });
     let (bl, _) = integer_rows(100, 200, low);
     let l0 = bl.reduce(&pr);
-    time("  rref_mod_p 100x200", 5, || mm::rref::rref_mod_p(&pr, 100, 200, &mut l0.clone()));
+    time("  rref_mod_p 100x200", 5, || {
+        mm::rref::rref_mod_p(&pr, 100, 200, &mut l0.clone())
+    });
 }

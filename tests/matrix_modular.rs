@@ -140,7 +140,11 @@ fn check_square(n: usize, a: &[Rational], ctx: &str) {
     assert_eq!(cp, ff::charpoly_berkowitz(n, a), "charpoly {ctx}");
     assert_eq!(cp.len(), n + 1, "charpoly length {ctx}");
     assert!(cp[n].is_one(), "charpoly monic {ctx}");
-    let c0 = if n % 2 == 0 { det.clone() } else { -det.clone() };
+    let c0 = if n % 2 == 0 {
+        det.clone()
+    } else {
+        -det.clone()
+    };
     assert_eq!(cp[0], c0, "charpoly constant term is (-1)^n det {ctx}");
     assert!(
         poly_at_matrix(n, &cp, a).iter().all(|x| x.is_zero()),
@@ -163,9 +167,17 @@ fn check_rect(m: usize, n: usize, a: &[Rational], ctx: &str) {
         ff::rref_bareiss(m, n, a),
         "rref bareiss {ctx}"
     );
-    assert_eq!((r.clone(), piv.clone()), mm::rref_q(m, n, a), "rref dispatch {ctx}");
+    assert_eq!(
+        (r.clone(), piv.clone()),
+        mm::rref_q(m, n, a),
+        "rref dispatch {ctx}"
+    );
     // RREF is idempotent and canonical
-    assert_eq!(mm::rref_modular(m, n, &r), (r.clone(), piv.clone()), "idempotent {ctx}");
+    assert_eq!(
+        mm::rref_modular(m, n, &r),
+        (r.clone(), piv.clone()),
+        "idempotent {ctx}"
+    );
     let rank = piv.len();
     assert_eq!(mm::rank_modular(m, n, a), rank, "rank {ctx}");
     assert_eq!(ff::rank_bareiss(m, n, a), rank, "rank bareiss {ctx}");

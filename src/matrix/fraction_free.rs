@@ -66,9 +66,7 @@ pub fn det_bareiss(n: usize, a: &[Rational]) -> Rational {
         prev = m[k * n + k].clone();
     }
     let d = if sign_neg { -prev } else { prev };
-    scales
-        .iter()
-        .fold(Rational::from_integer(d), |acc, s| acc * s)
+    crate::matrix::modular::scale_det(d, &scales)
 }
 
 /// Fraction-free Gauss–Jordan on an integer `m x n` matrix in place. Afterwards the first

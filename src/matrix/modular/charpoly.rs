@@ -131,6 +131,9 @@ mod tests {
         let b = IntMat::new(3, 3, [0, 0, 1, 0, 0, 0, 1, 1, 0].map(BigInt::from).to_vec());
         // det(xI - B) = x^3 - x
         assert_eq!(charpoly_int(&b), [0, -1, 0, 1].map(BigInt::from).to_vec());
-        assert_eq!(charpoly_int(&IntMat::new(0, 0, vec![])), vec![BigInt::from(1)]);
+        assert_eq!(
+            charpoly_int(&IntMat::new(0, 0, vec![])),
+            vec![BigInt::from(1)]
+        );
     }
 }

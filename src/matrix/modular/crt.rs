@@ -149,7 +149,11 @@ pub fn rational_reconstruct(
         let t = &t0 - &q * &t1;
         t0 = std::mem::replace(&mut t1, t);
     }
-    let (a, b) = if t1.is_negative() { (-r1, -t1) } else { (r1, t1) };
+    let (a, b) = if t1.is_negative() {
+        (-r1, -t1)
+    } else {
+        (r1, t1)
+    };
     if b.is_zero() || &b > d_bound || !super::gcd::gcd(&a, &b).is_one() {
         return None;
     }
@@ -206,7 +210,9 @@ mod tests {
     fn lift_roundtrip() {
         let ps: Vec<Prime> = primes(0).take(5).collect();
         let crt = Crt::new(&ps);
-        let x: BigInt = "-123456789012345678901234567890123456789012345".parse().unwrap();
+        let x: BigInt = "-123456789012345678901234567890123456789012345"
+            .parse()
+            .unwrap();
         let res: Vec<u64> = ps
             .iter()
             .map(|p| {
@@ -227,7 +233,10 @@ mod tests {
         let b = crt.rr_bound();
         let (num, den) = (BigInt::from(-355_113i64), BigInt::from(1_130_000_009i64));
         let u = (&num * den.modinv(&m).unwrap()).mod_floor(&m);
-        assert_eq!(rational_reconstruct(&u, &m, &b, &b), Some((num, den.clone())));
+        assert_eq!(
+            rational_reconstruct(&u, &m, &b, &b),
+            Some((num, den.clone()))
+        );
         let us = vec![
             (BigInt::from(3) * den.modinv(&m).unwrap()).mod_floor(&m),
             BigInt::from(7),

@@ -58,7 +58,10 @@ pub fn gcd_biguint(a: &BigUint, b: &BigUint) -> BigUint {
 
 /// $s a + t b$ for cofactors of opposite signs (or one zero) whose result is non-negative.
 fn combine(a: &BigUint, b: &BigUint, s: i128, t: i128) -> BigUint {
-    let (us, ut) = (BigUint::from(s.unsigned_abs()), BigUint::from(t.unsigned_abs()));
+    let (us, ut) = (
+        BigUint::from(s.unsigned_abs()),
+        BigUint::from(t.unsigned_abs()),
+    );
     if s >= 0 && t <= 0 {
         a * us - b * ut
     } else {

@@ -75,6 +75,13 @@ impl IntMat {
     /// $\log_2$ of the Euclidean norm of each row (`-inf` for a zero row), rounded up by a
     /// safety margin so that $2^{\text{result}}$ bounds the true norm.
     pub fn row_norm_log2(&self) -> Vec<f64> {
+        if let Some(s) = &self.small
+            && let Some(v) = (0..self.m)
+                .map(|i| norm_log2_small((0..self.n).map(|j| s[i * self.n + j])))
+                .collect()
+        {
+            return v;
+        }
         (0..self.m)
             .map(|i| norm_log2((0..self.n).map(|j| self.at(i, j))))
             .collect()
@@ -82,10 +89,29 @@ impl IntMat {
 
     /// As [`IntMat::row_norm_log2`] for the columns.
     pub fn col_norm_log2(&self) -> Vec<f64> {
+        if let Some(s) = &self.small
+            && let Some(v) = (0..self.n)
+                .map(|j| norm_log2_small((0..self.m).map(|i| s[i * self.n + j])))
+                .collect()
+        {
+            return v;
+        }
         (0..self.n)
             .map(|j| norm_log2((0..self.m).map(|i| self.at(i, j))))
             .collect()
     }
+}
+
+/// [`norm_log2`] for machine integers: the sum of squares is exact in `u128` up to $2^{64}$
+/// terms.
+fn norm_log2_small(mut xs: impl Iterator<Item = i64>) -> Option<f64> {
+    let s = xs.try_fold(0u128, |s, x| {
+        s.checked_add((x.unsigned_abs() as u128).pow(2))
+    })?;
+    if s == 0 {
+        return Some(f64::NEG_INFINITY);
+    }
+    Some(log2_upper(&BigInt::from(s)) / 2.0)
 }
 
 /// Upper bound of $\log_2 \sqrt{\sum x^2}$; `-inf` when all are zero.
@@ -110,6 +136,9 @@ pub fn log2_upper(x: &BigInt) -> f64 {
 /// (content 1) or zero. A zero row gets scale 1.
 pub fn integer_rows(m: usize, n: usize, a: &[Rational]) -> (IntMat, Vec<Rational>) {
     assert_eq!(a.len(), m * n, "matrix slice length must be m * n");
+    if let Some(res) = small_integer_rows(m, n, a) {
+        return res;
+    }
     let mut entries = Vec::with_capacity(m * n);
     let mut scales = Vec::with_capacity(m);
     for i in 0..m {
@@ -126,6 +155,35 @@ pub fn integer_rows(m: usize, n: usize, a: &[Rational]) -> (IntMat, Vec<Rational
         }
     }
     (IntMat::new(m, n, entries), scales)
+}
+
+/// [`integer_rows`] when every entry is an integer fitting an `i64` (no big-integer gcds).
+fn small_integer_rows(m: usize, n: usize, a: &[Rational]) -> Option<(IntMat, Vec<Rational>)> {
+    let small: Vec<i64> = a
+        .iter()
+        .map(|x| {
+            if x.is_integer() {
+                x.numer().to_i64()
+            } else {
+                None
+            }
+        })
+        .collect::<Option<_>>()?;
+    let mut entries = Vec::with_capacity(m * n);
+    let mut scales = Vec::with_capacity(m);
+    for i in 0..m {
+        let row = &small[i * n..(i + 1) * n];
+        let g = row.iter().fold(0u64, |g, &x| g.gcd(&x.unsigned_abs()));
+        if g <= 1 {
+            entries.extend(row.iter().map(|&x| BigInt::from(x)));
+            scales.push(Rational::one());
+        } else {
+            // g divides every |x| <= 2^63, so x / g is exact and fits
+            entries.extend(row.iter().map(|&x| BigInt::from(x / g as i64)));
+            scales.push(Rational::from_integer(g.into()));
+        }
+    }
+    Some((IntMat::new(m, n, entries), scales))
 }
 
 /// Global integer form: `A = B / s` with `s` the lcm of all denominators.

@@ -55,7 +55,11 @@ pub const SMALL_N: usize = 8;
 pub const SMALL_MN: usize = 64;
 
 fn check_len(op: &str, len: usize, m: usize, n: usize) {
-    assert_eq!(len, m * n, "{op}: slice of length {len} for a {m}x{n} matrix");
+    assert_eq!(
+        len,
+        m * n,
+        "{op}: slice of length {len} for a {m}x{n} matrix"
+    );
 }
 
 /// Rank of the `m x n` row-major matrix `a`.
@@ -133,9 +137,9 @@ pub fn nullspace_modular(m: usize, n: usize, a: &[Rational]) -> Vec<Vec<Rational
 fn nullspace_impl(m: usize, n: usize, a: &[Rational], small: bool) -> Vec<Vec<Rational>> {
     let (nums, den, pivots): (Vec<BigInt>, BigInt, Vec<usize>) = if small {
         let (r, p) = fraction_free::rref_bareiss(m, n, a);
-        let den = r
-            .iter()
-            .fold(BigInt::one(), |l, x| num_integer::Integer::lcm(&l, x.denom()));
+        let den = r.iter().fold(BigInt::one(), |l, x| {
+            num_integer::Integer::lcm(&l, x.denom())
+        });
         let nums = r[..p.len() * n]
             .iter()
             .map(|x| x.numer() * (&den / x.denom()))
@@ -184,12 +188,25 @@ pub fn det_modular(n: usize, a: &[Rational]) -> Rational {
     check_len("det_modular", a.len(), n, n);
     let (b, scales) = integer_rows(n, n, a);
     let d = det::det_int(&b);
+    scale_det(d, &scales)
+}
+
+/// $d \prod_i s_i$ as a canonical fraction (one gcd, not one per row).
+pub(crate) fn scale_det(d: BigInt, scales: &[Rational]) -> Rational {
     if d.is_zero() {
         return Rational::zero();
     }
-    scales
-        .iter()
-        .fold(Rational::from_integer(d), |acc, s| acc * s)
+    let mut num = d;
+    let mut den = BigInt::one();
+    for s in scales {
+        if !s.numer().is_one() {
+            num *= s.numer();
+        }
+        if !s.denom().is_one() {
+            den *= s.denom();
+        }
+    }
+    gcd::fraction(num, &den)
 }
 
 /// Characteristic polynomial $\det(xI - A)$: coefficients low degree first, monic, length

@@ -227,7 +227,10 @@ mod tests {
         let p = pr.p;
         let mut x = 0x1234_5678_9abc_def1u64 % p;
         for _ in 0..1000 {
-            x = (x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407)) % p;
+            x = (x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407))
+                % p;
             let y = x.rotate_left(17) % p;
             let want = ((x as u128 * y as u128) % p as u128) as u64;
             assert_eq!(pr.mul_shoup(x, pr.shoup(x), y), want);
@@ -242,6 +245,9 @@ mod tests {
             assert_eq!(row[2], pr.neg(pr.mul(5, y)));
         }
         assert_eq!(pr.from_i64(-1), p - 1);
-        assert_eq!(pr.from_limbs(false, &[0, 1]), ((1u128 << 64) % p as u128) as u64);
+        assert_eq!(
+            pr.from_limbs(false, &[0, 1]),
+            ((1u128 << 64) % p as u128) as u64
+        );
     }
 }
