@@ -140,7 +140,7 @@ fn check_square(n: usize, a: &[Rational], ctx: &str) {
     assert_eq!(cp, ff::charpoly_berkowitz(n, a), "charpoly {ctx}");
     assert_eq!(cp.len(), n + 1, "charpoly length {ctx}");
     assert!(cp[n].is_one(), "charpoly monic {ctx}");
-    let c0 = if n % 2 == 0 {
+    let c0 = if n.is_multiple_of(2) {
         det.clone()
     } else {
         -det.clone()

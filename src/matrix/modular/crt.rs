@@ -217,7 +217,7 @@ mod tests {
             .iter()
             .map(|p| {
                 let (s, l) = x.to_u64_digits();
-                p.from_limbs(s == Sign::Minus, &l)
+                p.reduce_limbs(s == Sign::Minus, &l)
             })
             .collect();
         assert_eq!(crt.lift(|i| res[i]), x);

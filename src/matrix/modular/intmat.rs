@@ -57,7 +57,7 @@ impl IntMat {
                 .iter()
                 .map(|x| {
                     let (s, l) = x.to_u64_digits();
-                    pr.from_limbs(s == Sign::Minus, &l)
+                    pr.reduce_limbs(s == Sign::Minus, &l)
                 })
                 .collect(),
         }

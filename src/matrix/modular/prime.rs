@@ -124,13 +124,13 @@ impl Prime {
 
     /// The residue of a signed machine integer.
     #[inline]
-    pub fn from_i64(&self, x: i64) -> u64 {
+    pub fn reduce_i64(&self, x: i64) -> u64 {
         let r = (x as i128).rem_euclid(self.p as i128);
         r as u64
     }
 
     /// The residue of a big integer given by its sign and little-endian 64-bit limbs.
-    pub fn from_limbs(&self, negative: bool, limbs: &[u64]) -> u64 {
+    pub fn reduce_limbs(&self, negative: bool, limbs: &[u64]) -> u64 {
         let mut r: u128 = 0;
         for &l in limbs.iter().rev() {
             r = ((r << 64) | l as u128) % self.p as u128;
@@ -147,7 +147,7 @@ pub fn is_prime_u64(n: u64) -> bool {
         return false;
     }
     for q in [2u64, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37] {
-        if n % q == 0 {
+        if n.is_multiple_of(q) {
             return n == q;
         }
     }
@@ -244,9 +244,9 @@ mod tests {
             assert_eq!(row[0], pr.sub(y, pr.mul(x, y)));
             assert_eq!(row[2], pr.neg(pr.mul(5, y)));
         }
-        assert_eq!(pr.from_i64(-1), p - 1);
+        assert_eq!(pr.reduce_i64(-1), p - 1);
         assert_eq!(
-            pr.from_limbs(false, &[0, 1]),
+            pr.reduce_limbs(false, &[0, 1]),
             ((1u128 << 64) % p as u128) as u64
         );
     }

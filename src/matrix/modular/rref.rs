@@ -215,13 +215,13 @@ mod tests {
         // [[0, 2, 4], [0, 1, 2], [1, 1, 1]] -> pivots 0, 1; rows [1,0,-1],[0,1,2],[0,0,0]
         let mut a: Vec<u64> = [0i64, 2, 4, 0, 1, 2, 1, 1, 1]
             .iter()
-            .map(|&x| pr.from_i64(x))
+            .map(|&x| pr.reduce_i64(x))
             .collect();
         let piv = rref_mod_p(&pr, 3, 3, &mut a);
         assert_eq!(piv, vec![0, 1]);
         let want: Vec<u64> = [1i64, 0, -1, 0, 1, 2, 0, 0, 0]
             .iter()
-            .map(|&x| pr.from_i64(x))
+            .map(|&x| pr.reduce_i64(x))
             .collect();
         assert_eq!(a, want);
     }
