@@ -18,8 +18,8 @@ use num_traits::{One, Signed, Zero};
 #[derive(Clone, Debug)]
 pub struct Crt {
     primes: Vec<Prime>,
-    /// `inv[j]` $= (p_0 \cdots p_{j-1})^{-1} \bmod p_j$.
-    inv: Vec<u64>,
+    /// `inv[j]` $= (p_0 \cdots p_{j-1})^{-1} \bmod p_j$, with its Shoup quotient.
+    inv: Vec<(u64, u64)>,
     /// `pmod[j][i]` $= p_i \bmod p_j$ for $i < j$, with its Shoup quotient.
     pmod: Vec<Vec<(u64, u64)>>,
     modulus: BigInt,
@@ -41,7 +41,8 @@ impl Crt {
                 })
                 .collect();
             let prod = row.iter().fold(1u64, |acc, &(v, _)| pj.mul(acc, v));
-            inv.push(pj.inv(prod).expect("distinct primes"));
+            let iv = pj.inv(prod).expect("distinct primes");
+            inv.push((iv, pj.shoup(iv)));
             pmod.push(row);
             modulus *= pj.p;
         }
@@ -85,7 +86,8 @@ impl Crt {
                 let (v, vs) = self.pmod[j][i];
                 s = pj.add(pj.mul_shoup(v, vs, s), digits[i] % pj.p);
             }
-            let d = pj.mul(pj.sub(res(j) % pj.p, s), self.inv[j]);
+            let (iv, ivs) = self.inv[j];
+            let d = pj.mul_shoup(iv, ivs, pj.sub(res(j) % pj.p, s));
             all_zero &= d == 0;
             digits[j] = d;
         }

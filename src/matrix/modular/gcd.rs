@@ -27,8 +27,8 @@ pub fn gcd_biguint(a: &BigUint, b: &BigUint) -> BigUint {
             if y + cc == 0 || y + cd == 0 {
                 break;
             }
-            let q = (x + ca) / (y + cc);
-            if q != (x + cb) / (y + cd) {
+            let q = quot(x + ca, y + cc);
+            if q != quot(x + cb, y + cd) {
                 break;
             }
             (ca, cc) = (cc, ca - q * cc);
@@ -54,6 +54,16 @@ pub fn gcd_biguint(a: &BigUint, b: &BigUint) -> BigUint {
         (x, y) = (y % x, x);
     }
     BigUint::from(y)
+}
+
+/// Truncated quotient, with word division whenever both operands fit a `u64`.
+#[inline(always)]
+fn quot(a: i128, b: i128) -> i128 {
+    if a >= 0 && b > 0 && a <= u64::MAX as i128 && b <= u64::MAX as i128 {
+        ((a as u64) / (b as u64)) as i128
+    } else {
+        a / b
+    }
 }
 
 /// $s a + t b$ for cofactors of opposite signs (or one zero) whose result is non-negative.
