@@ -18,9 +18,9 @@
 //! | [`jordan_guess`] | [`FloatJordan`]: clusters with block sizes   |
 
 use nalgebra::DMatrix;
-use nalgebra::linalg::SVD;
 use num_complex::Complex;
 
+use super::svd::complex_singular_values;
 use super::{RankGap, Tol, Truth, all_clear, decide_rank, eigenvalues};
 use crate::error::Result;
 
@@ -208,12 +208,12 @@ fn analyse_cluster(
         if k > 1 {
             power = &power * &m;
         }
-        let sv = SVD::new(power.clone(), false, false).singular_values;
+        let sv = complex_singular_values(&power);
         if k == 1 {
             mnorm = sv.iter().copied().fold(0.0, f64::max);
         }
         let scale = mnorm.powi(k as i32);
-        let g = decide_rank(&format!("rank (A - cI)^{k}"), sv.as_slice(), scale, tol);
+        let g = decide_rank(&format!("rank (A - cI)^{k}"), &sv, scale, tol);
         let nu = n - g.rank;
         gaps.push(g);
         let prev = *nullity.last().unwrap_or(&0);

@@ -4,9 +4,10 @@
 //! arithmetic is needed) and never claims certainty: every rank decision is a comparison of
 //! singular values $\sigma_1 \ge \sigma_2 \ge \dots$ against a threshold
 //! $t = \max(\text{abs}, \text{rel}\cdot S)$, where $S$ is a norm of the data, and is reported
-//! as a [`RankGap`]. A decision is [`Truth::True`] ("numerically clear") only when the gap at
-//! the cut is wide: $\sigma_r \ge \text{gap}\cdot\max(\sigma_{r+1}, \varepsilon S k)$, with
-//! $k$ the number of singular values. Otherwise it is [`Truth::Unknown`]. The exact path
+//! as a [`RankGap`]. A decision is [`Truth::True`] ("numerically clear") only when the
+//! threshold sits inside a wide gap: $\sigma_r \ge \sqrt{\text{gap}}\,t$ and
+//! $\max(\sigma_{r+1}, \varepsilon S k) \le t/\sqrt{\text{gap}}$, with $k$ the number of
+//! singular values. Otherwise it is [`Truth::Unknown`]. The exact path
 //! (`realization`, `jordan`) is the one that proves; this module cross-checks and scales.
 //!
 //! | entry point                          | computes                                                | algorithm                               |
@@ -30,6 +31,7 @@ mod jordan_guess;
 mod minreal;
 pub mod random;
 mod staircase;
+mod svd;
 mod zeros;
 
 pub use eigen::{eigenvalues, eigenvectors};
@@ -91,11 +93,14 @@ pub struct Tol {
 }
 
 impl Default for Tol {
-    /// `abs = 0`, `rel = 1e6 ε ≈ 2.2e-10`, `gap = 1e3`.
+    /// `abs = 0`, `rel = sqrt(ε) ≈ 1.5e-8` (MATLAB's `minreal` default), `gap = 1e3`.
+    ///
+    /// A staircase amplifies rounding errors step by step (see [`random`]), so thresholds
+    /// near `ε` keep noise as rank; `sqrt(ε)` is the usual compromise.
     fn default() -> Self {
         Tol {
             abs: 0.0,
-            rel: 1e6 * f64::EPSILON,
+            rel: f64::EPSILON.sqrt(),
             gap: 1e3,
         }
     }
@@ -136,9 +141,10 @@ pub struct RankGap {
     pub kept: f64,
     /// The largest dropped singular value `σ_{r+1}` (`0` when `r = size`).
     pub dropped: f64,
-    /// `kept / max(dropped, noise floor)`.
+    /// `kept / max(dropped, noise floor)` (`threshold / ...` when `r = 0`).
     pub ratio: f64,
-    /// `True` when `ratio >= gap`, otherwise `Unknown`.
+    /// `True` when `kept >= sqrt(gap) * threshold` and `max(dropped, noise floor) <=
+    /// threshold / sqrt(gap)`, otherwise `Unknown`.
     pub truth: Truth,
 }
 
@@ -155,17 +161,15 @@ pub(crate) fn decide_rank(what: &str, sv: &[f64], scale: f64, tol: &Tol) -> Rank
     let floor = f64::EPSILON * scale * (s.len().max(1) as f64);
     let kept = if rank > 0 { s[rank - 1] } else { f64::INFINITY };
     let dropped = if rank < s.len() { s[rank] } else { 0.0 };
+    let noise = dropped.max(floor);
     let ratio = if rank == 0 {
-        // Nothing kept: clear when everything sits at the noise floor (or is exactly zero).
-        if smax == 0.0 {
-            f64::INFINITY
-        } else {
-            t.max(floor) / smax
-        }
+        if noise == 0.0 { f64::INFINITY } else { t / noise }
     } else {
-        kept / dropped.max(floor).max(f64::MIN_POSITIVE)
+        kept / noise.max(f64::MIN_POSITIVE)
     };
-    let truth = if ratio >= tol.gap {
+    // Clear when the threshold sits inside a wide gap: sqrt(gap) on both sides.
+    let half = tol.gap.max(1.0).sqrt();
+    let truth = if kept >= half * t && noise <= t / half {
         Truth::True
     } else {
         Truth::Unknown
@@ -260,10 +264,12 @@ mod tests {
         let tol = Tol::default();
         let g = decide_rank("x", &[1.0, 1e-16], 1.0, &tol);
         assert_eq!((g.rank, g.truth), (1, Truth::True));
-        let g = decide_rank("x", &[1.0, 1e-9], 1.0, &tol);
+        let g = decide_rank("x", &[1.0, 1e-7], 1.0, &tol);
         assert_eq!((g.rank, g.truth), (2, Truth::Unknown));
-        let g = decide_rank("x", &[1.0, 1e-11], 1.0, &tol);
+        let g = decide_rank("x", &[1.0, 1e-9], 1.0, &tol);
         assert_eq!((g.rank, g.truth), (1, Truth::Unknown));
+        let g = decide_rank("x", &[1.0, 1e-12], 1.0, &tol);
+        assert_eq!((g.rank, g.truth), (1, Truth::True));
         let g = decide_rank("x", &[0.0, 0.0], 0.0, &tol);
         assert_eq!((g.rank, g.truth), (0, Truth::True));
         let g = decide_rank("x", &[], 0.0, &tol);

@@ -12,7 +12,9 @@
 //! \end{bmatrix},\ B = \begin{bmatrix} B_1 \\ B_2 \\ 0 \end{bmatrix},\
 //! C = \begin{bmatrix} C_1 & 0 & C_3 \end{bmatrix},\ D = 0,$$
 //!
-//! scrambled by the orthogonal factor $Q$ of a random matrix: $(Q^TAQ, Q^TB, CQ, D)$. Its
+//! where $A_{22}$ and $A_{33}$ are scaled by [`HIDDEN_SCALE`] (otherwise the hidden parts of a
+//! large random system are ill-conditioned and no float tool finds them), scrambled by the
+//! orthogonal factor $Q$ of a random matrix: $(Q^TAQ, Q^TB, CQ, D)$. Its
 //! transfer matrix is $C_1(sI - A_{11})^{-1}B_1$, of McMillan degree $n_m$ (generically).
 //!
 //! | entry point           | returns                                  |
@@ -66,6 +68,15 @@ impl Lcg {
     }
 }
 
+/// Scale of the hidden diagonal blocks $A_{22}$, $A_{33}$ of [`random_nonminimal`].
+///
+/// A staircase step multiplies the error in the computed controllable subspace by about
+/// $\lVert A_{33}\rVert / \sigma_{\min}(A_{k+1,k})$ (the hidden part's norm over the step's
+/// subdiagonal block), so with $A_{33}$ as large as the rest the error grows geometrically with
+/// the number of steps $n_c/m$ and no float tool (neither this staircase nor SLICOT TB01PD)
+/// finds the hidden parts of a large random system. A factor 0.1 keeps the family well posed.
+pub const HIDDEN_SCALE: f64 = 0.1;
+
 /// A random system with known minimal order.
 #[derive(Clone, Debug)]
 pub struct RandomSystem {
@@ -107,6 +118,14 @@ pub fn random_nonminimal(n: usize, m: usize, p: usize, seed: u64) -> RandomSyste
     }
     for j in r1..r2 {
         c.column_mut(j).fill(0.0);
+    }
+    // Shrink the hidden diagonal blocks (see HIDDEN_SCALE).
+    for i in r1..n {
+        let lo = if i < r2 { r1 } else { r2 };
+        let hi = if i < r2 { r2 } else { n };
+        for j in lo..hi {
+            a[(i, j)] *= HIDDEN_SCALE;
+        }
     }
     let q = g.orthogonal(n);
     RandomSystem {

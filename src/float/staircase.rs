@@ -8,7 +8,7 @@
 //!
 //! with $B_1$, $A_{21}$, $A_{32}, \dots$ of full row rank $r_1 \ge r_2 \ge \dots$; the
 //! controllable part has order $n_c = \sum r_i$. Each step compresses one block by Householder
-//! QR with column pivoting followed by an SVD of the small triangular factor (the SVD gives
+//! QR with column pivoting followed by a Jacobi SVD of the small triangular factor (it gives
 //! the singular values on which the rank is decided, see [`super::RankGap`]); singular values
 //! below the threshold are set to zero, which is a backward error of at most their size.
 //! The same kernel on $(A^T, C^T)$ gives the observable part.
@@ -20,8 +20,8 @@
 //! | [`is_controllable`], [`is_observable`] | [`Truth`]                       | $O(n^3)$      |
 
 use nalgebra::DMatrix;
-use nalgebra::linalg::SVD;
 
+use super::svd::left_basis;
 use super::{RankGap, Tol, Truth, all_clear, check_finite, check_square, decide_rank};
 use crate::error::{Error, Result};
 
@@ -156,14 +156,8 @@ pub(crate) fn controllable_staircase(
         let k = len.min(width);
         let taus = qr_col_piv(&mut work, len, width, k);
         let r_fac = DMatrix::from_fn(k, width, |i, j| if j >= i { work[i + j * len] } else { 0.0 });
-        let svd = SVD::new(r_fac, true, false);
-        let u = svd.u.expect("u requested");
-        let g = decide_rank(
-            &format!("{what} step {step}"),
-            svd.singular_values.as_slice(),
-            scale,
-            tol,
-        );
+        let (sv, u) = left_basis(&r_fac);
+        let g = decide_rank(&format!("{what} step {step}"), &sv, scale, tol);
         let r = g.rank;
         gaps.push(g);
         // Apply the reflectors, then U, on both sides.
@@ -354,3 +348,5 @@ fn small_right(m: &mut DMatrix<f64>, c0: usize, u: &DMatrix<f64>, t: &mut Vec<f6
         }
     }
 }
+
+

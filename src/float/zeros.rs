@@ -23,9 +23,10 @@
 //! | [`invariant_zeros_report`]  | [`FloatZeros`] with the rank decisions |
 
 use nalgebra::DMatrix;
-use nalgebra::linalg::{LU, SVD};
+use nalgebra::linalg::LU;
 use num_complex::Complex;
 
+use super::svd::{left_basis, right_basis};
 use super::{RankGap, Tol, Truth, all_clear, check_system, decide_rank, eigenvalues};
 use crate::error::{Error, Result};
 
@@ -138,24 +139,6 @@ impl Sys {
     }
 }
 
-/// Full left singular basis `U` (`rows x rows`) of `m` and its `min(rows, cols)` singular
-/// values: `U^T m` has rows of norm `σ_1, σ_2, ...` then zero rows.
-fn full_left_svd(m: &DMatrix<f64>) -> (DMatrix<f64>, Vec<f64>) {
-    let (r, c) = m.shape();
-    let k = r.min(c);
-    let padded = if c >= r {
-        m.clone()
-    } else {
-        let mut p = DMatrix::<f64>::zeros(r, r);
-        p.columns_mut(0, c).copy_from(m);
-        p
-    };
-    let svd = SVD::new(padded, true, false);
-    let u = svd.u.expect("u requested");
-    let sv = svd.singular_values.iter().take(k).copied().collect();
-    (u.columns(0, r).into_owned(), sv)
-}
-
 /// One primal reduction to full row rank `D`; returns whether anything changed.
 fn reduce(sys: &mut Sys, scale: f64, tol: &Tol, gaps: &mut Vec<RankGap>, tag: &str) -> bool {
     let mut changed = false;
@@ -165,7 +148,7 @@ fn reduce(sys: &mut Sys, scale: f64, tol: &Tol, gaps: &mut Vec<RankGap>, tag: &s
         if p == 0 {
             return changed;
         }
-        let (u, sv) = full_left_svd(&sys.d);
+        let (sv, u) = left_basis(&sys.d);
         let g = decide_rank(&format!("{tag}rank D ({p} rows)"), &sv, scale, tol);
         let rho = g.rank;
         gaps.push(g);
@@ -189,7 +172,7 @@ fn reduce(sys: &mut Sys, scale: f64, tol: &Tol, gaps: &mut Vec<RankGap>, tag: &s
             continue;
         }
         // Column compression of C_σ: W = [null-space directions, range directions].
-        let (v, svc) = full_left_svd(&c_sig.transpose());
+        let (svc, v) = right_basis(&c_sig);
         let gc = decide_rank(&format!("{tag}rank C_sigma ({sig} rows)"), &svc, scale, tol);
         let mu = gc.rank;
         gaps.push(gc);
