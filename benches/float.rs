@@ -16,7 +16,9 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use exactlti::float::random::random_nonminimal;
-use exactlti::float::{Tol, eigenvalues, era, invariant_zeros, jordan_guess, markov_parameters, minreal};
+use exactlti::float::{
+    Tol, eigenvalues, era, invariant_zeros, jordan_guess, markov_parameters, minreal,
+};
 use nalgebra::DMatrix;
 
 fn best_ms<T>(reps: usize, mut f: impl FnMut() -> T) -> (f64, T) {
@@ -88,13 +90,24 @@ fn main() {
     let (ms, _) = best_ms(5, || eigenvalues(black_box(&sys.a)).expect("square"));
     println!("float eigenvalues n=100: {ms:.3} ms");
     let small = random_nonminimal(40, 2, 2, 40);
-    let (ms, j) = best_ms(3, || jordan_guess(black_box(&small.a), &tol).expect("square"));
-    println!("float jordan_guess n=40: {ms:.3} ms ({} clusters)", j.clusters.len());
+    let (ms, j) = best_ms(3, || {
+        jordan_guess(black_box(&small.a), &tol).expect("square")
+    });
+    println!(
+        "float jordan_guess n=40: {ms:.3} ms ({} clusters)",
+        j.clusters.len()
+    );
     let (ms, z) = best_ms(5, || {
         invariant_zeros(&sys.a, &sys.b, &sys.c, &sys.d, &tol).expect("valid system")
     });
-    println!("float invariant_zeros n=100: {ms:.3} ms ({} zeros)", z.len());
+    println!(
+        "float invariant_zeros n=100: {ms:.3} ms ({} zeros)",
+        z.len()
+    );
     let h = markov_parameters(&small.a, &small.b, &small.c, &small.d, 61).expect("valid");
     let (ms, r) = best_ms(5, || era(black_box(&h), None, &tol).expect("valid"));
-    println!("float era 60 moments (n=40 system): {ms:.3} ms (order {})", r.order);
+    println!(
+        "float era 60 moments (n=40 system): {ms:.3} ms (order {})",
+        r.order
+    );
 }

@@ -48,17 +48,31 @@ fn max_markov_diff(h1: &[DMatrix<f64>], h2: &[DMatrix<f64>]) -> (f64, f64) {
 #[test]
 fn eigenvalues_examples() {
     let ev = eigenvalues(&mat(2, 2, &[0.0, 1.0, -2.0, -3.0])).unwrap();
-    assert!(close(ev[0], -2.0, 0.0, 1e-14) && close(ev[1], -1.0, 0.0, 1e-14), "{ev:?}");
+    assert!(
+        close(ev[0], -2.0, 0.0, 1e-14) && close(ev[1], -1.0, 0.0, 1e-14),
+        "{ev:?}"
+    );
     let ev = eigenvalues(&mat(2, 2, &[0.0, 1.0, -1.0, 0.0])).unwrap();
-    assert!(close(ev[0], 0.0, -1.0, 1e-14) && close(ev[1], 0.0, 1.0, 1e-14), "{ev:?}");
+    assert!(
+        close(ev[0], 0.0, -1.0, 1e-14) && close(ev[1], 0.0, 1.0, 1e-14),
+        "{ev:?}"
+    );
     assert_eq!(ev[0], ev[1].conj());
     assert!(eigenvalues(&DMatrix::zeros(0, 0)).unwrap().is_empty());
     let ev = eigenvalues(&mat(1, 1, &[-3.5])).unwrap();
     assert_eq!(ev, vec![Complex::new(-3.5, 0.0)]);
     // Vehicle-dynamics paper eq. 11: -2 and -1 +/- i.
-    let ev = eigenvalues(&mat(3, 3, &[-2.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -2.0, -2.0])).unwrap();
+    let ev = eigenvalues(&mat(
+        3,
+        3,
+        &[-2.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -2.0, -2.0],
+    ))
+    .unwrap();
     assert!(close(ev[0], -2.0, 0.0, 1e-14), "{ev:?}");
-    assert!(close(ev[1], -1.0, -1.0, 1e-14) && close(ev[2], -1.0, 1.0, 1e-14), "{ev:?}");
+    assert!(
+        close(ev[1], -1.0, -1.0, 1e-14) && close(ev[2], -1.0, 1.0, 1e-14),
+        "{ev:?}"
+    );
     assert!(matches!(
         eigenvalues(&DMatrix::zeros(2, 3)),
         Err(Error::NotSquare { .. })
@@ -82,7 +96,10 @@ fn eigenvalues_properties() {
             assert!(w[0].re <= w[1].re, "A = {a}");
         }
         let tr: Complex<f64> = ev.iter().sum();
-        assert!((tr.re - a.trace()).abs() < 1e-10 && tr.im.abs() < 1e-10, "A = {a}");
+        assert!(
+            (tr.re - a.trace()).abs() < 1e-10 && tr.im.abs() < 1e-10,
+            "A = {a}"
+        );
         for z in &ev {
             assert!(ev.iter().any(|w| (w - z.conj()).norm() < 1e-9), "A = {a}");
         }
@@ -91,7 +108,10 @@ fn eigenvalues_properties() {
         for (j, &lam) in ev.iter().enumerate() {
             let x = v.column(j).into_owned();
             let r = &ac * &x - x.map(|z| z * lam);
-            assert!(r.norm() < 1e-9 * (1.0 + a.norm()), "A = {a}, lambda = {lam}");
+            assert!(
+                r.norm() < 1e-9 * (1.0 + a.norm()),
+                "A = {a}, lambda = {lam}"
+            );
             assert!((x.norm() - 1.0).abs() < 1e-12);
         }
         // Deterministic.
@@ -117,7 +137,11 @@ fn jordan_guess_examples() {
     // Distinct eigenvalues: one simple cluster each.
     let j = jordan_guess(&mat(2, 2, &[0.0, 1.0, -2.0, -3.0]), &tol).unwrap();
     assert_eq!(j.clusters.len(), 2);
-    assert!(j.clusters.iter().all(|c| c.block_sizes == vec![1] && c.truth == Truth::True));
+    assert!(
+        j.clusters
+            .iter()
+            .all(|c| c.block_sizes == vec![1] && c.truth == Truth::True)
+    );
 }
 
 /// The single-wheel yaw-plane matrix (vehicle-dynamics paper eq. 27 with m = 1500, u = 20,
@@ -129,7 +153,21 @@ fn jordan_guess_yaw_single_wheel() {
         4,
         4,
         &[
-            0.0, 20.0, -1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, -8.0 / 3.0, -20.0, 0.0, 0.0, 0.0,
+            0.0,
+            20.0,
+            -1.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            -1.0,
+            0.0,
+            0.0,
+            -8.0 / 3.0,
+            -20.0,
+            0.0,
+            0.0,
+            0.0,
             0.0,
         ],
     );
@@ -140,13 +178,20 @@ fn jordan_guess_yaw_single_wheel() {
         .find(|c| c.center.norm() < 1e-8)
         .expect("a cluster at 0");
     assert_eq!(zero.algebraic_multiplicity, 3, "{j:?}");
-    assert!(zero.block_sizes == vec![3] || zero.truth == Truth::Unknown, "{j:?}");
+    assert!(
+        zero.block_sizes == vec![3] || zero.truth == Truth::Unknown,
+        "{j:?}"
+    );
     assert_eq!(zero.block_sizes, vec![3], "{j:?}");
     assert_eq!(zero.geometric_multiplicity, 1);
     let other = j.clusters.iter().find(|c| c.center.norm() > 1.0).unwrap();
     assert!((other.center.re + 8.0 / 3.0).abs() < 1e-12 && other.block_sizes == vec![1]);
     // Never three certain distinct eigenvalues near zero.
-    let near_zero: Vec<_> = j.clusters.iter().filter(|c| c.center.norm() < 1e-3).collect();
+    let near_zero: Vec<_> = j
+        .clusters
+        .iter()
+        .filter(|c| c.center.norm() < 1e-3)
+        .collect();
     assert!(near_zero.len() == 1 || near_zero.iter().any(|c| c.truth != Truth::True));
 }
 
@@ -209,8 +254,7 @@ fn jordan_guess_properties() {
         let a = &t * &jm * &ti;
         let r = jordan_guess(&a, &Tol::default()).unwrap();
         for &lam in &evs {
-            let mut want: Vec<usize> =
-                blocks.iter().filter(|b| b.0 == lam).map(|b| b.1).collect();
+            let mut want: Vec<usize> = blocks.iter().filter(|b| b.0 == lam).map(|b| b.1).collect();
             if want.is_empty() {
                 continue;
             }
@@ -252,8 +296,14 @@ fn minreal_examples() {
     let r = minreal(&a, &DMatrix::zeros(2, 0), &c, &DMatrix::zeros(1, 0), &tol).unwrap();
     assert_eq!(r.order, 0);
     let e = DMatrix::<f64>::zeros(0, 0);
-    let r = minreal(&e, &DMatrix::zeros(0, 1), &DMatrix::zeros(1, 0), &DMatrix::zeros(1, 1), &tol)
-        .unwrap();
+    let r = minreal(
+        &e,
+        &DMatrix::zeros(0, 1),
+        &DMatrix::zeros(1, 0),
+        &DMatrix::zeros(1, 1),
+        &tol,
+    )
+    .unwrap();
     assert_eq!(r.order, 0);
     // Shape errors.
     assert!(matches!(
@@ -282,7 +332,8 @@ fn sliding_masses() -> (DMatrix<f64>, DMatrix<f64>, DMatrix<f64>) {
         }
     }
     let mut a = DMatrix::<f64>::zeros(20, 20);
-    a.view_mut((0, 10), (10, 10)).copy_from(&DMatrix::identity(10, 10));
+    a.view_mut((0, 10), (10, 10))
+        .copy_from(&DMatrix::identity(10, 10));
     a.view_mut((10, 0), (10, 10)).copy_from(&(-k));
     let mut b = DMatrix::<f64>::zeros(20, 1);
     b[(13, 0)] = -1.0;
@@ -309,13 +360,20 @@ fn minreal_properties() {
         let c = &s.c * &t;
         let d = g.matrix(p, m, 1.0);
         let r = minreal(&a, &b, &c, &d, &tol).unwrap();
-        assert_eq!(r.order, s.minimal_order, "n={n} m={m} p={p} gaps {:?}", r.gaps);
+        assert_eq!(
+            r.order, s.minimal_order,
+            "n={n} m={m} p={p} gaps {:?}",
+            r.gaps
+        );
         assert_eq!(r.truth, Truth::True, "n={n} gaps {:?}", r.gaps);
         let k = 2 * n + 2;
         let h0 = markov_parameters(&a, &b, &c, &d, k).unwrap();
         let h1 = markov_parameters(&r.a, &r.b, &r.c, &r.d, k).unwrap();
         let (diff, size) = max_markov_diff(&h0, &h1);
-        assert!(diff <= 1e-8 * (1.0 + size), "n={n}: Markov differ by {diff}");
+        assert!(
+            diff <= 1e-8 * (1.0 + size),
+            "n={n}: Markov differ by {diff}"
+        );
         // The result is controllable and observable.
         assert_eq!(is_controllable(&r.a, &r.b, &tol).unwrap(), Truth::True);
         assert_eq!(is_observable(&r.a, &r.c, &tol).unwrap(), Truth::True);
@@ -365,25 +423,46 @@ fn markov_and_era_examples() {
     assert!(diff <= 1e-10 * size, "{diff}");
     let mut ev = eigenvalues(&r.a).unwrap();
     ev.sort_by(|x, y| x.re.total_cmp(&y.re));
-    assert!(close(ev[0], -2.0, 0.0, 1e-9) && close(ev[1], -1.0, 0.0, 1e-9), "{ev:?}");
+    assert!(
+        close(ev[0], -2.0, 0.0, 1e-9) && close(ev[1], -1.0, 0.0, 1e-9),
+        "{ev:?}"
+    );
     // Requested order 1: a truncation.
     let r1 = era(&h, Some(1), &Tol::default()).unwrap();
     assert_eq!((r1.order, r1.truth), (1, Truth::Unknown));
     // Errors.
-    assert!(matches!(era(&h[..2], None, &Tol::default()), Err(Error::Invalid(_))));
-    assert!(matches!(era(&h, Some(40), &Tol::default()), Err(Error::Invalid(_))));
+    assert!(matches!(
+        era(&h[..2], None, &Tol::default()),
+        Err(Error::Invalid(_))
+    ));
+    assert!(matches!(
+        era(&h, Some(40), &Tol::default()),
+        Err(Error::Invalid(_))
+    ));
     let bad = vec![h[0].clone(), h[1].clone(), DMatrix::zeros(2, 1)];
-    assert!(matches!(era(&bad, None, &Tol::default()), Err(Error::Shape { .. })));
+    assert!(matches!(
+        era(&bad, None, &Tol::default()),
+        Err(Error::Shape { .. })
+    ));
     // The sliding masses: order 8 from 21 parameters. From 41 the fast modes swamp the slow
     // ones (A^40 spans 1e10 to 1e-11: the paper's ERA round-off failure); the result then
     // says Unknown instead of claiming a wrong order.
     let (a, b, c) = sliding_masses();
     let h = markov_parameters(&a, &b, &c, &DMatrix::zeros(1, 1), 21).unwrap();
     let r = era(&h, None, &Tol::default()).unwrap();
-    assert_eq!((r.order, r.truth), (8, Truth::True), "{:?}", r.singular_values);
+    assert_eq!(
+        (r.order, r.truth),
+        (8, Truth::True),
+        "{:?}",
+        r.singular_values
+    );
     let h = markov_parameters(&a, &b, &c, &DMatrix::zeros(1, 1), 41).unwrap();
     let r = era(&h, None, &Tol::default()).unwrap();
-    assert!(r.order == 8 || r.truth == Truth::Unknown, "{:?}", r.singular_values);
+    assert!(
+        r.order == 8 || r.truth == Truth::Unknown,
+        "{:?}",
+        r.singular_values
+    );
 }
 
 #[test]
@@ -436,7 +515,11 @@ fn invariant_zeros_examples() {
 #[test]
 fn invariant_zeros_lugre_dc_motor() {
     let (j, s0, s1, a2) = (0.0023, 260.0, 0.6, 0.176);
-    let a = mat(3, 3, &[0.0, 1.0, 0.0, 0.0, -(a2 + s1) / j, -s0 / j, 0.0, 1.0, 0.0]);
+    let a = mat(
+        3,
+        3,
+        &[0.0, 1.0, 0.0, 0.0, -(a2 + s1) / j, -s0 / j, 0.0, 1.0, 0.0],
+    );
     let b = mat(3, 1, &[0.0, s1 / j, -1.0]);
     let c = mat(1, 3, &[1.0, 0.0, 0.0]);
     let r = invariant_zeros_report(&a, &b, &c, &DMatrix::zeros(1, 1), &Tol::default()).unwrap();
@@ -466,7 +549,10 @@ fn invariant_zeros_properties() {
         let z2 = invariant_zeros(&(&ti * &a * &t), &(&ti * &b), &(&c * &t), &d, &tol).unwrap();
         assert_eq!(z.len(), z2.len());
         for x in &z {
-            assert!(z2.iter().any(|y| (x - y).norm() < 1e-6 * (1.0 + x.norm())), "{z:?} {z2:?}");
+            assert!(
+                z2.iter().any(|y| (x - y).norm() < 1e-6 * (1.0 + x.norm())),
+                "{z:?} {z2:?}"
+            );
             // The Rosenbrock matrix loses rank at x.
             let mut p = DMatrix::<Complex<f64>>::zeros(n + m, n + m);
             for i in 0..n {
@@ -490,7 +576,10 @@ fn invariant_zeros_properties() {
         let want = eigenvalues(&(&a - &b * d.clone().try_inverse().unwrap() * &c)).unwrap();
         assert_eq!(z.len(), n);
         for x in &want {
-            assert!(z.iter().any(|y| (x - y).norm() < 1e-8 * (1.0 + x.norm())), "{z:?} {want:?}");
+            assert!(
+                z.iter().any(|y| (x - y).norm() < 1e-8 * (1.0 + x.norm())),
+                "{z:?} {want:?}"
+            );
         }
     }
 }
@@ -509,9 +598,16 @@ fn freqresp_examples() {
     let want = Complex::new(1.0, 0.0) / Complex::new(1.0, w);
     assert!((g[2][(0, 0)] - want).norm() < 1e-15);
     // Empty frequency list; singular at an eigenvalue on the axis; bad frequency.
-    assert!(freqresp(&(-&one), &one, &one, &mat(1, 1, &[0.0]), &[]).unwrap().is_empty());
+    assert!(
+        freqresp(&(-&one), &one, &one, &mat(1, 1, &[0.0]), &[])
+            .unwrap()
+            .is_empty()
+    );
     let z = mat(1, 1, &[0.0]);
-    assert!(matches!(freqresp(&z, &one, &one, &z, &[0.0]), Err(Error::Singular)));
+    assert!(matches!(
+        freqresp(&z, &one, &one, &z, &[0.0]),
+        Err(Error::Singular)
+    ));
     assert!(matches!(
         freqresp(&(-&one), &one, &one, &z, &[f64::NAN]),
         Err(Error::Invalid(_))

@@ -45,6 +45,9 @@ pub(crate) fn sort_eigenvalues(ev: &mut [Complex<f64>]) {
     ev.sort_by(|x, y| x.re.total_cmp(&y.re).then(x.im.total_cmp(&y.im)));
 }
 
+/// Eigenvalues and eigenvectors (as columns), as returned by [`eigenvectors`].
+pub type EigenPairs = (Vec<Complex<f64>>, DMatrix<Complex<f64>>);
+
 /// Eigenvalues (as [`eigenvalues`]) and unit eigenvectors: column `i` of the matrix satisfies
 /// $A v_i \approx \lambda_i v_i$.
 ///
@@ -57,7 +60,7 @@ pub(crate) fn sort_eigenvalues(ev: &mut [Complex<f64>]) {
 ///
 /// # Errors
 /// As [`eigenvalues`].
-pub fn eigenvectors(a: &DMatrix<f64>) -> Result<(Vec<Complex<f64>>, DMatrix<Complex<f64>>)> {
+pub fn eigenvectors(a: &DMatrix<f64>) -> Result<EigenPairs> {
     let ev = eigenvalues(a)?;
     let n = a.nrows();
     let ac: DMatrix<Complex<f64>> = a.map(|x| Complex::new(x, 0.0));
@@ -109,10 +112,9 @@ fn inverse_iteration(
         }
         if ok {
             // Fix the phase: largest entry real positive.
-            let (imax, _) = x
-                .iter()
-                .enumerate()
-                .fold((0, -1.0), |acc, (i, z)| if z.norm() > acc.1 { (i, z.norm()) } else { acc });
+            let (imax, _) = x.iter().enumerate().fold((0, -1.0), |acc, (i, z)| {
+                if z.norm() > acc.1 { (i, z.norm()) } else { acc }
+            });
             let ph = x[imax] / Complex::new(x[imax].norm(), 0.0);
             return Ok(x.map(|z| z / ph));
         }

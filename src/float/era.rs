@@ -17,8 +17,8 @@
 //! | [`markov_parameters`]   | $M_0, \dots, M_{k-1}$                |
 //! | [`era`]                 | [`FloatRealization`]                 |
 
-use nalgebra::DMatrix;
 use super::svd::jacobi_svd;
+use nalgebra::DMatrix;
 
 use super::{RankGap, Tol, Truth, check_finite, check_system, decide_rank};
 use crate::error::{Error, Result};

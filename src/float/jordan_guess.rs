@@ -84,17 +84,17 @@ pub fn jordan_guess(a: &DMatrix<f64>, tol: &Tol) -> Result<FloatJordan> {
         let members: Vec<Complex<f64>> = g.iter().map(|&i| ev[i]).collect();
         let center = centre(&members);
         // Reuse the structure of the conjugate cluster when it was already analysed.
-        if center.im < 0.0 {
-            if let Some(twin) = clusters
-                .iter()
-                .find(|c| c.members.len() == members.len() && (c.center - center.conj()).norm() <= f64::EPSILON * 16.0 * norm.max(1.0))
-            {
-                let mut c = twin.clone();
-                c.center = center;
-                c.members = members;
-                clusters.push(c);
-                continue;
-            }
+        if center.im < 0.0
+            && let Some(twin) = clusters.iter().find(|c| {
+                c.members.len() == members.len()
+                    && (c.center - center.conj()).norm() <= f64::EPSILON * 16.0 * norm.max(1.0)
+            })
+        {
+            let mut c = twin.clone();
+            c.center = center;
+            c.members = members;
+            clusters.push(c);
+            continue;
         }
         let c = analyse_cluster(a, center, members, n, tol);
         clusters.push(c);
@@ -119,9 +119,7 @@ pub fn jordan_guess(a: &DMatrix<f64>, tol: &Tol) -> Result<FloatJordan> {
             ));
         }
     }
-    let truth = clusters
-        .iter()
-        .fold(Truth::True, |acc, c| acc.and(c.truth));
+    let truth = clusters.iter().fold(Truth::True, |acc, c| acc.and(c.truth));
     Ok(FloatJordan {
         clusters,
         norm,
@@ -145,8 +143,10 @@ fn cluster_indices(ev: &[Complex<f64>], norm: f64, tol: &Tol) -> Vec<Vec<usize>>
     while !remaining.is_empty() {
         let mut best: (usize, Vec<usize>) = (0, Vec::new());
         for &i in &remaining {
-            let mut near: Vec<(f64, usize)> =
-                remaining.iter().map(|&j| ((ev[j] - ev[i]).norm(), j)).collect();
+            let mut near: Vec<(f64, usize)> = remaining
+                .iter()
+                .map(|&j| ((ev[j] - ev[i]).norm(), j))
+                .collect();
             near.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
             let mut s_best = 1;
             for s in 2..=near.len() {
@@ -195,11 +195,10 @@ fn analyse_cluster(
         .iter()
         .map(|z| (z - center).norm())
         .fold(0.0, f64::max);
-    let m: DMatrix<Complex<f64>> =
-        DMatrix::from_fn(n, n, |i, j| {
-            let x = Complex::new(a[(i, j)], 0.0);
-            if i == j { x - center } else { x }
-        });
+    let m: DMatrix<Complex<f64>> = DMatrix::from_fn(n, n, |i, j| {
+        let x = Complex::new(a[(i, j)], 0.0);
+        if i == j { x - center } else { x }
+    });
     let mut gaps: Vec<RankGap> = Vec::new();
     let mut nullity = vec![0usize];
     let mut power = m.clone();

@@ -34,7 +34,7 @@ mod staircase;
 mod svd;
 mod zeros;
 
-pub use eigen::{eigenvalues, eigenvectors};
+pub use eigen::{EigenPairs, eigenvalues, eigenvectors};
 pub use era::{FloatRealization, era, markov_parameters};
 pub use freqresp::freqresp;
 pub use jordan_guess::{Cluster, FloatJordan, jordan_guess};
@@ -163,7 +163,11 @@ pub(crate) fn decide_rank(what: &str, sv: &[f64], scale: f64, tol: &Tol) -> Rank
     let dropped = if rank < s.len() { s[rank] } else { 0.0 };
     let noise = dropped.max(floor);
     let ratio = if rank == 0 {
-        if noise == 0.0 { f64::INFINITY } else { t / noise }
+        if noise == 0.0 {
+            f64::INFINITY
+        } else {
+            t / noise
+        }
     } else {
         kept / noise.max(f64::MIN_POSITIVE)
     };
@@ -251,7 +255,9 @@ pub(crate) fn check_finite(op: &'static str, a: &DMatrix<f64>) -> Result<()> {
     if a.iter().all(|x| x.is_finite()) {
         Ok(())
     } else {
-        Err(Error::Invalid(format!("{op}: matrix has a non-finite entry")))
+        Err(Error::Invalid(format!(
+            "{op}: matrix has a non-finite entry"
+        )))
     }
 }
 

@@ -155,7 +155,11 @@ pub(crate) fn controllable_staircase(
         }
         let k = len.min(width);
         let taus = qr_col_piv(&mut work, len, width, k);
-        let r_fac = DMatrix::from_fn(k, width, |i, j| if j >= i { work[i + j * len] } else { 0.0 });
+        let r_fac = DMatrix::from_fn(
+            k,
+            width,
+            |i, j| if j >= i { work[i + j * len] } else { 0.0 },
+        );
         let (sv, u) = left_basis(&r_fac);
         let g = decide_rank(&format!("{what} step {step}"), &sv, scale, tol);
         let r = g.rank;
@@ -348,5 +352,3 @@ fn small_right(m: &mut DMatrix<f64>, c0: usize, u: &DMatrix<f64>, t: &mut Vec<f6
         }
     }
 }
-
-

@@ -137,7 +137,9 @@ mod tests {
 
     #[test]
     fn jacobi_reconstructs() {
-        let g = DMatrix::from_fn(5, 3, |i, j| ((i * 7 + j * 3) % 5) as f64 - 2.0 + 0.1 * j as f64);
+        let g = DMatrix::from_fn(5, 3, |i, j| {
+            ((i * 7 + j * 3) % 5) as f64 - 2.0 + 0.1 * j as f64
+        });
         let s = jacobi_svd(g.clone());
         let back = &s.w * s.v.transpose();
         assert!((back - &g).norm() < 1e-13);
@@ -145,7 +147,9 @@ mod tests {
         let (sv, v) = right_basis(&g);
         assert_eq!(sv.len(), 3);
         assert!((v.transpose() * &v - DMatrix::<f64>::identity(3, 3)).norm() < 1e-14);
-        let z = DMatrix::from_fn(2, 2, |i, j| Complex::new((i + j) as f64, i as f64 - j as f64));
+        let z = DMatrix::from_fn(2, 2, |i, j| {
+            Complex::new((i + j) as f64, i as f64 - j as f64)
+        });
         let cs = complex_singular_values(&z);
         assert_eq!(cs.len(), 2);
         // |det| = product of singular values.

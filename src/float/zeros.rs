@@ -10,7 +10,7 @@
 //!    rank $\mu$. Those rows force $x_2 = 0$ (the last $\mu$ states of $x = W [x_1; x_2]$), so
 //!    unimodular row operations remove $x_2$, the rows that fixed it, and the zero rows, leaving
 //!    $$\left(A_{11},\ B_1,\ \begin{bmatrix} A_{21} \\ C_{\rho 1}\end{bmatrix},\
-//!      \begin{bmatrix} B_2 \\ D_\rho \end{bmatrix}\right)$$
+//!    \begin{bmatrix} B_2 \\ D_\rho \end{bmatrix}\right)$$
 //!    with $n - \mu$ states;
 //! 3. repeat until $D$ has full row rank, then do the same on the dual
 //!    $(A^T, C^T, B^T, D^T)$, alternating until $D$ is square and invertible.
@@ -107,9 +107,9 @@ pub fn invariant_zeros_report(
         eigenvalues(&sys.a)?
     } else {
         let lu = LU::new(sys.d.clone());
-        let x = lu.solve(&sys.c).ok_or_else(|| {
-            Error::Verification("invariant_zeros: reduced D is singular".into())
-        })?;
+        let x = lu
+            .solve(&sys.c)
+            .ok_or_else(|| Error::Verification("invariant_zeros: reduced D is singular".into()))?;
         eigenvalues(&(&sys.a - &sys.b * x))?
     };
     Ok(FloatZeros {
