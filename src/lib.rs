@@ -11,6 +11,7 @@
 pub mod cli;
 pub mod error;
 pub mod field;
+pub mod float;
 pub mod io;
 pub mod matrix;
 pub mod poly;
