@@ -9,5 +9,6 @@
 
 pub mod error;
 pub mod field;
+pub mod poly;
 
 pub use error::{Error, Result};
