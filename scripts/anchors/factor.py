@@ -8,7 +8,12 @@ python-flint) and re-runs itself inside it; runs `cargo bench --bench factor`, w
 `name: X ms` lines and writes the case polynomials to target/factor-bench-cases.txt; times
 SymPy and FLINT on those same polynomials (median of repeated runs) and prints a table with
 the ratios ours/flint (goal: <= 10) and sympy/ours (goal: > 1).
+
+SymPy >= 1.13 hands ZZ[x] factorization to python-flint when that is installed; the SymPy
+column is therefore measured in a child process with SYMPY_GROUND_TYPES=python (SymPy's own
+Zassenhaus), which is what a SymPy user without python-flint gets.
 """
+import json
 import os
 import re
 import subprocess
@@ -58,12 +63,38 @@ def run_ours():
     return ours, cases
 
 
+def sympy_child(cases_json):
+    """Times SymPy's factor_list on each distinct polynomial; prints JSON {text: ms}."""
+    import sympy as sp
+    x = sp.Symbol("x")
+    out = {}
+    for text in json.loads(Path(cases_json).read_text()):
+        p = sp.Poly(sp.sympify(text.replace("^", "**"), locals={"x": x}), x)
+        out[text] = median_ms(lambda: sp.factor_list(p))
+    from sympy.external.gmpy import GROUND_TYPES
+    print(json.dumps({"ground_types": GROUND_TYPES,
+                      "version": sp.__version__, "times": out}))
+
+
+def time_sympy_pure(texts):
+    tmp = ROOT / "target" / "factor-sympy-cases.json"
+    tmp.write_text(json.dumps(sorted(set(texts))))
+    env = dict(os.environ, SYMPY_GROUND_TYPES="python")
+    res = subprocess.run([sys.executable, __file__, "--sympy-child", str(tmp)], env=env,
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(res)
+
+
 def main():
     ensure_venv()
+    if len(sys.argv) == 3 and sys.argv[1] == "--sympy-child":
+        sympy_child(sys.argv[2])
+        return
     import flint
     import sympy as sp
 
     ours, cases = run_ours()
+    pure = time_sympy_pure([t for _, t in cases])
     x = sp.Symbol("x")
     rows = []
     seen = {}
@@ -75,7 +106,7 @@ def main():
             p = sp.Poly(expr, x)
             coeffs = [int(c) for c in reversed(p.all_coeffs())]
             fp = flint.fmpz_poly(coeffs)
-            t_sympy = median_ms(lambda: sp.factor_list(p))
+            t_sympy = pure["times"][text]
             t_flint = median_ms(lambda: fp.factor())
             # sanity: same number of distinct factors
             n_sym = len(sp.factor_list(p)[1])
@@ -83,7 +114,8 @@ def main():
             assert n_sym == n_fl, (name, n_sym, n_fl)
             seen[text] = (t_sympy, t_flint)
         rows.append((name, ours.get(name, float("nan")), t_flint, t_sympy))
-    print(f"sympy {sp.__version__}, python-flint {flint.__version__}")
+    print(f"sympy {pure['version']} (ground types: {pure['ground_types']}), "
+          f"python-flint {flint.__version__}")
     print(f"| {'case':<46} | {'ours ms':>10} | {'flint ms':>10} | {'sympy ms':>10} | "
           f"{'ours/flint':>10} | {'sympy/ours':>10} |")
     print(f"|{'-' * 48}|{'-' * 12}|{'-' * 12}|{'-' * 12}|{'-' * 12}|{'-' * 12}|")

@@ -18,7 +18,7 @@ use super::hensel::{PolyM, kron_mul};
 use crate::poly::zpoly::ZPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, Zero};
+use num_traits::{Signed, Zero};
 
 /// Symmetric residue in $(-M/2, M/2]$.
 fn symmetric(c: &BigInt, m: &BigInt, half: &BigInt) -> BigInt {
@@ -73,6 +73,13 @@ pub(crate) fn recombine(f: &ZPoly, lifted: Vec<PolyM>, m: &BigInt, allowed: &[bo
     out
 }
 
+/// Cheap per-subset data: degree, subleading coefficient, constant coefficient.
+struct Summary {
+    deg: usize,
+    sub: BigInt,
+    c0: BigInt,
+}
+
 /// Searches the `s`-subsets of `t` for a true factor of `rest`; returns the subset, the
 /// factor (primitive, positive leading coefficient) and the cofactor.
 fn find_factor(
@@ -87,21 +94,39 @@ fn find_factor(
     let r = t.len();
     let b = rest.leading_coeff();
     let bf0 = &b * &rest.coeffs()[0];
-    let degs: Vec<usize> = t.iter().map(|g| g.len() - 1).collect();
+    let sums: Vec<Summary> = t
+        .iter()
+        .map(|g| Summary {
+            deg: g.len() - 1,
+            sub: g[g.len() - 2].clone(),
+            c0: g[0].clone(),
+        })
+        .collect();
+    let total_sub: BigInt = sums.iter().map(|x| &x.sub).sum();
+    // |coefficients of (b / lc h) h| <= |b| 2^deg(h) |rest|_2 for every factor h of rest
+    let norm = rest.norm2_squared().sqrt() + 1u32;
+    let bounds: Vec<BigInt> = (0..=n).map(|d| b.abs() * &norm << d).collect();
     let mut idx: Vec<usize> = (0..s).collect();
     loop {
-        let d: usize = idx.iter().map(|&i| degs[i]).sum();
+        let d: usize = idx.iter().map(|&i| sums[i].deg).sum();
         if allowed[d] && allowed[n - d] {
             // form the candidate from the side of degree <= n/2
-            let side: Vec<usize> = if 2 * d <= n {
-                idx.clone()
+            let low = 2 * d <= n;
+            let (side, ds, sub): (Vec<usize>, usize, BigInt) = if low {
+                (idx.clone(), d, idx.iter().map(|&i| &sums[i].sub).sum())
             } else {
-                (0..r).filter(|i| !idx.contains(i)).collect()
+                let sub_s: BigInt = idx.iter().map(|&i| &sums[i].sub).sum();
+                ((0..r).filter(|i| !idx.contains(i)).collect(), n - d, &total_sub - sub_s)
             };
-            if let Some((g, q)) = try_candidate(rest, t, &side, &b, &bf0, m, half) {
-                let (factor, cofactor) = if 2 * d <= n { (g, q) } else { (q, g) };
-                let cofactor = cofactor.primitive_part();
-                return Some((idx, factor.primitive_part(), cofactor));
+            // the subleading coefficient of b * prod(side) is b * (sum of theirs)
+            let c1 = symmetric(&(&b * sub), m, half);
+            if c1.abs() <= bounds[ds] {
+                let c = Check { b: &b, bf0: &bf0, m, half, bound: &bounds[ds] };
+                if let Some((g, q)) = try_candidate(rest, t, &sums, &side, &c) {
+                    let (factor, cofactor) = if low { (g, q) } else { (q, g) };
+                    let cofactor = cofactor.primitive_part();
+                    return Some((idx, factor.primitive_part(), cofactor));
+                }
             }
         }
         if !next_combination(&mut idx, r) {
@@ -110,40 +135,50 @@ fn find_factor(
     }
 }
 
+struct Check<'a> {
+    b: &'a BigInt,
+    bf0: &'a BigInt,
+    m: &'a BigInt,
+    half: &'a BigInt,
+    bound: &'a BigInt,
+}
+
 /// The candidate $\operatorname{pp}(b \prod_{side} G_i \bmod M)$ and the quotient of
-/// `rest` by it, if it divides `rest`.
+/// `rest` by it, if it divides `rest`. Cheap tests first: the constant term must divide
+/// $b \cdot \text{rest}(0)$, every coefficient must obey the bound.
 fn try_candidate(
     rest: &ZPoly,
     t: &[PolyM],
+    sums: &[Summary],
     side: &[usize],
-    b: &BigInt,
-    bf0: &BigInt,
-    m: &BigInt,
-    half: &BigInt,
+    c: &Check,
 ) -> Option<(ZPoly, ZPoly)> {
-    // constant term test: it must divide b * rest(0)
-    let mut c0 = b.mod_floor(m);
+    let (m, half) = (c.m, c.half);
+    let mut c0 = c.b.mod_floor(m);
     for &i in side {
-        c0 = (c0 * &t[i][0]).mod_floor(m);
+        c0 = (c0 * &sums[i].c0).mod_floor(m);
     }
     let c0 = symmetric(&c0, m, half);
-    if c0.is_zero() || !bf0.is_multiple_of(&c0) {
+    if c0.is_zero() || !c.bf0.is_multiple_of(&c0) {
         return None;
     }
-    // leading term x-coefficient-free check passed; form the full candidate
-    let mut prod: PolyM = vec![b.mod_floor(m)];
+    let mut prod: PolyM = vec![c.b.mod_floor(m)];
     for &i in side {
         prod = kron_mul(&prod, &t[i]);
-        for c in prod.iter_mut() {
-            *c = c.mod_floor(m);
+        for x in prod.iter_mut() {
+            *x = x.mod_floor(m);
         }
     }
-    let g = ZPoly::new(prod.iter().map(|c| symmetric(c, m, half)).collect()).primitive_part();
-    if g.deg0() == 0 {
-        return None;
+    let mut coeffs = Vec::with_capacity(prod.len());
+    for x in &prod {
+        let y = symmetric(x, m, half);
+        if &y.abs() > c.bound {
+            return None;
+        }
+        coeffs.push(y);
     }
-    // the candidate's leading coefficient must divide lc(rest)
-    if !b.abs().is_multiple_of(&g.leading_coeff()) && !g.leading_coeff().is_one() {
+    let g = ZPoly::new(coeffs).primitive_part();
+    if g.deg0() == 0 || !c.b.is_multiple_of(&g.leading_coeff()) {
         return None;
     }
     let q = rest.div_exact(&g)?;
