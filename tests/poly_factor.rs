@@ -296,8 +296,7 @@ fn x_pow_n_minus_one_cyclotomic() {
 
 #[test]
 fn x_pow_n_minus_one_general_path() {
-    let ns: Vec<usize> = (1..=40).chain([48, 60, 64, 72, 84, 90, 96, 105, 120]).collect();
-    for n in ns {
+    for n in (1..=60).chain([72, 84, 90, 96, 100, 105, 108, 112, 120]) {
         let f = ZPoly::monomial(BigInt::one(), n) - ZPoly::one();
         let (c, fs) = factor_zpoly_zassenhaus(&f).unwrap();
         check_cyclotomic(n, &f, &c, &fs);

@@ -15,7 +15,7 @@
 //! $p \nmid \operatorname{lc}(f)$ with $f \bmod p$ square-free, keep the one with fewest
 //! modular factors (distinct-degree counts) and intersect the possible factor degrees;
 //! factor modulo $p$ (Cantor–Zassenhaus, [`cantor_zassenhaus`]); lift to $p^k$ past twice
-//! $|\operatorname{lc} f| \, 2^{\lfloor n/2 \rfloor} \|f\|_2$ (multifactor quadratic
+//! $2^{\lfloor n/2 \rfloor} \|f\|_2$ (multifactor quadratic
 //! Hensel lifting, [`hensel`]); recombine subsets ([`zassenhaus`]). Recombination is
 //! exponential in the number of modular factors in the worst case (no LLL); Swinnerton-Dyer
 //! polynomials of degree 16 (8 modular factors) take milliseconds.
@@ -183,12 +183,16 @@ fn choose_prime(f: &ZPoly) -> Option<PrimeChoice> {
     Some(PrimeChoice { zp, ddf, allowed })
 }
 
-/// The smallest $k$ with $p^k > 2 |b| 2^{\lfloor n/2 \rfloor} \|f\|_2$, $b = \operatorname{lc} f$.
+/// The smallest $k$ with $p^k > 2 \cdot 2^{\lfloor n/2 \rfloor} \|f\|_2$.
+///
+/// For $h \mid f$ of degree $d$, Mahler's measure gives
+/// $\|h\|_1 \le 2^d M(h) \le 2^d |\operatorname{lc} h / \operatorname{lc} f| \, \|f\|_2$, so
+/// the candidate $(\operatorname{lc} f / \operatorname{lc} h)\, h$ has coefficients at most
+/// $2^d \|f\|_2$ in absolute value: the leading coefficient does not enter the bound.
 fn lifting_exponent(f: &ZPoly, p: u64) -> u32 {
     let n = f.deg0();
-    let b = f.leading_coeff();
-    // compare squares: p^(2k) > 4 b^2 4^(n/2) |f|_2^2
-    let rhs = BigInt::from(4) * &b * &b * (BigInt::one() << (2 * (n / 2))) * f.norm2_squared();
+    // compare squares: p^(2k) > 4 * 4^(n/2) * |f|_2^2
+    let rhs = (f.norm2_squared() << (2 * (n / 2))) * 4u32;
     let p2 = BigInt::from(p) * BigInt::from(p);
     let mut acc = p2.clone();
     let mut k = 1;

@@ -2,8 +2,8 @@
 //!
 //! Let $f$ be square-free and primitive, $b = \operatorname{lc}(f)$, and
 //! $f \equiv b\, G_1 \cdots G_r \pmod M$ with monic $G_i$, where $M/2$ exceeds
-//! $|b| \cdot 2^{\lfloor n/2 \rfloor} \|f\|_2$ (Mignotte's bound for a factor of degree at
-//! most $n/2$, scaled by $b$). Every irreducible factor $h$ of $f$ satisfies
+//! $2^{\lfloor n/2 \rfloor} \|f\|_2$: for a factor $h$ of degree $d$, Mahler's measure
+//! bounds the coefficients of $(b / \operatorname{lc} h)\, h$ by $2^d M(f) \le 2^d \|f\|_2$. Every irreducible factor $h$ of $f$ satisfies
 //! $(b / \operatorname{lc} h)\, h \equiv b \prod_{i \in S} G_i \pmod M$ for one subset $S$, so
 //! the symmetric residue of $b \prod_S G_i$ *is* that multiple of $h$ when
 //! $\deg h \le n/2$; a factor of larger degree is found through the complement.
@@ -103,9 +103,9 @@ fn find_factor(
         })
         .collect();
     let total_sub: BigInt = sums.iter().map(|x| &x.sub).sum();
-    // |coefficients of (b / lc h) h| <= |b| 2^deg(h) |rest|_2 for every factor h of rest
+    // |coefficients of (b / lc h) h| <= 2^deg(h) M(rest) <= 2^deg(h) |rest|_2 for h | rest
     let norm = rest.norm2_squared().sqrt() + 1u32;
-    let bounds: Vec<BigInt> = (0..=n).map(|d| b.abs() * &norm << d).collect();
+    let bounds: Vec<BigInt> = (0..=n).map(|d| &norm << d).collect();
     let mut idx: Vec<usize> = (0..s).collect();
     loop {
         let d: usize = idx.iter().map(|&i| sums[i].deg).sum();
