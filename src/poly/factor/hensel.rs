@@ -264,7 +264,7 @@ mod tests {
             * ZPoly::from_i64s(&[11, -7, 0, 1])
             * ZPoly::from_i64s(&[9, 2]);
         let zp = Zp::new(13);
-        let fp = zp.monic(&zp.from_zpoly(&f));
+        let fp = zp.monic(&zp.reduce_zpoly(&f));
         let facs = factor_squarefree(&zp, &fp);
         for k in [1, 2, 5, 9] {
             let m = num_traits::pow(BigInt::from(13), k as usize);

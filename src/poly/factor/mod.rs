@@ -129,9 +129,12 @@ fn factor_impl(f: &ZPoly, cyclotomic: bool) -> Result<(BigInt, Vec<(ZPoly, usize
 /// the possible degrees of factors over $\mathbb{Z}$.
 struct PrimeChoice {
     zp: Zp,
-    ddf: Vec<(PolyP, usize)>,
+    ddf: Ddf,
     allowed: Vec<bool>,
 }
+
+/// A distinct-degree factorization: (product of the degree-$d$ factors, $d$).
+type Ddf = Vec<(PolyP, usize)>;
 
 /// Subset sums of a multiset of degrees, as a bitmap over `0..=n`.
 fn subset_sums(ddf: &[(PolyP, usize)], n: usize) -> Vec<bool> {
@@ -155,14 +158,14 @@ fn subset_sums(ddf: &[(PolyP, usize)], n: usize) -> Vec<bool> {
 fn choose_prime(f: &ZPoly) -> Option<PrimeChoice> {
     let n = f.deg0();
     let mut allowed = vec![true; n + 1];
-    let mut best: Option<(usize, Zp, Vec<(PolyP, usize)>)> = None;
+    let mut best: Option<(usize, Zp, Ddf)> = None;
     let mut usable = 0;
     for p in primes_from(3) {
         if usable == PRIMES_TRIED {
             break;
         }
         let zp = Zp::new(p);
-        let fp = zp.from_zpoly(f);
+        let fp = zp.reduce_zpoly(f);
         if fp.len() != n + 1 || !zp.is_squarefree(&fp) {
             continue;
         }
@@ -179,7 +182,8 @@ fn choose_prime(f: &ZPoly) -> Option<PrimeChoice> {
             best = Some((count, zp, ddf));
         }
     }
-    let (_, zp, ddf) = best.expect("a square-free polynomial is square-free modulo almost all primes");
+    let (_, zp, ddf) =
+        best.expect("a square-free polynomial is square-free modulo almost all primes");
     Some(PrimeChoice { zp, ddf, allowed })
 }
 
@@ -233,7 +237,11 @@ fn factor_squarefree(f: &ZPoly) -> Vec<ZPoly> {
 fn cyclotomic_binomial(g: &ZPoly) -> Option<Vec<ZPoly>> {
     let c = g.coeffs();
     let n = c.len().checked_sub(1)?;
-    if n == 0 || !c[1..n].iter().all(|a| a.is_zero()) || !c[n].is_one() || c[0].abs() != BigInt::one() {
+    if n == 0
+        || !c[1..n].iter().all(|a| a.is_zero())
+        || !c[n].is_one()
+        || c[0].abs() != BigInt::one()
+    {
         return None;
     }
     let plus = c[0].is_one();

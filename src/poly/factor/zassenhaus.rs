@@ -116,12 +116,22 @@ fn find_factor(
                 (idx.clone(), d, idx.iter().map(|&i| &sums[i].sub).sum())
             } else {
                 let sub_s: BigInt = idx.iter().map(|&i| &sums[i].sub).sum();
-                ((0..r).filter(|i| !idx.contains(i)).collect(), n - d, &total_sub - sub_s)
+                (
+                    (0..r).filter(|i| !idx.contains(i)).collect(),
+                    n - d,
+                    &total_sub - sub_s,
+                )
             };
             // the subleading coefficient of b * prod(side) is b * (sum of theirs)
             let c1 = symmetric(&(&b * sub), m, half);
             if c1.abs() <= bounds[ds] {
-                let c = Check { b: &b, bf0: &bf0, m, half, bound: &bounds[ds] };
+                let c = Check {
+                    b: &b,
+                    bf0: &bf0,
+                    m,
+                    half,
+                    bound: &bounds[ds],
+                };
                 if let Some((g, q)) = try_candidate(rest, t, &sums, &side, &c) {
                     let (factor, cofactor) = if low { (g, q) } else { (q, g) };
                     let cofactor = cofactor.primitive_part();
