@@ -323,12 +323,43 @@ fn x_pow_n_minus_one_cyclotomic() {
 
 #[test]
 fn x_pow_n_minus_one_general_path() {
-    for n in (1..=60).chain([72, 84, 90, 96, 100, 105, 108, 112, 120]) {
+    // all n <= 120 run in the cyclotomic test above; here a spread (debug-build time)
+    for n in (1..=72).chain([80, 84, 90, 96, 100, 105, 108, 112, 120]) {
         let f = ZPoly::monomial(BigInt::one(), n) - ZPoly::one();
         let (c, fs) = factor_zpoly_zassenhaus(&f).unwrap();
         check_cyclotomic(n, &f, &c, &fs);
         assert_eq!((c, fs), factor_zpoly(&f).unwrap(), "x^{n} - 1");
     }
+}
+
+/// Phi_n by exact division of x^n - 1 by Phi_d, d | n, d < n (test-side construction).
+fn cyclotomic(n: usize) -> ZPoly {
+    let mut f = ZPoly::monomial(BigInt::one(), n) - ZPoly::one();
+    for d in (1..n).filter(|d| n.is_multiple_of(*d)) {
+        f = f.div_exact(&cyclotomic(d)).unwrap();
+    }
+    f
+}
+
+#[test]
+fn cyclotomic_irreducible_and_mixed_products() {
+    // Phi_n for non-cyclic (Z/n)^*: reducible modulo every prime, irreducible over Q
+    for n in [8, 12, 15, 24, 40, 60, 105, 120] {
+        let phi_n = cyclotomic(n);
+        assert_eq!(phi_n.deg0(), phi(n));
+        assert!(!irreducible_mod_some_prime(&phi_n), "Phi_{n}");
+        assert!(is_irreducible(&phi_n), "Phi_{n}");
+        assert_eq!(factor_zpoly(&phi_n).unwrap().1, vec![(phi_n, 1)]);
+    }
+    // not a binomial: the general path must split all of x^60 - 1 and the extra factors
+    let extra = p(&[7, 1, 1]);
+    let f =
+        &(&(ZPoly::monomial(BigInt::one(), 60) - ZPoly::one()) * &extra) * &p(&[1, 0, 0, 3]).pow(2);
+    let (c, fs) = factor_zpoly(&f).unwrap();
+    check_reconstruction(&f, &c, &fs);
+    assert_eq!(fs.len(), 12 + 2);
+    assert!(fs.contains(&(extra, 1)));
+    assert!(fs.contains(&(p(&[1, 0, 0, 3]), 2)));
 }
 
 #[test]

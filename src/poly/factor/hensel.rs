@@ -1,6 +1,6 @@
 //! Multifactor Hensel lifting over $\mathbb{Z}/p^k$.
 //!
-//! Given $f \in \mathbb{Z}[x]$ with $p \nmid \operatorname{lc}(f)$ and
+//! Given $f \in \mathbb{Z}\lbrack x\rbrack$ with $p \nmid \operatorname{lc}(f)$ and
 //! $f \equiv \operatorname{lc}(f)\, g_1 \cdots g_r \pmod p$, $g_i$ monic and pairwise
 //! coprime, compute monic $G_i \equiv g_i \pmod p$ with
 //! $f \equiv \operatorname{lc}(f)\, G_1 \cdots G_r \pmod{p^k}$.

@@ -1,7 +1,7 @@
 //! Factorization of integer polynomials over $\mathbb{Q}$.
 //!
 //! Computes $f = c \prod_i f_i^{e_i}$ with $c \in \mathbb{Z}$ (carrying the sign) and
-//! $f_i \in \mathbb{Z}[x]$ primitive, of positive leading coefficient, pairwise distinct and
+//! $f_i \in \mathbb{Z}\lbrack x\rbrack$ primitive, of positive leading coefficient, pairwise distinct and
 //! irreducible over $\mathbb{Q}$ (equivalently over $\mathbb{Z}$, by Gauss's lemma).
 //!
 //! | entry point | computes | algorithm |
@@ -14,9 +14,9 @@
 //! Zassenhaus pipeline for a square-free primitive $f$ of degree $n$: try several primes
 //! $p \nmid \operatorname{lc}(f)$ with $f \bmod p$ square-free, keep the one with fewest
 //! modular factors (distinct-degree counts) and intersect the possible factor degrees;
-//! factor modulo $p$ (Cantor–Zassenhaus, [`cantor_zassenhaus`]); lift to $p^k$ past twice
+//! factor modulo $p$ (Cantor–Zassenhaus, `cantor_zassenhaus`); lift to $p^k$ past twice
 //! $2^{\lfloor n/2 \rfloor} \|f\|_2$ (multifactor quadratic
-//! Hensel lifting, [`hensel`]); recombine subsets ([`zassenhaus`]). Recombination is
+//! Hensel lifting, `hensel`); recombine subsets (`zassenhaus`). Recombination is
 //! exponential in the number of modular factors in the worst case (no LLL); Swinnerton-Dyer
 //! polynomials of degree 16 (8 modular factors) take milliseconds.
 
