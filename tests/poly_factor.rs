@@ -477,6 +477,28 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
     #[test]
+    fn zpoly_division_and_gcd_properties(a in small_poly(), b in small_poly(), g in small_poly()) {
+        // pseudo-division identity lc(b)^(deg a - deg b + 1) a = q b + r, deg r < deg b
+        let (q, r) = a.pseudo_divrem(&b);
+        let delta = (a.deg0() + 1).saturating_sub(b.deg0()) as u32;
+        let lc = ZPoly::constant(b.leading_coeff()).pow(delta);
+        prop_assert_eq!(&lc * &a, &(&q * &b) + &r);
+        prop_assert!(r.is_zero() || r.deg0() < b.deg0());
+        // exact division recovers factors; gcd(a g, b g) = pp(g) gcd(a, b) up to content
+        let ag = &a * &g;
+        prop_assert_eq!(ag.div_exact(&g), Some(a.clone()));
+        let d = ag.gcd(&(&b * &g));
+        prop_assert!(ag.div_exact(&d).is_some() && (&b * &g).div_exact(&d).is_some());
+        prop_assert!(d.div_exact(&g.primitive_part()).is_some(), "gcd {} lacks {}", d, g);
+        prop_assert_eq!(d.primitive_part(), (&a.gcd(&b) * &g).primitive_part());
+        // content/primitive part, derivative and evaluation
+        prop_assert_eq!(a.primitive_part().scale(&a.content()), a.clone());
+        let x0 = BigInt::from(3);
+        prop_assert_eq!((&a * &b).eval(&x0), a.eval(&x0) * b.eval(&x0));
+        prop_assert_eq!((&a * &b).derivative(), &(&a.derivative() * &b) + &(&a * &b.derivative()));
+    }
+
+    #[test]
     fn random_products_factor_back(
         gs in proptest::collection::vec((small_poly(), 1usize..=2), 1..=4),
         c in -6i64..=6,
