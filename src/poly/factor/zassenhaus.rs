@@ -18,7 +18,7 @@ use super::hensel::{PolyM, kron_mul};
 use crate::poly::zpoly::ZPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{Signed, Zero};
+use num_traits::{Signed, ToPrimitive, Zero};
 
 /// Symmetric residue in $(-M/2, M/2]$.
 fn symmetric(c: &BigInt, m: &BigInt, half: &BigInt) -> BigInt {
@@ -106,12 +106,27 @@ fn find_factor(
     // |coefficients of (b / lc h) h| <= 2^deg(h) M(rest) <= 2^deg(h) |rest|_2 for h | rest
     let norm = rest.norm2_squared().sqrt() + 1u32;
     let bounds: Vec<BigInt> = (0..=n).map(|d| &norm << d).collect();
+    // The d-1 test in fixed point: u_i = floor(2^64 (b sub_i mod M) / M). A wrapping sum of
+    // k of them is within k of 2^64 (b sum sub_i mod M) / M, so a subleading coefficient of
+    // absolute value <= bound puts the sum within 2^64 bound / M + k of 0 (mod 2^64).
+    let scaled = |x: &BigInt| ((x.mod_floor(m) << 64u32) / m).to_u64().unwrap_or(u64::MAX);
+    let fr: Vec<u64> = sums.iter().map(|x| scaled(&(&b * &x.sub))).collect();
+    let fr_total = fr.iter().fold(0u64, |a, &x| a.wrapping_add(x));
+    let thr: Vec<u64> = bounds
+        .iter()
+        .map(|bd| scaled(bd).saturating_add(r as u64 + 2))
+        .collect();
     let mut idx: Vec<usize> = (0..s).collect();
     loop {
         let d: usize = idx.iter().map(|&i| sums[i].deg).sum();
-        if allowed[d] && allowed[n - d] {
+        let low = 2 * d <= n;
+        let near_zero = || {
+            let fs = idx.iter().fold(0u64, |a, &i| a.wrapping_add(fr[i]));
+            let fside = if low { fs } else { fr_total.wrapping_sub(fs) };
+            fside.min(fside.wrapping_neg()) <= thr[if low { d } else { n - d }]
+        };
+        if allowed[d] && allowed[n - d] && near_zero() {
             // form the candidate from the side of degree <= n/2
-            let low = 2 * d <= n;
             let (side, ds, sub): (Vec<usize>, usize, BigInt) = if low {
                 (idx.clone(), d, idx.iter().map(|&i| &sums[i].sub).sum())
             } else {
