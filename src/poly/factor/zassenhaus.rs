@@ -3,16 +3,19 @@
 //! Let $f$ be square-free and primitive, $b = \operatorname{lc}(f)$, and
 //! $f \equiv b\, G_1 \cdots G_r \pmod M$ with monic $G_i$, where $M/2$ exceeds
 //! $2^{\lfloor n/2 \rfloor} \|f\|_2$: for a factor $h$ of degree $d$, Mahler's measure
-//! bounds the coefficients of $(b / \operatorname{lc} h)\, h$ by $2^d M(f) \le 2^d \|f\|_2$. Every irreducible factor $h$ of $f$ satisfies
-//! $(b / \operatorname{lc} h)\, h \equiv b \prod_{i \in S} G_i \pmod M$ for one subset $S$, so
-//! the symmetric residue of $b \prod_S G_i$ *is* that multiple of $h$ when
+//! bounds the coefficients of $(b / \operatorname{lc} h)\, h$ by $2^d M(f) \le 2^d \|f\|_2$.
+//! Every irreducible factor $h$ of $f$ satisfies
+//! $(b / \operatorname{lc} h)\, h \equiv b \prod_{i \in S} G_i \pmod M$ for one subset $S$,
+//! so the symmetric residue of $b \prod_S G_i$ *is* that multiple of $h$ when
 //! $\deg h \le n/2$; a factor of larger degree is found through the complement.
 //!
 //! Subsets are tried by increasing size $s \le |T|/2$; a subset is skipped unless its
 //! degree is a possible factor degree (the intersection, over several primes, of the sets of
-//! subset sums of modular factor degrees) and the constant term of the candidate divides
-//! $b f(0)$; only then is the candidate formed and tried by exact division. Each factor
-//! found is removed from $f$ and its modular factors from $T$.
+//! subset sums of modular factor degrees), its subleading coefficient $b \sum_S a_i$ obeys
+//! the bound (the "d−1 test", first in 64-bit fixed point) and the constant term of the
+//! candidate divides $b f(0)$; only then is the candidate formed, its coefficients checked
+//! against the bound, and tried by exact division. Each factor found is removed from $f$
+//! and its modular factors from $T$.
 
 use super::hensel::{PolyM, kron_mul};
 use crate::poly::zpoly::ZPoly;
