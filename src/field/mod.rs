@@ -17,7 +17,13 @@
 
 use std::fmt;
 
+pub mod complex;
+pub mod number_field;
+pub mod quadratic;
+pub use complex::{ComplexField, ComplexPair};
+pub use number_field::{NfElem, NumberField};
 pub mod rational;
+pub use quadratic::{Quadratic, QuadraticField};
 pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
 
 /// An exact field, as a domain value.

@@ -1,3 +1,24 @@
-//! Polynomials: dense integer polynomials ([`zpoly`]) and factorization over Q ([`factor`]).
+//! Univariate polynomials over any exact [`Field`](crate::field::Field).
+//!
+//! [`Poly<K>`] is dense, low degree first, canonical (no trailing zeros), and stores its
+//! domain value `K`. Arithmetic, division with remainder, gcd and extended gcd, derivative,
+//! square-free factorization (Yun), composition, evaluation, resultant (Euclidean remainder
+//! sequence over the field), parsing and display.
+//!
+//! | entry point | computes |
+//! |---|---|
+//! | [`Poly::divrem`] | $f = q g + r$, $\deg r < \deg g$ |
+//! | [`Poly::gcd`], [`Poly::xgcd`] | monic $g = s f + t h$ |
+//! | [`Poly::squarefree`] | $f = c \prod_i f_i^i$, $f_i$ square-free, coprime |
+//! | [`Poly::resultant`] | $\mathrm{Res}(f, g)$ |
+//! | [`parse_poly_q`] | `x^4 + 4*x^2 + 1` into `Poly<Q>` |
+//!
+//! Integer polynomials ([`zpoly::ZPoly`]) and their factorization over Q ([`factor`]) live
+//! in the submodules.
+
+mod arith;
 pub mod factor;
+mod parse;
 pub mod zpoly;
+pub use arith::*;
+pub use parse::parse_poly_q;

@@ -1,0 +1,245 @@
+//! General number fields $K = \mathbb{Q}[t]/(m(t))$ for an irreducible monic $m$.
+//!
+//! Elements are polynomials in $t$ of degree $< \deg m$ with rational coefficients
+//! (canonical: reduced and without trailing zeros). Multiplication reduces modulo $m$;
+//! the inverse comes from the extended Euclidean algorithm, $s a + u m = 1 \Rightarrow
+//! a^{-1} = s$. A field carries a *marked embedding*: an approximation of the complex root
+//! of $m$ that $t$ stands for, so elements can be approximated (and conjugated when the
+//! field is closed under complex conjugation).
+//!
+//! | entry point | computes |
+//! |---|---|
+//! | [`NumberField::new`] | the field for a monic irreducible modulus and a root choice |
+//! | [`NumberField::elem_from_poly`] | the class of a polynomial in $t$ |
+//! | [`NumberField::generator`] | $t$ |
+
+use super::{Field, Q, Rational, rational_to_f64};
+use crate::error::{Error, Result};
+use crate::poly::{Poly, fmt_poly};
+use num_traits::{One, Zero};
+use std::fmt;
+use std::sync::Arc;
+
+/// Shared context of a number field.
+#[derive(Debug)]
+pub struct NumberFieldCtx {
+    /// Monic irreducible modulus $m(t)$.
+    pub modulus: Poly<Q>,
+    /// Approximation `(re, im)` of the root $t$ stands for.
+    pub root: (f64, f64),
+    /// Variable name used in displays.
+    pub var: String,
+}
+
+/// $\mathbb{Q}(\alpha)$ where $\alpha$ is a root of the monic irreducible `modulus`.
+#[derive(Clone, Debug)]
+pub struct NumberField(pub Arc<NumberFieldCtx>);
+
+impl PartialEq for NumberField {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+            || (self.0.modulus == other.0.modulus
+                && (self.0.root.0 - other.0.root.0).abs() < 1e-9 * (1.0 + self.0.root.0.abs())
+                && (self.0.root.1 - other.0.root.1).abs() < 1e-9 * (1.0 + self.0.root.1.abs()))
+    }
+}
+
+/// An element of a [`NumberField`]: coefficients in $t$, low degree first.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct NfElem(pub Vec<Rational>);
+
+impl NumberField {
+    /// The field $\mathbb{Q}[t]/(m)$ with $t$ the root of $m$ near `root`.
+    ///
+    /// The modulus is made monic. Irreducibility is checked by the caller's factorizer
+    /// ([`crate::poly`]); here only degree and square-freeness are checked.
+    ///
+    /// # Errors
+    /// `NotIrreducible` for a constant or non-square-free modulus.
+    pub fn new(modulus: &Poly<Q>, root: (f64, f64)) -> Result<Self> {
+        let m = modulus.monic();
+        if m.deg() == 0 || !m.gcd(&m.derivative()).is_one() {
+            return Err(Error::NotIrreducible(m.to_string()));
+        }
+        Ok(NumberField(Arc::new(NumberFieldCtx {
+            modulus: m,
+            root,
+            var: "t".into(),
+        })))
+    }
+    pub fn modulus(&self) -> &Poly<Q> {
+        &self.0.modulus
+    }
+    pub fn degree(&self) -> usize {
+        self.0.modulus.deg()
+    }
+    pub fn root_approx(&self) -> (f64, f64) {
+        self.0.root
+    }
+    /// The generator $t$.
+    pub fn generator(&self) -> NfElem {
+        self.elem_from_poly(&Poly::x(Q))
+    }
+    /// The class of `p(t)`.
+    pub fn elem_from_poly(&self, p: &Poly<Q>) -> NfElem {
+        let r = if p.deg() >= self.degree() {
+            p.rem(&self.0.modulus)
+        } else {
+            p.clone()
+        };
+        NfElem(r.into_coeffs())
+    }
+    /// The element as a polynomial in $t$.
+    pub fn elem_to_poly(&self, a: &NfElem) -> Poly<Q> {
+        Poly::new(Q, a.0.clone())
+    }
+    fn reduce(&self, mut v: Vec<Rational>) -> NfElem {
+        let m = self.0.modulus.coeffs();
+        let d = m.len() - 1;
+        while v.len() > d {
+            let c = v.pop().unwrap();
+            if c.is_zero() {
+                continue;
+            }
+            let off = v.len() - d;
+            for j in 0..d {
+                if !m[j].is_zero() {
+                    v[off + j] -= &c * &m[j];
+                }
+            }
+        }
+        while v.last().is_some_and(|c| c.is_zero()) {
+            v.pop();
+        }
+        NfElem(v)
+    }
+    /// Evaluates the element at the marked complex root, in f64.
+    fn eval_approx(&self, a: &NfElem) -> (f64, f64) {
+        let (xr, xi) = self.0.root;
+        let (mut re, mut im) = (0.0, 0.0);
+        for c in a.0.iter().rev() {
+            let nr = re * xr - im * xi + rational_to_f64(c);
+            let ni = re * xi + im * xr;
+            re = nr;
+            im = ni;
+        }
+        (re, im)
+    }
+}
+
+impl fmt::Display for NumberField {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "QQ[t]/({})", self.0.modulus.to_string_var("t"))
+    }
+}
+
+impl Field for NumberField {
+    type Elem = NfElem;
+    fn zero(&self) -> NfElem {
+        NfElem(vec![])
+    }
+    fn one(&self) -> NfElem {
+        NfElem(vec![Rational::one()])
+    }
+    fn is_zero(&self, a: &NfElem) -> bool {
+        a.0.is_empty()
+    }
+    fn is_one(&self, a: &NfElem) -> bool {
+        a.0.len() == 1 && a.0[0].is_one()
+    }
+    fn add(&self, a: &NfElem, b: &NfElem) -> NfElem {
+        let n = a.0.len().max(b.0.len());
+        let mut v: Vec<Rational> = (0..n)
+            .map(|i| match (a.0.get(i), b.0.get(i)) {
+                (Some(x), Some(y)) => x + y,
+                (Some(x), None) => x.clone(),
+                (None, Some(y)) => y.clone(),
+                _ => Rational::zero(),
+            })
+            .collect();
+        while v.last().is_some_and(|c| c.is_zero()) {
+            v.pop();
+        }
+        NfElem(v)
+    }
+    fn sub(&self, a: &NfElem, b: &NfElem) -> NfElem {
+        self.add(a, &self.neg(b))
+    }
+    fn mul(&self, a: &NfElem, b: &NfElem) -> NfElem {
+        if a.0.is_empty() || b.0.is_empty() {
+            return NfElem(vec![]);
+        }
+        if a.0.len() == 1 {
+            return NfElem(b.0.iter().map(|y| &a.0[0] * y).collect());
+        }
+        if b.0.len() == 1 {
+            return NfElem(a.0.iter().map(|x| x * &b.0[0]).collect());
+        }
+        let mut v = vec![Rational::zero(); a.0.len() + b.0.len() - 1];
+        for (i, x) in a.0.iter().enumerate() {
+            if x.is_zero() {
+                continue;
+            }
+            for (j, y) in b.0.iter().enumerate() {
+                if !y.is_zero() {
+                    v[i + j] += x * y;
+                }
+            }
+        }
+        self.reduce(v)
+    }
+    fn neg(&self, a: &NfElem) -> NfElem {
+        NfElem(a.0.iter().map(|x| -x).collect())
+    }
+    fn inv(&self, a: &NfElem) -> Option<NfElem> {
+        if a.0.is_empty() {
+            return None;
+        }
+        if a.0.len() == 1 {
+            return Some(NfElem(vec![a.0[0].recip()]));
+        }
+        let (g, s, _) = self.elem_to_poly(a).xgcd(&self.0.modulus);
+        debug_assert!(g.is_one(), "modulus not irreducible");
+        Some(self.elem_from_poly(&s))
+    }
+    fn from_rational(&self, q: &Rational) -> NfElem {
+        if q.is_zero() {
+            NfElem(vec![])
+        } else {
+            NfElem(vec![q.clone()])
+        }
+    }
+    fn to_rational(&self, a: &NfElem) -> Option<Rational> {
+        match a.0.len() {
+            0 => Some(Rational::zero()),
+            1 => Some(a.0[0].clone()),
+            _ => None,
+        }
+    }
+    fn fmt_elem(&self, a: &NfElem) -> String {
+        fmt_poly(&Q, &a.0, &self.0.var)
+    }
+    fn approx(&self, a: &NfElem) -> (f64, f64) {
+        self.eval_approx(a)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[test]
+    fn arithmetic() {
+        // Q(cbrt 2)
+        let k = NumberField::new(&Poly::from_i64s(&[-2, 0, 0, 1]), (1.2599, 0.0)).unwrap();
+        let t = k.generator();
+        let t3 = k.mul(&k.mul(&t, &t), &t);
+        assert_eq!(t3, k.from_i64(2));
+        let a = k.add(&t, &k.one());
+        let ai = k.inv(&a).unwrap();
+        assert!(k.is_one(&k.mul(&a, &ai)));
+        assert_eq!(k.fmt_elem(&a), "t + 1");
+        let (re, _) = k.approx(&a);
+        assert!((re - 2.2599).abs() < 1e-3);
+        assert!(NumberField::new(&Poly::from_i64s(&[1, 2, 1]), (0.0, 0.0)).is_err());
+    }
+}

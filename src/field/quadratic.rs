@@ -1,0 +1,357 @@
+//! Quadratic fields $\mathbb{Q}(\sqrt d)$: elements $a + b\sqrt d$ ("algebraic-number pairs").
+//!
+//! `d` is a square-free integer different from 0 and 1; `d = -1` gives $\mathbb{Q}(i)$.
+//! For `d > 0` the field is real (embedding $\sqrt d > 0$) and elements have an exact sign
+//! and ordering: $a + b\sqrt d > 0$ is decided by comparing $a^2$ with $d b^2$.
+//!
+//! | entry point | computes |
+//! |---|---|
+//! | [`QuadraticField::new`] | the field for a square-free `d` |
+//! | [`QuadraticField::sqrt_of_rational`] | $\sqrt{r}$ as (field, element) for any rational `r` |
+//! | [`Field::sign`] | exact sign (real fields only) |
+
+use super::{Field, Rational, fmt_rational, rational_to_f64};
+use crate::error::{Error, Result};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
+use std::fmt;
+
+/// The field $\mathbb{Q}(\sqrt d)$, `d` square-free, `d != 0, 1`.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct QuadraticField {
+    d: BigInt,
+}
+
+/// An element $a + b\sqrt d$.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Quadratic {
+    pub a: Rational,
+    pub b: Rational,
+}
+
+impl Quadratic {
+    pub fn new(a: Rational, b: Rational) -> Self {
+        Quadratic { a, b }
+    }
+}
+
+/// Square-free part and square root of the square part: `n = s^2 * f`, returns `(s, f)`.
+/// Trial division up to `10^6`; a remaining cofactor is assumed square-free only if it is
+/// not a perfect square (larger square factors are then rejected by the caller).
+pub fn squarefree_split(n: &BigInt) -> (BigInt, BigInt) {
+    let sign = if n.is_negative() {
+        -BigInt::one()
+    } else {
+        BigInt::one()
+    };
+    let mut m = n.abs();
+    let mut s = BigInt::one();
+    let mut f = BigInt::one();
+    let mut p = BigInt::from(2u32);
+    let limit = BigInt::from(1_000_000u32);
+    while &p * &p <= m && p <= limit {
+        let mut e = 0u32;
+        while (&m % &p).is_zero() {
+            m /= &p;
+            e += 1;
+        }
+        if e > 0 {
+            s *= num_traits::pow(p.clone(), (e / 2) as usize);
+            if e % 2 == 1 {
+                f *= &p;
+            }
+        }
+        p += if p == BigInt::from(2u32) { 1u32 } else { 2u32 };
+    }
+    let r = m.sqrt();
+    if &r * &r == m {
+        s *= r;
+    } else {
+        f *= m;
+    }
+    (s, sign * f)
+}
+
+impl QuadraticField {
+    /// The field $\mathbb{Q}(\sqrt d)$.
+    ///
+    /// # Errors
+    /// `Invalid` when `d` is 0, 1, or not square-free.
+    pub fn new(d: impl Into<BigInt>) -> Result<Self> {
+        let d = d.into();
+        let (s, f) = squarefree_split(&d);
+        if d.is_zero() || d.is_one() || !s.is_one() || f != d {
+            return Err(Error::Invalid(format!(
+                "sqrt({d}) does not define a quadratic field (d must be square-free, not 0 or 1)"
+            )));
+        }
+        Ok(QuadraticField { d })
+    }
+    /// The Gaussian rationals $\mathbb{Q}(i)$.
+    pub fn gaussian() -> Self {
+        QuadraticField {
+            d: BigInt::from(-1),
+        }
+    }
+    /// The radicand `d`.
+    pub fn d(&self) -> &BigInt {
+        &self.d
+    }
+    /// Is the field real (`d > 0`)?
+    pub fn is_real(&self) -> bool {
+        self.d.is_positive()
+    }
+    /// The generator $\sqrt d$.
+    pub fn gen_elem(&self) -> Quadratic {
+        Quadratic {
+            a: Rational::zero(),
+            b: Rational::one(),
+        }
+    }
+    /// $\sqrt r$ for a rational `r`: `Ok(None)` field when `r` is a rational square
+    /// (the element is then returned as a rational), else the field $\mathbb{Q}(\sqrt{f})$
+    /// and the element $s\sqrt f$ with $r = s^2 f$.
+    pub fn sqrt_of_rational(r: &Rational) -> (Option<QuadraticField>, Rational, Rational) {
+        // r = n/m = n*m/m^2
+        let nm = r.numer() * r.denom();
+        let (s, f) = squarefree_split(&nm);
+        let coef = Rational::new(s, r.denom().clone());
+        if f.is_one() || nm.is_zero() {
+            (
+                None,
+                if nm.is_zero() { Rational::zero() } else { coef },
+                Rational::zero(),
+            )
+        } else {
+            (Some(QuadraticField { d: f }), Rational::zero(), coef)
+        }
+    }
+    /// Norm $a^2 - d b^2$.
+    pub fn norm(&self, x: &Quadratic) -> Rational {
+        &x.a * &x.a - Rational::from_integer(self.d.clone()) * &x.b * &x.b
+    }
+    /// The Galois conjugate $a - b\sqrt d$.
+    pub fn galois(&self, x: &Quadratic) -> Quadratic {
+        Quadratic {
+            a: x.a.clone(),
+            b: -&x.b,
+        }
+    }
+    fn radical_text(&self) -> String {
+        if self.d == BigInt::from(-1) {
+            "i".into()
+        } else if self.d.is_negative() {
+            format!("sqrt({})*i", -&self.d)
+        } else {
+            format!("sqrt({})", self.d)
+        }
+    }
+}
+
+impl fmt::Display for QuadraticField {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.d == BigInt::from(-1) {
+            write!(f, "QQ(i)")
+        } else {
+            write!(f, "QQ(sqrt({}))", self.d)
+        }
+    }
+}
+
+/// Formats `a + b*rad` with `rad` a radical text, e.g. `1 - sqrt(2)/2`, `-1 + i`.
+pub(crate) fn fmt_pair(a: &Rational, b: &Rational, rad: &str) -> String {
+    if b.is_zero() {
+        return fmt_rational(a);
+    }
+    let babs = b.abs();
+    let num = babs.numer();
+    let den = babs.denom();
+    let mut t = if num.is_one() {
+        rad.to_string()
+    } else {
+        format!("{num}*{rad}")
+    };
+    if !den.is_one() {
+        t = format!("{t}/{den}");
+    }
+    if a.is_zero() {
+        if b.is_negative() { format!("-{t}") } else { t }
+    } else {
+        let op = if b.is_negative() { "-" } else { "+" };
+        format!("{} {op} {t}", fmt_rational(a))
+    }
+}
+
+impl Field for QuadraticField {
+    type Elem = Quadratic;
+    fn zero(&self) -> Quadratic {
+        Quadratic {
+            a: Rational::zero(),
+            b: Rational::zero(),
+        }
+    }
+    fn one(&self) -> Quadratic {
+        Quadratic {
+            a: Rational::one(),
+            b: Rational::zero(),
+        }
+    }
+    fn is_zero(&self, x: &Quadratic) -> bool {
+        x.a.is_zero() && x.b.is_zero()
+    }
+    fn add(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
+        Quadratic {
+            a: &x.a + &y.a,
+            b: &x.b + &y.b,
+        }
+    }
+    fn sub(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
+        Quadratic {
+            a: &x.a - &y.a,
+            b: &x.b - &y.b,
+        }
+    }
+    fn mul(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
+        if x.b.is_zero() && y.b.is_zero() {
+            return Quadratic {
+                a: &x.a * &y.a,
+                b: Rational::zero(),
+            };
+        }
+        let d = Rational::from_integer(self.d.clone());
+        Quadratic {
+            a: &x.a * &y.a + d * &x.b * &y.b,
+            b: &x.a * &y.b + &x.b * &y.a,
+        }
+    }
+    fn neg(&self, x: &Quadratic) -> Quadratic {
+        Quadratic { a: -&x.a, b: -&x.b }
+    }
+    fn inv(&self, x: &Quadratic) -> Option<Quadratic> {
+        if self.is_zero(x) {
+            return None;
+        }
+        let n = self.norm(x);
+        Some(Quadratic {
+            a: &x.a / &n,
+            b: -&x.b / &n,
+        })
+    }
+    fn from_rational(&self, q: &Rational) -> Quadratic {
+        Quadratic {
+            a: q.clone(),
+            b: Rational::zero(),
+        }
+    }
+    fn to_rational(&self, x: &Quadratic) -> Option<Rational> {
+        if x.b.is_zero() {
+            Some(x.a.clone())
+        } else {
+            None
+        }
+    }
+    fn fmt_elem(&self, x: &Quadratic) -> String {
+        fmt_pair(&x.a, &x.b, &self.radical_text())
+    }
+    fn latex_elem(&self, x: &Quadratic) -> String {
+        let rad = if self.d == BigInt::from(-1) {
+            "i".to_string()
+        } else if self.d.is_negative() {
+            format!("\\sqrt{{{}}}\\,i", -&self.d)
+        } else {
+            format!("\\sqrt{{{}}}", self.d)
+        };
+        fmt_pair(&x.a, &x.b, &rad)
+    }
+    fn approx(&self, x: &Quadratic) -> (f64, f64) {
+        let a = rational_to_f64(&x.a);
+        let b = rational_to_f64(&x.b);
+        let r = rational_to_f64(&Rational::from_integer(self.d.abs())).sqrt();
+        if self.d.is_positive() {
+            (a + b * r, 0.0)
+        } else {
+            (a, b * r)
+        }
+    }
+    fn conj(&self, x: &Quadratic) -> Option<Quadratic> {
+        if self.d.is_positive() {
+            Some(x.clone())
+        } else {
+            Some(self.galois(x))
+        }
+    }
+    fn sign(&self, x: &Quadratic) -> Option<Ordering> {
+        if !self.d.is_positive() {
+            return if x.b.is_zero() {
+                Some(x.a.cmp(&Rational::zero()))
+            } else {
+                None
+            };
+        }
+        let sa = x.a.cmp(&Rational::zero());
+        let sb = x.b.cmp(&Rational::zero());
+        if sb == Ordering::Equal {
+            return Some(sa);
+        }
+        if sa == Ordering::Equal || sa == sb {
+            return Some(sb);
+        }
+        // opposite signs: compare a^2 with d b^2
+        let a2 = &x.a * &x.a;
+        let db2 = Rational::from_integer(self.d.clone()) * &x.b * &x.b;
+        Some(match a2.cmp(&db2) {
+            Ordering::Greater => sa,
+            Ordering::Less => sb,
+            Ordering::Equal => Ordering::Equal,
+        })
+    }
+}
+
+/// Exact integer square root test helper: `Some(r)` with `r^2 = n` for `n >= 0`.
+pub fn exact_isqrt(n: &BigInt) -> Option<BigInt> {
+    if n.is_negative() {
+        return None;
+    }
+    let r = n.sqrt();
+    if &r * &r == *n { Some(r) } else { None }
+}
+
+/// Greatest common divisor helper re-exported for callers normalising radicands.
+pub fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
+    a.gcd(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    fn r(n: i64, d: i64) -> Rational {
+        Rational::new(n.into(), d.into())
+    }
+    #[test]
+    fn display_and_arith() {
+        let k = QuadraticField::new(2).unwrap();
+        let x = Quadratic::new(r(1, 1), r(-1, 2));
+        assert_eq!(k.fmt_elem(&x), "1 - sqrt(2)/2");
+        let y = k.inv(&x).unwrap();
+        assert!(k.is_one(&k.mul(&x, &y)));
+        assert_eq!(k.sign(&x), Some(Ordering::Greater));
+        assert_eq!(
+            k.sign(&Quadratic::new(r(1, 1), r(-1, 1))),
+            Some(Ordering::Less)
+        );
+        let g = QuadraticField::gaussian();
+        assert_eq!(g.fmt_elem(&Quadratic::new(r(-1, 1), r(1, 1))), "-1 + i");
+        assert_eq!(g.fmt_elem(&Quadratic::new(r(0, 1), r(1, 2))), "i/2");
+        assert!(QuadraticField::new(8).is_err());
+        assert!(QuadraticField::new(1).is_err());
+        let (f, a, b) = QuadraticField::sqrt_of_rational(&r(8, 3));
+        assert_eq!(f.unwrap().d(), &BigInt::from(6));
+        assert!(a.is_zero());
+        assert_eq!(b, r(2, 3));
+        let (f, a, _) = QuadraticField::sqrt_of_rational(&r(9, 4));
+        assert!(f.is_none());
+        assert_eq!(a, r(3, 2));
+    }
+}

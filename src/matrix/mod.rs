@@ -1,0 +1,274 @@
+//! Exact dense matrices over any [`Field`].
+//!
+//! [`Matrix<K>`] stores its domain value `K` and its entries row-major. Operators `+ - *`
+//! act on references and panic on shape mismatch (as nalgebra); `try_*` methods return
+//! [`Error::Shape`] instead.
+//!
+//! | entry point | computes |
+//! |---|---|
+//! | [`Matrix::rref`] | canonical reduced row echelon form $R = P A$ and pivot columns |
+//! | [`Matrix::rank`], [`Matrix::nullspace`], [`Matrix::left_nullspace`] | from the RREF |
+//! | [`Matrix::inverse`], [`Matrix::det`], [`Matrix::solve`] | Gauss–Jordan over `K` |
+//! | [`Matrix::charpoly`], [`Matrix::minpoly`] | $\det(xI - A)$ (Hessenberg), minimal polynomial |
+//! | [`Matrix::eval_poly`] | $p(A)$ by Horner |
+//!
+//! Over $\mathbb{Q}$ the heavy operations dispatch to fraction-free and multi-modular
+//! kernels (see `matrix::modular`).
+
+mod charpoly;
+mod ops;
+mod rref;
+
+use crate::error::{Error, Result};
+use crate::field::{Field, Q, Rational};
+use std::fmt;
+
+/// A dense matrix over the field `K`, row-major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Matrix<K: Field> {
+    field: K,
+    nrows: usize,
+    ncols: usize,
+    data: Vec<K::Elem>,
+}
+
+impl<K: Field> Matrix<K> {
+    /// From row-major data.
+    ///
+    /// # Panics
+    /// When `data.len() != nrows * ncols`.
+    pub fn from_vec(field: K, nrows: usize, ncols: usize, data: Vec<K::Elem>) -> Self {
+        assert_eq!(data.len(), nrows * ncols, "matrix data length");
+        Matrix {
+            field,
+            nrows,
+            ncols,
+            data,
+        }
+    }
+    /// From rows.
+    ///
+    /// # Errors
+    /// `Shape` when rows have different lengths.
+    pub fn from_rows(field: K, rows: Vec<Vec<K::Elem>>) -> Result<Self> {
+        let nrows = rows.len();
+        let ncols = rows.first().map_or(0, |r| r.len());
+        let mut data = Vec::with_capacity(nrows * ncols);
+        for (i, r) in rows.into_iter().enumerate() {
+            if r.len() != ncols {
+                return Err(Error::Invalid(format!(
+                    "row {} has {} entries, expected {ncols}",
+                    i + 1,
+                    r.len()
+                )));
+            }
+            data.extend(r);
+        }
+        Ok(Matrix {
+            field,
+            nrows,
+            ncols,
+            data,
+        })
+    }
+    pub fn from_fn(
+        field: K,
+        nrows: usize,
+        ncols: usize,
+        mut f: impl FnMut(usize, usize) -> K::Elem,
+    ) -> Self {
+        let mut data = Vec::with_capacity(nrows * ncols);
+        for i in 0..nrows {
+            for j in 0..ncols {
+                data.push(f(i, j));
+            }
+        }
+        Matrix {
+            field,
+            nrows,
+            ncols,
+            data,
+        }
+    }
+    pub fn zeros(field: K, nrows: usize, ncols: usize) -> Self {
+        let z = field.zero();
+        Matrix {
+            data: vec![z; nrows * ncols],
+            field,
+            nrows,
+            ncols,
+        }
+    }
+    pub fn identity(field: K, n: usize) -> Self {
+        let mut m = Self::zeros(field, n, n);
+        for i in 0..n {
+            m.data[i * n + i] = m.field.one();
+        }
+        m
+    }
+    pub fn diagonal(field: K, d: &[K::Elem]) -> Self {
+        let n = d.len();
+        let mut m = Self::zeros(field, n, n);
+        for (i, x) in d.iter().enumerate() {
+            m.data[i * n + i] = x.clone();
+        }
+        m
+    }
+    /// Column vector.
+    pub fn column(field: K, v: Vec<K::Elem>) -> Self {
+        let n = v.len();
+        Matrix {
+            field,
+            nrows: n,
+            ncols: 1,
+            data: v,
+        }
+    }
+    pub fn field(&self) -> &K {
+        &self.field
+    }
+    pub fn nrows(&self) -> usize {
+        self.nrows
+    }
+    pub fn ncols(&self) -> usize {
+        self.ncols
+    }
+    pub fn shape(&self) -> (usize, usize) {
+        (self.nrows, self.ncols)
+    }
+    pub fn is_square(&self) -> bool {
+        self.nrows == self.ncols
+    }
+    pub fn as_slice(&self) -> &[K::Elem] {
+        &self.data
+    }
+    pub fn into_vec(self) -> Vec<K::Elem> {
+        self.data
+    }
+    pub fn get(&self, i: usize, j: usize) -> &K::Elem {
+        &self.data[i * self.ncols + j]
+    }
+    pub fn get_mut(&mut self, i: usize, j: usize) -> &mut K::Elem {
+        &mut self.data[i * self.ncols + j]
+    }
+    pub fn set(&mut self, i: usize, j: usize, v: K::Elem) {
+        self.data[i * self.ncols + j] = v;
+    }
+    pub fn row(&self, i: usize) -> &[K::Elem] {
+        &self.data[i * self.ncols..(i + 1) * self.ncols]
+    }
+    pub fn col(&self, j: usize) -> Vec<K::Elem> {
+        (0..self.nrows).map(|i| self.get(i, j).clone()).collect()
+    }
+    pub fn rows(&self) -> Vec<Vec<K::Elem>> {
+        (0..self.nrows).map(|i| self.row(i).to_vec()).collect()
+    }
+    pub fn is_zero(&self) -> bool {
+        self.data.iter().all(|x| self.field.is_zero(x))
+    }
+    pub fn is_identity(&self) -> bool {
+        self.is_square()
+            && (0..self.nrows).all(|i| {
+                (0..self.ncols).all(|j| {
+                    let x = self.get(i, j);
+                    if i == j {
+                        self.field.is_one(x)
+                    } else {
+                        self.field.is_zero(x)
+                    }
+                })
+            })
+    }
+    /// Converts every entry into another field.
+    pub fn map<L: Field>(&self, to: &L, f: impl Fn(&K::Elem) -> L::Elem) -> Matrix<L> {
+        Matrix {
+            field: to.clone(),
+            nrows: self.nrows,
+            ncols: self.ncols,
+            data: self.data.iter().map(f).collect(),
+        }
+    }
+    /// Shape check helper.
+    pub(crate) fn check_shape(&self, op: &'static str, expected: (usize, usize)) -> Result<()> {
+        if self.shape() != expected {
+            return Err(Error::Shape {
+                op,
+                expected,
+                found: self.shape(),
+            });
+        }
+        Ok(())
+    }
+    pub(crate) fn check_square(&self, op: &'static str) -> Result<()> {
+        if !self.is_square() {
+            return Err(Error::NotSquare {
+                op,
+                nrows: self.nrows,
+                ncols: self.ncols,
+            });
+        }
+        Ok(())
+    }
+    /// Display entries with the field's exact display, `[[1, 2], [3, 4]]`.
+    pub fn to_rows_strings(&self) -> Vec<Vec<String>> {
+        (0..self.nrows)
+            .map(|i| self.row(i).iter().map(|x| self.field.fmt_elem(x)).collect())
+            .collect()
+    }
+    /// Entry-wise floating-point approximation (real parts), for `_approx` outputs.
+    pub fn to_approx(&self) -> Vec<Vec<f64>> {
+        (0..self.nrows)
+            .map(|i| self.row(i).iter().map(|x| self.field.approx(x).0).collect())
+            .collect()
+    }
+    /// Entry-wise floating-point approximation `(re, im)`.
+    pub fn to_approx_complex(&self) -> Vec<Vec<(f64, f64)>> {
+        (0..self.nrows)
+            .map(|i| self.row(i).iter().map(|x| self.field.approx(x)).collect())
+            .collect()
+    }
+}
+
+impl Matrix<Q> {
+    /// From integer rows.
+    pub fn from_i64_rows(rows: &[&[i64]]) -> Self {
+        let nrows = rows.len();
+        let ncols = rows.first().map_or(0, |r| r.len());
+        Matrix::from_fn(Q, nrows, ncols, |i, j| {
+            Rational::from_integer(rows[i][j].into())
+        })
+    }
+    /// Lifts a rational matrix into any field.
+    pub fn convert_to<L: Field>(&self, to: &L) -> Matrix<L> {
+        self.map(to, |x| to.from_rational(x))
+    }
+}
+
+/// Converts a matrix whose entries all lie in $\mathbb{Q}$ down to `Matrix<Q>`.
+pub fn to_rational_matrix<K: Field>(m: &Matrix<K>) -> Option<Matrix<Q>> {
+    let data: Option<Vec<Rational>> = m
+        .as_slice()
+        .iter()
+        .map(|x| m.field().to_rational(x))
+        .collect();
+    Some(Matrix::from_vec(Q, m.nrows(), m.ncols(), data?))
+}
+
+impl<K: Field> fmt::Display for Matrix<K> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let rows: Vec<String> = self
+            .to_rows_strings()
+            .into_iter()
+            .map(|r| format!("[{}]", r.join(", ")))
+            .collect();
+        write!(f, "[{}]", rows.join(", "))
+    }
+}
+
+/// `mat![Q; [1, 2], [3, 4]]` builds a rational matrix from integer literals.
+#[macro_export]
+macro_rules! qmat {
+    ($([$($x:expr),* $(,)?]),* $(,)?) => {
+        $crate::matrix::Matrix::<$crate::field::Q>::from_i64_rows(&[$(&[$($x as i64),*]),*])
+    };
+}

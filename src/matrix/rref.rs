@@ -1,0 +1,190 @@
+//! Gauss–Jordan elimination over any field: canonical RREF, rank, null spaces, inverse,
+//! determinant and linear solves.
+//!
+//! The RREF $R$ of $A$ is unique (pivot entries 1, zeros above and below), so null-space
+//! bases read off $R$ are canonical: one basis vector per free column $f$, with entry 1 at
+//! $f$ and zeros at the other free columns (the SCB paper's sec. III-A.1 relies on this).
+
+use super::Matrix;
+use crate::error::{Error, Result};
+use crate::field::Field;
+
+/// Row-reduces `a` (row-major `m x n`) in place to canonical RREF; returns pivot columns.
+pub(crate) fn rref_in_place<K: Field>(k: &K, m: usize, n: usize, a: &mut [K::Elem]) -> Vec<usize> {
+    let mut pivots = Vec::new();
+    let mut r = 0;
+    for c in 0..n {
+        if r == m {
+            break;
+        }
+        let Some(p) = (r..m).find(|&i| !k.is_zero(&a[i * n + c])) else {
+            continue;
+        };
+        if p != r {
+            for j in 0..n {
+                a.swap(p * n + j, r * n + j);
+            }
+        }
+        let inv = k.inv(&a[r * n + c]).expect("non-zero pivot");
+        for j in c..n {
+            a[r * n + j] = k.mul(&a[r * n + j], &inv);
+        }
+        let prow: Vec<K::Elem> = a[r * n + c..(r + 1) * n].to_vec();
+        for i in 0..m {
+            if i == r || k.is_zero(&a[i * n + c]) {
+                continue;
+            }
+            let f = a[i * n + c].clone();
+            for (jj, pv) in prow.iter().enumerate() {
+                if !k.is_zero(pv) {
+                    k.mul_sub_assign(&mut a[i * n + c + jj], &f, pv);
+                }
+            }
+        }
+        pivots.push(c);
+        r += 1;
+    }
+    pivots
+}
+
+impl<K: Field> Matrix<K> {
+    /// Canonical reduced row echelon form and pivot columns (Gauss–Jordan, $O(m n \min(m,n))$
+    /// field operations).
+    pub fn rref(&self) -> (Matrix<K>, Vec<usize>) {
+        let mut r = self.clone();
+        let piv = rref_in_place(&self.field, self.nrows, self.ncols, &mut r.data);
+        (r, piv)
+    }
+    pub fn rank(&self) -> usize {
+        self.rref().1.len()
+    }
+    /// Canonical basis of the right null space $\{v : A v = 0\}$, as the columns of an
+    /// `ncols x nullity` matrix.
+    pub fn nullspace(&self) -> Matrix<K> {
+        let (r, piv) = self.rref();
+        nullspace_from_rref(&r, &piv)
+    }
+    /// Canonical basis of the left null space $\{w : w A = 0\}$, as the rows of a
+    /// `(nrows - rank) x nrows` matrix in RREF.
+    pub fn left_nullspace(&self) -> Matrix<K> {
+        let n = self.transpose().nullspace().transpose();
+        n.rref().0.submatrix(0, n.nrows(), 0, n.ncols())
+    }
+    /// Basis of the column space: the pivot columns of `A`.
+    pub fn column_space(&self) -> Matrix<K> {
+        let (_, piv) = self.rref();
+        self.select_cols(&piv)
+    }
+    /// Canonical basis of the row space: the non-zero rows of the RREF.
+    pub fn row_space(&self) -> Matrix<K> {
+        let (r, piv) = self.rref();
+        r.submatrix(0, piv.len(), 0, self.ncols)
+    }
+    /// Unit vectors completing the columns of `self` (assumed independent) to a basis of
+    /// $K^n$: the $e_j$ that are not pivots of the RREF of $[V, I]$, as columns.
+    pub fn complete_basis(&self) -> Matrix<K> {
+        let n = self.nrows;
+        let vi = self
+            .hstack(&Matrix::identity(self.field.clone(), n))
+            .expect("same rows");
+        let (_, piv) = vi.rref();
+        let extra: Vec<usize> = piv
+            .into_iter()
+            .filter(|&c| c >= self.ncols)
+            .map(|c| c - self.ncols)
+            .collect();
+        Matrix::identity(self.field.clone(), n).select_cols(&extra)
+    }
+    /// Inverse by Gauss–Jordan on $[A, I]$.
+    ///
+    /// # Errors
+    /// `NotSquare`, `Singular`.
+    pub fn inverse(&self) -> Result<Matrix<K>> {
+        self.check_square("inverse")?;
+        let n = self.nrows;
+        let aug = self.hstack(&Matrix::identity(self.field.clone(), n))?;
+        let (r, piv) = aug.rref();
+        if piv.len() < n || (n > 0 && piv[n - 1] != n - 1) {
+            return Err(Error::Singular);
+        }
+        Ok(r.submatrix(0, n, n, 2 * n))
+    }
+    /// Determinant by Gaussian elimination.
+    ///
+    /// # Errors
+    /// `NotSquare`.
+    pub fn det(&self) -> Result<K::Elem> {
+        self.check_square("det")?;
+        let k = &self.field;
+        let n = self.nrows;
+        let mut a = self.data.clone();
+        let mut det = k.one();
+        for c in 0..n {
+            let Some(p) = (c..n).find(|&i| !k.is_zero(&a[i * n + c])) else {
+                return Ok(k.zero());
+            };
+            if p != c {
+                for j in 0..n {
+                    a.swap(p * n + j, c * n + j);
+                }
+                det = k.neg(&det);
+            }
+            det = k.mul(&det, &a[c * n + c]);
+            let inv = k.inv(&a[c * n + c]).expect("non-zero");
+            for i in c + 1..n {
+                if k.is_zero(&a[i * n + c]) {
+                    continue;
+                }
+                let f = k.mul(&a[i * n + c], &inv);
+                for j in c..n {
+                    let pv = a[c * n + j].clone();
+                    k.mul_sub_assign(&mut a[i * n + j], &f, &pv);
+                }
+            }
+        }
+        Ok(det)
+    }
+    /// Solves $A X = B$: `Some((X0, N))` with a particular solution `X0` and the null space
+    /// `N` of `A` (all solutions are `X0 + N Y`), or `None` when there is no solution.
+    ///
+    /// # Errors
+    /// `Shape` when `B` has a different number of rows.
+    pub fn solve(&self, b: &Matrix<K>) -> Result<Option<(Matrix<K>, Matrix<K>)>> {
+        if b.nrows != self.nrows {
+            return Err(Error::Shape {
+                op: "solve",
+                expected: (self.nrows, b.ncols),
+                found: b.shape(),
+            });
+        }
+        let n = self.ncols;
+        let aug = self.hstack(b)?;
+        let (r, piv) = aug.rref();
+        if piv.last().is_some_and(|&p| p >= n) {
+            return Ok(None);
+        }
+        let mut x = Matrix::zeros(self.field.clone(), n, b.ncols);
+        for (i, &p) in piv.iter().enumerate() {
+            for j in 0..b.ncols {
+                x.set(p, j, r.get(i, n + j).clone());
+            }
+        }
+        let rr = r.submatrix(0, self.nrows, 0, n);
+        Ok(Some((x, nullspace_from_rref(&rr, &piv))))
+    }
+}
+
+/// Null-space basis (columns) from an RREF `r` with pivot columns `piv`.
+pub(crate) fn nullspace_from_rref<K: Field>(r: &Matrix<K>, piv: &[usize]) -> Matrix<K> {
+    let k = r.field();
+    let n = r.ncols();
+    let free: Vec<usize> = (0..n).filter(|c| !piv.contains(c)).collect();
+    let mut out = Matrix::zeros(k.clone(), n, free.len());
+    for (j, &f) in free.iter().enumerate() {
+        out.set(f, j, k.one());
+        for (i, &p) in piv.iter().enumerate() {
+            out.set(p, j, k.neg(r.get(i, f)));
+        }
+    }
+    out
+}

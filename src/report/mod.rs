@@ -1,0 +1,325 @@
+//! Reports: one result model rendered as text, JSON or LaTeX (the CLI's `--format`).
+//!
+//! A [`Report`] is an ordered list of named [`Value`]s. Exact matrices are stored with their
+//! exact entry strings, LaTeX strings and floating approximations; in JSON a matrix `T`
+//! becomes `"T": [["1", "-1/2"], ...]` plus `"T_approx": [[1.0, -0.5], ...]` as the CLI
+//! contract requires.
+
+pub mod plot;
+
+use crate::field::Field;
+use crate::matrix::Matrix;
+use serde_json::{Map, Number, Value as Json};
+
+/// An exact matrix prepared for output.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MatrixOut {
+    pub exact: Vec<Vec<String>>,
+    pub latex: Vec<Vec<String>>,
+    pub approx: Vec<Vec<(f64, f64)>>,
+    pub nrows: usize,
+    pub ncols: usize,
+}
+
+impl MatrixOut {
+    pub fn from_matrix<K: Field>(m: &Matrix<K>) -> Self {
+        let k = m.field();
+        MatrixOut {
+            exact: m.to_rows_strings(),
+            latex: (0..m.nrows())
+                .map(|i| m.row(i).iter().map(|x| k.latex_elem(x)).collect())
+                .collect(),
+            approx: m.to_approx_complex(),
+            nrows: m.nrows(),
+            ncols: m.ncols(),
+        }
+    }
+    fn is_complex(&self) -> bool {
+        self.approx.iter().flatten().any(|(_, im)| *im != 0.0)
+    }
+}
+
+/// A value in a report.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    Null,
+    Bool(bool),
+    Int(i64),
+    Float(f64),
+    /// An exact number or expression shown as a string.
+    Str(String),
+    Matrix(Box<MatrixOut>),
+    List(Vec<Value>),
+    Obj(Report),
+}
+
+/// An ordered list of named values (a JSON object, a text section).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Report {
+    pub title: Option<String>,
+    pub items: Vec<(String, Value)>,
+}
+
+impl Report {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    pub fn titled(title: impl Into<String>) -> Self {
+        Report {
+            title: Some(title.into()),
+            items: vec![],
+        }
+    }
+    pub fn push(&mut self, key: impl Into<String>, v: Value) -> &mut Self {
+        self.items.push((key.into(), v));
+        self
+    }
+    pub fn with(mut self, key: impl Into<String>, v: Value) -> Self {
+        self.items.push((key.into(), v));
+        self
+    }
+    pub fn str(self, key: &str, s: impl Into<String>) -> Self {
+        self.with(key, Value::Str(s.into()))
+    }
+    pub fn int(self, key: &str, n: usize) -> Self {
+        self.with(key, Value::Int(n as i64))
+    }
+    pub fn bool(self, key: &str, b: bool) -> Self {
+        self.with(key, Value::Bool(b))
+    }
+    pub fn float(self, key: &str, x: f64) -> Self {
+        self.with(key, Value::Float(x))
+    }
+    pub fn matrix<K: Field>(self, key: &str, m: &Matrix<K>) -> Self {
+        self.with(key, Value::Matrix(Box::new(MatrixOut::from_matrix(m))))
+    }
+    pub fn obj(self, key: &str, r: Report) -> Self {
+        self.with(key, Value::Obj(r))
+    }
+    pub fn list(self, key: &str, v: Vec<Value>) -> Self {
+        self.with(key, Value::List(v))
+    }
+    pub fn get(&self, key: &str) -> Option<&Value> {
+        self.items.iter().find(|(k, _)| k == key).map(|(_, v)| v)
+    }
+
+    /// JSON rendering (matrices as exact strings plus `<name>_approx`).
+    pub fn to_json(&self) -> Json {
+        let mut m = Map::new();
+        for (k, v) in &self.items {
+            if let Value::Matrix(mo) = v {
+                m.insert(
+                    k.clone(),
+                    Json::Array(
+                        mo.exact
+                            .iter()
+                            .map(|r| {
+                                Json::Array(r.iter().map(|s| Json::String(s.clone())).collect())
+                            })
+                            .collect(),
+                    ),
+                );
+                m.insert(format!("{k}_approx"), approx_json(mo));
+            } else {
+                m.insert(k.clone(), value_json(v));
+            }
+        }
+        Json::Object(m)
+    }
+
+    /// Plain-text rendering.
+    pub fn to_text(&self) -> String {
+        let mut s = String::new();
+        self.text_into(&mut s, 0);
+        s
+    }
+    fn text_into(&self, s: &mut String, indent: usize) {
+        let pad = " ".repeat(indent);
+        if let Some(t) = &self.title {
+            s.push_str(&format!("{pad}== {t} ==\n"));
+        }
+        for (k, v) in &self.items {
+            match v {
+                Value::Matrix(mo) => {
+                    s.push_str(&format!("{pad}{k} ({}x{}) =\n", mo.nrows, mo.ncols));
+                    s.push_str(&text_matrix(&mo.exact, indent + 2));
+                }
+                Value::Obj(r) if r.title.is_some() => r.text_into(s, indent),
+                Value::Obj(r) => {
+                    s.push_str(&format!("{pad}{k}:\n"));
+                    r.text_into(s, indent + 2);
+                }
+                Value::List(xs)
+                    if xs
+                        .iter()
+                        .any(|x| matches!(x, Value::Obj(_) | Value::Matrix(_))) =>
+                {
+                    s.push_str(&format!("{pad}{k}:\n"));
+                    for (i, x) in xs.iter().enumerate() {
+                        match x {
+                            Value::Obj(r) => {
+                                s.push_str(&format!("{pad}  [{}]\n", i + 1));
+                                r.text_into(s, indent + 4);
+                            }
+                            Value::Matrix(mo) => s.push_str(&text_matrix(&mo.exact, indent + 4)),
+                            other => s.push_str(&format!("{pad}  - {}\n", inline_text(other))),
+                        }
+                    }
+                }
+                other => s.push_str(&format!("{pad}{k}: {}\n", inline_text(other))),
+            }
+        }
+    }
+
+    /// LaTeX rendering: a description list with `bmatrix` environments.
+    pub fn to_latex(&self) -> String {
+        let mut s = String::new();
+        if let Some(t) = &self.title {
+            s.push_str(&format!("% {t}\n"));
+        }
+        for (k, v) in &self.items {
+            match v {
+                Value::Matrix(mo) => {
+                    s.push_str(&format!("{} = \\begin{{bmatrix}}\n", latex_name(k)));
+                    for r in &mo.latex {
+                        s.push_str(&format!("  {} \\\\\n", r.join(" & ")));
+                    }
+                    s.push_str("\\end{bmatrix}\n\n");
+                }
+                Value::Obj(r) => {
+                    s.push_str(&format!("% {k}\n"));
+                    s.push_str(&r.to_latex());
+                }
+                Value::List(xs) => {
+                    s.push_str(&format!("% {k}\n"));
+                    for x in xs {
+                        match x {
+                            Value::Obj(r) => s.push_str(&r.to_latex()),
+                            other => s.push_str(&format!("% - {}\n", inline_text(other))),
+                        }
+                    }
+                }
+                other => s.push_str(&format!("% {k}: {}\n", inline_text(other))),
+            }
+        }
+        s
+    }
+}
+
+fn latex_name(k: &str) -> String {
+    match k.split_once('_') {
+        Some((a, b)) => format!("{a}_{{{b}}}"),
+        None => k.to_string(),
+    }
+}
+
+fn float_json(x: f64) -> Json {
+    Number::from_f64(x).map(Json::Number).unwrap_or(Json::Null)
+}
+
+fn approx_json(mo: &MatrixOut) -> Json {
+    let cplx = mo.is_complex();
+    Json::Array(
+        mo.approx
+            .iter()
+            .map(|r| {
+                Json::Array(
+                    r.iter()
+                        .map(|(re, im)| {
+                            if cplx {
+                                Json::Array(vec![float_json(*re), float_json(*im)])
+                            } else {
+                                float_json(*re)
+                            }
+                        })
+                        .collect(),
+                )
+            })
+            .collect(),
+    )
+}
+
+fn value_json(v: &Value) -> Json {
+    match v {
+        Value::Null => Json::Null,
+        Value::Bool(b) => Json::Bool(*b),
+        Value::Int(n) => Json::Number((*n).into()),
+        Value::Float(x) => float_json(*x),
+        Value::Str(s) => Json::String(s.clone()),
+        Value::Matrix(mo) => Json::Array(
+            mo.exact
+                .iter()
+                .map(|r| Json::Array(r.iter().map(|s| Json::String(s.clone())).collect()))
+                .collect(),
+        ),
+        Value::List(xs) => Json::Array(xs.iter().map(value_json).collect()),
+        Value::Obj(r) => r.to_json(),
+    }
+}
+
+fn inline_text(v: &Value) -> String {
+    match v {
+        Value::Null => "-".into(),
+        Value::Bool(b) => b.to_string(),
+        Value::Int(n) => n.to_string(),
+        Value::Float(x) => format!("{x:.10}"),
+        Value::Str(s) => s.clone(),
+        Value::Matrix(mo) => format!("{:?}", mo.exact),
+        Value::List(xs) => format!(
+            "[{}]",
+            xs.iter().map(inline_text).collect::<Vec<_>>().join(", ")
+        ),
+        Value::Obj(r) => r
+            .items
+            .iter()
+            .map(|(k, v)| format!("{k}={}", inline_text(v)))
+            .collect::<Vec<_>>()
+            .join(", "),
+    }
+}
+
+/// Column-aligned text of a matrix of strings.
+pub fn text_matrix(rows: &[Vec<String>], indent: usize) -> String {
+    let pad = " ".repeat(indent);
+    if rows.is_empty() || rows[0].is_empty() {
+        return format!("{pad}[]\n");
+    }
+    let ncols = rows[0].len();
+    let w: Vec<usize> = (0..ncols)
+        .map(|j| rows.iter().map(|r| r[j].chars().count()).max().unwrap_or(1))
+        .collect();
+    let mut s = String::new();
+    for r in rows {
+        let cells: Vec<String> = r
+            .iter()
+            .enumerate()
+            .map(|(j, c)| format!("{c:>w$}", w = w[j]))
+            .collect();
+        s.push_str(&format!("{pad}[ {} ]\n", cells.join("  ")));
+    }
+    s
+}
+
+/// Helper: a list of exact strings.
+pub fn str_list<I: IntoIterator<Item = String>>(xs: I) -> Value {
+    Value::List(xs.into_iter().map(Value::Str).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::qmat;
+    #[test]
+    fn renders() {
+        let r = Report::titled("t")
+            .matrix("T", &qmat![[1, 2], [3, 4]])
+            .bool("verified", true)
+            .int("order", 2);
+        let j = r.to_json();
+        assert_eq!(j["T"][1][0], "3");
+        assert_eq!(j["T_approx"][0][1], 2.0);
+        assert_eq!(j["verified"], true);
+        assert!(r.to_text().contains("[ 1  2 ]"));
+        assert!(r.to_latex().contains("\\begin{bmatrix}"));
+    }
+}
