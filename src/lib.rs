@@ -12,5 +12,6 @@ pub mod field;
 pub mod matrix;
 pub mod poly;
 pub mod report;
+pub mod structure;
 
 pub use error::{Error, Result};
