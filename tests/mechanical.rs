@@ -48,13 +48,19 @@ fn scramble(
     (&(&si * a) * s, &si * b, c * s)
 }
 
+/// `C A^j B` for `j < count`, as `(C A^i) (A^(j-i) B)` with `i <= count/2` (smaller powers).
 fn markov(a: &Matrix<Q>, b: &Matrix<Q>, c: &Matrix<Q>, count: usize) -> Vec<Matrix<Q>> {
-    let mut x = b.clone();
+    let half = count.div_ceil(2).max(1);
+    let mut left = vec![c.clone()];
+    let mut right = vec![b.clone()];
+    for i in 1..=half {
+        left.push(&left[i - 1] * a);
+        right.push(a * &right[i - 1]);
+    }
     (0..count)
-        .map(|_| {
-            let m = c * &x;
-            x = a * &x;
-            m
+        .map(|j| {
+            let i = j.min(half);
+            &left[i] * &right[j - i]
         })
         .collect()
 }
@@ -69,8 +75,7 @@ fn assert_normal_form(res: &MnfResult, a: &Matrix<Q>, b: &Matrix<Q>, c: &Matrix<
     let p = b.ncols();
     assert!(f.mass.is_identity(), "{ctx}");
     assert!(
-        f.a_tilde.submatrix(0, h, 0, h).is_zero()
-            && f.a_tilde.submatrix(0, h, h, n).is_identity(),
+        f.a_tilde.submatrix(0, h, 0, h).is_zero() && f.a_tilde.submatrix(0, h, h, n).is_identity(),
         "{ctx}: A~ = {}",
         f.a_tilde
     );
@@ -119,7 +124,10 @@ fn appendix_b_natural_choice_is_singular_but_algorithm_succeeds() {
     let x = unit(4, 0).hstack(&unit(4, 2)).unwrap();
     assert!((&b.transpose() * &x).is_zero());
     let t_bad = transformation_from_x(&a, &x).unwrap();
-    assert_eq!(t_bad.transpose(), qmat![[1, 0, 0, -4], [0, 0, 0, 0], [0, 1, 1, 0], [0, 0, 0, 0]]);
+    assert_eq!(
+        t_bad.transpose(),
+        qmat![[1, 0, 0, -4], [0, 0, 0, 0], [0, 1, 1, 0], [0, 0, 0, 0]]
+    );
     assert!(Q.is_zero(&t_bad.det().unwrap()));
     // X = [e1, e2] gives T = I (the system already has the form)
     let x_good = unit(4, 0).hstack(&unit(4, 1)).unwrap();
@@ -130,7 +138,10 @@ fn appendix_b_natural_choice_is_singular_but_algorithm_succeeds() {
     let f = res.form.as_ref().unwrap();
     assert!(!Q.is_zero(&f.t.det().unwrap()));
     // the eigenvalues +-2i, +-3i survive: det(s^2 I + D s + K) = (s^2 + 4)(s^2 + 9)
-    assert_eq!(f.a_tilde.charpoly().unwrap().to_string(), "x^4 + 13*x^2 + 36");
+    assert_eq!(
+        f.a_tilde.charpoly().unwrap().to_string(),
+        "x^4 + 13*x^2 + 36"
+    );
     // the report carries the CLI keys
     let j = res.report().to_json();
     for key in [
@@ -208,7 +219,13 @@ fn check_block_case(j: &Matrix<Q>, seed: u64, name: &str) {
         assert_normal_form(&run(&a, &b, &c), &a, &b, &c, &ctx);
         let s = random_invertible(a.nrows(), &mut rng);
         let (a2, b2, c2) = scramble(&a, &b, &c, &s);
-        assert_normal_form(&run(&a2, &b2, &c2), &a2, &b2, &c2, &format!("{ctx}, scrambled"));
+        assert_normal_form(
+            &run(&a2, &b2, &c2),
+            &a2,
+            &b2,
+            &c2,
+            &format!("{ctx}, scrambled"),
+        );
     }
 }
 
@@ -216,7 +233,12 @@ fn check_block_case(j: &Matrix<Q>, seed: u64, name: &str) {
 fn appendix_c1_complex_pair() {
     let (a, b) = (1, 2);
     let j = qmat![[a, -b], [b, a]];
-    check_paper_choice(&j, &qmat![[a], [b]], &qmat![[b], [-a]], &qmat![[b * (a * a + b * b)]]);
+    check_paper_choice(
+        &j,
+        &qmat![[a], [b]],
+        &qmat![[b], [-a]],
+        &qmat![[b * (a * a + b * b)]],
+    );
     check_block_case(&j, 11, "C.1");
 }
 
@@ -272,12 +294,14 @@ fn random_mechanical(
     p: usize,
     rng: &mut Rng,
 ) -> (Matrix<Q>, Matrix<Q>, Matrix<Q>, Matrix<Q>) {
-    let l = random_rational(h, h, rng);
+    let small =
+        |rng: &mut Rng, m: usize, n: usize| Matrix::from_fn(Q, m, n, |_, _| r(rng.int(-2, 2)));
+    let l = small(rng, h, h);
     let m = &(&l * &l.transpose()) + &Matrix::identity(Q, h);
-    let d = random_rational(h, h, rng);
+    let d = small(rng, h, h);
     let k = random_rational(h, h, rng);
     let w = loop {
-        let w = random_rational(h, p, rng);
+        let w = small(rng, h, p);
         if w.rank() == p {
             break w;
         }
@@ -285,41 +309,97 @@ fn random_mechanical(
     let mi = m.inverse().unwrap();
     let zero = Matrix::zeros(Q, h, h);
     let id = Matrix::identity(Q, h);
-    let a = Matrix::block(Q, &[vec![&zero, &id], vec![&(-&(&mi * &k)), &(-&(&mi * &d))]]).unwrap();
+    let a = Matrix::block(
+        Q,
+        &[vec![&zero, &id], vec![&(-&(&mi * &k)), &(-&(&mi * &d))]],
+    )
+    .unwrap();
     let b = Matrix::zeros(Q, h, p).vstack(&(&mi * &w)).unwrap();
     let c = random_rational(2, 2 * h, rng);
     let dd = random_rational(2, p, rng);
     (a, b, c, dd)
 }
 
-#[test]
-fn random_mechanical_systems_come_back() {
-    let mut rng = Rng(2024);
-    let mut cases: Vec<(usize, usize)> = vec![];
-    for _ in 0..iters(1) {
-        for h in 1..=4 {
-            for p in 1..=h {
-                cases.push((h, p));
-            }
+/// A sparse random similarity: `n` elementary operations with factors +-1, +-2 and a
+/// diagonal with entries in {+-1, +-2, +-1/2}, so that n = 12 stays cheap in a debug build.
+fn random_similarity(n: usize, rng: &mut Rng) -> Matrix<Q> {
+    let d: Vec<Rational> = (0..n)
+        .map(|_| {
+            let v = [r(1), r(-1), r(2), r(-2), Rational::new(1.into(), 2.into())];
+            v[rng.int(0, 4) as usize].clone()
+        })
+        .collect();
+    let mut s = Matrix::diagonal(Q, &d);
+    for _ in 0..n {
+        let (i, j) = (
+            rng.int(0, n as i64 - 1) as usize,
+            rng.int(0, n as i64 - 1) as usize,
+        );
+        if i == j {
+            continue;
         }
-        cases.extend([(5, 1), (5, 3), (6, 1), (6, 6)]);
+        let f = r([1, -1, 2, -2][rng.int(0, 3) as usize]);
+        for c in 0..n {
+            let v = s.get(i, c) + &(&f * s.get(j, c));
+            s.set(i, c, v);
+        }
     }
-    for (h, p) in cases {
+    s
+}
+
+fn check_random_mechanical(cases: &[(usize, usize)], seed: u64) {
+    let mut rng = Rng(seed);
+    for &(h, p) in cases {
         let (a, b, c, d) = random_mechanical(h, p, &mut rng);
-        let s = random_invertible(2 * h, &mut rng);
+        let s = random_similarity(2 * h, &mut rng);
         let (a2, b2, c2) = scramble(&a, &b, &c, &s);
         let res = mechanical_normal_form(&a2, &b2, &c2, &d).unwrap();
         let ctx = format!("n = {}, p = {p}, A = {a2}, B = {b2}", 2 * h);
-        assert_normal_form(&res, &a2, &b2, &c2, &ctx);
-        assert_eq!(res.form.as_ref().unwrap().feedthrough, d);
-        // Markov parameters also equal those of the unscrambled mechanical system
-        let f = res.form.unwrap();
+        assert!(res.exists && res.verified, "{ctx}: {:?}", res.reason);
+        let f = res.form.as_ref().unwrap();
+        assert_eq!(f.feedthrough, d);
+        assert!(f.mass.is_identity());
+        assert!(
+            f.a_tilde.submatrix(0, h, 0, h).is_zero()
+                && f.a_tilde.submatrix(0, h, h, 2 * h).is_identity(),
+            "{ctx}"
+        );
+        assert_eq!(&f.a_tilde * &f.t, &f.t * &a2, "{ctx}");
+        // same eigenvalues and Markov parameters as the unscrambled mechanical system
+        assert_eq!(
+            f.a_tilde.charpoly().unwrap(),
+            a.charpoly().unwrap(),
+            "{ctx}"
+        );
         assert_eq!(
             markov(&f.a_tilde, &f.b_tilde, &f.output, 4 * h),
             markov(&a, &b, &c, 4 * h),
             "{ctx}"
         );
     }
+}
+
+#[test]
+fn random_mechanical_systems_small() {
+    let mut cases = vec![];
+    for _ in 0..iters(1) {
+        for h in 1..=4 {
+            for p in 1..=h {
+                cases.push((h, p));
+            }
+        }
+    }
+    check_random_mechanical(&cases, 2024);
+}
+
+#[test]
+fn random_mechanical_systems_n10_n12() {
+    let cases: Vec<(usize, usize)> = [(5, 2), (6, 1), (6, 3)]
+        .into_iter()
+        .cycle()
+        .take(3 * iters(1))
+        .collect();
+    check_random_mechanical(&cases, 4048);
 }
 
 #[test]
@@ -336,7 +416,12 @@ fn descriptor_systems() {
         let dmp = random_rational(h, h, &mut rng);
         let f = Matrix::block_diag(Q, &[id.clone(), m]);
         let a = Matrix::block(Q, &[vec![&zero, &id], vec![&(-&k), &(-&dmp)]]).unwrap();
-        let w = Matrix::from_fn(Q, h, p, |i, j| if i == j { r(1) } else { r(i as i64 - j as i64) });
+        let w = Matrix::from_fn(
+            Q,
+            h,
+            p,
+            |i, j| if i == j { r(1) } else { r(i as i64 - j as i64) },
+        );
         let b = Matrix::zeros(Q, h, p).vstack(&w).unwrap();
         let c = random_rational(1, 2 * h, &mut rng);
         let pl = random_invertible(2 * h, &mut rng);
@@ -344,7 +429,11 @@ fn descriptor_systems() {
         let (f2, a2, b2, c2) = (&(&pl * &f) * &sr, &(&pl * &a) * &sr, &pl * &b, &c * &sr);
         let d = Matrix::zeros(Q, 1, p);
         let res = mechanical_normal_form_descriptor(&f2, &a2, &b2, &c2, &d).unwrap();
-        assert!(res.exists && res.verified, "h = {h}, p = {p}: {:?}", res.reason);
+        assert!(
+            res.exists && res.verified,
+            "h = {h}, p = {p}: {:?}",
+            res.reason
+        );
         let form = res.form.as_ref().unwrap();
         // z = (T F) x: A~ (T F) = T A, T B = B~
         let left = form.left.as_ref().unwrap();
@@ -358,7 +447,12 @@ fn descriptor_systems() {
     }
     // singular F is an error, a non-existing form is not
     let f = qmat![[1, 0], [0, 0]];
-    let (a, b, c, d) = (qmat![[0, 1], [1, 0]], qmat![[0], [1]], qmat![[1, 0]], qmat![[0]]);
+    let (a, b, c, d) = (
+        qmat![[0, 1], [1, 0]],
+        qmat![[0], [1]],
+        qmat![[1, 0]],
+        qmat![[0]],
+    );
     assert!(matches!(
         mechanical_normal_form_descriptor(&f, &a, &b, &c, &d),
         Err(Error::Invalid(_))
@@ -384,26 +478,42 @@ fn reason_of(a: &Matrix<Q>, b: &Matrix<Q>) -> (String, bool) {
 #[test]
 fn failing_conditions_give_reasons() {
     // odd n
-    let (why, ok) = reason_of(&qmat![[0, 1, 0], [0, 0, 1], [1, 0, 0]], &qmat![[0], [0], [1]]);
+    let (why, ok) = reason_of(
+        &qmat![[0, 1, 0], [0, 0, 1], [1, 0, 0]],
+        &qmat![[0], [0], [1]],
+    );
     assert!(!ok && why.contains("odd"), "{why}");
     // p > n/2
     let b3 = qmat![[1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 0]];
     let (why, ok) = reason_of(&Matrix::identity(Q, 4), &b3);
     assert!(!ok && why.contains("p = 3 > n/2 = 2"), "{why}");
     // rank-deficient B
-    let (why, ok) = reason_of(&Matrix::identity(Q, 4), &qmat![[0, 0], [0, 0], [1, 2], [1, 2]]);
+    let (why, ok) = reason_of(
+        &Matrix::identity(Q, 4),
+        &qmat![[0, 0], [0, 0], [1, 2], [1, 2]],
+    );
     assert!(!ok && why.contains("rank B = 1 < p = 2"), "{why}");
     // rank(U_B2^T A U_B1) < p: A B lies in the span of B
     let a = Matrix::diagonal(Q, &[r(1), r(2), r(3), r(4)]);
     let (why, ok) = reason_of(&a, &unit(4, 3));
-    assert!(!ok && why.contains("rank(U_B2^T A U_B1) = 0 < p = 1"), "{why}");
+    assert!(
+        !ok && why.contains("rank(U_B2^T A U_B1) = 0 < p = 1"),
+        "{why}"
+    );
     // Theorem 2.1's conditions all hold, yet no form exists: two uncontrollable modes at 2
     let a = qmat![[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 0, 1], [0, 0, -1, 0]];
     let b = unit(4, 3);
     let e = decide_existence(&a, &b);
-    assert!(e.conditions.iter().any(|c| c.name == "paper_rank_g" && c.holds));
+    assert!(
+        e.conditions
+            .iter()
+            .any(|c| c.name == "paper_rank_g" && c.holds)
+    );
     let (why, ok) = reason_of(&a, &b);
-    assert!(!ok && why.contains("uncontrollable") && why.contains("x - 2"), "{why}");
+    assert!(
+        !ok && why.contains("uncontrollable") && why.contains("x - 2"),
+        "{why}"
+    );
     // and indeed no member of the eq. 15 family is invertible (det is identically zero)
     let fam = transformation_family(None, &a, &b).unwrap();
     let mut rng = Rng(5);
@@ -444,7 +554,10 @@ fn no_inputs_and_full_inputs() {
     let res = run(&a, &unit(2, 1), &c);
     let f = res.form.unwrap();
     assert!(f.t.is_identity());
-    assert_eq!((f.stiffness.to_string(), f.damping.to_string()), ("[[4]]".into(), "[[1]]".into()));
+    assert_eq!(
+        (f.stiffness.to_string(), f.damping.to_string()),
+        ("[[4]]".into(), "[[1]]".into())
+    );
 }
 
 #[test]

@@ -103,12 +103,15 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
     };
     conds.push(cond(
         "n_even",
-        format!("n = {n} is {}", if n % 2 == 0 { "even" } else { "odd" }),
-        n % 2 == 0,
+        format!(
+            "n = {n} is {}",
+            if n.is_multiple_of(2) { "even" } else { "odd" }
+        ),
+        n.is_multiple_of(2),
         "a second-order model with n/2 coordinates q and their velocities q' needs an even \
          number of states",
     ));
-    if n % 2 != 0 {
+    if !n.is_multiple_of(2) {
         return done(conds);
     }
     let h = n / 2;
@@ -125,7 +128,11 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
     let rb = b.rank();
     conds.push(cond(
         "rank_b",
-        format!("rank B = {rb} {} p = {p}", if rb == p { "=" } else { "<" }),
+        if rb == p {
+            format!("rank B = p = {p}")
+        } else {
+            format!("rank B = {rb} < p = {p}")
+        },
         rb == p,
         "the input matrix must have full column rank (combine or remove redundant inputs)",
     ));
@@ -138,7 +145,11 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
     let rk = kmat.rank();
     conds.push(cond(
         "rank_k",
-        format!("rank(U_B2^T A U_B1) = {rk} {} p = {p}", if rk == p { "=" } else { "<" }),
+        if rk == p {
+            format!("rank(U_B2^T A U_B1) = p = {p}")
+        } else {
+            format!("rank(U_B2^T A U_B1) = {rk} < p = {p}")
+        },
         rk == p,
         "A B must be independent of B (rank [B, AB] = 2p): in a mechanical system an input \
          force changes accelerations, which become positions only through the velocities; \
@@ -200,7 +211,11 @@ pub fn uncontrollable_multiplicity<K: Field>(
         let (_, piv) = joined.rref();
         let new: Vec<usize> = piv.into_iter().filter(|&c| c >= basis.ncols()).collect();
         block = joined.select_cols(&new);
-        basis = joined.select_cols(&(0..basis.ncols()).chain(new.iter().copied()).collect::<Vec<_>>());
+        basis = joined.select_cols(
+            &(0..basis.ncols())
+                .chain(new.iter().copied())
+                .collect::<Vec<_>>(),
+        );
     }
     if basis.ncols() == n {
         return (0, None);
@@ -236,7 +251,11 @@ pub fn max_geometric_multiplicity<K: Field>(m: &Matrix<K>) -> (usize, Option<Pol
             (0..u)
                 .map(|j| {
                     let c = Poly::constant(k.clone(), m.get(i, j).clone());
-                    if i == j { c.sub(&theta).rem(&s) } else { c.rem(&s) }
+                    if i == j {
+                        c.sub(&theta).rem(&s)
+                    } else {
+                        c.rem(&s)
+                    }
                 })
                 .collect()
         })
@@ -341,6 +360,10 @@ mod tests {
         let e = decide_existence(&a, &b);
         assert!(!e.exists);
         // Theorem 2.1's conditions all hold here.
-        assert!(e.conditions.iter().all(|c| c.holds || c.name == "uncontrollable_multiplicity"));
+        assert!(
+            e.conditions
+                .iter()
+                .all(|c| c.holds || c.name == "uncontrollable_multiplicity")
+        );
     }
 }

@@ -278,15 +278,17 @@ impl<K: Field> MechanicalNormalForm<K> {
         for j in 0..p {
             w.set(h - p + j, j, k.one());
         }
-        let expected_b = Matrix::zeros(k.clone(), h, p).vstack(&w).expect("p columns");
+        let expected_b = Matrix::zeros(k.clone(), h, p)
+            .vstack(&w)
+            .expect("p columns");
         if m.a_tilde != expected_a || m.b_tilde != expected_b || m.input != w {
             return false;
         }
         let row_t = m.left.as_ref().unwrap_or(&m.t);
-        if let Some(f) = &o.f {
-            if &(row_t * f) != &m.t {
-                return false;
-            }
+        if let Some(f) = &o.f
+            && row_t * f != m.t
+        {
+            return false;
         }
         if &m.a_tilde * &m.t != row_t * &o.a
             || m.b_tilde != row_t * &o.b
@@ -360,7 +362,9 @@ impl<K: Field> MechanicalNormalForm<K> {
     }
 }
 
-/// Markov parameters $C (F^{-1}A)^j F^{-1} B$, $j < count$, by solves with $F$.
+/// Markov parameters $C (F^{-1}A)^j F^{-1} B$, $j < count$, by solves with $F$ (never
+/// $F^{-1}$). Split as $[C (F^{-1}A)^i]\,[(F^{-1}A)^{j-i} F^{-1}B]$ with $i \le count/2$ so no
+/// power beyond about $count/2$ is formed (entry sizes grow with the power).
 pub(crate) fn markov_parameters<K: Field>(
     f: Option<&Matrix<K>>,
     a: &Matrix<K>,
@@ -372,11 +376,27 @@ pub(crate) fn markov_parameters<K: Field>(
         None => x.clone(),
         Some(f) => f.solve(x).expect("shapes").expect("F invertible").0,
     };
-    let mut x = solve(b);
-    let mut out = Vec::with_capacity(count);
-    for _ in 0..count {
-        out.push(c * &x);
-        x = solve(&(a * &x));
+    let solve_t = |x: &Matrix<K>| match f {
+        None => x.clone(),
+        Some(f) => {
+            let y = f.transpose().solve(&x.transpose()).expect("shapes");
+            y.expect("F invertible").0.transpose()
+        }
+    };
+    let half = count.div_ceil(2);
+    // left[i] = C (F^-1 A)^i, right[i] = (F^-1 A)^i F^-1 B
+    let mut left = vec![c.clone()];
+    for i in 1..half {
+        left.push(&solve_t(&left[i - 1]) * a);
     }
-    out
+    let mut right = vec![solve(b)];
+    for i in 1..=count.saturating_sub(half) {
+        right.push(solve(&(a * &right[i - 1])));
+    }
+    (0..count)
+        .map(|j| {
+            let i = j.min(half.saturating_sub(1));
+            &left[i] * &right[j - i]
+        })
+        .collect()
 }

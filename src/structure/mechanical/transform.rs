@@ -141,9 +141,9 @@ fn pseudo_random_alpha(rng: &mut SplitMix, t: u64, s: usize, degree: usize) -> V
         .map(|_| {
             let z = rng.next();
             if t <= 8 {
-                i64::from(z % 4 == 0)
+                i64::from(z.is_multiple_of(4))
             } else if t <= 16 {
-                i64::from(z % 2 == 0)
+                i64::from(z.is_multiple_of(2))
             } else {
                 let r = (1 + (t - 17) / 16).min(degree.max(1) as u64);
                 (z % (2 * r + 1)) as i64 - r as i64
@@ -238,7 +238,10 @@ mod tests {
         let o = find_invertible(&fam, 10_000).unwrap();
         assert!(o.candidates > 1);
         assert_eq!(o.t, fam.member(&o.alpha));
-        assert_ne!(o.t.det().unwrap(), crate::field::Rational::from_integer(0.into()));
+        assert_ne!(
+            o.t.det().unwrap(),
+            crate::field::Rational::from_integer(0.into())
+        );
     }
 
     #[test]
@@ -249,7 +252,10 @@ mod tests {
         };
         assert!(matches!(find_invertible(&fam, 100), Err(Error::Limit(_))));
         // the exhaustive grid {0..2}^1 is finite: the search stops by itself
-        assert!(matches!(find_invertible(&fam, u64::MAX), Err(Error::Limit(_))));
+        assert!(matches!(
+            find_invertible(&fam, u64::MAX),
+            Err(Error::Limit(_))
+        ));
     }
 
     #[test]

@@ -22,7 +22,7 @@ use crate::matrix::Matrix;
 /// of $\hat T B$ is not zero or its lower half $\hat B_2$ does not have rank $p$.
 pub fn unifying_transformation<K: Field>(t_hat: &Matrix<K>, b: &Matrix<K>) -> Result<Matrix<K>> {
     let n = b.nrows();
-    if t_hat.shape() != (n, n) || n % 2 != 0 {
+    if t_hat.shape() != (n, n) || !n.is_multiple_of(2) {
         return Err(Error::Shape {
             op: "unifying_transformation",
             expected: (n, n),
@@ -59,6 +59,12 @@ mod tests {
         let b = qmat![[0], [0], [2], [3]];
         let w = unifying_transformation(&Matrix::identity(crate::field::Q, 4), &b).unwrap();
         assert_eq!(&w * &b, qmat![[0], [0], [0], [1]]);
-        assert!(unifying_transformation(&Matrix::identity(crate::field::Q, 4), &qmat![[1], [0], [0], [0]]).is_err());
+        assert!(
+            unifying_transformation(
+                &Matrix::identity(crate::field::Q, 4),
+                &qmat![[1], [0], [0], [0]]
+            )
+            .is_err()
+        );
     }
 }
