@@ -588,3 +588,48 @@ fn invalid_shapes_are_errors() {
         Err(Error::Shape { .. })
     ));
 }
+
+/// The decisive condition against the search: systems with a controllable part and an
+/// uncontrollable part `c I_u` (geometric multiplicity `u`), scrambled. A normal form must
+/// exist iff `u <= n/2 - p`; when it does not, random members of the eq. 15 family are all
+/// singular (the determinant polynomial is identically zero).
+#[test]
+fn uncontrollable_multiplicity_decides() {
+    let mut rng = Rng(99);
+    for (n, p, u) in [
+        (4, 1, 1),
+        (4, 1, 2),
+        (6, 1, 2),
+        (6, 1, 3),
+        (6, 2, 1),
+        (6, 2, 2),
+        (8, 2, 2),
+        (8, 2, 3),
+    ] {
+        let nc = n - u;
+        let ac = random_rational(nc, nc, &mut rng);
+        let bc = random_rational(nc, p, &mut rng);
+        let x = random_rational(nc, u, &mut rng);
+        let cu = Matrix::identity(Q, u).scale(&r(rng.int(-3, 3)));
+        let a = Matrix::block(Q, &[vec![&ac, &x], vec![&Matrix::zeros(Q, u, nc), &cu]]).unwrap();
+        let b = bc.vstack(&Matrix::zeros(Q, u, p)).unwrap();
+        let c = random_rational(1, n, &mut rng);
+        let (a2, b2, c2) = scramble(&a, &b, &c, &random_similarity(n, &mut rng));
+        let res = run(&a2, &b2, &c2);
+        let ctx = format!("n = {n}, p = {p}, u = {u}, A = {a2}, B = {b2}");
+        assert_eq!(res.exists, u <= n / 2 - p, "{ctx}: {:?}", res.reason);
+        if res.exists {
+            assert_normal_form(&res, &a2, &b2, &c2, &ctx);
+        } else {
+            assert!(
+                res.reason.as_ref().unwrap().contains("uncontrollable"),
+                "{ctx}"
+            );
+            let fam = transformation_family(None, &a2, &b2).unwrap();
+            for _ in 0..10 {
+                let alpha: Vec<i64> = (0..fam.directions.len()).map(|_| rng.int(-9, 9)).collect();
+                assert!(Q.is_zero(&fam.member(&alpha).det().unwrap()), "{ctx}");
+            }
+        }
+    }
+}
