@@ -102,3 +102,83 @@ fn latex_and_text_formats() {
     assert_eq!(code, 0);
     assert!(out.contains("order:"));
 }
+
+#[test]
+fn structure_commands() {
+    let j = json(&["scb", "data/sliding-masses.json"]);
+    assert_eq!(j["verified"], true);
+    let dims = &j["dims"];
+    let total: i64 = ["a", "b", "c", "d"]
+        .iter()
+        .map(|k| dims[k].as_i64().unwrap())
+        .sum();
+    assert_eq!(total, 20);
+    for k in [
+        "G1",
+        "G2",
+        "G3",
+        "U",
+        "Y",
+        "A",
+        "B",
+        "C",
+        "D",
+        "chains",
+        "invariant_zeros",
+        "left_invertible",
+        "right_invertible",
+    ] {
+        assert!(j.get(k).is_some(), "scb key {k}");
+    }
+    let z = json(&["zeros", "data/sliding-masses.json"]);
+    assert!(z["invariant_zeros"].is_array());
+    let m = json(&["mnf", "tests/data/mass_spring.json"]);
+    assert_eq!(m["exists"], true);
+    assert_eq!(m["verified"], true);
+    for k in [
+        "mass",
+        "damping",
+        "stiffness",
+        "input",
+        "output",
+        "feedthrough",
+        "T",
+        "reason",
+    ] {
+        assert!(m.get(k).is_some(), "mnf key {k}");
+    }
+    // an odd number of states has no mechanical normal form: exists = false, not an error
+    let m = json(&["mnf", "tests/data/vehicle_eq11.json"]);
+    assert_eq!(m["exists"], false);
+    assert!(m["reason"].is_string());
+}
+
+#[test]
+fn float_commands() {
+    let c = json(&["check", "data/sliding-masses.json"]);
+    assert!(c["agree"].is_boolean());
+    assert!(c["differences"].is_array());
+    assert_eq!(c["comparisons"]["minreal_order"]["exact"], 8);
+    let e = json(&["minreal", "data/sliding-masses.json", "--method", "era"]);
+    assert_eq!(e["mcmillan_degree"], 8);
+    assert_eq!(e["exact"], false);
+    let dir = std::env::temp_dir();
+    let svg = dir.join("exactlti-test.svg");
+    let csv = dir.join("exactlti-test.csv");
+    let f = json(&[
+        "freqresp",
+        "data/sliding-masses.json",
+        "--points",
+        "50",
+        "--svg",
+        svg.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert_eq!(f["frequencies_hz"].as_array().unwrap().len(), 50);
+    assert_eq!(f["response"][0][0][0].as_array().unwrap().len(), 2);
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+    assert_eq!(std::fs::read_to_string(&csv).unwrap().lines().count(), 51);
+    let (code, _, err) = run(&["freqresp", "data/sliding-masses.json", "--from", "-1"]);
+    assert_eq!(code, 2, "{err}");
+}

@@ -29,6 +29,37 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
             let l = load_system(file)?;
             over_ground!(l, |t| scb_typed(t, file))
         }
+        Command::Mnf { file } => {
+            let l = load_system(file)?;
+            let t = l.rational("the mechanical normal form")?;
+            let s = &t.ss;
+            let r = crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d)
+                .map_err(|e| with_path(file, e))?;
+            Ok(r.report())
+        }
+        Command::Freqresp {
+            file,
+            from,
+            to,
+            points,
+            svg,
+            csv,
+        } => {
+            let l = load_system(file)?;
+            over_ground!(l, |t| super::float_cmds::freqresp(
+                t,
+                file,
+                *from,
+                *to,
+                *points,
+                svg.as_deref(),
+                csv.as_deref()
+            ))
+        }
+        Command::Check { file } => {
+            let l = load_system(file)?;
+            over_ground!(l, |t| super::float_cmds::check(t, file, vec![]))
+        }
         Command::Zeros { file } => {
             let l = load_system(file)?;
             over_ground!(l, |t| zeros_typed(t, file))
@@ -101,12 +132,7 @@ fn minreal(file: &Path, method: MethodArg) -> Result<Report, Failure> {
         MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
         MethodArg::HoKalman => MinrealMethod::HoKalman,
         MethodArg::Jordan => MinrealMethod::Jordan,
-        MethodArg::Era => {
-            return Err(Failure {
-                code: 2,
-                message: "method era is not available in this build".into(),
-            });
-        }
+        MethodArg::Era => return over_ground!(l, |t| super::float_cmds::era(t, file)),
     };
     over_ground!(l, |t| minreal_typed(t, m, file))
 }

@@ -7,6 +7,7 @@
 //! `--max-seconds` (default 600).
 
 mod commands;
+mod float_cmds;
 mod load;
 
 use crate::error::Error;
@@ -223,7 +224,14 @@ pub fn run(cli: Cli) -> i32 {
     }
 }
 
+/// A report (or a nested section) with `verified: false` is an internal failure, except for
+/// float results, which carry `exact: false` and are never verified, and answers that an
+/// object does not exist (`exists: false`: nothing to verify).
 fn report_failed_verification(r: &Report) -> bool {
+    use crate::report::Value::Bool;
+    if matches!(r.get("exact"), Some(Bool(false))) || matches!(r.get("exists"), Some(Bool(false))) {
+        return false;
+    }
     r.items.iter().any(|(k, v)| match v {
         crate::report::Value::Bool(false) => k == "verified",
         crate::report::Value::Obj(o) => report_failed_verification(o),

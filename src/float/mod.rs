@@ -24,6 +24,7 @@ use nalgebra::DMatrix;
 
 use crate::error::{Error, Result};
 
+pub mod convert;
 mod eigen;
 mod era;
 mod freqresp;
@@ -34,6 +35,7 @@ mod staircase;
 mod svd;
 mod zeros;
 
+pub use convert::to_dmatrix;
 pub use eigen::{EigenPairs, eigenvalues, eigenvectors};
 pub use era::{FloatRealization, era, markov_parameters};
 pub use freqresp::freqresp;
