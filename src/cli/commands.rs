@@ -259,7 +259,20 @@ fn analyze_typed<K: Field>(f: &crate::io::SystemFile, t: &Typed<K>) -> Result<Re
 fn analyze(file: Option<&Path>) -> Result<Report, Failure> {
     let l = load_or_builtin(file)?;
     match &l {
-        Loaded::Q(f, t) => analyze_typed(f, t),
+        Loaded::Q(f, t) => {
+            let mut r = analyze_typed(f, t)?;
+            // mechanical normal form: applies to first-order systems with inputs and an even
+            // number of states (files already in second-order form are mechanical by input)
+            let s = &t.ss;
+            if !f.is_second_order() && s.ninputs() > 0 && s.nstates() % 2 == 0 {
+                if let Ok(m) =
+                    crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d)
+                {
+                    r.push("mechanical", Value::Obj(m.report()));
+                }
+            }
+            Ok(r)
+        }
         Loaded::Quadratic(f, t) => analyze_typed(f, t),
     }
 }
