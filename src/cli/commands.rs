@@ -264,12 +264,13 @@ fn analyze(file: Option<&Path>) -> Result<Report, Failure> {
             // mechanical normal form: applies to first-order systems with inputs and an even
             // number of states (files already in second-order form are mechanical by input)
             let s = &t.ss;
-            if !f.is_second_order() && s.ninputs() > 0 && s.nstates() % 2 == 0 {
-                if let Ok(m) =
+            if !f.is_second_order()
+                && s.ninputs() > 0
+                && s.nstates() % 2 == 0
+                && let Ok(m) =
                     crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d)
-                {
-                    r.push("mechanical", Value::Obj(m.report()));
-                }
+            {
+                r.push("mechanical", Value::Obj(m.report()));
             }
             Ok(r)
         }
