@@ -25,7 +25,6 @@ use super::zp;
 use crate::error::{Error, Result};
 use crate::field::Rational;
 use num_bigint::BigInt;
-use num_integer::Roots;
 use num_traits::{One, Zero};
 
 // ----------------------------------------------------------------------------------------
@@ -137,13 +136,6 @@ impl Fx {
             }
             .norm(prec),
         )
-    }
-    fn to_rational(&self) -> Rational {
-        if self.e >= 0 {
-            Rational::from_integer(&self.m << self.e as usize)
-        } else {
-            Rational::new(self.m.clone(), BigInt::one() << (-self.e) as usize)
-        }
     }
     fn from_rational(q: &Rational, prec: u64) -> Fx {
         let n = Fx::from_int(q.numer(), prec + 8);
