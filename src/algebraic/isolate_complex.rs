@@ -539,7 +539,7 @@ pub fn refine_box(p: &[BigInt], b: &CBox, pure_imag: bool, width: &Rational) -> 
         let mag = (cr.numer().bits() as i64 - cr.denom().bits() as i64)
             .max(ci.numer().bits() as i64 - ci.denom().bits() as i64)
             .max(0) as u64;
-        let prec = (2 * (wbits + mag) + 64) << fails.min(6);
+        let prec = (wbits + mag + 64) << fails.min(6);
         if prec > MAX_PREC * 4 {
             return Err(Error::Limit("root refinement precision".into()));
         }

@@ -51,7 +51,7 @@ use num_traits::{One, Zero};
 /// let (lc, fs) = factor_q(&parse_poly_q("2*x^3 - 2*x").unwrap()).unwrap();
 /// assert_eq!(lc.to_string(), "2");
 /// let shown: Vec<String> = fs.iter().map(|(f, e)| format!("{f}:{e}")).collect();
-/// assert_eq!(shown, ["x + 1:1", "x:1", "x - 1:1"]);
+/// assert_eq!(shown, ["x - 1:1", "x:1", "x + 1:1"]);
 /// ```
 pub fn factor_q(p: &Poly<Q>) -> Result<(Rational, Vec<(Poly<Q>, usize)>)> {
     if p.is_zero() {

@@ -125,7 +125,7 @@ fn trager_squarefree(f: &Poly<NumberField>) -> Result<Vec<Poly<NumberField>>> {
 /// let f = Poly::from_i64s(&[1, 0, 1]).map(&k, |c| k.from_rational(c));
 /// let fs = factor_over_number_field(&f).unwrap();
 /// let shown: Vec<String> = fs.iter().map(|(g, _)| g.to_string()).collect();
-/// assert_eq!(shown, ["x - t", "x + t"]);
+/// assert_eq!(shown, ["x + t", "x - t"]);
 /// ```
 pub fn factor_over_number_field(
     f: &Poly<NumberField>,

@@ -591,8 +591,13 @@ fn cmp_re_part(a: &AlgebraicNumber, b: &AlgebraicNumber) -> Ordering {
     if a.is_pure_imaginary() && b.is_pure_imaginary() {
         return Ordering::Equal;
     }
+    // conjugates share their real part
+    if a.minpoly == b.minpoly && same_root(&a.conj(), b) {
+        return Ordering::Equal;
+    }
     let (mut a2, mut b2) = (a.clone(), b.clone());
-    for _ in 0..24 {
+    let (wa, wb) = (a.width(), b.width());
+    for j in 1..=8 {
         let ((al, ah), _) = a2.bounding_box();
         let ((bl, bh), _) = b2.bounding_box();
         if ah < bl {
@@ -601,8 +606,8 @@ fn cmp_re_part(a: &AlgebraicNumber, b: &AlgebraicNumber) -> Ordering {
         if bh < al {
             return Ordering::Greater;
         }
-        a2 = a2.refined(&(a2.width() * pow2(-8))).unwrap_or(a2);
-        b2 = b2.refined(&(b2.width() * pow2(-8))).unwrap_or(b2);
+        a2 = a2.refined(&(&wa * pow2(-16 * j))).unwrap_or(a2);
+        b2 = b2.refined(&(&wb * pow2(-16 * j))).unwrap_or(b2);
     }
     // possibly equal: compare the exact real parts
     match (a.try_re(), b.try_re()) {

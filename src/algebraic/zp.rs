@@ -34,6 +34,7 @@ pub fn primitive(p: &[BigInt]) -> ZP {
     p.iter().map(|c| c / &g).collect()
 }
 
+#[cfg(test)]
 pub fn mul(a: &[BigInt], b: &[BigInt]) -> ZP {
     if a.is_empty() || b.is_empty() {
         return vec![];
