@@ -148,7 +148,11 @@ impl Rng {
         z ^ (z >> 31)
     }
     fn coeff(&mut self, bits: u32) -> BigInt {
-        let m = if bits >= 64 { u64::MAX } else { (1u64 << bits) - 1 };
+        let m = if bits >= 64 {
+            u64::MAX
+        } else {
+            (1u64 << bits) - 1
+        };
         let v = BigInt::from(self.next() & m);
         if self.next() & 1 == 1 { -v } else { v }
     }
@@ -196,11 +200,18 @@ fn check_reconstruction(f: &ZPoly, c: &BigInt, fs: &[(ZPoly, usize)]) {
     let mut prod = ZPoly::constant(c.clone());
     for (g, e) in fs {
         assert!(g.deg0() >= 1, "constant factor {g} of {f}");
-        assert_eq!(g.primitive_part(), *g, "factor {g} of {f} not primitive/positive");
+        assert_eq!(
+            g.primitive_part(),
+            *g,
+            "factor {g} of {f} not primitive/positive"
+        );
         prod = &prod * &g.pow(*e as u32);
     }
     assert_eq!(prod, *f, "factors do not multiply back to {f}");
-    assert!(fs.windows(2).all(|w| w[0].0 < w[1].0), "not sorted/distinct: {f}");
+    assert!(
+        fs.windows(2).all(|w| w[0].0 < w[1].0),
+        "not sorted/distinct: {f}"
+    );
 }
 
 fn total_count(fs: &[(ZPoly, usize)]) -> usize {
@@ -224,7 +235,11 @@ fn factor_examples() {
         (&[6, 5, 1], 1, &[("x + 2", 1), ("x + 3", 1)]),
         (&[-3, 4, 4], 1, &[("2*x - 1", 1), ("2*x + 3", 1)]),
         (&[0, 1, 0, 4, 0, 4], 1, &[("x", 1), ("2*x^2 + 1", 2)]),
-        (&[1, 0, 0, 0, 4], 1, &[("2*x^2 - 2*x + 1", 1), ("2*x^2 + 2*x + 1", 1)]),
+        (
+            &[1, 0, 0, 0, 4],
+            1,
+            &[("2*x^2 - 2*x + 1", 1), ("2*x^2 + 2*x + 1", 1)],
+        ),
     ];
     for (c, content, want) in cases {
         let f = p(c);
@@ -236,8 +251,14 @@ fn factor_examples() {
         check_reconstruction(&f, &got_c, &fs);
         assert_eq!(factor_zpoly_zassenhaus(&f).unwrap(), (got_c, fs), "f = {f}");
     }
-    assert!(matches!(factor_zpoly(&ZPoly::zero()), Err(Error::Invalid(_))));
-    assert!(matches!(factor_zpoly_zassenhaus(&ZPoly::zero()), Err(Error::Invalid(_))));
+    assert!(matches!(
+        factor_zpoly(&ZPoly::zero()),
+        Err(Error::Invalid(_))
+    ));
+    assert!(matches!(
+        factor_zpoly_zassenhaus(&ZPoly::zero()),
+        Err(Error::Invalid(_))
+    ));
 }
 
 #[test]
@@ -255,7 +276,12 @@ fn sliding_mass_charpoly() {
         .collect();
     assert_eq!(
         shown,
-        ["(s^2 + 1)^2", "(s^2 + 2)^2", "(s^2 + 3)^2", "(s^4 + 4*s^2 + 1)^2"]
+        [
+            "(s^2 + 1)^2",
+            "(s^2 + 2)^2",
+            "(s^2 + 3)^2",
+            "(s^4 + 4*s^2 + 1)^2"
+        ]
     );
     // s^2 + a: no rational root since -a is not a square; the quartic has Galois group V4
     // (it splits over Q(sqrt 3)), so check it by hand: no rational roots (+-1 give 6) and
@@ -296,7 +322,9 @@ fn x_pow_n_minus_one_cyclotomic() {
 
 #[test]
 fn x_pow_n_minus_one_general_path() {
-    let ns: Vec<usize> = (1..=40).chain([48, 60, 64, 72, 84, 90, 96, 105, 120]).collect();
+    let ns: Vec<usize> = (1..=40)
+        .chain([48, 60, 64, 72, 84, 90, 96, 105, 120])
+        .collect();
     for n in ns {
         let f = ZPoly::monomial(BigInt::one(), n) - ZPoly::one();
         let (c, fs) = factor_zpoly_zassenhaus(&f).unwrap();
@@ -328,7 +356,11 @@ fn swinnerton_dyer_irreducible() {
         let f = swinnerton_dyer(&primes[..k]);
         assert_eq!(f.deg0(), 1 << k);
         assert!(f.leading_coeff().is_one());
-        assert!(!irreducible_mod_some_prime(&f), "S_{} irreducible mod p?", 1 << k);
+        assert!(
+            !irreducible_mod_some_prime(&f),
+            "S_{} irreducible mod p?",
+            1 << k
+        );
         let (c, fs) = factor_zpoly(&f).unwrap();
         assert_eq!(c, BigInt::one());
         assert_eq!(fs, vec![(f.clone(), 1)], "S_{}", 1 << k);
@@ -377,7 +409,11 @@ fn squarefree_decomposition_examples() {
     let shown: Vec<(String, usize)> = d.iter().map(|(g, e)| (g.to_string(), *e)).collect();
     assert_eq!(
         shown,
-        [("x^2 - 2".to_string(), 1), ("x".to_string(), 2), ("x + 1".to_string(), 3)]
+        [
+            ("x^2 - 2".to_string(), 1),
+            ("x".to_string(), 2),
+            ("x + 1".to_string(), 3)
+        ]
     );
     assert!(squarefree_decomposition(&p(&[7])).is_empty());
     assert!(squarefree_decomposition(&ZPoly::zero()).is_empty());

@@ -38,6 +38,9 @@ use crate::poly::zpoly::ZPoly;
 use crate::report::{Report, Value};
 use num_traits::{One, Zero};
 
+/// Leading coefficient and monic irreducible factors with multiplicities.
+pub type FactorizationQ = (Rational, Vec<(Poly<Q>, usize)>);
+
 /// Monic irreducible factors over $\mathbb{Q}$ with multiplicities, sorted by degree, then
 /// by coefficients from the leading one down: `p == lc * prod(f_i^e_i)`.
 ///
@@ -53,9 +56,11 @@ use num_traits::{One, Zero};
 /// let shown: Vec<String> = fs.iter().map(|(f, e)| format!("{f}:{e}")).collect();
 /// assert_eq!(shown, ["x - 1:1", "x:1", "x + 1:1"]);
 /// ```
-pub fn factor_q(p: &Poly<Q>) -> Result<(Rational, Vec<(Poly<Q>, usize)>)> {
+pub fn factor_q(p: &Poly<Q>) -> Result<FactorizationQ> {
     if p.is_zero() {
-        return Err(Error::Invalid("factorization of the zero polynomial".into()));
+        return Err(Error::Invalid(
+            "factorization of the zero polynomial".into(),
+        ));
     }
     let lc = p.lc();
     if p.deg() == 0 {
@@ -172,7 +177,11 @@ pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
         let mut v = Rational::zero();
         for m in 0..=k {
             let term = &c[k][m] * &s[m] * &s[k - m];
-            if (k - m) % 2 == 1 { v -= term } else { v += term }
+            if (k - m) % 2 == 1 {
+                v -= term
+            } else {
+                v += term
+            }
         }
         // divide by (2i)^k = 2^k (-1)^(k/2)
         let mut d = Rational::from_integer(num_bigint::BigInt::one() << k);

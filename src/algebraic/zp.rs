@@ -95,7 +95,9 @@ pub fn from_poly_q(p: &Poly<Q>) -> ZP {
 pub fn to_monic_q(p: &[BigInt]) -> Poly<Q> {
     Poly::new(
         Q,
-        p.iter().map(|c| Rational::from_integer(c.clone())).collect(),
+        p.iter()
+            .map(|c| Rational::from_integer(c.clone()))
+            .collect(),
     )
     .monic()
 }
@@ -107,8 +109,11 @@ pub fn parity(p: &[BigInt]) -> i8 {
         return 1;
     }
     let n = p.len() - 1;
-    if p.iter().enumerate().all(|(i, c)| (i + n) % 2 == 0 || c.is_zero()) {
-        if n % 2 == 0 { 1 } else { -1 }
+    if p.iter()
+        .enumerate()
+        .all(|(i, c)| (i + n).is_multiple_of(2) || c.is_zero())
+    {
+        if n.is_multiple_of(2) { 1 } else { -1 }
     } else {
         0
     }

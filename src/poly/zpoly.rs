@@ -114,7 +114,11 @@ impl ZPoly {
 
     /// $\max_i |c_i|$ (zero for the zero polynomial).
     pub fn max_norm(&self) -> BigInt {
-        self.coeffs.iter().map(|c| c.abs()).max().unwrap_or_default()
+        self.coeffs
+            .iter()
+            .map(|c| c.abs())
+            .max()
+            .unwrap_or_default()
     }
 
     /// $\sum_i c_i^2 = \|f\|_2^2$.
@@ -142,7 +146,11 @@ impl ZPoly {
                 break;
             }
         }
-        if self.leading_coeff().is_negative() { -g } else { g }
+        if self.leading_coeff().is_negative() {
+            -g
+        } else {
+            g
+        }
     }
 
     /// The primitive part with positive leading coefficient (zero for zero).
@@ -209,7 +217,9 @@ impl ZPoly {
     /// # Panics
     /// If `g` is zero (a caller bug in this low-level kernel).
     pub fn pseudo_divrem(&self, g: &ZPoly) -> (ZPoly, ZPoly) {
-        let dg = g.degree().expect("pseudo_divrem: division by the zero polynomial");
+        let dg = g
+            .degree()
+            .expect("pseudo_divrem: division by the zero polynomial");
         let lc = g.leading_coeff();
         let Some(df) = self.degree().filter(|&d| d >= dg) else {
             return (Self::zero(), self.clone());
@@ -512,7 +522,10 @@ mod tests {
         let a = &(&f * &g) * &p(&[3, 5]);
         let b = &(&f * &g) * &p(&[7, 1, 1]);
         assert_eq!(a.gcd(&b), fg);
-        assert_eq!(a.scale(&BigInt::from(6)).gcd(&b.scale(&BigInt::from(4))), fg.scale(&BigInt::from(2)));
+        assert_eq!(
+            a.scale(&BigInt::from(6)).gcd(&b.scale(&BigInt::from(4))),
+            fg.scale(&BigInt::from(2))
+        );
         assert_eq!(p(&[2, 4]).content(), BigInt::from(2));
         assert_eq!(p(&[2, -4]).content(), BigInt::from(-2));
         assert_eq!(p(&[2, -4]).primitive_part(), p(&[-1, 2]));

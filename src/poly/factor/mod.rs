@@ -179,7 +179,8 @@ fn choose_prime(f: &ZPoly) -> Option<PrimeChoice> {
             best = Some((count, zp, ddf));
         }
     }
-    let (_, zp, ddf) = best.expect("a square-free polynomial is square-free modulo almost all primes");
+    let (_, zp, ddf) =
+        best.expect("a square-free polynomial is square-free modulo almost all primes");
     Some(PrimeChoice { zp, ddf, allowed })
 }
 
@@ -229,7 +230,11 @@ fn factor_squarefree(f: &ZPoly) -> Vec<ZPoly> {
 fn cyclotomic_binomial(g: &ZPoly) -> Option<Vec<ZPoly>> {
     let c = g.coeffs();
     let n = c.len().checked_sub(1)?;
-    if n == 0 || !c[1..n].iter().all(|a| a.is_zero()) || !c[n].is_one() || c[0].abs() != BigInt::one() {
+    if n == 0
+        || !c[1..n].iter().all(|a| a.is_zero())
+        || !c[n].is_one()
+        || c[0].abs() != BigInt::one()
+    {
         return None;
     }
     let plus = c[0].is_one();
