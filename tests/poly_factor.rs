@@ -222,7 +222,8 @@ fn total_count(fs: &[(ZPoly, usize)]) -> usize {
 
 #[test]
 fn factor_examples() {
-    let cases: &[(&[i64], i64, &[(&str, usize)])] = &[
+    type Case<'a> = (&'a [i64], i64, &'a [(&'a str, usize)]);
+    let cases: &[Case] = &[
         (&[5], 5, &[]),
         (&[-3], -3, &[]),
         (&[0, 1], 1, &[("x", 1)]),
@@ -300,7 +301,7 @@ fn phi(n: usize) -> usize {
 
 fn check_cyclotomic(n: usize, f: &ZPoly, c: &BigInt, fs: &[(ZPoly, usize)]) {
     check_reconstruction(f, c, fs);
-    let divisors: Vec<usize> = (1..=n).filter(|d| n % d == 0).collect();
+    let divisors: Vec<usize> = (1..=n).filter(|d| n.is_multiple_of(*d)).collect();
     // as many nonconstant factors as irreducible ones (one Phi_d per divisor): each is one
     assert_eq!(fs.len(), divisors.len(), "x^{n} - 1");
     assert!(fs.iter().all(|(_, e)| *e == 1));
@@ -322,15 +323,43 @@ fn x_pow_n_minus_one_cyclotomic() {
 
 #[test]
 fn x_pow_n_minus_one_general_path() {
-    let ns: Vec<usize> = (1..=40)
-        .chain([48, 60, 64, 72, 84, 90, 96, 105, 120])
-        .collect();
-    for n in ns {
+    // all n <= 120 run in the cyclotomic test above; here a spread (debug-build time)
+    for n in (1..=72).chain([80, 84, 90, 96, 100, 105, 108, 112, 120]) {
         let f = ZPoly::monomial(BigInt::one(), n) - ZPoly::one();
         let (c, fs) = factor_zpoly_zassenhaus(&f).unwrap();
         check_cyclotomic(n, &f, &c, &fs);
         assert_eq!((c, fs), factor_zpoly(&f).unwrap(), "x^{n} - 1");
     }
+}
+
+/// Phi_n by exact division of x^n - 1 by Phi_d, d | n, d < n (test-side construction).
+fn cyclotomic(n: usize) -> ZPoly {
+    let mut f = ZPoly::monomial(BigInt::one(), n) - ZPoly::one();
+    for d in (1..n).filter(|d| n.is_multiple_of(*d)) {
+        f = f.div_exact(&cyclotomic(d)).unwrap();
+    }
+    f
+}
+
+#[test]
+fn cyclotomic_irreducible_and_mixed_products() {
+    // Phi_n for non-cyclic (Z/n)^*: reducible modulo every prime, irreducible over Q
+    for n in [8, 12, 15, 24, 40, 60, 105, 120] {
+        let phi_n = cyclotomic(n);
+        assert_eq!(phi_n.deg0(), phi(n));
+        assert!(!irreducible_mod_some_prime(&phi_n), "Phi_{n}");
+        assert!(is_irreducible(&phi_n), "Phi_{n}");
+        assert_eq!(factor_zpoly(&phi_n).unwrap().1, vec![(phi_n, 1)]);
+    }
+    // not a binomial: the general path must split all of x^60 - 1 and the extra factors
+    let extra = p(&[7, 1, 1]);
+    let f =
+        &(&(ZPoly::monomial(BigInt::one(), 60) - ZPoly::one()) * &extra) * &p(&[1, 0, 0, 3]).pow(2);
+    let (c, fs) = factor_zpoly(&f).unwrap();
+    check_reconstruction(&f, &c, &fs);
+    assert_eq!(fs.len(), 12 + 2);
+    assert!(fs.contains(&(extra, 1)));
+    assert!(fs.contains(&(p(&[1, 0, 0, 3]), 2)));
 }
 
 #[test]
@@ -340,7 +369,7 @@ fn x_pow_n_plus_one() {
         let (c, fs) = factor_zpoly(&f).unwrap();
         check_reconstruction(&f, &c, &fs);
         // Phi_d for d | 2n, d not dividing n: as many as the divisors of 2n minus those of n
-        let count = |m: usize| (1..=m).filter(|d| m % d == 0).count();
+        let count = |m: usize| (1..=m).filter(|d| m.is_multiple_of(*d)).count();
         assert_eq!(fs.len(), count(2 * n) - count(n), "x^{n} + 1");
         assert_eq!(factor_zpoly_zassenhaus(&f).unwrap(), (c, fs), "x^{n} + 1");
     }
@@ -446,6 +475,28 @@ fn small_poly() -> impl Strategy<Value = ZPoly> {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn zpoly_division_and_gcd_properties(a in small_poly(), b in small_poly(), g in small_poly()) {
+        // pseudo-division identity lc(b)^(deg a - deg b + 1) a = q b + r, deg r < deg b
+        let (q, r) = a.pseudo_divrem(&b);
+        let delta = (a.deg0() + 1).saturating_sub(b.deg0()) as u32;
+        let lc = ZPoly::constant(b.leading_coeff()).pow(delta);
+        prop_assert_eq!(&lc * &a, &(&q * &b) + &r);
+        prop_assert!(r.is_zero() || r.deg0() < b.deg0());
+        // exact division recovers factors; gcd(a g, b g) = pp(g) gcd(a, b) up to content
+        let ag = &a * &g;
+        prop_assert_eq!(ag.div_exact(&g), Some(a.clone()));
+        let d = ag.gcd(&(&b * &g));
+        prop_assert!(ag.div_exact(&d).is_some() && (&b * &g).div_exact(&d).is_some());
+        prop_assert!(d.div_exact(&g.primitive_part()).is_some(), "gcd {} lacks {}", d, g);
+        prop_assert_eq!(d.primitive_part(), (&a.gcd(&b) * &g).primitive_part());
+        // content/primitive part, derivative and evaluation
+        prop_assert_eq!(a.primitive_part().scale(&a.content()), a.clone());
+        let x0 = BigInt::from(3);
+        prop_assert_eq!((&a * &b).eval(&x0), a.eval(&x0) * b.eval(&x0));
+        prop_assert_eq!((&a * &b).derivative(), &(&a.derivative() * &b) + &(&a * &b.derivative()));
+    }
 
     #[test]
     fn random_products_factor_back(

@@ -247,7 +247,7 @@ impl ZPoly {
     }
 
     /// The exact quotient $f / g$ over $\mathbb{Z}$, or `None` when $g \nmid f$ in
-    /// $\mathbb{Z}[x]$ (also when `g` is zero).
+    /// $\mathbb{Z}\lbrack x\rbrack$ (also when `g` is zero).
     pub fn div_exact(&self, g: &ZPoly) -> Option<ZPoly> {
         let dg = g.degree()?;
         if self.is_zero() {
@@ -284,7 +284,7 @@ impl ZPoly {
         Some(Self::new(q))
     }
 
-    /// $\gcd(f, g)$ in $\mathbb{Z}[x]$: the gcd of the contents times the primitive gcd,
+    /// $\gcd(f, g)$ in $\mathbb{Z}\lbrack x\rbrack$: the gcd of the contents times the primitive gcd,
     /// with positive leading coefficient; $\gcd(0, 0) = 0$.
     ///
     /// # Algorithm
@@ -293,7 +293,7 @@ impl ZPoly {
     /// the primitive part.
     pub fn gcd(&self, g: &ZPoly) -> ZPoly {
         if self.is_zero() {
-            return g.primitive_part().scale(&g.content().abs()).abs_lc();
+            return g.abs_lc();
         }
         if g.is_zero() {
             return self.abs_lc();
