@@ -8,6 +8,7 @@
 #![allow(clippy::needless_range_loop)]
 #![allow(clippy::wrong_self_convention)]
 
+pub mod algebraic;
 pub mod cli;
 pub mod error;
 pub mod field;
