@@ -182,3 +182,33 @@ fn float_commands() {
     let (code, _, err) = run(&["freqresp", "data/sliding-masses.json", "--from", "-1"]);
     assert_eq!(code, 2, "{err}");
 }
+
+#[test]
+fn poly_commands() {
+    let f = json(&[
+        "poly",
+        "factor",
+        "((s^2+1)*(s^2+2)*(s^2+3)*(s^4+4*s^2+1))^2",
+    ]);
+    let factors = f["factors"].as_array().unwrap();
+    assert_eq!(factors.len(), 4);
+    assert!(factors.iter().all(|x| x["multiplicity"] == 2));
+    assert!(factors.iter().any(|x| x["poly"] == "x^4 + 4*x^2 + 1"));
+    let r = json(&["poly", "roots", "x^2 - x - 1"]);
+    let roots = r["roots"].as_array().unwrap();
+    assert_eq!(roots.len(), 2);
+    assert_eq!(roots[1]["value"], "(1 + sqrt(5))/2");
+    assert!((roots[1]["approx"][0].as_f64().unwrap() - 1.618033988749895).abs() < 1e-15);
+    let r = json(&["poly", "roots", "x^4 + 4*x^2 + 1"]);
+    assert!(
+        r["roots"][0]["value"]
+            .as_str()
+            .unwrap()
+            .starts_with("root of x^4 + 4*x^2 + 1 near")
+    );
+    for bad in ["x^", "x + y", "", "(x"] {
+        let (code, _, err) = run(&["poly", "factor", bad]);
+        assert_eq!(code, 2, "{bad}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1);
+    }
+}

@@ -25,6 +25,7 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         Command::Minreal { file, method } => minreal(file, *method),
         Command::Standard { file } => standard(file),
         Command::Analyze { file } => analyze(file.as_deref()),
+        Command::Poly { op } => poly(op),
         Command::Scb { file } => {
             let l = load_system(file)?;
             over_ground!(l, |t| scb_typed(t, file))
@@ -173,6 +174,31 @@ fn zeros_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
     let z = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)
         .map_err(|e| with_path(path, e))?;
     Ok(z.report())
+}
+
+fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
+    let parse = |e: &str| {
+        crate::poly::parse_poly_q(e).map_err(|err| Failure {
+            code: 2,
+            message: format!("polynomial \"{e}\": {err}"),
+        })
+    };
+    match op {
+        super::PolyCmd::Factor { expr } => {
+            let p = parse(expr)?;
+            Ok(crate::algebraic::factor_report(&p)?)
+        }
+        super::PolyCmd::Roots { expr, digits } => {
+            let p = parse(expr)?;
+            if *digits == 0 || *digits > 10_000 {
+                return Err(Failure {
+                    code: 2,
+                    message: format!("--digits must be between 1 and 10000 (got {digits})"),
+                });
+            }
+            Ok(crate::algebraic::roots_report(&p, *digits)?)
+        }
+    }
 }
 
 /// The built-in example of `analyze` without a file.

@@ -12,7 +12,9 @@ struct P<'a> {
     depth: usize,
 }
 
-const MAX_DEGREE: usize = 100_000;
+const MAX_DEGREE: usize = 10_000;
+/// Bound on $e \log_2 \|f\|_1$ (bits of the coefficients of $f^e$): keeps parsing fast.
+const MAX_POWER_BITS: u64 = 1 << 20;
 
 /// Parses a polynomial over $\mathbb{Q}$.
 ///
@@ -131,6 +133,17 @@ impl P<'_> {
             if e.saturating_mul(base.deg()) > MAX_DEGREE || e > MAX_DEGREE {
                 return Err(self.err("degree too large"));
             }
+            let l1_bits: u64 = base
+                .coeffs()
+                .iter()
+                .map(|c| c.numer().bits() + c.denom().bits())
+                .max()
+                .unwrap_or(0)
+                + (base.coeffs().len() as u64).ilog2() as u64
+                + 1;
+            if (e as u64).saturating_mul(l1_bits) > MAX_POWER_BITS {
+                return Err(self.err("coefficients too large"));
+            }
             return Ok(base.pow(e as u32));
         }
         Ok(base)
@@ -220,6 +233,8 @@ mod tests {
         assert!(parse_poly_q("x^").is_err());
         assert!(parse_poly_q("x/x").is_err());
         assert!(parse_poly_q("(x^1000)^1000").is_err());
+        assert!(parse_poly_q("(123456789*x + 1)^9999").is_err());
+        assert!(parse_poly_q("(x + 1)^500").is_ok());
         assert!(parse_poly_q("").is_err());
     }
 }
