@@ -212,3 +212,19 @@ fn poly_commands() {
         assert_eq!(err.trim_end().lines().count(), 1);
     }
 }
+
+#[test]
+fn modes_command() {
+    let m = json(&["modes", "data/sliding-masses.json"]);
+    let modes = m["modes"].as_array().unwrap();
+    assert_eq!(modes.len(), 5);
+    for k in [
+        "eigenvalue",
+        "frequency_hz",
+        "damping_ratio",
+        "time_constant_s",
+        "period_s",
+    ] {
+        assert!(modes[0].get(k).is_some(), "{k}");
+    }
+}

@@ -260,3 +260,37 @@ fn transfer_matrix_examples() {
     assert_eq!(tf.entries[0][0].to_string_var("s"), "(2*s + 5)/(s + 2)");
     let _ = Rational::from_integer(1.into());
 }
+
+#[test]
+fn modal_table_sliding_masses_matches_paper_tab1() {
+    let sys = sliding_masses();
+    let t = modal_table(&sys.a).unwrap();
+    assert_eq!(t.modes.len(), 5);
+    // Tab. 1: natural frequencies in Hz (10 significant digits)
+    let want = [
+        8.2384660790e-2,
+        1.5915494309e-1,
+        2.2507907904e-1,
+        2.7566444771e-1,
+        3.0746373983e-1,
+    ];
+    let mut got: Vec<f64> = t.modes.iter().map(|m| m.frequency_hz).collect();
+    got.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() < 1e-10 * w, "{g} vs {w}");
+    }
+    for m in &t.modes {
+        assert_eq!(m.multiplicity, 2);
+        assert_eq!(m.damping_ratio, Some(0.0));
+        assert_eq!(m.time_constant_s, None);
+    }
+    // a damped pair: s^2 + 2 s + 2 -> wn^2 = 2, zeta = sqrt(2)/2, tau = 1
+    let t = modal_table(&qmat![[0, 1], [-2, -2]]).unwrap();
+    assert_eq!(t.modes.len(), 1);
+    let ex: std::collections::HashMap<_, _> = t.modes[0].exact.iter().cloned().collect();
+    assert_eq!(ex["natural_frequency_squared"], "2");
+    assert_eq!(ex["damping_ratio"], "sqrt(2)/2");
+    assert_eq!(ex["time_constant_s"], "1");
+    assert!((t.modes[0].damping_ratio.unwrap() - 0.5f64.sqrt()).abs() < 1e-15);
+    assert_eq!(t.modes[0].eigenvalue, "-1 + i");
+}

@@ -26,6 +26,13 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         Command::Standard { file } => standard(file),
         Command::Analyze { file } => analyze(file.as_deref()),
         Command::Poly { op } => poly(op),
+        Command::Modes { file } => {
+            let l = load_system(file)?;
+            let t = l.rational("the modal table")?;
+            Ok(realization::modal_table(&t.ss.a)
+                .map_err(|e| with_path(file, e))?
+                .report())
+        }
         Command::Scb { file } => {
             let l = load_system(file)?;
             over_ground!(l, |t| scb_typed(t, file))
@@ -287,6 +294,9 @@ fn analyze(file: Option<&Path>) -> Result<Report, Failure> {
     match &l {
         Loaded::Q(f, t) => {
             let mut r = analyze_typed(f, t)?;
+            if let Ok(m) = realization::modal_table(&t.ss.a) {
+                r.push("modes", Value::Obj(m.report()));
+            }
             // mechanical normal form: applies to first-order systems with inputs and an even
             // number of states (files already in second-order form are mechanical by input)
             let s = &t.ss;

@@ -16,6 +16,7 @@
 //! | `MinrealMethod::Rosenbrock` | staircase of exact row compressions of $[A\ B; C\ 0]$, then of the dual (paper sec. 2.3) |
 //! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
 //! | [`descriptor_to_standard`] | Weierstrass-type split of $(E, A)$ without inverting $E$ |
+//! | [`modal_table`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
 mod controllability;
@@ -24,6 +25,7 @@ mod gramian;
 mod ho_kalman;
 mod kalman;
 mod minimal;
+mod modal;
 mod rosenbrock;
 
 pub use controllability::{
@@ -35,4 +37,5 @@ pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use minimal::{MinimalRealization, MinrealMethod, minimal, minimal_kalman};
+pub use modal::{ModalTable, Mode, modal_table};
 pub use rosenbrock::minimal_rosenbrock;

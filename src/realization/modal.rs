@@ -1,0 +1,141 @@
+//! The modal table (minimal-realizations paper, Tab. 1 and Tab. 8): per mode the eigenvalue,
+//! natural frequency, damping ratio, time constant and period, from the exact eigenvalues.
+//!
+//! For an eigenvalue $\lambda = \sigma + i\omega_d$: $\omega_n = |\lambda|$,
+//! `frequency_hz` $= \omega_n / 2\pi$, `damping_ratio` $\zeta = -\sigma/\omega_n$,
+//! `time_constant_s` $= -1/\sigma$ (negative for a growing mode; absent when $\sigma = 0$),
+//! `period_s` $= 2\pi/|\omega_d|$ (absent for real modes). A complex pair is one mode, listed
+//! with $\omega_d > 0$. The eigenvalues are exact algebraic numbers (certified roots of the
+//! characteristic polynomial's irreducible factors); the derived figures are evaluated from
+//! their certified approximations. Where the mode's factor has degree $\le 2$ the table also
+//! gives exact closed forms: $\omega_n^2 = a_0$ and $\zeta = a_1/(2\sqrt{a_0})$ for
+//! $s^2 + a_1 s + a_0$, and $\tau = -1/\lambda$ for a rational $\lambda$.
+
+use crate::algebraic::roots;
+use crate::error::Result;
+use crate::field::{Q, QuadraticField, Rational, fmt_rational};
+use crate::matrix::Matrix;
+use crate::report::{Report, Value};
+use num_traits::{Signed, Zero};
+use std::f64::consts::PI;
+
+/// One row of the modal table.
+#[derive(Clone, Debug)]
+pub struct Mode {
+    /// Exact display of the eigenvalue (`-1 + i`, `sqrt(2)*i`, `root of ... near ...`).
+    pub eigenvalue: String,
+    pub minpoly: String,
+    pub approx: (f64, f64),
+    pub multiplicity: usize,
+    pub frequency_hz: f64,
+    pub damping_ratio: Option<f64>,
+    pub time_constant_s: Option<f64>,
+    pub period_s: Option<f64>,
+    /// Exact closed forms where the minimal polynomial has degree <= 2.
+    pub exact: Vec<(String, String)>,
+}
+
+/// The modal table of a rational matrix.
+#[derive(Clone, Debug)]
+pub struct ModalTable {
+    pub modes: Vec<Mode>,
+}
+
+/// `sqrt(r)` as an exact display.
+fn sqrt_display(r: &Rational) -> String {
+    let (field, a, b) = QuadraticField::sqrt_of_rational(r);
+    match field {
+        None => fmt_rational(&a),
+        Some(k) => {
+            crate::field::quadratic::fmt_pair(&Rational::zero(), &b, &format!("sqrt({})", k.d()))
+        }
+    }
+}
+
+/// Computes the modal table of `a`.
+///
+/// # Errors
+/// `NotSquare`; failures of the root isolation (none expected).
+pub fn modal_table(a: &Matrix<Q>) -> Result<ModalTable> {
+    let cp = a.charpoly()?;
+    let mut modes = vec![];
+    for (lam, mult) in roots(&cp)? {
+        let (re, im) = lam.approx();
+        if im < 0.0 {
+            continue; // the conjugate is listed
+        }
+        let wn = re.hypot(im);
+        let mut exact = vec![];
+        let mp = lam.minpoly();
+        if mp.deg() == 1 {
+            let l = -mp.coeff(0);
+            if !l.is_zero() {
+                exact.push(("time_constant_s".into(), fmt_rational(&(-l.recip()))));
+                exact.push(("natural_frequency_rad_s".into(), fmt_rational(&l.abs())));
+            }
+        } else if mp.deg() == 2 && im > 0.0 {
+            let (a0, a1) = (mp.coeff(0), mp.coeff(1));
+            exact.push(("natural_frequency_squared".into(), fmt_rational(&a0)));
+            exact.push(("natural_frequency_rad_s".into(), sqrt_display(&a0)));
+            // zeta = a1 / (2 sqrt(a0)) = sqrt(a1^2 / (4 a0)) with the sign of a1
+            let z2 = &a1 * &a1 / (Rational::from_integer(4.into()) * &a0);
+            let z = sqrt_display(&z2);
+            exact.push((
+                "damping_ratio".into(),
+                if a1.is_negative() { format!("-{z}") } else { z },
+            ));
+            if !a1.is_zero() {
+                exact.push((
+                    "time_constant_s".into(),
+                    fmt_rational(&(Rational::from_integer(2.into()) / &a1)),
+                ));
+            }
+        }
+        modes.push(Mode {
+            eigenvalue: lam.value_string(),
+            minpoly: mp.to_string(),
+            approx: (re, im),
+            multiplicity: mult,
+            frequency_hz: wn / (2.0 * PI),
+            damping_ratio: (wn > 0.0).then(|| -re / wn + 0.0),
+            time_constant_s: (re != 0.0).then(|| -1.0 / re),
+            period_s: (im > 0.0).then(|| 2.0 * PI / im),
+            exact,
+        });
+    }
+    Ok(ModalTable { modes })
+}
+
+impl ModalTable {
+    /// The CLI report: `modes[]` with `eigenvalue`, `frequency_hz`, `damping_ratio`,
+    /// `time_constant_s`, `period_s` (plus `minpoly`, `approx`, `multiplicity`, `exact`).
+    pub fn report(&self) -> Report {
+        let opt = |x: Option<f64>| x.map_or(Value::Null, Value::Float);
+        let modes = self
+            .modes
+            .iter()
+            .map(|m| {
+                let mut ex = Report::new();
+                for (k, v) in &m.exact {
+                    ex.push(k.clone(), Value::Str(v.clone()));
+                }
+                Value::Obj(
+                    Report::new()
+                        .str("eigenvalue", m.eigenvalue.clone())
+                        .str("minpoly", m.minpoly.clone())
+                        .with(
+                            "approx",
+                            Value::List(vec![Value::Float(m.approx.0), Value::Float(m.approx.1)]),
+                        )
+                        .int("multiplicity", m.multiplicity)
+                        .float("frequency_hz", m.frequency_hz)
+                        .with("damping_ratio", opt(m.damping_ratio))
+                        .with("time_constant_s", opt(m.time_constant_s))
+                        .with("period_s", opt(m.period_s))
+                        .obj("exact", ex),
+                )
+            })
+            .collect();
+        Report::titled("modal table").with("modes", Value::List(modes))
+    }
+}
