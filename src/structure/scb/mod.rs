@@ -254,6 +254,29 @@ pub(crate) fn zero_items<K: Field>(p: &Poly<K>) -> Vec<Value> {
         return vec![];
     }
     let k = p.field().clone();
+    // rational zero polynomial: the zeros as exact algebraic numbers
+    let rational: Option<Vec<crate::field::Rational>> =
+        p.coeffs().iter().map(|c| k.to_rational(c)).collect();
+    if let Some(cs) = rational
+        && let Ok(rs) = crate::algebraic::roots(&Poly::new(crate::field::Q, cs))
+    {
+        return rs
+            .into_iter()
+            .map(|(z, mult)| {
+                let (re, im) = z.approx();
+                Value::Obj(
+                    Report::new()
+                        .str("minpoly", z.minpoly().to_string())
+                        .str("value", z.value_string())
+                        .with(
+                            "approx",
+                            Value::List(vec![Value::Float(re), Value::Float(im)]),
+                        )
+                        .int("multiplicity", mult),
+                )
+            })
+            .collect();
+    }
     p.squarefree()
         .into_iter()
         .filter(|(f, _)| f.deg() > 0)
