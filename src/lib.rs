@@ -9,6 +9,7 @@
 
 pub mod error;
 pub mod field;
+pub mod jordan;
 pub mod matrix;
 pub mod poly;
 pub mod report;
