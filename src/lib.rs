@@ -7,6 +7,7 @@
 #![allow(non_snake_case)]
 #![allow(clippy::needless_range_loop)]
 
+pub mod algebraic;
 pub mod error;
 pub mod field;
 pub mod jordan;

@@ -51,21 +51,25 @@ pub struct NfElem(pub Vec<Rational>);
 impl NumberField {
     /// The field $\mathbb{Q}[t]/(m)$ with $t$ the root of $m$ near `root`.
     ///
-    /// The modulus is made monic. Irreducibility is checked by the caller's factorizer
-    /// ([`crate::poly`]); here only degree and square-freeness are checked.
+    /// The modulus is made monic and checked irreducible over $\mathbb{Q}$
+    /// ([`crate::algebraic::is_irreducible_q`]).
     ///
     /// # Errors
-    /// `NotIrreducible` for a constant or non-square-free modulus.
+    /// `NotIrreducible` for a constant or reducible modulus.
     pub fn new(modulus: &Poly<Q>, root: (f64, f64)) -> Result<Self> {
-        let m = modulus.monic();
-        if m.deg() == 0 || !m.gcd(&m.derivative()).is_one() {
-            return Err(Error::NotIrreducible(m.to_string()));
+        if !crate::algebraic::is_irreducible_q(modulus) {
+            return Err(Error::NotIrreducible(modulus.monic().to_string()));
         }
-        Ok(NumberField(Arc::new(NumberFieldCtx {
-            modulus: m,
+        Ok(Self::new_unchecked(modulus, root))
+    }
+    /// As [`NumberField::new`] for a modulus the caller knows to be irreducible (e.g. a
+    /// factor returned by [`crate::algebraic::factor_q`]); only made monic.
+    pub fn new_unchecked(modulus: &Poly<Q>, root: (f64, f64)) -> Self {
+        NumberField(Arc::new(NumberFieldCtx {
+            modulus: modulus.monic(),
             root,
             var: "t".into(),
-        })))
+        }))
     }
     pub fn modulus(&self) -> &Poly<Q> {
         &self.0.modulus
@@ -241,5 +245,7 @@ mod tests {
         let (re, _) = k.approx(&a);
         assert!((re - 2.2599).abs() < 1e-3);
         assert!(NumberField::new(&Poly::from_i64s(&[1, 2, 1]), (0.0, 0.0)).is_err());
+        assert!(NumberField::new(&Poly::from_i64s(&[1, 0, 4, 0, 1]), (0.0, 0.5)).is_ok());
+        assert!(NumberField::new(&Poly::from_i64s(&[1, 0, 2, 0, 1]), (0.0, 1.0)).is_err());
     }
 }

@@ -12,8 +12,11 @@
 //! | [`Poly::squarefree`] | $f = c \prod_i f_i^i$, $f_i$ square-free, coprime |
 //! | [`Poly::resultant`] | $\mathrm{Res}(f, g)$ |
 //! | [`parse_poly_q`] | `x^4 + 4*x^2 + 1` into `Poly<Q>` |
+//! | [`factor::factor_zpoly`] | factorization over $\mathbb{Z}$ ([`zpoly::ZPoly`]) |
 
 mod arith;
 mod parse;
 pub use arith::*;
 pub use parse::parse_poly_q;
+pub mod factor;
+pub mod zpoly;
