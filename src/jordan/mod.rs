@@ -43,6 +43,7 @@ pub use primary::PrimaryComponent;
 pub use real::{RealBlock, RealJordanForm};
 pub use response::{FreeResponse, ResponseTerm};
 
+use crate::algebraic::AlgebraicNumber;
 use crate::error::Result;
 use crate::field::{Field, NfElem, NumberField, Q};
 use crate::matrix::Matrix;
@@ -70,6 +71,25 @@ pub struct Eigenvalue {
     pub geometric_multiplicity: usize,
     /// Jordan block sizes, largest first.
     pub blocks: Vec<usize>,
+}
+
+impl Eigenvalue {
+    /// The certified algebraic number (minimal polynomial and isolating region): the root
+    /// of [`Eigenvalue::minpoly`] nearest [`Eigenvalue::approx`].
+    ///
+    /// # Errors
+    /// Those of [`AlgebraicNumber::roots_of_irreducible`].
+    pub fn algebraic_number(&self) -> Result<AlgebraicNumber> {
+        let rts = AlgebraicNumber::roots_of_irreducible(&self.minpoly)?;
+        let d = |z: &AlgebraicNumber| {
+            let (re, im) = z.approx();
+            (re - self.approx.0).hypot(im - self.approx.1)
+        };
+        Ok(rts
+            .into_iter()
+            .min_by(|x, y| d(x).total_cmp(&d(y)))
+            .expect("degree >= 1"))
+    }
 }
 
 /// The columns of one eigenvalue, exact in one field.

@@ -29,21 +29,21 @@ use super::primary::{named_field, rational_field};
 use super::roots::{factor_q, fmt_approx, ordered_roots, quadratic_roots};
 use super::{JordanForm, quadratic_field};
 use crate::error::Result;
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::field::{ComplexField, ComplexPair, Field, NfElem, NumberField, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::report::{MatrixOut, Report, Value};
 use num_traits::{One, Zero};
+
 
 /// How $\operatorname{Re}$, $\operatorname{Im}$ of $K$-elements land in the real field.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum ReImMap {
     /// Real root: the element itself (already in the real field).
     Real,
-    /// $\theta = a_0 + s\, i\sqrt{g}$, $F = \mathbb{Q}(\sqrt g)$ (`g = 1`: $F = \mathbb{Q}$).
-    Quadratic { a0: Rational, s: Rational, g_is_one: bool },
-    /// $\theta = i \beta$, $F = \mathbb{Q}(\beta)$.
-    Imaginary,
+    /// Complex root $\theta = a + i b$ with $a, b$ in the real field $F$: an element
+    /// $\sum c_k t^k$ maps to $\sum c_k \theta^k$ evaluated in $F(i)$.
+    Complex(ComplexPair<NfElem>),
 }
 
 /// One real eigenvalue or one complex pair of the real Jordan form.
@@ -85,33 +85,13 @@ impl RealBlock {
         let f = self.field.as_ref()?;
         Some(match self.map.as_ref()? {
             ReImMap::Real => (x.clone(), f.zero()),
-            ReImMap::Quadratic { a0, s, g_is_one } => {
-                let c0 = x.0.first().cloned().unwrap_or_else(Rational::zero);
-                let c1 = x.0.get(1).cloned().unwrap_or_else(Rational::zero);
-                let re = f.from_rational(&(&c0 + &c1 * a0));
-                let im_c = &c1 * s;
-                let im = if *g_is_one {
-                    f.from_rational(&im_c)
-                } else {
-                    f.elem_from_poly(&Poly::new(Q, vec![Rational::zero(), im_c]))
-                };
-                (re, im)
-            }
-            ReImMap::Imaginary => {
-                let mut re = vec![Rational::zero(); x.0.len()];
-                let mut im = vec![Rational::zero(); x.0.len()];
-                for (k, c) in x.0.iter().enumerate() {
-                    let sign = if (k / 2) % 2 == 0 { c.clone() } else { -c };
-                    if k % 2 == 0 {
-                        re[k] = sign;
-                    } else {
-                        im[k] = sign;
-                    }
+            ReImMap::Complex(theta) => {
+                let c = ComplexField::new(f.clone());
+                let mut acc = c.zero();
+                for coef in x.0.iter().rev() {
+                    acc = c.add(&c.mul(&acc, theta), &c.from_rational(coef));
                 }
-                (
-                    f.elem_from_poly(&Poly::new(Q, re)),
-                    f.elem_from_poly(&Poly::new(Q, im)),
-                )
+                (acc.re, acc.im)
             }
         })
     }
@@ -146,31 +126,23 @@ fn real_field_for(
 ) -> std::result::Result<(NumberField, ReImMap), String> {
     let e = &jf.eigenvalues[ev];
     let p = &e.minpoly;
+    let pair = |a: NfElem, b: NfElem| ReImMap::Complex(ComplexPair { re: a, im: b });
     if p.deg() == 2 {
-        let (a0, s, f) = quadratic_roots(p).expect("irreducible");
-        let g = -f;
-        if g.is_one() {
-            return Ok((
-                rational_field(),
-                ReImMap::Quadratic {
-                    a0,
-                    s,
-                    g_is_one: true,
-                },
-            ));
-        }
-        return Ok((
-            quadratic_field(&g),
-            ReImMap::Quadratic {
-                a0,
-                s,
-                g_is_one: false,
-            },
-        ));
+        // theta = a0 + s sqrt(d), d < 0: Im = s sqrt(-d) (s > 0 for the upper root)
+        let (a0, s, d) = quadratic_roots(p).expect("irreducible");
+        let g = -d;
+        let f = if g.is_one() { rational_field() } else { quadratic_field(&g) };
+        let re = f.from_rational(&a0);
+        let im = if g.is_one() {
+            f.from_rational(&s)
+        } else {
+            f.elem_from_poly(&Poly::new(Q, vec![Rational::zero(), s]))
+        };
+        return Ok((f, pair(re, im)));
     }
     let even = p.coeffs().iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero());
     if even && e.approx.0.abs() < 1e-9 * (1.0 + e.approx.1.abs()) {
-        // r(x) = p(i x) has real coefficients c_k (-1)^(k/2)
+        // theta = i beta: beta is a real root of r(x) = p(i x) = sum c_k (-1)^(k/2) x^k
         let r = Poly::new(
             Q,
             p.coeffs()
@@ -184,17 +156,20 @@ fn real_field_for(
         let mut best: Option<(f64, Poly<Q>, f64)> = None;
         for (g, _) in factors {
             for z in ordered_roots(&g) {
-                if z.1 == 0.0 {
-                    let d = (z.0 - beta).abs();
-                    if best.as_ref().is_none_or(|b| d < b.0) {
-                        best = Some((d, g.clone(), z.0));
-                    }
+                let d = (z.0 - beta).abs();
+                if z.1 == 0.0 && best.as_ref().is_none_or(|b| d < b.0) {
+                    best = Some((d, g.clone(), z.0));
                 }
             }
         }
         if let Some((_, g, root)) = best {
-            let name = format!("b{}", ev + 1);
-            return Ok((named_field(&g, (root, 0.0), &name), ReImMap::Imaginary));
+            let f = named_field(&g, (root, 0.0), &format!("b{}", ev + 1));
+            let b = if g.deg() == 1 {
+                f.from_rational(&-g.coeff(0))
+            } else {
+                f.generator()
+            };
+            return Ok((f.clone(), pair(f.zero(), b)));
         }
     }
     Err(format!(

