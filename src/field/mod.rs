@@ -75,6 +75,38 @@ pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
         let _ = a;
         None
     }
+    /// Optional fast dense kernels (row-major). `None` means "use the generic algorithm";
+    /// $\mathbb{Q}$ answers with the fraction-free / multi-modular kernels of
+    /// `matrix::modular` (a method table as in FLINT's `gr`, since Rust has no specialization).
+    fn fast_rref(
+        &self,
+        m: usize,
+        n: usize,
+        a: &[Self::Elem],
+    ) -> Option<(Vec<Self::Elem>, Vec<usize>)> {
+        let _ = (m, n, a);
+        None
+    }
+    /// See [`Field::fast_rref`].
+    fn fast_rank(&self, m: usize, n: usize, a: &[Self::Elem]) -> Option<usize> {
+        let _ = (m, n, a);
+        None
+    }
+    /// See [`Field::fast_rref`].
+    fn fast_det(&self, n: usize, a: &[Self::Elem]) -> Option<Self::Elem> {
+        let _ = (n, a);
+        None
+    }
+    /// Characteristic polynomial coefficients, low degree first; see [`Field::fast_rref`].
+    fn fast_charpoly(&self, n: usize, a: &[Self::Elem]) -> Option<Vec<Self::Elem>> {
+        let _ = (n, a);
+        None
+    }
+    /// `Some(None)` for a singular matrix; see [`Field::fast_rref`].
+    fn fast_inverse(&self, n: usize, a: &[Self::Elem]) -> Option<Option<Vec<Self::Elem>>> {
+        let _ = (n, a);
+        None
+    }
     /// Is `a` zero-or-positive-real? Meaningful for real fields only (`None` otherwise).
     fn sign(&self, a: &Self::Elem) -> Option<std::cmp::Ordering> {
         let _ = a;

@@ -87,6 +87,21 @@ impl Field for Q {
     fn sign(&self, a: &Rational) -> Option<std::cmp::Ordering> {
         Some(a.cmp(&Rational::zero()))
     }
+    fn fast_rref(&self, m: usize, n: usize, a: &[Rational]) -> Option<(Vec<Rational>, Vec<usize>)> {
+        Some(crate::matrix::modular::rref_q(m, n, a))
+    }
+    fn fast_rank(&self, m: usize, n: usize, a: &[Rational]) -> Option<usize> {
+        Some(crate::matrix::modular::rank_q(m, n, a))
+    }
+    fn fast_det(&self, n: usize, a: &[Rational]) -> Option<Rational> {
+        Some(crate::matrix::modular::det_q(n, a))
+    }
+    fn fast_charpoly(&self, n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
+        Some(crate::matrix::modular::charpoly_q(n, a))
+    }
+    fn fast_inverse(&self, n: usize, a: &[Rational]) -> Option<Option<Vec<Rational>>> {
+        Some(crate::matrix::modular::inverse_q(n, a))
+    }
 }
 
 /// `p/q` or `p` when the denominator is one.

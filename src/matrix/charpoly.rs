@@ -18,6 +18,10 @@ impl<K: Field> Matrix<K> {
     /// # Errors
     /// `NotSquare`.
     pub fn charpoly(&self) -> Result<Poly<K>> {
+        self.check_square("charpoly")?;
+        if let Some(c) = self.field.fast_charpoly(self.nrows, &self.data) {
+            return Ok(Poly::new(self.field.clone(), c));
+        }
         self.charpoly_hessenberg()
     }
     /// Characteristic polynomial through the Hessenberg form.

@@ -16,6 +16,8 @@
 //! kernels (see `matrix::modular`).
 
 mod charpoly;
+pub mod fraction_free;
+pub mod modular;
 mod ops;
 mod rref;
 

@@ -51,11 +51,24 @@ impl<K: Field> Matrix<K> {
     /// Canonical reduced row echelon form and pivot columns (Gauss–Jordan, $O(m n \min(m,n))$
     /// field operations).
     pub fn rref(&self) -> (Matrix<K>, Vec<usize>) {
+        if let Some((d, piv)) = self.field.fast_rref(self.nrows, self.ncols, &self.data) {
+            return (
+                Matrix::from_vec(self.field.clone(), self.nrows, self.ncols, d),
+                piv,
+            );
+        }
+        self.rref_gauss_jordan()
+    }
+    /// Classical Gauss–Jordan RREF (the generic path; the oracle for the fast kernels).
+    pub fn rref_gauss_jordan(&self) -> (Matrix<K>, Vec<usize>) {
         let mut r = self.clone();
         let piv = rref_in_place(&self.field, self.nrows, self.ncols, &mut r.data);
         (r, piv)
     }
     pub fn rank(&self) -> usize {
+        if let Some(r) = self.field.fast_rank(self.nrows, self.ncols, &self.data) {
+            return r;
+        }
         self.rref().1.len()
     }
     /// Canonical basis of the right null space $\{v : A v = 0\}$, as the columns of an
@@ -102,6 +115,11 @@ impl<K: Field> Matrix<K> {
     pub fn inverse(&self) -> Result<Matrix<K>> {
         self.check_square("inverse")?;
         let n = self.nrows;
+        if let Some(r) = self.field.fast_inverse(n, &self.data) {
+            return r
+                .map(|d| Matrix::from_vec(self.field.clone(), n, n, d))
+                .ok_or(Error::Singular);
+        }
         let aug = self.hstack(&Matrix::identity(self.field.clone(), n))?;
         let (r, piv) = aug.rref();
         if piv.len() < n || (n > 0 && piv[n - 1] != n - 1) {
@@ -117,6 +135,9 @@ impl<K: Field> Matrix<K> {
         self.check_square("det")?;
         let k = &self.field;
         let n = self.nrows;
+        if let Some(d) = k.fast_det(n, &self.data) {
+            return Ok(d);
+        }
         let mut a = self.data.clone();
         let mut det = k.one();
         for c in 0..n {

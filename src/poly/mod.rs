@@ -12,11 +12,13 @@
 //! | [`Poly::squarefree`] | $f = c \prod_i f_i^i$, $f_i$ square-free, coprime |
 //! | [`Poly::resultant`] | $\mathrm{Res}(f, g)$ |
 //! | [`parse_poly_q`] | `x^4 + 4*x^2 + 1` into `Poly<Q>` |
-//! | [`factor::factor_zpoly`] | factorization over $\mathbb{Z}$ ([`zpoly::ZPoly`]) |
+//!
+//! Integer polynomials ([`zpoly::ZPoly`]) and their factorization over Q ([`factor`]) live
+//! in the submodules.
 
 mod arith;
+pub mod factor;
 mod parse;
+pub mod zpoly;
 pub use arith::*;
 pub use parse::parse_poly_q;
-pub mod factor;
-pub mod zpoly;

@@ -114,7 +114,11 @@ impl ZPoly {
 
     /// $\max_i |c_i|$ (zero for the zero polynomial).
     pub fn max_norm(&self) -> BigInt {
-        self.coeffs.iter().map(|c| c.abs()).max().unwrap_or_default()
+        self.coeffs
+            .iter()
+            .map(|c| c.abs())
+            .max()
+            .unwrap_or_default()
     }
 
     /// $\sum_i c_i^2 = \|f\|_2^2$.
@@ -142,7 +146,11 @@ impl ZPoly {
                 break;
             }
         }
-        if self.leading_coeff().is_negative() { -g } else { g }
+        if self.leading_coeff().is_negative() {
+            -g
+        } else {
+            g
+        }
     }
 
     /// The primitive part with positive leading coefficient (zero for zero).
@@ -209,7 +217,9 @@ impl ZPoly {
     /// # Panics
     /// If `g` is zero (a caller bug in this low-level kernel).
     pub fn pseudo_divrem(&self, g: &ZPoly) -> (ZPoly, ZPoly) {
-        let dg = g.degree().expect("pseudo_divrem: division by the zero polynomial");
+        let dg = g
+            .degree()
+            .expect("pseudo_divrem: division by the zero polynomial");
         let lc = g.leading_coeff();
         let Some(df) = self.degree().filter(|&d| d >= dg) else {
             return (Self::zero(), self.clone());
@@ -237,7 +247,7 @@ impl ZPoly {
     }
 
     /// The exact quotient $f / g$ over $\mathbb{Z}$, or `None` when $g \nmid f$ in
-    /// $\mathbb{Z}[x]$ (also when `g` is zero).
+    /// $\mathbb{Z}\lbrack x\rbrack$ (also when `g` is zero).
     pub fn div_exact(&self, g: &ZPoly) -> Option<ZPoly> {
         let dg = g.degree()?;
         if self.is_zero() {
@@ -274,7 +284,7 @@ impl ZPoly {
         Some(Self::new(q))
     }
 
-    /// $\gcd(f, g)$ in $\mathbb{Z}[x]$: the gcd of the contents times the primitive gcd,
+    /// $\gcd(f, g)$ in $\mathbb{Z}\lbrack x\rbrack$: the gcd of the contents times the primitive gcd,
     /// with positive leading coefficient; $\gcd(0, 0) = 0$.
     ///
     /// # Algorithm
@@ -283,7 +293,7 @@ impl ZPoly {
     /// the primitive part.
     pub fn gcd(&self, g: &ZPoly) -> ZPoly {
         if self.is_zero() {
-            return g.primitive_part().scale(&g.content().abs()).abs_lc();
+            return g.abs_lc();
         }
         if g.is_zero() {
             return self.abs_lc();
@@ -512,7 +522,10 @@ mod tests {
         let a = &(&f * &g) * &p(&[3, 5]);
         let b = &(&f * &g) * &p(&[7, 1, 1]);
         assert_eq!(a.gcd(&b), fg);
-        assert_eq!(a.scale(&BigInt::from(6)).gcd(&b.scale(&BigInt::from(4))), fg.scale(&BigInt::from(2)));
+        assert_eq!(
+            a.scale(&BigInt::from(6)).gcd(&b.scale(&BigInt::from(4))),
+            fg.scale(&BigInt::from(2))
+        );
         assert_eq!(p(&[2, 4]).content(), BigInt::from(2));
         assert_eq!(p(&[2, -4]).content(), BigInt::from(-2));
         assert_eq!(p(&[2, -4]).primitive_part(), p(&[-1, 2]));

@@ -5,6 +5,8 @@
 //! becomes `"T": [["1", "-1/2"], ...]` plus `"T_approx": [[1.0, -0.5], ...]` as the CLI
 //! contract requires.
 
+pub mod plot;
+
 use crate::field::Field;
 use crate::matrix::Matrix;
 use serde_json::{Map, Number, Value as Json};
@@ -142,6 +144,7 @@ impl Report {
                     s.push_str(&format!("{pad}{k} ({}x{}) =\n", mo.nrows, mo.ncols));
                     s.push_str(&text_matrix(&mo.exact, indent + 2));
                 }
+                Value::Obj(r) if r.title.is_some() => r.text_into(s, indent),
                 Value::Obj(r) => {
                     s.push_str(&format!("{pad}{k}:\n"));
                     r.text_into(s, indent + 2);

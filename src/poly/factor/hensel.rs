@@ -1,6 +1,6 @@
 //! Multifactor Hensel lifting over $\mathbb{Z}/p^k$.
 //!
-//! Given $f \in \mathbb{Z}[x]$ with $p \nmid \operatorname{lc}(f)$ and
+//! Given $f \in \mathbb{Z}\lbrack x\rbrack$ with $p \nmid \operatorname{lc}(f)$ and
 //! $f \equiv \operatorname{lc}(f)\, g_1 \cdots g_r \pmod p$, $g_i$ monic and pairwise
 //! coprime, compute monic $G_i \equiv g_i \pmod p$ with
 //! $f \equiv \operatorname{lc}(f)\, G_1 \cdots G_r \pmod{p^k}$.
@@ -264,7 +264,7 @@ mod tests {
             * ZPoly::from_i64s(&[11, -7, 0, 1])
             * ZPoly::from_i64s(&[9, 2]);
         let zp = Zp::new(13);
-        let fp = zp.monic(&zp.from_zpoly(&f));
+        let fp = zp.monic(&zp.reduce_zpoly(&f));
         let facs = factor_squarefree(&zp, &fp);
         for k in [1, 2, 5, 9] {
             let m = num_traits::pow(BigInt::from(13), k as usize);

@@ -1,7 +1,7 @@
 //! Factorization of integer polynomials over $\mathbb{Q}$.
 //!
 //! Computes $f = c \prod_i f_i^{e_i}$ with $c \in \mathbb{Z}$ (carrying the sign) and
-//! $f_i \in \mathbb{Z}[x]$ primitive, of positive leading coefficient, pairwise distinct and
+//! $f_i \in \mathbb{Z}\lbrack x\rbrack$ primitive, of positive leading coefficient, pairwise distinct and
 //! irreducible over $\mathbb{Q}$ (equivalently over $\mathbb{Z}$, by Gauss's lemma).
 //!
 //! | entry point | computes | algorithm |
@@ -14,9 +14,9 @@
 //! Zassenhaus pipeline for a square-free primitive $f$ of degree $n$: try several primes
 //! $p \nmid \operatorname{lc}(f)$ with $f \bmod p$ square-free, keep the one with fewest
 //! modular factors (distinct-degree counts) and intersect the possible factor degrees;
-//! factor modulo $p$ (Cantor–Zassenhaus, [`cantor_zassenhaus`]); lift to $p^k$ past twice
-//! $|\operatorname{lc} f| \, 2^{\lfloor n/2 \rfloor} \|f\|_2$ (multifactor quadratic
-//! Hensel lifting, [`hensel`]); recombine subsets ([`zassenhaus`]). Recombination is
+//! factor modulo $p$ (Cantor–Zassenhaus, `cantor_zassenhaus`); lift to $p^k$ past twice
+//! $2^{\lfloor n/2 \rfloor} \|f\|_2$ (multifactor quadratic
+//! Hensel lifting, `hensel`); recombine subsets (`zassenhaus`). Recombination is
 //! exponential in the number of modular factors in the worst case (no LLL); Swinnerton-Dyer
 //! polynomials of degree 16 (8 modular factors) take milliseconds.
 
@@ -129,9 +129,12 @@ fn factor_impl(f: &ZPoly, cyclotomic: bool) -> Result<(BigInt, Vec<(ZPoly, usize
 /// the possible degrees of factors over $\mathbb{Z}$.
 struct PrimeChoice {
     zp: Zp,
-    ddf: Vec<(PolyP, usize)>,
+    ddf: Ddf,
     allowed: Vec<bool>,
 }
+
+/// A distinct-degree factorization: (product of the degree-$d$ factors, $d$).
+type Ddf = Vec<(PolyP, usize)>;
 
 /// Subset sums of a multiset of degrees, as a bitmap over `0..=n`.
 fn subset_sums(ddf: &[(PolyP, usize)], n: usize) -> Vec<bool> {
@@ -155,14 +158,14 @@ fn subset_sums(ddf: &[(PolyP, usize)], n: usize) -> Vec<bool> {
 fn choose_prime(f: &ZPoly) -> Option<PrimeChoice> {
     let n = f.deg0();
     let mut allowed = vec![true; n + 1];
-    let mut best: Option<(usize, Zp, Vec<(PolyP, usize)>)> = None;
+    let mut best: Option<(usize, Zp, Ddf)> = None;
     let mut usable = 0;
     for p in primes_from(3) {
         if usable == PRIMES_TRIED {
             break;
         }
         let zp = Zp::new(p);
-        let fp = zp.from_zpoly(f);
+        let fp = zp.reduce_zpoly(f);
         if fp.len() != n + 1 || !zp.is_squarefree(&fp) {
             continue;
         }
@@ -179,16 +182,21 @@ fn choose_prime(f: &ZPoly) -> Option<PrimeChoice> {
             best = Some((count, zp, ddf));
         }
     }
-    let (_, zp, ddf) = best.expect("a square-free polynomial is square-free modulo almost all primes");
+    let (_, zp, ddf) =
+        best.expect("a square-free polynomial is square-free modulo almost all primes");
     Some(PrimeChoice { zp, ddf, allowed })
 }
 
-/// The smallest $k$ with $p^k > 2 |b| 2^{\lfloor n/2 \rfloor} \|f\|_2$, $b = \operatorname{lc} f$.
+/// The smallest $k$ with $p^k > 2 \cdot 2^{\lfloor n/2 \rfloor} \|f\|_2$.
+///
+/// For $h \mid f$ of degree $d$, Mahler's measure gives
+/// $\|h\|_1 \le 2^d M(h) \le 2^d |\operatorname{lc} h / \operatorname{lc} f| \, \|f\|_2$, so
+/// the candidate $(\operatorname{lc} f / \operatorname{lc} h)\, h$ has coefficients at most
+/// $2^d \|f\|_2$ in absolute value: the leading coefficient does not enter the bound.
 fn lifting_exponent(f: &ZPoly, p: u64) -> u32 {
     let n = f.deg0();
-    let b = f.leading_coeff();
-    // compare squares: p^(2k) > 4 b^2 4^(n/2) |f|_2^2
-    let rhs = BigInt::from(4) * &b * &b * (BigInt::one() << (2 * (n / 2))) * f.norm2_squared();
+    // compare squares: p^(2k) > 4 * 4^(n/2) * |f|_2^2
+    let rhs = (f.norm2_squared() << (2 * (n / 2))) * 4u32;
     let p2 = BigInt::from(p) * BigInt::from(p);
     let mut acc = p2.clone();
     let mut k = 1;
@@ -229,7 +237,11 @@ fn factor_squarefree(f: &ZPoly) -> Vec<ZPoly> {
 fn cyclotomic_binomial(g: &ZPoly) -> Option<Vec<ZPoly>> {
     let c = g.coeffs();
     let n = c.len().checked_sub(1)?;
-    if n == 0 || !c[1..n].iter().all(|a| a.is_zero()) || !c[n].is_one() || c[0].abs() != BigInt::one() {
+    if n == 0
+        || !c[1..n].iter().all(|a| a.is_zero())
+        || !c[n].is_one()
+        || c[0].abs() != BigInt::one()
+    {
         return None;
     }
     let plus = c[0].is_one();

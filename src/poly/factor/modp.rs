@@ -62,12 +62,12 @@ impl Zp {
 
     /// Inverse of a nonzero element (Fermat).
     pub fn inv(&self, a: u64) -> u64 {
-        debug_assert!(a % self.p != 0);
+        debug_assert!(!a.is_multiple_of(self.p));
         self.powu(a, self.p - 2)
     }
 
     /// Reduction of an integer polynomial modulo $p$.
-    pub fn from_zpoly(&self, f: &ZPoly) -> PolyP {
+    pub fn reduce_zpoly(&self, f: &ZPoly) -> PolyP {
         let pb = num_bigint::BigInt::from(self.p);
         let mut v: PolyP = f
             .coeffs()
@@ -249,9 +249,10 @@ pub(crate) fn primes_from(start: u64) -> impl Iterator<Item = u64> {
 /// modulo $p$, which proves $\gcd(f, g) = 1$ over $\mathbb{Q}$. `false` means "unknown".
 pub(crate) fn coprime_mod_some_prime(f: &ZPoly, g: &ZPoly) -> bool {
     let (df, dg) = (f.deg0(), g.deg0());
-    for p in primes_from(1_000_003).take(3) {
+    // three primes just above 10^6
+    for p in [1_000_003, 1_000_033, 1_000_037] {
         let k = Zp::new(p);
-        let (a, b) = (k.from_zpoly(f), k.from_zpoly(g));
+        let (a, b) = (k.reduce_zpoly(f), k.reduce_zpoly(g));
         // the degree of one image must be kept, so that gcd mod p is an image of a multiple of
         // the gcd over Z of at least its degree
         if a.len() != df + 1 && b.len() != dg + 1 {

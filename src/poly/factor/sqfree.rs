@@ -3,7 +3,7 @@
 //! For primitive $f$ with $\operatorname{lc}(f) > 0$: $f = \prod_i a_i^i$ with $a_i$
 //! primitive, square-free and pairwise coprime. Yun: $c_1 = f / \gcd(f, f')$,
 //! $d_1 = f'/\gcd(f, f') - c_1'$; then $a_i = \gcd(c_i, d_i)$, $c_{i+1} = c_i / a_i$,
-//! $d_{i+1} = d_i / a_i - c_{i+1}'$. All divisions are exact in $\mathbb{Z}[x]$ by Gauss's
+//! $d_{i+1} = d_i / a_i - c_{i+1}'$. All divisions are exact in $\mathbb{Z}\lbrack x\rbrack$ by Gauss's
 //! lemma, because every divisor is primitive.
 
 use super::super::zpoly::ZPoly;

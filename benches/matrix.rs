@@ -1,0 +1,144 @@
+//! Exact matrix kernels over Q: timings of the benchmark cases of issue 3.
+//!
+//! Run with `cargo bench --bench matrix` (release). One line per case, `name: X ms`, the best
+//! of a few repetitions. The matrices come from a 64-bit LCG shared with
+//! `scripts/anchors/matrix.py`, so the Python anchors time the very same inputs:
+//! `x <- (6364136223846793005 x + 1442695040888963407) mod 2^64`, entry
+//! `((x >> 33) mod 19) - 9` in -9..9.
+//!
+//! Cases: rank, rref, null space of `L R` with `L` 100x50 and `R` 50x200 (rank 50, factor
+//! entries -9..9); det, charpoly, inverse of a 100x100 matrix with entries -9..9. Extra
+//! lines compare the algorithms (`*_bareiss`, `*_berkowitz`) on smaller sizes.
+
+use exactlti::field::Rational;
+use exactlti::matrix::{fraction_free as ff, modular as mm};
+use std::hint::black_box;
+use std::time::Instant;
+
+struct Lcg(u64);
+
+impl Lcg {
+    fn entry(&mut self) -> i64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((self.0 >> 33) % 19) as i64 - 9
+    }
+    fn matrix(&mut self, m: usize, n: usize) -> Vec<i64> {
+        (0..m * n).map(|_| self.entry()).collect()
+    }
+}
+
+fn matmul(m: usize, k: usize, n: usize, a: &[i64], b: &[i64]) -> Vec<i64> {
+    let mut c = vec![0i64; m * n];
+    for i in 0..m {
+        for l in 0..k {
+            for j in 0..n {
+                c[i * n + j] += a[i * k + l] * b[l * n + j];
+            }
+        }
+    }
+    c
+}
+
+fn to_q(a: &[i64]) -> Vec<Rational> {
+    a.iter()
+        .map(|&x| Rational::from_integer(x.into()))
+        .collect()
+}
+
+fn time<T>(name: &str, reps: usize, mut f: impl FnMut() -> T) {
+    if let Ok(filter) = std::env::var("BENCH_FILTER")
+        && !name.contains(&filter)
+    {
+        return;
+    }
+    let mut best = f64::INFINITY;
+    for _ in 0..reps {
+        let t = Instant::now();
+        black_box(f());
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    println!("{name}: {:.3} ms", best * 1e3);
+}
+
+fn main() {
+    let mut g = Lcg(20240601);
+    let l = g.matrix(100, 50);
+    let r = g.matrix(50, 200);
+    let low = to_q(&matmul(100, 50, 200, &l, &r));
+    let sq = to_q(&g.matrix(100, 100));
+    let reps = 5;
+    if std::env::var("KERNELS").is_ok() {
+        kernels(&sq, &low);
+        return;
+    }
+
+    let det = mm::det_q(100, &sq);
+    let check = det.numer() % num_bigint::BigInt::from(1_000_000_007u64);
+    let check = (check + 1_000_000_007u64) % 1_000_000_007u64;
+    println!("check det100 mod 1000000007: {check}");
+    time("rank 100x200 r50", reps, || mm::rank_q(100, 200, &low));
+    time("rref 100x200 r50", reps, || mm::rref_q(100, 200, &low));
+    time("nullspace 100x200 r50", reps, || {
+        mm::nullspace_q(100, 200, &low)
+    });
+    time("det 100x100", reps, || mm::det_q(100, &sq));
+    time("charpoly 100x100", reps, || mm::charpoly_q(100, &sq));
+    time("inverse 100x100", reps, || mm::inverse_q(100, &sq));
+
+    // algorithm against algorithm on small sizes (dispatch thresholds)
+    for n in [4usize, 8, 12, 16, 24] {
+        let a = to_q(&g.matrix(n, n));
+        let w = to_q(&g.matrix(n, 2 * n));
+        time(&format!("det_bareiss n={n}"), reps, || {
+            ff::det_bareiss(n, &a)
+        });
+        time(&format!("det_modular n={n}"), reps, || {
+            mm::det_modular(n, &a)
+        });
+        time(&format!("charpoly_berkowitz n={n}"), reps, || {
+            ff::charpoly_berkowitz(n, &a)
+        });
+        time(&format!("charpoly_modular n={n}"), reps, || {
+            mm::charpoly_modular(n, &a)
+        });
+        time(&format!("inverse_bareiss n={n}"), reps, || {
+            ff::inverse_bareiss(n, &a)
+        });
+        time(&format!("inverse_modular n={n}"), reps, || {
+            mm::inverse_modular(n, &a)
+        });
+        time(&format!("rref_bareiss {n}x{}", 2 * n), reps, || {
+            ff::rref_bareiss(n, 2 * n, &w)
+        });
+        time(&format!("rref_modular {n}x{}", 2 * n), reps, || {
+            mm::rref_modular(n, 2 * n, &w)
+        });
+    }
+}
+#[allow(dead_code)]
+fn kernels(sq: &[Rational], low: &[Rational]) {
+    use mm::intmat::integer_rows;
+    let pr = mm::prime::nth_prime(0);
+    let (b, _) = integer_rows(100, 100, sq);
+    time("  integer_rows 100x100", 5, || integer_rows(100, 100, sq));
+    time("  reduce 100x100", 5, || b.reduce(&pr));
+    time("  hadamard 100x100", 5, || mm::det::hadamard_log2(&b));
+    let a0 = b.reduce(&pr);
+    time("  det_mod_p 100", 5, || {
+        mm::det::det_mod_p(&pr, 100, &mut a0.clone())
+    });
+    time("  charpoly_mod_p 100", 5, || {
+        mm::charpoly::charpoly_mod_p(&pr, 100, &mut a0.clone())
+    });
+    time("  inverse_mod_p 100", 5, || {
+        mm::inverse::inverse_mod_p(&pr, 100, &mut a0.clone())
+    });
+    let (bl, _) = integer_rows(100, 200, low);
+    let l0 = bl.reduce(&pr);
+    time("  rref_mod_p 100x200", 5, || {
+        mm::rref::rref_mod_p(&pr, 100, 200, &mut l0.clone())
+    });
+}

@@ -1,0 +1,233 @@
+//! Commands that run the float backend: `freqresp`, `minreal --method era`, `check`.
+
+use super::Failure;
+use super::load::Typed;
+use crate::field::Field;
+use crate::float::{self, Tol, Truth, to_dmatrix};
+use crate::realization::{self, MinrealMethod};
+use crate::report::plot::{Response, logspace, response_csv, response_svg};
+use crate::report::{Report, Value};
+use nalgebra::DMatrix;
+use std::path::Path;
+
+fn fail(path: &Path, e: crate::error::Error) -> Failure {
+    let f: Failure = e.into();
+    Failure {
+        code: f.code,
+        message: format!("{}: {}", path.display(), f.message),
+    }
+}
+
+fn float_abcd<K: Field>(t: &Typed<K>, path: &Path) -> Result<[DMatrix<f64>; 4], Failure> {
+    let s = &t.ss;
+    let conv = |m| to_dmatrix(m).map_err(|e| fail(path, e));
+    Ok([conv(&s.a)?, conv(&s.b)?, conv(&s.c)?, conv(&s.d)?])
+}
+
+fn dm_report(r: Report, name: &str, m: &DMatrix<f64>) -> Report {
+    let rows = (0..m.nrows())
+        .map(|i| Value::List((0..m.ncols()).map(|j| Value::Float(m[(i, j)])).collect()))
+        .collect();
+    r.with(name, Value::List(rows))
+}
+
+fn truth_str(t: Truth) -> &'static str {
+    match t {
+        Truth::True => "true",
+        Truth::False => "false",
+        Truth::Unknown => "unknown",
+    }
+}
+
+/// Frequency response (float, from the exact system's embedding).
+pub fn freqresp<K: Field>(
+    t: &Typed<K>,
+    path: &Path,
+    from: f64,
+    to: f64,
+    points: usize,
+    svg: Option<&Path>,
+    csv: Option<&Path>,
+) -> Result<Report, Failure> {
+    if !(from > 0.0 && to > from && (2..=100_000).contains(&points)) {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "freqresp: need 0 < --from < --to and 2 <= --points <= 100000 (got {from}, {to}, {points})"
+            ),
+        });
+    }
+    let [a, b, c, d] = float_abcd(t, path)?;
+    let freqs = logspace(from, to, points);
+    let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(|e| fail(path, e))?;
+    let table: Response = resp
+        .iter()
+        .map(|g| {
+            (0..g.nrows())
+                .map(|i| {
+                    (0..g.ncols())
+                        .map(|j| (g[(i, j)].re, g[(i, j)].im))
+                        .collect()
+                })
+                .collect()
+        })
+        .collect();
+    if let Some(p) = svg {
+        std::fs::write(
+            p,
+            response_svg(
+                &freqs,
+                &table,
+                &format!("frequency response: {}", path.display()),
+            ),
+        )
+        .map_err(|e| Failure {
+            code: 2,
+            message: format!("{}: cannot write: {e}", p.display()),
+        })?;
+    }
+    if let Some(p) = csv {
+        std::fs::write(p, response_csv(&freqs, &table)).map_err(|e| Failure {
+            code: 2,
+            message: format!("{}: cannot write: {e}", p.display()),
+        })?;
+    }
+    let resp_json = table
+        .iter()
+        .map(|g| {
+            Value::List(
+                g.iter()
+                    .map(|row| {
+                        Value::List(
+                            row.iter()
+                                .map(|(re, im)| {
+                                    Value::List(vec![Value::Float(*re), Value::Float(*im)])
+                                })
+                                .collect(),
+                        )
+                    })
+                    .collect(),
+            )
+        })
+        .collect();
+    Ok(Report::titled("frequency response")
+        .with(
+            "frequencies_hz",
+            Value::List(freqs.iter().map(|f| Value::Float(*f)).collect()),
+        )
+        .with("response", Value::List(resp_json)))
+}
+
+/// ERA (float) on the Markov parameters of the exact system, compared with the exact order.
+pub fn era<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
+    let [a, b, c, d] = float_abcd(t, path)?;
+    let n = t.ss.nstates();
+    let mk = float::markov_parameters(&a, &b, &c, &d, 2 * n + 2).map_err(|e| fail(path, e))?;
+    let r = float::era(&mk, None, &Tol::default()).map_err(|e| fail(path, e))?;
+    let exact = realization::mcmillan_degree(&t.ss);
+    let mut rep = Report::titled("minimal realization (era, float)")
+        .str("method", "era")
+        .int("original_order", n)
+        .int("order", r.order)
+        .int("mcmillan_degree", exact);
+    for (name, m) in [("A", &r.a), ("B", &r.b), ("C", &r.c), ("D", &r.d)] {
+        rep = dm_report(rep, name, m);
+    }
+    Ok(rep.bool("verified", false).bool("exact", false).str("note", "ERA is a float method: nothing is verified exactly; mcmillan_degree is the exact Hankel rank"))
+}
+
+/// Float path beside the exact path.
+pub fn check<K: Field>(
+    t: &Typed<K>,
+    path: &Path,
+    extra: Vec<(String, bool, Report)>,
+) -> Result<Report, Failure> {
+    let [a, b, c, d] = float_abcd(t, path)?;
+    let tol = Tol::default();
+    let s = &t.ss;
+    let mut items: Vec<(String, bool, Report)> = vec![];
+    if s.ninputs() > 0 && s.noutputs() > 0 {
+        let exact = realization::minimal(s, MinrealMethod::Kalman).map_err(|e| fail(path, e))?;
+        let fm = float::minreal(&a, &b, &c, &d, &tol).map_err(|e| fail(path, e))?;
+        let ok = fm.order == exact.order;
+        items.push((
+            "minreal_order".into(),
+            ok,
+            Report::new()
+                .int("exact", exact.order)
+                .int("float", fm.order)
+                .str("float_truth", truth_str(fm.truth)),
+        ));
+        let rc = realization::controllability_matrix(&s.a, &s.b).rank();
+        let frc = float::controllability_rank(&a, &b, &tol).map_err(|e| fail(path, e))?;
+        items.push((
+            "controllability_rank".into(),
+            rc == frc.rank,
+            Report::new()
+                .int("exact", rc)
+                .int("float", frc.rank)
+                .str("float_truth", truth_str(frc.truth)),
+        ));
+        let ro = realization::observability_matrix(&s.a, &s.c).rank();
+        let fro = float::observability_rank(&a, &c, &tol).map_err(|e| fail(path, e))?;
+        items.push((
+            "observability_rank".into(),
+            ro == fro.rank,
+            Report::new()
+                .int("exact", ro)
+                .int("float", fro.rank)
+                .str("float_truth", truth_str(fro.truth)),
+        ));
+        let n = s.nstates();
+        if let Ok(mk) = float::markov_parameters(&a, &b, &c, &d, 2 * n + 2)
+            && let Ok(e) = float::era(&mk, None, &tol)
+        {
+            items.push((
+                "era_order".into(),
+                e.order == exact.order,
+                Report::new()
+                    .int("exact", exact.order)
+                    .int("float", e.order)
+                    .str("float_truth", truth_str(e.truth)),
+            ));
+        }
+        if let Ok(z) = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)
+            && let Ok(fz) = float::invariant_zeros_report(&a, &b, &c, &d, &tol)
+        {
+            let ez = z.count();
+            items.push((
+                "invariant_zero_count".into(),
+                ez == fz.zeros.len(),
+                Report::new()
+                    .int("exact", ez)
+                    .int("float", fz.zeros.len())
+                    .str("float_truth", truth_str(fz.truth)),
+            ));
+        }
+    }
+    items.extend(extra);
+    let agree = items.iter().all(|(_, ok, _)| *ok);
+    let differences = items
+        .iter()
+        .filter(|(_, ok, _)| !ok)
+        .map(|(k, _, r)| {
+            Value::Obj(
+                Report::new()
+                    .str("quantity", k.clone())
+                    .with("detail", Value::Obj(r.clone())),
+            )
+        })
+        .collect();
+    let mut rep = Report::titled("float path vs exact path")
+        .bool("agree", agree)
+        .with("differences", Value::List(differences));
+    let mut cmp = Report::new();
+    for (k, ok, r) in items {
+        cmp.push(k, Value::Obj(r.bool("agree", ok)));
+    }
+    rep = rep.obj("comparisons", cmp).str(
+        "tolerance",
+        format!("rel {:e}, gap {:e} (float::Tol::default)", tol.rel, tol.gap),
+    );
+    Ok(rep)
+}

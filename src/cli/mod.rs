@@ -1,0 +1,240 @@
+//! The `exactlti` command line (contract: ../shared/CLI-CONTRACT.md).
+//!
+//! Thin: arguments → [`crate::io`] → library → [`crate::report::Report`] → text/JSON/LaTeX.
+//! Exit status 0 on success; 2 for bad input or a request that cannot be met (one line on
+//! stderr naming the file, key, row and column, or the violated condition); 1 for an
+//! internal failure (an exact verification that failed). Long exact work is bounded by
+//! `--max-seconds` (default 600).
+
+mod commands;
+mod float_cmds;
+mod load;
+
+use crate::error::Error;
+use crate::report::Report;
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+use std::sync::mpsc;
+use std::time::Duration;
+
+pub use load::{Loaded, load_system};
+
+/// Output formats.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    #[default]
+    Text,
+    Json,
+    Latex,
+}
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "exactlti",
+    version,
+    about = "Exact structure of linear time-invariant systems: Jordan forms, minimal realizations, special coordinate basis, mechanical normal form"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+    /// Output format.
+    #[arg(long, global = true, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// Upper bound on the wall time of the exact computation; exceeded: exit 2.
+    #[arg(long, global = true, default_value_t = 600.0)]
+    pub max_seconds: f64,
+}
+
+/// `--method` of `minreal`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MethodArg {
+    Kalman,
+    Rosenbrock,
+    HoKalman,
+    Jordan,
+    Era,
+}
+
+/// Operations of `linalg`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum LinalgOp {
+    Rank,
+    Det,
+    Charpoly,
+    Minpoly,
+    Inverse,
+    Nullspace,
+    Rref,
+}
+
+/// Operations of `poly`.
+#[derive(Subcommand, Debug)]
+pub enum PolyCmd {
+    /// Factorization over Q into irreducibles with multiplicities.
+    Factor { expr: String },
+    /// All complex roots, certified, as exact algebraic numbers.
+    Roots {
+        expr: String,
+        /// Correct significant digits of the displayed approximations.
+        #[arg(long, default_value_t = 10)]
+        digits: usize,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Exact Jordan decomposition of A.
+    Jordan {
+        file: PathBuf,
+        /// Real Jordan form (2x2 blocks [[a, b], [-b, a]] for complex pairs).
+        #[arg(long)]
+        real: bool,
+    },
+    /// Minimal realization.
+    Minreal {
+        file: PathBuf,
+        #[arg(long, value_enum, default_value_t = MethodArg::Kalman)]
+        method: MethodArg,
+    },
+    /// Descriptor system to standard state space.
+    Standard { file: PathBuf },
+    /// Special coordinate basis.
+    Scb { file: PathBuf },
+    /// Mechanical normal form (second-order form of a first-order system).
+    Mnf { file: PathBuf },
+    /// Invariant zeros.
+    Zeros { file: PathBuf },
+    /// Modal table: eigenvalue, frequency, damping ratio, time constant, period.
+    Modes { file: PathBuf },
+    /// Frequency response.
+    Freqresp {
+        file: PathBuf,
+        #[arg(long, default_value_t = 0.01)]
+        from: f64,
+        #[arg(long, default_value_t = 10.0)]
+        to: f64,
+        #[arg(long, default_value_t = 200)]
+        points: usize,
+        #[arg(long)]
+        svg: Option<PathBuf>,
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
+    /// Run the float path beside the exact path and compare.
+    Check { file: PathBuf },
+    /// Polynomials over Q.
+    Poly {
+        #[command(subcommand)]
+        op: PolyCmd,
+    },
+    /// Exact linear algebra on the matrix A of a system file.
+    Linalg {
+        #[arg(value_enum)]
+        op: LinalgOp,
+        file: PathBuf,
+    },
+    /// Everything that applies, as one report (built-in sliding-mass example without FILE).
+    Analyze { file: Option<PathBuf> },
+}
+
+/// A command failure: exit code and the one-line message.
+#[derive(Debug)]
+pub struct Failure {
+    pub code: i32,
+    pub message: String,
+}
+
+impl From<Error> for Failure {
+    fn from(e: Error) -> Self {
+        let code = if matches!(e, Error::Verification(_)) {
+            1
+        } else {
+            2
+        };
+        Failure {
+            code,
+            message: e.to_string(),
+        }
+    }
+}
+
+impl From<crate::io::InputError> for Failure {
+    fn from(e: crate::io::InputError) -> Self {
+        Failure {
+            code: 2,
+            message: e.to_string(),
+        }
+    }
+}
+
+/// Renders a report in the chosen format.
+pub fn render(r: &Report, f: Format) -> String {
+    match f {
+        Format::Text => r.to_text(),
+        Format::Json => serde_json::to_string_pretty(&r.to_json()).unwrap_or_default() + "\n",
+        Format::Latex => r.to_latex(),
+    }
+}
+
+/// Runs the command line; returns the process exit code.
+pub fn run(cli: Cli) -> i32 {
+    let format = cli.format;
+    let limit = cli.max_seconds;
+    let (tx, rx) = mpsc::channel();
+    let handle = std::thread::Builder::new()
+        .stack_size(256 << 20)
+        .spawn(move || {
+            let r = commands::execute(&cli.command);
+            let _ = tx.send(r);
+        });
+    if handle.is_err() {
+        eprintln!("exactlti: could not start the worker thread");
+        return 1;
+    }
+    let wait = if limit.is_finite() && limit > 0.0 {
+        Duration::from_secs_f64(limit.min(1e7))
+    } else {
+        Duration::from_secs(600)
+    };
+    match rx.recv_timeout(wait) {
+        Ok(Ok(report)) => {
+            print!("{}", render(&report, format));
+            let failed = report_failed_verification(&report);
+            if failed {
+                eprintln!("exactlti: an exact verification failed (verified = false)");
+                1
+            } else {
+                0
+            }
+        }
+        Ok(Err(f)) => {
+            eprintln!("exactlti: {}", f.message);
+            f.code
+        }
+        Err(mpsc::RecvTimeoutError::Timeout) => {
+            eprintln!(
+                "exactlti: stopped after --max-seconds {limit}: the exact computation did not finish in time"
+            );
+            2
+        }
+        Err(mpsc::RecvTimeoutError::Disconnected) => {
+            eprintln!("exactlti: internal failure (the computation panicked)");
+            1
+        }
+    }
+}
+
+/// A report (or a nested section) with `verified: false` is an internal failure, except for
+/// float results, which carry `exact: false` and are never verified, and answers that an
+/// object does not exist (`exists: false`: nothing to verify).
+fn report_failed_verification(r: &Report) -> bool {
+    use crate::report::Value::Bool;
+    if matches!(r.get("exact"), Some(Bool(false))) || matches!(r.get("exists"), Some(Bool(false))) {
+        return false;
+    }
+    r.items.iter().any(|(k, v)| match v {
+        crate::report::Value::Bool(false) => k == "verified",
+        crate::report::Value::Obj(o) => report_failed_verification(o),
+        _ => false,
+    })
+}

@@ -1,0 +1,27 @@
+//! Exact to float: `Matrix<K>` to nalgebra `DMatrix<f64>` through the field's embedding.
+
+use crate::error::{Error, Result};
+use crate::field::Field;
+use crate::matrix::Matrix;
+use nalgebra::DMatrix;
+
+/// The real `f64` image of an exact matrix.
+///
+/// # Errors
+/// `Unsupported` when an entry is not real under the field's embedding (the float backend
+/// is real).
+pub fn to_dmatrix<K: Field>(m: &Matrix<K>) -> Result<DMatrix<f64>> {
+    let mut out = DMatrix::zeros(m.nrows(), m.ncols());
+    for i in 0..m.nrows() {
+        for j in 0..m.ncols() {
+            let (re, im) = m.field().approx(m.get(i, j));
+            if im != 0.0 {
+                return Err(Error::Unsupported(
+                    "the float path works on real matrices; this entry is complex".into(),
+                ));
+            }
+            out[(i, j)] = re;
+        }
+    }
+    Ok(out)
+}

@@ -1,0 +1,669 @@
+//! Exact expressions: `"-(a*cf - b*cr)/(Izz*u)"`, `"1 - sqrt(2)/2"`, `"2 + i"`, `"2^-3"`.
+//!
+//! Grammar (recursive descent, `^` right-associative and binding tighter than unary minus,
+//! so `-2^2 = -4` and `2^3^2 = 2^9`):
+//!
+//! ```text
+//! expr  := term (('+' | '-') term)*
+//! term  := unary (('*' | '/') unary)*
+//! unary := ('-' | '+') unary | power
+//! power := atom ('^' unary)?
+//! atom  := number | number 'i' | name | 'i' | 'sqrt' '(' expr ')' | '(' expr ')'
+//! ```
+//!
+//! Numbers are exact decimals (`0.08`, `1.5e-3`, any number of digits). A value is
+//! $a + b\sqrt d$ with $a, b \in \mathbb{Q}$ and at most one square-free radicand `d`
+//! per expression: `i` is $\sqrt{-1}$, `sqrt(r)` of a rational `r` is reduced to
+//! $s\sqrt f$ with $r = s^2 f$ (`sqrt(8) = 2*sqrt(2)`, `sqrt(9) = 3`,
+//! `sqrt(1/2) = sqrt(2)/2`). `pi` is rejected (transcendental); `i`, `sqrt`, `pi` are
+//! never parameter names.
+//!
+//! Every input gives a value or an [`ExprError`] in time bounded by the input length:
+//! exponents satisfy $|n| \le 10^4$ (also in literals such as `1e-3`), literals have at most
+//! 4000 characters, intermediate numbers stay below $2^{14}$ bits (about 4900 digits),
+//! nesting below 256 levels, radicands below $10^{18}$ (so the square-free split is exact).
+//!
+//! | entry point | computes |
+//! |---|---|
+//! | [`eval_expr`] | the exact value of one expression over given parameters |
+//! | [`is_parameter_name`] | whether a string may name a parameter |
+
+use super::{ExactScalar, Ground};
+use crate::field::{QuadraticField, Rational, fmt_rational, parse_rational};
+use num_bigint::BigInt;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::fmt;
+
+/// Largest accepted |exponent| in `x^n`.
+pub const MAX_EXPONENT: u32 = 10_000;
+/// Largest accepted size (bits of a numerator or denominator) of any intermediate value.
+/// num-bigint's gcd (binary, quadratic) makes one operation on numbers of this size cost
+/// tens of milliseconds at most; beyond it an input could stall for seconds.
+pub const MAX_BITS: u64 = 1 << 14;
+/// Longest accepted number literal (characters).
+pub const MAX_NUMBER_LEN: usize = 4_000;
+/// Largest accepted nesting depth of parentheses and unary operators.
+pub const MAX_DEPTH: usize = 256;
+
+/// Names that are never parameters.
+pub const RESERVED: [&str; 3] = ["i", "sqrt", "pi"];
+
+/// An invalid expression: what is wrong, with a 1-based character position where useful.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ExprError {
+    pub msg: String,
+}
+
+impl fmt::Display for ExprError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.msg)
+    }
+}
+
+impl std::error::Error for ExprError {}
+
+fn err<T>(msg: impl Into<String>) -> Result<T, ExprError> {
+    Err(ExprError { msg: msg.into() })
+}
+
+/// Is `s` usable as a parameter name: an identifier `[A-Za-z_][A-Za-z0-9_]*` that is not
+/// one of [`RESERVED`]?
+pub fn is_parameter_name(s: &str) -> bool {
+    let mut cs = s.chars();
+    matches!(cs.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
+        && cs.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && !RESERVED.contains(&s)
+}
+
+/// Exact value of `text` over `params`, whose values live in `ground`.
+///
+/// Returns the value and the field it needs: [`Ground::Rational`] when it is rational,
+/// else the quadratic field of its radicand (which may differ from `ground` when the text
+/// itself introduces `i` or a square root without using a non-rational parameter; checking
+/// that all values of a file share one field is the caller's business).
+///
+/// # Examples
+/// ```
+/// use exactlti::io::{ExactScalar, Ground, eval_expr};
+/// let p = vec![("m".to_string(), ExactScalar::from_i64(1500))];
+/// let (x, g) = eval_expr("1/m + 0.08", &p, &Ground::Rational).unwrap();
+/// assert_eq!(g.fmt_scalar(&x), "121/1500");
+/// let (x, g) = eval_expr("1 - sqrt(8)/4", &[], &Ground::Rational).unwrap();
+/// assert_eq!(g.fmt_scalar(&x), "1 - sqrt(2)/2");
+/// assert_eq!(g.to_string(), "QQ(sqrt(2))");
+/// ```
+///
+/// # Errors
+/// Syntax errors (with the 1-based character position), unknown parameters, `pi`,
+/// division by zero, `0` to a negative power, non-integer or too large exponents, two
+/// different radicands in one expression, and the size limits of the module docs.
+pub fn eval_expr(
+    text: &str,
+    params: &[(String, ExactScalar)],
+    ground: &Ground,
+) -> Result<(ExactScalar, Ground), ExprError> {
+    let k = match ground {
+        Ground::Rational => None,
+        Ground::Quadratic(k) => Some(k.clone()),
+    };
+    let lookup = |name: &str| {
+        params.iter().find(|(n, _)| n == name).map(|(_, x)| {
+            Value::new(
+                x.a.clone(),
+                x.b.clone(),
+                if x.b.is_zero() { None } else { k.clone() },
+            )
+        })
+    };
+    let v = eval_with(text, &lookup)?;
+    let g = match &v.k {
+        None => Ground::Rational,
+        Some(k) => Ground::Quadratic(k.clone()),
+    };
+    Ok((ExactScalar { a: v.a, b: v.b }, g))
+}
+
+/// A value $a + b\sqrt d$; `k` is `Some` exactly when `b != 0` (canonical).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Value {
+    pub a: Rational,
+    pub b: Rational,
+    pub k: Option<QuadraticField>,
+}
+
+/// `x + y`, skipping num-rational's gcd reduction when both are integers (its binary gcd
+/// is quadratic even for `gcd(x, 1)`).
+fn q_add(x: &Rational, y: &Rational) -> Rational {
+    if x.is_integer() && y.is_integer() {
+        Rational::from_integer(x.numer() + y.numer())
+    } else {
+        x + y
+    }
+}
+
+/// `x * y`, with the same integer shortcut as [`q_add`].
+fn q_mul(x: &Rational, y: &Rational) -> Rational {
+    if x.is_zero() || y.is_zero() {
+        Rational::zero()
+    } else if x.is_integer() && y.is_integer() {
+        Rational::from_integer(x.numer() * y.numer())
+    } else {
+        x * y
+    }
+}
+
+/// `x^n` for a rational `x`: numerator and denominator powered separately (already in
+/// lowest terms, no gcd needed). `x` must be non-zero when `n < 0`.
+fn q_pow(x: &Rational, n: u32, negative: bool) -> Rational {
+    let p = num_traits::pow(x.numer().clone(), n as usize);
+    let q = num_traits::pow(x.denom().clone(), n as usize);
+    if !negative {
+        Rational::new_raw(p, q)
+    } else if p.is_negative() {
+        Rational::new_raw(-q, -p)
+    } else {
+        Rational::new_raw(q, p)
+    }
+}
+
+fn bits(q: &Rational) -> u64 {
+    q.numer().bits().max(q.denom().bits())
+}
+
+impl Value {
+    pub(crate) fn new(a: Rational, b: Rational, k: Option<QuadraticField>) -> Self {
+        let k = if b.is_zero() { None } else { k };
+        Value { a, b, k }
+    }
+    pub(crate) fn rational(a: Rational) -> Self {
+        Value::new(a, Rational::zero(), None)
+    }
+    fn is_zero(&self) -> bool {
+        self.a.is_zero() && self.b.is_zero()
+    }
+    fn size(&self) -> u64 {
+        bits(&self.a).max(bits(&self.b))
+    }
+    fn checked(self) -> Result<Value, ExprError> {
+        if self.size() > MAX_BITS {
+            return err(format!("number too large (more than {MAX_BITS} bits)"));
+        }
+        Ok(self)
+    }
+    /// The common field of two values, or an error when they have different radicands.
+    fn join(&self, o: &Value) -> Result<Option<QuadraticField>, ExprError> {
+        match (&self.k, &o.k) {
+            (Some(x), Some(y)) if x != y => err(format!(
+                "values of {x} and {y} cannot be mixed: all values must lie in one quadratic field"
+            )),
+            (Some(x), _) | (None, Some(x)) => Ok(Some(x.clone())),
+            (None, None) => Ok(None),
+        }
+    }
+    fn add(&self, o: &Value) -> Result<Value, ExprError> {
+        let k = self.join(o)?;
+        Value::new(q_add(&self.a, &o.a), q_add(&self.b, &o.b), k).checked()
+    }
+    fn neg(&self) -> Value {
+        Value::new(-&self.a, -&self.b, self.k.clone())
+    }
+    fn mul(&self, o: &Value) -> Result<Value, ExprError> {
+        let k = self.join(o)?;
+        let bb = if self.b.is_zero() || o.b.is_zero() {
+            Rational::zero()
+        } else {
+            let d = Rational::from_integer(k.as_ref().map_or_else(BigInt::zero, |k| k.d().clone()));
+            q_mul(&d, &q_mul(&self.b, &o.b))
+        };
+        let a = q_add(&q_mul(&self.a, &o.a), &bb);
+        let b = q_add(&q_mul(&self.a, &o.b), &q_mul(&self.b, &o.a));
+        Value::new(a, b, k).checked()
+    }
+    fn inv(&self) -> Result<Value, ExprError> {
+        if self.is_zero() {
+            return err("division by zero");
+        }
+        // (a + b r)^-1 = (a - b r) / (a^2 - d b^2); the norm is non-zero since d is no square
+        let d =
+            Rational::from_integer(self.k.as_ref().map_or_else(BigInt::zero, |k| k.d().clone()));
+        let n = &self.a * &self.a - d * &self.b * &self.b;
+        Value::new(&self.a / &n, -&self.b / &n, self.k.clone()).checked()
+    }
+    fn pow(&self, e: &Value) -> Result<Value, ExprError> {
+        if e.k.is_some() || !e.a.is_integer() {
+            let shown = if e.k.is_some() {
+                "a non-rational value".to_string()
+            } else {
+                fmt_rational(&e.a)
+            };
+            return err(format!("exponent must be an integer, found {shown}"));
+        }
+        let n = match e.a.numer().abs().to_u32() {
+            Some(n) if n <= MAX_EXPONENT => n,
+            _ => {
+                return err(format!(
+                    "exponent {} is too large (at most {MAX_EXPONENT} in absolute value)",
+                    e.a.numer()
+                ));
+            }
+        };
+        if self.is_zero() && e.a.is_negative() {
+            return err("division by zero: 0 raised to a negative power");
+        }
+        if self.size().saturating_mul(u64::from(n)) > MAX_BITS {
+            return err(format!("power too large (more than {MAX_BITS} bits)"));
+        }
+        if self.k.is_none() {
+            return Value::rational(q_pow(&self.a, n, e.a.is_negative())).checked();
+        }
+        let mut result = Value::rational(Rational::one());
+        let mut base = self.clone();
+        let mut m = n;
+        while m > 0 {
+            if m & 1 == 1 {
+                result = result.mul(&base)?;
+            }
+            m >>= 1;
+            if m > 0 {
+                base = base.mul(&base)?;
+            }
+        }
+        if e.a.is_negative() {
+            result.inv()
+        } else {
+            Ok(result)
+        }
+    }
+    fn sqrt(&self) -> Result<Value, ExprError> {
+        if self.k.is_some() {
+            return err("sqrt of a non-rational value is not supported; use sqrt of a rational");
+        }
+        // squarefree_split is exact below 10^18 (trial division to 10^6)
+        let nm = self.a.numer() * self.a.denom();
+        if nm.abs() >= BigInt::from(10u64.pow(18)) {
+            return err("sqrt argument too large (numerator*denominator must stay below 10^18)");
+        }
+        let (k, a, b) = QuadraticField::sqrt_of_rational(&self.a);
+        Ok(Value::new(a, b, k))
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Tok {
+    Num(String),
+    Name(String),
+    Op(char),
+}
+
+/// A token with its 0-based character span `[start, end)`.
+struct Token {
+    tok: Tok,
+    start: usize,
+    end: usize,
+}
+
+fn lex(text: &str) -> Result<Vec<Token>, ExprError> {
+    let cs: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < cs.len() {
+        let c = cs[i];
+        let start = i;
+        if c.is_whitespace() {
+            i += 1;
+            continue;
+        }
+        let tok = if c.is_ascii_digit() || c == '.' {
+            while i < cs.len() && (cs[i].is_ascii_digit() || cs[i] == '.') {
+                i += 1;
+            }
+            // exponent only when digits follow: `2e` is 2 followed by the name e
+            if i < cs.len() && (cs[i] == 'e' || cs[i] == 'E') {
+                let mut j = i + 1;
+                if j < cs.len() && (cs[j] == '+' || cs[j] == '-') {
+                    j += 1;
+                }
+                if j < cs.len() && cs[j].is_ascii_digit() {
+                    i = j;
+                    while i < cs.len() && cs[i].is_ascii_digit() {
+                        i += 1;
+                    }
+                }
+            }
+            Tok::Num(cs[start..i].iter().collect())
+        } else if c.is_ascii_alphabetic() || c == '_' {
+            while i < cs.len() && (cs[i].is_ascii_alphanumeric() || cs[i] == '_') {
+                i += 1;
+            }
+            Tok::Name(cs[start..i].iter().collect())
+        } else if "+-*/^()".contains(c) {
+            i += 1;
+            Tok::Op(c)
+        } else {
+            return err(format!(
+                "unexpected character '{c}' at position {} in '{text}'",
+                start + 1
+            ));
+        };
+        out.push(Token { tok, start, end: i });
+    }
+    Ok(out)
+}
+
+/// Parameter names `text` refers to (names not followed by `(`, reserved names excluded);
+/// empty when `text` does not even lex (evaluation then reports the error).
+pub(crate) fn referenced_names(text: &str) -> Vec<String> {
+    let Ok(toks) = lex(text) else {
+        return Vec::new();
+    };
+    let mut names = Vec::new();
+    for (t, next) in toks.iter().zip(toks.iter().skip(1).map(Some).chain([None])) {
+        if let Tok::Name(n) = &t.tok {
+            let call = matches!(
+                next,
+                Some(Token {
+                    tok: Tok::Op('('),
+                    ..
+                })
+            );
+            if !call && !RESERVED.contains(&n.as_str()) && !names.contains(n) {
+                names.push(n.clone());
+            }
+        }
+    }
+    names
+}
+
+/// Evaluates `text`; `lookup` gives the value of a parameter name (`None`: unknown).
+pub(crate) fn eval_with(
+    text: &str,
+    lookup: &dyn Fn(&str) -> Option<Value>,
+) -> Result<Value, ExprError> {
+    let toks = lex(text)?;
+    if toks.is_empty() {
+        return err("empty expression");
+    }
+    let mut p = Parser {
+        text,
+        toks,
+        pos: 0,
+        depth: 0,
+        lookup,
+    };
+    let v = p.expr()?;
+    if p.pos < p.toks.len() {
+        return p.unexpected();
+    }
+    Ok(v)
+}
+
+struct Parser<'a> {
+    text: &'a str,
+    toks: Vec<Token>,
+    pos: usize,
+    depth: usize,
+    lookup: &'a dyn Fn(&str) -> Option<Value>,
+}
+
+impl Parser<'_> {
+    fn peek(&self) -> Option<&Tok> {
+        self.toks.get(self.pos).map(|t| &t.tok)
+    }
+    fn unexpected<T>(&self) -> Result<T, ExprError> {
+        match self.toks.get(self.pos) {
+            None => err(format!("unexpected end of expression '{}'", self.text)),
+            Some(t) => {
+                let shown = match &t.tok {
+                    Tok::Num(s) | Tok::Name(s) => s.clone(),
+                    Tok::Op(c) => c.to_string(),
+                };
+                err(format!(
+                    "unexpected '{shown}' at position {} in '{}'",
+                    t.start + 1,
+                    self.text
+                ))
+            }
+        }
+    }
+    fn enter(&mut self) -> Result<(), ExprError> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return err(format!(
+                "expression nested too deeply (more than {MAX_DEPTH} levels)"
+            ));
+        }
+        Ok(())
+    }
+    fn expr(&mut self) -> Result<Value, ExprError> {
+        self.enter()?;
+        let mut v = self.term()?;
+        while let Some(Tok::Op(c @ ('+' | '-'))) = self.peek() {
+            let c = *c;
+            self.pos += 1;
+            let w = self.term()?;
+            v = if c == '+' {
+                v.add(&w)?
+            } else {
+                v.add(&w.neg())?
+            };
+        }
+        self.depth -= 1;
+        Ok(v)
+    }
+    fn term(&mut self) -> Result<Value, ExprError> {
+        let mut v = self.unary()?;
+        while let Some(Tok::Op(c @ ('*' | '/'))) = self.peek() {
+            let c = *c;
+            self.pos += 1;
+            let w = self.unary()?;
+            v = if c == '*' {
+                v.mul(&w)?
+            } else {
+                v.mul(&w.inv()?)?
+            };
+        }
+        Ok(v)
+    }
+    fn unary(&mut self) -> Result<Value, ExprError> {
+        match self.peek() {
+            Some(Tok::Op(c @ ('+' | '-'))) => {
+                let neg = *c == '-';
+                self.pos += 1;
+                self.enter()?;
+                let v = self.unary()?;
+                self.depth -= 1;
+                Ok(if neg { v.neg() } else { v })
+            }
+            _ => self.power(),
+        }
+    }
+    fn power(&mut self) -> Result<Value, ExprError> {
+        let base = self.atom()?;
+        if let Some(Tok::Op('^')) = self.peek() {
+            self.pos += 1;
+            self.enter()?;
+            let e = self.unary()?;
+            self.depth -= 1;
+            return base.pow(&e);
+        }
+        Ok(base)
+    }
+    fn expect_close(&mut self) -> Result<(), ExprError> {
+        match self.peek() {
+            Some(Tok::Op(')')) => {
+                self.pos += 1;
+                Ok(())
+            }
+            None => err(format!("missing ')' at the end of '{}'", self.text)),
+            Some(_) => self.unexpected(),
+        }
+    }
+    fn atom(&mut self) -> Result<Value, ExprError> {
+        let Some(t) = self.toks.get(self.pos) else {
+            return self.unexpected();
+        };
+        let (tok, end) = (t.tok.clone(), t.end);
+        match tok {
+            Tok::Num(s) => {
+                self.pos += 1;
+                let q = parse_number(&s)?;
+                let v = Value::rational(q).checked()?;
+                // `2i`, `0.5i`: an imaginary literal; any other letters glued on are an error
+                if let Some(Token {
+                    tok: Tok::Name(n),
+                    start,
+                    ..
+                }) = self.toks.get(self.pos)
+                    && *start == end
+                {
+                    if n == "i" {
+                        self.pos += 1;
+                        return v.mul(&imaginary_unit());
+                    }
+                    return err(format!("'{s}{n}' is not a number"));
+                }
+                Ok(v)
+            }
+            Tok::Name(n) => {
+                self.pos += 1;
+                self.name(&n)
+            }
+            Tok::Op('(') => {
+                self.pos += 1;
+                let v = self.expr()?;
+                self.expect_close()?;
+                Ok(v)
+            }
+            Tok::Op(_) => self.unexpected(),
+        }
+    }
+    fn name(&mut self, n: &str) -> Result<Value, ExprError> {
+        let call = matches!(self.peek(), Some(Tok::Op('(')));
+        match n {
+            "pi" => err("pi is transcendental; give a rational approximation such as 355/113"),
+            "i" if !call => Ok(imaginary_unit()),
+            "sqrt" if call => {
+                self.pos += 1;
+                let v = self.expr()?;
+                self.expect_close()?;
+                v.sqrt()
+            }
+            "sqrt" => err("sqrt needs an argument in parentheses, e.g. sqrt(2)"),
+            _ if call => err(format!("unknown function '{n}' (only sqrt is available)")),
+            _ => (self.lookup)(n).ok_or_else(|| ExprError {
+                msg: format!("unknown parameter '{n}'"),
+            }),
+        }
+    }
+}
+
+/// A number literal, within the size limits (checked before any big-number work).
+pub(crate) fn parse_number(s: &str) -> Result<Rational, ExprError> {
+    if s.len() > MAX_NUMBER_LEN {
+        return err(format!("number with more than {MAX_NUMBER_LEN} characters"));
+    }
+    if let Some(p) = s.find(['e', 'E']) {
+        let e = s[p + 1..].trim_start_matches(['+', '-']);
+        if e.len() > 5 || e.parse::<u32>().is_ok_and(|e| e > MAX_EXPONENT) {
+            return err(format!(
+                "exponent of '{s}' is too large (at most {MAX_EXPONENT} in absolute value)"
+            ));
+        }
+    }
+    parse_rational(s).map_err(|m| ExprError { msg: m })
+}
+
+fn imaginary_unit() -> Value {
+    Value::new(
+        Rational::zero(),
+        Rational::one(),
+        Some(QuadraticField::gaussian()),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    fn ev(s: &str) -> Result<String, String> {
+        eval_expr(s, &[], &Ground::Rational)
+            .map(|(x, g)| g.fmt_scalar(&x))
+            .map_err(|e| e.msg)
+    }
+    #[test]
+    fn examples() {
+        assert_eq!(ev("1 + 2*3").unwrap(), "7");
+        assert_eq!(ev("-2^2").unwrap(), "-4");
+        assert_eq!(ev("2^3^2").unwrap(), "512");
+        assert_eq!(ev("2^-2").unwrap(), "1/4");
+        assert_eq!(ev("(1/2)^-3").unwrap(), "8");
+        assert_eq!(ev("0^0").unwrap(), "1");
+        assert_eq!(ev("sqrt(8)").unwrap(), "2*sqrt(2)");
+        assert_eq!(ev("sqrt(9)").unwrap(), "3");
+        assert_eq!(ev("sqrt(1/2)").unwrap(), "sqrt(2)/2");
+        assert_eq!(ev("sqrt(-4)").unwrap(), "2*i");
+        assert_eq!(ev("sqrt(2)*sqrt(2)").unwrap(), "2");
+        assert_eq!(ev("(1+i)^2").unwrap(), "2*i");
+        assert_eq!(ev("1/(1+i)").unwrap(), "1/2 - i/2");
+        assert_eq!(ev("3i").unwrap(), "3*i");
+        assert_eq!(ev("i^2").unwrap(), "-1");
+        assert_eq!(ev("1.5e-3").unwrap(), "3/2000");
+        assert_eq!(ev("2e").unwrap_err(), "'2e' is not a number");
+        assert_eq!(
+            ev("2 e").unwrap_err(),
+            "unexpected 'e' at position 3 in '2 e'"
+        );
+    }
+    #[test]
+    fn errors() {
+        assert_eq!(ev("1/0").unwrap_err(), "division by zero");
+        assert_eq!(ev("1/(2-2)").unwrap_err(), "division by zero");
+        assert!(ev("0^-1").unwrap_err().starts_with("division by zero"));
+        assert!(ev("2^10001").unwrap_err().contains("too large"));
+        assert!(ev("10^10000^10000").unwrap_err().contains("too large"));
+        assert!(ev("2^(1/2)").unwrap_err().contains("integer"));
+        assert!(ev("pi").unwrap_err().starts_with("pi is transcendental"));
+        assert!(ev("sqrt(2) + i").unwrap_err().contains("cannot be mixed"));
+        assert_eq!(ev("(1+2").unwrap_err(), "missing ')' at the end of '(1+2'");
+        assert_eq!(
+            ev("1+2)").unwrap_err(),
+            "unexpected ')' at position 4 in '1+2)'"
+        );
+        assert_eq!(ev("").unwrap_err(), "empty expression");
+        assert_eq!(ev("1.2.3").unwrap_err(), "'1.2.3' is not a number");
+        assert_eq!(ev("12abc").unwrap_err(), "'12abc' is not a number");
+        assert!(ev("cos(1)").unwrap_err().contains("unknown function"));
+        assert!(
+            ev(&"(".repeat(1000))
+                .unwrap_err()
+                .contains("nested too deeply")
+        );
+        assert!(
+            ev(&"-".repeat(1000))
+                .unwrap_err()
+                .contains("nested too deeply")
+        );
+        assert!(ev("sqrt(10^40+1)").unwrap_err().contains("too large"));
+        assert!(ev("9999^9999").unwrap_err().contains("too large"));
+        assert!(ev("1e-10001").unwrap_err().contains("too large"));
+        assert!(
+            ev(&"1".repeat(6000))
+                .unwrap_err()
+                .contains("more than 4000")
+        );
+        assert_eq!(ev("(-2/3)^-3").unwrap(), "-27/8");
+        assert_eq!(ev("(-2/3)^3").unwrap(), "-8/27");
+    }
+    #[test]
+    fn names() {
+        assert!(is_parameter_name("cf"));
+        assert!(is_parameter_name("I_zz2"));
+        assert!(!is_parameter_name("i"));
+        assert!(!is_parameter_name("pi"));
+        assert!(!is_parameter_name("2a"));
+        assert!(!is_parameter_name(""));
+        assert_eq!(
+            referenced_names("-(a*cf - b)/sqrt(a) + i"),
+            ["a", "cf", "b"]
+        );
+    }
+}

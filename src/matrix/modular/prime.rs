@@ -1,0 +1,253 @@
+//! Word-size prime fields $\mathbb{Z}/p$ with $2^{61} < p < 2^{62}$.
+//!
+//! Residues are `u64` in $[0, p)$. Products use a full `u128` product; the hot loops of the
+//! elimination kernels multiply a whole row by one constant $f$, for which Shoup's
+//! precomputed quotient $f' = \lfloor f 2^{64} / p \rfloor$ replaces the division by two
+//! multiplications ([`Prime::axpy`]).
+//!
+//! The primes come from [`primes`], a deterministic, cached sequence (largest first below
+//! $2^{62}$), each one certified by the Miller–Rabin test with a base set that is proven
+//! deterministic for all 64-bit integers.
+
+use std::sync::{Mutex, OnceLock};
+
+/// A prime modulus with its precomputed helpers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Prime {
+    /// The modulus, $2^{61} < p < 2^{62}$.
+    pub p: u64,
+}
+
+impl Prime {
+    /// `a + b mod p` for reduced `a`, `b`.
+    #[inline(always)]
+    pub fn add(&self, a: u64, b: u64) -> u64 {
+        let s = a + b;
+        s.min(s.wrapping_sub(self.p))
+    }
+
+    /// `a - b mod p` for reduced `a`, `b`.
+    #[inline(always)]
+    pub fn sub(&self, a: u64, b: u64) -> u64 {
+        let s = a + self.p - b;
+        s.min(s.wrapping_sub(self.p))
+    }
+
+    /// `-a mod p`.
+    #[inline(always)]
+    pub fn neg(&self, a: u64) -> u64 {
+        if a == 0 { 0 } else { self.p - a }
+    }
+
+    /// `a * b mod p` (any `a`, `b < 2^64`).
+    #[inline(always)]
+    pub fn mul(&self, a: u64, b: u64) -> u64 {
+        ((a as u128 * b as u128) % self.p as u128) as u64
+    }
+
+    /// Shoup's quotient $\lfloor f 2^{64} / p \rfloor$ for a reduced constant `f`.
+    #[inline(always)]
+    pub fn shoup(&self, f: u64) -> u64 {
+        (((f as u128) << 64) / self.p as u128) as u64
+    }
+
+    /// `f * x mod p` given `fs = shoup(f)`; any `x < 2^64`.
+    #[inline(always)]
+    pub fn mul_shoup(&self, f: u64, fs: u64, x: u64) -> u64 {
+        let q = ((fs as u128 * x as u128) >> 64) as u64;
+        let r = f.wrapping_mul(x).wrapping_sub(q.wrapping_mul(self.p));
+        r.min(r.wrapping_sub(self.p))
+    }
+
+    /// `y -= f * x` elementwise (mod p). The elimination kernel of every routine here.
+    #[inline]
+    pub fn axpy_neg(&self, y: &mut [u64], x: &[u64], f: u64) {
+        if f == 0 {
+            return;
+        }
+        let fs = self.shoup(f);
+        let p = self.p;
+        for (yj, &xj) in y.iter_mut().zip(x) {
+            let q = ((fs as u128 * xj as u128) >> 64) as u64;
+            let r = f.wrapping_mul(xj).wrapping_sub(q.wrapping_mul(p));
+            let r = r.min(r.wrapping_sub(p));
+            let v = *yj + p - r;
+            *yj = v.min(v.wrapping_sub(p));
+        }
+    }
+
+    /// `y += f * x` elementwise (mod p).
+    #[inline]
+    pub fn axpy(&self, y: &mut [u64], x: &[u64], f: u64) {
+        self.axpy_neg(y, x, self.neg(f));
+    }
+
+    /// `x *= f` elementwise (mod p).
+    #[inline]
+    pub fn scale(&self, x: &mut [u64], f: u64) {
+        let fs = self.shoup(f);
+        for xj in x.iter_mut() {
+            *xj = self.mul_shoup(f, fs, *xj);
+        }
+    }
+
+    /// `a^e mod p`.
+    pub fn pow(&self, mut a: u64, mut e: u64) -> u64 {
+        let mut r = 1 % self.p;
+        while e > 0 {
+            if e & 1 == 1 {
+                r = self.mul(r, a);
+            }
+            a = self.mul(a, a);
+            e >>= 1;
+        }
+        r
+    }
+
+    /// Inverse of `a` modulo `p`; `None` when `a ≡ 0`.
+    pub fn inv(&self, a: u64) -> Option<u64> {
+        let a = a % self.p;
+        if a == 0 {
+            return None;
+        }
+        // Extended Euclid on signed 128-bit values.
+        let (mut r0, mut r1) = (self.p as i128, a as i128);
+        let (mut t0, mut t1) = (0i128, 1i128);
+        while r1 != 0 {
+            let q = r0 / r1;
+            (r0, r1) = (r1, r0 - q * r1);
+            (t0, t1) = (t1, t0 - q * t1);
+        }
+        debug_assert_eq!(r0, 1);
+        Some(t0.rem_euclid(self.p as i128) as u64)
+    }
+
+    /// The residue of a signed machine integer.
+    #[inline]
+    pub fn reduce_i64(&self, x: i64) -> u64 {
+        let r = (x as i128).rem_euclid(self.p as i128);
+        r as u64
+    }
+
+    /// The residue of a big integer given by its sign and little-endian 64-bit limbs.
+    pub fn reduce_limbs(&self, negative: bool, limbs: &[u64]) -> u64 {
+        let mut r: u128 = 0;
+        for &l in limbs.iter().rev() {
+            r = ((r << 64) | l as u128) % self.p as u128;
+        }
+        let r = r as u64;
+        if negative { self.neg(r) } else { r }
+    }
+}
+
+/// Deterministic Miller–Rabin for 64-bit integers (bases of Jim Sinclair, proven for
+/// all $n < 2^{64}$).
+pub fn is_prime_u64(n: u64) -> bool {
+    if n < 2 {
+        return false;
+    }
+    for q in [2u64, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37] {
+        if n.is_multiple_of(q) {
+            return n == q;
+        }
+    }
+    let pr = Prime { p: n };
+    let (mut d, mut s) = (n - 1, 0);
+    while d % 2 == 0 {
+        d /= 2;
+        s += 1;
+    }
+    'bases: for a in [2u64, 325, 9375, 28178, 450775, 9780504, 1795265022] {
+        let a = a % n;
+        if a == 0 {
+            continue;
+        }
+        let mut x = pr.pow(a, d);
+        if x == 1 || x == n - 1 {
+            continue;
+        }
+        for _ in 1..s {
+            x = pr.mul(x, x);
+            if x == n - 1 {
+                continue 'bases;
+            }
+        }
+        return false;
+    }
+    true
+}
+
+static PRIMES: OnceLock<Mutex<Vec<u64>>> = OnceLock::new();
+
+/// The `i`-th prime below $2^{62}$ in decreasing order (0-based), cached process-wide.
+pub fn nth_prime(i: usize) -> Prime {
+    let cache = PRIMES.get_or_init(|| Mutex::new(Vec::new()));
+    let mut v = cache.lock().unwrap_or_else(|e| e.into_inner());
+    let mut c = v.last().copied().unwrap_or(1u64 << 62);
+    while v.len() <= i {
+        c -= if c % 2 == 0 { 1 } else { 2 };
+        if is_prime_u64(c) {
+            v.push(c);
+        }
+    }
+    Prime { p: v[i] }
+}
+
+/// An endless iterator over the primes of [`nth_prime`], starting at index `start`.
+pub fn primes(start: usize) -> impl Iterator<Item = Prime> {
+    (start..).map(nth_prime)
+}
+
+/// $\log_2 p$ lower bound used when counting how many primes a bound needs.
+pub const PRIME_BITS: f64 = 61.0;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn primes_are_prime_and_decreasing() {
+        let ps: Vec<u64> = primes(0).take(20).map(|p| p.p).collect();
+        for w in ps.windows(2) {
+            assert!(w[0] > w[1]);
+        }
+        for &p in &ps {
+            assert!(p > 1 << 61 && p < 1 << 62);
+            // a non-trivial Fermat check with a base outside the Miller-Rabin set
+            assert_eq!(Prime { p }.pow(3, p - 1), 1);
+        }
+        assert!(is_prime_u64(2_305_843_009_213_693_951)); // 2^61 - 1
+        assert!(!is_prime_u64(3_215_031_751)); // strong pseudoprime to bases 2, 3, 5, 7
+        assert!(!is_prime_u64(1 << 62));
+    }
+
+    #[test]
+    fn arithmetic_matches_u128() {
+        let pr = nth_prime(0);
+        let p = pr.p;
+        let mut x = 0x1234_5678_9abc_def1u64 % p;
+        for _ in 0..1000 {
+            x = (x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407))
+                % p;
+            let y = x.rotate_left(17) % p;
+            let want = ((x as u128 * y as u128) % p as u128) as u64;
+            assert_eq!(pr.mul_shoup(x, pr.shoup(x), y), want);
+            assert_eq!(pr.add(x, y), ((x as u128 + y as u128) % p as u128) as u64);
+            assert_eq!(pr.add(pr.sub(x, y), y), x);
+            if x != 0 {
+                assert_eq!(pr.mul(x, pr.inv(x).unwrap()), 1);
+            }
+            let mut row = [y, x, 0];
+            pr.axpy_neg(&mut row, &[x, y, 5], y);
+            assert_eq!(row[0], pr.sub(y, pr.mul(x, y)));
+            assert_eq!(row[2], pr.neg(pr.mul(5, y)));
+        }
+        assert_eq!(pr.reduce_i64(-1), p - 1);
+        assert_eq!(
+            pr.reduce_limbs(false, &[0, 1]),
+            ((1u128 << 64) % p as u128) as u64
+        );
+    }
+}

@@ -1,0 +1,71 @@
+//! Controllability and observability matrices (paper eq. 7-8), the block Hankel matrix
+//! (eq. 9) and the McMillan degree.
+
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::system::StateSpace;
+
+/// $\mathcal C = [B, AB, \dots, A^{n-1}B]$.
+pub fn controllability_matrix<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Matrix<K> {
+    let n = a.nrows();
+    let mut out = Matrix::zeros(a.field().clone(), n, n * b.ncols());
+    let mut ab = b.clone();
+    for k in 0..n {
+        out.set_block(0, k * b.ncols(), &ab);
+        if k + 1 < n {
+            ab = a * &ab;
+        }
+    }
+    out
+}
+
+/// $\mathcal O = [C; CA; \dots; CA^{n-1}]$.
+pub fn observability_matrix<K: Field>(a: &Matrix<K>, c: &Matrix<K>) -> Matrix<K> {
+    controllability_matrix(&a.transpose(), &c.transpose()).transpose()
+}
+
+/// Is $(A, B)$ controllable ($\mathrm{rank}\,\mathcal C = n$)?
+pub fn is_controllable<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> bool {
+    controllability_matrix(a, b).rank() == a.nrows()
+}
+
+/// Is $(A, C)$ observable ($\mathrm{rank}\,\mathcal O = n$)?
+pub fn is_observable<K: Field>(a: &Matrix<K>, c: &Matrix<K>) -> bool {
+    observability_matrix(a, c).rank() == a.nrows()
+}
+
+/// Block Hankel matrix with `rows` x `cols` blocks: block $(i, j)$ is $C A^{i+j+shift} B$.
+pub fn hankel_matrix<K: Field>(
+    sys: &StateSpace<K>,
+    rows: usize,
+    cols: usize,
+    shift: usize,
+) -> Matrix<K> {
+    let (p, m) = (sys.noutputs(), sys.ninputs());
+    let mk = sys.markov(rows + cols + shift);
+    let mut h = Matrix::zeros(sys.field().clone(), rows * p, cols * m);
+    for i in 0..rows {
+        for j in 0..cols {
+            h.set_block(i * p, j * m, &mk[i + j + shift]);
+        }
+    }
+    h
+}
+
+/// McMillan degree: the rank of the $n \times n$-block Hankel matrix $\mathcal O \mathcal C$.
+pub fn mcmillan_degree<K: Field>(sys: &StateSpace<K>) -> usize {
+    let n = sys.nstates();
+    if n == 0 || sys.ninputs() == 0 || sys.noutputs() == 0 {
+        return 0;
+    }
+    hankel_matrix(sys, n, n, 0).rank()
+}
+
+/// An invertible `T` with $T X = [0; Y]$, `Y` of full row rank: the left null space of `X`
+/// on top, completed by unit rows. Returns `(T, rank X)`.
+pub fn row_compression<K: Field>(x: &Matrix<K>) -> (Matrix<K>, usize) {
+    let l = x.left_nullspace();
+    let comp = l.transpose().complete_basis().transpose();
+    let r = comp.nrows();
+    (l.vstack(&comp).expect("same width"), r)
+}

@@ -1,0 +1,73 @@
+//! Ho–Kalman realization: the exact analogue of ERA (paper eq. 10-15), with a rank
+//! factorization over the field in place of the SVD.
+//!
+//! With $H_0$ the block Hankel matrix of $C A^{i+j} B$ and $H_1$ the shifted one
+//! ($C A^{i+j+1} B$), both with $n$ block rows and columns, a rank factorization
+//! $H_0 = L R$ ($L$ = pivot columns of $H_0$, $R$ = non-zero rows of its RREF) gives
+//! $A = L^{+} H_1 R^{+}$, $B$ = first $m$ columns of $R$, $C$ = first $p$ rows of $L$, where
+//! $L^{+}$, $R^{+}$ are exact one-sided inverses ($L^+ L = I$, $R R^+ = I$) built from
+//! invertible square submatrices. Since $H_0 = \mathcal O \mathcal C$ with full-rank
+//! factors, $L = \mathcal O M$, $R = M^{-1}\mathcal C$ and $A = M^{-1} A_{min} M$.
+
+use super::controllability::hankel_matrix;
+use super::minimal::{MinimalRealization, MinrealMethod};
+use crate::error::Result;
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::system::StateSpace;
+
+/// A left inverse of a full-column-rank `l`: rows of `l` at the pivots of `l^T` form an
+/// invertible square block; its inverse placed at those columns.
+fn left_inverse<K: Field>(l: &Matrix<K>) -> Result<Matrix<K>> {
+    let (_, rows) = l.transpose().rref();
+    let sq = l.select_rows(&rows).inverse()?;
+    let mut out = Matrix::zeros(l.field().clone(), l.ncols(), l.nrows());
+    for (j, &r) in rows.iter().enumerate() {
+        for i in 0..l.ncols() {
+            out.set(i, r, sq.get(i, j).clone());
+        }
+    }
+    Ok(out)
+}
+
+/// Minimal realization from the Markov parameters by Ho–Kalman.
+///
+/// # Errors
+/// Only internal failures.
+pub fn minimal_ho_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealization<K>> {
+    let n = sys.nstates();
+    let (p, m) = (sys.noutputs(), sys.ninputs());
+    let fld = sys.field().clone();
+    if n == 0 || p == 0 || m == 0 {
+        let min = StateSpace::new(
+            Matrix::zeros(fld.clone(), 0, 0),
+            Matrix::zeros(fld.clone(), 0, m),
+            Matrix::zeros(fld, p, 0),
+            sys.d.clone(),
+        )?;
+        return Ok(MinimalRealization::new(
+            sys,
+            min,
+            MinrealMethod::HoKalman,
+            None,
+        ));
+    }
+    let h0 = hankel_matrix(sys, n, n, 0);
+    let h1 = hankel_matrix(sys, n, n, 1);
+    let (rref, piv) = h0.rref();
+    let r = piv.len();
+    let l = h0.select_cols(&piv);
+    let rr = rref.submatrix(0, r, 0, h0.ncols());
+    let linv = left_inverse(&l)?;
+    let rinv = left_inverse(&rr.transpose())?.transpose();
+    let a = &(&linv * &h1) * &rinv;
+    let b = rr.submatrix(0, r, 0, m);
+    let c = l.submatrix(0, p, 0, r);
+    let min = StateSpace::new(a, b, c, sys.d.clone())?;
+    Ok(MinimalRealization::new(
+        sys,
+        min,
+        MinrealMethod::HoKalman,
+        None,
+    ))
+}

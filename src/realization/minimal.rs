@@ -1,0 +1,135 @@
+//! Minimal realizations: the result type, its exact verification and the dispatcher.
+
+use super::controllability::{is_controllable, is_observable};
+use super::kalman::kalman_decomposition;
+use crate::error::{Error, Result};
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::report::Report;
+use crate::system::StateSpace;
+
+/// Which algorithm computes the minimal realization.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum MinrealMethod {
+    /// The controllable-observable block of the Kalman decomposition.
+    #[default]
+    Kalman,
+    /// Rosenbrock's staircase of row operations, then its dual (paper sec. 2.3).
+    Rosenbrock,
+    /// Rank factorization of the block Hankel matrix (exact ERA).
+    HoKalman,
+    /// Jordan-form method of paper sec. 3.3.
+    Jordan,
+}
+
+impl MinrealMethod {
+    pub fn name(&self) -> &'static str {
+        match self {
+            MinrealMethod::Kalman => "kalman",
+            MinrealMethod::Rosenbrock => "rosenbrock",
+            MinrealMethod::HoKalman => "ho-kalman",
+            MinrealMethod::Jordan => "jordan",
+        }
+    }
+}
+
+/// A minimal realization with its exact check.
+#[derive(Clone, Debug)]
+pub struct MinimalRealization<K: Field> {
+    pub system: StateSpace<K>,
+    /// Order of the minimal realization (= McMillan degree when verified).
+    pub order: usize,
+    /// Order of the original system.
+    pub original_order: usize,
+    pub method: MinrealMethod,
+    /// A transform `x = T z` of the original system whose leading coordinates carry the
+    /// minimal part, where the method provides one.
+    pub t: Option<Matrix<K>>,
+    /// Controllable, observable, and Markov parameters $C A^k B$ ($k < 2n$) and $D$ equal
+    /// to the original's, all checked exactly.
+    pub verified: bool,
+}
+
+impl<K: Field> MinimalRealization<K> {
+    /// Wraps a candidate and verifies it against the original.
+    pub fn new(
+        original: &StateSpace<K>,
+        system: StateSpace<K>,
+        method: MinrealMethod,
+        t: Option<Matrix<K>>,
+    ) -> Self {
+        let verified = verify_minimal(original, &system);
+        MinimalRealization {
+            order: system.nstates(),
+            original_order: original.nstates(),
+            system,
+            method,
+            t,
+            verified,
+        }
+    }
+    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`).
+    pub fn report(&self) -> Report {
+        let mut r = Report::titled(format!("minimal realization ({})", self.method.name()))
+            .str("method", self.method.name())
+            .int("original_order", self.original_order)
+            .int("order", self.order)
+            .int("mcmillan_degree", self.order)
+            .matrix("A", &self.system.a)
+            .matrix("B", &self.system.b)
+            .matrix("C", &self.system.c)
+            .matrix("D", &self.system.d);
+        if let Some(t) = &self.t {
+            r = r.matrix("T", t);
+        }
+        r.bool("verified", self.verified)
+    }
+}
+
+/// Exact check: `min` is controllable and observable and has the Markov parameters of `orig`
+/// up to index $2n$ ($n$ = order of `orig`), and the same `D`.
+pub fn verify_minimal<K: Field>(orig: &StateSpace<K>, min: &StateSpace<K>) -> bool {
+    let k = 2 * orig.nstates().max(min.nstates());
+    is_controllable(&min.a, &min.b) && is_observable(&min.a, &min.c) && orig.same_markov(min, k)
+}
+
+/// Minimal realization by the Kalman decomposition.
+///
+/// # Errors
+/// Only internal failures.
+pub fn minimal_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealization<K>> {
+    let kd = kalman_decomposition(sys)?;
+    let min = kd.minimal_part();
+    // reorder T so the minimal part comes first
+    let [d0, d1, d2, d3] = kd.dims;
+    let mut order: Vec<usize> = (d0..d0 + d1).collect();
+    order.extend(0..d0);
+    order.extend(d0 + d1..d0 + d1 + d2 + d3);
+    let t = kd.t.select_cols(&order);
+    Ok(MinimalRealization::new(
+        sys,
+        min,
+        MinrealMethod::Kalman,
+        Some(t),
+    ))
+}
+
+/// Minimal realization by the chosen method.
+///
+/// # Errors
+/// `Unsupported` for a method not available for this field; internal failures.
+pub fn minimal<K: Field>(
+    sys: &StateSpace<K>,
+    method: MinrealMethod,
+) -> Result<MinimalRealization<K>> {
+    match method {
+        MinrealMethod::Kalman => minimal_kalman(sys),
+        MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock(sys),
+        MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman(sys),
+        MinrealMethod::Jordan => Err(Error::Unsupported(
+            "the Jordan-form method works on rational systems: use realization::minimal_jordan"
+                .into(),
+        )),
+    }
+}

@@ -1,0 +1,38 @@
+//! Realization theory, exact: controllability, observability, Hankel rank (McMillan degree),
+//! Kalman decomposition, minimal realizations by several methods, descriptor to standard
+//! form, Gramians.
+//!
+//! A realization $(A, B, C, D)$ of a proper transfer matrix $G(s)$ satisfies
+//! $G(s) = C(sI - A)^{-1}B + D$; it is minimal iff $(A, B)$ is controllable and $(A, C)$
+//! observable, and then its order is the McMillan degree $= \mathrm{rank}\, H$ of the block
+//! Hankel matrix of the Markov parameters. Minimal realizations are unique up to
+//! $A \mapsto T^{-1}AT$. No tolerance appears anywhere here: the order is exact.
+//!
+//! | entry point | algorithm |
+//! |---|---|
+//! | [`controllability_matrix`], [`observability_matrix`], [`hankel_matrix`], [`mcmillan_degree`] | Krylov matrices, rank over the field |
+//! | [`kalman_decomposition`] | controllable subspace $\mathcal R$, unobservable $\mathcal N$, four parts |
+//! | [`minimal`] (`MinrealMethod::Kalman`, default) | the $co$ block of the Kalman decomposition |
+//! | `MinrealMethod::Rosenbrock` | staircase of exact row compressions of $[A\ B; C\ 0]$, then of the dual (paper sec. 2.3) |
+//! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
+//! | [`descriptor_to_standard`] | Weierstrass-type split of $(E, A)$ without inverting $E$ |
+//! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
+
+mod controllability;
+mod descriptor;
+mod gramian;
+mod ho_kalman;
+mod kalman;
+mod minimal;
+mod rosenbrock;
+
+pub use controllability::{
+    controllability_matrix, hankel_matrix, is_controllable, is_observable, mcmillan_degree,
+    observability_matrix, row_compression,
+};
+pub use descriptor::{StandardForm, descriptor_to_standard};
+pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
+pub use ho_kalman::minimal_ho_kalman;
+pub use kalman::{KalmanDecomposition, kalman_decomposition};
+pub use minimal::{MinimalRealization, MinrealMethod, minimal, minimal_kalman};
+pub use rosenbrock::minimal_rosenbrock;

@@ -1,0 +1,402 @@
+//! Mechanical normal form (Mayet & Kammermeier): a first-order system back to second order.
+//!
+//! Given $\dot x = A x + B u$, $y = C x + D u$ ($n$ states, $p$ inputs), find $z = T x$ with
+//! $$\tilde A = T A T^{-1} = \begin{bmatrix} 0 & I \\ \tilde A_{21} & \tilde A_{22}\end{bmatrix},
+//! \quad \tilde B = T B = \begin{bmatrix} 0 \\ I_p \end{bmatrix},
+//! \quad \tilde C = C T^{-1}, \quad \tilde D = D,$$
+//! so that with $z = [q; \dot q]$, $q \in \mathbb{Q}^{n/2}$:
+//! $$M \ddot q + D_q \dot q + K q = W u, \quad y = \tilde C \begin{bmatrix} q \\ \dot q\end{bmatrix} + \tilde D u,$$
+//! with mass $M = I$, damping $D_q = -\tilde A_{22}$, stiffness $K = -\tilde A_{21}$ and input
+//! matrix $W = [0; I_p]$ ($n/2 \times p$). `T` here is the paper's product $W T$ of sec. 2.2
+//! (the unifying transformation is built into the linear system of sec. 3, eq. 15).
+//!
+//! For a descriptor system $F \dot x = A x + B u$ with invertible $F$ (sec. 3.1, eq. 16) the
+//! same $\tilde A, \tilde B$ arise from a row transformation $T$ with
+//! $[I\ 0] T A = [0\ I] T F$, $T B = [0; I_p]$ and the state map $z = (T F) x$:
+//! $\tilde A = T A (TF)^{-1}$, $\tilde C = C (TF)^{-1}$. $F$ itself is never inverted.
+//!
+//! Existence is decided exactly before any search ([`existence`]); the paper's Theorem 2.1
+//! conditions are reported, and its last one is replaced by a similarity-invariant condition
+//! on the uncontrollable part (see [`existence`] for why).
+//!
+//! | entry point | input | result |
+//! |---|---|---|
+//! | [`mechanical_normal_form`] | $(A, B, C, D)$ over $\mathbb{Q}$ | [`MnfResult`] |
+//! | [`mechanical_normal_form_descriptor`] | $(F, A, B, C, D)$, $F$ invertible | [`MnfResult`] |
+//! | [`mechanical_normal_form_in`] | the same over any exact field `K` | [`MechanicalNormalForm<K>`] |
+//! | [`existence::decide_existence`] | $(A, B)$ | the conditions and the verdict |
+//! | [`transform::transformation_family`], [`transform::find_invertible`] | eq. 15/16 | $T$ |
+//! | [`transform::transformation_from_x`] | $X$ | $T = [X^T; X^T A]$ (eq. 7) |
+//! | [`unify::unifying_transformation`] | $\hat T$ | $W$ of sec. 2.2 |
+
+pub mod descriptor;
+pub mod existence;
+pub mod transform;
+pub mod unify;
+
+pub use descriptor::mechanical_normal_form_descriptor;
+pub use existence::{Condition, Existence, decide_existence};
+
+use crate::error::{Error, Result};
+use crate::field::{Field, Q};
+use crate::matrix::Matrix;
+use crate::report::{Report, Value};
+
+/// Default candidate budget of the transformation search (see [`transform::find_invertible`]).
+pub const DEFAULT_MAX_CANDIDATES: u64 = 1_000_000;
+
+/// The second-order model and the transformation that produced it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MechanicalForm<K: Field> {
+    /// $M = I_{n/2}$.
+    pub mass: Matrix<K>,
+    /// $D_q = -\tilde A_{22}$.
+    pub damping: Matrix<K>,
+    /// $K = -\tilde A_{21}$.
+    pub stiffness: Matrix<K>,
+    /// $W = [0; I_p]$, `n/2 x p`.
+    pub input: Matrix<K>,
+    /// $\tilde C$, `q x n`, acting on $[q; \dot q]$.
+    pub output: Matrix<K>,
+    /// $\tilde D = D$.
+    pub feedthrough: Matrix<K>,
+    /// The state map: `z = t x` (for a descriptor system `t` $= T F$).
+    pub t: Matrix<K>,
+    /// Descriptor systems only: the row transformation $T$ of eq. 16 ($\tilde A\,t = T A$).
+    pub left: Option<Matrix<K>>,
+    /// $\tilde A = \begin{bmatrix} 0 & I \\ -K & -D_q \end{bmatrix}$.
+    pub a_tilde: Matrix<K>,
+    /// $\tilde B = [0; W]$.
+    pub b_tilde: Matrix<K>,
+    /// The integer coefficients $\alpha$ of $T$ in the eq. 15/16 family and the number of
+    /// candidates tested.
+    pub alpha: Vec<i64>,
+    pub candidates: u64,
+}
+
+/// The original system (kept for [`MechanicalNormalForm::verify`]).
+#[derive(Clone, Debug, PartialEq)]
+struct Original<K: Field> {
+    f: Option<Matrix<K>>,
+    a: Matrix<K>,
+    b: Matrix<K>,
+    c: Matrix<K>,
+    d: Matrix<K>,
+}
+
+/// Result of [`mechanical_normal_form`]: existence with the reason, and the form.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MechanicalNormalForm<K: Field> {
+    pub exists: bool,
+    /// Which condition fails and what it means, when `exists` is false.
+    pub reason: Option<String>,
+    /// Every condition that was checked (Theorem 2.1's and the decisive replacement).
+    pub conditions: Vec<Condition>,
+    /// The second-order model, when `exists`.
+    pub form: Option<MechanicalForm<K>>,
+    /// [`MechanicalNormalForm::verify`] evaluated at construction.
+    pub verified: bool,
+    original: Original<K>,
+}
+
+/// The rational mechanical normal form.
+pub type MnfResult = MechanicalNormalForm<Q>;
+
+/// Mechanical normal form of $\dot x = A x + B u$, $y = C x + D u$ over $\mathbb{Q}$.
+///
+/// A system that has no normal form gives `Ok` with `exists = false` and the reason.
+///
+/// # Errors
+/// `NotSquare`/`Shape` when the matrices do not form a system; `Limit` when the search budget
+/// [`DEFAULT_MAX_CANDIDATES`] is exhausted (not expected: see [`transform`]);
+/// `Verification` when the exact check of the result fails (an internal error).
+///
+/// # Examples
+/// ```
+/// use exactlti::qmat;
+/// use exactlti::structure::mechanical::mechanical_normal_form;
+/// // one mass, spring 4, damper 1: x = [q; q'] scrambled by x = S x'
+/// let a = qmat![[-2, -6], [1, 1]]; // S^-1 [[0, 1], [-4, -1]] S with S = [[0, 1], [1, 1]]
+/// let r = mechanical_normal_form(&a, &qmat![[1], [0]], &qmat![[1, 0]], &qmat![[0]]).unwrap();
+/// assert!(r.exists && r.verified);
+/// let f = r.form.unwrap();
+/// assert_eq!(f.stiffness.to_string(), "[[4]]");
+/// assert_eq!(f.damping.to_string(), "[[1]]");
+/// ```
+pub fn mechanical_normal_form(
+    a: &Matrix<Q>,
+    b: &Matrix<Q>,
+    c: &Matrix<Q>,
+    d: &Matrix<Q>,
+) -> Result<MnfResult> {
+    mechanical_normal_form_in(None, a, b, c, d, DEFAULT_MAX_CANDIDATES)
+}
+
+/// Shape checks shared by both entry points.
+pub(crate) fn check_system<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+) -> Result<()> {
+    if !a.is_square() {
+        return Err(Error::NotSquare {
+            op: "mechanical_normal_form",
+            nrows: a.nrows(),
+            ncols: a.ncols(),
+        });
+    }
+    let n = a.nrows();
+    let shape = |m: &Matrix<K>, expected: (usize, usize)| {
+        if m.shape() != expected {
+            return Err(Error::Shape {
+                op: "mechanical_normal_form",
+                expected,
+                found: m.shape(),
+            });
+        }
+        Ok(())
+    };
+    shape(b, (n, b.ncols()))?;
+    shape(c, (c.nrows(), n))?;
+    shape(d, (c.nrows(), b.ncols()))
+}
+
+/// Mechanical normal form over any exact field; `f = Some(F)` for a descriptor system.
+///
+/// # Errors
+/// As [`mechanical_normal_form`]; `Shape` when `f` is not `n x n`, `Invalid` when `f` is
+/// singular.
+pub fn mechanical_normal_form_in<K: Field>(
+    f: Option<&Matrix<K>>,
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+    max_candidates: u64,
+) -> Result<MechanicalNormalForm<K>> {
+    check_system(a, b, c, d)?;
+    let existence = match f {
+        None => decide_existence(a, b),
+        Some(f) => descriptor::decide_existence_descriptor(f, a, b)?,
+    };
+    let original = Original {
+        f: f.cloned(),
+        a: a.clone(),
+        b: b.clone(),
+        c: c.clone(),
+        d: d.clone(),
+    };
+    let mut out = MechanicalNormalForm {
+        exists: existence.exists,
+        reason: existence.reason,
+        conditions: existence.conditions,
+        form: None,
+        verified: false,
+        original,
+    };
+    if !out.exists {
+        return Ok(out);
+    }
+    let family = transform::transformation_family(f, a, b).ok_or_else(|| {
+        Error::Verification("the conditions hold but eq. 15 has no solution".into())
+    })?;
+    let found = transform::find_invertible(&family, max_candidates)?;
+    out.form = Some(build_form(f, a, b, c, d, found)?);
+    out.verified = out.verify();
+    if !out.verified {
+        return Err(Error::Verification(
+            "the mechanical normal form does not reproduce the system".into(),
+        ));
+    }
+    Ok(out)
+}
+
+/// $\tilde A, \tilde B, \tilde C$ and the second-order matrices from an invertible $T$.
+fn build_form<K: Field>(
+    f: Option<&Matrix<K>>,
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+    found: transform::SearchOutcome<K>,
+) -> Result<MechanicalForm<K>> {
+    let n = a.nrows();
+    let h = n / 2;
+    let p = b.ncols();
+    let row_t = found.t;
+    let (state_map, left) = match f {
+        None => (row_t.clone(), None),
+        Some(f) => (row_t.try_mul(f)?, Some(row_t.clone())),
+    };
+    let s_inv = state_map.inverse()?;
+    let a_tilde = row_t.try_mul(a)?.try_mul(&s_inv)?;
+    let b_tilde = row_t.try_mul(b)?;
+    let output = c.try_mul(&s_inv)?;
+    let k = a.field().clone();
+    Ok(MechanicalForm {
+        mass: Matrix::identity(k, h),
+        damping: -&a_tilde.submatrix(h, n, h, n),
+        stiffness: -&a_tilde.submatrix(h, n, 0, h),
+        input: b_tilde.submatrix(h, n, 0, p),
+        output,
+        feedthrough: d.clone(),
+        t: state_map,
+        left,
+        a_tilde,
+        b_tilde,
+        alpha: found.alpha,
+        candidates: found.candidates,
+    })
+}
+
+impl<K: Field> MechanicalNormalForm<K> {
+    /// Exact check of the result: `t` invertible; $\tilde A = [[0, I], [-K, -D_q]]$ with
+    /// $M = I$; $\tilde B = [0; W]$, $W = [0; I_p]$; $\tilde A\,t = T A$, $\tilde B = T B$,
+    /// $\tilde C\,t = C$ (with $T = t$, or the row transformation and $T F = t$ for a descriptor
+    /// system); and equal Markov parameters $\tilde C \tilde A^j \tilde B = C (F^{-1}A)^j F^{-1} B$
+    /// for $j < 2n$ (computed with solves, not $F^{-1}$) and $\tilde D = D$.
+    /// `false` when no form exists.
+    pub fn verify(&self) -> bool {
+        let Some(m) = &self.form else { return false };
+        let o = &self.original;
+        let k = o.a.field().clone();
+        let n = o.a.nrows();
+        let h = n / 2;
+        let p = o.b.ncols();
+        if k.is_zero(&m.t.det().expect("square")) || !m.mass.is_identity() {
+            return false;
+        }
+        let id = Matrix::identity(k.clone(), h);
+        let zero = Matrix::zeros(k.clone(), h, h);
+        let expected_a = Matrix::block(
+            k.clone(),
+            &[vec![&zero, &id], vec![&(-&m.stiffness), &(-&m.damping)]],
+        )
+        .expect("blocks agree");
+        let mut w = Matrix::zeros(k.clone(), h, p);
+        for j in 0..p {
+            w.set(h - p + j, j, k.one());
+        }
+        let expected_b = Matrix::zeros(k.clone(), h, p)
+            .vstack(&w)
+            .expect("p columns");
+        if m.a_tilde != expected_a || m.b_tilde != expected_b || m.input != w {
+            return false;
+        }
+        let row_t = m.left.as_ref().unwrap_or(&m.t);
+        if let Some(f) = &o.f
+            && row_t * f != m.t
+        {
+            return false;
+        }
+        if &m.a_tilde * &m.t != row_t * &o.a
+            || m.b_tilde != row_t * &o.b
+            || &m.output * &m.t != o.c
+            || m.feedthrough != o.d
+        {
+            return false;
+        }
+        markov_parameters(o.f.as_ref(), &o.a, &o.b, &o.c, 2 * n)
+            == markov_parameters(None, &m.a_tilde, &m.b_tilde, &m.output, 2 * n)
+    }
+
+    /// The report with the CLI contract keys of `mnf`: `exists`, `reason`, `mass`, `damping`,
+    /// `stiffness`, `input`, `output`, `feedthrough`, `T`, `verified`, then `conditions`
+    /// and the search statistics.
+    pub fn report(&self) -> Report {
+        let mut r = Report::titled("mechanical normal form")
+            .bool("exists", self.exists)
+            .with(
+                "reason",
+                self.reason.clone().map_or(Value::Null, Value::Str),
+            );
+        match &self.form {
+            Some(m) => {
+                r = r
+                    .matrix("mass", &m.mass)
+                    .matrix("damping", &m.damping)
+                    .matrix("stiffness", &m.stiffness)
+                    .matrix("input", &m.input)
+                    .matrix("output", &m.output)
+                    .matrix("feedthrough", &m.feedthrough)
+                    .matrix("T", &m.t);
+                if let Some(l) = &m.left {
+                    r = r.matrix("T_rows", l);
+                }
+            }
+            None => {
+                for key in [
+                    "mass",
+                    "damping",
+                    "stiffness",
+                    "input",
+                    "output",
+                    "feedthrough",
+                    "T",
+                ] {
+                    r = r.with(key, Value::Null);
+                }
+            }
+        }
+        r = r.bool("verified", self.verified);
+        let conds = self
+            .conditions
+            .iter()
+            .map(|c| {
+                Value::Obj(
+                    Report::new()
+                        .str("name", c.name)
+                        .str("statement", c.statement.clone())
+                        .bool("holds", c.holds)
+                        .bool("decisive", c.decisive)
+                        .str("meaning", c.meaning.clone()),
+                )
+            })
+            .collect();
+        r = r.list("conditions", conds);
+        if let Some(m) = &self.form {
+            r = r.int("candidates_tested", m.candidates as usize);
+        }
+        r
+    }
+}
+
+/// Markov parameters $C (F^{-1}A)^j F^{-1} B$, $j < count$, by solves with $F$ (never
+/// $F^{-1}$). Split as $[C (F^{-1}A)^i]\,[(F^{-1}A)^{j-i} F^{-1}B]$ with $i \le count/2$ so no
+/// power beyond about $count/2$ is formed (entry sizes grow with the power).
+pub(crate) fn markov_parameters<K: Field>(
+    f: Option<&Matrix<K>>,
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    count: usize,
+) -> Vec<Matrix<K>> {
+    let solve = |x: &Matrix<K>| match f {
+        None => x.clone(),
+        Some(f) => f.solve(x).expect("shapes").expect("F invertible").0,
+    };
+    let solve_t = |x: &Matrix<K>| match f {
+        None => x.clone(),
+        Some(f) => {
+            let y = f.transpose().solve(&x.transpose()).expect("shapes");
+            y.expect("F invertible").0.transpose()
+        }
+    };
+    let half = count.div_ceil(2);
+    // left[i] = C (F^-1 A)^i, right[i] = (F^-1 A)^i F^-1 B
+    let mut left = vec![c.clone()];
+    for i in 1..half {
+        left.push(&solve_t(&left[i - 1]) * a);
+    }
+    let mut right = vec![solve(b)];
+    for i in 1..=count.saturating_sub(half) {
+        right.push(solve(&(a * &right[i - 1])));
+    }
+    (0..count)
+        .map(|j| {
+            let i = j.min(half.saturating_sub(1));
+            &left[i] * &right[j - i]
+        })
+        .collect()
+}

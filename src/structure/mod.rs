@@ -1,0 +1,12 @@
+//! Structure of linear systems: special coordinate basis, invariant zeros, mechanical
+//! normal form.
+//!
+//! | module | computes |
+//! |---|---|
+//! | [`scb`] | special coordinate basis (Sannuti–Saberi; Grip–Saberi's symbolic procedure), exact |
+//! | [`zeros`] | invariant zeros from the Rosenbrock system matrix, independent of the SCB |
+//! | [`mechanical`] | mechanical normal form: a first-order system back to $\ddot q + D\dot q + Kq = Wu$ |
+
+pub mod mechanical;
+pub mod scb;
+pub mod zeros;

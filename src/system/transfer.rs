@@ -1,0 +1,117 @@
+//! Exact transfer matrices $G(s) = C (sI - A)^{-1} B + D$.
+//!
+//! # Algorithm
+//! Faddeev–LeVerrier form of the adjugate: with $\det(sI - A) = \sum_k c_k s^k$ (monic),
+//! $\mathrm{adj}(sI - A) = \sum_{k=0}^{n-1} s^{n-1-k} R_k$, $R_0 = I$,
+//! $R_k = A R_{k-1} + c_{n-k} I$. Then $G_{ij} = (C\,\mathrm{adj}\,B)_{ij}/\det + D_{ij}$,
+//! each entry reduced to lowest terms with a monic denominator.
+
+use super::StateSpace;
+use crate::error::Result;
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::poly::Poly;
+
+/// A rational function `num / den` in lowest terms, `den` monic.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalFunction<K: Field> {
+    pub num: Poly<K>,
+    pub den: Poly<K>,
+}
+
+impl<K: Field> RationalFunction<K> {
+    /// Reduces `num / den` (`den` non-zero) to lowest terms with a monic denominator.
+    pub fn new(num: Poly<K>, den: Poly<K>) -> Self {
+        let g = num.gcd(&den);
+        let (mut n, mut d) = if g.is_zero() || g.is_one() {
+            (num, den)
+        } else {
+            (num.quo(&g), den.quo(&g))
+        };
+        if n.is_zero() {
+            d = Poly::one(d.field().clone());
+        }
+        let l = d.lc();
+        let li = d.field().inv(&l).expect("non-zero denominator");
+        n = n.scale(&li);
+        d = d.scale(&li);
+        RationalFunction { num: n, den: d }
+    }
+    pub fn is_proper(&self) -> bool {
+        self.num.is_zero() || self.num.deg() <= self.den.deg()
+    }
+    pub fn to_string_var(&self, var: &str) -> String {
+        if self.den.is_one() {
+            return self.num.to_string_var(var);
+        }
+        format!(
+            "({})/({})",
+            self.num.to_string_var(var),
+            self.den.to_string_var(var)
+        )
+    }
+}
+
+/// A matrix of rational functions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TransferMatrix<K: Field> {
+    pub entries: Vec<Vec<RationalFunction<K>>>,
+}
+
+impl<K: Field> TransferMatrix<K> {
+    /// Entries as strings in the variable `s`.
+    pub fn to_strings(&self) -> Vec<Vec<String>> {
+        self.entries
+            .iter()
+            .map(|r| r.iter().map(|f| f.to_string_var("s")).collect())
+            .collect()
+    }
+}
+
+impl<K: Field> StateSpace<K> {
+    /// The exact transfer matrix.
+    ///
+    /// # Errors
+    /// Never for a valid system (shapes are checked at construction).
+    pub fn transfer_matrix(&self) -> Result<TransferMatrix<K>> {
+        let k = self.field().clone();
+        let n = self.nstates();
+        let cp = self.a.charpoly()?;
+        // numerator polynomial matrix N(s) = sum_k s^{n-1-k} C R_k B
+        let (p, m) = (self.noutputs(), self.ninputs());
+        let mut num: Vec<Vec<Vec<K::Elem>>> = vec![vec![vec![k.zero(); n.max(1)]; m]; p];
+        let mut r = Matrix::identity(k.clone(), n);
+        for kk in 0..n {
+            if kk > 0 {
+                r = &self.a * &r;
+                let c = cp.coeff(n - kk);
+                for i in 0..n {
+                    let v = k.add(r.get(i, i), &c);
+                    r.set(i, i, v);
+                }
+            }
+            let crb = &(&self.c * &r) * &self.b;
+            for i in 0..p {
+                for j in 0..m {
+                    num[i][j][n - 1 - kk] = crb.get(i, j).clone();
+                }
+            }
+        }
+        let entries = (0..p)
+            .map(|i| {
+                (0..m)
+                    .map(|j| {
+                        let nij = if n == 0 {
+                            Poly::zero(k.clone())
+                        } else {
+                            Poly::new(k.clone(), num[i][j].clone())
+                        };
+                        let total = nij.add(&cp.scale(self.d.get(i, j)));
+                        RationalFunction::new(total, cp.clone())
+                    })
+                    .collect()
+            })
+            .collect();
+        Ok(TransferMatrix { entries })
+    }
+}

@@ -1,0 +1,184 @@
+//! End-to-end runs of the `exactlti` binary: outputs, JSON fields and exit codes.
+use std::process::Command;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let mut a = args.to_vec();
+    a.extend(["--format", "json"]);
+    let (code, out, err) = run(&a);
+    assert_eq!(code, 0, "args {args:?}: stderr {err}");
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("invalid JSON for {args:?}: {e}\n{out}"))
+}
+
+#[test]
+fn minreal_sliding_masses_every_exact_method() {
+    for m in ["kalman", "rosenbrock", "ho-kalman"] {
+        let j = json(&["minreal", "data/sliding-masses.json", "--method", m]);
+        assert_eq!(j["order"], 8, "method {m}");
+        assert_eq!(j["mcmillan_degree"], 8);
+        assert_eq!(j["verified"], true);
+        assert_eq!(j["A"].as_array().unwrap().len(), 8);
+        assert_eq!(j["A_approx"].as_array().unwrap().len(), 8);
+    }
+}
+
+#[test]
+fn linalg_commands() {
+    let f = "tests/data/yaw_contract.json";
+    assert_eq!(
+        json(&["linalg", "charpoly", f])["charpoly"],
+        "x^4 + 8/3*x^3"
+    );
+    assert_eq!(json(&["linalg", "rank", f])["rank"], 3);
+    assert_eq!(json(&["linalg", "det", f])["det"], "0");
+    assert_eq!(json(&["linalg", "minpoly", f])["minpoly"], "x^4 + 8/3*x^3");
+    assert_eq!(
+        json(&["linalg", "nullspace", f])["basis"]
+            .as_array()
+            .unwrap()
+            .len(),
+        1
+    );
+    let r = json(&["linalg", "rref", f]);
+    assert_eq!(r["rank"], 3);
+    let (code, _, err) = run(&["linalg", "inverse", f]);
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("singular"), "{err}");
+}
+
+#[test]
+fn bad_input_exits_2_with_one_line() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let p = entry.unwrap().path();
+        let name = p.file_name().unwrap().to_string_lossy().into_owned();
+        if !name.starts_with("invalid_") {
+            continue;
+        }
+        let (code, out, err) = run(&["minreal", p.to_str().unwrap()]);
+        assert_eq!(code, 2, "{name}: {err}");
+        assert!(out.is_empty(), "{name}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{name}: {err}");
+        assert!(err.contains(&name), "{name}: message names the file: {err}");
+    }
+    let (code, _, err) = run(&["minreal", "no/such/file.json"]);
+    assert_eq!(code, 2);
+    assert_eq!(err.trim_end().lines().count(), 1);
+    let (code, _, _) = run(&["nonsense"]);
+    assert_eq!(code, 2);
+}
+
+#[test]
+fn standard_form_of_a_plain_system_is_itself() {
+    let j = json(&["standard", "tests/data/yaw_contract.json"]);
+    assert_eq!(j["order"], 4);
+    assert_eq!(j["removed_infinite"], 0);
+}
+
+#[test]
+fn latex_and_text_formats() {
+    let (code, out, _) = run(&[
+        "minreal",
+        "tests/data/yaw_contract.json",
+        "--format",
+        "latex",
+    ]);
+    assert_eq!(code, 0);
+    assert!(out.contains("\\begin{bmatrix}"));
+    let (code, out, _) = run(&["minreal", "tests/data/yaw_contract.json"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("order:"));
+}
+
+#[test]
+fn structure_commands() {
+    let j = json(&["scb", "data/sliding-masses.json"]);
+    assert_eq!(j["verified"], true);
+    let dims = &j["dims"];
+    let total: i64 = ["a", "b", "c", "d"]
+        .iter()
+        .map(|k| dims[k].as_i64().unwrap())
+        .sum();
+    assert_eq!(total, 20);
+    for k in [
+        "G1",
+        "G2",
+        "G3",
+        "U",
+        "Y",
+        "A",
+        "B",
+        "C",
+        "D",
+        "chains",
+        "invariant_zeros",
+        "left_invertible",
+        "right_invertible",
+    ] {
+        assert!(j.get(k).is_some(), "scb key {k}");
+    }
+    let z = json(&["zeros", "data/sliding-masses.json"]);
+    assert!(z["invariant_zeros"].is_array());
+    let m = json(&["mnf", "tests/data/mass_spring.json"]);
+    assert_eq!(m["exists"], true);
+    assert_eq!(m["verified"], true);
+    for k in [
+        "mass",
+        "damping",
+        "stiffness",
+        "input",
+        "output",
+        "feedthrough",
+        "T",
+        "reason",
+    ] {
+        assert!(m.get(k).is_some(), "mnf key {k}");
+    }
+    // an odd number of states has no mechanical normal form: exists = false, not an error
+    let m = json(&["mnf", "tests/data/vehicle_eq11.json"]);
+    assert_eq!(m["exists"], false);
+    assert!(m["reason"].is_string());
+}
+
+#[test]
+fn float_commands() {
+    let c = json(&["check", "data/sliding-masses.json"]);
+    assert!(c["agree"].is_boolean());
+    assert!(c["differences"].is_array());
+    assert_eq!(c["comparisons"]["minreal_order"]["exact"], 8);
+    let e = json(&["minreal", "data/sliding-masses.json", "--method", "era"]);
+    assert_eq!(e["mcmillan_degree"], 8);
+    assert_eq!(e["exact"], false);
+    let dir = std::env::temp_dir();
+    let svg = dir.join("exactlti-test.svg");
+    let csv = dir.join("exactlti-test.csv");
+    let f = json(&[
+        "freqresp",
+        "data/sliding-masses.json",
+        "--points",
+        "50",
+        "--svg",
+        svg.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert_eq!(f["frequencies_hz"].as_array().unwrap().len(), 50);
+    assert_eq!(f["response"][0][0][0].as_array().unwrap().len(), 2);
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+    assert_eq!(std::fs::read_to_string(&csv).unwrap().lines().count(), 51);
+    let (code, _, err) = run(&["freqresp", "data/sliding-masses.json", "--from", "-1"]);
+    assert_eq!(code, 2, "{err}");
+}
