@@ -24,7 +24,7 @@
 //! $\dim\ker N^k - \dim\ker N^{k-1}$.
 
 use crate::error::{Error, Result};
-use crate::field::Field;
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 
 /// Chains of one eigenvalue (see the module docs).
@@ -57,6 +57,63 @@ pub fn jordan_block_matrix<K: Field>(k: &K, theta: &K::Elem, blocks: &[usize]) -
     j
 }
 
+/// `a * b`, with an integer kernel over $\mathbb{Q}$: rows of `a` and columns of `b` are
+/// scaled to integers, dot products are exact integer sums, and each entry is normalised
+/// once (the generic product normalises a rational after every multiply-add).
+pub(crate) fn mul<K: Field + 'static>(a: &Matrix<K>, b: &Matrix<K>) -> Matrix<K> {
+    use std::any::Any;
+    if let (Some(aq), Some(bq)) = (
+        (a as &dyn Any).downcast_ref::<Matrix<Q>>(),
+        (b as &dyn Any).downcast_ref::<Matrix<Q>>(),
+    ) {
+        let c = mul_q(aq, bq);
+        return (&c as &dyn Any)
+            .downcast_ref::<Matrix<K>>()
+            .expect("same type")
+            .clone();
+    }
+    a * b
+}
+
+fn mul_q(a: &Matrix<Q>, b: &Matrix<Q>) -> Matrix<Q> {
+    use num_bigint::BigInt;
+    use num_integer::Integer;
+    use num_traits::{One, Zero};
+    assert_eq!(a.ncols(), b.nrows(), "matrix product shapes");
+    let (m, k, n) = (a.nrows(), a.ncols(), b.ncols());
+    let scale = |xs: Vec<&Rational>| -> (BigInt, Vec<BigInt>) {
+        let d = xs.iter().fold(BigInt::one(), |d, x| d.lcm(x.denom()));
+        let v = xs
+            .iter()
+            .map(|x| {
+                if x.is_zero() {
+                    BigInt::zero()
+                } else {
+                    x.numer() * (&d / x.denom())
+                }
+            })
+            .collect();
+        (d, v)
+    };
+    let rows: Vec<(BigInt, Vec<BigInt>)> = (0..m).map(|i| scale(a.row(i).iter().collect())).collect();
+    let cols: Vec<(BigInt, Vec<BigInt>)> = (0..n)
+        .map(|j| scale((0..k).map(|l| b.get(l, j)).collect()))
+        .collect();
+    Matrix::from_fn(Q, m, n, |i, j| {
+        let mut acc = BigInt::zero();
+        for (x, y) in rows[i].1.iter().zip(&cols[j].1) {
+            if !x.is_zero() && !y.is_zero() {
+                acc += x * y;
+            }
+        }
+        if acc.is_zero() {
+            Rational::zero()
+        } else {
+            Rational::new(acc, &rows[i].0 * &cols[j].0)
+        }
+    })
+}
+
 /// Elimination data of $[N \mid I]$: $R = P N$.
 struct Elim<K: Field> {
     r: Matrix<K>,
@@ -64,7 +121,7 @@ struct Elim<K: Field> {
     piv: Vec<usize>,
 }
 
-impl<K: Field> Elim<K> {
+impl<K: Field + 'static> Elim<K> {
     fn new(nm: &Matrix<K>) -> Self {
         let n = nm.nrows();
         let k = nm.field().clone();
@@ -98,7 +155,7 @@ pub(crate) fn nullspace_of_rref<K: Field>(r: &Matrix<K>, piv: &[usize]) -> Matri
 }
 
 /// Columns of `extra` that are independent modulo the (independent) columns of `base`.
-fn independent_extra<K: Field>(base: &Matrix<K>, extra: &Matrix<K>) -> Matrix<K> {
+fn independent_extra<K: Field + 'static>(base: &Matrix<K>, extra: &Matrix<K>) -> Matrix<K> {
     let both = base.hstack(extra).expect("same rows");
     let (_, piv) = both.rref();
     let keep: Vec<usize> = piv
@@ -110,7 +167,7 @@ fn independent_extra<K: Field>(base: &Matrix<K>, extra: &Matrix<K>) -> Matrix<K>
 }
 
 /// Right generalized eigenspace basis adapted to the kernel flag, and the flag dimensions.
-fn right_flag<K: Field>(e: &Elim<K>, m: usize) -> Result<(Matrix<K>, Vec<usize>)> {
+fn right_flag<K: Field + 'static>(e: &Elim<K>, m: usize) -> Result<(Matrix<K>, Vec<usize>)> {
     let n = e.p.nrows();
     let r = e.rank();
     let k = e.p.field().clone();
@@ -121,9 +178,9 @@ fn right_flag<K: Field>(e: &Elim<K>, m: usize) -> Result<(Matrix<K>, Vec<usize>)
         // preimages of the whole current space (a combination of levels may lie in the
         // range of N when no single level does)
         let cur = &basis;
-        let cs = (&p_bot * &cur).nullspace();
-        let ys = cur * &cs;
-        let pys = &e.p.submatrix(0, r, 0, n) * &ys;
+        let cs = mul(&p_bot, cur).nullspace();
+        let ys = mul(cur, &cs);
+        let pys = mul(&e.p.submatrix(0, r, 0, n), &ys);
         let mut xs = Matrix::zeros(k.clone(), n, ys.ncols());
         for (i, &pc) in e.piv.iter().enumerate() {
             for j in 0..ys.ncols() {
@@ -150,7 +207,7 @@ fn right_flag<K: Field>(e: &Elim<K>, m: usize) -> Result<(Matrix<K>, Vec<usize>)
 }
 
 /// Rows spanning the left generalized eigenspace ($m \times n$).
-fn left_space<K: Field>(e: &Elim<K>, m: usize) -> Result<Matrix<K>> {
+fn left_space<K: Field + 'static>(e: &Elim<K>, m: usize) -> Result<Matrix<K>> {
     let n = e.p.nrows();
     let r = e.rank();
     let mut basis = e.p.submatrix(r, n, 0, n); // left kernel rows
@@ -160,10 +217,10 @@ fn left_space<K: Field>(e: &Elim<K>, m: usize) -> Result<Matrix<K>> {
         let cur = basis.clone();
         let cur_piv = cur.select_cols(&e.piv);
         // z = c cur solvable iff z = z_piv R_top: c (cur - cur_piv R_top) = 0
-        let d = cur.try_sub(&(&cur_piv * &r_top))?;
+        let d = cur.try_sub(&mul(&cur_piv, &r_top))?;
         let cs = d.transpose().nullspace().transpose(); // rows c
-        let zp = &cs * &cur_piv;
-        let ys = &zp * &p_top;
+        let zp = mul(&cs, &cur_piv);
+        let ys = mul(&zp, &p_top);
         let new = independent_extra(&basis.transpose(), &ys.transpose()).transpose();
         if new.nrows() == 0 {
             return Err(Error::Verification(format!(
@@ -184,7 +241,7 @@ fn left_space<K: Field>(e: &Elim<K>, m: usize) -> Result<Matrix<K>> {
 
 /// Chooses chains top-down for the nilpotent `mm` ($m \times m$) whose kernel flag is the
 /// coordinate flag with dimensions `dims`; returns block sizes and the chain matrix `C`.
-fn chains_in_coordinates<K: Field>(mm: &Matrix<K>, dims: &[usize]) -> (Vec<usize>, Matrix<K>) {
+fn chains_in_coordinates<K: Field + 'static>(mm: &Matrix<K>, dims: &[usize]) -> (Vec<usize>, Matrix<K>) {
     let k = mm.field().clone();
     let m = mm.nrows();
     let s = dims.len();
@@ -242,20 +299,20 @@ fn chains_in_coordinates<K: Field>(mm: &Matrix<K>, dims: &[usize]) -> (Vec<usize
 /// # Errors
 /// `NotSquare`; `Verification` when the generalized eigenspace does not have dimension `m`
 /// (a wrong multiplicity).
-pub fn jordan_chains<K: Field>(nm: &Matrix<K>, m: usize) -> Result<Chains<K>> {
+pub fn jordan_chains<K: Field + 'static>(nm: &Matrix<K>, m: usize) -> Result<Chains<K>> {
     nm.check_square("jordan_chains")?;
     let e = Elim::new(nm);
     let (b, dims) = right_flag(&e, m)?;
     // restriction M: N B = B M, through m independent rows of B
     let (_, rows) = b.transpose().rref();
     let b_sub = b.select_rows(&rows);
-    let nb = nm * &b;
-    let mm = &b_sub.inverse()? * &nb.select_rows(&rows);
+    let nb = mul(nm, &b);
+    let mm = mul(&b_sub.inverse()?, &nb.select_rows(&rows));
     let (blocks, c) = chains_in_coordinates(&mm, &dims);
-    let v = &b * &c;
+    let v = mul(&b, &c);
     let l = left_space(&e, m)?;
-    let lv = &l * &v;
-    let w = &lv.inverse()? * &l;
+    let lv = mul(&l, &v);
+    let w = mul(&lv.inverse()?, &l);
     Ok(Chains {
         blocks,
         kernel_dims: dims,

@@ -8,7 +8,7 @@
 //!
 //! Identities checked exactly in $K$: $A V = V J_t$, $W A = J_t W$, $W V = I_m$.
 
-use super::chains::{Chains, jordan_block_matrix, jordan_chains};
+use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
 use crate::error::Result;
 use crate::field::{Field, NfElem, NumberField, Q, Rational};
 use crate::field::number_field::NumberFieldCtx;
@@ -129,14 +129,24 @@ impl PrimaryComponent {
     }
     /// Exact check in $K$ of $A V = V J_t$, $W A = J_t W$ and $W V = I$.
     pub fn verify(&self, a: &Matrix<Q>) -> bool {
-        let ak = a.convert_to(&self.field);
-        let j = self.jordan_matrix();
         let v = &self.chains;
         let w = &self.left_chains;
-        v.nrows() == a.nrows()
-            && v.ncols() == self.multiplicity
-            && &ak * v == v * &j
-            && w * &ak == &j * w
-            && (w * v).is_identity()
+        if v.nrows() != a.nrows() || v.ncols() != self.multiplicity {
+            return false;
+        }
+        if self.degree() == 1 {
+            // over Q with the integer product kernel
+            let to_q = |m: &Matrix<NumberField>| crate::matrix::to_rational_matrix(m);
+            let (Some(vq), Some(wq), Some(jq)) = (to_q(v), to_q(w), to_q(&self.jordan_matrix()))
+            else {
+                return false;
+            };
+            return mul(a, &vq) == mul(&vq, &jq)
+                && mul(&wq, a) == mul(&jq, &wq)
+                && mul(&wq, &vq).is_identity();
+        }
+        let ak = a.convert_to(&self.field);
+        let j = self.jordan_matrix();
+        &ak * v == v * &j && w * &ak == &j * w && (w * v).is_identity()
     }
 }
