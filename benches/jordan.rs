@@ -60,7 +60,9 @@ fn planted(n: usize, seed: u64) -> Matrix<Q> {
         size += k;
     }
     loop {
-        let p = Matrix::from_fn(Q, n, n, |_, _| Rational::from_integer(rng.int(-2, 2).into()));
+        let p = Matrix::from_fn(Q, n, n, |_, _| {
+            Rational::from_integer(rng.int(-2, 2).into())
+        });
         if let Ok(pi) = p.inverse() {
             return &(&p * &j) * &pi;
         }
@@ -84,7 +86,11 @@ fn main() {
     let want = |l: &str| only.as_ref().is_none_or(|o| l.contains(o.as_str()));
     let cases: Vec<(&str, Matrix<Q>, usize)> = vec![
         ("seed 3x3", qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]], 20),
-        ("point-mass A2 4x4", qmat![[0, 0, 1, 0], [0, 0, 0, 1], [-1, 0, -2, 0], [0, 0, 0, 0]], 20),
+        (
+            "point-mass A2 4x4",
+            qmat![[0, 0, 1, 0], [0, 0, 0, 1], [-1, 0, -2, 0], [0, 0, 0, 0]],
+            20,
+        ),
         (
             "yaw-plane single wheel 4x4",
             Matrix::from_rows(
@@ -99,7 +105,11 @@ fn main() {
             .unwrap(),
             20,
         ),
-        ("sympy issue 24942 3x3", qmat![[-3, 1, 2], [1, -1, 0], [1, 0, -2]], 20),
+        (
+            "sympy issue 24942 3x3",
+            qmat![[-3, 1, 2], [1, -1, 0], [1, 0, -2]],
+            20,
+        ),
         ("sliding masses 20x20", sliding_masses(), 5),
         ("planted n=8", planted(8, 8), 5),
         ("planted n=12", planted(12, 12), 5),

@@ -31,7 +31,10 @@ fn qsqrt2() -> NumberField {
 }
 fn s2(a: Rational, b: Rational) -> NfElem {
     let k = qsqrt2();
-    k.add(&k.from_rational(&a), &k.mul(&k.from_rational(&b), &k.generator()))
+    k.add(
+        &k.from_rational(&a),
+        &k.mul(&k.from_rational(&b), &k.generator()),
+    )
 }
 
 #[test]
@@ -114,21 +117,40 @@ fn vehicle_eq_18_23_point_mass_a2_two_blocks() {
     assert_eq!(&a2.convert_to(&k) * &t22, &t22 * &j23);
     assert_eq!(t22.rank(), 4);
     // our J has the same structure as eq. 23
-    let mut got = jf.eigenvalues.iter().map(|e| e.blocks.clone()).collect::<Vec<_>>();
+    let mut got = jf
+        .eigenvalues
+        .iter()
+        .map(|e| e.blocks.clone())
+        .collect::<Vec<_>>();
     got.sort();
     assert_eq!(got, [vec![2], vec![2]]);
 }
 
 #[test]
 fn vehicle_eq_24_26_yaw_plane_understeer() {
-    let a = yaw_plane(r(1500, 1), r(2500, 1), r(6, 5), r(7, 5), r(80000, 1), r(80000, 1), r(20, 1));
+    let a = yaw_plane(
+        r(1500, 1),
+        r(2500, 1),
+        r(6, 5),
+        r(7, 5),
+        r(80000, 1),
+        r(80000, 1),
+        r(20, 1),
+    );
     let jf = jordan(&a).unwrap();
     assert!(jf.verified);
     let zero = jf.eigenvalues.iter().find(|e| e.value == "0").unwrap();
     assert_eq!(zero.algebraic_multiplicity, 2);
-    let pair: Vec<_> = jf.eigenvalues.iter().filter(|e| e.approx.1 != 0.0).collect();
+    let pair: Vec<_> = jf
+        .eigenvalues
+        .iter()
+        .filter(|e| e.approx.1 != 0.0)
+        .collect();
     assert_eq!(pair.len(), 2, "understeer: a complex pair");
-    assert!(pair.iter().all(|e| e.approx.0 < 0.0 && e.minpoly.deg() == 2));
+    assert!(
+        pair.iter()
+            .all(|e| e.approx.0 < 0.0 && e.minpoly.deg() == 2)
+    );
     let rf = jf.real_form().unwrap();
     assert!(rf.exact && rf.verified, "{:?}", rf.notes);
 }
@@ -136,7 +158,15 @@ fn vehicle_eq_24_26_yaw_plane_understeer() {
 #[test]
 fn vehicle_eq_27_35_single_wheel_three_zeros_one_block() {
     let (m, u, cr) = (r(1500, 1), r(20, 1), r(80000, 1));
-    let a = yaw_plane(m.clone(), r(2500, 1), r(6, 5), r(0, 1), r(0, 1), cr.clone(), u.clone());
+    let a = yaw_plane(
+        m.clone(),
+        r(2500, 1),
+        r(6, 5),
+        r(0, 1),
+        r(0, 1),
+        cr.clone(),
+        u.clone(),
+    );
     let jf = jordan(&a).unwrap();
     assert!(jf.verified);
     assert_eq!(blocks_of(&jf, "0"), [3]);
@@ -167,37 +197,69 @@ fn vehicle_eq_27_35_single_wheel_three_zeros_one_block() {
 #[test]
 fn vehicle_eq_36_37_free_response_term_by_term() {
     let (m, u, cr) = (r(1500, 1), r(20, 1), r(80000, 1));
-    let a = yaw_plane(m.clone(), r(2500, 1), r(6, 5), r(0, 1), r(0, 1), cr.clone(), u.clone());
+    let a = yaw_plane(
+        m.clone(),
+        r(2500, 1),
+        r(6, 5),
+        r(0, 1),
+        r(0, 1),
+        cr.clone(),
+        u.clone(),
+    );
     let jf = jordan(&a).unwrap();
     let fr = jf.free_response();
     assert!(fr.verify(&jf));
     let s = -(&cr / (&m * &u));
     // paper constants (y0, psi0, v0, r0) and the initial state they mean (eq. 37 at t = 0)
-    for (y0, p0, v0, r0) in [(1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 1, 0), (0, 0, 0, 1), (3, -2, 5, 7)] {
+    for (y0, p0, v0, r0) in [
+        (1, 0, 0, 0),
+        (0, 1, 0, 0),
+        (0, 0, 1, 0),
+        (0, 0, 0, 1),
+        (3, -2, 5, 7),
+    ] {
         let (y0, p0, v0, r0) = (r(y0, 1), r(p0, 1), r(v0, 1), r(r0, 1));
         let x0 = Matrix::column(
             Q,
             vec![&y0 - &v0 / &s, p0.clone(), &r0 * &u / &s + &v0, r0.clone()],
         );
         let ev_zero = jf.eigenvalues.iter().position(|e| e.value == "0").unwrap();
-        let ev_s = jf.eigenvalues.iter().position(|e| e.value == "-8/3").unwrap();
+        let ev_s = jf
+            .eigenvalues
+            .iter()
+            .position(|e| e.value == "-8/3")
+            .unwrap();
         let get = |ev: usize, power: usize| -> Vec<Rational> {
             let tv = fr.term_vectors(&jf, ev, &x0);
             let v = tv.iter().find(|(p, _)| *p == power).map(|(_, v)| v.clone());
             match v {
-                Some(v) => (0..4).map(|i| v.field().to_rational(v.get(i, 0)).unwrap()).collect(),
+                Some(v) => (0..4)
+                    .map(|i| v.field().to_rational(v.get(i, 0)).unwrap())
+                    .collect(),
                 None => vec![r(0, 1); 4],
             }
         };
         let z = r(0, 1);
         // e^{0t}: (y0, psi0, r0 u / s, r0)
-        assert_eq!(get(ev_zero, 0), [y0.clone(), p0.clone(), &r0 * &u / &s, r0.clone()]);
+        assert_eq!(
+            get(ev_zero, 0),
+            [y0.clone(), p0.clone(), &r0 * &u / &s, r0.clone()]
+        );
         // t e^{0t}: ((psi0 - r0/s) u, -r0, 0, 0)
-        assert_eq!(get(ev_zero, 1), [(&p0 - &r0 / &s) * &u, -&r0, z.clone(), z.clone()]);
+        assert_eq!(
+            get(ev_zero, 1),
+            [(&p0 - &r0 / &s) * &u, -&r0, z.clone(), z.clone()]
+        );
         // t^2 e^{0t}: (-r0 u / 2, 0, 0, 0)
-        assert_eq!(get(ev_zero, 2), [-(&r0 * &u) / r(2, 1), z.clone(), z.clone(), z.clone()]);
+        assert_eq!(
+            get(ev_zero, 2),
+            [-(&r0 * &u) / r(2, 1), z.clone(), z.clone(), z.clone()]
+        );
         // e^{st}: (-v0/s, 0, v0, 0)
-        assert_eq!(get(ev_s, 0), [-(&v0 / &s), z.clone(), v0.clone(), z.clone()]);
+        assert_eq!(
+            get(ev_s, 0),
+            [-(&v0 / &s), z.clone(), v0.clone(), z.clone()]
+        );
         assert!(get(ev_zero, 3).iter().all(|c| *c == z));
     }
 }
@@ -226,7 +288,13 @@ fn sliding_masses_ten_pairs_diagonalizable() {
         assert_eq!((e.algebraic_multiplicity, e.geometric_multiplicity), (2, 2));
     }
     let vals = values(&jf);
-    for v in ["i*sqrt(2 - sqrt(3))", "-i*sqrt(2 + sqrt(3))", "i", "sqrt(2)*i", "-sqrt(3)*i"] {
+    for v in [
+        "i*sqrt(2 - sqrt(3))",
+        "-i*sqrt(2 + sqrt(3))",
+        "i",
+        "sqrt(2)*i",
+        "-sqrt(3)*i",
+    ] {
         assert!(vals.contains(&v.to_string()), "{v} not in {vals:?}");
     }
     let rf = jf.real_form().unwrap();
@@ -257,7 +325,11 @@ fn planted_structures_properties() {
         assert!(jf.verified, "A = {a}");
         for e in &jf.eigenvalues {
             let lam = Q.to_rational(&-e.minpoly.coeff(0)).unwrap();
-            let mut want: Vec<usize> = blocks.iter().filter(|(l, _)| *l == lam).map(|(_, k)| *k).collect();
+            let mut want: Vec<usize> = blocks
+                .iter()
+                .filter(|(l, _)| *l == lam)
+                .map(|(_, k)| *k)
+                .collect();
             want.sort_by(|x, y| y.cmp(x));
             assert_eq!(e.blocks, want, "A = {a}");
         }
@@ -277,7 +349,7 @@ fn irrational_and_non_exact_real_cases_are_explicit() {
     assert!(jf.verified);
     assert!(jf.single_field().is_none());
     let rep = jf.report().to_json();
-    assert!(rep["T"][0][0].as_str().unwrap().len() > 0);
+    assert!(!rep["T"][0][0].as_str().unwrap().is_empty());
     assert_eq!(rep["verified"], true);
     let rf = jf.real_form().unwrap();
     assert!(rf.exact || !rf.notes.is_empty(), "never silently inexact");
@@ -287,7 +359,12 @@ fn irrational_and_non_exact_real_cases_are_explicit() {
     // golden ratio: Q(sqrt 5)
     let g = qmat![[1, 1], [1, 0]];
     let jf = jordan(&g).unwrap();
-    assert!(values(&jf).contains(&"1/2 + sqrt(5)/2".to_string()) || values(&jf).contains(&"(1 + sqrt(5))/2".to_string()), "{:?}", values(&jf));
+    assert!(
+        values(&jf).contains(&"1/2 + sqrt(5)/2".to_string())
+            || values(&jf).contains(&"(1 + sqrt(5))/2".to_string()),
+        "{:?}",
+        values(&jf)
+    );
     assert!(jf.single_field().is_some() && jf.verified);
 }
 
@@ -299,10 +376,22 @@ fn report_keys_follow_the_contract() {
         assert!(js.get(key).is_some(), "missing {key}: {js}");
     }
     let e = &js["eigenvalues"][0];
-    for key in ["minpoly", "value", "approx", "algebraic_multiplicity", "geometric_multiplicity", "blocks"] {
+    for key in [
+        "minpoly",
+        "value",
+        "approx",
+        "algebraic_multiplicity",
+        "geometric_multiplicity",
+        "blocks",
+    ] {
         assert!(e.get(key).is_some(), "missing {key}: {e}");
     }
-    let rj = jordan(&qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]]).unwrap().real_form().unwrap().report().to_json();
+    let rj = jordan(&qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]])
+        .unwrap()
+        .real_form()
+        .unwrap()
+        .report()
+        .to_json();
     assert_eq!(rj["verified"], true);
     assert_eq!(rj["J"][1][2], "1");
 }

@@ -124,10 +124,7 @@ pub fn quadratic_string(a: &Rational, b: &Rational, d: &BigInt) -> String {
             term
         }
     } else {
-        format!(
-            "{an} {} {term}",
-            if bn.is_negative() { "-" } else { "+" }
-        )
+        format!("{an} {} {term}", if bn.is_negative() { "-" } else { "+" })
     };
     if l.is_one() {
         num
@@ -156,7 +153,10 @@ mod tests {
     #[test]
     fn quadratics() {
         let b = BigInt::from;
-        assert_eq!(quadratic_string(&r(1, 2), &r(1, 2), &b(5)), "(1 + sqrt(5))/2");
+        assert_eq!(
+            quadratic_string(&r(1, 2), &r(1, 2), &b(5)),
+            "(1 + sqrt(5))/2"
+        );
         assert_eq!(quadratic_string(&r(-1, 1), &r(1, 1), &b(-1)), "-1 + i");
         assert_eq!(quadratic_string(&r(0, 1), &r(1, 2), &b(-2)), "sqrt(2)*i/2");
         assert_eq!(quadratic_string(&r(0, 1), &r(-1, 1), &b(-3)), "-sqrt(3)*i");

@@ -452,7 +452,10 @@ const MAX_PREC: u64 = 1 << 15;
 fn initial(p: &[BigInt], prec: u64) -> Vec<Cx> {
     let n = p.len() - 1;
     let lead = p[n].bits() as f64;
-    let low = p.iter().find(|c| !c.is_zero()).map_or(0.0, |c| c.bits() as f64);
+    let low = p
+        .iter()
+        .find(|c| !c.is_zero())
+        .map_or(0.0, |c| c.bits() as f64);
     let r = 2f64.powf(((low - lead) / n as f64).clamp(-900.0, 900.0));
     (0..n)
         .map(|k| {
@@ -552,7 +555,8 @@ pub fn refine_box(p: &[BigInt], b: &CBox, pure_imag: bool, width: &Rational) -> 
             let (pv, dv) = horner(&a, &z, prec);
             match pv.div(&dv, prec) {
                 Some(w) => {
-                    let stop = w.is_zero() || w.mag() < z.mag().max(-(prec as i64)) - prec as i64 + 4;
+                    let stop =
+                        w.is_zero() || w.mag() < z.mag().max(-(prec as i64)) - prec as i64 + 4;
                     z = z.sub(&w, prec);
                     if stop {
                         break;

@@ -130,11 +130,7 @@ fn isolate_positive(p: &[BigInt], out: &mut Vec<RealRoot>) {
         }
         let d = q.len() - 1;
         // q1(x) = 2^d q(x / 2) on (0, 1/2); q2 = q1(x + 1) on (1/2, 1)
-        let q1: ZP = q
-            .iter()
-            .enumerate()
-            .map(|(i, a)| a << (d - i))
-            .collect();
+        let q1: ZP = q.iter().enumerate().map(|(i, a)| a << (d - i)).collect();
         let mut q2 = q1.clone();
         taylor_shift_one(&mut q2);
         let c2 = &c << 1usize;

@@ -55,7 +55,9 @@ use num_traits::{One, Zero};
 /// ```
 pub fn factor_q(p: &Poly<Q>) -> Result<(Rational, Vec<(Poly<Q>, usize)>)> {
     if p.is_zero() {
-        return Err(Error::Invalid("factorization of the zero polynomial".into()));
+        return Err(Error::Invalid(
+            "factorization of the zero polynomial".into(),
+        ));
     }
     let lc = p.lc();
     if p.deg() == 0 {
@@ -172,7 +174,11 @@ pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
         let mut v = Rational::zero();
         for m in 0..=k {
             let term = &c[k][m] * &s[m] * &s[k - m];
-            if (k - m) % 2 == 1 { v -= term } else { v += term }
+            if (k - m) % 2 == 1 {
+                v -= term
+            } else {
+                v += term
+            }
         }
         // divide by (2i)^k = 2^k (-1)^(k/2)
         let mut d = Rational::from_integer(num_bigint::BigInt::one() << k);

@@ -24,7 +24,9 @@ pub fn norm(f: &Poly<NumberField>) -> Poly<Q> {
     let m = k.modulus();
     let d = k.degree() * f.deg();
     // values at x = 0..=d
-    let xs: Vec<Rational> = (0..=d as i64).map(|i| Rational::from_integer(i.into())).collect();
+    let xs: Vec<Rational> = (0..=d as i64)
+        .map(|i| Rational::from_integer(i.into()))
+        .collect();
     let ys: Vec<Rational> = xs
         .iter()
         .map(|x0| {
@@ -54,7 +56,10 @@ fn interpolate(xs: &[Rational], ys: &[Rational]) -> Poly<Q> {
     let mut p = Poly::constant(Q, c[n - 1].clone());
     for i in (0..n - 1).rev() {
         p = p
-            .mul(&Poly::new(Q, vec![-xs[i].clone(), Rational::from_integer(1.into())]))
+            .mul(&Poly::new(
+                Q,
+                vec![-xs[i].clone(), Rational::from_integer(1.into())],
+            ))
             .add(&Poly::constant(Q, c[i].clone()));
     }
     p
@@ -127,11 +132,11 @@ fn trager_squarefree(f: &Poly<NumberField>) -> Result<Vec<Poly<NumberField>>> {
 /// let shown: Vec<String> = fs.iter().map(|(g, _)| g.to_string()).collect();
 /// assert_eq!(shown, ["x - t", "x + t"]);
 /// ```
-pub fn factor_over_number_field(
-    f: &Poly<NumberField>,
-) -> Result<Vec<(Poly<NumberField>, usize)>> {
+pub fn factor_over_number_field(f: &Poly<NumberField>) -> Result<Vec<(Poly<NumberField>, usize)>> {
     if f.is_zero() {
-        return Err(Error::Invalid("factorization of the zero polynomial".into()));
+        return Err(Error::Invalid(
+            "factorization of the zero polynomial".into(),
+        ));
     }
     let mut out = vec![];
     for (g, e) in f.squarefree() {

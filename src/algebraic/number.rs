@@ -152,7 +152,13 @@ impl AlgebraicNumber {
     /// Proven to have real part zero (a non-real root of an even or odd minimal polynomial
     /// whose box is symmetric about the imaginary axis).
     pub fn is_pure_imaginary(&self) -> bool {
-        matches!(self.loc, Loc::Complex { pure_imag: true, .. })
+        matches!(
+            self.loc,
+            Loc::Complex {
+                pure_imag: true,
+                ..
+            }
+        )
     }
     /// The isolating interval `(lo, hi)` of a real number (`lo == hi` for a rational).
     pub fn interval(&self) -> Option<(Rational, Rational)> {
@@ -377,7 +383,9 @@ impl AlgebraicNumber {
     /// From the factorization over Q of the composed polynomial, or `Limit`.
     pub fn try_re(&self) -> Result<Self> {
         match &self.loc {
-            Loc::Complex { pure_imag: true, .. } => Ok(Self::from_rational(&Rational::zero())),
+            Loc::Complex {
+                pure_imag: true, ..
+            } => Ok(Self::from_rational(&Rational::zero())),
             Loc::Complex { .. } => {
                 if let Some((a, _, _)) = self.quadratic_parts() {
                     return Ok(Self::from_rational(&a));

@@ -94,7 +94,9 @@ pub fn from_poly_q(p: &Poly<Q>) -> ZP {
 pub fn to_monic_q(p: &[BigInt]) -> Poly<Q> {
     Poly::new(
         Q,
-        p.iter().map(|c| Rational::from_integer(c.clone())).collect(),
+        p.iter()
+            .map(|c| Rational::from_integer(c.clone()))
+            .collect(),
     )
     .monic()
 }
@@ -106,7 +108,10 @@ pub fn parity(p: &[BigInt]) -> i8 {
         return 1;
     }
     let n = p.len() - 1;
-    if p.iter().enumerate().all(|(i, c)| (i + n) % 2 == 0 || c.is_zero()) {
+    if p.iter()
+        .enumerate()
+        .all(|(i, c)| (i + n) % 2 == 0 || c.is_zero())
+    {
         if n % 2 == 0 { 1 } else { -1 }
     } else {
         0

@@ -95,7 +95,8 @@ fn mul_q(a: &Matrix<Q>, b: &Matrix<Q>) -> Matrix<Q> {
             .collect();
         (d, v)
     };
-    let rows: Vec<(BigInt, Vec<BigInt>)> = (0..m).map(|i| scale(a.row(i).iter().collect())).collect();
+    let rows: Vec<(BigInt, Vec<BigInt>)> =
+        (0..m).map(|i| scale(a.row(i).iter().collect())).collect();
     let cols: Vec<(BigInt, Vec<BigInt>)> = (0..n)
         .map(|j| scale((0..k).map(|l| b.get(l, j)).collect()))
         .collect();
@@ -241,7 +242,10 @@ fn left_space<K: Field + 'static>(e: &Elim<K>, m: usize) -> Result<Matrix<K>> {
 
 /// Chooses chains top-down for the nilpotent `mm` ($m \times m$) whose kernel flag is the
 /// coordinate flag with dimensions `dims`; returns block sizes and the chain matrix `C`.
-fn chains_in_coordinates<K: Field + 'static>(mm: &Matrix<K>, dims: &[usize]) -> (Vec<usize>, Matrix<K>) {
+fn chains_in_coordinates<K: Field + 'static>(
+    mm: &Matrix<K>,
+    dims: &[usize],
+) -> (Vec<usize>, Matrix<K>) {
     let k = mm.field().clone();
     let m = mm.nrows();
     let s = dims.len();

@@ -54,6 +54,9 @@ use crate::report::{MatrixOut, Report, Value};
 use primary::{named_field, rational_field};
 use roots::{fmt_approx, quadratic_roots, radical_text};
 
+/// An embedding of a component field into an eigenvalue's display field.
+pub type Embedding<'a> = Box<dyn Fn(&NfElem) -> NfElem + 'a>;
+
 /// One eigenvalue (one root of one factor).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Eigenvalue {
@@ -175,10 +178,20 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
 
 /// Maps an element $c_0 + c_1 t$ of $\mathbb{Q}[t]/(p)$, $\deg p = 2$, to
 /// $\mathbb{Q}(\sqrt f)$ at the root $t = a_0 + s\sqrt f$.
-pub(crate) fn quadratic_image(x: &NfElem, a0: &crate::field::Rational, s: &crate::field::Rational) -> NfElem {
+pub(crate) fn quadratic_image(
+    x: &NfElem,
+    a0: &crate::field::Rational,
+    s: &crate::field::Rational,
+) -> NfElem {
     use num_traits::Zero;
-    let c0 = x.0.first().cloned().unwrap_or_else(crate::field::Rational::zero);
-    let c1 = x.0.get(1).cloned().unwrap_or_else(crate::field::Rational::zero);
+    let c0 =
+        x.0.first()
+            .cloned()
+            .unwrap_or_else(crate::field::Rational::zero);
+    let c1 =
+        x.0.get(1)
+            .cloned()
+            .unwrap_or_else(crate::field::Rational::zero);
     let mut v = vec![&c0 + &c1 * a0, &c1 * s];
     while v.last().is_some_and(|c| c.is_zero()) {
         v.pop();
@@ -209,7 +222,7 @@ impl JordanForm {
     }
     /// The exact field of eigenvalue `ev` (marked at that root, displayed as in the module
     /// docs) and the embedding $\sigma_j$ of the component field into it.
-    pub fn root_map(&self, ev: usize) -> (NumberField, Box<dyn Fn(&NfElem) -> NfElem + '_>) {
+    pub fn root_map(&self, ev: usize) -> (NumberField, Embedding<'_>) {
         let e = &self.eigenvalues[ev];
         let c = &self.components[e.component];
         match c.degree() {

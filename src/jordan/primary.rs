@@ -10,8 +10,8 @@
 
 use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
 use crate::error::Result;
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
 use crate::field::number_field::NumberFieldCtx;
+use crate::field::{Field, NfElem, NumberField, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use std::sync::Arc;

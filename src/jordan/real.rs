@@ -35,7 +35,6 @@ use crate::poly::Poly;
 use crate::report::{MatrixOut, Report, Value};
 use num_traits::{One, Zero};
 
-
 /// How $\operatorname{Re}$, $\operatorname{Im}$ of $K$-elements land in the real field.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum ReImMap {
@@ -131,7 +130,11 @@ fn real_field_for(
         // theta = a0 + s sqrt(d), d < 0: Im = s sqrt(-d) (s > 0 for the upper root)
         let (a0, s, d) = quadratic_roots(p).expect("irreducible");
         let g = -d;
-        let f = if g.is_one() { rational_field() } else { quadratic_field(&g) };
+        let f = if g.is_one() {
+            rational_field()
+        } else {
+            quadratic_field(&g)
+        };
         let re = f.from_rational(&a0);
         let im = if g.is_one() {
             f.from_rational(&s)
@@ -140,7 +143,11 @@ fn real_field_for(
         };
         return Ok((f, pair(re, im)));
     }
-    let even = p.coeffs().iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero());
+    let even = p
+        .coeffs()
+        .iter()
+        .enumerate()
+        .all(|(k, c)| k % 2 == 0 || c.is_zero());
     if even && e.approx.0.abs() < 1e-9 * (1.0 + e.approx.1.abs()) {
         // theta = i beta: beta is a real root of r(x) = p(i x) = sum c_k (-1)^(k/2) x^k
         let r = Poly::new(
@@ -393,7 +400,10 @@ impl RealJordanForm {
             r = r.list("fields", fields);
         }
         if !self.notes.is_empty() {
-            r = r.list("notes", self.notes.iter().cloned().map(Value::Str).collect());
+            r = r.list(
+                "notes",
+                self.notes.iter().cloned().map(Value::Str).collect(),
+            );
         }
         r
     }

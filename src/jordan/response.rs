@@ -50,7 +50,9 @@ pub struct FreeResponse {
 }
 
 fn factorial(k: usize) -> Rational {
-    (1..=k).fold(Rational::one(), |acc, i| acc * Rational::from_integer(i.into()))
+    (1..=k).fold(Rational::one(), |acc, i| {
+        acc * Rational::from_integer(i.into())
+    })
 }
 
 /// Power sums $P_k = \sum_j \theta_j^k$, $k < d$, of the roots of a monic $p$ (Newton).
@@ -82,7 +84,9 @@ impl JordanForm {
                 for &b in &c.blocks {
                     for j in 0..b.saturating_sub(power) {
                         let v = c.chains.submatrix(0, n, off + j, off + j + 1);
-                        let w = c.left_chains.submatrix(off + j + power, off + j + power + 1, 0, n);
+                        let w = c
+                            .left_chains
+                            .submatrix(off + j + power, off + j + power + 1, 0, n);
                         g = &g + &(&v * &w);
                     }
                     off += b;

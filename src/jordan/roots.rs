@@ -44,7 +44,10 @@ pub(crate) fn real_root_count(p: &Poly<Q>) -> usize {
         seq.push(r);
     }
     let variations = |signs: Vec<Ordering>| {
-        let s: Vec<Ordering> = signs.into_iter().filter(|o| *o != Ordering::Equal).collect();
+        let s: Vec<Ordering> = signs
+            .into_iter()
+            .filter(|o| *o != Ordering::Equal)
+            .collect();
         s.windows(2).filter(|w| w[0] != w[1]).count()
     };
     let at_pos: Vec<Ordering> = seq.iter().map(|q| q.lc().cmp(&Rational::zero())).collect();
@@ -67,7 +70,7 @@ pub(crate) fn approx_roots(p: &Poly<Q>) -> Vec<Complex64> {
     let lc = rational_to_f64(&p.lc());
     let c: Vec<f64> = p.coeffs().iter().map(|x| rational_to_f64(x) / lc).collect();
     if n == 1 {
-        return vec![Complex64::new(-c[0], 0.0)];
+        return vec![Complex64::new(0.0 - c[0], 0.0)];
     }
     let eval = |z: Complex64| {
         let mut v = Complex64::new(0.0, 0.0);
@@ -160,7 +163,11 @@ pub(crate) fn ordered_roots(p: &Poly<Q>) -> Vec<(f64, f64)> {
         out.push((re, -im));
     }
     // all roots on the imaginary axis (exactly: p even and p(ix) has only real roots)
-    let even = p.coeffs().iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero());
+    let even = p
+        .coeffs()
+        .iter()
+        .enumerate()
+        .all(|(k, c)| k % 2 == 0 || c.is_zero());
     if even && nreal == 0 {
         let r = Poly::new(
             Q,
@@ -224,13 +231,13 @@ pub(crate) fn value_string(p: &Poly<Q>, approx: (f64, f64)) -> String {
                 Some((a0, s, f)) if f.is_positive() => {
                     let z = Complex64::new(approx.0, approx.1);
                     let u = z * z;
-                    let coef = if u.re > rational_to_f64(&a0) {
-                        s
-                    } else {
-                        -s
-                    };
+                    let coef = if u.re > rational_to_f64(&a0) { s } else { -s };
                     let u_pos = u.re > 0.0;
-                    let sign_neg = if u_pos { approx.0 < 0.0 } else { approx.1 < 0.0 };
+                    let sign_neg = if u_pos {
+                        approx.0 < 0.0
+                    } else {
+                        approx.1 < 0.0
+                    };
                     let (ua, ub) = if u_pos { (a0, coef) } else { (-a0, -coef) };
                     let inner = fmt_pair(&ua, &ub, &radical_text(&f));
                     let body = if u_pos {
@@ -274,7 +281,10 @@ mod tests {
         assert_eq!(real_root_count(&p(&[-2, 0, 0, 1])), 1);
         assert_eq!(real_root_count(&p(&[1, 0, -4, 0, 1])), 4);
         let vs = |q: &Poly<Q>| -> Vec<String> {
-            ordered_roots(q).iter().map(|z| value_string(q, *z)).collect()
+            ordered_roots(q)
+                .iter()
+                .map(|z| value_string(q, *z))
+                .collect()
         };
         assert_eq!(vs(&p(&[2, 2, 1])), ["-1 + i", "-1 - i"]);
         let v = vs(&p(&[1, 0, 4, 0, 1]));
@@ -283,8 +293,16 @@ mod tests {
         let v = vs(&p(&[1, 0, -4, 0, 1]));
         assert!(v.contains(&"-sqrt(2 + sqrt(3))".to_string()), "{v:?}");
         assert_eq!(vs(&p(&[-1, -1, 1])), ["1/2 + sqrt(5)/2", "1/2 - sqrt(5)/2"]);
-        let f = p(&[-1, 2]).pow(2).mul(&p(&[1, 0, 1])).mul(&p(&[3, 1])).monic();
-        let shown: Vec<String> = factor_q(&f).unwrap().iter().map(|(g, e)| format!("({g})^{e}")).collect();
+        let f = p(&[-1, 2])
+            .pow(2)
+            .mul(&p(&[1, 0, 1]))
+            .mul(&p(&[3, 1]))
+            .monic();
+        let shown: Vec<String> = factor_q(&f)
+            .unwrap()
+            .iter()
+            .map(|(g, e)| format!("({g})^{e}"))
+            .collect();
         assert_eq!(shown.len(), 3, "{shown:?}");
         assert!(shown.contains(&"(x - 1/2)^2".to_string()));
     }

@@ -30,7 +30,15 @@ pub fn sliding_masses() -> Matrix<Q> {
 }
 
 /// Yaw-plane model, vehicle paper eq. 25.
-pub fn yaw_plane(m: Rational, izz: Rational, a: Rational, b: Rational, cf: Rational, cr: Rational, u: Rational) -> Matrix<Q> {
+pub fn yaw_plane(
+    m: Rational,
+    izz: Rational,
+    a: Rational,
+    b: Rational,
+    cf: Rational,
+    cr: Rational,
+    u: Rational,
+) -> Matrix<Q> {
     let z = Rational::from_integer(0.into());
     let one = Rational::from_integer(1.into());
     let mu = &m * &u;
@@ -42,7 +50,12 @@ pub fn yaw_plane(m: Rational, izz: Rational, a: Rational, b: Rational, cf: Ratio
             vec![z.clone(), u.clone(), -&one, z.clone()],
             vec![z.clone(), z.clone(), z.clone(), -&one],
             vec![z.clone(), z.clone(), -(&cf + &cr) / &mu, -(&k1 / &mu) - &u],
-            vec![z.clone(), z.clone(), -(&k1 / &iu), -((&a * &a * &cf + &b * &b * &cr) / &iu)],
+            vec![
+                z.clone(),
+                z.clone(),
+                -(&k1 / &iu),
+                -((&a * &a * &cf + &b * &b * &cr) / &iu),
+            ],
         ],
     )
     .unwrap()
@@ -73,7 +86,9 @@ pub fn planted(n: usize, seed: u64) -> (Matrix<Q>, Vec<(Rational, usize)>) {
         off += k;
     }
     loop {
-        let p = Matrix::from_fn(Q, n, n, |_, _| Rational::from_integer(rng.int(-2, 2).into()));
+        let p = Matrix::from_fn(Q, n, n, |_, _| {
+            Rational::from_integer(rng.int(-2, 2).into())
+        });
         if let Ok(pi) = p.inverse() {
             return (&(&p * &j) * &pi, blocks);
         }
