@@ -14,6 +14,7 @@ pub mod error;
 pub mod field;
 pub mod float;
 pub mod io;
+pub mod jordan;
 pub mod matrix;
 pub mod poly;
 pub mod realization;

@@ -1,0 +1,125 @@
+//! Jordan decomposition timings (release, std::time). Cases as in
+//! /work/shared/anchors/cases.py: the seed 3x3, point-mass A2, single-wheel yaw plane, the
+//! 3x3 of SymPy issue 24942, the 10-DOF sliding masses, planted A = P J P^-1 (n = 8..64).
+//! Prints `case<TAB>seconds` lines (median of repeats).
+
+use exactlti::field::{Q, Rational};
+use exactlti::jordan::jordan;
+use exactlti::matrix::Matrix;
+use exactlti::qmat;
+use std::time::Instant;
+
+fn r(n: i64, d: i64) -> Rational {
+    Rational::new(n.into(), d.into())
+}
+
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E3779B97F4A7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58476D1CE4E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D049BB133111EB);
+        z ^ (z >> 31)
+    }
+    fn int(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next() % ((hi - lo + 1) as u64)) as i64
+    }
+}
+
+fn sliding_masses() -> Matrix<Q> {
+    let mut a = Matrix::zeros(Q, 20, 20);
+    a.set_block(0, 10, &Matrix::identity(Q, 10));
+    for g in [0, 5] {
+        for i in 0..5 {
+            a.set(10 + g + i, g + i, r(-2, 1));
+            if i < 4 {
+                a.set(10 + g + i, g + i + 1, r(1, 1));
+                a.set(10 + g + i + 1, g + i, r(1, 1));
+            }
+        }
+    }
+    a
+}
+
+/// Same distribution as cases.planted_jordan (not the same random stream).
+fn planted(n: usize, seed: u64) -> Matrix<Q> {
+    let mut rng = Rng(seed);
+    let evs = [r(0, 1), r(-1, 1), r(2, 1), r(-3, 1), r(1, 2)];
+    let mut j = Matrix::zeros(Q, n, n);
+    let mut size = 0;
+    while size < n {
+        let k = [1, 1, 2, 3][rng.int(0, 3) as usize].min(n - size);
+        let lam = evs[rng.int(0, 4) as usize].clone();
+        for i in 0..k {
+            j.set(size + i, size + i, lam.clone());
+            if i + 1 < k {
+                j.set(size + i, size + i + 1, r(1, 1));
+            }
+        }
+        size += k;
+    }
+    loop {
+        let p = Matrix::from_fn(Q, n, n, |_, _| {
+            Rational::from_integer(rng.int(-2, 2).into())
+        });
+        if let Ok(pi) = p.inverse() {
+            return &(&p * &j) * &pi;
+        }
+    }
+}
+
+fn time(label: &str, a: &Matrix<Q>, reps: usize) {
+    let mut ts = vec![];
+    for _ in 0..reps {
+        let t0 = Instant::now();
+        let jf = jordan(a).expect("jordan");
+        ts.push(t0.elapsed().as_secs_f64());
+        assert!(jf.verified, "{label}: not verified");
+    }
+    ts.sort_by(f64::total_cmp);
+    println!("{label}\t{:.6}", ts[ts.len() / 2]);
+}
+
+fn main() {
+    let only: Option<String> = std::env::args().nth(1).filter(|s| !s.starts_with('-'));
+    let want = |l: &str| only.as_ref().is_none_or(|o| l.contains(o.as_str()));
+    let cases: Vec<(&str, Matrix<Q>, usize)> = vec![
+        ("seed 3x3", qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]], 20),
+        (
+            "point-mass A2 4x4",
+            qmat![[0, 0, 1, 0], [0, 0, 0, 1], [-1, 0, -2, 0], [0, 0, 0, 0]],
+            20,
+        ),
+        (
+            "yaw-plane single wheel 4x4",
+            Matrix::from_rows(
+                Q,
+                vec![
+                    vec![r(0, 1), r(20, 1), r(-1, 1), r(0, 1)],
+                    vec![r(0, 1), r(0, 1), r(0, 1), r(-1, 1)],
+                    vec![r(0, 1), r(0, 1), r(-8, 3), r(-20, 1)],
+                    vec![r(0, 1), r(0, 1), r(0, 1), r(0, 1)],
+                ],
+            )
+            .unwrap(),
+            20,
+        ),
+        (
+            "sympy issue 24942 3x3",
+            qmat![[-3, 1, 2], [1, -1, 0], [1, 0, -2]],
+            20,
+        ),
+        ("sliding masses 20x20", sliding_masses(), 5),
+        ("planted n=8", planted(8, 8), 5),
+        ("planted n=12", planted(12, 12), 5),
+        ("planted n=16", planted(16, 16), 3),
+        ("planted n=24", planted(24, 24), 3),
+        ("planted n=64", planted(64, 64), 1),
+    ];
+    for (label, a, reps) in cases {
+        if want(label) {
+            time(label, &a, reps);
+        }
+    }
+}

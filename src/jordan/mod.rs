@@ -1,0 +1,401 @@
+//! Exact Jordan decomposition over $\mathbb{Q}$: eigenvalues as algebraic numbers, Jordan
+//! chains, the complex and the real Jordan form, the closed-form free response.
+//!
+//! For $A \in \mathbb{Q}^{n \times n}$ with $\chi_A = \prod_p p^{m_p}$ ($p$ irreducible
+//! over $\mathbb{Q}$) the module computes, for each $p$, in $K_p = \mathbb{Q}[t]/(p)$:
+//! $$A V_p = V_p J_p, \qquad W_p A = J_p W_p, \qquad W_p V_p = I,$$
+//! with $J_p$ the Jordan matrix of the generic root $t$. The Jordan form of $A$ is
+//! $A = T J T^{-1}$ with $T = [\sigma_j(V_p)]_{p,j}$, $J = \operatorname{diag}
+//! (\sigma_j(J_p))$, $\sigma_j: t \mapsto \theta_j$ running over the roots of $p$
+//! (Galois conjugation: chains are computed once per factor, never per root).
+//!
+//! # Exact presentation of `J` and `T`
+//! Each root's columns are exact in one field, displayed as follows:
+//! * $\deg p = 1$: rationals;
+//! * $\deg p = 2$: $\mathbb{Q}(\sqrt f)$, e.g. `-1 + i`, `1/2 + sqrt(5)/2`;
+//! * $\deg p \ge 3$: polynomials in the root's symbol `r<k>` ($k$ = 1-based eigenvalue
+//!   index), i.e. elements of $\mathbb{Q}(r_k)$; the report lists each `r<k>` with its
+//!   minimal polynomial and approximation.
+//!
+//! When all columns lie in one field ($\mathbb{Q}$, $\mathbb{Q}(i)$ or one
+//! $\mathbb{Q}(\sqrt f)$), [`JordanForm::single_field`] returns $J$, $T$ as one exact
+//! matrix pair. Verification is per component (which covers every conjugate root, and
+//! implies that $T$ is invertible: each $V_p$ has full column rank by $W_p V_p = I$, and
+//! generalized eigenspaces of distinct eigenvalues are independent).
+//!
+//! | entry point | computes |
+//! |---|---|
+//! | [`jordan`] | [`JordanForm`]: components, eigenvalues, verification |
+//! | [`JordanForm::real_form`] | [`RealJordanForm`]: $2 \times 2$ blocks $[[a, b], [-b, a]]$, real $T$ |
+//! | [`JordanForm::free_response`] | [`FreeResponse`]: $e^{At} = \sum t^k e^{\theta t} G_{\theta,k}$ |
+//! | [`JordanForm::report`] | JSON keys of the CLI contract (`eigenvalues`, `J`, `T`, `verified`) |
+//! | [`chains::jordan_chains`] | chains of one eigenvalue over any field |
+//!
+//! Eigenvalue approximations come from an `f64` Aberth iteration, the real/complex split
+//! from exact Sturm counts; they only mark embeddings and never enter exact arithmetic.
+
+pub mod chains;
+pub mod primary;
+pub mod real;
+pub mod response;
+mod roots;
+
+pub use chains::{Chains, jordan_block_matrix, jordan_chains};
+pub use primary::PrimaryComponent;
+pub use real::{RealBlock, RealJordanForm};
+pub use response::{FreeResponse, ResponseTerm};
+
+use crate::algebraic::AlgebraicNumber;
+use crate::error::Result;
+use crate::field::{Field, NfElem, NumberField, Q};
+use crate::matrix::Matrix;
+use crate::poly::Poly;
+use crate::report::{MatrixOut, Report, Value};
+use primary::{named_field, rational_field};
+use roots::{fmt_approx, quadratic_roots, radical_text};
+
+/// An embedding of a component field into an eigenvalue's display field.
+pub type Embedding<'a> = Box<dyn Fn(&NfElem) -> NfElem + 'a>;
+
+/// One eigenvalue (one root of one factor).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Eigenvalue {
+    /// Minimal polynomial over $\mathbb{Q}$ (the component's factor).
+    pub minpoly: Poly<Q>,
+    /// Exact display: rational, closed form up to degree 2 (and biquadratics), else
+    /// `root of ... near ...`.
+    pub value: String,
+    /// Approximation `(re, im)`.
+    pub approx: (f64, f64),
+    /// Index into [`JordanForm::components`] and root index within it.
+    pub component: usize,
+    pub root: usize,
+    /// Symbol used for the root in per-root displays (`r<k>`).
+    pub symbol: String,
+    pub algebraic_multiplicity: usize,
+    pub geometric_multiplicity: usize,
+    /// Jordan block sizes, largest first.
+    pub blocks: Vec<usize>,
+}
+
+impl Eigenvalue {
+    /// The certified algebraic number (minimal polynomial and isolating region): the root
+    /// of [`Eigenvalue::minpoly`] nearest [`Eigenvalue::approx`].
+    ///
+    /// # Errors
+    /// Those of [`AlgebraicNumber::roots_of_irreducible`].
+    pub fn algebraic_number(&self) -> Result<AlgebraicNumber> {
+        let rts = AlgebraicNumber::roots_of_irreducible(&self.minpoly)?;
+        let d = |z: &AlgebraicNumber| {
+            let (re, im) = z.approx();
+            (re - self.approx.0).hypot(im - self.approx.1)
+        };
+        Ok(rts
+            .into_iter()
+            .min_by(|x, y| d(x).total_cmp(&d(y)))
+            .expect("degree >= 1"))
+    }
+}
+
+/// The columns of one eigenvalue, exact in one field.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RootColumns {
+    /// Index into [`JordanForm::eigenvalues`].
+    pub eigenvalue: usize,
+    /// The field the entries lie in (marked at this root; displays with its symbol).
+    pub field: NumberField,
+    /// $\sigma_j(V_p)$ ($n \times m$).
+    pub v: Matrix<NumberField>,
+    /// $\sigma_j(J_p)$ ($m \times m$).
+    pub j: Matrix<NumberField>,
+}
+
+/// The exact Jordan decomposition of a rational matrix.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JordanForm {
+    /// The input matrix.
+    pub a: Matrix<Q>,
+    /// $\chi_A(x) = \det(xI - A)$.
+    pub charpoly: Poly<Q>,
+    /// One component per irreducible factor of $\chi_A$.
+    pub components: Vec<PrimaryComponent>,
+    /// All eigenvalues, component by component.
+    pub eigenvalues: Vec<Eigenvalue>,
+    /// Every component's identities held exactly and the dimensions add up to $n$.
+    pub verified: bool,
+}
+
+/// Exact Jordan decomposition of a square rational matrix.
+///
+/// # Errors
+/// `NotSquare` for a non-square input; `Unsupported` when the characteristic polynomial
+/// cannot be factored; `Verification` if an internal identity fails.
+///
+/// # Examples
+/// ```
+/// use exactlti::{jordan::jordan, qmat};
+/// let jf = jordan(&qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]]).unwrap();
+/// let values: Vec<&str> = jf.eigenvalues.iter().map(|e| e.value.as_str()).collect();
+/// assert_eq!(values, ["-2", "-1 + i", "-1 - i"]);
+/// assert!(jf.verified);
+/// ```
+pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
+    a.check_square("jordan")?;
+    let n = a.nrows();
+    let chi = a.charpoly()?;
+    let mut components = vec![];
+    for (p, e) in roots::factor_q(&chi)? {
+        let rts = roots::ordered_roots(&p);
+        components.push(PrimaryComponent::compute(a, &p, e, rts)?);
+    }
+    let mut eigenvalues = vec![];
+    for (ci, c) in components.iter().enumerate() {
+        for (j, &z) in c.roots.iter().enumerate() {
+            let k = eigenvalues.len() + 1;
+            eigenvalues.push(Eigenvalue {
+                minpoly: c.factor.clone(),
+                value: roots::value_string(&c.factor, z),
+                approx: z,
+                component: ci,
+                root: j,
+                symbol: format!("r{k}"),
+                algebraic_multiplicity: c.multiplicity,
+                geometric_multiplicity: c.geometric_multiplicity(),
+                blocks: c.blocks.clone(),
+            });
+        }
+    }
+    let dim: usize = components.iter().map(|c| c.degree() * c.multiplicity).sum();
+    let verified = dim == n && components.iter().all(|c| c.verify(a));
+    Ok(JordanForm {
+        a: a.clone(),
+        charpoly: chi,
+        components,
+        eigenvalues,
+        verified,
+    })
+}
+
+/// Maps an element $c_0 + c_1 t$ of $\mathbb{Q}[t]/(p)$, $\deg p = 2$, to
+/// $\mathbb{Q}(\sqrt f)$ at the root $t = a_0 + s\sqrt f$.
+pub(crate) fn quadratic_image(
+    x: &NfElem,
+    a0: &crate::field::Rational,
+    s: &crate::field::Rational,
+) -> NfElem {
+    use num_traits::Zero;
+    let c0 =
+        x.0.first()
+            .cloned()
+            .unwrap_or_else(crate::field::Rational::zero);
+    let c1 =
+        x.0.get(1)
+            .cloned()
+            .unwrap_or_else(crate::field::Rational::zero);
+    let mut v = vec![&c0 + &c1 * a0, &c1 * s];
+    while v.last().is_some_and(|c| c.is_zero()) {
+        v.pop();
+    }
+    NfElem(v)
+}
+
+/// $\mathbb{Q}(\sqrt f)$ as a marked number field displayed with the radical.
+pub(crate) fn quadratic_field(f: &num_bigint::BigInt) -> NumberField {
+    use num_traits::{Signed, ToPrimitive};
+    let m = Poly::new(
+        Q,
+        vec![
+            crate::field::Rational::from_integer(-f),
+            num_traits::Zero::zero(),
+            num_traits::One::one(),
+        ],
+    );
+    let r = f.abs().to_f64().unwrap_or(f64::MAX).sqrt();
+    let root = if f.is_negative() { (0.0, r) } else { (r, 0.0) };
+    named_field(&m, root, &radical_text(f))
+}
+
+impl JordanForm {
+    /// Size of $A$.
+    pub fn n(&self) -> usize {
+        self.a.nrows()
+    }
+    /// The exact field of eigenvalue `ev` (marked at that root, displayed as in the module
+    /// docs) and the embedding $\sigma_j$ of the component field into it.
+    pub fn root_map(&self, ev: usize) -> (NumberField, Embedding<'_>) {
+        let e = &self.eigenvalues[ev];
+        let c = &self.components[e.component];
+        match c.degree() {
+            1 => {
+                let k = rational_field();
+                let k2 = k.clone();
+                (
+                    k,
+                    Box::new(move |x: &NfElem| {
+                        k2.from_rational(&c.field.to_rational(x).expect("in Q"))
+                    }),
+                )
+            }
+            2 => {
+                let (a0, s, fd) = quadratic_roots(&c.factor).expect("irreducible");
+                let positive = if num_traits::Signed::is_negative(&fd) {
+                    e.approx.1 > 0.0
+                } else {
+                    e.approx.0 > crate::field::rational_to_f64(&a0)
+                };
+                let s = if positive { s } else { -s };
+                (
+                    quadratic_field(&fd),
+                    Box::new(move |x: &NfElem| quadratic_image(x, &a0, &s)),
+                )
+            }
+            _ => (
+                c.embedding(e.root, &e.symbol),
+                Box::new(|x: &NfElem| x.clone()),
+            ),
+        }
+    }
+    /// The columns of each eigenvalue, exact in the field described in the module docs.
+    pub fn root_columns(&self) -> Vec<RootColumns> {
+        (0..self.eigenvalues.len())
+            .map(|ev| {
+                let c = &self.components[self.eigenvalues[ev].component];
+                let (field, f) = self.root_map(ev);
+                RootColumns {
+                    eigenvalue: ev,
+                    v: c.chains.map(&field, &f),
+                    j: c.jordan_matrix().map(&field, &f),
+                    field,
+                }
+            })
+            .collect()
+    }
+    /// $J$ and $T$ as exact matrices over one field, when every eigenvalue lies in one
+    /// field of degree at most 2 ($\mathbb{Q}$, $\mathbb{Q}(i)$, $\mathbb{Q}(\sqrt f)$).
+    pub fn single_field(&self) -> Option<(Matrix<NumberField>, Matrix<NumberField>)> {
+        let cols = self.root_columns();
+        let mut field = rational_field();
+        for c in &cols {
+            if c.field.degree() > 1 {
+                if field.degree() > 1 && field != c.field {
+                    return None;
+                }
+                field = c.field.clone();
+            }
+        }
+        let n = self.n();
+        let mut t = Matrix::zeros(field.clone(), n, n);
+        let mut j = Matrix::zeros(field.clone(), n, n);
+        let mut off = 0;
+        for c in &cols {
+            let m = c.v.ncols();
+            for r in 0..n {
+                for q in 0..m {
+                    t.set(r, off + q, c.v.get(r, q).clone());
+                }
+            }
+            for r in 0..m {
+                for q in 0..m {
+                    j.set(off + r, off + q, c.j.get(r, q).clone());
+                }
+            }
+            off += m;
+        }
+        Some((j, t))
+    }
+    /// $J$ and $T$ for output: exact strings (per-root fields) and approximations.
+    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
+        let n = self.n();
+        let zero_s = || vec![vec!["0".to_string(); n]; n];
+        let zero_a = || vec![vec![(0.0, 0.0); n]; n];
+        let (mut je, mut ja, mut te, mut ta) = (zero_s(), zero_a(), zero_s(), zero_a());
+        let mut off = 0;
+        for c in self.root_columns() {
+            let k = &c.field;
+            let m = c.v.ncols();
+            for r in 0..n {
+                for q in 0..m {
+                    te[r][off + q] = k.fmt_elem(c.v.get(r, q));
+                    ta[r][off + q] = k.approx(c.v.get(r, q));
+                }
+            }
+            for r in 0..m {
+                for q in 0..m {
+                    je[off + r][off + q] = k.fmt_elem(c.j.get(r, q));
+                    ja[off + r][off + q] = k.approx(c.j.get(r, q));
+                }
+            }
+            off += m;
+        }
+        let mk = |exact: Vec<Vec<String>>, approx| MatrixOut {
+            latex: exact.clone(),
+            exact,
+            approx,
+            nrows: n,
+            ncols: n,
+        };
+        (mk(je, ja), mk(te, ta))
+    }
+    /// The report with the CLI contract's keys: `eigenvalues[]` (`minpoly`, `value`,
+    /// `approx`, `algebraic_multiplicity`, `geometric_multiplicity`, `blocks`), `J`, `T`
+    /// (exact, with `_approx`), `verified`, plus `charpoly`, `presentation`, `symbols`.
+    pub fn report(&self) -> Report {
+        let evs: Vec<Value> = self
+            .eigenvalues
+            .iter()
+            .map(|e| {
+                Value::Obj(
+                    Report::new()
+                        .str("minpoly", e.minpoly.to_string())
+                        .str("value", e.value.clone())
+                        .with(
+                            "approx",
+                            Value::List(vec![Value::Float(e.approx.0), Value::Float(e.approx.1)]),
+                        )
+                        .int("algebraic_multiplicity", e.algebraic_multiplicity)
+                        .int("geometric_multiplicity", e.geometric_multiplicity)
+                        .with(
+                            "blocks",
+                            Value::List(e.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
+                        ),
+                )
+            })
+            .collect();
+        let single = self.single_field();
+        let presentation = match &single {
+            Some((j, _)) if j.field().degree() == 1 => "single matrix over QQ".to_string(),
+            Some((j, _)) => format!("single matrix over QQ({})", j.field().0.var),
+            None => "per eigenvalue: the columns of eigenvalue r<k> are exact in QQ(r<k>) \
+                     (closed form for degree <= 2)"
+                .to_string(),
+        };
+        let symbols: Vec<Value> = self
+            .eigenvalues
+            .iter()
+            .filter(|e| e.minpoly.deg() >= 3)
+            .map(|e| {
+                Value::Str(format!(
+                    "{} = root of {} near {}",
+                    e.symbol,
+                    e.minpoly,
+                    fmt_approx(e.approx)
+                ))
+            })
+            .collect();
+        let (jo, to) = match single {
+            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
+            None => self.j_t_out(),
+        };
+        let mut r = Report::titled("Jordan form")
+            .int("n", self.n())
+            .str("charpoly", self.charpoly.to_string())
+            .list("eigenvalues", evs)
+            .with("J", Value::Matrix(Box::new(jo)))
+            .with("T", Value::Matrix(Box::new(to)))
+            .str("presentation", presentation);
+        if !symbols.is_empty() {
+            r = r.list("symbols", symbols);
+        }
+        r.bool("verified", self.verified)
+    }
+}

@@ -1,0 +1,152 @@
+//! One primary component per irreducible factor $p$ of the characteristic polynomial.
+//!
+//! All roots $\theta_1, \dots, \theta_d$ of $p$ are handled at once in
+//! $K = \mathbb{Q}[t]/(p)$: the chains $V(t)$, $W(t)$ computed for the generic root $t$
+//! give, under each embedding $t \mapsto \theta_j$, the chains of $\theta_j$ (Galois
+//! conjugation), so nothing is recomputed per root. A rational eigenvalue ($\deg p = 1$)
+//! is computed directly over $\mathbb{Q}$.
+//!
+//! Identities checked exactly in $K$: $A V = V J_t$, $W A = J_t W$, $W V = I_m$.
+
+use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
+use crate::error::Result;
+use crate::field::number_field::NumberFieldCtx;
+use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::matrix::Matrix;
+use crate::poly::Poly;
+use std::sync::Arc;
+
+/// The data of one irreducible factor $p$ of $\chi_A$, in $K = \mathbb{Q}[t]/(p)$.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PrimaryComponent {
+    /// The monic irreducible factor $p$ (minimal polynomial of each of its roots).
+    pub factor: Poly<Q>,
+    /// Multiplicity of $p$ in $\chi_A$ = algebraic multiplicity of each root.
+    pub multiplicity: usize,
+    /// $K = \mathbb{Q}[t]/(p)$, marked at `roots[0]`.
+    pub field: NumberField,
+    /// Approximations of the roots $\theta_j$ (real part descending); the embedding
+    /// $t \mapsto \theta_j$ carries the chains to the root $\theta_j$.
+    pub roots: Vec<(f64, f64)>,
+    /// Jordan block sizes of each root, largest first.
+    pub blocks: Vec<usize>,
+    /// $\dim \ker (A - t I)^k$, $k = 1, \dots$ (over $K$).
+    pub kernel_dims: Vec<usize>,
+    /// Right chains $V$ ($n \times m$) over $K$: $A V = V J_t$.
+    pub chains: Matrix<NumberField>,
+    /// Left chains $W$ ($m \times n$) over $K$: $W A = J_t W$, $W V = I$.
+    pub left_chains: Matrix<NumberField>,
+}
+
+/// A number field $\mathbb{Q}[x]/(m)$ marked at `root`, displayed with variable `var`.
+pub(crate) fn named_field(m: &Poly<Q>, root: (f64, f64), var: &str) -> NumberField {
+    NumberField(Arc::new(NumberFieldCtx {
+        modulus: m.monic(),
+        root,
+        var: var.into(),
+    }))
+}
+
+/// $\mathbb{Q}$ as a number field of degree 1 (modulus $x$).
+pub(crate) fn rational_field() -> NumberField {
+    named_field(&Poly::x(Q), (0.0, 0.0), "t")
+}
+
+impl PrimaryComponent {
+    /// Computes the component of the irreducible monic `factor` (multiplicity `mult`).
+    ///
+    /// # Errors
+    /// `Verification` when the multiplicity does not match the generalized eigenspace.
+    pub(crate) fn compute(
+        a: &Matrix<Q>,
+        factor: &Poly<Q>,
+        mult: usize,
+        roots: Vec<(f64, f64)>,
+    ) -> Result<Self> {
+        let n = a.nrows();
+        if factor.deg() == 1 {
+            let theta: Rational = -factor.coeff(0);
+            let nm = a.try_sub(&Matrix::identity(Q, n).scale(&theta))?;
+            let ch = jordan_chains(&nm, mult)?;
+            let field = named_field(factor, roots[0], "t");
+            let lift = |m: &Matrix<Q>| m.map(&field, |x| field.from_rational(x));
+            return Ok(PrimaryComponent {
+                factor: factor.clone(),
+                multiplicity: mult,
+                roots,
+                blocks: ch.blocks,
+                kernel_dims: ch.kernel_dims,
+                chains: lift(&ch.v),
+                left_chains: lift(&ch.w),
+                field,
+            });
+        }
+        let field = named_field(factor, roots[0], "t");
+        let ak = a.convert_to(&field);
+        let t = field.generator();
+        let nm = ak.try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;
+        let Chains {
+            blocks,
+            kernel_dims,
+            v,
+            w,
+        } = jordan_chains(&nm, mult)?;
+        Ok(PrimaryComponent {
+            factor: factor.clone(),
+            multiplicity: mult,
+            roots,
+            blocks,
+            kernel_dims,
+            chains: v,
+            left_chains: w,
+            field,
+        })
+    }
+    /// Degree of the factor (number of conjugate eigenvalues).
+    pub fn degree(&self) -> usize {
+        self.factor.deg()
+    }
+    /// The generic root $t \in K$.
+    pub fn root_elem(&self) -> NfElem {
+        if self.degree() == 1 {
+            self.field.from_rational(&-self.factor.coeff(0))
+        } else {
+            self.field.generator()
+        }
+    }
+    /// Geometric multiplicity of each root (number of blocks).
+    pub fn geometric_multiplicity(&self) -> usize {
+        self.blocks.len()
+    }
+    /// $J_t$ over $K$ ($m \times m$).
+    pub fn jordan_matrix(&self) -> Matrix<NumberField> {
+        jordan_block_matrix(&self.field, &self.root_elem(), &self.blocks)
+    }
+    /// The same field marked at root `j` (the embedding $t \mapsto \theta_j$) with display
+    /// variable `var`.
+    pub fn embedding(&self, j: usize, var: &str) -> NumberField {
+        named_field(&self.factor, self.roots[j], var)
+    }
+    /// Exact check in $K$ of $A V = V J_t$, $W A = J_t W$ and $W V = I$.
+    pub fn verify(&self, a: &Matrix<Q>) -> bool {
+        let v = &self.chains;
+        let w = &self.left_chains;
+        if v.nrows() != a.nrows() || v.ncols() != self.multiplicity {
+            return false;
+        }
+        if self.degree() == 1 {
+            // over Q with the integer product kernel
+            let to_q = |m: &Matrix<NumberField>| crate::matrix::to_rational_matrix(m);
+            let (Some(vq), Some(wq), Some(jq)) = (to_q(v), to_q(w), to_q(&self.jordan_matrix()))
+            else {
+                return false;
+            };
+            return mul(a, &vq) == mul(&vq, &jq)
+                && mul(&wq, a) == mul(&jq, &wq)
+                && mul(&wq, &vq).is_identity();
+        }
+        let ak = a.convert_to(&self.field);
+        let j = self.jordan_matrix();
+        &ak * v == v * &j && w * &ak == &j * w && (w * v).is_identity()
+    }
+}

@@ -1,0 +1,96 @@
+//! Test and example systems for the Jordan module (the papers' matrices).
+#![allow(dead_code)]
+
+use crate::common::Rng;
+use exactlti::field::{Q, Rational};
+use exactlti::matrix::Matrix;
+
+pub fn r(n: i64, d: i64) -> Rational {
+    Rational::new(n.into(), d.into())
+}
+
+/// The 10-DOF sliding masses (minimal-realizations paper sec. 4.1): two fixed-fixed chains
+/// of five unit masses and unit springs; `A = [[0, I], [-K, 0]]`, 20x20.
+pub fn sliding_masses() -> Matrix<Q> {
+    let n = 10;
+    let mut k = Matrix::zeros(Q, n, n);
+    for g in [0, 5] {
+        for i in 0..5 {
+            k.set(g + i, g + i, r(2, 1));
+            if i < 4 {
+                k.set(g + i, g + i + 1, r(-1, 1));
+                k.set(g + i + 1, g + i, r(-1, 1));
+            }
+        }
+    }
+    let mut a = Matrix::zeros(Q, 20, 20);
+    a.set_block(0, 10, &Matrix::identity(Q, 10));
+    a.set_block(10, 0, &(-&k));
+    a
+}
+
+/// Yaw-plane model, vehicle paper eq. 25.
+pub fn yaw_plane(
+    m: Rational,
+    izz: Rational,
+    a: Rational,
+    b: Rational,
+    cf: Rational,
+    cr: Rational,
+    u: Rational,
+) -> Matrix<Q> {
+    let z = Rational::from_integer(0.into());
+    let one = Rational::from_integer(1.into());
+    let mu = &m * &u;
+    let iu = &izz * &u;
+    let k1 = &a * &cf - &b * &cr;
+    Matrix::from_rows(
+        Q,
+        vec![
+            vec![z.clone(), u.clone(), -&one, z.clone()],
+            vec![z.clone(), z.clone(), z.clone(), -&one],
+            vec![z.clone(), z.clone(), -(&cf + &cr) / &mu, -(&k1 / &mu) - &u],
+            vec![
+                z.clone(),
+                z.clone(),
+                -(&k1 / &iu),
+                -((&a * &a * &cf + &b * &b * &cr) / &iu),
+            ],
+        ],
+    )
+    .unwrap()
+}
+
+/// `A = P J P^-1` with a random block structure over the eigenvalues `0, -1, 2, -3, 1/2`
+/// (as the anchors' `planted_jordan`) and a random invertible integer `P` (entries in
+/// -2..=2); returns `A` and the `(eigenvalue, size)` blocks.
+pub fn planted(n: usize, seed: u64) -> (Matrix<Q>, Vec<(Rational, usize)>) {
+    let mut rng = Rng(seed);
+    let evs = [r(0, 1), r(-1, 1), r(2, 1), r(-3, 1), r(1, 2)];
+    let mut blocks = vec![];
+    let mut size = 0;
+    while size < n {
+        let k = [1, 1, 2, 3][rng.int(0, 3) as usize].min(n - size);
+        blocks.push((evs[rng.int(0, 4) as usize].clone(), k));
+        size += k;
+    }
+    let mut j = Matrix::zeros(Q, n, n);
+    let mut off = 0;
+    for (lam, k) in &blocks {
+        for i in 0..*k {
+            j.set(off + i, off + i, lam.clone());
+            if i + 1 < *k {
+                j.set(off + i, off + i + 1, r(1, 1));
+            }
+        }
+        off += k;
+    }
+    loop {
+        let p = Matrix::from_fn(Q, n, n, |_, _| {
+            Rational::from_integer(rng.int(-2, 2).into())
+        });
+        if let Ok(pi) = p.inverse() {
+            return (&(&p * &j) * &pi, blocks);
+        }
+    }
+}

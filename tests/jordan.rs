@@ -1,0 +1,409 @@
+//! Jordan decomposition: the papers' examples, properties on planted structures, errors.
+
+mod common;
+#[path = "common/jordan.rs"]
+mod jcommon;
+
+use exactlti::Error;
+use exactlti::field::{Field, NfElem, NumberField, Q, Rational};
+use exactlti::jordan::{JordanForm, jordan};
+use exactlti::matrix::Matrix;
+use exactlti::poly::Poly;
+use exactlti::qmat;
+use jcommon::{planted, r, sliding_masses, yaw_plane};
+
+fn blocks_of(jf: &JordanForm, value: &str) -> Vec<usize> {
+    jf.eigenvalues
+        .iter()
+        .find(|e| e.value == value)
+        .unwrap_or_else(|| panic!("no eigenvalue {value} in {:?}", values(jf)))
+        .blocks
+        .clone()
+}
+
+fn values(jf: &JordanForm) -> Vec<String> {
+    jf.eigenvalues.iter().map(|e| e.value.clone()).collect()
+}
+
+/// Q(sqrt 2) and a + b sqrt 2.
+fn qsqrt2() -> NumberField {
+    NumberField::new(&Poly::from_i64s(&[-2, 0, 1]), (2f64.sqrt(), 0.0)).unwrap()
+}
+fn s2(a: Rational, b: Rational) -> NfElem {
+    let k = qsqrt2();
+    k.add(
+        &k.from_rational(&a),
+        &k.mul(&k.from_rational(&b), &k.generator()),
+    )
+}
+
+#[test]
+fn vehicle_eq_11_14_complex_pair() {
+    let a = qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]];
+    let jf = jordan(&a).unwrap();
+    assert!(jf.verified);
+    assert_eq!(values(&jf), ["-2", "-1 + i", "-1 - i"]);
+    let (j, t) = jf.single_field().expect("Q(i)");
+    assert_eq!(j.field().0.var, "i");
+    assert_eq!(&a.convert_to(j.field()) * &t, &t * &j);
+    let rf = jf.real_form().unwrap();
+    assert!(rf.exact && rf.verified);
+    let (jr, tr) = rf.single_field().expect("over Q");
+    assert_eq!(jr.to_string(), "[[-2, 0, 0], [0, -1, 1], [0, -1, -1]]");
+    assert_eq!(&a.convert_to(jr.field()) * &tr, &tr * &jr);
+    // the paper's T (eq. 14, up to the scale 0.41) is valid for the paper's J (eq. 12)
+    let tp = qmat![[0, 0, 1], [-1, -1, 0], [2, 0, 0]];
+    let jp = qmat![[-1, 1, 0], [-1, -1, 0], [0, 0, -2]];
+    assert_eq!(&a * &tp, &tp * &jp);
+}
+
+#[test]
+fn vehicle_eq_15_17_point_mass_a1_diagonalizable() {
+    let a1 = qmat![[0, 0, 1, 0], [0, 0, 0, 1], [0, 0, -1, 0], [0, 0, 0, -1]];
+    let jf = jordan(&a1).unwrap();
+    assert!(jf.verified);
+    assert_eq!(blocks_of(&jf, "0"), [1, 1]);
+    assert_eq!(blocks_of(&jf, "-1"), [1, 1]);
+    for e in &jf.eigenvalues {
+        assert_eq!((e.algebraic_multiplicity, e.geometric_multiplicity), (2, 2));
+    }
+    // eq. 16-17 over Q(sqrt 2): A1 T = T J, T invertible
+    let k = qsqrt2();
+    let h = s2(r(0, 1), r(1, 2)); // 1/sqrt 2 = sqrt(2)/2
+    let (z, o) = (k.zero(), k.one());
+    let t = Matrix::from_rows(
+        k.clone(),
+        vec![
+            vec![o.clone(), z.clone(), k.neg(&h), z.clone()],
+            vec![z.clone(), o.clone(), z.clone(), k.neg(&h)],
+            vec![z.clone(), z.clone(), h.clone(), z.clone()],
+            vec![z.clone(), z.clone(), z.clone(), h.clone()],
+        ],
+    )
+    .unwrap();
+    let j = qmat![[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, -1, 0], [0, 0, 0, -1]].convert_to(&k);
+    assert_eq!(&a1.convert_to(&k) * &t, &t * &j);
+    assert_eq!(t.rank(), 4);
+}
+
+#[test]
+fn vehicle_eq_18_23_point_mass_a2_two_blocks() {
+    let a2 = qmat![[0, 0, 1, 0], [0, 0, 0, 1], [-1, 0, -2, 0], [0, 0, 0, 0]];
+    let jf = jordan(&a2).unwrap();
+    assert!(jf.verified);
+    assert_eq!(blocks_of(&jf, "0"), [2]);
+    assert_eq!(blocks_of(&jf, "-1"), [2]);
+    for e in &jf.eigenvalues {
+        assert_eq!((e.algebraic_multiplicity, e.geometric_multiplicity), (2, 1));
+    }
+    let (j, t) = jf.single_field().unwrap();
+    assert_eq!(&a2.convert_to(j.field()) * &t, &t * &j);
+    // eq. 22 (1/2sqrt2 = sqrt(2)/4) is one valid transform for eq. 23
+    let k = qsqrt2();
+    let h = s2(r(0, 1), r(1, 2));
+    let q = s2(r(0, 1), r(1, 4));
+    let (z, o) = (k.zero(), k.one());
+    let t22 = Matrix::from_rows(
+        k.clone(),
+        vec![
+            vec![z.clone(), z.clone(), h.clone(), q.clone()],
+            vec![o.clone(), z.clone(), z.clone(), z.clone()],
+            vec![z.clone(), z.clone(), k.neg(&h), q.clone()],
+            vec![z.clone(), o.clone(), z.clone(), z.clone()],
+        ],
+    )
+    .unwrap();
+    let j23 = qmat![[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, -1, 1], [0, 0, 0, -1]].convert_to(&k);
+    assert_eq!(&a2.convert_to(&k) * &t22, &t22 * &j23);
+    assert_eq!(t22.rank(), 4);
+    // our J has the same structure as eq. 23
+    let mut got = jf
+        .eigenvalues
+        .iter()
+        .map(|e| e.blocks.clone())
+        .collect::<Vec<_>>();
+    got.sort();
+    assert_eq!(got, [vec![2], vec![2]]);
+}
+
+#[test]
+fn vehicle_eq_24_26_yaw_plane_understeer() {
+    let a = yaw_plane(
+        r(1500, 1),
+        r(2500, 1),
+        r(6, 5),
+        r(7, 5),
+        r(80000, 1),
+        r(80000, 1),
+        r(20, 1),
+    );
+    let jf = jordan(&a).unwrap();
+    assert!(jf.verified);
+    let zero = jf.eigenvalues.iter().find(|e| e.value == "0").unwrap();
+    assert_eq!(zero.algebraic_multiplicity, 2);
+    let pair: Vec<_> = jf
+        .eigenvalues
+        .iter()
+        .filter(|e| e.approx.1 != 0.0)
+        .collect();
+    assert_eq!(pair.len(), 2, "understeer: a complex pair");
+    assert!(
+        pair.iter()
+            .all(|e| e.approx.0 < 0.0 && e.minpoly.deg() == 2)
+    );
+    let rf = jf.real_form().unwrap();
+    assert!(rf.exact && rf.verified, "{:?}", rf.notes);
+}
+
+#[test]
+fn vehicle_eq_27_35_single_wheel_three_zeros_one_block() {
+    let (m, u, cr) = (r(1500, 1), r(20, 1), r(80000, 1));
+    let a = yaw_plane(
+        m.clone(),
+        r(2500, 1),
+        r(6, 5),
+        r(0, 1),
+        r(0, 1),
+        cr.clone(),
+        u.clone(),
+    );
+    let jf = jordan(&a).unwrap();
+    assert!(jf.verified);
+    assert_eq!(blocks_of(&jf, "0"), [3]);
+    let s = -(&cr / (&m * &u));
+    assert_eq!(s, r(-8, 3));
+    assert_eq!(blocks_of(&jf, "-8/3"), [1]);
+    // the paper's T (eq. 34) is valid for J (eq. 35)
+    let t34 = Matrix::from_rows(
+        Q,
+        vec![
+            vec![r(1, 1), r(0, 1), r(0, 1), &m * &u / &cr],
+            vec![r(0, 1), r(1, 1) / &u, &m / &cr, r(0, 1)],
+            vec![r(0, 1), r(0, 1), &m * &u / &cr, r(1, 1)],
+            vec![r(0, 1), r(0, 1), -(r(1, 1) / &u), r(0, 1)],
+        ],
+    )
+    .unwrap();
+    let mut j35 = qmat![[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 0], [0, 0, 0, 0]];
+    j35.set(3, 3, s.clone());
+    assert_eq!(&a * &t34, &t34 * &j35);
+    assert_eq!(t34.rank(), 4);
+    // ours: A T = T J exactly, over Q
+    let (j, t) = jf.single_field().unwrap();
+    assert_eq!(j.field().degree(), 1);
+    assert_eq!(&a.convert_to(j.field()) * &t, &t * &j);
+}
+
+#[test]
+fn vehicle_eq_36_37_free_response_term_by_term() {
+    let (m, u, cr) = (r(1500, 1), r(20, 1), r(80000, 1));
+    let a = yaw_plane(
+        m.clone(),
+        r(2500, 1),
+        r(6, 5),
+        r(0, 1),
+        r(0, 1),
+        cr.clone(),
+        u.clone(),
+    );
+    let jf = jordan(&a).unwrap();
+    let fr = jf.free_response();
+    assert!(fr.verify(&jf));
+    let s = -(&cr / (&m * &u));
+    // paper constants (y0, psi0, v0, r0) and the initial state they mean (eq. 37 at t = 0)
+    for (y0, p0, v0, r0) in [
+        (1, 0, 0, 0),
+        (0, 1, 0, 0),
+        (0, 0, 1, 0),
+        (0, 0, 0, 1),
+        (3, -2, 5, 7),
+    ] {
+        let (y0, p0, v0, r0) = (r(y0, 1), r(p0, 1), r(v0, 1), r(r0, 1));
+        let x0 = Matrix::column(
+            Q,
+            vec![&y0 - &v0 / &s, p0.clone(), &r0 * &u / &s + &v0, r0.clone()],
+        );
+        let ev_zero = jf.eigenvalues.iter().position(|e| e.value == "0").unwrap();
+        let ev_s = jf
+            .eigenvalues
+            .iter()
+            .position(|e| e.value == "-8/3")
+            .unwrap();
+        let get = |ev: usize, power: usize| -> Vec<Rational> {
+            let tv = fr.term_vectors(&jf, ev, &x0);
+            let v = tv.iter().find(|(p, _)| *p == power).map(|(_, v)| v.clone());
+            match v {
+                Some(v) => (0..4)
+                    .map(|i| v.field().to_rational(v.get(i, 0)).unwrap())
+                    .collect(),
+                None => vec![r(0, 1); 4],
+            }
+        };
+        let z = r(0, 1);
+        // e^{0t}: (y0, psi0, r0 u / s, r0)
+        assert_eq!(
+            get(ev_zero, 0),
+            [y0.clone(), p0.clone(), &r0 * &u / &s, r0.clone()]
+        );
+        // t e^{0t}: ((psi0 - r0/s) u, -r0, 0, 0)
+        assert_eq!(
+            get(ev_zero, 1),
+            [(&p0 - &r0 / &s) * &u, -&r0, z.clone(), z.clone()]
+        );
+        // t^2 e^{0t}: (-r0 u / 2, 0, 0, 0)
+        assert_eq!(
+            get(ev_zero, 2),
+            [-(&r0 * &u) / r(2, 1), z.clone(), z.clone(), z.clone()]
+        );
+        // e^{st}: (-v0/s, 0, v0, 0)
+        assert_eq!(
+            get(ev_s, 0),
+            [-(&v0 / &s), z.clone(), v0.clone(), z.clone()]
+        );
+        assert!(get(ev_zero, 3).iter().all(|c| *c == z));
+    }
+}
+
+#[test]
+fn sliding_masses_ten_pairs_diagonalizable() {
+    let a = sliding_masses();
+    let jf = jordan(&a).unwrap();
+    assert!(jf.verified);
+    assert_eq!(jf.eigenvalues.len(), 10);
+    let mut ims: Vec<f64> = jf.eigenvalues.iter().map(|e| e.approx.1).collect();
+    ims.sort_by(f64::total_cmp);
+    let mut want: Vec<f64> = (1..=5)
+        .flat_map(|k| {
+            let w = (2.0 - 2.0 * (k as f64 * std::f64::consts::PI / 6.0).cos()).sqrt();
+            [w, -w]
+        })
+        .collect();
+    want.sort_by(f64::total_cmp);
+    for (g, w) in ims.iter().zip(&want) {
+        assert!((g - w).abs() < 1e-12, "{g} vs {w}");
+    }
+    for e in &jf.eigenvalues {
+        assert!(e.approx.0 == 0.0, "purely imaginary, exactly");
+        assert_eq!(e.blocks, [1, 1], "{}", e.value);
+        assert_eq!((e.algebraic_multiplicity, e.geometric_multiplicity), (2, 2));
+    }
+    let vals = values(&jf);
+    for v in [
+        "i*sqrt(2 - sqrt(3))",
+        "-i*sqrt(2 + sqrt(3))",
+        "i",
+        "sqrt(2)*i",
+        "-sqrt(3)*i",
+    ] {
+        assert!(vals.contains(&v.to_string()), "{v} not in {vals:?}");
+    }
+    let rf = jf.real_form().unwrap();
+    assert!(rf.exact && rf.verified, "{:?}", rf.notes);
+    let fr = jf.free_response();
+    assert!(fr.verify(&jf));
+}
+
+#[test]
+fn minimal_realization_paper_sec_3_2_examples() {
+    // eq. 25-27 of the minimal-realization paper are the vehicle paper's eq. 11-14; the
+    // point-mass A2 (eq. 29-32) has two 2x2 blocks
+    let a = qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]];
+    let rf = jordan(&a).unwrap().real_form().unwrap();
+    let (j, _) = rf.single_field().unwrap();
+    assert!(j.to_string().contains("[0, -1, 1], [0, -1, -1]"));
+    let a2 = qmat![[0, 0, 1, 0], [0, 0, 0, 1], [-1, 0, -2, 0], [0, 0, 0, 0]];
+    let jf = jordan(&a2).unwrap();
+    assert!(jf.eigenvalues.iter().all(|e| e.blocks == [2]));
+}
+
+#[test]
+fn planted_structures_properties() {
+    for seed in 0..common::iters(6) as u64 {
+        let n = 3 + (seed as usize % 6);
+        let (a, blocks) = planted(n, seed + 11);
+        let jf = jordan(&a).unwrap();
+        assert!(jf.verified, "A = {a}");
+        for e in &jf.eigenvalues {
+            let lam = Q.to_rational(&-e.minpoly.coeff(0)).unwrap();
+            let mut want: Vec<usize> = blocks
+                .iter()
+                .filter(|(l, _)| *l == lam)
+                .map(|(_, k)| *k)
+                .collect();
+            want.sort_by(|x, y| y.cmp(x));
+            assert_eq!(e.blocks, want, "A = {a}");
+        }
+        let (j, t) = jf.single_field().unwrap();
+        assert_eq!(&a.convert_to(j.field()) * &t, &t * &j, "A = {a}");
+        assert!(jf.free_response().verify(&jf));
+        // deterministic
+        assert_eq!(jordan(&a).unwrap(), jf);
+    }
+}
+
+#[test]
+fn irrational_and_non_exact_real_cases_are_explicit() {
+    // companion of x^3 - 2: one real cube root and a complex pair with Re != 0
+    let a = qmat![[0, 1, 0], [0, 0, 1], [2, 0, 0]];
+    let jf = jordan(&a).unwrap();
+    assert!(jf.verified);
+    assert!(jf.single_field().is_none());
+    let rep = jf.report().to_json();
+    assert!(!rep["T"][0][0].as_str().unwrap().is_empty());
+    assert_eq!(rep["verified"], true);
+    let rf = jf.real_form().unwrap();
+    assert!(rf.exact || !rf.notes.is_empty(), "never silently inexact");
+    if !rf.exact {
+        assert!(!rf.verified);
+    }
+    // golden ratio: Q(sqrt 5)
+    let g = qmat![[1, 1], [1, 0]];
+    let jf = jordan(&g).unwrap();
+    assert!(
+        values(&jf).contains(&"1/2 + sqrt(5)/2".to_string())
+            || values(&jf).contains(&"(1 + sqrt(5))/2".to_string()),
+        "{:?}",
+        values(&jf)
+    );
+    assert!(jf.single_field().is_some() && jf.verified);
+}
+
+#[test]
+fn report_keys_follow_the_contract() {
+    let a = qmat![[0, 0, 1, 0], [0, 0, 0, 1], [-1, 0, -2, 0], [0, 0, 0, 0]];
+    let js = jordan(&a).unwrap().report().to_json();
+    for key in ["eigenvalues", "J", "T", "J_approx", "T_approx", "verified"] {
+        assert!(js.get(key).is_some(), "missing {key}: {js}");
+    }
+    let e = &js["eigenvalues"][0];
+    for key in [
+        "minpoly",
+        "value",
+        "approx",
+        "algebraic_multiplicity",
+        "geometric_multiplicity",
+        "blocks",
+    ] {
+        assert!(e.get(key).is_some(), "missing {key}: {e}");
+    }
+    let rj = jordan(&qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]])
+        .unwrap()
+        .real_form()
+        .unwrap()
+        .report()
+        .to_json();
+    assert_eq!(rj["verified"], true);
+    assert_eq!(rj["J"][1][2], "1");
+}
+
+#[test]
+fn bad_input_and_edge_shapes() {
+    let ns = Matrix::<Q>::zeros(Q, 2, 3);
+    assert!(matches!(jordan(&ns), Err(Error::NotSquare { .. })));
+    let empty = Matrix::<Q>::zeros(Q, 0, 0);
+    let jf = jordan(&empty).unwrap();
+    assert!(jf.verified && jf.eigenvalues.is_empty());
+    let one = qmat![[5]];
+    let jf = jordan(&one).unwrap();
+    assert_eq!(values(&jf), ["5"]);
+}
