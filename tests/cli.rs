@@ -228,3 +228,47 @@ fn modes_command() {
         assert!(modes[0].get(k).is_some(), "{k}");
     }
 }
+
+#[test]
+fn jordan_and_check_commands() {
+    let j = json(&["jordan", "tests/data/vehicle_eq11.json"]);
+    assert_eq!(j["verified"], true);
+    let evs = j["eigenvalues"].as_array().unwrap();
+    assert_eq!(evs.len(), 3);
+    for k in [
+        "minpoly",
+        "value",
+        "approx",
+        "algebraic_multiplicity",
+        "geometric_multiplicity",
+        "blocks",
+    ] {
+        assert!(evs[0].get(k).is_some(), "eigenvalue key {k}");
+    }
+    assert!(evs.iter().any(|e| e["value"] == "-1 + i"));
+    assert!(j["J_approx"].is_array() && j["T_approx"].is_array());
+    let r = json(&["jordan", "--real", "tests/data/vehicle_eq11.json"]);
+    assert_eq!(r["verified"], true);
+    assert_eq!(
+        r["J"],
+        serde_json::json!([["-2", "0", "0"], ["0", "-1", "1"], ["0", "-1", "-1"]])
+    );
+    // the scrambled 3x3 nilpotent block: exact path one block [3]; float sees a scattered triple
+    let c = json(&["check", "tests/data/yaw_scrambled.json"]);
+    let js = &c["comparisons"]["jordan_structure"];
+    assert_eq!(js["exact_verified"], true);
+    assert!(
+        js["max_float_eigenvalue_error"].as_f64().unwrap() > 1e-8,
+        "float scatters the triple zero"
+    );
+    assert!(!js["float_warnings"].as_array().unwrap().is_empty());
+    let e0 = js["eigenvalues"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|e| e["eigenvalue"] == "0")
+        .unwrap();
+    assert_eq!(e0["exact_blocks"], serde_json::json!([3]));
+    let (code, _, err) = run(&["jordan", "tests/data/invalid_shape.json"]);
+    assert_eq!(code, 2, "{err}");
+}

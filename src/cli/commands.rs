@@ -26,6 +26,16 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         Command::Standard { file } => standard(file),
         Command::Analyze { file } => analyze(file.as_deref()),
         Command::Poly { op } => poly(op),
+        Command::Jordan { file, real } => {
+            let l = load_system(file)?;
+            let t = l.rational("the Jordan decomposition")?;
+            let jf = crate::jordan::jordan(&t.a_raw).map_err(|e| with_path(file, e))?;
+            if *real {
+                Ok(jf.real_form().map_err(|e| with_path(file, e))?.report())
+            } else {
+                Ok(jf.report())
+            }
+        }
         Command::Modes { file } => {
             let l = load_system(file)?;
             let t = l.rational("the modal table")?;
@@ -66,16 +76,18 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         }
         Command::Check { file } => {
             let l = load_system(file)?;
-            over_ground!(l, |t| super::float_cmds::check(t, file, vec![]))
+            match &l {
+                Loaded::Q(_, t) => {
+                    let extra = super::float_cmds::jordan_comparison(&t.a_raw, file)?;
+                    super::float_cmds::check(t, file, extra)
+                }
+                Loaded::Quadratic(_, t) => super::float_cmds::check(t, file, vec![]),
+            }
         }
         Command::Zeros { file } => {
             let l = load_system(file)?;
             over_ground!(l, |t| zeros_typed(t, file))
         }
-        other => Err(Failure {
-            code: 2,
-            message: format!("command not available in this build: {other:?}"),
-        }),
     }
 }
 
@@ -294,6 +306,26 @@ fn analyze(file: Option<&Path>) -> Result<Report, Failure> {
     match &l {
         Loaded::Q(f, t) => {
             let mut r = analyze_typed(f, t)?;
+            match crate::jordan::jordan(&t.ss.a) {
+                Ok(jf) => {
+                    let mut sec = jf.report();
+                    sec.title = Some("eigenvalues and Jordan form".into());
+                    if let Ok(rf) = jf.real_form() {
+                        sec.push("real_form", Value::Obj(rf.report()));
+                    }
+                    sec.push("free_response", Value::Obj(jf.free_response().report(&jf)));
+                    r.push("jordan", Value::Obj(sec));
+                }
+                Err(e) => {
+                    r.push(
+                        "jordan",
+                        Value::Obj(
+                            Report::titled("eigenvalues and Jordan form")
+                                .str("error", e.to_string()),
+                        ),
+                    );
+                }
+            }
             if let Ok(m) = realization::modal_table(&t.ss.a) {
                 r.push("modes", Value::Obj(m.report()));
             }
