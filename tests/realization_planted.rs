@@ -4,7 +4,7 @@
 //! (`cargo bench --bench realization`) runs n up to 100.
 mod common;
 
-use common::systems::{Planted, planted};
+use common::systems::{Planted, planted, planted_scaled};
 use exactlti::field::{Q, Rational};
 use exactlti::float::{Tol, minreal as float_minreal, to_dmatrix};
 use exactlti::matrix::Matrix;
@@ -30,7 +30,10 @@ fn check_construction(pl: &Planted) {
     // G(s) = C1 (sI - A11)^-1 B1: equal Markov parameters up to n + r suffice.
     assert!(pl.sys.same_markov(&pl.core, n + pl.order));
     let [co, cno, nco, ncno] = pl.parts;
-    assert_eq!(controllability_matrix(&pl.sys.a, &pl.sys.b).rank(), co + cno);
+    assert_eq!(
+        controllability_matrix(&pl.sys.a, &pl.sys.b).rank(),
+        co + cno
+    );
     assert_eq!(observability_matrix(&pl.sys.a, &pl.sys.c).rank(), co + nco);
     let _ = ncno;
     // entries stay exactly representable in binary floating point (denominators 1 or 2)
@@ -76,6 +79,22 @@ fn planted_every_method_finds_the_true_order() {
             }
         }
     }
+}
+
+#[test]
+fn stiff_planted_every_method_finds_the_true_order() {
+    // Hidden modes 16 times larger than the core: the exact order does not move.
+    for (n, seed) in [(8usize, 1u64), (14, 2)] {
+        let pl = planted_scaled(n, seed, 16);
+        check_construction(&pl);
+        for m in METHODS {
+            let r = minimal(&pl.sys, m).unwrap();
+            assert_eq!(r.order, pl.order, "n {n} seed {seed} {m:?}");
+            assert!(r.verified, "n {n} seed {seed} {m:?}");
+        }
+    }
+    // scale 1 is the plain family
+    assert_eq!(planted_scaled(8, 4, 1).sys.a, planted(8, 4).sys.a);
 }
 
 #[test]

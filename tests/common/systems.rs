@@ -86,6 +86,15 @@ impl PlantRng {
 /// and $T^{-1}$ are integer and the entries of the result keep denominators 1 or 2 (exactly
 /// representable as `f64`: the float tools see the same system).
 pub fn planted(n: usize, seed: u64) -> Planted {
+    planted_scaled(n, seed, 1)
+}
+
+/// As [`planted`], with the hidden diagonal blocks $A_{22}, A_{33}, A_{44}$ multiplied by
+/// the integer `hidden_scale` (a power of two keeps the f64 image exact). Large hidden
+/// modes are what a float staircase cannot separate from the core: its rounding errors grow
+/// by about $\lVert A_{33}\rVert / \sigma_{\min}$ of a coupling block at every step, while
+/// the exact order is unaffected (the McMillan degree is still `n / 2`).
+pub fn planted_scaled(n: usize, seed: u64, hidden_scale: i64) -> Planted {
     let mut rng = PlantRng(seed ^ 0x5EED_0000_0000_0000);
     let (m, p) = (2, 2);
     let r = n / 2;
@@ -126,6 +135,10 @@ pub fn planted(n: usize, seed: u64) -> Planted {
     ] {
         let blk = if (i, j) == (0, 0) {
             core.a.clone()
+        } else if i == j {
+            let s = Rational::from_integer(hidden_scale.into());
+            let m = rng.matrix(parts[i], parts[j]);
+            Matrix::from_fn(Q, parts[i], parts[j], |r, c| m.get(r, c) * &s)
         } else {
             rng.matrix(parts[i], parts[j])
         };
@@ -146,7 +159,11 @@ pub fn planted(n: usize, seed: u64) -> Planted {
             if j >= i {
                 j += 1;
             }
-            let f = if rng.int(0, 1) == 0 { -one.clone() } else { one.clone() };
+            let f = if rng.int(0, 1) == 0 {
+                -one.clone()
+            } else {
+                one.clone()
+            };
             // E = I + f e_i e_j^T: T E adds f * (column i) to column j;
             // E^-1 T^-1 subtracts f * (row j) from row i.
             for row in 0..n {
