@@ -87,6 +87,18 @@ pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
         let _ = (m, n, a);
         None
     }
+    /// Row-major product of `m x k` and `k x n`; see [`Field::fast_rref`].
+    fn fast_mul(
+        &self,
+        m: usize,
+        k: usize,
+        n: usize,
+        a: &[Self::Elem],
+        b: &[Self::Elem],
+    ) -> Option<Vec<Self::Elem>> {
+        let _ = (m, k, n, a, b);
+        None
+    }
     /// See [`Field::fast_rref`].
     fn fast_rank(&self, m: usize, n: usize, a: &[Self::Elem]) -> Option<usize> {
         let _ = (m, n, a);
