@@ -24,7 +24,7 @@ fn json(args: &[&str]) -> serde_json::Value {
 
 #[test]
 fn minreal_sliding_masses_every_exact_method() {
-    for m in ["kalman", "rosenbrock", "ho-kalman"] {
+    for m in ["kalman", "rosenbrock", "ho-kalman", "jordan"] {
         let j = json(&["minreal", "data/sliding-masses.json", "--method", m]);
         assert_eq!(j["order"], 8, "method {m}");
         assert_eq!(j["mcmillan_degree"], 8);
@@ -32,6 +32,8 @@ fn minreal_sliding_masses_every_exact_method() {
         assert_eq!(j["A"].as_array().unwrap().len(), 8);
         assert_eq!(j["A_approx"].as_array().unwrap().len(), 8);
     }
+    let j = json(&["minreal", "data/sliding-masses.json", "--method", "jordan"]);
+    assert_eq!(j["stages"], serde_json::json!([20, 16, 8]));
 }
 
 #[test]

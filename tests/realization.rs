@@ -294,3 +294,74 @@ fn modal_table_sliding_masses_matches_paper_tab1() {
     assert!((t.modes[0].damping_ratio.unwrap() - 0.5f64.sqrt()).abs() < 1e-15);
     assert_eq!(t.modes[0].eigenvalue, "-1 + i");
 }
+
+#[test]
+fn jordan_method_sliding_masses_20_16_8() {
+    let sys = sliding_masses();
+    let r = minimal_jordan(&sys).unwrap();
+    assert_eq!(
+        r.stages,
+        [20, 16, 8],
+        "drop the four modes at +/- i sqrt 2, then compact"
+    );
+    assert!(r.verified);
+    assert_eq!(r.mcmillan_degree, 8);
+    // sparse real Jordan pattern: 4 blocks [[0, w], [-w, 0]] with 4 distinct magnitudes
+    assert_eq!(r.blocks.len(), 4);
+    let mut mags = vec![];
+    for b in &r.blocks {
+        assert_eq!(b.a.nrows(), 2);
+        let f = &b.field;
+        assert!(f.is_zero(b.a.get(0, 0)) && f.is_zero(b.a.get(1, 1)));
+        assert_eq!(f.neg(b.a.get(0, 1)), *b.a.get(1, 0));
+        mags.push(f.approx(b.a.get(0, 1)).0.abs());
+    }
+    mags.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    let want = [
+        0.5176380902050415,
+        1.0,
+        1.7320508075688772,
+        1.9318516525781366,
+    ];
+    for (g, w) in mags.iter().zip(want) {
+        assert!((g - w).abs() < 1e-12, "{g} vs {w}");
+    }
+}
+
+#[test]
+fn jordan_method_agrees_with_kalman_on_rational_and_quadratic_modes() {
+    // real, repeated and complex-quadratic modes, with a non-trivial Jordan block
+    let a = qmat![
+        [-1, 1, 0, 0, 0],
+        [0, -1, 0, 0, 0],
+        [0, 0, -1, 0, 0],
+        [0, 0, 0, 0, 1],
+        [0, 0, 0, -2, -2]
+    ];
+    let b = qmat![[0, 1], [1, 0], [1, 1], [0, 0], [1, 0]];
+    let c = qmat![[1, 0, 1, 1, 0], [0, 1, 0, 0, 1]];
+    let mut rng = Rng(5);
+    let t = unimodular(&Q, 5, &mut rng);
+    let sys = StateSpace::new_strictly_proper(a, b, c)
+        .unwrap()
+        .transform(&t)
+        .unwrap();
+    let r = minimal_jordan(&sys).unwrap();
+    assert!(r.verified);
+    assert_eq!(r.order(), mcmillan_degree(&sys));
+    let rs = r
+        .to_rational()
+        .expect("all modes rational or Q(i) pairs with rational parts");
+    assert!(rs.same_markov(&sys, 2 * 5));
+    // a cubic factor with complex roots is refused explicitly, not approximated
+    let cubic = StateSpace::new_strictly_proper(
+        qmat![[0, 1, 0], [0, 0, 1], [2, 0, 0]],
+        qmat![[0], [0], [1]],
+        qmat![[1, 0, 0]],
+    )
+    .unwrap();
+    assert!(matches!(
+        minimal_jordan(&cubic),
+        Err(exactlti::Error::Unsupported(_))
+    ));
+}

@@ -147,6 +147,12 @@ fn minreal_typed<K: Field>(t: &Typed<K>, m: MinrealMethod, path: &Path) -> Resul
 
 fn minreal(file: &Path, method: MethodArg) -> Result<Report, Failure> {
     let l = load_system(file)?;
+    if method == MethodArg::Jordan {
+        let t = l.rational("the Jordan-form method")?;
+        return Ok(realization::minimal_jordan(&t.ss)
+            .map_err(|e| with_path(file, e))?
+            .report());
+    }
     let m = match method {
         MethodArg::Kalman => MinrealMethod::Kalman,
         MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,

@@ -21,7 +21,7 @@ pub mod complex;
 pub mod number_field;
 pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
-pub use number_field::{NfElem, NumberField};
+pub use number_field::{NfElem, NumberField, NumberFieldCtx};
 pub mod rational;
 pub use quadratic::{Quadratic, QuadraticField};
 pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
