@@ -111,7 +111,7 @@ fn power_sums(p: &Poly<Q>, m: usize) -> Vec<Rational> {
     let e = |i: usize| -> Rational {
         // coefficient of x^{d-i} is (-1)^i e_i
         let c = p.coeff(d - i);
-        if i % 2 == 0 { c } else { -c }
+        if i.is_multiple_of(2) { c } else { -c }
     };
     let mut s: Vec<Rational> = vec![Rational::from_integer(d.into())];
     for j in 1..m {
@@ -273,7 +273,7 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
                 }));
                 let conv = |m: &Matrix<NumberField>| m.map(&f, |x| x.clone());
                 if p.deg() > 1 {
-                    symbols.push((var, format!("root of {} near {re:.10}", p.to_string())));
+                    symbols.push((var, format!("root of {p} near {re:.10}")));
                 }
                 let ev = if p.deg() == 1 {
                     crate::field::fmt_rational(&-p.coeff(0))
@@ -293,11 +293,7 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
             if f.degree() > 1 {
                 symbols.push((
                     var,
-                    format!(
-                        "root of {} near {:.10}",
-                        f.modulus().to_string(),
-                        f.root_approx().0
-                    ),
+                    format!("root of {} near {:.10}", f.modulus(), f.root_approx().0),
                 ));
             }
             let cf = ComplexField::new(f.clone());
