@@ -365,3 +365,47 @@ fn jordan_method_agrees_with_kalman_on_rational_and_quadratic_modes() {
         Err(exactlti::Error::Unsupported(_))
     ));
 }
+
+#[test]
+fn pbh_agrees_with_kalman_rank_tests() {
+    let mut rng = Rng(21);
+    for _ in 0..iters(20) {
+        let (sys, _) = padded(&Q, &None, &mut rng);
+        assert_eq!(
+            pbh_controllable(&sys.a, &sys.b).unwrap(),
+            is_controllable(&sys.a, &sys.b),
+            "A = {}",
+            sys.a
+        );
+        assert_eq!(
+            pbh_observable(&sys.a, &sys.c).unwrap(),
+            is_observable(&sys.a, &sys.c),
+            "A = {}",
+            sys.a
+        );
+    }
+    let s = sliding_masses();
+    assert!(!pbh_controllable(&s.a, &s.b).unwrap());
+    assert!(!pbh_observable(&s.a, &s.c).unwrap());
+}
+
+#[test]
+fn number_field_matrices_at_jordan_sizes() {
+    // rref and null space of the 20x20 sliding-mass A - t I over Q[t]/(t^4 + 4 t^2 + 1)
+    use exactlti::field::NumberField;
+    use exactlti::poly::Poly;
+    let s = sliding_masses();
+    let k = NumberField::new(&Poly::from_i64s(&[1, 0, 4, 0, 1]), (0.0, 0.5176380902)).unwrap();
+    let mut m = s.a.convert_to(&k);
+    let t = k.generator();
+    for i in 0..20 {
+        let v = k.sub(m.get(i, i), &t);
+        m.set(i, i, v);
+    }
+    let ns = m.nullspace();
+    assert_eq!(ns.ncols(), 2, "each eigenvalue is double and non-defective");
+    assert!((&m * &ns).is_zero());
+    let (r, piv) = m.rref();
+    assert_eq!(piv.len(), 18);
+    assert_eq!(r.rref().0, r);
+}

@@ -332,6 +332,21 @@ fn analyze(file: Option<&Path>) -> Result<Report, Failure> {
                     );
                 }
             }
+            if t.ss.ninputs() > 0
+                && let (Ok(pc), Ok(po)) = (
+                    realization::pbh_controllable(&t.ss.a, &t.ss.b),
+                    realization::pbh_observable(&t.ss.a, &t.ss.c),
+                )
+            {
+                r.push(
+                    "pbh",
+                    Value::Obj(
+                        Report::titled("PBH tests (exact, one rank per irreducible factor)")
+                            .bool("controllable", pc)
+                            .bool("observable", po),
+                    ),
+                );
+            }
             if let Ok(m) = realization::modal_table(&t.ss.a) {
                 r.push("modes", Value::Obj(m.report()));
             }

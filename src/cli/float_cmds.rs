@@ -264,14 +264,35 @@ pub fn check<K: Field>(
             && let Ok(fz) = float::invariant_zeros_report(&a, &b, &c, &d, &tol)
         {
             let ez = z.count();
-            items.push((
-                "invariant_zero_count".into(),
-                ez == fz.zeros.len(),
-                Report::new()
-                    .int("exact", ez)
-                    .int("float", fz.zeros.len())
-                    .str("float_truth", truth_str(fz.truth)),
-            ));
+            let mut rep = Report::new()
+                .int("exact", ez)
+                .int("float", fz.zeros.len())
+                .str("float_truth", truth_str(fz.truth));
+            // values: each float zero against the nearest exact zero (certified roots)
+            let rational: Option<Vec<crate::field::Rational>> = z
+                .polynomial
+                .coeffs()
+                .iter()
+                .map(|c| z.polynomial.field().to_rational(c))
+                .collect();
+            if let Some(cs) = rational
+                && let Ok(rs) =
+                    crate::algebraic::roots(&crate::poly::Poly::new(crate::field::Q, cs))
+            {
+                let exact: Vec<(f64, f64)> = rs.iter().map(|(r, _)| r.approx()).collect();
+                let worst = fz
+                    .zeros
+                    .iter()
+                    .map(|w| {
+                        exact
+                            .iter()
+                            .map(|e| (e.0 - w.re).hypot(e.1 - w.im))
+                            .fold(f64::INFINITY, f64::min)
+                    })
+                    .fold(0.0, f64::max);
+                rep = rep.float("max_float_zero_error", worst);
+            }
+            items.push(("invariant_zero_count".into(), ez == fz.zeros.len(), rep));
         }
     }
     items.extend(extra);

@@ -32,7 +32,7 @@ mod rosenbrock;
 
 pub use controllability::{
     controllability_matrix, hankel_matrix, is_controllable, is_observable, mcmillan_degree,
-    observability_matrix, row_compression,
+    observability_matrix, pbh_controllable, pbh_observable, row_compression,
 };
 pub use descriptor::{StandardForm, descriptor_to_standard};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
