@@ -407,3 +407,133 @@ fn bad_input_and_edge_shapes() {
     let jf = jordan(&one).unwrap();
     assert_eq!(values(&jf), ["5"]);
 }
+
+/// Every block of the real form exact, verified in its own field, the pair blocks of the
+/// papers' shape, and the whole real `T` invertible (its approximation well conditioned).
+fn check_real_form_exact(a: &Matrix<Q>) -> exactlti::jordan::RealJordanForm {
+    let jf = jordan(a).unwrap();
+    assert!(jf.verified, "A = {a}");
+    let rf = jf.real_form().unwrap();
+    assert!(rf.exact && rf.verified && rf.notes.is_empty(), "{:?}", rf.notes);
+    let n = a.nrows();
+    let mut cols = 0;
+    for b in &rf.blocks {
+        let (t, j) = (b.t.as_ref().unwrap(), b.j.as_ref().unwrap());
+        let f = b.field.as_ref().unwrap();
+        assert_eq!(f.root_approx().1, 0.0, "a real field");
+        assert_eq!(&a.convert_to(f) * t, t * j, "A T = T J in {f}");
+        let e = &jf.eigenvalues[b.eigenvalue];
+        if b.pair {
+            // [[a, b], [-b, a]] with the eigenvalue's parts, I2 coupling
+            let m = j.nrows();
+            for d in (0..m).step_by(2) {
+                assert_eq!(j.get(d, d), j.get(d + 1, d + 1));
+                assert_eq!(*j.get(d + 1, d), f.neg(j.get(d, d + 1)));
+                if d + 2 < m && j.get(d, d + 2) != &f.zero() {
+                    assert!(f.is_one(j.get(d, d + 2)) && f.is_one(j.get(d + 1, d + 3)));
+                }
+            }
+            let (re, _) = f.approx(j.get(0, 0));
+            let (im, _) = f.approx(j.get(0, 1));
+            assert!((re - e.approx.0).abs() < 1e-9 && (im - e.approx.1).abs() < 1e-9);
+            assert!(e.approx.1 > 0.0);
+        }
+        cols += t.ncols();
+    }
+    assert_eq!(cols, n);
+    let t_all = rf.single_field().map(|(_, t)| t.to_approx()).unwrap_or_else(|| {
+        let (_, to) = rf.j_t_out();
+        to.approx
+            .iter()
+            .map(|row| row.iter().map(|z| z.0).collect())
+            .collect()
+    });
+    let tm = nalgebra::DMatrix::from_fn(n, n, |i, j| t_all[i][j]);
+    let sv = tm.singular_values();
+    assert!(sv.min() > 1e-8 * sv.max(), "real T singular: {sv}");
+    rf
+}
+
+#[test]
+fn real_form_exact_cube_root_of_two() {
+    let a = jcommon::companion(&[-2, 0, 0, 1]);
+    let rf = check_real_form_exact(&a);
+    let jf = jordan(&a).unwrap();
+    // certified approximations
+    let real = jf.eigenvalues.iter().find(|e| e.approx.1 == 0.0).unwrap();
+    assert!((real.approx.0 - 2f64.cbrt()).abs() <= 4.0 * f64::EPSILON);
+    let up = jf.eigenvalues.iter().find(|e| e.approx.1 > 0.0).unwrap();
+    assert!((up.approx.0 + 2f64.cbrt() / 2.0).abs() < 1e-15);
+    assert!((up.approx.1 - 2f64.cbrt() * 3f64.sqrt() / 2.0).abs() < 1e-15);
+    assert_eq!(up.number.minpoly().to_string(), "x^3 - 2");
+    // Q(Re, Im) = Q(cbrt 2, sqrt 3) has degree 6
+    let pair = rf.blocks.iter().find(|b| b.pair).unwrap();
+    assert_eq!(pair.field.as_ref().unwrap().degree(), 6);
+    let rep = rf.report().to_json();
+    assert_eq!(rep["exact"], true);
+    assert_eq!(rep["verified"], true);
+    assert!(rep["parts"][0].as_str().unwrap().starts_with("r"), "{rep}");
+    assert!(rep["fields"].as_array().unwrap().len() >= 2, "{rep}");
+    assert!(!rep["J"][1][1].as_str().unwrap().starts_with('~'));
+}
+
+#[test]
+fn real_form_exact_cube_root_chain_of_length_two() {
+    let a = jcommon::companion_pair_chain(&[-2, 0, 0, 1], 7);
+    let jf = jordan(&a).unwrap();
+    assert!(jf.verified);
+    assert_eq!(jf.charpoly.to_string(), "x^6 - 4*x^3 + 4");
+    for e in &jf.eigenvalues {
+        assert_eq!(e.blocks, [2], "{}", e.value);
+    }
+    let rf = check_real_form_exact(&a);
+    let pair = rf.blocks.iter().find(|b| b.pair).unwrap();
+    let j = pair.j.as_ref().unwrap();
+    assert_eq!(j.nrows(), 4, "one 4x4 block: a 2x2 complex block pair");
+    let f = pair.field.as_ref().unwrap();
+    assert!(f.is_one(j.get(0, 2)) && f.is_one(j.get(1, 3)) && f.is_zero(j.get(0, 3)));
+}
+
+#[test]
+fn real_form_exact_quartic_two_complex_pairs() {
+    let a = jcommon::companion(&[1, 1, 0, 0, 1]);
+    let rf = check_real_form_exact(&a);
+    assert_eq!(rf.blocks.len(), 2);
+    assert!(rf.blocks.iter().all(|b| b.pair));
+    // purely imaginary factor with a quadratic real field: x^4 + 6 x^2 + 1, roots
+    // +-i (sqrt 2 +- 1)
+    let rf = check_real_form_exact(&jcommon::companion(&[1, 0, 6, 0, 1]));
+    let (j, _) = rf.single_field().expect("all in Q(sqrt 2)");
+    assert!(j.to_string().contains("sqrt(2)"), "{j}");
+}
+
+#[test]
+fn real_form_exact_random_complex_factors() {
+    let mut rng = common::Rng(2024);
+    let mut done = 0;
+    while done < common::iters(4) {
+        let deg = [3, 3, 4][rng.int(0, 2) as usize];
+        let mut p: Vec<i64> = (0..deg).map(|_| rng.int(-3, 3)).collect();
+        p.push(1);
+        let poly = Poly::from_i64s(&p);
+        if !exactlti::algebraic::is_irreducible_q(&poly) {
+            continue;
+        }
+        let a = jcommon::companion(&p);
+        let jf = jordan(&a).unwrap();
+        if jf.eigenvalues.iter().all(|e| e.approx.1 == 0.0) {
+            continue;
+        }
+        // the certified approximations are roots to f64 accuracy
+        for e in &jf.eigenvalues {
+            let z = num_complex::Complex64::new(e.approx.0, e.approx.1);
+            let v = p
+                .iter()
+                .rev()
+                .fold(num_complex::Complex64::new(0.0, 0.0), |acc, &c| acc * z + c as f64);
+            assert!(v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg as i32), "{p:?}: {z}");
+        }
+        check_real_form_exact(&a);
+        done += 1;
+    }
+}

@@ -31,12 +31,15 @@
 //! | [`JordanForm::report`] | JSON keys of the CLI contract (`eigenvalues`, `J`, `T`, `verified`) |
 //! | [`chains::jordan_chains`] | chains of one eigenvalue over any field |
 //!
-//! Eigenvalue approximations come from an `f64` Aberth iteration, the real/complex split
-//! from exact Sturm counts; they only mark embeddings and never enter exact arithmetic.
+//! Eigenvalues are certified algebraic numbers ([`Eigenvalue::number`]: minimal polynomial
+//! and an isolating interval or box found in exact arithmetic); their `f64` approximations
+//! are read off the refined regions, mark the embeddings $t \mapsto \theta_j$ and never
+//! enter exact arithmetic. The real/complex/purely-imaginary split is exact.
 
 pub mod chains;
 pub mod primary;
 pub mod real;
+mod realfield;
 pub mod response;
 mod roots;
 
@@ -65,8 +68,12 @@ pub struct Eigenvalue {
     /// Exact display: rational, closed form up to degree 2 (and biquadratics), else
     /// `root of ... near ...`.
     pub value: String,
-    /// Approximation `(re, im)`.
+    /// Approximation `(re, im)`, read off the certified region of [`Eigenvalue::number`]
+    /// (relative error about $2^{-60}$); exactly `0.0` parts for real and purely imaginary
+    /// roots.
     pub approx: (f64, f64),
+    /// The certified algebraic number (minimal polynomial and isolating region).
+    pub number: AlgebraicNumber,
     /// Index into [`JordanForm::components`] and root index within it.
     pub component: usize,
     pub root: usize,
@@ -79,21 +86,13 @@ pub struct Eigenvalue {
 }
 
 impl Eigenvalue {
-    /// The certified algebraic number (minimal polynomial and isolating region): the root
-    /// of [`Eigenvalue::minpoly`] nearest [`Eigenvalue::approx`].
+    /// The certified algebraic number (minimal polynomial and isolating region), as
+    /// [`Eigenvalue::number`].
     ///
     /// # Errors
-    /// Those of [`AlgebraicNumber::roots_of_irreducible`].
+    /// None at present (kept for callers written against the earlier on-demand isolation).
     pub fn algebraic_number(&self) -> Result<AlgebraicNumber> {
-        let rts = AlgebraicNumber::roots_of_irreducible(&self.minpoly)?;
-        let d = |z: &AlgebraicNumber| {
-            let (re, im) = z.approx();
-            (re - self.approx.0).hypot(im - self.approx.1)
-        };
-        Ok(rts
-            .into_iter()
-            .min_by(|x, y| d(x).total_cmp(&d(y)))
-            .expect("degree >= 1"))
+        Ok(self.number.clone())
     }
 }
 
@@ -129,7 +128,8 @@ pub struct JordanForm {
 ///
 /// # Errors
 /// `NotSquare` for a non-square input; `Unsupported` when the characteristic polynomial
-/// cannot be factored; `Verification` if an internal identity fails.
+/// cannot be factored; `Limit` from root isolation; `Verification` if an internal identity
+/// fails.
 ///
 /// # Examples
 /// ```
@@ -144,18 +144,22 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
     let n = a.nrows();
     let chi = a.charpoly()?;
     let mut components = vec![];
+    let mut numbers = vec![];
     for (p, e) in roots::factor_q(&chi)? {
-        let rts = roots::ordered_roots(&p);
-        components.push(PrimaryComponent::compute(a, &p, e, rts)?);
+        let rts = roots::certified_roots(&p)?;
+        let approx = rts.iter().map(|z| z.1).collect();
+        components.push(PrimaryComponent::compute(a, &p, e, approx)?);
+        numbers.push(rts);
     }
     let mut eigenvalues = vec![];
-    for (ci, c) in components.iter().enumerate() {
-        for (j, &z) in c.roots.iter().enumerate() {
+    for (ci, (c, nums)) in components.iter().zip(numbers).enumerate() {
+        for (j, (number, z)) in nums.into_iter().enumerate() {
             let k = eigenvalues.len() + 1;
             eigenvalues.push(Eigenvalue {
                 minpoly: c.factor.clone(),
                 value: roots::value_string(&c.factor, z),
                 approx: z,
+                number,
                 component: ci,
                 root: j,
                 symbol: format!("r{k}"),

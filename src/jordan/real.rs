@@ -18,15 +18,23 @@
 //!   \sqrt{2 \pm \sqrt 3}$); then $\operatorname{Re} \sum c_k \theta^k = \sum_{k \text{
 //!   even}} c_k (-1)^{k/2} \beta^k$ and $\operatorname{Im} = \sum_{k \text{ odd}} c_k
 //!   (-1)^{(k-1)/2}\beta^k$;
-//! * other complex factors ($\deg p \ge 3$, $\operatorname{Re}\theta \ne 0$): the real
-//!   field $\mathbb{Q}(\operatorname{Re}\theta, \operatorname{Im}\theta)$ needs a primitive
-//!   element over a factorization over number fields, not implemented: the block is
-//!   given approximately, `exact` is false and `notes` says so.
+//! * every other complex factor ($\deg p \ge 3$, $\operatorname{Re}\theta \ne 0$):
+//!   $F = \mathbb{Q}(\operatorname{Re}\theta, \operatorname{Im}\theta) = \mathbb{Q}(c)$
+//!   with the primitive element $c = \operatorname{Re}\theta + k\operatorname{Im}\theta$,
+//!   its minimal polynomial a factor of a composed resultant and $\operatorname{Re}\theta$,
+//!   $\operatorname{Im}\theta$ as polynomials in $c$ from a gcd over $F(i)$ (see
+//!   `realfield`), e.g. $F = \mathbb{Q}(\sqrt[3]{2}, \sqrt 3)$ of degree 6 for
+//!   $x^3 - 2$; the field is listed in the report (`fields`) with `parts`
+//!   $\theta = a(c) + b(c)\,i$.
 //!
-//! Every exact block is verified: $A T_c = T_c J_c$ in $F$.
+//! The real field of each pair is identified by certified isolation (the roots of the
+//! candidate minimal polynomials against the box of $\theta$). Every block is verified:
+//! $A T_c = T_c J_c$ in $F$. Should a step fail (an internal limit), the block is given
+//! approximately, `exact` is false and `notes` says why: never silently.
 
 use super::primary::{named_field, rational_field};
-use super::roots::{factor_q, fmt_approx, ordered_roots, quadratic_roots};
+use super::realfield::{RealParts, identify_real_root, real_parts_field, simplify};
+use super::roots::{factor_q, fmt_approx, quadratic_roots};
 use super::{JordanForm, quadratic_field};
 use crate::error::Result;
 use crate::field::{ComplexField, ComplexPair, Field, NfElem, NumberField, Q, Rational};
@@ -75,6 +83,9 @@ pub struct RealJordanForm {
     pub verified: bool,
     /// Non-exact cases, one line each.
     pub notes: Vec<String>,
+    /// For each pair in a real field of degree $\ge 3$: `r<k> = a + (b)*i` with $a$, $b$
+    /// exact in that field.
+    pub parts: Vec<String>,
 }
 
 impl RealBlock {
@@ -143,12 +154,14 @@ fn real_field_for(
         };
         return Ok((f, pair(re, im)));
     }
-    let even = p
-        .coeffs()
-        .iter()
-        .enumerate()
-        .all(|(k, c)| k % 2 == 0 || c.is_zero());
-    if even && e.approx.0.abs() < 1e-9 * (1.0 + e.approx.1.abs()) {
+    let note = |err: crate::error::Error| {
+        format!(
+            "eigenvalue {} (root of {p}): exact real field not found ({err}); block given \
+             approximately",
+            fmt_approx(e.approx)
+        )
+    };
+    if e.number.is_pure_imaginary() {
         // theta = i beta: beta is a real root of r(x) = p(i x) = sum c_k (-1)^(k/2) x^k
         let r = Poly::new(
             Q,
@@ -158,32 +171,29 @@ fn real_field_for(
                 .map(|(k, c)| if (k / 2) % 2 == 0 { c.clone() } else { -c })
                 .collect(),
         );
-        let beta = e.approx.1;
-        let factors = factor_q(&r).map_err(|err| format!("{p}: {err}"))?;
-        let mut best: Option<(f64, Poly<Q>, f64)> = None;
-        for (g, _) in factors {
-            for z in ordered_roots(&g) {
-                let d = (z.0 - beta).abs();
-                if z.1 == 0.0 && best.as_ref().is_none_or(|b| d < b.0) {
-                    best = Some((d, g.clone(), z.0));
-                }
-            }
-        }
-        if let Some((_, g, root)) = best {
-            let f = named_field(&g, (root, 0.0), &format!("b{}", ev + 1));
-            let b = if g.deg() == 1 {
-                f.from_rational(&-g.coeff(0))
-            } else {
-                f.generator()
-            };
-            return Ok((f.clone(), pair(f.zero(), b)));
-        }
+        let factors: Vec<Poly<Q>> = factor_q(&r)
+            .map_err(note)?
+            .into_iter()
+            .map(|(g, _)| g)
+            .collect();
+        let (g, beta) = identify_real_root(&factors, &e.number, &Rational::zero(), &Rational::one())
+            .map_err(note)?;
+        let f = named_field(&g, (beta.approx().0, 0.0), &format!("b{}", ev + 1));
+        let b = if g.deg() == 1 {
+            f.from_rational(&-g.coeff(0))
+        } else {
+            f.generator()
+        };
+        let parts = simplify(RealParts {
+            re: f.zero(),
+            im: b,
+            field: f,
+            primitive: None,
+        });
+        return Ok((parts.field, pair(parts.re, parts.im)));
     }
-    Err(format!(
-        "eigenvalue {} (root of {p}): exact real field Q(Re, Im) not implemented for this \
-         complex factor; block given approximately",
-        fmt_approx(e.approx)
-    ))
+    let parts = real_parts_field(&e.number, &format!("c{}", ev + 1)).map_err(note)?;
+    Ok((parts.field, pair(parts.re, parts.im)))
 }
 
 impl JordanForm {
@@ -197,6 +207,7 @@ impl JordanForm {
         let cols = self.root_columns();
         let mut blocks = vec![];
         let mut notes = vec![];
+        let mut parts = vec![];
         let mut verified = self.verified;
         for rc in cols {
             let e = &self.eigenvalues[rc.eigenvalue];
@@ -256,6 +267,14 @@ impl JordanForm {
                         }
                     }
                     let (a, b) = block.re_im(&comp.root_elem()).expect("exact");
+                    if f.degree() >= 3 {
+                        parts.push(format!(
+                            "{} = {} + ({})*i",
+                            e.symbol,
+                            f.fmt_elem(&a),
+                            f.fmt_elem(&b)
+                        ));
+                    }
                     let j = pair_block(&f, &a, &b, &comp.blocks);
                     let ak = self.a.convert_to(&f);
                     verified &= &ak * &t == &t * &j;
@@ -278,6 +297,7 @@ impl JordanForm {
             exact,
             verified: verified && exact,
             notes,
+            parts,
         })
     }
 }
@@ -371,7 +391,7 @@ impl RealJordanForm {
         (mk(je, ja), mk(te, ta))
     }
     /// Report: `J`, `T` (exact strings and `_approx`), `exact`, `verified`, `fields`,
-    /// `notes`.
+    /// `parts`, `notes`.
     pub fn report(&self) -> Report {
         let (jo, to) = match self.single_field() {
             Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
@@ -381,7 +401,7 @@ impl RealJordanForm {
             .blocks
             .iter()
             .filter_map(|b| b.field.as_ref())
-            .filter(|f| f.degree() >= 3 || f.0.var.starts_with('b'))
+            .filter(|f| f.degree() >= 3)
             .map(|f| {
                 Value::Str(format!(
                     "{} = root of {} near {}",
@@ -398,6 +418,12 @@ impl RealJordanForm {
             .bool("verified", self.verified);
         if !fields.is_empty() {
             r = r.list("fields", fields);
+        }
+        if !self.parts.is_empty() {
+            r = r.list(
+                "parts",
+                self.parts.iter().cloned().map(Value::Str).collect(),
+            );
         }
         if !self.notes.is_empty() {
             r = r.list(

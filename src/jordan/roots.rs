@@ -1,16 +1,14 @@
 //! Eigenvalue bookkeeping for the Jordan module: factoring the characteristic polynomial
-//! over $\mathbb{Q}$ ([`crate::algebraic::factor_q`]), exact real-root counts (Sturm),
-//! root approximations (Aberth–Ehrlich in `f64`, refined by Newton) and exact displays
-//! (closed forms up to degree 2, nested radicals for the biquadratic $x^4 + b x^2 + c$,
-//! e.g. `i*sqrt(2 - sqrt(3))`).
+//! over $\mathbb{Q}$ ([`crate::algebraic::factor_q`]), certified roots (isolating
+//! intervals and boxes from [`crate::algebraic`]) and exact displays (closed forms up to
+//! degree 2, nested radicals for the biquadratic $x^4 + b x^2 + c$, e.g.
+//! `i*sqrt(2 - sqrt(3))`).
 //!
-//! The split into real and complex roots is exact (Sturm count); the approximations only
-//! tell the roots apart and mark the embedding $t \mapsto \theta_j$ of each number field
-//! (every identity that depends on them is verified exactly afterwards). Certified
-//! isolating regions are available on demand through
-//! [`super::Eigenvalue::algebraic_number`]; they are not on the hot path because complex
-//! isolation of some cubics is slow at present.
+//! The split into real, purely imaginary and other complex roots is exact (it comes from
+//! the isolation); the `f64` approximations are read off regions refined to relative width
+//! about $2^{-60}$ and mark the embedding $t \mapsto \theta_j$ of each number field.
 
+use crate::algebraic::AlgebraicNumber;
 use crate::error::Result;
 use crate::field::quadratic::fmt_pair;
 use crate::field::{Field, Q, QuadraticField, Rational, rational_to_f64};
@@ -18,7 +16,6 @@ use crate::poly::Poly;
 use num_bigint::BigInt;
 use num_complex::Complex64;
 use num_traits::{One, Signed, Zero};
-use std::cmp::Ordering;
 
 /// Irreducible monic factors of `p` over $\mathbb{Q}$ with multiplicities (sorted by
 /// degree, then coefficients).
@@ -29,162 +26,33 @@ pub(crate) fn factor_q(p: &Poly<Q>) -> Result<Vec<(Poly<Q>, usize)>> {
     Ok(crate::algebraic::factor_q(p)?.1)
 }
 
-/// Number of distinct real roots of a square-free `p` (Sturm's theorem).
-pub(crate) fn real_root_count(p: &Poly<Q>) -> usize {
-    if p.deg() == 0 {
-        return 0;
-    }
-    let mut seq = vec![p.clone(), p.derivative()];
-    while !seq.last().unwrap().is_zero() && seq.last().unwrap().deg() > 0 {
-        let n = seq.len();
-        let r = seq[n - 2].rem(&seq[n - 1]).neg();
-        if r.is_zero() {
-            break;
+/// The roots of the irreducible monic `p` as certified algebraic numbers
+/// ([`AlgebraicNumber::roots_of_irreducible`]: isolating intervals and boxes in exact
+/// arithmetic) with their approximations, ordered by real part descending, then imaginary
+/// part descending. Real roots have imaginary part exactly `0.0`, purely imaginary roots
+/// real part exactly `0.0`, and each pair is exactly conjugate-symmetric in `f64`.
+///
+/// # Errors
+/// `Limit` from complex isolation.
+pub(crate) fn certified_roots(p: &Poly<Q>) -> Result<Vec<(AlgebraicNumber, (f64, f64))>> {
+    let mut out = vec![];
+    for z in AlgebraicNumber::roots_of_irreducible_unchecked(p)? {
+        if z.is_real() {
+            let x = z.approx();
+            out.push((z, (x.0, 0.0)));
+            continue;
         }
-        seq.push(r);
-    }
-    let variations = |signs: Vec<Ordering>| {
-        let s: Vec<Ordering> = signs
-            .into_iter()
-            .filter(|o| *o != Ordering::Equal)
-            .collect();
-        s.windows(2).filter(|w| w[0] != w[1]).count()
-    };
-    let at_pos: Vec<Ordering> = seq.iter().map(|q| q.lc().cmp(&Rational::zero())).collect();
-    let at_neg: Vec<Ordering> = seq
-        .iter()
-        .map(|q| {
-            let s = q.lc().cmp(&Rational::zero());
-            if q.deg() % 2 == 1 { s.reverse() } else { s }
-        })
-        .collect();
-    variations(at_neg) - variations(at_pos)
-}
-
-/// Approximations of all complex roots of `p` (Aberth–Ehrlich iteration, then Newton).
-pub(crate) fn approx_roots(p: &Poly<Q>) -> Vec<Complex64> {
-    let n = p.deg();
-    if n == 0 {
-        return vec![];
-    }
-    let lc = rational_to_f64(&p.lc());
-    let c: Vec<f64> = p.coeffs().iter().map(|x| rational_to_f64(x) / lc).collect();
-    if n == 1 {
-        return vec![Complex64::new(0.0 - c[0], 0.0)];
-    }
-    let eval = |z: Complex64| {
-        let mut v = Complex64::new(0.0, 0.0);
-        let mut d = Complex64::new(0.0, 0.0);
-        for k in (0..=n).rev() {
-            d = d * z + v;
-            v = v * z + c[k];
+        let (_, (i0, i1)) = z.bounding_box();
+        if (i0 + i1).is_negative() {
+            continue; // added with its upper partner
         }
-        (v, d)
-    };
-    let radius = 1.0 + c[..n].iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let r0 = radius.min(
-        c[..n]
-            .iter()
-            .enumerate()
-            .map(|(k, x)| x.abs().powf(1.0 / (n - k) as f64))
-            .fold(0.0f64, f64::max)
-            * 2.0
-            + 1e-3,
-    );
-    let mut z: Vec<Complex64> = (0..n)
-        .map(|k| Complex64::from_polar(r0, 0.4 + 2.0 * std::f64::consts::PI * k as f64 / n as f64))
-        .collect();
-    for _ in 0..800 {
-        let mut moved = 0.0f64;
-        for i in 0..n {
-            let (v, d) = eval(z[i]);
-            if v.norm() == 0.0 {
-                continue;
-            }
-            let ratio = v / d;
-            let s: Complex64 = (0..n)
-                .filter(|&j| j != i)
-                .map(|j| Complex64::new(1.0, 0.0) / (z[i] - z[j]))
-                .sum();
-            let w = ratio / (Complex64::new(1.0, 0.0) - ratio * s);
-            if w.is_finite() {
-                z[i] -= w;
-                moved = moved.max(w.norm() / (1.0 + z[i].norm()));
-            }
-        }
-        if moved < 1e-16 {
-            break;
-        }
+        let (re, im) = z.approx();
+        let re = if z.is_pure_imaginary() { 0.0 } else { re };
+        out.push((z.conj(), (re, -im)));
+        out.push((z, (re, im)));
     }
-    for zi in z.iter_mut() {
-        for _ in 0..3 {
-            let (v, d) = eval(*zi);
-            if d.norm() > 0.0 {
-                let step = v / d;
-                if step.is_finite() {
-                    *zi -= step;
-                }
-            }
-        }
-    }
-    z
-}
-
-/// Roots of an irreducible `p` ordered (real part descending, then imaginary part
-/// descending), with the exactly known number of real roots made exactly real and the
-/// complex ones made exactly conjugate-symmetric.
-pub(crate) fn ordered_roots(p: &Poly<Q>) -> Vec<(f64, f64)> {
-    let nreal = real_root_count(p);
-    let mut z = approx_roots(p);
-    z.sort_by(|a, b| a.im.abs().total_cmp(&b.im.abs()));
-    let mut out: Vec<(f64, f64)> = vec![];
-    for (i, w) in z.iter().enumerate() {
-        if i < nreal {
-            out.push((w.re, 0.0));
-        }
-    }
-    let mut cx: Vec<Complex64> = z[nreal..].to_vec();
-    cx.sort_by(|a, b| b.im.total_cmp(&a.im));
-    let half = cx.len() / 2;
-    let (up, down) = cx.split_at(half);
-    let mut down: Vec<Complex64> = down.to_vec();
-    for u in up {
-        // partner: nearest to the conjugate
-        let (k, _) = down
-            .iter()
-            .enumerate()
-            .map(|(k, d)| (k, (d - u.conj()).norm()))
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-            .expect("conjugate partner");
-        let d = down.remove(k);
-        let re = 0.5 * (u.re + d.re);
-        let im = 0.5 * (u.im - d.im).abs();
-        out.push((re, im));
-        out.push((re, -im));
-    }
-    // all roots on the imaginary axis (exactly: p even and p(ix) has only real roots)
-    let even = p
-        .coeffs()
-        .iter()
-        .enumerate()
-        .all(|(k, c)| k % 2 == 0 || c.is_zero());
-    if even && nreal == 0 {
-        let r = Poly::new(
-            Q,
-            p.coeffs()
-                .iter()
-                .enumerate()
-                .map(|(k, c)| if (k / 2) % 2 == 0 { c.clone() } else { -c })
-                .collect(),
-        );
-        if real_root_count(&r) == p.deg() {
-            for z in out.iter_mut() {
-                z.0 = 0.0;
-            }
-        }
-    }
-    out.sort_by(|a, b| b.0.total_cmp(&a.0).then(b.1.total_cmp(&a.1)));
-    out
+    out.sort_by(|a, b| b.1.0.total_cmp(&a.1.0).then(b.1.1.total_cmp(&a.1.1)));
+    Ok(out)
 }
 
 /// Radical text for $\sqrt f$ (`i` for $f = -1$).
@@ -276,14 +144,29 @@ mod tests {
         Poly::from_i64s(cs)
     }
     #[test]
-    fn sturm_roots_displays() {
-        assert_eq!(real_root_count(&p(&[1, 0, 4, 0, 1])), 0);
-        assert_eq!(real_root_count(&p(&[-2, 0, 0, 1])), 1);
-        assert_eq!(real_root_count(&p(&[1, 0, -4, 0, 1])), 4);
+    fn certified_roots_displays() {
+        let kinds = |q: &Poly<Q>| -> (usize, usize) {
+            let rs = certified_roots(q).unwrap();
+            (
+                rs.iter().filter(|z| z.1.1 == 0.0).count(),
+                rs.iter().filter(|z| z.1.0 == 0.0 && z.1.1 != 0.0).count(),
+            )
+        };
+        assert_eq!(kinds(&p(&[1, 0, 4, 0, 1])), (0, 4));
+        assert_eq!(kinds(&p(&[-2, 0, 0, 1])), (1, 0));
+        assert_eq!(kinds(&p(&[1, 0, -4, 0, 1])), (4, 0));
+        let rs = certified_roots(&p(&[1, 1, 0, 0, 1])).unwrap();
+        assert_eq!(rs.len(), 4);
+        for w in rs.chunks(2) {
+            assert_eq!(w[0].1.0, w[1].1.0);
+            assert_eq!(w[0].1.1, -w[1].1.1);
+            assert!(w[0].1.1 > 0.0 && w[0].0 == w[1].0.conj());
+        }
         let vs = |q: &Poly<Q>| -> Vec<String> {
-            ordered_roots(q)
+            certified_roots(q)
+                .unwrap()
                 .iter()
-                .map(|z| value_string(q, *z))
+                .map(|z| value_string(q, z.1))
                 .collect()
         };
         assert_eq!(vs(&p(&[2, 2, 1])), ["-1 + i", "-1 - i"]);

@@ -94,3 +94,30 @@ pub fn planted(n: usize, seed: u64) -> (Matrix<Q>, Vec<(Rational, usize)>) {
         }
     }
 }
+
+/// The companion matrix of the monic `p` (last row `-p_0, ..., -p_{n-1}`): charpoly `p`.
+pub fn companion(p: &[i64]) -> Matrix<Q> {
+    let n = p.len() - 1;
+    let mut a = Matrix::zeros(Q, n, n);
+    for i in 0..n - 1 {
+        a.set(i, i + 1, r(1, 1));
+    }
+    for (j, c) in p[..n].iter().enumerate() {
+        a.set(n - 1, j, r(-c, 1));
+    }
+    a
+}
+
+/// `[[C, I], [0, C]]` for the companion `C` of `p`: every root of `p` has one Jordan block
+/// of size 2 (minimal polynomial `p^2`), similar by a random unimodular `P`.
+pub fn companion_pair_chain(p: &[i64], seed: u64) -> Matrix<Q> {
+    let c = companion(p);
+    let n = c.nrows();
+    let mut j = Matrix::zeros(Q, 2 * n, 2 * n);
+    j.set_block(0, 0, &c);
+    j.set_block(n, n, &c);
+    j.set_block(0, n, &Matrix::identity(Q, n));
+    let mut rng = Rng(seed);
+    let p = crate::common::unimodular(&Q, 2 * n, &mut rng);
+    &(&p * &j) * &p.inverse().unwrap()
+}
