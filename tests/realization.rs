@@ -353,17 +353,22 @@ fn jordan_method_agrees_with_kalman_on_rational_and_quadratic_modes() {
         .to_rational()
         .expect("all modes rational or Q(i) pairs with rational parts");
     assert!(rs.same_markov(&sys, 2 * 5));
-    // a cubic factor with complex roots is refused explicitly, not approximated
+    // a cubic factor with complex roots (x^3 - 2): exact real blocks over Q(Re, Im)
     let cubic = StateSpace::new_strictly_proper(
         qmat![[0, 1, 0], [0, 0, 1], [2, 0, 0]],
         qmat![[0], [0], [1]],
         qmat![[1, 0, 0]],
     )
     .unwrap();
-    assert!(matches!(
-        minimal_jordan(&cubic),
-        Err(exactlti::Error::Unsupported(_))
-    ));
+    let r = minimal_jordan(&cubic).unwrap();
+    assert!(r.verified);
+    assert_eq!(r.order(), 3);
+    assert_eq!(
+        r.blocks.len(),
+        2,
+        "one real root block and one complex pair block"
+    );
+    assert_eq!(r.blocks[1].a.nrows(), 2);
 }
 
 #[test]

@@ -176,8 +176,9 @@ fn real_field_for(
             .into_iter()
             .map(|(g, _)| g)
             .collect();
-        let (g, beta) = identify_real_root(&factors, &e.number, &Rational::zero(), &Rational::one())
-            .map_err(note)?;
+        let (g, beta) =
+            identify_real_root(&factors, &e.number, &Rational::zero(), &Rational::one())
+                .map_err(note)?;
         let f = named_field(&g, (beta.approx().0, 0.0), &format!("b{}", ev + 1));
         let b = if g.deg() == 1 {
             f.from_rational(&-g.coeff(0))

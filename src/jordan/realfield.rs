@@ -154,7 +154,10 @@ pub(crate) fn identify_real_root(
             continue;
         }
         for r in isolate_real_roots(&zp::from_poly_q(f)) {
-            cands.push((f.clone(), AlgebraicNumber::from_parts(f.clone(), Loc::Real(r))));
+            cands.push((
+                f.clone(),
+                AlgebraicNumber::from_parts(f.clone(), Loc::Real(r)),
+            ));
         }
     }
     let half = Rational::new(1.into(), 2.into());
@@ -222,7 +225,12 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
             .map(|(f, _)| f)
             .filter(|f| *f != p)
             .collect();
-        let (g, c) = identify_real_root(&facs, theta, &Rational::one(), &Rational::from_integer(k.into()))?;
+        let (g, c) = identify_real_root(
+            &facs,
+            theta,
+            &Rational::one(),
+            &Rational::from_integer(k.into()),
+        )?;
         let croot = c.approx().0;
         let f = named_field(&g, (croot, 0.0), var);
         let Some((re, im)) = parts_by_gcd(&p, &f, k) else {

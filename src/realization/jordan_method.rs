@@ -19,8 +19,8 @@
 //!    $x = [\mathrm{Re}\, z; -\mathrm{Im}\, z]$ interleaved, $B_r = [\mathrm{Re}\, B;
 //!    -\mathrm{Im}\, B]$, $C_r = [2\,\mathrm{Re}\, C, 2\,\mathrm{Im}\, C]$. Entries are exact in
 //!    a real field per eigenvalue: $\mathbb{Q}$, the real field of a real root, or
-//!    $\mathbb{Q}(\beta)$ with $\beta = \mathrm{Im}\,\theta$ for purely imaginary and quadratic
-//!    complex pairs. Other complex pairs are refused with `Unsupported` (never approximated).
+//!    $\mathbb{Q}(\mathrm{Re}\,\theta, \mathrm{Im}\,\theta)$ (a primitive element, see
+//!    `jordan::realfield`) for a complex pair.
 //!
 //! # Verification
 //! Exact: $\sum_p \mathrm{Tr}_{K_p/\mathbb{Q}}(C_p J_p^k B_p) = C A^k B$ for $k < n + r$ (the
@@ -30,7 +30,7 @@
 use super::controllability::mcmillan_degree;
 use super::minimal::minimal_kalman;
 use crate::algebraic::AlgebraicNumber;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::field::{
     ComplexField, ComplexPair, Field, NfElem, NumberField, NumberFieldCtx, Q, Rational,
 };
@@ -134,13 +134,14 @@ fn trace(sums: &[Rational], x: &NfElem) -> Rational {
     x.0.iter().zip(sums).map(|(c, s)| c * s).sum()
 }
 
-/// The real field $\mathbb{Q}(\beta)$, $\beta = \mathrm{Im}\,\theta$, and $\mathrm{Re}\,\theta \in \mathbb{Q}$,
-/// for a purely imaginary root or a root of a quadratic factor.
+/// The real field $F = \mathbb{Q}(\mathrm{Re}\,\theta, \mathrm{Im}\,\theta)$ of the complex root of
+/// `p` near `theta`, with $\mathrm{Re}\,\theta$ and $\mathrm{Im}\,\theta$ as elements of $F$
+/// (primitive element construction of `jordan::realfield`).
 fn real_parts_field(
     p: &Poly<Q>,
     theta: (f64, f64),
     var: &str,
-) -> Result<(NumberField, Rational, NfElem)> {
+) -> Result<(NumberField, NfElem, NfElem)> {
     let rts = AlgebraicNumber::roots_of_irreducible(p)?;
     let an = rts
         .into_iter()
@@ -149,30 +150,8 @@ fn real_parts_field(
             d(x).total_cmp(&d(y))
         })
         .expect("degree >= 1");
-    let re = if an.is_pure_imaginary() {
-        Rational::zero()
-    } else if p.deg() == 2 {
-        -p.coeff(1) / Rational::from_integer(2.into())
-    } else {
-        return Err(Error::Unsupported(format!(
-            "the Jordan-method real form for the complex eigenvalue {} (degree {} with non-zero real part) needs a real field Q(Re, Im); use --method kalman",
-            an.value_string(),
-            p.deg()
-        )));
-    };
-    let beta = an.try_im()?;
-    let m = beta.minpoly().clone();
-    let field = NumberField(Arc::new(NumberFieldCtx {
-        modulus: m.monic(),
-        root: beta.approx(),
-        var: var.into(),
-    }));
-    let b = if m.deg() == 1 {
-        field.from_rational(&-m.monic().coeff(0))
-    } else {
-        field.generator()
-    };
-    Ok((field, re, b))
+    let parts = crate::jordan::realfield::real_parts_field(&an, var)?;
+    Ok((parts.field, parts.re, parts.im))
 }
 
 /// Splits an element $e = \sum c_j t^j$ of $K$ at $t = a + i\beta$ into real and imaginary
@@ -223,8 +202,7 @@ fn compact_component(
 /// Minimal realization by the Jordan-form method.
 ///
 /// # Errors
-/// `Unsupported` for complex eigenvalues of degree >= 3 with non-zero real part (the real
-/// field is not built yet); errors of the Jordan decomposition.
+/// Errors of the Jordan decomposition and of the real-field construction.
 pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
     let n = sys.nstates();
     let jf = jordan(&sys.a)?;
@@ -297,10 +275,7 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
                 ));
             }
             let cf = ComplexField::new(f.clone());
-            let t = ComplexPair {
-                re: f.from_rational(&a_re),
-                im: beta,
-            };
+            let t = ComplexPair { re: a_re, im: beta };
             let s = c.a.nrows();
             let two = f.from_i64(2);
             let mut a = Matrix::zeros(f.clone(), 2 * s, 2 * s);
