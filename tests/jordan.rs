@@ -541,7 +541,7 @@ fn real_form_exact_random_complex_factors() {
                     acc * z + c as f64
                 });
             assert!(
-                v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg as i32),
+                v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg),
                 "{p:?}: {z}"
             );
         }
