@@ -540,10 +540,7 @@ fn real_form_exact_random_complex_factors() {
                 .fold(num_complex::Complex64::new(0.0, 0.0), |acc, &c| {
                     acc * z + c as f64
                 });
-            assert!(
-                v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg),
-                "{p:?}: {z}"
-            );
+            assert!(v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg), "{p:?}: {z}");
         }
         check_real_form_exact(&a);
         done += 1;
