@@ -13,8 +13,8 @@ struct P<'a> {
 }
 
 const MAX_DEGREE: usize = 10_000;
-/// Bound on $e \log_2 \|f\|_1$ (bits of the coefficients of $f^e$): keeps parsing fast.
-const MAX_POWER_BITS: u64 = 1 << 20;
+/// Bound on the total size in bits of a power $f^e$: keeps parsing fast.
+const MAX_POWER_BITS: u64 = 1 << 24;
 
 /// Parses a polynomial over $\mathbb{Q}$.
 ///
@@ -133,6 +133,7 @@ impl P<'_> {
             if e.saturating_mul(base.deg()) > MAX_DEGREE || e > MAX_DEGREE {
                 return Err(self.err("degree too large"));
             }
+            // size of f^e: (e deg f + 1) coefficients of about e log2 |f|_1 bits each
             let l1_bits: u64 = base
                 .coeffs()
                 .iter()
@@ -141,7 +142,11 @@ impl P<'_> {
                 .unwrap_or(0)
                 + (base.coeffs().len() as u64).ilog2() as u64
                 + 1;
-            if (e as u64).saturating_mul(l1_bits) > MAX_POWER_BITS {
+            let e64 = e as u64;
+            let total = e64
+                .saturating_mul(l1_bits)
+                .saturating_mul(e64.saturating_mul(base.deg() as u64) + 1);
+            if total > MAX_POWER_BITS {
                 return Err(self.err("coefficients too large"));
             }
             return Ok(base.pow(e as u32));
