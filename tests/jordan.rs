@@ -414,7 +414,11 @@ fn check_real_form_exact(a: &Matrix<Q>) -> exactlti::jordan::RealJordanForm {
     let jf = jordan(a).unwrap();
     assert!(jf.verified, "A = {a}");
     let rf = jf.real_form().unwrap();
-    assert!(rf.exact && rf.verified && rf.notes.is_empty(), "{:?}", rf.notes);
+    assert!(
+        rf.exact && rf.verified && rf.notes.is_empty(),
+        "{:?}",
+        rf.notes
+    );
     let n = a.nrows();
     let mut cols = 0;
     for b in &rf.blocks {
@@ -441,13 +445,16 @@ fn check_real_form_exact(a: &Matrix<Q>) -> exactlti::jordan::RealJordanForm {
         cols += t.ncols();
     }
     assert_eq!(cols, n);
-    let t_all = rf.single_field().map(|(_, t)| t.to_approx()).unwrap_or_else(|| {
-        let (_, to) = rf.j_t_out();
-        to.approx
-            .iter()
-            .map(|row| row.iter().map(|z| z.0).collect())
-            .collect()
-    });
+    let t_all = rf
+        .single_field()
+        .map(|(_, t)| t.to_approx())
+        .unwrap_or_else(|| {
+            let (_, to) = rf.j_t_out();
+            to.approx
+                .iter()
+                .map(|row| row.iter().map(|z| z.0).collect())
+                .collect()
+        });
     let tm = nalgebra::DMatrix::from_fn(n, n, |i, j| t_all[i][j]);
     let sv = tm.singular_values();
     assert!(sv.min() > 1e-8 * sv.max(), "real T singular: {sv}");
@@ -530,10 +537,36 @@ fn real_form_exact_random_complex_factors() {
             let v = p
                 .iter()
                 .rev()
-                .fold(num_complex::Complex64::new(0.0, 0.0), |acc, &c| acc * z + c as f64);
-            assert!(v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg as i32), "{p:?}: {z}");
+                .fold(num_complex::Complex64::new(0.0, 0.0), |acc, &c| {
+                    acc * z + c as f64
+                });
+            assert!(
+                v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg as i32),
+                "{p:?}: {z}"
+            );
         }
         check_real_form_exact(&a);
         done += 1;
     }
+}
+
+#[test]
+fn quadratic_input_rational_entries_or_explicit_unsupported() {
+    use exactlti::field::QuadraticField;
+    use exactlti::jordan::jordan_quadratic;
+    let k = QuadraticField::new(3).unwrap();
+    let a = qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]];
+    let ak = Matrix::from_fn(k.clone(), 3, 3, |i, j| k.from_rational(a.get(i, j)));
+    assert_eq!(jordan_quadratic(&ak).unwrap(), jordan(&a).unwrap());
+    let mut bk = ak.clone();
+    bk.set(0, 0, k.gen_elem());
+    match jordan_quadratic(&bk) {
+        Err(Error::Unsupported(m)) => assert!(m.contains("not rational"), "{m}"),
+        other => panic!("expected Unsupported, got {other:?}"),
+    }
+    let ns = Matrix::zeros(k.clone(), 2, 3);
+    assert!(matches!(
+        jordan_quadratic(&ns),
+        Err(Error::NotSquare { .. })
+    ));
 }
