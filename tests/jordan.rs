@@ -342,7 +342,7 @@ fn planted_structures_properties() {
 }
 
 #[test]
-fn irrational_and_non_exact_real_cases_are_explicit() {
+fn irrational_cases_are_exact_and_explicit() {
     // companion of x^3 - 2: one real cube root and a complex pair with Re != 0
     let a = qmat![[0, 1, 0], [0, 0, 1], [2, 0, 0]];
     let jf = jordan(&a).unwrap();
@@ -352,10 +352,11 @@ fn irrational_and_non_exact_real_cases_are_explicit() {
     assert!(!rep["T"][0][0].as_str().unwrap().is_empty());
     assert_eq!(rep["verified"], true);
     let rf = jf.real_form().unwrap();
-    assert!(rf.exact || !rf.notes.is_empty(), "never silently inexact");
-    if !rf.exact {
-        assert!(!rf.verified);
-    }
+    assert!(
+        rf.exact && rf.verified && rf.notes.is_empty(),
+        "{:?}",
+        rf.notes
+    );
     // golden ratio: Q(sqrt 5)
     let g = qmat![[1, 1], [1, 0]];
     let jf = jordan(&g).unwrap();
@@ -540,10 +541,7 @@ fn real_form_exact_random_complex_factors() {
                 .fold(num_complex::Complex64::new(0.0, 0.0), |acc, &c| {
                     acc * z + c as f64
                 });
-            assert!(
-                v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg as i32),
-                "{p:?}: {z}"
-            );
+            assert!(v.norm() < 1e-9 * (1.0 + z.norm()).powi(deg), "{p:?}: {z}");
         }
         check_real_form_exact(&a);
         done += 1;
