@@ -24,7 +24,7 @@ fn json(args: &[&str]) -> serde_json::Value {
 
 #[test]
 fn minreal_sliding_masses_every_exact_method() {
-    for m in ["kalman", "rosenbrock", "ho-kalman"] {
+    for m in ["kalman", "rosenbrock", "ho-kalman", "jordan"] {
         let j = json(&["minreal", "data/sliding-masses.json", "--method", m]);
         assert_eq!(j["order"], 8, "method {m}");
         assert_eq!(j["mcmillan_degree"], 8);
@@ -32,6 +32,8 @@ fn minreal_sliding_masses_every_exact_method() {
         assert_eq!(j["A"].as_array().unwrap().len(), 8);
         assert_eq!(j["A_approx"].as_array().unwrap().len(), 8);
     }
+    let j = json(&["minreal", "data/sliding-masses.json", "--method", "jordan"]);
+    assert_eq!(j["stages"], serde_json::json!([20, 16, 8]));
 }
 
 #[test]
@@ -227,4 +229,48 @@ fn modes_command() {
     ] {
         assert!(modes[0].get(k).is_some(), "{k}");
     }
+}
+
+#[test]
+fn jordan_and_check_commands() {
+    let j = json(&["jordan", "tests/data/vehicle_eq11.json"]);
+    assert_eq!(j["verified"], true);
+    let evs = j["eigenvalues"].as_array().unwrap();
+    assert_eq!(evs.len(), 3);
+    for k in [
+        "minpoly",
+        "value",
+        "approx",
+        "algebraic_multiplicity",
+        "geometric_multiplicity",
+        "blocks",
+    ] {
+        assert!(evs[0].get(k).is_some(), "eigenvalue key {k}");
+    }
+    assert!(evs.iter().any(|e| e["value"] == "-1 + i"));
+    assert!(j["J_approx"].is_array() && j["T_approx"].is_array());
+    let r = json(&["jordan", "--real", "tests/data/vehicle_eq11.json"]);
+    assert_eq!(r["verified"], true);
+    assert_eq!(
+        r["J"],
+        serde_json::json!([["-2", "0", "0"], ["0", "-1", "1"], ["0", "-1", "-1"]])
+    );
+    // the scrambled 3x3 nilpotent block: exact path one block [3]; float sees a scattered triple
+    let c = json(&["check", "tests/data/yaw_scrambled.json"]);
+    let js = &c["comparisons"]["jordan_structure"];
+    assert_eq!(js["exact_verified"], true);
+    assert!(
+        js["max_float_eigenvalue_error"].as_f64().unwrap() > 1e-8,
+        "float scatters the triple zero"
+    );
+    assert!(!js["float_warnings"].as_array().unwrap().is_empty());
+    let e0 = js["eigenvalues"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|e| e["eigenvalue"] == "0")
+        .unwrap();
+    assert_eq!(e0["exact_blocks"], serde_json::json!([3]));
+    let (code, _, err) = run(&["jordan", "tests/data/invalid_shape.json"]);
+    assert_eq!(code, 2, "{err}");
 }

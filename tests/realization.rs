@@ -294,3 +294,123 @@ fn modal_table_sliding_masses_matches_paper_tab1() {
     assert!((t.modes[0].damping_ratio.unwrap() - 0.5f64.sqrt()).abs() < 1e-15);
     assert_eq!(t.modes[0].eigenvalue, "-1 + i");
 }
+
+#[test]
+fn jordan_method_sliding_masses_20_16_8() {
+    let sys = sliding_masses();
+    let r = minimal_jordan(&sys).unwrap();
+    assert_eq!(
+        r.stages,
+        [20, 16, 8],
+        "drop the four modes at +/- i sqrt 2, then compact"
+    );
+    assert!(r.verified);
+    assert_eq!(r.mcmillan_degree, 8);
+    // sparse real Jordan pattern: 4 blocks [[0, w], [-w, 0]] with 4 distinct magnitudes
+    assert_eq!(r.blocks.len(), 4);
+    let mut mags = vec![];
+    for b in &r.blocks {
+        assert_eq!(b.a.nrows(), 2);
+        let f = &b.field;
+        assert!(f.is_zero(b.a.get(0, 0)) && f.is_zero(b.a.get(1, 1)));
+        assert_eq!(f.neg(b.a.get(0, 1)), *b.a.get(1, 0));
+        mags.push(f.approx(b.a.get(0, 1)).0.abs());
+    }
+    mags.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    let want = [
+        0.5176380902050415,
+        1.0,
+        1.7320508075688772,
+        1.9318516525781366,
+    ];
+    for (g, w) in mags.iter().zip(want) {
+        assert!((g - w).abs() < 1e-12, "{g} vs {w}");
+    }
+}
+
+#[test]
+fn jordan_method_agrees_with_kalman_on_rational_and_quadratic_modes() {
+    // real, repeated and complex-quadratic modes, with a non-trivial Jordan block
+    let a = qmat![
+        [-1, 1, 0, 0, 0],
+        [0, -1, 0, 0, 0],
+        [0, 0, -1, 0, 0],
+        [0, 0, 0, 0, 1],
+        [0, 0, 0, -2, -2]
+    ];
+    let b = qmat![[0, 1], [1, 0], [1, 1], [0, 0], [1, 0]];
+    let c = qmat![[1, 0, 1, 1, 0], [0, 1, 0, 0, 1]];
+    let mut rng = Rng(5);
+    let t = unimodular(&Q, 5, &mut rng);
+    let sys = StateSpace::new_strictly_proper(a, b, c)
+        .unwrap()
+        .transform(&t)
+        .unwrap();
+    let r = minimal_jordan(&sys).unwrap();
+    assert!(r.verified);
+    assert_eq!(r.order(), mcmillan_degree(&sys));
+    let rs = r
+        .to_rational()
+        .expect("all modes rational or Q(i) pairs with rational parts");
+    assert!(rs.same_markov(&sys, 2 * 5));
+    // a cubic factor with complex roots (x^3 - 2): exact real blocks over Q(Re, Im)
+    let cubic = StateSpace::new_strictly_proper(
+        qmat![[0, 1, 0], [0, 0, 1], [2, 0, 0]],
+        qmat![[0], [0], [1]],
+        qmat![[1, 0, 0]],
+    )
+    .unwrap();
+    let r = minimal_jordan(&cubic).unwrap();
+    assert!(r.verified);
+    assert_eq!(r.order(), 3);
+    assert_eq!(
+        r.blocks.len(),
+        2,
+        "one real root block and one complex pair block"
+    );
+    assert_eq!(r.blocks[1].a.nrows(), 2);
+}
+
+#[test]
+fn pbh_agrees_with_kalman_rank_tests() {
+    let mut rng = Rng(21);
+    for _ in 0..iters(20) {
+        let (sys, _) = padded(&Q, &None, &mut rng);
+        assert_eq!(
+            pbh_controllable(&sys.a, &sys.b).unwrap(),
+            is_controllable(&sys.a, &sys.b),
+            "A = {}",
+            sys.a
+        );
+        assert_eq!(
+            pbh_observable(&sys.a, &sys.c).unwrap(),
+            is_observable(&sys.a, &sys.c),
+            "A = {}",
+            sys.a
+        );
+    }
+    let s = sliding_masses();
+    assert!(!pbh_controllable(&s.a, &s.b).unwrap());
+    assert!(!pbh_observable(&s.a, &s.c).unwrap());
+}
+
+#[test]
+fn number_field_matrices_at_jordan_sizes() {
+    // rref and null space of the 20x20 sliding-mass A - t I over Q[t]/(t^4 + 4 t^2 + 1)
+    use exactlti::field::NumberField;
+    use exactlti::poly::Poly;
+    let s = sliding_masses();
+    let k = NumberField::new(&Poly::from_i64s(&[1, 0, 4, 0, 1]), (0.0, 0.5176380902)).unwrap();
+    let mut m = s.a.convert_to(&k);
+    let t = k.generator();
+    for i in 0..20 {
+        let v = k.sub(m.get(i, i), &t);
+        m.set(i, i, v);
+    }
+    let ns = m.nullspace();
+    assert_eq!(ns.ncols(), 2, "each eigenvalue is double and non-defective");
+    assert!((&m * &ns).is_zero());
+    let (r, piv) = m.rref();
+    assert_eq!(piv.len(), 18);
+    assert_eq!(r.rref().0, r);
+}

@@ -3,7 +3,7 @@
 
 Usage (from the repo root):  python3 scripts/anchors/jordan.py [--limit SECONDS]
 Creates/uses the venv .venv-anchors at the repo root (pip install sympy) and re-executes
-itself there. Cases come from /work/shared/anchors/cases.py (the planted matrices use the
+itself there. Cases come from ../shared/anchors/cases.py (or $EXACTLTI_ANCHORS) (the planted matrices use the
 same distribution as benches/jordan.rs, not the same random stream). Each SymPy case runs
 in a child process killed after the time limit.
 """
@@ -15,7 +15,7 @@ import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 VENV = os.path.join(ROOT, ".venv-anchors")
-CASES_DIR = "/work/shared/anchors"
+CASES_DIR = os.environ.get("EXACTLTI_ANCHORS", os.path.join(ROOT, "..", "shared", "anchors"))
 
 
 def ensure_venv():

@@ -26,6 +26,16 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         Command::Standard { file } => standard(file),
         Command::Analyze { file } => analyze(file.as_deref()),
         Command::Poly { op } => poly(op),
+        Command::Jordan { file, real } => {
+            let l = load_system(file)?;
+            let t = l.rational("the Jordan decomposition")?;
+            let jf = crate::jordan::jordan(&t.a_raw).map_err(|e| with_path(file, e))?;
+            if *real {
+                Ok(jf.real_form().map_err(|e| with_path(file, e))?.report())
+            } else {
+                Ok(jf.report())
+            }
+        }
         Command::Modes { file } => {
             let l = load_system(file)?;
             let t = l.rational("the modal table")?;
@@ -66,16 +76,18 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         }
         Command::Check { file } => {
             let l = load_system(file)?;
-            over_ground!(l, |t| super::float_cmds::check(t, file, vec![]))
+            match &l {
+                Loaded::Q(_, t) => {
+                    let extra = super::float_cmds::jordan_comparison(&t.a_raw, file)?;
+                    super::float_cmds::check(t, file, extra)
+                }
+                Loaded::Quadratic(_, t) => super::float_cmds::check(t, file, vec![]),
+            }
         }
         Command::Zeros { file } => {
             let l = load_system(file)?;
             over_ground!(l, |t| zeros_typed(t, file))
         }
-        other => Err(Failure {
-            code: 2,
-            message: format!("command not available in this build: {other:?}"),
-        }),
     }
 }
 
@@ -135,6 +147,12 @@ fn minreal_typed<K: Field>(t: &Typed<K>, m: MinrealMethod, path: &Path) -> Resul
 
 fn minreal(file: &Path, method: MethodArg) -> Result<Report, Failure> {
     let l = load_system(file)?;
+    if method == MethodArg::Jordan {
+        let t = l.rational("the Jordan-form method")?;
+        return Ok(realization::minimal_jordan(&t.ss)
+            .map_err(|e| with_path(file, e))?
+            .report());
+    }
     let m = match method {
         MethodArg::Kalman => MinrealMethod::Kalman,
         MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
@@ -294,6 +312,41 @@ fn analyze(file: Option<&Path>) -> Result<Report, Failure> {
     match &l {
         Loaded::Q(f, t) => {
             let mut r = analyze_typed(f, t)?;
+            match crate::jordan::jordan(&t.ss.a) {
+                Ok(jf) => {
+                    let mut sec = jf.report();
+                    sec.title = Some("eigenvalues and Jordan form".into());
+                    if let Ok(rf) = jf.real_form() {
+                        sec.push("real_form", Value::Obj(rf.report()));
+                    }
+                    sec.push("free_response", Value::Obj(jf.free_response().report(&jf)));
+                    r.push("jordan", Value::Obj(sec));
+                }
+                Err(e) => {
+                    r.push(
+                        "jordan",
+                        Value::Obj(
+                            Report::titled("eigenvalues and Jordan form")
+                                .str("error", e.to_string()),
+                        ),
+                    );
+                }
+            }
+            if t.ss.ninputs() > 0
+                && let (Ok(pc), Ok(po)) = (
+                    realization::pbh_controllable(&t.ss.a, &t.ss.b),
+                    realization::pbh_observable(&t.ss.a, &t.ss.c),
+                )
+            {
+                r.push(
+                    "pbh",
+                    Value::Obj(
+                        Report::titled("PBH tests (exact, one rank per irreducible factor)")
+                            .bool("controllable", pc)
+                            .bool("observable", po),
+                    ),
+                );
+            }
             if let Ok(m) = realization::modal_table(&t.ss.a) {
                 r.push("modes", Value::Obj(m.report()));
             }

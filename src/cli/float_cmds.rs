@@ -136,6 +136,75 @@ pub fn era<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
     Ok(rep.bool("verified", false).bool("exact", false).str("note", "ERA is a float method: nothing is verified exactly; mcmillan_degree is the exact Hankel rank"))
 }
 
+/// Eigenvalues and Jordan structure: exact (rational `A`) against the float guess.
+pub fn jordan_comparison(
+    a_exact: &crate::matrix::Matrix<crate::field::Q>,
+    path: &Path,
+) -> Result<Vec<(String, bool, Report)>, Failure> {
+    let jf = crate::jordan::jordan(a_exact).map_err(|e| fail(path, e))?;
+    let a = to_dmatrix(a_exact).map_err(|e| fail(path, e))?;
+    let tol = Tol::default();
+    let fj = float::jordan_guess(&a, &tol).map_err(|e| fail(path, e))?;
+    let scale = 1.0 + fj.norm;
+    let mut out = vec![];
+    let mut worst = 0.0f64;
+    let mut structure_ok = true;
+    let mut rows = vec![];
+    for ev in &jf.eigenvalues {
+        let (re, im) = ev.approx;
+        let nearest = fj.clusters.iter().min_by(|x, y| {
+            let dx = (x.center.re - re).hypot(x.center.im - im);
+            let dy = (y.center.re - re).hypot(y.center.im - im);
+            dx.total_cmp(&dy)
+        });
+        let Some(c) = nearest else { continue };
+        let dist = (c.center.re - re).hypot(c.center.im - im);
+        // the spread of the computed members around the exact value
+        let spread = c
+            .members
+            .iter()
+            .map(|z| (z.re - re).hypot(z.im - im))
+            .fold(0.0, f64::max);
+        worst = worst.max(spread);
+        let same = dist <= 1e-6 * scale
+            && c.algebraic_multiplicity == ev.algebraic_multiplicity
+            && c.block_sizes == ev.blocks;
+        structure_ok &= same;
+        rows.push(Value::Obj(
+            Report::new()
+                .str("eigenvalue", ev.value.clone())
+                .with(
+                    "exact_blocks",
+                    Value::List(ev.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
+                )
+                .with(
+                    "float_blocks",
+                    Value::List(
+                        c.block_sizes
+                            .iter()
+                            .map(|&b| Value::Int(b as i64))
+                            .collect(),
+                    ),
+                )
+                .float("float_center_distance", dist)
+                .float("float_member_spread", spread)
+                .str("float_truth", truth_str(c.truth))
+                .bool("agree", same),
+        ));
+    }
+    let warnings = Value::List(fj.warnings.iter().map(|w| Value::Str(w.clone())).collect());
+    out.push((
+        "jordan_structure".to_string(),
+        structure_ok,
+        Report::new()
+            .with("eigenvalues", Value::List(rows))
+            .float("max_float_eigenvalue_error", worst)
+            .with("float_warnings", warnings)
+            .bool("exact_verified", jf.verified),
+    ));
+    Ok(out)
+}
+
 /// Float path beside the exact path.
 pub fn check<K: Field>(
     t: &Typed<K>,
@@ -195,14 +264,35 @@ pub fn check<K: Field>(
             && let Ok(fz) = float::invariant_zeros_report(&a, &b, &c, &d, &tol)
         {
             let ez = z.count();
-            items.push((
-                "invariant_zero_count".into(),
-                ez == fz.zeros.len(),
-                Report::new()
-                    .int("exact", ez)
-                    .int("float", fz.zeros.len())
-                    .str("float_truth", truth_str(fz.truth)),
-            ));
+            let mut rep = Report::new()
+                .int("exact", ez)
+                .int("float", fz.zeros.len())
+                .str("float_truth", truth_str(fz.truth));
+            // values: each float zero against the nearest exact zero (certified roots)
+            let rational: Option<Vec<crate::field::Rational>> = z
+                .polynomial
+                .coeffs()
+                .iter()
+                .map(|c| z.polynomial.field().to_rational(c))
+                .collect();
+            if let Some(cs) = rational
+                && let Ok(rs) =
+                    crate::algebraic::roots(&crate::poly::Poly::new(crate::field::Q, cs))
+            {
+                let exact: Vec<(f64, f64)> = rs.iter().map(|(r, _)| r.approx()).collect();
+                let worst = fz
+                    .zeros
+                    .iter()
+                    .map(|w| {
+                        exact
+                            .iter()
+                            .map(|e| (e.0 - w.re).hypot(e.1 - w.im))
+                            .fold(f64::INFINITY, f64::min)
+                    })
+                    .fold(0.0, f64::max);
+                rep = rep.float("max_float_zero_error", worst);
+            }
+            items.push(("invariant_zero_count".into(), ez == fz.zeros.len(), rep));
         }
     }
     items.extend(extra);

@@ -21,7 +21,7 @@ pub mod complex;
 pub mod number_field;
 pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
-pub use number_field::{NfElem, NumberField};
+pub use number_field::{NfElem, NumberField, NumberFieldCtx};
 pub mod rational;
 pub use quadratic::{Quadratic, QuadraticField};
 pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
@@ -85,6 +85,18 @@ pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
         a: &[Self::Elem],
     ) -> Option<(Vec<Self::Elem>, Vec<usize>)> {
         let _ = (m, n, a);
+        None
+    }
+    /// Row-major product of `m x k` and `k x n`; see [`Field::fast_rref`].
+    fn fast_mul(
+        &self,
+        m: usize,
+        k: usize,
+        n: usize,
+        a: &[Self::Elem],
+        b: &[Self::Elem],
+    ) -> Option<Vec<Self::Elem>> {
+        let _ = (m, k, n, a, b);
         None
     }
     /// See [`Field::fast_rref`].

@@ -90,6 +90,17 @@ impl Field for Q {
     fn fast_rref(&self, m: usize, n: usize, a: &[Rational]) -> Option<(Vec<Rational>, Vec<usize>)> {
         Some(crate::matrix::modular::rref_q(m, n, a))
     }
+    fn fast_mul(
+        &self,
+        m: usize,
+        k: usize,
+        n: usize,
+        a: &[Rational],
+        b: &[Rational],
+    ) -> Option<Vec<Rational>> {
+        // the integer kernel pays off once the inner dimension is not tiny
+        (k >= 4 && m * n >= 4).then(|| crate::matrix::intmul::mul_q(m, k, n, a, b))
+    }
     fn fast_rank(&self, m: usize, n: usize, a: &[Rational]) -> Option<usize> {
         Some(crate::matrix::modular::rank_q(m, n, a))
     }

@@ -39,7 +39,7 @@
 pub mod chains;
 pub mod primary;
 pub mod real;
-mod realfield;
+pub(crate) mod realfield;
 pub mod response;
 mod roots;
 

@@ -17,6 +17,7 @@
 
 mod charpoly;
 pub mod fraction_free;
+pub mod intmul;
 pub mod modular;
 mod ops;
 mod rref;

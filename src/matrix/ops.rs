@@ -155,6 +155,9 @@ impl<K: Field> Matrix<K> {
             });
         }
         let k = &self.field;
+        if let Some(v) = k.fast_mul(self.nrows, self.ncols, b.ncols, &self.data, &b.data) {
+            return Ok(Matrix::from_vec(k.clone(), self.nrows, b.ncols, v));
+        }
         let mut out = vec![k.zero(); self.nrows * b.ncols];
         for i in 0..self.nrows {
             let orow = &mut out[i * b.ncols..(i + 1) * b.ncols];

@@ -69,3 +69,48 @@ pub fn row_compression<K: Field>(x: &Matrix<K>) -> (Matrix<K>, usize) {
     let r = comp.nrows();
     (l.vstack(&comp).expect("same width"), r)
 }
+
+/// PBH test (Popov–Belevitch–Hautus): $(A, B)$ is controllable iff
+/// $\mathrm{rank}\,[A - \lambda I, B] = n$ for every eigenvalue $\lambda$. Exact over
+/// $\mathbb{Q}$: one rank per irreducible factor $p$ of $\det(sI - A)$, computed in
+/// $K = \mathbb{Q}[t]/(p)$ at $\lambda = t$ (the conjugate roots give the same rank).
+///
+/// # Errors
+/// `NotSquare`; factorization failures.
+pub fn pbh_controllable(
+    a: &Matrix<crate::field::Q>,
+    b: &Matrix<crate::field::Q>,
+) -> crate::error::Result<bool> {
+    use crate::field::NumberField;
+    a.check_square("pbh")?;
+    let n = a.nrows();
+    let (_, factors) = crate::algebraic::factor_q(&a.charpoly()?)?;
+    for (p, _) in factors {
+        let k = NumberField::new_unchecked(&p, (0.0, 0.0));
+        let t = if p.deg() == 1 {
+            k.from_rational(&-p.coeff(0))
+        } else {
+            k.generator()
+        };
+        let mut m = a.convert_to(&k);
+        for i in 0..n {
+            let v = k.sub(m.get(i, i), &t);
+            m.set(i, i, v);
+        }
+        if m.hstack(&b.convert_to(&k))?.rank() < n {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+/// PBH test for observability: the dual of [`pbh_controllable`].
+///
+/// # Errors
+/// As [`pbh_controllable`].
+pub fn pbh_observable(
+    a: &Matrix<crate::field::Q>,
+    c: &Matrix<crate::field::Q>,
+) -> crate::error::Result<bool> {
+    pbh_controllable(&a.transpose(), &c.transpose())
+}

@@ -59,9 +59,9 @@ fn extend_with<K: Field>(base: &Matrix<K>, cand: &Matrix<K>) -> Matrix<K> {
 pub fn kalman_decomposition<K: Field>(sys: &StateSpace<K>) -> Result<KalmanDecomposition<K>> {
     let n = sys.nstates();
     let r = controllability_matrix(&sys.a, &sys.b).column_space();
-    let nn = observability_matrix(&sys.a, &sys.c).nullspace();
-    // R ∩ N = R * null(O R)
     let o = observability_matrix(&sys.a, &sys.c);
+    let nn = o.nullspace();
+    // R ∩ N = R * null(O R)
     let x1 = if r.ncols() == 0 {
         r.clone()
     } else {

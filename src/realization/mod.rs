@@ -15,6 +15,7 @@
 //! | [`minimal`] (`MinrealMethod::Kalman`, default) | the $co$ block of the Kalman decomposition |
 //! | `MinrealMethod::Rosenbrock` | staircase of exact row compressions of $[A\ B; C\ 0]$, then of the dual (paper sec. 2.3) |
 //! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
+//! | [`minimal_jordan`] | Jordan-form method (sec. 3.3): drop non-contributing modes, compact repeated ones, real Jordan blocks |
 //! | [`descriptor_to_standard`] | Weierstrass-type split of $(E, A)$ without inverting $E$ |
 //! | [`modal_table`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
@@ -23,6 +24,7 @@ mod controllability;
 mod descriptor;
 mod gramian;
 mod ho_kalman;
+mod jordan_method;
 mod kalman;
 mod minimal;
 mod modal;
@@ -30,11 +32,12 @@ mod rosenbrock;
 
 pub use controllability::{
     controllability_matrix, hankel_matrix, is_controllable, is_observable, mcmillan_degree,
-    observability_matrix, row_compression,
+    observability_matrix, pbh_controllable, pbh_observable, row_compression,
 };
 pub use descriptor::{StandardForm, descriptor_to_standard};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
+pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use minimal::{MinimalRealization, MinrealMethod, minimal, minimal_kalman};
 pub use modal::{ModalTable, Mode, modal_table};
