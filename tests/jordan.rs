@@ -342,7 +342,7 @@ fn planted_structures_properties() {
 }
 
 #[test]
-fn irrational_and_non_exact_real_cases_are_explicit() {
+fn irrational_cases_are_exact_and_explicit() {
     // companion of x^3 - 2: one real cube root and a complex pair with Re != 0
     let a = qmat![[0, 1, 0], [0, 0, 1], [2, 0, 0]];
     let jf = jordan(&a).unwrap();
@@ -352,10 +352,11 @@ fn irrational_and_non_exact_real_cases_are_explicit() {
     assert!(!rep["T"][0][0].as_str().unwrap().is_empty());
     assert_eq!(rep["verified"], true);
     let rf = jf.real_form().unwrap();
-    assert!(rf.exact || !rf.notes.is_empty(), "never silently inexact");
-    if !rf.exact {
-        assert!(!rf.verified);
-    }
+    assert!(
+        rf.exact && rf.verified && rf.notes.is_empty(),
+        "{:?}",
+        rf.notes
+    );
     // golden ratio: Q(sqrt 5)
     let g = qmat![[1, 1], [1, 0]];
     let jf = jordan(&g).unwrap();
@@ -545,4 +546,25 @@ fn real_form_exact_random_complex_factors() {
         check_real_form_exact(&a);
         done += 1;
     }
+}
+
+#[test]
+fn quadratic_input_rational_entries_or_explicit_unsupported() {
+    use exactlti::field::QuadraticField;
+    use exactlti::jordan::jordan_quadratic;
+    let k = QuadraticField::new(3).unwrap();
+    let a = qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]];
+    let ak = Matrix::from_fn(k.clone(), 3, 3, |i, j| k.from_rational(a.get(i, j)));
+    assert_eq!(jordan_quadratic(&ak).unwrap(), jordan(&a).unwrap());
+    let mut bk = ak.clone();
+    bk.set(0, 0, k.gen_elem());
+    match jordan_quadratic(&bk) {
+        Err(Error::Unsupported(m)) => assert!(m.contains("not rational"), "{m}"),
+        other => panic!("expected Unsupported, got {other:?}"),
+    }
+    let ns = Matrix::zeros(k.clone(), 2, 3);
+    assert!(matches!(
+        jordan_quadratic(&ns),
+        Err(Error::NotSquare { .. })
+    ));
 }

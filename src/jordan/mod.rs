@@ -180,6 +180,57 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
     })
 }
 
+/// Jordan decomposition of a matrix over a quadratic field $\mathbb{Q}(\sqrt d)$ (or
+/// $\mathbb{Q}(i)$).
+///
+/// A matrix whose entries are all rational is decomposed exactly by [`jordan`]. A matrix
+/// with irrational entries is not supported yet: its characteristic polynomial lies in
+/// $\mathbb{Q}(\sqrt d)[x]$ and needs the factorization over $\mathbb{Q}(\sqrt d)$ and
+/// components over absolute fields $\mathbb{Q}(\sqrt d)[t]/(q)$, which
+/// [`JordanForm`] (a rational matrix and a rational characteristic polynomial) cannot
+/// carry; the error says so instead of answering approximately.
+///
+/// # Errors
+/// `Unsupported` for an entry outside $\mathbb{Q}$; those of [`jordan`] otherwise.
+///
+/// # Examples
+/// ```
+/// use exactlti::field::{Field, QuadraticField};
+/// use exactlti::jordan::jordan_quadratic;
+/// use exactlti::matrix::Matrix;
+/// let k = QuadraticField::new(2).unwrap();
+/// let a = Matrix::from_fn(k.clone(), 2, 2, |i, j| k.from_i64((i + 2 * j) as i64));
+/// assert!(jordan_quadratic(&a).unwrap().verified);
+/// let b = Matrix::from_fn(k.clone(), 2, 2, |i, j| if i == j { k.gen_elem() } else { k.zero() });
+/// assert!(jordan_quadratic(&b).is_err());
+/// ```
+pub fn jordan_quadratic(a: &Matrix<crate::field::QuadraticField>) -> Result<JordanForm> {
+    let k = a.field();
+    let mut rows = Vec::with_capacity(a.nrows());
+    for i in 0..a.nrows() {
+        let mut row = Vec::with_capacity(a.ncols());
+        for j in 0..a.ncols() {
+            let Some(q) = k.to_rational(a.get(i, j)) else {
+                return Err(crate::error::Error::Unsupported(format!(
+                    "Jordan form over {k}: entry ({}, {}) = {} is not rational; exact \
+                     decomposition over a quadratic field is not implemented (only rational \
+                     matrices are)",
+                    i + 1,
+                    j + 1,
+                    k.fmt_elem(a.get(i, j))
+                )));
+            };
+            row.push(q);
+        }
+        rows.push(row);
+    }
+    if a.nrows() == 0 {
+        a.check_square("jordan")?;
+        return jordan(&Matrix::zeros(Q, 0, 0));
+    }
+    jordan(&Matrix::from_rows(Q, rows)?)
+}
+
 /// Maps an element $c_0 + c_1 t$ of $\mathbb{Q}[t]/(p)$, $\deg p = 2$, to
 /// $\mathbb{Q}(\sqrt f)$ at the root $t = a_0 + s\sqrt f$.
 pub(crate) fn quadratic_image(

@@ -33,11 +33,11 @@
 //! approximately, `exact` is false and `notes` says why: never silently.
 
 use super::primary::{named_field, rational_field};
-use super::realfield::{RealParts, identify_real_root, real_parts_field, simplify};
+use super::realfield::{RealParts, identify_real_root, real_parts_field, simplify, theta_powers};
 use super::roots::{factor_q, fmt_approx, quadratic_roots};
 use super::{JordanForm, quadratic_field};
 use crate::error::Result;
-use crate::field::{ComplexField, ComplexPair, Field, NfElem, NumberField, Q, Rational};
+use crate::field::{ComplexPair, Field, NfElem, NumberField, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::report::{MatrixOut, Report, Value};
@@ -49,8 +49,10 @@ pub(crate) enum ReImMap {
     /// Real root: the element itself (already in the real field).
     Real,
     /// Complex root $\theta = a + i b$ with $a, b$ in the real field $F$: an element
-    /// $\sum c_k t^k$ maps to $\sum c_k \theta^k$ evaluated in $F(i)$.
-    Complex(ComplexPair<NfElem>),
+    /// $\sum c_k t^k$ maps to $\sum c_k \theta^k$ evaluated in $F(i)$; the table holds
+    /// $\theta^0, \dots, \theta^{d-1}$ ($d = \deg p$), so each image costs only rational
+    /// scalings.
+    Complex(Vec<ComplexPair<NfElem>>),
 }
 
 /// One real eigenvalue or one complex pair of the real Jordan form.
@@ -95,13 +97,18 @@ impl RealBlock {
         let f = self.field.as_ref()?;
         Some(match self.map.as_ref()? {
             ReImMap::Real => (x.clone(), f.zero()),
-            ReImMap::Complex(theta) => {
-                let c = ComplexField::new(f.clone());
-                let mut acc = c.zero();
-                for coef in x.0.iter().rev() {
-                    acc = c.add(&c.mul(&acc, theta), &c.from_rational(coef));
+            ReImMap::Complex(powers) => {
+                let mut re = f.zero();
+                let mut im = f.zero();
+                for (coef, pw) in x.0.iter().zip(powers) {
+                    if coef.is_zero() {
+                        continue;
+                    }
+                    let c = f.from_rational(coef);
+                    re = f.add(&re, &f.mul(&c, &pw.re));
+                    im = f.add(&im, &f.mul(&c, &pw.im));
                 }
-                (acc.re, acc.im)
+                (re, im)
             }
         })
     }
@@ -136,7 +143,6 @@ fn real_field_for(
 ) -> std::result::Result<(NumberField, ReImMap), String> {
     let e = &jf.eigenvalues[ev];
     let p = &e.minpoly;
-    let pair = |a: NfElem, b: NfElem| ReImMap::Complex(ComplexPair { re: a, im: b });
     if p.deg() == 2 {
         // theta = a0 + s sqrt(d), d < 0: Im = s sqrt(-d) (s > 0 for the upper root)
         let (a0, s, d) = quadratic_roots(p).expect("irreducible");
@@ -152,7 +158,8 @@ fn real_field_for(
         } else {
             f.elem_from_poly(&Poly::new(Q, vec![Rational::zero(), s]))
         };
-        return Ok((f, pair(re, im)));
+        let powers = theta_powers(p, &f, &re, &im).map_err(|e| e.to_string())?;
+        return Ok((f, ReImMap::Complex(powers)));
     }
     let note = |err: crate::error::Error| {
         format!(
@@ -190,11 +197,13 @@ fn real_field_for(
             im: b,
             field: f,
             primitive: None,
+            powers: vec![],
         });
-        return Ok((parts.field, pair(parts.re, parts.im)));
+        let powers = theta_powers(p, &parts.field, &parts.re, &parts.im).map_err(note)?;
+        return Ok((parts.field, ReImMap::Complex(powers)));
     }
     let parts = real_parts_field(&e.number, &format!("c{}", ev + 1)).map_err(note)?;
-    Ok((parts.field, pair(parts.re, parts.im)))
+    Ok((parts.field, ReImMap::Complex(parts.powers)))
 }
 
 impl JordanForm {

@@ -17,11 +17,16 @@
 //! The minimal polynomial $g$ of $c$ is the irreducible factor of $P_k$ having $c$ as a
 //! real root, identified with certified intervals (the box of $\theta$ maps to an interval
 //! of $a + k b$; candidate roots are refined until one is left). With $F = \mathbb{Q}[c]/(g)$
-//! (real embedding at $c$) and $\bar\theta = (c - w\theta)/\bar w$:
-//! $$\gcd_{F(i)[y]}\big(p(y),\ p((c - w y)/\bar w)\big) = y - \theta,$$
-//! linear by separation. This writes $\theta = a(c) + b(c)\, i$ exactly, and
-//! $\mathbb{Q}(c) = \mathbb{Q}(a, b)$ since $c = a + k b$. The result is checked:
-//! $p(a + b i) = 0$ in $F(i)$ and $b \ne 0$.
+//! (real embedding at $c$), $\theta$ is a rational function of $c$ (Lagrange
+//! interpolation over the roots of $P_k$):
+//! $$\theta = \frac{H_k(c)}{P_k'(c)}, \qquad H_k(x) = \sum_{j,l} \theta_j
+//! \frac{P_k(x)}{x - c_{jl}} \in \mathbb{Q}(i)[x],$$
+//! where $P_k - \varepsilon H_k = \prod (x - c_{jl} - \varepsilon\theta_j)$ comes from the
+//! same power sums over the dual numbers $\mathbb{Q}(i)[\varepsilon]/(\varepsilon^2)$
+//! (the weight $w$ becomes $w + \varepsilon$). Splitting $H_k = H_r + i H_i$ gives
+//! $a = H_r(c)/P_k'(c)$, $b = H_i(c)/P_k'(c)$ in $F$, and $\mathbb{Q}(c) =
+//! \mathbb{Q}(a, b)$ since $c = a + k b$. The result is checked exactly: $p(a + b i) = 0$
+//! in $F(i)$ and $b \ne 0$ (and the marked embedding of $F$ sends $a + b i$ to $\theta$).
 //!
 //! A field of degree 2 is shown with its radical ($\mathbb{Q}(\sqrt f)$), degree 1 as
 //! $\mathbb{Q}$.
@@ -40,6 +45,7 @@ use crate::algebraic::number::Loc;
 use crate::algebraic::zp;
 use crate::error::{Error, Result};
 use crate::field::{ComplexField, ComplexPair, Field, NfElem, NumberField, Q, Rational};
+use crate::matrix::Matrix;
 use crate::poly::Poly;
 use num_traits::{One, Zero};
 
@@ -52,6 +58,8 @@ pub(crate) struct RealParts {
     /// The primitive element's minimal polynomial and $k$ ($c = a + k b$); `None` when the
     /// field is given by another construction.
     pub primitive: Option<(Poly<Q>, i64)>,
+    /// $\theta^0, \dots, \theta^{d-1}$ in $F(i)$ once checked ([`theta_powers`]).
+    pub powers: Vec<ComplexPair<NfElem>>,
 }
 
 /// Power sums $s_0, \dots, s_N$ of the roots of a monic `p` (Newton's identities).
@@ -73,64 +81,118 @@ fn power_sums(p: &Poly<Q>, upto: usize) -> Vec<Rational> {
     s
 }
 
-/// The monic polynomial of degree `n` with power sums `s[1..=n]`.
-fn from_power_sums(s: &[Rational], n: usize) -> Poly<Q> {
-    let mut e = vec![Rational::one()];
-    for k in 1..=n {
-        let mut v = Rational::zero();
-        for i in 1..=k {
-            let t = &e[k - i] * &s[i];
-            if i % 2 == 1 { v += t } else { v -= t }
-        }
-        e.push(v / Rational::from_integer(k.into()));
-    }
-    let mut c = vec![Rational::zero(); n + 1];
-    for k in 0..=n {
-        c[n - k] = if k % 2 == 0 { e[k].clone() } else { -&e[k] };
-    }
-    Poly::new(Q, c)
-}
+/// A Gaussian rational $x + y i$.
+type G = (Rational, Rational);
 
-/// Gaussian rational product.
-fn gmul(x: &(Rational, Rational), y: &(Rational, Rational)) -> (Rational, Rational) {
+fn gmul(x: &G, y: &G) -> G {
     (&x.0 * &y.0 - &x.1 * &y.1, &x.0 * &y.1 + &x.1 * &y.0)
 }
+fn gadd(x: &G, y: &G) -> G {
+    (&x.0 + &y.0, &x.1 + &y.1)
+}
+fn gscale(x: &G, q: &Rational) -> G {
+    (&x.0 * q, &x.1 * q)
+}
 
-/// $P_k(x) = \prod_{j,l} (x - w\theta_j - \bar w\theta_l)$, $w = (1 - k i)/2$ (degree $d^2$).
-pub(crate) fn composed_primitive(p: &Poly<Q>, k: i64) -> Poly<Q> {
+/// A dual number $u + \varepsilon v$ ($\varepsilon^2 = 0$) over the Gaussian rationals.
+#[derive(Clone)]
+struct Dual(G, G);
+
+impl Dual {
+    fn mul(&self, o: &Dual) -> Dual {
+        Dual(
+            gmul(&self.0, &o.0),
+            gadd(&gmul(&self.0, &o.1), &gmul(&self.1, &o.0)),
+        )
+    }
+    fn add(&self, o: &Dual) -> Dual {
+        Dual(gadd(&self.0, &o.0), gadd(&self.1, &o.1))
+    }
+    fn scale(&self, q: &Rational) -> Dual {
+        Dual(gscale(&self.0, q), gscale(&self.1, q))
+    }
+}
+
+/// $P_k(x) = \prod_{j,l} (x - c_{jl})$, $c_{jl} = w\theta_j + \bar w\theta_l$,
+/// $w = (1 - k i)/2$ (degree $d^2$, rational), and $H_k(x) = \sum_{j,l} \theta_j
+/// P_k(x)/(x - c_{jl})$ as real and imaginary parts $(H_r, H_i)$, so that
+/// $\theta_j = H_k(c_{jl}) / P_k'(c_{jl})$ when $P_k$ is square-free.
+///
+/// Both come from one Newton recurrence over dual numbers: $Q_\varepsilon(x) = \prod (x -
+/// c_{jl} - \varepsilon\theta_j) = P_k - \varepsilon H_k$ has power sums
+/// $\sum_m \binom nm (w + \varepsilon)^m \bar w^{n-m} s_m s_{n-m}$.
+pub(crate) fn composed_primitive(p: &Poly<Q>, k: i64) -> (Poly<Q>, Poly<Q>, Poly<Q>) {
     let p = p.monic();
     let big = p.deg() * p.deg();
     let s = power_sums(&p, big);
+    let zero = || (Rational::zero(), Rational::zero());
     let half = Rational::new(1.into(), 2.into());
-    let w = (half.clone(), Rational::from_integer((-k).into()) * &half);
-    // powers w^m
-    let mut wp = vec![(Rational::one(), Rational::zero())];
+    let w: G = (half.clone(), Rational::from_integer((-k).into()) * &half);
+    let mut wp: Vec<G> = vec![(Rational::one(), Rational::zero())];
     for m in 1..=big {
         let next = gmul(&wp[m - 1], &w);
         wp.push(next);
     }
-    let mut t = vec![Rational::from_integer(big.into())];
+    let conj = |x: &G| (x.0.clone(), -&x.1);
+    // power sums T_n(eps)
+    let mut t: Vec<Dual> = vec![Dual(
+        (Rational::from_integer(big.into()), Rational::zero()),
+        zero(),
+    )];
     let mut binom = vec![Rational::one()];
     for n in 1..=big {
-        // binomial row n
         let mut row = vec![Rational::one(); n + 1];
         for j in 1..n {
             row[j] = &binom[j - 1] + &binom[j];
         }
         binom = row;
-        let mut v = Rational::zero();
+        let mut acc = Dual(zero(), zero());
         for m in 0..=n {
-            // Re(w^m conj(w)^(n-m)) = Re(w^m) Re(w^(n-m)) + Im(w^m) Im(w^(n-m))
-            let (a, b) = (&wp[m], &wp[n - m]);
-            let re = &a.0 * &b.0 + &a.1 * &b.1;
-            if re.is_zero() || s[m].is_zero() || s[n - m].is_zero() {
+            if s[m].is_zero() || s[n - m].is_zero() {
                 continue;
             }
-            v += &binom[m] * re * &s[m] * &s[n - m];
+            let c = &binom[m] * &s[m] * &s[n - m];
+            let wb = conj(&wp[n - m]);
+            let u = gmul(&wp[m], &wb);
+            let v = if m == 0 {
+                zero()
+            } else {
+                gscale(&gmul(&wp[m - 1], &wb), &Rational::from_integer(m.into()))
+            };
+            acc = acc.add(&Dual(u, v).scale(&c));
         }
-        t.push(v);
+        t.push(acc);
     }
-    from_power_sums(&t, big)
+    // elementary symmetric functions (Newton's identities over the dual numbers)
+    let mut e = vec![Dual((Rational::one(), Rational::zero()), zero())];
+    for kk in 1..=big {
+        let mut v = Dual(zero(), zero());
+        for i in 1..=kk {
+            let term = e[kk - i].mul(&t[i]);
+            v = if i % 2 == 1 {
+                v.add(&term)
+            } else {
+                v.add(&term.scale(&-Rational::one()))
+            };
+        }
+        e.push(v.scale(&Rational::new(1.into(), kk.into())));
+    }
+    let mut pc = vec![Rational::zero(); big + 1];
+    let mut hr = vec![Rational::zero(); big + 1];
+    let mut hi = vec![Rational::zero(); big + 1];
+    for kk in 0..=big {
+        let sign = if kk % 2 == 0 {
+            Rational::one()
+        } else {
+            -Rational::one()
+        };
+        debug_assert!(e[kk].0.1.is_zero(), "P_k has rational coefficients");
+        pc[big - kk] = &e[kk].0.0 * &sign;
+        // Q_eps = P - eps H
+        hr[big - kk] = -(&e[kk].1.0 * &sign);
+        hi[big - kk] = -(&e[kk].1.1 * &sign);
+    }
+    (Poly::new(Q, pc), Poly::new(Q, hr), Poly::new(Q, hi))
 }
 
 /// Among the real roots of the irreducible `factors`, the one equal to
@@ -215,8 +277,9 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
         } else {
             -(step / 2 + 1)
         };
-        let pk = composed_primitive(&p, k);
-        if !pk.gcd(&pk.derivative()).is_one() {
+        let (pk, hr, hi) = composed_primitive(&p, k);
+        let dpk = pk.derivative();
+        if !is_squarefree(&pk) {
             continue;
         }
         let (_, facs) = crate::algebraic::factor_q(&pk)?;
@@ -233,16 +296,20 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
         )?;
         let croot = c.approx().0;
         let f = named_field(&g, (croot, 0.0), var);
-        let Some((re, im)) = parts_by_gcd(&p, &f, k) else {
+        // theta = H(c) / P'(c)
+        let Some(den) = nf_inv(&f, &f.elem_from_poly(&dpk)) else {
             continue;
         };
-        let parts = simplify(RealParts {
+        let re = f.mul(&f.elem_from_poly(&hr), &den);
+        let im = f.mul(&f.elem_from_poly(&hi), &den);
+        let mut parts = simplify(RealParts {
             field: f,
             re,
             im,
             primitive: Some((g, k)),
+            powers: vec![],
         });
-        check_parts(&p, &parts)?;
+        parts.powers = theta_powers(&p, &parts.field, &parts.re, &parts.im)?;
         // the marked embedding carries (a, b) to the parts of this root
         let (ta, tb) = theta.approx();
         let (fa, _) = parts.field.approx(&parts.re);
@@ -260,32 +327,6 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
     )))
 }
 
-/// $\theta$ from the linear $\gcd_{F(i)}(p(y), p((c - w y)/\bar w))$.
-fn parts_by_gcd(p: &Poly<Q>, f: &NumberField, k: i64) -> Option<(NfElem, NfElem)> {
-    let cf = ComplexField::new(f.clone());
-    let q = |x: &Rational| f.from_rational(x);
-    let half = Rational::new(1.into(), 2.into());
-    let w = ComplexPair {
-        re: q(&half),
-        im: q(&(Rational::from_integer((-k).into()) * &half)),
-    };
-    let wbar = cf.conj(&w).expect("conjugation");
-    let wbar_inv = cf.inv(&wbar)?;
-    let c = cf.from_base(&f.generator());
-    // L(y) = c / wbar - (w / wbar) y
-    let lin = Poly::new(
-        cf.clone(),
-        vec![cf.mul(&c, &wbar_inv), cf.neg(&cf.mul(&w, &wbar_inv))],
-    );
-    let pc = p.map(&cf, |x| cf.from_rational(x));
-    let h = pc.gcd(&pc.compose(&lin));
-    if h.deg() != 1 {
-        return None;
-    }
-    let theta = cf.neg(&cf.mul(&h.coeff(0), &cf.inv(&h.coeff(1))?));
-    Some((theta.re, theta.im))
-}
-
 /// Degree 1 and 2 fields in their usual presentation ($\mathbb{Q}$, $\mathbb{Q}(\sqrt f)$).
 pub(crate) fn simplify(parts: RealParts) -> RealParts {
     let f = &parts.field;
@@ -298,6 +339,7 @@ pub(crate) fn simplify(parts: RealParts) -> RealParts {
                 im: to(&parts.im),
                 field: k.clone(),
                 primitive: parts.primitive,
+                powers: parts.powers,
             }
         }
         2 => {
@@ -313,28 +355,233 @@ pub(crate) fn simplify(parts: RealParts) -> RealParts {
                 im: quadratic_image(&parts.im, &a0, &s),
                 field: k,
                 primitive: parts.primitive,
+                powers: parts.powers,
             }
         }
         _ => parts,
     }
 }
 
-/// $p(a + b i) = 0$ in $F(i)$ and $b \ne 0$.
-fn check_parts(p: &Poly<Q>, parts: &RealParts) -> Result<()> {
-    let f = &parts.field;
+/// The powers $\theta^0, \dots, \theta^{d-1}$ of $\theta = a + b i$ in $F(i)$
+/// ($d = \deg p$), after checking exactly that $p(\theta) = 0$ and $b \ne 0$: then
+/// $t \mapsto \theta$ is a field embedding of $\mathbb{Q}[t]/(p)$ into $F(i)$.
+///
+/// # Errors
+/// `Verification` when the check fails.
+pub(crate) fn theta_powers(
+    p: &Poly<Q>,
+    f: &NumberField,
+    re: &NfElem,
+    im: &NfElem,
+) -> Result<Vec<ComplexPair<NfElem>>> {
     let cf = ComplexField::new(f.clone());
     let theta = ComplexPair {
-        re: parts.re.clone(),
-        im: parts.im.clone(),
+        re: re.clone(),
+        im: im.clone(),
     };
-    let mut acc = cf.zero();
-    for c in p.coeffs().iter().rev() {
-        acc = cf.add(&cf.mul(&acc, &theta), &cf.from_rational(c));
+    let p = p.monic();
+    let d = p.deg();
+    let mut powers = vec![cf.one()];
+    for k in 1..=d {
+        let next = cf.mul(&powers[k - 1], &theta);
+        powers.push(next);
     }
-    if !cf.is_zero(&acc) || f.is_zero(&parts.im) {
+    // p(theta) = sum_k p_k theta^k
+    let mut acc = cf.zero();
+    for (c, pw) in p.coeffs().iter().zip(&powers) {
+        if !c.is_zero() {
+            let c = cf.from_rational(c);
+            acc = cf.add(&acc, &cf.mul(&c, pw));
+        }
+    }
+    if !cf.is_zero(&acc) || f.is_zero(im) {
         return Err(Error::Verification(format!(
             "real and imaginary parts of a root of {p} do not satisfy it"
         )));
     }
-    Ok(())
+    powers.pop();
+    Ok(powers)
+}
+
+/// $x^{-1}$ in $F$: the extended Euclidean algorithm for small degrees, else the first
+/// column of the inverse of the multiplication matrix of $x$ (multi-modular over
+/// $\mathbb{Q}$, free of the coefficient growth of the rational remainder sequence).
+pub(crate) fn nf_inv(f: &NumberField, x: &NfElem) -> Option<NfElem> {
+    let d = f.degree();
+    if d <= 8 || f.is_zero(x) {
+        return f.inv(x);
+    }
+    let t = f.generator();
+    let mut cols = vec![x.clone()];
+    for j in 1..d {
+        let next = f.mul(&cols[j - 1], &t);
+        cols.push(next);
+    }
+    let m = Matrix::from_fn(Q, d, d, |i, j| {
+        cols[j].0.get(i).cloned().unwrap_or_else(Rational::zero)
+    });
+    let inv = m.inverse().ok()?;
+    let mut v: Vec<Rational> = (0..d).map(|i| inv.get(i, 0).clone()).collect();
+    while v.last().is_some_and(|c| c.is_zero()) {
+        v.pop();
+    }
+    Some(NfElem(v))
+}
+
+/// Square-freeness of `p` over $\mathbb{Q}$: proven by a square-free image modulo a prime
+/// not dividing the leading coefficient ($\gcd(\bar p, \bar p') = 1$ in
+/// $\mathbb{F}_q[x]$ with $\deg \bar p = \deg p$ implies $\gcd(p, p') = 1$); the exact
+/// gcd over $\mathbb{Q}$ decides when a few primes do not.
+pub(crate) fn is_squarefree(p: &Poly<Q>) -> bool {
+    let z = zp::from_poly_q(p);
+    for q in [
+        2_147_483_647u64,
+        2_147_483_629,
+        2_147_483_587,
+        2_147_483_579,
+    ] {
+        let bq = num_bigint::BigInt::from(q);
+        let red: Vec<u64> = z
+            .iter()
+            .map(|c| {
+                let r = c % &bq;
+                let r = if r < num_bigint::BigInt::zero() {
+                    r + &bq
+                } else {
+                    r
+                };
+                u64::try_from(r).unwrap_or(0)
+            })
+            .collect();
+        if red.last().copied().unwrap_or(0) == 0 {
+            continue;
+        }
+        let der: Vec<u64> = red
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(i, c)| (c * (i as u64 % q)) % q)
+            .collect();
+        if gcd_mod(red, der, q).len() == 1 {
+            return true;
+        }
+    }
+    p.gcd(&p.derivative()).is_one()
+}
+
+fn pow_mod(mut b: u64, mut e: u64, q: u64) -> u64 {
+    let mut r = 1u64;
+    b %= q;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = r * b % q;
+        }
+        b = b * b % q;
+        e >>= 1;
+    }
+    r
+}
+
+/// Monic-free gcd in $\mathbb{F}_q[x]$ (coefficients low degree first, `q < 2^32`).
+fn gcd_mod(mut a: Vec<u64>, mut b: Vec<u64>, q: u64) -> Vec<u64> {
+    let trim = |v: &mut Vec<u64>| {
+        while v.last() == Some(&0) {
+            v.pop();
+        }
+    };
+    trim(&mut a);
+    trim(&mut b);
+    while !b.is_empty() {
+        // a mod b
+        let inv = pow_mod(*b.last().expect("non-empty"), q - 2, q);
+        while a.len() >= b.len() {
+            let c = a.last().copied().unwrap_or(0) * inv % q;
+            let off = a.len() - b.len();
+            for (j, bj) in b.iter().enumerate() {
+                a[off + j] = (a[off + j] + q - c * bj % q) % q;
+            }
+            trim(&mut a);
+            if a.is_empty() {
+                break;
+            }
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    a
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    fn p(cs: &[i64]) -> Poly<Q> {
+        Poly::from_i64s(cs)
+    }
+
+    #[test]
+    fn composed_primitive_examples() {
+        // theta = +-i, w = (1 - i)/2: c in {1, -1, i, -i}
+        let (pk, hr, hi) = composed_primitive(&p(&[1, 0, 1]), 1);
+        assert_eq!(pk, p(&[-1, 0, 0, 0, 1]));
+        // theta = H(c)/P'(c): at c = 1 the root i, at c = -1 the root -i
+        let one = Rational::one();
+        let d1 = pk.derivative().eval(&one);
+        assert_eq!(
+            (hr.eval(&one) / &d1, hi.eval(&one) / &d1),
+            (Rational::zero(), one.clone())
+        );
+        let m1 = -one.clone();
+        let d2 = pk.derivative().eval(&m1);
+        assert_eq!(
+            (hr.eval(&m1) / &d2, hi.eval(&m1) / &d2),
+            (Rational::zero(), -one)
+        );
+        // p divides P_k
+        let q = p(&[-2, 0, 0, 1]);
+        let (pk, _, _) = composed_primitive(&q, 2);
+        assert_eq!(pk.deg(), 9);
+        assert!(pk.rem(&q).is_zero());
+    }
+
+    #[test]
+    fn real_parts_of_cube_root_pair() {
+        let q = p(&[-2, 0, 0, 1]);
+        let up = AlgebraicNumber::roots_of_irreducible(&q)
+            .unwrap()
+            .into_iter()
+            .find(|z| z.approx().1 > 0.0)
+            .unwrap();
+        let parts = real_parts_field(&up, "c").unwrap();
+        assert_eq!(parts.field.degree(), 6);
+        let (a, _) = parts.field.approx(&parts.re);
+        let (b, _) = parts.field.approx(&parts.im);
+        assert!((a + 2f64.cbrt() / 2.0).abs() < 1e-12);
+        assert!((b - 2f64.cbrt() * 3f64.sqrt() / 2.0).abs() < 1e-12);
+        // a^3 = -1/4 exactly
+        let f = &parts.field;
+        let a3 = f.mul(&f.mul(&parts.re, &parts.re), &parts.re);
+        assert_eq!(
+            f.to_rational(&a3),
+            Some(Rational::new((-1).into(), 4.into()))
+        );
+        // a real root is refused
+        let real = AlgebraicNumber::roots_of_irreducible(&q).unwrap()[0].clone();
+        assert!(real_parts_field(&real, "c").is_err());
+    }
+
+    #[test]
+    fn squarefree_and_inverse() {
+        assert!(is_squarefree(&p(&[-2, 0, 0, 1])));
+        assert!(!is_squarefree(&p(&[-1, 1]).pow(2).mul(&p(&[2, 1]))));
+        let f = named_field(
+            &p(&[-2, 0, 0, 0, 0, 0, 0, 0, 0, 1]),
+            (2f64.powf(1.0 / 9.0), 0.0),
+            "t",
+        );
+        for x in [p(&[1, 1]), p(&[3, 0, -1, 0, 0, 2, 0, 0, 1])] {
+            let x = f.elem_from_poly(&x);
+            let y = nf_inv(&f, &x).unwrap();
+            assert!(f.is_one(&f.mul(&x, &y)));
+            assert_eq!(Some(y), f.inv(&x));
+        }
+    }
 }

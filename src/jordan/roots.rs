@@ -16,6 +16,7 @@ use crate::poly::Poly;
 use num_bigint::BigInt;
 use num_complex::Complex64;
 use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
 
 /// Irreducible monic factors of `p` over $\mathbb{Q}$ with multiplicities (sorted by
 /// degree, then coefficients).
@@ -38,8 +39,8 @@ pub(crate) fn certified_roots(p: &Poly<Q>) -> Result<Vec<(AlgebraicNumber, (f64,
     let mut out = vec![];
     for z in AlgebraicNumber::roots_of_irreducible_unchecked(p)? {
         if z.is_real() {
-            let x = z.approx();
-            out.push((z, (x.0, 0.0)));
+            let (z, x) = real_approx(p, z);
+            out.push((z, (x, 0.0)));
             continue;
         }
         let (_, (i0, i1)) = z.bounding_box();
@@ -53,6 +54,55 @@ pub(crate) fn certified_roots(p: &Poly<Q>) -> Result<Vec<(AlgebraicNumber, (f64,
     }
     out.sort_by(|a, b| b.1.0.total_cmp(&a.1.0).then(b.1.1.total_cmp(&a.1.1)));
     Ok(out)
+}
+
+/// A certified `f64` approximation of a real root: Newton in `f64` from the isolating
+/// interval, then certified by an exact sign change of `p` on a sub-interval of width a few
+/// ulps (which then replaces the isolating interval); bisection to relative width $2^{-62}$
+/// ([`AlgebraicNumber::approx`]) when that fails.
+fn real_approx(p: &Poly<Q>, z: AlgebraicNumber) -> (AlgebraicNumber, f64) {
+    use crate::algebraic::isolate_real::{RealRoot, sign_at};
+    use crate::algebraic::number::Loc;
+    let Some((lo, hi)) = z.interval() else {
+        return (z.clone(), z.approx().0);
+    };
+    if lo == hi {
+        return (z, rational_to_f64(&lo));
+    }
+    let zp = crate::algebraic::zp::from_poly_q(p);
+    let c: Vec<f64> = zp
+        .iter()
+        .map(|x| num_traits::ToPrimitive::to_f64(x).unwrap_or(f64::NAN))
+        .collect();
+    let (flo, fhi) = (rational_to_f64(&lo), rational_to_f64(&hi));
+    let mut x = 0.5 * (flo + fhi);
+    for _ in 0..60 {
+        let (mut v, mut d) = (0.0f64, 0.0f64);
+        for ck in c.iter().rev() {
+            d = d * x + v;
+            v = v * x + ck;
+        }
+        let step = v / d;
+        if !step.is_finite() {
+            break;
+        }
+        let nx = (x - step).clamp(flo, fhi);
+        if nx == x {
+            break;
+        }
+        x = nx;
+    }
+    let delta = (x.abs() * 2f64.powi(-50)).max(f64::MIN_POSITIVE);
+    let q = |v: f64| Rational::from_float(v);
+    if let (Some(a), Some(b)) = (q(x - delta), q(x + delta)) {
+        let (sa, sb) = (sign_at(&zp, &a), sign_at(&zp, &b));
+        if a > lo && b < hi && sa != Ordering::Equal && sb != Ordering::Equal && sa != sb {
+            let tight =
+                AlgebraicNumber::from_parts(p.clone(), Loc::Real(RealRoot { lo: a, hi: b }));
+            return (tight, x);
+        }
+    }
+    (z.clone(), z.approx().0)
 }
 
 /// Radical text for $\sqrt f$ (`i` for $f = -1$).
