@@ -28,8 +28,11 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         Command::Poly { op } => poly(op),
         Command::Jordan { file, real } => {
             let l = load_system(file)?;
-            let t = l.rational("the Jordan decomposition")?;
-            let jf = crate::jordan::jordan(&t.a_raw).map_err(|e| with_path(file, e))?;
+            let jf = match &l {
+                Loaded::Q(_, t) => crate::jordan::jordan(&t.a_raw),
+                Loaded::Quadratic(_, t) => crate::jordan::jordan_quadratic(&t.a_raw),
+            }
+            .map_err(|e| with_path(file, e))?;
             if *real {
                 Ok(jf.real_form().map_err(|e| with_path(file, e))?.report())
             } else {
