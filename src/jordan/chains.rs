@@ -24,7 +24,7 @@
 //! $\dim\ker N^k - \dim\ker N^{k-1}$.
 
 use crate::error::{Error, Result};
-use crate::field::{Field, Q, Rational};
+use crate::field::Field;
 use crate::matrix::Matrix;
 
 /// Chains of one eigenvalue (see the module docs).
@@ -57,62 +57,10 @@ pub fn jordan_block_matrix<K: Field>(k: &K, theta: &K::Elem, blocks: &[usize]) -
     j
 }
 
-/// `a * b`, with an integer kernel over $\mathbb{Q}$: rows of `a` and columns of `b` are
-/// scaled to integers, dot products are exact integer sums, and each entry is normalised
-/// once (the generic product normalises a rational after every multiply-add).
-pub(crate) fn mul<K: Field + 'static>(a: &Matrix<K>, b: &Matrix<K>) -> Matrix<K> {
-    use std::any::Any;
-    if let (Some(aq), Some(bq)) = (
-        (a as &dyn Any).downcast_ref::<Matrix<Q>>(),
-        (b as &dyn Any).downcast_ref::<Matrix<Q>>(),
-    ) {
-        let c = mul_q(aq, bq);
-        return (&c as &dyn Any)
-            .downcast_ref::<Matrix<K>>()
-            .expect("same type")
-            .clone();
-    }
+/// `a * b` (over $\mathbb{Q}$ the product dispatches to the integer kernel of
+/// `matrix::intmul` through `Field::fast_mul`).
+pub(crate) fn mul<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Matrix<K> {
     a * b
-}
-
-fn mul_q(a: &Matrix<Q>, b: &Matrix<Q>) -> Matrix<Q> {
-    use num_bigint::BigInt;
-    use num_integer::Integer;
-    use num_traits::{One, Zero};
-    assert_eq!(a.ncols(), b.nrows(), "matrix product shapes");
-    let (m, k, n) = (a.nrows(), a.ncols(), b.ncols());
-    let scale = |xs: Vec<&Rational>| -> (BigInt, Vec<BigInt>) {
-        let d = xs.iter().fold(BigInt::one(), |d, x| d.lcm(x.denom()));
-        let v = xs
-            .iter()
-            .map(|x| {
-                if x.is_zero() {
-                    BigInt::zero()
-                } else {
-                    x.numer() * (&d / x.denom())
-                }
-            })
-            .collect();
-        (d, v)
-    };
-    let rows: Vec<(BigInt, Vec<BigInt>)> =
-        (0..m).map(|i| scale(a.row(i).iter().collect())).collect();
-    let cols: Vec<(BigInt, Vec<BigInt>)> = (0..n)
-        .map(|j| scale((0..k).map(|l| b.get(l, j)).collect()))
-        .collect();
-    Matrix::from_fn(Q, m, n, |i, j| {
-        let mut acc = BigInt::zero();
-        for (x, y) in rows[i].1.iter().zip(&cols[j].1) {
-            if !x.is_zero() && !y.is_zero() {
-                acc += x * y;
-            }
-        }
-        if acc.is_zero() {
-            Rational::zero()
-        } else {
-            Rational::new(acc, &rows[i].0 * &cols[j].0)
-        }
-    })
 }
 
 /// Elimination data of $[N \mid I]$: $R = P N$.
@@ -142,17 +90,7 @@ impl<K: Field + 'static> Elim<K> {
 
 /// Canonical null-space basis (columns) read off an RREF `r` with pivot columns `piv`.
 pub(crate) fn nullspace_of_rref<K: Field>(r: &Matrix<K>, piv: &[usize]) -> Matrix<K> {
-    let k = r.field();
-    let n = r.ncols();
-    let free: Vec<usize> = (0..n).filter(|c| !piv.contains(c)).collect();
-    let mut out = Matrix::zeros(k.clone(), n, free.len());
-    for (j, &f) in free.iter().enumerate() {
-        out.set(f, j, k.one());
-        for (i, &p) in piv.iter().enumerate() {
-            out.set(p, j, k.neg(r.get(i, f)));
-        }
-    }
-    out
+    crate::matrix::nullspace_from_rref(r, piv)
 }
 
 /// Columns of `extra` that are independent modulo the (independent) columns of `base`.

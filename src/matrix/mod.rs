@@ -22,6 +22,8 @@ pub mod modular;
 mod ops;
 mod rref;
 
+pub(crate) use rref::nullspace_from_rref;
+
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, Rational};
 use std::fmt;
