@@ -13,33 +13,12 @@ fn r(n: i64, d: i64) -> Rational {
     Rational::new(n.into(), d.into())
 }
 
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E3779B97F4A7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58476D1CE4E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D049BB133111EB);
-        z ^ (z >> 31)
-    }
-    fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next() % ((hi - lo + 1) as u64)) as i64
-    }
-}
+#[path = "../tests/common/systems.rs"]
+mod systems;
+use systems::PlantRng as Rng;
 
 fn sliding_masses() -> Matrix<Q> {
-    let mut a = Matrix::zeros(Q, 20, 20);
-    a.set_block(0, 10, &Matrix::identity(Q, 10));
-    for g in [0, 5] {
-        for i in 0..5 {
-            a.set(10 + g + i, g + i, r(-2, 1));
-            if i < 4 {
-                a.set(10 + g + i, g + i + 1, r(1, 1));
-                a.set(10 + g + i + 1, g + i, r(1, 1));
-            }
-        }
-    }
-    a
+    systems::sliding_masses().a
 }
 
 /// Same distribution as cases.planted_jordan (not the same random stream).

@@ -49,7 +49,7 @@ pub struct Planted {
 }
 
 /// SplitMix64 for the planted systems (self-contained: the benches include this file alone).
-struct PlantRng(u64);
+pub struct PlantRng(pub u64);
 
 impl PlantRng {
     fn next_u64(&mut self) -> u64 {
@@ -59,7 +59,7 @@ impl PlantRng {
         z = (z ^ (z >> 27)).wrapping_mul(0x94D049BB133111EB);
         z ^ (z >> 31)
     }
-    fn int(&mut self, lo: i64, hi: i64) -> i64 {
+    pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
         lo + (self.next_u64() % ((hi - lo + 1) as u64)) as i64
     }
     /// `k / d` with `k` in `-2..=2` and `d` in `{1, 2}`: exact in binary floating point.
