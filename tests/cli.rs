@@ -274,3 +274,12 @@ fn jordan_and_check_commands() {
     let (code, _, err) = run(&["jordan", "tests/data/invalid_shape.json"]);
     assert_eq!(code, 2, "{err}");
 }
+
+#[test]
+fn max_seconds_bounds_the_exact_work() {
+    let (code, out, err) = run(&["analyze", "--max-seconds", "0.001"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(err.contains("--max-seconds"), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1);
+}
