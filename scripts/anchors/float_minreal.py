@@ -17,38 +17,8 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-VENV = os.path.join(ROOT, ".venv-anchors")
-VPY = os.path.join(VENV, "bin", "python")
-
-
-def ensure_venv():
-    if os.path.abspath(sys.prefix) == os.path.abspath(VENV):
-        return
-    if not os.path.exists(VPY):
-        print("creating", VENV, flush=True)
-        subprocess.check_call([sys.executable, "-m", "venv", VENV])
-        subprocess.check_call([VPY, "-m", "pip", "install", "-q", "numpy", "scipy", "control", "slycot"])
-    os.execv(VPY, [VPY] + sys.argv)
-
-
-def load(path):
-    import numpy as np
-
-    mats = {}
-    with open(path) as f:
-        lines = f.read().split("\n")
-    i = 0
-    while i < len(lines):
-        if not lines[i].strip():
-            i += 1
-            continue
-        name, r, c = lines[i].split()
-        r, c = int(r), int(c)
-        rows = [list(map(float, lines[i + 1 + k].split())) for k in range(r)]
-        mats[name] = np.array(rows, dtype=float).reshape(r, c)
-        i += 1 + r
-    return mats
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from _common import ROOT, ensure_venv, load  # noqa: E402
 
 
 def main():

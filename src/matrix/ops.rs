@@ -110,37 +110,36 @@ impl<K: Field> Matrix<K> {
         }
         out
     }
-    /// # Errors
-    /// `Shape` on mismatch.
-    pub fn try_add(&self, b: &Matrix<K>) -> Result<Self> {
-        b.check_shape("add", self.shape())?;
-        let k = &self.field;
+    /// Entry-wise combination of two matrices of the same shape.
+    fn zip_with(
+        &self,
+        b: &Matrix<K>,
+        op: &'static str,
+        f: impl Fn(&K::Elem, &K::Elem) -> K::Elem,
+    ) -> Result<Self> {
+        b.check_shape(op, self.shape())?;
+        let data = self
+            .data
+            .iter()
+            .zip(&b.data)
+            .map(|(x, y)| f(x, y))
+            .collect();
         Ok(Matrix::from_vec(
-            k.clone(),
+            self.field.clone(),
             self.nrows,
             self.ncols,
-            self.data
-                .iter()
-                .zip(&b.data)
-                .map(|(x, y)| k.add(x, y))
-                .collect(),
+            data,
         ))
     }
     /// # Errors
     /// `Shape` on mismatch.
+    pub fn try_add(&self, b: &Matrix<K>) -> Result<Self> {
+        self.zip_with(b, "add", |x, y| self.field.add(x, y))
+    }
+    /// # Errors
+    /// `Shape` on mismatch.
     pub fn try_sub(&self, b: &Matrix<K>) -> Result<Self> {
-        b.check_shape("sub", self.shape())?;
-        let k = &self.field;
-        Ok(Matrix::from_vec(
-            k.clone(),
-            self.nrows,
-            self.ncols,
-            self.data
-                .iter()
-                .zip(&b.data)
-                .map(|(x, y)| k.sub(x, y))
-                .collect(),
-        ))
+        self.zip_with(b, "sub", |x, y| self.field.sub(x, y))
     }
     /// Matrix product.
     ///
