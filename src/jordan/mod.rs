@@ -382,14 +382,7 @@ impl JordanForm {
             }
             off += m;
         }
-        let mk = |exact: Vec<Vec<String>>, approx| MatrixOut {
-            latex: exact.clone(),
-            exact,
-            approx,
-            nrows: n,
-            ncols: n,
-        };
-        (mk(je, ja), mk(te, ta))
+        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
     }
     /// The report with the CLI contract's keys: `eigenvalues[]` (`minpoly`, `value`,
     /// `approx`, `algebraic_multiplicity`, `geometric_multiplicity`, `blocks`), `J`, `T`

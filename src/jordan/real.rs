@@ -391,14 +391,7 @@ impl RealJordanForm {
             }
             off += w;
         }
-        let mk = |exact: Vec<Vec<String>>, approx| MatrixOut {
-            latex: exact.clone(),
-            exact,
-            approx,
-            nrows: n,
-            ncols: n,
-        };
-        (mk(je, ja), mk(te, ta))
+        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
     }
     /// Report: `J`, `T` (exact strings and `_approx`), `exact`, `verified`, `fields`,
     /// `parts`, `notes`.

@@ -34,6 +34,19 @@ impl MatrixOut {
             ncols: m.ncols(),
         }
     }
+    /// From exact entry strings (also used as LaTeX) and their approximations, for matrices
+    /// whose entries live in different fields.
+    pub fn from_parts(exact: Vec<Vec<String>>, approx: Vec<Vec<(f64, f64)>>) -> Self {
+        let nrows = exact.len();
+        let ncols = exact.first().map_or(0, |r| r.len());
+        MatrixOut {
+            latex: exact.clone(),
+            exact,
+            approx,
+            nrows,
+            ncols,
+        }
+    }
     fn is_complex(&self) -> bool {
         self.approx.iter().flatten().any(|(_, im)| *im != 0.0)
     }
