@@ -17,6 +17,7 @@ pub mod io;
 pub mod jordan;
 pub mod matrix;
 pub mod mpoly;
+pub mod ratfunc;
 pub mod poly;
 pub mod realization;
 pub mod report;

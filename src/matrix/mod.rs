@@ -19,6 +19,7 @@ mod charpoly;
 pub mod fraction_free;
 pub mod intmul;
 pub mod modular;
+pub mod params;
 mod ops;
 mod rref;
 

@@ -181,6 +181,10 @@ impl MPoly {
                 return None;
             }
             let qm = m - gm;
+            // a quotient term can have at most deg f - deg g in every variable
+            if (0..n).any(|i| exp(n, qm, i) > df[i] - dg[i]) {
+                return None;
+            }
             for (gm2, gc2) in &g.terms[1..] {
                 let key = qm + gm2;
                 let v = &t * gc2;

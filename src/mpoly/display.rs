@@ -133,6 +133,6 @@ mod tests {
         assert_eq!(latex_name("cr"), "\\mathit{cr}");
         let v: Vec<String> = ["cr", "m", "u"].iter().map(|s| s.to_string()).collect();
         let f = crate::mpoly::parse_mpoly_in("m*u^2 - 3*cr", &["cr", "m", "u"]).unwrap();
-        assert_eq!(f.prim.to_latex(&v), "m u^{2} - 3 \\mathit{cr}");
+        assert_eq!(f.to_latex(&v), "m u^{2} - 3 \\mathit{cr}");
     }
 }

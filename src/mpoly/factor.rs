@@ -144,6 +144,29 @@ pub fn squarefree_in(f: &MPoly, x: usize) -> Vec<(MPoly, usize)> {
     if f.deg(x) == 0 {
         return out;
     }
+    // shortcut: a square-free image of the same degree proves f square-free (gcd(f, f_x) has
+    // degree 0 in x then, and f is primitive in x)
+    let lc = f.lc_in(x);
+    let mut rng = Rng(0xC0FFEE ^ f.len() as u64);
+    for attempt in 0..3 {
+        let a: Vec<BigInt> = (0..f.nvars())
+            .map(|j| {
+                if j == x || attempt == 0 {
+                    BigInt::zero()
+                } else {
+                    rng.small(3 + attempt)
+                }
+            })
+            .collect();
+        if lc.eval_all(&a).is_zero() {
+            continue;
+        }
+        let fa = f.eval_except(x, &a);
+        if fa.gcd(&fa.derivative()).deg0() == 0 {
+            out.push((f.abs_lc(), 1));
+            return out;
+        }
+    }
     let fp = f.derivative(x);
     let a0 = gcd(f, &fp);
     let mut b = f.div_exact(&a0).expect("gcd divides");

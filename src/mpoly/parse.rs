@@ -31,7 +31,7 @@ const MAX_POWER_BITS: u64 = 1 << 16;
 /// use exactlti::mpoly::parse_mpoly;
 /// let (vars, f) = parse_mpoly("m*u^2 - 3*cr").unwrap();
 /// assert_eq!(vars, ["cr", "m", "u"]);
-/// assert_eq!(f.prim.display(&vars).to_string(), "m*u^2 - 3*cr");
+/// assert_eq!(f.to_string_vars(&vars), "m*u^2 - 3*cr");
 /// ```
 pub fn parse_mpoly(text: &str) -> Result<(Vec<String>, QPoly)> {
     let vars = identifiers(text)?;
@@ -394,7 +394,7 @@ mod tests {
     fn examples() {
         let (v, f) = parse_mpoly("m*u^2 - 3*cr").unwrap();
         assert_eq!(v, ["cr", "m", "u"]);
-        assert_eq!(f.prim.display(&v).to_string(), "m*u^2 - 3*cr");
+        assert_eq!(f.to_string_vars(&v), "m*u^2 - 3*cr");
         let (v, f) = parse_mpoly("2/3*x - 0.5*y").unwrap();
         assert_eq!(f.content, Rational::new(1.into(), 6.into()));
         assert_eq!(f.prim.display(&v).to_string(), "4*x - 3*y");
