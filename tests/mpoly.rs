@@ -39,7 +39,7 @@ fn textbook_gcd() {
 #[test]
 fn textbook_resultant_discriminant() {
     let v = ["x", "a", "b", "c", "d"];
-    let q = |s: &str| parse_mpoly_in(s, &v).unwrap().prim;
+    let q = |s: &str| parse_mpoly_in(s, &v).unwrap().to_integer_poly().unwrap();
     assert_eq!(discriminant(&q("a*x^2 + b*x + c"), 0), q("b^2 - 4*a*c"));
     // cubic: b^2 c^2 - 4 a c^3 - 4 b^3 d - 27 a^2 d^2 + 18 a b c d
     assert_eq!(

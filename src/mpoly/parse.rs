@@ -267,6 +267,16 @@ impl P<'_> {
         }
     }
     fn power(&mut self) -> Result<Frac> {
+        // unary sign inside a product or after an operator: `a + -2*b`, `a*-b`
+        let mut negate = false;
+        while let Some(c @ (b'-' | b'+')) = self.peek() {
+            self.pos += 1;
+            negate ^= c == b'-';
+        }
+        if negate {
+            let f = self.power()?;
+            return Ok((f.0.neg(), f.1));
+        }
         let base = self.atom()?;
         if self.peek() == Some(b'^')
             || (self.peek() == Some(b'*') && self.s.get(self.pos + 1) == Some(&b'*'))
@@ -401,6 +411,8 @@ mod tests {
         assert!(parse_mpoly("x/y").is_err());
         assert!(parse_mpoly("(x+y+z+w)^1000").is_err());
         assert!(parse_mpoly("x^").is_err());
+        assert_eq!(parse_mpoly("x + -2*y").unwrap().1, parse_mpoly("x - 2*y").unwrap().1);
+        assert!(parse_mpoly("x + ").is_err());
         assert!(parse_mpoly("").is_err());
         assert!(parse_mpoly("(a + b)^20").is_ok());
         assert_eq!(identifiers("1e-3*x2 + e").unwrap(), ["e", "x2"]);
