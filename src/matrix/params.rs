@@ -5,11 +5,15 @@
 //! |---|---|---|
 //! | [`charpoly_ratfunc`] | $\det(xI - A)$ over $\mathbb{Q}(p)$ | clear denominators ($A = B / D$, $B$ over $\mathbb{Z}\lbrack p\rbrack$), [`charpoly_zp`], $c_k = c'_k / D^{n-k}$ |
 //! | [`charpoly_zp`] | $\det(xI - B)$ over $\mathbb{Z}\lbrack p\rbrack$ | multi-modular: per word prime, evaluate $B$ on a grid in the parameters, Hessenberg charpoly mod $p$ ([`super::modular::charpoly`]), dense Newton interpolation per parameter, CRT |
+//! | [`rref_params`] | canonical RREF over $\mathbb{Q}(p)$, conditions recorded | fraction-free Gauss–Jordan over $\mathbb{Z}\lbrack p\rbrack$ |
 //! | [`det_bareiss_zp`] | $\det B$ over $\mathbb{Z}\lbrack p\rbrack$ | Bareiss fraction-free elimination, exact multivariate divisions |
 //!
 //! **Certificate of [`charpoly_zp`].** The degree of every coefficient in $p_v$ is at most
-//! $\sum_i \max_j \deg_{p_v} B_{ij}$ (a minor takes one entry per row), so a grid of that many
-//! plus one points per parameter determines it. The coefficient of $x^{n-k}$ is a sum of
+//! $\sum_i \max_j \deg_{p_v} B_{ij}$ and its total degree at most
+//! $D = \sum_i \max_j \operatorname{tdeg} B_{ij}$ (a minor takes one entry per row), so the
+//! box grid of that many plus one points per parameter, or the simplex grid
+//! $\{e : |e| \le D\}$ (unisolvent for total degree $D$; the smaller one is used: 165 instead
+//! of 729 points for an 8x8 linear in 3 parameters) determines it. The coefficient of $x^{n-k}$ is a sum of
 //! principal minors; with $r_i = \sum_j \lVert B_{ij} \rVert_1$ (1-norms of the entries, which are
 //! submultiplicative) every integer coefficient is at most $\prod_i (1 + r_i)$ in absolute
 //! value, and enough primes are taken for twice that bound: the symmetric CRT lift is exact.
@@ -21,12 +25,14 @@ use super::modular::charpoly::charpoly_mod_p;
 use super::modular::crt::Crt;
 use super::modular::prime::{Prime, nth_prime};
 use crate::error::{Error, Result};
+use crate::field::Field;
 use crate::mpoly::MPoly;
 use crate::mpoly::gcd::lcm;
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;
 use num_bigint::{BigInt, Sign};
 use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::collections::HashMap;
 
 /// Largest interpolation grid (points per prime) accepted by [`charpoly_zp`].
 pub const MAX_GRID_POINTS: usize = 1 << 20;
@@ -77,32 +83,57 @@ fn reduce(pr: &Prime, c: &BigInt) -> u64 {
 /// `Limit` when the grid exceeds [`MAX_GRID_POINTS`].
 pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
     assert_eq!(b.len(), n * n);
-    // degree bounds per parameter, coefficient bound
+    // degree bounds (per parameter and total), coefficient bound
     let mut dv = vec![0u32; nvars];
+    let mut dtot = 0u32;
     let mut bound = BigInt::one();
     for i in 0..n {
         let mut rowmax = vec![0u32; nvars];
+        let mut rowtot = 0u32;
         let mut r = BigInt::zero();
         for j in 0..n {
             let e = &b[i * n + j];
             for (v, d) in e.degrees().into_iter().enumerate() {
                 rowmax[v] = rowmax[v].max(d);
             }
+            rowtot = rowtot.max(e.total_degree());
             r += norm1(e);
         }
         for v in 0..nvars {
             dv[v] += rowmax[v];
         }
+        dtot += rowtot;
         bound *= r + 1u32;
     }
+    // interpolation grid: the box prod (d_v + 1) or the simplex |e| <= D, whichever is smaller
     let sizes: Vec<usize> = dv.iter().map(|&d| d as usize + 1).collect();
-    let npts = sizes
+    let nbox = sizes
         .iter()
         .try_fold(1usize, |acc, &s| acc.checked_mul(s))
-        .filter(|&t| t <= MAX_GRID_POINTS)
-        .ok_or_else(|| {
-            Error::Limit("charpoly over Z[p]: interpolation grid too large".into())
-        })?;
+        .unwrap_or(usize::MAX);
+    let nsimplex = binomial(dtot as usize + nvars, nvars);
+    let use_simplex = nsimplex < nbox;
+    if nbox.min(nsimplex) > MAX_GRID_POINTS {
+        return Err(Error::Limit(
+            "charpoly over Z[p]: interpolation grid too large".into(),
+        ));
+    }
+    let points: Vec<Vec<u32>> = if use_simplex {
+        simplex_points(nvars, dtot)
+    } else {
+        (0..nbox)
+            .map(|idx| {
+                let mut r = idx;
+                let mut e = vec![0u32; nvars];
+                for v in (0..nvars).rev() {
+                    e[v] = (r % sizes[v]) as u32;
+                    r /= sizes[v];
+                }
+                e
+            })
+            .collect()
+    };
+    let npts = points.len();
     let bits = bound.bits() + 2;
     let nprimes = (bits / 61 + 1) as usize;
     let primes: Vec<Prime> = (0..nprimes).map(nth_prime).collect();
@@ -111,7 +142,9 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
         .iter()
         .map(|e| e.terms().iter().map(|(m, c)| (e.exps(*m), c)).collect())
         .collect();
-    // per prime: tensor of coefficients [coef k][grid index]
+    let maxd = dv.iter().copied().max().unwrap_or(0) as usize;
+    let maxs = (dtot as usize + 1).max(sizes.iter().copied().max().unwrap_or(1));
+    // per prime: coefficient k at point index
     let mut images: Vec<Vec<Vec<u64>>> = Vec::with_capacity(nprimes);
     for pr in &primes {
         let red: Vec<Vec<(Vec<u32>, u64)>> = entries
@@ -119,11 +152,8 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
             .map(|e| e.iter().map(|(x, c)| (x.clone(), reduce(pr, c))).collect())
             .collect();
         let mut vals = vec![vec![0u64; npts]; n + 1];
-        let mut point = vec![0usize; nvars];
         let mut a = vec![0u64; n * n];
-        // powers t^e for t < size, e <= deg
-        let maxd = dv.iter().copied().max().unwrap_or(0) as usize;
-        let maxs = sizes.iter().copied().max().unwrap_or(1);
+        // powers t^e for t < maxs, e <= deg
         let pw: Vec<Vec<u64>> = (0..maxs)
             .map(|t| {
                 let mut v = vec![1u64; maxd + 1];
@@ -133,20 +163,14 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
                 v
             })
             .collect();
-        for idx in 0..npts {
-            // decode grid index (last parameter fastest)
-            let mut r = idx;
-            for v in (0..nvars).rev() {
-                point[v] = r % sizes[v];
-                r /= sizes[v];
-            }
+        for (idx, point) in points.iter().enumerate() {
             for (slot, e) in a.iter_mut().zip(&red) {
                 let mut s = 0u64;
                 for (x, c) in e {
                     let mut t = *c;
                     for v in 0..nvars {
                         if x[v] > 0 {
-                            t = pr.mul(t, pw[point[v]][x[v] as usize]);
+                            t = pr.mul(t, pw[point[v] as usize][x[v] as usize]);
                         }
                     }
                     s = pr.add(s, t);
@@ -158,8 +182,29 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
                 vals[k][idx] = c;
             }
         }
-        for v in vals.iter_mut() {
-            interpolate_tensor(pr, v, &sizes);
+        if use_simplex {
+            let index: HashMap<Vec<u32>, usize> = points
+                .iter()
+                .enumerate()
+                .map(|(i, p)| (p.clone(), i))
+                .collect();
+            let invs = small_inverses(pr, dtot as usize + 1);
+            for v in vals.iter_mut() {
+                let map: HashMap<Vec<u32>, u64> = points
+                    .iter()
+                    .zip(v.iter())
+                    .map(|(p, x)| (p.clone(), *x))
+                    .collect();
+                let coeffs = interpolate_simplex(pr, nvars, dtot, &map, &invs);
+                v.iter_mut().for_each(|x| *x = 0);
+                for (e, c) in coeffs {
+                    v[index[&e]] = c;
+                }
+            }
+        } else {
+            for v in vals.iter_mut() {
+                interpolate_tensor(pr, v, &sizes);
+            }
         }
         images.push(vals);
     }
@@ -167,22 +212,115 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
     let mut out = Vec::with_capacity(n + 1);
     for k in 0..=n {
         let mut terms = Vec::new();
-        for idx in 0..npts {
+        for (idx, e) in points.iter().enumerate() {
             let c = crt.lift(|j| images[j][k][idx]);
-            if c.is_zero() {
-                continue;
+            if !c.is_zero() {
+                terms.push((crate::mpoly::pack(nvars, e), c));
             }
-            let mut r = idx;
-            let mut e = vec![0u32; nvars];
-            for v in (0..nvars).rev() {
-                e[v] = (r % sizes[v]) as u32;
-                r /= sizes[v];
-            }
-            terms.push((crate::mpoly::pack(nvars, &e), c));
         }
         out.push(MPoly::from_terms(nvars, terms));
     }
     Ok(out)
+}
+
+fn binomial(n: usize, k: usize) -> usize {
+    let mut r: usize = 1;
+    for i in 0..k {
+        r = match r.checked_mul(n - i) {
+            Some(x) => x / (i + 1),
+            None => return usize::MAX,
+        };
+    }
+    r
+}
+
+/// All exponent vectors of `k` entries with sum at most `d`.
+fn simplex_points(k: usize, d: u32) -> Vec<Vec<u32>> {
+    if k == 0 {
+        return vec![Vec::new()];
+    }
+    let mut out = Vec::new();
+    for head in simplex_points(k - 1, d) {
+        let used: u32 = head.iter().sum();
+        for last in 0..=d - used {
+            let mut e = head.clone();
+            e.push(last);
+            out.push(e);
+        }
+    }
+    out
+}
+
+fn small_inverses(pr: &Prime, m: usize) -> Vec<u64> {
+    (0..=m)
+        .map(|j| if j == 0 { 0 } else { pr.inv(j as u64).expect("small") })
+        .collect()
+}
+
+/// Interpolation of a polynomial of total degree at most `d` in `k` variables from its values
+/// on the simplex grid $\{e : |e| \le d\}$ (unisolvent): Newton divided differences in the last
+/// variable on each line (the $l$-th one has total degree at most $d - l$ in the others, known
+/// on the smaller simplex), recursion, then the Newton basis
+/// $\prod_{m < l} (x - m)$ expanded into monomials.
+fn interpolate_simplex(
+    pr: &Prime,
+    k: usize,
+    d: u32,
+    vals: &HashMap<Vec<u32>, u64>,
+    invs: &[u64],
+) -> HashMap<Vec<u32>, u64> {
+    if k == 0 {
+        return vals.clone();
+    }
+    let mut w: Vec<HashMap<Vec<u32>, u64>> = vec![HashMap::new(); d as usize + 1];
+    let mut key = Vec::with_capacity(k);
+    for p in simplex_points(k - 1, d) {
+        let m = (d - p.iter().sum::<u32>()) as usize;
+        let mut y: Vec<u64> = (0..=m)
+            .map(|c| {
+                key.clear();
+                key.extend_from_slice(&p);
+                key.push(c as u32);
+                vals[&key]
+            })
+            .collect();
+        for j in 1..=m {
+            for i in (j..=m).rev() {
+                y[i] = pr.mul(pr.sub(y[i], y[i - 1]), invs[j]);
+            }
+        }
+        for (l, yl) in y.into_iter().enumerate() {
+            w[l].insert(p.clone(), yl);
+        }
+    }
+    let mut out: HashMap<Vec<u32>, u64> = HashMap::new();
+    let mut newton = vec![1u64]; // prod_{m < l} (x - m), low degree first
+    for (l, wl) in w.iter().enumerate() {
+        let g = interpolate_simplex(pr, k - 1, d - l as u32, wl, invs);
+        for (e, c) in g {
+            if c == 0 {
+                continue;
+            }
+            for (j, nj) in newton.iter().enumerate() {
+                if *nj == 0 {
+                    continue;
+                }
+                let mut key = e.clone();
+                key.push(j as u32);
+                let slot = out.entry(key).or_insert(0);
+                *slot = pr.add(*slot, pr.mul(c, *nj));
+            }
+        }
+        // newton *= (x - l)
+        let nl = pr.neg(l as u64 % pr.p);
+        let mut next = vec![0u64; newton.len() + 1];
+        for (j, nj) in newton.iter().enumerate() {
+            next[j + 1] = pr.add(next[j + 1], *nj);
+            next[j] = pr.add(next[j], pr.mul(*nj, nl));
+        }
+        newton = next;
+    }
+    out
 }
 
 /// Replaces values on the grid $\{0..s_0-1\} \times \dots$ (last axis fastest) by the
@@ -275,6 +413,95 @@ pub fn det_bareiss_zp(nvars: usize, n: usize, b: &[MPoly]) -> MPoly {
     if neg { d.neg() } else { d }
 }
 
+/// Canonical RREF and pivot columns of an `m x n` matrix over $\mathbb{Q}(p)$ by
+/// fraction-free Gauss–Jordan elimination over $\mathbb{Z}\lbrack p\rbrack$ (each row first
+/// multiplied by the lcm of its denominators, which does not change the RREF; every division
+/// $(\pi a_{ij} - f a_{rj}) / \pi_{\text{prev}}$ is exact). The result equals
+/// [`Matrix::rref`]; the conditions recorded in the field are the numerators of the leading
+/// minors $M_r$ used as pivots (the generic pivots are $M_r / M_{r-1}$), so the RREF holds
+/// wherever none of them vanishes.
+pub fn rref_params(a: &Matrix<RatFuncField>) -> (Matrix<RatFuncField>, Vec<usize>) {
+    let k = a.field().clone();
+    let nv = k.nvars();
+    let (m, n) = a.shape();
+    let mut e: Vec<MPoly> = Vec::with_capacity(m * n);
+    let mut scale: Vec<MPoly> = Vec::with_capacity(m);
+    for i in 0..m {
+        let row = a.row(i);
+        let mut d = MPoly::one(nv);
+        for x in row {
+            if !x.den().is_one() {
+                d = lcm(&d, x.den());
+            }
+        }
+        for x in row {
+            e.push(if x.den() == &d {
+                x.num().clone()
+            } else {
+                x.num().mul(&d.div_exact(x.den()).expect("lcm"))
+            });
+        }
+        scale.push(d);
+    }
+    let mut pivots = Vec::new();
+    let mut den = MPoly::one(nv);
+    let mut sprod = MPoly::one(nv);
+    let mut r = 0;
+    for c in 0..n {
+        if r == m {
+            break;
+        }
+        let Some(i) = (r..m).find(|&i| !e[i * n + c].is_zero()) else {
+            continue;
+        };
+        if i != r {
+            for j in 0..n {
+                e.swap(i * n + j, r * n + j);
+            }
+            scale.swap(i, r);
+        }
+        let piv = e[r * n + c].clone();
+        // the leading minor M_r(A) = piv / (product of the row scalings)
+        sprod = sprod.mul(&scale[r]);
+        if let Some(minor) = k.frac(piv.clone(), sprod.clone()) {
+            k.record_condition(minor.num());
+        }
+        for i in 0..m {
+            if i == r {
+                continue;
+            }
+            let f = e[i * n + c].clone();
+            for j in 0..n {
+                let t = if f.is_zero() {
+                    piv.mul(&e[i * n + j])
+                } else {
+                    piv.mul(&e[i * n + j]).sub(&f.mul(&e[r * n + j]))
+                };
+                e[i * n + j] = if den.is_one() {
+                    t
+                } else {
+                    t.div_exact(&den).expect("fraction-free division is exact")
+                };
+            }
+        }
+        den = piv;
+        pivots.push(c);
+        r += 1;
+    }
+    let out: Vec<_> = e
+        .into_iter()
+        .enumerate()
+        .map(|(idx, x)| {
+            if idx >= r * n || x.is_zero() {
+                k.zero()
+            } else {
+                k.frac(x, den.clone()).expect("nonzero pivot")
+            }
+        })
+        .collect();
+    (Matrix::from_vec(k, m, n, out), pivots)
+}
+
 /// The matrix of numerators times the common denominator: $A = B / D$ with $B$ over
 /// $\mathbb{Z}\lbrack p\rbrack$; returns `(B, D)`.
 pub fn clear_denominators(a: &Matrix<RatFuncField>) -> (Vec<MPoly>, MPoly) {
@@ -325,5 +552,6 @@ mod tests {
         let (b, _) = clear_denominators(&m);
         let det = det_bareiss_zp(2, 2, &b);
         assert_eq!(k.from_mpoly(det), m.det().unwrap());
+        assert_eq!(rref_params(&m), m.rref());
     }
 }

@@ -20,7 +20,7 @@ use num_traits::{One, Signed, Zero};
 /// Evaluation points tried by the heuristic gcd per level.
 const HEU_TRIES: usize = 6;
 /// The heuristic gcd gives up when evaluated coefficients would exceed this many bits.
-const HEU_MAX_BITS: u64 = 1 << 14;
+const HEU_MAX_BITS: u64 = 1 << 16;
 
 /// $\gcd(f, g)$ with positive leading coefficient; $\gcd(0, 0) = 0$.
 ///
@@ -101,6 +101,13 @@ fn heu(f: &MPoly, g: &MPoly) -> Option<MPoly> {
         let b = g.to_constant().unwrap_or_default();
         return Some(MPoly::constant(n, a.gcd(&b) * c));
     };
+    // one variable left in both: the univariate integer gcd (modular coprimality test, then
+    // the subresultant PRS) avoids one more level of evaluation
+    if (0..n).all(|i| i == v || (df[i] == 0 && dg[i] == 0))
+        && let (Some(fz), Some(gz)) = (f.to_zpoly(v), g.to_zpoly(v))
+    {
+        return Some(MPoly::from_zpoly(n, v, &fz.gcd(&gz)).scale(&c));
+    }
     let (fnorm, gnorm) = (f.max_norm(), g.max_norm());
     let b: BigInt = BigInt::from(2) * fnorm.clone().min(gnorm.clone()) + 29;
     let lcf = f.lc().abs();

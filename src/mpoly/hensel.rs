@@ -10,7 +10,8 @@
 //! $h_i = \operatorname{pp}_x(g_i)$. After the shift $y \to y + a$ the lift runs in the ideal
 //! $(y_1, \dots)$ **all variables at once**, by total degree $d = 1, \dots, \deg_y F$: the
 //! degree-$d$ part of the error $F - \prod g_i$ is, monomial by monomial in $y$, a univariate
-//! Diophantine equation $\sum_i \delta_i \prod_{j \ne i} g_j^{(0)} = e_m(x)$ over $\mathbb{Q}$,
+//! Diophantine equation $\sum_i \delta_i \prod_{j \ne i} g_j^{(0)} = e_m(x)$ (solved over $\mathbb{Q}$,
+//! the solution must be integral),
 //! solved with the partial-fraction cofactors $s_i$ of the $g_i^{(0)}$:
 //! $\delta_i = s_i e_m \bmod g_i^{(0)}$. The lift is unique, so it reproduces a true
 //! factorization whenever one exists with these images; the result is always verified by exact
@@ -22,55 +23,37 @@ use crate::poly::Poly;
 use crate::poly::zpoly::ZPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Zero};
-use std::collections::BTreeMap;
+use num_traits::Zero;
+use std::collections::{BTreeMap, HashMap};
 
-/// Polynomial in $y$ (packed monomials, $x$ exponent zero) with coefficients in $\mathbb{Q}\lbrack x\rbrack$.
-type TPoly = BTreeMap<u128, Poly<Q>>;
-
-fn tdeg(f: &MPoly, m: u128) -> u32 {
-    (0..f.nvars()).map(|i| f.exp(m, i)).sum()
+/// Degree of a monomial in all variables but `x`.
+fn ydeg(n: usize, m: u128, x: usize) -> u32 {
+    (0..n)
+        .filter(|&i| i != x)
+        .map(|i| super::exp(n, m, i))
+        .sum()
 }
 
-/// Splits an [`MPoly`] by monomials in the other variables.
-fn to_tpoly(f: &MPoly, x: usize) -> TPoly {
-    let n = f.nvars();
-    let sh = super::shift(n, x);
-    let mask = !(((1u128 << super::width(n)) - 1) << sh);
-    let mut out: BTreeMap<u128, Vec<Rational>> = BTreeMap::new();
-    for (m, c) in f.terms() {
-        let e = f.exp(*m, x) as usize;
-        let v = out.entry(m & mask).or_default();
-        if v.len() <= e {
-            v.resize(e + 1, Rational::zero());
-        }
-        v[e] = Rational::from_integer(c.clone());
-    }
-    out.into_iter().map(|(k, v)| (k, Poly::new(Q, v))).collect()
-}
-
-/// Product truncated at total $y$-degree `d`.
-fn trunc_mul(a: &TPoly, b: &TPoly, d: u32, f: &MPoly) -> TPoly {
-    let mut out: TPoly = BTreeMap::new();
-    for (ma, pa) in a {
-        let da = tdeg(f, *ma);
+/// `a * b` keeping only terms of degree at most `d` in the variables other than `x`.
+fn mul_trunc(a: &MPoly, b: &MPoly, x: usize, d: u32) -> MPoly {
+    let n = a.nvars();
+    let bd: Vec<u32> = b.terms().iter().map(|(m, _)| ydeg(n, *m, x)).collect();
+    let mut acc: HashMap<u128, BigInt> = HashMap::new();
+    for (ma, ca) in a.terms() {
+        let da = ydeg(n, *ma, x);
         if da > d {
             continue;
         }
-        for (mb, pb) in b {
-            if da + tdeg(f, *mb) > d {
-                continue;
+        for ((mb, cb), &db) in b.terms().iter().zip(&bd) {
+            if da + db <= d {
+                *acc.entry(ma + mb).or_default() += ca * cb;
             }
-            let p = pa.mul(pb);
-            let e = out.entry(ma + mb).or_insert_with(|| Poly::zero(Q));
-            *e = e.add(&p);
         }
     }
-    out.retain(|_, p| !p.is_zero());
-    out
+    MPoly::from_terms(n, acc.into_iter().filter(|(_, c)| !c.is_zero()).collect())
 }
 
-/// Shifts every variable but `x` by `a_j` (`sign` = -1 shifts back).
+/// Shifts every variable but `x` by `a_j` (`back`: by `-a_j`).
 fn shift_all(f: &MPoly, x: usize, a: &[BigInt], back: bool) -> MPoly {
     let mut g = f.clone();
     for (j, aj) in a.iter().enumerate() {
@@ -84,6 +67,10 @@ fn shift_all(f: &MPoly, x: usize, a: &[BigInt], back: bool) -> MPoly {
 /// Lifts `f = prod h_i` from the univariate images `us` at the point `a` (entry `x` unused).
 /// Returns the primitive factors $h_i$ (positive leading coefficients) when the lift gives an
 /// exact factorization, else `None`.
+///
+/// All products are over $\mathbb{Z}$: the lifted $g_i = (\ell / \operatorname{lc}_x h_i) h_i$
+/// are integral, so every correction must be integral too; a fractional correction proves
+/// that no factorization with these images exists.
 pub(crate) fn lift(f: &MPoly, x: usize, a: &[BigInt], us: &[ZPoly]) -> Option<Vec<MPoly>> {
     let n = f.nvars();
     let r = us.len();
@@ -95,41 +82,29 @@ pub(crate) fn lift(f: &MPoly, x: usize, a: &[BigInt], us: &[ZPoly]) -> Option<Ve
     if lca.is_zero() {
         return None;
     }
-    let big_f = f.mul(&lc.pow(r as u32 - 1));
-    let fs = to_tpoly(&shift_all(&big_f, x, a, false), x);
+    let big_f = shift_all(&f.mul(&lc.pow(r as u32 - 1)), x, a, false);
     let lcs = shift_all(&lc, x, a, false);
+    let sh = super::shift(n, x);
     // initial factors: lca / lc(u_i) * u_i, top coefficient replaced by lcs
     let mut g0: Vec<Poly<Q>> = Vec::with_capacity(r);
+    let mut gs: Vec<MPoly> = Vec::with_capacity(r);
     for u in us {
         let (q, rem) = lca.div_rem(&u.leading_coeff());
         if !rem.is_zero() {
             return None;
         }
+        let gz = u.scale(&q);
+        let d = gz.deg0();
         g0.push(Poly::new(
             Q,
-            u.coeffs()
-                .iter()
-                .map(|c| Rational::from_integer(c * &q))
-                .collect(),
+            gz.coeffs().iter().map(|c| Rational::from_integer(c.clone())).collect(),
         ));
+        let mut low = gz.coeffs().to_vec();
+        low.truncate(d);
+        let low = MPoly::from_zpoly(n, x, &ZPoly::new(low));
+        let top = lcs.mul(&MPoly::var(n, x).pow(d as u32));
+        gs.push(low.add(&top));
     }
-    let mut gs: Vec<TPoly> = g0
-        .iter()
-        .map(|g| {
-            let mut t: TPoly = BTreeMap::new();
-            t.insert(0, g.clone());
-            let dg = g.deg();
-            for (m, c) in lcs.terms() {
-                if *m != 0 {
-                    t.insert(
-                        *m,
-                        Poly::monomial(Q, Rational::from_integer(c.clone()), dg),
-                    );
-                }
-            }
-            t
-        })
-        .collect();
     // partial-fraction cofactors: sum_i s_i prod_{j != i} g0_j = 1
     let mut s: Vec<Poly<Q>> = Vec::with_capacity(r);
     for i in 0..r {
@@ -146,27 +121,34 @@ pub(crate) fn lift(f: &MPoly, x: usize, a: &[BigInt], us: &[ZPoly]) -> Option<Ve
         s.push(si.rem(&g0[i]));
     }
     let total: usize = g0.iter().map(|g| g.deg()).sum();
-    let dmax = fs.keys().map(|m| tdeg(f, *m)).max().unwrap_or(0);
+    let dmax = big_f
+        .terms()
+        .iter()
+        .map(|(m, _)| ydeg(n, *m, x))
+        .max()
+        .unwrap_or(0);
+    let xmask = !(((1u128 << super::width(n)) - 1) << sh);
     for d in 1..=dmax {
         let mut prod = gs[0].clone();
         for g in &gs[1..] {
-            prod = trunc_mul(&prod, g, d, f);
+            prod = mul_trunc(&prod, g, x, d);
         }
-        let mut keys: Vec<u128> = fs
-            .keys()
-            .chain(prod.keys())
-            .copied()
-            .filter(|m| tdeg(f, *m) == d)
-            .collect();
-        keys.sort_unstable();
-        keys.dedup();
-        for m in keys {
-            let fm = fs.get(&m).cloned().unwrap_or_else(|| Poly::zero(Q));
-            let pm = prod.get(&m).cloned().unwrap_or_else(|| Poly::zero(Q));
-            let e = fm.sub(&pm);
-            if e.is_zero() {
+        // degree-d part of the error, grouped by monomials in the other variables
+        let err = big_f.sub(&prod);
+        let mut by_m: BTreeMap<u128, Vec<Rational>> = BTreeMap::new();
+        for (m, c) in err.terms() {
+            if ydeg(n, *m, x) != d {
                 continue;
             }
+            let e = super::exp(n, *m, x) as usize;
+            let v = by_m.entry(m & xmask).or_default();
+            if v.len() <= e {
+                v.resize(e + 1, Rational::zero());
+            }
+            v[e] = Rational::from_integer(c.clone());
+        }
+        for (m, v) in by_m {
+            let e = Poly::new(Q, v);
             if e.deg() >= total {
                 return None;
             }
@@ -175,31 +157,24 @@ pub(crate) fn lift(f: &MPoly, x: usize, a: &[BigInt], us: &[ZPoly]) -> Option<Ve
                 if delta.is_zero() {
                     continue;
                 }
-                let slot = gs[i].entry(m).or_insert_with(|| Poly::zero(Q));
-                *slot = slot.add(&delta);
+                let mut terms = Vec::with_capacity(delta.coeffs().len());
+                for (k, c) in delta.coeffs().iter().enumerate() {
+                    if c.is_zero() {
+                        continue;
+                    }
+                    if !c.is_integer() {
+                        return None;
+                    }
+                    terms.push((m + ((k as u128) << sh), c.to_integer()));
+                }
+                gs[i] = gs[i].add(&MPoly::from_terms(n, terms));
             }
         }
     }
-    // back to Z[x, y]
-    let sh = super::shift(n, x);
+    // back to the original variables
     let mut hs = Vec::with_capacity(r);
     for g in &gs {
-        let mut den = BigInt::one();
-        for p in g.values() {
-            for c in p.coeffs() {
-                den = den.lcm(c.denom());
-            }
-        }
-        let mut terms = Vec::new();
-        for (m, p) in g {
-            for (k, c) in p.coeffs().iter().enumerate() {
-                if !c.is_zero() {
-                    terms.push((m + ((k as u128) << sh), (c * &den).to_integer()));
-                }
-            }
-        }
-        let gz = MPoly::from_terms(n, terms);
-        let gz = shift_all(&gz, x, a, true);
+        let gz = shift_all(g, x, a, true);
         let h = super::gcd::primitive_in(&gz.primitive_part(), x);
         if h.deg(x) == 0 {
             return None;
