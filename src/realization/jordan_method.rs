@@ -37,7 +37,6 @@ use crate::field::{
 use crate::jordan::{chains::jordan_chains, jordan};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{MatrixOut, Report, Value, str_list};
 use crate::system::StateSpace;
 use num_traits::Zero;
 use std::sync::Arc;
@@ -364,75 +363,6 @@ impl JordanMinimal {
             self.d.clone(),
         )
         .ok()
-    }
-    /// Assembles block-diagonal `A` and stacked `B`, `C` for output (entries exact in each
-    /// block's field, symbols defined in `symbols`).
-    fn outputs(&self) -> (MatrixOut, MatrixOut, MatrixOut) {
-        let r = self.order();
-        let (m, p) = (self.d.ncols(), self.d.nrows());
-        let empty = |rows: usize, cols: usize| MatrixOut {
-            exact: vec![vec!["0".to_string(); cols]; rows],
-            latex: vec![vec!["0".to_string(); cols]; rows],
-            approx: vec![vec![(0.0, 0.0); cols]; rows],
-            nrows: rows,
-            ncols: cols,
-        };
-        let (mut a, mut b, mut c) = (empty(r, r), empty(r, m), empty(p, r));
-        let mut off = 0;
-        for blk in &self.blocks {
-            let f = &blk.field;
-            let put = |o: &mut MatrixOut, i: usize, j: usize, x: &NfElem| {
-                o.exact[i][j] = f.fmt_elem(x);
-                o.latex[i][j] = f.latex_elem(x);
-                o.approx[i][j] = f.approx(x);
-            };
-            let s = blk.a.nrows();
-            for i in 0..s {
-                for j in 0..s {
-                    put(&mut a, off + i, off + j, blk.a.get(i, j));
-                }
-                for j in 0..m {
-                    put(&mut b, off + i, j, blk.b.get(i, j));
-                }
-                for row in 0..p {
-                    put(&mut c, row, off + i, blk.c.get(row, i));
-                }
-            }
-            off += s;
-        }
-        (a, b, c)
-    }
-    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`, the stage orders and
-    /// the symbols used in the entries).
-    pub fn report(&self) -> Report {
-        let (a, b, c) = self.outputs();
-        Report::titled("minimal realization (jordan)")
-            .str("method", "jordan")
-            .int("original_order", self.stages[0])
-            .int("order", self.order())
-            .int("mcmillan_degree", self.mcmillan_degree)
-            .with(
-                "stages",
-                Value::List(self.stages.iter().map(|&s| Value::Int(s as i64)).collect()),
-            )
-            .with("A", Value::Matrix(Box::new(a)))
-            .with("B", Value::Matrix(Box::new(b)))
-            .with("C", Value::Matrix(Box::new(c)))
-            .matrix("D", &self.d)
-            .with(
-                "modes",
-                str_list(self.blocks.iter().map(|b| b.eigenvalue.clone())),
-            )
-            .with(
-                "symbols",
-                Value::List(
-                    self.symbols
-                        .iter()
-                        .map(|(k, v)| Value::Str(format!("{k} = {v}")))
-                        .collect(),
-                ),
-            )
-            .bool("verified", self.verified)
     }
 }
 
