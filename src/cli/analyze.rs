@@ -41,7 +41,7 @@ fn system_section<K: Field>(f: &SystemFile, t: &TypedSystem<K>) -> Report {
 }
 
 /// The realization section and whether its minimal realization was verified.
-fn realization_section<K: Field>(t: &TypedSystem<K>) -> Result<(Report, bool), Failure> {
+fn realization_section<K: Field + 'static>(t: &TypedSystem<K>) -> Result<(Report, bool), Failure> {
     let s = &t.ss;
     let rc = realization::controllability_matrix(&s.a, &s.b).rank();
     let ro = realization::observability_matrix(&s.a, &s.c).rank();

@@ -29,6 +29,7 @@
 pub mod expr;
 pub mod load;
 pub mod matlab;
+pub mod qmat;
 mod raw;
 pub mod system_file;
 

@@ -380,3 +380,51 @@ mod tests {
         assert_eq!(s, want);
     }
 }
+
+/// The Jordan-method minimal realization as a rational state-space system, verified like
+/// every [`super::MinimalRealization`] (Markov parameters up to $2n$, controllable,
+/// observable); available when every mode's block is rational (all retained eigenvalues
+/// rational, or complex blocks whose real form is rational).
+///
+/// # Errors
+/// `Unsupported` when some block has entries in a number field of degree > 1 (then use
+/// [`minimal_jordan`], whose blocks keep their fields); errors of [`minimal_jordan`].
+pub fn minimal_jordan_rational(sys: &StateSpace<Q>) -> Result<super::MinimalRealization<Q>> {
+    let jm = minimal_jordan(sys)?;
+    let n: usize = jm.blocks.iter().map(|b| b.a.nrows()).sum();
+    let (m, p) = (sys.ninputs(), sys.noutputs());
+    let mut a = Matrix::zeros(Q, n, n);
+    let mut b = Matrix::zeros(Q, n, m);
+    let mut c = Matrix::zeros(Q, p, n);
+    let mut off = 0;
+    for blk in &jm.blocks {
+        let q = |x: &NfElem| {
+            blk.field.to_rational(x).ok_or_else(|| {
+                crate::error::Error::Unsupported(format!(
+                    "the Jordan-method realization has entries in {} (mode {}): use realization::minimal_jordan",
+                    blk.field, blk.eigenvalue
+                ))
+            })
+        };
+        let s = blk.a.nrows();
+        for i in 0..s {
+            for j in 0..s {
+                a.set(off + i, off + j, q(blk.a.get(i, j))?);
+            }
+            for j in 0..m {
+                b.set(off + i, j, q(blk.b.get(i, j))?);
+            }
+            for r in 0..p {
+                c.set(r, off + i, q(blk.c.get(r, i))?);
+            }
+        }
+        off += s;
+    }
+    let min = StateSpace::new(a, b, c, jm.d.clone())?;
+    Ok(super::MinimalRealization::new(
+        sys,
+        min,
+        super::MinrealMethod::Jordan,
+        None,
+    ))
+}

@@ -103,8 +103,10 @@ pub fn minimal_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealizatio
 /// Minimal realization by the chosen method.
 ///
 /// # Errors
-/// `Unsupported` for a method not available for this field; internal failures.
-pub fn minimal<K: Field>(
+/// `Unsupported` for a method not available for this field (Jordan: rational systems
+/// whose minimal Jordan-method blocks are rational, see
+/// [`super::jordan_method::minimal_jordan_rational`]); internal failures.
+pub fn minimal<K: Field + 'static>(
     sys: &StateSpace<K>,
     method: MinrealMethod,
 ) -> Result<MinimalRealization<K>> {
@@ -112,9 +114,20 @@ pub fn minimal<K: Field>(
         MinrealMethod::Kalman => minimal_kalman(sys),
         MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock(sys),
         MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman(sys),
-        MinrealMethod::Jordan => Err(Error::Unsupported(
-            "the Jordan-form method works on rational systems: use realization::minimal_jordan"
-                .into(),
-        )),
+        MinrealMethod::Jordan => {
+            // the Jordan method works over Q; its result comes back as K = Q
+            let any = sys as &dyn std::any::Any;
+            let Some(q) = any.downcast_ref::<StateSpace<crate::field::Q>>() else {
+                return Err(Error::Unsupported(format!(
+                    "the Jordan-form method works on rational systems, not over {}",
+                    sys.a.field()
+                )));
+            };
+            let r: Box<dyn std::any::Any> =
+                Box::new(super::jordan_method::minimal_jordan_rational(q)?);
+            r.downcast::<MinimalRealization<K>>()
+                .map(|b| *b)
+                .map_err(|_| Error::Verification("minimal: field type changed".into()))
+        }
     }
 }

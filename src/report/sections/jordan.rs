@@ -196,3 +196,16 @@ impl FreeResponse {
         Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0").list("terms", items)
     }
 }
+
+impl std::fmt::Display for JordanForm {
+    /// The text report: eigenvalues with their blocks, `J`, `T`, `verified`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.report().to_text())
+    }
+}
+
+impl std::fmt::Display for RealJordanForm {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.report().to_text())
+    }
+}

@@ -144,3 +144,16 @@ impl<K: Field> StandardForm<K> {
             .bool("verified", self.verified)
     }
 }
+
+impl<K: Field> std::fmt::Display for MinimalRealization<K> {
+    /// The text report: orders, `A`..`D` of the minimal system, `verified`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.report().to_text())
+    }
+}
+
+impl std::fmt::Display for JordanMinimal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.report().to_text())
+    }
+}
