@@ -24,7 +24,9 @@ macro_rules! int_entry {
         }
     )*};
 }
-int_entry!(i8, i16, i32, i64, i128, u8, u16, u32, u64, u128, isize, usize);
+int_entry!(
+    i8, i16, i32, i64, i128, u8, u16, u32, u64, u128, isize, usize
+);
 
 impl QEntry for Rational {
     fn to_q(self) -> std::result::Result<Rational, String> {
