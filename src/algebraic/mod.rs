@@ -2,7 +2,7 @@
 //! over $\mathbb{Q}$ (as monic polynomials) and over number fields, and the library side of
 //! `exactlti poly factor|roots`.
 //!
-//! An algebraic number is its minimal polynomial $m \in \mathbb{Q}[x]$ (monic, irreducible)
+//! An algebraic number is its minimal polynomial $m \in \mathbb{Q}\[x\]$ (monic, irreducible)
 //! together with a region holding exactly one root of $m$: an open interval with rational
 //! endpoints for a real root (Descartes / VCA isolation, [`isolate_real`]) or a closed box
 //! with rational corners for a non-real one (Newton inclusion discs certified in exact
@@ -16,9 +16,9 @@
 //! | [`is_irreducible_q`] | irreducibility over $\mathbb{Q}$ |
 //! | [`roots`] | every root of $p$ with its multiplicity |
 //! | [`AlgebraicNumber::roots_of_irreducible`] | the $\deg p$ roots of an irreducible $p$ |
-//! | [`factor_over_number_field`] | factorization over $\mathbb{Q}[t]/(m)$ (Trager) |
+//! | [`factor_over_number_field`] | factorization over $\mathbb{Q}\[t\]/(m)$ (Trager) |
 //! | [`composed_half_sum`], [`composed_half_diff_imag`] | $\prod (x - \frac{r_i + r_j}{2})$, $\prod (x - \frac{r_i - r_j}{2i})$ |
-//! | [`factor_report`], [`roots_report`] | the CLI's `poly factor` / `poly roots` reports |
+//! | [`crate::report::sections::factor_report`], [`crate::report::sections::roots_report`] | the CLI's `poly factor` / `poly roots` reports |
 
 pub mod display;
 pub mod isolate_complex;

@@ -473,7 +473,7 @@ impl AlgebraicNumber {
         format!("root of {} near {near}", self.minpoly)
     }
 
-    /// $\mathbb{Q}[t]/(m)$ with $t$ marked as this root.
+    /// $\mathbb{Q}\[t\]/(m)$ with $t$ marked as this root.
     pub fn to_number_field(&self) -> NumberField {
         NumberField::new_unchecked(&self.minpoly, self.approx())
     }

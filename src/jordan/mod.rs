@@ -2,7 +2,7 @@
 //! chains, the complex and the real Jordan form, the closed-form free response.
 //!
 //! For $A \in \mathbb{Q}^{n \times n}$ with $\chi_A = \prod_p p^{m_p}$ ($p$ irreducible
-//! over $\mathbb{Q}$) the module computes, for each $p$, in $K_p = \mathbb{Q}[t]/(p)$:
+//! over $\mathbb{Q}$) the module computes, for each $p$, in $K_p = \mathbb{Q}\[t\]/(p)$:
 //! $$A V_p = V_p J_p, \qquad W_p A = J_p W_p, \qquad W_p V_p = I,$$
 //! with $J_p$ the Jordan matrix of the generic root $t$. The Jordan form of $A$ is
 //! $A = T J T^{-1}$ with $T = [\sigma_j(V_p)]_{p,j}$, $J = \operatorname{diag}
@@ -185,8 +185,8 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
 ///
 /// A matrix whose entries are all rational is decomposed exactly by [`jordan`]. A matrix
 /// with irrational entries is not supported yet: its characteristic polynomial lies in
-/// $\mathbb{Q}(\sqrt d)[x]$ and needs the factorization over $\mathbb{Q}(\sqrt d)$ and
-/// components over absolute fields $\mathbb{Q}(\sqrt d)[t]/(q)$, which
+/// $\mathbb{Q}(\sqrt d)\[x\]$ and needs the factorization over $\mathbb{Q}(\sqrt d)$ and
+/// components over absolute fields $\mathbb{Q}(\sqrt d)\[t\]/(q)$, which
 /// [`JordanForm`] (a rational matrix and a rational characteristic polynomial) cannot
 /// carry; the error says so instead of answering approximately.
 ///

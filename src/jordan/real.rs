@@ -23,7 +23,7 @@
 //!   with the primitive element $c = \operatorname{Re}\theta + k\operatorname{Im}\theta$,
 //!   its minimal polynomial a factor of a composed resultant and $\operatorname{Re}\theta$,
 //!   $\operatorname{Im}\theta$ as polynomials in $c$ from a gcd over $F(i)$ (see
-//!   `realfield`), e.g. $F = \mathbb{Q}(\sqrt[3]{2}, \sqrt 3)$ of degree 6 for
+//!   `realfield`), e.g. $F = \mathbb{Q}(\sqrt\[3\]{2}, \sqrt 3)$ of degree 6 for
 //!   $x^3 - 2$; the field is listed in the report (`fields`) with `parts`
 //!   $\theta = a(c) + b(c)\,i$.
 //!

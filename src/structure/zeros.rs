@@ -1,8 +1,8 @@
 //! Invariant zeros from the Rosenbrock system matrix, exactly and independently of the SCB.
 //!
-//! $P(s) = \begin{bmatrix} A - sI & B \\ C & D \end{bmatrix}$ over $K[s]$ is brought to a
+//! $P(s) = \begin{bmatrix} A - sI & B \\ C & D \end{bmatrix}$ over $K\[s\]$ is brought to a
 //! diagonal form $\mathrm{diag}(d_1, \dots, d_r, 0, \dots)$ by unimodular row and column
-//! operations (Euclidean elimination over the principal ideal domain $K[s]$). The number of
+//! operations (Euclidean elimination over the principal ideal domain $K\[s\]$). The number of
 //! non-zero $d_i$ is the normal rank $r$ of $P$, and the monic $\prod d_i$ is the $r$-th
 //! determinantal divisor (gcd of all $r \times r$ minors): the invariant zero polynomial,
 //! whose roots (with multiplicity) are the invariant zeros.
