@@ -41,7 +41,7 @@ fn system_section<K: Field>(f: &SystemFile, t: &TypedSystem<K>) -> Report {
 }
 
 /// The realization section and whether its minimal realization was verified.
-fn realization_section<K: Field + 'static>(t: &TypedSystem<K>) -> Result<(Report, bool), Failure> {
+fn realization_section<K: Field>(t: &TypedSystem<K>) -> Result<(Report, bool), Failure> {
     let s = &t.ss;
     let rc = realization::controllability_matrix(&s.a, &s.b).rank();
     let ro = realization::observability_matrix(&s.a, &s.c).rank();
@@ -149,7 +149,7 @@ fn rational_sections(f: &SystemFile, t: &TypedSystem<Q>, r: &mut Report) -> bool
     };
     // mechanical normal form: applies to first-order systems with inputs and an even
     // number of states (files already in second-order form are mechanical by input)
-    if !f.is_second_order() && s.ninputs() > 0 && s.nstates() % 2 == 0 {
+    if !f.is_second_order() && s.ninputs() > 0 && s.nstates().is_multiple_of(2) {
         match crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d) {
             Ok(m) => {
                 verified &= !m.exists || m.verified;

@@ -206,7 +206,7 @@ pub fn jordan_comparison(
 }
 
 /// Float path beside the exact path.
-pub fn check<K: Field + 'static>(
+pub fn check<K: Field>(
     t: &Typed<K>,
     path: &Path,
     extra: Vec<(String, bool, Report)>,

@@ -366,21 +366,6 @@ impl JordanMinimal {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    #[test]
-    fn power_sums_of_quadratic() {
-        // x^2 - 3x + 2: roots 1, 2 -> p0 = 2, p1 = 3, p2 = 5, p3 = 9
-        let s = power_sums(&Poly::from_i64s(&[2, -3, 1]), 4);
-        let want: Vec<Rational> = [2, 3, 5, 9]
-            .iter()
-            .map(|&v: &i64| Rational::from_integer(v.into()))
-            .collect();
-        assert_eq!(s, want);
-    }
-}
-
 /// The Jordan-method minimal realization as a rational state-space system, verified like
 /// every [`super::MinimalRealization`] (Markov parameters up to $2n$, controllable,
 /// observable); available when every mode's block is rational (all retained eigenvalues
@@ -427,4 +412,19 @@ pub fn minimal_jordan_rational(sys: &StateSpace<Q>) -> Result<super::MinimalReal
         super::MinrealMethod::Jordan,
         None,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[test]
+    fn power_sums_of_quadratic() {
+        // x^2 - 3x + 2: roots 1, 2 -> p0 = 2, p1 = 3, p2 = 5, p3 = 9
+        let s = power_sums(&Poly::from_i64s(&[2, -3, 1]), 4);
+        let want: Vec<Rational> = [2, 3, 5, 9]
+            .iter()
+            .map(|&v: &i64| Rational::from_integer(v.into()))
+            .collect();
+        assert_eq!(s, want);
+    }
 }

@@ -103,10 +103,10 @@ pub fn minimal_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealizatio
 /// Minimal realization by the chosen method.
 ///
 /// # Errors
-/// `Unsupported` for a method not available for this field (Jordan: rational systems
+/// `Unsupported` for a method not available for this field (Jordan: systems with rational entries
 /// whose minimal Jordan-method blocks are rational, see
 /// [`super::jordan_method::minimal_jordan_rational`]); internal failures.
-pub fn minimal<K: Field + 'static>(
+pub fn minimal<K: Field>(
     sys: &StateSpace<K>,
     method: MinrealMethod,
 ) -> Result<MinimalRealization<K>> {
@@ -115,19 +115,32 @@ pub fn minimal<K: Field + 'static>(
         MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock(sys),
         MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman(sys),
         MinrealMethod::Jordan => {
-            // the Jordan method works over Q; its result comes back as K = Q
-            let any = sys as &dyn std::any::Any;
-            let Some(q) = any.downcast_ref::<StateSpace<crate::field::Q>>() else {
+            // the Jordan method works over Q: systems with rational entries are taken down
+            // to Q, realized there, lifted back and verified over K
+            let k = sys.a.field().clone();
+            let down = |m: &Matrix<K>| crate::matrix::to_rational_matrix(m);
+            let (Some(a), Some(b), Some(c), Some(d)) =
+                (down(&sys.a), down(&sys.b), down(&sys.c), down(&sys.d))
+            else {
                 return Err(Error::Unsupported(format!(
-                    "the Jordan-form method works on rational systems, not over {}",
-                    sys.a.field()
+                    "the Jordan-form method works on systems with rational entries, not over {k}"
                 )));
             };
-            let r: Box<dyn std::any::Any> =
-                Box::new(super::jordan_method::minimal_jordan_rational(q)?);
-            r.downcast::<MinimalRealization<K>>()
-                .map(|b| *b)
-                .map_err(|_| Error::Verification("minimal: field type changed".into()))
+            let q = StateSpace::new(a, b, c, d)?;
+            let r = super::jordan_method::minimal_jordan_rational(&q)?;
+            let up = |m: &Matrix<crate::field::Q>| m.convert_to(&k);
+            let min = StateSpace::new(
+                up(&r.system.a),
+                up(&r.system.b),
+                up(&r.system.c),
+                up(&r.system.d),
+            )?;
+            Ok(MinimalRealization::new(
+                sys,
+                min,
+                MinrealMethod::Jordan,
+                None,
+            ))
         }
     }
 }
