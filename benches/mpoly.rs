@@ -75,12 +75,17 @@ fn main() {
         ("charpoly 8x8 3p", 8usize, vec!["a", "b", "c"]),
         ("charpoly 12x12 2p", 12, vec!["a", "b"]),
     ] {
-        let entries: Vec<String> = (0..n * n).map(|_| linear_entry(&mut rng, &params)).collect();
+        let entries: Vec<String> = (0..n * n)
+            .map(|_| linear_entry(&mut rng, &params))
+            .collect();
         let polys: Vec<MPoly> = entries
             .iter()
-            .map(|e| parse_mpoly_in(e, &params).unwrap().prim.scale(
-                &parse_mpoly_in(e, &params).unwrap().content.to_integer(),
-            ))
+            .map(|e| {
+                parse_mpoly_in(e, &params)
+                    .unwrap()
+                    .prim
+                    .scale(&parse_mpoly_in(e, &params).unwrap().content.to_integer())
+            })
             .collect();
         let ms = median_ms(|| {
             black_box(charpoly_zp(params.len(), n, &polys).unwrap());
@@ -139,7 +144,10 @@ fn main() {
     let v3 = ["a", "b", "c"];
     let vs: Vec<String> = v3.iter().map(|s| s.to_string()).collect();
     let prods = [
-        ("factor (ab+c^2+1)^3 (a-b+2c)^2", "(a*b + c^2 + 1)^3*(a - b + 2*c)^2"),
+        (
+            "factor (ab+c^2+1)^3 (a-b+2c)^2",
+            "(a*b + c^2 + 1)^3*(a - b + 2*c)^2",
+        ),
         (
             "factor (a^2b+c+3)(ac^2-b+1)(a+bc)",
             "(a^2*b + c + 3)*(a*c^2 - b + 1)*(a + b*c)",
@@ -158,8 +166,12 @@ fn main() {
         println!("{name}: {ms:.3} ms");
         writeln!(cases, "factor\t{name}\ta,b,c\t{}", f.to_string_vars(&vs)).unwrap();
     }
-    let f = parse_mpoly_in("(a*b + c^2 + 1)^3*(a - b + 2*c)^2", &v3).unwrap().prim;
-    let g = parse_mpoly_in("(a*b + c^2 + 1)^2*(a + b + c)^3", &v3).unwrap().prim;
+    let f = parse_mpoly_in("(a*b + c^2 + 1)^3*(a - b + 2*c)^2", &v3)
+        .unwrap()
+        .prim;
+    let g = parse_mpoly_in("(a*b + c^2 + 1)^2*(a + b + c)^3", &v3)
+        .unwrap()
+        .prim;
     let name = "gcd((ab+c^2+1)^3 (a-b+2c)^2, (ab+c^2+1)^2 (a+b+c)^3)";
     let ms = median_ms(|| {
         black_box(gcd(&f, &g));
@@ -174,7 +186,9 @@ fn main() {
     .unwrap();
     // rank/RREF 10x10 of rank 6 over Q(a, b, c): L (10x6 constants) * R (6x10 linear)
     let k = RatFuncField::new(&v3).unwrap();
-    let l: Vec<Vec<i64>> = (0..10).map(|_| (0..6).map(|_| rng.int(2)).collect()).collect();
+    let l: Vec<Vec<i64>> = (0..10)
+        .map(|_| (0..6).map(|_| rng.int(2)).collect())
+        .collect();
     let r: Vec<Vec<String>> = (0..6)
         .map(|_| (0..10).map(|_| linear_entry(&mut rng, &v3)).collect())
         .collect();

@@ -91,7 +91,14 @@ fn vehicle_entries_display() {
     let c = k.parse("(m + u)^2/(m^2 - u^2)").unwrap();
     assert_eq!(k.fmt_elem(&c), "(m + u)/(m - u)");
     assert_eq!(
-        k.eval(&c, &[Rational::one(), Rational::from_integer(3.into()), Rational::one()]),
+        k.eval(
+            &c,
+            &[
+                Rational::one(),
+                Rational::from_integer(3.into()),
+                Rational::one()
+            ]
+        ),
         Some(Rational::from_integer(2.into()))
     );
 }
@@ -99,7 +106,11 @@ fn vehicle_entries_display() {
 #[test]
 fn rref_over_params_reports_conditions() {
     let k = RatFuncField::new(&["a", "b"]).unwrap();
-    let rows = [["a", "b", "1"], ["1", "a", "b"], ["a + 1", "a + b", "b + 1"]];
+    let rows = [
+        ["a", "b", "1"],
+        ["1", "a", "b"],
+        ["a + 1", "a + b", "b + 1"],
+    ];
     let m = Matrix::from_rows(
         k.clone(),
         rows.iter()

@@ -19,8 +19,8 @@ mod charpoly;
 pub mod fraction_free;
 pub mod intmul;
 pub mod modular;
-pub mod params;
 mod ops;
+pub mod params;
 mod rref;
 
 pub(crate) use rref::nullspace_from_rref;

@@ -253,7 +253,13 @@ fn simplex_points(k: usize, d: u32) -> Vec<Vec<u32>> {
 
 fn small_inverses(pr: &Prime, m: usize) -> Vec<u64> {
     (0..=m)
-        .map(|j| if j == 0 { 0 } else { pr.inv(j as u64).expect("small") })
+        .map(|j| {
+            if j == 0 {
+                0
+            } else {
+                pr.inv(j as u64).expect("small")
+            }
+        })
         .collect()
 }
 
@@ -332,7 +338,13 @@ fn interpolate_tensor(pr: &Prime, v: &mut [u64], sizes: &[usize]) {
         let s = sizes[ax];
         if s > 1 {
             let invs: Vec<u64> = (0..s)
-                .map(|j| if j == 0 { 0 } else { pr.inv(j as u64).expect("small") })
+                .map(|j| {
+                    if j == 0 {
+                        0
+                    } else {
+                        pr.inv(j as u64).expect("small")
+                    }
+                })
                 .collect();
             let block = stride * s;
             let mut line = vec![0u64; s];

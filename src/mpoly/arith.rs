@@ -332,6 +332,11 @@ mod tests {
         assert_eq!(g.shift_var(0, &1.into()), p("a + 1 - b + 2*c"));
         assert_eq!(f.substitute(0, &p("c")), p("b*c + c^2 + 1"));
         let big = p("123456789012345678901234567890*a + b").pow(3);
-        assert_eq!(big.div_exact(&p("123456789012345678901234567890*a + b")).unwrap().len(), 3);
+        assert_eq!(
+            big.div_exact(&p("123456789012345678901234567890*a + b"))
+                .unwrap()
+                .len(),
+            3
+        );
     }
 }

@@ -116,6 +116,23 @@ impl MPoly {
         self.render(vars, true)
     }
 
+    /// Is the first displayed term (largest total degree, then lex) negative?
+    pub fn display_lead_negative(&self) -> bool {
+        self.display_order()
+            .first()
+            .is_some_and(|&i| self.terms[i].1.is_negative())
+    }
+
+    /// `f` or `-f`, whichever displays with a positive first term (for lists of factors and
+    /// conditions, where the sign is immaterial or carried elsewhere).
+    pub fn display_normalized(&self) -> MPoly {
+        if self.display_lead_negative() {
+            self.neg()
+        } else {
+            self.clone()
+        }
+    }
+
     /// Is the display a single term (no `+`/`-` between terms)?
     pub fn is_monomial_term(&self) -> bool {
         self.len() <= 1

@@ -70,7 +70,9 @@ impl Factorization {
 /// ```
 pub fn factor(f: &MPoly) -> Result<Factorization> {
     if f.is_zero() {
-        return Err(Error::Invalid("factorization of the zero polynomial".into()));
+        return Err(Error::Invalid(
+            "factorization of the zero polynomial".into(),
+        ));
     }
     let (c, p) = f.content_primitive();
     let mut raw = Vec::new();
@@ -84,17 +86,17 @@ pub fn factor(f: &MPoly) -> Result<Factorization> {
             _ => factors.push((g, e)),
         }
     }
-    Ok(Factorization { content: c, factors })
+    Ok(Factorization {
+        content: c,
+        factors,
+    })
 }
 
 /// Factorization of `content * prim` over $\mathbb{Q}$: the rational content and the
 /// factors of `prim`.
 pub fn factor_q(f: &super::QPoly) -> Result<(Rational, Vec<(MPoly, usize)>)> {
     let fz = factor(&f.prim)?;
-    Ok((
-        &f.content * Rational::from_integer(fz.content),
-        fz.factors,
-    ))
+    Ok((&f.content * Rational::from_integer(fz.content), fz.factors))
 }
 
 /// Total order used for sorting factors: total degree, then number of terms, then terms.
@@ -209,10 +211,7 @@ fn factor_squarefree(f: &MPoly, x: usize) -> Result<Vec<MPoly>> {
     if used.len() == 1 {
         let z = f.to_zpoly(x).expect("univariate");
         let (_, fs) = factor_zpoly(&z)?;
-        return Ok(fs
-            .iter()
-            .map(|(g, _)| MPoly::from_zpoly(n, x, g))
-            .collect());
+        return Ok(fs.iter().map(|(g, _)| MPoly::from_zpoly(n, x, g)).collect());
     }
     if f.deg(x) == 1 {
         return Ok(vec![f]);
@@ -343,7 +342,10 @@ mod tests {
         let f = p("(a*b + c^2 + 1)^3*(a - b + 2*c)^2");
         let fz = factor(&f).unwrap();
         assert_eq!(fz.expand(3), f);
-        assert_eq!(fz.factors, vec![(p("a - b + 2*c"), 2), (p("a*b + c^2 + 1"), 3)]);
+        assert_eq!(
+            fz.factors,
+            vec![(p("a - b + 2*c"), 2), (p("a*b + c^2 + 1"), 3)]
+        );
         // needs lifting: two factors with the same square-free part
         let g = p("(a^2*b + c + 3)*(a*c^2 - b + 1)*(a + b*c)");
         let gz = factor(&g).unwrap();

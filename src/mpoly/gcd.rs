@@ -8,7 +8,9 @@
 //! 2. [`gcd_heuristic`]: evaluate the last variable at a large integer $\xi$, recurse, and
 //!    read the gcd back from its $\xi$-adic expansion (Char, Geddes and Gonnet's GCDHEU as
 //!    in SymPy's `dmp_zz_heu_gcd`); accepted only when it divides both inputs exactly, so it
-//!    is never wrong, only sometimes unsuccessful;
+//!    is never wrong, only sometimes unsuccessful. Its base case, one variable left, is the
+//!    modular univariate gcd (31-bit primes, Chinese remaindering until stable, trial
+//!    division; module `zgcd`) instead of a last evaluation to huge integers;
 //! 3. [`gcd_subresultant`]: content and primitive part in a main variable, subresultant PRS
 //!    with polynomial coefficients (always succeeds).
 
@@ -106,7 +108,7 @@ fn heu(f: &MPoly, g: &MPoly) -> Option<MPoly> {
     if (0..n).all(|i| i == v || (df[i] == 0 && dg[i] == 0))
         && let (Some(fz), Some(gz)) = (f.to_zpoly(v), g.to_zpoly(v))
     {
-        return Some(MPoly::from_zpoly(n, v, &fz.gcd(&gz)).scale(&c));
+        return Some(MPoly::from_zpoly(n, v, &super::zgcd::gcd_zpoly(&fz, &gz)).scale(&c));
     }
     let (fnorm, gnorm) = (f.max_norm(), g.max_norm());
     let b: BigInt = BigInt::from(2) * fnorm.clone().min(gnorm.clone()) + 29;
@@ -202,9 +204,7 @@ pub fn primitive_in(f: &MPoly, i: usize) -> MPoly {
     if c.is_zero() {
         return f.clone();
     }
-    f.div_exact(&c)
-        .expect("content divides")
-        .abs_lc()
+    f.div_exact(&c).expect("content divides").abs_lc()
 }
 
 /// Pseudo-remainder of `a` by `b` as polynomials in one variable with polynomial
@@ -353,7 +353,10 @@ mod tests {
         let fh = f.pow(2).mul(&h);
         assert_eq!(gcd(&fg, &fh), f.pow(2));
         assert_eq!(gcd_subresultant(&fg, &fh), f.pow(2));
-        assert_eq!(gcd(&g.scale(&6.into()), &g.scale(&(-4).into())), g.scale(&2.into()));
+        assert_eq!(
+            gcd(&g.scale(&6.into()), &g.scale(&(-4).into())),
+            g.scale(&2.into())
+        );
         assert_eq!(gcd(&f, &g), MPoly::one(3));
         assert_eq!(gcd(&p("a*b"), &p("b*c")), p("b"));
         assert_eq!(content_in(&p("a*b + a*c"), 1), p("a"));

@@ -97,7 +97,10 @@ pub(crate) fn lift(f: &MPoly, x: usize, a: &[BigInt], us: &[ZPoly]) -> Option<Ve
         let d = gz.deg0();
         g0.push(Poly::new(
             Q,
-            gz.coeffs().iter().map(|c| Rational::from_integer(c.clone())).collect(),
+            gz.coeffs()
+                .iter()
+                .map(|c| Rational::from_integer(c.clone()))
+                .collect(),
         ));
         let mut low = gz.coeffs().to_vec();
         low.truncate(d);

@@ -36,6 +36,7 @@ pub mod gcd;
 mod hensel;
 pub mod parse;
 pub mod resultant;
+mod zgcd;
 
 pub use factor::{Factorization, factor};
 pub use gcd::gcd;
@@ -106,7 +107,13 @@ impl QPoly {
             .then(|| self.prim.scale(self.content.numer()))
     }
     fn render(&self, vars: &[String], latex: bool) -> String {
-        let show = |p: &MPoly| if latex { p.to_latex(vars) } else { p.to_string_vars(vars) };
+        let show = |p: &MPoly| {
+            if latex {
+                p.to_latex(vars)
+            } else {
+                p.to_string_vars(vars)
+            }
+        };
         if let Some(p) = self.to_integer_poly() {
             return show(&p);
         }
@@ -220,7 +227,9 @@ impl MPoly {
     }
     /// Leading coefficient (lex); zero for the zero polynomial.
     pub fn lc(&self) -> BigInt {
-        self.terms.first().map_or_else(BigInt::zero, |t| t.1.clone())
+        self.terms
+            .first()
+            .map_or_else(BigInt::zero, |t| t.1.clone())
     }
     /// Leading monomial (lex).
     pub fn lm(&self) -> Option<u128> {
@@ -382,7 +391,9 @@ impl MPoly {
     }
     /// Leading coefficient in $x_i$ (a polynomial free of $x_i$).
     pub fn lc_in(&self, i: usize) -> MPoly {
-        self.to_univariate(i).pop().unwrap_or_else(|| Self::zero(self.nvars))
+        self.to_univariate(i)
+            .pop()
+            .unwrap_or_else(|| Self::zero(self.nvars))
     }
     /// The dense univariate polynomial in $x_i$ when no other variable occurs.
     pub fn to_zpoly(&self, i: usize) -> Option<ZPoly> {

@@ -71,7 +71,8 @@ pub fn identifiers(text: &str) -> Result<Vec<String>> {
             let prev_digit = i > 0 && (s[i - 1].is_ascii_digit() || s[i - 1] == b'.');
             let exp_marker = prev_digit
                 && (c == b'e' || c == b'E')
-                && s.get(i + 1).is_some_and(|d| d.is_ascii_digit() || *d == b'-' || *d == b'+')
+                && s.get(i + 1)
+                    .is_some_and(|d| d.is_ascii_digit() || *d == b'-' || *d == b'+')
                 && number_start_is_plain(s, i);
             let start = i;
             while i < s.len() && (s[i].is_ascii_alphanumeric() || s[i] == b'_') {
@@ -171,7 +172,12 @@ impl P<'_> {
     }
     fn check(&self, f: &Frac) -> Result<()> {
         let lim = MAX_DEGREE.min(max_exponent(self.n()) / 2);
-        if f.0.degrees().iter().chain(f.1.degrees().iter()).any(|&d| d > lim) {
+        if f.0
+            .degrees()
+            .iter()
+            .chain(f.1.degrees().iter())
+            .any(|&d| d > lim)
+        {
             return Err(self.err("degree too large"));
         }
         Ok(())
@@ -301,8 +307,9 @@ impl P<'_> {
                 let terms = degs
                     .iter()
                     .fold(1u64, |acc, &d| acc.saturating_mul(e as u64 * d as u64 + 1));
-                let bits = (e as u64)
-                    .saturating_mul(f.max_norm().bits() + (f.len().max(1) as u64).ilog2() as u64 + 1);
+                let bits = (e as u64).saturating_mul(
+                    f.max_norm().bits() + (f.len().max(1) as u64).ilog2() as u64 + 1,
+                );
                 if terms.min(binomial_bound(f.len() as u64, e as u64)) > MAX_POWER_TERMS
                     || bits > MAX_POWER_BITS
                 {
@@ -411,7 +418,10 @@ mod tests {
         assert!(parse_mpoly("x/y").is_err());
         assert!(parse_mpoly("(x+y+z+w)^1000").is_err());
         assert!(parse_mpoly("x^").is_err());
-        assert_eq!(parse_mpoly("x + -2*y").unwrap().1, parse_mpoly("x - 2*y").unwrap().1);
+        assert_eq!(
+            parse_mpoly("x + -2*y").unwrap().1,
+            parse_mpoly("x - 2*y").unwrap().1
+        );
         assert!(parse_mpoly("x + ").is_err());
         assert!(parse_mpoly("").is_err());
         assert!(parse_mpoly("(a + b)^20").is_ok());

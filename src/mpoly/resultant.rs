@@ -115,10 +115,7 @@ mod tests {
     #[test]
     fn examples() {
         assert_eq!(discriminant(&p("a*x^2 + b*x + c"), 0), p("b^2 - 4*a*c"));
-        assert_eq!(
-            discriminant(&p("x^3 + a*x + b"), 0),
-            p("-4*a^3 - 27*b^2")
-        );
+        assert_eq!(discriminant(&p("x^3 + a*x + b"), 0), p("-4*a^3 - 27*b^2"));
         // Res(x - a, g) = g(a)
         let g = p("x^3 - b*x + 2");
         assert_eq!(resultant(&p("x - a"), &g, 0), p("a^3 - b*a + 2"));

@@ -101,7 +101,11 @@ pub(super) fn fmt(vars: &[String], a: &RatFunc, latex: bool) -> String {
     if latex {
         return format!("{sign}\\frac{{{num_abs}}}{{{den}}}");
     }
-    let den = if is_atom(&den) { den } else { format!("({den})") };
+    let den = if is_atom(&den) {
+        den
+    } else {
+        format!("({den})")
+    };
     if !neg {
         let num = if is_sum(&num_abs) {
             format!("({num_abs})")

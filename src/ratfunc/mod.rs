@@ -54,7 +54,10 @@ impl RatFunc {
     }
     /// The constant value when the element lies in $\mathbb{Q}$.
     pub fn to_rational(&self) -> Option<Rational> {
-        Some(Rational::new(self.num.to_constant()?, self.den.to_constant()?))
+        Some(Rational::new(
+            self.num.to_constant()?,
+            self.den.to_constant()?,
+        ))
     }
 }
 
@@ -233,7 +236,7 @@ impl RatFuncField {
         Ok(self
             .conditions()?
             .iter()
-            .map(|p| p.to_string_vars(self.vars()))
+            .map(|p| p.display_normalized().to_string_vars(self.vars()))
             .collect())
     }
     /// Display of a polynomial in this field's variables.
@@ -481,7 +484,10 @@ mod tests {
         assert_eq!(k.fmt_elem(&k.add(&a, &b)), "1");
         let c = k.parse("(m^2 - u^2)/(m + u)").unwrap();
         assert_eq!(k.fmt_elem(&c), "m - u");
-        assert_eq!(k.fmt_elem(&k.from_rational(&Rational::new(3.into(), 6.into()))), "1/2");
+        assert_eq!(
+            k.fmt_elem(&k.from_rational(&Rational::new(3.into(), 6.into()))),
+            "1/2"
+        );
         assert!(k.conditions().unwrap().is_empty());
         let d = k.div(&k.one(), &k.parse("m^2*u - m*u").unwrap()).unwrap();
         assert_eq!(k.fmt_elem(&d), "1/(m*u*(m - 1))");

@@ -8,10 +8,12 @@
 
 mod algebraic;
 mod jordan;
+mod mpoly;
 mod realization;
 mod structure;
 
 pub use algebraic::{factor_report, roots_report};
+pub use mpoly::{mfactor_report, mgcd_report};
 
 use crate::field::Field;
 use crate::float::{Tol, jordan_guess, to_dmatrix};
