@@ -117,8 +117,9 @@ impl NumberField {
         }
         NfElem(v)
     }
-    /// Evaluates the element at the marked complex root, in f64.
-    fn eval_approx(&self, a: &NfElem) -> (f64, f64) {
+    /// Evaluates the element at the marked complex root, in f64 (always defined; the field
+    /// trait's [`Field::approx`] wraps it in `Some`).
+    pub fn approx(&self, a: &NfElem) -> (f64, f64) {
         let (xr, xi) = self.0.root;
         let (mut re, mut im) = (0.0, 0.0);
         for c in a.0.iter().rev() {
@@ -223,8 +224,8 @@ impl Field for NumberField {
     fn fmt_elem(&self, a: &NfElem) -> String {
         fmt_poly(&Q, &a.0, &self.0.var)
     }
-    fn approx(&self, a: &NfElem) -> (f64, f64) {
-        self.eval_approx(a)
+    fn approx(&self, a: &NfElem) -> Option<(f64, f64)> {
+        Some(NumberField::approx(self, a))
     }
 }
 
