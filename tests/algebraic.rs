@@ -8,11 +8,12 @@ mod common;
 
 use common::{Rng, iters};
 use exactlti::Error;
+use exactlti::algebraic::NumberField;
 use exactlti::algebraic::nf_factor::norm;
 use exactlti::algebraic::{
     AlgebraicNumber, factor_over_number_field, factor_q, factor_report, roots, roots_report,
 };
-use exactlti::field::{Field, NumberField, Q, Rational};
+use exactlti::field::{Field, Q, Rational};
 use exactlti::poly::{Poly, parse_poly_q};
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;

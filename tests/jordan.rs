@@ -5,7 +5,8 @@ mod common;
 mod jcommon;
 
 use exactlti::Error;
-use exactlti::field::{Field, NfElem, NumberField, Q, Rational};
+use exactlti::algebraic::{NfElem, NumberField};
+use exactlti::field::{Field, Q, Rational};
 use exactlti::jordan::{JordanForm, jordan};
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;

@@ -25,10 +25,12 @@ pub mod isolate_complex;
 pub mod isolate_real;
 pub mod nf_factor;
 pub mod number;
+pub mod number_field;
 pub(crate) mod zp;
 
 pub use nf_factor::factor_over_number_field;
 pub use number::AlgebraicNumber;
+pub use number_field::{NfElem, NumberField, NumberFieldCtx};
 
 use crate::error::{Error, Result};
 use crate::field::{Q, Rational};

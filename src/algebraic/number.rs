@@ -12,12 +12,13 @@
 //! over $\mathbb{Q}$; the right real root is the only candidate left in the shrinking
 //! real (imaginary) range of the box.
 
+use super::NumberField;
 use super::display::{quadratic_string, round_sig, split_square};
 use super::isolate_complex::{CBox, isolate_upper, refine_box};
 use super::isolate_real::{RealRoot, bisect, isolate_real_roots, refine_real};
 use super::zp::{self, ZP};
 use crate::error::{Error, Result};
-use crate::field::{NumberField, Q, Rational, rational_to_f64};
+use crate::field::{Q, Rational, rational_to_f64};
 use crate::poly::Poly;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};

@@ -16,7 +16,8 @@
 //! the vehicle-dynamics paper.
 
 use super::{JordanForm, RealJordanForm};
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::algebraic::{NfElem, NumberField};
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::report::{Report, Value};
 use num_complex::Complex64;

@@ -13,8 +13,8 @@
 //! | [`NumberField::elem_from_poly`] | the class of a polynomial in $t$ |
 //! | [`NumberField::generator`] | $t$ |
 
-use super::{Field, Q, Rational, rational_to_f64};
 use crate::error::{Error, Result};
+use crate::field::{Field, Q, Rational, rational_to_f64};
 use crate::poly::{Poly, fmt_poly};
 use num_traits::{One, Zero};
 use std::fmt;
