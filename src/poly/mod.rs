@@ -18,6 +18,7 @@
 
 mod arith;
 pub mod factor;
+pub(crate) mod fp;
 mod parse;
 pub mod zpoly;
 pub use arith::*;

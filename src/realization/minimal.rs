@@ -1,8 +1,9 @@
-//! Minimal realizations: the result type, its exact verification and the dispatcher.
+//! Minimal realizations: the result type and its exact verification (the algorithms are in
+//! `kalman`/[`super::method`], `rosenbrock`, `ho_kalman`, `jordan_method`).
 
 use super::controllability::{is_controllable, is_observable};
 use super::kalman::kalman_decomposition;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::report::Report;
@@ -115,23 +116,4 @@ pub fn minimal_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealizatio
         MinrealMethod::Kalman,
         Some(t),
     ))
-}
-
-/// Minimal realization by the chosen method.
-///
-/// # Errors
-/// `Unsupported` for a method not available for this field; internal failures.
-pub fn minimal<K: Field>(
-    sys: &StateSpace<K>,
-    method: MinrealMethod,
-) -> Result<MinimalRealization<K>> {
-    match method {
-        MinrealMethod::Kalman => minimal_kalman(sys),
-        MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock(sys),
-        MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman(sys),
-        MinrealMethod::Jordan => Err(Error::Unsupported(
-            "the Jordan-form method works on rational systems: use realization::minimal_jordan"
-                .into(),
-        )),
-    }
 }
