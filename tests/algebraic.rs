@@ -4,7 +4,7 @@
 //! exact argument-principle (winding number) counter for boxes, both in rational arithmetic
 //! and sharing no code with the isolation algorithms under test.
 
-mod common;
+use crate::common;
 
 use common::{Rng, iters};
 use exactlti::Error;

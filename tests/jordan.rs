@@ -1,8 +1,7 @@
 //! Jordan decomposition: the papers' examples, properties on planted structures, errors.
 
-mod common;
-#[path = "common/jordan.rs"]
-mod jcommon;
+use crate::common;
+use crate::jcommon;
 
 use exactlti::Error;
 use exactlti::algebraic::{NfElem, NumberField};

@@ -1,5 +1,5 @@
 //! Minimal realization, Kalman decomposition, descriptor conversion and Gramians.
-mod common;
+use crate::common;
 use common::systems::sliding_masses;
 use common::*;
 use exactlti::field::{Field, Q, Rational};
