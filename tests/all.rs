@@ -13,6 +13,8 @@ mod algebraic;
 mod bicycle;
 #[path = "cli.rs"]
 mod cli;
+#[path = "field_axioms.rs"]
+mod field_axioms;
 #[path = "float.rs"]
 mod float;
 #[path = "io.rs"]
