@@ -1,5 +1,5 @@
 //! Minimal realizations: the result type and its exact verification (the algorithms are in
-//! `kalman`/[`super::method`], `rosenbrock`, `ho_kalman`, `jordan_method`).
+//! `kalman`/`method`, `rosenbrock`, `ho_kalman`, `jordan_method`).
 
 use super::controllability::{is_controllable, is_observable};
 use super::kalman::kalman_decomposition;
