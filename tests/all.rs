@@ -21,6 +21,8 @@ mod float;
 mod io;
 #[path = "jordan.rs"]
 mod jordan;
+#[path = "library_api.rs"]
+mod library_api;
 #[path = "matrix_generic.rs"]
 mod matrix_generic;
 #[path = "matrix_modular.rs"]

@@ -20,7 +20,6 @@ use crate::algebraic::{NfElem, NumberField};
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::newton_power_sums;
-use crate::report::{Report, Value};
 use num_complex::Complex64;
 use num_traits::{One, Zero};
 
@@ -203,21 +202,5 @@ impl FreeResponse {
             }
         }
         out
-    }
-    /// Report: one entry per eigenvalue and power, `x(t) = sum t^k e^(s t) G x0`.
-    pub fn report(&self, jf: &JordanForm) -> Report {
-        let mut items = vec![];
-        for (ev, e) in jf.eigenvalues.iter().enumerate() {
-            let (field, f) = jf.root_map(ev);
-            for t in self.terms.iter().filter(|t| t.component == e.component) {
-                items.push(Value::Obj(
-                    Report::new()
-                        .str("eigenvalue", e.value.clone())
-                        .int("power", t.power)
-                        .matrix("G", &t.coeff.map(&field, &f)),
-                ));
-            }
-        }
-        Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0").list("terms", items)
     }
 }

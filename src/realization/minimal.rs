@@ -6,7 +6,6 @@ use super::kalman::kalman_decomposition;
 use crate::error::Result;
 use crate::field::Field;
 use crate::matrix::Matrix;
-use crate::report::Report;
 use crate::system::StateSpace;
 
 /// Which algorithm computes the minimal realization.
@@ -69,22 +68,6 @@ impl<K: Field> MinimalRealization<K> {
             t,
             verified,
         }
-    }
-    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`).
-    pub fn report(&self) -> Report {
-        let mut r = Report::titled(format!("minimal realization ({})", self.method.name()))
-            .str("method", self.method.name())
-            .int("original_order", self.original_order)
-            .int("order", self.order)
-            .int("mcmillan_degree", self.order)
-            .matrix("A", &self.system.a)
-            .matrix("B", &self.system.b)
-            .matrix("C", &self.system.c)
-            .matrix("D", &self.system.d);
-        if let Some(t) = &self.t {
-            r = r.matrix("T", t);
-        }
-        r.bool("verified", self.verified)
     }
 }
 
