@@ -59,6 +59,7 @@ pub mod jordan;
 pub mod matrix;
 pub mod mpoly;
 pub mod poly;
+pub mod qkernels;
 pub mod ratfunc;
 pub mod realization;
 pub mod report;

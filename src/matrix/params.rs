@@ -4,7 +4,7 @@
 //! | entry point | computes | algorithm |
 //! |---|---|---|
 //! | [`charpoly_ratfunc`] | $\det(xI - A)$ over $\mathbb{Q}(p)$ | clear denominators ($A = B / D$, $B$ over $\mathbb{Z}\lbrack p\rbrack$), [`charpoly_zp`], $c_k = c'_k / D^{n-k}$ |
-//! | [`charpoly_zp`] | $\det(xI - B)$ over $\mathbb{Z}\lbrack p\rbrack$ | multi-modular: per word prime, evaluate $B$ on a grid in the parameters, Hessenberg charpoly mod $p$ ([`super::modular::charpoly`]), dense Newton interpolation per parameter, CRT |
+//! | [`charpoly_zp`] | $\det(xI - B)$ over $\mathbb{Z}\lbrack p\rbrack$ | multi-modular: per word prime, evaluate $B$ on a grid in the parameters, Hessenberg charpoly mod $p$ ([`crate::qkernels::modular::charpoly`]), dense Newton interpolation per parameter, CRT |
 //! | [`rref_params`] | canonical RREF over $\mathbb{Q}(p)$, conditions recorded | fraction-free Gauss–Jordan over $\mathbb{Z}\lbrack p\rbrack$ |
 //! | [`det_bareiss_zp`] | $\det B$ over $\mathbb{Z}\lbrack p\rbrack$ | Bareiss fraction-free elimination, exact multivariate divisions |
 //!
@@ -21,14 +21,14 @@
 //! field's own denominators.
 
 use super::Matrix;
-use super::modular::charpoly::charpoly_mod_p;
-use super::modular::crt::Crt;
-use super::modular::prime::{Prime, nth_prime};
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::mpoly::MPoly;
 use crate::mpoly::gcd::lcm;
 use crate::poly::Poly;
+use crate::qkernels::modular::charpoly::charpoly_mod_p;
+use crate::qkernels::modular::crt::Crt;
+use crate::qkernels::prime::{Prime, nth_prime};
 use crate::ratfunc::RatFuncField;
 use num_bigint::{BigInt, Sign};
 use num_traits::{One, Signed, ToPrimitive, Zero};

@@ -7,7 +7,7 @@
 //! accepted only if it divides both $f$ and $g$ exactly (Brown's univariate scheme), so the
 //! answer is always the gcd; `None` after a bounded number of primes.
 
-use crate::poly::factor::modp::Zp;
+use crate::poly::fp::Zp;
 use crate::poly::zpoly::ZPoly;
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;

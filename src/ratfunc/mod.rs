@@ -27,7 +27,7 @@ use crate::field::{Field, Rational};
 use crate::mpoly::factor::cmp_poly;
 use crate::mpoly::{MAX_VARS, MPoly, QPoly, factor, gcd};
 use num_bigint::BigInt;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 use std::collections::HashSet;
 use std::fmt;
 use std::sync::{Arc, Mutex};
@@ -446,14 +446,9 @@ impl Field for RatFuncField {
         display::fmt(self.vars(), a, true)
     }
     /// Only constants have an approximation (no values are attached to the parameters).
-    fn approx(&self, a: &RatFunc) -> (f64, f64) {
-        match a.to_rational() {
-            Some(q) => (
-                q.numer().to_f64().unwrap_or(f64::NAN) / q.denom().to_f64().unwrap_or(f64::NAN),
-                0.0,
-            ),
-            None => (f64::NAN, f64::NAN),
-        }
+    fn approx(&self, a: &RatFunc) -> Option<(f64, f64)> {
+        let q = a.to_rational()?;
+        Some((crate::field::rational_to_f64(&q), 0.0))
     }
 }
 
