@@ -230,6 +230,24 @@ proptest! {
     }
 
     #[test]
+    fn fraction_free_rref_matches_gauss_jordan(es in proptest::collection::vec((-2i64..=2, -1i64..=1, -1i64..=1, 0i64..=2), 12)) {
+        let k = RatFuncField::new(&["a", "b"]).unwrap();
+        let entries: Vec<RatFunc> = es.iter().map(|(c, x, y, d)| {
+            k.parse(&format!("({c} + {x}*a + {y}*b)/(a + {d})")).unwrap()
+        }).collect();
+        // rank-deficient half the time: row 2 = row 0 + row 1
+        let mut rows: Vec<Vec<RatFunc>> = entries.chunks(4).map(|r| r.to_vec()).collect();
+        if es[0].3 == 0 {
+            rows[2] = (0..4).map(|j| k.add(&rows[0][j], &rows[1][j])).collect();
+        }
+        let m = Matrix::from_rows(k.clone(), rows).unwrap();
+        let (r1, p1) = exactlti::matrix::params::rref_params(&m);
+        let (r2, p2) = m.rref_gauss_jordan();
+        prop_assert_eq!(p1, p2);
+        prop_assert_eq!(r1, r2);
+    }
+
+    #[test]
     fn charpoly_interpolation_matches_berkowitz(es in proptest::collection::vec((-3i64..=3, -2i64..=2, -2i64..=2), 9)) {
         let k = RatFuncField::new(&["a", "b"]).unwrap();
         let entries: Vec<RatFunc> = es.iter().map(|(c, x, y)| {

@@ -36,7 +36,6 @@ pub mod gcd;
 mod hensel;
 pub mod parse;
 pub mod resultant;
-mod zgcd;
 
 pub use factor::{Factorization, factor};
 pub use gcd::gcd;
