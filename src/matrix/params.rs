@@ -375,8 +375,7 @@ fn interpolate_line(pr: &Prime, c: &mut [u64], invs: &[u64]) {
     // p = c[m-1]; p = p*(x - i) + c[i]
     let mut p = vec![0u64; m];
     p[0] = c[m - 1];
-    let mut deg = 0;
-    for i in (0..m - 1).rev() {
+    for (deg, i) in (0..m - 1).rev().enumerate() {
         // multiply by (x - i)
         let ni = pr.neg(i as u64 % pr.p);
         for k in (0..=deg + 1).rev() {
@@ -384,7 +383,6 @@ fn interpolate_line(pr: &Prime, c: &mut [u64], invs: &[u64]) {
             let lo = if k <= deg { pr.mul(p[k], ni) } else { 0 };
             p[k] = pr.add(hi, lo);
         }
-        deg += 1;
         p[0] = pr.add(p[0], c[i]);
     }
     c.copy_from_slice(&p);

@@ -103,7 +103,7 @@ impl MPoly {
                 .filter(|(_, c)| *c != 0)
                 .map(|(m, c)| (m, BigInt::from(c)))
                 .collect();
-            t.sort_unstable_by(|x, y| y.0.cmp(&x.0));
+            t.sort_unstable_by_key(|x| std::cmp::Reverse(x.0));
             return MPoly::from_sorted(self.nvars, t);
         }
         let mut acc: HashMap<u128, BigInt> = HashMap::with_capacity(a.len() * b.len() / 2 + 1);
@@ -114,7 +114,7 @@ impl MPoly {
             }
         }
         let mut t: Vec<(u128, BigInt)> = acc.into_iter().filter(|(_, c)| !c.is_zero()).collect();
-        t.sort_unstable_by(|x, y| y.0.cmp(&x.0));
+        t.sort_unstable_by_key(|x| std::cmp::Reverse(x.0));
         MPoly::from_sorted(self.nvars, t)
     }
 

@@ -144,7 +144,7 @@ impl MPoly {
     /// If `nvars > MAX_VARS` (a caller bug; parsers check first).
     pub fn from_terms(nvars: usize, mut terms: Vec<(u128, BigInt)>) -> Self {
         assert!(nvars <= MAX_VARS, "too many variables");
-        terms.sort_by(|a, b| b.0.cmp(&a.0));
+        terms.sort_by_key(|a| std::cmp::Reverse(a.0));
         let mut out: Vec<(u128, BigInt)> = Vec::with_capacity(terms.len());
         for (m, c) in terms {
             match out.last_mut() {
