@@ -16,6 +16,7 @@ pub mod float;
 pub mod io;
 pub mod jordan;
 pub mod matrix;
+pub mod pencil;
 pub mod poly;
 pub mod realization;
 pub mod report;
