@@ -22,6 +22,7 @@
 
 mod controllability;
 mod descriptor;
+mod descriptor_minimal;
 mod gramian;
 mod ho_kalman;
 mod jordan_method;
@@ -29,12 +30,14 @@ mod kalman;
 mod minimal;
 mod modal;
 mod rosenbrock;
+mod weierstrass;
 
 pub use controllability::{
     controllability_matrix, hankel_matrix, is_controllable, is_observable, mcmillan_degree,
     observability_matrix, pbh_controllable, pbh_observable, row_compression,
 };
 pub use descriptor::{StandardForm, descriptor_to_standard};
+pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan};
@@ -42,3 +45,4 @@ pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use minimal::{MinimalRealization, MinrealMethod, minimal, minimal_kalman};
 pub use modal::{ModalTable, Mode, modal_table};
 pub use rosenbrock::minimal_rosenbrock;
+pub use weierstrass::{WeierstrassSplit, eval_transfer, same_transfer, weierstrass_split};

@@ -1,0 +1,162 @@
+//! Descriptor systems: minimal and irreducible descriptor realizations (improper systems
+//! included), the bicycle of the minimal-realizations paper (sec. 4.2) through `pencil` and
+//! `minreal --descriptor`, and textbook improper examples.
+mod common;
+use exactlti::field::{Field, Q, Rational, parse_rational};
+use exactlti::matrix::Matrix;
+use exactlti::pencil::pencil_structure;
+use exactlti::qmat;
+use exactlti::realization::{minimal_descriptor, same_transfer, weierstrass_split};
+use exactlti::system::Descriptor;
+
+// The bicycle builder as in tests/bicycle.rs (kept self-contained).
+fn data() -> serde_json::Value {
+    serde_json::from_str(include_str!("../data/bicycle-benchmark.json")).unwrap()
+}
+
+fn mat2(v: &serde_json::Value) -> Matrix<Q> {
+    Matrix::from_fn(Q, 2, 2, |i, j| {
+        parse_rational(v[i][j].as_str().unwrap()).unwrap()
+    })
+}
+
+fn q(s: &str) -> Rational {
+    parse_rational(s).unwrap()
+}
+
+/// States: roll, steer, roll rate, steer rate, yaw, lateral position, steer torque (the input
+/// appended as a state, E row zero: 0 = -x7 + u).
+fn bicycle_descriptor(v: &str) -> Descriptor<Q> {
+    let d = data();
+    let (m, c1, k0, k2) = (
+        mat2(&d["M"]),
+        mat2(&d["C1"]),
+        mat2(&d["K0"]),
+        mat2(&d["K2"]),
+    );
+    let g = q(d["g"].as_str().unwrap());
+    let v = q(v);
+    let kin = &d["kinematics"];
+    let (w, c, cl) = (
+        q(kin["w"].as_str().unwrap()),
+        q(kin["c"].as_str().unwrap()),
+        q(kin["cos_lambda"].as_str().unwrap()),
+    );
+    let stiff = &k0.scale(&g) + &k2.scale(&(&v * &v));
+    let damp = c1.scale(&v);
+    let mut e = Matrix::identity(Q, 7);
+    e.set_block(2, 2, &m);
+    e.set(6, 6, Q.zero());
+    let mut a = Matrix::zeros(Q, 7, 7);
+    a.set(0, 2, Q.one());
+    a.set(1, 3, Q.one());
+    a.set_block(2, 0, &-&stiff);
+    a.set_block(2, 2, &-&damp);
+    a.set(3, 6, Q.one()); // steer torque acts on the steer equation
+    a.set(4, 1, &v * &cl / &w); // yaw rate = (v delta + c delta') cos(lambda) / w
+    a.set(4, 3, &c * &cl / &w);
+    a.set(5, 4, v.clone()); // lateral velocity = v psi
+    a.set(6, 6, -Q.one());
+    let mut b = Matrix::zeros(Q, 7, 1);
+    b.set(6, 0, Q.one());
+    let mut cm = Matrix::zeros(Q, 2, 7);
+    cm.set(0, 0, Q.one());
+    cm.set(1, 1, Q.one());
+    Descriptor::new(e, a, b, cm, Matrix::zeros(Q, 2, 1)).unwrap()
+}
+
+#[test]
+fn bicycle_pencil_and_minimal_descriptor() {
+    for v in ["2", "8"] {
+        let desc = bicycle_descriptor(v);
+        // regular 7x7 pencil: 6 finite eigenvalues and one non-dynamic mode (the input state)
+        let ps = pencil_structure(&desc.a, &desc.e).unwrap();
+        let k = &ps.structure;
+        assert!(ps.verified && k.is_regular(), "v = {v}");
+        assert_eq!(k.infinite_divisors, [1]);
+        assert_eq!(k.finite_order(), 6);
+        assert!(k.right_indices.is_empty() && k.left_indices.is_empty());
+        // 7 -> 4, proper, irreducible 4 + the non-dynamic input state's contribution
+        let m = minimal_descriptor(&desc).unwrap();
+        assert!(m.verified, "v = {v}");
+        assert_eq!(
+            (m.order, m.finite_order, m.infinite_order),
+            (4, 4, 0),
+            "v = {v}"
+        );
+        assert_eq!(m.polynomial_degree, 0);
+        assert_eq!(m.irreducible_order, 4);
+        assert!(same_transfer(&desc, &m.system));
+    }
+}
+
+fn desc(e: Matrix<Q>, a: Matrix<Q>, b: Matrix<Q>, c: Matrix<Q>, d: Matrix<Q>) -> Descriptor<Q> {
+    Descriptor::new(e, a, b, c, d).unwrap()
+}
+
+#[test]
+fn improper_examples() {
+    // G(s) = s: E = [[0, 1], [0, 0]], A = I; least order 2 (one pole at infinity of order 1)
+    let s = desc(
+        qmat![[0, 1], [0, 0]],
+        qmat![[1, 0], [0, 1]],
+        qmat![[0], [-1]],
+        qmat![[1, 0]],
+        qmat![[0]],
+    );
+    let m = minimal_descriptor(&s).unwrap();
+    assert!(m.verified);
+    assert_eq!((m.order, m.polynomial_degree), (2, 1));
+    let split = weierstrass_split(&s).unwrap();
+    assert_eq!(split.polynomial_part()[1], qmat![[1]]);
+    // the same with a redundant non-dynamic mode and an unobservable finite mode: 4 -> 2
+    let s2 = desc(
+        qmat![[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]],
+        qmat![[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -3]],
+        qmat![[0], [-1], [1], [1]],
+        qmat![[1, 0, 1, 0]],
+        qmat![[0]],
+    );
+    let m2 = minimal_descriptor(&s2).unwrap();
+    assert!(m2.verified);
+    assert_eq!(m2.order, 2);
+    // G = s - 1: the non-dynamic mode is not controllable at infinity beside the chain
+    // (rank [E, B] = 3 < 4), so the irreducible order is 2 as well
+    assert_eq!(m2.irreducible_order, 2);
+    assert!(!same_transfer(&s, &m2.system));
+    assert_eq!(m2.system.d, qmat![[-1]]);
+    // a lone non-dynamic mode, G = -1: irreducible keeps it (order 1), minimal drops it
+    let s1 = desc(qmat![[0]], qmat![[1]], qmat![[1]], qmat![[1]], qmat![[0]]);
+    let m1 = minimal_descriptor(&s1).unwrap();
+    assert!(m1.verified);
+    assert_eq!((m1.order, m1.irreducible_order), (0, 1));
+    assert_eq!(m1.system.d, qmat![[-1]]);
+    // G(s) = s^2 + 1/(s + 1): orders 3 (infinite) + 1 (finite)
+    let s3 = desc(
+        qmat![[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 0], [0, 0, 0, 1]],
+        qmat![[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -1]],
+        qmat![[0], [0], [1], [1]],
+        qmat![[1, 0, 0, 1]],
+        qmat![[0]],
+    );
+    let m3 = minimal_descriptor(&s3).unwrap();
+    assert!(m3.verified);
+    assert_eq!(
+        (
+            m3.order,
+            m3.finite_order,
+            m3.infinite_order,
+            m3.polynomial_degree
+        ),
+        (4, 1, 3, 2)
+    );
+    // the transfer matrix check is not vacuous: a different system differs
+    assert!(!same_transfer(&s, &s3));
+}
+
+#[test]
+fn singular_pencil_is_refused() {
+    let z = Matrix::zeros(Q, 2, 2);
+    let s = desc(z.clone(), z, qmat![[1], [0]], qmat![[1, 0]], qmat![[0]]);
+    assert!(minimal_descriptor(&s).is_err());
+}
