@@ -21,6 +21,7 @@
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
 mod controllability;
+mod ctrb_structure;
 mod descriptor;
 mod descriptor_minimal;
 mod gramian;
@@ -35,6 +36,10 @@ mod weierstrass;
 pub use controllability::{
     controllability_matrix, hankel_matrix, is_controllable, is_observable, mcmillan_degree,
     observability_matrix, pbh_controllable, pbh_observable, row_compression,
+};
+pub use ctrb_structure::{
+    ControllabilityStructure, DescriptorControllability, controllability_structure,
+    descriptor_controllability, observability_structure,
 };
 pub use descriptor::{StandardForm, descriptor_to_standard};
 pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};

@@ -163,3 +163,42 @@ pub fn unimodular(n: usize, ops: usize, rng: &mut PencilRng) -> Matrix<Q> {
     }
     t
 }
+
+/// A planted (A, B): Brunovsky chains of lengths `kappa` with random integer state
+/// feedback, an uncontrollable block `a_u` coupled into the controllable part, scrambled by
+/// a unimodular similarity: `(T A T^-1, T B)`. Returns (A, B).
+pub fn planted_ctrb(
+    kappa: &[usize],
+    a_u: &Matrix<Q>,
+    seed: u64,
+    ops: usize,
+) -> (Matrix<Q>, Matrix<Q>) {
+    let mut rng = PencilRng(seed);
+    let nc: usize = kappa.iter().sum();
+    let nu = a_u.nrows();
+    let n = nc + nu;
+    let m = kappa.len();
+    let mut a = Matrix::zeros(Q, n, n);
+    let mut b = Matrix::zeros(Q, n, m);
+    let mut off = 0;
+    for (j, &k) in kappa.iter().enumerate() {
+        for i in 0..k.saturating_sub(1) {
+            a.set(off + i, off + i + 1, q(1));
+        }
+        if k > 0 {
+            b.set(off + k - 1, j, q(1));
+            // feedback row: the last state of the chain gets random dependence
+            for c in 0..n {
+                if c < nc || rng.int(0, 1) == 0 {
+                    let v = a.get(off + k - 1, c) + &q(rng.int(-2, 2));
+                    a.set(off + k - 1, c, v);
+                }
+            }
+        }
+        off += k;
+    }
+    a.set_block(nc, nc, a_u);
+    let t = unimodular(n, ops, &mut rng);
+    let ti = t.inverse().unwrap();
+    (&(&t * &a) * &ti, &t * &b)
+}
