@@ -29,6 +29,7 @@ pub mod expr;
 pub mod matlab;
 mod raw;
 pub mod system_file;
+pub mod transfer_expr;
 
 pub use expr::{ExprError, eval_expr};
 pub use matlab::{parse_matlab_matrix, split_matlab_matrix};

@@ -24,6 +24,7 @@ mod controllability;
 mod ctrb_structure;
 mod descriptor;
 mod descriptor_minimal;
+mod from_transfer;
 mod gramian;
 mod ho_kalman;
 mod jordan_method;
@@ -43,6 +44,7 @@ pub use ctrb_structure::{
 };
 pub use descriptor::{StandardForm, descriptor_to_standard};
 pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
+pub use from_transfer::{TransferRealization, realize_transfer};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan};
@@ -50,4 +52,6 @@ pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use minimal::{MinimalRealization, MinrealMethod, minimal, minimal_kalman};
 pub use modal::{ModalTable, Mode, modal_table};
 pub use rosenbrock::minimal_rosenbrock;
-pub use weierstrass::{WeierstrassSplit, eval_transfer, same_transfer, weierstrass_split};
+pub use weierstrass::{
+    WeierstrassSplit, descriptor_transfer_matrix, eval_transfer, same_transfer, weierstrass_split,
+};

@@ -125,3 +125,35 @@ pub fn same_transfer<K: Field>(s1: &Descriptor<K>, s2: &Descriptor<K>) -> bool {
     }
     agree >= need
 }
+
+/// The exact transfer matrix of a regular descriptor system (improper included):
+/// $C_f(sI - A_f)^{-1}B_f$ plus the polynomial part, each entry in lowest terms.
+///
+/// # Errors
+/// `Invalid` for a singular pencil.
+pub fn descriptor_transfer_matrix<K: Field>(
+    sys: &Descriptor<K>,
+) -> Result<crate::system::transfer::TransferMatrix<K>> {
+    use crate::poly::Poly;
+    use crate::system::transfer::RationalFunction;
+    let split = weierstrass_split(sys)?;
+    let fin = split.finite.transfer_matrix()?;
+    let poly = split.polynomial_part();
+    let fld = sys.a.field().clone();
+    let entries = fin
+        .entries
+        .iter()
+        .enumerate()
+        .map(|(i, row)| {
+            row.iter()
+                .enumerate()
+                .map(|(j, f)| {
+                    let cs: Vec<K::Elem> = poly.iter().map(|pk| pk.get(i, j).clone()).collect();
+                    let pp = Poly::new(fld.clone(), cs);
+                    RationalFunction::new(f.num.add(&pp.mul(&f.den)), f.den.clone())
+                })
+                .collect()
+        })
+        .collect();
+    Ok(crate::system::transfer::TransferMatrix { entries })
+}
