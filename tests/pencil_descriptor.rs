@@ -160,3 +160,49 @@ fn singular_pencil_is_refused() {
     let s = desc(z.clone(), z, qmat![[1], [0]], qmat![[1, 0]], qmat![[0]]);
     assert!(minimal_descriptor(&s).is_err());
 }
+
+#[test]
+fn descriptor_zeros_agree_with_rosenbrock_zeros() {
+    use exactlti::structure::descriptor_zeros::descriptor_zeros;
+    use exactlti::structure::zeros::invariant_zeros;
+    let mut rng = common::Rng(5);
+    for _ in 0..common::iters(6) {
+        let n = rng.int(1, 4) as usize;
+        let (m, p) = (rng.int(1, 2) as usize, rng.int(1, 2) as usize);
+        let a = common::random_matrix(&Q, &None, n, n, &mut rng);
+        let b = common::random_matrix(&Q, &None, n, m, &mut rng);
+        let c = common::random_matrix(&Q, &None, p, n, &mut rng);
+        let d = common::random_matrix(&Q, &None, p, m, &mut rng);
+        let z0 = invariant_zeros(&a, &b, &c, &d).unwrap();
+        let sys = Descriptor::new(Matrix::identity(Q, n), a, b, c, d).unwrap();
+        let z = descriptor_zeros(&sys).unwrap();
+        assert!(z.pencil.verified);
+        assert_eq!(z.polynomial, z0.polynomial, "{sys:?}");
+        assert_eq!(z.pencil.normal_rank, z0.normal_rank, "{sys:?}");
+    }
+    // bicycle: the zeros of the descriptor model equal those of its standard form
+    let desc = bicycle_descriptor("2");
+    let sf = exactlti::realization::descriptor_to_standard(&desc)
+        .unwrap()
+        .system;
+    let z0 = invariant_zeros(&sf.a, &sf.b, &sf.c, &sf.d).unwrap();
+    let z = descriptor_zeros(&desc).unwrap();
+    assert!(z.pencil.verified);
+    assert_eq!(z.polynomial, z0.polynomial);
+    // improper G = s: the finite zero 0, no infinite zero (s has a pole at infinity)
+    let s = desc_s();
+    let z = descriptor_zeros(&s).unwrap();
+    assert_eq!(z.polynomial.to_string(), "x");
+    assert!(z.infinite_zero_orders.is_empty());
+}
+
+fn desc_s() -> Descriptor<Q> {
+    Descriptor::new(
+        qmat![[0, 1], [0, 0]],
+        qmat![[1, 0], [0, 1]],
+        qmat![[0], [-1]],
+        qmat![[1, 0]],
+        qmat![[0]],
+    )
+    .unwrap()
+}
