@@ -9,6 +9,7 @@
 mod commands;
 mod float_cmds;
 mod load;
+pub mod pencil_cmds;
 
 use crate::error::Error;
 use crate::report::Report;

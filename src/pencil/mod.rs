@@ -155,8 +155,24 @@ pub struct PencilStructure {
     pub finite: JordanForm,
     /// The structure checks, the Jordan identities of the finite part, and the Toeplitz
     /// ranks $\dim\ker T_k(\theta)$ of the pencil itself at every finite eigenvalue
-    /// $\theta$ (computed in $\mathbb{Q}(\theta)$) held exactly.
+    /// $\theta$ (for an irrational $\theta$ through $A \otimes I - E \otimes C_f$ over
+    /// $\mathbb{Q}$, $C_f$ the companion matrix of its minimal polynomial) held exactly.
     pub verified: bool,
+}
+
+/// Companion matrix of a monic-izable polynomial (last row $-f_0, \dots, -f_{d-1}$).
+fn companion(f: &crate::poly::Poly<Q>) -> Matrix<Q> {
+    let d = f.deg();
+    let lc = f.lc();
+    Matrix::from_fn(Q, d, d, |i, j| {
+        if i + 1 == d {
+            -(f.coeff(j) / &lc)
+        } else if j == i + 1 {
+            Rational::from_integer(1.into())
+        } else {
+            Rational::from_integer(0.into())
+        }
+    })
 }
 
 /// Kronecker structure of a rational pencil, finite eigenvalues included.
@@ -177,10 +193,21 @@ pub fn pencil_structure(a: &Matrix<Q>, e: &Matrix<Q>) -> Result<PencilStructure>
             let p0 = a - &e.scale(&theta);
             verify::check_local(&p0, &-e, defect, &comp.blocks)
         } else {
-            let k = &comp.field;
-            let (ak, ek) = (a.convert_to(k), e.convert_to(k));
-            let p0 = &ak - &ek.scale(&k.generator());
-            verify::check_local(&p0, &-&ek, defect, &comp.blocks)
+            // the pencil at the companion matrix C_f of the factor f (degree d):
+            // A (x) I_d - E (x) C_f is similar over the splitting field to the direct sum of
+            // A - theta_j E over the d conjugate roots, which share one local structure, so
+            // every kernel dimension is d times that at theta (exact, over Q).
+            let d = comp.factor.deg();
+            let cf = companion(&comp.factor);
+            let id = Matrix::identity(Q, d);
+            let p0 = &a.kron(&id) - &e.kron(&cf);
+            let p1 = -&e.kron(&id);
+            let blocks: Vec<usize> = comp
+                .blocks
+                .iter()
+                .flat_map(|&b| std::iter::repeat_n(b, d))
+                .collect();
+            verify::check_local(&p0, &p1, d * defect, &blocks)
         };
     }
     Ok(PencilStructure {
