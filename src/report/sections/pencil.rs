@@ -245,7 +245,7 @@ pub fn descriptor_zeros_report<K: Field>(z: &DescriptorZeros<K>) -> Result<Repor
         Some(cs) => r.list("invariant_zeros", root_items(&Poly::new(Q, cs))?),
         None => r.list(
             "invariant_zeros",
-            crate::structure::scb::zero_items(&z.polynomial),
+            super::structure::zero_items(&z.polynomial),
         ),
     };
     Ok(r.str("zero_polynomial", z.polynomial.to_string_var("s"))
