@@ -28,6 +28,7 @@
 
 pub mod expr;
 pub mod load;
+pub mod load_descriptor;
 pub mod matlab;
 pub mod qmat;
 mod raw;

@@ -1,0 +1,192 @@
+//! Loading for the descriptor-level commands (`pencil`, `ctrb`, `obsv`, `tf`,
+//! `minreal --descriptor`, `zeros` with `E`): a system file as a descriptor system, improper
+//! or not (the standard-form typing of [`super::load`] refuses improper ones), or a transfer
+//! matrix given under the key `G` (rational functions in `s` over $\mathbb{Q}$, parameters
+//! allowed), realized exactly and minimally.
+//!
+//! | entry point | does |
+//! |---|---|
+//! | [`load_descriptor_path`] | a file → [`LoadedDescriptor`] |
+//! | [`LoadedDescriptor::run`] | calls a [`DescriptorVisitor`] over the concrete field |
+
+use super::{FromScalars, Ground, InputError, SystemFile, read_system_file};
+use crate::field::{Field, Q, QuadraticField, Rational};
+use crate::io::transfer_expr::parse_rational_function;
+use crate::matrix::Matrix;
+use crate::realization::{TransferRealization, realize_transfer};
+use crate::system::Descriptor;
+use crate::system::transfer::TransferMatrix;
+use std::path::Path;
+
+/// A descriptor system over one of the ground fields.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub enum DescriptorAny {
+    Rational(Descriptor<Q>),
+    Quadratic(Descriptor<QuadraticField>),
+}
+
+/// A loaded descriptor system; `transfer` when the file gave `G`.
+#[derive(Clone, Debug)]
+pub struct LoadedDescriptor {
+    pub path: String,
+    pub system: DescriptorAny,
+    /// Whether the file gave `E` (a descriptor system) rather than $E = I$.
+    pub has_e: bool,
+    /// The transfer matrix and its minimal realization, for a `G` file.
+    pub transfer: Option<(TransferMatrix<Q>, TransferRealization<Q>)>,
+}
+
+/// Work on a loaded descriptor system, generic over the field.
+pub trait DescriptorVisitor {
+    type Output;
+    fn visit<K: Field + 'static>(
+        self,
+        loaded: &LoadedDescriptor,
+        sys: &Descriptor<K>,
+    ) -> Self::Output;
+}
+
+impl LoadedDescriptor {
+    pub fn run<V: DescriptorVisitor>(&self, v: V) -> V::Output {
+        match &self.system {
+            DescriptorAny::Rational(s) => v.visit(self, s),
+            DescriptorAny::Quadratic(s) => v.visit(self, s),
+        }
+    }
+}
+
+fn descriptor_of<K: FromScalars>(f: &SystemFile, k: &K) -> Result<Descriptor<K>, InputError> {
+    let fail = |e: crate::Error| InputError::file(&f.path, e.to_string());
+    let get = |m: &Option<super::MatrixEntries>| m.as_ref().map(|m| k.matrix_from_entries(m));
+    if let (Some(a), Some(b), Some(c), Some(d)) = (get(&f.a), get(&f.b), get(&f.c), get(&f.d)) {
+        let e = get(&f.e).unwrap_or_else(|| Matrix::identity(k.clone(), a.nrows()));
+        return Descriptor::new(e, a, b, c, d).map_err(fail);
+    }
+    let (m, l, kk, ff) = (get(&f.m), get(&f.l), get(&f.k), get(&f.f));
+    let (Some(m), Some(l), Some(kk), Some(ff)) = (m, l, kk, ff) else {
+        return Err(InputError::file(
+            &f.path,
+            "the file gives neither A nor M, L, K, F",
+        ));
+    };
+    let ss = crate::system::StateSpace::from_second_order(
+        &m,
+        &l,
+        &kk,
+        &ff,
+        get(&f.c).as_ref(),
+        get(&f.d).as_ref(),
+    )
+    .map_err(fail)?;
+    let n = ss.nstates();
+    Descriptor::new(Matrix::identity(k.clone(), n), ss.a, ss.b, ss.c, ss.d).map_err(fail)
+}
+
+/// Reads a system file or a `G` file as a descriptor system.
+///
+/// # Errors
+/// An unreadable or invalid file (one line naming file, key, row and column), a `G` entry
+/// that does not parse, a transfer matrix that cannot be realized.
+pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError::file(&name, format!("cannot read: {e}")))?;
+    let is_toml = path.extension().is_some_and(|x| x == "toml");
+    let json: Option<serde_json::Value> = if is_toml {
+        toml::from_str::<toml::Value>(&text)
+            .ok()
+            .and_then(|v| serde_json::to_value(v).ok())
+    } else {
+        serde_json::from_str(&text).ok()
+    };
+    if let Some(g) = json.as_ref().and_then(|v| v.get("G")) {
+        return load_g(&name, g, json.as_ref().and_then(|v| v.get("parameters")));
+    }
+    let f = read_system_file(path)?;
+    let has_e = f.e.is_some();
+    let system = match &f.ground {
+        Ground::Rational => DescriptorAny::Rational(descriptor_of(&f, &Q)?),
+        Ground::Quadratic(k) => DescriptorAny::Quadratic(descriptor_of(&f, k)?),
+    };
+    Ok(LoadedDescriptor {
+        path: name,
+        system,
+        has_e,
+        transfer: None,
+    })
+}
+
+fn scalar_text(v: &serde_json::Value) -> Option<String> {
+    match v {
+        serde_json::Value::String(s) => Some(s.clone()),
+        serde_json::Value::Number(n) => Some(n.to_string()),
+        _ => None,
+    }
+}
+
+fn load_g(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+) -> Result<LoadedDescriptor, InputError> {
+    let mut values: Vec<(String, Rational)> = Vec::new();
+    if let Some(serde_json::Value::Object(ps)) = params {
+        for (k, v) in ps {
+            let text = scalar_text(v).ok_or_else(|| {
+                InputError::key(
+                    name,
+                    "parameters",
+                    format!("{k}: expected a number or a string"),
+                )
+            })?;
+            let f = parse_rational_function(&text, &values)
+                .map_err(|e| InputError::key(name, "parameters", format!("{k}: {e}")))?;
+            if f.num.deg() > 0 || f.den.deg() > 0 {
+                return Err(InputError::key(
+                    name,
+                    "parameters",
+                    format!("{k}: must be a constant"),
+                ));
+            }
+            values.push((k.clone(), f.num.coeff(0) / f.den.coeff(0)));
+        }
+    }
+    let rows = g
+        .as_array()
+        .ok_or_else(|| InputError::key(name, "G", "expected a list of rows"))?;
+    let mut entries = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let row = row
+            .as_array()
+            .ok_or_else(|| InputError::key(name, "G", format!("row {} is not a list", i + 1)))?;
+        let mut out = Vec::new();
+        for (j, x) in row.iter().enumerate() {
+            let text = scalar_text(x).ok_or_else(|| {
+                InputError::entry(name, "G", i + 1, j + 1, "expected a number or a string")
+            })?;
+            out.push(
+                parse_rational_function(&text, &values)
+                    .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
+            );
+        }
+        entries.push(out);
+    }
+    let ncols = entries.first().map_or(0, |r| r.len());
+    if entries.is_empty() || ncols == 0 || entries.iter().any(|r| r.len() != ncols) {
+        return Err(InputError::key(
+            name,
+            "G",
+            "rows must be non-empty and of equal length",
+        ));
+    }
+    let tm = TransferMatrix { entries };
+    let r = realize_transfer(&tm).map_err(|e| InputError::key(name, "G", e.to_string()))?;
+    let has_e = r.minimal.infinite_order > 0;
+    Ok(LoadedDescriptor {
+        path: name.to_string(),
+        system: DescriptorAny::Rational(r.minimal.system.clone()),
+        has_e,
+        transfer: Some((tm, r)),
+    })
+}
