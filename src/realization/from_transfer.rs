@@ -66,18 +66,21 @@ pub fn realize_transfer<K: Field>(g: &TransferMatrix<K>) -> Result<TransferReali
     })
 }
 
+/// One entry's block: (E, A, b column, c row, input j, output i).
+type Block<K> = (
+    Matrix<K>,
+    Matrix<K>,
+    Vec<<K as Field>::Elem>,
+    Vec<<K as Field>::Elem>,
+    usize,
+    usize,
+);
+
 /// The non-minimal stacked realization of every entry.
 fn stacked<K: Field>(g: &TransferMatrix<K>, fld: &K, p: usize, m: usize) -> Result<Descriptor<K>> {
     let mut d = Matrix::zeros(fld.clone(), p, m);
     // per block: (E, A, b column, c row, input j, output i)
-    let mut blocks: Vec<(
-        Matrix<K>,
-        Matrix<K>,
-        Vec<K::Elem>,
-        Vec<K::Elem>,
-        usize,
-        usize,
-    )> = Vec::new();
+    let mut blocks: Vec<Block<K>> = Vec::new();
     for (i, row) in g.entries.iter().enumerate() {
         for (j, f) in row.iter().enumerate() {
             if f.den.is_zero() {
