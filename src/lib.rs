@@ -59,6 +59,7 @@ pub mod jordan;
 pub mod matrix;
 pub mod pencil;
 pub mod poly;
+pub mod qkernels;
 pub mod realization;
 pub mod report;
 pub mod structure;

@@ -29,6 +29,7 @@ mod gramian;
 mod ho_kalman;
 mod jordan_method;
 mod kalman;
+mod method;
 mod minimal;
 mod modal;
 mod rosenbrock;
@@ -49,7 +50,8 @@ pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
-pub use minimal::{MinimalRealization, MinrealMethod, minimal, minimal_kalman};
+pub use method::minimal;
+pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
 pub use modal::{ModalTable, Mode, modal_table};
 pub use rosenbrock::minimal_rosenbrock;
 pub use weierstrass::{
