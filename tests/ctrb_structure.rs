@@ -1,9 +1,8 @@
 //! Controllability / observability structure: planted Brunovsky structures with an
 //! uncontrollable part scrambled by unimodular similarities, a naive Krylov-rank oracle,
 //! and descriptor (finite / infinite) counts.
-mod common;
 
-use common::pencils::{PencilRng, planted_ctrb};
+use crate::common::pencils::{PencilRng, planted_ctrb};
 use exactlti::field::Q;
 use exactlti::matrix::Matrix;
 use exactlti::qmat;
@@ -32,7 +31,7 @@ fn krylov_ranks(a: &Matrix<Q>, b: &Matrix<Q>) -> Vec<usize> {
 #[test]
 fn ctrb_planted_properties() {
     let mut rng = PencilRng(99);
-    for it in 0..common::iters(10) {
+    for it in 0..crate::common::iters(10) {
         let m = rng.int(1, 3) as usize;
         let mut kappa: Vec<usize> = (0..m).map(|_| rng.int(0, 4) as usize).collect();
         let nu = rng.int(0, 3) as usize;

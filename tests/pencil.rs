@@ -1,8 +1,7 @@
 //! Kronecker structure of pencils: planted structures scrambled by unimodular
 //! transformations (the structure is known by construction), small textbook cases.
-mod common;
 
-use common::pencils::{PencilRng, Planted};
+use crate::common::pencils::{PencilRng, Planted};
 use exactlti::field::Q;
 use exactlti::matrix::Matrix;
 use exactlti::pencil::{kronecker_structure, pencil_structure};
@@ -56,7 +55,7 @@ fn check_planted(p: &Planted, seed: u64) {
 #[test]
 fn pencil_planted_properties() {
     let mut rng = PencilRng(20261122);
-    for it in 0..common::iters(12) {
+    for it in 0..crate::common::iters(12) {
         let p = Planted::random(&mut rng, 4 + it % 10);
         check_planted(&p, 1000 + it as u64);
     }

@@ -1,69 +1,14 @@
 //! Descriptor systems: minimal and irreducible descriptor realizations (improper systems
 //! included), the bicycle of the minimal-realizations paper (sec. 4.2) through `pencil` and
 //! `minreal --descriptor`, and textbook improper examples.
-mod common;
-use exactlti::field::{Field, Q, Rational, parse_rational};
+use exactlti::field::Q;
 use exactlti::matrix::Matrix;
 use exactlti::pencil::pencil_structure;
 use exactlti::qmat;
 use exactlti::realization::{minimal_descriptor, same_transfer, weierstrass_split};
 use exactlti::system::Descriptor;
 
-// The bicycle builder as in tests/bicycle.rs (kept self-contained).
-fn data() -> serde_json::Value {
-    serde_json::from_str(include_str!("../data/bicycle-benchmark.json")).unwrap()
-}
-
-fn mat2(v: &serde_json::Value) -> Matrix<Q> {
-    Matrix::from_fn(Q, 2, 2, |i, j| {
-        parse_rational(v[i][j].as_str().unwrap()).unwrap()
-    })
-}
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
-
-/// States: roll, steer, roll rate, steer rate, yaw, lateral position, steer torque (the input
-/// appended as a state, E row zero: 0 = -x7 + u).
-fn bicycle_descriptor(v: &str) -> Descriptor<Q> {
-    let d = data();
-    let (m, c1, k0, k2) = (
-        mat2(&d["M"]),
-        mat2(&d["C1"]),
-        mat2(&d["K0"]),
-        mat2(&d["K2"]),
-    );
-    let g = q(d["g"].as_str().unwrap());
-    let v = q(v);
-    let kin = &d["kinematics"];
-    let (w, c, cl) = (
-        q(kin["w"].as_str().unwrap()),
-        q(kin["c"].as_str().unwrap()),
-        q(kin["cos_lambda"].as_str().unwrap()),
-    );
-    let stiff = &k0.scale(&g) + &k2.scale(&(&v * &v));
-    let damp = c1.scale(&v);
-    let mut e = Matrix::identity(Q, 7);
-    e.set_block(2, 2, &m);
-    e.set(6, 6, Q.zero());
-    let mut a = Matrix::zeros(Q, 7, 7);
-    a.set(0, 2, Q.one());
-    a.set(1, 3, Q.one());
-    a.set_block(2, 0, &-&stiff);
-    a.set_block(2, 2, &-&damp);
-    a.set(3, 6, Q.one()); // steer torque acts on the steer equation
-    a.set(4, 1, &v * &cl / &w); // yaw rate = (v delta + c delta') cos(lambda) / w
-    a.set(4, 3, &c * &cl / &w);
-    a.set(5, 4, v.clone()); // lateral velocity = v psi
-    a.set(6, 6, -Q.one());
-    let mut b = Matrix::zeros(Q, 7, 1);
-    b.set(6, 0, Q.one());
-    let mut cm = Matrix::zeros(Q, 2, 7);
-    cm.set(0, 0, Q.one());
-    cm.set(1, 1, Q.one());
-    Descriptor::new(e, a, b, cm, Matrix::zeros(Q, 2, 1)).unwrap()
-}
+use crate::bicycle::bicycle_descriptor;
 
 #[test]
 fn bicycle_pencil_and_minimal_descriptor() {
@@ -165,14 +110,14 @@ fn singular_pencil_is_refused() {
 fn descriptor_zeros_agree_with_rosenbrock_zeros() {
     use exactlti::structure::descriptor_zeros::descriptor_zeros;
     use exactlti::structure::zeros::invariant_zeros;
-    let mut rng = common::Rng(5);
-    for _ in 0..common::iters(6) {
+    let mut rng = crate::common::Rng(5);
+    for _ in 0..crate::common::iters(6) {
         let n = rng.int(1, 4) as usize;
         let (m, p) = (rng.int(1, 2) as usize, rng.int(1, 2) as usize);
-        let a = common::random_matrix(&Q, &None, n, n, &mut rng);
-        let b = common::random_matrix(&Q, &None, n, m, &mut rng);
-        let c = common::random_matrix(&Q, &None, p, n, &mut rng);
-        let d = common::random_matrix(&Q, &None, p, m, &mut rng);
+        let a = crate::common::random_matrix(&Q, &None, n, n, &mut rng);
+        let b = crate::common::random_matrix(&Q, &None, n, m, &mut rng);
+        let c = crate::common::random_matrix(&Q, &None, p, n, &mut rng);
+        let d = crate::common::random_matrix(&Q, &None, p, m, &mut rng);
         let z0 = invariant_zeros(&a, &b, &c, &d).unwrap();
         let sys = Descriptor::new(Matrix::identity(Q, n), a, b, c, d).unwrap();
         let z = descriptor_zeros(&sys).unwrap();
