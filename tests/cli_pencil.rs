@@ -83,3 +83,18 @@ fn cli_tf_from_g() {
     assert_eq!(code, 2);
     assert!(err.contains("key G, row 1, column 2"), "{err}");
 }
+
+#[test]
+fn cli_pencil_rectangular() {
+    let (code, v, err) = run(&["pencil", "tests/data/pencil_rect.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["normal_rank"], 3);
+    assert_eq!(v["regular"], false);
+    assert_eq!(v["right_kronecker_indices"], serde_json::json!([1]));
+    assert_eq!(v["infinite_elementary_divisors"], serde_json::json!([1]));
+    assert_eq!(v["finite_eigenvalues"][0]["value"], "2");
+    assert_eq!(v["verified"], true);
+    let (code, _, err) = run(&["ctrb", "tests/data/pencil_rect.json"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("must be square"), "{err}");
+}

@@ -50,6 +50,19 @@ fn file_has_key(path: &Path, key: &str) -> bool {
 /// Runs one of the commands of [`handles`].
 pub fn execute(cmd: &Command, path: &Path) -> Result<Outcome, Failure> {
     let l = load_descriptor_path(path)?;
+    if let Some((a, e)) = &l.pencil {
+        if !matches!(cmd, Command::Pencil { .. }) {
+            return Err(Failure {
+                code: 2,
+                message: format!(
+                    "{}: key A: must be square (a rectangular A is a pencil: use `exactlti pencil`)",
+                    path.display()
+                ),
+            });
+        }
+        let ps = pencil_structure(a, e).map_err(|err| with_path(path, err))?;
+        return Ok(Outcome::new(sections::pencil_report(&ps), ps.verified));
+    }
     l.run(Run { cmd, path })
 }
 

@@ -35,6 +35,9 @@ pub struct LoadedDescriptor {
     pub has_e: bool,
     /// The transfer matrix and its minimal realization, for a `G` file.
     pub transfer: Option<(TransferMatrix<Q>, TransferRealization<Q>)>,
+    /// A rectangular pencil `(A, E)` (a file with only `A`, `E` and a non-square `A`, over
+    /// $\mathbb{Q}$): only `pencil` accepts it; `system` is then empty.
+    pub pencil: Option<(Matrix<Q>, Matrix<Q>)>,
 }
 
 /// Work on a loaded descriptor system, generic over the field.
@@ -103,6 +106,11 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
     if let Some(g) = json.as_ref().and_then(|v| v.get("G")) {
         return load_g(&name, g, json.as_ref().and_then(|v| v.get("parameters")));
     }
+    if let Some(v) = json.as_ref()
+        && let Some(l) = rectangular_pencil(&name, v)?
+    {
+        return Ok(l);
+    }
     let f = read_system_file(path)?;
     let has_e = f.e.is_some();
     let system = match &f.ground {
@@ -114,22 +122,15 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
         system,
         has_e,
         transfer: None,
+        pencil: None,
     })
 }
 
-fn scalar_text(v: &serde_json::Value) -> Option<String> {
-    match v {
-        serde_json::Value::String(s) => Some(s.clone()),
-        serde_json::Value::Number(n) => Some(n.to_string()),
-        _ => None,
-    }
-}
-
-fn load_g(
+/// Parameters of a `G` or pencil file, evaluated in order as rational constants.
+fn eval_params(
     name: &str,
-    g: &serde_json::Value,
     params: Option<&serde_json::Value>,
-) -> Result<LoadedDescriptor, InputError> {
+) -> Result<Vec<(String, Rational)>, InputError> {
     let mut values: Vec<(String, Rational)> = Vec::new();
     if let Some(serde_json::Value::Object(ps)) = params {
         for (k, v) in ps {
@@ -152,6 +153,106 @@ fn load_g(
             values.push((k.clone(), f.num.coeff(0) / f.den.coeff(0)));
         }
     }
+    Ok(values)
+}
+
+/// A rational matrix from a JSON key (constant entries).
+fn rational_matrix(
+    name: &str,
+    key: &str,
+    v: &serde_json::Value,
+    params: &[(String, Rational)],
+) -> Result<Matrix<Q>, InputError> {
+    let rows = v
+        .as_array()
+        .ok_or_else(|| InputError::key(name, key, "expected a list of rows"))?;
+    let mut out = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let row = row
+            .as_array()
+            .ok_or_else(|| InputError::key(name, key, format!("row {} is not a list", i + 1)))?;
+        let mut r = Vec::new();
+        for (j, x) in row.iter().enumerate() {
+            let bad = |m: String| InputError::entry(name, key, i + 1, j + 1, m);
+            let text = scalar_text(x).ok_or_else(|| bad("expected a number or a string".into()))?;
+            let f = parse_rational_function(&text, params).map_err(|e| bad(e.to_string()))?;
+            if f.num.deg() > 0 || f.den.deg() > 0 {
+                return Err(bad("must be a constant (s is not allowed here)".into()));
+            }
+            r.push(f.num.coeff(0) / f.den.coeff(0));
+        }
+        out.push(r);
+    }
+    Matrix::from_rows(Q, out).map_err(|e| InputError::key(name, key, e.to_string()))
+}
+
+/// A file with only `A` (non-square) and optionally `E`: a rectangular pencil.
+fn rectangular_pencil(
+    name: &str,
+    v: &serde_json::Value,
+) -> Result<Option<LoadedDescriptor>, InputError> {
+    let Some(obj) = v.as_object() else {
+        return Ok(None);
+    };
+    let Some(a) = obj.get("A") else {
+        return Ok(None);
+    };
+    let square = a.as_array().is_some_and(|rows| {
+        rows.iter()
+            .all(|r| r.as_array().is_some_and(|r| r.len() == rows.len()))
+    });
+    if square
+        || ["B", "C", "D", "M", "L", "K", "F"]
+            .iter()
+            .any(|k| obj.contains_key(*k))
+    {
+        return Ok(None);
+    }
+    let params = eval_params(name, obj.get("parameters"))?;
+    let a = rational_matrix(name, "A", a, &params)?;
+    let e = match obj.get("E") {
+        Some(e) => rational_matrix(name, "E", e, &params)?,
+        None => {
+            return Err(InputError::key(
+                name,
+                "E",
+                "a non-square A needs E of the same shape",
+            ));
+        }
+    };
+    if e.shape() != a.shape() {
+        return Err(InputError::key(
+            name,
+            "E",
+            format!("must be {}x{} like A", a.nrows(), a.ncols()),
+        ));
+    }
+    let z = |r, c| Matrix::zeros(Q, r, c);
+    Ok(Some(LoadedDescriptor {
+        path: name.to_string(),
+        system: DescriptorAny::Rational(
+            Descriptor::new(z(0, 0), z(0, 0), z(0, 0), z(0, 0), z(0, 0)).expect("empty system"),
+        ),
+        has_e: true,
+        transfer: None,
+        pencil: Some((a, e)),
+    }))
+}
+
+fn scalar_text(v: &serde_json::Value) -> Option<String> {
+    match v {
+        serde_json::Value::String(s) => Some(s.clone()),
+        serde_json::Value::Number(n) => Some(n.to_string()),
+        _ => None,
+    }
+}
+
+fn load_g(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+) -> Result<LoadedDescriptor, InputError> {
+    let values = eval_params(name, params)?;
     let rows = g
         .as_array()
         .ok_or_else(|| InputError::key(name, "G", "expected a list of rows"))?;
@@ -188,5 +289,6 @@ fn load_g(
         system: DescriptorAny::Rational(r.minimal.system.clone()),
         has_e,
         transfer: Some((tm, r)),
+        pencil: None,
     })
 }
