@@ -58,6 +58,7 @@ pub mod io;
 pub mod jordan;
 pub mod matrix;
 pub mod mpoly;
+pub mod pencil;
 pub mod poly;
 pub mod qkernels;
 pub mod ratfunc;
