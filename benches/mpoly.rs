@@ -192,13 +192,16 @@ fn main() {
     let r: Vec<Vec<String>> = (0..6)
         .map(|_| (0..10).map(|_| linear_entry(&mut rng, &v3)).collect())
         .collect();
+    let cols: Vec<Vec<&String>> = (0..10)
+        .map(|j| r.iter().map(|row| &row[j]).collect())
+        .collect();
     let mut entries = Vec::new();
     for li in &l {
-        for j in 0..10 {
+        for col in &cols {
             let mut s = String::from("0");
             for (t, c) in li.iter().enumerate() {
                 if *c != 0 {
-                    write!(s, " + ({c})*({})", r[t][j]).unwrap();
+                    write!(s, " + ({c})*({})", col[t]).unwrap();
                 }
             }
             entries.push(s);
