@@ -106,13 +106,17 @@ class AlgebraicNumber:
     >>> from exactlti import ss
     >>> p = ss([[0, 1], [-2, 2]]).poles()
     >>> [str(x) for x in p]
-    ['1 + i', '1 - i']
-    >>> p[0].minpoly.coeffs
+    ['1 - i', '1 + i']
+    >>> p[1].minpoly.coeffs
     [Fraction(2, 1), Fraction(-2, 1), Fraction(1, 1)]
-    >>> p[0].to_sympy()
+    >>> p[1].to_sympy()
     1 + I
-    >>> p[0].approx(20)
-    (1.0000000000000000000 + 1.0000000000000000000*I)
+    >>> r = ss([[0, 2], [1, 0]]).poles()[1]
+    >>> r.to_sympy(), r.approx(20)
+    (sqrt(2), 1.4142135623730950488)
+    >>> c = ss([[0, 0, 2], [1, 0, 0], [0, 1, 0]]).poles()[0]
+    >>> c.to_sympy()
+    CRootOf(x**3 - 2, 0)
     """
 
     def __init__(self, data, symbol=None):
@@ -162,10 +166,14 @@ class AlgebraicNumber:
             [_sympy_rational(sympy, a.numerator, a.denominator) for a in reversed(c)], x
         )
         # the root is the one nearest to the certified approximation (roots of an
-        # irreducible polynomial are simple and far apart at double precision)
+        # irreducible polynomial are simple and far apart at double precision); degree 2
+        # in closed form, else CRootOf
+        if poly.degree() == 2:
+            candidates = list(sympy.roots(poly, multiple=True))
+        else:
+            candidates = [sympy.CRootOf(poly, k) for k in range(poly.degree())]
         best, best_d = None, None
-        for k in range(poly.degree()):
-            r = sympy.CRootOf(poly, k)
+        for r in candidates:
             z = complex(r.evalf(30))
             d = abs(z - self._approx)
             if best_d is None or d < best_d:
@@ -276,11 +284,13 @@ class Matrix:
     def __hash__(self):
         return None.__hash__()  # unhashable, like lists
 
-    def to_sympy(self):
+    def to_sympy(self, keep_symbols=False):
         """The exact matrix as a ``sympy.Matrix``.
 
         Non-rational entries are parsed from their exact text with ``i`` as ``I`` and each
-        root symbol ``r<k>`` replaced by its eigenvalue (``CRootOf`` where needed)."""
+        root symbol ``r<k>`` replaced by its eigenvalue (``CRootOf`` where needed), or kept
+        as a SymPy ``Symbol`` with ``keep_symbols=True`` (then ``symbols`` gives each one's
+        minimal polynomial)."""
         sympy = _sympy()
         if self._q is not None:
             Integer, Rational = sympy.Integer, sympy.Rational
@@ -290,7 +300,10 @@ class Matrix:
             return sympy.Matrix(self.nrows, self.ncols, flat)
         names = {"i": sympy.I, "sqrt": sympy.sqrt}
         for name, num in self.symbols.items():
-            names[name] = num.to_sympy() if isinstance(num, AlgebraicNumber) else num
+            if keep_symbols:
+                names[name] = sympy.Symbol(name)
+            else:
+                names[name] = num.to_sympy() if hasattr(num, "to_sympy") else num
         flat = [
             sympy.sympify(s.replace("^", "**"), locals=names) for row in self._exact for s in row
         ]

@@ -317,8 +317,8 @@ def jordan(A, real=False, max_seconds=None, params=None):
     [-2,      0,      0],
     [ 0, -1 + I,      0],
     [ 0,      0, -1 - I]])
-    >>> exactlti.jordan([[1, 1], [0, 1]]).blocks
-    [(1, 2)]
+    >>> [(str(e), size) for e, size in exactlti.jordan([[1, 1], [0, 1]]).blocks]
+    [('1', 2)]
     """
     text = system_json("jordan", {"A": A}, params)
     return JordanResult(_core.load_json(text, "jordan").jordan(real, max_seconds))
@@ -406,11 +406,28 @@ class JordanResult:
         return [(e, b) for e in self.eigenvalues for b in e.blocks]
 
     def check(self):
-        """Re-checks ``A T = T J`` in SymPy (independently of the library)."""
-        A, T, J = self.A.to_sympy(), self.T.to_sympy(), self.J.to_sympy()
+        """Re-checks ``A T = T J`` exactly in SymPy, independently of the library: the
+        entries are polynomials in the root symbols ``r<k>`` (and radicals), reduced
+        modulo each symbol's minimal polynomial."""
         import sympy
 
-        return (A * T - T * J).applyfunc(lambda x: sympy.simplify(x)).is_zero_matrix
+        A = self.A.to_sympy()
+        T = self.T.to_sympy(keep_symbols=True)
+        J = self.J.to_sympy(keep_symbols=True)
+        minpolys = {}
+        for e in self.eigenvalues:
+            if e.symbol:
+                s = sympy.Symbol(e.symbol)
+                minpolys[s] = e.minpoly.to_sympy(s)
+        for x in A * T - T * J:
+            x = sympy.expand(x)
+            for s in x.free_symbols:
+                if s not in minpolys:
+                    return False
+                x = sympy.expand(sympy.rem(x, minpolys[s], s))
+            if x != 0:
+                return False
+        return True
 
     def approx(self, digits=None):
         """``(J, T)`` approximately (numpy, or SymPy with ``digits``)."""
@@ -428,6 +445,25 @@ class JordanResult:
             "Jordan form A T = T J (verified: %s)" % self.verified,
             [("J", self.J), ("T", self.T)],
         )
+
+
+class _TextRoot:
+    """A root given as ``root of POLY near APPROX`` (the library's display)."""
+
+    def __init__(self, text):
+        self.text = text
+
+    def to_sympy(self):
+        import sympy
+
+        if not self.text.startswith("root of ") or " near " not in self.text:
+            return sympy.sympify(self.text.replace("^", "**"), locals={"i": sympy.I})
+        poly_text, near = self.text[len("root of "):].split(" near ", 1)
+        x = sympy.Symbol("x")
+        poly = sympy.Poly(sympy.sympify(poly_text.replace("^", "**"), locals={"x": x}), x)
+        target = complex(sympy.sympify(near.replace("i", "I")))
+        roots = [sympy.CRootOf(poly, k) for k in range(poly.degree())]
+        return min(roots, key=lambda r: abs(complex(r.evalf(30)) - target))
 
 
 class MinrealResult:
@@ -457,7 +493,11 @@ class MinrealResult:
             approx = [[tuple(z) for z in r] for r in approx]
         elif approx:
             approx = [[(float(x), 0.0) for x in r] for r in approx]
-        return Matrix._from_strings(self.report[key], approx)
+        symbols = {}
+        for line in self.report.get("symbols", []):
+            name, _, definition = line.partition(" = ")
+            symbols[name.strip()] = _TextRoot(definition)
+        return Matrix._from_strings(self.report[key], approx, symbols)
 
     @property
     def A(self):
