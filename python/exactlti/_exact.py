@@ -38,6 +38,34 @@ def _sympy_rational(sympy, p, q):
     return sympy.Rational(p, q)
 
 
+def _sympy_matrix_fast(sympy, q_rows, shape):
+    """A ``sympy.Matrix`` built on SymPy's own representation of rational matrices (a
+    sparse ``DomainMatrix`` over ZZ or QQ, as ``sympy.Matrix`` builds for rational
+    entries), so no SymPy ``Rational`` object is created until an entry is read. The pairs
+    are in lowest terms already, so the domain elements are made without a gcd."""
+    from sympy.polys.domains import QQ, ZZ
+    from sympy.polys.matrices import DomainMatrix
+    from sympy.polys.matrices.sdm import SDM
+
+    integral = all(q == 1 for row in q_rows for (_, q) in row)
+    if integral:
+        dom, mk = ZZ, ZZ.dtype
+        rows = {}
+        for i, row in enumerate(q_rows):
+            d = {j: mk(p) for j, (p, _) in enumerate(row) if p}
+            if d:
+                rows[i] = d
+    else:
+        dom = QQ
+        mk = getattr(QQ.dtype, "_new", QQ.dtype)  # PythonMPQ._new skips the gcd
+        rows = {}
+        for i, row in enumerate(q_rows):
+            d = {j: mk(p, q) for j, (p, q) in enumerate(row) if p}
+            if d:
+                rows[i] = d
+    return sympy.Matrix._fromrep(DomainMatrix.from_rep(SDM(rows, shape, dom)))
+
+
 class Polynomial:
     """A polynomial with exact coefficients, lowest degree first.
 
@@ -293,6 +321,10 @@ class Matrix:
         minimal polynomial)."""
         sympy = _sympy()
         if self._q is not None:
+            try:
+                return _sympy_matrix_fast(sympy, self._q, self.shape)
+            except (ImportError, AttributeError, TypeError):  # pragma: no cover
+                pass  # SymPy's internals moved: the public (slower) constructor
             Integer, Rational = sympy.Integer, sympy.Rational
             flat = [
                 Integer(p) if q == 1 else Rational(p, q) for row in self._q for (p, q) in row
