@@ -10,7 +10,7 @@
 
 use exactlti::Error;
 mod compat;
-use compat::{Loaded, Typed, type_file};
+use compat::{Loaded, Typed, from_loaded};
 use exactlti::field::{Field, Q, Rational};
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;
@@ -183,11 +183,17 @@ impl Out {
             Out::Float(x) => x.into_pyobject(py)?.into_any().unbind(),
             Out::Str(s) => s.into_pyobject(py)?.into_any().unbind(),
             Out::List(xs) => {
-                let items = xs.iter().map(|x| x.to_py(py)).collect::<PyResult<Vec<_>>>()?;
+                let items = xs
+                    .iter()
+                    .map(|x| x.to_py(py))
+                    .collect::<PyResult<Vec<_>>>()?;
                 PyList::new(py, items)?.into_any().unbind()
             }
             Out::Tuple(xs) => {
-                let items = xs.iter().map(|x| x.to_py(py)).collect::<PyResult<Vec<_>>>()?;
+                let items = xs
+                    .iter()
+                    .map(|x| x.to_py(py))
+                    .collect::<PyResult<Vec<_>>>()?;
                 PyTuple::new(py, items)?.into_any().unbind()
             }
             Out::Dict(kv) => {
@@ -251,7 +257,12 @@ fn mat<K: Field>(m: &Matrix<K>) -> Out {
     let mut kv = vec![];
     shape(&mut kv);
     let rat: Option<Vec<Vec<Out>>> = (0..m.nrows())
-        .map(|i| m.row(i).iter().map(|x| k.to_rational(x).map(|r| q(&r))).collect())
+        .map(|i| {
+            m.row(i)
+                .iter()
+                .map(|x| k.to_rational(x).map(|r| q(&r)))
+                .collect()
+        })
         .collect();
     match rat {
         Some(rows) => kv.push(("q", Out::List(rows.into_iter().map(Out::List).collect()))),
@@ -331,8 +342,8 @@ macro_rules! over {
 impl Sys {
     fn from_loaded(l: Loaded) -> Self {
         match l {
-            Loaded::Q(f, t) => Sys::Q(f.ground.to_string(), t),
-            Loaded::Quadratic(f, t) => Sys::Quadratic(f.ground.to_string(), t),
+            Loaded::Q(g, t) => Sys::Q(g, t),
+            Loaded::Quadratic(g, t) => Sys::Quadratic(g, t),
         }
     }
     fn rational(&self, what: &str) -> FResult<&Typed<Q>> {
@@ -360,11 +371,17 @@ fn typed_system<K: Field>(t: &Typed<K>) -> Out {
         ("D", mat(&s.d)),
         (
             "E",
-            t.descriptor.as_ref().map(|d| mat(&d.e)).unwrap_or(Out::None),
+            t.descriptor
+                .as_ref()
+                .map(|d| mat(&d.e))
+                .unwrap_or(Out::None),
         ),
         (
             "descriptor_A",
-            t.descriptor.as_ref().map(|d| mat(&d.a)).unwrap_or(Out::None),
+            t.descriptor
+                .as_ref()
+                .map(|d| mat(&d.a))
+                .unwrap_or(Out::None),
         ),
     ])
 }
@@ -420,8 +437,14 @@ fn scb_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
         ("Gamma3", mat(&r.gamma3)),
         ("U", mat(&r.u_pre)),
         ("Y", mat(&r.y_pre)),
-        ("dims", Out::List(r.dims.iter().map(|&d| usize_out(d)).collect())),
-        ("chains", Out::List(r.chains.iter().map(|&d| usize_out(d)).collect())),
+        (
+            "dims",
+            Out::List(r.dims.iter().map(|&d| usize_out(d)).collect()),
+        ),
+        (
+            "chains",
+            Out::List(r.chains.iter().map(|&d| usize_out(d)).collect()),
+        ),
         ("m0", usize_out(r.m0)),
         ("left_invertible", Out::Bool(r.left_invertible)),
         ("right_invertible", Out::Bool(r.right_invertible)),
@@ -528,8 +551,14 @@ fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResult<Out> {
                         Out::Tuple(vec![Out::Float(e.approx.0), Out::Float(e.approx.1)]),
                     ),
                     ("symbol", Out::Str(e.symbol.clone())),
-                    ("algebraic_multiplicity", usize_out(e.algebraic_multiplicity)),
-                    ("geometric_multiplicity", usize_out(e.geometric_multiplicity)),
+                    (
+                        "algebraic_multiplicity",
+                        usize_out(e.algebraic_multiplicity),
+                    ),
+                    (
+                        "geometric_multiplicity",
+                        usize_out(e.geometric_multiplicity),
+                    ),
                     (
                         "blocks",
                         Out::List(e.blocks.iter().map(|&b| usize_out(b)).collect()),
@@ -701,7 +730,12 @@ impl System {
     }
 
     #[pyo3(signature = (method, max_seconds=None))]
-    fn minreal(&self, py: Python<'_>, method: String, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
+    fn minreal(
+        &self,
+        py: Python<'_>,
+        method: String,
+        max_seconds: Option<f64>,
+    ) -> PyResult<Py<PyAny>> {
         let s = self.inner.clone();
         let out = run(py, max_seconds, move || {
             if method == "jordan" {
@@ -711,7 +745,10 @@ impl System {
                     ("system", Out::None),
                     ("order", usize_out(r.mcmillan_degree)),
                     ("original_order", usize_out(r.stages[0])),
-                    ("stages", Out::List(r.stages.iter().map(|&x| usize_out(x)).collect())),
+                    (
+                        "stages",
+                        Out::List(r.stages.iter().map(|&x| usize_out(x)).collect()),
+                    ),
                     ("method", Out::Str("jordan".into())),
                     ("T", Out::None),
                     ("verified", Out::Bool(r.verified)),
@@ -780,7 +817,10 @@ impl System {
             )?;
             let mut kv = vec![
                 ("exists", Out::Bool(r.exists)),
-                ("reason", r.reason.clone().map(Out::Str).unwrap_or(Out::None)),
+                (
+                    "reason",
+                    r.reason.clone().map(Out::Str).unwrap_or(Out::None),
+                ),
                 ("verified", Out::Bool(r.verified)),
                 ("report", report(&r.report())),
             ];
@@ -848,10 +888,17 @@ impl System {
 
     /// Markov parameters `C A^k B` for `k < count` (`D` not included).
     #[pyo3(signature = (count, max_seconds=None))]
-    fn markov(&self, py: Python<'_>, count: usize, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
+    fn markov(
+        &self,
+        py: Python<'_>,
+        count: usize,
+        max_seconds: Option<f64>,
+    ) -> PyResult<Py<PyAny>> {
         let s = self.inner.clone();
         run(py, max_seconds, move || {
-            Ok(over!(s, |t| Out::List(t.ss.markov(count).iter().map(mat).collect())))
+            Ok(over!(s, |t| Out::List(
+                t.ss.markov(count).iter().map(mat).collect()
+            )))
         })?
         .to_py(py)
     }
@@ -860,7 +907,9 @@ impl System {
     fn ctrb(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
         let s = self.inner.clone();
         run(py, max_seconds, move || {
-            Ok(over!(s, |t| mat(&realization::controllability_matrix(&t.ss.a, &t.ss.b))))
+            Ok(over!(s, |t| mat(&realization::controllability_matrix(
+                &t.ss.a, &t.ss.b
+            ))))
         })?
         .to_py(py)
     }
@@ -869,7 +918,9 @@ impl System {
     fn obsv(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
         let s = self.inner.clone();
         run(py, max_seconds, move || {
-            Ok(over!(s, |t| mat(&realization::observability_matrix(&t.ss.a, &t.ss.c))))
+            Ok(over!(s, |t| mat(&realization::observability_matrix(
+                &t.ss.a, &t.ss.c
+            ))))
         })?
         .to_py(py)
     }
@@ -893,8 +944,8 @@ impl System {
 #[pyfunction]
 fn load_json(py: Python<'_>, text: String, name: String) -> PyResult<System> {
     let l = run(py, None, move || {
-        let f = exactlti::io::parse_system_json(&text, &name)?;
-        type_file(f).map_err(Fail::Input)
+        let l = exactlti::io::load_system_str(&text, exactlti::io::SystemFormat::Json, &name)?;
+        from_loaded(l).map_err(Fail::Unsupported)
     })?;
     Ok(System {
         inner: Arc::new(Sys::from_loaded(l)),
@@ -905,8 +956,8 @@ fn load_json(py: Python<'_>, text: String, name: String) -> PyResult<System> {
 #[pyfunction]
 fn load_file(py: Python<'_>, path: String) -> PyResult<System> {
     let l = run(py, None, move || {
-        let f = exactlti::io::read_system_file(Path::new(&path))?;
-        type_file(f).map_err(Fail::Input)
+        let l = exactlti::io::load_system_path(Path::new(&path))?;
+        from_loaded(l).map_err(Fail::Unsupported)
     })?;
     Ok(System {
         inner: Arc::new(Sys::from_loaded(l)),
