@@ -9,6 +9,7 @@ use exactlti::io::{LoadedSystem, TypedAny, TypedSystem};
 pub type Typed<K> = TypedSystem<K>;
 
 /// A typed system over one of the supported ground fields.
+#[allow(clippy::large_enum_variant)]
 pub enum Loaded {
     Q(String, Typed<Q>),
     Quadratic(String, Typed<QuadraticField>),

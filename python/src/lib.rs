@@ -19,7 +19,7 @@ use exactlti::report::{MatrixOut, Report};
 use num_bigint::BigInt;
 use num_traits::ToPrimitive;
 use pyo3::create_exception;
-use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError, PyTimeoutError, PyValueError};
+use pyo3::exceptions::{PyRuntimeError, PyTimeoutError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use std::path::Path;
@@ -138,12 +138,8 @@ fn run<T: Send + 'static>(
                 ));
             }
             Err(mpsc::RecvTimeoutError::Timeout) => {
-                if let Err(e) = py.check_signals() {
-                    if e.is_instance_of::<PyKeyboardInterrupt>(py) {
-                        return Err(e);
-                    }
-                    return Err(e);
-                }
+                // Ctrl-C (KeyboardInterrupt) or any other signal handler's exception
+                py.check_signals()?;
                 if let Some(l) = limit
                     && start.elapsed() >= l
                 {
@@ -325,6 +321,7 @@ fn alg(n: &exactlti::algebraic::AlgebraicNumber, mult: usize) -> Out {
 // ---------------------------------------------------------------- systems
 
 /// A system over its ground field, as the library's reader typed it.
+#[allow(clippy::large_enum_variant)]
 pub enum Sys {
     Q(String, Typed<Q>),
     Quadratic(String, Typed<exactlti::field::QuadraticField>),
