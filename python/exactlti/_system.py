@@ -292,10 +292,12 @@ def tf(*args, **kwargs):
 def load(path):
     """Reads a system file (JSON or TOML, as the command line does).
 
-    >>> import exactlti, os
-    >>> p = os.path.join(os.path.dirname(exactlti.__file__), "..", "..", "data", "sliding-masses.json")
-    >>> exactlti.load(p).nstates if os.path.exists(p) else 20
-    20
+    >>> import exactlti, json, os, tempfile
+    >>> p = os.path.join(tempfile.mkdtemp(), "two.json")
+    >>> _ = open(p, "w").write(json.dumps({"A": [[0, 1], [-2, "-0.5"]], "B": [[0], [1]], "C": [[1, 0]]}))
+    >>> G = exactlti.load(p)
+    >>> G.A[1, 1], G.nstates, G.ninputs, G.noutputs
+    (Fraction(-1, 2), 2, 1, 1)
     """
     return StateSpace(_core.load_file(str(path)))
 
