@@ -19,7 +19,9 @@ import sys
 import time
 from fractions import Fraction
 
-import exactlti
+# the installed package, not the source folder next to this script (no compiled _core)
+sys.path = [p for p in sys.path if os.path.abspath(p or ".") != os.path.dirname(os.path.abspath(__file__))]
+import exactlti  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 SLIDING = os.path.join(ROOT, "data", "sliding-masses.json")
