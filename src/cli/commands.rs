@@ -11,13 +11,22 @@ use crate::io::{
     LoadedSystem, SystemFile, SystemFormat, SystemVisitor, TypedSystem, as_rational,
     load_system_path, load_system_str,
 };
+use crate::io::symbolic::SymbolicOptions;
 use crate::matrix::Matrix;
 use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, sections};
 use std::path::Path;
 
-/// Dispatches a command.
-pub fn execute(cmd: &Command) -> Result<Outcome, Failure> {
+/// Dispatches a command with `--symbolic` / `--at` (see [`crate::io::symbolic`]).
+pub fn execute_with(
+    cmd: &Command,
+    symbolic: Option<&str>,
+    at: Option<&str>,
+) -> Result<Outcome, Failure> {
+    let opts = SymbolicOptions::from_args(symbolic, at).map_err(|message| Failure { code: 2, message })?;
+    if let Some(out) = super::symbolic_cmds::execute(cmd, &opts)? {
+        return Ok(out);
+    }
     if let Some(path) = super::pencil_cmds::handles(cmd) {
         return super::pencil_cmds::execute(cmd, path);
     }
@@ -48,9 +57,9 @@ pub fn execute(cmd: &Command) -> Result<Outcome, Failure> {
 }
 
 /// A command on one system file.
-struct FileCommand<'a> {
-    cmd: &'a Command,
-    path: &'a Path,
+pub(super) struct FileCommand<'a> {
+    pub(super) cmd: &'a Command,
+    pub(super) path: &'a Path,
 }
 
 impl SystemVisitor for FileCommand<'_> {
@@ -119,7 +128,7 @@ impl SystemVisitor for FileCommand<'_> {
                 };
                 super::float_cmds::check(t, path, extra).map(Outcome::plain)
             }
-            Command::Linalg { op, .. } => linalg(*op, &t.a_raw, path).map(Outcome::plain),
+            Command::Linalg { op, .. } => linalg_report(*op, &t.a_raw, path).map(Outcome::plain),
             Command::Minreal { method, .. } => minreal(f, t, *method, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
             Command::Poly { .. }
@@ -172,7 +181,11 @@ pub(super) fn with_path(path: &Path, e: Error) -> Failure {
     }
 }
 
-fn linalg<K: Field>(op: LinalgOp, a: &Matrix<K>, path: &Path) -> Result<Report, Failure> {
+pub(super) fn linalg_report<K: Field>(
+    op: LinalgOp,
+    a: &Matrix<K>,
+    path: &Path,
+) -> Result<Report, Failure> {
     let e = |err| with_path(path, err);
     let r = Report::titled(format!("linalg {op:?}").to_lowercase());
     Ok(match op {

@@ -10,6 +10,7 @@ mod analyze;
 mod commands;
 mod float_cmds;
 mod pencil_cmds;
+mod symbolic_cmds;
 
 use crate::error::Error;
 use crate::report::Report;
@@ -42,6 +43,12 @@ pub struct Cli {
     /// Upper bound on the wall time of the exact computation; exceeded: exit 2.
     #[arg(long, global = true, default_value_t = 600.0)]
     pub max_seconds: f64,
+    /// Keep these parameters as symbols (comma separated; alone: every parameter).
+    #[arg(long, global = true, num_args = 0..=1, default_missing_value = "", value_name = "NAMES")]
+    pub symbolic: Option<String>,
+    /// Values for parameters or symbols before the computation, e.g. "m=1500, u=20".
+    #[arg(long, global = true, value_name = "VALUES")]
+    pub at: Option<String>,
 }
 
 /// `--method` of `minreal`.
@@ -232,7 +239,7 @@ pub fn run(cli: Cli) -> i32 {
     let handle = std::thread::Builder::new()
         .stack_size(256 << 20)
         .spawn(move || {
-            let r = commands::execute(&cli.command);
+            let r = commands::execute_with(&cli.command, cli.symbolic.as_deref(), cli.at.as_deref());
             let _ = tx.send(r);
         });
     if handle.is_err() {

@@ -103,7 +103,7 @@ pub fn eval_expr(
     ground: &Ground,
 ) -> Result<(ExactScalar, Ground), ExprError> {
     let k = match ground {
-        Ground::Rational => None,
+        Ground::Rational | Ground::RatFunc(_) => None,
         Ground::Quadratic(k) => Some(k.clone()),
     };
     let lookup = |name: &str| {

@@ -43,6 +43,7 @@ use super::{
 use crate::error::Error;
 use crate::field::{Field, Q, QuadraticField};
 use crate::matrix::Matrix;
+use crate::ratfunc::RatFuncField;
 use crate::realization::descriptor_to_standard;
 use crate::system::{Descriptor, StateSpace};
 use std::any::Any;
@@ -77,6 +78,8 @@ pub enum TypedAny {
     Rational(TypedSystem<Q>),
     /// Entries in one quadratic field $\mathbb{Q}(\sqrt d)$.
     Quadratic(TypedSystem<QuadraticField>),
+    /// Entries in $\mathbb{Q}(p_1, \dots, p_k)$ (symbolic parameters).
+    RatFunc(TypedSystem<RatFuncField>),
 }
 
 /// A validated system file together with its typed system.
@@ -105,6 +108,7 @@ impl LoadedSystem {
         match &self.system {
             TypedAny::Rational(t) => v.visit(&self.file, t),
             TypedAny::Quadratic(t) => v.visit(&self.file, t),
+            TypedAny::RatFunc(t) => v.visit(&self.file, t),
         }
     }
     /// The system over $\mathbb{Q}$, or `None` when the file's field is larger.
@@ -160,6 +164,7 @@ pub fn type_file(file: SystemFile) -> Result<LoadedSystem, InputError> {
     let system = match &file.ground {
         Ground::Rational => TypedAny::Rational(typed(&file, &Q)?),
         Ground::Quadratic(k) => TypedAny::Quadratic(typed(&file, k)?),
+        Ground::RatFunc(k) => TypedAny::RatFunc(typed(&file, k)?),
     };
     Ok(LoadedSystem { file, system })
 }
@@ -192,15 +197,47 @@ impl FromScalars for QuadraticField {
     }
 }
 
+impl FromScalars for RatFuncField {
+    fn matrix_from_entries(&self, m: &MatrixEntries) -> Matrix<RatFuncField> {
+        Matrix::from_vec(
+            self.clone(),
+            m.nrows,
+            m.ncols,
+            m.data.iter().map(|x| self.from_rational(&x.a)).collect(),
+        )
+    }
+}
+
 fn typed<K: FromScalars>(f: &SystemFile, k: &K) -> Result<TypedSystem<K>, InputError> {
-    let fail = |e: Error| InputError::file(&f.path, e.to_string());
-    let get = |m: &Option<MatrixEntries>| m.as_ref().map(|m| k.matrix_from_entries(m));
-    let missing = |key: &str| InputError::key(&f.path, key, "missing (validated reader)");
-    if let Some(a) = get(&f.a) {
-        let b = get(&f.b).ok_or_else(|| missing("B"))?;
-        let c = get(&f.c).ok_or_else(|| missing("C"))?;
-        let d = get(&f.d).ok_or_else(|| missing("D"))?;
-        if let Some(e) = get(&f.e) {
+    let get = |key: &str| {
+        let m = match key {
+            "A" => &f.a,
+            "B" => &f.b,
+            "C" => &f.c,
+            "D" => &f.d,
+            "E" => &f.e,
+            "M" => &f.m,
+            "L" => &f.l,
+            "K" => &f.k,
+            _ => &f.f,
+        };
+        m.as_ref().map(|m| k.matrix_from_entries(m))
+    };
+    typed_from(&f.path, &get)
+}
+
+/// Builds the typed system from the matrices by key (`A`..`E`, `M`, `L`, `K`, `F`).
+pub(crate) fn typed_from<K: Field>(
+    path: &str,
+    get: &dyn Fn(&str) -> Option<Matrix<K>>,
+) -> Result<TypedSystem<K>, InputError> {
+    let fail = |e: Error| InputError::file(path, e.to_string());
+    let missing = |key: &str| InputError::key(path, key, "missing");
+    if let Some(a) = get("A") {
+        let b = get("B").ok_or_else(|| missing("B"))?;
+        let c = get("C").ok_or_else(|| missing("C"))?;
+        let d = get("D").ok_or_else(|| missing("D"))?;
+        if let Some(e) = get("E") {
             let desc = Descriptor::new(e, a, b, c, d).map_err(fail)?;
             let sf = descriptor_to_standard(&desc).map_err(fail)?;
             return Ok(TypedSystem {
@@ -216,17 +253,17 @@ fn typed<K: FromScalars>(f: &SystemFile, k: &K) -> Result<TypedSystem<K>, InputE
             ss,
         });
     }
-    let (m, l, kk, ff) = (get(&f.m), get(&f.l), get(&f.k), get(&f.f));
+    let (m, l, kk, ff) = (get("M"), get("L"), get("K"), get("F"));
     let (Some(m), Some(l), Some(kk), Some(ff)) = (m, l, kk, ff) else {
         return Err(InputError::file(
-            &f.path,
+            path,
             "the file gives neither A nor the second-order keys M, L, K, F",
         ));
     };
     let ss =
-        StateSpace::from_second_order(&m, &l, &kk, &ff, get(&f.c).as_ref(), get(&f.d).as_ref())
+        StateSpace::from_second_order(&m, &l, &kk, &ff, get("C").as_ref(), get("D").as_ref())
             .map_err(|e| match e {
-                Error::Singular => InputError::key(&f.path, "M", "the mass matrix is singular"),
+                Error::Singular => InputError::key(path, "M", "the mass matrix is singular"),
                 e => fail(e),
             })?;
     Ok(TypedSystem {

@@ -32,6 +32,7 @@ pub mod load_descriptor;
 pub mod matlab;
 pub mod qmat;
 mod raw;
+pub mod symbolic;
 pub mod system_file;
 pub mod transfer_expr;
 
@@ -97,6 +98,8 @@ pub enum Ground {
     Rational,
     /// $\mathbb{Q}(\sqrt d)$ (`d = -1` is $\mathbb{Q}(i)$).
     Quadratic(QuadraticField),
+    /// $\mathbb{Q}(p_1, \dots, p_k)$: symbolic parameters (see [`symbolic`]).
+    RatFunc(crate::ratfunc::RatFuncField),
 }
 
 impl Ground {
@@ -105,15 +108,16 @@ impl Ground {
         match self {
             Ground::Rational => None,
             Ground::Quadratic(k) => Some(k.d()),
+            Ground::RatFunc(_) => None,
         }
     }
     /// Exact display of a scalar of this field, e.g. `-8/3`, `1 - sqrt(2)/2`, `2 + i`.
     pub fn fmt_scalar(&self, x: &ExactScalar) -> String {
         match self {
             Ground::Quadratic(k) => k.fmt_elem(&x.to_quadratic()),
-            Ground::Rational if x.is_rational() => fmt_rational(&x.a),
+            Ground::Rational | Ground::RatFunc(_) if x.is_rational() => fmt_rational(&x.a),
             // a scalar that does not belong to Q: show its coordinates rather than lie
-            Ground::Rational => format!("{} + {}*sqrt(?)", fmt_rational(&x.a), fmt_rational(&x.b)),
+            Ground::Rational | Ground::RatFunc(_) => format!("{} + {}*sqrt(?)", fmt_rational(&x.a), fmt_rational(&x.b)),
         }
     }
 }
@@ -123,6 +127,7 @@ impl fmt::Display for Ground {
         match self {
             Ground::Rational => write!(f, "QQ"),
             Ground::Quadratic(k) => write!(f, "{k}"),
+            Ground::RatFunc(k) => write!(f, "{k}"),
         }
     }
 }

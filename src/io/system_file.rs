@@ -144,7 +144,7 @@ pub fn parse_system_toml(text: &str, path: &str) -> Result<SystemFile, InputErro
 
 const MATRIX_KEYS: [&str; 9] = ["A", "B", "C", "D", "E", "M", "L", "K", "F"];
 
-fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
+pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
     let Raw::Table(entries) = raw else {
         return Err(InputError::file(
             file,

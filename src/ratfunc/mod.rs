@@ -78,6 +78,8 @@ impl PartialEq for RatFuncField {
     }
 }
 
+impl Eq for RatFuncField {}
+
 impl fmt::Debug for RatFuncField {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "RatFuncField({:?})", self.ctx.vars)

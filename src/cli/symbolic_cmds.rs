@@ -1,0 +1,133 @@
+//! Commands on files with symbolic parameters (over $\mathbb{Q}(p_1, \dots, p_k)$) and with
+//! `--symbolic` / `--at` on the command line.
+//!
+//! What works over $\mathbb{Q}(p)$: `linalg rank|det|charpoly|minpoly|rref|inverse|nullspace`
+//! on `A`, with `field` and `conditions` (the irreducible polynomials the result assumes
+//! nonzero). Every other command refuses with one line and exit status 2.
+
+use super::commands::{FileCommand, linalg_report};
+use super::{Command, Failure, Outcome};
+use crate::io::symbolic::{SymbolicOptions, load_symbolic_path, refusal};
+use crate::io::TypedAny;
+use crate::matrix::Matrix;
+use crate::report::str_list;
+use std::path::Path;
+
+/// The command's name as typed.
+fn name(cmd: &Command) -> &'static str {
+    match cmd {
+        Command::Jordan { .. } => "jordan",
+        Command::Minreal { .. } => "minreal",
+        Command::Standard { .. } => "standard",
+        Command::Scb { .. } => "scb",
+        Command::Mnf { .. } => "mnf",
+        Command::Zeros { .. } => "zeros",
+        Command::Pencil { .. } => "pencil",
+        Command::Ctrb { .. } => "ctrb",
+        Command::Obsv { .. } => "obsv",
+        Command::Tf { .. } => "tf",
+        Command::Modes { .. } => "modes",
+        Command::Freqresp { .. } => "freqresp",
+        Command::Check { .. } => "check",
+        Command::Poly { .. } => "poly",
+        Command::Linalg { .. } => "linalg",
+        Command::Analyze { .. } => "analyze",
+    }
+}
+
+fn file_of(cmd: &Command) -> Option<&Path> {
+    match cmd {
+        Command::Jordan { file, .. }
+        | Command::Minreal { file, .. }
+        | Command::Standard { file }
+        | Command::Scb { file }
+        | Command::Mnf { file }
+        | Command::Zeros { file }
+        | Command::Pencil { file }
+        | Command::Ctrb { file }
+        | Command::Obsv { file }
+        | Command::Tf { file }
+        | Command::Modes { file }
+        | Command::Freqresp { file, .. }
+        | Command::Check { file }
+        | Command::Linalg { file, .. } => Some(file),
+        Command::Analyze { file } => file.as_deref(),
+        Command::Poly { .. } => None,
+    }
+}
+
+/// Handles `cmd` when its file has symbols or the command line gives `--symbolic`/`--at`;
+/// `Ok(None)`: an ordinary file, left to the ordinary dispatch.
+pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Outcome>, Failure> {
+    let Some(path) = file_of(cmd) else {
+        return Ok(None);
+    };
+    // cheap test: a file without symbols and no command-line say is left alone
+    if opts.is_empty() {
+        let text = std::fs::read_to_string(path).unwrap_or_default();
+        if !text.contains("symbols") && !text.contains("null") {
+            return Ok(None);
+        }
+    }
+    let loaded = match load_symbolic_path(path, opts) {
+        Ok(l) => l,
+        // the ordinary reader reports its own errors
+        Err(_) if opts.is_empty() => return Ok(None),
+        Err(e) => {
+            return Err(Failure {
+                code: 2,
+                message: e.to_string(),
+            });
+        }
+    };
+    let refuse = |what: String| Failure {
+        code: 2,
+        message: format!("{}: {what}", path.display()),
+    };
+    let direct = matches!(
+        cmd,
+        Command::Jordan { .. }
+            | Command::Minreal { .. }
+            | Command::Standard { .. }
+            | Command::Scb { .. }
+            | Command::Mnf { .. }
+            | Command::Zeros { .. }
+            | Command::Modes { .. }
+            | Command::Freqresp { .. }
+            | Command::Check { .. }
+            | Command::Linalg { .. }
+    );
+    match &loaded.system {
+        TypedAny::RatFunc(t) => {
+            let k = t.a_raw.field();
+            match cmd {
+                Command::Linalg { op, .. } => {
+                    let k = k.fresh();
+                    let (n, m) = (t.a_raw.nrows(), t.a_raw.ncols());
+                    let data = (0..n)
+                        .flat_map(|i| (0..m).map(move |j| (i, j)))
+                        .map(|(i, j)| t.a_raw.get(i, j).clone())
+                        .collect();
+                    let a = Matrix::from_vec(k.clone(), n, m, data);
+                    let r = linalg_report(*op, &a, path)?;
+                    let conds = k
+                        .conditions_strings()
+                        .map_err(|e| super::commands::with_path(path, e))?;
+                    Ok(Some(Outcome::plain(
+                        r.str("field", k.to_string())
+                            .with("conditions", str_list(conds)),
+                    )))
+                }
+                _ => Err(refuse(refusal(&format!("`{}`", name(cmd)), k))),
+            }
+        }
+        _ if opts.is_empty() => Ok(None),
+        _ if direct => loaded
+            .run(FileCommand { cmd, path })
+            .map(Some),
+        _ => Err(refuse(format!(
+            "`{}` does not take --symbolic or --at yet; write the values into the file",
+            name(cmd)
+        ))),
+    }
+}

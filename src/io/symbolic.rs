@@ -1,0 +1,406 @@
+//! Symbolic parameters: a system file whose matrices live over $\mathbb{Q}(p_1, \dots, p_k)$.
+//!
+//! A parameter stays a symbol when its value is `null`, when the file names it in
+//! `"symbols": ["m", "u"]`, or when the command line names it (`--symbolic m,u`; `--symbolic`
+//! alone: every parameter). `--at "m=1500, u=20"` gives values first (they override the
+//! file's). Valued parameters are substituted into the entries as exact text (decimals are
+//! exact rationals); the entries are then parsed as rational functions in the symbols
+//! ([`RatFuncField::parse`]). When no symbol is left, the file goes through the ordinary
+//! reader ([`super::system_file`]) and is typed over $\mathbb{Q}$ or $\mathbb{Q}(\sqrt d)$ as
+//! usual.
+//!
+//! # Examples
+//! ```
+//! use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_str};
+//! use exactlti::io::{SystemFormat, TypedAny};
+//!
+//! let text = r#"{"parameters": {"m": null, "k": "2"},
+//!                "A": [[0, 1], ["-k/m", 0]], "B": [[0], ["1/m"]], "C": [[1, 0]]}"#;
+//! let l = load_symbolic_str(text, SystemFormat::Json, "x.json", &SymbolicOptions::default())
+//!     .unwrap();
+//! let TypedAny::RatFunc(t) = &l.system else { panic!() };
+//! assert_eq!(t.ss.a.field().to_string(), "QQ(m)");
+//! assert_eq!(t.ss.a.field().fmt_elem(t.ss.a.get(1, 0)), "-2/m");
+//! ```
+
+use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
+use super::raw::{Raw, from_json_text, from_toml_text};
+use super::system_file::validate;
+use super::{Ground, InputError, SystemFile, SystemFormat, split_matlab_matrix};
+use crate::matrix::Matrix;
+use crate::ratfunc::RatFuncField;
+use std::collections::BTreeSet;
+use std::path::Path;
+
+/// The command line's say on symbols.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct SymbolicOptions {
+    /// `--symbolic`: `None` when not given, `Some(vec![])` for every parameter, else the names.
+    pub symbolic: Option<Vec<String>>,
+    /// `--at "m=1500, u=20"`: values (exact text) for parameters or symbols.
+    pub at: Vec<(String, String)>,
+}
+
+impl SymbolicOptions {
+    /// Parses `--symbolic` and `--at` values.
+    ///
+    /// # Errors
+    /// An `--at` item without `=` or with an empty name or value.
+    pub fn from_args(symbolic: Option<&str>, at: Option<&str>) -> Result<Self, String> {
+        let names = |s: &str| -> Vec<String> {
+            s.split(',')
+                .map(|x| x.trim().to_string())
+                .filter(|x| !x.is_empty())
+                .collect()
+        };
+        let mut out = SymbolicOptions {
+            symbolic: symbolic.map(names),
+            at: vec![],
+        };
+        for item in at.unwrap_or("").split(',').filter(|x| !x.trim().is_empty()) {
+            let Some((n, v)) = item.split_once('=') else {
+                return Err(format!("--at: expected name=value, found '{}'", item.trim()));
+            };
+            let (n, v) = (n.trim(), v.trim());
+            if n.is_empty() || v.is_empty() {
+                return Err(format!("--at: expected name=value, found '{}'", item.trim()));
+            }
+            out.at.push((n.to_string(), v.to_string()));
+        }
+        Ok(out)
+    }
+    /// Nothing asked on the command line.
+    pub fn is_empty(&self) -> bool {
+        self.symbolic.is_none() && self.at.is_empty()
+    }
+}
+
+/// The one-line refusal of a command that does not yet work over $\mathbb{Q}(p)$.
+pub fn refusal(what: &str, k: &RatFuncField) -> String {
+    format!("symbolic parameters: {what} is not yet supported over {k}; give values with --at")
+}
+
+/// Reads a system file with symbolic parameters (format as [`super::read_system_file`]).
+///
+/// # Errors
+/// As [`load_symbolic_str`], and an unreadable file.
+pub fn load_symbolic_path(path: &Path, opts: &SymbolicOptions) -> Result<LoadedSystem, InputError> {
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError::file(&shown, format!("cannot read the file: {e}")))?;
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let format = match ext.as_deref() {
+        Some("toml") => SystemFormat::Toml,
+        Some("json") => SystemFormat::Json,
+        _ if text.trim_start().starts_with('{') => SystemFormat::Json,
+        _ => SystemFormat::Toml,
+    };
+    load_symbolic_str(&text, format, &shown, opts)
+}
+
+/// Loads a system file, keeping the symbols of the file and of `opts` as symbols; without
+/// symbols the result is that of [`super::load_system_str`] (with `--at` values applied).
+///
+/// # Errors
+/// Every error of the ordinary reader; an unknown name in `--symbolic` or `--at`; a
+/// `symbols` key that is not a list of names; an entry that is not a rational function of
+/// the symbols (named by key, row and column); parameters that depend on each other in a
+/// cycle.
+pub fn load_symbolic_str(
+    text: &str,
+    format: SystemFormat,
+    name: &str,
+    opts: &SymbolicOptions,
+) -> Result<LoadedSystem, InputError> {
+    let raw = match format {
+        SystemFormat::Json => from_json_text(text, name)?,
+        SystemFormat::Toml => from_toml_text(text, name)?,
+    };
+    let Raw::Table(entries) = raw else {
+        return validate(raw, name).and_then(type_file);
+    };
+    let mut params: Vec<(String, Option<String>)> = vec![];
+    let mut symbols: BTreeSet<String> = BTreeSet::new();
+    let mut rest: Vec<(String, Raw)> = vec![];
+    for (key, v) in entries {
+        match (key.as_str(), v) {
+            ("parameters", Raw::Table(kv)) => {
+                for (n, v) in kv {
+                    let val = match v {
+                        Raw::Number(s) | Raw::Str(s) => Some(s),
+                        Raw::Other { json, .. } if json.is_null() => None,
+                        other => {
+                            return Err(InputError::key(
+                                name,
+                                &format!("parameters.{n}"),
+                                format!("expected a number, a string or null, found {}", other.kind()),
+                            ));
+                        }
+                    };
+                    params.push((n, val));
+                }
+            }
+            ("symbols", Raw::Array(xs)) => {
+                for x in xs {
+                    let Raw::Str(s) = x else {
+                        return Err(InputError::key(name, "symbols", "expected a list of names"));
+                    };
+                    symbols.insert(s);
+                }
+            }
+            ("symbols", _) => {
+                return Err(InputError::key(name, "symbols", "expected a list of names"));
+            }
+            (_, v) => rest.push((key, v)),
+        }
+    }
+    let known = |n: &str, params: &[(String, Option<String>)], symbols: &BTreeSet<String>| {
+        params.iter().any(|(p, _)| p == n) || symbols.contains(n)
+    };
+    match &opts.symbolic {
+        Some(list) if list.is_empty() => symbols.extend(params.iter().map(|(n, _)| n.clone())),
+        Some(list) => {
+            for n in list {
+                if !known(n, &params, &symbols) {
+                    return Err(InputError::file(
+                        name,
+                        format!("--symbolic: unknown parameter '{n}'"),
+                    ));
+                }
+                symbols.insert(n.clone());
+            }
+        }
+        None => {}
+    }
+    symbols.extend(params.iter().filter(|(_, v)| v.is_none()).map(|(n, _)| n.clone()));
+    for (n, v) in &opts.at {
+        if !known(n, &params, &symbols) {
+            return Err(InputError::file(name, format!("--at: unknown parameter '{n}'")));
+        }
+        symbols.remove(n);
+        match params.iter_mut().find(|(p, _)| p == n) {
+            Some(p) => p.1 = Some(v.clone()),
+            None => params.push((n.clone(), Some(v.clone()))),
+        }
+    }
+    // a symbol is a symbol even when the file also gives it a value
+    let valued: Vec<(String, String)> = params
+        .iter()
+        .filter(|(n, _)| !symbols.contains(n))
+        .filter_map(|(n, v)| v.clone().map(|v| (n.clone(), v)))
+        .collect();
+    if symbols.is_empty() {
+        let mut table = vec![(
+            "parameters".to_string(),
+            Raw::Table(
+                valued
+                    .iter()
+                    .map(|(n, v)| (n.clone(), Raw::Str(v.clone())))
+                    .collect(),
+            ),
+        )];
+        table.extend(rest);
+        return validate(Raw::Table(table), name).and_then(type_file);
+    }
+    if rest.iter().any(|(k, _)| k == "G") {
+        let k = field_of(name, &symbols)?;
+        return Err(InputError::file(name, refusal("a transfer matrix `G`", &k)));
+    }
+    let k = field_of(name, &symbols)?;
+    let subst = Substitution::new(name, &valued)?;
+    let mut mats: Vec<(&'static str, Matrix<RatFuncField>)> = vec![];
+    let mut extra = serde_json::Map::new();
+    let mut sys_name = None;
+    for (key, v) in rest {
+        if let Some(mk) = MATRIX_KEYS.iter().find(|m| **m == key) {
+            mats.push((mk, read_matrix(name, mk, &v, &k, &subst)?));
+        } else if key == "name" {
+            if let Raw::Str(s) = v {
+                sys_name = Some(s);
+            }
+        } else {
+            extra.insert(key, v.to_json());
+        }
+    }
+    let a_shape = mats.iter().find(|(m, _)| *m == "A").map(|(_, a)| a.nrows());
+    let b_cols = mats.iter().find(|(m, _)| *m == "B").map(|(_, b)| b.ncols());
+    let c_rows = mats.iter().find(|(m, _)| *m == "C").map(|(_, c)| c.nrows());
+    if let (Some(_), Some(m), Some(p)) = (a_shape, b_cols, c_rows)
+        && !mats.iter().any(|(m, _)| *m == "D")
+    {
+        mats.push(("D", Matrix::zeros(k.clone(), p, m)));
+    }
+    let get = |key: &str| mats.iter().find(|(m, _)| *m == key).map(|(_, x)| x.clone());
+    let typed = typed_from(name, &get)?;
+    let file = SystemFile {
+        name: sys_name,
+        path: name.to_string(),
+        parameters: vec![],
+        ground: Ground::RatFunc(k),
+        a: None,
+        b: None,
+        c: None,
+        d: None,
+        e: None,
+        m: None,
+        l: None,
+        k: None,
+        f: None,
+        extra,
+    };
+    Ok(LoadedSystem {
+        file,
+        system: TypedAny::RatFunc(typed),
+    })
+}
+
+const MATRIX_KEYS: [&str; 9] = ["A", "B", "C", "D", "E", "M", "L", "K", "F"];
+
+fn field_of(name: &str, symbols: &BTreeSet<String>) -> Result<RatFuncField, InputError> {
+    let vars: Vec<&str> = symbols.iter().map(String::as_str).collect();
+    RatFuncField::new(&vars).map_err(|e| InputError::key(name, "symbols", e.to_string()))
+}
+
+/// Valued parameters, substituted into entry text as `(value)` until no name is left.
+struct Substitution {
+    valued: Vec<(String, String)>,
+}
+
+impl Substitution {
+    fn new(file: &str, valued: &[(String, String)]) -> Result<Self, InputError> {
+        let s = Substitution {
+            valued: valued.to_vec(),
+        };
+        for (n, v) in valued {
+            s.apply(v).map_err(|e| {
+                InputError::key(file, &format!("parameters.{n}"), e)
+            })?;
+        }
+        Ok(s)
+    }
+    fn lookup(&self, ident: &str) -> Option<&str> {
+        self.valued
+            .iter()
+            .find(|(n, _)| n == ident)
+            .map(|(_, v)| v.as_str())
+    }
+    /// The text with every valued parameter replaced (at most one round per parameter).
+    fn apply(&self, text: &str) -> Result<String, String> {
+        let mut cur = text.to_string();
+        for _ in 0..=self.valued.len() {
+            let (next, changed) = self.once(&cur);
+            if !changed {
+                return Ok(next);
+            }
+            cur = next;
+        }
+        Err("parameters depend on each other in a cycle".to_string())
+    }
+    fn once(&self, text: &str) -> (String, bool) {
+        let b = text.as_bytes();
+        let mut out = String::with_capacity(text.len());
+        let mut changed = false;
+        let mut i = 0;
+        while i < b.len() {
+            let c = b[i];
+            if c.is_ascii_alphabetic() || c == b'_' {
+                // an exponent marker inside a number (1e-3) is not a name
+                let in_number = i > 0 && (b[i - 1].is_ascii_digit() || b[i - 1] == b'.');
+                let start = i;
+                while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                    i += 1;
+                }
+                let ident = &text[start..i];
+                match self.lookup(ident) {
+                    Some(v) if !in_number => {
+                        out.push('(');
+                        out.push_str(v);
+                        out.push(')');
+                        changed = true;
+                    }
+                    _ => out.push_str(ident),
+                }
+            } else {
+                let ch = text[i..].chars().next().unwrap_or(' ');
+                out.push(ch);
+                i += ch.len_utf8();
+            }
+        }
+        (out, changed)
+    }
+}
+
+fn read_matrix(
+    file: &str,
+    key: &str,
+    v: &Raw,
+    k: &RatFuncField,
+    subst: &Substitution,
+) -> Result<Matrix<RatFuncField>, InputError> {
+    let rows: Vec<Vec<String>> = match v {
+        Raw::Str(s) => split_matlab_matrix(s)
+            .map_err(|e| InputError::key(file, key, e.to_string()))?,
+        Raw::Array(rs) => {
+            let mut rows = vec![];
+            for (i, r) in rs.iter().enumerate() {
+                let Raw::Array(xs) = r else {
+                    return Err(InputError::key(
+                        file,
+                        key,
+                        format!("row {}: expected an array, found {}", i + 1, r.kind()),
+                    ));
+                };
+                let mut row = vec![];
+                for (j, x) in xs.iter().enumerate() {
+                    match x {
+                        Raw::Number(s) | Raw::Str(s) => row.push(s.clone()),
+                        other => {
+                            return Err(InputError::key(
+                                file,
+                                key,
+                                format!(
+                                    "row {}, column {}: expected a number or a string, found {}",
+                                    i + 1,
+                                    j + 1,
+                                    other.kind()
+                                ),
+                            ));
+                        }
+                    }
+                }
+                rows.push(row);
+            }
+            rows
+        }
+        other => {
+            return Err(InputError::key(
+                file,
+                key,
+                format!("expected a matrix, found {}", other.kind()),
+            ));
+        }
+    };
+    let nrows = rows.len();
+    let ncols = rows.first().map_or(0, Vec::len);
+    let mut data = Vec::with_capacity(nrows * ncols);
+    for (i, r) in rows.iter().enumerate() {
+        if r.len() != ncols {
+            return Err(InputError::key(
+                file,
+                key,
+                format!("row {} has {} entries, row 1 has {ncols}", i + 1, r.len()),
+            ));
+        }
+        for (j, t) in r.iter().enumerate() {
+            let at = |m: String| {
+                InputError::key(file, key, format!("row {}, column {}: {m}", i + 1, j + 1))
+            };
+            let text = subst.apply(t).map_err(at)?;
+            data.push(k.parse(&text).map_err(|e| at(e.to_string()))?);
+        }
+    }
+    Ok(Matrix::from_vec(k.clone(), nrows, ncols, data))
+}
