@@ -7,11 +7,11 @@
 use super::{Command, Failure, LinalgOp, MethodArg, Outcome};
 use crate::error::Error;
 use crate::field::{Field, Q};
+use crate::io::symbolic::SymbolicOptions;
 use crate::io::{
     LoadedSystem, SystemFile, SystemFormat, SystemVisitor, TypedSystem, as_rational,
     load_system_path, load_system_str,
 };
-use crate::io::symbolic::SymbolicOptions;
 use crate::matrix::Matrix;
 use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, sections};
@@ -23,7 +23,8 @@ pub fn execute_with(
     symbolic: Option<&str>,
     at: Option<&str>,
 ) -> Result<Outcome, Failure> {
-    let opts = SymbolicOptions::from_args(symbolic, at).map_err(|message| Failure { code: 2, message })?;
+    let opts =
+        SymbolicOptions::from_args(symbolic, at).map_err(|message| Failure { code: 2, message })?;
     if let Some(out) = super::symbolic_cmds::execute(cmd, &opts)? {
         return Ok(out);
     }

@@ -239,7 +239,8 @@ pub fn run(cli: Cli) -> i32 {
     let handle = std::thread::Builder::new()
         .stack_size(256 << 20)
         .spawn(move || {
-            let r = commands::execute_with(&cli.command, cli.symbolic.as_deref(), cli.at.as_deref());
+            let r =
+                commands::execute_with(&cli.command, cli.symbolic.as_deref(), cli.at.as_deref());
             let _ = tx.send(r);
         });
     if handle.is_err() {

@@ -7,10 +7,10 @@
 
 use super::commands::{FileCommand, linalg_report};
 use super::{Command, Failure, Outcome};
-use crate::io::symbolic::{SymbolicOptions, load_symbolic_path, refusal};
 use crate::io::TypedAny;
+use crate::io::symbolic::{SymbolicOptions, load_symbolic_path, refusal};
 use crate::matrix::Matrix;
-use crate::report::str_list;
+use crate::report::{Report, Value, str_list};
 use std::path::Path;
 
 /// The command's name as typed.
@@ -114,7 +114,8 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ou
                         .conditions_strings()
                         .map_err(|e| super::commands::with_path(path, e))?;
                     Ok(Some(Outcome::plain(
-                        r.str("field", k.to_string())
+                        exact_only(r)
+                            .str("field", k.to_string())
                             .with("conditions", str_list(conds)),
                     )))
                 }
@@ -122,12 +123,37 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ou
             }
         }
         _ if opts.is_empty() => Ok(None),
-        _ if direct => loaded
-            .run(FileCommand { cmd, path })
-            .map(Some),
+        _ if direct => loaded.run(FileCommand { cmd, path }).map(Some),
         _ => Err(refuse(format!(
             "`{}` does not take --symbolic or --at yet; write the values into the file",
             name(cmd)
         ))),
+    }
+}
+
+/// The report with matrices as lists of exact strings: over $\mathbb{Q}(p)$ there are no
+/// `approx` fields (the contract: only when every symbol has a value).
+fn exact_only(r: Report) -> Report {
+    fn value(v: Value) -> Value {
+        match v {
+            Value::Matrix(m) => Value::List(
+                m.exact
+                    .into_iter()
+                    .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
+                    .collect(),
+            ),
+            Value::List(xs) => Value::List(xs.into_iter().map(value).collect()),
+            Value::Obj(r) => Value::Obj(exact_only(r)),
+            v => v,
+        }
+    }
+    Report {
+        title: r.title,
+        items: r
+            .items
+            .into_iter()
+            .filter(|(k, _)| !k.contains("approx"))
+            .map(|(k, v)| (k, value(v)))
+            .collect(),
     }
 }

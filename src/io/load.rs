@@ -260,12 +260,11 @@ pub(crate) fn typed_from<K: Field>(
             "the file gives neither A nor the second-order keys M, L, K, F",
         ));
     };
-    let ss =
-        StateSpace::from_second_order(&m, &l, &kk, &ff, get("C").as_ref(), get("D").as_ref())
-            .map_err(|e| match e {
-                Error::Singular => InputError::key(path, "M", "the mass matrix is singular"),
-                e => fail(e),
-            })?;
+    let ss = StateSpace::from_second_order(&m, &l, &kk, &ff, get("C").as_ref(), get("D").as_ref())
+        .map_err(|e| match e {
+            Error::Singular => InputError::key(path, "M", "the mass matrix is singular"),
+            e => fail(e),
+        })?;
     Ok(TypedSystem {
         a_raw: ss.a.clone(),
         descriptor: None,

@@ -116,7 +116,12 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
     let system = match &f.ground {
         Ground::Rational => DescriptorAny::Rational(descriptor_of(&f, &Q)?),
         Ground::Quadratic(k) => DescriptorAny::Quadratic(descriptor_of(&f, k)?),
-        Ground::RatFunc(k) => return Err(InputError::file(&name, super::symbolic::refusal("this command", k))),
+        Ground::RatFunc(k) => {
+            return Err(InputError::file(
+                &name,
+                super::symbolic::refusal("this command", k),
+            ));
+        }
     };
     Ok(LoadedDescriptor {
         path: name,

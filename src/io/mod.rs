@@ -117,7 +117,9 @@ impl Ground {
             Ground::Quadratic(k) => k.fmt_elem(&x.to_quadratic()),
             Ground::Rational | Ground::RatFunc(_) if x.is_rational() => fmt_rational(&x.a),
             // a scalar that does not belong to Q: show its coordinates rather than lie
-            Ground::Rational | Ground::RatFunc(_) => format!("{} + {}*sqrt(?)", fmt_rational(&x.a), fmt_rational(&x.b)),
+            Ground::Rational | Ground::RatFunc(_) => {
+                format!("{} + {}*sqrt(?)", fmt_rational(&x.a), fmt_rational(&x.b))
+            }
         }
     }
 }

@@ -59,11 +59,17 @@ impl SymbolicOptions {
         };
         for item in at.unwrap_or("").split(',').filter(|x| !x.trim().is_empty()) {
             let Some((n, v)) = item.split_once('=') else {
-                return Err(format!("--at: expected name=value, found '{}'", item.trim()));
+                return Err(format!(
+                    "--at: expected name=value, found '{}'",
+                    item.trim()
+                ));
             };
             let (n, v) = (n.trim(), v.trim());
             if n.is_empty() || v.is_empty() {
-                return Err(format!("--at: expected name=value, found '{}'", item.trim()));
+                return Err(format!(
+                    "--at: expected name=value, found '{}'",
+                    item.trim()
+                ));
             }
             out.at.push((n.to_string(), v.to_string()));
         }
@@ -136,7 +142,10 @@ pub fn load_symbolic_str(
                             return Err(InputError::key(
                                 name,
                                 &format!("parameters.{n}"),
-                                format!("expected a number, a string or null, found {}", other.kind()),
+                                format!(
+                                    "expected a number, a string or null, found {}",
+                                    other.kind()
+                                ),
                             ));
                         }
                     };
@@ -175,10 +184,18 @@ pub fn load_symbolic_str(
         }
         None => {}
     }
-    symbols.extend(params.iter().filter(|(_, v)| v.is_none()).map(|(n, _)| n.clone()));
+    symbols.extend(
+        params
+            .iter()
+            .filter(|(_, v)| v.is_none())
+            .map(|(n, _)| n.clone()),
+    );
     for (n, v) in &opts.at {
         if !known(n, &params, &symbols) {
-            return Err(InputError::file(name, format!("--at: unknown parameter '{n}'")));
+            return Err(InputError::file(
+                name,
+                format!("--at: unknown parameter '{n}'"),
+            ));
         }
         symbols.remove(n);
         match params.iter_mut().find(|(p, _)| p == n) {
@@ -275,9 +292,8 @@ impl Substitution {
             valued: valued.to_vec(),
         };
         for (n, v) in valued {
-            s.apply(v).map_err(|e| {
-                InputError::key(file, &format!("parameters.{n}"), e)
-            })?;
+            s.apply(v)
+                .map_err(|e| InputError::key(file, &format!("parameters.{n}"), e))?;
         }
         Ok(s)
     }
@@ -341,8 +357,9 @@ fn read_matrix(
     subst: &Substitution,
 ) -> Result<Matrix<RatFuncField>, InputError> {
     let rows: Vec<Vec<String>> = match v {
-        Raw::Str(s) => split_matlab_matrix(s)
-            .map_err(|e| InputError::key(file, key, e.to_string()))?,
+        Raw::Str(s) => {
+            split_matlab_matrix(s).map_err(|e| InputError::key(file, key, e.to_string()))?
+        }
         Raw::Array(rs) => {
             let mut rows = vec![];
             for (i, r) in rs.iter().enumerate() {

@@ -1,0 +1,103 @@
+//! Symbolic parameters (contract, second wave): the single-wheel yaw-plane model of the
+//! vehicle-dynamics paper (eq. 27) over QQ(cr, m, u).
+
+use exactlti::field::Field;
+use exactlti::io::TypedAny;
+use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};
+use std::path::Path;
+use std::process::Command;
+
+const YAW: &str = "data/yaw-plane-single-wheel.json";
+
+fn all_symbolic() -> SymbolicOptions {
+    SymbolicOptions::from_args(Some(""), None).unwrap()
+}
+
+#[test]
+fn yaw_plane_charpoly_is_s3_times_s_plus_cr_over_mu() {
+    let l = load_symbolic_path(Path::new(YAW), &all_symbolic()).unwrap();
+    let TypedAny::RatFunc(t) = &l.system else {
+        panic!("expected QQ(p)")
+    };
+    let k = t.a_raw.field().clone();
+    assert_eq!(k.to_string(), "QQ(cr, m, u)");
+    let p = t.a_raw.charpoly().unwrap();
+    // s^3 (s + cr/(m u)): coefficients 0, 0, 0, cr/(m u), 1
+    let c = k.parse("cr/(m*u)").unwrap();
+    let want = [k.zero(), k.zero(), k.zero(), c, k.one()];
+    assert_eq!(p.coeffs(), &want[..]);
+    // Cayley-Hamilton as rational functions: A^4 + cr/(m u) A^3 = 0
+    let a = &t.a_raw;
+    let a2 = a.try_mul(a).unwrap();
+    let a3 = a2.try_mul(a).unwrap();
+    let a4 = a3.try_mul(a).unwrap();
+    for i in 0..4 {
+        for j in 0..4 {
+            let v = k.add(a4.get(i, j), &k.mul(&want[3], a3.get(i, j)));
+            assert!(k.is_zero(&v), "Cayley-Hamilton fails at ({i}, {j})");
+        }
+    }
+}
+
+#[test]
+fn at_values_give_the_rational_system() {
+    let o = SymbolicOptions::from_args(Some(""), Some("m=1500, u=20, cr=80000")).unwrap();
+    let l = load_symbolic_path(Path::new(YAW), &o).unwrap();
+    let TypedAny::Rational(t) = &l.system else {
+        panic!("expected QQ")
+    };
+    assert_eq!(t.a_raw.get(2, 2).to_string(), "-8/3");
+    let o = SymbolicOptions::from_args(Some("m"), None).unwrap();
+    let l = load_symbolic_path(Path::new(YAW), &o).unwrap();
+    let TypedAny::RatFunc(t) = &l.system else {
+        panic!("expected QQ(m)")
+    };
+    let k = t.a_raw.field();
+    assert_eq!(k.fmt_elem(t.a_raw.get(2, 2)), "-4000/m");
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn cli_rank_of_a_is_3_with_conditions() {
+    let (code, out, _) = run(&["linalg", "rank", YAW, "--symbolic", "--format", "json"]);
+    assert_eq!(code, 0);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["rank"], 3);
+    assert_eq!(j["field"], "QQ(cr, m, u)");
+    // the pivots divided by cr/(m u) and u: their numerators are assumed nonzero
+    assert_eq!(j["conditions"], serde_json::json!(["cr", "u"]));
+    let (code, out, _) = run(&["linalg", "rref", YAW, "--symbolic", "--format", "json"]);
+    assert_eq!(code, 0);
+    assert!(
+        !out.contains("approx"),
+        "no approx fields over QQ(p): {out}"
+    );
+}
+
+#[test]
+fn cli_refuses_unsupported_commands_with_one_line() {
+    for cmd in ["scb", "jordan", "minreal", "zeros", "ctrb"] {
+        let (code, out, err) = run(&[cmd, YAW, "--symbolic", "m,u"]);
+        assert_eq!(code, 2, "{cmd}: {err}");
+        assert!(out.is_empty());
+        assert_eq!(err.lines().count(), 1, "{cmd}: {err}");
+        assert!(
+            err.contains(&format!("symbolic parameters: `{cmd}` is not yet supported over QQ(m, u); give values with --at")),
+            "{cmd}: {err}"
+        );
+    }
+    let (code, _, err) = run(&["linalg", "rank", YAW, "--symbolic", "x"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--symbolic: unknown parameter 'x'"), "{err}");
+}
