@@ -20,6 +20,7 @@ pub mod poly;
 pub mod realization;
 pub mod report;
 pub mod structure;
+pub mod study;
 pub mod system;
 
 pub use error::{Error, Result};

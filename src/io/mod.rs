@@ -27,7 +27,7 @@
 
 pub mod expr;
 pub mod matlab;
-mod raw;
+pub(crate) mod raw;
 pub mod system_file;
 
 pub use expr::{ExprError, eval_expr};
