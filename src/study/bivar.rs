@@ -57,6 +57,60 @@ impl BiPoly {
     }
 }
 
+/// Interpolation at the points $0, 1, \dots, m$ through integer values: forward
+/// differences $\Delta^j y_0$ (integers) and $p(x) = \sum_j \Delta^j y_0 \binom{x}{j}$,
+/// accumulated as $m!\,p(x)$ in integer arithmetic (no gcds) and divided once. Falls back to
+/// [`interpolate`] for non-integer values.
+pub fn interpolate_consecutive(ys: &[Rational]) -> Poly<Q> {
+    use num_bigint::BigInt;
+    let m1 = ys.len();
+    if m1 == 0 {
+        return Poly::zero(Q);
+    }
+    if !ys.iter().all(|y| y.is_integer()) {
+        let xs: Vec<Rational> = (0..m1).map(int).collect();
+        return interpolate(&xs, ys);
+    }
+    let mut d: Vec<BigInt> = ys.iter().map(|y| y.to_integer()).collect();
+    let mut diffs = Vec::with_capacity(m1);
+    for j in 0..m1 {
+        diffs.push(d[0].clone());
+        for i in 0..m1 - 1 - j {
+            d[i] = &d[i + 1] - &d[i];
+        }
+    }
+    let m = m1 - 1;
+    // falling factorial x(x-1)...(x-j+1) and the weights m!/j!
+    let mut ff: Vec<BigInt> = vec![BigInt::one()];
+    let mut weight: Vec<BigInt> = vec![BigInt::one(); m1];
+    for j in (0..m).rev() {
+        weight[j] = &weight[j + 1] * BigInt::from(j as u64 + 1);
+    }
+    let mut acc: Vec<BigInt> = vec![BigInt::zero(); m1];
+    for (j, dj) in diffs.iter().enumerate() {
+        if !dj.is_zero() {
+            let w = dj * &weight[j];
+            for (k, c) in ff.iter().enumerate() {
+                acc[k] += &w * c;
+            }
+        }
+        // ff *= (x - j)
+        let mut next = vec![BigInt::zero(); ff.len() + 1];
+        for (k, c) in ff.iter().enumerate() {
+            next[k + 1] += c;
+            next[k] -= c * BigInt::from(j as u64);
+        }
+        ff = next;
+    }
+    let fact = weight[0].clone();
+    Poly::new(
+        Q,
+        acc.into_iter()
+            .map(|c| Rational::new(c, fact.clone()))
+            .collect(),
+    )
+}
+
 /// Newton interpolation: the polynomial of degree $< $ `xs.len()` through `(xs, ys)`.
 pub fn interpolate(xs: &[Rational], ys: &[Rational]) -> Poly<Q> {
     let n = xs.len();
@@ -138,12 +192,12 @@ pub fn charpoly_xv(fam: &ParamFamily) -> Result<BiPoly> {
             });
             dets.push(if n2 == 0 { Rational::one() } else { m.det()? });
         }
-        let px = interpolate(&xs, &dets);
+        let px = interpolate_consecutive(&dets);
         for (k, col) in table.iter_mut().enumerate() {
             col.push(px.coeff(k));
         }
     }
-    let mut coeffs: Vec<Poly<Q>> = table.iter().map(|ys| interpolate(&vs, ys)).collect();
+    let mut coeffs: Vec<Poly<Q>> = table.iter().map(|ys| interpolate_consecutive(ys)).collect();
     while coeffs.len() > 1 && coeffs.last().is_some_and(|c| c.is_zero()) {
         coeffs.pop();
     }
@@ -154,10 +208,18 @@ pub fn charpoly_xv(fam: &ParamFamily) -> Result<BiPoly> {
         .iter()
         .fold(Poly::zero(Q), |g, c| if c.is_zero() { g } else { g.gcd(c) });
     let mut coeffs: Vec<Poly<Q>> = coeffs.iter().map(|c| c.quo(&content)).collect();
-    // sign: leading coefficient of p_n positive
-    if coeffs.last().is_some_and(|c| c.lc() < Rational::zero()) {
-        coeffs = coeffs.iter().map(Poly::neg).collect();
+    // integer coefficients without common factor, leading coefficient of p_n positive
+    let mut den = num_bigint::BigInt::one();
+    let mut num_gcd = num_bigint::BigInt::zero();
+    for c in coeffs.iter().flat_map(|c| c.coeffs().iter()) {
+        den = num_integer::Integer::lcm(&den, c.denom());
+        num_gcd = num_integer::Integer::gcd(&num_gcd, c.numer());
     }
+    let mut scale = Rational::new(den, num_gcd.max(num_bigint::BigInt::one()));
+    if coeffs.last().is_some_and(|c| c.lc() < Rational::zero()) {
+        scale = -scale;
+    }
+    coeffs = coeffs.iter().map(|c| c.scale(&scale)).collect();
     let p = BiPoly { coeffs };
     check_charpoly(fam, &p)?;
     Ok(p)
@@ -208,6 +270,9 @@ fn interpolate_at_good_points(
         ys.push(f(&v)?);
         xs.push(v);
     }
+    if i == xs.len() {
+        return Ok(interpolate_consecutive(&ys));
+    }
     Ok(interpolate(&xs, &ys))
 }
 
@@ -226,11 +291,12 @@ pub fn hurwitz_delta_n1(p: &BiPoly) -> Result<Poly<Q>> {
     let bound = (n - 1) * p.deg_v();
     interpolate_at_good_points(&Poly::one(Q), bound, |v| {
         let h = hurwitz_matrix(&Q, p.at(v).coeffs(), n);
-        h.submatrix(0, n - 1, 0, n - 1).det()
+        det_small(h.submatrix(0, n - 1, 0, n - 1).rows())
     })
 }
 
-/// The resultant $\mathrm{Res}_x(P, \partial_x P)(v)$ (the discriminant times $\pm p_n$).
+/// The resultant $\mathrm{Res}_x(P, \partial_x P)(v)$ (the discriminant times $\pm p_n$), as
+/// the Sylvester determinant (formal degrees $n$, $n - 1$).
 ///
 /// # Errors
 /// From the resultants.
@@ -240,9 +306,12 @@ pub fn discriminant_v(p: &BiPoly) -> Result<Poly<Q>> {
         return Ok(Poly::zero(Q));
     }
     let bound = (2 * n - 1) * p.deg_v();
-    interpolate_at_good_points(&p.lead(), bound, |v| {
+    interpolate_at_good_points(&Poly::one(Q), bound, |v| {
         let f = p.at(v);
-        Ok(f.resultant(&f.derivative()))
+        let fc: Vec<Rational> = (0..=n).map(|k| f.coeff(k)).collect();
+        let g = f.derivative();
+        let gc: Vec<Rational> = (0..n).map(|k| g.coeff(k)).collect();
+        subresultant_coeff(&fc, n, &gc, n - 1, 0, 0)
     })
 }
 
@@ -277,7 +346,44 @@ pub fn subresultant_coeff(
         rows.push(cols.iter().map(|&pw| coef(g, pw as i64 - s as i64)).collect());
     }
     debug_assert_eq!(rows.len(), size);
-    Matrix::from_rows(Q, rows)?.det()
+    det_small(rows)
+}
+
+/// Determinant of a small rational matrix: fraction-free Bareiss elimination over the
+/// integers when every entry is an integer (no gcds), else [`Matrix::det`].
+pub fn det_small(rows: Vec<Vec<Rational>>) -> Result<Rational> {
+    use num_bigint::BigInt;
+    let n = rows.len();
+    if n == 0 {
+        return Ok(Rational::one());
+    }
+    if !rows.iter().flatten().all(|x| x.is_integer()) {
+        return Matrix::from_rows(Q, rows)?.det();
+    }
+    let mut a: Vec<Vec<BigInt>> = rows
+        .into_iter()
+        .map(|r| r.into_iter().map(|x| x.to_integer()).collect())
+        .collect();
+    let mut prev = BigInt::one();
+    let mut sign = 1;
+    for k in 0..n - 1 {
+        if a[k][k].is_zero() {
+            let Some(i) = (k + 1..n).find(|&i| !a[i][k].is_zero()) else {
+                return Ok(Rational::zero());
+            };
+            a.swap(k, i);
+            sign = -sign;
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let t = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
+                a[i][j] = t / &prev;
+            }
+        }
+        prev = a[k][k].clone();
+    }
+    let d = a[n - 1][n - 1].clone() * sign;
+    Ok(Rational::from_integer(d))
 }
 
 /// The first subresultant $S_1(x, v) = s_{1,1}(v) x + s_{1,0}(v)$ of $P$ and
@@ -337,5 +443,9 @@ mod tests {
         let xs: Vec<Rational> = (0..4).map(int).collect();
         let ys: Vec<Rational> = xs.iter().map(|x| f.eval(x)).collect();
         assert_eq!(interpolate(&xs, &ys), f);
+        assert_eq!(interpolate_consecutive(&ys), f);
+        let g = Poly::<Q>::from_i64s(&[0, 1, 1]).scale(&Rational::new(1.into(), 2.into()));
+        let ys: Vec<Rational> = (0..5).map(|i| g.eval(&int(i))).collect();
+        assert_eq!(interpolate_consecutive(&ys), g);
     }
 }

@@ -300,12 +300,12 @@ fn structure_general(
     Ok(out)
 }
 
-/// A rational within $2^{-200}$ of the real algebraic number `r`.
+/// A rational within $2^{-80}$ of the real algebraic number `r`.
 fn rational_near(r: &AlgebraicNumber) -> Result<Rational> {
     if let Some(q) = r.to_rational() {
         return Ok(q);
     }
-    let w = Rational::new(1.into(), num_bigint::BigInt::one() << 200usize);
+    let w = Rational::new(1.into(), num_bigint::BigInt::one() << 80usize);
     let (lo, hi) = r.refined(&w)?.interval().unwrap_or_default();
     Ok((lo + hi) / Rational::from_integer(2.into()))
 }
@@ -372,24 +372,14 @@ fn structure_at(kn: &Known<'_>, k: &NumberField, r: &AlgebraicNumber) -> Result<
         let rep = out.iter().any(|e| e.multiplicity > 1);
         return Ok((out, rep));
     }
-    let inv = k.inv(&s11).ok_or(Error::DivisionByZero)?;
-    let lambda = k.neg(&k.mul(&k.elem_from_poly(&kn.s1.1), &inv));
-    let pk = kn.p.at_nf(k);
-    if !k.is_zero(&pk.eval(&lambda)) || !k.is_zero(&pk.derivative().eval(&lambda)) {
-        return Err(Error::Verification(
-            "the repeated eigenvalue from the subresultant is not a double root".into(),
-        ));
-    }
-    let a = kn.fam.state_matrix_nf(k)?;
-    let n = a.nrows();
-    let mut shifted = a;
-    for i in 0..n {
-        let d = k.sub(shifted.get(i, i), &lambda);
-        shifted.set(i, i, d);
-    }
-    let geometric = n - shifted.rank();
-    let blocks = if geometric == 1 { vec![2] } else { vec![1, 1] };
-    let lq = k.elem_to_poly(&lambda).eval(&vq);
+    // By the fundamental theorem of subresultants, f | disc and s11(v0) != 0 give
+    // gcd(P, P') = s11 x + s10 at v0: exactly one double eigenvalue lambda = -s10/s11.
+    // Its Jordan structure: rank(A - lambda I) = rank(s11 A + s10 I) = n - 1 iff one block.
+    let blocks = match double_blocks_mod_p(kn, f)? {
+        Some(b) => b,
+        None => double_blocks_exact(kn, k)?,
+    };
+    let lq = -kn.s1.1.eval(&vq) / kn.s1.0.eval(&vq);
     let l = rational_to_f64(&lq);
     // the two numeric roots nearest to lambda are the double one
     for _ in 0..2 {
@@ -400,15 +390,144 @@ fn structure_at(kn: &Known<'_>, k: &NumberField, r: &AlgebraicNumber) -> Result<
         }
     }
     let mut out: Vec<EigenvalueAt> = ev.into_iter().map(simple).collect();
-    let shown = k.elem_to_poly(&lambda).to_string_var("t");
+    let shown = format!(
+        "-({})/({})",
+        kn.s1.1.rem(f).to_string_var("t"),
+        kn.s1.0.rem(f).to_string_var("t")
+    );
     out.push(EigenvalueAt {
         approx: (l, 0.0),
         multiplicity: 2,
         blocks,
-        factor: if shown.len() <= 400 { format!("x - ({shown})") } else { String::new() },
+        factor: if shown.len() <= 400 { format!("x - {shown}") } else { String::new() },
     });
     sort_eigs(&mut out);
     Ok((out, true))
+}
+
+/// Does the singular matrix `b` over $\mathbb{Q}(v_0)$ have rank $n - 1$, i.e. a nonzero
+/// $(n-1)$-minor? Minors are tried in the order of their float magnitude (guidance only)
+/// and computed exactly and division-free (no inversions in $\mathbb{Q}(v_0)$); above
+/// $n = 7$ the exact rank is used instead.
+fn has_nonzero_minor(b: &Matrix<NumberField>) -> Result<bool> {
+    let n = b.nrows();
+    if n <= 1 {
+        return Ok(n == 1 && b.rank() == 0);
+    }
+    if n > 7 {
+        return Ok(b.rank() == n - 1);
+    }
+    let k = b.field().clone();
+    let approx = b.to_approx_complex();
+    let mut order: Vec<(usize, usize, f64)> = vec![];
+    for i in 0..n {
+        for j in 0..n {
+            let m = nalgebra::DMatrix::from_fn(n - 1, n - 1, |r, c| {
+                let rr = if r < i { r } else { r + 1 };
+                let cc = if c < j { c } else { c + 1 };
+                approx[rr][cc].0
+            });
+            order.push((i, j, m.determinant().abs()));
+        }
+    }
+    order.sort_by(|x, y| y.2.total_cmp(&x.2));
+    for (i, j, _) in order {
+        let rows: Vec<usize> = (0..n).filter(|&r| r != i).collect();
+        let cols: Vec<usize> = (0..n).filter(|&c| c != j).collect();
+        let sub: Vec<Vec<NfElem>> = rows
+            .iter()
+            .map(|&r| cols.iter().map(|&c| b.get(r, c).clone()).collect())
+            .collect();
+        if !k.is_zero(&det_laplace(&k, &sub)) {
+            return Ok(true);
+        }
+    }
+    Ok(false)
+}
+
+/// Determinant by Laplace expansion along the first row (division-free; small sizes).
+fn det_laplace<K: Field>(k: &K, m: &[Vec<K::Elem>]) -> K::Elem {
+    let n = m.len();
+    match n {
+        0 => k.one(),
+        1 => m[0][0].clone(),
+        2 => k.sub(&k.mul(&m[0][0], &m[1][1]), &k.mul(&m[0][1], &m[1][0])),
+        _ => {
+            let mut acc = k.zero();
+            for j in 0..n {
+                if k.is_zero(&m[0][j]) {
+                    continue;
+                }
+                let minor: Vec<Vec<K::Elem>> = m[1..]
+                    .iter()
+                    .map(|r| {
+                        r.iter()
+                            .enumerate()
+                            .filter(|(c, _)| *c != j)
+                            .map(|(_, x)| x.clone())
+                            .collect()
+                    })
+                    .collect();
+                let t = k.mul(&m[0][j], &det_laplace(k, &minor));
+                acc = if j % 2 == 0 { k.add(&acc, &t) } else { k.sub(&acc, &t) };
+            }
+            acc
+        }
+    }
+}
+
+/// Jordan blocks of the double eigenvalue from a reduction modulo a prime: `Some([2])` when
+/// $s_{1,1} A + s_{1,0} I$ has rank $n - 1$ modulo $p$ (hence over $\mathbb{Q}(v_0)$),
+/// after checking $P(\lambda) \equiv P'(\lambda) \equiv 0$; `None` when undecided.
+fn double_blocks_mod_p(kn: &Known<'_>, f: &Poly<Q>) -> Result<Option<Vec<usize>>> {
+    use super::modp::{poly_at, rank_mod, root_mod_p, state_matrix_mod};
+    for skip in 0..3 {
+        let Some((p, t0)) = root_mod_p(f, skip) else {
+            return Ok(None);
+        };
+        let (Some(s11), Some(s10)) = (poly_at(&kn.s1.0, t0, p), poly_at(&kn.s1.1, t0, p)) else {
+            continue;
+        };
+        let Some(a) = state_matrix_mod(kn.fam, t0, p) else {
+            continue;
+        };
+        if s11 == 0 {
+            continue;
+        }
+        // P(lambda) = P'(lambda) = 0 mod p (a necessary condition, checked)
+        let lam = (p - s10) * super::modp::rational_mod(&Rational::new(1.into(), s11.into()), p).unwrap_or(0) % p;
+        let pc: Option<Vec<u64>> = kn.p.coeffs.iter().map(|c| poly_at(c, t0, p)).collect();
+        let Some(pc) = pc else { continue };
+        let ev = |cs: &[u64]| cs.iter().rev().fold(0u64, |acc, c| (acc * lam + c) % p);
+        let dc: Vec<u64> = pc.iter().enumerate().skip(1).map(|(i, c)| c * (i as u64) % p).collect();
+        if ev(&pc) != 0 || ev(&dc) != 0 {
+            return Err(Error::Verification(
+                "the repeated eigenvalue from the subresultant is not a double root mod p".into(),
+            ));
+        }
+        let n = a.len();
+        let b: Vec<Vec<u64>> = (0..n)
+            .map(|i| (0..n).map(|j| (a[i][j] * s11 + if i == j { s10 } else { 0 }) % p).collect())
+            .collect();
+        if rank_mod(b, p) == n - 1 {
+            return Ok(Some(vec![2]));
+        }
+    }
+    Ok(None)
+}
+
+/// Jordan blocks of the double eigenvalue over $\mathbb{Q}(v_0)$ exactly (slow path).
+fn double_blocks_exact(kn: &Known<'_>, k: &NumberField) -> Result<Vec<usize>> {
+    let s11 = k.elem_from_poly(&kn.s1.0);
+    let s10 = k.elem_from_poly(&kn.s1.1);
+    let a = kn.fam.state_matrix_nf(k)?;
+    let n = a.nrows();
+    let mut shifted = a.scale(&s11);
+    for i in 0..n {
+        let d = k.add(shifted.get(i, i), &s10);
+        shifted.set(i, i, d);
+    }
+    Ok(if has_nonzero_minor(&shifted)? { vec![2] } else { vec![1, 1] })
 }
 
 fn sort_eigs(out: &mut [EigenvalueAt]) {

@@ -16,6 +16,7 @@ pub mod bivar;
 pub mod critical;
 pub mod family;
 pub mod hurwitz;
+pub mod modp;
 pub mod ratfunc;
 pub mod sweep;
 
