@@ -37,6 +37,8 @@ mod realization;
 mod realization_planted;
 #[path = "scb.rs"]
 mod scb;
+#[path = "study.rs"]
+mod study;
 
 /// Every `tests/*.rs` file (other than this one) is mounted above: Cargo's automatic test
 /// discovery is off (`autotests = false`), so an unlisted file would silently not run.

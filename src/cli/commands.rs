@@ -20,6 +20,38 @@ use std::path::Path;
 pub fn execute(cmd: &Command) -> Result<Outcome, Failure> {
     match cmd {
         Command::Poly { op } => poly(op).map(Outcome::plain),
+        Command::Sweep {
+            file,
+            param,
+            from,
+            to,
+            points,
+            svg,
+            locus_svg,
+            csv,
+        } => super::sweep::run(&super::sweep::SweepArgs {
+            file,
+            param,
+            from: *from,
+            to: *to,
+            points: *points,
+            svg: svg.as_deref(),
+            locus_svg: locus_svg.as_deref(),
+            csv: csv.as_deref(),
+        }),
+        Command::Critical {
+            file,
+            param,
+            from,
+            to,
+            digits,
+        } => super::critical::run(&super::critical::CriticalArgs {
+            file,
+            param,
+            from,
+            to,
+            digits: *digits,
+        }),
         Command::Analyze { file } => {
             let l = load_or_builtin(file.as_deref())?;
             l.run(Analyze)
@@ -115,7 +147,10 @@ impl SystemVisitor for FileCommand<'_> {
             Command::Linalg { op, .. } => linalg(*op, &t.a_raw, path).map(Outcome::plain),
             Command::Minreal { method, .. } => minreal(f, t, *method, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
-            Command::Poly { .. } | Command::Analyze { .. } => {
+            Command::Poly { .. }
+            | Command::Analyze { .. }
+            | Command::Sweep { .. }
+            | Command::Critical { .. } => {
                 unreachable!("dispatched in execute")
             }
         }

@@ -8,6 +8,8 @@
 
 mod analyze;
 mod commands;
+mod critical;
+mod sweep;
 mod float_cmds;
 
 use crate::error::Error;
@@ -117,6 +119,41 @@ pub enum Command {
         svg: Option<PathBuf>,
         #[arg(long)]
         csv: Option<PathBuf>,
+    },
+    /// Eigenvalues along one parameter (float, parallel), with plots.
+    Sweep {
+        file: PathBuf,
+        /// The parameter swept (its value in the file is overridden).
+        #[arg(long)]
+        param: String,
+        #[arg(long, allow_hyphen_values = true)]
+        from: f64,
+        #[arg(long, allow_hyphen_values = true)]
+        to: f64,
+        #[arg(long, default_value_t = 200)]
+        points: usize,
+        /// Real and imaginary parts against the parameter.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+        /// Root locus in the complex plane.
+        #[arg(long)]
+        locus_svg: Option<PathBuf>,
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
+    /// Exact critical values of one parameter and the intervals between them.
+    Critical {
+        file: PathBuf,
+        #[arg(long)]
+        param: String,
+        /// Exact number (decimal or fraction).
+        #[arg(long, allow_hyphen_values = true)]
+        from: String,
+        #[arg(long, allow_hyphen_values = true)]
+        to: String,
+        /// Correct digits of the displayed critical values.
+        #[arg(long, default_value_t = 20)]
+        digits: usize,
     },
     /// Run the float path beside the exact path and compare.
     Check { file: PathBuf },
