@@ -16,8 +16,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/bicycle-whipple.json");
     let fam = ParamFamily::from_file(&path, "v")?;
     let t = std::time::Instant::now();
-    let cv = critical_values(&fam, &Rational::from_integer(0.into()), &Rational::from_integer(10.into()))?;
-    println!("critical speeds on [0, 10] m/s ({:.1} ms, verified: {}):", t.elapsed().as_secs_f64() * 1e3, cv.verified);
+    let cv = critical_values(
+        &fam,
+        &Rational::from_integer(0.into()),
+        &Rational::from_integer(10.into()),
+    )?;
+    println!(
+        "critical speeds on [0, 10] m/s ({:.1} ms, verified: {}):",
+        t.elapsed().as_secs_f64() * 1e3,
+        cv.verified
+    );
     for c in &cv.critical {
         let (d, _) = c.value.digits(30);
         println!("  v = {d:<34} {}", c.kind.name());
@@ -30,7 +38,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     for (r, why) in &cv.rejected {
-        println!("  rejected root of the Hurwitz determinant v = {}: {why}", r.digits(12).0);
+        println!(
+            "  rejected root of the Hurwitz determinant v = {}: {why}",
+            r.digits(12).0
+        );
     }
     println!("intervals:");
     for iv in &cv.intervals {
@@ -45,11 +56,22 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let stable: Vec<_> = cv.intervals.iter().filter(|i| i.stable).collect();
     for s in &stable {
-        println!("self-stable speed range: {} < v < {} m/s", s.from.digits(30).0, s.to.digits(30).0);
+        println!(
+            "self-stable speed range: {} < v < {} m/s",
+            s.from.digits(30).0,
+            s.to.digits(30).0
+        );
     }
-    let weave = cv.critical.iter().find(|c| c.kind == CriticalKind::ImaginaryPair);
+    let weave = cv
+        .critical
+        .iter()
+        .find(|c| c.kind == CriticalKind::ImaginaryPair);
     if let Some(w) = weave {
-        println!("weave speed {} m/s, weave frequency {:.6} rad/s", w.value.digits(30).0, w.omega.unwrap_or(f64::NAN));
+        println!(
+            "weave speed {} m/s, weave frequency {:.6} rad/s",
+            w.value.digits(30).0,
+            w.omega.unwrap_or(f64::NAN)
+        );
     }
     let vals = sweep_values(0.0, 10.0, 401);
     let sw = sweep(&fam, &vals, None)?;
@@ -60,7 +82,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .iter()
         .map(|c| (c.value.approx().0, c.kind.name().replace('_', " ")))
         .collect();
-    std::fs::write(&out, exactlti::report::plot::sweep::sweep_svg(&sw, &title, "v [m/s]", &marks))?;
+    std::fs::write(
+        &out,
+        exactlti::report::plot::sweep::sweep_svg(&sw, &title, "v [m/s]", &marks),
+    )?;
     println!("sweep plot: {}", out.display());
     Ok(())
 }

@@ -51,14 +51,29 @@ fn bicycle_critical_speeds_match_the_benchmark() {
     );
     let digits: Vec<String> = cv.critical.iter().map(|c| c.value.digits(14).0).collect();
     // exact values for the printed matrices, 14 significant digits
-    assert_eq!(digits, ["0.68428307889245", "4.2923825363411", "6.0242620153884"]);
-    for (c, want) in cv.critical.iter().zip([PUBLISHED_VD, PUBLISHED_VW, PUBLISHED_VC]) {
+    assert_eq!(
+        digits,
+        ["0.68428307889245", "4.2923825363411", "6.0242620153884"]
+    );
+    for (c, want) in cv
+        .critical
+        .iter()
+        .zip([PUBLISHED_VD, PUBLISHED_VW, PUBLISHED_VC])
+    {
         let got = c.value.approx().0;
-        assert!((got - want).abs() < 2e-13, "{:?}: {got} vs published {want}", c.kind);
+        assert!(
+            (got - want).abs() < 2e-13,
+            "{:?}: {got} vs published {want}",
+            c.kind
+        );
     }
     // at v_d the weave pair meets on the real axis in ONE Jordan block of size 2
     let vd = &cv.critical[0];
-    let double: Vec<_> = vd.eigenvalues_at.iter().filter(|e| e.multiplicity == 2).collect();
+    let double: Vec<_> = vd
+        .eigenvalues_at
+        .iter()
+        .filter(|e| e.multiplicity == 2)
+        .collect();
     assert_eq!(double.len(), 1);
     assert_eq!(double[0].blocks, [2]);
     assert!((double[0].approx.0 - 3.782_904_051_293).abs() < 1e-9);
@@ -96,7 +111,11 @@ fn charpoly_and_conditions_agree_with_direct_computation() {
         let pv = p.at(&v);
         assert_eq!(pv.monic(), chi, "v = {s}");
         let h = hurwitz_matrix(&Q, pv.coeffs(), 4);
-        assert_eq!(delta.eval(&v), h.submatrix(0, 3, 0, 3).det().unwrap(), "v = {s}");
+        assert_eq!(
+            delta.eval(&v),
+            h.submatrix(0, 3, 0, 3).det().unwrap(),
+            "v = {s}"
+        );
         assert_eq!(disc.eval(&v), pv.resultant(&pv.derivative()), "v = {s}");
     }
 }
@@ -128,7 +147,10 @@ fn damped_oscillator_textbook() {
     );
     assert!((cv.critical[0].omega.unwrap() - 1.0).abs() < 1e-12);
     let d = &cv.critical[1].eigenvalues_at;
-    assert_eq!((d.len(), d[0].multiplicity, d[0].blocks.clone()), (1, 2, vec![2]));
+    assert_eq!(
+        (d.len(), d[0].multiplicity, d[0].blocks.clone()),
+        (1, 2, vec![2])
+    );
     let st: Vec<bool> = cv.intervals.iter().map(|i| i.stable).collect();
     assert_eq!(st, [false, true, true]);
     assert_eq!(cv.intervals[0].counts.complex_pairs_unstable, 1);
@@ -162,7 +184,10 @@ fn derogatory_double_eigenvalue_has_two_blocks() {
     let cv = critical_values(&fam, &q("0"), &q("2")).unwrap();
     assert_eq!(cv.singular.len(), 1);
     assert_eq!(cv.intervals.len(), 2);
-    assert_eq!((cv.intervals[0].stable, cv.intervals[1].stable), (true, false));
+    assert_eq!(
+        (cv.intervals[0].stable, cv.intervals[1].stable),
+        (true, false)
+    );
 }
 
 #[test]
@@ -171,7 +196,10 @@ fn sweep_agrees_with_exact_eigenvalue_counts() {
     let vals = sweep_values(0.0, 10.0, 101);
     let sw = sweep(&fam, &vals, None).unwrap();
     let cv = critical_values(&fam, &q("0"), &q("10")).unwrap();
-    let (vw, vc) = (cv.critical[1].value.approx().0, cv.critical[2].value.approx().0);
+    let (vw, vc) = (
+        cv.critical[1].value.approx().0,
+        cv.critical[2].value.approx().0,
+    );
     for (v, ev) in vals.iter().zip(&sw.eigenvalues) {
         assert_eq!(ev.len(), 4);
         let stable = ev.iter().all(|z| z.re < 0.0);
@@ -185,11 +213,24 @@ fn sweep_agrees_with_exact_eigenvalue_counts() {
 fn cli_critical_and_sweep() {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/bicycle-whipple.json");
     let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(["critical", file.to_str().unwrap(), "--param", "v", "--from", "0", "--to", "10"])
+        .args([
+            "critical",
+            file.to_str().unwrap(),
+            "--param",
+            "v",
+            "--from",
+            "0",
+            "--to",
+            "10",
+        ])
         .args(["--format", "json", "--digits", "14"])
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let cvs = j["critical_values"].as_array().unwrap();
     assert_eq!(cvs[1]["kind"], "imaginary_pair");
@@ -200,17 +241,46 @@ fn cli_critical_and_sweep() {
     std::fs::create_dir_all(&dir).unwrap();
     let svg = dir.join("sweep.svg");
     let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(["sweep", file.to_str().unwrap(), "--param", "v", "--from", "0", "--to", "10"])
-        .args(["--points", "51", "--format", "json", "--svg", svg.to_str().unwrap()])
+        .args([
+            "sweep",
+            file.to_str().unwrap(),
+            "--param",
+            "v",
+            "--from",
+            "0",
+            "--to",
+            "10",
+        ])
+        .args([
+            "--points",
+            "51",
+            "--format",
+            "json",
+            "--svg",
+            svg.to_str().unwrap(),
+        ])
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(j["values"].as_array().unwrap().len(), 51);
     assert_eq!(j["eigenvalues_approx"][0].as_array().unwrap().len(), 4);
     assert!(std::fs::read_to_string(&svg).unwrap().contains("<polyline"));
     let bad = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(["critical", file.to_str().unwrap(), "--param", "v", "--from", "x", "--to", "1"])
+        .args([
+            "critical",
+            file.to_str().unwrap(),
+            "--param",
+            "v",
+            "--from",
+            "x",
+            "--to",
+            "1",
+        ])
         .output()
         .unwrap();
     assert_eq!(bad.status.code(), Some(2));

@@ -27,7 +27,10 @@ fn bound(s: &str, what: &str) -> Result<Rational, Failure> {
 
 fn number(a: &AlgebraicNumber, digits: usize) -> Report {
     // isolating interval refined to about the displayed precision
-    let w = Rational::new(1.into(), num_bigint::BigInt::from(10).pow(digits.min(60) as u32));
+    let w = Rational::new(
+        1.into(),
+        num_bigint::BigInt::from(10).pow(digits.min(60) as u32),
+    );
     let a = &a.refined(&w).unwrap_or_else(|_| a.clone());
     let (lo, hi) = a.interval().unwrap_or_default();
     Report::new()
@@ -56,9 +59,15 @@ pub fn report(cv: &CriticalValues, digits: usize) -> Report {
                 .iter()
                 .map(|e| {
                     let mut o = Report::new()
-                        .list("approx", vec![Value::Float(e.approx.0), Value::Float(e.approx.1)])
+                        .list(
+                            "approx",
+                            vec![Value::Float(e.approx.0), Value::Float(e.approx.1)],
+                        )
                         .int("algebraic_multiplicity", e.multiplicity)
-                        .list("blocks", e.blocks.iter().map(|b| Value::Int(*b as i64)).collect());
+                        .list(
+                            "blocks",
+                            e.blocks.iter().map(|b| Value::Int(*b as i64)).collect(),
+                        );
                     if !e.factor.is_empty() {
                         o = o.str("factor", e.factor.clone());
                     }
@@ -114,11 +123,17 @@ pub fn report(cv: &CriticalValues, digits: usize) -> Report {
     .list("rejected", rejected)
     .list(
         "singular_values",
-        cv.singular.iter().map(|a| Value::Obj(number(a, digits))).collect(),
+        cv.singular
+            .iter()
+            .map(|a| Value::Obj(number(a, digits)))
+            .collect(),
     )
     .list(
         "persistent",
-        cv.persistent.iter().map(|k| Value::Str(k.name().into())).collect(),
+        cv.persistent
+            .iter()
+            .map(|k| Value::Str(k.name().into()))
+            .collect(),
     )
     .list("charpoly_coeffs", charpoly)
     .bool("verified", cv.verified)

@@ -9,8 +9,8 @@
 mod analyze;
 mod commands;
 mod critical;
-mod sweep;
 mod float_cmds;
+mod sweep;
 
 use crate::error::Error;
 use crate::report::Report;

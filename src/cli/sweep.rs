@@ -30,7 +30,11 @@ fn write(p: &Path, text: &str) -> Result<(), Failure> {
 
 /// Runs `sweep`.
 pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
-    if !(a.from.is_finite() && a.to.is_finite() && a.from <= a.to && (1..=1_000_000).contains(&a.points)) {
+    if !(a.from.is_finite()
+        && a.to.is_finite()
+        && a.from <= a.to
+        && (1..=1_000_000).contains(&a.points))
+    {
         return Err(Failure {
             code: 2,
             message: format!(
@@ -45,14 +49,16 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
     let bar = std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::new(values.len() as u64);
         b.set_style(
-            indicatif::ProgressStyle::with_template("sweep {bar:40} {pos}/{len} {per_sec} eta {eta}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+            indicatif::ProgressStyle::with_template(
+                "sweep {bar:40} {pos}/{len} {per_sec} eta {eta}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
         );
         b
     });
     let tick = |k: usize| {
         if let Some(b) = &bar
-            && k % 64 == 0
+            && k.is_multiple_of(64)
         {
             b.set_position(k as u64);
         }
@@ -61,13 +67,27 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
     if let Some(b) = bar {
         b.finish_and_clear();
     }
-    let name = fam.name.clone().unwrap_or_else(|| a.file.display().to_string());
+    let name = fam
+        .name
+        .clone()
+        .unwrap_or_else(|| a.file.display().to_string());
     let xlabel = format!("{} (parameter)", a.param);
     if let Some(p) = a.svg {
-        write(p, &sweep_svg(&sw, &format!("{name}: eigenvalues against {}", a.param), &xlabel, &[]))?;
+        write(
+            p,
+            &sweep_svg(
+                &sw,
+                &format!("{name}: eigenvalues against {}", a.param),
+                &xlabel,
+                &[],
+            ),
+        )?;
     }
     if let Some(p) = a.locus_svg {
-        write(p, &root_locus_svg(&sw, &format!("{name}: root locus in {}", a.param)))?;
+        write(
+            p,
+            &root_locus_svg(&sw, &format!("{name}: root locus in {}", a.param)),
+        )?;
     }
     if let Some(p) = a.csv {
         write(p, &sw.to_csv())?;

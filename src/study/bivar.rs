@@ -38,7 +38,11 @@ impl BiPoly {
     }
     /// Largest degree in $v$ of a coefficient.
     pub fn deg_v(&self) -> usize {
-        self.coeffs.iter().map(|c| c.degree().unwrap_or(0)).max().unwrap_or(0)
+        self.coeffs
+            .iter()
+            .map(|c| c.degree().unwrap_or(0))
+            .max()
+            .unwrap_or(0)
     }
     /// $P(x, v_0) \in \mathbb{Q}[x]$.
     pub fn at(&self, v0: &Rational) -> Poly<Q> {
@@ -162,7 +166,12 @@ pub fn charpoly_xv(fam: &ParamFamily) -> Result<BiPoly> {
             return Err(Error::Singular);
         };
         dx += jmax;
-        dv += r.iter().flatten().map(|x| x.degree().unwrap_or(0)).max().unwrap_or(0);
+        dv += r
+            .iter()
+            .flatten()
+            .map(|x| x.degree().unwrap_or(0))
+            .max()
+            .unwrap_or(0);
         rows.push(r);
     }
     if dx > MAX_BIDEGREE || dv > MAX_BIDEGREE {
@@ -177,7 +186,11 @@ pub fn charpoly_xv(fam: &ParamFamily) -> Result<BiPoly> {
     for vb in &vs {
         let at_v: Vec<Vec<Vec<Rational>>> = rows
             .iter()
-            .map(|r| r.iter().map(|row| row.iter().map(|p| p.eval(vb)).collect()).collect())
+            .map(|r| {
+                r.iter()
+                    .map(|row| row.iter().map(|p| p.eval(vb)).collect())
+                    .collect()
+            })
             .collect();
         let mut dets = Vec::with_capacity(dx + 1);
         for xa in &xs {
@@ -340,10 +353,18 @@ pub fn subresultant_coeff(
     };
     let mut rows: Vec<Vec<Rational>> = vec![];
     for s in (0..m - j).rev() {
-        rows.push(cols.iter().map(|&pw| coef(f, pw as i64 - s as i64)).collect());
+        rows.push(
+            cols.iter()
+                .map(|&pw| coef(f, pw as i64 - s as i64))
+                .collect(),
+        );
     }
     for s in (0..n - j).rev() {
-        rows.push(cols.iter().map(|&pw| coef(g, pw as i64 - s as i64)).collect());
+        rows.push(
+            cols.iter()
+                .map(|&pw| coef(g, pw as i64 - s as i64))
+                .collect(),
+        );
     }
     debug_assert_eq!(rows.len(), size);
     det_small(rows)

@@ -162,7 +162,9 @@ pub fn sign_at_root(k: &NumberField, e: &NfElem, r: &AlgebraicNumber) -> Result<
     }
     let mut r = r.clone();
     for _ in 0..80 {
-        let (lo, hi) = r.interval().ok_or_else(|| Error::Invalid("non-real root".into()))?;
+        let (lo, hi) = r
+            .interval()
+            .ok_or_else(|| Error::Invalid("non-real root".into()))?;
         let (a, b) = interval_horner(&p, &lo, &hi);
         if a.is_positive() {
             return Ok(Ordering::Greater);
@@ -173,7 +175,9 @@ pub fn sign_at_root(k: &NumberField, e: &NfElem, r: &AlgebraicNumber) -> Result<
         let w = (&hi - &lo) / Rational::from_integer(256.into());
         r = r.refined(&w)?;
     }
-    Err(Error::Limit("sign of an algebraic number not decided".into()))
+    Err(Error::Limit(
+        "sign of an algebraic number not decided".into(),
+    ))
 }
 
 fn interval_horner(p: &Poly<Q>, lo: &Rational, hi: &Rational) -> (Rational, Rational) {
@@ -240,7 +244,11 @@ fn approx_elem(k: &NumberField, e: &NfElem, vq: &Rational) -> f64 {
 }
 
 /// Approximate roots of a polynomial over $\mathbb{Q}(v_0)$ (companion eigenvalues).
-fn approx_roots(k: &NumberField, q: &Poly<NumberField>, v0: &Rational) -> Result<Vec<Complex<f64>>> {
+fn approx_roots(
+    k: &NumberField,
+    q: &Poly<NumberField>,
+    v0: &Rational,
+) -> Result<Vec<Complex<f64>>> {
     let c: Vec<f64> = q.coeffs().iter().map(|e| approx_elem(k, e, v0)).collect();
     let d = c.len() - 1;
     if d == 1 {
@@ -291,12 +299,21 @@ fn structure_general(
                     approx: (z.re, z.im),
                     multiplicity: mult,
                     blocks: blocks.clone(),
-                    factor: if mult > 1 { factor.clone() } else { String::new() },
+                    factor: if mult > 1 {
+                        factor.clone()
+                    } else {
+                        String::new()
+                    },
                 });
             }
         }
     }
-    out.sort_by(|x, y| x.approx.0.total_cmp(&y.approx.0).then(x.approx.1.total_cmp(&y.approx.1)));
+    out.sort_by(|x, y| {
+        x.approx
+            .0
+            .total_cmp(&y.approx.0)
+            .then(x.approx.1.total_cmp(&y.approx.1))
+    });
     Ok(out)
 }
 
@@ -356,7 +373,11 @@ fn simple(z: Complex<f64>) -> EigenvalueAt {
 /// eigenvalue (checked: $P(\lambda) = P'(\lambda) = 0$), one Jordan block of size 2 iff
 /// $\operatorname{rank}(A(v_0) - \lambda I) = n - 1$. Other cases take the general path
 /// (square-free decomposition and factorization over $\mathbb{Q}(v_0)$).
-fn structure_at(kn: &Known<'_>, k: &NumberField, r: &AlgebraicNumber) -> Result<(Vec<EigenvalueAt>, bool)> {
+fn structure_at(
+    kn: &Known<'_>,
+    k: &NumberField,
+    r: &AlgebraicNumber,
+) -> Result<(Vec<EigenvalueAt>, bool)> {
     let vq = rational_near(r)?;
     let mut ev = approx_roots_q(&kn.p.at(&vq))?;
     let f = r.minpoly();
@@ -383,9 +404,9 @@ fn structure_at(kn: &Known<'_>, k: &NumberField, r: &AlgebraicNumber) -> Result<
     let l = rational_to_f64(&lq);
     // the two numeric roots nearest to lambda are the double one
     for _ in 0..2 {
-        if let Some(i) = (0..ev.len()).min_by(|&i, &j| {
-            (ev[i] - l).norm().total_cmp(&(ev[j] - l).norm())
-        }) {
+        if let Some(i) =
+            (0..ev.len()).min_by(|&i, &j| (ev[i] - l).norm().total_cmp(&(ev[j] - l).norm()))
+        {
             ev.remove(i);
         }
     }
@@ -399,7 +420,11 @@ fn structure_at(kn: &Known<'_>, k: &NumberField, r: &AlgebraicNumber) -> Result<
         approx: (l, 0.0),
         multiplicity: 2,
         blocks,
-        factor: if shown.len() <= 400 { format!("x - {shown}") } else { String::new() },
+        factor: if shown.len() <= 400 {
+            format!("x - {shown}")
+        } else {
+            String::new()
+        },
     });
     sort_eigs(&mut out);
     Ok((out, true))
@@ -469,7 +494,11 @@ fn det_laplace<K: Field>(k: &K, m: &[Vec<K::Elem>]) -> K::Elem {
                     })
                     .collect();
                 let t = k.mul(&m[0][j], &det_laplace(k, &minor));
-                acc = if j % 2 == 0 { k.add(&acc, &t) } else { k.sub(&acc, &t) };
+                acc = if j % 2 == 0 {
+                    k.add(&acc, &t)
+                } else {
+                    k.sub(&acc, &t)
+                };
             }
             acc
         }
@@ -495,11 +524,18 @@ fn double_blocks_mod_p(kn: &Known<'_>, f: &Poly<Q>) -> Result<Option<Vec<usize>>
             continue;
         }
         // P(lambda) = P'(lambda) = 0 mod p (a necessary condition, checked)
-        let lam = (p - s10) * super::modp::rational_mod(&Rational::new(1.into(), s11.into()), p).unwrap_or(0) % p;
+        let lam = (p - s10)
+            * super::modp::rational_mod(&Rational::new(1.into(), s11.into()), p).unwrap_or(0)
+            % p;
         let pc: Option<Vec<u64>> = kn.p.coeffs.iter().map(|c| poly_at(c, t0, p)).collect();
         let Some(pc) = pc else { continue };
         let ev = |cs: &[u64]| cs.iter().rev().fold(0u64, |acc, c| (acc * lam + c) % p);
-        let dc: Vec<u64> = pc.iter().enumerate().skip(1).map(|(i, c)| c * (i as u64) % p).collect();
+        let dc: Vec<u64> = pc
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(i, c)| c * (i as u64) % p)
+            .collect();
         if ev(&pc) != 0 || ev(&dc) != 0 {
             return Err(Error::Verification(
                 "the repeated eigenvalue from the subresultant is not a double root mod p".into(),
@@ -507,7 +543,11 @@ fn double_blocks_mod_p(kn: &Known<'_>, f: &Poly<Q>) -> Result<Option<Vec<usize>>
         }
         let n = a.len();
         let b: Vec<Vec<u64>> = (0..n)
-            .map(|i| (0..n).map(|j| (a[i][j] * s11 + if i == j { s10 } else { 0 }) % p).collect())
+            .map(|i| {
+                (0..n)
+                    .map(|j| (a[i][j] * s11 + if i == j { s10 } else { 0 }) % p)
+                    .collect()
+            })
             .collect();
         if rank_mod(b, p) == n - 1 {
             return Ok(Some(vec![2]));
@@ -527,11 +567,20 @@ fn double_blocks_exact(kn: &Known<'_>, k: &NumberField) -> Result<Vec<usize>> {
         let d = k.add(shifted.get(i, i), &s10);
         shifted.set(i, i, d);
     }
-    Ok(if has_nonzero_minor(&shifted)? { vec![2] } else { vec![1, 1] })
+    Ok(if has_nonzero_minor(&shifted)? {
+        vec![2]
+    } else {
+        vec![1, 1]
+    })
 }
 
 fn sort_eigs(out: &mut [EigenvalueAt]) {
-    out.sort_by(|x, y| x.approx.0.total_cmp(&y.approx.0).then(x.approx.1.total_cmp(&y.approx.1)));
+    out.sort_by(|x, y| {
+        x.approx
+            .0
+            .total_cmp(&y.approx.0)
+            .then(x.approx.1.total_cmp(&y.approx.1))
+    });
 }
 
 /// Is there a purely imaginary pair at $v_0$? `Some((omega, certified))` or `None` with the
@@ -581,8 +630,12 @@ fn imaginary_pair_at(
 pub fn rational_between(a: &AlgebraicNumber, b: &AlgebraicNumber) -> Result<Rational> {
     let (mut a, mut b) = (a.clone(), b.clone());
     for _ in 0..200 {
-        let (_, ahi) = a.interval().ok_or_else(|| Error::Invalid("non-real".into()))?;
-        let (blo, _) = b.interval().ok_or_else(|| Error::Invalid("non-real".into()))?;
+        let (_, ahi) = a
+            .interval()
+            .ok_or_else(|| Error::Invalid("non-real".into()))?;
+        let (blo, _) = b
+            .interval()
+            .ok_or_else(|| Error::Invalid("non-real".into()))?;
         if ahi < blo {
             return Ok(simplest_between(&ahi, &blo));
         }
@@ -596,7 +649,9 @@ pub fn rational_between(a: &AlgebraicNumber, b: &AlgebraicNumber) -> Result<Rati
         a = half(&a)?;
         b = half(&b)?;
     }
-    Err(Error::Limit("could not separate two critical values".into()))
+    Err(Error::Limit(
+        "could not separate two critical values".into(),
+    ))
 }
 
 /// A short rational in the open interval $(a, b)$: the continued-fraction simplest one.
@@ -623,14 +678,7 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
     if a > b {
         return Err(Error::Invalid(format!("empty range: from {a} > to {b}")));
     }
-    let t0 = std::time::Instant::now();
-    let tm = |w: &str| {
-        if std::env::var_os("EXACTLTI_TIMING").is_some() {
-            eprintln!("{w}: {:.1} ms", t0.elapsed().as_secs_f64() * 1e3);
-        }
-    };
     let p = charpoly_xv(fam)?;
-    tm("charpoly");
     let conditions = vec![
         (CriticalKind::ZeroEigenvalue, p.coeffs[0].clone()),
         (CriticalKind::ImaginaryPair, hurwitz_delta_n1(&p)?),
@@ -647,7 +695,6 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
     for d in fam.denominators() {
         sing_poly = sing_poly.mul(&d);
     }
-    tm("conditions");
     let singular = real_roots_in(&sing_poly, a, b)?;
     let mut critical = vec![];
     let mut rejected = vec![];
@@ -661,7 +708,6 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
             continue;
         }
         let rts = real_roots_in(cond, a, b)?;
-        tm(&format!("roots of {} (degree {})", kind.name(), cond.deg()));
         for r in rts {
             if singular.contains(&r) {
                 continue;
@@ -669,7 +715,6 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
             let k = r.to_number_field();
             let pk = p.at_nf(&k);
             let (eigenvalues_at, repeated) = structure_at(&kn, &k, &r)?;
-            tm("structure");
             let (ok, omega, certified) = match kind {
                 CriticalKind::ZeroEigenvalue => (pk.coeff(0) == k.zero(), None, true),
                 CriticalKind::DoubleEigenvalue => (repeated, None, true),
@@ -682,7 +727,6 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
                 },
             };
             verified &= ok && certified;
-            tm("confirmed");
             critical.push(CriticalValue {
                 eigenvalues_at,
                 value: r,
@@ -698,9 +742,7 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
             .unwrap_or(Ordering::Equal)
             .then(x.kind.cmp(&y.kind))
     });
-    tm("structures");
     let intervals = intervals_between(&p, a, b, &critical, &singular, &mut verified)?;
-    tm("intervals");
     Ok(CriticalValues {
         param: fam.param.clone(),
         from: a.clone(),

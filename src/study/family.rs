@@ -152,7 +152,11 @@ impl ParamFamily {
         let ev = |m: &RatMatrix| -> Result<Matrix<K>> {
             let rows = m
                 .iter()
-                .map(|r| r.iter().map(|f| eval_in(k, f, v0)).collect::<Result<Vec<_>>>())
+                .map(|r| {
+                    r.iter()
+                        .map(|f| eval_in(k, f, v0))
+                        .collect::<Result<Vec<_>>>()
+                })
                 .collect::<Result<Vec<_>>>()?;
             if rows.is_empty() {
                 return Ok(Matrix::zeros(k.clone(), 0, 0));
@@ -263,7 +267,11 @@ impl ParamFamily {
         let get = |k: &str| top.iter().find(|(n, _)| n == k).map(|(_, v)| v);
         let params: Vec<(String, Raw)> = match get("parameters") {
             Some(Raw::Table(kv)) => kv.clone(),
-            Some(_) => return Err(Error::Invalid(format!("{file}: key parameters: expected a table"))),
+            Some(_) => {
+                return Err(Error::Invalid(format!(
+                    "{file}: key parameters: expected a table"
+                )));
+            }
             None => vec![],
         };
         if !crate::io::expr::is_parameter_name(param) {
@@ -431,7 +439,11 @@ impl Resolver<'_> {
                 row.iter()
                     .enumerate()
                     .map(|(j, x)| {
-                        self.scalar(x, &format!("key {key}, row {}, column {}", i + 1, j + 1), true)
+                        self.scalar(
+                            x,
+                            &format!("key {key}, row {}, column {}", i + 1, j + 1),
+                            true,
+                        )
                     })
                     .collect()
             })

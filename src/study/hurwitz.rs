@@ -26,7 +26,9 @@ pub fn hurwitz_matrix<K: Field>(k: &K, c: &[K::Elem], n: usize) -> Matrix<K> {
             c.get(n - j as usize).cloned().unwrap_or_else(|| k.zero())
         }
     };
-    Matrix::from_fn(k.clone(), n, n, |i, j| a(2 * (j as i64 + 1) - (i as i64 + 1)))
+    Matrix::from_fn(k.clone(), n, n, |i, j| {
+        a(2 * (j as i64 + 1) - (i as i64 + 1))
+    })
 }
 
 /// Routh–Hurwitz: are all roots of `p` (degree $\ge 1$) in the open left half-plane?
@@ -35,7 +37,11 @@ pub fn hurwitz_matrix<K: Field>(k: &K, c: &[K::Elem], n: usize) -> Matrix<K> {
 /// From the determinants.
 pub fn hurwitz_stable(p: &Poly<Q>) -> Result<bool> {
     let n = p.deg();
-    let p = if p.lc().is_negative() { p.neg() } else { p.clone() };
+    let p = if p.lc().is_negative() {
+        p.neg()
+    } else {
+        p.clone()
+    };
     let h = hurwitz_matrix(&Q, p.coeffs(), n);
     for k in 1..=n {
         if h.submatrix(0, k, 0, k).det()? <= Rational::zero() {
@@ -154,7 +160,9 @@ pub fn root_counts_isolated(p: &Poly<Q>) -> Result<RootCounts> {
     for (z, m) in roots(p)? {
         if z.is_real() {
             let s = z
-                .partial_cmp(&crate::algebraic::AlgebraicNumber::from_rational(&Rational::zero()))
+                .partial_cmp(&crate::algebraic::AlgebraicNumber::from_rational(
+                    &Rational::zero(),
+                ))
                 .unwrap_or(Ordering::Equal);
             match s {
                 Ordering::Less => c.real_negative += m,
@@ -198,12 +206,24 @@ mod tests {
         // (x^2 - 2x + 5)(x - 3) x^2
         let p = Poly::from_i64s(&[5, -2, 1]).mul(&Poly::from_i64s(&[-3, 1]));
         let c = root_counts(&p.shift(2)).unwrap();
-        assert_eq!((c.zero, c.real_positive, c.complex_pairs_unstable), (2, 1, 1));
+        assert_eq!(
+            (c.zero, c.real_positive, c.complex_pairs_unstable),
+            (2, 1, 1)
+        );
         assert_eq!(c.unstable(), 3);
         // the Routh path and the isolation path agree
-        for cs in [[6i64, 11, 6, 1, 0], [5, -2, 1, 3, 1], [-3, 1, 4, 1, 2], [7, 0, 2, -1, 1]] {
+        for cs in [
+            [6i64, 11, 6, 1, 0],
+            [5, -2, 1, 3, 1],
+            [-3, 1, 4, 1, 2],
+            [7, 0, 2, -1, 1],
+        ] {
             let p = Poly::from_i64s(&cs);
-            assert_eq!(root_counts(&p).unwrap(), root_counts_isolated(&p).unwrap(), "{p}");
+            assert_eq!(
+                root_counts(&p).unwrap(),
+                root_counts_isolated(&p).unwrap(),
+                "{p}"
+            );
         }
     }
 }

@@ -27,7 +27,7 @@ fn pow_mod(mut b: u64, mut e: u64, p: u64) -> u64 {
 }
 
 fn inv_mod(a: u64, p: u64) -> Option<u64> {
-    (a % p != 0).then(|| pow_mod(a, p - 2, p))
+    (!a.is_multiple_of(p)).then(|| pow_mod(a, p - 2, p))
 }
 
 fn int_mod(n: &BigInt, p: u64) -> u64 {
@@ -112,10 +112,14 @@ fn mat_at(m: &RatMatrix, t0: u64, p: u64) -> Option<Vec<Vec<u64>>> {
 /// $X^{-1} Y$ over $\mathbb{F}_p$ (Gauss–Jordan), `None` when $X$ is singular.
 fn solve_mod(x: Vec<Vec<u64>>, y: Vec<Vec<u64>>, p: u64) -> Option<Vec<Vec<u64>>> {
     let n = x.len();
-    let mut a: Vec<Vec<u64>> = x.into_iter().zip(y).map(|(mut r, s)| {
-        r.extend(s);
-        r
-    }).collect();
+    let mut a: Vec<Vec<u64>> = x
+        .into_iter()
+        .zip(y)
+        .map(|(mut r, s)| {
+            r.extend(s);
+            r
+        })
+        .collect();
     let w = a.first().map_or(0, Vec::len);
     for c in 0..n {
         let piv = (c..n).find(|&i| a[i][c] != 0)?;

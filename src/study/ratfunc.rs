@@ -196,7 +196,9 @@ fn lex(text: &str) -> Result<Vec<Tok>> {
             out.push(Tok::Op(c));
             i += 1;
         } else {
-            return Err(Error::Invalid(format!("unexpected character '{c}' in '{text}'")));
+            return Err(Error::Invalid(format!(
+                "unexpected character '{c}' in '{text}'"
+            )));
         }
     }
     Ok(out)
@@ -274,11 +276,17 @@ impl Parser<'_> {
             return Ok(base);
         }
         let e = self.unary()?;
-        let Some(n) = e.is_poly().then(|| e.num.coeff(0)).filter(|_| e.num.deg() == 0) else {
+        let Some(n) = e
+            .is_poly()
+            .then(|| e.num.coeff(0))
+            .filter(|_| e.num.deg() == 0)
+        else {
             return self.bad("exponent must be an integer constant");
         };
         if !n.is_integer() || n.numer().magnitude() > &MAX_EXP.into() {
-            return self.bad(&format!("exponent must be an integer with |n| <= {MAX_EXP}"));
+            return self.bad(&format!(
+                "exponent must be an integer with |n| <= {MAX_EXP}"
+            ));
         }
         let k: i64 = n.to_integer().try_into().unwrap_or(0);
         let p = RatFunc {

@@ -207,9 +207,7 @@ mod tests {
     #[test]
     fn damped_oscillator_sweep() {
         // q'' + c q' + q = 0: eigenvalues (-c +- sqrt(c^2 - 4))/2
-        let rf = |s: &str| {
-            eval_ratfunc(s, &|n| Ok((n == "c").then(RatFunc::var))).expect("valid")
-        };
+        let rf = |s: &str| eval_ratfunc(s, &|n| Ok((n == "c").then(RatFunc::var))).expect("valid");
         let fam = ParamFamily::second_order(
             "c",
             vec![vec![rf("1")]],
@@ -222,7 +220,10 @@ mod tests {
         for (c, ev) in vals.iter().zip(&r.eigenvalues) {
             let sum = ev[0] + ev[1];
             let prod = ev[0] * ev[1];
-            assert!((sum.re + c).abs() < 1e-6 && (prod.re - 1.0).abs() < 1e-6, "c = {c}: {ev:?}");
+            assert!(
+                (sum.re + c).abs() < 1e-6 && (prod.re - 1.0).abs() < 1e-6,
+                "c = {c}: {ev:?}"
+            );
         }
         assert_eq!(r.tracks().len(), 5);
     }

@@ -201,7 +201,11 @@ impl Svg {
 
     /// A polyline through the points (NaN points break the line).
     pub fn polyline(&mut self, p: &Panel, pts: &[(f64, f64)], color: &str, width: f64, dash: bool) {
-        let dash = if dash { r#" stroke-dasharray="6,3""# } else { "" };
+        let dash = if dash {
+            r#" stroke-dasharray="6,3""#
+        } else {
+            ""
+        };
         let mut seg: Vec<String> = vec![];
         let flush = |seg: &mut Vec<String>, s: &mut String| {
             if seg.len() >= 2 {
@@ -306,7 +310,11 @@ impl Svg {
         );
         for (k, (label, color, dash)) in items.iter().enumerate() {
             let yy = y + 14.0 + 16.0 * k as f64;
-            let d = if *dash { r#" stroke-dasharray="6,3""# } else { "" };
+            let d = if *dash {
+                r#" stroke-dasharray="6,3""#
+            } else {
+                ""
+            };
             let _ = writeln!(
                 self.s,
                 r#"<line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{color}" stroke-width="2"{d}/><text x="{:.1}" y="{:.1}">{}</text>"#,
@@ -340,7 +348,9 @@ impl Svg {
 pub fn finite_range(xs: impl IntoIterator<Item = f64>) -> (f64, f64) {
     xs.into_iter()
         .filter(|x| x.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        })
 }
 
 #[cfg(test)]

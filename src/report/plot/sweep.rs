@@ -23,7 +23,11 @@ fn subsample(sw: &SweepResult) -> (Vec<f64>, Vec<Vec<Complex<f64>>>) {
 /// then $\pm 2.5\times$ the 90% quantile of $|x|$.
 fn robust_range(xs: &[f64]) -> (f64, f64) {
     let (lo, hi) = finite_range(xs.iter().copied());
-    let mut a: Vec<f64> = xs.iter().filter(|x| x.is_finite()).map(|x| x.abs()).collect();
+    let mut a: Vec<f64> = xs
+        .iter()
+        .filter(|x| x.is_finite())
+        .map(|x| x.abs())
+        .collect();
     if a.is_empty() {
         return (-1.0, 1.0);
     }
@@ -41,12 +45,28 @@ pub fn sweep_svg(sw: &SweepResult, title: &str, xlabel: &str, marks: &[(f64, Str
     let (w, h) = (820.0, 640.0);
     let mut svg = Svg::new(w, h, title);
     let xr = finite_range(vals.iter().copied());
-    let xr = if xr.1 > xr.0 { xr } else { (xr.0 - 1.0, xr.0 + 1.0) };
+    let xr = if xr.1 > xr.0 {
+        xr
+    } else {
+        (xr.0 - 1.0, xr.0 + 1.0)
+    };
     let res: Vec<f64> = tr.iter().flatten().map(|z| z.re).collect();
     let ims: Vec<f64> = tr.iter().flatten().map(|z| z.im.max(0.0)).collect();
-    let top = Panel { x0: 80.0, y0: 40.0, w: 700.0, h: 250.0, xr, yr: robust_range(&res), logx: false };
+    let top = Panel {
+        x0: 80.0,
+        y0: 40.0,
+        w: 700.0,
+        h: 250.0,
+        xr,
+        yr: robust_range(&res),
+        logx: false,
+    };
     let imr = robust_range(&ims);
-    let bot = Panel { y0: 320.0, yr: (0.0, imr.1.max(1e-9)), ..top.clone() };
+    let bot = Panel {
+        y0: 320.0,
+        yr: (0.0, imr.1.max(1e-9)),
+        ..top.clone()
+    };
     // stable bands
     for p in [&top, &bot] {
         let mut start: Option<f64> = None;
@@ -79,7 +99,9 @@ pub fn sweep_svg(sw: &SweepResult, title: &str, xlabel: &str, marks: &[(f64, Str
             .iter()
             .zip(&tr)
             .map(|(v, ev)| {
-                let y = ev.get(k).map_or(f64::NAN, |z| if z.im >= 0.0 { z.im } else { f64::NAN });
+                let y = ev
+                    .get(k)
+                    .map_or(f64::NAN, |z| if z.im >= 0.0 { z.im } else { f64::NAN });
                 (*v, clip(y, bot.yr))
             })
             .collect();
@@ -94,7 +116,11 @@ pub fn sweep_svg(sw: &SweepResult, title: &str, xlabel: &str, marks: &[(f64, Str
     }
     svg.legend(
         &top,
-        &[("all real parts < 0 (stable)".to_string(), "#9fd39a".to_string(), false)],
+        &[(
+            "all real parts < 0 (stable)".to_string(),
+            "#9fd39a".to_string(),
+            false,
+        )],
     );
     svg.finish()
 }
@@ -121,9 +147,8 @@ pub fn root_locus_svg(sw: &SweepResult, title: &str) -> String {
     svg.vline(&p, 0.0, "#999", None);
     for k in 0..n {
         let c = COLORS[k % COLORS.len()];
-        let inside = |z: &Complex<f64>| {
-            z.re >= p.xr.0 && z.re <= p.xr.1 && z.im >= p.yr.0 && z.im <= p.yr.1
-        };
+        let inside =
+            |z: &Complex<f64>| z.re >= p.xr.0 && z.re <= p.xr.1 && z.im >= p.yr.0 && z.im <= p.yr.1;
         let pts: Vec<(f64, f64)> = tr
             .iter()
             .map(|ev| match ev.get(k) {
