@@ -5,7 +5,8 @@ use crate::field::Field;
 use crate::float::{self, Tol, Truth, to_dmatrix};
 use crate::io::TypedSystem as Typed;
 use crate::realization::{self, MinrealMethod};
-use crate::report::plot::{Response, logspace, response_csv, response_svg};
+use crate::report::plot::bode::bode_svg;
+use crate::report::plot::{Response, logspace, response_csv};
 use crate::report::{Report, Value};
 use nalgebra::DMatrix;
 use std::path::Path;
@@ -75,10 +76,11 @@ pub fn freqresp<K: Field>(
     if let Some(p) = svg {
         std::fs::write(
             p,
-            response_svg(
+            bode_svg(
                 &freqs,
                 &table,
                 &format!("frequency response: {}", path.display()),
+                &[],
             ),
         )
         .map_err(|e| Failure {

@@ -346,10 +346,20 @@ impl Parser<'_> {
 ///
 /// # Examples
 /// ```
+/// use exactlti::field::{Rational, parse_rational};
 /// use exactlti::study::ratfunc::{RatFunc, eval_ratfunc};
-/// let f = eval_ratfunc("9.81*k + v^2/(2*v)", &|n| Ok((n == "v").then(RatFunc::var)
-///     .or_else(|| (n == "k").then(|| RatFunc::constant(2.into()))))).unwrap();
-/// assert_eq!(f.to_string(), "1/2*v + 981/50");
+/// let two = RatFunc::constant(Rational::from_integer(2.into()));
+/// let f = eval_ratfunc("9.81*k + v^2/(2*v)", &|n| {
+///     Ok(match n {
+///         "v" => Some(RatFunc::var()),
+///         "k" => Some(two.clone()),
+///         _ => None,
+///     })
+/// })
+/// .unwrap();
+/// // v/2 + 19.62, exactly
+/// assert!(f.is_poly());
+/// assert_eq!(f.eval(&parse_rational("4").unwrap()), Some(parse_rational("21.62").unwrap()));
 /// ```
 pub fn eval_ratfunc(
     text: &str,
