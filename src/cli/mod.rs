@@ -10,6 +10,7 @@ mod analyze;
 mod commands;
 mod critical;
 mod float_cmds;
+mod pencil_cmds;
 mod sweep;
 
 use crate::error::Error;
@@ -70,8 +71,18 @@ pub enum LinalgOp {
 /// Operations of `poly`.
 #[derive(Subcommand, Debug)]
 pub enum PolyCmd {
-    /// Factorization over Q into irreducibles with multiplicities.
-    Factor { expr: String },
+    /// Factorization over Q into irreducibles with multiplicities (uni- or multivariate).
+    Factor {
+        #[arg(allow_hyphen_values = true)]
+        expr: String,
+    },
+    /// Greatest common divisor of two (multivariate) polynomials over Q, with cofactors.
+    Gcd {
+        #[arg(allow_hyphen_values = true)]
+        f: String,
+        #[arg(allow_hyphen_values = true)]
+        g: String,
+    },
     /// All complex roots, certified, as exact algebraic numbers.
     Roots {
         expr: String,
@@ -95,6 +106,9 @@ pub enum Command {
         file: PathBuf,
         #[arg(long, value_enum, default_value_t = MethodArg::Kalman)]
         method: MethodArg,
+        /// Minimal DESCRIPTOR realization (improper systems accepted), with `irreducible_order`.
+        #[arg(long)]
+        descriptor: bool,
     },
     /// Descriptor system to standard state space.
     Standard { file: PathBuf },
@@ -102,8 +116,16 @@ pub enum Command {
     Scb { file: PathBuf },
     /// Mechanical normal form (second-order form of a first-order system).
     Mnf { file: PathBuf },
-    /// Invariant zeros.
+    /// Invariant zeros (with `E`: finite zeros and infinite zero orders).
     Zeros { file: PathBuf },
+    /// Kronecker structure of the pencil A - sE.
+    Pencil { file: PathBuf },
+    /// Controllability structure of (A, B) (with `E`: finite and infinite).
+    Ctrb { file: PathBuf },
+    /// Observability structure of (C, A) (with `E`: finite and infinite).
+    Obsv { file: PathBuf },
+    /// Transfer matrix in lowest terms, McMillan degree, poles and transmission zeros.
+    Tf { file: PathBuf },
     /// Modal table: eigenvalue, frequency, damping ratio, time constant, period.
     Modes { file: PathBuf },
     /// Frequency response.
