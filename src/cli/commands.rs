@@ -22,7 +22,11 @@ macro_rules! over_ground {
 pub fn execute(cmd: &Command) -> Result<Report, Failure> {
     match cmd {
         Command::Linalg { op, file } => linalg(*op, file),
-        Command::Minreal { file, method } => minreal(file, *method),
+        Command::Minreal {
+            file,
+            method,
+            hankel,
+        } => minreal(file, *method, *hankel),
         Command::Standard { file } => standard(file),
         Command::Analyze { file } => analyze(file.as_deref()),
         Command::Poly { op } => poly(op),
@@ -148,7 +152,7 @@ fn minreal_typed<K: Field>(t: &Typed<K>, m: MinrealMethod, path: &Path) -> Resul
     Ok(r.report())
 }
 
-fn minreal(file: &Path, method: MethodArg) -> Result<Report, Failure> {
+fn minreal(file: &Path, method: MethodArg, hankel: Option<usize>) -> Result<Report, Failure> {
     let l = load_system(file)?;
     if method == MethodArg::Jordan {
         let t = l.rational("the Jordan-form method")?;
@@ -161,7 +165,7 @@ fn minreal(file: &Path, method: MethodArg) -> Result<Report, Failure> {
         MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
         MethodArg::HoKalman => MinrealMethod::HoKalman,
         MethodArg::Jordan => MinrealMethod::Jordan,
-        MethodArg::Era => return over_ground!(l, |t| super::float_cmds::era(t, file)),
+        MethodArg::Era => return over_ground!(l, |t| super::float_cmds::era(t, file, hankel)),
     };
     over_ground!(l, |t| minreal_typed(t, m, file))
 }

@@ -95,6 +95,10 @@ pub enum Command {
         file: PathBuf,
         #[arg(long, value_enum, default_value_t = MethodArg::Kalman)]
         method: MethodArg,
+        /// `--method era` only: K x K block Hankel matrices (default: grown until the
+        /// numerical rank is stable).
+        #[arg(long)]
+        hankel: Option<usize>,
     },
     /// Descriptor system to standard state space.
     Standard { file: PathBuf },
@@ -180,6 +184,14 @@ pub fn render(r: &Report, f: Format) -> String {
 pub fn run(cli: Cli) -> i32 {
     let format = cli.format;
     let limit = cli.max_seconds;
+    let float_vs_exact = matches!(
+        cli.command,
+        Command::Check { .. }
+            | Command::Minreal {
+                method: MethodArg::Era,
+                ..
+            }
+    );
     let (tx, rx) = mpsc::channel();
     let handle = std::thread::Builder::new()
         .stack_size(256 << 20)
@@ -203,6 +215,12 @@ pub fn run(cli: Cli) -> i32 {
             if failed {
                 eprintln!("exactlti: an exact verification failed (verified = false)");
                 1
+            } else if float_vs_exact && float_disagrees(&report) {
+                // contract, second wave: 3 = the float path disagrees with the exact one
+                eprintln!(
+                    "exactlti: the float path disagrees with the exact path (see differences)"
+                );
+                3
             } else {
                 0
             }
@@ -222,6 +240,13 @@ pub fn run(cli: Cli) -> i32 {
             1
         }
     }
+}
+
+/// `check` with `agree: false` or ERA with `agree_with_exact: false`: exit 3.
+fn float_disagrees(r: &Report) -> bool {
+    use crate::report::Value::Bool;
+    matches!(r.get("agree"), Some(Bool(false)))
+        || matches!(r.get("agree_with_exact"), Some(Bool(false)))
 }
 
 /// A report (or a nested section) with `verified: false` is an internal failure, except for
