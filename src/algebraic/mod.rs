@@ -2,7 +2,7 @@
 //! over $\mathbb{Q}$ (as monic polynomials) and over number fields, and the library side of
 //! `exactlti poly factor|roots`.
 //!
-//! An algebraic number is its minimal polynomial $m \in \mathbb{Q}[x]$ (monic, irreducible)
+//! An algebraic number is its minimal polynomial $m \in \mathbb{Q}\[x\]$ (monic, irreducible)
 //! together with a region holding exactly one root of $m$: an open interval with rational
 //! endpoints for a real root (Descartes / VCA isolation, [`isolate_real`]) or a closed box
 //! with rational corners for a non-real one (Newton inclusion discs certified in exact
@@ -16,9 +16,9 @@
 //! | [`is_irreducible_q`] | irreducibility over $\mathbb{Q}$ |
 //! | [`roots`] | every root of $p$ with its multiplicity |
 //! | [`AlgebraicNumber::roots_of_irreducible`] | the $\deg p$ roots of an irreducible $p$ |
-//! | [`factor_over_number_field`] | factorization over $\mathbb{Q}[t]/(m)$ (Trager) |
+//! | [`factor_over_number_field`] | factorization over $\mathbb{Q}\[t\]/(m)$ (Trager) |
 //! | [`composed_half_sum`], [`composed_half_diff_imag`] | $\prod (x - \frac{r_i + r_j}{2})$, $\prod (x - \frac{r_i - r_j}{2i})$ |
-//! | [`factor_report`], [`roots_report`] | the CLI's `poly factor` / `poly roots` reports |
+//! | [`crate::report::sections::factor_report`], [`crate::report::sections::roots_report`] | the CLI's `poly factor` / `poly roots` reports |
 
 pub mod display;
 pub mod isolate_complex;
@@ -35,7 +35,6 @@ use crate::field::{Q, Rational};
 use crate::poly::Poly;
 use crate::poly::factor::factor_zpoly;
 use crate::poly::zpoly::ZPoly;
-use crate::report::{Report, Value};
 use num_traits::{One, Zero};
 
 /// Leading coefficient and monic irreducible factors with multiplicities.
@@ -208,55 +207,4 @@ pub fn roots(p: &Poly<Q>) -> Result<Vec<(AlgebraicNumber, usize)>> {
     }
     out.sort_by(|a, b| number::cmp_complex(&a.0, &b.0));
     Ok(out)
-}
-
-/// The `poly factor` report: `content` (leading coefficient, exact) and `factors[]` of
-/// `{poly, multiplicity}` (monic irreducible over Q).
-///
-/// # Errors
-/// As [`factor_q`].
-pub fn factor_report(p: &Poly<Q>) -> Result<Report> {
-    let (lc, facs) = factor_q(p)?;
-    let items = facs
-        .iter()
-        .map(|(f, e)| {
-            Value::Obj(
-                Report::new()
-                    .str("poly", f.to_string())
-                    .int("multiplicity", *e),
-            )
-        })
-        .collect();
-    Ok(Report::titled("factorization over QQ")
-        .str("input", p.to_string())
-        .str("content", crate::field::fmt_rational(&lc))
-        .list("factors", items))
-}
-
-/// The `poly roots` report: `roots[]` of `{minpoly, value, approx: [re, im], multiplicity,
-/// digits: [re, im]}` with `digits` correct significant digits (default use: 10).
-///
-/// # Errors
-/// As [`roots`].
-pub fn roots_report(p: &Poly<Q>, digits: usize) -> Result<Report> {
-    let rs = roots(p)?;
-    let items = rs
-        .iter()
-        .map(|(r, e)| {
-            let (re, im) = r.approx();
-            let (dre, dim) = r.digits(digits);
-            Value::Obj(
-                Report::new()
-                    .str("minpoly", r.minpoly().to_string())
-                    .str("value", r.value_string())
-                    .list("approx", vec![Value::Float(re), Value::Float(im)])
-                    .int("multiplicity", *e)
-                    .list("digits", vec![Value::Str(dre), Value::Str(dim)]),
-            )
-        })
-        .collect();
-    Ok(Report::titled("roots")
-        .str("input", p.to_string())
-        .int("degree", p.deg())
-        .list("roots", items))
 }

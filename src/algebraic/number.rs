@@ -411,14 +411,19 @@ impl AlgebraicNumber {
         }
     }
 
-    /// Real part (exact). Falls back to `self` only on an internal limit (never observed).
-    pub fn re(&self) -> Self {
-        self.try_re().unwrap_or_else(|_| self.clone())
+    /// Real part (exact); the same as [`Self::try_re`].
+    ///
+    /// # Errors
+    /// As [`Self::try_re`].
+    pub fn re(&self) -> Result<Self> {
+        self.try_re()
     }
-    /// Imaginary part (exact). Falls back to zero only on an internal limit.
-    pub fn im(&self) -> Self {
+    /// Imaginary part (exact); the same as [`Self::try_im`].
+    ///
+    /// # Errors
+    /// As [`Self::try_im`].
+    pub fn im(&self) -> Result<Self> {
         self.try_im()
-            .unwrap_or_else(|_| Self::from_rational(&Rational::zero()))
     }
 
     /// For degree <= 2: `(a, b, d)` with value `a + b*sqrt(d)`, `d` square-free (up to the
@@ -468,7 +473,7 @@ impl AlgebraicNumber {
         format!("root of {} near {near}", self.minpoly)
     }
 
-    /// $\mathbb{Q}[t]/(m)$ with $t$ marked as this root.
+    /// $\mathbb{Q}\[t\]/(m)$ with $t$ marked as this root.
     pub fn to_number_field(&self) -> NumberField {
         NumberField::new_unchecked(&self.minpoly, self.approx())
     }

@@ -9,7 +9,7 @@
 //! |---|---|---|
 //! | $\mathbb{Q}$ | [`Q`] | [`Rational`] |
 //! | $\mathbb{Q}(\sqrt d)$ | [`QuadraticField`] | [`Quadratic`] $= a + b\sqrt d$ |
-//! | $\mathbb{Q}[t]/(m)$ | [`NumberField`] | [`NfElem`]: polynomials of degree $< \deg m$ |
+//! | $\mathbb{Q}\[t\]/(m)$ | [`NumberField`] | [`NfElem`]: polynomials of degree $< \deg m$ |
 //! | $F(i)$ over a real $F$ | [`ComplexField`] | pairs $a + b i$ |
 //!
 //! Why hand-written: no maintained pure-Rust crate offers exact number fields with runtime

@@ -1,4 +1,4 @@
-//! General number fields $K = \mathbb{Q}[t]/(m(t))$ for an irreducible monic $m$.
+//! General number fields $K = \mathbb{Q}\[t\]/(m(t))$ for an irreducible monic $m$.
 //!
 //! Elements are polynomials in $t$ of degree $< \deg m$ with rational coefficients
 //! (canonical: reduced and without trailing zeros). Multiplication reduces modulo $m$;
@@ -49,7 +49,7 @@ impl PartialEq for NumberField {
 pub struct NfElem(pub Vec<Rational>);
 
 impl NumberField {
-    /// The field $\mathbb{Q}[t]/(m)$ with $t$ the root of $m$ near `root`.
+    /// The field $\mathbb{Q}\[t\]/(m)$ with $t$ the root of $m$ near `root`.
     ///
     /// The modulus is made monic and checked irreducible over $\mathbb{Q}$
     /// ([`crate::algebraic::is_irreducible_q`]).

@@ -23,7 +23,7 @@
 //!   with the primitive element $c = \operatorname{Re}\theta + k\operatorname{Im}\theta$,
 //!   its minimal polynomial a factor of a composed resultant and $\operatorname{Re}\theta$,
 //!   $\operatorname{Im}\theta$ as polynomials in $c$ from a gcd over $F(i)$ (see
-//!   `realfield`), e.g. $F = \mathbb{Q}(\sqrt[3]{2}, \sqrt 3)$ of degree 6 for
+//!   `realfield`), e.g. $F = \mathbb{Q}(\sqrt\[3\]{2}, \sqrt 3)$ of degree 6 for
 //!   $x^3 - 2$; the field is listed in the report (`fields`) with `parts`
 //!   $\theta = a(c) + b(c)\,i$.
 //!
@@ -40,7 +40,6 @@ use crate::error::Result;
 use crate::field::{ComplexPair, Field, NfElem, NumberField, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{MatrixOut, Report, Value};
 use num_traits::{One, Zero};
 
 /// How $\operatorname{Re}$, $\operatorname{Im}$ of $K$-elements land in the real field.
@@ -359,81 +358,5 @@ impl RealJordanForm {
             off += w;
         }
         Some((j, t))
-    }
-    /// $J$, $T$ for output (exact strings in each block's field; `~x` marks an
-    /// approximate entry of a non-exact block).
-    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
-        let n = self.n;
-        let mut je = vec![vec!["0".to_string(); n]; n];
-        let mut te = je.clone();
-        let mut ja = vec![vec![(0.0, 0.0); n]; n];
-        let mut ta = ja.clone();
-        let mut off = 0;
-        for b in &self.blocks {
-            let w = b.t_approx.first().map_or(b.j_approx.len(), |r| r.len());
-            for r in 0..n {
-                for q in 0..w {
-                    ta[r][off + q] = (b.t_approx[r][q], 0.0);
-                    te[r][off + q] = match (&b.field, &b.t) {
-                        (Some(f), Some(t)) => f.fmt_elem(t.get(r, q)),
-                        _ => format!("~{}", b.t_approx[r][q]),
-                    };
-                }
-            }
-            for r in 0..w {
-                for q in 0..w {
-                    ja[off + r][off + q] = (b.j_approx[r][q], 0.0);
-                    je[off + r][off + q] = match (&b.field, &b.j) {
-                        (Some(f), Some(j)) => f.fmt_elem(j.get(r, q)),
-                        _ => format!("~{}", b.j_approx[r][q]),
-                    };
-                }
-            }
-            off += w;
-        }
-        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
-    }
-    /// Report: `J`, `T` (exact strings and `_approx`), `exact`, `verified`, `fields`,
-    /// `parts`, `notes`.
-    pub fn report(&self) -> Report {
-        let (jo, to) = match self.single_field() {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
-        let fields: Vec<Value> = self
-            .blocks
-            .iter()
-            .filter_map(|b| b.field.as_ref())
-            .filter(|f| f.degree() >= 3)
-            .map(|f| {
-                Value::Str(format!(
-                    "{} = root of {} near {}",
-                    f.0.var,
-                    f.modulus(),
-                    fmt_approx(f.root_approx())
-                ))
-            })
-            .collect();
-        let mut r = Report::titled("Real Jordan form")
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
-            .bool("exact", self.exact)
-            .bool("verified", self.verified);
-        if !fields.is_empty() {
-            r = r.list("fields", fields);
-        }
-        if !self.parts.is_empty() {
-            r = r.list(
-                "parts",
-                self.parts.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        if !self.notes.is_empty() {
-            r = r.list(
-                "notes",
-                self.notes.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        r
     }
 }

@@ -18,7 +18,6 @@
 use super::{JordanForm, RealJordanForm};
 use crate::field::{Field, NfElem, NumberField, Q, Rational};
 use crate::matrix::Matrix;
-use crate::report::{Report, Value};
 use num_complex::Complex64;
 use num_traits::{One, Zero};
 
@@ -216,21 +215,5 @@ impl FreeResponse {
             }
         }
         out
-    }
-    /// Report: one entry per eigenvalue and power, `x(t) = sum t^k e^(s t) G x0`.
-    pub fn report(&self, jf: &JordanForm) -> Report {
-        let mut items = vec![];
-        for (ev, e) in jf.eigenvalues.iter().enumerate() {
-            let (field, f) = jf.root_map(ev);
-            for t in self.terms.iter().filter(|t| t.component == e.component) {
-                items.push(Value::Obj(
-                    Report::new()
-                        .str("eigenvalue", e.value.clone())
-                        .int("power", t.power)
-                        .matrix("G", &t.coeff.map(&field, &f)),
-                ));
-            }
-        }
-        Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0").list("terms", items)
     }
 }

@@ -270,10 +270,4 @@ impl<K: Field> fmt::Display for Matrix<K> {
     }
 }
 
-/// `mat![Q; [1, 2], [3, 4]]` builds a rational matrix from integer literals.
-#[macro_export]
-macro_rules! qmat {
-    ($([$($x:expr),* $(,)?]),* $(,)?) => {
-        $crate::matrix::Matrix::<$crate::field::Q>::from_i64_rows(&[$(&[$($x as i64),*]),*])
-    };
-}
+// `qmat!` (integers, rationals and exact text such as "0.08") is defined in crate::io::qmat.

@@ -37,7 +37,6 @@ use crate::field::{
 use crate::jordan::{chains::jordan_chains, jordan};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{MatrixOut, Report, Value, str_list};
 use crate::system::StateSpace;
 use num_traits::Zero;
 use std::sync::Arc;
@@ -365,75 +364,54 @@ impl JordanMinimal {
         )
         .ok()
     }
-    /// Assembles block-diagonal `A` and stacked `B`, `C` for output (entries exact in each
-    /// block's field, symbols defined in `symbols`).
-    fn outputs(&self) -> (MatrixOut, MatrixOut, MatrixOut) {
-        let r = self.order();
-        let (m, p) = (self.d.ncols(), self.d.nrows());
-        let empty = |rows: usize, cols: usize| MatrixOut {
-            exact: vec![vec!["0".to_string(); cols]; rows],
-            latex: vec![vec!["0".to_string(); cols]; rows],
-            approx: vec![vec![(0.0, 0.0); cols]; rows],
-            nrows: rows,
-            ncols: cols,
+}
+
+/// The Jordan-method minimal realization as a rational state-space system, verified like
+/// every [`super::MinimalRealization`] (Markov parameters up to $2n$, controllable,
+/// observable); available when every mode's block is rational (all retained eigenvalues
+/// rational, or complex blocks whose real form is rational).
+///
+/// # Errors
+/// `Unsupported` when some block has entries in a number field of degree > 1 (then use
+/// [`minimal_jordan`], whose blocks keep their fields); errors of [`minimal_jordan`].
+pub fn minimal_jordan_rational(sys: &StateSpace<Q>) -> Result<super::MinimalRealization<Q>> {
+    let jm = minimal_jordan(sys)?;
+    let n: usize = jm.blocks.iter().map(|b| b.a.nrows()).sum();
+    let (m, p) = (sys.ninputs(), sys.noutputs());
+    let mut a = Matrix::zeros(Q, n, n);
+    let mut b = Matrix::zeros(Q, n, m);
+    let mut c = Matrix::zeros(Q, p, n);
+    let mut off = 0;
+    for blk in &jm.blocks {
+        let q = |x: &NfElem| {
+            blk.field.to_rational(x).ok_or_else(|| {
+                crate::error::Error::Unsupported(format!(
+                    "the Jordan-method realization has entries in {} (mode {}): use realization::minimal_jordan",
+                    blk.field, blk.eigenvalue
+                ))
+            })
         };
-        let (mut a, mut b, mut c) = (empty(r, r), empty(r, m), empty(p, r));
-        let mut off = 0;
-        for blk in &self.blocks {
-            let f = &blk.field;
-            let put = |o: &mut MatrixOut, i: usize, j: usize, x: &NfElem| {
-                o.exact[i][j] = f.fmt_elem(x);
-                o.latex[i][j] = f.latex_elem(x);
-                o.approx[i][j] = f.approx(x);
-            };
-            let s = blk.a.nrows();
-            for i in 0..s {
-                for j in 0..s {
-                    put(&mut a, off + i, off + j, blk.a.get(i, j));
-                }
-                for j in 0..m {
-                    put(&mut b, off + i, j, blk.b.get(i, j));
-                }
-                for row in 0..p {
-                    put(&mut c, row, off + i, blk.c.get(row, i));
-                }
+        let s = blk.a.nrows();
+        for i in 0..s {
+            for j in 0..s {
+                a.set(off + i, off + j, q(blk.a.get(i, j))?);
             }
-            off += s;
+            for j in 0..m {
+                b.set(off + i, j, q(blk.b.get(i, j))?);
+            }
+            for r in 0..p {
+                c.set(r, off + i, q(blk.c.get(r, i))?);
+            }
         }
-        (a, b, c)
+        off += s;
     }
-    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`, the stage orders and
-    /// the symbols used in the entries).
-    pub fn report(&self) -> Report {
-        let (a, b, c) = self.outputs();
-        Report::titled("minimal realization (jordan)")
-            .str("method", "jordan")
-            .int("original_order", self.stages[0])
-            .int("order", self.order())
-            .int("mcmillan_degree", self.mcmillan_degree)
-            .with(
-                "stages",
-                Value::List(self.stages.iter().map(|&s| Value::Int(s as i64)).collect()),
-            )
-            .with("A", Value::Matrix(Box::new(a)))
-            .with("B", Value::Matrix(Box::new(b)))
-            .with("C", Value::Matrix(Box::new(c)))
-            .matrix("D", &self.d)
-            .with(
-                "modes",
-                str_list(self.blocks.iter().map(|b| b.eigenvalue.clone())),
-            )
-            .with(
-                "symbols",
-                Value::List(
-                    self.symbols
-                        .iter()
-                        .map(|(k, v)| Value::Str(format!("{k} = {v}")))
-                        .collect(),
-                ),
-            )
-            .bool("verified", self.verified)
-    }
+    let min = StateSpace::new(a, b, c, jm.d.clone())?;
+    Ok(super::MinimalRealization::new(
+        sys,
+        min,
+        super::MinrealMethod::Jordan,
+        None,
+    ))
 }
 
 #[cfg(test)]

@@ -5,7 +5,6 @@ use super::kalman::kalman_decomposition;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
-use crate::report::Report;
 use crate::system::StateSpace;
 
 /// Which algorithm computes the minimal realization.
@@ -69,22 +68,6 @@ impl<K: Field> MinimalRealization<K> {
             verified,
         }
     }
-    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`).
-    pub fn report(&self) -> Report {
-        let mut r = Report::titled(format!("minimal realization ({})", self.method.name()))
-            .str("method", self.method.name())
-            .int("original_order", self.original_order)
-            .int("order", self.order)
-            .int("mcmillan_degree", self.order)
-            .matrix("A", &self.system.a)
-            .matrix("B", &self.system.b)
-            .matrix("C", &self.system.c)
-            .matrix("D", &self.system.d);
-        if let Some(t) = &self.t {
-            r = r.matrix("T", t);
-        }
-        r.bool("verified", self.verified)
-    }
 }
 
 /// Exact check: `min` is controllable and observable and has the Markov parameters of `orig`
@@ -120,7 +103,9 @@ pub fn minimal_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealizatio
 /// Minimal realization by the chosen method.
 ///
 /// # Errors
-/// `Unsupported` for a method not available for this field; internal failures.
+/// `Unsupported` for a method not available for this field (Jordan: systems with rational entries
+/// whose minimal Jordan-method blocks are rational, see
+/// [`super::jordan_method::minimal_jordan_rational`]); internal failures.
 pub fn minimal<K: Field>(
     sys: &StateSpace<K>,
     method: MinrealMethod,
@@ -129,9 +114,33 @@ pub fn minimal<K: Field>(
         MinrealMethod::Kalman => minimal_kalman(sys),
         MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock(sys),
         MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman(sys),
-        MinrealMethod::Jordan => Err(Error::Unsupported(
-            "the Jordan-form method works on rational systems: use realization::minimal_jordan"
-                .into(),
-        )),
+        MinrealMethod::Jordan => {
+            // the Jordan method works over Q: systems with rational entries are taken down
+            // to Q, realized there, lifted back and verified over K
+            let k = sys.a.field().clone();
+            let down = |m: &Matrix<K>| crate::matrix::to_rational_matrix(m);
+            let (Some(a), Some(b), Some(c), Some(d)) =
+                (down(&sys.a), down(&sys.b), down(&sys.c), down(&sys.d))
+            else {
+                return Err(Error::Unsupported(format!(
+                    "the Jordan-form method works on systems with rational entries, not over {k}"
+                )));
+            };
+            let q = StateSpace::new(a, b, c, d)?;
+            let r = super::jordan_method::minimal_jordan_rational(&q)?;
+            let up = |m: &Matrix<crate::field::Q>| m.convert_to(&k);
+            let min = StateSpace::new(
+                up(&r.system.a),
+                up(&r.system.b),
+                up(&r.system.c),
+                up(&r.system.d),
+            )?;
+            Ok(MinimalRealization::new(
+                sys,
+                min,
+                MinrealMethod::Jordan,
+                None,
+            ))
+        }
     }
 }

@@ -37,7 +37,7 @@ pub use controllability::{
 pub use descriptor::{StandardForm, descriptor_to_standard};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
-pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan};
+pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use minimal::{MinimalRealization, MinrealMethod, minimal, minimal_kalman};
 pub use modal::{ModalTable, Mode, modal_table};
