@@ -134,3 +134,25 @@ fn era_on_a_very_wide_system_is_refused_with_exit_2() {
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("Hankel"), "{err}");
 }
+
+#[test]
+fn fuzz_crashers_stay_fixed() {
+    // tests/data/fuzz_huge_entry.toml: an entry 1e300 hung the float eigenvalues (balancing)
+    for cmd in [
+        &["check"][..],
+        &["minreal", "--method", "era"],
+        &["freqresp"],
+    ] {
+        let mut a = cmd.to_vec();
+        a.extend(["tests/data/fuzz_huge_entry.toml", "--max-seconds", "20"]);
+        let (code, _, err) = run(&a);
+        assert!([0, 2, 3].contains(&code), "{a:?}: {code} {err}");
+    }
+    // E = 0: no finite dynamics; freqresp is G = D (it panicked in nalgebra's LU)
+    let f = temp_file(
+        "e0.json",
+        r#"{"E": [[0]], "A": [[1]], "B": [[1]], "C": [[1]]}"#,
+    );
+    let (code, _, err) = run(&["freqresp", f.to_str().unwrap(), "--points", "3"]);
+    assert_eq!(code, 0, "{err}");
+}

@@ -174,3 +174,64 @@ fn wide_systems_are_sized_by_need_and_refused_beyond_the_limit() {
     assert_eq!(r.realization.order, 1);
     assert!((r.realization.a[(0, 0)] + 1.0).abs() < 1e-12);
 }
+
+#[test]
+fn huge_entries_do_not_hang() {
+    // found by the fuzzer: an entry 1e300 in the yaw-plane A
+    let a = DMatrix::from_row_slice(
+        4,
+        4,
+        &[
+            0.0,
+            20.0,
+            -1.0,
+            0.0,
+            0.0,
+            0.0,
+            1e300,
+            -1.0,
+            0.0,
+            0.0,
+            -80000.0 / 30000.0,
+            -20.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+        ],
+    );
+    let b = DMatrix::from_row_slice(4, 1, &[0.0, 0.0, 1.0 / 1500.0, 0.0]);
+    let c = DMatrix::from_row_slice(1, 4, &[1.0, 0.0, 0.0, 0.0]);
+    let d = DMatrix::zeros(1, 1);
+    let r = era_system(&a, &b, &c, &d, None, &Tol::default());
+    if let Ok(r) = r {
+        assert_ne!(r.realization.truth, Truth::True, "{:?}", r.ranks);
+    }
+}
+
+#[test]
+fn huge_entries_eigenvalues_do_not_hang() {
+    let a = DMatrix::from_row_slice(
+        4,
+        4,
+        &[
+            0.0,
+            20.0,
+            -1.0,
+            0.0,
+            0.0,
+            0.0,
+            1e300,
+            -1.0,
+            0.0,
+            0.0,
+            -80000.0 / 30000.0,
+            -20.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+        ],
+    );
+    let _ = exactlti::float::eigenvalues(&a);
+}

@@ -8,6 +8,9 @@
 
 mod analyze;
 mod commands;
+
+/// One command run in-process (no output, no time bound): the report and its status.
+pub use commands::execute;
 mod float_cmds;
 
 use crate::error::Error;

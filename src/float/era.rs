@@ -337,7 +337,12 @@ pub fn era_system(
         }
     };
     best.a *= rho;
-    if !stabilised {
+    // Powers of A/ρ underflow when the entries of A span more than ~1e100: Markov parameters
+    // that vanish in float need not vanish (an order found is then not clear).
+    let nonzero = a.iter().filter(|x| **x != 0.0).map(|x| x.abs());
+    let (lo, hi) = nonzero.fold((f64::INFINITY, 0.0f64), |(l, h), x| (l.min(x), h.max(x)));
+    let range_ok = hi == 0.0 || hi / lo <= 1e100;
+    if !stabilised || !range_ok {
         best.truth = Truth::Unknown;
     }
     Ok(SystemEra {

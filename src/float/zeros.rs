@@ -111,6 +111,12 @@ pub fn invariant_zeros_report(
         Vec::new()
     } else if sys.d.nrows() == 0 {
         eigenvalues(&sys.a)?
+    } else if !sys.d.is_square() {
+        return Err(Error::Verification(format!(
+            "invariant_zeros: the reduced D is {}x{}, not square",
+            sys.d.nrows(),
+            sys.d.ncols()
+        )));
     } else {
         let lu = LU::new(sys.d.clone());
         let x = lu
