@@ -58,6 +58,7 @@ pub mod io;
 pub mod jordan;
 pub mod matrix;
 pub mod poly;
+pub mod qkernels;
 pub mod realization;
 pub mod report;
 pub mod structure;

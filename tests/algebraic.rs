@@ -4,13 +4,14 @@
 //! exact argument-principle (winding number) counter for boxes, both in rational arithmetic
 //! and sharing no code with the isolation algorithms under test.
 
-mod common;
+use crate::common;
 
 use common::{Rng, iters};
 use exactlti::Error;
+use exactlti::algebraic::NumberField;
 use exactlti::algebraic::nf_factor::norm;
 use exactlti::algebraic::{AlgebraicNumber, factor_over_number_field, factor_q, roots};
-use exactlti::field::{Field, NumberField, Q, Rational};
+use exactlti::field::{Field, Q, Rational};
 use exactlti::poly::{Poly, parse_poly_q};
 use exactlti::report::sections::{factor_report, roots_report};
 use num_traits::{Signed, Zero};

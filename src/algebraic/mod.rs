@@ -25,16 +25,18 @@ pub mod isolate_complex;
 pub mod isolate_real;
 pub mod nf_factor;
 pub mod number;
+pub mod number_field;
 pub(crate) mod zp;
 
 pub use nf_factor::factor_over_number_field;
 pub use number::AlgebraicNumber;
+pub use number_field::{NfElem, NumberField, NumberFieldCtx};
 
 use crate::error::{Error, Result};
 use crate::field::{Q, Rational};
-use crate::poly::Poly;
 use crate::poly::factor::factor_zpoly;
 use crate::poly::zpoly::ZPoly;
+use crate::poly::{Poly, monic_from_power_sums, newton_power_sums};
 use num_traits::{One, Zero};
 
 /// Leading coefficient and monic irreducible factors with multiplicities.
@@ -86,46 +88,6 @@ pub fn is_irreducible_q(p: &Poly<Q>) -> bool {
     p.deg() >= 1 && crate::poly::factor::is_irreducible(&ZPoly::new(zp::from_poly_q(p)))
 }
 
-/// Newton power sums $s_0, \dots, s_N$ of the roots of the monic `p`.
-fn power_sums(p: &Poly<Q>, upto: usize) -> Vec<Rational> {
-    let n = p.deg();
-    let a = |i: usize| p.coeff(i); // coefficient of x^i
-    let mut s = vec![Rational::from_integer(n.into())];
-    for k in 1..=upto {
-        // s_k = -(k a_{n-k} + sum_{i=1}^{k-1} a_{n-i} s_{k-i})
-        let mut v = if k <= n {
-            a(n - k) * Rational::from_integer(k.into())
-        } else {
-            Rational::zero()
-        };
-        for i in 1..k.min(n + 1) {
-            if i < k {
-                v += a(n - i) * &s[k - i];
-            }
-        }
-        s.push(-v);
-    }
-    s
-}
-
-/// Monic polynomial of degree `n` with power sums `s[1..=n]` (Newton's identities).
-fn from_power_sums(s: &[Rational], n: usize) -> Poly<Q> {
-    let mut e = vec![Rational::one()];
-    for k in 1..=n {
-        let mut v = Rational::zero();
-        for i in 1..=k {
-            let t = &e[k - i] * &s[i];
-            if i % 2 == 1 { v += t } else { v -= t }
-        }
-        e.push(v / Rational::from_integer(k.into()));
-    }
-    let mut c = vec![Rational::zero(); n + 1];
-    for k in 0..=n {
-        c[n - k] = if k % 2 == 0 { e[k].clone() } else { -&e[k] };
-    }
-    Poly::new(Q, c)
-}
-
 fn binomials(n: usize) -> Vec<Vec<Rational>> {
     let mut rows = vec![vec![Rational::one()]];
     for k in 1..=n {
@@ -144,7 +106,7 @@ pub fn composed_half_sum(p: &Poly<Q>) -> Poly<Q> {
     let p = p.monic();
     let n = p.deg();
     let big = n * n;
-    let s = power_sums(&p, big);
+    let s = newton_power_sums(&p, big);
     let c = binomials(big);
     let mut t = vec![Rational::from_integer(big.into())];
     let mut h = Rational::one();
@@ -156,7 +118,7 @@ pub fn composed_half_sum(p: &Poly<Q>) -> Poly<Q> {
         }
         t.push(v * &h);
     }
-    from_power_sums(&t, big)
+    monic_from_power_sums(&t, big)
 }
 
 /// $\prod_{i,j} (y - (r_i - r_j)/(2i))$ over the roots of `p`: real coefficients, the
@@ -165,7 +127,7 @@ pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
     let p = p.monic();
     let n = p.deg();
     let big = n * n;
-    let s = power_sums(&p, big);
+    let s = newton_power_sums(&p, big);
     let c = binomials(big);
     let mut t = vec![Rational::from_integer(big.into())];
     for k in 1..=big {
@@ -189,7 +151,7 @@ pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
         }
         t.push(v / d);
     }
-    from_power_sums(&t, big)
+    monic_from_power_sums(&t, big)
 }
 
 /// All roots of `p` with multiplicities: real ones ascending, then non-real ones by (real

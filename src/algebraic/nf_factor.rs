@@ -13,8 +13,9 @@
 //! | [`factor_over_number_field`] | monic irreducible factors over $K$ with multiplicities |
 //! | [`norm`] | $\mathrm{Res}_t(m(t), f(x, t))$ |
 
+use super::{NfElem, NumberField};
 use crate::error::{Error, Result};
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::poly::Poly;
 
 /// The norm $N_{K(x)/\mathbb{Q}(x)}(f) = \mathrm{Res}_t(m(t), f(x, t))$ of `f` in $K\[x\]$
@@ -123,7 +124,8 @@ fn trager_squarefree(f: &Poly<NumberField>) -> Result<Vec<Poly<NumberField>>> {
 /// # Examples
 /// ```
 /// use exactlti::algebraic::factor_over_number_field;
-/// use exactlti::field::{Field, NumberField, Q};
+/// use exactlti::algebraic::NumberField;
+/// use exactlti::field::{Field, Q};
 /// use exactlti::poly::Poly;
 /// // x^2 + 1 over Q(i) = Q[t]/(t^2 + 1) splits as (x - t)(x + t)
 /// let k = NumberField::new(&Poly::from_i64s(&[1, 0, 1]), (0.0, 1.0)).unwrap();

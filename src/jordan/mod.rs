@@ -49,8 +49,9 @@ pub use real::{RealBlock, RealJordanForm};
 pub use response::{FreeResponse, ResponseTerm};
 
 use crate::algebraic::AlgebraicNumber;
+use crate::algebraic::{NfElem, NumberField};
 use crate::error::Result;
-use crate::field::{Field, NfElem, NumberField, Q};
+use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use primary::{named_field, rational_field};

@@ -9,9 +9,9 @@
 //! Identities checked exactly in $K$: $A V = V J_t$, $W A = J_t W$, $W V = I_m$.
 
 use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
+use crate::algebraic::{NfElem, NumberField, NumberFieldCtx};
 use crate::error::Result;
-use crate::field::number_field::NumberFieldCtx;
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use std::sync::Arc;

@@ -16,8 +16,10 @@
 //! the vehicle-dynamics paper.
 
 use super::{JordanForm, RealJordanForm};
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::algebraic::{NfElem, NumberField};
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
+use crate::poly::newton_power_sums;
 use num_complex::Complex64;
 use num_traits::{One, Zero};
 
@@ -52,21 +54,6 @@ fn factorial(k: usize) -> Rational {
     (1..=k).fold(Rational::one(), |acc, i| {
         acc * Rational::from_integer(i.into())
     })
-}
-
-/// Power sums $P_k = \sum_j \theta_j^k$, $k < d$, of the roots of a monic $p$ (Newton).
-fn power_sums(p: &crate::poly::Poly<Q>) -> Vec<Rational> {
-    let d = p.deg();
-    let a = |i: usize| p.coeff(i); // x^d + a_{d-1} x^{d-1} + ... + a_0
-    let mut ps = vec![Rational::from_integer(d.into())];
-    for k in 1..d {
-        let mut s = -Rational::from_integer(k.into()) * a(d - k);
-        for i in 1..k {
-            s -= a(d - i) * &ps[k - i];
-        }
-        ps.push(s);
-    }
-    ps
 }
 
 impl JordanForm {
@@ -123,7 +110,7 @@ impl FreeResponse {
                 return false;
             }
             if term.power == 0 {
-                let ps = power_sums(&c.factor);
+                let ps = newton_power_sums(&c.factor, c.factor.deg().saturating_sub(1));
                 let tr = term.coeff.map(&Q, |x: &NfElem| {
                     x.0.iter()
                         .zip(&ps)

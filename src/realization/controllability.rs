@@ -81,7 +81,7 @@ pub fn pbh_controllable(
     a: &Matrix<crate::field::Q>,
     b: &Matrix<crate::field::Q>,
 ) -> crate::error::Result<bool> {
-    use crate::field::NumberField;
+    use crate::algebraic::NumberField;
     a.check_square("pbh")?;
     let n = a.nrows();
     let (_, factors) = crate::algebraic::factor_q(&a.charpoly()?)?;

@@ -169,11 +169,13 @@ pub(crate) fn zero_items<K: Field>(p: &Poly<K>) -> Vec<Value> {
                 .int("multiplicity", mult);
             if f.deg() == 1 {
                 let root = k.neg(&k.div(&f.coeff(0), &f.coeff(1)).expect("non-zero lc"));
-                let (re, im) = k.approx(&root);
-                r = r.str("value", k.fmt_elem(&root)).with(
-                    "approx",
-                    Value::List(vec![Value::Float(re), Value::Float(im)]),
-                );
+                r = r.str("value", k.fmt_elem(&root));
+                if let Some((re, im)) = k.approx(&root) {
+                    r = r.with(
+                        "approx",
+                        Value::List(vec![Value::Float(re), Value::Float(im)]),
+                    );
+                }
             }
             Value::Obj(r)
         })
