@@ -13,10 +13,18 @@ mod algebraic;
 mod bicycle;
 #[path = "cli.rs"]
 mod cli;
+#[path = "cli_hardening.rs"]
+mod cli_hardening;
 #[path = "field_axioms.rs"]
 mod field_axioms;
 #[path = "float.rs"]
 mod float;
+#[path = "float_era.rs"]
+mod float_era;
+#[path = "float_honesty.rs"]
+mod float_honesty;
+#[path = "fuzz.rs"]
+mod fuzz;
 #[path = "io.rs"]
 mod io;
 #[path = "jordan.rs"]
@@ -35,6 +43,8 @@ mod poly_factor;
 mod realization;
 #[path = "realization_planted.rs"]
 mod realization_planted;
+#[path = "robustness.rs"]
+mod robustness;
 #[path = "scb.rs"]
 mod scb;
 

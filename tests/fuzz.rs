@@ -191,6 +191,13 @@ fn corpus() -> Vec<(PathBuf, Vec<u8>)> {
                     Some("json" | "toml")
                 )
             })
+            // the fuzzer's own reproducers are regression cases, not seeds
+            .filter(|p| {
+                !p.file_name()
+                    .unwrap()
+                    .to_string_lossy()
+                    .starts_with("fuzz_")
+            })
             .collect();
         files.sort();
         for p in files {
