@@ -15,6 +15,10 @@ mod bicycle;
 mod cli;
 #[path = "cli_hardening.rs"]
 mod cli_hardening;
+#[path = "cli_pencil.rs"]
+mod cli_pencil;
+#[path = "ctrb_structure.rs"]
+mod ctrb_structure;
 #[path = "field_axioms.rs"]
 mod field_axioms;
 #[path = "float.rs"]
@@ -23,6 +27,8 @@ mod float;
 mod float_era;
 #[path = "float_honesty.rs"]
 mod float_honesty;
+#[path = "from_transfer.rs"]
+mod from_transfer;
 #[path = "fuzz.rs"]
 mod fuzz;
 #[path = "io.rs"]
@@ -37,6 +43,10 @@ mod matrix_generic;
 mod matrix_modular;
 #[path = "mechanical.rs"]
 mod mechanical;
+#[path = "pencil.rs"]
+mod pencil;
+#[path = "pencil_descriptor.rs"]
+mod pencil_descriptor;
 #[path = "poly_factor.rs"]
 mod poly_factor;
 #[path = "realization.rs"]

@@ -244,6 +244,7 @@ fn commands(file: &Path) -> Vec<Command> {
             file: f(),
             method,
             hankel: None,
+            descriptor: false,
         });
     }
     for op in [
