@@ -15,6 +15,8 @@ mod bicycle;
 mod cli;
 #[path = "cli_hardening.rs"]
 mod cli_hardening;
+#[path = "cli_mpoly.rs"]
+mod cli_mpoly;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
@@ -43,6 +45,8 @@ mod matrix_generic;
 mod matrix_modular;
 #[path = "mechanical.rs"]
 mod mechanical;
+#[path = "mpoly.rs"]
+mod mpoly;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]
