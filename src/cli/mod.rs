@@ -13,6 +13,9 @@ mod float_cmds;
 mod pencil_cmds;
 mod sweep;
 
+/// One command run in-process (no output, no time bound): the report and its status.
+pub use commands::execute;
+
 use crate::error::Error;
 use crate::report::Report;
 use clap::{Parser, Subcommand, ValueEnum};
@@ -106,6 +109,10 @@ pub enum Command {
         file: PathBuf,
         #[arg(long, value_enum, default_value_t = MethodArg::Kalman)]
         method: MethodArg,
+        /// `--method era` only: K x K block Hankel matrices (default: grown until the
+        /// numerical rank is stable).
+        #[arg(long)]
+        hankel: Option<usize>,
         /// Minimal DESCRIPTOR realization (improper systems accepted), with `irreducible_order`.
         #[arg(long)]
         descriptor: bool,
@@ -201,12 +208,26 @@ pub enum Command {
 pub struct Outcome {
     pub report: Report,
     pub verified: bool,
+    /// The float path disagrees with the exact one (`check`, ERA): exit 3.
+    pub float_disagrees: bool,
 }
 
 impl Outcome {
     /// A report with its verification status.
     pub fn new(report: Report, verified: bool) -> Self {
-        Outcome { report, verified }
+        Outcome {
+            report,
+            verified,
+            float_disagrees: false,
+        }
+    }
+    /// A float-vs-exact report (`check`, ERA): `agree = false` exits 3.
+    pub fn float_vs_exact(report: Report, agree: bool) -> Self {
+        Outcome {
+            report,
+            verified: true,
+            float_disagrees: !agree,
+        }
     }
     /// A report without an exact check to fail (float results, tables, factorizations).
     pub fn plain(report: Report) -> Self {
@@ -287,6 +308,12 @@ pub fn run(cli: Cli) -> i32 {
             if !out.verified {
                 eprintln!("exactlti: an exact verification failed (verified = false)");
                 1
+            } else if out.float_disagrees {
+                // contract, second wave: 3 = the float path disagrees with the exact one
+                eprintln!(
+                    "exactlti: the float path disagrees with the exact path (see the report)"
+                );
+                3
             } else {
                 0
             }
