@@ -65,6 +65,7 @@ pub mod ratfunc;
 pub mod realization;
 pub mod report;
 pub mod structure;
+pub mod study;
 pub mod system;
 
 pub use error::{Error, Result};

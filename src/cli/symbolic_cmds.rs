@@ -32,6 +32,8 @@ fn name(cmd: &Command) -> &'static str {
         Command::Poly { .. } => "poly",
         Command::Linalg { .. } => "linalg",
         Command::Analyze { .. } => "analyze",
+        Command::Sweep { .. } => "sweep",
+        Command::Critical { .. } => "critical",
     }
 }
 
@@ -50,6 +52,8 @@ fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Modes { file }
         | Command::Freqresp { file, .. }
         | Command::Check { file }
+        | Command::Sweep { file, .. }
+        | Command::Critical { file, .. }
         | Command::Linalg { file, .. } => Some(file),
         Command::Analyze { file } => file.as_deref(),
         Command::Poly { .. } => None,
