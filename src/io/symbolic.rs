@@ -11,6 +11,7 @@
 //!
 //! # Examples
 //! ```
+//! use exactlti::field::Field;
 //! use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_str};
 //! use exactlti::io::{SystemFormat, TypedAny};
 //!
