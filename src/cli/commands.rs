@@ -26,7 +26,7 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
         Command::Standard { file } => standard(file),
         Command::Analyze { file } => analyze(file.as_deref()),
         Command::Poly { op } => poly(op),
-        Command::Jordan { file, real } => {
+        Command::Jordan { file, real, expand } => {
             let l = load_system(file)?;
             let jf = match &l {
                 Loaded::Q(_, t) => crate::jordan::jordan(&t.a_raw),
@@ -34,7 +34,10 @@ pub fn execute(cmd: &Command) -> Result<Report, Failure> {
             }
             .map_err(|e| with_path(file, e))?;
             if *real {
-                Ok(jf.real_form().map_err(|e| with_path(file, e))?.report())
+                Ok(jf
+                    .real_form_with(*expand)
+                    .map_err(|e| with_path(file, e))?
+                    .report())
             } else {
                 Ok(jf.report())
             }
