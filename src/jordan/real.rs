@@ -387,8 +387,13 @@ impl JordanForm {
                     let j = pair_block(&f, &a, &b, &comp.blocks);
                     let ak = self.a.convert_to(&f);
                     verified &= &ak * &t == &t * &j;
-                    block.t_approx = t.to_approx();
-                    block.j_approx = j.to_approx();
+                    // approximations from the complex embedding (degree d) are kept for
+                    // large fields: a float evaluation in a field of degree d(d-1) is not
+                    // reliable
+                    if f.degree() <= EXPAND_MAX_DEGREE {
+                        block.t_approx = t.to_approx();
+                        block.j_approx = j.to_approx();
+                    }
                     block.t = Some(t);
                     block.j = Some(j);
                 }

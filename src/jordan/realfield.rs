@@ -47,7 +47,7 @@ use crate::error::{Error, Result};
 use crate::field::{ComplexField, ComplexPair, Field, NfElem, NumberField, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 
 /// A real field with the real and imaginary parts of one root.
 #[derive(Clone, Debug)]
@@ -302,6 +302,15 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
         };
         let re = f.mul(&f.elem_from_poly(&hr), &den);
         let im = f.mul(&f.elem_from_poly(&hi), &den);
+        // the marked embedding carries (a, b) to the parts of this root: evaluated exactly
+        // at a rational point within 2^-128 of c (a float evaluation of a high-degree
+        // polynomial with large coefficients loses every digit and used to report a
+        // correct field as "marked at another root")
+        if !marked_at(&f, &c, &re, &im, theta)? {
+            return Err(Error::Verification(format!(
+                "the real field of a root of {p} is marked at another root"
+            )));
+        }
         let mut parts = simplify(RealParts {
             field: f,
             re,
@@ -310,21 +319,40 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
             powers: vec![],
         });
         parts.powers = theta_powers(&p, &parts.field, &parts.re, &parts.im)?;
-        // the marked embedding carries (a, b) to the parts of this root
-        let (ta, tb) = theta.approx();
-        let (fa, _) = parts.field.approx(&parts.re);
-        let (fb, _) = parts.field.approx(&parts.im);
-        let tol = 1e-6 * (1.0 + ta.abs() + tb.abs());
-        if (fa - ta).abs() > tol || (fb - tb).abs() > tol {
-            return Err(Error::Verification(format!(
-                "the real field of a root of {p} is marked at another root"
-            )));
-        }
         return Ok(parts);
     }
     Err(Error::Limit(format!(
         "no separating primitive element a + k b found for a root of {p}"
     )))
+}
+
+/// Whether $a(c) + b(c)\,i$ is $\theta$ (not another root): $a$, $b$ are evaluated exactly
+/// at the midpoint of an interval of width $2^{-128}(1 + |c|)$ around $c$ and compared
+/// with the certified approximation of $\theta$.
+fn marked_at(
+    f: &NumberField,
+    c: &AlgebraicNumber,
+    re: &NfElem,
+    im: &NfElem,
+    theta: &AlgebraicNumber,
+) -> Result<bool> {
+    let (lo, hi) = match c.interval() {
+        Some(iv) => iv,
+        None => return Ok(true),
+    };
+    let scale = Rational::one() + lo.abs().max(hi.abs());
+    let width = scale * Rational::new(1.into(), num_bigint::BigInt::one() << 128u32);
+    let c = if &hi - &lo > width {
+        c.refined(&width)?
+    } else {
+        c.clone()
+    };
+    let (lo, hi) = c.interval().unwrap_or((lo, hi));
+    let mid = (&lo + &hi) * Rational::new(1.into(), 2.into());
+    let at = |x: &NfElem| crate::field::rational_to_f64(&f.elem_to_poly(x).eval(&mid));
+    let (ta, tb) = theta.approx();
+    let tol = 1e-6 * (1.0 + ta.abs() + tb.abs());
+    Ok((at(re) - ta).abs() <= tol && (at(im) - tb).abs() <= tol)
 }
 
 /// Degree 1 and 2 fields in their usual presentation ($\mathbb{Q}$, $\mathbb{Q}(\sqrt f)$).
