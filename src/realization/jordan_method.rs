@@ -47,10 +47,24 @@ use std::sync::Arc;
 pub struct RealModalBlock {
     /// Display of the eigenvalue(s) (`-1 + i`, `sqrt(3)*i`, `-2`, ...).
     pub eigenvalue: String,
+    /// The real field of the entries; for a compact pair $K = \mathbb{Q}(\theta)$ marked
+    /// at $\theta$ (see [`RealModalBlock::compact`]).
     pub field: NumberField,
+    /// The block's $(A, B, C)$ over `field`; for a compact pair the complex modal data
+    /// $(J_\theta, W B, C V)$ over $K$, from which the real block is read off as
+    /// $A_r = [[\mathrm{Re}, \mathrm{Im}], [-\mathrm{Im}, \mathrm{Re}]]$ of $J_\theta$,
+    /// $B_r = [\mathrm{Re}\, WB; -\mathrm{Im}\, WB]$, $C_r = [2\,\mathrm{Re}\, CV,
+    /// 2\,\mathrm{Im}\, CV]$ (interleaved per state).
     pub a: Matrix<NumberField>,
     pub b: Matrix<NumberField>,
     pub c: Matrix<NumberField>,
+    /// A complex pair given in the compact form: the real block's entries are the real
+    /// and imaginary parts of the $K$-entries above (displayed `Re(...)`, `Im(...)`, with
+    /// `a<k>`, `b<k>` for $\mathrm{Re}\,\theta$, $\mathrm{Im}\,\theta$), never expanded
+    /// into $\mathbb{Q}(\mathrm{Re}\,\theta, \mathrm{Im}\,\theta)$ of degree up to $d(d-1)$.
+    pub compact: bool,
+    /// Order of the real block (twice the complex order for a pair).
+    pub order: usize,
 }
 
 /// The Jordan-method minimal realization.
@@ -134,24 +148,27 @@ fn trace(sums: &[Rational], x: &NfElem) -> Rational {
     x.0.iter().zip(sums).map(|(c, s)| c * s).sum()
 }
 
-/// The real field $F = \mathbb{Q}(\mathrm{Re}\,\theta, \mathrm{Im}\,\theta)$ of the complex root of
-/// `p` near `theta`, with $\mathrm{Re}\,\theta$ and $\mathrm{Im}\,\theta$ as elements of $F$
-/// (primitive element construction of `jordan::realfield`).
-fn real_parts_field(
-    p: &Poly<Q>,
-    theta: (f64, f64),
-    var: &str,
-) -> Result<(NumberField, NfElem, NfElem)> {
-    let rts = AlgebraicNumber::roots_of_irreducible(p)?;
-    let an = rts
+/// The certified root of the irreducible `p` closest to the approximation `theta`.
+fn closest_root(p: &Poly<Q>, theta: (f64, f64)) -> Option<AlgebraicNumber> {
+    let d = |z: &AlgebraicNumber| (z.approx().0 - theta.0).hypot(z.approx().1 - theta.1);
+    AlgebraicNumber::roots_of_irreducible(p)
+        .ok()?
         .into_iter()
-        .min_by(|x, y| {
-            let d = |z: &AlgebraicNumber| (z.approx().0 - theta.0).hypot(z.approx().1 - theta.1);
-            d(x).total_cmp(&d(y))
-        })
-        .expect("degree >= 1");
-    let parts = crate::jordan::realfield::real_parts_field(&an, var)?;
-    Ok((parts.field, parts.re, parts.im))
+        .min_by(|x, y| d(x).total_cmp(&d(y)))
+}
+
+/// Whether the real field of the complex root `z` may be small (both parts of degree at
+/// most [`crate::jordan::real::EXPAND_MAX_DEGREE`], computed only for eigenvalues of
+/// degree at most [`crate::jordan::real::PARTS_MAX_DEGREE`]), as for the real Jordan form.
+fn small_real_field(z: &AlgebraicNumber) -> bool {
+    use crate::jordan::real::{EXPAND_MAX_DEGREE, PARTS_MAX_DEGREE};
+    if z.degree() > PARTS_MAX_DEGREE {
+        return false;
+    }
+    match (z.try_re(), z.try_im()) {
+        (Ok(a), Ok(b)) => a.degree() <= EXPAND_MAX_DEGREE && b.degree() <= EXPAND_MAX_DEGREE,
+        _ => false,
+    }
 }
 
 /// Splits an element $e = \sum c_j t^j$ of $K$ at $t = a + i\beta$ into real and imaginary
@@ -179,6 +196,17 @@ fn compact_component(
         return Ok(None);
     }
     let theta = comp.root_elem();
+    if keep.len() == 1 {
+        // one excited and observed mode (a simple eigenvalue): already minimal
+        return Ok(Some(Compact {
+            a: Matrix::from_vec(k.clone(), 1, 1, vec![theta]),
+            b: bk.select_rows(&keep),
+            c: ck.select_cols(&keep),
+            field: k,
+            factor: comp.factor.clone(),
+            roots: comp.roots.clone(),
+        }));
+    }
     let nilp = crate::jordan::chains::jordan_block_matrix(&k, &k.zero(), &sizes);
     let trimmed =
         StateSpace::new_strictly_proper(nilp, bk.select_rows(&keep), ck.select_cols(&keep))?;
@@ -199,11 +227,23 @@ fn compact_component(
     }))
 }
 
-/// Minimal realization by the Jordan-form method.
+/// Minimal realization by the Jordan-form method, complex pairs expanded into their real
+/// field only when it is small (degree at most [`crate::jordan::real::EXPAND_MAX_DEGREE`]),
+/// otherwise in the compact form ([`RealModalBlock::compact`]).
 ///
 /// # Errors
-/// Errors of the Jordan decomposition and of the real-field construction.
+/// Errors of the Jordan decomposition.
 pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
+    minimal_jordan_with(sys, false)
+}
+
+/// As [`minimal_jordan`]; `expand` writes every complex pair in its real field
+/// $\mathbb{Q}(\mathrm{Re}\,\theta, \mathrm{Im}\,\theta)$ (degree up to $d(d-1)$; a pair
+/// whose field cannot be built stays compact).
+///
+/// # Errors
+/// Errors of the Jordan decomposition.
+pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMinimal> {
     let n = sys.nstates();
     let jf = jordan(&sys.a)?;
     let mut stage1 = 0;
@@ -234,14 +274,17 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
     let verified = sum == markov && r == mcm;
     // real blocks
     let mut blocks = vec![];
-    let mut symbols = vec![];
+    let mut symbols: Vec<(String, String)> = vec![];
     for c in &comps {
         let p = &c.factor;
         for (j, &(re, im)) in c.roots.iter().enumerate() {
             if im < 0.0 {
                 continue;
             }
-            let var = format!("r{}", symbols.len() + 1);
+            let var = format!(
+                "r{}",
+                symbols.iter().filter(|(k, _)| k.starts_with('r')).count() + 1
+            );
             if im == 0.0 || p.deg() == 1 {
                 // a real root: the same data in K marked at this root
                 let f = NumberField(Arc::new(NumberFieldCtx {
@@ -264,10 +307,50 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
                     a: conv(&c.a),
                     b: conv(&c.b),
                     c: conv(&c.c),
+                    compact: false,
+                    order: c.a.nrows(),
                 });
                 continue;
             }
-            let (f, a_re, beta) = real_parts_field(p, (re, im), &var)?;
+            let number = closest_root(p, (re, im));
+            let ev = number
+                .as_ref()
+                .map(|z| z.value_string())
+                .unwrap_or_default();
+            let expanded = match &number {
+                Some(z) if expand || small_real_field(z) => {
+                    crate::jordan::realfield::real_parts_field(z, &var)
+                        .ok()
+                        .map(|parts| (parts.field, parts.re, parts.im))
+                }
+                _ => None,
+            };
+            let Some((f, a_re, beta)) = expanded else {
+                // compact: the complex modal data over K marked at theta
+                let f = NumberField(Arc::new(NumberFieldCtx {
+                    modulus: c.field.modulus().clone(),
+                    root: (re, im),
+                    var: var.clone(),
+                }));
+                let k = var.trim_start_matches('r').to_string();
+                symbols.push((
+                    var.clone(),
+                    format!("root of {p} near {re:.10} + {im:.10}*i"),
+                ));
+                symbols.push((format!("a{k}"), format!("Re {var}")));
+                symbols.push((format!("b{k}"), format!("Im {var}")));
+                let conv = |m: &Matrix<NumberField>| m.map(&f, |x| x.clone());
+                blocks.push(RealModalBlock {
+                    eigenvalue: format!("{ev} (and its conjugate)"),
+                    field: f.clone(),
+                    a: conv(&c.a),
+                    b: conv(&c.b),
+                    c: conv(&c.c),
+                    compact: true,
+                    order: 2 * c.a.nrows(),
+                });
+                continue;
+            };
             if f.degree() > 1 {
                 symbols.push((
                     var,
@@ -303,22 +386,14 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
                     cc.set(row, 2 * i + 1, f.mul(&two, &y));
                 }
             }
-            let ev = AlgebraicNumber::roots_of_irreducible(p)
-                .ok()
-                .and_then(|v| {
-                    v.into_iter().min_by(|x, y| {
-                        ((x.approx().0 - re).hypot(x.approx().1 - im))
-                            .total_cmp(&(y.approx().0 - re).hypot(y.approx().1 - im))
-                    })
-                })
-                .map(|z| z.value_string())
-                .unwrap_or_default();
             blocks.push(RealModalBlock {
                 eigenvalue: format!("{ev} (and its conjugate)"),
                 field: f,
+                order: 2 * s,
                 a,
                 b,
                 c: cc,
+                compact: false,
             });
         }
     }
@@ -343,6 +418,9 @@ impl JordanMinimal {
         let mut b: Option<Matrix<Q>> = None;
         let mut c: Option<Matrix<Q>> = None;
         for blk in &self.blocks {
+            if blk.compact {
+                return None;
+            }
             a.push(conv(&blk.a)?);
             let bb = conv(&blk.b)?;
             let cb = conv(&blk.c)?;
@@ -380,6 +458,11 @@ impl JordanMinimal {
         let (mut a, mut b, mut c) = (empty(r, r), empty(r, m), empty(p, r));
         let mut off = 0;
         for blk in &self.blocks {
+            if blk.compact {
+                compact_outputs(blk, off, (&mut a, &mut b, &mut c));
+                off += blk.order;
+                continue;
+            }
             let f = &blk.field;
             let put = |o: &mut MatrixOut, i: usize, j: usize, x: &NfElem| {
                 o.exact[i][j] = f.fmt_elem(x);
@@ -433,6 +516,66 @@ impl JordanMinimal {
                 ),
             )
             .bool("verified", self.verified)
+    }
+}
+
+/// Writes a compact pair block at offset `off`: state `2i` is $\mathrm{Re}\, z_i$, state
+/// `2i + 1` is $-\mathrm{Im}\, z_i$ (the module docs' convention), entries displayed as
+/// `Re(...)`, `Im(...)` of the $K$-entries and `a<k>`, `b<k>` for the parts of $\theta$.
+fn compact_outputs(
+    blk: &RealModalBlock,
+    off: usize,
+    (a, b, c): (&mut MatrixOut, &mut MatrixOut, &mut MatrixOut),
+) {
+    let f = &blk.field;
+    let k = f.0.var.trim_start_matches('r').to_string();
+    let theta = f.generator();
+    // display of Re x / Im x (scaled by `scale`, negated by `neg`) and its approximation
+    let part = |x: &NfElem, im: bool, scale: i64, neg: bool| -> (String, f64) {
+        let (ar, ai) = f.approx(x);
+        let v = scale as f64 * if im { ai } else { ar } * if neg { -1.0 } else { 1.0 };
+        let sign = if neg { "-" } else { "" };
+        let pre = if scale == 1 { String::new() } else { format!("{scale}*") };
+        let text = if let Some(q) = f.to_rational(x) {
+            if im {
+                "0".to_string()
+            } else {
+                let q = q * Rational::from_integer(scale.into());
+                crate::field::fmt_rational(&if neg { -q } else { q })
+            }
+        } else if *x == theta {
+            format!("{sign}{pre}{}{k}", if im { "b" } else { "a" })
+        } else {
+            let s = f.fmt_elem(x);
+            format!("{sign}{pre}{}({s})", if im { "Im" } else { "Re" })
+        };
+        (text, v)
+    };
+    let put = |o: &mut MatrixOut, i: usize, j: usize, (text, v): (String, f64)| {
+        o.latex[i][j] = text.clone();
+        o.exact[i][j] = text;
+        o.approx[i][j] = (v, 0.0);
+    };
+    let s = blk.a.nrows();
+    for i in 0..s {
+        for j in 0..s {
+            let x = blk.a.get(i, j);
+            // [[Re, Im], [-Im, Re]] per complex entry
+            put(a, off + 2 * i, off + 2 * j, part(x, false, 1, false));
+            put(a, off + 2 * i, off + 2 * j + 1, part(x, true, 1, false));
+            put(a, off + 2 * i + 1, off + 2 * j, part(x, true, 1, true));
+            put(a, off + 2 * i + 1, off + 2 * j + 1, part(x, false, 1, false));
+        }
+        for col in 0..blk.b.ncols() {
+            let x = blk.b.get(i, col);
+            put(b, off + 2 * i, col, part(x, false, 1, false));
+            put(b, off + 2 * i + 1, col, part(x, true, 1, true));
+        }
+        for row in 0..blk.c.nrows() {
+            let x = blk.c.get(row, i);
+            put(c, row, off + 2 * i, part(x, false, 2, false));
+            put(c, row, off + 2 * i + 1, part(x, true, 2, false));
+        }
     }
 }
 
