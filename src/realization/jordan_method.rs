@@ -143,9 +143,52 @@ fn power_sums(p: &Poly<Q>, m: usize) -> Vec<Rational> {
     s
 }
 
-/// $\mathrm{Tr}_{K/\mathbb{Q}}$ of an element of $K = \mathbb{Q}[t]/(p)$.
-fn trace(sums: &[Rational], x: &NfElem) -> Rational {
-    x.0.iter().zip(sums).map(|(c, s)| c * s).sum()
+/// Adds $\mathrm{Tr}_{K/\mathbb{Q}}(C_p J_\theta^k B_p)$ to `sum[k]` for every $k$, without
+/// products in $K$ per $k$: $(J_\theta^k)_{l, l+r} = \binom kr \theta^{k-r}$ inside a Jordan
+/// block, so each entry is a sum of $\binom kr \mathrm{Tr}(\theta^{k-r} x)$ over the
+/// products $x = C_{il} B_{l+r,j}$ (computed once), and $\mathrm{Tr}(\theta^e x) = \sum_c
+/// x_c\, s_{e+c}$ with the power sums $s$ of the factor.
+fn add_traces(c: &Compact, sum: &mut [Matrix<Q>]) {
+    let kmax = sum.len();
+    let f = &c.field;
+    let s = c.a.nrows();
+    let sums = power_sums(&c.factor, kmax + c.factor.deg() + 1);
+    let mut start = vec![0; s];
+    for l in 1..s {
+        start[l] = if f.is_zero(c.a.get(l - 1, l)) {
+            l
+        } else {
+            start[l - 1]
+        };
+    }
+    for i in 0..c.c.nrows() {
+        for j in 0..c.b.ncols() {
+            for l in 0..s {
+                for l2 in l..s {
+                    if start[l2] != start[l] {
+                        continue;
+                    }
+                    let x = f.mul(c.c.get(i, l), c.b.get(l2, j));
+                    if f.is_zero(&x) {
+                        continue;
+                    }
+                    let r = l2 - l;
+                    // binom(k, r) for k = r, r + 1, ...
+                    let mut binom = Rational::from_integer(1.into());
+                    for (k, mk) in sum.iter_mut().enumerate().skip(r) {
+                        if k > r {
+                            binom = binom * Rational::from_integer(k.into())
+                                / Rational::from_integer((k - r).into());
+                        }
+                        let tr: Rational =
+                            x.0.iter().zip(&sums[k - r..]).map(|(a, b)| a * b).sum();
+                        let cur = mk.get(i, j) + &(&binom * &tr);
+                        mk.set(i, j, cur);
+                    }
+                }
+            }
+        }
+    }
 }
 
 /// The certified root of the irreducible `p` closest to the approximation `theta`.
@@ -261,14 +304,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
         .map(|_| Matrix::zeros(Q, sys.noutputs(), sys.ninputs()))
         .collect();
     for c in &comps {
-        let sums = power_sums(&c.factor, c.factor.deg().max(1));
-        let mut ab = c.b.clone();
-        for mk in sum.iter_mut() {
-            let m = &c.c * &ab;
-            let t = Matrix::from_fn(Q, m.nrows(), m.ncols(), |i, j| trace(&sums, m.get(i, j)));
-            *mk = &*mk + &t;
-            ab = &c.a * &ab;
-        }
+        add_traces(c, &mut sum);
     }
     let mcm = mcmillan_degree(sys);
     let verified = sum == markov && r == mcm;
