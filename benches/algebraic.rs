@@ -1,8 +1,9 @@
 //! Timings for root isolation, algebraic-number operations and Trager factorization
 //! (`cargo bench --bench algebraic`; plain std::time, best of a few runs).
 
+use exactlti::algebraic::NumberField;
 use exactlti::algebraic::{AlgebraicNumber, factor_over_number_field, roots};
-use exactlti::field::{Field, NumberField};
+use exactlti::field::Field;
 use exactlti::poly::parse_poly_q;
 use std::time::Instant;
 

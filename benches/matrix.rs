@@ -11,7 +11,9 @@
 //! lines compare the algorithms (`*_bareiss`, `*_berkowitz`) on smaller sizes.
 
 use exactlti::field::Rational;
-use exactlti::matrix::{fraction_free as ff, modular as mm};
+use exactlti::matrix::over_q as oq;
+use exactlti::qkernels as qk;
+use exactlti::qkernels::{fraction_free as ff, modular as mm};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -75,18 +77,18 @@ fn main() {
         return;
     }
 
-    let det = mm::det_q(100, &sq);
+    let det = oq::det_q(100, &sq);
     let check = det.numer() % num_bigint::BigInt::from(1_000_000_007u64);
     let check = (check + 1_000_000_007u64) % 1_000_000_007u64;
     println!("check det100 mod 1000000007: {check}");
-    time("rank 100x200 r50", reps, || mm::rank_q(100, 200, &low));
-    time("rref 100x200 r50", reps, || mm::rref_q(100, 200, &low));
+    time("rank 100x200 r50", reps, || oq::rank_q(100, 200, &low));
+    time("rref 100x200 r50", reps, || oq::rref_q(100, 200, &low));
     time("nullspace 100x200 r50", reps, || {
-        mm::nullspace_q(100, 200, &low)
+        oq::nullspace_q(100, 200, &low)
     });
-    time("det 100x100", reps, || mm::det_q(100, &sq));
-    time("charpoly 100x100", reps, || mm::charpoly_q(100, &sq));
-    time("inverse 100x100", reps, || mm::inverse_q(100, &sq));
+    time("det 100x100", reps, || oq::det_q(100, &sq));
+    time("charpoly 100x100", reps, || oq::charpoly_q(100, &sq));
+    time("inverse 100x100", reps, || oq::inverse_q(100, &sq));
 
     // algorithm against algorithm on small sizes (dispatch thresholds)
     for n in [4usize, 8, 12, 16, 24] {
@@ -120,8 +122,8 @@ fn main() {
 }
 #[allow(dead_code)]
 fn kernels(sq: &[Rational], low: &[Rational]) {
-    use mm::intmat::integer_rows;
-    let pr = mm::prime::nth_prime(0);
+    use qk::intmat::integer_rows;
+    let pr = qk::prime::nth_prime(0);
     let (b, _) = integer_rows(100, 100, sq);
     time("  integer_rows 100x100", 5, || integer_rows(100, 100, sq));
     time("  reduce 100x100", 5, || b.reduce(&pr));

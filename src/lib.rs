@@ -1,9 +1,50 @@
 //! # exactlti
 //!
 //! Exact structure of linear time-invariant systems: no round-off, ever, on the exact path.
+//! Numbers are exact rationals (`"0.08"` is 2/25), elements of quadratic fields or of
+//! number fields; every exact result carries the check of its defining identity
+//! (`verified`).
 //!
-//! Layers (acyclic): [`field`] → [`poly`] → [`matrix`] → jordan → system → realization →
-//! structure; `float` is a separate nalgebra backend used for cross-checks.
+//! ## A tour
+//!
+//! ```
+//! use exactlti::qmat;
+//! use exactlti::jordan::jordan;
+//! use exactlti::realization::{MinrealMethod, minimal};
+//! use exactlti::system::StateSpace;
+//!
+//! // x' = A x + B u, y = C x + D u over Q; text entries are exact decimals
+//! let sys = StateSpace::new(
+//!     qmat![[0, 1, 0], [-2, "-0.3", 0], [0, 0, -1]],
+//!     qmat![[0], [1], [0]],
+//!     qmat![[1, 0, 1]],
+//!     qmat![[0]],
+//! )
+//! .unwrap();
+//!
+//! // exact Jordan form: A T = T J checked exactly
+//! let jf = jordan(&sys.a).unwrap();
+//! assert!(jf.verified);
+//! assert_eq!(jf.charpoly.to_string(), "x^3 + 13/10*x^2 + 23/10*x + 2");
+//!
+//! // minimal realization: the mode -1 is uncontrollable, so the order drops to 2;
+//! // Markov parameters up to index 2n are checked exactly
+//! let min = minimal(&sys, MinrealMethod::Kalman).unwrap();
+//! assert_eq!((min.order, min.verified), (2, true));
+//! assert_eq!(min.system.markov(6), sys.markov(6));
+//! ```
+//!
+//! System files (JSON or TOML, exact numbers and parameter expressions) load without the
+//! command line through [`io::load_system_str`] / [`io::load_system_path`]; generic code
+//! over the file's field is written once as an [`io::SystemVisitor`] and dispatched by
+//! [`io::LoadedSystem::run`]. Reports (text, JSON, LaTeX) are built in [`report`], apart
+//! from the math.
+//!
+//! ## Layers
+//!
+//! [`field`] → [`poly`] → [`matrix`] → [`jordan`] → [`system`] → [`realization`] →
+//! [`structure`]; [`float`] is a separate nalgebra backend used for cross-checks; [`io`],
+//! [`report`] and [`cli`] sit on top.
 #![allow(non_snake_case)]
 #![allow(clippy::needless_range_loop)]
 #![allow(clippy::wrong_self_convention)]
@@ -17,6 +58,7 @@ pub mod io;
 pub mod jordan;
 pub mod matrix;
 pub mod poly;
+pub mod qkernels;
 pub mod realization;
 pub mod report;
 pub mod structure;

@@ -1,6 +1,5 @@
 //! Bicycle benchmark (Meijaard et al. 2007) as the EoM-like 7x7 descriptor system of the
 //! minimal-realizations paper, sec. 4.2: 7 -> 6 (standard form) -> 4 (minimal).
-mod common;
 use exactlti::field::{Field, Q, Rational, parse_rational, rational_to_f64};
 use exactlti::matrix::Matrix;
 use exactlti::realization::{MinrealMethod, descriptor_to_standard, mcmillan_degree, minimal};

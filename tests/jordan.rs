@@ -1,11 +1,11 @@
 //! Jordan decomposition: the papers' examples, properties on planted structures, errors.
 
-mod common;
-#[path = "common/jordan.rs"]
-mod jcommon;
+use crate::common;
+use crate::jcommon;
 
 use exactlti::Error;
-use exactlti::field::{Field, NfElem, NumberField, Q, Rational};
+use exactlti::algebraic::{NfElem, NumberField};
+use exactlti::field::{Field, Q, Rational};
 use exactlti::jordan::{JordanForm, jordan};
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;

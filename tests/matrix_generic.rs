@@ -1,5 +1,5 @@
 //! Test triad for the generic matrix algorithms over Q, Q(sqrt 2) and Q(i).
-mod common;
+use crate::common;
 use common::*;
 use exactlti::field::{Field, Q};
 use exactlti::matrix::Matrix;

@@ -1,11 +1,13 @@
 //! Exact matrix kernels over Q: the multi-modular path (`matrix::modular`) against the
-//! fraction-free path (`matrix::fraction_free`) and a naive rational Gauss–Jordan oracle.
+//! fraction-free path (`qkernels::fraction_free`) and a naive rational Gauss–Jordan oracle.
 //!
 //! Iteration counts scale with the env var `EXACTLTI_TEST_MULTIPLIER` (default 1).
 
 use exactlti::field::Rational;
-use exactlti::matrix::fraction_free as ff;
-use exactlti::matrix::modular as mm;
+use exactlti::matrix::over_q as oq;
+use exactlti::qkernels as qk;
+use exactlti::qkernels::fraction_free as ff;
+use exactlti::qkernels::modular as mm;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
@@ -135,7 +137,7 @@ fn poly_at_matrix(n: usize, p: &[Rational], a: &[Rational]) -> Vec<Rational> {
 fn check_square(n: usize, a: &[Rational], ctx: &str) {
     let det = mm::det_modular(n, a);
     assert_eq!(det, ff::det_bareiss(n, a), "det {ctx}");
-    assert_eq!(det, mm::det_q(n, a), "det dispatch {ctx}");
+    assert_eq!(det, oq::det_q(n, a), "det dispatch {ctx}");
     let cp = mm::charpoly_modular(n, a);
     assert_eq!(cp, ff::charpoly_berkowitz(n, a), "charpoly {ctx}");
     assert_eq!(cp.len(), n + 1, "charpoly length {ctx}");
@@ -169,7 +171,7 @@ fn check_rect(m: usize, n: usize, a: &[Rational], ctx: &str) {
     );
     assert_eq!(
         (r.clone(), piv.clone()),
-        mm::rref_q(m, n, a),
+        oq::rref_q(m, n, a),
         "rref dispatch {ctx}"
     );
     // RREF is idempotent and canonical
@@ -181,9 +183,9 @@ fn check_rect(m: usize, n: usize, a: &[Rational], ctx: &str) {
     let rank = piv.len();
     assert_eq!(mm::rank_modular(m, n, a), rank, "rank {ctx}");
     assert_eq!(ff::rank_bareiss(m, n, a), rank, "rank bareiss {ctx}");
-    assert_eq!(mm::rank_q(m, n, a), rank, "rank dispatch {ctx}");
+    assert_eq!(oq::rank_q(m, n, a), rank, "rank dispatch {ctx}");
     let ns = mm::nullspace_modular(m, n, a);
-    assert_eq!(ns, mm::nullspace_q(m, n, a), "nullspace dispatch {ctx}");
+    assert_eq!(ns, oq::nullspace_q(m, n, a), "nullspace dispatch {ctx}");
     assert_eq!(ns.len() + rank, n, "rank + nullity {ctx}");
     for v in &ns {
         assert!(
@@ -196,22 +198,22 @@ fn check_rect(m: usize, n: usize, a: &[Rational], ctx: &str) {
 #[test]
 fn examples_empty_and_1x1() {
     // 0 x 0
-    assert_eq!(mm::det_q(0, &[]), q(1));
+    assert_eq!(oq::det_q(0, &[]), q(1));
     assert_eq!(mm::det_modular(0, &[]), q(1));
-    assert_eq!(mm::charpoly_q(0, &[]), vec![q(1)]);
+    assert_eq!(oq::charpoly_q(0, &[]), vec![q(1)]);
     assert_eq!(mm::charpoly_modular(0, &[]), vec![q(1)]);
-    assert_eq!(mm::inverse_q(0, &[]), Some(vec![]));
+    assert_eq!(oq::inverse_q(0, &[]), Some(vec![]));
     assert_eq!(mm::inverse_modular(0, &[]), Some(vec![]));
-    assert_eq!(mm::rank_q(0, 0, &[]), 0);
+    assert_eq!(oq::rank_q(0, 0, &[]), 0);
     assert_eq!(mm::rref_modular(0, 0, &[]), (vec![], vec![]));
     // 0 x n and n x 0
     for (m, n) in [(0, 3), (3, 0)] {
-        assert_eq!(mm::rank_q(m, n, &[]), 0);
+        assert_eq!(oq::rank_q(m, n, &[]), 0);
         assert_eq!(mm::rank_modular(m, n, &[]), 0);
-        assert_eq!(mm::rref_q(m, n, &[]), (vec![], vec![]));
+        assert_eq!(oq::rref_q(m, n, &[]), (vec![], vec![]));
         assert_eq!(mm::rref_modular(m, n, &[]), (vec![], vec![]));
         let ns = mm::nullspace_modular(m, n, &[]);
-        assert_eq!(ns, mm::nullspace_q(m, n, &[]));
+        assert_eq!(ns, oq::nullspace_q(m, n, &[]));
         assert_eq!(ns.len(), n);
         for (f, v) in ns.iter().enumerate() {
             assert_eq!(v, &(0..n).map(|j| q((j == f) as i64)).collect::<Vec<_>>());
@@ -222,9 +224,9 @@ fn examples_empty_and_1x1() {
         let s = [a.clone()];
         check_square(1, &s, &format!("[{a}]"));
         check_rect(1, 1, &s, &format!("[{a}]"));
-        assert_eq!(mm::charpoly_q(1, &s), vec![-a.clone(), q(1)]);
+        assert_eq!(oq::charpoly_q(1, &s), vec![-a.clone(), q(1)]);
     }
-    assert_eq!(mm::inverse_q(1, &[qq(-5, 3)]), Some(vec![qq(-3, 5)]));
+    assert_eq!(oq::inverse_q(1, &[qq(-5, 3)]), Some(vec![qq(-3, 5)]));
     assert_eq!(mm::inverse_modular(1, &[q(0)]), None);
 }
 
@@ -296,7 +298,7 @@ fn properties_medium_dispatch_to_modular() {
         let a = g.low_rank(m, n, k);
         let ctx = format!("it {it}: {m}x{n} rank <= {k}");
         check_rect(m, n, &a, &ctx);
-        assert!(mm::rank_q(m, n, &a) <= k, "{ctx}");
+        assert!(oq::rank_q(m, n, &a) <= k, "{ctx}");
         let n = 9 + g.below(4);
         let a = g.matrix(n, n);
         check_square(n, &a, &format!("it {it}: {n}x{n} A = {a:?}"));
@@ -311,8 +313,8 @@ fn thin_products_have_the_planted_rank() {
         let l: Vec<Rational> = (0..30 * k).map(|_| q(g.int(-9, 9))).collect();
         let r: Vec<Rational> = (0..k * 40).map(|_| q(g.int(-9, 9))).collect();
         let a = matmul(30, k, 40, &l, &r);
-        let rank = mm::rank_q(30, 40, &a);
-        assert_eq!(rank, mm::rank_q(k, 40, &r).min(mm::rank_q(30, k, &l)));
+        let rank = oq::rank_q(30, 40, &a);
+        assert_eq!(rank, oq::rank_q(k, 40, &r).min(oq::rank_q(30, k, &l)));
         assert_eq!(rank, k, "generic rank k = {k}");
         check_rect(30, 40, &a, &format!("rank {k}"));
     }
@@ -321,7 +323,7 @@ fn thin_products_have_the_planted_rank() {
 #[test]
 fn unlucky_primes_are_discarded() {
     // the first prime of the sequence divides entries and minors
-    let p = BigInt::from(mm::prime::nth_prime(0).p);
+    let p = BigInt::from(qk::prime::nth_prime(0).p);
     let pq = Rational::from_integer(p.clone());
     let a = vec![pq.clone(), q(0), q(0), q(1)];
     assert_eq!(mm::rank_modular(2, 2, &a), 2);
@@ -337,7 +339,7 @@ fn unlucky_primes_are_discarded() {
     assert_eq!((r, piv), rref_naive(2, 3, &a));
     // several early primes at once: det = p0 p1 p2
     let ps: Vec<Rational> = (0..3)
-        .map(|i| Rational::from_integer(mm::prime::nth_prime(i).p.into()))
+        .map(|i| Rational::from_integer(qk::prime::nth_prime(i).p.into()))
         .collect();
     let a = vec![
         ps[0].clone(),
@@ -385,11 +387,11 @@ fn similarity_invariance() {
                 _ => q(0),
             })
             .collect();
-        let ti = mm::inverse_q(n, &t).expect("unit triangular");
+        let ti = oq::inverse_q(n, &t).expect("unit triangular");
         let b = matmul(n, n, n, &matmul(n, n, n, &ti, &a), &t);
         let ctx = format!("it {it}: n = {n}");
-        assert_eq!(mm::charpoly_q(n, &a), mm::charpoly_q(n, &b), "{ctx}");
-        assert_eq!(mm::rank_q(n, n, &a), mm::rank_q(n, n, &b), "{ctx}");
-        assert_eq!(mm::det_q(n, &a), mm::det_q(n, &b), "{ctx}");
+        assert_eq!(oq::charpoly_q(n, &a), oq::charpoly_q(n, &b), "{ctx}");
+        assert_eq!(oq::rank_q(n, n, &a), oq::rank_q(n, n, &b), "{ctx}");
+        assert_eq!(oq::det_q(n, &a), oq::det_q(n, &b), "{ctx}");
     }
 }

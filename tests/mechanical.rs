@@ -1,7 +1,7 @@
 //! Mechanical normal form (Mayet & Kammermeier): the paper's App. B and App. C cases, random
 //! mechanical systems scrambled by similarities, failing conditions and invalid shapes.
 
-mod common;
+use crate::common;
 
 use common::{Rng, iters, unimodular};
 use exactlti::error::Error;

@@ -1,5 +1,5 @@
 //! Minimal realization, Kalman decomposition, descriptor conversion and Gramians.
-mod common;
+use crate::common;
 use common::systems::sliding_masses;
 use common::*;
 use exactlti::field::{Field, Q, Rational};
@@ -397,7 +397,7 @@ fn pbh_agrees_with_kalman_rank_tests() {
 #[test]
 fn number_field_matrices_at_jordan_sizes() {
     // rref and null space of the 20x20 sliding-mass A - t I over Q[t]/(t^4 + 4 t^2 + 1)
-    use exactlti::field::NumberField;
+    use exactlti::algebraic::NumberField;
     use exactlti::poly::Poly;
     let s = sliding_masses();
     let k = NumberField::new(&Poly::from_i64s(&[1, 0, 4, 0, 1]), (0.0, 0.5176380902)).unwrap();

@@ -2,7 +2,7 @@
 //! is known by construction, and every exact minimal-realization method must return it,
 //! verified. Sizes stay at n <= 20 so the debug build runs them quickly; the benchmark
 //! (`cargo bench --bench realization`) runs n up to 100.
-mod common;
+use crate::common;
 
 use common::systems::{Planted, planted, planted_scaled};
 use exactlti::field::{Q, Rational};

@@ -1,7 +1,7 @@
 //! Special coordinate basis and invariant zeros: the paper's examples (Grip & Saberi,
 //! secs. IV and V), random systems and bad input.
 
-mod common;
+use crate::common;
 
 use common::{Rng, iters, random_matrix, unimodular};
 use exactlti::Error;

@@ -5,7 +5,7 @@
 //! $p'(z)/p(z) = \sum_k 1/(z - r_k)$, if every $|z - r_k| > \rho$ then $|p'/p| < n/\rho$.
 //!
 //! Approximations $z_1, \dots, z_n$ come from the Aberth–Ehrlich iteration in a small
-//! software floating point ([`Fx`], a `BigInt` mantissa and a binary exponent, precision
+//! software floating point (`Fx`, a `BigInt` mantissa and a binary exponent, precision
 //! doubled on failure). Each $z_j$ is then rounded to a dyadic Gaussian rational and its
 //! inclusion radius is computed **exactly** (Gaussian-integer Horner, integer square root
 //! rounded up). The axis-parallel bounding boxes are enlarged strictly beyond the discs. If

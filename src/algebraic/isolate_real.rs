@@ -1,7 +1,7 @@
 //! Certified real root isolation: Descartes' rule of signs with bisection (the
 //! Vincent–Collins–Akritas method) on integer polynomials, with exact Taylor shifts.
 //!
-//! For a square-free $p \in \mathbb{Z}[x]$ the roots in $(0, 1)$ of $q$ correspond to the
+//! For a square-free $p \in \mathbb{Z}\[x\]$ the roots in $(0, 1)$ of $q$ correspond to the
 //! positive roots of $(x+1)^n q(1/(x+1))$, and the number $v$ of sign variations of its
 //! coefficients exceeds that count by an even number (Descartes). $v = 0$ proves no root,
 //! $v = 1$ proves exactly one; otherwise $(0, 1)$ is bisected with $2^n q(x/2)$ and its Taylor

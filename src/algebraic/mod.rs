@@ -2,7 +2,7 @@
 //! over $\mathbb{Q}$ (as monic polynomials) and over number fields, and the library side of
 //! `exactlti poly factor|roots`.
 //!
-//! An algebraic number is its minimal polynomial $m \in \mathbb{Q}[x]$ (monic, irreducible)
+//! An algebraic number is its minimal polynomial $m \in \mathbb{Q}\[x\]$ (monic, irreducible)
 //! together with a region holding exactly one root of $m$: an open interval with rational
 //! endpoints for a real root (Descartes / VCA isolation, [`isolate_real`]) or a closed box
 //! with rational corners for a non-real one (Newton inclusion discs certified in exact
@@ -16,26 +16,27 @@
 //! | [`is_irreducible_q`] | irreducibility over $\mathbb{Q}$ |
 //! | [`roots`] | every root of $p$ with its multiplicity |
 //! | [`AlgebraicNumber::roots_of_irreducible`] | the $\deg p$ roots of an irreducible $p$ |
-//! | [`factor_over_number_field`] | factorization over $\mathbb{Q}[t]/(m)$ (Trager) |
+//! | [`factor_over_number_field`] | factorization over $\mathbb{Q}\[t\]/(m)$ (Trager) |
 //! | [`composed_half_sum`], [`composed_half_diff_imag`] | $\prod (x - \frac{r_i + r_j}{2})$, $\prod (x - \frac{r_i - r_j}{2i})$ |
-//! | [`factor_report`], [`roots_report`] | the CLI's `poly factor` / `poly roots` reports |
+//! | [`crate::report::sections::factor_report`], [`crate::report::sections::roots_report`] | the CLI's `poly factor` / `poly roots` reports |
 
 pub mod display;
 pub mod isolate_complex;
 pub mod isolate_real;
 pub mod nf_factor;
 pub mod number;
+pub mod number_field;
 pub(crate) mod zp;
 
 pub use nf_factor::factor_over_number_field;
 pub use number::AlgebraicNumber;
+pub use number_field::{NfElem, NumberField, NumberFieldCtx};
 
 use crate::error::{Error, Result};
 use crate::field::{Q, Rational};
-use crate::poly::Poly;
 use crate::poly::factor::factor_zpoly;
 use crate::poly::zpoly::ZPoly;
-use crate::report::{Report, Value};
+use crate::poly::{Poly, monic_from_power_sums, newton_power_sums};
 use num_traits::{One, Zero};
 
 /// Leading coefficient and monic irreducible factors with multiplicities.
@@ -87,46 +88,6 @@ pub fn is_irreducible_q(p: &Poly<Q>) -> bool {
     p.deg() >= 1 && crate::poly::factor::is_irreducible(&ZPoly::new(zp::from_poly_q(p)))
 }
 
-/// Newton power sums $s_0, \dots, s_N$ of the roots of the monic `p`.
-fn power_sums(p: &Poly<Q>, upto: usize) -> Vec<Rational> {
-    let n = p.deg();
-    let a = |i: usize| p.coeff(i); // coefficient of x^i
-    let mut s = vec![Rational::from_integer(n.into())];
-    for k in 1..=upto {
-        // s_k = -(k a_{n-k} + sum_{i=1}^{k-1} a_{n-i} s_{k-i})
-        let mut v = if k <= n {
-            a(n - k) * Rational::from_integer(k.into())
-        } else {
-            Rational::zero()
-        };
-        for i in 1..k.min(n + 1) {
-            if i < k {
-                v += a(n - i) * &s[k - i];
-            }
-        }
-        s.push(-v);
-    }
-    s
-}
-
-/// Monic polynomial of degree `n` with power sums `s[1..=n]` (Newton's identities).
-fn from_power_sums(s: &[Rational], n: usize) -> Poly<Q> {
-    let mut e = vec![Rational::one()];
-    for k in 1..=n {
-        let mut v = Rational::zero();
-        for i in 1..=k {
-            let t = &e[k - i] * &s[i];
-            if i % 2 == 1 { v += t } else { v -= t }
-        }
-        e.push(v / Rational::from_integer(k.into()));
-    }
-    let mut c = vec![Rational::zero(); n + 1];
-    for k in 0..=n {
-        c[n - k] = if k % 2 == 0 { e[k].clone() } else { -&e[k] };
-    }
-    Poly::new(Q, c)
-}
-
 fn binomials(n: usize) -> Vec<Vec<Rational>> {
     let mut rows = vec![vec![Rational::one()]];
     for k in 1..=n {
@@ -145,7 +106,7 @@ pub fn composed_half_sum(p: &Poly<Q>) -> Poly<Q> {
     let p = p.monic();
     let n = p.deg();
     let big = n * n;
-    let s = power_sums(&p, big);
+    let s = newton_power_sums(&p, big);
     let c = binomials(big);
     let mut t = vec![Rational::from_integer(big.into())];
     let mut h = Rational::one();
@@ -157,7 +118,7 @@ pub fn composed_half_sum(p: &Poly<Q>) -> Poly<Q> {
         }
         t.push(v * &h);
     }
-    from_power_sums(&t, big)
+    monic_from_power_sums(&t, big)
 }
 
 /// $\prod_{i,j} (y - (r_i - r_j)/(2i))$ over the roots of `p`: real coefficients, the
@@ -166,7 +127,7 @@ pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
     let p = p.monic();
     let n = p.deg();
     let big = n * n;
-    let s = power_sums(&p, big);
+    let s = newton_power_sums(&p, big);
     let c = binomials(big);
     let mut t = vec![Rational::from_integer(big.into())];
     for k in 1..=big {
@@ -190,7 +151,7 @@ pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
         }
         t.push(v / d);
     }
-    from_power_sums(&t, big)
+    monic_from_power_sums(&t, big)
 }
 
 /// All roots of `p` with multiplicities: real ones ascending, then non-real ones by (real
@@ -208,55 +169,4 @@ pub fn roots(p: &Poly<Q>) -> Result<Vec<(AlgebraicNumber, usize)>> {
     }
     out.sort_by(|a, b| number::cmp_complex(&a.0, &b.0));
     Ok(out)
-}
-
-/// The `poly factor` report: `content` (leading coefficient, exact) and `factors[]` of
-/// `{poly, multiplicity}` (monic irreducible over Q).
-///
-/// # Errors
-/// As [`factor_q`].
-pub fn factor_report(p: &Poly<Q>) -> Result<Report> {
-    let (lc, facs) = factor_q(p)?;
-    let items = facs
-        .iter()
-        .map(|(f, e)| {
-            Value::Obj(
-                Report::new()
-                    .str("poly", f.to_string())
-                    .int("multiplicity", *e),
-            )
-        })
-        .collect();
-    Ok(Report::titled("factorization over QQ")
-        .str("input", p.to_string())
-        .str("content", crate::field::fmt_rational(&lc))
-        .list("factors", items))
-}
-
-/// The `poly roots` report: `roots[]` of `{minpoly, value, approx: [re, im], multiplicity,
-/// digits: [re, im]}` with `digits` correct significant digits (default use: 10).
-///
-/// # Errors
-/// As [`roots`].
-pub fn roots_report(p: &Poly<Q>, digits: usize) -> Result<Report> {
-    let rs = roots(p)?;
-    let items = rs
-        .iter()
-        .map(|(r, e)| {
-            let (re, im) = r.approx();
-            let (dre, dim) = r.digits(digits);
-            Value::Obj(
-                Report::new()
-                    .str("minpoly", r.minpoly().to_string())
-                    .str("value", r.value_string())
-                    .list("approx", vec![Value::Float(re), Value::Float(im)])
-                    .int("multiplicity", *e)
-                    .list("digits", vec![Value::Str(dre), Value::Str(dim)]),
-            )
-        })
-        .collect();
-    Ok(Report::titled("roots")
-        .str("input", p.to_string())
-        .int("degree", p.deg())
-        .list("roots", items))
 }

@@ -1,7 +1,7 @@
-//! Factorization over a number field $K = \mathbb{Q}[t]/(m)$ by Trager's norm method.
+//! Factorization over a number field $K = \mathbb{Q}\[t\]/(m)$ by Trager's norm method.
 //!
-//! For square-free monic $f \in K[x]$ choose $s = 0, 1, -1, 2, -2, \dots$ until the norm
-//! $N(x) = \mathrm{Res}_t\big(m(t), f(x - s t, t)\big) \in \mathbb{Q}[x]$ is square-free.
+//! For square-free monic $f \in K\[x\]$ choose $s = 0, 1, -1, 2, -2, \dots$ until the norm
+//! $N(x) = \mathrm{Res}_t\big(m(t), f(x - s t, t)\big) \in \mathbb{Q}\[x\]$ is square-free.
 //! Then $N = \prod_i N_i$ over $\mathbb{Q}$ gives $f(x - s t) = \prod_i \gcd_K(f(x - s t),
 //! N_i)$ with each gcd irreducible over $K$ (Trager 1976), and substituting back
 //! $x \mapsto x + s t$ gives the factors of $f$. The norm is computed by evaluation at
@@ -13,11 +13,12 @@
 //! | [`factor_over_number_field`] | monic irreducible factors over $K$ with multiplicities |
 //! | [`norm`] | $\mathrm{Res}_t(m(t), f(x, t))$ |
 
+use super::{NfElem, NumberField};
 use crate::error::{Error, Result};
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::poly::Poly;
 
-/// The norm $N_{K(x)/\mathbb{Q}(x)}(f) = \mathrm{Res}_t(m(t), f(x, t))$ of `f` in $K[x]$
+/// The norm $N_{K(x)/\mathbb{Q}(x)}(f) = \mathrm{Res}_t(m(t), f(x, t))$ of `f` in $K\[x\]$
 /// (monic in $x$ of degree $[K:\mathbb{Q}] \deg f$ when `f` is monic).
 pub fn norm(f: &Poly<NumberField>) -> Poly<Q> {
     let k = f.field();
@@ -123,7 +124,8 @@ fn trager_squarefree(f: &Poly<NumberField>) -> Result<Vec<Poly<NumberField>>> {
 /// # Examples
 /// ```
 /// use exactlti::algebraic::factor_over_number_field;
-/// use exactlti::field::{Field, NumberField, Q};
+/// use exactlti::algebraic::NumberField;
+/// use exactlti::field::{Field, Q};
 /// use exactlti::poly::Poly;
 /// // x^2 + 1 over Q(i) = Q[t]/(t^2 + 1) splits as (x - t)(x + t)
 /// let k = NumberField::new(&Poly::from_i64s(&[1, 0, 1]), (0.0, 1.0)).unwrap();

@@ -1,103 +1,158 @@
 //! One function per command: load, compute, report.
+//!
+//! Commands on a system file are written once, generic over the file's field `K`, inside
+//! [`FileCommand::visit`]; the file's field is decided at one point,
+//! [`crate::io::LoadedSystem::run`].
 
-use super::load::{Loaded, Typed, load_system};
-use super::{Command, Failure, LinalgOp, MethodArg};
-use crate::field::Field;
+use super::{Command, Failure, LinalgOp, MethodArg, Outcome};
+use crate::error::Error;
+use crate::field::{Field, Q};
+use crate::io::{
+    LoadedSystem, SystemFile, SystemFormat, SystemVisitor, TypedSystem, as_rational,
+    load_system_path, load_system_str,
+};
 use crate::matrix::Matrix;
 use crate::realization::{self, MinrealMethod};
-use crate::report::{Report, Value, str_list};
+use crate::report::{Report, Value, sections};
 use std::path::Path;
 
-/// Runs `f` over whichever field the file is in.
-macro_rules! over_ground {
-    ($loaded:expr, |$t:ident| $body:expr) => {
-        match &$loaded {
-            Loaded::Q(_, $t) => $body,
-            Loaded::Quadratic(_, $t) => $body,
-        }
-    };
-}
-
 /// Dispatches a command.
-pub fn execute(cmd: &Command) -> Result<Report, Failure> {
+pub fn execute(cmd: &Command) -> Result<Outcome, Failure> {
     match cmd {
-        Command::Linalg { op, file } => linalg(*op, file),
-        Command::Minreal { file, method } => minreal(file, *method),
-        Command::Standard { file } => standard(file),
-        Command::Analyze { file } => analyze(file.as_deref()),
-        Command::Poly { op } => poly(op),
-        Command::Jordan { file, real, expand } => {
-            let l = load_system(file)?;
-            let jf = match &l {
-                Loaded::Q(_, t) => crate::jordan::jordan(&t.a_raw),
-                Loaded::Quadratic(_, t) => crate::jordan::jordan_quadratic(&t.a_raw),
-            }
-            .map_err(|e| with_path(file, e))?;
-            if *real {
-                Ok(jf
-                    .real_form_with(*expand)
-                    .map_err(|e| with_path(file, e))?
-                    .report())
-            } else {
-                Ok(jf.report())
-            }
+        Command::Poly { op } => poly(op).map(Outcome::plain),
+        Command::Analyze { file } => {
+            let l = load_or_builtin(file.as_deref())?;
+            l.run(Analyze)
         }
-        Command::Modes { file } => {
-            let l = load_system(file)?;
-            let t = l.rational("the modal table")?;
-            Ok(realization::modal_table(&t.ss.a)
-                .map_err(|e| with_path(file, e))?
-                .report())
-        }
-        Command::Scb { file } => {
-            let l = load_system(file)?;
-            over_ground!(l, |t| scb_typed(t, file))
-        }
-        Command::Mnf { file } => {
-            let l = load_system(file)?;
-            let t = l.rational("the mechanical normal form")?;
-            let s = &t.ss;
-            let r = crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d)
-                .map_err(|e| with_path(file, e))?;
-            Ok(r.report())
-        }
-        Command::Freqresp {
-            file,
-            from,
-            to,
-            points,
-            svg,
-            csv,
-        } => {
-            let l = load_system(file)?;
-            over_ground!(l, |t| super::float_cmds::freqresp(
-                t,
-                file,
-                *from,
-                *to,
-                *points,
-                svg.as_deref(),
-                csv.as_deref()
-            ))
-        }
-        Command::Check { file } => {
-            let l = load_system(file)?;
-            match &l {
-                Loaded::Q(_, t) => {
-                    let extra = super::float_cmds::jordan_comparison(&t.a_raw, file)?;
-                    super::float_cmds::check(t, file, extra)
-                }
-                Loaded::Quadratic(_, t) => super::float_cmds::check(t, file, vec![]),
-            }
-        }
-        Command::Zeros { file } => {
-            let l = load_system(file)?;
-            over_ground!(l, |t| zeros_typed(t, file))
+        Command::Jordan { file, .. }
+        | Command::Minreal { file, .. }
+        | Command::Standard { file }
+        | Command::Scb { file }
+        | Command::Mnf { file }
+        | Command::Zeros { file }
+        | Command::Modes { file }
+        | Command::Freqresp { file, .. }
+        | Command::Check { file }
+        | Command::Linalg { file, .. } => {
+            let l = load_system_path(file)?;
+            l.run(FileCommand { cmd, path: file })
         }
     }
 }
 
-fn with_path(path: &Path, e: crate::error::Error) -> Failure {
+/// A command on one system file.
+struct FileCommand<'a> {
+    cmd: &'a Command,
+    path: &'a Path,
+}
+
+impl SystemVisitor for FileCommand<'_> {
+    type Output = Result<Outcome, Failure>;
+    fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+        let path = self.path;
+        let e = |err| with_path(path, err);
+        let s = &t.ss;
+        match self.cmd {
+            Command::Jordan { real, expand, .. } => {
+                let jf = jordan_any(&t.a_raw).map_err(e)?;
+                if *real {
+                    let rf = jf.real_form_with(*expand).map_err(e)?;
+                    // a real form left in complex coordinates (exact = false) is not checked
+                    Ok(Outcome::new(rf.report(), !rf.exact || rf.verified))
+                } else {
+                    Ok(Outcome::new(jf.report(), jf.verified))
+                }
+            }
+            Command::Modes { .. } => {
+                let q = needs_rational(f, t, "the modal table")?;
+                Ok(Outcome::plain(
+                    realization::modal_table(&q.ss.a).map_err(e)?.report(),
+                ))
+            }
+            Command::Mnf { .. } => {
+                let q = needs_rational(f, t, "the mechanical normal form")?;
+                let s = &q.ss;
+                let m =
+                    crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d)
+                        .map_err(e)?;
+                // nothing to verify when the form does not exist
+                Ok(Outcome::new(m.report(), !m.exists || m.verified))
+            }
+            Command::Scb { .. } => {
+                let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
+                let ok = r.verified && r.verify();
+                Ok(Outcome::new(r.report(), ok))
+            }
+            Command::Zeros { .. } => {
+                let z =
+                    crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
+                Ok(Outcome::plain(z.report()))
+            }
+            Command::Freqresp {
+                from,
+                to,
+                points,
+                svg,
+                csv,
+                ..
+            } => super::float_cmds::freqresp(
+                t,
+                path,
+                *from,
+                *to,
+                *points,
+                svg.as_deref(),
+                csv.as_deref(),
+            )
+            .map(Outcome::plain),
+            Command::Check { .. } => {
+                let extra = match as_rational(t) {
+                    Some(q) => super::float_cmds::jordan_comparison(&q.a_raw, path)?,
+                    None => vec![],
+                };
+                super::float_cmds::check(t, path, extra).map(Outcome::plain)
+            }
+            Command::Linalg { op, .. } => linalg(*op, &t.a_raw, path).map(Outcome::plain),
+            Command::Minreal { method, .. } => minreal(f, t, *method, path),
+            Command::Standard { .. } => Ok(standard(t, path)?),
+            Command::Poly { .. } | Command::Analyze { .. } => {
+                unreachable!("dispatched in execute")
+            }
+        }
+    }
+}
+
+/// The system over Q, or exit 2 naming the field when the file's entries lie in a larger one.
+fn needs_rational<'t, K: Field + 'static>(
+    f: &SystemFile,
+    t: &'t TypedSystem<K>,
+    what: &str,
+) -> Result<&'t TypedSystem<Q>, Failure> {
+    as_rational(t).ok_or_else(|| Failure {
+        code: 2,
+        message: format!(
+            "{}: {what} needs rational matrices; this file's entries lie in {}",
+            f.path, f.ground
+        ),
+    })
+}
+
+/// The exact Jordan form over the fields that have one (Q and quadratic fields).
+fn jordan_any<K: Field + 'static>(a: &Matrix<K>) -> crate::Result<crate::jordan::JordanForm> {
+    let any = a as &dyn std::any::Any;
+    if let Some(q) = any.downcast_ref::<Matrix<Q>>() {
+        return crate::jordan::jordan(q);
+    }
+    if let Some(k) = any.downcast_ref::<Matrix<crate::field::QuadraticField>>() {
+        return crate::jordan::jordan_quadratic(k);
+    }
+    Err(Error::Unsupported(format!(
+        "Jordan form over {}",
+        a.field()
+    )))
+}
+
+pub(super) fn with_path(path: &Path, e: Error) -> Failure {
     let f: Failure = e.into();
     Failure {
         code: f.code,
@@ -105,7 +160,7 @@ fn with_path(path: &Path, e: crate::error::Error) -> Failure {
     }
 }
 
-fn linalg_typed<K: Field>(op: LinalgOp, a: &Matrix<K>, path: &Path) -> Result<Report, Failure> {
+fn linalg<K: Field>(op: LinalgOp, a: &Matrix<K>, path: &Path) -> Result<Report, Failure> {
     let e = |err| with_path(path, err);
     let r = Report::titled(format!("linalg {op:?}").to_lowercase());
     Ok(match op {
@@ -141,70 +196,35 @@ fn linalg_typed<K: Field>(op: LinalgOp, a: &Matrix<K>, path: &Path) -> Result<Re
     })
 }
 
-fn linalg(op: LinalgOp, file: &Path) -> Result<Report, Failure> {
-    let l = load_system(file)?;
-    over_ground!(l, |t| linalg_typed(op, &t.a_raw, file))
-}
-
-fn minreal_typed<K: Field>(t: &Typed<K>, m: MinrealMethod, path: &Path) -> Result<Report, Failure> {
-    let r = realization::minimal(&t.ss, m).map_err(|e| with_path(path, e))?;
-    Ok(r.report())
-}
-
-fn minreal(file: &Path, method: MethodArg) -> Result<Report, Failure> {
-    let l = load_system(file)?;
-    if method == MethodArg::Jordan {
-        let t = l.rational("the Jordan-form method")?;
-        return Ok(realization::minimal_jordan(&t.ss)
-            .map_err(|e| with_path(file, e))?
-            .report());
-    }
+fn minreal<K: Field + 'static>(
+    f: &SystemFile,
+    t: &TypedSystem<K>,
+    method: MethodArg,
+    path: &Path,
+) -> Result<Outcome, Failure> {
     let m = match method {
+        MethodArg::Jordan => {
+            let q = needs_rational(f, t, "the Jordan-form method")?;
+            let r = realization::minimal_jordan(&q.ss).map_err(|e| with_path(path, e))?;
+            return Ok(Outcome::new(r.report(), r.verified));
+        }
+        MethodArg::Era => return super::float_cmds::era(t, path).map(Outcome::plain),
         MethodArg::Kalman => MinrealMethod::Kalman,
         MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
         MethodArg::HoKalman => MinrealMethod::HoKalman,
-        MethodArg::Jordan => MinrealMethod::Jordan,
-        MethodArg::Era => return over_ground!(l, |t| super::float_cmds::era(t, file)),
     };
-    over_ground!(l, |t| minreal_typed(t, m, file))
+    let r = realization::minimal(&t.ss, m).map_err(|e| with_path(path, e))?;
+    Ok(Outcome::new(r.report(), r.verified))
 }
 
-fn standard_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
+fn standard<K: Field>(t: &TypedSystem<K>, path: &Path) -> Result<Outcome, Failure> {
     match &t.descriptor {
-        Some(d) => Ok(realization::descriptor_to_standard(d)
-            .map_err(|e| with_path(path, e))?
-            .report()),
-        None => Ok(Report::titled("descriptor to standard form")
-            .int("order", t.ss.nstates())
-            .int("removed_infinite", 0)
-            .matrix("A", &t.ss.a)
-            .matrix("B", &t.ss.b)
-            .matrix("C", &t.ss.c)
-            .matrix("D", &t.ss.d)
-            .bool("verified", true)
-            .with(
-                "note",
-                Value::Str("no E in the file: the system is already in standard form".into()),
-            )),
+        Some(d) => {
+            let r = realization::descriptor_to_standard(d).map_err(|e| with_path(path, e))?;
+            Ok(Outcome::new(r.report(), r.verified))
+        }
+        None => Ok(Outcome::plain(sections::already_standard(&t.ss))),
     }
-}
-
-fn standard(file: &Path) -> Result<Report, Failure> {
-    let l = load_system(file)?;
-    over_ground!(l, |t| standard_typed(t, file))
-}
-
-fn scb_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
-    let s = &t.ss;
-    let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(|e| with_path(path, e))?;
-    Ok(r.report())
-}
-
-fn zeros_typed<K: Field>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
-    let s = &t.ss;
-    let z = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)
-        .map_err(|e| with_path(path, e))?;
-    Ok(z.report())
 }
 
 fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
@@ -217,7 +237,7 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
     match op {
         super::PolyCmd::Factor { expr } => {
             let p = parse(expr)?;
-            Ok(crate::algebraic::factor_report(&p)?)
+            Ok(sections::factor_report(&p)?)
         }
         super::PolyCmd::Roots { expr, digits } => {
             let p = parse(expr)?;
@@ -227,7 +247,7 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
                     message: format!("--digits must be between 1 and 10000 (got {digits})"),
                 });
             }
-            Ok(crate::algebraic::roots_report(&p, *digits)?)
+            Ok(sections::roots_report(&p, *digits)?)
         }
     }
 }
@@ -235,140 +255,24 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
 /// The built-in example of `analyze` without a file.
 pub const BUILTIN_EXAMPLE: &str = include_str!("../../data/sliding-masses.json");
 
-fn load_or_builtin(file: Option<&Path>) -> Result<Loaded, Failure> {
-    match file {
-        Some(f) => load_system(f),
-        None => super::load::load_text(BUILTIN_EXAMPLE, "built-in:sliding-masses.json"),
-    }
+fn load_or_builtin(file: Option<&Path>) -> Result<LoadedSystem, Failure> {
+    Ok(match file {
+        Some(f) => load_system_path(f)?,
+        None => load_system_str(
+            BUILTIN_EXAMPLE,
+            SystemFormat::Json,
+            "built-in:sliding-masses.json",
+        )?,
+    })
 }
 
-fn system_section<K: Field>(f: &crate::io::SystemFile, t: &Typed<K>) -> Report {
-    let mut r = Report::titled("system")
-        .str("file", f.path.clone())
-        .str("name", f.name.clone().unwrap_or_default())
-        .str("field", f.ground.to_string())
-        .int("states", t.ss.nstates())
-        .int("inputs", t.ss.ninputs())
-        .int("outputs", t.ss.noutputs());
-    if let Some(d) = &t.descriptor {
-        r = r
-            .str("form", "descriptor")
-            .int("descriptor_states", d.nstates());
-    } else if f.is_second_order() {
-        r = r.str("form", "second order");
-    } else {
-        r = r.str("form", "state space");
-    }
-    r.str(
-        "charpoly",
-        t.ss.a
-            .charpoly()
-            .map(|p| p.to_string_var("s"))
-            .unwrap_or_default(),
-    )
-}
+/// `analyze`: every section that applies; a section that fails says why instead of
+/// disappearing.
+struct Analyze;
 
-fn realization_section<K: Field>(t: &Typed<K>) -> Result<Report, Failure> {
-    let s = &t.ss;
-    let rc = realization::controllability_matrix(&s.a, &s.b).rank();
-    let ro = realization::observability_matrix(&s.a, &s.c).rank();
-    let min = realization::minimal(s, MinrealMethod::Kalman)?;
-    let tf = s.transfer_matrix()?;
-    Ok(Report::titled("realization")
-        .int("controllability_rank", rc)
-        .int("observability_rank", ro)
-        .bool("controllable", rc == s.nstates())
-        .bool("observable", ro == s.nstates())
-        .int("mcmillan_degree", min.order)
-        .with(
-            "transfer_matrix",
-            Value::List(tf.to_strings().into_iter().map(str_list).collect()),
-        )
-        .obj("minimal_realization", min.report()))
-}
-
-fn analyze_typed<K: Field>(f: &crate::io::SystemFile, t: &Typed<K>) -> Result<Report, Failure> {
-    let mut r = Report::titled(format!(
-        "exactlti analysis: {}",
-        f.name.clone().unwrap_or_else(|| f.path.clone())
-    ));
-    r.push("system", Value::Obj(system_section(f, t)));
-    if t.ss.ninputs() > 0 && t.ss.noutputs() > 0 {
-        r.push("realization", Value::Obj(realization_section(t)?));
-        // the SCB assumes [B; D] and [C, D] of full rank; report why when it does not apply
-        match crate::structure::scb::scb(&t.ss.a, &t.ss.b, &t.ss.c, &t.ss.d) {
-            Ok(scb) => r.push("structure", Value::Obj(scb.report())),
-            Err(e) => r.push(
-                "structure",
-                Value::Obj(
-                    Report::titled("special coordinate basis").str("not_applicable", e.to_string()),
-                ),
-            ),
-        };
-        if let Ok(z) = crate::structure::zeros::invariant_zeros(&t.ss.a, &t.ss.b, &t.ss.c, &t.ss.d)
-        {
-            r.push("zeros", Value::Obj(z.report()));
-        }
-    }
-    Ok(r)
-}
-
-fn analyze(file: Option<&Path>) -> Result<Report, Failure> {
-    let l = load_or_builtin(file)?;
-    match &l {
-        Loaded::Q(f, t) => {
-            let mut r = analyze_typed(f, t)?;
-            match crate::jordan::jordan(&t.ss.a) {
-                Ok(jf) => {
-                    let mut sec = jf.report();
-                    sec.title = Some("eigenvalues and Jordan form".into());
-                    if let Ok(rf) = jf.real_form() {
-                        sec.push("real_form", Value::Obj(rf.report()));
-                    }
-                    sec.push("free_response", Value::Obj(jf.free_response().report(&jf)));
-                    r.push("jordan", Value::Obj(sec));
-                }
-                Err(e) => {
-                    r.push(
-                        "jordan",
-                        Value::Obj(
-                            Report::titled("eigenvalues and Jordan form")
-                                .str("error", e.to_string()),
-                        ),
-                    );
-                }
-            }
-            if t.ss.ninputs() > 0
-                && let (Ok(pc), Ok(po)) = (
-                    realization::pbh_controllable(&t.ss.a, &t.ss.b),
-                    realization::pbh_observable(&t.ss.a, &t.ss.c),
-                )
-            {
-                r.push(
-                    "pbh",
-                    Value::Obj(
-                        Report::titled("PBH tests (exact, one rank per irreducible factor)")
-                            .bool("controllable", pc)
-                            .bool("observable", po),
-                    ),
-                );
-            }
-            if let Ok(m) = realization::modal_table(&t.ss.a) {
-                r.push("modes", Value::Obj(m.report()));
-            }
-            // mechanical normal form: applies to first-order systems with inputs and an even
-            // number of states (files already in second-order form are mechanical by input)
-            let s = &t.ss;
-            if !f.is_second_order()
-                && s.ninputs() > 0
-                && s.nstates() % 2 == 0
-                && let Ok(m) =
-                    crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d)
-            {
-                r.push("mechanical", Value::Obj(m.report()));
-            }
-            Ok(r)
-        }
-        Loaded::Quadratic(f, t) => analyze_typed(f, t),
+impl SystemVisitor for Analyze {
+    type Output = Result<Outcome, Failure>;
+    fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+        super::analyze::analyze(f, t)
     }
 }

@@ -1,9 +1,9 @@
 //! Commands that run the float backend: `freqresp`, `minreal --method era`, `check`.
 
 use super::Failure;
-use super::load::Typed;
 use crate::field::Field;
 use crate::float::{self, Tol, Truth, to_dmatrix};
+use crate::io::TypedSystem as Typed;
 use crate::realization::{self, MinrealMethod};
 use crate::report::plot::{Response, logspace, response_csv, response_svg};
 use crate::report::{Report, Value};

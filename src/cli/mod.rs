@@ -6,9 +6,9 @@
 //! internal failure (an exact verification that failed). Long exact work is bounded by
 //! `--max-seconds` (default 600).
 
+mod analyze;
 mod commands;
 mod float_cmds;
-mod load;
 
 use crate::error::Error;
 use crate::report::Report;
@@ -16,8 +16,6 @@ use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 use std::sync::mpsc;
 use std::time::Duration;
-
-pub use load::{Loaded, load_system};
 
 /// Output formats.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -141,12 +139,40 @@ pub enum Command {
     Analyze { file: Option<PathBuf> },
 }
 
+/// A command's result: the report, and whether every exact check it made passed (read for
+/// the exit status; float-only results and answers that an object does not exist count as
+/// passed, as there is nothing exact to check).
+#[derive(Debug)]
+pub struct Outcome {
+    pub report: Report,
+    pub verified: bool,
+}
+
+impl Outcome {
+    /// A report with its verification status.
+    pub fn new(report: Report, verified: bool) -> Self {
+        Outcome { report, verified }
+    }
+    /// A report without an exact check to fail (float results, tables, factorizations).
+    pub fn plain(report: Report) -> Self {
+        Outcome::new(report, true)
+    }
+}
+
 /// A command failure: exit code and the one-line message.
 #[derive(Debug)]
 pub struct Failure {
     pub code: i32,
     pub message: String,
 }
+
+impl std::fmt::Display for Failure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.message)
+    }
+}
+
+impl std::error::Error for Failure {}
 
 impl From<Error> for Failure {
     fn from(e: Error) -> Self {
@@ -201,10 +227,9 @@ pub fn run(cli: Cli) -> i32 {
         Duration::from_secs(600)
     };
     match rx.recv_timeout(wait) {
-        Ok(Ok(report)) => {
-            print!("{}", render(&report, format));
-            let failed = report_failed_verification(&report);
-            if failed {
+        Ok(Ok(out)) => {
+            print!("{}", render(&out.report, format));
+            if !out.verified {
                 eprintln!("exactlti: an exact verification failed (verified = false)");
                 1
             } else {
@@ -226,19 +251,4 @@ pub fn run(cli: Cli) -> i32 {
             1
         }
     }
-}
-
-/// A report (or a nested section) with `verified: false` is an internal failure, except for
-/// float results, which carry `exact: false` and are never verified, and answers that an
-/// object does not exist (`exists: false`: nothing to verify).
-fn report_failed_verification(r: &Report) -> bool {
-    use crate::report::Value::Bool;
-    if matches!(r.get("exact"), Some(Bool(false))) || matches!(r.get("exists"), Some(Bool(false))) {
-        return false;
-    }
-    r.items.iter().any(|(k, v)| match v {
-        crate::report::Value::Bool(false) => k == "verified",
-        crate::report::Value::Obj(o) => report_failed_verification(o),
-        _ => false,
-    })
 }

@@ -135,10 +135,10 @@ impl<F: Field> Field for ComplexField<F> {
             format!("{re} + {imt}")
         }
     }
-    fn approx(&self, a: &Self::Elem) -> (f64, f64) {
-        let (r, _) = self.base.approx(&a.re);
-        let (i, _) = self.base.approx(&a.im);
-        (r, i)
+    fn approx(&self, a: &Self::Elem) -> Option<(f64, f64)> {
+        let (r, _) = self.base.approx(&a.re)?;
+        let (i, _) = self.base.approx(&a.im)?;
+        Some((r, i))
     }
     fn conj(&self, a: &Self::Elem) -> Option<Self::Elem> {
         Some(ComplexPair {

@@ -9,7 +9,7 @@
 //! |---|---|---|
 //! | $\mathbb{Q}$ | [`Q`] | [`Rational`] |
 //! | $\mathbb{Q}(\sqrt d)$ | [`QuadraticField`] | [`Quadratic`] $= a + b\sqrt d$ |
-//! | $\mathbb{Q}[t]/(m)$ | [`NumberField`] | [`NfElem`]: polynomials of degree $< \deg m$ |
+//! | $\mathbb{Q}\[t\]/(m)$ | [`NumberField`] | [`NfElem`]: polynomials of degree $< \deg m$ |
 //! | $F(i)$ over a real $F$ | [`ComplexField`] | pairs $a + b i$ |
 //!
 //! Why hand-written: no maintained pure-Rust crate offers exact number fields with runtime
@@ -18,10 +18,13 @@
 use std::fmt;
 
 pub mod complex;
-pub mod number_field;
 pub mod quadratic;
+/// Transitional re-export: number fields live in [`crate::algebraic`] (above `poly`, since
+/// they need $\mathbb{Q}[x]$ and irreducibility). Import them from there; this line goes
+/// once the last users (jordan/real.rs, jordan/realfield.rs, realization/jordan_method.rs,
+/// examples/) have switched.
+pub use crate::algebraic::number_field::{NfElem, NumberField, NumberFieldCtx};
 pub use complex::{ComplexField, ComplexPair};
-pub use number_field::{NfElem, NumberField, NumberFieldCtx};
 pub mod rational;
 pub use quadratic::{Quadratic, QuadraticField};
 pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
@@ -68,60 +71,71 @@ pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
     fn latex_elem(&self, a: &Self::Elem) -> String {
         self.fmt_elem(a)
     }
-    /// Floating-point approximation `(re, im)` under the field's marked embedding.
-    fn approx(&self, a: &Self::Elem) -> (f64, f64);
+    /// Floating-point approximation `(re, im)` under the field's marked embedding; `None`
+    /// for a field without one (e.g. a field of rational functions in symbols).
+    fn approx(&self, a: &Self::Elem) -> Option<(f64, f64)> {
+        let _ = a;
+        None
+    }
     /// Complex conjugate under the marked embedding, when the field is closed under it.
     fn conj(&self, a: &Self::Elem) -> Option<Self::Elem> {
         let _ = a;
         None
     }
-    /// Optional fast dense kernels (row-major). `None` means "use the generic algorithm";
-    /// $\mathbb{Q}$ answers with the fraction-free / multi-modular kernels of
-    /// `matrix::modular` (a method table as in FLINT's `gr`, since Rust has no specialization).
-    fn fast_rref(
-        &self,
-        m: usize,
-        n: usize,
-        a: &[Self::Elem],
-    ) -> Option<(Vec<Self::Elem>, Vec<usize>)> {
-        let _ = (m, n, a);
-        None
-    }
-    /// Row-major product of `m x k` and `k x n`; see [`Field::fast_rref`].
-    fn fast_mul(
-        &self,
-        m: usize,
-        k: usize,
-        n: usize,
-        a: &[Self::Elem],
-        b: &[Self::Elem],
-    ) -> Option<Vec<Self::Elem>> {
-        let _ = (m, k, n, a, b);
-        None
-    }
-    /// See [`Field::fast_rref`].
-    fn fast_rank(&self, m: usize, n: usize, a: &[Self::Elem]) -> Option<usize> {
-        let _ = (m, n, a);
-        None
-    }
-    /// See [`Field::fast_rref`].
-    fn fast_det(&self, n: usize, a: &[Self::Elem]) -> Option<Self::Elem> {
-        let _ = (n, a);
-        None
-    }
-    /// Characteristic polynomial coefficients, low degree first; see [`Field::fast_rref`].
-    fn fast_charpoly(&self, n: usize, a: &[Self::Elem]) -> Option<Vec<Self::Elem>> {
-        let _ = (n, a);
-        None
-    }
-    /// `Some(None)` for a singular matrix; see [`Field::fast_rref`].
-    fn fast_inverse(&self, n: usize, a: &[Self::Elem]) -> Option<Option<Vec<Self::Elem>>> {
-        let _ = (n, a);
+    /// `Some` exactly when the elements are [`Rational`]s (the field is $\mathbb{Q}$): a
+    /// witness the matrix layer uses to send the heavy operations to the $\mathbb{Q}$ kernels
+    /// of [`crate::qkernels`] (a method table as in FLINT's `gr`, since Rust has no
+    /// specialization). The matrix side chooses the kernel and its thresholds.
+    fn as_rationals(&self) -> Option<RationalElems<Self::Elem>> {
         None
     }
     /// Is `a` zero-or-positive-real? Meaningful for real fields only (`None` otherwise).
     fn sign(&self, a: &Self::Elem) -> Option<std::cmp::Ordering> {
         let _ = a;
         None
+    }
+}
+
+/// A type-equality witness `E = Rational`, returned by [`Field::as_rationals`]: views a slice
+/// of elements as rationals and turns rationals back into elements, without copying.
+pub struct RationalElems<E> {
+    view: for<'a> fn(&'a [E]) -> &'a [Rational],
+    back: fn(Vec<Rational>) -> Vec<E>,
+}
+
+impl<E> Clone for RationalElems<E> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<E> Copy for RationalElems<E> {}
+
+fn same_slice(a: &[Rational]) -> &[Rational] {
+    a
+}
+fn same_vec(v: Vec<Rational>) -> Vec<Rational> {
+    v
+}
+
+impl RationalElems<Rational> {
+    /// The witness for $\mathbb{Q}$ itself.
+    pub const IDENTITY: Self = RationalElems {
+        view: same_slice,
+        back: same_vec,
+    };
+}
+
+impl<E> RationalElems<E> {
+    /// The elements `a`, seen as rationals.
+    pub fn view<'a>(&self, a: &'a [E]) -> &'a [Rational] {
+        (self.view)(a)
+    }
+    /// Rationals, as elements.
+    pub fn back(&self, v: Vec<Rational>) -> Vec<E> {
+        (self.back)(v)
+    }
+    /// One rational, as an element.
+    pub fn back_one(&self, x: Rational) -> E {
+        self.back(vec![x]).pop().expect("one element in, one out")
     }
 }

@@ -184,6 +184,22 @@ pub(crate) fn fmt_pair(a: &Rational, b: &Rational, rad: &str) -> String {
     }
 }
 
+impl QuadraticField {
+    /// Floating-point approximation `(re, im)` under the marked embedding
+    /// ($\sqrt d > 0$, or $\sqrt d = i\sqrt{-d}$); always defined (the field trait's
+    /// [`Field::approx`] wraps it in `Some`).
+    pub fn approx(&self, x: &Quadratic) -> (f64, f64) {
+        let a = rational_to_f64(&x.a);
+        let b = rational_to_f64(&x.b);
+        let r = rational_to_f64(&Rational::from_integer(self.d.abs())).sqrt();
+        if self.d.is_positive() {
+            (a + b * r, 0.0)
+        } else {
+            (a, b * r)
+        }
+    }
+}
+
 impl Field for QuadraticField {
     type Elem = Quadratic;
     fn zero(&self) -> Quadratic {
@@ -265,15 +281,8 @@ impl Field for QuadraticField {
         };
         fmt_pair(&x.a, &x.b, &rad)
     }
-    fn approx(&self, x: &Quadratic) -> (f64, f64) {
-        let a = rational_to_f64(&x.a);
-        let b = rational_to_f64(&x.b);
-        let r = rational_to_f64(&Rational::from_integer(self.d.abs())).sqrt();
-        if self.d.is_positive() {
-            (a + b * r, 0.0)
-        } else {
-            (a, b * r)
-        }
+    fn approx(&self, x: &Quadratic) -> Option<(f64, f64)> {
+        Some(QuadraticField::approx(self, x))
     }
     fn conj(&self, x: &Quadratic) -> Option<Quadratic> {
         if self.d.is_positive() {

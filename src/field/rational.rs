@@ -3,7 +3,7 @@
 //! Parsing is exact: `0.08` is $2/25$, `1.5e-3` is $3/2000$, `-3/7` is $-3/7$; no binary
 //! floating point is ever involved.
 
-use super::Field;
+use super::{Field, RationalElems};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -19,6 +19,14 @@ pub struct Q;
 impl fmt::Display for Q {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "QQ")
+    }
+}
+
+impl Q {
+    /// Floating-point approximation `(a, 0)`; always defined (the field trait's
+    /// [`Field::approx`] wraps it in `Some`).
+    pub fn approx(&self, a: &Rational) -> (f64, f64) {
+        (rational_to_f64(a), 0.0)
     }
 }
 
@@ -78,8 +86,8 @@ impl Field for Q {
             format!("{s}\\frac{{{}}}{{{}}}", a.numer().abs(), a.denom())
         }
     }
-    fn approx(&self, a: &Rational) -> (f64, f64) {
-        (rational_to_f64(a), 0.0)
+    fn approx(&self, a: &Rational) -> Option<(f64, f64)> {
+        Some(Q::approx(self, a))
     }
     fn conj(&self, a: &Rational) -> Option<Rational> {
         Some(a.clone())
@@ -87,31 +95,8 @@ impl Field for Q {
     fn sign(&self, a: &Rational) -> Option<std::cmp::Ordering> {
         Some(a.cmp(&Rational::zero()))
     }
-    fn fast_rref(&self, m: usize, n: usize, a: &[Rational]) -> Option<(Vec<Rational>, Vec<usize>)> {
-        Some(crate::matrix::modular::rref_q(m, n, a))
-    }
-    fn fast_mul(
-        &self,
-        m: usize,
-        k: usize,
-        n: usize,
-        a: &[Rational],
-        b: &[Rational],
-    ) -> Option<Vec<Rational>> {
-        // the integer kernel pays off once the inner dimension is not tiny
-        (k >= 4 && m * n >= 4).then(|| crate::matrix::intmul::mul_q(m, k, n, a, b))
-    }
-    fn fast_rank(&self, m: usize, n: usize, a: &[Rational]) -> Option<usize> {
-        Some(crate::matrix::modular::rank_q(m, n, a))
-    }
-    fn fast_det(&self, n: usize, a: &[Rational]) -> Option<Rational> {
-        Some(crate::matrix::modular::det_q(n, a))
-    }
-    fn fast_charpoly(&self, n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
-        Some(crate::matrix::modular::charpoly_q(n, a))
-    }
-    fn fast_inverse(&self, n: usize, a: &[Rational]) -> Option<Option<Vec<Rational>>> {
-        Some(crate::matrix::modular::inverse_q(n, a))
+    fn as_rationals(&self) -> Option<RationalElems<Rational>> {
+        Some(RationalElems::IDENTITY)
     }
 }
 

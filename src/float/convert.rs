@@ -9,12 +9,16 @@ use nalgebra::DMatrix;
 ///
 /// # Errors
 /// `Unsupported` when an entry is not real under the field's embedding (the float backend
-/// is real).
+/// is real), or the field has no embedding ([`Field::approx`] is `None`).
 pub fn to_dmatrix<K: Field>(m: &Matrix<K>) -> Result<DMatrix<f64>> {
     let mut out = DMatrix::zeros(m.nrows(), m.ncols());
     for i in 0..m.nrows() {
         for j in 0..m.ncols() {
-            let (re, im) = m.field().approx(m.get(i, j));
+            let Some((re, im)) = m.field().approx(m.get(i, j)) else {
+                return Err(Error::Unsupported(
+                    "the float path needs numeric entries; this field has no embedding".into(),
+                ));
+            };
             if im != 0.0 {
                 return Err(Error::Unsupported(
                     "the float path works on real matrices; this entry is complex".into(),

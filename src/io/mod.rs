@@ -15,6 +15,7 @@
 //! | [`parse_system_json`], [`parse_system_toml`] | system file text |
 //! | [`parse_matlab_matrix`] | `"[0 1; -2 -3]"`, `"[1, 2/3; 0.5 -1e-2]"`, `"[]"` |
 //! | [`split_matlab_matrix`] | the same, entries left as text (for evaluation over parameters) |
+//! | [`load_system_str`], [`load_system_path`] | a system file → [`LoadedSystem`] (typed over its field; [`LoadedSystem::run`] dispatches generic code) |
 //! | [`eval_expr`] | one exact expression, e.g. `"-(a*cf - b*cr)/(Izz*u)"`, `"1 - sqrt(2)/2"` |
 //!
 //! Every failure is an [`InputError`] whose `Display` is one line naming the file, key, row
@@ -26,11 +27,17 @@
 //! shapes) → [`SystemFile`]. There is no unchecked path from text to a system.
 
 pub mod expr;
+pub mod load;
 pub mod matlab;
+pub mod qmat;
 mod raw;
 pub mod system_file;
 
 pub use expr::{ExprError, eval_expr};
+pub use load::{
+    FromScalars, LoadedSystem, SystemFormat, SystemVisitor, TypedAny, TypedSystem, as_rational,
+    load_system_path, load_system_str,
+};
 pub use matlab::{parse_matlab_matrix, split_matlab_matrix};
 pub use system_file::{SystemFile, parse_system_json, parse_system_toml, read_system_file};
 

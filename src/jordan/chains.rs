@@ -58,7 +58,7 @@ pub fn jordan_block_matrix<K: Field>(k: &K, theta: &K::Elem, blocks: &[usize]) -
 }
 
 /// `a * b` (over $\mathbb{Q}$ the product dispatches to the integer kernel of
-/// `matrix::intmul` through `Field::fast_mul`).
+/// `qkernels::intmul` through `Matrix::try_mul`).
 pub(crate) fn mul<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Matrix<K> {
     a * b
 }

@@ -2,7 +2,7 @@
 //! chains, the complex and the real Jordan form, the closed-form free response.
 //!
 //! For $A \in \mathbb{Q}^{n \times n}$ with $\chi_A = \prod_p p^{m_p}$ ($p$ irreducible
-//! over $\mathbb{Q}$) the module computes, for each $p$, in $K_p = \mathbb{Q}[t]/(p)$:
+//! over $\mathbb{Q}$) the module computes, for each $p$, in $K_p = \mathbb{Q}\[t\]/(p)$:
 //! $$A V_p = V_p J_p, \qquad W_p A = J_p W_p, \qquad W_p V_p = I,$$
 //! with $J_p$ the Jordan matrix of the generic root $t$. The Jordan form of $A$ is
 //! $A = T J T^{-1}$ with $T = [\sigma_j(V_p)]_{p,j}$, $J = \operatorname{diag}
@@ -50,13 +50,14 @@ pub use real::{RealBlock, RealJordanForm};
 pub use response::{FreeResponse, ResponseTerm};
 
 use crate::algebraic::AlgebraicNumber;
+use crate::algebraic::{NfElem, NumberField};
 use crate::error::Result;
-use crate::field::{Field, NfElem, NumberField, Q};
+use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{MatrixOut, Report, Value};
 use primary::{named_field, rational_field};
-use roots::{fmt_approx, quadratic_roots, radical_text};
+pub(crate) use roots::fmt_approx;
+use roots::{quadratic_roots, radical_text};
 
 /// An embedding of a component field into an eigenvalue's display field.
 pub type Embedding<'a> = Box<dyn Fn(&NfElem) -> NfElem + 'a>;
@@ -190,8 +191,8 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
 ///
 /// A matrix whose entries are all rational is decomposed exactly by [`jordan`]. A matrix
 /// with irrational entries is not supported yet: its characteristic polynomial lies in
-/// $\mathbb{Q}(\sqrt d)[x]$ and needs the factorization over $\mathbb{Q}(\sqrt d)$ and
-/// components over absolute fields $\mathbb{Q}(\sqrt d)[t]/(q)$, which
+/// $\mathbb{Q}(\sqrt d)\[x\]$ and needs the factorization over $\mathbb{Q}(\sqrt d)$ and
+/// components over absolute fields $\mathbb{Q}(\sqrt d)\[t\]/(q)$, which
 /// [`JordanForm`] (a rational matrix and a rational characteristic polynomial) cannot
 /// carry; the error says so instead of answering approximately.
 ///
@@ -362,93 +363,5 @@ impl JordanForm {
             off += m;
         }
         Some((j, t))
-    }
-    /// $J$ and $T$ for output: exact strings (per-root fields) and approximations.
-    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
-        let n = self.n();
-        let zero_s = || vec![vec!["0".to_string(); n]; n];
-        let zero_a = || vec![vec![(0.0, 0.0); n]; n];
-        let (mut je, mut ja, mut te, mut ta) = (zero_s(), zero_a(), zero_s(), zero_a());
-        let mut off = 0;
-        for c in self.root_columns() {
-            let k = &c.field;
-            let m = c.v.ncols();
-            for r in 0..n {
-                for q in 0..m {
-                    te[r][off + q] = k.fmt_elem(c.v.get(r, q));
-                    ta[r][off + q] = k.approx(c.v.get(r, q));
-                }
-            }
-            for r in 0..m {
-                for q in 0..m {
-                    je[off + r][off + q] = k.fmt_elem(c.j.get(r, q));
-                    ja[off + r][off + q] = k.approx(c.j.get(r, q));
-                }
-            }
-            off += m;
-        }
-        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
-    }
-    /// The report with the CLI contract's keys: `eigenvalues[]` (`minpoly`, `value`,
-    /// `approx`, `algebraic_multiplicity`, `geometric_multiplicity`, `blocks`), `J`, `T`
-    /// (exact, with `_approx`), `verified`, plus `charpoly`, `presentation`, `symbols`.
-    pub fn report(&self) -> Report {
-        let evs: Vec<Value> = self
-            .eigenvalues
-            .iter()
-            .map(|e| {
-                Value::Obj(
-                    Report::new()
-                        .str("minpoly", e.minpoly.to_string())
-                        .str("value", e.value.clone())
-                        .with(
-                            "approx",
-                            Value::List(vec![Value::Float(e.approx.0), Value::Float(e.approx.1)]),
-                        )
-                        .int("algebraic_multiplicity", e.algebraic_multiplicity)
-                        .int("geometric_multiplicity", e.geometric_multiplicity)
-                        .with(
-                            "blocks",
-                            Value::List(e.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
-                        ),
-                )
-            })
-            .collect();
-        let single = self.single_field();
-        let presentation = match &single {
-            Some((j, _)) if j.field().degree() == 1 => "single matrix over QQ".to_string(),
-            Some((j, _)) => format!("single matrix over QQ({})", j.field().0.var),
-            None => "per eigenvalue: the columns of eigenvalue r<k> are exact in QQ(r<k>) \
-                     (closed form for degree <= 2)"
-                .to_string(),
-        };
-        let symbols: Vec<Value> = self
-            .eigenvalues
-            .iter()
-            .filter(|e| e.minpoly.deg() >= 3)
-            .map(|e| {
-                Value::Str(format!(
-                    "{} = root of {} near {}",
-                    e.symbol,
-                    e.minpoly,
-                    fmt_approx(e.approx)
-                ))
-            })
-            .collect();
-        let (jo, to) = match single {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
-        let mut r = Report::titled("Jordan form")
-            .int("n", self.n())
-            .str("charpoly", self.charpoly.to_string())
-            .list("eigenvalues", evs)
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
-            .str("presentation", presentation);
-        if !symbols.is_empty() {
-            r = r.list("symbols", symbols);
-        }
-        r.bool("verified", self.verified)
     }
 }

@@ -1,7 +1,7 @@
 //! One primary component per irreducible factor $p$ of the characteristic polynomial.
 //!
 //! All roots $\theta_1, \dots, \theta_d$ of $p$ are handled at once in
-//! $K = \mathbb{Q}[t]/(p)$: the chains $V(t)$, $W(t)$ computed for the generic root $t$
+//! $K = \mathbb{Q}\[t\]/(p)$: the chains $V(t)$, $W(t)$ computed for the generic root $t$
 //! give, under each embedding $t \mapsto \theta_j$, the chains of $\theta_j$ (Galois
 //! conjugation), so nothing is recomputed per root. A rational eigenvalue ($\deg p = 1$)
 //! is computed directly over $\mathbb{Q}$.
@@ -9,21 +9,21 @@
 //! Identities checked exactly in $K$: $A V = V J_t$, $W A = J_t W$, $W V = I_m$.
 
 use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
+use crate::algebraic::{NfElem, NumberField, NumberFieldCtx};
 use crate::error::Result;
-use crate::field::number_field::NumberFieldCtx;
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use std::sync::Arc;
 
-/// The data of one irreducible factor $p$ of $\chi_A$, in $K = \mathbb{Q}[t]/(p)$.
+/// The data of one irreducible factor $p$ of $\chi_A$, in $K = \mathbb{Q}\[t\]/(p)$.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PrimaryComponent {
     /// The monic irreducible factor $p$ (minimal polynomial of each of its roots).
     pub factor: Poly<Q>,
     /// Multiplicity of $p$ in $\chi_A$ = algebraic multiplicity of each root.
     pub multiplicity: usize,
-    /// $K = \mathbb{Q}[t]/(p)$, marked at `roots[0]`.
+    /// $K = \mathbb{Q}\[t\]/(p)$, marked at `roots[0]`.
     pub field: NumberField,
     /// Approximations of the roots $\theta_j$ (real part descending); the embedding
     /// $t \mapsto \theta_j$ carries the chains to the root $\theta_j$.

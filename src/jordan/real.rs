@@ -23,7 +23,7 @@
 //!   with the primitive element $c = \operatorname{Re}\theta + k\operatorname{Im}\theta$,
 //!   its minimal polynomial a factor of a composed resultant and $\operatorname{Re}\theta$,
 //!   $\operatorname{Im}\theta$ as polynomials in $c$ from a gcd over $F(i)$ (see
-//!   `realfield`), e.g. $F = \mathbb{Q}(\sqrt[3]{2}, \sqrt 3)$ of degree 6 for
+//!   `realfield`), e.g. $F = \mathbb{Q}(\sqrt\[3\]{2}, \sqrt 3)$ of degree 6 for
 //!   $x^3 - 2$; the field is listed in the report (`fields`) with `parts`
 //!   $\theta = a(c) + b(c)\,i$.
 //!
@@ -41,7 +41,6 @@ use crate::error::Result;
 use crate::field::{ComplexPair, Field, NfElem, NumberField, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{MatrixOut, Report, Value};
 use num_traits::{One, Zero};
 
 /// How $\operatorname{Re}$, $\operatorname{Im}$ of $K$-elements land in the real field.
@@ -101,6 +100,20 @@ pub struct CompactPair {
     pub im: Option<AlgebraicNumber>,
 }
 
+/// `-x` for a display string (`-b3`, `-(1 + sqrt(2))`).
+fn neg_display(x: &str) -> String {
+    if let Some(rest) = x.strip_prefix('-')
+        && !rest.contains([' ', '+', '-'])
+    {
+        return rest.to_string();
+    }
+    if x.contains([' ', '+']) || x[1..].contains('-') {
+        format!("-({x})")
+    } else {
+        format!("-{x}")
+    }
+}
+
 /// Largest eigenvalue degree for which the minimal polynomials of $\operatorname{Re}\theta$
 /// (degree up to $d(d-1)/2$) and $\operatorname{Im}\theta$ (up to $d(d-1)$) are computed.
 pub const PARTS_MAX_DEGREE: usize = 4;
@@ -109,6 +122,21 @@ pub const PARTS_MAX_DEGREE: usize = 4;
 pub const EXPAND_MAX_DEGREE: usize = 4;
 
 impl CompactPair {
+    /// Entry `(r, q)` of the pair block: `a`, `b`, `-b` on the $2 \times 2$ diagonal
+    /// blocks, `1` where the chain couples (`coupling`), else `0`.
+    pub(crate) fn j_entry(&self, r: usize, q: usize, coupling: bool) -> String {
+        if r / 2 == q / 2 {
+            match (r % 2, q % 2) {
+                (0, 0) | (1, 1) => self.re_display(),
+                (0, 1) => self.im_display(),
+                _ => neg_display(&self.im_display()),
+            }
+        } else if coupling {
+            "1".to_string()
+        } else {
+            "0".to_string()
+        }
+    }
     /// The display of $\operatorname{Re}\theta$ (closed form up to degree 2, else the symbol).
     pub fn re_display(&self) -> String {
         match &self.re {
@@ -124,7 +152,7 @@ impl CompactPair {
         }
     }
     /// `Re(x)` / `Im(x)` displays of an element of $K$ (plain when $x$ is rational).
-    fn part_strings(&self, x: &NfElem) -> (String, String) {
+    pub(crate) fn part_strings(&self, x: &NfElem) -> (String, String) {
         let f = &self.field;
         if let Some(q) = f.to_rational(x) {
             return (crate::field::fmt_rational(&q), "0".to_string());
@@ -514,36 +542,6 @@ fn approx_pair_block((a, b): (f64, f64), blocks: &[usize]) -> Vec<Vec<f64>> {
     j
 }
 
-/// Entry `(r, q)` of the pair block of a compact pair: `a`, `b`, `-b` on the $2 \times 2$
-/// diagonal blocks, the identity coupling read off the approximation (exactly 0 or 1).
-fn compact_j_entry(cp: &CompactPair, r: usize, q: usize, approx: f64) -> String {
-    if r / 2 == q / 2 {
-        match (r % 2, q % 2) {
-            (0, 0) | (1, 1) => cp.re_display(),
-            (0, 1) => cp.im_display(),
-            _ => neg_display(&cp.im_display()),
-        }
-    } else if approx == 1.0 {
-        "1".to_string()
-    } else {
-        "0".to_string()
-    }
-}
-
-/// `-x` for a display string (`-b3`, `-(1 + sqrt(2))`).
-fn neg_display(x: &str) -> String {
-    if let Some(rest) = x.strip_prefix('-')
-        && !rest.contains([' ', '+', '-'])
-    {
-        return rest.to_string();
-    }
-    if x.contains([' ', '+']) || x[1..].contains('-') {
-        format!("-({x})")
-    } else {
-        format!("-{x}")
-    }
-}
-
 impl RealJordanForm {
     /// $J$ and $T$ over one real field when all blocks are exact in the same field.
     pub fn single_field(&self) -> Option<(Matrix<NumberField>, Matrix<NumberField>)> {
@@ -570,100 +568,5 @@ impl RealJordanForm {
             off += w;
         }
         Some((j, t))
-    }
-    /// $J$, $T$ for output (exact strings in each block's field; `~x` marks an
-    /// approximate entry of a non-exact block).
-    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
-        let n = self.n;
-        let mut je = vec![vec!["0".to_string(); n]; n];
-        let mut te = je.clone();
-        let mut ja = vec![vec![(0.0, 0.0); n]; n];
-        let mut ta = ja.clone();
-        let mut off = 0;
-        for b in &self.blocks {
-            let w = b.t_approx.first().map_or(b.j_approx.len(), |r| r.len());
-            for r in 0..n {
-                for q in 0..w {
-                    ta[r][off + q] = (b.t_approx[r][q], 0.0);
-                    te[r][off + q] = match (&b.field, &b.t, &b.compact) {
-                        (Some(f), Some(t), _) => f.fmt_elem(t.get(r, q)),
-                        (_, _, Some(cp)) => {
-                            let (re, im) = cp.part_strings(cp.v.get(r, q / 2));
-                            if q % 2 == 0 { re } else { im }
-                        }
-                        _ => format!("~{}", b.t_approx[r][q]),
-                    };
-                }
-            }
-            for r in 0..w {
-                for q in 0..w {
-                    ja[off + r][off + q] = (b.j_approx[r][q], 0.0);
-                    je[off + r][off + q] = match (&b.field, &b.j, &b.compact) {
-                        (Some(f), Some(j), _) => f.fmt_elem(j.get(r, q)),
-                        (_, _, Some(cp)) => compact_j_entry(cp, r, q, b.j_approx[r][q]),
-                        _ => format!("~{}", b.j_approx[r][q]),
-                    };
-                }
-            }
-            off += w;
-        }
-        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
-    }
-    /// Report: `J`, `T` (exact strings and `_approx`), `exact`, `verified`, `fields`,
-    /// `parts`, `notes`.
-    pub fn report(&self) -> Report {
-        let (jo, to) = match self.single_field() {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
-        let fields: Vec<Value> = self
-            .blocks
-            .iter()
-            .filter_map(|b| b.field.as_ref())
-            .filter(|f| f.degree() >= 3)
-            .map(|f| {
-                Value::Str(format!(
-                    "{} = root of {} near {}",
-                    f.0.var,
-                    f.modulus(),
-                    fmt_approx(f.root_approx())
-                ))
-            })
-            .collect();
-        let compact = self.blocks.iter().any(|b| b.compact.is_some());
-        let mut r = Report::titled("Real Jordan form")
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
-            .bool("exact", self.exact)
-            .bool("verified", self.verified);
-        if compact {
-            r = r.str(
-                "presentation",
-                "compact: each complex pair r<k> = a<k> + b<k>*i has the block [[a, b], [-b, a]] \
-                 and the columns Re v, Im v of its complex chains v in QQ(r<k>) (T_R = T_C S); \
-                 verified on the complex side (A T_C = T_C J_C in QQ(r<k>), which implies \
-                 A T_R = T_R J_R); `--expand` writes the entries in a real field",
-            );
-            r = r.list(
-                "symbols",
-                self.symbols.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        if !fields.is_empty() {
-            r = r.list("fields", fields);
-        }
-        if !self.parts.is_empty() {
-            r = r.list(
-                "parts",
-                self.parts.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        if !self.notes.is_empty() {
-            r = r.list(
-                "notes",
-                self.notes.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        r
     }
 }

@@ -45,7 +45,6 @@ use crate::algebraic::number::Loc;
 use crate::algebraic::zp;
 use crate::error::{Error, Result};
 use crate::field::{ComplexField, ComplexPair, Field, NfElem, NumberField, Q, Rational};
-use crate::matrix::Matrix;
 use crate::poly::Poly;
 use num_traits::{One, Signed, Zero};
 
@@ -60,25 +59,6 @@ pub(crate) struct RealParts {
     pub primitive: Option<(Poly<Q>, i64)>,
     /// $\theta^0, \dots, \theta^{d-1}$ in $F(i)$ once checked ([`theta_powers`]).
     pub powers: Vec<ComplexPair<NfElem>>,
-}
-
-/// Power sums $s_0, \dots, s_N$ of the roots of a monic `p` (Newton's identities).
-fn power_sums(p: &Poly<Q>, upto: usize) -> Vec<Rational> {
-    let d = p.deg();
-    let a = |i: usize| p.coeff(i);
-    let mut s = vec![Rational::from_integer(d.into())];
-    for n in 1..=upto {
-        let mut v = if n <= d {
-            a(d - n) * Rational::from_integer(n.into())
-        } else {
-            Rational::zero()
-        };
-        for i in 1..n.min(d + 1) {
-            v += a(d - i) * &s[n - i];
-        }
-        s.push(-v);
-    }
-    s
 }
 
 /// A Gaussian rational $x + y i$.
@@ -124,7 +104,7 @@ impl Dual {
 pub(crate) fn composed_primitive(p: &Poly<Q>, k: i64) -> (Poly<Q>, Poly<Q>, Poly<Q>) {
     let p = p.monic();
     let big = p.deg() * p.deg();
-    let s = power_sums(&p, big);
+    let s = crate::poly::newton_power_sums(&p, big);
     let zero = || (Rational::zero(), Rational::zero());
     let half = Rational::new(1.into(), 2.into());
     let w: G = (half.clone(), Rational::from_integer((-k).into()) * &half);
@@ -297,7 +277,7 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
         let croot = c.approx().0;
         let f = named_field(&g, (croot, 0.0), var);
         // theta = H(c) / P'(c)
-        let Some(den) = nf_inv(&f, &f.elem_from_poly(&dpk)) else {
+        let Some(den) = f.inv(&f.elem_from_poly(&dpk)) else {
             continue;
         };
         let re = f.mul(&f.elem_from_poly(&hr), &den);
@@ -431,35 +411,10 @@ pub(crate) fn theta_powers(
     Ok(powers)
 }
 
-/// $x^{-1}$ in $F$: the extended Euclidean algorithm for small degrees, else the first
-/// column of the inverse of the multiplication matrix of $x$ (multi-modular over
-/// $\mathbb{Q}$, free of the coefficient growth of the rational remainder sequence).
-pub(crate) fn nf_inv(f: &NumberField, x: &NfElem) -> Option<NfElem> {
-    let d = f.degree();
-    if d <= 8 || f.is_zero(x) {
-        return f.inv(x);
-    }
-    let t = f.generator();
-    let mut cols = vec![x.clone()];
-    for j in 1..d {
-        let next = f.mul(&cols[j - 1], &t);
-        cols.push(next);
-    }
-    let m = Matrix::from_fn(Q, d, d, |i, j| {
-        cols[j].0.get(i).cloned().unwrap_or_else(Rational::zero)
-    });
-    let inv = m.inverse().ok()?;
-    let mut v: Vec<Rational> = (0..d).map(|i| inv.get(i, 0).clone()).collect();
-    while v.last().is_some_and(|c| c.is_zero()) {
-        v.pop();
-    }
-    Some(NfElem(v))
-}
-
 /// Square-freeness of `p` over $\mathbb{Q}$: proven by a square-free image modulo a prime
-/// not dividing the leading coefficient ($\gcd(\bar p, \bar p') = 1$ in
-/// $\mathbb{F}_q[x]$ with $\deg \bar p = \deg p$ implies $\gcd(p, p') = 1$); the exact
-/// gcd over $\mathbb{Q}$ decides when a few primes do not.
+/// not dividing the leading coefficient ([`crate::poly::fp::Zp::is_squarefree`]; a
+/// square-free image of the same degree implies $\gcd(p, p') = 1$); the exact gcd over
+/// $\mathbb{Q}$ decides when a few primes do not.
 pub(crate) fn is_squarefree(p: &Poly<Q>) -> bool {
     let z = zp::from_poly_q(p);
     for q in [
@@ -468,74 +423,16 @@ pub(crate) fn is_squarefree(p: &Poly<Q>) -> bool {
         2_147_483_587,
         2_147_483_579,
     ] {
-        let bq = num_bigint::BigInt::from(q);
-        let red: Vec<u64> = z
-            .iter()
-            .map(|c| {
-                let r = c % &bq;
-                let r = if r < num_bigint::BigInt::zero() {
-                    r + &bq
-                } else {
-                    r
-                };
-                u64::try_from(r).unwrap_or(0)
-            })
-            .collect();
-        if red.last().copied().unwrap_or(0) == 0 {
+        let f = crate::poly::fp::Zp::new(q);
+        let red = f.reduce(&z);
+        if red.len() != z.len() {
             continue;
         }
-        let der: Vec<u64> = red
-            .iter()
-            .enumerate()
-            .skip(1)
-            .map(|(i, c)| (c * (i as u64 % q)) % q)
-            .collect();
-        if gcd_mod(red, der, q).len() == 1 {
+        if f.is_squarefree(&red) {
             return true;
         }
     }
     p.gcd(&p.derivative()).is_one()
-}
-
-fn pow_mod(mut b: u64, mut e: u64, q: u64) -> u64 {
-    let mut r = 1u64;
-    b %= q;
-    while e > 0 {
-        if e & 1 == 1 {
-            r = r * b % q;
-        }
-        b = b * b % q;
-        e >>= 1;
-    }
-    r
-}
-
-/// Monic-free gcd in $\mathbb{F}_q[x]$ (coefficients low degree first, `q < 2^32`).
-fn gcd_mod(mut a: Vec<u64>, mut b: Vec<u64>, q: u64) -> Vec<u64> {
-    let trim = |v: &mut Vec<u64>| {
-        while v.last() == Some(&0) {
-            v.pop();
-        }
-    };
-    trim(&mut a);
-    trim(&mut b);
-    while !b.is_empty() {
-        // a mod b
-        let inv = pow_mod(*b.last().expect("non-empty"), q - 2, q);
-        while a.len() >= b.len() {
-            let c = a.last().copied().unwrap_or(0) * inv % q;
-            let off = a.len() - b.len();
-            for (j, bj) in b.iter().enumerate() {
-                a[off + j] = (a[off + j] + q - c * bj % q) % q;
-            }
-            trim(&mut a);
-            if a.is_empty() {
-                break;
-            }
-        }
-        std::mem::swap(&mut a, &mut b);
-    }
-    a
 }
 
 #[cfg(test)]
@@ -607,9 +504,8 @@ mod tests {
         );
         for x in [p(&[1, 1]), p(&[3, 0, -1, 0, 0, 2, 0, 0, 1])] {
             let x = f.elem_from_poly(&x);
-            let y = nf_inv(&f, &x).unwrap();
+            let y = f.inv(&x).unwrap();
             assert!(f.is_one(&f.mul(&x, &y)));
-            assert_eq!(Some(y), f.inv(&x));
         }
     }
 }

@@ -16,9 +16,10 @@
 //! the vehicle-dynamics paper.
 
 use super::{JordanForm, RealJordanForm};
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::algebraic::{NfElem, NumberField};
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
-use crate::report::{Report, Value};
+use crate::poly::newton_power_sums;
 use num_complex::Complex64;
 use num_traits::{One, Zero};
 
@@ -53,21 +54,6 @@ fn factorial(k: usize) -> Rational {
     (1..=k).fold(Rational::one(), |acc, i| {
         acc * Rational::from_integer(i.into())
     })
-}
-
-/// Power sums $P_k = \sum_j \theta_j^k$, $k < d$, of the roots of a monic $p$ (Newton).
-fn power_sums(p: &crate::poly::Poly<Q>) -> Vec<Rational> {
-    let d = p.deg();
-    let a = |i: usize| p.coeff(i); // x^d + a_{d-1} x^{d-1} + ... + a_0
-    let mut ps = vec![Rational::from_integer(d.into())];
-    for k in 1..d {
-        let mut s = -Rational::from_integer(k.into()) * a(d - k);
-        for i in 1..k {
-            s -= a(d - i) * &ps[k - i];
-        }
-        ps.push(s);
-    }
-    ps
 }
 
 impl JordanForm {
@@ -124,7 +110,7 @@ impl FreeResponse {
                 return false;
             }
             if term.power == 0 {
-                let ps = power_sums(&c.factor);
+                let ps = newton_power_sums(&c.factor, c.factor.deg().saturating_sub(1));
                 let tr = term.coeff.map(&Q, |x: &NfElem| {
                     x.0.iter()
                         .zip(&ps)
@@ -216,21 +202,5 @@ impl FreeResponse {
             }
         }
         out
-    }
-    /// Report: one entry per eigenvalue and power, `x(t) = sum t^k e^(s t) G x0`.
-    pub fn report(&self, jf: &JordanForm) -> Report {
-        let mut items = vec![];
-        for (ev, e) in jf.eigenvalues.iter().enumerate() {
-            let (field, f) = jf.root_map(ev);
-            for t in self.terms.iter().filter(|t| t.component == e.component) {
-                items.push(Value::Obj(
-                    Report::new()
-                        .str("eigenvalue", e.value.clone())
-                        .int("power", t.power)
-                        .matrix("G", &t.coeff.map(&field, &f)),
-                ));
-            }
-        }
-        Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0").list("terms", items)
     }
 }

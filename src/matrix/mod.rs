@@ -13,13 +13,11 @@
 //! | [`Matrix::eval_poly`] | $p(A)$ by Horner |
 //!
 //! Over $\mathbb{Q}$ the heavy operations dispatch to fraction-free and multi-modular
-//! kernels (see `matrix::modular`).
+//! kernels of [`crate::qkernels`], chosen by size in [`over_q`].
 
 mod charpoly;
-pub mod fraction_free;
-pub mod intmul;
-pub mod modular;
 mod ops;
+pub mod over_q;
 mod rref;
 
 pub(crate) use rref::nullspace_from_rref;
@@ -220,14 +218,30 @@ impl<K: Field> Matrix<K> {
             .map(|i| self.row(i).iter().map(|x| self.field.fmt_elem(x)).collect())
             .collect()
     }
-    /// Entry-wise floating-point approximation (real parts), for `_approx` outputs.
+    /// Entry-wise floating-point approximation (real parts), for `_approx` outputs; NaN for
+    /// an entry the field cannot approximate ([`Field::approx`] is `None`), see
+    /// [`Matrix::try_to_approx_complex`].
     pub fn to_approx(&self) -> Vec<Vec<f64>> {
-        (0..self.nrows)
-            .map(|i| self.row(i).iter().map(|x| self.field.approx(x).0).collect())
+        self.to_approx_complex()
+            .into_iter()
+            .map(|row| row.into_iter().map(|z| z.0).collect())
             .collect()
     }
-    /// Entry-wise floating-point approximation `(re, im)`.
+    /// Entry-wise floating-point approximation `(re, im)`; `(NaN, NaN)` for an entry the
+    /// field cannot approximate.
     pub fn to_approx_complex(&self) -> Vec<Vec<(f64, f64)>> {
+        (0..self.nrows)
+            .map(|i| {
+                self.row(i)
+                    .iter()
+                    .map(|x| self.field.approx(x).unwrap_or((f64::NAN, f64::NAN)))
+                    .collect()
+            })
+            .collect()
+    }
+    /// Entry-wise floating-point approximation `(re, im)`; `None` when the field has no
+    /// numeric embedding for some entry.
+    pub fn try_to_approx_complex(&self) -> Option<Vec<Vec<(f64, f64)>>> {
         (0..self.nrows)
             .map(|i| self.row(i).iter().map(|x| self.field.approx(x)).collect())
             .collect()
@@ -270,10 +284,4 @@ impl<K: Field> fmt::Display for Matrix<K> {
     }
 }
 
-/// `mat![Q; [1, 2], [3, 4]]` builds a rational matrix from integer literals.
-#[macro_export]
-macro_rules! qmat {
-    ($([$($x:expr),* $(,)?]),* $(,)?) => {
-        $crate::matrix::Matrix::<$crate::field::Q>::from_i64_rows(&[$(&[$($x as i64),*]),*])
-    };
-}
+// `qmat!` (integers, rationals and exact text such as "0.08") is defined in crate::io::qmat.

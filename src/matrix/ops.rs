@@ -2,6 +2,7 @@
 //! Kronecker products, `vec`/`unvec`, similarity.
 
 use super::Matrix;
+use super::over_q;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use std::ops::{Add, Mul, Neg, Sub};
@@ -154,8 +155,16 @@ impl<K: Field> Matrix<K> {
             });
         }
         let k = &self.field;
-        if let Some(v) = k.fast_mul(self.nrows, self.ncols, b.ncols, &self.data, &b.data) {
-            return Ok(Matrix::from_vec(k.clone(), self.nrows, b.ncols, v));
+        if let Some(w) = k.as_rationals()
+            && let Some(v) = over_q::mul_q(
+                self.nrows,
+                self.ncols,
+                b.ncols,
+                w.view(&self.data),
+                w.view(&b.data),
+            )
+        {
+            return Ok(Matrix::from_vec(k.clone(), self.nrows, b.ncols, w.back(v)));
         }
         let mut out = vec![k.zero(); self.nrows * b.ncols];
         for i in 0..self.nrows {

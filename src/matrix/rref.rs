@@ -6,6 +6,7 @@
 //! $f$ and zeros at the other free columns (the SCB paper's sec. III-A.1 relies on this).
 
 use super::Matrix;
+use super::over_q;
 use crate::error::{Error, Result};
 use crate::field::Field;
 
@@ -51,9 +52,10 @@ impl<K: Field> Matrix<K> {
     /// Canonical reduced row echelon form and pivot columns (Gauss–Jordan, $O(m n \min(m,n))$
     /// field operations).
     pub fn rref(&self) -> (Matrix<K>, Vec<usize>) {
-        if let Some((d, piv)) = self.field.fast_rref(self.nrows, self.ncols, &self.data) {
+        if let Some(w) = self.field.as_rationals() {
+            let (d, piv) = over_q::rref_q(self.nrows, self.ncols, w.view(&self.data));
             return (
-                Matrix::from_vec(self.field.clone(), self.nrows, self.ncols, d),
+                Matrix::from_vec(self.field.clone(), self.nrows, self.ncols, w.back(d)),
                 piv,
             );
         }
@@ -66,8 +68,8 @@ impl<K: Field> Matrix<K> {
         (r, piv)
     }
     pub fn rank(&self) -> usize {
-        if let Some(r) = self.field.fast_rank(self.nrows, self.ncols, &self.data) {
-            return r;
+        if let Some(w) = self.field.as_rationals() {
+            return over_q::rank_q(self.nrows, self.ncols, w.view(&self.data));
         }
         self.rref().1.len()
     }
@@ -115,9 +117,9 @@ impl<K: Field> Matrix<K> {
     pub fn inverse(&self) -> Result<Matrix<K>> {
         self.check_square("inverse")?;
         let n = self.nrows;
-        if let Some(r) = self.field.fast_inverse(n, &self.data) {
-            return r
-                .map(|d| Matrix::from_vec(self.field.clone(), n, n, d))
+        if let Some(w) = self.field.as_rationals() {
+            return over_q::inverse_q(n, w.view(&self.data))
+                .map(|d| Matrix::from_vec(self.field.clone(), n, n, w.back(d)))
                 .ok_or(Error::Singular);
         }
         let aug = self.hstack(&Matrix::identity(self.field.clone(), n))?;
@@ -135,8 +137,8 @@ impl<K: Field> Matrix<K> {
         self.check_square("det")?;
         let k = &self.field;
         let n = self.nrows;
-        if let Some(d) = k.fast_det(n, &self.data) {
-            return Ok(d);
+        if let Some(w) = k.as_rationals() {
+            return Ok(w.back_one(over_q::det_q(n, w.view(&self.data))));
         }
         let mut a = self.data.clone();
         let mut det = k.one();

@@ -303,7 +303,7 @@ impl ZPoly {
         if a.deg0() < b.deg0() {
             std::mem::swap(&mut a, &mut b);
         }
-        if b.deg0() == 0 || crate::poly::factor::modp::coprime_mod_some_prime(&a, &b) {
+        if b.deg0() == 0 || coprime_mod_some_prime(&a, &b) {
             return Self::constant(c);
         }
         subresultant_gcd(a, b).primitive_part().scale(&c)
@@ -489,6 +489,26 @@ impl Neg for ZPoly {
     fn neg(self) -> ZPoly {
         -&self
     }
+}
+
+/// True when some prime $p$ not dividing both leading coefficients gives coprime images
+/// modulo $p$, which proves $\gcd(f, g) = 1$ over $\mathbb{Q}$. `false` means "unknown".
+pub(crate) fn coprime_mod_some_prime(f: &ZPoly, g: &ZPoly) -> bool {
+    let (df, dg) = (f.deg0(), g.deg0());
+    // three primes just above 10^6
+    for p in [1_000_003, 1_000_033, 1_000_037] {
+        let k = crate::poly::fp::Zp::new(p);
+        let (a, b) = (k.reduce(f.coeffs()), k.reduce(g.coeffs()));
+        // the degree of one image must be kept, so that gcd mod p is an image of a multiple of
+        // the gcd over Z of at least its degree
+        if a.len() != df + 1 && b.len() != dg + 1 {
+            continue;
+        }
+        if k.gcd(&a, &b).len() == 1 {
+            return true;
+        }
+    }
+    false
 }
 
 #[cfg(test)]

@@ -73,7 +73,7 @@ pub fn row_compression<K: Field>(x: &Matrix<K>) -> (Matrix<K>, usize) {
 /// PBH test (Popov–Belevitch–Hautus): $(A, B)$ is controllable iff
 /// $\mathrm{rank}\,[A - \lambda I, B] = n$ for every eigenvalue $\lambda$. Exact over
 /// $\mathbb{Q}$: one rank per irreducible factor $p$ of $\det(sI - A)$, computed in
-/// $K = \mathbb{Q}[t]/(p)$ at $\lambda = t$ (the conjugate roots give the same rank).
+/// $K = \mathbb{Q}\[t\]/(p)$ at $\lambda = t$ (the conjugate roots give the same rank).
 ///
 /// # Errors
 /// `NotSquare`; factorization failures.
@@ -81,7 +81,7 @@ pub fn pbh_controllable(
     a: &Matrix<crate::field::Q>,
     b: &Matrix<crate::field::Q>,
 ) -> crate::error::Result<bool> {
-    use crate::field::NumberField;
+    use crate::algebraic::NumberField;
     a.check_square("pbh")?;
     let n = a.nrows();
     let (_, factors) = crate::algebraic::factor_q(&a.charpoly()?)?;

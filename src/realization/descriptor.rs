@@ -21,7 +21,6 @@
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
-use crate::report::Report;
 use crate::system::{Descriptor, StateSpace};
 
 /// The standard form of a descriptor system.
@@ -40,18 +39,7 @@ pub struct StandardForm<K: Field> {
     pub verified: bool,
 }
 
-impl<K: Field> StandardForm<K> {
-    pub fn report(&self) -> Report {
-        Report::titled("descriptor to standard form")
-            .int("order", self.system.nstates())
-            .int("removed_infinite", self.removed_infinite)
-            .matrix("A", &self.system.a)
-            .matrix("B", &self.system.b)
-            .matrix("C", &self.system.c)
-            .matrix("D", &self.system.d)
-            .bool("verified", self.verified)
-    }
-}
+impl<K: Field> StandardForm<K> {}
 
 /// Converts $E\dot x = Ax + Bu$, $y = Cx + Du$ to standard form.
 ///

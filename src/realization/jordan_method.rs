@@ -37,9 +37,7 @@ use crate::field::{
 use crate::jordan::{chains::jordan_chains, jordan};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{MatrixOut, Report, Value, str_list};
 use crate::system::StateSpace;
-use num_traits::Zero;
 use std::sync::Arc;
 
 /// One real block of the result: its field, and its (A, B, C) over that field.
@@ -119,27 +117,11 @@ fn drop_modes(
     (keep, sizes)
 }
 
-/// Newton power sums $p_j = \sum_i \theta_i^j$, $j < m$, of the roots of the monic `p`.
+/// Newton power sums $p_j = \sum_i \theta_i^j$, $j < m$, of the roots of `p`
+/// ([`crate::poly::newton_power_sums`]).
 fn power_sums(p: &Poly<Q>, m: usize) -> Vec<Rational> {
-    let d = p.deg();
-    let e = |i: usize| -> Rational {
-        // coefficient of x^{d-i} is (-1)^i e_i
-        let c = p.coeff(d - i);
-        if i.is_multiple_of(2) { c } else { -c }
-    };
-    let mut s: Vec<Rational> = vec![Rational::from_integer(d.into())];
-    for j in 1..m {
-        let mut v = Rational::zero();
-        for i in 1..=(j - 1).min(d) {
-            let term = e(i) * &s[j - i];
-            if i % 2 == 1 { v += term } else { v -= term }
-        }
-        if j <= d {
-            let term = e(j) * Rational::from_integer(j.into());
-            if j % 2 == 1 { v += term } else { v -= term }
-        }
-        s.push(v);
-    }
+    let mut s = crate::poly::newton_power_sums(&p.monic(), m.saturating_sub(1));
+    s.truncate(m);
     s
 }
 
@@ -479,140 +461,61 @@ impl JordanMinimal {
         )
         .ok()
     }
-    /// Assembles block-diagonal `A` and stacked `B`, `C` for output (entries exact in each
-    /// block's field, symbols defined in `symbols`).
-    fn outputs(&self) -> (MatrixOut, MatrixOut, MatrixOut) {
-        let r = self.order();
-        let (m, p) = (self.d.ncols(), self.d.nrows());
-        let empty = |rows: usize, cols: usize| MatrixOut {
-            exact: vec![vec!["0".to_string(); cols]; rows],
-            latex: vec![vec!["0".to_string(); cols]; rows],
-            approx: vec![vec![(0.0, 0.0); cols]; rows],
-            nrows: rows,
-            ncols: cols,
-        };
-        let (mut a, mut b, mut c) = (empty(r, r), empty(r, m), empty(p, r));
-        let mut off = 0;
-        for blk in &self.blocks {
-            if blk.compact {
-                compact_outputs(blk, off, (&mut a, &mut b, &mut c));
-                off += blk.order;
-                continue;
-            }
-            let f = &blk.field;
-            let put = |o: &mut MatrixOut, i: usize, j: usize, x: &NfElem| {
-                o.exact[i][j] = f.fmt_elem(x);
-                o.latex[i][j] = f.latex_elem(x);
-                o.approx[i][j] = f.approx(x);
-            };
-            let s = blk.a.nrows();
-            for i in 0..s {
-                for j in 0..s {
-                    put(&mut a, off + i, off + j, blk.a.get(i, j));
-                }
-                for j in 0..m {
-                    put(&mut b, off + i, j, blk.b.get(i, j));
-                }
-                for row in 0..p {
-                    put(&mut c, row, off + i, blk.c.get(row, i));
-                }
-            }
-            off += s;
-        }
-        (a, b, c)
-    }
-    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`, the stage orders and
-    /// the symbols used in the entries).
-    pub fn report(&self) -> Report {
-        let (a, b, c) = self.outputs();
-        Report::titled("minimal realization (jordan)")
-            .str("method", "jordan")
-            .int("original_order", self.stages[0])
-            .int("order", self.order())
-            .int("mcmillan_degree", self.mcmillan_degree)
-            .with(
-                "stages",
-                Value::List(self.stages.iter().map(|&s| Value::Int(s as i64)).collect()),
-            )
-            .with("A", Value::Matrix(Box::new(a)))
-            .with("B", Value::Matrix(Box::new(b)))
-            .with("C", Value::Matrix(Box::new(c)))
-            .matrix("D", &self.d)
-            .with(
-                "modes",
-                str_list(self.blocks.iter().map(|b| b.eigenvalue.clone())),
-            )
-            .with(
-                "symbols",
-                Value::List(
-                    self.symbols
-                        .iter()
-                        .map(|(k, v)| Value::Str(format!("{k} = {v}")))
-                        .collect(),
-                ),
-            )
-            .bool("verified", self.verified)
-    }
 }
 
-/// Writes a compact pair block at offset `off`: state `2i` is $\mathrm{Re}\, z_i$, state
-/// `2i + 1` is $-\mathrm{Im}\, z_i$ (the module docs' convention), entries displayed as
-/// `Re(...)`, `Im(...)` of the $K$-entries and `a<k>`, `b<k>` for the parts of $\theta$.
-fn compact_outputs(
-    blk: &RealModalBlock,
-    off: usize,
-    (a, b, c): (&mut MatrixOut, &mut MatrixOut, &mut MatrixOut),
-) {
-    let f = &blk.field;
-    let k = f.0.var.trim_start_matches('r').to_string();
-    let theta = f.generator();
-    // display of Re x / Im x (scaled by `scale`, negated by `neg`) and its approximation
-    let part = |x: &NfElem, im: bool, scale: i64, neg: bool| -> (String, f64) {
-        let (ar, ai) = f.approx(x);
-        let v = scale as f64 * if im { ai } else { ar } * if neg { -1.0 } else { 1.0 };
-        let sign = if neg { "-" } else { "" };
-        let pre = if scale == 1 { String::new() } else { format!("{scale}*") };
-        let text = if let Some(q) = f.to_rational(x) {
-            if im {
-                "0".to_string()
-            } else {
-                let q = q * Rational::from_integer(scale.into());
-                crate::field::fmt_rational(&if neg { -q } else { q })
-            }
-        } else if *x == theta {
-            format!("{sign}{pre}{}{k}", if im { "b" } else { "a" })
-        } else {
-            let s = f.fmt_elem(x);
-            format!("{sign}{pre}{}({s})", if im { "Im" } else { "Re" })
+/// The Jordan-method minimal realization as a rational state-space system, verified like
+/// every [`super::MinimalRealization`] (Markov parameters up to $2n$, controllable,
+/// observable); available when every mode's block is rational (all retained eigenvalues
+/// rational, or complex blocks whose real form is rational).
+///
+/// # Errors
+/// `Unsupported` when some block has entries in a number field of degree > 1 (then use
+/// [`minimal_jordan`], whose blocks keep their fields); errors of [`minimal_jordan`].
+pub fn minimal_jordan_rational(sys: &StateSpace<Q>) -> Result<super::MinimalRealization<Q>> {
+    let jm = minimal_jordan(sys)?;
+    let n: usize = jm.blocks.iter().map(|b| b.a.nrows()).sum();
+    let (m, p) = (sys.ninputs(), sys.noutputs());
+    let mut a = Matrix::zeros(Q, n, n);
+    let mut b = Matrix::zeros(Q, n, m);
+    let mut c = Matrix::zeros(Q, p, n);
+    let mut off = 0;
+    for blk in &jm.blocks {
+        if blk.compact {
+            return Err(crate::error::Error::Unsupported(format!(
+                "the Jordan-method realization keeps the complex pair {} in compact form \
+                 (entries Re/Im of elements of {}): use realization::minimal_jordan",
+                blk.eigenvalue, blk.field
+            )));
+        }
+        let q = |x: &NfElem| {
+            blk.field.to_rational(x).ok_or_else(|| {
+                crate::error::Error::Unsupported(format!(
+                    "the Jordan-method realization has entries in {} (mode {}): use realization::minimal_jordan",
+                    blk.field, blk.eigenvalue
+                ))
+            })
         };
-        (text, v)
-    };
-    let put = |o: &mut MatrixOut, i: usize, j: usize, (text, v): (String, f64)| {
-        o.latex[i][j] = text.clone();
-        o.exact[i][j] = text;
-        o.approx[i][j] = (v, 0.0);
-    };
-    let s = blk.a.nrows();
-    for i in 0..s {
-        for j in 0..s {
-            let x = blk.a.get(i, j);
-            // [[Re, Im], [-Im, Re]] per complex entry
-            put(a, off + 2 * i, off + 2 * j, part(x, false, 1, false));
-            put(a, off + 2 * i, off + 2 * j + 1, part(x, true, 1, false));
-            put(a, off + 2 * i + 1, off + 2 * j, part(x, true, 1, true));
-            put(a, off + 2 * i + 1, off + 2 * j + 1, part(x, false, 1, false));
+        let s = blk.a.nrows();
+        for i in 0..s {
+            for j in 0..s {
+                a.set(off + i, off + j, q(blk.a.get(i, j))?);
+            }
+            for j in 0..m {
+                b.set(off + i, j, q(blk.b.get(i, j))?);
+            }
+            for r in 0..p {
+                c.set(r, off + i, q(blk.c.get(r, i))?);
+            }
         }
-        for col in 0..blk.b.ncols() {
-            let x = blk.b.get(i, col);
-            put(b, off + 2 * i, col, part(x, false, 1, false));
-            put(b, off + 2 * i + 1, col, part(x, true, 1, true));
-        }
-        for row in 0..blk.c.nrows() {
-            let x = blk.c.get(row, i);
-            put(c, row, off + 2 * i, part(x, false, 2, false));
-            put(c, row, off + 2 * i + 1, part(x, true, 2, false));
-        }
+        off += s;
     }
+    let min = StateSpace::new(a, b, c, jm.d.clone())?;
+    Ok(super::MinimalRealization::new(
+        sys,
+        min,
+        super::MinrealMethod::Jordan,
+        None,
+    ))
 }
 
 #[cfg(test)]

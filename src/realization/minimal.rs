@@ -1,11 +1,11 @@
-//! Minimal realizations: the result type, its exact verification and the dispatcher.
+//! Minimal realizations: the result type and its exact verification (the algorithms are in
+//! `kalman`/`method`, `rosenbrock`, `ho_kalman`, `jordan_method`).
 
 use super::controllability::{is_controllable, is_observable};
 use super::kalman::kalman_decomposition;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::field::Field;
 use crate::matrix::Matrix;
-use crate::report::Report;
 use crate::system::StateSpace;
 
 /// Which algorithm computes the minimal realization.
@@ -69,22 +69,6 @@ impl<K: Field> MinimalRealization<K> {
             verified,
         }
     }
-    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`).
-    pub fn report(&self) -> Report {
-        let mut r = Report::titled(format!("minimal realization ({})", self.method.name()))
-            .str("method", self.method.name())
-            .int("original_order", self.original_order)
-            .int("order", self.order)
-            .int("mcmillan_degree", self.order)
-            .matrix("A", &self.system.a)
-            .matrix("B", &self.system.b)
-            .matrix("C", &self.system.c)
-            .matrix("D", &self.system.d);
-        if let Some(t) = &self.t {
-            r = r.matrix("T", t);
-        }
-        r.bool("verified", self.verified)
-    }
 }
 
 /// Exact check: `min` is controllable and observable and has the Markov parameters of `orig`
@@ -115,23 +99,4 @@ pub fn minimal_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealizatio
         MinrealMethod::Kalman,
         Some(t),
     ))
-}
-
-/// Minimal realization by the chosen method.
-///
-/// # Errors
-/// `Unsupported` for a method not available for this field; internal failures.
-pub fn minimal<K: Field>(
-    sys: &StateSpace<K>,
-    method: MinrealMethod,
-) -> Result<MinimalRealization<K>> {
-    match method {
-        MinrealMethod::Kalman => minimal_kalman(sys),
-        MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock(sys),
-        MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman(sys),
-        MinrealMethod::Jordan => Err(Error::Unsupported(
-            "the Jordan-form method works on rational systems: use realization::minimal_jordan"
-                .into(),
-        )),
-    }
 }

@@ -15,7 +15,6 @@ use crate::algebraic::roots;
 use crate::error::Result;
 use crate::field::{Q, QuadraticField, Rational, fmt_rational};
 use crate::matrix::Matrix;
-use crate::report::{Report, Value};
 use num_traits::{Signed, Zero};
 use std::f64::consts::PI;
 
@@ -106,36 +105,4 @@ pub fn modal_table(a: &Matrix<Q>) -> Result<ModalTable> {
     Ok(ModalTable { modes })
 }
 
-impl ModalTable {
-    /// The CLI report: `modes[]` with `eigenvalue`, `frequency_hz`, `damping_ratio`,
-    /// `time_constant_s`, `period_s` (plus `minpoly`, `approx`, `multiplicity`, `exact`).
-    pub fn report(&self) -> Report {
-        let opt = |x: Option<f64>| x.map_or(Value::Null, Value::Float);
-        let modes = self
-            .modes
-            .iter()
-            .map(|m| {
-                let mut ex = Report::new();
-                for (k, v) in &m.exact {
-                    ex.push(k.clone(), Value::Str(v.clone()));
-                }
-                Value::Obj(
-                    Report::new()
-                        .str("eigenvalue", m.eigenvalue.clone())
-                        .str("minpoly", m.minpoly.clone())
-                        .with(
-                            "approx",
-                            Value::List(vec![Value::Float(m.approx.0), Value::Float(m.approx.1)]),
-                        )
-                        .int("multiplicity", m.multiplicity)
-                        .float("frequency_hz", m.frequency_hz)
-                        .with("damping_ratio", opt(m.damping_ratio))
-                        .with("time_constant_s", opt(m.time_constant_s))
-                        .with("period_s", opt(m.period_s))
-                        .obj("exact", ex),
-                )
-            })
-            .collect();
-        Report::titled("modal table").with("modes", Value::List(modes))
-    }
-}
+impl ModalTable {}

@@ -6,6 +6,7 @@
 //! contract requires.
 
 pub mod plot;
+pub mod sections;
 
 use crate::field::Field;
 use crate::matrix::Matrix;

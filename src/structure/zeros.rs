@@ -1,8 +1,8 @@
 //! Invariant zeros from the Rosenbrock system matrix, exactly and independently of the SCB.
 //!
-//! $P(s) = \begin{bmatrix} A - sI & B \\ C & D \end{bmatrix}$ over $K[s]$ is brought to a
+//! $P(s) = \begin{bmatrix} A - sI & B \\ C & D \end{bmatrix}$ over $K\[s\]$ is brought to a
 //! diagonal form $\mathrm{diag}(d_1, \dots, d_r, 0, \dots)$ by unimodular row and column
-//! operations (Euclidean elimination over the principal ideal domain $K[s]$). The number of
+//! operations (Euclidean elimination over the principal ideal domain $K\[s\]$). The number of
 //! non-zero $d_i$ is the normal rank $r$ of $P$, and the monic $\prod d_i$ is the $r$-th
 //! determinantal divisor (gcd of all $r \times r$ minors): the invariant zero polynomial,
 //! whose roots (with multiplicity) are the invariant zeros.
@@ -16,7 +16,6 @@ use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::Report;
 
 /// The invariant zeros of a system.
 #[derive(Clone, Debug)]
@@ -33,22 +32,6 @@ impl<K: Field> InvariantZeros<K> {
     /// Number of invariant zeros, with multiplicity.
     pub fn count(&self) -> usize {
         self.polynomial.deg()
-    }
-    /// Report with the CLI contract's key `invariant_zeros[]` (square-free factors with
-    /// multiplicities; the value for linear factors), plus `zero_polynomial`, `normal_rank`.
-    pub fn report(&self) -> Report {
-        Report::titled("invariant zeros")
-            .list(
-                "invariant_zeros",
-                crate::structure::scb::zero_items(&self.polynomial),
-            )
-            .str("zero_polynomial", self.polynomial.to_string_var("s"))
-            .int("normal_rank", self.normal_rank)
-            .with(
-                "minimum_phase",
-                crate::structure::scb::hurwitz(&self.polynomial)
-                    .map_or(crate::report::Value::Null, crate::report::Value::Bool),
-            )
     }
 }
 

@@ -9,6 +9,7 @@
 //! | [`StateSpace::markov`] | Markov parameters $C A^k B$ |
 //! | [`transfer::TransferMatrix`] | $G(s) = C (sI - A)^{-1} B + D$ as exact rational functions |
 
+mod display;
 pub mod transfer;
 
 use crate::error::{Error, Result};

@@ -15,7 +15,7 @@
 //! | [`distinct_degree`] | $[(g_i, i)]$, $g_i$ = product of the degree-$i$ factors |
 //! | [`factor_squarefree`] | the monic irreducible factors of a monic square-free $f$ |
 
-use super::modp::{PolyP, Zp, trim};
+use crate::poly::fp::{PolyP, Zp, trim};
 use num_bigint::BigUint;
 
 /// A small deterministic generator (SplitMix64) for the random splitting polynomials.

@@ -12,7 +12,7 @@
 //! corrections computed on the quotient $e / m$ (smaller numbers); then each half recurses.
 //! Products use Kronecker substitution into one big integer multiplication.
 
-use super::modp::{PolyP, Zp};
+use crate::poly::fp::{PolyP, Zp};
 use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer;
 use num_traits::{One, Zero};
@@ -264,7 +264,7 @@ mod tests {
             * ZPoly::from_i64s(&[11, -7, 0, 1])
             * ZPoly::from_i64s(&[9, 2]);
         let zp = Zp::new(13);
-        let fp = zp.monic(&zp.reduce_zpoly(&f));
+        let fp = zp.monic(&zp.reduce(f.coeffs()));
         let facs = factor_squarefree(&zp, &fp);
         for k in [1, 2, 5, 9] {
             let m = num_traits::pow(BigInt::from(13), k as usize);

@@ -22,13 +22,12 @@
 
 pub(crate) mod cantor_zassenhaus;
 pub(crate) mod hensel;
-pub(crate) mod modp;
 pub(crate) mod sqfree;
 pub(crate) mod zassenhaus;
 
 use crate::error::{Error, Result};
+use crate::poly::fp::{PolyP, Zp, primes_from};
 use crate::poly::zpoly::ZPoly;
-use modp::{PolyP, Zp, primes_from};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -165,7 +164,7 @@ fn choose_prime(f: &ZPoly) -> Option<PrimeChoice> {
             break;
         }
         let zp = Zp::new(p);
-        let fp = zp.reduce_zpoly(f);
+        let fp = zp.reduce(f.coeffs());
         if fp.len() != n + 1 || !zp.is_squarefree(&fp) {
             continue;
         }

@@ -16,8 +16,8 @@
 //! condition, $\operatorname{rank} G \ge n/2 - p$ with
 //! $G = (U_{B,2}U_{K,2})^T A (U_{B,2}U_{K,2})$, is computed and reported as a diagnostic but
 //! does **not** decide: it is not invariant under similarity, and it is neither necessary
-//! (the system $A = [[0,0,1,0],[0,0,0,0],[0,0,0,1],[0,0,0,0]]$, $B = e_4$ has $G = 0$ and a
-//! normal form) nor sufficient ($A = \mathrm{diag}(2, 2) \oplus [[0,1],[-1,0]]$, $B = e_4$
+//! (the system $A = \[\[0,0,1,0\],\[0,0,0,0\],\[0,0,0,1\],\[0,0,0,0\]\]$, $B = e_4$ has $G = 0$ and a
+//! normal form) nor sufficient ($A = \mathrm{diag}(2, 2) \oplus \[\[0,1\],\[-1,0\]\]$, $B = e_4$
 //! has $G = 2I$ and none: the two uncontrollable modes at $2$ cannot both live in the one
 //! coordinate $q_1$). Condition 5 replaces it.
 //!

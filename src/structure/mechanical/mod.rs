@@ -40,7 +40,6 @@ pub use existence::{Condition, Existence, decide_existence};
 use crate::error::{Error, Result};
 use crate::field::{Field, Q};
 use crate::matrix::Matrix;
-use crate::report::{Report, Value};
 
 /// Default candidate budget of the transformation search (see [`transform::find_invertible`]).
 pub const DEFAULT_MAX_CANDIDATES: u64 = 1_000_000;
@@ -299,66 +298,6 @@ impl<K: Field> MechanicalNormalForm<K> {
         }
         markov_parameters(o.f.as_ref(), &o.a, &o.b, &o.c, 2 * n)
             == markov_parameters(None, &m.a_tilde, &m.b_tilde, &m.output, 2 * n)
-    }
-
-    /// The report with the CLI contract keys of `mnf`: `exists`, `reason`, `mass`, `damping`,
-    /// `stiffness`, `input`, `output`, `feedthrough`, `T`, `verified`, then `conditions`
-    /// and the search statistics.
-    pub fn report(&self) -> Report {
-        let mut r = Report::titled("mechanical normal form")
-            .bool("exists", self.exists)
-            .with(
-                "reason",
-                self.reason.clone().map_or(Value::Null, Value::Str),
-            );
-        match &self.form {
-            Some(m) => {
-                r = r
-                    .matrix("mass", &m.mass)
-                    .matrix("damping", &m.damping)
-                    .matrix("stiffness", &m.stiffness)
-                    .matrix("input", &m.input)
-                    .matrix("output", &m.output)
-                    .matrix("feedthrough", &m.feedthrough)
-                    .matrix("T", &m.t);
-                if let Some(l) = &m.left {
-                    r = r.matrix("T_rows", l);
-                }
-            }
-            None => {
-                for key in [
-                    "mass",
-                    "damping",
-                    "stiffness",
-                    "input",
-                    "output",
-                    "feedthrough",
-                    "T",
-                ] {
-                    r = r.with(key, Value::Null);
-                }
-            }
-        }
-        r = r.bool("verified", self.verified);
-        let conds = self
-            .conditions
-            .iter()
-            .map(|c| {
-                Value::Obj(
-                    Report::new()
-                        .str("name", c.name)
-                        .str("statement", c.statement.clone())
-                        .bool("holds", c.holds)
-                        .bool("decisive", c.decisive)
-                        .str("meaning", c.meaning.clone()),
-                )
-            })
-            .collect();
-        r = r.list("conditions", conds);
-        if let Some(m) = &self.form {
-            r = r.int("candidates_tested", m.candidates as usize);
-        }
-        r
     }
 }
 

@@ -153,7 +153,7 @@ fn pseudo_random_alpha(rng: &mut SplitMix, t: u64, s: usize, degree: usize) -> V
 }
 
 /// Finds an invertible $T(\alpha)$, testing candidates by exact determinant: $\alpha = 0$,
-/// then [`PSEUDO_RANDOM_TRIALS`] fixed pseudo-random integer vectors, then the grid
+/// then `PSEUDO_RANDOM_TRIALS` fixed pseudo-random integer vectors, then the grid
 /// $\{0..n\}^s$ in odometer order (see the module docs for why this terminates).
 ///
 /// # Errors

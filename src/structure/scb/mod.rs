@@ -37,7 +37,6 @@ use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{Report, Value};
 
 /// An SCB of a system together with its transformations.
 #[derive(Clone, Debug)]
@@ -206,95 +205,6 @@ impl<K: Field> Scb<K> {
     pub fn check(&self) -> Result<()> {
         verify::check(self)
     }
-    /// Report with the CLI contract's keys for `scb`.
-    pub fn report(&self) -> Report {
-        let [na, nb, nc, nd] = self.dims;
-        let dims = Report::new()
-            .int("a", na)
-            .int("b", nb)
-            .int("c", nc)
-            .int("d", nd);
-        Report::titled("special coordinate basis")
-            .obj("dims", dims)
-            .list(
-                "chains",
-                self.chains.iter().map(|&q| Value::Int(q as i64)).collect(),
-            )
-            .list(
-                "invariant_zeros",
-                zero_items(&self.invariant_zero_polynomial()),
-            )
-            .str(
-                "zero_polynomial",
-                self.invariant_zero_polynomial().to_string_var("s"),
-            )
-            .bool("left_invertible", self.left_invertible)
-            .bool("right_invertible", self.right_invertible)
-            .with(
-                "minimum_phase",
-                self.minimum_phase().map_or(Value::Null, Value::Bool),
-            )
-            .matrix("A", &self.a)
-            .matrix("B", &self.b)
-            .matrix("C", &self.c)
-            .matrix("D", &self.d)
-            .matrix("G1", &self.gamma1)
-            .matrix("G2", &self.gamma2)
-            .matrix("G3", &self.gamma3)
-            .matrix("U", &self.u_pre)
-            .matrix("Y", &self.y_pre)
-            .bool("verified", self.verified && self.verify())
-    }
-}
-
-/// The zero polynomial's square-free factors as report items `{factor, multiplicity}`, with
-/// `root` for linear factors.
-pub(crate) fn zero_items<K: Field>(p: &Poly<K>) -> Vec<Value> {
-    if p.deg() == 0 {
-        return vec![];
-    }
-    let k = p.field().clone();
-    // rational zero polynomial: the zeros as exact algebraic numbers
-    let rational: Option<Vec<crate::field::Rational>> =
-        p.coeffs().iter().map(|c| k.to_rational(c)).collect();
-    if let Some(cs) = rational
-        && let Ok(rs) = crate::algebraic::roots(&Poly::new(crate::field::Q, cs))
-    {
-        return rs
-            .into_iter()
-            .map(|(z, mult)| {
-                let (re, im) = z.approx();
-                Value::Obj(
-                    Report::new()
-                        .str("minpoly", z.minpoly().to_string())
-                        .str("value", z.value_string())
-                        .with(
-                            "approx",
-                            Value::List(vec![Value::Float(re), Value::Float(im)]),
-                        )
-                        .int("multiplicity", mult),
-                )
-            })
-            .collect();
-    }
-    p.squarefree()
-        .into_iter()
-        .filter(|(f, _)| f.deg() > 0)
-        .map(|(f, mult)| {
-            let mut r = Report::new()
-                .str("factor", f.to_string_var("s"))
-                .int("multiplicity", mult);
-            if f.deg() == 1 {
-                let root = k.neg(&k.div(&f.coeff(0), &f.coeff(1)).expect("non-zero lc"));
-                let (re, im) = k.approx(&root);
-                r = r.str("value", k.fmt_elem(&root)).with(
-                    "approx",
-                    Value::List(vec![Value::Float(re), Value::Float(im)]),
-                );
-            }
-            Value::Obj(r)
-        })
-        .collect()
 }
 
 /// Routh–Hurwitz: are all roots of `p` in the open left half plane? `None` when the field

@@ -6,6 +6,7 @@
 //! scales by $\prod s_i$) or globally ($A = B / s$; the characteristic polynomial scales
 //! coefficient-wise).
 
+use super::gcd;
 use super::prime::Prime;
 use crate::field::Rational;
 use num_bigint::{BigInt, Sign};
@@ -201,6 +202,39 @@ pub fn primes_for_bits(bits: f64) -> usize {
     } else {
         (bits / super::prime::PRIME_BITS).floor() as usize + 1
     }
+}
+
+/// $d \prod_i s_i$ as a canonical fraction (one gcd, not one per row).
+pub fn scale_det(d: BigInt, scales: &[Rational]) -> Rational {
+    if d.is_zero() {
+        return Rational::zero();
+    }
+    let mut num = d;
+    let mut den = BigInt::one();
+    for s in scales {
+        if !s.numer().is_one() {
+            num *= s.numer();
+        }
+        if !s.denom().is_one() {
+            den *= s.denom();
+        }
+    }
+    gcd::fraction(num, &den)
+}
+
+/// Coefficients of $\det(xI - B/s)$ from those of $\det(xI - B)$: $c_k / s^{n-k}$.
+pub fn unscale_charpoly(c: Vec<BigInt>, s: &BigInt) -> Vec<Rational> {
+    let n = c.len() - 1;
+    if s.is_one() {
+        return c.into_iter().map(Rational::from_integer).collect();
+    }
+    let mut out = vec![Rational::zero(); n + 1];
+    let mut pow = BigInt::one();
+    for k in (0..=n).rev() {
+        out[k] = Rational::new(c[k].clone(), pow.clone());
+        pow *= s;
+    }
+    out
 }
 
 #[cfg(test)]

@@ -16,8 +16,8 @@
 //! echelon form by construction, is *the* RREF of $B$.
 
 use super::crt::{CommonDenominator, Crt};
-use super::intmat::IntMat;
-use super::prime::{Prime, primes};
+use crate::qkernels::intmat::IntMat;
+use crate::qkernels::prime::{Prime, primes};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 
@@ -207,7 +207,7 @@ fn try_certify(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::matrix::modular::prime::nth_prime;
+    use crate::qkernels::prime::nth_prime;
 
     #[test]
     fn rref_mod_p_small() {

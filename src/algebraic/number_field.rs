@@ -1,4 +1,4 @@
-//! General number fields $K = \mathbb{Q}[t]/(m(t))$ for an irreducible monic $m$.
+//! General number fields $K = \mathbb{Q}\[t\]/(m(t))$ for an irreducible monic $m$.
 //!
 //! Elements are polynomials in $t$ of degree $< \deg m$ with rational coefficients
 //! (canonical: reduced and without trailing zeros). Multiplication reduces modulo $m$;
@@ -13,8 +13,9 @@
 //! | [`NumberField::elem_from_poly`] | the class of a polynomial in $t$ |
 //! | [`NumberField::generator`] | $t$ |
 
-use super::{Field, Q, Rational, rational_to_f64};
+use super::AlgebraicNumber;
 use crate::error::{Error, Result};
+use crate::field::{Field, Q, Rational, rational_to_f64};
 use crate::poly::{Poly, fmt_poly};
 use num_traits::{One, Zero};
 use std::fmt;
@@ -35,12 +36,25 @@ pub struct NumberFieldCtx {
 #[derive(Clone, Debug)]
 pub struct NumberField(pub Arc<NumberFieldCtx>);
 
+/// Exact equality: the same monic modulus and the same marked root. The marked root is the
+/// root of the modulus nearest the stored approximation; when the two approximations differ,
+/// the roots are isolated exactly ([`AlgebraicNumber::roots_of_irreducible`]) and compared
+/// by index (no tolerance).
 impl PartialEq for NumberField {
     fn eq(&self, other: &Self) -> bool {
-        Arc::ptr_eq(&self.0, &other.0)
-            || (self.0.modulus == other.0.modulus
-                && (self.0.root.0 - other.0.root.0).abs() < 1e-9 * (1.0 + self.0.root.0.abs())
-                && (self.0.root.1 - other.0.root.1).abs() < 1e-9 * (1.0 + self.0.root.1.abs()))
+        if Arc::ptr_eq(&self.0, &other.0) {
+            return true;
+        }
+        if self.0.modulus != other.0.modulus {
+            return false;
+        }
+        if self.0.root == other.0.root {
+            return true;
+        }
+        match (self.marked_root_index(), other.marked_root_index()) {
+            (Some(i), Some(j)) => i == j,
+            _ => false,
+        }
     }
 }
 
@@ -49,7 +63,7 @@ impl PartialEq for NumberField {
 pub struct NfElem(pub Vec<Rational>);
 
 impl NumberField {
-    /// The field $\mathbb{Q}[t]/(m)$ with $t$ the root of $m$ near `root`.
+    /// The field $\mathbb{Q}\[t\]/(m)$ with $t$ the root of $m$ near `root`.
     ///
     /// The modulus is made monic and checked irreducible over $\mathbb{Q}$
     /// ([`crate::algebraic::is_irreducible_q`]).
@@ -79,6 +93,51 @@ impl NumberField {
     }
     pub fn root_approx(&self) -> (f64, f64) {
         self.0.root
+    }
+    /// Index of the marked root among the exactly isolated roots of the modulus
+    /// ([`AlgebraicNumber::roots_of_irreducible`], canonical order): the root nearest the
+    /// stored approximation. `None` when the isolation fails (budget) or two roots are
+    /// equally near.
+    pub fn marked_root_index(&self) -> Option<usize> {
+        let roots = AlgebraicNumber::roots_of_irreducible(&self.0.modulus).ok()?;
+        let (xr, xi) = self.0.root;
+        let d: Vec<f64> = roots
+            .iter()
+            .map(|z| {
+                let (a, b) = z.approx();
+                (a - xr).hypot(b - xi)
+            })
+            .collect();
+        let best = (0..d.len()).min_by(|&i, &j| d[i].total_cmp(&d[j]))?;
+        let unique = (0..d.len()).all(|j| j == best || d[j] > d[best]);
+        unique.then_some(best)
+    }
+    /// Invariants: the modulus is monic of degree at least 1 and the root approximation is
+    /// finite. (Irreducibility is checked by [`NumberField::new`].)
+    pub fn is_valid(&self) -> bool {
+        let m = &self.0.modulus;
+        m.deg() >= 1
+            && m.coeff(m.deg()).is_one()
+            && self.0.root.0.is_finite()
+            && self.0.root.1.is_finite()
+    }
+    /// Is `a` a canonical element: fewer coefficients than the degree, no trailing zero?
+    pub fn is_valid_elem(&self, a: &NfElem) -> bool {
+        a.0.len() <= self.degree() && a.0.last().is_none_or(|c| !c.is_zero())
+    }
+    /// The element with coefficients `c` (low degree first) in the basis
+    /// $1, t, \dots, t^{d-1}$, reduced modulo the modulus: the checked constructor.
+    pub fn elem_from_coeffs(&self, c: Vec<Rational>) -> NfElem {
+        self.reduce(c)
+    }
+    /// Coefficients of `a` in the basis $1, t, \dots, t^{d-1}$ (low degree first, trailing
+    /// zeros dropped).
+    pub fn elem_coeffs<'a>(&self, a: &'a NfElem) -> &'a [Rational] {
+        &a.0
+    }
+    /// Display name of the generator (`t` unless set by the caller).
+    pub fn var(&self) -> &str {
+        &self.0.var
     }
     /// The generator $t$.
     pub fn generator(&self) -> NfElem {
@@ -117,8 +176,9 @@ impl NumberField {
         }
         NfElem(v)
     }
-    /// Evaluates the element at the marked complex root, in f64.
-    fn eval_approx(&self, a: &NfElem) -> (f64, f64) {
+    /// Evaluates the element at the marked complex root, in f64 (always defined; the field
+    /// trait's [`Field::approx`] wraps it in `Some`).
+    pub fn approx(&self, a: &NfElem) -> (f64, f64) {
         let (xr, xi) = self.0.root;
         let (mut re, mut im) = (0.0, 0.0);
         for c in a.0.iter().rev() {
@@ -223,8 +283,8 @@ impl Field for NumberField {
     fn fmt_elem(&self, a: &NfElem) -> String {
         fmt_poly(&Q, &a.0, &self.0.var)
     }
-    fn approx(&self, a: &NfElem) -> (f64, f64) {
-        self.eval_approx(a)
+    fn approx(&self, a: &NfElem) -> Option<(f64, f64)> {
+        Some(NumberField::approx(self, a))
     }
 }
 

@@ -11,9 +11,9 @@
 
 use super::crt::{CommonDenominator, Crt};
 use super::det::det_int;
-use super::intmat::IntMat;
-use super::prime::{Prime, primes};
 use super::rref::{rows_mut, swap_rows};
+use crate::qkernels::intmat::IntMat;
+use crate::qkernels::prime::{Prime, primes};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 

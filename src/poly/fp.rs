@@ -1,4 +1,6 @@
-//! Polynomials over a word-size prime field $\mathbb{F}_p$, $p < 2^{32}$.
+//! Polynomials over a word-size prime field $\mathbb{F}_p$, $p < 2^{32}$: the $\mathbb{F}_p[x]$
+//! toolkit of the factoring code and the modular gcd of [`crate::poly::zpoly`] (a leaf:
+//! it depends on nothing else in the crate).
 //!
 //! Elements are `u64` in $[0, p)$; products fit in `u64`, and convolutions accumulate in
 //! `u128` with a single reduction per output coefficient. A polynomial is a `Vec<u64>`, low
@@ -9,10 +11,9 @@
 //! | [`Zp::mul`], [`Zp::sub`], [`Zp::divrem`], [`Zp::rem`] | ring operations, division with remainder |
 //! | [`Zp::gcd`], [`Zp::xgcd`] | monic gcd; $s a + t b = \gcd(a, b)$ |
 //! | [`Zp::powmod`] | $a^e \bmod m$ for a multi-word exponent |
-//! | [`coprime_mod_some_prime`] | a certificate that $\gcd(f, g) = 1$ over $\mathbb{Q}$ |
+//! | [`Zp::reduce`] | the image of an integer polynomial |
 
-use super::super::zpoly::ZPoly;
-use num_bigint::BigUint;
+use num_bigint::{BigInt, BigUint};
 use num_traits::Zero;
 
 /// Polynomial over $\mathbb{F}_p$, low degree first, normalized.
@@ -66,11 +67,11 @@ impl Zp {
         self.powu(a, self.p - 2)
     }
 
-    /// Reduction of an integer polynomial modulo $p$.
-    pub fn reduce_zpoly(&self, f: &ZPoly) -> PolyP {
-        let pb = num_bigint::BigInt::from(self.p);
-        let mut v: PolyP = f
-            .coeffs()
+    /// Reduction modulo $p$ of an integer polynomial given by its coefficients (low degree
+    /// first).
+    pub fn reduce(&self, coeffs: &[BigInt]) -> PolyP {
+        let pb = BigInt::from(self.p);
+        let mut v: PolyP = coeffs
             .iter()
             .map(|c| {
                 let r = c % &pb;
@@ -243,24 +244,4 @@ pub(crate) fn primes_from(start: u64) -> impl Iterator<Item = u64> {
         }
         true
     })
-}
-
-/// True when some prime $p$ not dividing both leading coefficients gives coprime images
-/// modulo $p$, which proves $\gcd(f, g) = 1$ over $\mathbb{Q}$. `false` means "unknown".
-pub(crate) fn coprime_mod_some_prime(f: &ZPoly, g: &ZPoly) -> bool {
-    let (df, dg) = (f.deg0(), g.deg0());
-    // three primes just above 10^6
-    for p in [1_000_003, 1_000_033, 1_000_037] {
-        let k = Zp::new(p);
-        let (a, b) = (k.reduce_zpoly(f), k.reduce_zpoly(g));
-        // the degree of one image must be kept, so that gcd mod p is an image of a multiple of
-        // the gcd over Z of at least its degree
-        if a.len() != df + 1 && b.len() != dg + 1 {
-            continue;
-        }
-        if k.gcd(&a, &b).len() == 1 {
-            return true;
-        }
-    }
-    false
 }

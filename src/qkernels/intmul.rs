@@ -5,7 +5,7 @@
 //! The dot products are exact integer sums and each entry is reduced once (with a Lehmer
 //! gcd), instead of normalising a rational after every multiply-add.
 
-use super::modular::gcd::{fraction, gcd};
+use super::gcd::{fraction, gcd};
 use crate::field::Rational;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};

@@ -12,9 +12,9 @@
 //! symmetric CRT lift is exact.
 
 use super::crt::Crt;
-use super::intmat::{IntMat, primes_for_bits};
-use super::prime::{Prime, primes};
 use super::rref::{rows_mut, swap_rows};
+use crate::qkernels::intmat::{IntMat, primes_for_bits};
+use crate::qkernels::prime::{Prime, primes};
 use num_bigint::BigInt;
 
 /// Characteristic polynomial of the `n x n` row-major `a` (destroyed) over $\mathbb{Z}/p$,

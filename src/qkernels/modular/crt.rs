@@ -9,7 +9,7 @@
 //! [`CommonDenominator`] reconstructs a whole vector over one denominator, which costs one
 //! multiplication per entry once the denominator has been found.
 
-use super::prime::Prime;
+use crate::qkernels::prime::Prime;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
@@ -156,7 +156,7 @@ pub fn rational_reconstruct(
     } else {
         (r1, t1)
     };
-    if b.is_zero() || &b > d_bound || !super::gcd::gcd(&a, &b).is_one() {
+    if b.is_zero() || &b > d_bound || !crate::qkernels::gcd::gcd(&a, &b).is_one() {
         return None;
     }
     Some((a, b))
@@ -205,8 +205,8 @@ impl CommonDenominator {
 
 #[cfg(test)]
 mod tests {
-    use super::super::prime::primes;
     use super::*;
+    use crate::qkernels::prime::primes;
 
     #[test]
     fn lift_roundtrip() {

@@ -1,7 +1,7 @@
 //! Fraction-free exact linear algebra over $\mathbb{Q}$: the classical integer algorithms.
 //!
 //! The rational input is made integral first (row-wise or by a global denominator, see
-//! [`crate::matrix::modular::intmat`]); every intermediate value is then an integer minor
+//! [`crate::qkernels::intmat`]); every intermediate value is then an integer minor
 //! of that matrix, so no gcd is ever taken during elimination.
 //!
 //! | entry point | computes | algorithm | cost ($n$ = size) |
@@ -12,11 +12,11 @@
 //! | [`inverse_bareiss`] | $A^{-1}$ or `None` | fraction-free Gauss–Jordan on $[B \mid I]$ | $O(n^3)$ |
 //! | [`charpoly_berkowitz`] | $\det(xI - A)$, low degree first | Berkowitz (division-free) | $O(n^4)$ |
 //!
-//! These are the oracle of [`crate::matrix::modular`] and its path for small sizes.
+//! These are the oracle of [`crate::qkernels::modular`] and its path for small sizes.
 
 use crate::field::Rational;
-use crate::matrix::modular::intmat::{integer_rows, integer_scaled};
-use crate::matrix::modular::unscale_charpoly;
+use crate::qkernels::intmat::unscale_charpoly;
+use crate::qkernels::intmat::{integer_rows, integer_scaled};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
@@ -66,7 +66,7 @@ pub fn det_bareiss(n: usize, a: &[Rational]) -> Rational {
         prev = m[k * n + k].clone();
     }
     let d = if sign_neg { -prev } else { prev };
-    crate::matrix::modular::scale_det(d, &scales)
+    crate::qkernels::intmat::scale_det(d, &scales)
 }
 
 /// Fraction-free Gauss–Jordan on an integer `m x n` matrix in place. Afterwards the first

@@ -6,9 +6,9 @@
 //! heuristic).
 
 use super::crt::Crt;
-use super::intmat::{IntMat, primes_for_bits};
-use super::prime::{Prime, primes};
 use super::rref::{rows_mut, swap_rows};
+use crate::qkernels::intmat::{IntMat, primes_for_bits};
+use crate::qkernels::prime::{Prime, primes};
 use num_bigint::BigInt;
 use num_traits::Zero;
 

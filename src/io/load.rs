@@ -1,0 +1,237 @@
+//! System file → typed system over the file's ground field, for library users and the CLI.
+//!
+//! | entry point | does |
+//! |---|---|
+//! | [`load_system_str`] | text (JSON or TOML, see [`SystemFormat`]) → [`LoadedSystem`] |
+//! | [`load_system_path`] | a file (format from the extension) → [`LoadedSystem`] |
+//! | [`LoadedSystem::run`] | **the one dispatch point**: calls a [`SystemVisitor`] with the system over its concrete field `K` |
+//!
+//! Code that works on a loaded system is written once, generic over `K: Field`, as a
+//! [`SystemVisitor`]; `run` is the only `match` over the ground fields outside this file's
+//! typing step ([`type_file`]). Adding a ground field (e.g. $\mathbb{Q}(p_1, \dots, p_k)$)
+//! means: a new [`Ground`] variant from the reader, a variant of [`TypedAny`], one arm in
+//! `type_file` and one in `run`.
+//!
+//! Every failure is an [`InputError`]: one line naming the file (and key, row, column when
+//! they apply); the command line prints it and exits with status 2.
+//!
+//! # Examples
+//! ```
+//! use exactlti::field::Field;
+//! use exactlti::io::{SystemFile, SystemFormat, SystemVisitor, TypedSystem, load_system_str};
+//!
+//! struct Order;
+//! impl SystemVisitor for Order {
+//!     type Output = (usize, String);
+//!     fn visit<K: Field + 'static>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+//!         (t.ss.nstates(), t.ss.a.field().to_string())
+//!     }
+//! }
+//! let text = "A = [[0, 1], [-2, -0.5]]\nB = [[0], [1]]\nC = [[1, 0]]\nD = [[0]]\n";
+//! let sys = load_system_str(text, SystemFormat::Toml, "two.toml").unwrap();
+//! assert_eq!(sys.run(Order), (2, "QQ".to_string()));
+//! assert_eq!(sys.rational().unwrap().ss.a.get(1, 1).to_string(), "-1/2");
+//!
+//! let e = load_system_str(r#"{"A": [[1, "k"]]}"#, SystemFormat::Json, "x.json").unwrap_err();
+//! assert_eq!(e.to_string(), "x.json: key A, row 1, column 2: unknown parameter 'k'");
+//! ```
+
+use super::{
+    Ground, InputError, MatrixEntries, SystemFile, parse_system_json, parse_system_toml,
+    read_system_file,
+};
+use crate::error::Error;
+use crate::field::{Field, Q, QuadraticField};
+use crate::matrix::Matrix;
+use crate::realization::descriptor_to_standard;
+use crate::system::{Descriptor, StateSpace};
+use std::any::Any;
+use std::path::Path;
+
+/// The text format of a system file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SystemFormat {
+    Json,
+    Toml,
+}
+
+/// A system over its ground field `K`, as given and (when possible) in standard form.
+#[derive(Clone, Debug)]
+pub struct TypedSystem<K: Field> {
+    /// The descriptor system `E x' = A x + B u` when the file gives `E`.
+    pub descriptor: Option<Descriptor<K>>,
+    /// The matrix `A` as the file gives it (of the first-order form built from the
+    /// second-order keys when there is no `A`).
+    pub a_raw: Matrix<K>,
+    /// The standard state-space form (from `A`..`D`, the second-order keys, or the
+    /// descriptor converted by [`descriptor_to_standard`]).
+    pub ss: StateSpace<K>,
+}
+
+/// A typed system over one of the supported ground fields.
+#[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
+#[non_exhaustive]
+pub enum TypedAny {
+    /// Every entry rational.
+    Rational(TypedSystem<Q>),
+    /// Entries in one quadratic field $\mathbb{Q}(\sqrt d)$.
+    Quadratic(TypedSystem<QuadraticField>),
+}
+
+/// A validated system file together with its typed system.
+#[derive(Clone, Debug)]
+pub struct LoadedSystem {
+    /// The validated file (parameters, entries as exact scalars, ground field, name, path).
+    pub file: SystemFile,
+    /// The typed system over the file's ground field.
+    pub system: TypedAny,
+}
+
+/// Work on a loaded system, written once for every ground field `K`.
+///
+/// Field-specific steps inside `visit` may ask for a concrete field with
+/// [`as_rational`] (`Some` exactly when `K` is [`Q`]).
+pub trait SystemVisitor {
+    type Output;
+    /// Runs on the system over its concrete field.
+    fn visit<K: Field + 'static>(self, file: &SystemFile, sys: &TypedSystem<K>) -> Self::Output;
+}
+
+impl LoadedSystem {
+    /// Runs `v` over the system's concrete ground field: the one dispatch point from a
+    /// file's field to generic code.
+    pub fn run<V: SystemVisitor>(&self, v: V) -> V::Output {
+        match &self.system {
+            TypedAny::Rational(t) => v.visit(&self.file, t),
+            TypedAny::Quadratic(t) => v.visit(&self.file, t),
+        }
+    }
+    /// The system over $\mathbb{Q}$, or `None` when the file's field is larger.
+    pub fn rational(&self) -> Option<&TypedSystem<Q>> {
+        match &self.system {
+            TypedAny::Rational(t) => Some(t),
+            _ => None,
+        }
+    }
+    /// The file's ground field.
+    pub fn ground(&self) -> &Ground {
+        &self.file.ground
+    }
+}
+
+/// The same system seen over $\mathbb{Q}$ when `K` is [`Q`] (a type test, no conversion).
+pub fn as_rational<K: Field + 'static>(sys: &TypedSystem<K>) -> Option<&TypedSystem<Q>> {
+    (sys as &dyn Any).downcast_ref::<TypedSystem<Q>>()
+}
+
+/// Loads a system from text in the given format; `name` is only used in messages.
+///
+/// # Errors
+/// Every error of the reader ([`parse_system_json`], [`parse_system_toml`]) and of typing:
+/// a singular mass matrix, a descriptor system that is not regular or not proper, a file
+/// with neither `A` nor `M`, `L`, `K`, `F`.
+pub fn load_system_str(
+    text: &str,
+    format: SystemFormat,
+    name: &str,
+) -> Result<LoadedSystem, InputError> {
+    let file = match format {
+        SystemFormat::Json => parse_system_json(text, name)?,
+        SystemFormat::Toml => parse_system_toml(text, name)?,
+    };
+    type_file(file)
+}
+
+/// Reads and loads a system file (`.toml` as TOML, `.json` or text starting with `{` as
+/// JSON).
+///
+/// # Errors
+/// An unreadable file, and every error of [`load_system_str`].
+pub fn load_system_path(path: &Path) -> Result<LoadedSystem, InputError> {
+    type_file(read_system_file(path)?)
+}
+
+/// Types a validated file over its ground field.
+///
+/// # Errors
+/// As [`load_system_str`] after parsing.
+pub fn type_file(file: SystemFile) -> Result<LoadedSystem, InputError> {
+    let system = match &file.ground {
+        Ground::Rational => TypedAny::Rational(typed(&file, &Q)?),
+        Ground::Quadratic(k) => TypedAny::Quadratic(typed(&file, k)?),
+    };
+    Ok(LoadedSystem { file, system })
+}
+
+/// Converts exact scalars into elements of a ground field.
+pub trait FromScalars: Field {
+    /// The matrix with the same entries over `self`.
+    fn matrix_from_entries(&self, m: &MatrixEntries) -> Matrix<Self>;
+}
+
+impl FromScalars for Q {
+    fn matrix_from_entries(&self, m: &MatrixEntries) -> Matrix<Q> {
+        Matrix::from_vec(
+            Q,
+            m.nrows,
+            m.ncols,
+            m.data.iter().map(|x| x.a.clone()).collect(),
+        )
+    }
+}
+
+impl FromScalars for QuadraticField {
+    fn matrix_from_entries(&self, m: &MatrixEntries) -> Matrix<QuadraticField> {
+        Matrix::from_vec(
+            self.clone(),
+            m.nrows,
+            m.ncols,
+            m.data.iter().map(|x| x.to_quadratic()).collect(),
+        )
+    }
+}
+
+fn typed<K: FromScalars>(f: &SystemFile, k: &K) -> Result<TypedSystem<K>, InputError> {
+    let fail = |e: Error| InputError::file(&f.path, e.to_string());
+    let get = |m: &Option<MatrixEntries>| m.as_ref().map(|m| k.matrix_from_entries(m));
+    let missing = |key: &str| InputError::key(&f.path, key, "missing (validated reader)");
+    if let Some(a) = get(&f.a) {
+        let b = get(&f.b).ok_or_else(|| missing("B"))?;
+        let c = get(&f.c).ok_or_else(|| missing("C"))?;
+        let d = get(&f.d).ok_or_else(|| missing("D"))?;
+        if let Some(e) = get(&f.e) {
+            let desc = Descriptor::new(e, a, b, c, d).map_err(fail)?;
+            let sf = descriptor_to_standard(&desc).map_err(fail)?;
+            return Ok(TypedSystem {
+                a_raw: desc.a.clone(),
+                descriptor: Some(desc),
+                ss: sf.system,
+            });
+        }
+        let ss = StateSpace::new(a, b, c, d).map_err(fail)?;
+        return Ok(TypedSystem {
+            a_raw: ss.a.clone(),
+            descriptor: None,
+            ss,
+        });
+    }
+    let (m, l, kk, ff) = (get(&f.m), get(&f.l), get(&f.k), get(&f.f));
+    let (Some(m), Some(l), Some(kk), Some(ff)) = (m, l, kk, ff) else {
+        return Err(InputError::file(
+            &f.path,
+            "the file gives neither A nor the second-order keys M, L, K, F",
+        ));
+    };
+    let ss =
+        StateSpace::from_second_order(&m, &l, &kk, &ff, get(&f.c).as_ref(), get(&f.d).as_ref())
+            .map_err(|e| match e {
+                Error::Singular => InputError::key(&f.path, "M", "the mass matrix is singular"),
+                e => fail(e),
+            })?;
+    Ok(TypedSystem {
+        a_raw: ss.a.clone(),
+        descriptor: None,
+        ss,
+    })
+}

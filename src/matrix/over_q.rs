@@ -1,0 +1,134 @@
+//! Size dispatch of the $\mathbb{Q}$ kernels of [`crate::qkernels`] (the matrix-side choice
+//! of method, as SymPy's `_dm_rref_choose_method` and FLINT's `gr_mat` do).
+//!
+//! Small problems go to the fraction-free routines of [`crate::qkernels::fraction_free`]
+//! (Bareiss elimination, Berkowitz), which have no per-prime overhead: square matrices with
+//! $n \le$ [`SMALL_N`] and RREF inputs with $mn \le$ [`SMALL_MN`] (thresholds measured with
+//! `benches/matrix.rs`). Larger inputs take the certified multi-modular path of
+//! [`crate::qkernels::modular`], whose cost is output-sensitive for RREF, null space and
+//! inverse. Products with inner dimension $\ge$ [`MUL_MIN_K`] use the integer kernel
+//! [`crate::qkernels::intmul`].
+//!
+//! Each function computes the same canonical result as the generic algorithm of
+//! [`crate::matrix::Matrix`] over $\mathbb{Q}$ (RREF, rank, null space, $\det A$,
+//! $\det(xI - A)$ low degree first, $A^{-1}$ or `None`, $AB$).
+//!
+//! All matrices are row-major slices; a slice whose length is not `m * n` (or `n * n`) is a
+//! caller bug and panics.
+
+use crate::field::Rational;
+use crate::qkernels::{fraction_free, intmul, modular};
+use num_bigint::BigInt;
+use num_traits::One;
+
+/// Square matrices up to this size use the fraction-free path.
+pub const SMALL_N: usize = 8;
+/// RREF inputs with at most this many entries use the fraction-free path.
+pub const SMALL_MN: usize = 64;
+/// Products whose inner dimension is at least this (and with at least 4 entries) use the
+/// integer product kernel.
+pub const MUL_MIN_K: usize = 4;
+
+fn check_len(op: &str, len: usize, m: usize, n: usize) {
+    assert_eq!(
+        len,
+        m * n,
+        "{op}: slice of length {len} for a {m}x{n} matrix"
+    );
+}
+
+/// Rank of the `m x n` row-major matrix `a`.
+///
+/// # Panics
+/// When `a.len() != m * n`.
+pub fn rank_q(m: usize, n: usize, a: &[Rational]) -> usize {
+    check_len("rank_q", a.len(), m, n);
+    if m * n <= SMALL_MN {
+        return fraction_free::rank_bareiss(m, n, a);
+    }
+    modular::rank_modular(m, n, a)
+}
+
+/// Canonical reduced row echelon form (`m x n`, pivots 1, zeros above and below them,
+/// zero rows last) and the pivot columns.
+///
+/// # Panics
+/// When `a.len() != m * n`.
+pub fn rref_q(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<usize>) {
+    check_len("rref_q", a.len(), m, n);
+    if m * n <= SMALL_MN {
+        return fraction_free::rref_bareiss(m, n, a);
+    }
+    modular::rref_modular(m, n, a)
+}
+
+/// Basis of the right null space $\{x \in \mathbb{Q}^n : Ax = 0\}$, canonical: one vector
+/// per non-pivot column $f$ of the RREF $R$, with $x_f = 1$, $x_{P_k} = -R_{k,f}$ and zeros
+/// elsewhere (in increasing order of $f$).
+///
+/// # Panics
+/// When `a.len() != m * n`.
+pub fn nullspace_q(m: usize, n: usize, a: &[Rational]) -> Vec<Vec<Rational>> {
+    check_len("nullspace_q", a.len(), m, n);
+    if m * n > SMALL_MN {
+        return modular::nullspace_modular(m, n, a);
+    }
+    let (r, p) = fraction_free::rref_bareiss(m, n, a);
+    let den = r.iter().fold(BigInt::one(), |l, x| {
+        num_integer::Integer::lcm(&l, x.denom())
+    });
+    let nums: Vec<BigInt> = r[..p.len() * n]
+        .iter()
+        .map(|x| x.numer() * (&den / x.denom()))
+        .collect();
+    modular::nullspace_from_integer_rref(n, &nums, &den, &p)
+}
+
+/// Determinant of the `n x n` row-major matrix `a` (1 for `n = 0`).
+///
+/// # Panics
+/// When `a.len() != n * n`.
+pub fn det_q(n: usize, a: &[Rational]) -> Rational {
+    check_len("det_q", a.len(), n, n);
+    if n <= SMALL_N {
+        return fraction_free::det_bareiss(n, a);
+    }
+    modular::det_modular(n, a)
+}
+
+/// Characteristic polynomial $\det(xI - A)$: coefficients low degree first, monic, length
+/// `n + 1`.
+///
+/// # Panics
+/// When `a.len() != n * n`.
+pub fn charpoly_q(n: usize, a: &[Rational]) -> Vec<Rational> {
+    check_len("charpoly_q", a.len(), n, n);
+    if n <= SMALL_N {
+        return fraction_free::charpoly_berkowitz(n, a);
+    }
+    modular::charpoly_modular(n, a)
+}
+
+/// Inverse of the `n x n` row-major matrix `a`; `None` when `a` is singular.
+///
+/// # Panics
+/// When `a.len() != n * n`.
+pub fn inverse_q(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
+    check_len("inverse_q", a.len(), n, n);
+    if n <= SMALL_N {
+        return fraction_free::inverse_bareiss(n, a);
+    }
+    modular::inverse_modular(n, a)
+}
+
+/// Row-major product of `m x k` and `k x n`; `None` when the generic loop is the better
+/// choice (inner dimension below [`MUL_MIN_K`] or fewer than 4 entries).
+pub fn mul_q(
+    m: usize,
+    k: usize,
+    n: usize,
+    a: &[Rational],
+    b: &[Rational],
+) -> Option<Vec<Rational>> {
+    (k >= MUL_MIN_K && m * n >= 4).then(|| intmul::mul_q(m, k, n, a, b))
+}

@@ -1,0 +1,230 @@
+//! Reports of Jordan forms, real Jordan forms and free responses.
+//!
+//! Presentation only: these `report` methods read finished results of [`crate::jordan`] and
+//! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
+
+use crate::field::Field;
+use crate::jordan::fmt_approx;
+use crate::jordan::{FreeResponse, JordanForm, RealJordanForm};
+use crate::report::{MatrixOut, Report, Value};
+
+impl JordanForm {
+    /// $J$ and $T$ for output: exact strings (per-root fields) and approximations.
+    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
+        let n = self.n();
+        let zero_s = || vec![vec!["0".to_string(); n]; n];
+        let zero_a = || vec![vec![(0.0, 0.0); n]; n];
+        let (mut je, mut ja, mut te, mut ta) = (zero_s(), zero_a(), zero_s(), zero_a());
+        let mut off = 0;
+        for c in self.root_columns() {
+            let k = &c.field;
+            let m = c.v.ncols();
+            for r in 0..n {
+                for q in 0..m {
+                    te[r][off + q] = k.fmt_elem(c.v.get(r, q));
+                    ta[r][off + q] = k.approx(c.v.get(r, q));
+                }
+            }
+            for r in 0..m {
+                for q in 0..m {
+                    je[off + r][off + q] = k.fmt_elem(c.j.get(r, q));
+                    ja[off + r][off + q] = k.approx(c.j.get(r, q));
+                }
+            }
+            off += m;
+        }
+        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
+    }
+    /// The report with the CLI contract's keys: `eigenvalues[]` (`minpoly`, `value`,
+    /// `approx`, `algebraic_multiplicity`, `geometric_multiplicity`, `blocks`), `J`, `T`
+    /// (exact, with `_approx`), `verified`, plus `charpoly`, `presentation`, `symbols`.
+    pub fn report(&self) -> Report {
+        let evs: Vec<Value> = self
+            .eigenvalues
+            .iter()
+            .map(|e| {
+                Value::Obj(
+                    Report::new()
+                        .str("minpoly", e.minpoly.to_string())
+                        .str("value", e.value.clone())
+                        .with(
+                            "approx",
+                            Value::List(vec![Value::Float(e.approx.0), Value::Float(e.approx.1)]),
+                        )
+                        .int("algebraic_multiplicity", e.algebraic_multiplicity)
+                        .int("geometric_multiplicity", e.geometric_multiplicity)
+                        .with(
+                            "blocks",
+                            Value::List(e.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
+                        ),
+                )
+            })
+            .collect();
+        let single = self.single_field();
+        let presentation = match &single {
+            Some((j, _)) if j.field().degree() == 1 => "single matrix over QQ".to_string(),
+            Some((j, _)) => format!("single matrix over QQ({})", j.field().0.var),
+            None => "per eigenvalue: the columns of eigenvalue r<k> are exact in QQ(r<k>) \
+                     (closed form for degree <= 2)"
+                .to_string(),
+        };
+        let symbols: Vec<Value> = self
+            .eigenvalues
+            .iter()
+            .filter(|e| e.minpoly.deg() >= 3)
+            .map(|e| {
+                Value::Str(format!(
+                    "{} = root of {} near {}",
+                    e.symbol,
+                    e.minpoly,
+                    fmt_approx(e.approx)
+                ))
+            })
+            .collect();
+        let (jo, to) = match single {
+            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
+            None => self.j_t_out(),
+        };
+        let mut r = Report::titled("Jordan form")
+            .int("n", self.n())
+            .str("charpoly", self.charpoly.to_string())
+            .list("eigenvalues", evs)
+            .with("J", Value::Matrix(Box::new(jo)))
+            .with("T", Value::Matrix(Box::new(to)))
+            .str("presentation", presentation);
+        if !symbols.is_empty() {
+            r = r.list("symbols", symbols);
+        }
+        r.bool("verified", self.verified)
+    }
+}
+
+impl RealJordanForm {
+    /// $J$, $T$ for output (exact strings in each block's field; `~x` marks an
+    /// approximate entry of a non-exact block).
+    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
+        let n = self.n;
+        let mut je = vec![vec!["0".to_string(); n]; n];
+        let mut te = je.clone();
+        let mut ja = vec![vec![(0.0, 0.0); n]; n];
+        let mut ta = ja.clone();
+        let mut off = 0;
+        for b in &self.blocks {
+            let w = b.t_approx.first().map_or(b.j_approx.len(), |r| r.len());
+            for r in 0..n {
+                for q in 0..w {
+                    ta[r][off + q] = (b.t_approx[r][q], 0.0);
+                    te[r][off + q] = match (&b.field, &b.t, &b.compact) {
+                        (Some(f), Some(t), _) => f.fmt_elem(t.get(r, q)),
+                        (_, _, Some(cp)) => {
+                            let (re, im) = cp.part_strings(cp.v.get(r, q / 2));
+                            if q % 2 == 0 { re } else { im }
+                        }
+                        _ => format!("~{}", b.t_approx[r][q]),
+                    };
+                }
+            }
+            for r in 0..w {
+                for q in 0..w {
+                    ja[off + r][off + q] = (b.j_approx[r][q], 0.0);
+                    je[off + r][off + q] = match (&b.field, &b.j, &b.compact) {
+                        (Some(f), Some(j), _) => f.fmt_elem(j.get(r, q)),
+                        (_, _, Some(cp)) => cp.j_entry(r, q, b.j_approx[r][q] == 1.0),
+                        _ => format!("~{}", b.j_approx[r][q]),
+                    };
+                }
+            }
+            off += w;
+        }
+        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
+    }
+    /// Report: `J`, `T` (exact strings and `_approx`), `exact`, `verified`, `fields`,
+    /// `parts`, `notes`.
+    pub fn report(&self) -> Report {
+        let (jo, to) = match self.single_field() {
+            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
+            None => self.j_t_out(),
+        };
+        let fields: Vec<Value> = self
+            .blocks
+            .iter()
+            .filter_map(|b| b.field.as_ref())
+            .filter(|f| f.degree() >= 3)
+            .map(|f| {
+                Value::Str(format!(
+                    "{} = root of {} near {}",
+                    f.0.var,
+                    f.modulus(),
+                    fmt_approx(f.root_approx())
+                ))
+            })
+            .collect();
+        let compact = self.blocks.iter().any(|b| b.compact.is_some());
+        let mut r = Report::titled("Real Jordan form")
+            .with("J", Value::Matrix(Box::new(jo)))
+            .with("T", Value::Matrix(Box::new(to)))
+            .bool("exact", self.exact)
+            .bool("verified", self.verified);
+        if compact {
+            r = r.str(
+                "presentation",
+                "compact: each complex pair r<k> = a<k> + b<k>*i has the block [[a, b], [-b, a]] \
+                 and the columns Re v, Im v of its complex chains v in QQ(r<k>) (T_R = T_C S); \
+                 verified on the complex side (A T_C = T_C J_C in QQ(r<k>), which implies \
+                 A T_R = T_R J_R); `--expand` writes the entries in a real field",
+            );
+            r = r.list(
+                "symbols",
+                self.symbols.iter().cloned().map(Value::Str).collect(),
+            );
+        }
+        if !fields.is_empty() {
+            r = r.list("fields", fields);
+        }
+        if !self.parts.is_empty() {
+            r = r.list(
+                "parts",
+                self.parts.iter().cloned().map(Value::Str).collect(),
+            );
+        }
+        if !self.notes.is_empty() {
+            r = r.list(
+                "notes",
+                self.notes.iter().cloned().map(Value::Str).collect(),
+            );
+        }
+        r
+    }
+}
+
+impl FreeResponse {
+    /// Report: one entry per eigenvalue and power, `x(t) = sum t^k e^(s t) G x0`.
+    pub fn report(&self, jf: &JordanForm) -> Report {
+        let mut items = vec![];
+        for (ev, e) in jf.eigenvalues.iter().enumerate() {
+            let (field, f) = jf.root_map(ev);
+            for t in self.terms.iter().filter(|t| t.component == e.component) {
+                items.push(Value::Obj(
+                    Report::new()
+                        .str("eigenvalue", e.value.clone())
+                        .int("power", t.power)
+                        .matrix("G", &t.coeff.map(&field, &f)),
+                ));
+            }
+        }
+        Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0").list("terms", items)
+    }
+}
+
+impl std::fmt::Display for JordanForm {
+    /// The text report: eigenvalues with their blocks, `J`, `T`, `verified`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.report().to_text())
+    }
+}
+
+impl std::fmt::Display for RealJordanForm {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.report().to_text())
+    }
+}

@@ -1,0 +1,70 @@
+//! Report building for the results of the math modules (one file per family).
+//!
+//! The math types stay free of presentation: the `report()` methods of
+//! [`crate::jordan::JordanForm`], [`crate::realization::MinimalRealization`],
+//! [`crate::structure::scb::Scb`] and the other results are defined here, next to the
+//! report model, and so are the reports of commands that are not one result
+//! ([`factor_report`], [`roots_report`], [`already_standard`], [`float_jordan_fallback`]).
+
+mod algebraic;
+mod jordan;
+mod realization;
+mod structure;
+
+pub use algebraic::{factor_report, roots_report};
+
+use crate::field::Field;
+use crate::float::{Tol, jordan_guess, to_dmatrix};
+use crate::matrix::Matrix;
+use crate::report::{Report, Value};
+use crate::system::StateSpace;
+
+/// The `standard` report of a file without `E`: the system is already in standard form.
+pub fn already_standard<K: Field>(ss: &StateSpace<K>) -> Report {
+    Report::titled("descriptor to standard form")
+        .int("order", ss.nstates())
+        .int("removed_infinite", 0)
+        .matrix("A", &ss.a)
+        .matrix("B", &ss.b)
+        .matrix("C", &ss.c)
+        .matrix("D", &ss.d)
+        .bool("verified", true)
+        .with(
+            "note",
+            Value::Str("no E in the file: the system is already in standard form".into()),
+        )
+}
+
+/// The float backend's guess of eigenvalues and Jordan blocks (`exact: false`), shown when
+/// the exact Jordan form stopped at a limit of the implementation.
+///
+/// # Errors
+/// As [`jordan_guess`] and [`to_dmatrix`].
+pub fn float_jordan_fallback<K: Field>(a: &Matrix<K>) -> crate::Result<Report> {
+    let fj = jordan_guess(&to_dmatrix(a)?, &Tol::default())?;
+    let clusters = fj
+        .clusters
+        .iter()
+        .map(|c| {
+            Value::Obj(
+                Report::new()
+                    .list(
+                        "approx",
+                        vec![Value::Float(c.center.re), Value::Float(c.center.im)],
+                    )
+                    .int("algebraic_multiplicity", c.algebraic_multiplicity)
+                    .list(
+                        "blocks",
+                        c.block_sizes
+                            .iter()
+                            .map(|&b| Value::Int(b as i64))
+                            .collect(),
+                    )
+                    .str("truth", format!("{:?}", c.truth)),
+            )
+        })
+        .collect();
+    Ok(Report::titled("float guess (no exact result)")
+        .bool("exact", false)
+        .list("eigenvalues", clusters))
+}

@@ -1,0 +1,57 @@
+//! The one integration-test binary: every former `tests/*.rs` file is a module here (one
+//! link step instead of thirteen). A new test file must be listed below; the test
+//! `every_test_file_is_a_module` fails otherwise. Run one former file with
+//! `cargo test --test all FILE::` (e.g. `cargo test --test all jordan::`).
+
+mod common;
+#[path = "common/jordan.rs"]
+mod jcommon;
+
+#[path = "algebraic.rs"]
+mod algebraic;
+#[path = "bicycle.rs"]
+mod bicycle;
+#[path = "cli.rs"]
+mod cli;
+#[path = "field_axioms.rs"]
+mod field_axioms;
+#[path = "float.rs"]
+mod float;
+#[path = "io.rs"]
+mod io;
+#[path = "jordan.rs"]
+mod jordan;
+#[path = "library_api.rs"]
+mod library_api;
+#[path = "matrix_generic.rs"]
+mod matrix_generic;
+#[path = "matrix_modular.rs"]
+mod matrix_modular;
+#[path = "mechanical.rs"]
+mod mechanical;
+#[path = "poly_factor.rs"]
+mod poly_factor;
+#[path = "realization.rs"]
+mod realization;
+#[path = "realization_planted.rs"]
+mod realization_planted;
+#[path = "scb.rs"]
+mod scb;
+
+/// Every `tests/*.rs` file (other than this one) is mounted above: Cargo's automatic test
+/// discovery is off (`autotests = false`), so an unlisted file would silently not run.
+#[test]
+fn every_test_file_is_a_module() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
+    let this = include_str!("all.rs");
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let name = e.unwrap().file_name().into_string().unwrap();
+        if name.ends_with(".rs") && name != "all.rs" {
+            let stem = name.trim_end_matches(".rs");
+            assert!(
+                this.contains(&format!("#[path = \"{name}\"]\nmod {stem};")),
+                "tests/{name} is not a module of tests/all.rs"
+            );
+        }
+    }
+}
