@@ -15,6 +15,8 @@ mod bicycle;
 mod cli;
 #[path = "field_axioms.rs"]
 mod field_axioms;
+#[path = "everyday.rs"]
+mod everyday;
 #[path = "float.rs"]
 mod float;
 #[path = "io.rs"]
