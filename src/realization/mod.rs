@@ -38,7 +38,9 @@ pub use controllability::{
 pub use descriptor::{StandardForm, descriptor_to_standard};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
-pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational};
+pub use jordan_method::{
+    JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational, minimal_jordan_with,
+};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
