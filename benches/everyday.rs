@@ -40,7 +40,7 @@ fn best<T>(reps: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     (best, out.expect("reps >= 1"))
 }
 
-/// Runs the CLI with a 60 s cap; returns (seconds, bytes of stdout, exit code).
+/// Runs the CLI with a 20 s cap; returns (seconds, bytes of stdout, exit code).
 fn cli(args: &[&str], file: &Path) -> (f64, usize, i32) {
     let bin = env!("CARGO_BIN_EXE_exactlti");
     let mut best = (f64::INFINITY, 0, -1);
@@ -49,7 +49,7 @@ fn cli(args: &[&str], file: &Path) -> (f64, usize, i32) {
         let out = Command::new(bin)
             .args(args)
             .arg(file)
-            .args(["--max-seconds", "60"])
+            .args(["--max-seconds", "20"])
             .output()
             .expect("run exactlti");
         let s = t.elapsed().as_secs_f64();
