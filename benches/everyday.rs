@@ -78,7 +78,10 @@ fn main() {
         let (tj, jf) = best(reps, || jordan(&sys.a).expect("jordan"));
         let (tr, rf) = best(reps, || jf.real_form().expect("real form"));
         let (tm, jm) = best(reps, || minimal_jordan(&sys).expect("minreal"));
-        assert!(jf.verified && rf.verified && rf.exact && jm.verified, "{name}");
+        assert!(
+            jf.verified && rf.verified && rf.exact && jm.verified,
+            "{name}"
+        );
         let fmt = |(s, b, c): (f64, usize, i32)| {
             format!("{s:>7.3} s {:>5.0} KB ({c})", b as f64 / 1024.0)
         };

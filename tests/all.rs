@@ -17,10 +17,10 @@ mod cli;
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
-#[path = "field_axioms.rs"]
-mod field_axioms;
 #[path = "everyday.rs"]
 mod everyday;
+#[path = "field_axioms.rs"]
+mod field_axioms;
 #[path = "float.rs"]
 mod float;
 #[path = "from_transfer.rs"]

@@ -29,9 +29,7 @@ fn check_real_layout(a: &Matrix<Q>, rf: &RealJordanForm) {
     let (jo, to) = rf.j_t_out();
     let get = |m: &Vec<Vec<(f64, f64)>>| nalgebra::DMatrix::from_fn(n, n, |i, j| m[i][j].0);
     let (j, t) = (get(&jo.approx), get(&to.approx));
-    let af = nalgebra::DMatrix::from_fn(n, n, |i, k| {
-        exactlti::field::rational_to_f64(a.get(i, k))
-    });
+    let af = nalgebra::DMatrix::from_fn(n, n, |i, k| exactlti::field::rational_to_f64(a.get(i, k)));
     let res = (&af * &t - &t * &j).norm();
     let scale = af.norm() * t.norm() + 1.0;
     assert!(res <= 1e-8 * scale, "A T - T J = {res} (scale {scale})");
@@ -93,7 +91,10 @@ fn quarter_car_compact_and_small() {
     // two complex pairs of an irreducible quartic: compact, parts as algebraic numbers
     assert_eq!(rf.blocks.len(), 2);
     for b in &rf.blocks {
-        let cp = b.compact.as_ref().expect("the real field has degree 12: compact");
+        let cp = b
+            .compact
+            .as_ref()
+            .expect("the real field has degree 12: compact");
         assert_eq!(cp.re.as_ref().unwrap().degree(), 6);
         assert_eq!(cp.im.as_ref().unwrap().degree(), 12);
     }
@@ -102,8 +103,16 @@ fn quarter_car_compact_and_small() {
     assert!(text.contains("a1") && text.contains("Re(") && text.contains("-b1"));
     // on request the pairs are expanded into their real fields, exactly and verified
     let ex = jf.real_form_expanded().unwrap();
-    assert!(ex.exact && ex.verified && ex.notes.is_empty(), "{:?}", ex.notes);
-    assert!(ex.blocks.iter().all(|b| b.t.is_some() && b.compact.is_none()));
+    assert!(
+        ex.exact && ex.verified && ex.notes.is_empty(),
+        "{:?}",
+        ex.notes
+    );
+    assert!(
+        ex.blocks
+            .iter()
+            .all(|b| b.t.is_some() && b.compact.is_none())
+    );
 }
 
 #[test]
@@ -138,7 +147,11 @@ fn papers_quadratic_and_biquadratic_pairs_stay_expanded() {
     // x^4 + 4 x^2 + 1 (roots i sqrt(2 +- sqrt 3)): real field Q(sqrt 3)-type of degree 4
     let a = exactlti::qmat![[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1], [-1, 0, -4, 0]];
     let rf = jordan(&a).unwrap().real_form().unwrap();
-    assert!(rf.blocks.iter().all(|b| b.compact.is_none() && b.t.is_some()));
+    assert!(
+        rf.blocks
+            .iter()
+            .all(|b| b.compact.is_none() && b.t.is_some())
+    );
     assert!(rf.verified);
     // -1 +- i: over Q
     let a = exactlti::qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]];

@@ -439,9 +439,7 @@ impl JordanForm {
             }
             blocks.push(block);
         }
-        let exact = blocks
-            .iter()
-            .all(|b| b.t.is_some() || b.compact.is_some());
+        let exact = blocks.iter().all(|b| b.t.is_some() || b.compact.is_some());
         Ok(RealJordanForm {
             n,
             symbols,

@@ -107,13 +107,12 @@ pub(crate) fn simple_component(
     let v = first_nonzero(a).ok_or_else(none)?;
     let w = first_nonzero(&a.transpose()).ok_or_else(none)?;
     // s = w v, then W = w / s as one rational solve: coeffs(W) = M_s^{-1} coeffs(w)
-    let s = v
-        .iter()
-        .zip(&w)
-        .fold(field.zero(), |acc, (x, y)| field.add(&acc, &field.mul(x, y)));
-    let ms_inv = mul_matrix(&field, &s).inverse().map_err(|_| {
-        Error::Verification(format!("w v = 0 for the simple factor {factor}"))
-    })?;
+    let s = v.iter().zip(&w).fold(field.zero(), |acc, (x, y)| {
+        field.add(&acc, &field.mul(x, y))
+    });
+    let ms_inv = mul_matrix(&field, &s)
+        .inverse()
+        .map_err(|_| Error::Verification(format!("w v = 0 for the simple factor {factor}")))?;
     let wm = super::chains::mul(&ms_inv, &coeff_cols(&w, d));
     let w: Vec<NfElem> = (0..n).map(|j| elem_of_col(&wm, j)).collect();
     Ok(PrimaryComponent {

@@ -162,8 +162,7 @@ fn add_traces(c: &Compact, sum: &mut [Matrix<Q>]) {
                             binom = binom * Rational::from_integer(k.into())
                                 / Rational::from_integer((k - r).into());
                         }
-                        let tr: Rational =
-                            x.0.iter().zip(&sums[k - r..]).map(|(a, b)| a * b).sum();
+                        let tr: Rational = x.0.iter().zip(&sums[k - r..]).map(|(a, b)| a * b).sum();
                         let cur = mk.get(i, j) + &(&binom * &tr);
                         mk.set(i, j, cur);
                     }

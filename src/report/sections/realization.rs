@@ -4,7 +4,9 @@
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
 use crate::field::{Field, NfElem};
-use crate::realization::{JordanMinimal, RealModalBlock, MinimalRealization, ModalTable, StandardForm};
+use crate::realization::{
+    JordanMinimal, MinimalRealization, ModalTable, RealModalBlock, StandardForm,
+};
 use crate::report::{MatrixOut, Report, Value, str_list};
 
 /// Writes a compact pair block at offset `off`: state `2i` is $\mathrm{Re}\, z_i$, state
@@ -23,7 +25,11 @@ fn compact_outputs(
         let (ar, ai) = f.approx(x);
         let v = scale as f64 * if im { ai } else { ar } * if neg { -1.0 } else { 1.0 };
         let sign = if neg { "-" } else { "" };
-        let pre = if scale == 1 { String::new() } else { format!("{scale}*") };
+        let pre = if scale == 1 {
+            String::new()
+        } else {
+            format!("{scale}*")
+        };
         let text = if let Some(q) = f.to_rational(x) {
             if im {
                 "0".to_string()
@@ -52,7 +58,12 @@ fn compact_outputs(
             put(a, off + 2 * i, off + 2 * j, part(x, false, 1, false));
             put(a, off + 2 * i, off + 2 * j + 1, part(x, true, 1, false));
             put(a, off + 2 * i + 1, off + 2 * j, part(x, true, 1, true));
-            put(a, off + 2 * i + 1, off + 2 * j + 1, part(x, false, 1, false));
+            put(
+                a,
+                off + 2 * i + 1,
+                off + 2 * j + 1,
+                part(x, false, 1, false),
+            );
         }
         for col in 0..blk.b.ncols() {
             let x = blk.b.get(i, col);
