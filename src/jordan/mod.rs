@@ -42,6 +42,7 @@ pub mod real;
 pub(crate) mod realfield;
 pub mod response;
 mod roots;
+mod simple;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use primary::PrimaryComponent;
@@ -149,7 +150,11 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
     for (p, e) in roots::factor_q(&chi)? {
         let rts = roots::certified_roots(&p)?;
         let approx = rts.iter().map(|z| z.1).collect();
-        components.push(PrimaryComponent::compute(a, &p, e, approx)?);
+        components.push(if e == 1 && p.deg() >= 2 {
+            simple::simple_component(a, &chi, &p, approx)?
+        } else {
+            PrimaryComponent::compute(a, &p, e, approx)?
+        });
         numbers.push(rts);
     }
     let mut eigenvalues = vec![];
