@@ -61,6 +61,7 @@ pub mod poly;
 pub mod qkernels;
 pub mod realization;
 pub mod report;
+pub mod rng;
 pub mod structure;
 pub mod system;
 

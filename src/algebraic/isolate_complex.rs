@@ -21,9 +21,9 @@
 //! | [`isolate_upper`] | isolating boxes of the roots with positive imaginary part |
 //! | [`refine_box`] | a sub-box of an isolating box of at most a given width |
 
-use super::zp;
 use crate::error::{Error, Result};
 use crate::field::Rational;
+use crate::poly::zslice as zp;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 

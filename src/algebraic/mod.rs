@@ -26,7 +26,7 @@ pub mod isolate_real;
 pub mod nf_factor;
 pub mod number;
 pub mod number_field;
-pub(crate) mod zp;
+pub(crate) mod zp; // re-export shim, see its docs
 
 pub use nf_factor::factor_over_number_field;
 pub use number::AlgebraicNumber;
@@ -67,12 +67,10 @@ pub fn factor_q(p: &Poly<Q>) -> Result<FactorizationQ> {
     if p.deg() == 0 {
         return Ok((lc, vec![]));
     }
-    let z = ZPoly::new(zp::from_poly_q(p));
+    let z = ZPoly::from_poly_q(p);
     let (_, facs) = factor_zpoly(&z)?;
-    let mut out: Vec<(Poly<Q>, usize)> = facs
-        .into_iter()
-        .map(|(f, e)| (zp::to_monic_q(f.coeffs()), e))
-        .collect();
+    let mut out: Vec<(Poly<Q>, usize)> =
+        facs.into_iter().map(|(f, e)| (f.to_monic_q(), e)).collect();
     out.sort_by(|a, b| {
         a.0.deg().cmp(&b.0.deg()).then_with(|| {
             let ca: Vec<&Rational> = a.0.coeffs().iter().rev().collect();
@@ -85,7 +83,7 @@ pub fn factor_q(p: &Poly<Q>) -> Result<FactorizationQ> {
 
 /// True when `p` has degree >= 1 and is irreducible over $\mathbb{Q}$.
 pub fn is_irreducible_q(p: &Poly<Q>) -> bool {
-    p.deg() >= 1 && crate::poly::factor::is_irreducible(&ZPoly::new(zp::from_poly_q(p)))
+    p.deg() >= 1 && crate::poly::factor::is_irreducible(&ZPoly::from_poly_q(p))
 }
 
 fn binomials(n: usize) -> Vec<Vec<Rational>> {

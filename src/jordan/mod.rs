@@ -86,17 +86,6 @@ pub struct Eigenvalue {
     pub blocks: Vec<usize>,
 }
 
-impl Eigenvalue {
-    /// The certified algebraic number (minimal polynomial and isolating region), as
-    /// [`Eigenvalue::number`].
-    ///
-    /// # Errors
-    /// None at present (kept for callers written against the earlier on-demand isolation).
-    pub fn algebraic_number(&self) -> Result<AlgebraicNumber> {
-        Ok(self.number.clone())
-    }
-}
-
 /// The columns of one eigenvalue, exact in one field.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RootColumns {
