@@ -37,6 +37,7 @@ use crate::field::{Q, Rational};
 use crate::poly::factor::factor_zpoly;
 use crate::poly::zpoly::ZPoly;
 use crate::poly::{Poly, monic_from_power_sums, newton_power_sums};
+use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
 /// Leading coefficient and monic irreducible factors with multiplicities.
@@ -101,27 +102,34 @@ fn binomials(n: usize) -> Vec<Vec<Rational>> {
 
 /// $\prod_{i,j} (x - (r_i + r_j)/2)$ over the roots $r_i$ of `p` (degree $n^2$).
 pub fn composed_half_sum(p: &Poly<Q>) -> Poly<Q> {
-    let p = p.monic();
-    let n = p.deg();
-    let big = n * n;
-    let s = newton_power_sums(&p, big);
-    let c = binomials(big);
-    let mut t = vec![Rational::from_integer(big.into())];
-    let mut h = Rational::one();
-    for k in 1..=big {
-        h /= Rational::from_integer(2.into());
-        let mut v = Rational::zero();
-        for m in 0..=k {
-            v += &c[k][m] * &s[m] * &s[k - m];
-        }
-        t.push(v * &h);
-    }
-    monic_from_power_sums(&t, big)
+    pair_power_sum_poly(p, false, |k| {
+        Rational::new(BigInt::one(), BigInt::one() << k)
+    })
 }
 
 /// $\prod_{i,j} (y - (r_i - r_j)/(2i))$ over the roots of `p`: real coefficients, the
 /// imaginary parts of the roots are among its real roots.
 pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
+    // (2i)^-k = (-1)^(k/2) / 2^k for even k; odd power sums of differences vanish
+    pair_power_sum_poly(p, true, |k| {
+        if k % 2 == 1 {
+            Rational::zero()
+        } else {
+            let sign = if (k / 2) % 2 == 1 {
+                -BigInt::one()
+            } else {
+                BigInt::one()
+            };
+            Rational::new(sign, BigInt::one() << k)
+        }
+    })
+}
+
+/// The monic polynomial of degree $n^2$ whose power sums are
+/// $t_k = w_k \sum_{i,j} (r_i \pm r_j)^k = w_k \sum_m \binom{k}{m} (\pm 1)^{k-m} s_m s_{k-m}$
+/// ($s_m$ the power sums of the roots of `p`, `-` when `diff`, $w_k$ = `scale(k)`): with
+/// $w_k = w^k$ its roots are $w (r_i \pm r_j)$.
+fn pair_power_sum_poly(p: &Poly<Q>, diff: bool, scale: impl Fn(usize) -> Rational) -> Poly<Q> {
     let p = p.monic();
     let n = p.deg();
     let big = n * n;
@@ -129,25 +137,21 @@ pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
     let c = binomials(big);
     let mut t = vec![Rational::from_integer(big.into())];
     for k in 1..=big {
-        if k % 2 == 1 {
-            t.push(Rational::zero());
+        let w = scale(k);
+        if w.is_zero() {
+            t.push(w);
             continue;
         }
         let mut v = Rational::zero();
         for m in 0..=k {
             let term = &c[k][m] * &s[m] * &s[k - m];
-            if (k - m) % 2 == 1 {
+            if diff && (k - m) % 2 == 1 {
                 v -= term
             } else {
                 v += term
             }
         }
-        // divide by (2i)^k = 2^k (-1)^(k/2)
-        let mut d = Rational::from_integer(num_bigint::BigInt::one() << k);
-        if (k / 2) % 2 == 1 {
-            d = -d;
-        }
-        t.push(v / d);
+        t.push(v * w);
     }
     monic_from_power_sums(&t, big)
 }

@@ -55,6 +55,7 @@ use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use primary::{named_field, rational_field};
+#[cfg(feature = "cli")]
 pub(crate) use roots::fmt_approx;
 use roots::{quadratic_roots, radical_text};
 
