@@ -12,22 +12,9 @@ use num_traits::One;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-/// Swinnerton-Dyer polynomial for the square roots of `primes` (see tests/poly_factor.rs).
-fn swinnerton_dyer(primes: &[i64]) -> ZPoly {
-    let mut f = ZPoly::x();
-    for &a in primes {
-        let a = BigInt::from(a);
-        let (mut pa, mut pb) = (ZPoly::zero(), ZPoly::zero());
-        for c in f.coeffs().iter().rev() {
-            let na = &(&pa * &ZPoly::x()) + &pb.scale(&a) + ZPoly::constant(c.clone());
-            let nb = &(&pb * &ZPoly::x()) + &pa;
-            pa = na;
-            pb = nb;
-        }
-        f = &(&pa * &pa) - &(&pb * &pb).scale(&a);
-    }
-    f
-}
+#[path = "../tests/common/polys.rs"]
+mod polys;
+use polys::swinnerton_dyer;
 
 use exactlti::rng::SplitMix64 as SplitMix;
 

@@ -170,25 +170,7 @@ fn random_irreducible(rng: &mut Rng, n: usize, bits: u32) -> ZPoly {
     }
 }
 
-/// Swinnerton-Dyer polynomial prod(x ± sqrt(a_1) ± ... ± sqrt(a_k)), built exactly by
-/// P_j(x) = P_{j-1}(x + sqrt a) P_{j-1}(x - sqrt a) = A^2 - a B^2, where
-/// P_{j-1}(x + sqrt a) = A(x) + sqrt(a) B(x) is expanded by Horner's rule.
-fn swinnerton_dyer(primes: &[i64]) -> ZPoly {
-    let mut f = ZPoly::x();
-    for &a in primes {
-        let a = BigInt::from(a);
-        let (mut pa, mut pb) = (ZPoly::zero(), ZPoly::zero());
-        for c in f.coeffs().iter().rev() {
-            // (A + sqrt(a) B)(x + sqrt(a)) + c
-            let na = &(&pa * &ZPoly::x()) + &pb.scale(&a) + ZPoly::constant(c.clone());
-            let nb = &(&pb * &ZPoly::x()) + &pa;
-            pa = na;
-            pb = nb;
-        }
-        f = &(&pa * &pa) - &(&pb * &pb).scale(&a);
-    }
-    f
-}
+use crate::common::polys::swinnerton_dyer;
 
 // ---------------------------------------------------------------- shared invariants ----
 

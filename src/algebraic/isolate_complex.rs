@@ -600,9 +600,7 @@ pub fn refine_box(p: &[BigInt], b: &CBox, pure_imag: bool, width: &Rational) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    fn z(cs: &[i64]) -> Vec<BigInt> {
-        cs.iter().map(|&c| BigInt::from(c)).collect()
-    }
+    use crate::poly::zslice::from_i64s as z;
     #[test]
     fn boxes_of_quartic() {
         // x^4 + 4x^2 + 1: four purely imaginary roots

@@ -256,9 +256,7 @@ pub fn refine_real(p: &[BigInt], r: &RealRoot, width: &Rational) -> RealRoot {
 #[cfg(test)]
 mod tests {
     use super::*;
-    fn z(cs: &[i64]) -> Vec<BigInt> {
-        cs.iter().map(|&c| BigInt::from(c)).collect()
-    }
+    use crate::poly::zslice::from_i64s as z;
     #[test]
     fn isolates() {
         // (x^2 - 2)(x - 1/2)(x + 3) x -> times 2

@@ -8,6 +8,7 @@
 //!
 //! | function | computes |
 //! |---|---|
+//! | [`from_i64s`] | the coefficient vector of small integers |
 //! | [`trim`] | the slice without trailing zeros |
 //! | [`primitive`] | $p / \gcd(p_i)$, sign kept |
 //! | [`mul`] | $a b$ (schoolbook) |
@@ -24,6 +25,11 @@ use crate::field::{Q, Rational};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
+
+/// The coefficient vector of small integers, as given (trailing zeros kept).
+pub fn from_i64s(cs: &[i64]) -> Vec<BigInt> {
+    cs.iter().map(|&c| BigInt::from(c)).collect()
+}
 
 /// Without trailing zeros.
 pub fn trim(p: &[BigInt]) -> &[BigInt] {
@@ -149,9 +155,7 @@ impl ZPoly {
 mod tests {
     use super::*;
 
-    fn z(cs: &[i64]) -> Vec<BigInt> {
-        cs.iter().map(|&c| BigInt::from(c)).collect()
-    }
+    use super::from_i64s as z;
 
     #[test]
     fn slice_kernels_agree_with_zpoly() {
