@@ -81,6 +81,7 @@ pub mod float;
 pub mod io;
 pub mod jordan;
 pub mod matrix;
+pub mod pencil;
 pub mod poly;
 pub mod qkernels;
 pub mod realization;

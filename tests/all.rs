@@ -13,10 +13,16 @@ mod algebraic;
 mod bicycle;
 #[path = "cli.rs"]
 mod cli;
+#[path = "cli_pencil.rs"]
+mod cli_pencil;
+#[path = "ctrb_structure.rs"]
+mod ctrb_structure;
 #[path = "field_axioms.rs"]
 mod field_axioms;
 #[path = "float.rs"]
 mod float;
+#[path = "from_transfer.rs"]
+mod from_transfer;
 #[path = "io.rs"]
 mod io;
 #[path = "jordan.rs"]
@@ -29,6 +35,10 @@ mod matrix_generic;
 mod matrix_modular;
 #[path = "mechanical.rs"]
 mod mechanical;
+#[path = "pencil.rs"]
+mod pencil;
+#[path = "pencil_descriptor.rs"]
+mod pencil_descriptor;
 #[path = "poly_factor.rs"]
 mod poly_factor;
 #[path = "realization.rs"]

@@ -18,7 +18,14 @@ use std::path::Path;
 
 /// Dispatches a command.
 pub fn execute(cmd: &Command) -> Result<Outcome, Failure> {
+    if let Some(path) = super::pencil_cmds::handles(cmd) {
+        return super::pencil_cmds::execute(cmd, path);
+    }
     match cmd {
+        Command::Pencil { file }
+        | Command::Ctrb { file }
+        | Command::Obsv { file }
+        | Command::Tf { file } => super::pencil_cmds::execute(cmd, file),
         Command::Poly { op } => poly(op).map(Outcome::plain),
         Command::Analyze { file } => {
             let l = load_or_builtin(file.as_deref())?;
@@ -115,7 +122,12 @@ impl SystemVisitor for FileCommand<'_> {
             Command::Linalg { op, .. } => linalg(*op, &t.a_raw, path).map(Outcome::plain),
             Command::Minreal { method, .. } => minreal(f, t, *method, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
-            Command::Poly { .. } | Command::Analyze { .. } => {
+            Command::Poly { .. }
+            | Command::Analyze { .. }
+            | Command::Pencil { .. }
+            | Command::Ctrb { .. }
+            | Command::Obsv { .. }
+            | Command::Tf { .. } => {
                 unreachable!("dispatched in execute")
             }
         }

@@ -9,6 +9,7 @@
 mod analyze;
 mod commands;
 mod float_cmds;
+mod pencil_cmds;
 
 use crate::error::Error;
 use crate::report::Report;
@@ -93,6 +94,9 @@ pub enum Command {
         file: PathBuf,
         #[arg(long, value_enum, default_value_t = MethodArg::Kalman)]
         method: MethodArg,
+        /// Minimal DESCRIPTOR realization (improper systems accepted), with `irreducible_order`.
+        #[arg(long)]
+        descriptor: bool,
     },
     /// Descriptor system to standard state space.
     Standard { file: PathBuf },
@@ -100,8 +104,16 @@ pub enum Command {
     Scb { file: PathBuf },
     /// Mechanical normal form (second-order form of a first-order system).
     Mnf { file: PathBuf },
-    /// Invariant zeros.
+    /// Invariant zeros (with `E`: finite zeros and infinite zero orders).
     Zeros { file: PathBuf },
+    /// Kronecker structure of the pencil A - sE.
+    Pencil { file: PathBuf },
+    /// Controllability structure of (A, B) (with `E`: finite and infinite).
+    Ctrb { file: PathBuf },
+    /// Observability structure of (C, A) (with `E`: finite and infinite).
+    Obsv { file: PathBuf },
+    /// Transfer matrix in lowest terms, McMillan degree, poles and transmission zeros.
+    Tf { file: PathBuf },
     /// Modal table: eigenvalue, frequency, damping ratio, time constant, period.
     Modes { file: PathBuf },
     /// Frequency response.

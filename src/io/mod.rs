@@ -28,10 +28,12 @@
 
 pub mod expr;
 pub mod load;
+pub mod load_descriptor;
 pub mod matlab;
 pub mod qmat;
 mod raw;
 pub mod system_file;
+pub mod transfer_expr;
 
 pub use expr::{ExprError, eval_expr};
 pub use load::{

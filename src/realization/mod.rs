@@ -21,7 +21,10 @@
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
 mod controllability;
+mod ctrb_structure;
 mod descriptor;
+mod descriptor_minimal;
+mod from_transfer;
 mod gramian;
 mod ho_kalman;
 mod jordan_method;
@@ -30,12 +33,19 @@ mod method;
 mod minimal;
 mod modal;
 mod rosenbrock;
+mod weierstrass;
 
 pub use controllability::{
     controllability_matrix, hankel_matrix, is_controllable, is_observable, mcmillan_degree,
     observability_matrix, pbh_controllable, pbh_observable, row_compression,
 };
+pub use ctrb_structure::{
+    ControllabilityStructure, DescriptorControllability, controllability_structure,
+    descriptor_controllability, observability_structure,
+};
 pub use descriptor::{StandardForm, descriptor_to_standard};
+pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
+pub use from_transfer::{TransferRealization, realize_transfer};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational};
@@ -44,3 +54,6 @@ pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
 pub use modal::{ModalTable, Mode, modal_table};
 pub use rosenbrock::minimal_rosenbrock;
+pub use weierstrass::{
+    WeierstrassSplit, descriptor_transfer_matrix, eval_transfer, same_transfer, weierstrass_split,
+};

@@ -7,6 +7,7 @@
 //! | [`zeros`] | invariant zeros from the Rosenbrock system matrix, independent of the SCB |
 //! | [`mechanical`] | mechanical normal form: a first-order system back to $\ddot q + D\dot q + Kq = Wu$ |
 
+pub mod descriptor_zeros;
 pub mod mechanical;
 pub mod scb;
 pub mod zeros;

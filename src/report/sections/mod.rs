@@ -8,10 +8,15 @@
 
 mod algebraic;
 mod jordan;
+mod pencil;
 mod realization;
 mod structure;
 
 pub use algebraic::{factor_report, roots_report};
+pub use pencil::{
+    ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, kronecker_report,
+    minreal_descriptor_report, pencil_report, tf_report,
+};
 
 use crate::field::Field;
 use crate::float::{Tol, jordan_guess, to_dmatrix};

@@ -1,0 +1,149 @@
+//! The descriptor-level commands: `pencil`, `ctrb`, `obsv`, `tf`, `minreal --descriptor`,
+//! and `zeros` of a file with `E` (contract, second wave). Load with
+//! [`crate::io::load_descriptor::load_descriptor_path`], compute, report.
+
+use super::commands::with_path;
+use super::{Command, Failure, Outcome};
+use crate::field::{Field, Q};
+use crate::io::load_descriptor::{DescriptorVisitor, LoadedDescriptor, load_descriptor_path};
+use crate::pencil::{kronecker_structure, pencil_structure};
+use crate::realization::{
+    controllability_structure, descriptor_controllability, descriptor_transfer_matrix,
+    minimal_descriptor, observability_structure, realize_transfer,
+};
+use crate::report::sections;
+use crate::structure::descriptor_zeros::descriptor_zeros;
+use crate::system::Descriptor;
+use std::any::Any;
+use std::path::Path;
+
+/// The file of a command that goes through this module (`zeros` only for files with `E`
+/// or `G`, `minreal` only with `--descriptor`).
+pub fn handles(cmd: &Command) -> Option<&Path> {
+    match cmd {
+        Command::Pencil { file }
+        | Command::Ctrb { file }
+        | Command::Obsv { file }
+        | Command::Tf { file } => Some(file),
+        Command::Minreal {
+            file, descriptor, ..
+        } => descriptor.then_some(file.as_path()),
+        Command::Zeros { file } => {
+            (file_has_key(file, "E") || file_has_key(file, "G")).then_some(file.as_path())
+        }
+        _ => None,
+    }
+}
+
+/// A cheap look at the top-level keys (the full reader validates later).
+fn file_has_key(path: &Path, key: &str) -> bool {
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return false;
+    };
+    if path.extension().is_some_and(|x| x == "toml") {
+        toml::from_str::<toml::Value>(&text).is_ok_and(|v| v.get(key).is_some())
+    } else {
+        serde_json::from_str::<serde_json::Value>(&text).is_ok_and(|v| v.get(key).is_some())
+    }
+}
+
+/// Runs one of the commands of [`handles`].
+pub fn execute(cmd: &Command, path: &Path) -> Result<Outcome, Failure> {
+    let l = load_descriptor_path(path)?;
+    if let Some((a, e)) = &l.pencil {
+        if !matches!(cmd, Command::Pencil { .. }) {
+            return Err(Failure {
+                code: 2,
+                message: format!(
+                    "{}: key A: must be square (a rectangular A is a pencil: use `exactlti pencil`)",
+                    path.display()
+                ),
+            });
+        }
+        let ps = pencil_structure(a, e).map_err(|err| with_path(path, err))?;
+        return Ok(Outcome::new(sections::pencil_report(&ps), ps.verified));
+    }
+    l.run(Run { cmd, path })
+}
+
+struct Run<'a> {
+    cmd: &'a Command,
+    path: &'a Path,
+}
+
+impl DescriptorVisitor for Run<'_> {
+    type Output = Result<Outcome, Failure>;
+    fn visit<K: Field + 'static>(self, l: &LoadedDescriptor, s: &Descriptor<K>) -> Self::Output {
+        let e = |err| with_path(self.path, err);
+        match self.cmd {
+            Command::Pencil { .. } => {
+                if let Some(sq) = (s as &dyn Any).downcast_ref::<Descriptor<Q>>() {
+                    let ps = pencil_structure(&sq.a, &sq.e).map_err(e)?;
+                    Ok(Outcome::new(sections::pencil_report(&ps), ps.verified))
+                } else {
+                    let k = kronecker_structure(&s.a, &s.e).map_err(e)?;
+                    Ok(Outcome::new(sections::kronecker_report(&k), k.verified))
+                }
+            }
+            Command::Ctrb { .. } | Command::Obsv { .. } => {
+                let dual = matches!(self.cmd, Command::Obsv { .. });
+                if l.has_e {
+                    let d = descriptor_controllability(s, dual).map_err(e)?;
+                    let r = sections::descriptor_ctrb_report(&d, dual).map_err(e)?;
+                    Ok(Outcome::new(r, d.verified()))
+                } else {
+                    let c = if dual {
+                        observability_structure(&s.a, &s.c)
+                    } else {
+                        controllability_structure(&s.a, &s.b)
+                    }
+                    .map_err(e)?;
+                    Ok(Outcome::new(
+                        sections::ctrb_report(&c, dual).map_err(e)?,
+                        c.verified,
+                    ))
+                }
+            }
+            Command::Minreal { .. } => {
+                let m = minimal_descriptor(s).map_err(e)?;
+                Ok(Outcome::new(
+                    sections::minreal_descriptor_report(&m),
+                    m.verified,
+                ))
+            }
+            Command::Zeros { .. } => {
+                let z = descriptor_zeros(s).map_err(e)?;
+                let v = z.pencil.verified;
+                Ok(Outcome::new(
+                    sections::descriptor_zeros_report(&z).map_err(e)?,
+                    v,
+                ))
+            }
+            Command::Tf { .. } => {
+                let Some(sq) = (s as &dyn Any).downcast_ref::<Descriptor<Q>>() else {
+                    return Err(Failure {
+                        code: 2,
+                        message: format!(
+                            "{}: tf: only rational systems are supported",
+                            self.path.display()
+                        ),
+                    });
+                };
+                let (g, r) = match &l.transfer {
+                    Some((g, r)) => (g.clone(), r.clone()),
+                    None => {
+                        let g = descriptor_transfer_matrix(sq).map_err(e)?;
+                        let r = realize_transfer(&g).map_err(e)?;
+                        (g, r)
+                    }
+                };
+                let rep = sections::tf_report(&g, &r).map_err(e)?;
+                Ok(Outcome::new(rep, r.verified))
+            }
+            _ => Err(Failure {
+                code: 1,
+                message: "internal: command not handled by the descriptor commands".into(),
+            }),
+        }
+    }
+}

@@ -1,0 +1,294 @@
+//! Loading for the descriptor-level commands (`pencil`, `ctrb`, `obsv`, `tf`,
+//! `minreal --descriptor`, `zeros` with `E`): a system file as a descriptor system, improper
+//! or not (the standard-form typing of [`super::load`] refuses improper ones), or a transfer
+//! matrix given under the key `G` (rational functions in `s` over $\mathbb{Q}$, parameters
+//! allowed), realized exactly and minimally.
+//!
+//! | entry point | does |
+//! |---|---|
+//! | [`load_descriptor_path`] | a file → [`LoadedDescriptor`] |
+//! | [`LoadedDescriptor::run`] | calls a [`DescriptorVisitor`] over the concrete field |
+
+use super::{FromScalars, Ground, InputError, SystemFile, read_system_file};
+use crate::field::{Field, Q, QuadraticField, Rational};
+use crate::io::transfer_expr::parse_rational_function;
+use crate::matrix::Matrix;
+use crate::realization::{TransferRealization, realize_transfer};
+use crate::system::Descriptor;
+use crate::system::transfer::TransferMatrix;
+use std::path::Path;
+
+/// A descriptor system over one of the ground fields.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub enum DescriptorAny {
+    Rational(Descriptor<Q>),
+    Quadratic(Descriptor<QuadraticField>),
+}
+
+/// A loaded descriptor system; `transfer` when the file gave `G`.
+#[derive(Clone, Debug)]
+pub struct LoadedDescriptor {
+    pub path: String,
+    pub system: DescriptorAny,
+    /// Whether the file gave `E` (a descriptor system) rather than $E = I$.
+    pub has_e: bool,
+    /// The transfer matrix and its minimal realization, for a `G` file.
+    pub transfer: Option<(TransferMatrix<Q>, TransferRealization<Q>)>,
+    /// A rectangular pencil `(A, E)` (a file with only `A`, `E` and a non-square `A`, over
+    /// $\mathbb{Q}$): only `pencil` accepts it; `system` is then empty.
+    pub pencil: Option<(Matrix<Q>, Matrix<Q>)>,
+}
+
+/// Work on a loaded descriptor system, generic over the field.
+pub trait DescriptorVisitor {
+    type Output;
+    fn visit<K: Field + 'static>(
+        self,
+        loaded: &LoadedDescriptor,
+        sys: &Descriptor<K>,
+    ) -> Self::Output;
+}
+
+impl LoadedDescriptor {
+    pub fn run<V: DescriptorVisitor>(&self, v: V) -> V::Output {
+        match &self.system {
+            DescriptorAny::Rational(s) => v.visit(self, s),
+            DescriptorAny::Quadratic(s) => v.visit(self, s),
+        }
+    }
+}
+
+fn descriptor_of<K: FromScalars>(f: &SystemFile, k: &K) -> Result<Descriptor<K>, InputError> {
+    let fail = |e: crate::Error| InputError::file(&f.path, e.to_string());
+    let get = |m: &Option<super::MatrixEntries>| m.as_ref().map(|m| k.matrix_from_entries(m));
+    if let (Some(a), Some(b), Some(c), Some(d)) = (get(&f.a), get(&f.b), get(&f.c), get(&f.d)) {
+        let e = get(&f.e).unwrap_or_else(|| Matrix::identity(k.clone(), a.nrows()));
+        return Descriptor::new(e, a, b, c, d).map_err(fail);
+    }
+    let (m, l, kk, ff) = (get(&f.m), get(&f.l), get(&f.k), get(&f.f));
+    let (Some(m), Some(l), Some(kk), Some(ff)) = (m, l, kk, ff) else {
+        return Err(InputError::file(
+            &f.path,
+            "the file gives neither A nor M, L, K, F",
+        ));
+    };
+    let ss = crate::system::StateSpace::from_second_order(
+        &m,
+        &l,
+        &kk,
+        &ff,
+        get(&f.c).as_ref(),
+        get(&f.d).as_ref(),
+    )
+    .map_err(fail)?;
+    let n = ss.nstates();
+    Descriptor::new(Matrix::identity(k.clone(), n), ss.a, ss.b, ss.c, ss.d).map_err(fail)
+}
+
+/// Reads a system file or a `G` file as a descriptor system.
+///
+/// # Errors
+/// An unreadable or invalid file (one line naming file, key, row and column), a `G` entry
+/// that does not parse, a transfer matrix that cannot be realized.
+pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError::file(&name, format!("cannot read: {e}")))?;
+    let is_toml = path.extension().is_some_and(|x| x == "toml");
+    let json: Option<serde_json::Value> = if is_toml {
+        toml::from_str::<toml::Value>(&text)
+            .ok()
+            .and_then(|v| serde_json::to_value(v).ok())
+    } else {
+        serde_json::from_str(&text).ok()
+    };
+    if let Some(g) = json.as_ref().and_then(|v| v.get("G")) {
+        return load_g(&name, g, json.as_ref().and_then(|v| v.get("parameters")));
+    }
+    if let Some(v) = json.as_ref()
+        && let Some(l) = rectangular_pencil(&name, v)?
+    {
+        return Ok(l);
+    }
+    let f = read_system_file(path)?;
+    let has_e = f.e.is_some();
+    let system = match &f.ground {
+        Ground::Rational => DescriptorAny::Rational(descriptor_of(&f, &Q)?),
+        Ground::Quadratic(k) => DescriptorAny::Quadratic(descriptor_of(&f, k)?),
+    };
+    Ok(LoadedDescriptor {
+        path: name,
+        system,
+        has_e,
+        transfer: None,
+        pencil: None,
+    })
+}
+
+/// Parameters of a `G` or pencil file, evaluated in order as rational constants.
+fn eval_params(
+    name: &str,
+    params: Option<&serde_json::Value>,
+) -> Result<Vec<(String, Rational)>, InputError> {
+    let mut values: Vec<(String, Rational)> = Vec::new();
+    if let Some(serde_json::Value::Object(ps)) = params {
+        for (k, v) in ps {
+            let text = scalar_text(v).ok_or_else(|| {
+                InputError::key(
+                    name,
+                    "parameters",
+                    format!("{k}: expected a number or a string"),
+                )
+            })?;
+            let f = parse_rational_function(&text, &values)
+                .map_err(|e| InputError::key(name, "parameters", format!("{k}: {e}")))?;
+            if f.num.deg() > 0 || f.den.deg() > 0 {
+                return Err(InputError::key(
+                    name,
+                    "parameters",
+                    format!("{k}: must be a constant"),
+                ));
+            }
+            values.push((k.clone(), f.num.coeff(0) / f.den.coeff(0)));
+        }
+    }
+    Ok(values)
+}
+
+/// A rational matrix from a JSON key (constant entries).
+fn rational_matrix(
+    name: &str,
+    key: &str,
+    v: &serde_json::Value,
+    params: &[(String, Rational)],
+) -> Result<Matrix<Q>, InputError> {
+    let rows = v
+        .as_array()
+        .ok_or_else(|| InputError::key(name, key, "expected a list of rows"))?;
+    let mut out = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let row = row
+            .as_array()
+            .ok_or_else(|| InputError::key(name, key, format!("row {} is not a list", i + 1)))?;
+        let mut r = Vec::new();
+        for (j, x) in row.iter().enumerate() {
+            let bad = |m: String| InputError::entry(name, key, i + 1, j + 1, m);
+            let text = scalar_text(x).ok_or_else(|| bad("expected a number or a string".into()))?;
+            let f = parse_rational_function(&text, params).map_err(|e| bad(e.to_string()))?;
+            if f.num.deg() > 0 || f.den.deg() > 0 {
+                return Err(bad("must be a constant (s is not allowed here)".into()));
+            }
+            r.push(f.num.coeff(0) / f.den.coeff(0));
+        }
+        out.push(r);
+    }
+    Matrix::from_rows(Q, out).map_err(|e| InputError::key(name, key, e.to_string()))
+}
+
+/// A file with only `A` (non-square) and optionally `E`: a rectangular pencil.
+fn rectangular_pencil(
+    name: &str,
+    v: &serde_json::Value,
+) -> Result<Option<LoadedDescriptor>, InputError> {
+    let Some(obj) = v.as_object() else {
+        return Ok(None);
+    };
+    let Some(a) = obj.get("A") else {
+        return Ok(None);
+    };
+    let square = a.as_array().is_some_and(|rows| {
+        rows.iter()
+            .all(|r| r.as_array().is_some_and(|r| r.len() == rows.len()))
+    });
+    if square
+        || ["B", "C", "D", "M", "L", "K", "F"]
+            .iter()
+            .any(|k| obj.contains_key(*k))
+    {
+        return Ok(None);
+    }
+    let params = eval_params(name, obj.get("parameters"))?;
+    let a = rational_matrix(name, "A", a, &params)?;
+    let e = match obj.get("E") {
+        Some(e) => rational_matrix(name, "E", e, &params)?,
+        None => {
+            return Err(InputError::key(
+                name,
+                "E",
+                "a non-square A needs E of the same shape",
+            ));
+        }
+    };
+    if e.shape() != a.shape() {
+        return Err(InputError::key(
+            name,
+            "E",
+            format!("must be {}x{} like A", a.nrows(), a.ncols()),
+        ));
+    }
+    let z = |r, c| Matrix::zeros(Q, r, c);
+    Ok(Some(LoadedDescriptor {
+        path: name.to_string(),
+        system: DescriptorAny::Rational(
+            Descriptor::new(z(0, 0), z(0, 0), z(0, 0), z(0, 0), z(0, 0)).expect("empty system"),
+        ),
+        has_e: true,
+        transfer: None,
+        pencil: Some((a, e)),
+    }))
+}
+
+fn scalar_text(v: &serde_json::Value) -> Option<String> {
+    match v {
+        serde_json::Value::String(s) => Some(s.clone()),
+        serde_json::Value::Number(n) => Some(n.to_string()),
+        _ => None,
+    }
+}
+
+fn load_g(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+) -> Result<LoadedDescriptor, InputError> {
+    let values = eval_params(name, params)?;
+    let rows = g
+        .as_array()
+        .ok_or_else(|| InputError::key(name, "G", "expected a list of rows"))?;
+    let mut entries = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let row = row
+            .as_array()
+            .ok_or_else(|| InputError::key(name, "G", format!("row {} is not a list", i + 1)))?;
+        let mut out = Vec::new();
+        for (j, x) in row.iter().enumerate() {
+            let text = scalar_text(x).ok_or_else(|| {
+                InputError::entry(name, "G", i + 1, j + 1, "expected a number or a string")
+            })?;
+            out.push(
+                parse_rational_function(&text, &values)
+                    .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
+            );
+        }
+        entries.push(out);
+    }
+    let ncols = entries.first().map_or(0, |r| r.len());
+    if entries.is_empty() || ncols == 0 || entries.iter().any(|r| r.len() != ncols) {
+        return Err(InputError::key(
+            name,
+            "G",
+            "rows must be non-empty and of equal length",
+        ));
+    }
+    let tm = TransferMatrix { entries };
+    let r = realize_transfer(&tm).map_err(|e| InputError::key(name, "G", e.to_string()))?;
+    let has_e = r.minimal.infinite_order > 0;
+    Ok(LoadedDescriptor {
+        path: name.to_string(),
+        system: DescriptorAny::Rational(r.minimal.system.clone()),
+        has_e,
+        transfer: Some((tm, r)),
+        pencil: None,
+    })
+}

@@ -1,0 +1,159 @@
+//! Weierstrass split of a regular descriptor system into its finite and infinite parts.
+//!
+//! As in [`super::descriptor_to_standard`]: with $\det(\lambda_0E - A) \ne 0$,
+//! $M = (\lambda_0E - A)^{-1}$, $\hat E = ME$, the Fitting decomposition of $\hat E$,
+//! $x = V_1z_1 + V_2z_2$, gives $\dot z_1 = A_fz_1 + B_fu$ and, with $N$ nilpotent,
+//! $(I + sN)z_2 = B_\infty u$, so
+//! $$G(s) = C_f(sI - A_f)^{-1}B_f + D + \sum_{k \ge 0} (-s)^k C_\infty N^k B_\infty .$$
+//! Here the split is returned whole (improper systems included); the polynomial part is
+//! $P(s) = \sum_k P_k s^k$ with $P_0 = D + C_\infty B_\infty$, $P_k = (-1)^kC_\infty N^kB_\infty$.
+
+use crate::error::{Error, Result};
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::system::{Descriptor, StateSpace};
+
+/// The finite part (a standard system without feedthrough) and the infinite part
+/// $(N, B_\infty, C_\infty)$ of a regular descriptor system.
+#[derive(Clone, Debug)]
+pub struct WeierstrassSplit<K: Field> {
+    /// $(A_f, B_f, C_f, 0)$.
+    pub finite: StateSpace<K>,
+    /// Nilpotent $N$ ($n_\infty \times n_\infty$).
+    pub n: Matrix<K>,
+    pub b_inf: Matrix<K>,
+    pub c_inf: Matrix<K>,
+    /// The feedthrough $D$ of the descriptor system.
+    pub d: Matrix<K>,
+}
+
+impl<K: Field> WeierstrassSplit<K> {
+    /// Coefficients $P_0, P_1, \dots, P_q$ of the polynomial part ($P_q \ne 0$ unless $q = 0$).
+    pub fn polynomial_part(&self) -> Vec<Matrix<K>> {
+        let mut out = vec![&self.d + &(&self.c_inf * &self.b_inf)];
+        let mut nb = self.b_inf.clone();
+        let mut sign = self.d.field().one();
+        for _ in 0..self.n.nrows() {
+            nb = &self.n * &nb;
+            sign = self.d.field().neg(&sign);
+            out.push((&self.c_inf * &nb).scale(&sign));
+        }
+        while out.len() > 1 && out.last().is_some_and(|p| p.is_zero()) {
+            out.pop();
+        }
+        out
+    }
+}
+
+/// Splits a regular descriptor system.
+///
+/// # Errors
+/// `Invalid` when $\det(sE - A) \equiv 0$ (singular pencil).
+pub fn weierstrass_split<K: Field>(sys: &Descriptor<K>) -> Result<WeierstrassSplit<K>> {
+    let fld = sys.a.field().clone();
+    let n = sys.nstates();
+    let mut found = None;
+    for t in 0..=n as i64 {
+        let l0 = if t % 2 == 1 { (t + 1) / 2 } else { -(t / 2) };
+        if let Ok(m) = (&sys.e.scale(&fld.from_i64(l0)) - &sys.a).inverse() {
+            found = Some((l0, m));
+            break;
+        }
+    }
+    let Some((l0, m)) = found else {
+        return Err(Error::Invalid(
+            "singular pencil: det(sE - A) is identically zero".into(),
+        ));
+    };
+    let eh = &m * &sys.e;
+    let bh = &m * &sys.b;
+    let en = eh.pow(n as u32)?;
+    let v1 = en.column_space();
+    let v2 = en.nullspace();
+    let v = v1.hstack(&v2)?;
+    let vi = v.inverse()?;
+    let et = &(&vi * &eh) * &v;
+    let bt = &vi * &bh;
+    let r = v1.ncols();
+    let e1i = et.submatrix(0, r, 0, r).inverse()?;
+    let nil = et.submatrix(r, n, r, n);
+    let l0e = fld.from_i64(l0);
+    let a_f = &Matrix::identity(fld.clone(), r).scale(&l0e) - &e1i;
+    let b_f = &e1i * &bt.submatrix(0, r, 0, sys.b.ncols());
+    let c_f = &sys.c * &v1;
+    let k2 = n - r;
+    // N z2' = (l0 N - I) z2 + B2 u  <=>  (I + s G N) z2 = G B2 u with G = (I - l0 N)^-1
+    let g = (&Matrix::identity(fld.clone(), k2) - &nil.scale(&l0e)).inverse()?;
+    Ok(WeierstrassSplit {
+        finite: StateSpace::new_strictly_proper(a_f, b_f, c_f)?,
+        n: &g * &nil,
+        b_inf: &g * &bt.submatrix(r, n, 0, sys.b.ncols()),
+        c_inf: &sys.c * &v2,
+        d: sys.d.clone(),
+    })
+}
+
+/// $G(s_0) = C(s_0E - A)^{-1}B + D$, or `None` when $s_0E - A$ is singular.
+pub fn eval_transfer<K: Field>(sys: &Descriptor<K>, s0: &K::Elem) -> Option<Matrix<K>> {
+    let p = &sys.e.scale(s0) - &sys.a;
+    let x = p.inverse().ok()?;
+    Some(&(&(&sys.c * &x) * &sys.b) + &sys.d)
+}
+
+/// Do two descriptor systems have the same transfer matrix? Exact: entries of
+/// $G_1 - G_2$ are rational functions with numerator degree below $2(n_1 + n_2) + 1$, so
+/// agreement at that many points (poles of either skipped) proves equality.
+pub fn same_transfer<K: Field>(s1: &Descriptor<K>, s2: &Descriptor<K>) -> bool {
+    if s1.d.shape() != s2.d.shape() {
+        return false;
+    }
+    let fld = s1.a.field().clone();
+    let need = 2 * (s1.nstates() + s2.nstates()) + 1;
+    let mut agree = 0;
+    let mut t: i64 = 0;
+    // at most n1 + n2 points are poles of either system
+    while agree < need && t < (need + s1.nstates() + s2.nstates() + 1) as i64 {
+        let s0 = fld.from_rational(&crate::field::Rational::new((2 * t + 1).into(), 7.into()));
+        t += 1;
+        let (Some(g1), Some(g2)) = (eval_transfer(s1, &s0), eval_transfer(s2, &s0)) else {
+            continue;
+        };
+        if g1 != g2 {
+            return false;
+        }
+        agree += 1;
+    }
+    agree >= need
+}
+
+/// The exact transfer matrix of a regular descriptor system (improper included):
+/// $C_f(sI - A_f)^{-1}B_f$ plus the polynomial part, each entry in lowest terms.
+///
+/// # Errors
+/// `Invalid` for a singular pencil.
+pub fn descriptor_transfer_matrix<K: Field>(
+    sys: &Descriptor<K>,
+) -> Result<crate::system::transfer::TransferMatrix<K>> {
+    use crate::poly::Poly;
+    use crate::system::transfer::RationalFunction;
+    let split = weierstrass_split(sys)?;
+    let fin = split.finite.transfer_matrix()?;
+    let poly = split.polynomial_part();
+    let fld = sys.a.field().clone();
+    let entries = fin
+        .entries
+        .iter()
+        .enumerate()
+        .map(|(i, row)| {
+            row.iter()
+                .enumerate()
+                .map(|(j, f)| {
+                    let cs: Vec<K::Elem> = poly.iter().map(|pk| pk.get(i, j).clone()).collect();
+                    let pp = Poly::new(fld.clone(), cs);
+                    RationalFunction::new(f.num.add(&pp.mul(&f.den)), f.den.clone())
+                })
+                .collect()
+        })
+        .collect();
+    Ok(crate::system::transfer::TransferMatrix { entries })
+}

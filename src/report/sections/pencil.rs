@@ -1,0 +1,335 @@
+//! Reports of `pencil`, `ctrb`, `obsv`, `tf`, `minreal --descriptor` and the descriptor
+//! form of `zeros` (contract, second wave). The library computes; this file only lays out
+//! the contract's keys.
+
+use crate::error::Result;
+use crate::field::{Field, Q};
+use crate::jordan::{JordanForm, jordan};
+use crate::matrix::{Matrix, to_rational_matrix};
+use crate::pencil::{KroneckerStructure, PencilStructure};
+use crate::poly::Poly;
+use crate::realization::{
+    ControllabilityStructure, DescriptorControllability, DescriptorMinimal, TransferRealization,
+};
+use crate::report::{Report, Value};
+use crate::structure::descriptor_zeros::DescriptorZeros;
+use crate::system::transfer::TransferMatrix;
+
+fn ints(v: &[usize]) -> Value {
+    Value::List(v.iter().map(|&x| Value::Int(x as i64)).collect())
+}
+
+fn approx(a: (f64, f64)) -> Value {
+    Value::List(vec![Value::Float(a.0), Value::Float(a.1)])
+}
+
+/// Eigenvalue objects (`minpoly`, `value`, `approx`, multiplicities, `blocks`) of a Jordan form.
+pub fn eigen_items(jf: &JordanForm) -> Vec<Value> {
+    jf.eigenvalues
+        .iter()
+        .map(|e| {
+            Value::Obj(
+                Report::new()
+                    .str("minpoly", e.minpoly.to_string())
+                    .str("value", e.value.clone())
+                    .with("approx", approx(e.approx))
+                    .int("algebraic_multiplicity", e.algebraic_multiplicity)
+                    .int("geometric_multiplicity", e.geometric_multiplicity)
+                    .with("blocks", ints(&e.blocks)),
+            )
+        })
+        .collect()
+}
+
+/// Eigenvalue objects of the matrix `a` when it is rational (empty list for 0 x 0); `None`
+/// for matrices over other fields.
+fn eigen_items_of<K: Field>(a: &Matrix<K>) -> Result<Option<Vec<Value>>> {
+    if a.nrows() == 0 {
+        return Ok(Some(vec![]));
+    }
+    match to_rational_matrix(a) {
+        Some(aq) => Ok(Some(eigen_items(&jordan(&aq)?))),
+        None => Ok(None),
+    }
+}
+
+/// The roots of a rational polynomial as eigenvalue-like objects with
+/// `algebraic_multiplicity`.
+fn root_items(p: &Poly<Q>) -> Result<Vec<Value>> {
+    if p.deg() == 0 {
+        return Ok(vec![]);
+    }
+    Ok(crate::algebraic::roots(p)?
+        .into_iter()
+        .map(|(z, mult)| {
+            Value::Obj(
+                Report::new()
+                    .str("minpoly", z.minpoly().to_string())
+                    .str("value", z.value_string())
+                    .with("approx", approx(z.approx()))
+                    .int("algebraic_multiplicity", mult),
+            )
+        })
+        .collect())
+}
+
+fn kronecker_items<K: Field>(r: Report, k: &KroneckerStructure<K>) -> Report {
+    r.int("normal_rank", k.normal_rank)
+        .bool("regular", k.is_regular())
+        .with("right_kronecker_indices", ints(&k.right_indices))
+        .with("left_kronecker_indices", ints(&k.left_indices))
+        .with("infinite_elementary_divisors", ints(&k.infinite_divisors))
+        .int("finite_order", k.finite_order())
+        .int("nondynamic_modes", k.nondynamic_modes())
+}
+
+/// `pencil` over Q: the Kronecker structure with finite eigenvalues.
+pub fn pencil_report(ps: &PencilStructure) -> Report {
+    let k = &ps.structure;
+    kronecker_items(
+        Report::titled(format!(
+            "Kronecker structure of the {}x{} pencil A - sE",
+            k.shape.0, k.shape.1
+        )),
+        k,
+    )
+    .list("finite_eigenvalues", eigen_items(&ps.finite))
+    .bool("verified", ps.verified)
+}
+
+/// `pencil` over another field: indices, and the finite part as a matrix.
+pub fn kronecker_report<K: Field>(k: &KroneckerStructure<K>) -> Report {
+    kronecker_items(
+        Report::titled(format!(
+            "Kronecker structure of the {}x{} pencil A - sE",
+            k.shape.0, k.shape.1
+        )),
+        k,
+    )
+    .matrix("finite_part", &k.finite_part)
+    .bool("verified", k.verified)
+}
+
+fn structure_items<K: Field>(
+    r: Report,
+    c: &ControllabilityStructure<K>,
+    dual: bool,
+) -> Result<Report> {
+    let (order, idx, index, unc) = if dual {
+        (
+            "observable_order",
+            "observability_indices",
+            "observability_index",
+            "unobservable_eigenvalues",
+        )
+    } else {
+        (
+            "controllable_order",
+            "controllability_indices",
+            "controllability_index",
+            "uncontrollable_eigenvalues",
+        )
+    };
+    let part = if dual {
+        c.uncontrollable.transpose()
+    } else {
+        c.uncontrollable.clone()
+    };
+    let mut r = r
+        .int(order, c.order)
+        .with(idx, ints(&c.indices))
+        .int(index, c.controllability_index())
+        .with("staircase_block_dims", ints(&c.block_dims));
+    match eigen_items_of(&part)? {
+        Some(items) => r = r.list(unc, items),
+        None => {
+            r = r.matrix(
+                if dual {
+                    "unobservable_part"
+                } else {
+                    "uncontrollable_part"
+                },
+                &part,
+            )
+        }
+    }
+    Ok(r)
+}
+
+/// `ctrb` / `obsv` of a standard system.
+///
+/// # Errors
+/// From the Jordan form of the uncontrollable part.
+pub fn ctrb_report<K: Field>(c: &ControllabilityStructure<K>, dual: bool) -> Result<Report> {
+    let title = if dual {
+        "observability structure of (C, A)"
+    } else {
+        "controllability structure of (A, B)"
+    };
+    Ok(structure_items(Report::titled(title), c, dual)?.bool("verified", c.verified))
+}
+
+/// `ctrb` / `obsv` of a descriptor system: finite part structure plus infinite counts.
+///
+/// # Errors
+/// From the Jordan form of the uncontrollable part.
+pub fn descriptor_ctrb_report<K: Field>(
+    d: &DescriptorControllability<K>,
+    dual: bool,
+) -> Result<Report> {
+    let (title, order, fin, inf, unc) = if dual {
+        (
+            "observability structure of (C, A, E)",
+            "observable_order",
+            "observable_finite_order",
+            "observable_infinite_order",
+            "unobservable_infinite_eigenvalues",
+        )
+    } else {
+        (
+            "controllability structure of (A, B, E)",
+            "controllable_order",
+            "controllable_finite_order",
+            "controllable_infinite_order",
+            "uncontrollable_infinite_eigenvalues",
+        )
+    };
+    let r = structure_items(Report::titled(title), &d.finite, dual)?;
+    // the finite part's order key is replaced by the total; the finite one has its own key
+    let mut r = Report {
+        title: r.title,
+        items: r.items.into_iter().filter(|(k, _)| k != order).collect(),
+    };
+    r = r
+        .int(order, d.controllable_order())
+        .int(fin, d.finite.order)
+        .int(inf, d.infinite.order)
+        .int(unc, d.uncontrollable_infinite())
+        .int("finite_order", d.finite_order)
+        .int("infinite_order", d.infinite_order);
+    Ok(r.bool("verified", d.verified()))
+}
+
+/// `minreal --descriptor`.
+pub fn minreal_descriptor_report<K: Field>(m: &DescriptorMinimal<K>) -> Report {
+    let s = &m.system;
+    Report::titled("minimal descriptor realization")
+        .int("order", m.order)
+        .int("irreducible_order", m.irreducible_order)
+        .int("original_order", m.original_order)
+        .int("finite_order", m.finite_order)
+        .int("infinite_order", m.infinite_order)
+        .int("polynomial_degree", m.polynomial_degree)
+        .matrix("E", &s.e)
+        .matrix("A", &s.a)
+        .matrix("B", &s.b)
+        .matrix("C", &s.c)
+        .matrix("D", &s.d)
+        .bool("verified", m.verified)
+}
+
+/// `zeros` of a descriptor system.
+///
+/// # Errors
+/// From root isolation.
+pub fn descriptor_zeros_report<K: Field>(z: &DescriptorZeros<K>) -> Result<Report> {
+    let k = &z.pencil;
+    let mut r = Report::titled("zeros of the descriptor system");
+    let rational: Option<Vec<crate::field::Rational>> = z
+        .polynomial
+        .coeffs()
+        .iter()
+        .map(|c| z.polynomial.field().to_rational(c))
+        .collect();
+    r = match rational {
+        Some(cs) => r.list("invariant_zeros", root_items(&Poly::new(Q, cs))?),
+        None => r.list(
+            "invariant_zeros",
+            super::structure::zero_items(&z.polynomial),
+        ),
+    };
+    Ok(r.str("zero_polynomial", z.polynomial.to_string_var("s"))
+        .with("infinite_zero_orders", ints(&z.infinite_zero_orders))
+        .int("normal_rank", k.normal_rank)
+        .with("right_kronecker_indices", ints(&k.right_indices))
+        .with("left_kronecker_indices", ints(&k.left_indices))
+        .bool("verified", k.verified))
+}
+
+/// Zero-pole-gain display of one rational function over Q: `k (factors)/(factors)` with
+/// the monic irreducible factors over Q.
+fn zpk_string(num: &Poly<Q>, den: &Poly<Q>) -> Result<String> {
+    if num.is_zero() {
+        return Ok("0".into());
+    }
+    let gain = crate::field::fmt_rational(&(num.lc() / den.lc()));
+    let factors = |p: &Poly<Q>| -> Result<String> {
+        if p.deg() == 0 {
+            return Ok(String::new());
+        }
+        let (_, fs) = crate::algebraic::factor_q(p)?;
+        Ok(fs
+            .iter()
+            .map(|(f, e)| {
+                let f = f.monic().to_string_var("s");
+                if *e > 1 {
+                    format!("({f})^{e}")
+                } else {
+                    format!("({f})")
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(" "))
+    };
+    let (n, d) = (factors(num)?, factors(den)?);
+    let mut s = gain;
+    if !n.is_empty() {
+        s = format!("{s} {n}");
+    }
+    if !d.is_empty() {
+        s = format!("{s} / {d}");
+    }
+    Ok(s)
+}
+
+/// `tf` over Q: transfer matrix in lowest terms, McMillan degree, poles, transmission zeros,
+/// zero-pole-gain display.
+///
+/// # Errors
+/// From factorization and root isolation.
+pub fn tf_report(g: &TransferMatrix<Q>, r: &TransferRealization<Q>) -> Result<Report> {
+    let sys = &r.minimal.system;
+    let nf = r.minimal.finite_order;
+    // finite poles: eigenvalues of the finite block of the minimal realization (E = diag(I, N))
+    let a_f = sys.a.submatrix(0, nf, 0, nf);
+    let poles = eigen_items_of(&a_f)?.unwrap_or_default();
+    let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
+    let zero_poly = zeros.polynomial.clone();
+    let zpk: Vec<Value> = g
+        .entries
+        .iter()
+        .map(|row| {
+            Ok(Value::List(
+                row.iter()
+                    .map(|f| zpk_string(&f.num, &f.den).map(Value::Str))
+                    .collect::<Result<Vec<_>>>()?,
+            ))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let tm: Vec<Value> = g
+        .to_strings()
+        .into_iter()
+        .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
+        .collect();
+    Ok(Report::titled("transfer matrix")
+        .list("transfer_matrix", tm)
+        .list("zpk", zpk)
+        .int("mcmillan_degree", r.mcmillan_degree)
+        .int("infinite_pole_degree", r.mcmillan_degree - nf)
+        .list("poles", poles)
+        .list("transmission_zeros", root_items(&zero_poly)?)
+        .with("infinite_zero_orders", ints(&zeros.infinite_zero_orders))
+        .int("normal_rank", zeros.pencil.normal_rank - sys.nstates())
+        .int("order", r.minimal.order)
+        .bool("verified", r.verified && zeros.pencil.verified))
+}

@@ -1,0 +1,100 @@
+//! CLI of the second-wave descriptor commands: `pencil`, `ctrb`, `obsv`, `tf`,
+//! `minreal --descriptor`, `zeros` with `E`, and the key `G`.
+use std::process::Command;
+
+fn run(args: &[&str]) -> (i32, serde_json::Value, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args(args)
+        .args(["--format", "json"])
+        .output()
+        .expect("runs");
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    let v = serde_json::from_str(&stdout).unwrap_or(serde_json::Value::Null);
+    (
+        out.status.code().unwrap_or(-1),
+        v,
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
+}
+
+#[test]
+fn cli_pencil_and_minreal_descriptor() {
+    let (code, v, err) = run(&["pencil", "tests/data/improper_s.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["regular"], true);
+    assert_eq!(v["infinite_elementary_divisors"], serde_json::json!([1, 2]));
+    assert_eq!(v["finite_eigenvalues"][0]["value"], "-3");
+    assert_eq!(v["verified"], true);
+    let (code, v, err) = run(&["minreal", "tests/data/improper_s.json", "--descriptor"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        (v["order"].as_u64(), v["irreducible_order"].as_u64()),
+        (Some(2), Some(2))
+    );
+    assert_eq!(v["D"], serde_json::json!([["-1"]]));
+    assert_eq!(v["verified"], true);
+    // without --descriptor an improper system is refused with the degree of its polynomial part
+    let (code, _, err) = run(&["minreal", "tests/data/improper_s.json"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("polynomial part of degree 1"), "{err}");
+}
+
+#[test]
+fn cli_zeros_ctrb_obsv() {
+    let (code, v, err) = run(&["zeros", "tests/data/improper_s.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["zero_polynomial"], "s^2 + 2*s - 3");
+    assert_eq!(v["infinite_zero_orders"], serde_json::json!([]));
+    let (code, v, err) = run(&["ctrb", "tests/data/improper_s.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["controllable_infinite_order"], 2);
+    assert_eq!(v["uncontrollable_infinite_eigenvalues"], 1);
+    let (code, v, err) = run(&["ctrb", "tests/data/ctrb_planted.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["controllability_indices"], serde_json::json!([2]));
+    assert_eq!(v["staircase_block_dims"], serde_json::json!([1, 1]));
+    assert_eq!(v["uncontrollable_eigenvalues"][0]["value"], "5");
+    let (code, v, err) = run(&["obsv", "tests/data/ctrb_planted.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["observable_order"], 3);
+}
+
+#[test]
+fn cli_tf_from_g() {
+    let (code, v, err) = run(&["tf", "tests/data/tf_G.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["mcmillan_degree"], 3);
+    assert_eq!(v["transfer_matrix"][0][1], "(2)/(s + 1)");
+    assert_eq!(v["transfer_matrix"][1][1], "1/2");
+    let poles: Vec<&str> = v["poles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["value"].as_str().unwrap())
+        .collect();
+    assert_eq!(poles, ["-1", "-2", "-3"]);
+    assert_eq!(v["verified"], true);
+    // a bad entry names key, row and column
+    let dir = std::env::temp_dir().join("exactlti_cli_pencil");
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad_g.json");
+    std::fs::write(&bad, r#"{"G": [["1/(s+1)", "1/(s - s)"]]}"#).unwrap();
+    let (code, _, err) = run(&["tf", bad.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("key G, row 1, column 2"), "{err}");
+}
+
+#[test]
+fn cli_pencil_rectangular() {
+    let (code, v, err) = run(&["pencil", "tests/data/pencil_rect.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["normal_rank"], 3);
+    assert_eq!(v["regular"], false);
+    assert_eq!(v["right_kronecker_indices"], serde_json::json!([1]));
+    assert_eq!(v["infinite_elementary_divisors"], serde_json::json!([1]));
+    assert_eq!(v["finite_eigenvalues"][0]["value"], "2");
+    assert_eq!(v["verified"], true);
+    let (code, _, err) = run(&["ctrb", "tests/data/pencil_rect.json"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("must be square"), "{err}");
+}
