@@ -50,10 +50,11 @@
 //! 3. [`qkernels`]: integer/rational matrix kernels on `BigRational` (modular, Bareiss, the
 //!    integer product), which [`matrix`] dispatches to;
 //! 4. [`poly`]: polynomials over a field, integer polynomials and their factorization;
+//!    beside it [`mpoly`] (multivariate) and [`ratfunc`] (rational functions);
 //! 5. [`algebraic`]: number fields, algebraic numbers, root isolation (needs `Poly<Q>` and
 //!    irreducibility, so it sits above `poly`);
 //! 6. [`matrix`] → [`jordan`] → [`system`] → [`realization`] → [`structure`] (`system` and
-//!    `structure` need only `matrix` and below);
+//!    `structure` need only `matrix` and below; [`pencil`] sits on `jordan`);
 //! 7. [`float`]: the nalgebra backend for cross-checks, on `matrix` (feature `float`);
 //! 8. [`io`] (system files), [`report`] (text/JSON/LaTeX), [`cli`] on top (feature `cli`).
 //!
@@ -81,9 +82,11 @@ pub mod float;
 pub mod io;
 pub mod jordan;
 pub mod matrix;
+pub mod mpoly;
 pub mod pencil;
 pub mod poly;
 pub mod qkernels;
+pub mod ratfunc;
 pub mod realization;
 #[cfg(feature = "cli")]
 pub mod report;

@@ -13,6 +13,8 @@ mod algebraic;
 mod bicycle;
 #[path = "cli.rs"]
 mod cli;
+#[path = "cli_mpoly.rs"]
+mod cli_mpoly;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
@@ -35,6 +37,8 @@ mod matrix_generic;
 mod matrix_modular;
 #[path = "mechanical.rs"]
 mod mechanical;
+#[path = "mpoly.rs"]
+mod mpoly;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]

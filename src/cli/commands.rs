@@ -248,8 +248,20 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
     };
     match op {
         super::PolyCmd::Factor { expr } => {
-            let p = parse(expr)?;
-            Ok(sections::factor_report(&p)?)
+            let ids = crate::mpoly::parse::identifiers(expr).map_err(|err| Failure {
+                code: 2,
+                message: format!("polynomial \"{expr}\": {err}"),
+            })?;
+            if ids.len() <= 1 && ids.iter().all(|v| v.len() == 1) {
+                let p = parse(expr)?;
+                return Ok(sections::factor_report(&p)?);
+            }
+            let (vars, p) = parse_multi(&[expr])?;
+            Ok(sections::mfactor_report(&vars, &p[0])?)
+        }
+        super::PolyCmd::Gcd { f, g } => {
+            let (vars, p) = parse_multi(&[f, g])?;
+            Ok(sections::mgcd_report(&vars, &p[0], &p[1]))
         }
         super::PolyCmd::Roots { expr, digits } => {
             let p = parse(expr)?;
@@ -262,6 +274,32 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
             Ok(sections::roots_report(&p, *digits)?)
         }
     }
+}
+
+/// Parses several polynomials in the union of their variables (sorted).
+fn parse_multi(texts: &[&String]) -> Result<(Vec<String>, Vec<crate::mpoly::QPoly>), Failure> {
+    let fail = |e: &str, err: crate::error::Error| Failure {
+        code: 2,
+        message: format!("polynomial \"{e}\": {err}"),
+    };
+    let mut vars: Vec<String> = Vec::new();
+    for t in texts {
+        vars.extend(crate::mpoly::parse::identifiers(t).map_err(|err| fail(t, err))?);
+    }
+    vars.sort();
+    vars.dedup();
+    if vars.len() > crate::mpoly::MAX_VARS {
+        return Err(Failure {
+            code: 2,
+            message: format!("at most {} variables", crate::mpoly::MAX_VARS),
+        });
+    }
+    let refs: Vec<&str> = vars.iter().map(|s| s.as_str()).collect();
+    let polys = texts
+        .iter()
+        .map(|t| crate::mpoly::parse_mpoly_in(t, &refs).map_err(|err| fail(t, err)))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok((vars, polys))
 }
 
 /// The built-in example of `analyze` without a file.

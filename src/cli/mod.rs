@@ -69,8 +69,18 @@ pub enum LinalgOp {
 /// Operations of `poly`.
 #[derive(Subcommand, Debug)]
 pub enum PolyCmd {
-    /// Factorization over Q into irreducibles with multiplicities.
-    Factor { expr: String },
+    /// Factorization over Q into irreducibles with multiplicities (uni- or multivariate).
+    Factor {
+        #[arg(allow_hyphen_values = true)]
+        expr: String,
+    },
+    /// Greatest common divisor of two (multivariate) polynomials over Q, with cofactors.
+    Gcd {
+        #[arg(allow_hyphen_values = true)]
+        f: String,
+        #[arg(allow_hyphen_values = true)]
+        g: String,
+    },
     /// All complex roots, certified, as exact algebraic numbers.
     Roots {
         expr: String,

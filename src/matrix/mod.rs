@@ -18,6 +18,7 @@
 mod charpoly;
 mod ops;
 pub mod over_q;
+pub mod params;
 mod rref;
 
 pub(crate) use rref::nullspace_from_rref;

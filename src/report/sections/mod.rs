@@ -8,11 +8,13 @@
 
 mod algebraic;
 mod jordan;
+mod mpoly;
 mod pencil;
 mod realization;
 mod structure;
 
 pub use algebraic::{factor_report, roots_report};
+pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, kronecker_report,
     minreal_descriptor_report, pencil_report, tf_report,

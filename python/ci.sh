@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Builds and tests the Python package: a venv (.venv-python at the repository root, or
+# $EXACTLTI_PY_VENV), `pip install ./python` (maturin from PyPI builds the PyO3 extension,
+# release profile, target dir python/target), pytest with SymPy, numpy and python-control.
+# Prints pytest's summary line; exits with pytest's status.
+set -euo pipefail
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+VENV="${EXACTLTI_PY_VENV:-$ROOT/.venv-python}"
+PY="${PYTHON:-python3}"
+start=$(date +%s)
+if [ ! -x "$VENV/bin/python" ]; then
+    "$PY" -m venv "$VENV"
+fi
+"$VENV/bin/python" -m pip install -q --upgrade pip >/dev/null 2>&1 || true
+"$VENV/bin/python" -m pip install -q pytest sympy numpy control
+"$VENV/bin/python" -m pip install -q --force-reinstall --no-deps "$ROOT/python"
+echo "python package built and installed in $(( $(date +%s) - start )) s"
+# run from the repository root so that `import exactlti` finds the installed package,
+# not the source folder python/exactlti (which has no compiled _core)
+cd "$ROOT"
+"$VENV/bin/python" -m pytest -q -p no:cacheprovider python/tests

@@ -1,0 +1,145 @@
+"""Python values to exact entry text for the library's system-file reader.
+
+Every entry becomes text the reader parses exactly: ints, ``Fraction`` (``p/q``),
+``Decimal`` and decimal strings (``"0.08"`` is 2/25), SymPy numbers (Rationals and
+radicals such as ``sqrt(2)``), numpy integers, and expression strings over ``params``.
+Binary floats are taken as the shortest decimal that prints as the same float (``0.1`` is
+1/10), with an :class:`ExactnessWarning` saying so.
+"""
+
+import json
+import math
+import numbers
+import warnings
+from decimal import Decimal
+from fractions import Fraction
+
+
+class ExactnessWarning(UserWarning):
+    """A float was read as the shortest decimal it prints as (e.g. 0.1 as 1/10)."""
+
+
+class _FloatNote:
+    def __init__(self):
+        self.examples = []
+
+    def add(self, x, text):
+        if len(self.examples) < 3:
+            self.examples.append("%r -> %s" % (x, text))
+
+
+def _float_text(x, where, note):
+    if not math.isfinite(x):
+        raise ValueError("%s: %r is not a finite number" % (where, x))
+    text = repr(float(x))
+    note.add(x, text)
+    return text
+
+
+def _is_sympy(x):
+    t = type(x)
+    return any(c.__module__.startswith("sympy") for c in t.__mro__)
+
+
+def _sympy_text(x, where):
+    if getattr(x, "free_symbols", None):
+        names = ", ".join(sorted(str(s) for s in x.free_symbols))
+        raise NotImplementedError(
+            "%s: symbolic parameters (%s) are not supported yet: exactlti will take them "
+            "once its symbolic field lands; give numbers, or name a parameter in params={...} "
+            "with a value" % (where, names)
+        )
+    if getattr(x, "is_Rational", False):
+        return "%d/%d" % (int(x.p), int(x.q))
+    # an algebraic number such as sqrt(2)/2 or 1 + I: the reader evaluates it exactly
+    import sympy
+
+    text = sympy.sstr(x).replace("**", "^").replace("I", "i")
+    return text
+
+
+def entry_text(x, where, note):
+    """One exact entry as reader text (``where`` names key, row, column for messages)."""
+    if isinstance(x, bool):
+        raise ValueError("%s: %r is a bool, not a number" % (where, x))
+    if isinstance(x, str):
+        return x
+    if isinstance(x, numbers.Integral):
+        return str(int(x))
+    if isinstance(x, Fraction):
+        return "%d/%d" % (x.numerator, x.denominator)
+    if isinstance(x, Decimal):
+        if not x.is_finite():
+            raise ValueError("%s: %s is not a finite number" % (where, x))
+        return str(x)
+    if _is_sympy(x):
+        return _sympy_text(x, where)
+    if isinstance(x, numbers.Rational):
+        return "%d/%d" % (x.numerator, x.denominator)
+    if isinstance(x, numbers.Real):
+        return _float_text(float(x), where, note)
+    if isinstance(x, numbers.Complex):
+        z = complex(x)
+        re = _float_text(z.real, where, note)
+        im = _float_text(z.imag, where, note)
+        return "%s + (%s)*i" % (re, im)
+    raise ValueError("%s: %r (%s) is not a number" % (where, x, type(x).__name__))
+
+
+def matrix_text(m, key, note):
+    """A matrix argument as rows of entry text, or a MATLAB-style string as given."""
+    if m is None:
+        return None
+    if isinstance(m, str):
+        return m
+    if hasattr(m, "tolist") and hasattr(m, "shape"):  # numpy arrays and matrices
+        shape = tuple(m.shape)
+        dtype = getattr(m, "dtype", None)
+        if dtype is not None and dtype.kind == "O":
+            m = [list(r) for r in (m if len(shape) == 2 else [m])]
+        else:
+            m = m.tolist()
+        if len(shape) == 0:
+            m = [[m]]
+        elif len(shape) == 1:
+            m = [m]
+    elif hasattr(m, "tolist") and hasattr(m, "nrows"):  # our own exact Matrix
+        m = m.tolist()
+    elif _is_sympy(m) and hasattr(m, "rows") and hasattr(m, "cols"):  # sympy Matrix
+        m = m.tolist()
+    if not isinstance(m, (list, tuple)):
+        m = [[m]]  # a scalar is 1x1
+    elif len(m) > 0 and not isinstance(m[0], (list, tuple)) and not hasattr(m[0], "__len__"):
+        m = [list(m)]  # a flat list is one row
+    rows = []
+    for i, row in enumerate(m):
+        rows.append(
+            [
+                entry_text(x, "key %s, row %d, column %d" % (key, i + 1, j + 1), note)
+                for j, x in enumerate(row)
+            ]
+        )
+    return rows
+
+
+def system_json(name, mats, params=None, warn_floats=True, stacklevel=3):
+    """The system-file JSON text for matrices ``{key: value}`` and ``params``."""
+    note = _FloatNote()
+    doc = {"name": name}
+    if params:
+        doc["parameters"] = {
+            str(k): entry_text(v, "parameter %s" % k, note) for k, v in params.items()
+        }
+    for key, m in mats.items():
+        t = matrix_text(m, key, note)
+        if t is not None:
+            doc[key] = t
+    if note.examples and warn_floats:
+        warnings.warn(
+            "binary floats were read as the shortest decimals they print as (%s); "
+            "pass strings or Fractions to say exactly what you mean"
+            % ", ".join(note.examples),
+            ExactnessWarning,
+            stacklevel=stacklevel,
+        )
+    return json.dumps(doc)

@@ -1,0 +1,402 @@
+"""Exact values returned by exactlti: matrices, algebraic numbers, polynomials.
+
+Rationals travel from Rust as integer pairs and become :class:`fractions.Fraction`;
+entries of larger fields (``1 - sqrt(2)/2``, ``-1 + i``, polynomials in a root symbol
+``r3``) keep the library's exact text, its LaTeX and a floating-point approximation.
+``to_sympy()`` turns every exact value into SymPy (``CRootOf`` for roots without a closed
+form); ``to_numpy()`` gives the approximation.
+"""
+
+from fractions import Fraction
+
+__all__ = ["Matrix", "AlgebraicNumber", "Polynomial", "RationalFunction"]
+
+
+def _frac(pq):
+    p, q = pq
+    return Fraction(p, q) if q != 1 else Fraction(p)
+
+
+def _latex_frac(x):
+    if x.denominator == 1:
+        return str(x.numerator)
+    sign = "-" if x < 0 else ""
+    return "%s\\frac{%d}{%d}" % (sign, abs(x.numerator), x.denominator)
+
+
+def _sympy():
+    try:
+        import sympy
+    except ImportError as e:  # pragma: no cover - depends on the environment
+        raise ImportError("to_sympy() needs SymPy: pip install sympy") from e
+    return sympy
+
+
+def _sympy_rational(sympy, p, q):
+    if q == 1:
+        return sympy.Integer(p)
+    return sympy.Rational(p, q)
+
+
+def _sympy_matrix_fast(sympy, q_rows, shape):
+    """A ``sympy.Matrix`` built on SymPy's own representation of rational matrices (a
+    sparse ``DomainMatrix`` over ZZ or QQ, as ``sympy.Matrix`` builds for rational
+    entries), so no SymPy ``Rational`` object is created until an entry is read. The pairs
+    are in lowest terms already, so the domain elements are made without a gcd."""
+    from sympy.polys.domains import QQ, ZZ
+    from sympy.polys.matrices import DomainMatrix
+    from sympy.polys.matrices.sdm import SDM
+
+    integral = all(q == 1 for row in q_rows for (_, q) in row)
+    if integral:
+        dom, mk = ZZ, ZZ.dtype
+        rows = {}
+        for i, row in enumerate(q_rows):
+            d = {j: mk(p) for j, (p, _) in enumerate(row) if p}
+            if d:
+                rows[i] = d
+    else:
+        dom = QQ
+        mk = getattr(QQ.dtype, "_new", QQ.dtype)  # PythonMPQ._new skips the gcd
+        rows = {}
+        for i, row in enumerate(q_rows):
+            d = {j: mk(p, q) for j, (p, q) in enumerate(row) if p}
+            if d:
+                rows[i] = d
+    return sympy.Matrix._fromrep(DomainMatrix.from_rep(SDM(rows, shape, dom)))
+
+
+class Polynomial:
+    """A polynomial with exact coefficients, lowest degree first.
+
+    >>> from exactlti import ss
+    >>> p = ss([[0, 1], [-2, -3]]).charpoly()
+    >>> p.coeffs
+    [Fraction(2, 1), Fraction(3, 1), Fraction(1, 1)]
+    >>> print(p)
+    s^2 + 3*s + 2
+    >>> p.degree
+    2
+    """
+
+    def __init__(self, data):
+        q = data.get("q")
+        self.coeffs = [_frac(c) for c in q] if q is not None else None
+        self.text = data["text"]
+
+    @property
+    def degree(self):
+        if self.coeffs is None:
+            raise ValueError("the coefficients are not rational: %s" % self.text)
+        return len(self.coeffs) - 1
+
+    def to_sympy(self, var="s"):
+        """The polynomial as a SymPy expression in ``var`` (a name or a Symbol)."""
+        sympy = _sympy()
+        s = sympy.Symbol(var) if isinstance(var, str) else var
+        if self.coeffs is None:
+            return sympy.sympify(self.text.replace("^", "**"), locals={"s": s, "i": sympy.I})
+        return sum(
+            (_sympy_rational(sympy, c.numerator, c.denominator) * s**k for k, c in enumerate(self.coeffs)),
+            sympy.Integer(0),
+        )
+
+    def __call__(self, x):
+        if self.coeffs is None:
+            raise ValueError("the coefficients are not rational: %s" % self.text)
+        acc = 0
+        for c in reversed(self.coeffs):
+            acc = acc * x + c
+        return acc
+
+    def __eq__(self, other):
+        if isinstance(other, Polynomial):
+            return self.coeffs == other.coeffs and self.text == other.text
+        return NotImplemented
+
+    def __str__(self):
+        return self.text
+
+    def __repr__(self):
+        return "Polynomial(%s)" % self.text
+
+    def _repr_latex_(self):
+        return "$%s$" % self.text.replace("*", " ")
+
+
+class AlgebraicNumber:
+    """An exact algebraic number: its minimal polynomial over Q and which root it is.
+
+    ``value`` is the library's exact text (a rational, a closed form up to degree 2, else
+    ``root of ... near ...``); ``approx`` a complex approximation read off a certified
+    isolating region; ``to_sympy()`` the number in SymPy (``CRootOf`` where needed).
+
+    >>> from exactlti import ss
+    >>> p = ss([[0, 1], [-2, 2]]).poles()
+    >>> [str(x) for x in p]
+    ['1 - i', '1 + i']
+    >>> p[1].minpoly.coeffs
+    [Fraction(2, 1), Fraction(-2, 1), Fraction(1, 1)]
+    >>> p[1].to_sympy()
+    1 + I
+    >>> r = ss([[0, 2], [1, 0]]).poles()[1]
+    >>> r.to_sympy(), r.approx(20)
+    (sqrt(2), 1.4142135623730950488)
+    >>> c = ss([[0, 0, 2], [1, 0, 0], [0, 1, 0]]).poles()[0]
+    >>> c.to_sympy()
+    CRootOf(x**3 - 2, 0)
+    """
+
+    def __init__(self, data, symbol=None):
+        self.minpoly = Polynomial(data["minpoly"])
+        self.value = data["value"]
+        re, im = data["approx"]
+        self._approx = complex(re, im)
+        self.multiplicity = data.get("multiplicity", data.get("algebraic_multiplicity", 1))
+        self.symbol = symbol
+        self._sympy = None
+
+    @property
+    def degree(self):
+        return self.minpoly.degree
+
+    @property
+    def is_real(self):
+        return self._approx.imag == 0.0
+
+    def __complex__(self):
+        return self._approx
+
+    def __float__(self):
+        if not self.is_real:
+            raise TypeError("%s is not real" % self.value)
+        return self._approx.real
+
+    def approx(self, digits=None):
+        """A floating-point value: ``complex`` by default, or a SymPy Float/complex with
+        ``digits`` significant digits (evaluated from the exact root by SymPy)."""
+        if digits is None:
+            return self._approx if not self.is_real else self._approx.real
+        return self.to_sympy().evalf(digits)
+
+    def to_sympy(self):
+        """The exact number in SymPy: Rational, a radical form (degree 2) or ``CRootOf``."""
+        if self._sympy is not None:
+            return self._sympy
+        sympy = _sympy()
+        c = self.minpoly.coeffs
+        x = sympy.Symbol("x")
+        if len(c) == 2:
+            r = -c[0] / c[1]
+            self._sympy = _sympy_rational(sympy, r.numerator, r.denominator)
+            return self._sympy
+        poly = sympy.Poly(
+            [_sympy_rational(sympy, a.numerator, a.denominator) for a in reversed(c)], x
+        )
+        # the root is the one nearest to the certified approximation (roots of an
+        # irreducible polynomial are simple and far apart at double precision); degree 2
+        # in closed form, else CRootOf
+        if poly.degree() == 2:
+            candidates = list(sympy.roots(poly, multiple=True))
+        else:
+            candidates = [sympy.CRootOf(poly, k) for k in range(poly.degree())]
+        best, best_d = None, None
+        for r in candidates:
+            z = complex(r.evalf(30))
+            d = abs(z - self._approx)
+            if best_d is None or d < best_d:
+                best, best_d = r, d
+        self._sympy = best
+        return best
+
+    def __eq__(self, other):
+        if isinstance(other, AlgebraicNumber):
+            return self.minpoly.coeffs == other.minpoly.coeffs and self.value == other.value
+        if isinstance(other, (int, Fraction)):
+            return self.degree == 1 and -self.minpoly.coeffs[0] == Fraction(other)
+        return NotImplemented
+
+    def __hash__(self):
+        return hash((tuple(self.minpoly.coeffs), self.value))
+
+    def __str__(self):
+        return self.value
+
+    def __repr__(self):
+        return "AlgebraicNumber(%s)" % self.value
+
+    def _repr_latex_(self):
+        try:
+            return "$%s$" % _sympy().latex(self.to_sympy())
+        except ImportError:  # pragma: no cover
+            return "$%s$" % self.value
+
+
+class Matrix:
+    """An exact matrix.
+
+    Rational matrices hold :class:`fractions.Fraction` entries; matrices over larger
+    fields (Jordan forms, quadratic fields) hold the exact text of each entry with its
+    approximation. Symbols ``r1``, ``r2``, ... stand for the eigenvalues listed with
+    them (see :class:`JordanResult`).
+
+    >>> from exactlti import ss
+    >>> A = ss([[0, 1], ["-0.08", "1/3"]]).A
+    >>> A[1, 0], A.shape
+    (Fraction(-2, 25), (2, 2))
+    >>> A.to_sympy()
+    Matrix([
+    [    0,   1],
+    [-2/25, 1/3]])
+    >>> A.to_numpy()
+    array([[ 0.        ,  1.        ],
+           [-0.08      ,  0.33333333]])
+    """
+
+    __array_priority__ = 0
+
+    def __init__(self, data, symbols=None):
+        self.nrows = data["nrows"]
+        self.ncols = data["ncols"]
+        self._q = data.get("q")
+        self._rows = None
+        self._exact = data.get("exact")
+        self._latex = data.get("latex")
+        self._approx = data.get("approx")
+        self.symbols = symbols or {}
+
+    @classmethod
+    def _from_strings(cls, exact, approx=None, symbols=None):
+        nrows = len(exact)
+        ncols = len(exact[0]) if nrows else 0
+        return cls(
+            {"nrows": nrows, "ncols": ncols, "exact": exact, "latex": exact, "approx": approx},
+            symbols,
+        )
+
+    @property
+    def shape(self):
+        return (self.nrows, self.ncols)
+
+    @property
+    def is_rational(self):
+        """True when every entry is rational (entries are Fractions)."""
+        return self._q is not None
+
+    def tolist(self):
+        """Rows of Fractions (rational matrices) or of exact strings."""
+        if self._q is not None:
+            if self._rows is None:
+                self._rows = [[_frac(x) for x in row] for row in self._q]
+            return [list(r) for r in self._rows]
+        return [list(r) for r in self._exact]
+
+    def __getitem__(self, ij):
+        i, j = ij
+        if self._q is not None:
+            return _frac(self._q[i][j])
+        return self._exact[i][j]
+
+    def __eq__(self, other):
+        if isinstance(other, Matrix):
+            return self.shape == other.shape and self.tolist() == other.tolist()
+        try:
+            rows = [list(r) for r in other]
+        except TypeError:
+            return NotImplemented
+        mine = self.tolist()
+        return len(rows) == len(mine) and all(
+            len(a) == len(b) and all(x == y for x, y in zip(a, b)) for a, b in zip(mine, rows)
+        )
+
+    def __hash__(self):
+        return None.__hash__()  # unhashable, like lists
+
+    def to_sympy(self, keep_symbols=False):
+        """The exact matrix as a ``sympy.Matrix``.
+
+        Non-rational entries are parsed from their exact text with ``i`` as ``I`` and each
+        root symbol ``r<k>`` replaced by its eigenvalue (``CRootOf`` where needed), or kept
+        as a SymPy ``Symbol`` with ``keep_symbols=True`` (then ``symbols`` gives each one's
+        minimal polynomial)."""
+        sympy = _sympy()
+        if self._q is not None:
+            try:
+                return _sympy_matrix_fast(sympy, self._q, self.shape)
+            except (ImportError, AttributeError, TypeError):  # pragma: no cover
+                pass  # SymPy's internals moved: the public (slower) constructor
+            Integer, Rational = sympy.Integer, sympy.Rational
+            flat = [
+                Integer(p) if q == 1 else Rational(p, q) for row in self._q for (p, q) in row
+            ]
+            return sympy.Matrix(self.nrows, self.ncols, flat)
+        names = {"i": sympy.I, "sqrt": sympy.sqrt}
+        for name, num in self.symbols.items():
+            if keep_symbols:
+                names[name] = sympy.Symbol(name)
+            else:
+                names[name] = num.to_sympy() if hasattr(num, "to_sympy") else num
+        flat = [
+            sympy.sympify(s.replace("^", "**"), locals=names) for row in self._exact for s in row
+        ]
+        return sympy.Matrix(self.nrows, self.ncols, flat)
+
+    def to_numpy(self):
+        """Floating-point approximation (``float64``, or ``complex128`` when needed)."""
+        import numpy as np
+
+        if self._q is not None:
+            return np.array(
+                [[p / q for (p, q) in row] for row in self._q], dtype=float
+            ).reshape(self.nrows, self.ncols)
+        a = np.array(
+            [[complex(re, im) for (re, im) in row] for row in self._approx], dtype=complex
+        ).reshape(self.nrows, self.ncols)
+        if np.all(a.imag == 0):
+            return a.real.copy()
+        return a
+
+    def approx(self, digits=None):
+        """``to_numpy()``; with ``digits``, a SymPy matrix evaluated to that many digits."""
+        if digits is None:
+            return self.to_numpy()
+        return self.to_sympy().evalf(digits)
+
+    def latex(self):
+        if self._q is not None:
+            rows = [[_latex_frac(x) for x in r] for r in self.tolist()]
+        else:
+            rows = self._latex
+        body = " \\\\ ".join(" & ".join(r) for r in rows)
+        return "\\begin{bmatrix} %s \\end{bmatrix}" % body
+
+    def _repr_latex_(self):
+        return "$%s$" % self.latex()
+
+    def __str__(self):
+        rows = [[str(x) for x in r] for r in self.tolist()]
+        if not rows or not rows[0]:
+            return "[] (%dx%d)" % self.shape
+        w = max(len(x) for r in rows for x in r)
+        return "\n".join("[" + "  ".join(x.rjust(w) for x in r) + "]" for r in rows)
+
+    def __repr__(self):
+        return "Matrix(%dx%d,\n%s)" % (self.nrows, self.ncols, str(self))
+
+
+class RationalFunction:
+    """One entry ``num(s)/den(s)`` of a transfer matrix (exact coefficients)."""
+
+    def __init__(self, num, den):
+        self.num = Polynomial(num)
+        self.den = Polynomial(den)
+
+    def to_sympy(self, var="s"):
+        return self.num.to_sympy(var) / self.den.to_sympy(var)
+
+    def __str__(self):
+        if self.den.text == "1":
+            return self.num.text
+        return "(%s)/(%s)" % (self.num.text, self.den.text)
+
+    __repr__ = __str__
