@@ -92,6 +92,8 @@ pub mod realization;
 pub mod report;
 pub mod rng;
 pub mod structure;
+#[cfg(feature = "cli")]
+pub mod study;
 pub mod system;
 
 pub use error::{Error, Result};

@@ -13,6 +13,8 @@ mod algebraic;
 mod bicycle;
 #[path = "cli.rs"]
 mod cli;
+#[path = "cli_hardening.rs"]
+mod cli_hardening;
 #[path = "cli_mpoly.rs"]
 mod cli_mpoly;
 #[path = "cli_pencil.rs"]
@@ -23,8 +25,14 @@ mod ctrb_structure;
 mod field_axioms;
 #[path = "float.rs"]
 mod float;
+#[path = "float_era.rs"]
+mod float_era;
+#[path = "float_honesty.rs"]
+mod float_honesty;
 #[path = "from_transfer.rs"]
 mod from_transfer;
+#[path = "fuzz.rs"]
+mod fuzz;
 #[path = "io.rs"]
 mod io;
 #[path = "jordan.rs"]
@@ -49,8 +57,12 @@ mod poly_factor;
 mod realization;
 #[path = "realization_planted.rs"]
 mod realization_planted;
+#[path = "robustness.rs"]
+mod robustness;
 #[path = "scb.rs"]
 mod scb;
+#[path = "study.rs"]
+mod study;
 
 /// Every `tests/*.rs` file (other than this one) is mounted above: Cargo's automatic test
 /// discovery is off (`autotests = false`), so an unlisted file would silently not run.

@@ -27,6 +27,38 @@ pub fn execute(cmd: &Command) -> Result<Outcome, Failure> {
         | Command::Obsv { file }
         | Command::Tf { file } => super::pencil_cmds::execute(cmd, file),
         Command::Poly { op } => poly(op).map(Outcome::plain),
+        Command::Sweep {
+            file,
+            param,
+            from,
+            to,
+            points,
+            svg,
+            locus_svg,
+            csv,
+        } => super::sweep::run(&super::sweep::SweepArgs {
+            file,
+            param,
+            from: *from,
+            to: *to,
+            points: *points,
+            svg: svg.as_deref(),
+            locus_svg: locus_svg.as_deref(),
+            csv: csv.as_deref(),
+        }),
+        Command::Critical {
+            file,
+            param,
+            from,
+            to,
+            digits,
+        } => super::critical::run(&super::critical::CriticalArgs {
+            file,
+            param,
+            from,
+            to,
+            digits: *digits,
+        }),
         Command::Analyze { file } => {
             let l = load_or_builtin(file.as_deref())?;
             l.run(Analyze)
@@ -117,13 +149,17 @@ impl SystemVisitor for FileCommand<'_> {
                     Some(q) => super::float_cmds::jordan_comparison(&q.a_raw, path)?,
                     None => vec![],
                 };
-                super::float_cmds::check(t, path, extra).map(Outcome::plain)
+                let r = super::float_cmds::check(t, path, extra)?;
+                let agree = !matches!(r.get("agree"), Some(Value::Bool(false)));
+                Ok(Outcome::float_vs_exact(r, agree))
             }
             Command::Linalg { op, .. } => linalg(*op, &t.a_raw, path).map(Outcome::plain),
-            Command::Minreal { method, .. } => minreal(f, t, *method, path),
+            Command::Minreal { method, hankel, .. } => minreal(f, t, *method, *hankel, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
             Command::Poly { .. }
             | Command::Analyze { .. }
+            | Command::Sweep { .. }
+            | Command::Critical { .. }
             | Command::Pencil { .. }
             | Command::Ctrb { .. }
             | Command::Obsv { .. }
@@ -212,6 +248,7 @@ fn minreal<K: Field + 'static>(
     f: &SystemFile,
     t: &TypedSystem<K>,
     method: MethodArg,
+    hankel: Option<usize>,
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let m = match method {
@@ -220,7 +257,11 @@ fn minreal<K: Field + 'static>(
             let r = realization::minimal_jordan(&q.ss).map_err(|e| with_path(path, e))?;
             return Ok(Outcome::new(r.report(), r.verified));
         }
-        MethodArg::Era => return super::float_cmds::era(t, path).map(Outcome::plain),
+        MethodArg::Era => {
+            let r = super::float_cmds::era(t, path, hankel)?;
+            let agree = !matches!(r.get("agree_with_exact"), Some(Value::Bool(false)));
+            return Ok(Outcome::float_vs_exact(r, agree));
+        }
         MethodArg::Kalman => MinrealMethod::Kalman,
         MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
         MethodArg::HoKalman => MinrealMethod::HoKalman,

@@ -31,11 +31,15 @@ pub fn eigenvalues(a: &DMatrix<f64>) -> Result<Vec<Complex<f64>>> {
     if n == 0 {
         return Ok(Vec::new());
     }
-    let mut m = a.clone();
+    // Scale by a power of two (exact; eigenvalues scale with it) so that the largest entry is
+    // about 1: squares of entries near 1e300 overflow and stall the balancing loop.
+    let amax = a.amax();
+    let s = super::pow2_ratio(1.0, amax);
+    let mut m = a * s;
     balancing::balance_parlett_reinsch(&mut m);
     let schur = Schur::try_new(m, f64::EPSILON, 200 * n.max(10))
         .ok_or_else(|| Error::Limit("eigenvalues: Schur iteration did not converge".into()))?;
-    let mut ev: Vec<Complex<f64>> = schur.complex_eigenvalues().iter().copied().collect();
+    let mut ev: Vec<Complex<f64>> = schur.complex_eigenvalues().iter().map(|z| z / s).collect();
     sort_eigenvalues(&mut ev);
     Ok(ev)
 }

@@ -122,6 +122,7 @@ pub fn era(markov: &[DMatrix<f64>], order: Option<usize>, tol: &Tol) -> Result<F
     let moments = markov.len() - 1;
     let r = moments / 2;
     let s = moments - r;
+    check_hankel_size(r * p, s * m)?;
     let hankel = |shift: usize| {
         let mut h = DMatrix::<f64>::zeros(r * p, s * m);
         for i in 0..r {
@@ -134,8 +135,33 @@ pub fn era(markov: &[DMatrix<f64>], order: Option<usize>, tol: &Tol) -> Result<F
     };
     let h0 = hankel(0);
     let h1 = hankel(1);
-    let svd = jacobi_svd(h0);
-    let sv: Vec<f64> = svd.sv[..(r * p).min(s * m)].to_vec();
+    let k = (r * p).min(s * m);
+    // One-sided Jacobi rotates columns: run it on the narrower side (a wide H0 through its
+    // transpose) so that the orthogonal factor is k x k, not (s m) x (s m).
+    // un = U (left singular vectors, r p x k), vk = V (right, s m x k), sv descending.
+    let (sv, un_all, vk_all) = if r * p >= s * m {
+        let svd = jacobi_svd(h0);
+        let sv: Vec<f64> = svd.sv[..k].to_vec();
+        let u = DMatrix::from_fn(r * p, k, |i, j| {
+            if sv[j] > 0.0 {
+                svd.w[(i, j)] / sv[j]
+            } else {
+                0.0
+            }
+        });
+        (sv, u, svd.v.columns(0, k).into_owned())
+    } else {
+        let svd = jacobi_svd(h0.transpose());
+        let sv: Vec<f64> = svd.sv[..k].to_vec();
+        let v = DMatrix::from_fn(s * m, k, |i, j| {
+            if sv[j] > 0.0 {
+                svd.w[(i, j)] / sv[j]
+            } else {
+                0.0
+            }
+        });
+        (sv, svd.v.columns(0, k).into_owned(), v)
+    };
     let gap = decide_rank("rank H0", &sv, 0.0, tol);
     let maxrank = sv.len();
     let n = order.unwrap_or(gap.rank);
@@ -149,10 +175,9 @@ pub fn era(markov: &[DMatrix<f64>], order: Option<usize>, tol: &Tol) -> Result<F
             "era: order {n} reaches a zero singular value of the Hankel matrix"
         )));
     }
-    // U_n = W_n Σ_n^{-1} (W = H0 V), V_n^T.
     let sq: Vec<f64> = sv[..n].iter().map(|x| x.sqrt()).collect();
-    let un = DMatrix::from_fn(r * p, n, |i, j| svd.w[(i, j)] / sv[j]);
-    let vtn = svd.v.columns(0, n).transpose();
+    let un = un_all.columns(0, n).into_owned();
+    let vtn = vk_all.columns(0, n).transpose();
     let mut a = un.transpose() * &h1 * vtn.transpose();
     for i in 0..n {
         for j in 0..n {
@@ -182,5 +207,148 @@ pub fn era(markov: &[DMatrix<f64>], order: Option<usize>, tol: &Tol) -> Result<F
         singular_values: sv,
         rank_gap: gap,
         truth,
+    })
+}
+
+/// Largest Hankel matrix (entries) the float ERA builds: 2^22 (32 MB of `f64`).
+pub const HANKEL_ENTRY_LIMIT: usize = 1 << 22;
+
+/// Largest `min(rows, cols)^2 * max(rows, cols)` (the work of one Jacobi sweep) ERA accepts:
+/// 2^28, a fraction of a second per sweep.
+pub const HANKEL_WORK_LIMIT: usize = 1 << 28;
+
+fn check_hankel_size(rows: usize, cols: usize) -> Result<()> {
+    let (lo, hi) = (rows.min(cols), rows.max(cols));
+    let entries = rows.checked_mul(cols);
+    let work = lo.checked_mul(lo).and_then(|x| x.checked_mul(hi));
+    match (entries, work) {
+        (Some(e), Some(w)) if e <= HANKEL_ENTRY_LIMIT && w <= HANKEL_WORK_LIMIT => Ok(()),
+        _ => Err(Error::Limit(format!(
+            "era: a {rows} x {cols} Hankel matrix exceeds the size limits ({HANKEL_ENTRY_LIMIT} entries, \
+             {HANKEL_WORK_LIMIT} for min^2*max)"
+        ))),
+    }
+}
+
+/// ERA run on a state-space system, with the Hankel size chosen by rank stabilisation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SystemEra {
+    /// The realization (of the original time scale: `A` multiplied back by `time_scale`).
+    pub realization: FloatRealization,
+    /// `ρ`, a power of two at least the spectral radius: ERA runs on the Markov parameters of
+    /// $(A/\rho, B, C, D)$ so that no mode grows along the Hankel matrix.
+    pub time_scale: f64,
+    /// `(K, rank)` for each square block size `K` tried (`K x K` blocks); with a requested
+    /// `K`, also `K + 1` and `K + 2` (to tell whether the rank is stable).
+    pub ranks: Vec<(usize, usize)>,
+    /// Whether the numerical rank stopped growing (equal for three consecutive `K`, or
+    /// `K = n + 2`).
+    pub stabilised: bool,
+}
+
+/// ERA on the Markov parameters of `(a, b, c, d)` with `K x K` block Hankel matrices.
+///
+/// With `hankel = None`, `K = 1, 2, ...` until the numerical rank of $H_0$ is the same for
+/// three consecutive `K` (at most `K = n + 2`: the exact rank is at most `n`); `Some(K)` uses
+/// that size. The state matrix is
+/// first scaled by `ρ = 2^⌈log2 max|λ|⌉` (exact), the realization of $A/\rho$ is computed and
+/// its `A` multiplied by `ρ`: without it, fast modes grow like $|\lambda|^{2K}$ along the
+/// Hankel matrix and swamp the slow ones (order 4 instead of 8 on the sliding masses).
+/// The result's `truth` is `True` only when the rank stabilised and [`era`]'s tests hold.
+///
+/// # Errors
+/// Shapes and non-finite entries as [`markov_parameters`]; [`Error::Invalid`] without inputs
+/// or outputs; [`Error::Limit`] when the Hankel matrix would exceed [`HANKEL_ENTRY_LIMIT`].
+pub fn era_system(
+    a: &DMatrix<f64>,
+    b: &DMatrix<f64>,
+    c: &DMatrix<f64>,
+    d: &DMatrix<f64>,
+    hankel: Option<usize>,
+    tol: &Tol,
+) -> Result<SystemEra> {
+    let (n, m, p) = check_system("era", a, b, c, d)?;
+    if p == 0 || m == 0 {
+        return Err(Error::Invalid(format!(
+            "era: the system has {m} inputs and {p} outputs; need at least one of each"
+        )));
+    }
+    if hankel == Some(0) {
+        return Err(Error::Invalid("era: --hankel must be at least 1".into()));
+    }
+    let radius = super::eigenvalues(a)?
+        .iter()
+        .map(|z| z.norm())
+        .fold(0.0, f64::max);
+    let rho = if radius > 0.0 && radius.is_finite() {
+        2f64.powi(radius.log2().ceil().clamp(-1000.0, 1000.0) as i32)
+    } else {
+        1.0
+    };
+    let a_s = a / rho;
+    let run = |k: usize| -> Result<FloatRealization> {
+        check_hankel_size(k.saturating_mul(p), k.saturating_mul(m))?;
+        let mk = markov_parameters(&a_s, b, c, d, 2 * k + 1)?;
+        era(&mk, None, tol)
+    };
+    let mut ranks = Vec::new();
+    let (mut best, stabilised) = if let Some(k) = hankel {
+        // the requested size; K + 1 and K + 2 only to tell whether its rank is stable
+        let r = run(k)?;
+        ranks.push((k, r.order));
+        let mut stable = true;
+        for k2 in [k + 1, k + 2] {
+            match run(k2) {
+                Ok(x) => {
+                    ranks.push((k2, x.order));
+                    stable &= x.order == r.order;
+                }
+                Err(_) => stable = false,
+            }
+        }
+        (r, stable)
+    } else {
+        // The exact rank is at most n, so K = n + 2 blocks always show it stable. Before that
+        // the rank must stay put for two steps: it can stall for one step where Markov
+        // parameters alternate with zeros (the sliding masses: ranks 6, 6, 8, 8, 8 for
+        // K = 6..10), and a rank 0 is never stable early (leading Markov parameters vanish
+        // when the relative degree is high).
+        let mut prev = run(1)?;
+        ranks.push((1, prev.order));
+        let mut out = None;
+        for k in 2..=n + 2 {
+            let next = match run(k) {
+                Ok(x) => x,
+                Err(Error::Limit(_)) => break,
+                Err(e) => return Err(e),
+            };
+            ranks.push((k, next.order));
+            let r = next.order;
+            let held = ranks.len() >= 3 && ranks[ranks.len() - 3..].iter().all(|x| x.1 == r);
+            if (held && r > 0) || k == n + 2 {
+                out = Some(next);
+                break;
+            }
+            prev = next;
+        }
+        match out {
+            Some(r) => (r, true),
+            None => (prev, false),
+        }
+    };
+    best.a *= rho;
+    // Powers of A/ρ underflow when the entries of A span more than ~1e100: Markov parameters
+    // that vanish in float need not vanish (an order found is then not clear).
+    let nonzero = a.iter().filter(|x| **x != 0.0).map(|x| x.abs());
+    let (lo, hi) = nonzero.fold((f64::INFINITY, 0.0f64), |(l, h), x| (l.min(x), h.max(x)));
+    let range_ok = hi == 0.0 || hi / lo <= 1e100;
+    if !stabilised || !range_ok {
+        best.truth = Truth::Unknown;
+    }
+    Ok(SystemEra {
+        realization: best,
+        time_scale: rho,
+        ranks,
+        stabilised,
     })
 }

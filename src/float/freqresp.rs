@@ -45,6 +45,11 @@ pub fn freqresp(
     let cc = c.map(|x| Complex::new(x, 0.0));
     let dc = d.map(|x| Complex::new(x, 0.0));
     let mut out = Vec::with_capacity(freqs_hz.len());
+    if n == 0 {
+        // no finite dynamics: G = D (nalgebra's LU solve panics on 0 x 0)
+        out.resize(freqs_hz.len(), dc);
+        return Ok(out);
+    }
     for &f in freqs_hz {
         let jw = Complex::new(0.0, 2.0 * std::f64::consts::PI * f);
         let mut m = -&ac;

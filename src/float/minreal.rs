@@ -14,7 +14,7 @@
 use nalgebra::DMatrix;
 
 use super::staircase::controllable_staircase;
-use super::{RankGap, Tol, Truth, all_clear, check_system};
+use super::{RankGap, Tol, Truth, all_clear, check_system, pow2_ratio};
 use crate::error::Result;
 
 /// A float minimal realization with its diagnostics.
@@ -68,10 +68,14 @@ pub fn minreal(
     tol: &Tol,
 ) -> Result<FloatMinreal> {
     check_system("minreal", a, b, c, d)?;
-    let scale = a.norm().max(b.norm()).max(c.norm());
+    // Input and output scaling by powers of two (exact): the same transfer matrix up to
+    // G -> β G α, undone on the result; one relative threshold then fits every block.
+    let alpha = pow2_ratio(a.norm(), b.norm());
+    let beta = pow2_ratio(a.norm(), c.norm());
     let mut a1 = a.clone();
-    let mut b1 = b.clone();
-    let mut c1 = c.clone();
+    let mut b1 = b * alpha;
+    let mut c1 = c * beta;
+    let scale = a1.norm().max(b1.norm()).max(c1.norm());
     let st = controllable_staircase(&mut a1, &mut b1, &mut c1, scale, tol, "controllability");
     let nc = st.order;
     let mut gaps = st.gaps;
@@ -84,8 +88,8 @@ pub fn minreal(
     gaps.extend(so.gaps);
     Ok(FloatMinreal {
         a: at.view((0, 0), (no, no)).transpose(),
-        b: ct.columns(0, no).transpose(),
-        c: bt.rows(0, no).transpose(),
+        b: ct.columns(0, no).transpose() / alpha,
+        c: bt.rows(0, no).transpose() / beta,
         d: d.clone(),
         order: no,
         controllable_order: nc,

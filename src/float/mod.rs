@@ -37,7 +37,10 @@ mod zeros;
 
 pub use convert::to_dmatrix;
 pub use eigen::{EigenPairs, eigenvalues, eigenvectors};
-pub use era::{FloatRealization, era, markov_parameters};
+pub use era::{
+    FloatRealization, HANKEL_ENTRY_LIMIT, HANKEL_WORK_LIMIT, SystemEra, era, era_system,
+    markov_parameters,
+};
 pub use freqresp::freqresp;
 pub use jordan_guess::{Cluster, FloatJordan, jordan_guess};
 pub use minreal::{FloatMinreal, minreal};
@@ -190,6 +193,20 @@ pub(crate) fn decide_rank(what: &str, sv: &[f64], scale: f64, tol: &Tol) -> Rank
         ratio,
         truth,
     }
+}
+
+/// The power of two nearest to `target / x` (1 when either is zero or not finite).
+///
+/// Controllability, observability, McMillan degree and invariant zeros do not change under
+/// input and output scaling `B -> αB`, `C -> βC`, `D -> βDα`; scaling `B` and `C` to the size of
+/// `A` by powers of two (exact in binary) lets one relative threshold serve every block, so
+/// `A = diag(-1e20, -2e20)`, `B = [1; 1]` is not read as `B ≈ 0`.
+pub(crate) fn pow2_ratio(target: f64, x: f64) -> f64 {
+    if !(target > 0.0 && x > 0.0 && target.is_finite() && x.is_finite()) {
+        return 1.0;
+    }
+    let k = (target / x).log2().round().clamp(-1000.0, 1000.0);
+    2f64.powi(k as i32)
 }
 
 /// `True` when every gap is clear, otherwise `Unknown`.

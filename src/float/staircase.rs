@@ -22,7 +22,7 @@
 use nalgebra::DMatrix;
 
 use super::svd::left_basis;
-use super::{RankGap, Tol, Truth, all_clear, check_finite, check_square, decide_rank};
+use super::{RankGap, Tol, Truth, all_clear, check_finite, check_square, decide_rank, pow2_ratio};
 use crate::error::{Error, Result};
 
 /// A numerical rank with its diagnostics.
@@ -70,7 +70,8 @@ pub fn controllability_rank(a: &DMatrix<f64>, b: &DMatrix<f64>, tol: &Tol) -> Re
         });
     }
     let mut a = a.clone();
-    let mut b = b.clone();
+    // rank [B, AB, ...] = rank [αB, A αB, ...]: bring B to the size of A (exact power of 2)
+    let mut b = b * pow2_ratio(a.norm(), b.norm());
     let mut c = DMatrix::<f64>::zeros(0, a.nrows());
     let scale = a.norm().max(b.norm());
     let s = controllable_staircase(&mut a, &mut b, &mut c, scale, tol, "controllability");

@@ -27,7 +27,7 @@ use nalgebra::linalg::LU;
 use num_complex::Complex;
 
 use super::svd::{left_basis, right_basis};
-use super::{RankGap, Tol, Truth, all_clear, check_system, decide_rank, eigenvalues};
+use super::{RankGap, Tol, Truth, all_clear, check_system, decide_rank, eigenvalues, pow2_ratio};
 use crate::error::{Error, Result};
 
 /// Invariant zeros with diagnostics.
@@ -83,13 +83,19 @@ pub fn invariant_zeros_report(
     tol: &Tol,
 ) -> Result<FloatZeros> {
     check_system("invariant_zeros", a, b, c, d)?;
-    let scale = (a.norm_squared() + b.norm_squared() + c.norm_squared() + d.norm_squared()).sqrt();
+    // The zeros of (A, αB, βC, βDα) are those of (A, B, C, D): scale B and C to the size of
+    // A by exact powers of two so that one threshold fits every block.
+    let alpha = pow2_ratio(a.norm(), b.norm());
+    let beta = pow2_ratio(a.norm(), c.norm());
     let mut sys = Sys {
         a: a.clone(),
-        b: b.clone(),
-        c: c.clone(),
-        d: d.clone(),
+        b: b * alpha,
+        c: c * beta,
+        d: d * (alpha * beta),
     };
+    let scale =
+        (sys.a.norm_squared() + sys.b.norm_squared() + sys.c.norm_squared() + sys.d.norm_squared())
+            .sqrt();
     let mut gaps = Vec::new();
     loop {
         let changed = reduce(&mut sys, scale, tol, &mut gaps, "");
@@ -105,6 +111,12 @@ pub fn invariant_zeros_report(
         Vec::new()
     } else if sys.d.nrows() == 0 {
         eigenvalues(&sys.a)?
+    } else if !sys.d.is_square() {
+        return Err(Error::Verification(format!(
+            "invariant_zeros: the reduced D is {}x{}, not square",
+            sys.d.nrows(),
+            sys.d.ncols()
+        )));
     } else {
         let lu = LU::new(sys.d.clone());
         let x = lu

@@ -31,7 +31,7 @@ pub mod load;
 pub mod load_descriptor;
 pub mod matlab;
 pub mod qmat;
-mod raw;
+pub(crate) mod raw;
 pub mod system_file;
 pub mod transfer_expr;
 

@@ -3,6 +3,10 @@
 //! Hand-written SVG (a few dozen lines) instead of a plotting crate: the CLI needs one plot
 //! type, and this keeps the dependency tree and CI build small.
 
+pub mod bode;
+pub mod svg;
+pub mod sweep;
+
 use std::fmt::Write;
 
 /// `response[k][i][j]` = $G_{ij}(j 2\pi f_k)$ as `(re, im)`.

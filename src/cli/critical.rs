@@ -1,0 +1,158 @@
+//! `exactlti critical FILE --param v --from a --to b [--digits N]`: exact critical values of
+//! one parameter (zero eigenvalue, imaginary pair, double eigenvalue) as algebraic numbers,
+//! and the intervals between them with stability and eigenvalue counts.
+
+use super::{Failure, Outcome};
+use crate::algebraic::AlgebraicNumber;
+use crate::field::{Rational, fmt_rational};
+use crate::report::{Report, Value};
+use crate::study::{CriticalValues, ParamFamily, critical_values};
+use std::path::Path;
+
+/// Options of `critical`.
+pub struct CriticalArgs<'a> {
+    pub file: &'a Path,
+    pub param: &'a str,
+    pub from: &'a str,
+    pub to: &'a str,
+    pub digits: usize,
+}
+
+fn bound(s: &str, what: &str) -> Result<Rational, Failure> {
+    crate::io::expr::parse_number(s.trim()).map_err(|e| Failure {
+        code: 2,
+        message: format!("critical: --{what} '{s}': {}", e.msg),
+    })
+}
+
+fn number(a: &AlgebraicNumber, digits: usize) -> Report {
+    // isolating interval refined to about the displayed precision
+    let w = Rational::new(
+        1.into(),
+        num_bigint::BigInt::from(10).pow(digits.min(60) as u32),
+    );
+    let a = &a.refined(&w).unwrap_or_else(|_| a.clone());
+    let (lo, hi) = a.interval().unwrap_or_default();
+    Report::new()
+        .str("value", a.value_string())
+        .float("approx", a.approx().0)
+        .str("digits", a.digits(digits).0)
+        .str("minpoly", a.minpoly().to_string())
+        .list(
+            "interval",
+            vec![Value::Str(fmt_rational(&lo)), Value::Str(fmt_rational(&hi))],
+        )
+}
+
+/// The report of a [`CriticalValues`] (contract keys `critical_values[]`, `intervals[]`).
+pub fn report(cv: &CriticalValues, digits: usize) -> Report {
+    let crit: Vec<Value> = cv
+        .critical
+        .iter()
+        .map(|c| {
+            let mut r = number(&c.value, digits).str("kind", c.kind.name());
+            if let Some(w) = c.omega {
+                r = r.float("omega", w);
+            }
+            let eig: Vec<Value> = c
+                .eigenvalues_at
+                .iter()
+                .map(|e| {
+                    let mut o = Report::new()
+                        .list(
+                            "approx",
+                            vec![Value::Float(e.approx.0), Value::Float(e.approx.1)],
+                        )
+                        .int("algebraic_multiplicity", e.multiplicity)
+                        .list(
+                            "blocks",
+                            e.blocks.iter().map(|b| Value::Int(*b as i64)).collect(),
+                        );
+                    if !e.factor.is_empty() {
+                        o = o.str("factor", e.factor.clone());
+                    }
+                    Value::Obj(o)
+                })
+                .collect();
+            Value::Obj(r.bool("certified", c.certified).list("eigenvalues_at", eig))
+        })
+        .collect();
+    let ivs: Vec<Value> = cv
+        .intervals
+        .iter()
+        .map(|iv| {
+            let c = &iv.counts;
+            Value::Obj(
+                Report::new()
+                    .str("from", iv.from.value_string())
+                    .str("to", iv.to.value_string())
+                    .float("from_approx", iv.from.approx().0)
+                    .float("to_approx", iv.to.approx().0)
+                    .str("sample", fmt_rational(&iv.sample))
+                    .bool("stable", iv.stable)
+                    .int("unstable_eigenvalues", c.unstable())
+                    .int("real_negative", c.real_negative)
+                    .int("zero", c.zero)
+                    .int("real_positive", c.real_positive)
+                    .int("complex_pairs_stable", c.complex_pairs_stable)
+                    .int("imaginary_pairs", c.imaginary_pairs)
+                    .int("complex_pairs_unstable", c.complex_pairs_unstable),
+            )
+        })
+        .collect();
+    let rejected: Vec<Value> = cv
+        .rejected
+        .iter()
+        .map(|(a, why)| Value::Obj(number(a, digits).str("reason", why.clone())))
+        .collect();
+    let p = &cv.charpoly;
+    let charpoly: Vec<Value> = p
+        .coeffs
+        .iter()
+        .map(|c| Value::Str(c.to_string_var(&cv.param)))
+        .collect();
+    Report::titled(format!(
+        "critical values of {} on [{}, {}]",
+        cv.param,
+        fmt_rational(&cv.from),
+        fmt_rational(&cv.to)
+    ))
+    .str("param", cv.param.clone())
+    .list("critical_values", crit)
+    .list("intervals", ivs)
+    .list("rejected", rejected)
+    .list(
+        "singular_values",
+        cv.singular
+            .iter()
+            .map(|a| Value::Obj(number(a, digits)))
+            .collect(),
+    )
+    .list(
+        "persistent",
+        cv.persistent
+            .iter()
+            .map(|k| Value::Str(k.name().into()))
+            .collect(),
+    )
+    .list("charpoly_coeffs", charpoly)
+    .bool("verified", cv.verified)
+}
+
+/// Runs `critical`.
+pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
+    let (from, to) = (bound(a.from, "from")?, bound(a.to, "to")?);
+    if from > to || !(1..=10_000).contains(&a.digits) {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "critical: need --from <= --to and 1 <= --digits <= 10000 (got {}, {}, {})",
+                a.from, a.to, a.digits
+            ),
+        });
+    }
+    crate::io::read_system_file(a.file)?;
+    let fam = ParamFamily::from_file(a.file, a.param)?;
+    let cv = critical_values(&fam, &from, &to)?;
+    Ok(Outcome::new(report(&cv, a.digits), cv.verified))
+}

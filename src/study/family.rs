@@ -1,0 +1,452 @@
+//! A one-parameter family of systems: the state matrix $A(v)$ with entries in
+//! $\mathbb{Q}(v)$, read from a system file with one parameter left symbolic.
+//!
+//! First-order files give $A(v)$ (and $E(v)$: $A \leftarrow E^{-1} A$); second-order files
+//! $M q'' + L q' + K q = F u$ give
+//! $$A(v) = \begin{bmatrix} 0 & I \\ -M^{-1}K & -M^{-1}L \end{bmatrix}.$$
+//! The characteristic polynomial is that of the pencil: $\det(x E - A)$, resp.
+//! $\det(x^2 M + x L + K)$, up to a factor in $\mathbb{Q}(v)$ without $x$.
+//!
+//! | entry point | does |
+//! |---|---|
+//! | [`ParamFamily::from_file`] | reads a system file, `param` symbolic, other parameters exact |
+//! | [`ParamFamily::second_order`], [`ParamFamily::first_order`] | builds from matrices |
+//! | [`ParamFamily::state_matrix_in`] | $A(v_0)$ over any field holding $v_0$ |
+//! | [`ParamFamily::state_matrix_f64`] | $A(v)$ in floating point (sweeps) |
+
+use super::ratfunc::{RatFunc, eval_ratfunc, ratfunc_from_number};
+use crate::error::{Error, Result};
+use crate::field::{Field, NumberField, Q, Rational};
+use crate::io::raw::{self, Raw};
+use crate::matrix::Matrix;
+use nalgebra::DMatrix;
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::path::Path;
+
+/// A square matrix of rational functions, row-major rows.
+pub type RatMatrix = Vec<Vec<RatFunc>>;
+
+/// The matrices that define $A(v)$.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FamilyForm {
+    /// $E x' = A x$ (`e = None`: the identity).
+    First { a: RatMatrix, e: Option<RatMatrix> },
+    /// $M q'' + L q' + K q = 0$.
+    Second {
+        m: RatMatrix,
+        l: RatMatrix,
+        k: RatMatrix,
+    },
+}
+
+/// A system whose state matrix depends on one parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParamFamily {
+    /// The system's `name`, for titles.
+    pub name: Option<String>,
+    /// The parameter's name (`v` in `--param v`).
+    pub param: String,
+    /// Its value in the file, when it has one.
+    pub nominal: Option<Rational>,
+    pub form: FamilyForm,
+}
+
+fn zeros(n: usize) -> RatMatrix {
+    vec![vec![RatFunc::zero(); n]; n]
+}
+
+impl ParamFamily {
+    /// The second-order family $M(v) q'' + L(v) q' + K(v) q = 0$.
+    ///
+    /// # Errors
+    /// `Shape` unless `m`, `l`, `k` are square of one size.
+    pub fn second_order(
+        param: &str,
+        m: RatMatrix,
+        l: RatMatrix,
+        k: RatMatrix,
+    ) -> Result<ParamFamily> {
+        let n = m.len();
+        for x in [&m, &l, &k] {
+            check_square(x, n)?;
+        }
+        Ok(ParamFamily {
+            name: None,
+            param: param.into(),
+            nominal: None,
+            form: FamilyForm::Second { m, l, k },
+        })
+    }
+
+    /// The first-order family $E(v) x' = A(v) x$.
+    ///
+    /// # Errors
+    /// `Shape` unless `a` (and `e`) are square of one size.
+    pub fn first_order(param: &str, a: RatMatrix, e: Option<RatMatrix>) -> Result<ParamFamily> {
+        let n = a.len();
+        check_square(&a, n)?;
+        if let Some(e) = &e {
+            check_square(e, n)?;
+        }
+        Ok(ParamFamily {
+            name: None,
+            param: param.into(),
+            nominal: None,
+            form: FamilyForm::First { a, e },
+        })
+    }
+
+    /// Number of states $n$.
+    pub fn nstates(&self) -> usize {
+        match &self.form {
+            FamilyForm::First { a, .. } => a.len(),
+            FamilyForm::Second { m, .. } => 2 * m.len(),
+        }
+    }
+
+    /// The pencil $\sum_j x^j P_j(v)$ whose determinant is the characteristic polynomial up
+    /// to a factor free of $x$: `[-A, E]` or `[K, L, M]`.
+    pub fn pencil(&self) -> Vec<RatMatrix> {
+        match &self.form {
+            FamilyForm::First { a, e } => {
+                let n = a.len();
+                let neg: RatMatrix = a
+                    .iter()
+                    .map(|r| r.iter().map(RatFunc::neg).collect())
+                    .collect();
+                let e = e.clone().unwrap_or_else(|| {
+                    let mut i = zeros(n);
+                    for (j, row) in i.iter_mut().enumerate() {
+                        row[j] = super::ratfunc::one();
+                    }
+                    i
+                });
+                vec![neg, e]
+            }
+            FamilyForm::Second { m, l, k } => vec![k.clone(), l.clone(), m.clone()],
+        }
+    }
+
+    /// Every denominator of every entry (the family is undefined at their roots).
+    pub fn denominators(&self) -> Vec<crate::poly::Poly<Q>> {
+        let mut out = vec![];
+        for p in self.pencil() {
+            for r in p {
+                for x in r {
+                    if !x.den.is_one() && !out.contains(&x.den) {
+                        out.push(x.den);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// $A(v_0)$ over the field `k`, where `v0` is an element of `k`.
+    ///
+    /// # Errors
+    /// `DivisionByZero` at a pole of an entry; `Singular` where $E(v_0)$ or $M(v_0)$ is
+    /// singular.
+    pub fn state_matrix_in<K: Field>(&self, k: &K, v0: &K::Elem) -> Result<Matrix<K>> {
+        let ev = |m: &RatMatrix| -> Result<Matrix<K>> {
+            let rows = m
+                .iter()
+                .map(|r| {
+                    r.iter()
+                        .map(|f| eval_in(k, f, v0))
+                        .collect::<Result<Vec<_>>>()
+                })
+                .collect::<Result<Vec<_>>>()?;
+            if rows.is_empty() {
+                return Ok(Matrix::zeros(k.clone(), 0, 0));
+            }
+            Matrix::from_rows(k.clone(), rows)
+        };
+        match &self.form {
+            FamilyForm::First { a, e } => {
+                let a = ev(a)?;
+                match e {
+                    None => Ok(a),
+                    Some(e) => ev(e)?.inverse()?.try_mul(&a),
+                }
+            }
+            FamilyForm::Second { m, l, k: kk } => {
+                let n = m.len();
+                let minv = ev(m)?.inverse()?;
+                let mk = minv.try_mul(&ev(kk)?)?.scale(&k.neg(&k.one()));
+                let ml = minv.try_mul(&ev(l)?)?.scale(&k.neg(&k.one()));
+                let mut a = Matrix::zeros(k.clone(), 2 * n, 2 * n);
+                a.set_block(0, n, &Matrix::identity(k.clone(), n));
+                a.set_block(n, 0, &mk);
+                a.set_block(n, n, &ml);
+                Ok(a)
+            }
+        }
+    }
+
+    /// $A(v_0)$ over $\mathbb{Q}$ for a rational `v0`.
+    ///
+    /// # Errors
+    /// As [`Self::state_matrix_in`].
+    pub fn state_matrix_q(&self, v0: &Rational) -> Result<Matrix<Q>> {
+        self.state_matrix_in(&Q, v0)
+    }
+
+    /// $A(v_0)$ over $\mathbb{Q}(v_0) = \mathbb{Q}[t]/(f)$, `v0` the field's generator.
+    ///
+    /// # Errors
+    /// As [`Self::state_matrix_in`].
+    pub fn state_matrix_nf(&self, k: &NumberField) -> Result<Matrix<NumberField>> {
+        self.state_matrix_in(k, &k.generator())
+    }
+
+    /// $A(v)$ in floating point.
+    ///
+    /// # Errors
+    /// `Singular` where $E(v)$ or $M(v)$ is numerically singular.
+    pub fn state_matrix_f64(&self, v: f64) -> Result<DMatrix<f64>> {
+        let ev = |m: &RatMatrix| {
+            let n = m.len();
+            DMatrix::from_fn(n, n, |i, j| m[i][j].eval_f64(v))
+        };
+        match &self.form {
+            FamilyForm::First { a, e } => {
+                let a = ev(a);
+                match e {
+                    None => Ok(a),
+                    Some(e) => ev(e).lu().solve(&a).ok_or(Error::Singular),
+                }
+            }
+            FamilyForm::Second { m, l, k } => {
+                let n = m.len();
+                let lu = ev(m).lu();
+                let mk = lu.solve(&ev(k)).ok_or(Error::Singular)?;
+                let ml = lu.solve(&ev(l)).ok_or(Error::Singular)?;
+                let mut a = DMatrix::zeros(2 * n, 2 * n);
+                for i in 0..n {
+                    a[(i, n + i)] = 1.0;
+                    for j in 0..n {
+                        a[(n + i, j)] = -mk[(i, j)];
+                        a[(n + i, n + j)] = -ml[(i, j)];
+                    }
+                }
+                Ok(a)
+            }
+        }
+    }
+
+    /// Reads the system file at `path` with parameter `param` symbolic. Other parameters
+    /// take their exact values (expressions over each other and over `param` allowed).
+    ///
+    /// # Errors
+    /// `Invalid` naming the file and key for unreadable or malformed files, unknown names,
+    /// cycles; `Unsupported` for `sqrt`/`i` entries or a transfer-matrix file.
+    pub fn from_file(path: &Path, param: &str) -> Result<ParamFamily> {
+        let shown = path.display().to_string();
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::Invalid(format!("{shown}: cannot read the file: {e}")))?;
+        let toml = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+            || !text.trim_start().starts_with('{');
+        let raw = if toml {
+            raw::from_toml_text(&text, &shown)
+        } else {
+            raw::from_json_text(&text, &shown)
+        }
+        .map_err(|e| Error::Invalid(e.to_string()))?;
+        Self::from_raw(&raw, &shown, param)
+    }
+
+    fn from_raw(raw: &Raw, file: &str, param: &str) -> Result<ParamFamily> {
+        let Raw::Table(top) = raw else {
+            return Err(Error::Invalid(format!("{file}: expected a table of keys")));
+        };
+        let get = |k: &str| top.iter().find(|(n, _)| n == k).map(|(_, v)| v);
+        let params: Vec<(String, Raw)> = match get("parameters") {
+            Some(Raw::Table(kv)) => kv.clone(),
+            Some(_) => {
+                return Err(Error::Invalid(format!(
+                    "{file}: key parameters: expected a table"
+                )));
+            }
+            None => vec![],
+        };
+        if !crate::io::expr::is_parameter_name(param) {
+            return Err(Error::Invalid(format!("'{param}' cannot name a parameter")));
+        }
+        let resolver = Resolver {
+            file,
+            param,
+            params: &params,
+            memo: RefCell::new(HashMap::new()),
+            active: RefCell::new(vec![]),
+        };
+        let nominal = match params.iter().find(|(n, _)| n == param) {
+            Some((_, r)) => {
+                let f = resolver.scalar(r, &format!("parameters.{param}"), false)?;
+                if !f.is_poly() || f.num.deg() > 0 {
+                    return Err(Error::Invalid(format!(
+                        "{file}: key parameters.{param}: the swept parameter needs a number"
+                    )));
+                }
+                Some(f.num.coeff(0))
+            }
+            None => None,
+        };
+        let mat = |k: &str| -> Result<Option<RatMatrix>> {
+            get(k).map(|r| resolver.matrix(r, k)).transpose()
+        };
+        let name = match get("name") {
+            Some(Raw::Str(s)) => Some(s.clone()),
+            _ => None,
+        };
+        if get("G").is_some() {
+            return Err(Error::Unsupported(format!(
+                "{file}: a parameter study needs A or M, L, K (not a transfer matrix G)"
+            )));
+        }
+        let form = if let Some(m) = mat("M")? {
+            let n = m.len();
+            let l = mat("L")?.unwrap_or_else(|| zeros(n));
+            let k = mat("K")?.unwrap_or_else(|| zeros(n));
+            ParamFamily::second_order(param, m, l, k)?.form
+        } else if let Some(a) = mat("A")? {
+            ParamFamily::first_order(param, a, mat("E")?)?.form
+        } else {
+            return Err(Error::Invalid(format!(
+                "{file}: no system: give A (first-order form) or M (second-order form)"
+            )));
+        };
+        Ok(ParamFamily {
+            name,
+            param: param.into(),
+            nominal,
+            form,
+        })
+    }
+}
+
+fn check_square(m: &RatMatrix, n: usize) -> Result<()> {
+    if m.len() != n || m.iter().any(|r| r.len() != n) {
+        let c = m.first().map_or(0, Vec::len);
+        return Err(Error::Shape {
+            op: "parameter family",
+            expected: (n, n),
+            found: (m.len(), c),
+        });
+    }
+    Ok(())
+}
+
+/// $f(v_0)$ in `k`.
+///
+/// # Errors
+/// `DivisionByZero` when the denominator vanishes at `v0`.
+pub fn eval_in<K: Field>(k: &K, f: &RatFunc, v0: &K::Elem) -> Result<K::Elem> {
+    let h = |p: &crate::poly::Poly<Q>| {
+        p.coeffs().iter().rev().fold(k.zero(), |acc, c| {
+            k.add(&k.mul(&acc, v0), &k.from_rational(c))
+        })
+    };
+    let d = k.inv(&h(&f.den)).ok_or(Error::DivisionByZero)?;
+    Ok(k.mul(&h(&f.num), &d))
+}
+
+struct Resolver<'a> {
+    file: &'a str,
+    param: &'a str,
+    params: &'a [(String, Raw)],
+    memo: RefCell<HashMap<String, RatFunc>>,
+    active: RefCell<Vec<String>>,
+}
+
+impl Resolver<'_> {
+    fn lookup(&self, n: &str) -> Result<Option<RatFunc>> {
+        if n == self.param {
+            return Ok(Some(RatFunc::var()));
+        }
+        if let Some(v) = self.memo.borrow().get(n) {
+            return Ok(Some(v.clone()));
+        }
+        let Some((_, r)) = self.params.iter().find(|(m, _)| m == n) else {
+            return Ok(None);
+        };
+        if self.active.borrow().iter().any(|m| m == n) {
+            return Err(Error::Invalid(format!(
+                "{}: key parameters.{n}: parameters depend on each other in a cycle",
+                self.file
+            )));
+        }
+        self.active.borrow_mut().push(n.into());
+        let v = self.scalar(r, &format!("parameters.{n}"), true);
+        self.active.borrow_mut().pop();
+        let v = v?;
+        self.memo.borrow_mut().insert(n.into(), v.clone());
+        Ok(Some(v))
+    }
+
+    fn scalar(&self, r: &Raw, at: &str, _symbolic: bool) -> Result<RatFunc> {
+        let wrap = |e: Error| match e {
+            Error::Invalid(m) if !m.starts_with(self.file) => {
+                Error::Invalid(format!("{}: {at}: {m}", self.file))
+            }
+            Error::Unsupported(m) => Error::Unsupported(format!("{}: {at}: {m}", self.file)),
+            e => e,
+        };
+        match r {
+            Raw::Number(s) => ratfunc_from_number(s).map_err(wrap),
+            Raw::Str(s) => eval_ratfunc(s, &|n| self.lookup(n)).map_err(wrap),
+            other => Err(Error::Invalid(format!(
+                "{}: {at}: expected a number or a string, found {}",
+                self.file,
+                other.kind()
+            ))),
+        }
+    }
+
+    fn matrix(&self, r: &Raw, key: &str) -> Result<RatMatrix> {
+        let cells: Vec<Vec<Raw>> = match r {
+            Raw::Str(s) => crate::io::split_matlab_matrix(s)
+                .map_err(|e| Error::Invalid(format!("{}: key {key}: {}", self.file, e.msg)))?
+                .into_iter()
+                .map(|row| row.into_iter().map(Raw::Str).collect())
+                .collect(),
+            Raw::Number(_) => vec![vec![r.clone()]],
+            Raw::Array(rows) => rows
+                .iter()
+                .map(|row| match row {
+                    Raw::Array(xs) => Ok(xs.clone()),
+                    _ => Err(Error::Invalid(format!(
+                        "{}: key {key}: expected an array of rows",
+                        self.file
+                    ))),
+                })
+                .collect::<Result<_>>()?,
+            _ => {
+                return Err(Error::Invalid(format!(
+                    "{}: key {key}: expected a matrix",
+                    self.file
+                )));
+            }
+        };
+        cells
+            .iter()
+            .enumerate()
+            .map(|(i, row)| {
+                row.iter()
+                    .enumerate()
+                    .map(|(j, x)| {
+                        self.scalar(
+                            x,
+                            &format!("key {key}, row {}, column {}", i + 1, j + 1),
+                            true,
+                        )
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+}

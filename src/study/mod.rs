@@ -1,0 +1,28 @@
+//! Parameter studies: eigenvalues along one parameter $v$ of a family $A(v)$ with entries
+//! in $\mathbb{Q}(v)$, and the exact parameter values where they change qualitatively.
+//!
+//! | entry point | computes |
+//! |---|---|
+//! | [`ParamFamily::from_file`] | the family $A(v)$ of a system file, one parameter symbolic |
+//! | [`charpoly_xv`] | $P(x, v) = p_n(v) \chi_{A(v)}(x)$ exactly (evaluation/interpolation) |
+//! | [`critical_values`] | zero eigenvalues, imaginary pairs, double eigenvalues as algebraic numbers; stability per interval |
+//! | [`sweep`] | float eigenvalues at many parameter values, in parallel |
+//!
+//! The exact path never uses floats: $P$, the Hurwitz determinant and the discriminant are
+//! polynomials over $\mathbb{Q}$, their roots are certified, and the confirmations and
+//! Jordan structures are computed in $\mathbb{Q}(v_0) = \mathbb{Q}[t]/(f)$.
+
+pub mod bivar;
+pub mod critical;
+pub mod family;
+pub mod hurwitz;
+pub mod modp;
+pub mod ratfunc;
+pub mod sweep;
+
+pub use bivar::{BiPoly, charpoly_xv, discriminant_v, hurwitz_delta_n1};
+pub use critical::{CriticalKind, CriticalValue, CriticalValues, StudyInterval, critical_values};
+pub use family::{FamilyForm, ParamFamily};
+pub use hurwitz::{RootCounts, hurwitz_stable, root_counts};
+pub use ratfunc::RatFunc;
+pub use sweep::{SweepResult, sweep, sweep_values};

@@ -1,0 +1,230 @@
+//! Float eigenvalues of $A(v)$ at many parameter values, computed in parallel (rayon).
+//!
+//! The entries of the family are compiled once to `f64` coefficient vectors; each point
+//! then costs one $A(v)$ assembly ($M^{-1}$ by LU in the second-order form) and one
+//! balanced Schur decomposition ([`crate::float::eigenvalues`]). Results are in the order
+//! of the values; eigenvalues per value sorted by (real, imaginary) part, or matched to the
+//! previous value by [`SweepResult::tracks`] for plotting continuous branches.
+
+use super::family::{FamilyForm, ParamFamily, RatMatrix};
+use crate::error::{Error, Result};
+use crate::field::rational_to_f64;
+use nalgebra::DMatrix;
+use num_complex::Complex;
+use rayon::prelude::*;
+
+/// Largest number of sweep points.
+pub const MAX_POINTS: usize = 10_000_000;
+
+/// Eigenvalues along the parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepResult {
+    pub param: String,
+    pub values: Vec<f64>,
+    /// `eigenvalues[i]`: the eigenvalues at `values[i]`, sorted by (re, im).
+    pub eigenvalues: Vec<Vec<Complex<f64>>>,
+}
+
+/// `n` equally spaced values from `a` to `b` (both included; `n = 1` gives `a`).
+pub fn sweep_values(a: f64, b: f64, n: usize) -> Vec<f64> {
+    match n {
+        0 => vec![],
+        1 => vec![a],
+        _ => (0..n)
+            .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
+            .collect(),
+    }
+}
+
+struct FloatEntry {
+    num: Vec<f64>,
+    den: Vec<f64>,
+}
+
+impl FloatEntry {
+    fn eval(&self, v: f64) -> f64 {
+        let h = |c: &[f64]| c.iter().rev().fold(0.0, |acc, x| acc * v + x);
+        if self.den.len() == 1 {
+            h(&self.num) / self.den[0]
+        } else {
+            h(&self.num) / h(&self.den)
+        }
+    }
+}
+
+type FloatMatrix = Vec<Vec<FloatEntry>>;
+
+fn compile(m: &RatMatrix) -> FloatMatrix {
+    m.iter()
+        .map(|r| {
+            r.iter()
+                .map(|f| FloatEntry {
+                    num: f.num.coeffs().iter().map(rational_to_f64).collect(),
+                    den: f.den.coeffs().iter().map(rational_to_f64).collect(),
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn at(m: &FloatMatrix, v: f64) -> DMatrix<f64> {
+    let n = m.len();
+    DMatrix::from_fn(n, n, |i, j| m[i][j].eval(v))
+}
+
+enum Compiled {
+    First(FloatMatrix, Option<FloatMatrix>),
+    Second(FloatMatrix, FloatMatrix, FloatMatrix),
+}
+
+impl Compiled {
+    fn new(f: &ParamFamily) -> Self {
+        match &f.form {
+            FamilyForm::First { a, e } => Compiled::First(compile(a), e.as_ref().map(compile)),
+            FamilyForm::Second { m, l, k } => Compiled::Second(compile(m), compile(l), compile(k)),
+        }
+    }
+    fn state_matrix(&self, v: f64) -> Result<DMatrix<f64>> {
+        match self {
+            Compiled::First(a, None) => Ok(at(a, v)),
+            Compiled::First(a, Some(e)) => at(e, v).lu().solve(&at(a, v)).ok_or(Error::Singular),
+            Compiled::Second(m, l, k) => {
+                let n = m.len();
+                let lu = at(m, v).lu();
+                let mk = lu.solve(&at(k, v)).ok_or(Error::Singular)?;
+                let ml = lu.solve(&at(l, v)).ok_or(Error::Singular)?;
+                let mut a = DMatrix::zeros(2 * n, 2 * n);
+                for i in 0..n {
+                    a[(i, n + i)] = 1.0;
+                    for j in 0..n {
+                        a[(n + i, j)] = -mk[(i, j)];
+                        a[(n + i, n + j)] = -ml[(i, j)];
+                    }
+                }
+                Ok(a)
+            }
+        }
+    }
+}
+
+/// Eigenvalues of $A(v)$ for every `v` in `values`, in parallel; `progress(k)` is called
+/// with the number of points finished so far (from worker threads, unordered).
+///
+/// A value where $A(v)$ is undefined (a pole, singular $M$ or $E$) gives an empty
+/// eigenvalue list rather than an error, so one bad point does not spoil a sweep.
+///
+/// # Errors
+/// `Limit` for more than [`MAX_POINTS`] values.
+pub fn sweep(
+    fam: &ParamFamily,
+    values: &[f64],
+    progress: Option<&(dyn Fn(usize) + Sync)>,
+) -> Result<SweepResult> {
+    if values.len() > MAX_POINTS {
+        return Err(Error::Limit(format!("more than {MAX_POINTS} sweep points")));
+    }
+    let c = Compiled::new(fam);
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let eigenvalues: Vec<Vec<Complex<f64>>> = values
+        .par_iter()
+        .with_min_len(16)
+        .map(|&v| {
+            let ev = c
+                .state_matrix(v)
+                .ok()
+                .filter(|a| a.iter().all(|x| x.is_finite()))
+                .and_then(|a| crate::float::eigenvalues(&a).ok())
+                .unwrap_or_default();
+            if let Some(p) = progress {
+                p(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
+            }
+            ev
+        })
+        .collect();
+    Ok(SweepResult {
+        param: fam.param.clone(),
+        values: values.to_vec(),
+        eigenvalues,
+    })
+}
+
+impl SweepResult {
+    /// The eigenvalues re-ordered into continuous branches: entry `k` of each list
+    /// continues entry `k` of the previous list (greedy nearest match). Points with no
+    /// eigenvalues are skipped in the matching.
+    pub fn tracks(&self) -> Vec<Vec<Complex<f64>>> {
+        let mut out: Vec<Vec<Complex<f64>>> = Vec::with_capacity(self.eigenvalues.len());
+        let mut prev: Option<Vec<Complex<f64>>> = None;
+        for ev in &self.eigenvalues {
+            let Some(p) = prev.as_ref().filter(|p| p.len() == ev.len()) else {
+                out.push(ev.clone());
+                if !ev.is_empty() {
+                    prev = Some(ev.clone());
+                }
+                continue;
+            };
+            let mut used = vec![false; ev.len()];
+            let mut next = vec![Complex::new(0.0, 0.0); ev.len()];
+            for (k, z) in p.iter().enumerate() {
+                let j = (0..ev.len())
+                    .filter(|&j| !used[j])
+                    .min_by(|&i, &j| (ev[i] - z).norm().total_cmp(&(ev[j] - z).norm()))
+                    .expect("as many eigenvalues as before");
+                used[j] = true;
+                next[k] = ev[j];
+            }
+            out.push(next.clone());
+            prev = Some(next);
+        }
+        out
+    }
+
+    /// CSV: `param, re1, im1, re2, im2, ...` (sorted eigenvalues per row).
+    pub fn to_csv(&self) -> String {
+        use std::fmt::Write;
+        let n = self.eigenvalues.iter().map(Vec::len).max().unwrap_or(0);
+        let mut s = self.param.clone();
+        for k in 1..=n {
+            let _ = write!(s, ",re{k},im{k}");
+        }
+        s.push('\n');
+        for (v, ev) in self.values.iter().zip(&self.eigenvalues) {
+            let _ = write!(s, "{v}");
+            for z in ev {
+                let _ = write!(s, ",{},{}", z.re, z.im);
+            }
+            s.push('\n');
+        }
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::study::ratfunc::{RatFunc, eval_ratfunc};
+
+    #[test]
+    fn damped_oscillator_sweep() {
+        // q'' + c q' + q = 0: eigenvalues (-c +- sqrt(c^2 - 4))/2
+        let rf = |s: &str| eval_ratfunc(s, &|n| Ok((n == "c").then(RatFunc::var))).expect("valid");
+        let fam = ParamFamily::second_order(
+            "c",
+            vec![vec![rf("1")]],
+            vec![vec![rf("c")]],
+            vec![vec![rf("1")]],
+        )
+        .unwrap();
+        let vals = sweep_values(0.0, 4.0, 5);
+        let r = sweep(&fam, &vals, None).unwrap();
+        for (c, ev) in vals.iter().zip(&r.eigenvalues) {
+            let sum = ev[0] + ev[1];
+            let prod = ev[0] * ev[1];
+            assert!(
+                (sum.re + c).abs() < 1e-6 && (prod.re - 1.0).abs() < 1e-6,
+                "c = {c}: {ev:?}"
+            );
+        }
+        assert_eq!(r.tracks().len(), 5);
+    }
+}
