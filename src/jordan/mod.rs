@@ -56,6 +56,7 @@ use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use primary::{named_field, rational_field};
+#[cfg(feature = "cli")]
 pub(crate) use roots::fmt_approx;
 use roots::{quadratic_roots, radical_text};
 
@@ -85,17 +86,6 @@ pub struct Eigenvalue {
     pub geometric_multiplicity: usize,
     /// Jordan block sizes, largest first.
     pub blocks: Vec<usize>,
-}
-
-impl Eigenvalue {
-    /// The certified algebraic number (minimal polynomial and isolating region), as
-    /// [`Eigenvalue::number`].
-    ///
-    /// # Errors
-    /// None at present (kept for callers written against the earlier on-demand isolation).
-    pub fn algebraic_number(&self) -> Result<AlgebraicNumber> {
-        Ok(self.number.clone())
-    }
 }
 
 /// The columns of one eigenvalue, exact in one field.
