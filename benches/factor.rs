@@ -12,34 +12,11 @@ use num_traits::One;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-/// Swinnerton-Dyer polynomial for the square roots of `primes` (see tests/poly_factor.rs).
-fn swinnerton_dyer(primes: &[i64]) -> ZPoly {
-    let mut f = ZPoly::x();
-    for &a in primes {
-        let a = BigInt::from(a);
-        let (mut pa, mut pb) = (ZPoly::zero(), ZPoly::zero());
-        for c in f.coeffs().iter().rev() {
-            let na = &(&pa * &ZPoly::x()) + &pb.scale(&a) + ZPoly::constant(c.clone());
-            let nb = &(&pb * &ZPoly::x()) + &pa;
-            pa = na;
-            pb = nb;
-        }
-        f = &(&pa * &pa) - &(&pb * &pb).scale(&a);
-    }
-    f
-}
+#[path = "../tests/common/polys.rs"]
+mod polys;
+use polys::swinnerton_dyer;
 
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-}
+use exactlti::rng::SplitMix64 as SplitMix;
 
 /// Product of `k` random irreducible polynomials of degree `n` with 64-bit coefficients.
 fn random_product(seed: u64, k: usize, n: usize) -> ZPoly {
@@ -49,8 +26,8 @@ fn random_product(seed: u64, k: usize, n: usize) -> ZPoly {
     while found < k {
         let c: Vec<BigInt> = (0..=n)
             .map(|_| {
-                let v = BigInt::from(rng.next());
-                if rng.next() & 1 == 1 { -v } else { v }
+                let v = BigInt::from(rng.next_u64());
+                if rng.next_u64() & 1 == 1 { -v } else { v }
             })
             .collect();
         let g = ZPoly::new(c);

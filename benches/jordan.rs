@@ -23,7 +23,7 @@ fn sliding_masses() -> Matrix<Q> {
 
 /// Same distribution as cases.planted_jordan (not the same random stream).
 fn planted(n: usize, seed: u64) -> Matrix<Q> {
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let evs = [r(0, 1), r(-1, 1), r(2, 1), r(-3, 1), r(1, 2)];
     let mut j = Matrix::zeros(Q, n, n);
     let mut size = 0;

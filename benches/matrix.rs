@@ -14,18 +14,15 @@ use exactlti::field::Rational;
 use exactlti::matrix::over_q as oq;
 use exactlti::qkernels as qk;
 use exactlti::qkernels::{fraction_free as ff, modular as mm};
+use exactlti::rng::Lcg64;
 use std::hint::black_box;
 use std::time::Instant;
 
-struct Lcg(u64);
+struct Lcg(Lcg64);
 
 impl Lcg {
     fn entry(&mut self) -> i64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((self.0 >> 33) % 19) as i64 - 9
+        (self.0.next_u31() % 19) as i64 - 9
     }
     fn matrix(&mut self, m: usize, n: usize) -> Vec<i64> {
         (0..m * n).map(|_| self.entry()).collect()
@@ -66,7 +63,7 @@ fn time<T>(name: &str, reps: usize, mut f: impl FnMut() -> T) {
 }
 
 fn main() {
-    let mut g = Lcg(20240601);
+    let mut g = Lcg(Lcg64(20240601));
     let l = g.matrix(100, 50);
     let r = g.matrix(50, 200);
     let low = to_q(&matmul(100, 50, 200, &l, &r));

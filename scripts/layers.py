@@ -12,7 +12,7 @@ from collections import defaultdict
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "src")
 FLOOR = {
-    "error": 0, "field": 1, "qkernels": 1, "poly": 2, "mpoly": 2, "ratfunc": 2, "algebraic": 3, "numberfield": 3,
+    "error": 0, "rng": 0, "field": 1, "qkernels": 1, "poly": 2, "mpoly": 2, "ratfunc": 2, "algebraic": 3, "numberfield": 3,
     "matrix": 4, "jordan": 5, "system": 6, "realization": 7, "structure": 8,
     "float": 9, "io": 10, "study": 10.5, "report": 11, "cli": 12,
 }

@@ -42,18 +42,43 @@
 //!
 //! ## Layers
 //!
-//! [`field`] → [`poly`] → [`matrix`] → [`jordan`] → [`system`] → [`realization`] →
-//! [`structure`]; [`float`] is a separate nalgebra backend used for cross-checks; [`io`],
-//! [`report`] and [`cli`] sit on top.
+//! Each floor imports only floors below it (`python3 scripts/layers.py` checks the import
+//! graph), lowest first:
+//!
+//! 1. [`error`], [`rng`]: leaves;
+//! 2. [`field`]: the [`field::Field`] trait, Q, quadratic and complex fields;
+//! 3. [`qkernels`]: integer/rational matrix kernels on `BigRational` (modular, Bareiss, the
+//!    integer product), which [`matrix`] dispatches to;
+//! 4. [`poly`]: polynomials over a field, integer polynomials and their factorization;
+//!    beside it [`mpoly`] (multivariate) and [`ratfunc`] (rational functions);
+//! 5. [`algebraic`]: number fields, algebraic numbers, root isolation (needs `Poly<Q>` and
+//!    irreducibility, so it sits above `poly`);
+//! 6. [`matrix`] → [`jordan`] → [`system`] → [`realization`] → [`structure`] (`system` and
+//!    `structure` need only `matrix` and below; [`pencil`] sits on `jordan`);
+//! 7. [`float`]: the nalgebra backend for cross-checks, on `matrix` (feature `float`);
+//! 8. [`io`] (system files), [`report`] (text/JSON/LaTeX), [`cli`] on top (feature `cli`).
+//!
+//! One arrow still runs up, and closes the one import cycle: `field` re-exports
+//! [`algebraic::number_field::NumberField`] for callers that name it there; the re-export
+//! goes once they import it from `algebraic`.
+//!
+//! ## Features
+//!
+//! `cli` (default: [`io`], [`report`], [`cli`] with clap, serde, serde_json and toml) and
+//! `float` (default: [`float`] with nalgebra). `cargo build --lib --no-default-features`
+//! builds the exact core alone.
 #![allow(non_snake_case)]
 #![allow(clippy::needless_range_loop)]
 #![allow(clippy::wrong_self_convention)]
 
 pub mod algebraic;
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod error;
 pub mod field;
+#[cfg(feature = "float")]
 pub mod float;
+#[cfg(feature = "cli")]
 pub mod io;
 pub mod jordan;
 pub mod matrix;
@@ -63,8 +88,11 @@ pub mod poly;
 pub mod qkernels;
 pub mod ratfunc;
 pub mod realization;
+#[cfg(feature = "cli")]
 pub mod report;
+pub mod rng;
 pub mod structure;
+#[cfg(feature = "cli")]
 pub mod study;
 pub mod system;
 

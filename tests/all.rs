@@ -21,6 +21,8 @@ mod cli_mpoly;
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
+#[path = "everyday.rs"]
+mod everyday;
 #[path = "field_axioms.rs"]
 mod field_axioms;
 #[path = "float.rs"]

@@ -214,6 +214,7 @@ fn commands(file: &Path) -> Vec<Command> {
         Command::Jordan {
             file: f(),
             real: false,
+            expand: false,
         },
         Command::Standard { file: f() },
         Command::Scb { file: f() },

@@ -414,7 +414,7 @@ fn bad_input_and_edge_shapes() {
 fn check_real_form_exact(a: &Matrix<Q>) -> exactlti::jordan::RealJordanForm {
     let jf = jordan(a).unwrap();
     assert!(jf.verified, "A = {a}");
-    let rf = jf.real_form().unwrap();
+    let rf = jf.real_form_expanded().unwrap();
     assert!(
         rf.exact && rf.verified && rf.notes.is_empty(),
         "{:?}",

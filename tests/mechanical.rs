@@ -34,7 +34,7 @@ fn random_invertible(n: usize, rng: &mut Rng) -> Matrix<Q> {
 }
 
 fn random_rational(m: usize, n: usize, rng: &mut Rng) -> Matrix<Q> {
-    Matrix::from_fn(Q, m, n, |_, _| rng.rational(4))
+    Matrix::from_fn(Q, m, n, |_, _| common::rational(rng, 4))
 }
 
 /// `x = S x'`: `(S^-1 A S, S^-1 B, C S)`.

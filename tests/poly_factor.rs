@@ -137,24 +137,21 @@ fn irreducible_mod_some_prime(f: &ZPoly) -> bool {
 
 // ---------------------------------------------------------------------- generators ----
 
-struct Rng(u64);
+use exactlti::rng::SplitMix64 as Rng;
 
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
+trait Coeff {
+    fn coeff(&mut self, bits: u32) -> BigInt;
+}
+
+impl Coeff for Rng {
     fn coeff(&mut self, bits: u32) -> BigInt {
         let m = if bits >= 64 {
             u64::MAX
         } else {
             (1u64 << bits) - 1
         };
-        let v = BigInt::from(self.next() & m);
-        if self.next() & 1 == 1 { -v } else { v }
+        let v = BigInt::from(self.next_u64() & m);
+        if self.next_u64() & 1 == 1 { -v } else { v }
     }
 }
 
@@ -173,25 +170,7 @@ fn random_irreducible(rng: &mut Rng, n: usize, bits: u32) -> ZPoly {
     }
 }
 
-/// Swinnerton-Dyer polynomial prod(x ± sqrt(a_1) ± ... ± sqrt(a_k)), built exactly by
-/// P_j(x) = P_{j-1}(x + sqrt a) P_{j-1}(x - sqrt a) = A^2 - a B^2, where
-/// P_{j-1}(x + sqrt a) = A(x) + sqrt(a) B(x) is expanded by Horner's rule.
-fn swinnerton_dyer(primes: &[i64]) -> ZPoly {
-    let mut f = ZPoly::x();
-    for &a in primes {
-        let a = BigInt::from(a);
-        let (mut pa, mut pb) = (ZPoly::zero(), ZPoly::zero());
-        for c in f.coeffs().iter().rev() {
-            // (A + sqrt(a) B)(x + sqrt(a)) + c
-            let na = &(&pa * &ZPoly::x()) + &pb.scale(&a) + ZPoly::constant(c.clone());
-            let nb = &(&pb * &ZPoly::x()) + &pa;
-            pa = na;
-            pb = nb;
-        }
-        f = &(&pa * &pa) - &(&pb * &pb).scale(&a);
-    }
-    f
-}
+use crate::common::polys::swinnerton_dyer;
 
 // ---------------------------------------------------------------- shared invariants ----
 
@@ -410,7 +389,7 @@ fn random_irreducible_products_64bit() {
         let k = 2 + round % 3;
         let planted: Vec<ZPoly> = (0..k)
             .map(|_| {
-                let n = 1 + (rng.next() % 12) as usize;
+                let n = 1 + (rng.next_u64() % 12) as usize;
                 random_irreducible(&mut rng, n, 64)
             })
             .collect();
@@ -532,7 +511,7 @@ proptest! {
         let mut rng = Rng(seed);
         let planted: Vec<ZPoly> =
             (0..k).map(|_| {
-                let n = 1 + (rng.next() % 6) as usize;
+                let n = 1 + (rng.next_u64() % 6) as usize;
                 random_irreducible(&mut rng, n, 16)
             }).collect();
         let f = planted.iter().fold(ZPoly::one(), |a, g| &a * g);

@@ -353,14 +353,15 @@ fn jordan_method_agrees_with_kalman_on_rational_and_quadratic_modes() {
         .to_rational()
         .expect("all modes rational or Q(i) pairs with rational parts");
     assert!(rs.same_markov(&sys, 2 * 5));
-    // a cubic factor with complex roots (x^3 - 2): exact real blocks over Q(Re, Im)
+    // a cubic factor with complex roots (x^3 - 2): exact real blocks over Q(Re, Im) on
+    // request (degree 6), by default the compact pair (Re/Im of entries of Q(theta))
     let cubic = StateSpace::new_strictly_proper(
         qmat![[0, 1, 0], [0, 0, 1], [2, 0, 0]],
         qmat![[0], [0], [1]],
         qmat![[1, 0, 0]],
     )
     .unwrap();
-    let r = minimal_jordan(&cubic).unwrap();
+    let r = exactlti::realization::minimal_jordan_with(&cubic, true).unwrap();
     assert!(r.verified);
     assert_eq!(r.order(), 3);
     assert_eq!(
@@ -369,6 +370,9 @@ fn jordan_method_agrees_with_kalman_on_rational_and_quadratic_modes() {
         "one real root block and one complex pair block"
     );
     assert_eq!(r.blocks[1].a.nrows(), 2);
+    let c = minimal_jordan(&cubic).unwrap();
+    assert!(c.verified && c.order() == 3 && c.blocks[1].compact);
+    assert_eq!((c.blocks[1].order, c.blocks[1].a.nrows()), (2, 1));
 }
 
 #[test]

@@ -21,9 +21,9 @@
 //! | [`isolate_upper`] | isolating boxes of the roots with positive imaginary part |
 //! | [`refine_box`] | a sub-box of an isolating box of at most a given width |
 
-use super::zp;
 use crate::error::{Error, Result};
 use crate::field::Rational;
+use crate::poly::zslice as zp;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
@@ -600,9 +600,7 @@ pub fn refine_box(p: &[BigInt], b: &CBox, pure_imag: bool, width: &Rational) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    fn z(cs: &[i64]) -> Vec<BigInt> {
-        cs.iter().map(|&c| BigInt::from(c)).collect()
-    }
+    use crate::poly::zslice::from_i64s as z;
     #[test]
     fn boxes_of_quartic() {
         // x^4 + 4x^2 + 1: four purely imaginary roots

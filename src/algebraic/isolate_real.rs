@@ -15,8 +15,8 @@
 //! | [`sign_at`] | exact sign of $p(q)$ at a rational $q$ |
 //! | [`refine_real`] | bisection of an isolating interval to a requested width |
 
-use super::zp::{self, ZP};
 use crate::field::Rational;
+use crate::poly::zslice as zp;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
@@ -106,7 +106,7 @@ fn isolate_positive(p: &[BigInt], out: &mut Vec<RealRoot>) {
     }
     let k = positive_root_bound_bits(p);
     // q(x) = p(2^k x)
-    let q: ZP = p
+    let q: Vec<BigInt> = p
         .iter()
         .enumerate()
         .map(|(i, c)| c << (k as usize * i))
@@ -114,7 +114,7 @@ fn isolate_positive(p: &[BigInt], out: &mut Vec<RealRoot>) {
     let q = zp::primitive(&q);
     let scale = Rational::from_integer(BigInt::one() << k as usize);
     // stack of (poly, c, j): interval (c / 2^j, (c + 1) / 2^j) in units of 2^k
-    let mut stack: Vec<(ZP, BigInt, u64)> = vec![(q, BigInt::zero(), 0)];
+    let mut stack: Vec<(Vec<BigInt>, BigInt, u64)> = vec![(q, BigInt::zero(), 0)];
     let mut found: Vec<RealRoot> = vec![];
     while let Some((q, c, j)) = stack.pop() {
         let v = descartes_01(&q);
@@ -130,7 +130,7 @@ fn isolate_positive(p: &[BigInt], out: &mut Vec<RealRoot>) {
         }
         let d = q.len() - 1;
         // q1(x) = 2^d q(x / 2) on (0, 1/2); q2 = q1(x + 1) on (1/2, 1)
-        let q1: ZP = q.iter().enumerate().map(|(i, a)| a << (d - i)).collect();
+        let q1: Vec<BigInt> = q.iter().enumerate().map(|(i, a)| a << (d - i)).collect();
         let mut q2 = q1.clone();
         taylor_shift_one(&mut q2);
         let c2 = &c << 1usize;
@@ -167,7 +167,7 @@ pub fn isolate_real_roots(p: &[BigInt]) -> Vec<RealRoot> {
         zero_root = true;
     }
     let mut neg = vec![];
-    let pm: ZP = p
+    let pm: Vec<BigInt> = p
         .iter()
         .enumerate()
         .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
@@ -256,9 +256,7 @@ pub fn refine_real(p: &[BigInt], r: &RealRoot, width: &Rational) -> RealRoot {
 #[cfg(test)]
 mod tests {
     use super::*;
-    fn z(cs: &[i64]) -> ZP {
-        cs.iter().map(|&c| BigInt::from(c)).collect()
-    }
+    use crate::poly::zslice::from_i64s as z;
     #[test]
     fn isolates() {
         // (x^2 - 2)(x - 1/2)(x + 3) x -> times 2

@@ -26,7 +26,7 @@ pub mod isolate_real;
 pub mod nf_factor;
 pub mod number;
 pub mod number_field;
-pub(crate) mod zp;
+pub(crate) mod zp; // re-export shim, see its docs
 
 pub use nf_factor::factor_over_number_field;
 pub use number::AlgebraicNumber;
@@ -37,6 +37,7 @@ use crate::field::{Q, Rational};
 use crate::poly::factor::factor_zpoly;
 use crate::poly::zpoly::ZPoly;
 use crate::poly::{Poly, monic_from_power_sums, newton_power_sums};
+use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
 /// Leading coefficient and monic irreducible factors with multiplicities.
@@ -67,12 +68,10 @@ pub fn factor_q(p: &Poly<Q>) -> Result<FactorizationQ> {
     if p.deg() == 0 {
         return Ok((lc, vec![]));
     }
-    let z = ZPoly::new(zp::from_poly_q(p));
+    let z = ZPoly::from_poly_q(p);
     let (_, facs) = factor_zpoly(&z)?;
-    let mut out: Vec<(Poly<Q>, usize)> = facs
-        .into_iter()
-        .map(|(f, e)| (zp::to_monic_q(f.coeffs()), e))
-        .collect();
+    let mut out: Vec<(Poly<Q>, usize)> =
+        facs.into_iter().map(|(f, e)| (f.to_monic_q(), e)).collect();
     out.sort_by(|a, b| {
         a.0.deg().cmp(&b.0.deg()).then_with(|| {
             let ca: Vec<&Rational> = a.0.coeffs().iter().rev().collect();
@@ -85,7 +84,7 @@ pub fn factor_q(p: &Poly<Q>) -> Result<FactorizationQ> {
 
 /// True when `p` has degree >= 1 and is irreducible over $\mathbb{Q}$.
 pub fn is_irreducible_q(p: &Poly<Q>) -> bool {
-    p.deg() >= 1 && crate::poly::factor::is_irreducible(&ZPoly::new(zp::from_poly_q(p)))
+    p.deg() >= 1 && crate::poly::factor::is_irreducible(&ZPoly::from_poly_q(p))
 }
 
 fn binomials(n: usize) -> Vec<Vec<Rational>> {
@@ -103,27 +102,34 @@ fn binomials(n: usize) -> Vec<Vec<Rational>> {
 
 /// $\prod_{i,j} (x - (r_i + r_j)/2)$ over the roots $r_i$ of `p` (degree $n^2$).
 pub fn composed_half_sum(p: &Poly<Q>) -> Poly<Q> {
-    let p = p.monic();
-    let n = p.deg();
-    let big = n * n;
-    let s = newton_power_sums(&p, big);
-    let c = binomials(big);
-    let mut t = vec![Rational::from_integer(big.into())];
-    let mut h = Rational::one();
-    for k in 1..=big {
-        h /= Rational::from_integer(2.into());
-        let mut v = Rational::zero();
-        for m in 0..=k {
-            v += &c[k][m] * &s[m] * &s[k - m];
-        }
-        t.push(v * &h);
-    }
-    monic_from_power_sums(&t, big)
+    pair_power_sum_poly(p, false, |k| {
+        Rational::new(BigInt::one(), BigInt::one() << k)
+    })
 }
 
 /// $\prod_{i,j} (y - (r_i - r_j)/(2i))$ over the roots of `p`: real coefficients, the
 /// imaginary parts of the roots are among its real roots.
 pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
+    // (2i)^-k = (-1)^(k/2) / 2^k for even k; odd power sums of differences vanish
+    pair_power_sum_poly(p, true, |k| {
+        if k % 2 == 1 {
+            Rational::zero()
+        } else {
+            let sign = if (k / 2) % 2 == 1 {
+                -BigInt::one()
+            } else {
+                BigInt::one()
+            };
+            Rational::new(sign, BigInt::one() << k)
+        }
+    })
+}
+
+/// The monic polynomial of degree $n^2$ whose power sums are
+/// $t_k = w_k \sum_{i,j} (r_i \pm r_j)^k = w_k \sum_m \binom{k}{m} (\pm 1)^{k-m} s_m s_{k-m}$
+/// ($s_m$ the power sums of the roots of `p`, `-` when `diff`, $w_k$ = `scale(k)`): with
+/// $w_k = w^k$ its roots are $w (r_i \pm r_j)$.
+fn pair_power_sum_poly(p: &Poly<Q>, diff: bool, scale: impl Fn(usize) -> Rational) -> Poly<Q> {
     let p = p.monic();
     let n = p.deg();
     let big = n * n;
@@ -131,25 +137,21 @@ pub fn composed_half_diff_imag(p: &Poly<Q>) -> Poly<Q> {
     let c = binomials(big);
     let mut t = vec![Rational::from_integer(big.into())];
     for k in 1..=big {
-        if k % 2 == 1 {
-            t.push(Rational::zero());
+        let w = scale(k);
+        if w.is_zero() {
+            t.push(w);
             continue;
         }
         let mut v = Rational::zero();
         for m in 0..=k {
             let term = &c[k][m] * &s[m] * &s[k - m];
-            if (k - m) % 2 == 1 {
+            if diff && (k - m) % 2 == 1 {
                 v -= term
             } else {
                 v += term
             }
         }
-        // divide by (2i)^k = 2^k (-1)^(k/2)
-        let mut d = Rational::from_integer(num_bigint::BigInt::one() << k);
-        if (k / 2) % 2 == 1 {
-            d = -d;
-        }
-        t.push(v / d);
+        t.push(v * w);
     }
     monic_from_power_sums(&t, big)
 }

@@ -16,10 +16,10 @@ use super::NumberField;
 use super::display::{quadratic_string, round_sig, split_square};
 use super::isolate_complex::{CBox, isolate_upper, refine_box};
 use super::isolate_real::{RealRoot, bisect, isolate_real_roots, refine_real};
-use super::zp::{self, ZP};
 use crate::error::{Error, Result};
 use crate::field::{Q, Rational, rational_to_f64};
 use crate::poly::Poly;
+use crate::poly::zslice as zp;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -38,7 +38,7 @@ pub(crate) enum Loc {
 #[derive(Clone, Debug)]
 pub struct AlgebraicNumber {
     minpoly: Poly<Q>,
-    zp: ZP,
+    zp: Vec<BigInt>,
     loc: Loc,
 }
 

@@ -107,10 +107,10 @@ impl SystemVisitor for FileCommand<'_> {
         let e = |err| with_path(path, err);
         let s = &t.ss;
         match self.cmd {
-            Command::Jordan { real, .. } => {
+            Command::Jordan { real, expand, .. } => {
                 let jf = jordan_any(&t.a_raw).map_err(e)?;
                 if *real {
-                    let rf = jf.real_form().map_err(e)?;
+                    let rf = jf.real_form_with(*expand).map_err(e)?;
                     // a real form left in complex coordinates (exact = false) is not checked
                     Ok(Outcome::new(rf.report(), !rf.exact || rf.verified))
                 } else {

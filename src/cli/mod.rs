@@ -110,6 +110,10 @@ pub enum Command {
         /// Real Jordan form (2x2 blocks [[a, b], [-b, a]] for complex pairs).
         #[arg(long)]
         real: bool,
+        /// With --real: write every complex pair in an explicit real field (degree up to
+        /// d(d-1) for an eigenvalue of degree d) instead of the compact form.
+        #[arg(long)]
+        expand: bool,
     },
     /// Minimal realization.
     Minreal {

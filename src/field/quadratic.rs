@@ -13,7 +13,6 @@
 use super::{Field, Rational, fmt_rational, rational_to_f64};
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::fmt;
@@ -316,20 +315,6 @@ impl Field for QuadraticField {
             Ordering::Equal => Ordering::Equal,
         })
     }
-}
-
-/// Exact integer square root test helper: `Some(r)` with `r^2 = n` for `n >= 0`.
-pub fn exact_isqrt(n: &BigInt) -> Option<BigInt> {
-    if n.is_negative() {
-        return None;
-    }
-    let r = n.sqrt();
-    if &r * &r == *n { Some(r) } else { None }
-}
-
-/// Greatest common divisor helper re-exported for callers normalising radicands.
-pub fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
-    a.gcd(b)
 }
 
 #[cfg(test)]

@@ -42,6 +42,7 @@ pub mod real;
 pub(crate) mod realfield;
 pub mod response;
 mod roots;
+mod simple;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use primary::PrimaryComponent;
@@ -55,6 +56,7 @@ use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use primary::{named_field, rational_field};
+#[cfg(feature = "cli")]
 pub(crate) use roots::fmt_approx;
 use roots::{quadratic_roots, radical_text};
 
@@ -84,17 +86,6 @@ pub struct Eigenvalue {
     pub geometric_multiplicity: usize,
     /// Jordan block sizes, largest first.
     pub blocks: Vec<usize>,
-}
-
-impl Eigenvalue {
-    /// The certified algebraic number (minimal polynomial and isolating region), as
-    /// [`Eigenvalue::number`].
-    ///
-    /// # Errors
-    /// None at present (kept for callers written against the earlier on-demand isolation).
-    pub fn algebraic_number(&self) -> Result<AlgebraicNumber> {
-        Ok(self.number.clone())
-    }
 }
 
 /// The columns of one eigenvalue, exact in one field.
@@ -149,7 +140,11 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
     for (p, e) in roots::factor_q(&chi)? {
         let rts = roots::certified_roots(&p)?;
         let approx = rts.iter().map(|z| z.1).collect();
-        components.push(PrimaryComponent::compute(a, &p, e, approx)?);
+        components.push(if e == 1 && p.deg() >= 2 {
+            simple::simple_component(a, &chi, &p, approx)?
+        } else {
+            PrimaryComponent::compute(a, &p, e, approx)?
+        });
         numbers.push(rts);
     }
     let mut eigenvalues = vec![];

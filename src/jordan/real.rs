@@ -36,6 +36,7 @@ use super::primary::{named_field, rational_field};
 use super::realfield::{RealParts, identify_real_root, real_parts_field, simplify, theta_powers};
 use super::roots::{factor_q, fmt_approx, quadratic_roots};
 use super::{JordanForm, quadratic_field};
+use crate::algebraic::AlgebraicNumber;
 use crate::error::Result;
 use crate::field::{ComplexPair, Field, NfElem, NumberField, Q, Rational};
 use crate::matrix::Matrix;
@@ -68,15 +69,105 @@ pub struct RealBlock {
     pub j: Option<Matrix<NumberField>>,
     pub t_approx: Vec<Vec<f64>>,
     pub j_approx: Vec<Vec<f64>>,
-    /// Why the block is not exact.
+    /// Why the block is not expanded into a real field (it is then exact in the compact
+    /// form, [`RealBlock::compact`]).
     pub note: Option<String>,
+    /// The compact exact form of a complex pair (when not expanded into a real field).
+    pub compact: Option<CompactPair>,
     pub(crate) map: Option<ReImMap>,
+}
+
+/// The compact exact form of one complex pair $\theta, \bar\theta$ (see the module
+/// docs): the block $[[a, b], [-b, a]]$ with $a = \operatorname{Re}\theta$,
+/// $b = \operatorname{Im}\theta$ as algebraic numbers, and the real columns
+/// $[\operatorname{Re} v_j, \operatorname{Im} v_j]$ of the complex chains $v_j \in
+/// \mathbb{Q}(\theta)^n$, i.e. $T_R = T_C S$ with $S = \frac12\begin{bmatrix} 1 & -i \\ 1
+/// & i\end{bmatrix}$ per pair of columns $(v_j, \bar v_j)$.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CompactPair {
+    /// $K = \mathbb{Q}(\theta)$ marked at $\theta$, displayed with the eigenvalue's symbol.
+    pub field: NumberField,
+    /// The complex chains $V$ over $K$ ($n \times m$), verified $A V = V J_\theta$.
+    pub v: Matrix<NumberField>,
+    /// Display symbols of $\operatorname{Re}\theta$, $\operatorname{Im}\theta$ (`a<k>`,
+    /// `b<k>`), used in `J` unless the part has a closed form.
+    pub re_symbol: String,
+    pub im_symbol: String,
+    /// $\operatorname{Re}\theta$, $\operatorname{Im}\theta$ as certified algebraic numbers
+    /// (minimal polynomial and isolating interval), computed when $\deg p \le$
+    /// [`PARTS_MAX_DEGREE`]; otherwise they are defined through $\theta$ itself.
+    pub re: Option<AlgebraicNumber>,
+    pub im: Option<AlgebraicNumber>,
+}
+
+/// `-x` for a display string (`-b3`, `-(1 + sqrt(2))`).
+fn neg_display(x: &str) -> String {
+    if let Some(rest) = x.strip_prefix('-')
+        && !rest.contains([' ', '+', '-'])
+    {
+        return rest.to_string();
+    }
+    if x.contains([' ', '+']) || x[1..].contains('-') {
+        format!("-({x})")
+    } else {
+        format!("-{x}")
+    }
+}
+
+/// Largest eigenvalue degree for which the minimal polynomials of $\operatorname{Re}\theta$
+/// (degree up to $d(d-1)/2$) and $\operatorname{Im}\theta$ (up to $d(d-1)$) are computed.
+pub const PARTS_MAX_DEGREE: usize = 4;
+
+/// Largest real-field degree that [`JordanForm::real_form`] expands into by default.
+pub const EXPAND_MAX_DEGREE: usize = 4;
+
+impl CompactPair {
+    /// Entry `(r, q)` of the pair block: `a`, `b`, `-b` on the $2 \times 2$ diagonal
+    /// blocks, `1` where the chain couples (`coupling`), else `0`.
+    pub(crate) fn j_entry(&self, r: usize, q: usize, coupling: bool) -> String {
+        if r / 2 == q / 2 {
+            match (r % 2, q % 2) {
+                (0, 0) | (1, 1) => self.re_display(),
+                (0, 1) => self.im_display(),
+                _ => neg_display(&self.im_display()),
+            }
+        } else if coupling {
+            "1".to_string()
+        } else {
+            "0".to_string()
+        }
+    }
+    /// The display of $\operatorname{Re}\theta$ (closed form up to degree 2, else the symbol).
+    pub fn re_display(&self) -> String {
+        match &self.re {
+            Some(x) if x.degree() <= 2 => x.value_string(),
+            _ => self.re_symbol.clone(),
+        }
+    }
+    /// The display of $\operatorname{Im}\theta$ (closed form up to degree 2, else the symbol).
+    pub fn im_display(&self) -> String {
+        match &self.im {
+            Some(x) if x.degree() <= 2 => x.value_string(),
+            _ => self.im_symbol.clone(),
+        }
+    }
+    /// `Re(x)` / `Im(x)` displays of an element of $K$ (plain when $x$ is rational).
+    pub(crate) fn part_strings(&self, x: &NfElem) -> (String, String) {
+        let f = &self.field;
+        if let Some(q) = f.to_rational(x) {
+            return (crate::field::fmt_rational(&q), "0".to_string());
+        }
+        let s = f.fmt_elem(x);
+        (format!("Re({s})"), format!("Im({s})"))
+    }
 }
 
 /// The real Jordan form $A = T J T^{-1}$ with real $T$, $J$.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RealJordanForm {
     pub n: usize,
+    /// Symbols of the eigenvalues (`r<k>`) used in compact blocks, with their definitions.
+    pub symbols: Vec<String>,
     pub blocks: Vec<RealBlock>,
     /// Every block is exact.
     pub exact: bool,
@@ -206,17 +297,36 @@ fn real_field_for(
 }
 
 impl JordanForm {
-    /// The real Jordan form (see the module docs of [`super::real`]).
+    /// The real Jordan form (see the module docs of [`super::real`]): complex pairs are
+    /// expanded into an explicit real field when it has degree at most
+    /// [`EXPAND_MAX_DEGREE`], otherwise given in the compact exact form ([`CompactPair`]).
     ///
     /// # Errors
-    /// None at present beyond internal shape errors; non-exact cases are reported in
-    /// [`RealJordanForm::notes`], never silently.
+    /// None at present beyond internal shape errors.
     pub fn real_form(&self) -> Result<RealJordanForm> {
+        self.real_form_with(false)
+    }
+    /// The real Jordan form with every complex pair expanded into its real field
+    /// $\mathbb{Q}(\operatorname{Re}\theta, \operatorname{Im}\theta)$ (`--expand`), whatever
+    /// its degree ($d(d-1)$ for a generic factor of degree $d$); a pair whose field cannot
+    /// be built stays compact, with a note.
+    ///
+    /// # Errors
+    /// As [`JordanForm::real_form`].
+    pub fn real_form_expanded(&self) -> Result<RealJordanForm> {
+        self.real_form_with(true)
+    }
+    /// The real Jordan form; `expand` as in [`JordanForm::real_form_expanded`].
+    ///
+    /// # Errors
+    /// As [`JordanForm::real_form`].
+    pub fn real_form_with(&self, expand: bool) -> Result<RealJordanForm> {
         let n = self.n();
         let cols = self.root_columns();
         let mut blocks = vec![];
         let mut notes = vec![];
         let mut parts = vec![];
+        let mut symbols = vec![];
         let mut verified = self.verified;
         for rc in cols {
             let e = &self.eigenvalues[rc.eigenvalue];
@@ -235,6 +345,7 @@ impl JordanForm {
                     t: Some(rc.v),
                     j: Some(rc.j),
                     note: None,
+                    compact: None,
                     map: Some(ReImMap::Real),
                 });
                 continue;
@@ -261,10 +372,27 @@ impl JordanForm {
                 t_approx,
                 j_approx,
                 note: None,
+                compact: None,
                 map: None,
             };
-            match real_field_for(self, rc.eigenvalue) {
-                Ok((f, map)) => {
+            let (re_part, im_part) = exact_parts(e);
+            let attempt = expand || expansion_may_be_small(&re_part, &im_part);
+            let expanded = if attempt {
+                match real_field_for(self, rc.eigenvalue) {
+                    Ok((f, map)) if expand || f.degree() <= EXPAND_MAX_DEGREE => Some((f, map)),
+                    Ok(_) => None,
+                    Err(note) => {
+                        if expand {
+                            notes.push(format!("{note}; compact exact form given instead"));
+                        }
+                        None
+                    }
+                }
+            } else {
+                None
+            };
+            match expanded {
+                Some((f, map)) => {
                     block.field = Some(f.clone());
                     block.map = Some(map);
                     let mut t = Matrix::zeros(f.clone(), n, 2 * m);
@@ -287,21 +415,34 @@ impl JordanForm {
                     let j = pair_block(&f, &a, &b, &comp.blocks);
                     let ak = self.a.convert_to(&f);
                     verified &= &ak * &t == &t * &j;
-                    block.t_approx = t.to_approx();
-                    block.j_approx = j.to_approx();
+                    // approximations from the complex embedding (degree d) are kept for
+                    // large fields: a float evaluation in a field of degree d(d-1) is not
+                    // reliable
+                    if f.degree() <= EXPAND_MAX_DEGREE {
+                        block.t_approx = t.to_approx();
+                        block.j_approx = j.to_approx();
+                    }
                     block.t = Some(t);
                     block.j = Some(j);
                 }
-                Err(note) => {
-                    notes.push(note.clone());
-                    block.note = Some(note);
+                None => {
+                    let cp = compact_pair(e, emb, comp.chains.clone(), re_part, im_part);
+                    symbols.push(format!(
+                        "{} = root of {} near {}",
+                        e.symbol,
+                        e.minpoly,
+                        fmt_approx(e.approx)
+                    ));
+                    parts.extend(part_lines(e, &cp));
+                    block.compact = Some(cp);
                 }
             }
             blocks.push(block);
         }
-        let exact = blocks.iter().all(|b| b.t.is_some());
+        let exact = blocks.iter().all(|b| b.t.is_some() || b.compact.is_some());
         Ok(RealJordanForm {
             n,
+            symbols,
             blocks,
             exact,
             verified: verified && exact,
@@ -309,6 +450,73 @@ impl JordanForm {
             parts,
         })
     }
+}
+
+/// $\operatorname{Re}\theta$ and $\operatorname{Im}\theta$ as certified algebraic numbers
+/// when $\deg p \le$ [`PARTS_MAX_DEGREE`] (composed polynomials of degree $d(d-1)/2$ and
+/// $d(d-1)$, factored), else `None`.
+fn exact_parts(e: &super::Eigenvalue) -> (Option<AlgebraicNumber>, Option<AlgebraicNumber>) {
+    if e.minpoly.deg() <= PARTS_MAX_DEGREE {
+        (e.number.try_re().ok(), e.number.try_im().ok())
+    } else {
+        (None, None)
+    }
+}
+
+/// Whether the real field $F = \mathbb{Q}(\operatorname{Re}\theta, \operatorname{Im}\theta)$
+/// may have degree at most [`EXPAND_MAX_DEGREE`]: both parts are known and of degree at
+/// most that ($[F : \mathbb{Q}]$ is at least the degree of each part). The field itself is
+/// only built then (it costs a factorization of degree $d^2$ and arithmetic in $F$).
+fn expansion_may_be_small(re: &Option<AlgebraicNumber>, im: &Option<AlgebraicNumber>) -> bool {
+    matches!((re, im), (Some(a), Some(b))
+        if a.degree() <= EXPAND_MAX_DEGREE && b.degree() <= EXPAND_MAX_DEGREE)
+}
+
+/// The compact form of the pair of eigenvalue `e` (the upper root) with the chains of its
+/// component and its exact parts (when computed).
+fn compact_pair(
+    e: &super::Eigenvalue,
+    field: NumberField,
+    v: Matrix<NumberField>,
+    re: Option<AlgebraicNumber>,
+    im: Option<AlgebraicNumber>,
+) -> CompactPair {
+    let k = e.symbol.trim_start_matches('r');
+    CompactPair {
+        v: v.map(&field, |x| x.clone()),
+        field,
+        re_symbol: format!("a{k}"),
+        im_symbol: format!("b{k}"),
+        re,
+        im,
+    }
+}
+
+/// The legend lines of a compact pair: `r<k> = a<k> + b<k>*i` and each part's definition.
+fn part_lines(e: &super::Eigenvalue, cp: &CompactPair) -> Vec<String> {
+    let define = |sym: &str, what: &str, x: &Option<AlgebraicNumber>, approx: f64| match x {
+        Some(x) if x.degree() <= 2 => None,
+        Some(x) => {
+            let (lo, hi) = x.interval().unwrap_or_default();
+            Some(format!(
+                "{sym} = {what} {} = root of {} in [{}, {}], near {approx:.10}",
+                e.symbol,
+                x.minpoly(),
+                crate::field::fmt_rational(&lo),
+                crate::field::fmt_rational(&hi)
+            ))
+        }
+        None => Some(format!("{sym} = {what} {}, near {approx:.10}", e.symbol)),
+    };
+    let mut out = vec![format!(
+        "{} = {} + {}*i",
+        e.symbol,
+        cp.re_display(),
+        cp.im_display()
+    )];
+    out.extend(define(&cp.re_symbol, "Re", &cp.re, e.approx.0));
+    out.extend(define(&cp.im_symbol, "Im", &cp.im, e.approx.1));
+    out
 }
 
 fn approx_pair_block((a, b): (f64, f64), blocks: &[usize]) -> Vec<Vec<f64>> {

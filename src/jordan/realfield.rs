@@ -45,9 +45,8 @@ use crate::algebraic::number::Loc;
 use crate::algebraic::zp;
 use crate::error::{Error, Result};
 use crate::field::{ComplexField, ComplexPair, Field, NfElem, NumberField, Q, Rational};
-use crate::matrix::Matrix;
 use crate::poly::Poly;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 
 /// A real field with the real and imaginary parts of one root.
 #[derive(Clone, Debug)]
@@ -60,25 +59,6 @@ pub(crate) struct RealParts {
     pub primitive: Option<(Poly<Q>, i64)>,
     /// $\theta^0, \dots, \theta^{d-1}$ in $F(i)$ once checked ([`theta_powers`]).
     pub powers: Vec<ComplexPair<NfElem>>,
-}
-
-/// Power sums $s_0, \dots, s_N$ of the roots of a monic `p` (Newton's identities).
-fn power_sums(p: &Poly<Q>, upto: usize) -> Vec<Rational> {
-    let d = p.deg();
-    let a = |i: usize| p.coeff(i);
-    let mut s = vec![Rational::from_integer(d.into())];
-    for n in 1..=upto {
-        let mut v = if n <= d {
-            a(d - n) * Rational::from_integer(n.into())
-        } else {
-            Rational::zero()
-        };
-        for i in 1..n.min(d + 1) {
-            v += a(d - i) * &s[n - i];
-        }
-        s.push(-v);
-    }
-    s
 }
 
 /// A Gaussian rational $x + y i$.
@@ -124,7 +104,7 @@ impl Dual {
 pub(crate) fn composed_primitive(p: &Poly<Q>, k: i64) -> (Poly<Q>, Poly<Q>, Poly<Q>) {
     let p = p.monic();
     let big = p.deg() * p.deg();
-    let s = power_sums(&p, big);
+    let s = crate::poly::newton_power_sums(&p, big);
     let zero = || (Rational::zero(), Rational::zero());
     let half = Rational::new(1.into(), 2.into());
     let w: G = (half.clone(), Rational::from_integer((-k).into()) * &half);
@@ -297,11 +277,20 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
         let croot = c.approx().0;
         let f = named_field(&g, (croot, 0.0), var);
         // theta = H(c) / P'(c)
-        let Some(den) = nf_inv(&f, &f.elem_from_poly(&dpk)) else {
+        let Some(den) = f.inv(&f.elem_from_poly(&dpk)) else {
             continue;
         };
         let re = f.mul(&f.elem_from_poly(&hr), &den);
         let im = f.mul(&f.elem_from_poly(&hi), &den);
+        // the marked embedding carries (a, b) to the parts of this root: evaluated exactly
+        // at a rational point within 2^-128 of c (a float evaluation of a high-degree
+        // polynomial with large coefficients loses every digit and used to report a
+        // correct field as "marked at another root")
+        if !marked_at(&f, &c, &re, &im, theta)? {
+            return Err(Error::Verification(format!(
+                "the real field of a root of {p} is marked at another root"
+            )));
+        }
         let mut parts = simplify(RealParts {
             field: f,
             re,
@@ -310,21 +299,40 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
             powers: vec![],
         });
         parts.powers = theta_powers(&p, &parts.field, &parts.re, &parts.im)?;
-        // the marked embedding carries (a, b) to the parts of this root
-        let (ta, tb) = theta.approx();
-        let (fa, _) = parts.field.approx(&parts.re);
-        let (fb, _) = parts.field.approx(&parts.im);
-        let tol = 1e-6 * (1.0 + ta.abs() + tb.abs());
-        if (fa - ta).abs() > tol || (fb - tb).abs() > tol {
-            return Err(Error::Verification(format!(
-                "the real field of a root of {p} is marked at another root"
-            )));
-        }
         return Ok(parts);
     }
     Err(Error::Limit(format!(
         "no separating primitive element a + k b found for a root of {p}"
     )))
+}
+
+/// Whether $a(c) + b(c)\,i$ is $\theta$ (not another root): $a$, $b$ are evaluated exactly
+/// at the midpoint of an interval of width $2^{-128}(1 + |c|)$ around $c$ and compared
+/// with the certified approximation of $\theta$.
+fn marked_at(
+    f: &NumberField,
+    c: &AlgebraicNumber,
+    re: &NfElem,
+    im: &NfElem,
+    theta: &AlgebraicNumber,
+) -> Result<bool> {
+    let (lo, hi) = match c.interval() {
+        Some(iv) => iv,
+        None => return Ok(true),
+    };
+    let scale = Rational::one() + lo.abs().max(hi.abs());
+    let width = scale * Rational::new(1.into(), num_bigint::BigInt::one() << 128u32);
+    let c = if &hi - &lo > width {
+        c.refined(&width)?
+    } else {
+        c.clone()
+    };
+    let (lo, hi) = c.interval().unwrap_or((lo, hi));
+    let mid = (&lo + &hi) * Rational::new(1.into(), 2.into());
+    let at = |x: &NfElem| crate::field::rational_to_f64(&f.elem_to_poly(x).eval(&mid));
+    let (ta, tb) = theta.approx();
+    let tol = 1e-6 * (1.0 + ta.abs() + tb.abs());
+    Ok((at(re) - ta).abs() <= tol && (at(im) - tb).abs() <= tol)
 }
 
 /// Degree 1 and 2 fields in their usual presentation ($\mathbb{Q}$, $\mathbb{Q}(\sqrt f)$).
@@ -403,35 +411,10 @@ pub(crate) fn theta_powers(
     Ok(powers)
 }
 
-/// $x^{-1}$ in $F$: the extended Euclidean algorithm for small degrees, else the first
-/// column of the inverse of the multiplication matrix of $x$ (multi-modular over
-/// $\mathbb{Q}$, free of the coefficient growth of the rational remainder sequence).
-pub(crate) fn nf_inv(f: &NumberField, x: &NfElem) -> Option<NfElem> {
-    let d = f.degree();
-    if d <= 8 || f.is_zero(x) {
-        return f.inv(x);
-    }
-    let t = f.generator();
-    let mut cols = vec![x.clone()];
-    for j in 1..d {
-        let next = f.mul(&cols[j - 1], &t);
-        cols.push(next);
-    }
-    let m = Matrix::from_fn(Q, d, d, |i, j| {
-        cols[j].0.get(i).cloned().unwrap_or_else(Rational::zero)
-    });
-    let inv = m.inverse().ok()?;
-    let mut v: Vec<Rational> = (0..d).map(|i| inv.get(i, 0).clone()).collect();
-    while v.last().is_some_and(|c| c.is_zero()) {
-        v.pop();
-    }
-    Some(NfElem(v))
-}
-
 /// Square-freeness of `p` over $\mathbb{Q}$: proven by a square-free image modulo a prime
-/// not dividing the leading coefficient ($\gcd(\bar p, \bar p') = 1$ in
-/// $\mathbb{F}_q[x]$ with $\deg \bar p = \deg p$ implies $\gcd(p, p') = 1$); the exact
-/// gcd over $\mathbb{Q}$ decides when a few primes do not.
+/// not dividing the leading coefficient ([`crate::poly::fp::Zp::is_squarefree`]; a
+/// square-free image of the same degree implies $\gcd(p, p') = 1$); the exact gcd over
+/// $\mathbb{Q}$ decides when a few primes do not.
 pub(crate) fn is_squarefree(p: &Poly<Q>) -> bool {
     let z = zp::from_poly_q(p);
     for q in [
@@ -440,74 +423,16 @@ pub(crate) fn is_squarefree(p: &Poly<Q>) -> bool {
         2_147_483_587,
         2_147_483_579,
     ] {
-        let bq = num_bigint::BigInt::from(q);
-        let red: Vec<u64> = z
-            .iter()
-            .map(|c| {
-                let r = c % &bq;
-                let r = if r < num_bigint::BigInt::zero() {
-                    r + &bq
-                } else {
-                    r
-                };
-                u64::try_from(r).unwrap_or(0)
-            })
-            .collect();
-        if red.last().copied().unwrap_or(0) == 0 {
+        let f = crate::poly::fp::Zp::new(q);
+        let red = f.reduce(&z);
+        if red.len() != z.len() {
             continue;
         }
-        let der: Vec<u64> = red
-            .iter()
-            .enumerate()
-            .skip(1)
-            .map(|(i, c)| (c * (i as u64 % q)) % q)
-            .collect();
-        if gcd_mod(red, der, q).len() == 1 {
+        if f.is_squarefree(&red) {
             return true;
         }
     }
     p.gcd(&p.derivative()).is_one()
-}
-
-fn pow_mod(mut b: u64, mut e: u64, q: u64) -> u64 {
-    let mut r = 1u64;
-    b %= q;
-    while e > 0 {
-        if e & 1 == 1 {
-            r = r * b % q;
-        }
-        b = b * b % q;
-        e >>= 1;
-    }
-    r
-}
-
-/// Monic-free gcd in $\mathbb{F}_q[x]$ (coefficients low degree first, `q < 2^32`).
-fn gcd_mod(mut a: Vec<u64>, mut b: Vec<u64>, q: u64) -> Vec<u64> {
-    let trim = |v: &mut Vec<u64>| {
-        while v.last() == Some(&0) {
-            v.pop();
-        }
-    };
-    trim(&mut a);
-    trim(&mut b);
-    while !b.is_empty() {
-        // a mod b
-        let inv = pow_mod(*b.last().expect("non-empty"), q - 2, q);
-        while a.len() >= b.len() {
-            let c = a.last().copied().unwrap_or(0) * inv % q;
-            let off = a.len() - b.len();
-            for (j, bj) in b.iter().enumerate() {
-                a[off + j] = (a[off + j] + q - c * bj % q) % q;
-            }
-            trim(&mut a);
-            if a.is_empty() {
-                break;
-            }
-        }
-        std::mem::swap(&mut a, &mut b);
-    }
-    a
 }
 
 #[cfg(test)]
@@ -579,9 +504,8 @@ mod tests {
         );
         for x in [p(&[1, 1]), p(&[3, 0, -1, 0, 0, 2, 0, 0, 1])] {
             let x = f.elem_from_poly(&x);
-            let y = nf_inv(&f, &x).unwrap();
+            let y = f.inv(&x).unwrap();
             assert!(f.is_one(&f.mul(&x, &y)));
-            assert_eq!(Some(y), f.inv(&x));
         }
     }
 }

@@ -69,7 +69,7 @@ fn real_approx(p: &Poly<Q>, z: AlgebraicNumber) -> (AlgebraicNumber, f64) {
     if lo == hi {
         return (z, rational_to_f64(&lo));
     }
-    let zp = crate::algebraic::zp::from_poly_q(p);
+    let zp = crate::poly::zslice::from_poly_q(p);
     let c: Vec<f64> = zp
         .iter()
         .map(|x| num_traits::ToPrimitive::to_f64(x).unwrap_or(f64::NAN))

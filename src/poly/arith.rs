@@ -49,12 +49,6 @@ impl<K: Field> Poly<K> {
         let one = field.one();
         Self::monomial(field, one, 1)
     }
-    /// $x - a$.
-    pub fn linear_root(field: K, a: &K::Elem) -> Self {
-        let c = field.neg(a);
-        let one = field.one();
-        Self::new(field, vec![c, one])
-    }
     pub fn field(&self) -> &K {
         &self.field
     }

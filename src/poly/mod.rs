@@ -22,6 +22,7 @@ pub(crate) mod fp;
 mod parse;
 mod power_sums;
 pub mod zpoly;
+pub mod zslice;
 pub use arith::*;
 pub use parse::parse_poly_q;
 pub use power_sums::{monic_from_power_sums, newton_power_sums};

@@ -166,14 +166,7 @@ impl ZPoly {
 
     /// $f'$.
     pub fn derivative(&self) -> Self {
-        Self::new(
-            self.coeffs
-                .iter()
-                .enumerate()
-                .skip(1)
-                .map(|(i, c)| c * BigInt::from(i))
-                .collect(),
-        )
+        Self::new(super::zslice::derivative(&self.coeffs))
     }
 
     /// $f(a)$ by Horner's rule.
@@ -199,16 +192,6 @@ impl ZPoly {
             }
         }
         acc
-    }
-
-    /// $x^k f(x)$, a shift of the coefficients.
-    pub fn shift_up(&self, k: usize) -> Self {
-        if self.is_zero() {
-            return Self::zero();
-        }
-        let mut v = vec![BigInt::zero(); k];
-        v.extend(self.coeffs.iter().cloned());
-        ZPoly { coeffs: v }
     }
 
     /// Pseudo-division: $(q, r)$ with $\operatorname{lc}(g)^{\delta} f = q g + r$,
@@ -433,19 +416,7 @@ fn add_coeffs(a: &[BigInt], b: &[BigInt], sub: bool) -> ZPoly {
 }
 
 fn mul_coeffs(a: &[BigInt], b: &[BigInt]) -> ZPoly {
-    if a.is_empty() || b.is_empty() {
-        return ZPoly::zero();
-    }
-    let mut v = vec![BigInt::zero(); a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        if x.is_zero() {
-            continue;
-        }
-        for (j, y) in b.iter().enumerate() {
-            v[i + j] += x * y;
-        }
-    }
-    ZPoly::new(v)
+    ZPoly::new(super::zslice::mul(a, b))
 }
 
 macro_rules! binop {

@@ -71,40 +71,35 @@ pub fn controllability_structure<K: Field>(
     a.check_square("controllability A")?;
     let n = a.nrows();
     b.check_shape("controllability B", (n, b.ncols()))?;
-    let fld = a.field().clone();
     let m = b.ncols();
-    let mut kappa = vec![0usize; m];
-    let mut basis = Matrix::zeros(fld.clone(), n, 0);
-    let mut alive: Vec<usize> = (0..m).collect();
-    let mut cand = b.clone();
-    let mut block_dims = Vec::new();
-    while !alive.is_empty() && basis.ncols() < n {
-        let both = basis.hstack(&cand)?;
-        let (_, piv) = both.rref();
-        let s = basis.ncols();
-        let new: Vec<usize> = piv.into_iter().filter(|&c| c >= s).map(|c| c - s).collect();
-        if new.is_empty() {
-            break;
+    // Krylov selection: over Q first modulo word-size primes (certified below, exactly),
+    // then, if no prime gives a certified selection, by exact elimination per level.
+    let mut found = None;
+    if let Some(w) = a.field().as_rationals() {
+        let (qa, qb) = (w.view(a.as_slice()), w.view(b.as_slice()));
+        for pr in crate::qkernels::prime::primes(7).take(3) {
+            if let Some(levels) = krylov_levels_mod_p(&pr, n, m, qa, qb)
+                && let Some(sel) = certify_levels(a, b, &levels)
+            {
+                found = Some(sel);
+                break;
+            }
         }
-        let survivors: Vec<usize> = new.iter().map(|&c| alive[c]).collect();
-        for &j in &survivors {
-            kappa[j] += 1;
-        }
-        block_dims.push(new.len());
-        let picked = cand.select_cols(&new);
-        basis = basis.hstack(&picked)?;
-        cand = a * &picked;
-        alive = survivors;
     }
+    let (kappa, basis, block_dims) = match found {
+        Some(sel) => sel,
+        None => krylov_levels_exact(a, b)?,
+    };
     let order = basis.ncols();
     let left = basis.left_nullspace();
     // L in RREF: A_c̄ = (L A) restricted to the pivot columns of L
     let (_, lpiv) = left.rref();
     let la = &left * a;
     let uncontrollable = la.select_cols(&lpiv);
-    let verified = basis.rank() == order
-        && left.nrows() == n - order
-        && left.rank() == n - order
+    // `basis.rank() == order` holds by the selection (certified independent columns);
+    // `left` is in RREF, so its rank is its number of pivots.
+    let verified = left.nrows() == n - order
+        && lpiv.len() == n - order
         && (&left * b).is_zero()
         && la == &uncontrollable * &left
         && kappa.iter().sum::<usize>() == order;
@@ -187,4 +182,177 @@ pub fn descriptor_controllability<K: Field>(
         finite_order: f.nstates(),
         infinite_order: split.n.nrows(),
     })
+}
+
+/// A Krylov selection: per level, the positions (in the level's candidate list) of the
+/// picked candidates.  Level 0's candidates are the columns of $B$, level $k+1$'s are $A$
+/// times level $k$'s picks, in order.
+type Levels = Vec<Vec<usize>>;
+
+/// (indices per input, selected columns, block dimensions).
+type Selection<K> = (Vec<usize>, Matrix<K>, Vec<usize>);
+
+fn reduce_q(pr: &crate::qkernels::prime::Prime, x: &crate::field::Rational) -> Option<u64> {
+    let red = |v: &num_bigint::BigInt| {
+        let (s, l) = v.to_u64_digits();
+        pr.reduce_limbs(s == num_bigint::Sign::Minus, &l)
+    };
+    let d = pr.inv(red(x.denom()))?;
+    Some(pr.mul(red(x.numer()), d))
+}
+
+/// The greedy Krylov selection of $(A \bmod p, B \bmod p)$ (incremental echelon form over
+/// $\mathbb{F}_p$); `None` when a denominator is divisible by $p$.
+fn krylov_levels_mod_p(
+    pr: &crate::qkernels::prime::Prime,
+    n: usize,
+    m: usize,
+    a: &[crate::field::Rational],
+    b: &[crate::field::Rational],
+) -> Option<Levels> {
+    let ap: Vec<u64> = a.iter().map(|x| reduce_q(pr, x)).collect::<Option<_>>()?;
+    let bp: Vec<u64> = b.iter().map(|x| reduce_q(pr, x)).collect::<Option<_>>()?;
+    // echelon rows: (pivot position, vector with 1 at the pivot)
+    let mut ech: Vec<(usize, Vec<u64>)> = Vec::new();
+    let mut cand: Vec<Vec<u64>> = (0..m)
+        .map(|j| (0..n).map(|i| bp[i * m + j]).collect())
+        .collect();
+    let mut levels = Vec::new();
+    while !cand.is_empty() && ech.len() < n {
+        let mut picked = Vec::new();
+        let mut picked_vecs = Vec::new();
+        for (c, v0) in cand.iter().enumerate() {
+            let mut v = v0.clone();
+            for (piv, w) in &ech {
+                let f = v[*piv];
+                if f != 0 {
+                    pr.axpy_neg(&mut v, w, f);
+                }
+            }
+            if let Some(piv) = v.iter().position(|&x| x != 0) {
+                let inv = pr.inv(v[piv])?;
+                pr.scale(&mut v, inv);
+                ech.push((piv, v));
+                picked.push(c);
+                picked_vecs.push(v0.clone());
+            }
+        }
+        if picked.is_empty() {
+            break;
+        }
+        levels.push(picked);
+        cand = picked_vecs
+            .iter()
+            .map(|v| {
+                (0..n)
+                    .map(|i| {
+                        let row = &ap[i * n..(i + 1) * n];
+                        row.iter()
+                            .zip(v)
+                            .fold(0u64, |s, (&x, &y)| pr.add(s, pr.mul(x, y)))
+                    })
+                    .collect()
+            })
+            .collect();
+    }
+    Some(levels)
+}
+
+/// Replays `levels` exactly and certifies it: with $S_{\le k}$ the picks of levels
+/// $\le k$ and $R_k$ the rejected candidates of level $k$ (also those of the level after
+/// the last one when $S$ is not square), one exact RREF of $[S \mid R]$ must show $S$ of
+/// full column rank and every column of $R_k$ in $\mathrm{span}\,S_{\le k}$.  Then by
+/// induction on $K_{k+1} = \mathrm{span}\,B + A K_k$, the Krylov spaces are
+/// $K_k = \mathrm{span}\,S_{\le k}$, so the block dimensions and indices are exact.
+fn certify_levels<K: Field>(a: &Matrix<K>, b: &Matrix<K>, levels: &Levels) -> Option<Selection<K>> {
+    let n = a.nrows();
+    let m = b.ncols();
+    let mut kappa = vec![0usize; m];
+    let mut alive: Vec<usize> = (0..m).collect();
+    let mut cand = b.clone();
+    let mut blocks: Vec<Matrix<K>> = Vec::new();
+    let mut block_dims = Vec::new();
+    // (column of R, number of S columns it may use)
+    let mut rejected: Vec<Matrix<K>> = Vec::new();
+    let mut rej_limit: Vec<usize> = Vec::new();
+    let mut s = 0usize;
+    for pick in levels.iter().map(Some).chain(std::iter::once(None)) {
+        let pick: &[usize] = pick.map_or(&[], |p| p.as_slice());
+        if pick.iter().any(|&c| c >= cand.ncols()) {
+            return None;
+        }
+        let last = pick.is_empty();
+        if last && s == n {
+            break;
+        }
+        s += pick.len();
+        let rej: Vec<usize> = (0..cand.ncols()).filter(|c| !pick.contains(c)).collect();
+        if !rej.is_empty() {
+            rejected.push(cand.select_cols(&rej));
+            rej_limit.extend(std::iter::repeat_n(s, rej.len()));
+        }
+        if last {
+            break;
+        }
+        let survivors: Vec<usize> = pick.iter().map(|&c| alive[c]).collect();
+        for &j in &survivors {
+            kappa[j] += 1;
+        }
+        block_dims.push(pick.len());
+        let picked = cand.select_cols(pick);
+        cand = a * &picked;
+        blocks.push(picked);
+        alive = survivors;
+    }
+    let mut basis = Matrix::zeros(a.field().clone(), n, 0);
+    for blk in &blocks {
+        basis = basis.hstack(blk).ok()?;
+    }
+    let mut both = basis.clone();
+    for r in &rejected {
+        both = both.hstack(r).ok()?;
+    }
+    let (r, piv) = both.rref();
+    if piv.len() != s || piv.iter().enumerate().any(|(i, &c)| i != c) {
+        return None;
+    }
+    let fld = a.field();
+    for (t, &lim) in rej_limit.iter().enumerate() {
+        let col = s + t;
+        if (lim..s).any(|i| !fld.is_zero(r.get(i, col))) {
+            return None;
+        }
+    }
+    Some((kappa, basis, block_dims))
+}
+
+/// The greedy Krylov selection by one exact RREF of $[S \mid \text{candidates}]$ per level.
+fn krylov_levels_exact<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Result<Selection<K>> {
+    let n = a.nrows();
+    let m = b.ncols();
+    let fld = a.field().clone();
+    let mut kappa = vec![0usize; m];
+    let mut basis = Matrix::zeros(fld, n, 0);
+    let mut alive: Vec<usize> = (0..m).collect();
+    let mut cand = b.clone();
+    let mut block_dims = Vec::new();
+    while !alive.is_empty() && basis.ncols() < n {
+        let both = basis.hstack(&cand)?;
+        let (_, piv) = both.rref();
+        let s = basis.ncols();
+        let new: Vec<usize> = piv.into_iter().filter(|&c| c >= s).map(|c| c - s).collect();
+        if new.is_empty() {
+            break;
+        }
+        let survivors: Vec<usize> = new.iter().map(|&c| alive[c]).collect();
+        for &j in &survivors {
+            kappa[j] += 1;
+        }
+        block_dims.push(new.len());
+        let picked = cand.select_cols(&new);
+        basis = basis.hstack(&picked)?;
+        cand = a * &picked;
+        alive = survivors;
+    }
+    Ok((kappa, basis, block_dims))
 }

@@ -38,7 +38,6 @@ use crate::jordan::{chains::jordan_chains, jordan};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::system::StateSpace;
-use num_traits::Zero;
 use std::sync::Arc;
 
 /// One real block of the result: its field, and its (A, B, C) over that field.
@@ -46,10 +45,24 @@ use std::sync::Arc;
 pub struct RealModalBlock {
     /// Display of the eigenvalue(s) (`-1 + i`, `sqrt(3)*i`, `-2`, ...).
     pub eigenvalue: String,
+    /// The real field of the entries; for a compact pair $K = \mathbb{Q}(\theta)$ marked
+    /// at $\theta$ (see [`RealModalBlock::compact`]).
     pub field: NumberField,
+    /// The block's $(A, B, C)$ over `field`; for a compact pair the complex modal data
+    /// $(J_\theta, W B, C V)$ over $K$, from which the real block is read off as
+    /// $A_r = [[\mathrm{Re}, \mathrm{Im}], [-\mathrm{Im}, \mathrm{Re}]]$ of $J_\theta$,
+    /// $B_r = [\mathrm{Re}\, WB; -\mathrm{Im}\, WB]$, $C_r = [2\,\mathrm{Re}\, CV,
+    /// 2\,\mathrm{Im}\, CV]$ (interleaved per state).
     pub a: Matrix<NumberField>,
     pub b: Matrix<NumberField>,
     pub c: Matrix<NumberField>,
+    /// A complex pair given in the compact form: the real block's entries are the real
+    /// and imaginary parts of the $K$-entries above (displayed `Re(...)`, `Im(...)`, with
+    /// `a<k>`, `b<k>` for $\mathrm{Re}\,\theta$, $\mathrm{Im}\,\theta$), never expanded
+    /// into $\mathbb{Q}(\mathrm{Re}\,\theta, \mathrm{Im}\,\theta)$ of degree up to $d(d-1)$.
+    pub compact: bool,
+    /// Order of the real block (twice the complex order for a pair).
+    pub order: usize,
 }
 
 /// The Jordan-method minimal realization.
@@ -104,53 +117,82 @@ fn drop_modes(
     (keep, sizes)
 }
 
-/// Newton power sums $p_j = \sum_i \theta_i^j$, $j < m$, of the roots of the monic `p`.
+/// Newton power sums $p_j = \sum_i \theta_i^j$, $j < m$, of the roots of `p`
+/// ([`crate::poly::newton_power_sums`]).
 fn power_sums(p: &Poly<Q>, m: usize) -> Vec<Rational> {
-    let d = p.deg();
-    let e = |i: usize| -> Rational {
-        // coefficient of x^{d-i} is (-1)^i e_i
-        let c = p.coeff(d - i);
-        if i.is_multiple_of(2) { c } else { -c }
-    };
-    let mut s: Vec<Rational> = vec![Rational::from_integer(d.into())];
-    for j in 1..m {
-        let mut v = Rational::zero();
-        for i in 1..=(j - 1).min(d) {
-            let term = e(i) * &s[j - i];
-            if i % 2 == 1 { v += term } else { v -= term }
-        }
-        if j <= d {
-            let term = e(j) * Rational::from_integer(j.into());
-            if j % 2 == 1 { v += term } else { v -= term }
-        }
-        s.push(v);
-    }
+    let mut s = crate::poly::newton_power_sums(&p.monic(), m.saturating_sub(1));
+    s.truncate(m);
     s
 }
 
-/// $\mathrm{Tr}_{K/\mathbb{Q}}$ of an element of $K = \mathbb{Q}[t]/(p)$.
-fn trace(sums: &[Rational], x: &NfElem) -> Rational {
-    x.0.iter().zip(sums).map(|(c, s)| c * s).sum()
+/// Adds $\mathrm{Tr}_{K/\mathbb{Q}}(C_p J_\theta^k B_p)$ to `sum[k]` for every $k$, without
+/// products in $K$ per $k$: $(J_\theta^k)_{l, l+r} = \binom kr \theta^{k-r}$ inside a Jordan
+/// block, so each entry is a sum of $\binom kr \mathrm{Tr}(\theta^{k-r} x)$ over the
+/// products $x = C_{il} B_{l+r,j}$ (computed once), and $\mathrm{Tr}(\theta^e x) = \sum_c
+/// x_c\, s_{e+c}$ with the power sums $s$ of the factor.
+fn add_traces(c: &Compact, sum: &mut [Matrix<Q>]) {
+    let kmax = sum.len();
+    let f = &c.field;
+    let s = c.a.nrows();
+    let sums = power_sums(&c.factor, kmax + c.factor.deg() + 1);
+    let mut start = vec![0; s];
+    for l in 1..s {
+        start[l] = if f.is_zero(c.a.get(l - 1, l)) {
+            l
+        } else {
+            start[l - 1]
+        };
+    }
+    for i in 0..c.c.nrows() {
+        for j in 0..c.b.ncols() {
+            for l in 0..s {
+                for l2 in l..s {
+                    if start[l2] != start[l] {
+                        continue;
+                    }
+                    let x = f.mul(c.c.get(i, l), c.b.get(l2, j));
+                    if f.is_zero(&x) {
+                        continue;
+                    }
+                    let r = l2 - l;
+                    // binom(k, r) for k = r, r + 1, ...
+                    let mut binom = Rational::from_integer(1.into());
+                    for (k, mk) in sum.iter_mut().enumerate().skip(r) {
+                        if k > r {
+                            binom = binom * Rational::from_integer(k.into())
+                                / Rational::from_integer((k - r).into());
+                        }
+                        let tr: Rational = x.0.iter().zip(&sums[k - r..]).map(|(a, b)| a * b).sum();
+                        let cur = mk.get(i, j) + &(&binom * &tr);
+                        mk.set(i, j, cur);
+                    }
+                }
+            }
+        }
+    }
 }
 
-/// The real field $F = \mathbb{Q}(\mathrm{Re}\,\theta, \mathrm{Im}\,\theta)$ of the complex root of
-/// `p` near `theta`, with $\mathrm{Re}\,\theta$ and $\mathrm{Im}\,\theta$ as elements of $F$
-/// (primitive element construction of `jordan::realfield`).
-fn real_parts_field(
-    p: &Poly<Q>,
-    theta: (f64, f64),
-    var: &str,
-) -> Result<(NumberField, NfElem, NfElem)> {
-    let rts = AlgebraicNumber::roots_of_irreducible(p)?;
-    let an = rts
+/// The certified root of the irreducible `p` closest to the approximation `theta`.
+fn closest_root(p: &Poly<Q>, theta: (f64, f64)) -> Option<AlgebraicNumber> {
+    let d = |z: &AlgebraicNumber| (z.approx().0 - theta.0).hypot(z.approx().1 - theta.1);
+    AlgebraicNumber::roots_of_irreducible(p)
+        .ok()?
         .into_iter()
-        .min_by(|x, y| {
-            let d = |z: &AlgebraicNumber| (z.approx().0 - theta.0).hypot(z.approx().1 - theta.1);
-            d(x).total_cmp(&d(y))
-        })
-        .expect("degree >= 1");
-    let parts = crate::jordan::realfield::real_parts_field(&an, var)?;
-    Ok((parts.field, parts.re, parts.im))
+        .min_by(|x, y| d(x).total_cmp(&d(y)))
+}
+
+/// Whether the real field of the complex root `z` may be small (both parts of degree at
+/// most [`crate::jordan::real::EXPAND_MAX_DEGREE`], computed only for eigenvalues of
+/// degree at most [`crate::jordan::real::PARTS_MAX_DEGREE`]), as for the real Jordan form.
+fn small_real_field(z: &AlgebraicNumber) -> bool {
+    use crate::jordan::real::{EXPAND_MAX_DEGREE, PARTS_MAX_DEGREE};
+    if z.degree() > PARTS_MAX_DEGREE {
+        return false;
+    }
+    match (z.try_re(), z.try_im()) {
+        (Ok(a), Ok(b)) => a.degree() <= EXPAND_MAX_DEGREE && b.degree() <= EXPAND_MAX_DEGREE,
+        _ => false,
+    }
 }
 
 /// Splits an element $e = \sum c_j t^j$ of $K$ at $t = a + i\beta$ into real and imaginary
@@ -178,6 +220,17 @@ fn compact_component(
         return Ok(None);
     }
     let theta = comp.root_elem();
+    if keep.len() == 1 {
+        // one excited and observed mode (a simple eigenvalue): already minimal
+        return Ok(Some(Compact {
+            a: Matrix::from_vec(k.clone(), 1, 1, vec![theta]),
+            b: bk.select_rows(&keep),
+            c: ck.select_cols(&keep),
+            field: k,
+            factor: comp.factor.clone(),
+            roots: comp.roots.clone(),
+        }));
+    }
     let nilp = crate::jordan::chains::jordan_block_matrix(&k, &k.zero(), &sizes);
     let trimmed =
         StateSpace::new_strictly_proper(nilp, bk.select_rows(&keep), ck.select_cols(&keep))?;
@@ -198,11 +251,23 @@ fn compact_component(
     }))
 }
 
-/// Minimal realization by the Jordan-form method.
+/// Minimal realization by the Jordan-form method, complex pairs expanded into their real
+/// field only when it is small (degree at most [`crate::jordan::real::EXPAND_MAX_DEGREE`]),
+/// otherwise in the compact form ([`RealModalBlock::compact`]).
 ///
 /// # Errors
-/// Errors of the Jordan decomposition and of the real-field construction.
+/// Errors of the Jordan decomposition.
 pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
+    minimal_jordan_with(sys, false)
+}
+
+/// As [`minimal_jordan`]; `expand` writes every complex pair in its real field
+/// $\mathbb{Q}(\mathrm{Re}\,\theta, \mathrm{Im}\,\theta)$ (degree up to $d(d-1)$; a pair
+/// whose field cannot be built stays compact).
+///
+/// # Errors
+/// Errors of the Jordan decomposition.
+pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMinimal> {
     let n = sys.nstates();
     let jf = jordan(&sys.a)?;
     let mut stage1 = 0;
@@ -220,27 +285,23 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
         .map(|_| Matrix::zeros(Q, sys.noutputs(), sys.ninputs()))
         .collect();
     for c in &comps {
-        let sums = power_sums(&c.factor, c.factor.deg().max(1));
-        let mut ab = c.b.clone();
-        for mk in sum.iter_mut() {
-            let m = &c.c * &ab;
-            let t = Matrix::from_fn(Q, m.nrows(), m.ncols(), |i, j| trace(&sums, m.get(i, j)));
-            *mk = &*mk + &t;
-            ab = &c.a * &ab;
-        }
+        add_traces(c, &mut sum);
     }
     let mcm = mcmillan_degree(sys);
     let verified = sum == markov && r == mcm;
     // real blocks
     let mut blocks = vec![];
-    let mut symbols = vec![];
+    let mut symbols: Vec<(String, String)> = vec![];
     for c in &comps {
         let p = &c.factor;
         for (j, &(re, im)) in c.roots.iter().enumerate() {
             if im < 0.0 {
                 continue;
             }
-            let var = format!("r{}", symbols.len() + 1);
+            let var = format!(
+                "r{}",
+                symbols.iter().filter(|(k, _)| k.starts_with('r')).count() + 1
+            );
             if im == 0.0 || p.deg() == 1 {
                 // a real root: the same data in K marked at this root
                 let f = NumberField(Arc::new(NumberFieldCtx {
@@ -263,10 +324,50 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
                     a: conv(&c.a),
                     b: conv(&c.b),
                     c: conv(&c.c),
+                    compact: false,
+                    order: c.a.nrows(),
                 });
                 continue;
             }
-            let (f, a_re, beta) = real_parts_field(p, (re, im), &var)?;
+            let number = closest_root(p, (re, im));
+            let ev = number
+                .as_ref()
+                .map(|z| z.value_string())
+                .unwrap_or_default();
+            let expanded = match &number {
+                Some(z) if expand || small_real_field(z) => {
+                    crate::jordan::realfield::real_parts_field(z, &var)
+                        .ok()
+                        .map(|parts| (parts.field, parts.re, parts.im))
+                }
+                _ => None,
+            };
+            let Some((f, a_re, beta)) = expanded else {
+                // compact: the complex modal data over K marked at theta
+                let f = NumberField(Arc::new(NumberFieldCtx {
+                    modulus: c.field.modulus().clone(),
+                    root: (re, im),
+                    var: var.clone(),
+                }));
+                let k = var.trim_start_matches('r').to_string();
+                symbols.push((
+                    var.clone(),
+                    format!("root of {p} near {re:.10} + {im:.10}*i"),
+                ));
+                symbols.push((format!("a{k}"), format!("Re {var}")));
+                symbols.push((format!("b{k}"), format!("Im {var}")));
+                let conv = |m: &Matrix<NumberField>| m.map(&f, |x| x.clone());
+                blocks.push(RealModalBlock {
+                    eigenvalue: format!("{ev} (and its conjugate)"),
+                    field: f.clone(),
+                    a: conv(&c.a),
+                    b: conv(&c.b),
+                    c: conv(&c.c),
+                    compact: true,
+                    order: 2 * c.a.nrows(),
+                });
+                continue;
+            };
             if f.degree() > 1 {
                 symbols.push((
                     var,
@@ -302,22 +403,14 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
                     cc.set(row, 2 * i + 1, f.mul(&two, &y));
                 }
             }
-            let ev = AlgebraicNumber::roots_of_irreducible(p)
-                .ok()
-                .and_then(|v| {
-                    v.into_iter().min_by(|x, y| {
-                        ((x.approx().0 - re).hypot(x.approx().1 - im))
-                            .total_cmp(&(y.approx().0 - re).hypot(y.approx().1 - im))
-                    })
-                })
-                .map(|z| z.value_string())
-                .unwrap_or_default();
             blocks.push(RealModalBlock {
                 eigenvalue: format!("{ev} (and its conjugate)"),
                 field: f,
+                order: 2 * s,
                 a,
                 b,
                 c: cc,
+                compact: false,
             });
         }
     }
@@ -342,6 +435,9 @@ impl JordanMinimal {
         let mut b: Option<Matrix<Q>> = None;
         let mut c: Option<Matrix<Q>> = None;
         for blk in &self.blocks {
+            if blk.compact {
+                return None;
+            }
             a.push(conv(&blk.a)?);
             let bb = conv(&blk.b)?;
             let cb = conv(&blk.c)?;
@@ -383,6 +479,13 @@ pub fn minimal_jordan_rational(sys: &StateSpace<Q>) -> Result<super::MinimalReal
     let mut c = Matrix::zeros(Q, p, n);
     let mut off = 0;
     for blk in &jm.blocks {
+        if blk.compact {
+            return Err(crate::error::Error::Unsupported(format!(
+                "the Jordan-method realization keeps the complex pair {} in compact form \
+                 (entries Re/Im of elements of {}): use realization::minimal_jordan",
+                blk.eigenvalue, blk.field
+            )));
+        }
         let q = |x: &NfElem| {
             blk.field.to_rational(x).ok_or_else(|| {
                 crate::error::Error::Unsupported(format!(

@@ -48,7 +48,9 @@ pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_
 pub use from_transfer::{TransferRealization, realize_transfer};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
-pub use jordan_method::{JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational};
+pub use jordan_method::{
+    JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational, minimal_jordan_with,
+};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};

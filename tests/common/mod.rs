@@ -1,29 +1,18 @@
 //! Shared test helpers: a deterministic generator and the three test fields.
 #![allow(dead_code)]
 pub mod pencils;
+pub mod polys;
 pub mod systems;
 
 use exactlti::field::{Field, Q, QuadraticField, Rational};
 use exactlti::matrix::Matrix;
 
-/// SplitMix64: a tiny deterministic generator (fixed seeds, no external crate).
-pub struct Rng(pub u64);
+/// The library's SplitMix64 ([`exactlti::rng::SplitMix64`]): `Rng(seed)`, `next_u64`, `int`.
+pub use exactlti::rng::SplitMix64 as Rng;
 
-impl Rng {
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E3779B97F4A7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58476D1CE4E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D049BB133111EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform integer in `lo..=hi`.
-    pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next_u64() % ((hi - lo + 1) as u64)) as i64
-    }
-    pub fn rational(&mut self, range: i64) -> Rational {
-        Rational::new(self.int(-range, range).into(), self.int(1, 3).into())
-    }
+/// `n / d` with `n` in `-range..=range` and `d` in `1..=3`.
+pub fn rational(rng: &mut Rng, range: i64) -> Rational {
+    Rational::new(rng.int(-range, range).into(), rng.int(1, 3).into())
 }
 
 /// Iteration count scaled by `EXACTLTI_TEST_MULTIPLIER` (FLINT style).
@@ -37,9 +26,9 @@ pub fn iters(base: usize) -> usize {
 
 /// A random element of `k`: rational, or `a + b*g` for the field generator `g` given.
 pub fn elem<K: Field>(k: &K, gen_elem: &Option<K::Elem>, rng: &mut Rng) -> K::Elem {
-    let a = k.from_rational(&rng.rational(5));
+    let a = k.from_rational(&rational(rng, 5));
     match gen_elem {
-        Some(g) if rng.int(0, 2) == 0 => k.add(&a, &k.mul(&k.from_rational(&rng.rational(3)), g)),
+        Some(g) if rng.int(0, 2) == 0 => k.add(&a, &k.mul(&k.from_rational(&rational(rng, 3)), g)),
         _ => a,
     }
 }

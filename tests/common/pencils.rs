@@ -5,21 +5,8 @@
 use exactlti::field::{Q, Rational};
 use exactlti::matrix::Matrix;
 
-/// SplitMix64 (same stream as `tests/common::Rng`).
-pub struct PencilRng(pub u64);
-
-impl PencilRng {
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E3779B97F4A7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58476D1CE4E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D049BB133111EB);
-        z ^ (z >> 31)
-    }
-    pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next_u64() % ((hi - lo + 1) as u64)) as i64
-    }
-}
+/// The library's SplitMix64 (same stream as `tests/common::Rng`).
+pub use exactlti::rng::SplitMix64 as PencilRng;
 
 /// The planted canonical structure.
 #[derive(Clone, Debug, Default)]

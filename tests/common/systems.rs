@@ -3,6 +3,7 @@
 
 use exactlti::field::{Q, Rational};
 use exactlti::matrix::Matrix;
+use exactlti::rng::SplitMix64;
 use exactlti::system::StateSpace;
 
 /// 10-DOF sliding masses (Minaker & Gonzalez sec. 4.1): two fixed-fixed chains of five unit
@@ -48,19 +49,15 @@ pub struct Planted {
     pub tinv: Matrix<Q>,
 }
 
-/// SplitMix64 for the planted systems (self-contained: the benches include this file alone).
-pub struct PlantRng(pub u64);
+/// The planted systems' generator: the library's SplitMix64 with the drawing helpers below.
+pub struct PlantRng(pub SplitMix64);
 
 impl PlantRng {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E3779B97F4A7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58476D1CE4E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D049BB133111EB);
-        z ^ (z >> 31)
+    pub fn new(seed: u64) -> Self {
+        PlantRng(SplitMix64(seed))
     }
     pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next_u64() % ((hi - lo + 1) as u64)) as i64
+        self.0.int(lo, hi)
     }
     /// `k / d` with `k` in `-2..=2` and `d` in `{1, 2}`: exact in binary floating point.
     fn small(&mut self) -> Rational {
@@ -95,7 +92,7 @@ pub fn planted(n: usize, seed: u64) -> Planted {
 /// by about $\lVert A_{33}\rVert / \sigma_{\min}$ of a coupling block at every step, while
 /// the exact order is unaffected (the McMillan degree is still `n / 2`).
 pub fn planted_scaled(n: usize, seed: u64, hidden_scale: i64) -> Planted {
-    let mut rng = PlantRng(seed ^ 0x5EED_0000_0000_0000);
+    let mut rng = PlantRng::new(seed ^ 0x5EED_0000_0000_0000);
     let (m, p) = (2, 2);
     let r = n / 2;
     let rest = n - r;

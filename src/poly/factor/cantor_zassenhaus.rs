@@ -18,19 +18,8 @@
 use crate::poly::fp::{PolyP, Zp, trim};
 use num_bigint::BigUint;
 
-/// A small deterministic generator (SplitMix64) for the random splitting polynomials.
-#[derive(Clone, Debug)]
-pub(crate) struct SplitMix(pub u64);
-
-impl SplitMix {
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-}
+/// The deterministic generator for the random splitting polynomials.
+pub(crate) use crate::rng::SplitMix64 as SplitMix;
 
 /// Rows $x^{jp} \bmod f$ for $0 \le j < \deg f$.
 fn frobenius_rows(k: &Zp, f: &[u64]) -> Vec<PolyP> {

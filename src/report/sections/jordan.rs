@@ -114,8 +114,12 @@ impl RealJordanForm {
             for r in 0..n {
                 for q in 0..w {
                     ta[r][off + q] = (b.t_approx[r][q], 0.0);
-                    te[r][off + q] = match (&b.field, &b.t) {
-                        (Some(f), Some(t)) => f.fmt_elem(t.get(r, q)),
+                    te[r][off + q] = match (&b.field, &b.t, &b.compact) {
+                        (Some(f), Some(t), _) => f.fmt_elem(t.get(r, q)),
+                        (_, _, Some(cp)) => {
+                            let (re, im) = cp.part_strings(cp.v.get(r, q / 2));
+                            if q % 2 == 0 { re } else { im }
+                        }
                         _ => format!("~{}", b.t_approx[r][q]),
                     };
                 }
@@ -123,8 +127,9 @@ impl RealJordanForm {
             for r in 0..w {
                 for q in 0..w {
                     ja[off + r][off + q] = (b.j_approx[r][q], 0.0);
-                    je[off + r][off + q] = match (&b.field, &b.j) {
-                        (Some(f), Some(j)) => f.fmt_elem(j.get(r, q)),
+                    je[off + r][off + q] = match (&b.field, &b.j, &b.compact) {
+                        (Some(f), Some(j), _) => f.fmt_elem(j.get(r, q)),
+                        (_, _, Some(cp)) => cp.j_entry(r, q, b.j_approx[r][q] == 1.0),
                         _ => format!("~{}", b.j_approx[r][q]),
                     };
                 }
@@ -154,11 +159,25 @@ impl RealJordanForm {
                 ))
             })
             .collect();
+        let compact = self.blocks.iter().any(|b| b.compact.is_some());
         let mut r = Report::titled("Real Jordan form")
             .with("J", Value::Matrix(Box::new(jo)))
             .with("T", Value::Matrix(Box::new(to)))
             .bool("exact", self.exact)
             .bool("verified", self.verified);
+        if compact {
+            r = r.str(
+                "presentation",
+                "compact: each complex pair r<k> = a<k> + b<k>*i has the block [[a, b], [-b, a]] \
+                 and the columns Re v, Im v of its complex chains v in QQ(r<k>) (T_R = T_C S); \
+                 verified on the complex side (A T_C = T_C J_C in QQ(r<k>), which implies \
+                 A T_R = T_R J_R); `--expand` writes the entries in a real field",
+            );
+            r = r.list(
+                "symbols",
+                self.symbols.iter().cloned().map(Value::Str).collect(),
+            );
+        }
         if !fields.is_empty() {
             r = r.list("fields", fields);
         }

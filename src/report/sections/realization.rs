@@ -4,8 +4,79 @@
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
 use crate::field::{Field, NfElem};
-use crate::realization::{JordanMinimal, MinimalRealization, ModalTable, StandardForm};
+use crate::realization::{
+    JordanMinimal, MinimalRealization, ModalTable, RealModalBlock, StandardForm,
+};
 use crate::report::{MatrixOut, Report, Value, str_list};
+
+/// Writes a compact pair block at offset `off`: state `2i` is $\mathrm{Re}\, z_i$, state
+/// `2i + 1` is $-\mathrm{Im}\, z_i$ (the module docs' convention), entries displayed as
+/// `Re(...)`, `Im(...)` of the $K$-entries and `a<k>`, `b<k>` for the parts of $\theta$.
+fn compact_outputs(
+    blk: &RealModalBlock,
+    off: usize,
+    (a, b, c): (&mut MatrixOut, &mut MatrixOut, &mut MatrixOut),
+) {
+    let f = &blk.field;
+    let k = f.0.var.trim_start_matches('r').to_string();
+    let theta = f.generator();
+    // display of Re x / Im x (scaled by `scale`, negated by `neg`) and its approximation
+    let part = |x: &NfElem, im: bool, scale: i64, neg: bool| -> (String, f64) {
+        let (ar, ai) = f.approx(x);
+        let v = scale as f64 * if im { ai } else { ar } * if neg { -1.0 } else { 1.0 };
+        let sign = if neg { "-" } else { "" };
+        let pre = if scale == 1 {
+            String::new()
+        } else {
+            format!("{scale}*")
+        };
+        let text = if let Some(q) = f.to_rational(x) {
+            if im {
+                "0".to_string()
+            } else {
+                let q = q * crate::field::Rational::from_integer(scale.into());
+                crate::field::fmt_rational(&if neg { -q } else { q })
+            }
+        } else if *x == theta {
+            format!("{sign}{pre}{}{k}", if im { "b" } else { "a" })
+        } else {
+            let s = f.fmt_elem(x);
+            format!("{sign}{pre}{}({s})", if im { "Im" } else { "Re" })
+        };
+        (text, v)
+    };
+    let put = |o: &mut MatrixOut, i: usize, j: usize, (text, v): (String, f64)| {
+        o.latex[i][j] = text.clone();
+        o.exact[i][j] = text;
+        o.approx[i][j] = (v, 0.0);
+    };
+    let s = blk.a.nrows();
+    for i in 0..s {
+        for j in 0..s {
+            let x = blk.a.get(i, j);
+            // [[Re, Im], [-Im, Re]] per complex entry
+            put(a, off + 2 * i, off + 2 * j, part(x, false, 1, false));
+            put(a, off + 2 * i, off + 2 * j + 1, part(x, true, 1, false));
+            put(a, off + 2 * i + 1, off + 2 * j, part(x, true, 1, true));
+            put(
+                a,
+                off + 2 * i + 1,
+                off + 2 * j + 1,
+                part(x, false, 1, false),
+            );
+        }
+        for col in 0..blk.b.ncols() {
+            let x = blk.b.get(i, col);
+            put(b, off + 2 * i, col, part(x, false, 1, false));
+            put(b, off + 2 * i + 1, col, part(x, true, 1, true));
+        }
+        for row in 0..blk.c.nrows() {
+            let x = blk.c.get(row, i);
+            put(c, row, off + 2 * i, part(x, false, 2, false));
+            put(c, row, off + 2 * i + 1, part(x, true, 2, false));
+        }
+    }
+}
 
 impl JordanMinimal {
     /// Assembles block-diagonal `A` and stacked `B`, `C` for output (entries exact in each
@@ -23,6 +94,11 @@ impl JordanMinimal {
         let (mut a, mut b, mut c) = (empty(r, r), empty(r, m), empty(p, r));
         let mut off = 0;
         for blk in &self.blocks {
+            if blk.compact {
+                compact_outputs(blk, off, (&mut a, &mut b, &mut c));
+                off += blk.order;
+                continue;
+            }
             let f = &blk.field;
             let put = |o: &mut MatrixOut, i: usize, j: usize, x: &NfElem| {
                 o.exact[i][j] = f.fmt_elem(x);

@@ -123,23 +123,14 @@ pub struct SearchOutcome<K: Field> {
 const PSEUDO_RANDOM_TRIALS: u64 = 512;
 
 /// SplitMix64, fixed seed: the candidate sequence is deterministic.
-struct SplitMix(u64);
-impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-}
+use crate::rng::SplitMix64 as SplitMix;
 
 /// The `t`-th pseudo-random candidate (`t >= 1`): sparse 0/1 vectors first, then entries
 /// uniform in `[-r, r]` with `r` growing to `degree`.
 fn pseudo_random_alpha(rng: &mut SplitMix, t: u64, s: usize, degree: usize) -> Vec<i64> {
     (0..s)
         .map(|_| {
-            let z = rng.next();
+            let z = rng.next_u64();
             if t <= 8 {
                 i64::from(z.is_multiple_of(4))
             } else if t <= 16 {
