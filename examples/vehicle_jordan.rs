@@ -78,7 +78,7 @@ fn main() {
         .iter()
         .position(|e| e.value == "-8/3")
         .unwrap();
-    let as_q = |v: &Matrix<exactlti::field::NumberField>| -> Vec<Rational> {
+    let as_q = |v: &Matrix<exactlti::algebraic::NumberField>| -> Vec<Rational> {
         (0..4)
             .map(|i| v.field().to_rational(v.get(i, 0)).unwrap())
             .collect()

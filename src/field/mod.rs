@@ -9,7 +9,7 @@
 //! |---|---|---|
 //! | $\mathbb{Q}$ | [`Q`] | [`Rational`] |
 //! | $\mathbb{Q}(\sqrt d)$ | [`QuadraticField`] | [`Quadratic`] $= a + b\sqrt d$ |
-//! | $\mathbb{Q}\[t\]/(m)$ | [`NumberField`] | [`NfElem`]: polynomials of degree $< \deg m$ |
+//! | $\mathbb{Q}\[t\]/(m)$ | `crate::algebraic::NumberField` (above `poly`: it needs $\mathbb{Q}\[x\]$ and irreducibility) | `NfElem`: polynomials of degree $< \deg m$ |
 //! | $F(i)$ over a real $F$ | [`ComplexField`] | pairs $a + b i$ |
 //!
 //! Why hand-written: no maintained pure-Rust crate offers exact number fields with runtime
@@ -19,11 +19,6 @@ use std::fmt;
 
 pub mod complex;
 pub mod quadratic;
-/// Transitional re-export: number fields live in [`crate::algebraic`] (above `poly`, since
-/// they need $\mathbb{Q}[x]$ and irreducibility). Import them from there; this line goes
-/// once the last users (jordan/real.rs, jordan/realfield.rs, realization/jordan_method.rs,
-/// examples/) have switched.
-pub use crate::algebraic::number_field::{NfElem, NumberField, NumberFieldCtx};
 pub use complex::{ComplexField, ComplexPair};
 pub mod rational;
 pub use quadratic::{Quadratic, QuadraticField};

@@ -37,8 +37,9 @@ use super::realfield::{RealParts, identify_real_root, real_parts_field, simplify
 use super::roots::{factor_q, fmt_approx, quadratic_roots};
 use super::{JordanForm, quadratic_field};
 use crate::algebraic::AlgebraicNumber;
+use crate::algebraic::{NfElem, NumberField};
 use crate::error::Result;
-use crate::field::{ComplexPair, Field, NfElem, NumberField, Q, Rational};
+use crate::field::{ComplexPair, Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use num_traits::{One, Zero};

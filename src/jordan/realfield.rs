@@ -43,8 +43,9 @@ use crate::algebraic::AlgebraicNumber;
 use crate::algebraic::isolate_real::isolate_real_roots;
 use crate::algebraic::number::Loc;
 use crate::algebraic::zp;
+use crate::algebraic::{NfElem, NumberField};
 use crate::error::{Error, Result};
-use crate::field::{ComplexField, ComplexPair, Field, NfElem, NumberField, Q, Rational};
+use crate::field::{ComplexField, ComplexPair, Field, Q, Rational};
 use crate::poly::Poly;
 use num_traits::{One, Signed, Zero};
 

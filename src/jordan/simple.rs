@@ -20,8 +20,9 @@
 //! The component is checked exactly by [`PrimaryComponent::verify`] as every other one.
 
 use super::primary::{PrimaryComponent, named_field};
+use crate::algebraic::{NfElem, NumberField};
 use crate::error::{Error, Result};
-use crate::field::{Field, NfElem, NumberField, Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use num_traits::Zero;

@@ -30,10 +30,9 @@
 use super::controllability::mcmillan_degree;
 use super::minimal::minimal_kalman;
 use crate::algebraic::AlgebraicNumber;
+use crate::algebraic::{NfElem, NumberField, NumberFieldCtx};
 use crate::error::Result;
-use crate::field::{
-    ComplexField, ComplexPair, Field, NfElem, NumberField, NumberFieldCtx, Q, Rational,
-};
+use crate::field::{ComplexField, ComplexPair, Field, Q, Rational};
 use crate::jordan::{chains::jordan_chains, jordan};
 use crate::matrix::Matrix;
 use crate::poly::Poly;

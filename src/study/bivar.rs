@@ -16,8 +16,9 @@
 
 use super::family::ParamFamily;
 use super::hurwitz::hurwitz_matrix;
+use crate::algebraic::NumberField;
 use crate::error::{Error, Result};
-use crate::field::{NumberField, Q, Rational};
+use crate::field::{Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use num_traits::{One, Zero};

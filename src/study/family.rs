@@ -15,8 +15,9 @@
 //! | [`ParamFamily::state_matrix_f64`] | $A(v)$ in floating point (sweeps) |
 
 use super::ratfunc::{RatFunc, eval_ratfunc, ratfunc_from_number};
+use crate::algebraic::NumberField;
 use crate::error::{Error, Result};
-use crate::field::{Field, NumberField, Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::io::raw::{self, Raw};
 use crate::matrix::Matrix;
 use nalgebra::DMatrix;

@@ -3,7 +3,8 @@
 //! Presentation only: these `report` methods read finished results of [`crate::realization`] and
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
-use crate::field::{Field, NfElem};
+use crate::algebraic::NfElem;
+use crate::field::Field;
 use crate::realization::{
     JordanMinimal, MinimalRealization, ModalTable, RealModalBlock, StandardForm,
 };
