@@ -347,3 +347,34 @@ fn cli_bifurcations_dc_motor() {
         assert_eq!(v["verified"], true, "{of}");
     }
 }
+
+#[test]
+fn cli_bifurcations_jordan_yaw_plane() {
+    // vehicle-dynamics paper eq. 27: generically 0 (one 3x3 block) and -cr/(m u); at cr = 0
+    // A^2 = 0 with rank 2: two 2x2 blocks at 0
+    let v = json(&[
+        "bifurcations",
+        "data/yaw-plane-single-wheel.json",
+        "--symbolic",
+        "--of",
+        "jordan",
+    ]);
+    let g = &v["generic"]["eigenvalues"];
+    assert_eq!(g[0]["blocks"], serde_json::json!([3]));
+    assert_eq!(g[1]["value"], "-cr/(m*u)");
+    let b = v["branches"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|b| b["condition"] == "cr = 0")
+        .expect("cr = 0");
+    assert_eq!(b["changed"], true);
+    assert_eq!(b["eigenvalues"][0]["blocks"], serde_json::json!([2, 2]));
+    let m = v["branches"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|b| b["condition"] == "m = 0")
+        .expect("m = 0");
+    assert_eq!(m["outcome"], "undefined", "1/m: the system has a pole there");
+}

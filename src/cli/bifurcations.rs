@@ -10,7 +10,7 @@
 
 use super::symbolic::system::factors;
 use super::{Failure, Outcome};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::field::Field;
 use crate::io::TypedAny;
 use crate::io::symbolic::{SymbolicOptions, load_symbolic_path};
@@ -131,9 +131,31 @@ fn summary(of: Of, s: &StateSpace<RatFuncField>) -> Result<Summary> {
             }
         }
         Of::Jordan => {
-            return Err(Error::Unsupported(format!(
-                "bifurcations --of jordan: the Jordan form over {k} is not available in this build"
-            )));
+            let jf = crate::jordan::params::jordan_params(&s.a)?;
+            // its conditions go into this computation's log
+            for c in &jf.conditions {
+                k.record_condition(c);
+            }
+            let mut key = Vec::new();
+            let mut vals = Vec::new();
+            for e in &jf.eigenvalues {
+                key.push(Value::Obj(
+                    Report::new()
+                        .int("degree", e.degree)
+                        .int("algebraic_multiplicity", e.algebraic_multiplicity)
+                        .with("blocks", ints(&e.blocks)),
+                ));
+                let mut v = Report::new().str("factor", e.monic.to_string_var("s"));
+                if let Some(x) = &e.value {
+                    v = v.str("value", k.fmt_elem(x));
+                }
+                vals.push(Value::Obj(v.with("blocks", ints(&e.blocks))));
+            }
+            Summary {
+                key: vec![kv("eigenvalue_structure", Value::List(key))],
+                info: vec![kv("eigenvalues", Value::List(vals))],
+                verified: jf.verified,
+            }
         }
     })
 }
@@ -215,12 +237,6 @@ pub(super) fn run(
                 .into(),
         ));
     };
-    if of == Of::Jordan {
-        return Err(fail(format!(
-            "bifurcations --of jordan is not yet supported over {} (the Jordan form over Q(p) is not in this build); use --of scb|minreal|zeros|ctrb",
-            t.a_raw.field()
-        )));
-    }
     let k = t.a_raw.field().clone();
     let f = move |s: &StateSpace<RatFuncField>| summary(of, s);
     let limits = Limits {
