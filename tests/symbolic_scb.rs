@@ -378,3 +378,96 @@ fn cli_bifurcations_jordan_yaw_plane() {
         .expect("m = 0");
     assert_eq!(m["outcome"], "undefined", "1/m: the system has a pole there");
 }
+
+/// A tiny deterministic generator (no dependency).
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self, n: i64) -> i64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((self.0 >> 33) % (2 * n as u64 + 1)) as i64 - n
+    }
+}
+
+fn random_system(k: &RatFuncField, g: &mut Lcg, n: usize) -> StateSpace<RatFuncField> {
+    let vars = k.vars().to_vec();
+    let mut entry = |sparse: bool| {
+        if sparse && g.next(2) != 0 {
+            return k.zero();
+        }
+        let (c0, c1) = (g.next(2), g.next(1));
+        let v = &vars[g.next(1).unsigned_abs() as usize % vars.len()];
+        k.parse(&format!("{c0} + {c1}*{v}")).unwrap()
+    };
+    let mut m = |r: usize, c: usize, sparse: bool| {
+        let data = (0..r * c).map(|_| entry(sparse)).collect();
+        Matrix::from_vec(k.clone(), r, c, data)
+    };
+    StateSpace {
+        a: m(n, n, true),
+        b: m(n, 1, true),
+        c: m(1, n, true),
+        d: Matrix::zeros(k.clone(), 1, 1),
+    }
+}
+
+/// Property: at a point where no condition vanishes, the symbolic SCB evaluates to the SCB
+/// over Q (same dims and the same matrices); and every explored bifurcation branch, at a
+/// point of the branch, has the dims of the SCB over Q there.
+#[test]
+fn random_symbolic_scb_agrees_with_rational_scb_at_points() {
+    let k = RatFuncField::new(&["a", "b"]).unwrap();
+    let mut g = Lcg(7);
+    let mut checked = 0;
+    for _ in 0..25 {
+        let s = random_system(&k, &mut g, 3);
+        let f = |s: &StateSpace<RatFuncField>| scb(&s.a, &s.b, &s.c, &s.d).map(|r| r.dims);
+        let Ok(t) = bifurcations(&s, &f, Limits { depth: 1, max_nodes: 50 }) else {
+            continue; // [B; D] or [C, D] rank-deficient: not an SCB input
+        };
+        let (r, kk) = scb_of(&s);
+        let p = [Rational::new(7.into(), 3.into()), Rational::new((-5).into(), 2.into())];
+        let ok = kk
+            .conditions()
+            .unwrap()
+            .iter()
+            .all(|c| kk.eval(&kk.from_mpoly(c.clone()), &p).is_some_and(|v| v != Rational::from_integer(0.into())));
+        let defined = |m: &Matrix<RatFuncField>| {
+            (0..m.nrows()).all(|i| (0..m.ncols()).all(|j| k.eval(m.get(i, j), &p).is_some()))
+        };
+        if !ok || !defined(&s.a) {
+            continue;
+        }
+        let q = StateSpace { a: eval(&s.a, &p), b: eval(&s.b, &p), c: eval(&s.c, &p), d: eval(&s.d, &p) };
+        let rq = scb(&q.a, &q.b, &q.c, &q.d).unwrap();
+        assert_eq!(rq.dims, r.dims);
+        assert_eq!(eval(&r.a, &p), rq.a);
+        assert_eq!(t.result, r.dims);
+        checked += 1;
+        for b in &t.branches {
+            let BranchOutcome::Explored(n) = &b.outcome else { continue };
+            // a point on the branch: the solved parameter is already substituted; the other
+            // gets a value where the branch's conditions are nonzero
+            for v in [3i64, -4, 11] {
+                let pt = [Rational::from_integer(v.into()), Rational::from_integer((v + 5).into())];
+                let nz = n.conditions.iter().all(|c| {
+                    k.eval(&k.from_mpoly(c.clone()), &pt).is_some_and(|x| x != Rational::from_integer(0.into()))
+                });
+                let sys = &n.system;
+                let all_def = [&sys.a, &sys.b, &sys.c].iter().all(|m| {
+                    (0..m.nrows()).all(|i| (0..m.ncols()).all(|j| k.eval(m.get(i, j), &pt).is_some()))
+                });
+                if !nz || !all_def {
+                    continue;
+                }
+                let q = StateSpace { a: eval(&sys.a, &pt), b: eval(&sys.b, &pt), c: eval(&sys.c, &pt), d: eval(&sys.d, &pt) };
+                let rq = scb(&q.a, &q.b, &q.c, &q.d).unwrap();
+                assert_eq!(rq.dims, n.result, "branch {}", b.equation);
+                break;
+            }
+        }
+    }
+    assert!(checked >= 5, "only {checked} random systems checked");
+}
