@@ -43,7 +43,10 @@ fn derive(s: &StateSpace<RatFuncField>) -> exactlti::Result<(Scb<RatFuncField>, 
 }
 
 fn report(r: &Scb<RatFuncField>, conds: &[String]) {
-    println!("  dims (n_a, n_b, n_c, n_d) = {:?}, chains {:?}", r.dims, r.chains);
+    println!(
+        "  dims (n_a, n_b, n_c, n_d) = {:?}, chains {:?}",
+        r.dims, r.chains
+    );
     println!(
         "  left invertible {}, right invertible {}; zero polynomial {}",
         r.left_invertible,
@@ -54,7 +57,10 @@ fn report(r: &Scb<RatFuncField>, conds: &[String]) {
     show("B (SCB)", &r.b);
     show("C (SCB)", &r.c);
     println!("  assumes nonzero: {}", conds.join(", "));
-    println!("  verified (sec. II-C identities as rational functions): {}", r.verified);
+    println!(
+        "  verified (sec. II-C identities as rational functions): {}",
+        r.verified
+    );
 }
 
 fn paper_matrix(k: &RatFuncField, rows: &[&[&str]]) -> Matrix<RatFuncField> {
@@ -75,7 +81,11 @@ fn tree(k: &RatFuncField, n: &Node<[usize; 4]>, indent: usize) {
                     k.fmt_poly(&b.condition),
                     b.equation,
                     c.result,
-                    if c.result != n.result { "  <- structure changes" } else { "" }
+                    if c.result != n.result {
+                        "  <- structure changes"
+                    } else {
+                        ""
+                    }
                 );
                 tree(k, c, indent + 2);
             }
@@ -106,9 +116,19 @@ fn main() -> exactlti::Result<()> {
         k,
         &[
             &["0", "1", "-vx", "0"],
-            &["-(cf + cr)/(m*Tr*vx)", "-1/Tr", "(lr*cr - lf*cf)/(m*Tr*vx)", "0"],
+            &[
+                "-(cf + cr)/(m*Tr*vx)",
+                "-1/Tr",
+                "(lr*cr - lf*cf)/(m*Tr*vx)",
+                "0",
+            ],
             &["0", "0", "0", "1"],
-            &["(lr*cr - lf*cf)/(J*Tr*vx)", "0", "(lf^2*cf + lr^2*cr)/(J*Tr*vx)", "-1/Tr"],
+            &[
+                "(lr*cr - lf*cf)/(J*Tr*vx)",
+                "0",
+                "(lf^2*cf + lr^2*cr)/(J*Tr*vx)",
+                "-1/Tr",
+            ],
         ],
     );
     println!(
@@ -120,7 +140,10 @@ fn main() -> exactlti::Result<()> {
         k.fmt_elem(r.a.get(3, 2)),
         k.fmt_elem(printed.get(3, 2))
     );
-    println!("  A_aa = {}: a zero at the origin (non-minimum phase)", k.fmt_elem(r.a.get(0, 0)));
+    println!(
+        "  A_aa = {}: a zero at the origin (non-minimum phase)",
+        k.fmt_elem(r.a.get(0, 0))
+    );
 
     println!("\n== Sec. V: DC motor with LuGre friction, eq. (8)");
     let dc = load("data/dc-motor-lugre.json");

@@ -85,7 +85,10 @@ fn oracle(path: &str, r: &Scb<RatFuncField>, k: &RatFuncField) {
     let p = point(k, path);
     for c in k.conditions().unwrap() {
         let v = k.eval(&k.from_mpoly(c.clone()), &p).unwrap();
-        assert!(v != Rational::from_integer(0.into()), "{path}: a condition vanishes at the paper's values");
+        assert!(
+            v != Rational::from_integer(0.into()),
+            "{path}: a condition vanishes at the paper's values"
+        );
     }
     let q = load_values(path);
     let rq = scb(&q.a, &q.b, &q.c, &q.d).unwrap();
@@ -104,12 +107,20 @@ fn dc_motor_symbolic_scb_is_the_papers_with_its_erratum() {
     assert!(r.verified && r.verify());
     assert_eq!(r.dims, [1, 0, 0, 2]);
     assert_eq!(r.chains, vec![2]);
-    assert_eq!(k.fmt_elem(r.a.get(0, 0)), "-sigma0/sigma1", "the zero -sigma0/sigma1");
+    assert_eq!(
+        k.fmt_elem(r.a.get(0, 0)),
+        "-sigma0/sigma1",
+        "the zero -sigma0/sigma1"
+    );
     // the paper's sec. V matrix as printed: A_12 with sigma1^2 is not similar to A-hat
     let printed = mat(
         &k,
         &[
-            &["-sigma0/sigma1", "-sigma0*(sigma0*J - sigma1*alpha2)/sigma1^2", "0"],
+            &[
+                "-sigma0/sigma1",
+                "-sigma0*(sigma0*J - sigma1*alpha2)/sigma1^2",
+                "0",
+            ],
             &["0", "0", "1"],
             &[
                 "-sigma0/J",
@@ -121,7 +132,12 @@ fn dc_motor_symbolic_scb_is_the_papers_with_its_erratum() {
     assert_ne!(printed.charpoly().unwrap(), s.a.charpoly().unwrap());
     // corrected: sigma1^3
     let mut fixed = printed.clone();
-    fixed.set(0, 1, k.parse("-sigma0*(sigma0*J - sigma1*alpha2)/sigma1^3").unwrap());
+    fixed.set(
+        0,
+        1,
+        k.parse("-sigma0*(sigma0*J - sigma1*alpha2)/sigma1^3")
+            .unwrap(),
+    );
     assert_eq!(fixed.charpoly().unwrap(), s.a.charpoly().unwrap());
     assert_eq!(r.a, fixed, "the paper's SCB A with entry (1, 2) corrected");
     assert_eq!(r.b, mat(&k, &[&["0"], &["0"], &["1"]]));
@@ -145,7 +161,12 @@ fn single_track_front_steering_symbolic() {
         &k,
         &[
             &["-1/Tr", "1", "0", "Tr*lf*m/(cr*(lf + lr))"],
-            &["-lr*cr*(lf + lr)/(vx*Tr*J)", "0", "1", "lf*m/(cr*(lf + lr))"],
+            &[
+                "-lr*cr*(lf + lr)/(vx*Tr*J)",
+                "0",
+                "1",
+                "lf*m/(cr*(lf + lr))",
+            ],
             &["-cr*(lf + lr)/(Tr*J)", "0", "0", "1/vx"],
             &[
                 "cr*(lr*cr - lf*cf)*(lf + lr)/(m*Tr^2*vx*J)",
@@ -158,10 +179,17 @@ fn single_track_front_steering_symbolic() {
     assert_eq!(ap.charpoly().unwrap(), s.a.charpoly().unwrap());
     assert_eq!(r.a.charpoly().unwrap(), s.a.charpoly().unwrap());
     let sub = |x: &Matrix<RatFuncField>| x.submatrix(0, 3, 0, 3).charpoly().unwrap();
-    assert_eq!(sub(&r.a), sub(&ap), "A_bb: same spectrum (ours observability form)");
+    assert_eq!(
+        sub(&r.a),
+        sub(&ap),
+        "A_bb: same spectrum (ours observability form)"
+    );
     assert_eq!(r.a.get(3, 3), ap.get(3, 3));
     assert_eq!(r.b, mat(&k, &[&["0"], &["0"], &["0"], &["1"]]));
-    assert_eq!(r.c, mat(&k, &[&["0", "0", "0", "1"], &["1", "0", "0", "0"]]));
+    assert_eq!(
+        r.c,
+        mat(&k, &[&["0", "0", "0", "1"], &["1", "0", "0", "0"]])
+    );
     oracle(FRONT, &r, &k);
 }
 
@@ -178,7 +206,12 @@ fn single_track_rear_steering_symbolic_with_the_papers_sign_slip() {
         &k,
         &[
             &["0", "1", "-vx", "0"],
-            &["-(cf + cr)/(m*Tr*vx)", "-1/Tr", "(lr*cr - lf*cf)/(m*Tr*vx)", "0"],
+            &[
+                "-(cf + cr)/(m*Tr*vx)",
+                "-1/Tr",
+                "(lr*cr - lf*cf)/(m*Tr*vx)",
+                "0",
+            ],
             &["0", "0", "0", "1"],
             &[
                 "(lr*cr - lf*cf)/(J*Tr*vx)",
@@ -192,15 +225,23 @@ fn single_track_rear_steering_symbolic_with_the_papers_sign_slip() {
     let mut fixed = printed.clone();
     fixed.set(3, 2, k.parse("-(lf^2*cf + lr^2*cr)/(J*Tr*vx)").unwrap());
     assert_eq!(r.a, fixed, "the paper's A with entry (4, 3) negated");
-    assert_eq!(r.b, mat(&k, &[&["0", "0"], &["1", "0"], &["0", "0"], &["0", "1"]]));
-    assert_eq!(r.c, mat(&k, &[&["0", "1", "0", "0"], &["0", "0", "1", "0"]]));
+    assert_eq!(
+        r.b,
+        mat(&k, &[&["0", "0"], &["1", "0"], &["0", "0"], &["0", "1"]])
+    );
+    assert_eq!(
+        r.c,
+        mat(&k, &[&["0", "1", "0", "0"], &["0", "0", "1", "0"]])
+    );
     oracle(REAR, &r, &k);
 }
 
 #[test]
 fn dc_motor_bifurcation_sigma1_zero_found_without_being_told() {
     let s = load(DC);
-    let f = |s: &StateSpace<RatFuncField>| scb(&s.a, &s.b, &s.c, &s.d).map(|r| (r.dims, r.chains, r.verified));
+    let f = |s: &StateSpace<RatFuncField>| {
+        scb(&s.a, &s.b, &s.c, &s.d).map(|r| (r.dims, r.chains, r.verified))
+    };
     let t = bifurcations(&s, &f, Limits::default()).unwrap();
     assert_eq!(t.result.0, [1, 0, 0, 2]);
     let b = t
@@ -211,7 +252,11 @@ fn dc_motor_bifurcation_sigma1_zero_found_without_being_told() {
     let BranchOutcome::Explored(n) = &b.outcome else {
         panic!("sigma1 = 0 not explored: {:?}", b.outcome)
     };
-    assert_eq!(n.result.0, [0, 0, 0, 3], "one integrator chain of length three");
+    assert_eq!(
+        n.result.0,
+        [0, 0, 0, 3],
+        "one integrator chain of length three"
+    );
     assert_eq!(n.result.1, vec![3]);
     assert!(n.result.2);
     // the branch system is the file's with sigma1 = 0
@@ -267,7 +312,10 @@ fn zero_polynomial_factors_over_qp() {
         ],
     );
     let fs = exactlti::structure::factor_qp::factor_over_qp(&p).unwrap();
-    let mut shown: Vec<String> = fs.iter().map(|(g, e)| format!("{}^{e}", g.to_string_var("s"))).collect();
+    let mut shown: Vec<String> = fs
+        .iter()
+        .map(|(g, e)| format!("{}^{e}", g.to_string_var("s")))
+        .collect();
     shown.sort();
     assert_eq!(fs.len(), 2, "{shown:?}");
     assert!(fs.iter().all(|(g, _)| g.deg() == 1 || g.deg() == 2));
@@ -300,7 +348,13 @@ fn cli_commands_over_qp() {
     assert_eq!(v["verified"], true);
     assert_eq!(v["dims"]["a"], 1);
     assert_eq!(v["minimum_phase"], "depends on parameters");
-    assert!(v["conditions"].as_array().unwrap().iter().any(|c| c == "sigma1"));
+    assert!(
+        v["conditions"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|c| c == "sigma1")
+    );
     assert_eq!(v["zero_factors"][0]["root"], "-sigma0/sigma1");
     let v = json(&["zeros", DC]);
     assert_eq!(v["zero_factors"][0]["root"], "-sigma0/sigma1");
@@ -339,7 +393,10 @@ fn cli_bifurcations_dc_motor() {
     assert_eq!(b["changed"], true);
     assert_eq!(b["dims"]["d"], 3);
     assert_eq!(b["chains"], serde_json::json!([3]));
-    assert!(b["branches"].is_array(), "depth 2: the branch has its own branches");
+    assert!(
+        b["branches"].is_array(),
+        "depth 2: the branch has its own branches"
+    );
     let (code, _, err) = run(&["bifurcations", "tests/data/mass_spring.json"]);
     assert_eq!(code, 2, "{err}");
     for of in ["minreal", "zeros", "ctrb"] {
@@ -376,7 +433,10 @@ fn cli_bifurcations_jordan_yaw_plane() {
         .iter()
         .find(|b| b["condition"] == "m = 0")
         .expect("m = 0");
-    assert_eq!(m["outcome"], "undefined", "1/m: the system has a pole there");
+    assert_eq!(
+        m["outcome"], "undefined",
+        "1/m: the system has a pole there"
+    );
 }
 
 /// A tiny deterministic generator (no dependency).
@@ -424,45 +484,71 @@ fn random_symbolic_scb_agrees_with_rational_scb_at_points() {
     for _ in 0..25 {
         let s = random_system(&k, &mut g, 3);
         let f = |s: &StateSpace<RatFuncField>| scb(&s.a, &s.b, &s.c, &s.d).map(|r| r.dims);
-        let Ok(t) = bifurcations(&s, &f, Limits { depth: 1, max_nodes: 50 }) else {
+        let Ok(t) = bifurcations(
+            &s,
+            &f,
+            Limits {
+                depth: 1,
+                max_nodes: 50,
+            },
+        ) else {
             continue; // [B; D] or [C, D] rank-deficient: not an SCB input
         };
         let (r, kk) = scb_of(&s);
-        let p = [Rational::new(7.into(), 3.into()), Rational::new((-5).into(), 2.into())];
-        let ok = kk
-            .conditions()
-            .unwrap()
-            .iter()
-            .all(|c| kk.eval(&kk.from_mpoly(c.clone()), &p).is_some_and(|v| v != Rational::from_integer(0.into())));
+        let p = [
+            Rational::new(7.into(), 3.into()),
+            Rational::new((-5).into(), 2.into()),
+        ];
+        let ok = kk.conditions().unwrap().iter().all(|c| {
+            kk.eval(&kk.from_mpoly(c.clone()), &p)
+                .is_some_and(|v| v != Rational::from_integer(0.into()))
+        });
         let defined = |m: &Matrix<RatFuncField>| {
             (0..m.nrows()).all(|i| (0..m.ncols()).all(|j| k.eval(m.get(i, j), &p).is_some()))
         };
         if !ok || !defined(&s.a) {
             continue;
         }
-        let q = StateSpace { a: eval(&s.a, &p), b: eval(&s.b, &p), c: eval(&s.c, &p), d: eval(&s.d, &p) };
+        let q = StateSpace {
+            a: eval(&s.a, &p),
+            b: eval(&s.b, &p),
+            c: eval(&s.c, &p),
+            d: eval(&s.d, &p),
+        };
         let rq = scb(&q.a, &q.b, &q.c, &q.d).unwrap();
         assert_eq!(rq.dims, r.dims);
         assert_eq!(eval(&r.a, &p), rq.a);
         assert_eq!(t.result, r.dims);
         checked += 1;
         for b in &t.branches {
-            let BranchOutcome::Explored(n) = &b.outcome else { continue };
+            let BranchOutcome::Explored(n) = &b.outcome else {
+                continue;
+            };
             // a point on the branch: the solved parameter is already substituted; the other
             // gets a value where the branch's conditions are nonzero
             for v in [3i64, -4, 11] {
-                let pt = [Rational::from_integer(v.into()), Rational::from_integer((v + 5).into())];
+                let pt = [
+                    Rational::from_integer(v.into()),
+                    Rational::from_integer((v + 5).into()),
+                ];
                 let nz = n.conditions.iter().all(|c| {
-                    k.eval(&k.from_mpoly(c.clone()), &pt).is_some_and(|x| x != Rational::from_integer(0.into()))
+                    k.eval(&k.from_mpoly(c.clone()), &pt)
+                        .is_some_and(|x| x != Rational::from_integer(0.into()))
                 });
                 let sys = &n.system;
                 let all_def = [&sys.a, &sys.b, &sys.c].iter().all(|m| {
-                    (0..m.nrows()).all(|i| (0..m.ncols()).all(|j| k.eval(m.get(i, j), &pt).is_some()))
+                    (0..m.nrows())
+                        .all(|i| (0..m.ncols()).all(|j| k.eval(m.get(i, j), &pt).is_some()))
                 });
                 if !nz || !all_def {
                     continue;
                 }
-                let q = StateSpace { a: eval(&sys.a, &pt), b: eval(&sys.b, &pt), c: eval(&sys.c, &pt), d: eval(&sys.d, &pt) };
+                let q = StateSpace {
+                    a: eval(&sys.a, &pt),
+                    b: eval(&sys.b, &pt),
+                    c: eval(&sys.c, &pt),
+                    d: eval(&sys.d, &pt),
+                };
                 let rq = scb(&q.a, &q.b, &q.c, &q.d).unwrap();
                 assert_eq!(rq.dims, n.result, "branch {}", b.equation);
                 break;

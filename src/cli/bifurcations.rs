@@ -188,7 +188,8 @@ fn node_report(k: &RatFuncField, n: &Node<Summary>) -> (Report, bool) {
     if n.expanded {
         let mut bs = Vec::new();
         for b in &n.branches {
-            let mut br = Report::new().str("condition", format!("{} = 0", k.fmt_poly(&b.condition)));
+            let mut br =
+                Report::new().str("condition", format!("{} = 0", k.fmt_poly(&b.condition)));
             match &b.outcome {
                 BranchOutcome::Explored(child) => {
                     let (cr, cok) = node_report(k, child);

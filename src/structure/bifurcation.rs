@@ -170,7 +170,10 @@ pub fn refield(s: &StateSpace<RatFuncField>, k: &RatFuncField) -> StateSpace<Rat
 ///
 /// # Errors
 /// Those of `f`, and `Limit` from factoring the conditions.
-pub fn with_conditions<S>(s: &StateSpace<RatFuncField>, f: &Analysis<S>) -> Result<(S, Vec<MPoly>)> {
+pub fn with_conditions<S>(
+    s: &StateSpace<RatFuncField>,
+    f: &Analysis<S>,
+) -> Result<(S, Vec<MPoly>)> {
     let k = s.a.field().fresh();
     let s = refield(s, &k);
     let r = f(&s)?;
@@ -287,7 +290,12 @@ fn expand<S: Clone>(
         let name = &k.vars()[sol.var];
         let equation = format!("{name} = {}", k.fmt_elem(&sol.value));
         let sub = |m: &Matrix<RatFuncField>| subst_matrix(&k, m, sol.var, &sol.value);
-        let sys = match (sub(&node.system.a), sub(&node.system.b), sub(&node.system.c), sub(&node.system.d)) {
+        let sys = match (
+            sub(&node.system.a),
+            sub(&node.system.b),
+            sub(&node.system.c),
+            sub(&node.system.d),
+        ) {
             (Ok(a), Ok(b), Ok(c), Ok(d)) => StateSpace { a, b, c, d },
             _ => {
                 node.branches.push(Branch {

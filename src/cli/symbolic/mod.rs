@@ -26,7 +26,7 @@ pub(super) enum Handled {
     /// Computed over $\mathbb{Q}(p)$ (or refused).
     Done(Outcome),
     /// `--at` gave every symbol a value: the ordinary command on this system.
-    Valued(LoadedSystem, PathBuf),
+    Valued(Box<LoadedSystem>, PathBuf),
 }
 
 /// The command's name as typed.
@@ -140,7 +140,7 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ha
             }
         }
         _ if opts.is_empty() => Ok(None),
-        _ if direct => Ok(Some(Handled::Valued(loaded, path.to_path_buf()))),
+        _ if direct => Ok(Some(Handled::Valued(Box::new(loaded), path.to_path_buf()))),
         _ => Err(refuse(format!(
             "`{}` does not take --symbolic or --at yet; write the values into the file",
             name(cmd)

@@ -38,7 +38,10 @@ pub(in crate::cli) fn run(
             let ok = r.verified;
             let rep = depends(r.report(), "minimum_phase");
             (
-                rep.with("zero_factors", factors(&r.invariant_zero_polynomial()).map_err(e)?),
+                rep.with(
+                    "zero_factors",
+                    factors(&r.invariant_zero_polynomial()).map_err(e)?,
+                ),
                 ok,
             )
         }
@@ -122,7 +125,10 @@ pub(in crate::cli) fn run(
     let r = exact_only(r)
         .str("field", k.to_string())
         .with("conditions", str_list(conds));
-    Ok(Some(Outcome::new(set_key(r, "verified", Value::Bool(ok)), ok)))
+    Ok(Some(Outcome::new(
+        set_key(r, "verified", Value::Bool(ok)),
+        ok,
+    )))
 }
 
 /// The system over `k` (a fresh condition log), entries unchanged.
