@@ -372,6 +372,10 @@ fn cli_commands_over_qp() {
     assert_eq!(v["observable_order"], 4);
     let v = json(&["analyze", DC]);
     assert_eq!(v["field"], "QQ(J, alpha2, sigma0, sigma1)");
+    assert_eq!(v["verified"], true);
+    assert_eq!(v["structure"]["minimum_phase"], "depends on parameters");
+    assert_eq!(v["jordan"]["verified"], true);
+    assert_eq!(v["jordan"]["eigenvalues"][0]["value"], "0");
     let (code, _, err) = run(&["modes", DC]);
     assert_eq!(code, 2);
     assert!(err.contains("--at"), "{err}");

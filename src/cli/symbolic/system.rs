@@ -108,7 +108,44 @@ pub(in crate::cli) fn run(
         },
         Command::Analyze { .. } => {
             let out = crate::cli::analyze::analyze(f, &t)?;
-            (out.report, out.verified)
+            let mut rep = depends(out.report, "minimum_phase");
+            let mut ok = out.verified;
+            // the eigenvalue structure over Q(p) (its conditions join this computation's)
+            let sec = match crate::jordan::params::jordan_params(&s.a) {
+                Ok(jf) => {
+                    ok &= jf.verified;
+                    for c in &jf.conditions {
+                        k.record_condition(c);
+                    }
+                    let eig = jf
+                        .eigenvalues
+                        .iter()
+                        .map(|e| {
+                            let mut r = Report::new()
+                                .str("factor", e.monic.to_string_var("s"))
+                                .int("algebraic_multiplicity", e.algebraic_multiplicity)
+                                .with(
+                                    "blocks",
+                                    Value::List(
+                                        e.blocks.iter().map(|&b| Value::Int(b as i64)).collect(),
+                                    ),
+                                );
+                            if let Some(x) = &e.value {
+                                r = r.str("value", k.fmt_elem(x));
+                            }
+                            Value::Obj(r)
+                        })
+                        .collect();
+                    Report::titled("eigenvalues and Jordan structure over Q(p)")
+                        .list("eigenvalues", eig)
+                        .bool("complete", jf.complete)
+                        .bool("verified", jf.verified)
+                }
+                Err(err) => Report::titled("eigenvalues and Jordan structure over Q(p)")
+                    .str("error", err.to_string()),
+            };
+            rep.push("jordan", Value::Obj(sec));
+            (rep, ok)
         }
         Command::Modes { .. } => {
             return Err(Failure {
@@ -161,8 +198,16 @@ pub(in crate::cli) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
     r
 }
 
-/// A sign question over $\mathbb{Q}(p)$ is not decided: the key says so.
+/// A sign question over $\mathbb{Q}(p)$ is not decided: the key says so (nested reports
+/// too, as in `analyze`).
 fn depends(r: Report, key: &str) -> Report {
+    fn value(v: Value, key: &str) -> Value {
+        match v {
+            Value::Obj(r) => Value::Obj(depends(r, key)),
+            Value::List(xs) => Value::List(xs.into_iter().map(|x| value(x, key)).collect()),
+            v => v,
+        }
+    }
     let items = r
         .items
         .into_iter()
@@ -170,7 +215,7 @@ fn depends(r: Report, key: &str) -> Report {
             if k == key && matches!(v, Value::Null) {
                 (k, Value::Str("depends on parameters".into()))
             } else {
-                (k, v)
+                (k, value(v, key))
             }
         })
         .collect();
