@@ -238,3 +238,49 @@ fn cubic_factor_blocks_from_ranks() {
     // the discriminant of x^3 - p is -27 p^2: the condition p
     assert!(jf.conditions_strings().contains(&"p".to_string()));
 }
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn cli_jordan_over_qp_and_at() {
+    let yaw = "data/yaw-plane-single-wheel.json";
+    let (code, out, err) = run(&["jordan", yaw, "--symbolic", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["field"], "QQ(cr, m, u)");
+    assert_eq!(j["verified"], true);
+    assert_eq!(j["eigenvalues"][0]["value"], "0");
+    assert_eq!(j["eigenvalues"][0]["blocks"], serde_json::json!([3]));
+    assert_eq!(j["eigenvalues"][1]["value"], "-cr/(m*u)");
+    assert_eq!(j["J"][3][3], "-cr/(m*u)");
+    assert_eq!(j["J"][0][1], "1");
+    assert_eq!(j["conditions"], serde_json::json!(["cr", "m", "u"]));
+    assert!(!out.contains("approx"));
+    // partly symbolic: cr and u valued, m a symbol
+    let (code, out, _) = run(&["jordan", yaw, "--symbolic", "m", "--format", "json"]);
+    assert_eq!(code, 0);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["eigenvalues"][1]["value"], "-4000/m");
+    // --at: every symbol valued -> the ordinary rational path
+    let (code, out, _) = run(&[
+        "jordan", yaw, "--symbolic", "--at", "m=1500, u=20, cr=80000", "--format", "json",
+    ]);
+    assert_eq!(code, 0);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["verified"], true);
+    assert!(out.contains("-8/3"));
+    // --real over QQ(p) is refused with one line
+    let (code, _, err) = run(&["jordan", yaw, "--symbolic", "--real"]);
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+}
