@@ -116,3 +116,72 @@ pub fn jordan_outcome(a: &Matrix<RatFuncField>) -> Result<Outcome> {
     let jf = jordan_params(a)?;
     Ok(Outcome::new(report(&jf), jf.verified))
 }
+
+/// Matrices as rows of exact strings, `approx` keys dropped (recursively).
+fn exact_rows(r: Report) -> Report {
+    fn value(v: Value) -> Value {
+        match v {
+            Value::Matrix(m) => Value::List(
+                m.exact
+                    .into_iter()
+                    .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
+                    .collect(),
+            ),
+            Value::List(xs) => Value::List(xs.into_iter().map(value).collect()),
+            Value::Obj(r) => Value::Obj(exact_rows(r)),
+            v => v,
+        }
+    }
+    Report {
+        title: r.title,
+        items: r
+            .items
+            .into_iter()
+            .filter(|(k, _)| !k.contains("approx"))
+            .map(|(k, v)| (k, value(v)))
+            .collect(),
+    }
+}
+
+/// `mnf FILE` over $\mathbb{Q}(p)$: [`crate::structure::mechanical::mechanical_normal_form_in`]
+/// on $(A, B, C, D)$ in a fresh field. The report is the rational one with the theorem's
+/// checks under `existence_checks` and `conditions` the polynomials in the parameters the
+/// result assumes nonzero (pivots and divisions, $\det T$); `verified`: the exact check of
+/// the form (similarity, Markov parameters) as rational functions.
+///
+/// # Errors
+/// Those of the normal form.
+pub fn mnf_outcome(
+    a: &Matrix<RatFuncField>,
+    b: &Matrix<RatFuncField>,
+    c: &Matrix<RatFuncField>,
+    d: &Matrix<RatFuncField>,
+) -> Result<Outcome> {
+    let k = a.field().fresh();
+    let re = |m: &Matrix<RatFuncField>| {
+        Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec())
+    };
+    let (a, b, c, d) = (re(a), re(b), re(c), re(d));
+    let m = crate::structure::mechanical::mechanical_normal_form_in(
+        None,
+        &a,
+        &b,
+        &c,
+        &d,
+        crate::structure::mechanical::DEFAULT_MAX_CANDIDATES,
+    )?;
+    if let Some(f) = &m.form {
+        k.record_condition(f.t.det()?.num());
+    }
+    let conds = k.conditions_strings()?;
+    let mut r = exact_rows(m.report());
+    for item in r.items.iter_mut() {
+        if item.0 == "conditions" {
+            item.0 = "existence_checks".to_string();
+        }
+    }
+    let r = r
+        .str("field", k.to_string())
+        .with("conditions", str_list(conds));
+    Ok(Outcome::new(r, !m.exists || m.verified))
+}
