@@ -107,12 +107,11 @@ fn main() {
         let jf = jordan_params(a).unwrap();
         assert!(jf.verified);
         common::bench(name, 5, 1500.0, || jordan_params(a).unwrap());
-        let size: usize = jf
-            .t
-            .as_slice()
-            .iter()
-            .map(|x| jf.field.fmt_elem(x).len())
-            .sum();
+        let size: usize =
+            jf.t.as_slice()
+                .iter()
+                .map(|x| jf.field.fmt_elem(x).len())
+                .sum();
         println!(
             "  (T: {size} characters; {} conditions)",
             jf.conditions.len()

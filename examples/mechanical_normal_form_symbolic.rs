@@ -63,7 +63,14 @@ fn main() -> exactlti::Result<()> {
     let re = |m: &Matrix<RatFuncField>| {
         Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec())
     };
-    let m = mechanical_normal_form_in(None, &re(&a), &re(&b), &re(&c), &re(&d), DEFAULT_MAX_CANDIDATES)?;
+    let m = mechanical_normal_form_in(
+        None,
+        &re(&a),
+        &re(&b),
+        &re(&c),
+        &re(&d),
+        DEFAULT_MAX_CANDIDATES,
+    )?;
     assert!(m.exists && m.verified);
     let f = m.form.as_ref().expect("exists");
     println!(

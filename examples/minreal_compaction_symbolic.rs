@@ -80,7 +80,10 @@ fn main() {
         ctrb = ctrb.hstack(&v).expect("h");
     }
     let (_, piv) = rref_params(&ctrb);
-    println!("  rank [B, AB, A^2 B, A^3 B] = {} (generically): minimal order 2", piv.len());
+    println!(
+        "  rank [B, AB, A^2 B, A^3 B] = {} (generically): minimal order 2",
+        piv.len()
+    );
     assert_eq!(piv.len(), 2);
 
     // eq. 36 literally
@@ -111,7 +114,9 @@ fn main() {
     let bl = mat(&k, &[&["b1"], &["b2"], &["lam*b1"], &["lam*b2"]]);
     let c56 = c12.try_add(&c34.scale(&lam)).expect("a");
     let eq36 = markov(&a, &bl, &c, 6) == markov(&mm, &b12, &c56, 6);
-    println!("  co-linear rows (b3, b4) = lam (b1, b2): eq. 36 with b56 = (b1, b2), c56 = c12 + lam c34 reproduces C A^k B, k < 6: {eq36}");
+    println!(
+        "  co-linear rows (b3, b4) = lam (b1, b2): eq. 36 with b56 = (b1, b2), c56 = c12 + lam c34 reproduces C A^k B, k < 6: {eq36}"
+    );
     assert!(eq36);
 
     // the exact general rule

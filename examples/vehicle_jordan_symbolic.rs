@@ -108,11 +108,18 @@ fn main() {
     );
     assert_eq!(
         scaled,
-        kk.parse("cf*cr*(a + b)^2 + m*u^2*(b*cr - a*cf)").expect("p")
+        kk.parse("cf*cr*(a + b)^2 + m*u^2*(b*cr - a*cf)")
+            .expect("p")
     );
-    println!("  conditions (assumed nonzero): {:?}", jf.conditions_strings());
+    println!(
+        "  conditions (assumed nonzero): {:?}",
+        jf.conditions_strings()
+    );
     for (f, _) in factor(disc.num()).expect("f").factors {
-        assert!(jf.conditions.contains(&f), "the discriminant is a condition");
+        assert!(
+            jf.conditions.contains(&f),
+            "the discriminant is a condition"
+        );
     }
     assert!(jf.verified);
 
@@ -122,12 +129,7 @@ fn main() {
         let x = kk.substitute(x, 2, &zero_q).expect("cf = 0");
         kk.substitute(&x, 1, &zero_q).expect("b = 0")
     };
-    let a27_general = Matrix::from_vec(
-        kk.clone(),
-        4,
-        4,
-        jf.a.as_slice().iter().map(sub).collect(),
-    );
+    let a27_general = Matrix::from_vec(kk.clone(), 4, 4, jf.a.as_slice().iter().map(sub).collect());
     let k3 = RatFuncField::new(&["cr", "m", "u"]).expect("field");
     let a27 = mat(
         &k3,
@@ -139,7 +141,10 @@ fn main() {
         ],
     );
     assert_eq!(show(kk, &a27_general), show(&k3, &a27));
-    println!("\neq. 27 (cf = 0, b = 0 in eq. 25): A =\n{}", show(&k3, &a27));
+    println!(
+        "\neq. 27 (cf = 0, b = 0 in eq. 25): A =\n{}",
+        show(&k3, &a27)
+    );
     let jf = jordan_params(&a27).expect("jordan");
     let k3 = jf.field.clone();
     println!("eq. 10: det(sI - A) = {}", kk_charpoly(&jf));
@@ -153,11 +158,22 @@ fn main() {
         zero.blocks,
         k3.fmt_elem(&s)
     );
-    assert_eq!((zero.blocks.as_slice(), se.blocks.as_slice()), (&[3][..], &[1][..]));
+    assert_eq!(
+        (zero.blocks.as_slice(), se.blocks.as_slice()),
+        (&[3][..], &[1][..])
+    );
     let t = &jf.t;
     let col = |j: usize| -> Vec<String> { (0..4).map(|i| k3.fmt_elem(t.get(i, j))).collect() };
-    println!("eq. 28: X1 = {:?} (s = 0), X2 = {:?} (s = -cr/(m u))", col(0), col(3));
-    println!("eq. 30-33: the chain of 0: A Y1 = X1, A Z1 = Y1: Y1 = {:?}, Z1 = {:?}", col(1), col(2));
+    println!(
+        "eq. 28: X1 = {:?} (s = 0), X2 = {:?} (s = -cr/(m u))",
+        col(0),
+        col(3)
+    );
+    println!(
+        "eq. 30-33: the chain of 0: A Y1 = X1, A Z1 = Y1: Y1 = {:?}, Z1 = {:?}",
+        col(1),
+        col(2)
+    );
     // the paper's eq. 21/31 read [I s - A] Y = X, i.e. -A Y = X at s = 0; its chosen vectors
     // (eq. 33) satisfy A Y = X (the convention of J with +1 on the superdiagonal)
     let y33 = mat(&k3, &[&["0"], &["1/u"], &["0"], &["0"]]);
@@ -172,7 +188,11 @@ fn main() {
         az == y33
     );
     assert!(ay == x1 && az == y33);
-    println!("eq. 34-35: T =\n{}\nJ =\n{}", show(&k3, t), show(&k3, &jf.j));
+    println!(
+        "eq. 34-35: T =\n{}\nJ =\n{}",
+        show(&k3, t),
+        show(&k3, &jf.j)
+    );
     let t34 = mat(
         &k3,
         &[
@@ -183,7 +203,10 @@ fn main() {
         ],
     );
     assert!(jf.verified);
-    assert_eq!(jf.a.try_mul(&t34).expect("m"), t34.try_mul(&jf.j).expect("m"));
+    assert_eq!(
+        jf.a.try_mul(&t34).expect("m"),
+        t34.try_mul(&jf.j).expect("m")
+    );
     // the paper's T = our T * C with C commuting with J (the normalisation freedom)
     let cmat = t.inverse().expect("T invertible").try_mul(&t34).expect("m");
     assert_eq!(
@@ -196,7 +219,10 @@ fn main() {
         jf.verified,
         show(&k3, &cmat)
     );
-    println!("  conditions (assumed nonzero): {:?}", jf.conditions_strings());
+    println!(
+        "  conditions (assumed nonzero): {:?}",
+        jf.conditions_strings()
+    );
 
     // ---- eq. 36-37: the closed-form response in symbols
     let k7 = RatFuncField::new(&["cr", "m", "u", "y0", "psi0", "v0", "r0"]).expect("field");
@@ -221,7 +247,9 @@ fn main() {
     ];
     let fr = jf7.free_response(&x0).expect("response").expect("complete");
     assert!(fr.verified);
-    println!("\neq. 36-37: x(t) = sum over eigenvalues e^(theta t) sum_k t^k g_k (verified: x(0) = x0, x' = A x):");
+    println!(
+        "\neq. 36-37: x(t) = sum over eigenvalues e^(theta t) sum_k t^k g_k (verified: x(0) = x0, x' = A x):"
+    );
     let names = ["y", "psi", "v", "r"];
     for (theta, gs) in &fr.terms {
         for (kk_, g) in gs.iter().enumerate() {
@@ -239,7 +267,12 @@ fn main() {
     }
     // eq. 37 term by term: y(t) = y0 + (psi0 - r0/s) u t - r0 u t^2/2 - (v0/s) e^{st}
     let zero_terms = &fr.terms.iter().find(|(th, _)| k7.is_zero(th)).expect("0").1;
-    let s_terms = &fr.terms.iter().find(|(th, _)| !k7.is_zero(th)).expect("s").1;
+    let s_terms = &fr
+        .terms
+        .iter()
+        .find(|(th, _)| !k7.is_zero(th))
+        .expect("s")
+        .1;
     let want37: [(&str, &[&str]); 4] = [
         ("37a", &["y0", "(psi0 + r0*m*u/cr)*u", "-r0*u/2"]),
         ("37b", &["psi0", "-r0", "0"]),
@@ -273,7 +306,11 @@ fn kk_charpoly(jf: &exactlti::jordan::params::ParamJordanForm) -> String {
         .iter()
         .map(|e| {
             let t = jf.fmt_factor(&e.factor);
-            let t = if e.factor.len() > 1 { format!("({t})") } else { t };
+            let t = if e.factor.len() > 1 {
+                format!("({t})")
+            } else {
+                t
+            };
             if e.algebraic_multiplicity > 1 {
                 format!("{t}^{}", e.algebraic_multiplicity)
             } else {

@@ -119,7 +119,10 @@ fn general_yaw_plane_eq24_26_charpoly_and_discriminant() {
     );
     let jf = jordan_params(&a).unwrap();
     assert!(jf.verified);
-    assert!(!jf.complete, "the nonzero pair is a root pair of a quadratic");
+    assert!(
+        !jf.complete,
+        "the nonzero pair is a root pair of a quadratic"
+    );
     let kk = &jf.field;
     let zero = jf.eigenvalue(&kk.zero()).expect("0");
     // two zeros (lateral offset, heading) in one 2x2 block
@@ -167,10 +170,7 @@ fn planted_structures_random_points() {
             &[1, 1, 1],
         ),
     ];
-    let s = mat(
-        &k,
-        &[&["1", "p", "0"], &["q", "1", "1"], &["0", "1", "2"]],
-    );
+    let s = mat(&k, &[&["1", "p", "0"], &["q", "1", "1"], &["0", "1", "2"]]);
     let si = s.inverse().unwrap();
     let mut seed = 12345u64;
     for (rows, want_blocks) in cases {
@@ -186,9 +186,14 @@ fn planted_structures_random_points() {
         blocks.sort_unstable_by(|x, y| y.cmp(x));
         assert_eq!(&blocks, want_blocks);
         for _ in 0..4 {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             let p0 = [
-                q(((seed >> 33) % 19) as i64 - 9, 1 + ((seed >> 20) % 3) as i64),
+                q(
+                    ((seed >> 33) % 19) as i64 - 9,
+                    1 + ((seed >> 20) % 3) as i64,
+                ),
                 q(((seed >> 40) % 17) as i64 - 8, 1),
             ];
             if jf.conditions_vanish_at(&p0) {
@@ -273,7 +278,13 @@ fn cli_jordan_over_qp_and_at() {
     assert_eq!(j["eigenvalues"][1]["value"], "-4000/m");
     // --at: every symbol valued -> the ordinary rational path
     let (code, out, _) = run(&[
-        "jordan", yaw, "--symbolic", "--at", "m=1500, u=20, cr=80000", "--format", "json",
+        "jordan",
+        yaw,
+        "--symbolic",
+        "--at",
+        "m=1500, u=20, cr=80000",
+        "--format",
+        "json",
     ]);
     assert_eq!(code, 0);
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
@@ -348,8 +359,9 @@ fn mnf_appendix_b_in_symbols() {
                 .collect(),
         )
     };
-    let r = exactlti::structure::mechanical::mechanical_normal_form(&at(&a), &at(&b), &at(&c), &at(&d))
-        .unwrap();
+    let r =
+        exactlti::structure::mechanical::mechanical_normal_form(&at(&a), &at(&b), &at(&c), &at(&d))
+            .unwrap();
     assert!(r.exists && r.verified);
     // CLI
     let (code, out, err) = run(&["mnf", "tests/data/mnf_appendix_b.json", "--format", "json"]);
@@ -368,8 +380,10 @@ fn mnf_appendix_b_in_symbols() {
 #[test]
 fn compaction_rule_eq34_36() {
     use exactlti::matrix::params::rref_params;
-    let k = RatFuncField::new(&["a11", "a12", "a22", "b1", "b2", "b3", "b4", "c1", "c2", "c3", "c4"])
-        .unwrap();
+    let k = RatFuncField::new(&[
+        "a11", "a12", "a22", "b1", "b2", "b3", "b4", "c1", "c2", "c3", "c4",
+    ])
+    .unwrap();
     let mm = mat(&k, &[&["a11", "a12"], &["-a12", "a22"]]);
     let a = Matrix::block_diag(k.clone(), &[mm.clone(), mm.clone()]);
     let b = mat(&k, &[&["b1"], &["b2"], &["b3"], &["b4"]]);
@@ -399,16 +413,27 @@ fn compaction_rule_eq34_36() {
         .submatrix(0, 2, 0, 1)
         .try_mul(&c.submatrix(0, 1, 0, 2))
         .unwrap()
-        .try_add(&b.submatrix(2, 4, 0, 1).try_mul(&c.submatrix(0, 1, 2, 4)).unwrap())
+        .try_add(
+            &b.submatrix(2, 4, 0, 1)
+                .try_mul(&c.submatrix(0, 1, 2, 4))
+                .unwrap(),
+        )
         .unwrap();
     let det = p.det().unwrap();
     let want = k.parse("(b1*b4 - b2*b3)*(c1*c4 - c2*c3)").unwrap();
-    assert!(det == want || det == k.neg(&want), "det P = {}", k.fmt_elem(&det));
+    assert!(
+        det == want || det == k.neg(&want),
+        "det P = {}",
+        k.fmt_elem(&det)
+    );
     let tr = |m: &Matrix<RatFuncField>| k.add(m.get(0, 0), m.get(1, 1));
     let tp = tr(&p);
     let c6 = k
         .div(
-            &k.sub(&k.mul(&k.parse("a11").unwrap(), &tp), &tr(&mm.try_mul(&p).unwrap())),
+            &k.sub(
+                &k.mul(&k.parse("a11").unwrap(), &tp),
+                &tr(&mm.try_mul(&p).unwrap()),
+            ),
             &k.parse("a12").unwrap(),
         )
         .unwrap();

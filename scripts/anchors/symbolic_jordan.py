@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Jordan form over Q(p): exactlti vs SymPy's Matrix.jordan_form on the same symbolic matrices.
 
-Usage (from anywhere):  python3 scripts/anchors/symbolic_jordan.py [--system]
+Usage (from anywhere):  python3 scripts/anchors/symbolic_jordan.py [--system] [--ours FILE]
 
 Creates the venv .venv-anchors at the repository root if missing and re-runs itself inside it
-(`--system`: use the current interpreter's SymPy instead); runs
+(`--system`: use the current interpreter's SymPy instead); runs (or, with `--ours FILE`,
+reads a saved output of)
 `cargo bench --bench symbolic_jordan`, which prints `name: best ms (median ms, reps)` lines and
 writes the inputs to target/symbolic-jordan-bench-cases.txt; times SymPy (ground types python)
 on the same matrices: `Matrix.jordan_form()` (T and J), and prints one table with the ratios
@@ -39,9 +40,12 @@ def best_ms(fn, budget=3.0, min_runs=3, max_runs=50):
 
 
 def run_ours():
-    env = dict(os.environ, CARGO_BUILD_JOBS=os.environ.get("CARGO_BUILD_JOBS", "1"))
-    out = subprocess.run(["cargo", "bench", "--bench", "symbolic_jordan"], cwd=ROOT, env=env,
-                         check=True, capture_output=True, text=True).stdout
+    if "--ours" in sys.argv:  # a saved `cargo bench --bench symbolic_jordan` output
+        out = Path(sys.argv[sys.argv.index("--ours") + 1]).read_text()
+    else:
+        env = dict(os.environ, CARGO_BUILD_JOBS=os.environ.get("CARGO_BUILD_JOBS", "1"))
+        out = subprocess.run(["cargo", "bench", "--bench", "symbolic_jordan"], cwd=ROOT,
+                             env=env, check=True, capture_output=True, text=True).stdout
     ours = {}
     for line in out.splitlines():
         m = re.match(r"^(.*): ([0-9.]+) ms", line)

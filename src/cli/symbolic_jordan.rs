@@ -38,7 +38,8 @@ pub fn report(jf: &ParamJordanForm) -> Report {
                 Some(v) => r.str("value", k.fmt_elem(v)),
                 None => r.str("roots_of", format!("{} = 0", jf.fmt_factor(&e.factor))),
             };
-            let ints = |xs: &[usize]| Value::List(xs.iter().map(|&b| Value::Int(b as i64)).collect());
+            let ints =
+                |xs: &[usize]| Value::List(xs.iter().map(|&b| Value::Int(b as i64)).collect());
             Value::Obj(
                 r.str("factor", jf.fmt_factor(&e.factor))
                     .int("degree", e.degree)
@@ -54,7 +55,11 @@ pub fn report(jf: &ParamJordanForm) -> Report {
         .iter()
         .map(|e| {
             let f = jf.fmt_factor(&e.factor);
-            let f = if e.factor.len() > 1 { format!("({f})") } else { f };
+            let f = if e.factor.len() > 1 {
+                format!("({f})")
+            } else {
+                f
+            };
             if e.algebraic_multiplicity > 1 {
                 format!("{f}^{}", e.algebraic_multiplicity)
             } else {

@@ -460,7 +460,9 @@ impl ParamJordanForm {
                         (1..=kk as u64).product::<u64>().into(),
                     ));
                     for i in 0..b - kk {
-                        let coef = k.div_unrecorded(c.get(off + i + kk, 0), &fact).expect("k! > 0");
+                        let coef = k
+                            .div_unrecorded(c.get(off + i + kk, 0), &fact)
+                            .expect("k! > 0");
                         for r in 0..n {
                             let v = k.add(&gs[kk][r], &k.mul(self.t.get(r, off + i), &coef));
                             gs[kk][r] = v;
@@ -475,9 +477,7 @@ impl ParamJordanForm {
                 }
             }
             for kk in 0..gs.len() {
-                let ag = self
-                    .a
-                    .try_mul(&Matrix::column(k.clone(), gs[kk].clone()))?;
+                let ag = self.a.try_mul(&Matrix::column(k.clone(), gs[kk].clone()))?;
                 for r in 0..n {
                     let mut want = k.mul(&theta, &gs[kk][r]);
                     if let Some(next) = gs.get(kk + 1) {
