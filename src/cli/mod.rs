@@ -15,6 +15,7 @@ mod float_cmds;
 mod pencil_cmds;
 mod sweep;
 mod symbolic;
+mod symbolic_jordan;
 
 /// One command run in-process (no output, no time bound): the report and its status.
 pub use commands::execute;

@@ -4,13 +4,14 @@
 //! What works over $\mathbb{Q}(p)$ (every result with `field` and `conditions`, the
 //! irreducible polynomials it assumes nonzero, and `verified` = its identity holds as
 //! rational functions): `linalg rank|det|charpoly|minpoly|rref|inverse|nullspace` on `A`,
-//! `scb`, `minreal` (Kalman, Rosenbrock, Ho-Kalman), `tf`, `zeros` (with the zero
-//! polynomial's factors over $\mathbb{Q}(p)$), `ctrb`, `obsv`, `standard`, `analyze`
+//! `jordan` and `mnf` ([`super::symbolic_jordan`]), `scb`, `minreal` (Kalman, Rosenbrock,
+//! Ho-Kalman), `tf`, `zeros` (with the zero polynomial's factors over $\mathbb{Q}(p)$), `ctrb`,
+//! `obsv`, `standard`, `analyze`
 //! ([`system`]); `bifurcations` in [`super::bifurcations`]. Every other command refuses with
 //! one line and exit status 2 (`modes`: give values with `--at`).
 //!
-//! This module imports no other command module: a file whose symbols all got values is
-//! handed back ([`Handled::Valued`]) to the ordinary dispatch.
+//! This module imports only leaf command modules (`common`, `symbolic_jordan`): a file whose
+//! symbols all got values is handed back ([`Handled::Valued`]) to the ordinary dispatch.
 
 pub(super) mod system;
 
@@ -132,6 +133,16 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ha
                             .str("field", k.to_string())
                             .with("conditions", str_list(conds)),
                     ))))
+                }
+                Command::Jordan { real: false, .. } => {
+                    crate::cli::symbolic_jordan::jordan_outcome(&t.a_raw)
+                        .map(|o| Some(Handled::Done(o)))
+                        .map_err(|e| with_path(path, e))
+                }
+                Command::Mnf { .. } => {
+                    crate::cli::symbolic_jordan::mnf_outcome(&t.ss.a, &t.ss.b, &t.ss.c, &t.ss.d)
+                        .map(|o| Some(Handled::Done(o)))
+                        .map_err(|e| with_path(path, e))
                 }
                 _ => match system::run(cmd, &loaded.file, t, path)? {
                     Some(out) => Ok(Some(Handled::Done(out))),
