@@ -39,8 +39,8 @@ fn load(path: &str) -> StateSpace<RatFuncField> {
 fn main() {
     for (label, file) in [
         ("scb dc motor", "data/dc-motor-lugre.json"),
-        ("scb single track front", "data/single-track-front.json"),
-        ("scb single track rear", "data/single-track-rear.json"),
+        ("scb single track front", "data/scb/single-track-front.json"),
+        ("scb single track rear", "data/scb/single-track-rear.json"),
     ] {
         if !selected(label) {
             continue;

@@ -98,7 +98,7 @@ fn tree(k: &RatFuncField, n: &Node<[usize; 4]>, indent: usize) {
 
 fn main() -> exactlti::Result<()> {
     println!("== Sec. IV: linear single-track model, front steering (A-hat, B-hat, C-hat)");
-    let front = load("data/single-track-front.json");
+    let front = load("data/scb/single-track-front.json");
     show("A-hat", &front.a);
     let (r, conds) = derive(&front)?;
     report(&r, &conds);
@@ -108,7 +108,7 @@ fn main() -> exactlti::Result<()> {
     );
 
     println!("\n== Sec. IV: rear-axle steering added (B-hat gets [0, 0, 0, c_r/T_r]^T)");
-    let rear = load("data/single-track-rear.json");
+    let rear = load("data/scb/single-track-rear.json");
     let (r, conds) = derive(&rear)?;
     report(&r, &conds);
     let k = rear.a.field();

@@ -18,8 +18,8 @@ use std::path::Path;
 use std::process::Command;
 
 const DC: &str = "data/dc-motor-lugre.json";
-const FRONT: &str = "data/single-track-front.json";
-const REAR: &str = "data/single-track-rear.json";
+const FRONT: &str = "data/scb/single-track-front.json";
+const REAR: &str = "data/scb/single-track-rear.json";
 
 fn load(path: &str) -> StateSpace<RatFuncField> {
     let l = load_symbolic_path(Path::new(path), &SymbolicOptions::default()).unwrap();

@@ -32,8 +32,8 @@ from _common import ROOT, ensure_venv  # noqa: E402
 LINE = re.compile(r"^(scb dc motor|scb single track front|scb single track rear|minreal sliding masses|bifurcations dc motor): ([\d.]+) ms")
 CASES = {
     "scb dc motor": "data/dc-motor-lugre.json",
-    "scb single track front": "data/single-track-front.json",
-    "scb single track rear": "data/single-track-rear.json",
+    "scb single track front": "data/scb/single-track-front.json",
+    "scb single track rear": "data/scb/single-track-rear.json",
     "minreal sliding masses": "data/sliding-masses-symbolic.json",
 }
 
