@@ -67,6 +67,8 @@ mod scb;
 mod study;
 #[path = "symbolic.rs"]
 mod symbolic;
+#[path = "symbolic_scb.rs"]
+mod symbolic_scb;
 #[path = "symjordan.rs"]
 mod symjordan;
 
