@@ -25,6 +25,8 @@ use num_traits::{One, Signed, Zero};
 const HEU_TRIES: usize = 6;
 /// The heuristic gcd gives up when evaluated coefficients would exceed this many bits.
 const HEU_MAX_BITS: u64 = 1 << 16;
+/// Below this many terms (in the smaller input) the heuristic gcd is tried before Brown's.
+const HEU_FIRST_TERMS: usize = 0;
 
 /// $\gcd(f, g)$ with positive leading coefficient; $\gcd(0, 0) = 0$.
 ///
@@ -77,10 +79,21 @@ fn primitive_gcd(f: &MPoly, g: &MPoly) -> MPoly {
             return acc;
         }
     }
-    if let Some(h) = gcd_heuristic(f, g) {
+    if heuristic_first(f, g)
+        && let Some(h) = gcd_heuristic(f, g)
+    {
+        return h;
+    }
+    if let Some(h) = super::brown::gcd_brown(f, g) {
         return h;
     }
     gcd_subresultant(f, g)
+}
+
+/// Whether the heuristic gcd goes before Brown's: small inputs, where evaluating at one
+/// integer is cheaper than a prime's worth of modular images.
+fn heuristic_first(f: &MPoly, g: &MPoly) -> bool {
+    f.len().min(g.len()) <= HEU_FIRST_TERMS
 }
 
 /// Heuristic gcd of two polynomials (Char–Geddes–Gonnet). `None` when it does not succeed;

@@ -23,6 +23,8 @@ use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
+use super::Poly;
+use crate::field::Q;
 
 /// A dense integer polynomial, low degree first, without trailing zeros.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Default)]
@@ -480,6 +482,18 @@ pub(crate) fn coprime_mod_some_prime(f: &ZPoly, g: &ZPoly) -> bool {
         }
     }
     false
+}
+
+impl ZPoly {
+    /// The primitive integer polynomial with positive leading coefficient proportional to
+    /// `p` (zero for zero).
+    pub fn from_poly_q(p: &Poly<Q>) -> ZPoly {
+        ZPoly::new(super::zslice::from_poly_q(p))
+    }
+    /// $f / \operatorname{lc}(f)$ over $\mathbb{Q}$ (zero stays zero).
+    pub fn to_monic_q(&self) -> Poly<Q> {
+        super::zslice::to_monic_q(self.coeffs())
+    }
 }
 
 #[cfg(test)]
