@@ -87,27 +87,22 @@ impl Zp {
     }
 }
 
-fn is_prime(n: u64) -> bool {
-    if n < 2 {
-        return false;
-    }
-    let mut d = 2;
-    while d * d <= n {
-        if n.is_multiple_of(d) {
-            return false;
+/// The `i`-th prime below [`PRIME_START`] in decreasing order (cached process-wide; primality
+/// by the deterministic Miller–Rabin test of [`crate::qkernels::prime::is_prime_u64`]).
+fn nth_prime(i: usize) -> u64 {
+    static PRIMES: std::sync::OnceLock<Vec<u64>> = std::sync::OnceLock::new();
+    let table = PRIMES.get_or_init(|| {
+        let mut v = Vec::with_capacity(MAX_PRIMES);
+        let mut c = PRIME_START + 1;
+        while v.len() < MAX_PRIMES {
+            c -= 1;
+            if crate::qkernels::prime::is_prime_u64(c) {
+                v.push(c);
+            }
         }
-        d += 1;
-    }
-    true
-}
-
-/// The primes below [`PRIME_START`] in decreasing order.
-fn next_prime_below(p: u64) -> u64 {
-    let mut c = p - 1;
-    while !is_prime(c) {
-        c -= 1;
-    }
-    c
+        v
+    });
+    table[i]
 }
 
 // ---------------------------------------------------------------- dense univariate mod p
@@ -489,15 +484,12 @@ pub fn gcd_brown(f: &MPoly, g: &MPoly) -> Option<MPoly> {
     let k = (0..n).rev().find(|&i| df[i] > 0 || dg[i] > 0)? + 1;
     let (lf, lg) = (f.lc(), g.lc());
     let gamma = lf.abs().gcd(&lg.abs());
-    let mut p = PRIME_START + 1;
     // CRT state: lifted coefficients in [0, m) on the monomials of `mons`
     let mut lift: Vec<(u128, BigInt)> = Vec::new();
     let mut modulus = BigInt::one();
     let mut lm: Option<u128> = None;
-    let mut tried = 0usize;
-    while tried < MAX_PRIMES {
-        p = next_prime_below(p);
-        tried += 1;
+    for i in 0..MAX_PRIMES {
+        let p = nth_prime(i);
         let zp = Zp { p };
         if zp.reduce(&lf) == 0 || zp.reduce(&lg) == 0 {
             continue;

@@ -13,7 +13,11 @@
 //!    evaluation to huge integers (measured: 4x faster on the bench's charpoly gcds; a
 //!    univariate multi-modular gcd was slower there, as the gcd of the evaluated
 //!    polynomials has coefficients of thousands of bits);
-//! 3. [`gcd_subresultant`]: content and primitive part in a main variable, subresultant PRS
+//! 3. [`super::brown::gcd_brown`]: Brown's dense modular gcd (word primes, evaluation and
+//!    Newton interpolation per variable, CRT), verified by exact division; measured slower
+//!    than the heuristic on the bench's cases (`benches/mpoly.rs` prints both), so it comes
+//!    second, where the heuristic gives up;
+//! 4. [`gcd_subresultant`]: content and primitive part in a main variable, subresultant PRS
 //!    with polynomial coefficients (always succeeds).
 
 use super::MPoly;
@@ -25,8 +29,6 @@ use num_traits::{One, Signed, Zero};
 const HEU_TRIES: usize = 6;
 /// The heuristic gcd gives up when evaluated coefficients would exceed this many bits.
 const HEU_MAX_BITS: u64 = 1 << 16;
-/// Below this many terms (in the smaller input) the heuristic gcd is tried before Brown's.
-const HEU_FIRST_TERMS: usize = 0;
 
 /// $\gcd(f, g)$ with positive leading coefficient; $\gcd(0, 0) = 0$.
 ///
@@ -79,21 +81,13 @@ fn primitive_gcd(f: &MPoly, g: &MPoly) -> MPoly {
             return acc;
         }
     }
-    if heuristic_first(f, g)
-        && let Some(h) = gcd_heuristic(f, g)
-    {
+    if let Some(h) = gcd_heuristic(f, g) {
         return h;
     }
     if let Some(h) = super::brown::gcd_brown(f, g) {
         return h;
     }
     gcd_subresultant(f, g)
-}
-
-/// Whether the heuristic gcd goes before Brown's: small inputs, where evaluating at one
-/// integer is cheaper than a prime's worth of modular images.
-fn heuristic_first(f: &MPoly, g: &MPoly) -> bool {
-    f.len().min(g.len()) <= HEU_FIRST_TERMS
 }
 
 /// Heuristic gcd of two polynomials (Char–Geddes–Gonnet). `None` when it does not succeed;
