@@ -43,7 +43,11 @@ fn textbook_cases() {
     // gcd free of the main variable (content in x)
     check(&p("(a + b)*(x^2 + 1)"), &p("(a + b)*(x + c)"), &p("a + b"));
     // gcd in the last variable only
-    check(&p("(c^2 + 3)*(x - a)"), &p("(c^2 + 3)*(x + b)"), &p("c^2 + 3"));
+    check(
+        &p("(c^2 + 3)*(x - a)"),
+        &p("(c^2 + 3)*(x + b)"),
+        &p("c^2 + 3"),
+    );
 }
 
 #[test]
@@ -62,11 +66,18 @@ fn unlucky_evaluation_point() {
 fn unlucky_primes_and_large_coefficients() {
     // leading coefficients divisible by the first primes below 2^31 and coefficients of
     // ~200 bits: several primes, some skipped
-    let big = BigInt::parse_bytes(b"1606938044258990275541962092341162602522202993782792835301376", 10)
-        .unwrap();
+    let big = BigInt::parse_bytes(
+        b"1606938044258990275541962092341162602522202993782792835301376",
+        10,
+    )
+    .unwrap();
     let q = BigInt::from(2147483647i64) * BigInt::from(2147483629i64);
-    let h = p("x^3*a + b*c - 5").scale(&BigInt::from(1)).add(&MPoly::constant(4, big.clone()));
-    let u = p("x*b + 1").scale(&q).add(&MPoly::constant(4, BigInt::from(7)));
+    let h = p("x^3*a + b*c - 5")
+        .scale(&BigInt::from(1))
+        .add(&MPoly::constant(4, big.clone()));
+    let u = p("x*b + 1")
+        .scale(&q)
+        .add(&MPoly::constant(4, BigInt::from(7)));
     let w = p("x^2 - c").scale(&q).add(&p("a"));
     check(&h.mul(&u), &h.mul(&w), &h);
     check(&h.pow(2).mul(&u), &h.mul(&w).mul(&u), &h.mul(&u));
@@ -76,7 +87,10 @@ fn unlucky_primes_and_large_coefficients() {
 fn staged_gcd_keeps_integer_content() {
     let f = p("x*a + b");
     assert_eq!(
-        gcd(&f.scale(&BigInt::from(12)), &f.mul(&p("x - c")).scale(&BigInt::from(-18))),
+        gcd(
+            &f.scale(&BigInt::from(12)),
+            &f.mul(&p("x - c")).scale(&BigInt::from(-18))
+        ),
         f.scale(&BigInt::from(6))
     );
 }

@@ -86,7 +86,11 @@ fn slicot_ag08bd_system_pencil() {
     // (one infinite zero of order 2), right indices [2], left indices [1]; normal rank of
     // the transfer matrix 2, i.e. normal rank 9 + 2 of the system pencil
     let (a, e, b, c, d) = ag08bd();
-    let s = a.hstack(&b).unwrap().vstack(&c.hstack(&d).unwrap()).unwrap();
+    let s = a
+        .hstack(&b)
+        .unwrap()
+        .vstack(&c.hstack(&d).unwrap())
+        .unwrap();
     let ez = e
         .hstack(&Matrix::zeros(Q, 9, 3))
         .unwrap()

@@ -512,7 +512,10 @@ pub fn gcd_brown(f: &MPoly, g: &MPoly) -> Option<MPoly> {
                     .iter()
                     .map(|(m, c)| (*m, if c > &half { c - &modulus } else { c.clone() }))
                     .collect();
-                let agrees = sym.iter().zip(&img).all(|((_, c), (_, r))| zp.reduce(c) == *r);
+                let agrees = sym
+                    .iter()
+                    .zip(&img)
+                    .all(|((_, c), (_, r))| zp.reduce(c) == *r);
                 if agrees {
                     let h = MPoly::from_sorted(n, sym).primitive_part();
                     if f.div_exact(&h).is_some() && g.div_exact(&h).is_some() {
@@ -531,10 +534,7 @@ pub fn gcd_brown(f: &MPoly, g: &MPoly) -> Option<MPoly> {
                 continue;
             }
             _ => {
-                lift = img
-                    .iter()
-                    .map(|&(m, c)| (m, BigInt::from(c)))
-                    .collect();
+                lift = img.iter().map(|&(m, c)| (m, BigInt::from(c))).collect();
                 modulus = BigInt::from(p);
                 lm = Some(ilm);
             }
@@ -583,9 +583,6 @@ mod tests {
             gcd_brown(&u.mul(&w), &u.mul(&p("x*c + 5"))),
             Some(u.clone())
         );
-        assert_eq!(
-            gcd_brown(&u.mul(&w).mul(&w), &w.pow(3)),
-            Some(w.pow(2))
-        );
+        assert_eq!(gcd_brown(&u.mul(&w).mul(&w), &w.pow(3)), Some(w.pow(2)));
     }
 }

@@ -17,14 +17,14 @@
 //!
 //! `Display` writes `x^4 + 4*x^2 + 1`; [`ZPoly::display_with`] uses another variable name.
 
+use super::Poly;
+use crate::field::Q;
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
-use super::Poly;
-use crate::field::Q;
 
 /// A dense integer polynomial, low degree first, without trailing zeros.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Default)]
