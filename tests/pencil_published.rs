@@ -17,8 +17,11 @@ fn m(rows: &[&[i64]]) -> Matrix<Q> {
     Matrix::from_i64_rows(rows)
 }
 
+/// (A, E, B, C, D).
+type Descriptor = (Matrix<Q>, Matrix<Q>, Matrix<Q>, Matrix<Q>, Matrix<Q>);
+
 /// AG08BD.dat, read as the example program reads it (A, E, B, C, D row by row).
-fn ag08bd() -> (Matrix<Q>, Matrix<Q>, Matrix<Q>, Matrix<Q>, Matrix<Q>) {
+fn ag08bd() -> Descriptor {
     let a = Matrix::identity(Q, 9);
     let mut e = Matrix::zeros(Q, 9, 9);
     let one = exactlti::field::Rational::from_integer(1.into());

@@ -11,7 +11,7 @@
 //! $\operatorname{pp}(H)$ is accepted only if it **divides $f$ and $g$ exactly** over
 //! $\mathbb{Z}$ (so the result is never wrong; a failed test restarts with fresh primes).
 //!
-//! The gcd over $\mathbb{Z}_p$ ([`pgcd`]) is Brown's recursion (Geddes–Czapor–Labahn, Alg.
+//! The gcd over $\mathbb{Z}_p$ (`pgcd`) is Brown's recursion (Geddes–Czapor–Labahn, Alg.
 //! 7.2): with $v$ the last active variable, contents and leading coefficients are
 //! univariate in $x_v$; evaluate $x_v = \beta$ where $\gamma_v(\beta) \ne 0$, recurse, scale
 //! the image to leading coefficient $\gamma_v(\beta)$, discard images whose leading monomial
@@ -21,7 +21,7 @@
 //! algorithm.
 //!
 //! FLINT's `fmpz_mpoly_gcd` stages the same way (trivial cases, then Brown / Zippel / Hensel
-//! by shape); SymPy has no modular multivariate gcd over ZZ (`heugcd`, then the PRS).
+//! by shape); SymPy's `euclidtools` default over ZZ is `heugcd`, then the PRS.
 
 use super::{MPoly, shift, width};
 use num_bigint::{BigInt, Sign};
@@ -459,7 +459,7 @@ fn reduce_poly(zp: Zp, f: &MPoly) -> Sp {
 
 /// $\gcd(f, g)$ of primitive, non-constant $f, g$ by Brown's modular algorithm, positive
 /// leading coefficient, verified by exact division; `None` if no verified result came within
-/// [`MAX_PRIMES`] primes (then the caller uses another method).
+/// `MAX_PRIMES` (400) primes (then the caller uses another method).
 ///
 /// # Examples
 /// ```
