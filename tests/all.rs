@@ -49,10 +49,14 @@ mod matrix_modular;
 mod mechanical;
 #[path = "mpoly.rs"]
 mod mpoly;
+#[path = "mpoly_gcd.rs"]
+mod mpoly_gcd;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]
 mod pencil_descriptor;
+#[path = "pencil_published.rs"]
+mod pencil_published;
 #[path = "poly_factor.rs"]
 mod poly_factor;
 #[path = "realization.rs"]
