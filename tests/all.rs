@@ -65,6 +65,8 @@ mod robustness;
 mod scb;
 #[path = "study.rs"]
 mod study;
+#[path = "slowpaths.rs"]
+mod slowpaths;
 #[path = "symbolic.rs"]
 mod symbolic;
 

@@ -130,7 +130,7 @@ impl PrimaryComponent {
     /// Exact check in $K$ of $A V = V J_t$, $W A = J_t W$ and $W V = I$.
     pub fn verify(&self, a: &Matrix<Q>) -> bool {
         if self.multiplicity == 1 && self.degree() >= 2 {
-            return super::simple::verify_simple(self, a);
+            return super::coeffs::verify_simple(&self.field, &self.chains, &self.left_chains, a);
         }
         let v = &self.chains;
         let w = &self.left_chains;
