@@ -170,19 +170,16 @@ def main():
         rng = Rng(3000 + n)
         r = n // 2
         a = [[0] * n for _ in range(n)]
+        blk = [0 if i < r else 1 if i < 3 * n // 4 else 2 for i in range(n)]
+        # co (0..r), c-not-o (r..3n/4), not-c (3n/4..n): not-c rows see only not-c states,
+        # co rows see co and not-c states (the c-not-o states stay invisible), B is zero on
+        # the not-c rows and C zero on the c-not-o columns: minimal order r = n/2
         for i in range(n):
             for k in range(n):
-                # co (0..r), c-not-o (r..3n/4), not-c (3n/4..n): lower block-triangular
-                bi, bk = (0 if i < r else 1 if i < 3 * n // 4 else 2), (0 if k < r else 1 if k < 3 * n // 4 else 2)
-                if bk <= bi or (bi == 1 and bk == 0):
+                if (blk[i] == 2 and blk[k] == 2) or (blk[i] == 0 and blk[k] != 1) or blk[i] == 1:
                     a[i][k] = rng.int(-5, 5)
-        # uncontrollable states are the last quarter: A[co/cno rows, nc cols] = 0 above
-        b = [[rng.int(-3, 3) if i < 3 * n // 4 else 0] for i in range(n)]
-        c = [[rng.int(-3, 3) if k < r or k >= 3 * n // 4 else 0 for k in range(n)]]
-        # co and not-c blocks coupled; c-not-o states feed nothing observed: A[co, cno] = 0
-        for i in range(r):
-            for k in range(r, 3 * n // 4):
-                a[i][k] = 0
+        b = [[rng.int(-3, 3) if blk[i] != 2 else 0] for i in range(n)]
+        c = [[rng.int(-3, 3) if blk[k] != 1 else 0 for k in range(n)]]
         big = 10**20 + 39
         t = unimodular(rng, n, 3 * n)
         t = [[x * big if i == 0 else x for x in row] for i, row in enumerate(t)]

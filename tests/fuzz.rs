@@ -231,15 +231,21 @@ fn commands(file: &Path) -> Vec<Command> {
         },
         Command::Check { file: f() },
     ];
-    // Not here while their owners rework them (reproducers in tests/data): `jordan --real`,
-    // `minreal --method jordan` and `analyze` (which runs both) take minutes on
-    // `fuzz_slow_real_jordan.json` (an entry -1e-300) and fail their check on
-    // `fuzz_jordan_marking.json`; `scripts/fuzz.sh` runs them through the binary.
+    // `jordan --real`, Jordan-method `minreal` and `analyze`: re-enabled once the real-field
+    // marking (`fuzz_jordan_marking.json`) and the slow real Jordan form
+    // (`fuzz_slow_real_jordan.json`) were confirmed fixed (tests/slowpaths.rs).
+    v.push(Command::Jordan {
+        file: f(),
+        real: true,
+        expand: false,
+    });
+    v.push(Command::Analyze { file: Some(f()) });
     for method in [
         MethodArg::Kalman,
         MethodArg::Rosenbrock,
         MethodArg::HoKalman,
         MethodArg::Era,
+        MethodArg::Jordan,
     ] {
         v.push(Command::Minreal {
             file: f(),
@@ -262,10 +268,9 @@ fn commands(file: &Path) -> Vec<Command> {
     v
 }
 
-/// Internal failures already filed against another part (printed, not failed here):
-/// the real-field marking of `minreal --method jordan` (everyday-models work; reproducer
-/// `tests/data/fuzz_jordan_marking.json`).
-const KNOWN: &[&str] = &["is marked at another root"];
+/// Internal failures already filed against another part (printed, not failed here); empty
+/// since the real-field marking was fixed.
+const KNOWN: &[&str] = &[];
 
 /// Runs one command in a worker thread; `Err` describes a panic, a hang or a bad message.
 fn run_bounded(cmd: Command, limit: Duration) -> Result<(), String> {

@@ -4,7 +4,7 @@
 //! | module | computes |
 //! |---|---|
 //! | [`scb`] | special coordinate basis (Sannuti–Saberi; Grip–Saberi's symbolic procedure), exact |
-//! | [`zeros`] | invariant zeros from the Rosenbrock system matrix, independent of the SCB |
+//! | [`zeros`] | invariant zeros of the Rosenbrock system matrix (through the SCB; polynomial Smith form as fallback and oracle) |
 //! | [`mechanical`] | mechanical normal form: a first-order system back to $\ddot q + D\dot q + Kq = Wu$ |
 
 pub mod descriptor_zeros;
