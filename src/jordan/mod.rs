@@ -37,7 +37,7 @@
 //! enter exact arithmetic. The real/complex/purely-imaginary split is exact.
 
 pub mod chains;
-mod coeffs;
+pub(crate) mod coeffs;
 pub mod primary;
 pub mod real;
 pub(crate) mod realfield;
