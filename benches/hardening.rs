@@ -14,17 +14,32 @@ use std::process::Command;
 use std::time::Instant;
 
 const CASES: &[(&str, &[&str])] = &[
-    ("hardening/nilpotent_20", &["zeros", "scb", "check", "analyze", "jordan"]),
+    (
+        "hardening/nilpotent_20",
+        &["zeros", "scb", "check", "analyze", "jordan"],
+    ),
     ("hardening/planted_12", &["zeros", "scb"]),
     ("hardening/planted_16", &["zeros", "scb"]),
     ("hardening/planted_20", &["zeros", "scb", "jordan"]),
     ("hardening/bigq_18", &["jordan", "zeros"]),
     ("hardening/bigq_36", &["jordan"]),
-    ("hardening/rosen_30", &["minreal --method rosenbrock", "minreal --method kalman"]),
+    (
+        "hardening/rosen_30",
+        &["minreal --method rosenbrock", "minreal --method kalman"],
+    ),
     ("hardening/rosen_40", &["minreal --method rosenbrock"]),
-    ("hardening/dense_7", &["minreal --method jordan", "jordan --real"]),
-    ("fuzz_jordan_marking", &["jordan --real", "minreal --method jordan", "mnf"]),
-    ("fuzz_slow_real_jordan", &["jordan --real", "minreal --method jordan"]),
+    (
+        "hardening/dense_7",
+        &["minreal --method jordan", "jordan --real"],
+    ),
+    (
+        "fuzz_jordan_marking",
+        &["jordan --real", "minreal --method jordan", "mnf"],
+    ),
+    (
+        "fuzz_slow_real_jordan",
+        &["jordan --real", "minreal --method jordan"],
+    ),
     ("everyday/random_8_siso", &["minreal --method jordan"]),
     ("everyday/random_12_siso", &["minreal --method jordan"]),
     ("everyday/random_12_mimo", &["minreal --method jordan"]),

@@ -63,10 +63,10 @@ mod realization_planted;
 mod robustness;
 #[path = "scb.rs"]
 mod scb;
-#[path = "study.rs"]
-mod study;
 #[path = "slowpaths.rs"]
 mod slowpaths;
+#[path = "study.rs"]
+mod study;
 #[path = "symbolic.rs"]
 mod symbolic;
 #[path = "symjordan.rs"]

@@ -11,7 +11,9 @@ use exactlti::structure::mechanical::{input_compression, mechanical_normal_form}
 use std::path::PathBuf;
 
 fn data(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(name)
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data")
+        .join(name)
 }
 
 fn tmp_file(name: &str, text: &str) -> PathBuf {
@@ -93,7 +95,11 @@ fn mnf_with_rank_deficient_input_matrix_on_scrambled_systems() {
     assert_eq!(f.input.submatrix(1, 3, 0, 3), r);
     assert!(f.input.row(0).iter().all(|x| Q.is_zero(x)));
     assert_eq!(&f.output * &f.t, c2);
-    assert!(m.conditions.iter().any(|c| c.name == "input_compression" && !c.decisive));
+    assert!(
+        m.conditions
+            .iter()
+            .any(|c| c.name == "input_compression" && !c.decisive)
+    );
 }
 
 // ---- zeros through the SCB: oracle and an independent identity ----
@@ -127,7 +133,10 @@ fn zeros_of_square_planted_systems_are_det_p_up_to_a_constant() {
                 continue;
             }
             let r = Q.div(&det, &zv).unwrap();
-            assert!(ratio.get_or_insert(r.clone()) == &r, "{f}: det P / z not constant");
+            assert!(
+                ratio.get_or_insert(r.clone()) == &r,
+                "{f}: det P / z not constant"
+            );
         }
         if rows == cols && z.normal_rank == rows {
             // det P(s) has degree n - (relative degree), z has the same degree: nonzero c
@@ -149,7 +158,11 @@ fn zeros_through_the_scb_agree_with_the_smith_form_oracle() {
         let a = g(n, n, 3);
         let mut b = g(n, m, 2);
         let mut c = g(p, n, 2);
-        let d = if case % 3 == 0 { g(p, m, 1) } else { Matrix::zeros(Q, p, m) };
+        let d = if case % 3 == 0 {
+            g(p, m, 1)
+        } else {
+            Matrix::zeros(Q, p, m)
+        };
         if case % 4 == 1 && m > 1 {
             // a dependent input column
             for i in 0..n {
@@ -171,8 +184,8 @@ fn zeros_through_the_scb_agree_with_the_smith_form_oracle() {
 
 #[test]
 fn rosenbrock_staircase_has_the_eq17_pattern_and_matches_kalman() {
-    use exactlti::realization::{MinrealMethod, minimal};
     use exactlti::realization::controllable_staircase;
+    use exactlti::realization::{MinrealMethod, minimal};
     for f in ["hardening/rosen_30.json", "everyday/random_8_mimo.json"] {
         let s = sys_of(f);
         let n = s.nstates();
@@ -212,7 +225,12 @@ fn real_jordan_form_is_exact_for_sextic_and_septic_factors() {
         let jf = jordan(&a).unwrap();
         assert!(jf.verified, "case {i}");
         let rf = jf.real_form().unwrap();
-        assert!(rf.exact && rf.verified, "case {i}: exact {} verified {}", rf.exact, rf.verified);
+        assert!(
+            rf.exact && rf.verified,
+            "case {i}: exact {} verified {}",
+            rf.exact,
+            rf.verified
+        );
     }
     // the fuzzer's reproducers through the commands: verified (exit 0)
     for f in ["fuzz_jordan_marking.json", "fuzz_slow_real_jordan.json"] {

@@ -129,7 +129,10 @@ impl SystemVisitor for FileCommand<'_> {
                     .downcast_ref::<crate::system::StateSpace<crate::field::QuadraticField>>();
                 match quad {
                     Some(s) => mnf(s, path),
-                    None => mnf(&needs_rational(f, t, "the mechanical normal form")?.ss, path),
+                    None => mnf(
+                        &needs_rational(f, t, "the mechanical normal form")?.ss,
+                        path,
+                    ),
                 }
             }
             Command::Scb { .. } => {

@@ -143,9 +143,15 @@ impl PrimaryComponent {
         let (blocks, kernel_dims, v, w) = match restrict(a, factor, mult)? {
             // chains of the restriction A_p (dm x dm) instead of the n x n matrix over K
             Some(r) => {
-                let nm = lift(&r.ap).try_sub(&Matrix::identity(field.clone(), r.ap.nrows()).scale(&t))?;
+                let nm = lift(&r.ap)
+                    .try_sub(&Matrix::identity(field.clone(), r.ap.nrows()).scale(&t))?;
                 let ch = jordan_chains(&nm, mult)?;
-                (ch.blocks, ch.kernel_dims, &lift(&r.u) * &ch.v, &ch.w * &lift(&r.proj))
+                (
+                    ch.blocks,
+                    ch.kernel_dims,
+                    &lift(&r.u) * &ch.v,
+                    &ch.w * &lift(&r.proj),
+                )
             }
             None => {
                 let nm = lift(a).try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;

@@ -137,4 +137,3 @@ fn elem_of_col(m: &Matrix<Q>, j: usize) -> NfElem {
     }
     NfElem(c)
 }
-

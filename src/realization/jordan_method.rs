@@ -181,10 +181,11 @@ fn closest_root(roots: &[AlgebraicNumber], theta: (f64, f64)) -> Option<Algebrai
 
 /// Whether the real field of the complex root `z` may be small (both parts of degree at
 /// most [`crate::jordan::real::EXPAND_MAX_DEGREE`], computed only for eigenvalues of
-/// degree at most [`crate::jordan::real::PARTS_MAX_DEGREE`]), as for the real Jordan form.
+/// degree at most [`crate::jordan::real::PARTS_MAX_DEGREE`] with moderate coefficients,
+/// [`crate::jordan::real::parts_affordable`]), as for the real Jordan form.
 fn small_real_field(z: &AlgebraicNumber) -> bool {
-    use crate::jordan::real::{EXPAND_MAX_DEGREE, PARTS_MAX_DEGREE};
-    if z.degree() > PARTS_MAX_DEGREE {
+    use crate::jordan::real::{EXPAND_MAX_DEGREE, parts_affordable};
+    if !parts_affordable(z.minpoly()) {
         return false;
     }
     match (z.try_re(), z.try_im()) {

@@ -77,7 +77,10 @@ pub fn invariant_zeros<K: Field>(
     // 1. independent input columns of [B; D] and output rows of [C, D]
     let (_, cols) = b.vstack(d)?.rref();
     let (_, rows) = c.hstack(d)?.transpose().rref();
-    let (bc, dc) = (b.select_cols(&cols), d.select_cols(&cols).select_rows(&rows));
+    let (bc, dc) = (
+        b.select_cols(&cols),
+        d.select_cols(&cols).select_rows(&rows),
+    );
     let cc = c.select_rows(&rows);
     // 2. the SCB of the compressed system (verified at construction)
     let Ok(s) = crate::structure::scb::scb(a, &bc, &cc, &dc) else {
