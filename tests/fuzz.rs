@@ -231,15 +231,16 @@ fn commands(file: &Path) -> Vec<Command> {
         },
         Command::Check { file: f() },
     ];
-    // `jordan --real`, Jordan-method `minreal` and `analyze`: re-enabled once the real-field
-    // marking (`fuzz_jordan_marking.json`) and the slow real Jordan form
-    // (`fuzz_slow_real_jordan.json`) were confirmed fixed (tests/slowpaths.rs).
+    // `jordan --real` and Jordan-method `minreal`: re-enabled once the real-field marking
+    // (`fuzz_jordan_marking.json`) and the slow real Jordan form (`fuzz_slow_real_jordan.json`,
+    // `-1e-300` entries) were confirmed fixed (tests/slowpaths.rs). `analyze` runs every
+    // section in one call and passes 10 s in a debug build on some mutants (its per-section
+    // budgets are issue 11 item 3); `scripts/fuzz.sh` runs it through the release binary.
     v.push(Command::Jordan {
         file: f(),
         real: true,
         expand: false,
     });
-    v.push(Command::Analyze { file: Some(f()) });
     for method in [
         MethodArg::Kalman,
         MethodArg::Rosenbrock,
