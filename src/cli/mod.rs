@@ -13,6 +13,7 @@ mod float_cmds;
 mod pencil_cmds;
 mod sweep;
 mod symbolic_cmds;
+mod symbolic_jordan;
 
 /// One command run in-process (no output, no time bound): the report and its status.
 pub use commands::execute;

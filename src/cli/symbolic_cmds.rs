@@ -123,6 +123,16 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ou
                             .with("conditions", str_list(conds)),
                     )))
                 }
+                Command::Jordan { real: false, .. } => {
+                    super::symbolic_jordan::jordan_outcome(&t.a_raw)
+                        .map(Some)
+                        .map_err(|e| super::commands::with_path(path, e))
+                }
+                Command::Mnf { .. } => {
+                    super::symbolic_jordan::mnf_outcome(&t.ss.a, &t.ss.b, &t.ss.c, &t.ss.d)
+                        .map(Some)
+                        .map_err(|e| super::commands::with_path(path, e))
+                }
                 _ => Err(refuse(refusal(&format!("`{}`", name(cmd)), k))),
             }
         }
