@@ -67,6 +67,8 @@ mod realization_planted;
 mod robustness;
 #[path = "scb.rs"]
 mod scb;
+#[path = "slowpaths.rs"]
+mod slowpaths;
 #[path = "study.rs"]
 mod study;
 #[path = "symbolic.rs"]

@@ -487,12 +487,15 @@ fn failing_conditions_give_reasons() {
     let b3 = qmat![[1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 0]];
     let (why, ok) = reason_of(&Matrix::identity(Q, 4), &b3);
     assert!(!ok && why.contains("p = 3 > n/2 = 2"), "{why}");
-    // rank-deficient B
+    // rank-deficient B: decided for the compressed B1 (B = B1 R), here A B1 = B1
     let (why, ok) = reason_of(
         &Matrix::identity(Q, 4),
         &qmat![[0, 0], [0, 0], [1, 2], [1, 2]],
     );
-    assert!(!ok && why.contains("rank B = 1 < p = 2"), "{why}");
+    assert!(
+        !ok && why.contains("rank(U_B2^T A U_B1) = 0 < p = 1"),
+        "{why}"
+    );
     // rank(U_B2^T A U_B1) < p: A B lies in the span of B
     let a = Matrix::diagonal(Q, &[r(1), r(2), r(3), r(4)]);
     let (why, ok) = reason_of(&a, &unit(4, 3));

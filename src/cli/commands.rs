@@ -132,13 +132,16 @@ impl SystemVisitor for FileCommand<'_> {
                 ))
             }
             Command::Mnf { .. } => {
-                let q = needs_rational(f, t, "the mechanical normal form")?;
-                let s = &q.ss;
-                let m =
-                    crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d)
-                        .map_err(e)?;
-                // nothing to verify when the form does not exist
-                Ok(Outcome::new(m.report(), !m.exists || m.verified))
+                // exact over Q and the quadratic fields Q(i), Q(sqrt d) (not over Q(p))
+                let quad = (s as &dyn std::any::Any)
+                    .downcast_ref::<crate::system::StateSpace<crate::field::QuadraticField>>();
+                match quad {
+                    Some(s) => mnf(s, path),
+                    None => mnf(
+                        &needs_rational(f, t, "the mechanical normal form")?.ss,
+                        path,
+                    ),
+                }
             }
             Command::Scb { .. } => {
                 let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
@@ -192,6 +195,15 @@ impl SystemVisitor for FileCommand<'_> {
             }
         }
     }
+}
+
+/// The mechanical normal form over an exact field; exit 1 when a form it found fails its check
+/// (nothing to verify when the form does not exist: that verdict is the exact decision).
+fn mnf<K: Field>(s: &crate::system::StateSpace<K>, path: &Path) -> Result<Outcome, Failure> {
+    use crate::structure::mechanical::{DEFAULT_MAX_CANDIDATES, mechanical_normal_form_in};
+    let m = mechanical_normal_form_in(None, &s.a, &s.b, &s.c, &s.d, DEFAULT_MAX_CANDIDATES)
+        .map_err(|err| with_path(path, err))?;
+    Ok(Outcome::new(m.report(), !m.exists || m.verified))
 }
 
 /// The system over Q, or exit 2 naming the field when the file's entries lie in a larger one.

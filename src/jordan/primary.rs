@@ -6,6 +6,9 @@
 //! conjugation), so nothing is recomputed per root. A rational eigenvalue ($\deg p = 1$)
 //! is computed directly over $\mathbb{Q}$.
 //!
+//! When the factor's generalized eigenspace is smaller than $A$ ($dm < n$, $n \ge 8$) the chains
+//! are computed for the restriction of $A$ to it, found over $\mathbb{Q}$ (`restrict`).
+//!
 //! Identities checked exactly in $K$: $A V = V J_t$, $W A = J_t W$, $W V = I_m$.
 
 use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
@@ -52,6 +55,59 @@ pub(crate) fn rational_field() -> NumberField {
     named_field(&Poly::x(Q), (0.0, 0.0), "t")
 }
 
+/// The rational generalized eigenspace of a factor: `u` ($n \times dm$) spans
+/// $\ker p(A)^m$ over $\mathbb{Q}$, $A u = u\,A_p$, and `proj` $= (L^T u)^{-1} L^T$ with
+/// $L$ spanning the left space $\ker (p(A)^m)^T$ (so `proj u = I` and `proj A = A_p proj`).
+struct Restriction {
+    u: Matrix<Q>,
+    ap: Matrix<Q>,
+    proj: Matrix<Q>,
+}
+
+/// [`Restriction`] of `a` to the factor `p` of multiplicity `m`, when it is smaller than `a`.
+///
+/// Chains of $A_p$ over $K$ give those of $A$: $A (u V_p) = (u V_p) J$ and
+/// $(W_p\,\mathrm{proj}) A = J\,(W_p\,\mathrm{proj})$, $(W_p \mathrm{proj})(u V_p) = W_p V_p = I$.
+/// Every elimination here is over $\mathbb{Q}$ (the multi-modular kernels), so the number
+/// field work is on a $dm \times dm$ matrix whose entries are those of a canonical basis, not
+/// on $A$'s (possibly huge) entries.
+///
+/// # Errors
+/// `Verification` when the kernel dimension is not $dm$.
+fn restrict(a: &Matrix<Q>, p: &Poly<Q>, m: usize) -> Result<Option<Restriction>> {
+    let n = a.nrows();
+    let dm = p.deg() * m;
+    if dm >= n || n < 8 {
+        return Ok(None);
+    }
+    // p(A) by Horner, then its m-th power
+    let p = p.monic();
+    let mut pa = Matrix::identity(Q, n);
+    for k in (0..p.deg()).rev() {
+        pa = &(a * &pa) + &Matrix::identity(Q, n).scale(&p.coeff(k));
+    }
+    let mut pm = pa.clone();
+    for _ in 1..m {
+        pm = &pm * &pa;
+    }
+    let u = pm.nullspace();
+    let l = pm.transpose().nullspace();
+    if u.ncols() != dm || l.ncols() != dm {
+        return Err(crate::error::Error::Verification(format!(
+            "ker p(A)^{m} has dimension {} for p = {p} of multiplicity {m}",
+            u.ncols()
+        )));
+    }
+    let Some((ap, _)) = u.solve(&(a * &u))? else {
+        return Err(crate::error::Error::Verification(
+            "the generalized eigenspace is not invariant".into(),
+        ));
+    };
+    let lt = l.transpose();
+    let proj = &(&lt * &u).inverse()? * &lt;
+    Ok(Some(Restriction { u, ap, proj }))
+}
+
 impl PrimaryComponent {
     /// Computes the component of the irreducible monic `factor` (multiplicity `mult`).
     ///
@@ -82,15 +138,32 @@ impl PrimaryComponent {
             });
         }
         let field = named_field(factor, roots[0], "t");
-        let ak = a.convert_to(&field);
         let t = field.generator();
-        let nm = ak.try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;
-        let Chains {
-            blocks,
-            kernel_dims,
-            v,
-            w,
-        } = jordan_chains(&nm, mult)?;
+        let lift = |m: &Matrix<Q>| m.convert_to(&field);
+        let (blocks, kernel_dims, v, w) = match restrict(a, factor, mult)? {
+            // chains of the restriction A_p (dm x dm) instead of the n x n matrix over K
+            Some(r) => {
+                let nm = lift(&r.ap)
+                    .try_sub(&Matrix::identity(field.clone(), r.ap.nrows()).scale(&t))?;
+                let ch = jordan_chains(&nm, mult)?;
+                (
+                    ch.blocks,
+                    ch.kernel_dims,
+                    &lift(&r.u) * &ch.v,
+                    &ch.w * &lift(&r.proj),
+                )
+            }
+            None => {
+                let nm = lift(a).try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;
+                let Chains {
+                    blocks,
+                    kernel_dims,
+                    v,
+                    w,
+                } = jordan_chains(&nm, mult)?;
+                (blocks, kernel_dims, v, w)
+            }
+        };
         Ok(PrimaryComponent {
             factor: factor.clone(),
             multiplicity: mult,
@@ -130,7 +203,7 @@ impl PrimaryComponent {
     /// Exact check in $K$ of $A V = V J_t$, $W A = J_t W$ and $W V = I$.
     pub fn verify(&self, a: &Matrix<Q>) -> bool {
         if self.multiplicity == 1 && self.degree() >= 2 {
-            return super::simple::verify_simple(self, a);
+            return super::coeffs::verify_simple(&self.field, &self.chains, &self.left_chains, a);
         }
         let v = &self.chains;
         let w = &self.left_chains;

@@ -453,11 +453,28 @@ impl JordanForm {
     }
 }
 
+/// Bit size (numerator plus denominator) above which the parts of a root of degree 3 or 4
+/// are not computed: the composed polynomials of degree up to 12 and their factorization
+/// then cost seconds (a mutant with an entry `-1e-300` has 300-digit coefficients), and the
+/// compact form is exact anyway.
+pub const PARTS_MAX_BITS: u64 = 256;
+
+/// Whether [`exact_parts`] computes $\operatorname{Re}\theta$ and $\operatorname{Im}\theta$
+/// for a root of `p`: degree at most [`PARTS_MAX_DEGREE`], and for degree 3 or 4
+/// coefficients of at most [`PARTS_MAX_BITS`] bits.
+pub fn parts_affordable(p: &Poly<Q>) -> bool {
+    p.deg() <= 2
+        || (p.deg() <= PARTS_MAX_DEGREE
+            && p.coeffs()
+                .iter()
+                .all(|c| c.numer().bits() + c.denom().bits() <= PARTS_MAX_BITS))
+}
+
 /// $\operatorname{Re}\theta$ and $\operatorname{Im}\theta$ as certified algebraic numbers
-/// when $\deg p \le$ [`PARTS_MAX_DEGREE`] (composed polynomials of degree $d(d-1)/2$ and
+/// when [`parts_affordable`] (composed polynomials of degree $d(d-1)/2$ and
 /// $d(d-1)$, factored), else `None`.
 fn exact_parts(e: &super::Eigenvalue) -> (Option<AlgebraicNumber>, Option<AlgebraicNumber>) {
-    if e.minpoly.deg() <= PARTS_MAX_DEGREE {
+    if parts_affordable(&e.minpoly) {
         (e.number.try_re().ok(), e.number.try_im().ok())
     } else {
         (None, None)

@@ -19,6 +19,7 @@
 //! characteristic polynomial this replaces an elimination over a field of degree 16.
 //! The component is checked exactly by [`PrimaryComponent::verify`] as every other one.
 
+use super::coeffs::{coeff_cols, mul_matrix};
 use super::primary::{PrimaryComponent, named_field};
 use crate::algebraic::{NfElem, NumberField};
 use crate::error::{Error, Result};
@@ -128,13 +129,6 @@ pub(crate) fn simple_component(
     })
 }
 
-/// The $d \times n$ matrix whose column $j$ holds the coefficients of `xs[j]`.
-fn coeff_cols(xs: &[NfElem], d: usize) -> Matrix<Q> {
-    Matrix::from_fn(Q, d, xs.len(), |k, j| {
-        xs[j].0.get(k).cloned().unwrap_or_else(Rational::zero)
-    })
-}
-
 /// Column `j` of a coefficient matrix as a canonical element.
 fn elem_of_col(m: &Matrix<Q>, j: usize) -> NfElem {
     let mut c: Vec<Rational> = (0..m.nrows()).map(|k| m.get(k, j).clone()).collect();
@@ -142,54 +136,4 @@ fn elem_of_col(m: &Matrix<Q>, j: usize) -> NfElem {
         c.pop();
     }
     NfElem(c)
-}
-
-/// Multiplication by `x` on $K = \mathbb{Q}[t]/(p)$ in the basis $1, t, \dots,
-/// t^{d-1}$: column $k$ holds the coefficients of $x t^k$.
-pub(crate) fn mul_matrix(field: &NumberField, x: &NfElem) -> Matrix<Q> {
-    let d = field.degree();
-    let t = field.generator();
-    let mut cols = vec![x.clone()];
-    for k in 1..d {
-        let next = field.mul(&cols[k - 1], &t);
-        cols.push(next);
-    }
-    coeff_cols(&cols, d)
-}
-
-/// Exact check of $A V = t V$, $W A = t W$, $W V = 1$ for a component of multiplicity 1,
-/// done on coefficient matrices over $\mathbb{Q}$ (the integer product kernel) instead of
-/// entry-wise products in $K$: with $V_c$ ($d \times n$, column $i$ = coefficients of
-/// $V_i$), $M_t$ the multiplication matrix of $t$ and $W_c$ likewise,
-/// $V_c A^T = M_t V_c$, $W_c A = M_t W_c$ and $\sum_i M_{V_i} W_{c,i} = e_0$.
-pub(crate) fn verify_simple(c: &PrimaryComponent, a: &Matrix<Q>) -> bool {
-    let n = a.nrows();
-    let d = c.degree();
-    let (v, w) = (&c.chains, &c.left_chains);
-    if v.shape() != (n, 1) || w.shape() != (1, n) {
-        return false;
-    }
-    let f = &c.field;
-    let vs: Vec<NfElem> = (0..n).map(|i| v.get(i, 0).clone()).collect();
-    let ws: Vec<NfElem> = (0..n).map(|i| w.get(0, i).clone()).collect();
-    let (vc, wc) = (coeff_cols(&vs, d), coeff_cols(&ws, d));
-    let mt = mul_matrix(f, &f.generator());
-    use super::chains::mul;
-    if mul(&vc, &a.transpose()) != mul(&mt, &vc) || mul(&wc, a) != mul(&mt, &wc) {
-        return false;
-    }
-    // W V = sum_i V_i W_i: [M_{V_1} ... M_{V_n}] times the stacked coefficients of W
-    let mut big = Matrix::zeros(Q, d, n * d);
-    for (i, x) in vs.iter().enumerate() {
-        big.set_block(0, i * d, &mul_matrix(f, x));
-    }
-    let stacked = Matrix::from_fn(Q, n * d, 1, |r, _| wc.get(r % d, r / d).clone());
-    let wv = mul(&big, &stacked);
-    (0..d).all(|k| {
-        if k == 0 {
-            num_traits::One::is_one(wv.get(0, 0))
-        } else {
-            wv.get(k, 0).is_zero()
-        }
-    })
 }

@@ -37,6 +37,7 @@ use crate::jordan::{chains::jordan_chains, jordan};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::system::StateSpace;
+use num_traits::Zero;
 use std::sync::Arc;
 
 /// One real block of the result: its field, and its (A, B, C) over that field.
@@ -171,21 +172,20 @@ fn add_traces(c: &Compact, sum: &mut [Matrix<Q>]) {
     }
 }
 
-/// The certified root of the irreducible `p` closest to the approximation `theta`.
-fn closest_root(p: &Poly<Q>, theta: (f64, f64)) -> Option<AlgebraicNumber> {
+/// The certified root among `roots` (those of one irreducible polynomial, isolated once per
+/// factor) closest to the approximation `theta`.
+fn closest_root(roots: &[AlgebraicNumber], theta: (f64, f64)) -> Option<AlgebraicNumber> {
     let d = |z: &AlgebraicNumber| (z.approx().0 - theta.0).hypot(z.approx().1 - theta.1);
-    AlgebraicNumber::roots_of_irreducible(p)
-        .ok()?
-        .into_iter()
-        .min_by(|x, y| d(x).total_cmp(&d(y)))
+    roots.iter().min_by(|x, y| d(x).total_cmp(&d(y))).cloned()
 }
 
 /// Whether the real field of the complex root `z` may be small (both parts of degree at
 /// most [`crate::jordan::real::EXPAND_MAX_DEGREE`], computed only for eigenvalues of
-/// degree at most [`crate::jordan::real::PARTS_MAX_DEGREE`]), as for the real Jordan form.
+/// degree at most [`crate::jordan::real::PARTS_MAX_DEGREE`] with moderate coefficients,
+/// [`crate::jordan::real::parts_affordable`]), as for the real Jordan form.
 fn small_real_field(z: &AlgebraicNumber) -> bool {
-    use crate::jordan::real::{EXPAND_MAX_DEGREE, PARTS_MAX_DEGREE};
-    if z.degree() > PARTS_MAX_DEGREE {
+    use crate::jordan::real::{EXPAND_MAX_DEGREE, parts_affordable};
+    if !parts_affordable(z.minpoly()) {
         return false;
     }
     match (z.try_re(), z.try_im()) {
@@ -204,6 +204,48 @@ fn split(cf: &ComplexField<NumberField>, t: &ComplexPair<NfElem>, e: &NfElem) ->
     (acc.re, acc.im)
 }
 
+/// An element of $K$ from a coefficient column (trailing zeros dropped: canonical form).
+fn elem_of(m: &Matrix<Q>, j: usize) -> NfElem {
+    let mut c: Vec<Rational> = (0..m.nrows()).map(|i| m.get(i, j).clone()).collect();
+    while c.last().is_some_and(|x| x.is_zero()) {
+        c.pop();
+    }
+    NfElem(c)
+}
+
+/// $W B$ for $W$ over $K$ and rational $B$, as rational products of coefficient matrices
+/// (row $r$ of $W$ as the $d \times n$ matrix of its coefficients times $B$): no product in
+/// $K$, and the integer product kernel does the work.
+fn times_rational(w: &Matrix<NumberField>, b: &Matrix<Q>) -> Matrix<NumberField> {
+    let k = w.field().clone();
+    let d = k.degree();
+    let mut out = Matrix::zeros(k, w.nrows(), b.ncols());
+    for r in 0..w.nrows() {
+        let wc = crate::jordan::coeffs::coeff_cols(w.row(r), d);
+        let prod = &wc * b;
+        for j in 0..b.ncols() {
+            out.set(r, j, elem_of(&prod, j));
+        }
+    }
+    out
+}
+
+/// $C V$ for rational $C$ and $V$ over $K$, as [`times_rational`] does $W B$.
+fn rational_times(c: &Matrix<Q>, v: &Matrix<NumberField>) -> Matrix<NumberField> {
+    let k = v.field().clone();
+    let d = k.degree();
+    let ct = c.transpose();
+    let mut out = Matrix::zeros(k, c.nrows(), v.ncols());
+    for r in 0..v.ncols() {
+        let vc = crate::jordan::coeffs::coeff_cols(&v.col(r), d);
+        let prod = &vc * &ct;
+        for i in 0..c.nrows() {
+            out.set(i, r, elem_of(&prod, i));
+        }
+    }
+    out
+}
+
 fn compact_component(
     sys: &StateSpace<Q>,
     comp: &crate::jordan::primary::PrimaryComponent,
@@ -211,8 +253,8 @@ fn compact_component(
 ) -> Result<Option<Compact>> {
     let k = comp.field.clone();
     let d = comp.degree();
-    let bk = &comp.left_chains * &sys.b.convert_to(&k);
-    let ck = &sys.c.convert_to(&k) * &comp.chains;
+    let bk = times_rational(&comp.left_chains, &sys.b);
+    let ck = rational_times(&sys.c, &comp.chains);
     let (keep, sizes) = drop_modes(&comp.blocks, &bk, &ck);
     *stage1 += keep.len() * d;
     if keep.is_empty() {
@@ -293,6 +335,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
     let mut symbols: Vec<(String, String)> = vec![];
     for c in &comps {
         let p = &c.factor;
+        let mut certified: Option<Vec<AlgebraicNumber>> = None;
         for (j, &(re, im)) in c.roots.iter().enumerate() {
             if im < 0.0 {
                 continue;
@@ -328,7 +371,10 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
                 });
                 continue;
             }
-            let number = closest_root(p, (re, im));
+            let roots = certified.get_or_insert_with(|| {
+                AlgebraicNumber::roots_of_irreducible(p).unwrap_or_default()
+            });
+            let number = closest_root(roots, (re, im));
             let ev = number
                 .as_ref()
                 .map(|z| z.value_string())

@@ -55,7 +55,7 @@ pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
 pub use modal::{ModalTable, Mode, modal_table};
-pub use rosenbrock::minimal_rosenbrock;
+pub use rosenbrock::{controllable_staircase, minimal_rosenbrock};
 pub use weierstrass::{
     WeierstrassSplit, descriptor_transfer_matrix, eval_transfer, same_transfer, weierstrass_split,
 };

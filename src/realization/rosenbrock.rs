@@ -11,8 +11,10 @@
 //! are driven only through the block $A_{12}$ coupling them to the $\rho_1$ reached ones;
 //! compress that block in turn, and so on, until the coupling block is zero (the remaining
 //! top states are uncontrollable) or no states remain. $O(n^4)$ field operations at worst.
+//! The reached states after each step are the nested Krylov spaces, so the staircase
+//! coordinates are formed from them directly (see [`controllable_staircase`]): one
+//! similarity $T^{-1} A T$ instead of one per step, whose entries grew with every step.
 
-use super::controllability::row_compression;
 use super::minimal::MinimalRealization;
 use crate::error::Result;
 use crate::field::Field;
@@ -21,37 +23,53 @@ use crate::system::StateSpace;
 
 /// Controllable part by the staircase: returns `(T, k)` with `x = T z` such that the last `k`
 /// coordinates of `z` are the controllable ones and $T^{-1}AT$ has the eq. 17 zero pattern.
+///
+/// The staircase's reached subspaces are the nested Krylov spaces $\mathcal R_j =
+/// \mathrm{im}[B, AB, \dots, A^{j-1}B]$: after step $j$ the bottom coordinates span
+/// $\mathcal R_j$. So `T` is built from them directly, without accumulating $2k$
+/// similarity products (whose entries grow at every step): its last columns are the pivot
+/// columns of $[B, AB, \dots]$ (greedy left to right, so those of the first $j$ blocks
+/// span $\mathcal R_j$), block $0$ last, and its first columns unit vectors completing
+/// them. $A$ maps $\mathcal R_j$ into $\mathcal R_{j+1}$ and $\mathcal R$ into itself,
+/// which is the zero pattern of eq. 17 with full-row-rank coupling blocks.
 pub fn controllable_staircase<K: Field>(
     a: &Matrix<K>,
     b: &Matrix<K>,
 ) -> Result<(Matrix<K>, usize)> {
     let fld = a.field().clone();
     let n = a.nrows();
-    let mut tinv = Matrix::identity(fld.clone(), n); // z = Tinv x
-    let mut at = a.clone();
-    // `top` = number of states not yet reached; the current "input" block acts on them.
-    let mut top = n;
-    let mut drive = b.clone(); // top x * block
-    while top > 0 {
-        let (s, r) = row_compression(&drive);
-        if r == 0 {
+    let m = b.ncols();
+    // Krylov blocks until the rank stops growing (then R_j is A-invariant)
+    let mut kry = b.clone();
+    let mut last = b.clone();
+    let mut rank = if m == 0 { 0 } else { kry.rank() };
+    while rank > 0 && rank < n {
+        last = a * &last;
+        let next = kry.hstack(&last)?;
+        let r = next.rank();
+        if r == rank {
             break;
         }
-        // apply S on the first `top` coordinates
-        let mut full = Matrix::identity(fld.clone(), n);
-        full.set_block(0, 0, &s);
-        let sinv = s.inverse()?;
-        let mut full_inv = Matrix::identity(fld.clone(), n);
-        full_inv.set_block(0, 0, &sinv);
-        at = &(&full * &at) * &full_inv;
-        tinv = &full * &tinv;
-        let newtop = top - r;
-        // the block coupling the new top states to the freshly reached ones
-        drive = at.submatrix(0, newtop, newtop, top);
-        top = newtop;
+        kry = next;
+        rank = r;
     }
-    let t = tinv.inverse()?;
-    Ok((t, n - top))
+    if rank == 0 {
+        return Ok((Matrix::identity(fld, n), 0));
+    }
+    let (_, piv) = kry.rref();
+    // block 0 last: order the pivot columns by descending block index
+    let mut cols = piv.clone();
+    cols.sort_by_key(|&c| (std::cmp::Reverse(c / m), c));
+    let reached = kry.select_cols(&cols);
+    // unit vectors e_j for the non-pivot coordinates of reached^T complete the basis
+    let (_, rows) = reached.transpose().rref();
+    let comp: Vec<usize> = (0..n).filter(|j| !rows.contains(j)).collect();
+    let mut t = Matrix::zeros(fld.clone(), n, n);
+    for (c, &j) in comp.iter().enumerate() {
+        t.set(j, c, fld.one());
+    }
+    t.set_block(0, comp.len(), &reached);
+    Ok((t, rank))
 }
 
 /// Minimal realization by Rosenbrock's method.

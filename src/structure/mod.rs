@@ -4,7 +4,7 @@
 //! | module | computes |
 //! |---|---|
 //! | [`scb`] | special coordinate basis (Sannuti–Saberi; Grip–Saberi's symbolic procedure), exact |
-//! | [`zeros`] | invariant zeros from the Rosenbrock system matrix, independent of the SCB |
+//! | [`zeros`] | invariant zeros of the Rosenbrock system matrix (through the SCB; polynomial Smith form as fallback and oracle) |
 //! | [`mechanical`] | mechanical normal form: a first-order system back to $\ddot q + D\dot q + Kq = Wu$ |
 //! | [`bifurcation`] | structural bifurcations over Q(p): the result on each branch where a condition vanishes |
 //! | [`factor_qp`] | a polynomial in s over Q(p) factored into monic irreducibles |

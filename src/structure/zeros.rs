@@ -1,15 +1,30 @@
-//! Invariant zeros from the Rosenbrock system matrix, exactly and independently of the SCB.
+//! Invariant zeros of the Rosenbrock system matrix, exactly.
 //!
-//! $P(s) = \begin{bmatrix} A - sI & B \\ C & D \end{bmatrix}$ over $K\[s\]$ is brought to a
-//! diagonal form $\mathrm{diag}(d_1, \dots, d_r, 0, \dots)$ by unimodular row and column
-//! operations (Euclidean elimination over the principal ideal domain $K\[s\]$). The number of
-//! non-zero $d_i$ is the normal rank $r$ of $P$, and the monic $\prod d_i$ is the $r$-th
-//! determinantal divisor (gcd of all $r \times r$ minors): the invariant zero polynomial,
-//! whose roots (with multiplicity) are the invariant zeros.
+//! $P(s) = \begin{bmatrix} A - sI & B \\ C & D \end{bmatrix}$ over $K\[s\]$: its normal rank
+//! $r$ and its invariant zero polynomial, the monic $r$-th determinantal divisor (gcd of all
+//! $r \times r$ minors, the product of the invariant factors of the Smith form).
+//!
+//! # Algorithm
+//! 1. Remove dependent constant columns of $[B; D]$ and rows of $[C, D]$ (pivot columns of
+//!    the canonical RREF). A constant unimodular column (row) operation makes them zero, so
+//!    the Smith form, hence the zero polynomial and the normal rank, are unchanged.
+//! 2. The special coordinate basis ([`crate::structure::scb`]) of the compressed system,
+//!    checked exactly at construction: the zero polynomial is $\det(sI - A_{aa})$ (the
+//!    invariant zeros with their structure are the eigenvalue structure of the zero dynamics
+//!    $A_{aa}$, Sannuti–Saberi). Only constant-matrix eliminations over $K$, dispatched to
+//!    the fraction-free / multi-modular kernels for rationals, so entry size stays bounded.
+//! 3. The normal rank is $\operatorname{rank} P(s_0)$ at the first $s_0 \in \{0, 1, -1, 2,
+//!    \dots\}$ that is not a root of the zero polynomial: $P(s_0)$ loses rank exactly at the
+//!    roots of the $r$-th determinantal divisor.
+//! 4. When the SCB is not available (an internal failure) the polynomial matrix is
+//!    diagonalized by unimodular operations over $K\[s\]$ ([`diagonalize`], Euclidean
+//!    elimination): the non-zero diagonal entries number $r$ and their product is the
+//!    divisor. This path is also the tests' independent oracle.
 //!
 //! | entry point | computes |
 //! |---|---|
-//! | [`invariant_zeros`] | zero polynomial and normal rank of $P(s)$ |
+//! | [`invariant_zeros`] | zero polynomial and normal rank of $P(s)$ (SCB, fallback 4) |
+//! | [`invariant_zeros_smith`] | the same by the polynomial diagonal form only |
 //! | [`diagonalize`] | diagonal form of a polynomial matrix |
 
 use crate::error::{Error, Result};
@@ -35,7 +50,8 @@ impl<K: Field> InvariantZeros<K> {
     }
 }
 
-/// Invariant zeros of $(A, B, C, D)$ through the Rosenbrock system matrix.
+/// Invariant zeros of $(A, B, C, D)$: the zero polynomial and the normal rank of the
+/// Rosenbrock system matrix (SCB path of the module docs, steps 1-3; fallback step 4).
 ///
 /// # Errors
 /// `NotSquare`/`Shape` on inconsistent shapes.
@@ -55,6 +71,42 @@ pub fn invariant_zeros<K: Field>(
     c: &Matrix<K>,
     d: &Matrix<K>,
 ) -> Result<InvariantZeros<K>> {
+    check(a, b, c, d)?;
+    let n = a.nrows();
+    let (m, p) = (b.ncols(), c.nrows());
+    // 1. independent input columns of [B; D] and output rows of [C, D]
+    let (_, cols) = b.vstack(d)?.rref();
+    let (_, rows) = c.hstack(d)?.transpose().rref();
+    let (bc, dc) = (
+        b.select_cols(&cols),
+        d.select_cols(&cols).select_rows(&rows),
+    );
+    let cc = c.select_rows(&rows);
+    // 2. the SCB of the compressed system (verified at construction)
+    let Ok(s) = crate::structure::scb::scb(a, &bc, &cc, &dc) else {
+        return invariant_zeros_smith(a, b, c, d);
+    };
+    if !s.verified {
+        return invariant_zeros_smith(a, b, c, d);
+    }
+    let polynomial = s.invariant_zero_polynomial().monic();
+    // 3. normal rank at a point that is not a zero
+    let k = a.field().clone();
+    let mut s0 = 0i64;
+    while k.is_zero(&polynomial.eval(&k.from_i64(s0))) {
+        s0 = if s0 > 0 { -s0 } else { 1 - s0 };
+    }
+    let shift = Matrix::identity(k.clone(), n).scale(&k.from_i64(s0));
+    let top = a.try_sub(&shift)?.hstack(b)?;
+    let normal_rank = top.vstack(&c.hstack(d)?)?.rank();
+    Ok(InvariantZeros {
+        polynomial,
+        normal_rank,
+        size: (n + p, n + m),
+    })
+}
+
+fn check<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>) -> Result<()> {
     a.check_square("invariant_zeros")?;
     let n = a.nrows();
     let (m, p) = (b.ncols(), c.nrows());
@@ -65,6 +117,24 @@ pub fn invariant_zeros<K: Field>(
             found: d.shape(),
         });
     }
+    Ok(())
+}
+
+/// [`invariant_zeros`] by the diagonal form of $P(s)$ over $K\[s\]$ only (step 4 of the
+/// module docs): independent of the SCB, slow when entries are large (the polynomial
+/// remainders grow), kept as the fallback and the tests' oracle.
+///
+/// # Errors
+/// `NotSquare`/`Shape` on inconsistent shapes.
+pub fn invariant_zeros_smith<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+) -> Result<InvariantZeros<K>> {
+    check(a, b, c, d)?;
+    let n = a.nrows();
+    let (m, p) = (b.ncols(), c.nrows());
     let k = a.field().clone();
     let cst = |x: &K::Elem| Poly::constant(k.clone(), x.clone());
     let mut pm: Vec<Vec<Poly<K>>> = Vec::with_capacity(n + p);

@@ -10,6 +10,10 @@
 //! matrix $W = [0; I_p]$ ($n/2 \times p$). `T` here is the paper's product $W T$ of sec. 2.2
 //! (the unifying transformation is built into the linear system of sec. 3, eq. 15).
 //!
+//! Dependent inputs (rank $B = r < p$, including $B = 0$) are handled by the column
+//! compression $B = B_1 R$ ([`input_compression`]): the form is computed for $(A, B_1)$, so
+//! $\tilde B = T B = [0; I_r] R$ and $W = [0; R]$.
+//!
 //! For a descriptor system $F \dot x = A x + B u$ with invertible $F$ (sec. 3.1, eq. 16) the
 //! same $\tilde A, \tilde B$ arise from a row transformation $T$ with
 //! $[I\ 0] T A = [0\ I] T F$, $T B = [0; I_p]$ and the state map $z = (T F) x$:
@@ -53,7 +57,7 @@ pub struct MechanicalForm<K: Field> {
     pub damping: Matrix<K>,
     /// $K = -\tilde A_{21}$.
     pub stiffness: Matrix<K>,
-    /// $W = [0; I_p]$, `n/2 x p`.
+    /// $W = [0; I_p]$, `n/2 x p` ($W = [0; R]$ when $B = B_1 R$ has rank $r < p$).
     pub input: Matrix<K>,
     /// $\tilde C$, `q x n`, acting on $[q; \dot q]$.
     pub output: Matrix<K>,
@@ -175,10 +179,32 @@ pub fn mechanical_normal_form_in<K: Field>(
     max_candidates: u64,
 ) -> Result<MechanicalNormalForm<K>> {
     check_system(a, b, c, d)?;
-    let existence = match f {
-        None => decide_existence(a, b),
-        Some(f) => descriptor::decide_existence_descriptor(f, a, b)?,
+    // B = B1 R with B1 = the pivot columns of B (full column rank r) and R the non-zero rows
+    // of rref(B): the form is sought for (A, B1) and then T B = [0; I_r] R = [0; R].
+    let (b1, _) = input_compression(b);
+    let mut existence = match f {
+        None => decide_existence(a, &b1),
+        Some(f) => descriptor::decide_existence_descriptor(f, a, &b1)?,
     };
+    if b1.ncols() < b.ncols() {
+        existence.conditions.insert(
+            0,
+            Condition {
+                name: "input_compression",
+                statement: format!(
+                    "rank B = {} < p = {}: B = B1 R with B1 its pivot columns",
+                    b1.ncols(),
+                    b.ncols()
+                ),
+                holds: true,
+                decisive: false,
+                meaning: "dependent inputs act through fewer independent forces; the \
+                          conditions below are those of (A, B1) and the input matrix of the \
+                          second-order model is W = [0; R] instead of [0; I_p]"
+                    .to_string(),
+            },
+        );
+    }
     let original = Original {
         f: f.cloned(),
         a: a.clone(),
@@ -197,7 +223,7 @@ pub fn mechanical_normal_form_in<K: Field>(
     if !out.exists {
         return Ok(out);
     }
-    let family = transform::transformation_family(f, a, b).ok_or_else(|| {
+    let family = transform::transformation_family(f, a, &b1).ok_or_else(|| {
         Error::Verification("the conditions hold but eq. 15 has no solution".into())
     })?;
     let found = transform::find_invertible(&family, max_candidates)?;
@@ -209,6 +235,14 @@ pub fn mechanical_normal_form_in<K: Field>(
         ));
     }
     Ok(out)
+}
+
+/// `(B1, R)` with `B = B1 R`: `B1` the pivot columns of `B` (full column rank `r`), `R` the
+/// `r` non-zero rows of the reduced row echelon form of `B` (`R = I` when `B` has full
+/// column rank).
+pub fn input_compression<K: Field>(b: &Matrix<K>) -> (Matrix<K>, Matrix<K>) {
+    let (e, piv) = b.rref();
+    (b.select_cols(&piv), e.submatrix(0, piv.len(), 0, b.ncols()))
 }
 
 /// $\tilde A, \tilde B, \tilde C$ and the second-order matrices from an invertible $T$.
@@ -251,7 +285,7 @@ fn build_form<K: Field>(
 
 impl<K: Field> MechanicalNormalForm<K> {
     /// Exact check of the result: `t` invertible; $\tilde A = [[0, I], [-K, -D_q]]$ with
-    /// $M = I$; $\tilde B = [0; W]$, $W = [0; I_p]$; $\tilde A\,t = T A$, $\tilde B = T B$,
+    /// $M = I$; $\tilde B = [0; W]$, $W = [0; R]$ with $B = B_1 R$ ([`input_compression`]; $R = I_p$ for full column rank); $\tilde A\,t = T A$, $\tilde B = T B$,
     /// $\tilde C\,t = C$ (with $T = t$, or the row transformation and $T F = t$ for a descriptor
     /// system); and equal Markov parameters $\tilde C \tilde A^j \tilde B = C (F^{-1}A)^j F^{-1} B$
     /// for $j < 2n$ (computed with solves, not $F^{-1}$) and $\tilde D = D$.
@@ -273,10 +307,14 @@ impl<K: Field> MechanicalNormalForm<K> {
             &[vec![&zero, &id], vec![&(-&m.stiffness), &(-&m.damping)]],
         )
         .expect("blocks agree");
-        let mut w = Matrix::zeros(k.clone(), h, p);
-        for j in 0..p {
-            w.set(h - p + j, j, k.one());
+        // W = [0; R] with B = B1 R (R = I_p when B has full column rank)
+        let (_, r_mat) = input_compression(&o.b);
+        let r = r_mat.nrows();
+        if r > h {
+            return false;
         }
+        let mut w = Matrix::zeros(k.clone(), h, p);
+        w.set_block(h - r, 0, &r_mat);
         let expected_b = Matrix::zeros(k.clone(), h, p)
             .vstack(&w)
             .expect("p columns");
