@@ -8,8 +8,13 @@
 //! term  := unary (('*' | '/') unary)*
 //! unary := ('-' | '+') unary | power
 //! power := atom ('^' unary)?
-//! atom  := number | number 'i' | name | 'i' | 'sqrt' '(' expr ')' | '(' expr ')'
+//! atom  := number | name | 'i' | 'sqrt' '(' expr ')' | '(' expr ')'
 //! ```
+//!
+//! A number written directly before `i` (`2i`, `0.5i`) is an implicit multiplication that
+//! binds exactly like the written-out `*`: `2i^2` is `2*i^2 = -2` and `1/2i` is
+//! `1/2*i = i/2` (not `-4` and `-i/2`). No other implicit multiplication exists: `2x` and
+//! `2 x` are errors.
 //!
 //! Numbers are exact decimals (`0.08`, `1.5e-3`, any number of digits). A value is
 //! $a + b\sqrt d$ with $a, b \in \mathbb{Q}$ and at most one square-free radicand `d`
@@ -184,7 +189,7 @@ impl Value {
     fn size(&self) -> u64 {
         bits(&self.a).max(bits(&self.b))
     }
-    fn checked(self) -> Result<Value, ExprError> {
+    pub(crate) fn checked(self) -> Result<Value, ExprError> {
         if self.size() > MAX_BITS {
             return err(format!("number too large (more than {MAX_BITS} bits)"));
         }
@@ -330,7 +335,27 @@ fn lex(text: &str) -> Result<Vec<Token>, ExprError> {
                     }
                 }
             }
-            Tok::Num(cs[start..i].iter().collect())
+            let num = Tok::Num(cs[start..i].iter().collect());
+            // `2i`, `0.5i`: implicit multiplication by `i`, bound exactly as the written-out
+            // `2*i` (so `2i^2 = 2*i^2 = -2` and `1/2i = 1/2*i = i/2`)
+            if cs.get(i) == Some(&'i')
+                && !cs
+                    .get(i + 1)
+                    .is_some_and(|c| c.is_ascii_alphanumeric() || *c == '_')
+            {
+                out.push(Token {
+                    tok: num,
+                    start,
+                    end: i,
+                });
+                out.push(Token {
+                    tok: Tok::Op('*'),
+                    start: i,
+                    end: i,
+                });
+                continue;
+            }
+            num
         } else if c.is_ascii_alphabetic() || c == '_' {
             while i < cs.len() && (cs[i].is_ascii_alphanumeric() || cs[i] == '_') {
                 i += 1;
@@ -508,7 +533,7 @@ impl Parser<'_> {
                 self.pos += 1;
                 let q = parse_number(&s)?;
                 let v = Value::rational(q).checked()?;
-                // `2i`, `0.5i`: an imaginary literal; any other letters glued on are an error
+                // letters glued on are an error (`2i` was split into `2 * i` by the lexer)
                 if let Some(Token {
                     tok: Tok::Name(n),
                     start,
@@ -516,10 +541,6 @@ impl Parser<'_> {
                 }) = self.toks.get(self.pos)
                     && *start == end
                 {
-                    if n == "i" {
-                        self.pos += 1;
-                        return v.mul(&imaginary_unit());
-                    }
                     return err(format!("'{s}{n}' is not a number"));
                 }
                 Ok(v)
@@ -605,6 +626,12 @@ mod tests {
         assert_eq!(ev("(1+i)^2").unwrap(), "2*i");
         assert_eq!(ev("1/(1+i)").unwrap(), "1/2 - i/2");
         assert_eq!(ev("3i").unwrap(), "3*i");
+        assert_eq!(ev("2i^2").unwrap(), ev("2*i^2").unwrap());
+        assert_eq!(ev("2i^2").unwrap(), "-2");
+        assert_eq!(ev("1/2i").unwrap(), ev("1/2*i").unwrap());
+        assert_eq!(ev("1/2i").unwrap(), "i/2");
+        assert_eq!(ev("-0.5i^3").unwrap(), "i/2");
+        assert_eq!(ev("2i3").unwrap_err(), "'2i3' is not a number");
         assert_eq!(ev("i^2").unwrap(), "-1");
         assert_eq!(ev("1.5e-3").unwrap(), "3/2000");
         assert_eq!(ev("2e").unwrap_err(), "'2e' is not a number");

@@ -27,7 +27,8 @@
 use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
 use super::raw::{Raw, from_json_text, from_toml_text};
 use super::system_file::validate;
-use super::{Ground, InputError, SystemFile, SystemFormat, split_matlab_matrix};
+use super::keys::{check_keys, keys_of};
+use super::{Ground, InputError, SignalNames, SystemFile, SystemFormat, split_matlab_matrix};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
 use std::collections::BTreeSet;
@@ -93,8 +94,7 @@ pub fn refusal(what: &str, k: &RatFuncField) -> String {
 /// As [`load_symbolic_str`], and an unreadable file.
 pub fn load_symbolic_path(path: &Path, opts: &SymbolicOptions) -> Result<LoadedSystem, InputError> {
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::file(&shown, format!("cannot read the file: {e}")))?;
+    let text = super::read_text(path)?;
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
@@ -129,6 +129,8 @@ pub fn load_symbolic_str(
     let Raw::Table(entries) = raw else {
         return validate(raw, name).and_then(type_file);
     };
+    check_keys(name, &keys_of(&entries))?;
+    let signals = SignalNames::read(name, &entries)?;
     let mut params: Vec<(String, Option<String>)> = vec![];
     let mut symbols: BTreeSet<String> = BTreeSet::new();
     let mut rest: Vec<(String, Raw)> = vec![];
@@ -268,7 +270,11 @@ pub fn load_symbolic_str(
         k: None,
         f: None,
         extra,
+        signals,
     };
+    let t = &typed.ss;
+    file.signals
+        .check(name, t.nstates(), t.ninputs(), t.noutputs())?;
     Ok(LoadedSystem {
         file,
         system: TypedAny::RatFunc(typed),

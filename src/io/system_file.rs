@@ -31,7 +31,8 @@
 use super::expr::{self, Value, is_parameter_name, referenced_names};
 use super::matlab::{FieldScan, ragged_msg, split_matlab_matrix};
 use super::raw::{self, Raw};
-use super::{ExactScalar, Ground, InputError, MatrixEntries};
+use super::keys::{check_keys, keys_of};
+use super::{ExactScalar, Ground, InputError, InputErrorKind, MatrixEntries, SignalNames};
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -57,8 +58,11 @@ pub struct SystemFile {
     pub l: Option<MatrixEntries>,
     pub k: Option<MatrixEntries>,
     pub f: Option<MatrixEntries>,
-    /// Keys this reader does not interpret (e.g. `output` names), as JSON.
+    /// Keys this reader does not interpret itself (`G`, `symbols`, and the descriptive
+    /// `inputs`, `outputs`, `states`), as JSON. Unknown keys are errors.
     pub extra: serde_json::Map<String, serde_json::Value>,
+    /// Signal names (`inputs`, `outputs`, `states`), their counts checked against the system.
+    pub signals: super::SignalNames,
 }
 
 impl SystemFile {
@@ -98,8 +102,7 @@ impl SystemFile {
 /// An unreadable file, and every error of [`parse_system_json`] / [`parse_system_toml`].
 pub fn read_system_file(path: &Path) -> Result<SystemFile, InputError> {
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::file(&shown, format!("cannot read the file: {e}")))?;
+    let text = super::read_text(path)?;
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
@@ -151,6 +154,8 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
             format!("expected a table of keys, found {}", raw.kind()),
         ));
     };
+    check_keys(file, &keys_of(&entries))?;
+    let signals = SignalNames::read(file, &entries)?;
     let mut name = None;
     let mut params_raw = Vec::new();
     let mut mats: HashMap<&'static str, Raw> = HashMap::new();
@@ -218,8 +223,11 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
         k: None,
         f: None,
         extra,
+        signals,
     };
     check_shapes(file, got, &mut sys)?;
+    sys.signals
+        .check(file, sys.nstates(), sys.ninputs(), sys.noutputs())?;
     Ok(sys)
 }
 
@@ -328,8 +336,9 @@ fn eval_parameters(
 /// One entry: a number (exact text) or an expression string.
 fn eval_scalar(r: &Raw, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<Value, String> {
     match r {
+        // the same size limits as the text form (a bare 1e9999 is refused like "1e9999")
         Raw::Number(s) => expr::parse_number(s)
-            .map(Value::rational)
+            .and_then(|q| Value::rational(q).checked())
             .map_err(|e| e.msg),
         Raw::Str(s) => expr::eval_with(s, lookup).map_err(|e| e.msg),
         other => Err(format!(
@@ -423,6 +432,7 @@ fn shape_err(file: &str, key: &str, want: String, x: &MatrixEntries) -> InputErr
         key,
         format!("{key} must {want}, found {}x{}", x.nrows, x.ncols),
     )
+    .with_kind(InputErrorKind::Shape)
 }
 
 fn check_shapes(
@@ -439,7 +449,8 @@ fn check_shapes(
             file,
             k2,
             "cannot mix the first-order form (A, B, E) with the second-order form (M, L, K, F)",
-        ));
+        )
+        .with_kind(InputErrorKind::Shape));
     }
     // (states n, "what A is" for messages, input-matrix key)
     let (n, what, input_key) = if let Some(k2) = second {
@@ -481,7 +492,8 @@ fn check_shapes(
                 None => InputError::file(
                     file,
                     "no system: give A (first-order form) or M, L, K, F (second-order form)",
-                ),
+                )
+                .with_kind(InputErrorKind::NotASystem),
             });
         };
         if a.nrows != a.ncols {
