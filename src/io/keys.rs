@@ -68,10 +68,8 @@ pub(crate) fn check_keys(file: &str, keys: &[&str]) -> Result<(), InputError> {
                  symbols, name, inputs, outputs, states"
                     .to_string()
             });
-        return Err(
-            InputError::file(file, format!("unknown key '{k}'{hint}"))
-                .with_kind(InputErrorKind::UnknownKey),
-        );
+        return Err(InputError::file(file, format!("unknown key '{k}'{hint}"))
+            .with_kind(InputErrorKind::UnknownKey));
     }
     Ok(())
 }

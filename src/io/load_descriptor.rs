@@ -260,6 +260,28 @@ fn load_g(
     g: &serde_json::Value,
     params: Option<&serde_json::Value>,
 ) -> Result<LoadedDescriptor, InputError> {
+    let (tm, r) = realize_g(name, g, params)?;
+    let has_e = r.minimal.infinite_order > 0;
+    Ok(LoadedDescriptor {
+        path: name.to_string(),
+        system: DescriptorAny::Rational(r.minimal.system.clone()),
+        has_e,
+        transfer: Some((tm, r)),
+        pencil: None,
+    })
+}
+
+/// The transfer matrix of key `G` (parameters evaluated first) and its exact minimal
+/// realization.
+///
+/// # Errors
+/// An entry that does not parse (named by row and column), ragged or empty rows, a
+/// realization failure.
+pub(crate) fn realize_g(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+) -> Result<(TransferMatrix<Q>, TransferRealization<Q>), InputError> {
     let values = eval_params(name, params)?;
     let rows = g
         .as_array()
@@ -291,12 +313,5 @@ fn load_g(
     }
     let tm = TransferMatrix { entries };
     let r = realize_transfer(&tm).map_err(|e| InputError::key(name, "G", e.to_string()))?;
-    let has_e = r.minimal.infinite_order > 0;
-    Ok(LoadedDescriptor {
-        path: name.to_string(),
-        system: DescriptorAny::Rational(r.minimal.system.clone()),
-        has_e,
-        transfer: Some((tm, r)),
-        pencil: None,
-    })
+    Ok((tm, r))
 }

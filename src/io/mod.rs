@@ -27,8 +27,8 @@
 //! shapes) → [`SystemFile`]. There is no unchecked path from text to a system.
 
 pub mod expr;
-pub mod load;
 pub mod keys;
+pub mod load;
 pub mod load_descriptor;
 pub mod matlab;
 pub mod qmat;
@@ -37,14 +37,15 @@ pub mod read;
 pub mod symbolic;
 pub mod system_file;
 pub mod transfer_expr;
+mod transfer_key;
 
 pub use expr::{ExprError, eval_expr};
+pub use keys::SignalNames;
 pub use load::{
     FromScalars, LoadedSystem, SystemFormat, SystemVisitor, TypedAny, TypedSystem, as_rational,
     load_system_path, load_system_str,
 };
 pub use matlab::{parse_matlab_matrix, split_matlab_matrix};
-pub use keys::SignalNames;
 pub use read::read_text;
 pub use system_file::{SystemFile, parse_system_json, parse_system_toml, read_system_file};
 

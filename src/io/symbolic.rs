@@ -24,10 +24,10 @@
 //! assert_eq!(t.ss.a.field().fmt_elem(t.ss.a.get(1, 0)), "-2/m");
 //! ```
 
+use super::keys::{check_keys, keys_of};
 use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
 use super::raw::{Raw, from_json_text, from_toml_text};
 use super::system_file::validate;
-use super::keys::{check_keys, keys_of};
 use super::{Ground, InputError, SignalNames, SystemFile, SystemFormat, split_matlab_matrix};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;

@@ -29,9 +29,9 @@
 //! text (`toml::de::DeTable`), so `0.08` in TOML is $2/25$; `inf` and `nan` are rejected.
 
 use super::expr::{self, Value, is_parameter_name, referenced_names};
+use super::keys::{check_keys, keys_of};
 use super::matlab::{FieldScan, ragged_msg, split_matlab_matrix};
 use super::raw::{self, Raw};
-use super::keys::{check_keys, keys_of};
 use super::{ExactScalar, Ground, InputError, InputErrorKind, MatrixEntries, SignalNames};
 use std::collections::HashMap;
 use std::path::Path;
@@ -156,6 +156,7 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
     };
     check_keys(file, &keys_of(&entries))?;
     let signals = SignalNames::read(file, &entries)?;
+    let g_realization = super::transfer_key::realize_g_key(file, &entries)?;
     let mut name = None;
     let mut params_raw = Vec::new();
     let mut mats: HashMap<&'static str, Raw> = HashMap::new();
@@ -205,6 +206,7 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
             got.insert(key, read_matrix(file, key, r, &lookup, &mut scan)?);
         }
     }
+    got.extend(g_realization);
     let mut sys = SystemFile {
         name,
         path: file.to_string(),
