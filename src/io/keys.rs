@@ -61,6 +61,15 @@ pub(crate) fn check_keys(file: &str, keys: &[&str]) -> Result<(), InputError> {
         if SYSTEM_KEYS.contains(k) {
             continue;
         }
+        let up = k.to_ascii_uppercase();
+        if up.len() == 1 && SYSTEM_KEYS[..10].contains(&up.as_str()) {
+            return Err(InputError::key(
+                file,
+                k,
+                format!("matrix keys are upper case: did you mean '{up}'?"),
+            )
+            .with_kind(InputErrorKind::UnknownKey));
+        }
         let hint = suggest(k, &SYSTEM_KEYS)
             .map(|s| format!("; did you mean '{s}'?"))
             .unwrap_or_else(|| {

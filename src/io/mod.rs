@@ -38,6 +38,7 @@ pub mod symbolic;
 pub mod system_file;
 pub mod transfer_expr;
 mod transfer_key;
+mod value;
 
 pub use expr::{ExprError, eval_expr};
 pub use keys::SignalNames;
