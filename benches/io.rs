@@ -51,16 +51,19 @@ fn main() {
         });
     }
     if selected("read_200x200_int_strings") {
-        let quoted = system_json(200, &mut |r: &mut Rng| {
-            format!("\"{}\"", r.int(-99, 99))
-        });
+        let quoted = system_json(200, &mut |r: &mut Rng| format!("\"{}\"", r.int(-99, 99)));
         bench("read_200x200_int_strings", 5, 2000.0, || {
             load_system_str(&quoted, SystemFormat::Json, "s.json").expect("valid")
         });
     }
     if selected("read_100x100_decimal_json") {
         let dec = system_json(100, &mut |r: &mut Rng| {
-            format!("{}.{:010}{:010}", r.int(0, 999), r.int(0, 1 << 30), r.int(0, 1 << 30))
+            format!(
+                "{}.{:010}{:010}",
+                r.int(0, 999),
+                r.int(0, 1 << 30),
+                r.int(0, 1 << 30)
+            )
         });
         bench("read_100x100_decimal_json", 5, 2000.0, || {
             load_system_str(&dec, SystemFormat::Json, "d.json").expect("valid")

@@ -255,23 +255,8 @@ pub fn load_symbolic_str(
     }
     let get = |key: &str| mats.iter().find(|(m, _)| *m == key).map(|(_, x)| x.clone());
     let typed = typed_from(name, &get)?;
-    let file = SystemFile {
-        name: sys_name,
-        path: name.to_string(),
-        parameters: vec![],
-        ground: Ground::RatFunc(k),
-        a: None,
-        b: None,
-        c: None,
-        d: None,
-        e: None,
-        m: None,
-        l: None,
-        k: None,
-        f: None,
-        extra,
-        signals,
-    };
+    let mut file = SystemFile::without_matrices(name, Ground::RatFunc(k), extra, signals);
+    file.name = sys_name;
     let t = &typed.ss;
     file.signals
         .check(name, t.nstates(), t.ninputs(), t.noutputs())?;

@@ -86,6 +86,32 @@ impl SystemFile {
     pub fn noutputs(&self) -> usize {
         self.d.as_ref().map_or(0, |d| d.nrows)
     }
+    /// A file with its field, extra keys and signal names but no name, parameters or
+    /// matrices yet (the readers fill them in).
+    pub(crate) fn without_matrices(
+        path: &str,
+        ground: Ground,
+        extra: serde_json::Map<String, serde_json::Value>,
+        signals: SignalNames,
+    ) -> SystemFile {
+        SystemFile {
+            name: None,
+            path: path.to_string(),
+            parameters: vec![],
+            ground,
+            a: None,
+            b: None,
+            c: None,
+            d: None,
+            e: None,
+            m: None,
+            l: None,
+            k: None,
+            f: None,
+            extra,
+            signals,
+        }
+    }
     /// The value of a parameter.
     pub fn parameter(&self, name: &str) -> Option<&ExactScalar> {
         self.parameters
@@ -207,26 +233,12 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
         }
     }
     got.extend(g_realization);
-    let mut sys = SystemFile {
-        name,
-        path: file.to_string(),
-        parameters: params
-            .into_iter()
-            .map(|(n, v)| (n, ExactScalar { a: v.a, b: v.b }))
-            .collect(),
-        ground: scan.ground(),
-        a: None,
-        b: None,
-        c: None,
-        d: None,
-        e: None,
-        m: None,
-        l: None,
-        k: None,
-        f: None,
-        extra,
-        signals,
-    };
+    let mut sys = SystemFile::without_matrices(file, scan.ground(), extra, signals);
+    sys.name = name;
+    sys.parameters = params
+        .into_iter()
+        .map(|(n, v)| (n, ExactScalar { a: v.a, b: v.b }))
+        .collect();
     check_shapes(file, got, &mut sys)?;
     sys.signals
         .check(file, sys.nstates(), sys.ninputs(), sys.noutputs())?;
