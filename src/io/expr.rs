@@ -415,6 +415,15 @@ impl Parser<'_> {
 
 /// A number literal, within the size limits (checked before any big-number work).
 pub(crate) fn parse_number(s: &str) -> Result<Rational, ExprError> {
+    // fast path: a plain integer that fits in i64 (most entries of most files)
+    let digits = s.strip_prefix(['-', '+']).unwrap_or(s);
+    if !digits.is_empty()
+        && digits.len() <= 18
+        && digits.bytes().all(|c| c.is_ascii_digit())
+        && let Ok(n) = s.parse::<i64>()
+    {
+        return Ok(Rational::from_integer(n.into()));
+    }
     if s.len() > MAX_NUMBER_LEN {
         return err(format!("number with more than {MAX_NUMBER_LEN} characters"));
     }

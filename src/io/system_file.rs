@@ -369,8 +369,11 @@ fn read_matrix(
     lookup: &dyn Fn(&str) -> Option<Value>,
     scan: &mut FieldScan,
 ) -> Result<MatrixEntries, InputError> {
-    let cells: Vec<Vec<Raw>> = match r {
-        Raw::Str(s) => split_matlab_matrix(s)
+    let owned: Vec<Vec<Raw>>;
+    let single;
+    let cells: Vec<&[Raw]> = match r {
+        Raw::Str(s) => {
+            owned = split_matlab_matrix(s)
             .map_err(|e| InputError {
                 row: e.row,
                 col: e.col,
@@ -378,10 +381,15 @@ fn read_matrix(
             })?
             .into_iter()
             .map(|row| row.into_iter().map(Raw::Str).collect())
-            .collect(),
-        Raw::Number(_) => vec![vec![r.clone()]],
+            .collect();
+            owned.iter().map(Vec::as_slice).collect()
+        }
+        Raw::Number(_) => {
+            single = [r.clone()];
+            vec![&single[..]]
+        }
         Raw::Array(rows) => {
-            let mut out: Vec<Vec<Raw>> = Vec::with_capacity(rows.len());
+            let mut out: Vec<&[Raw]> = Vec::with_capacity(rows.len());
             for (i, row) in rows.iter().enumerate() {
                 let Raw::Array(xs) = row else {
                     let msg = format!(
@@ -402,7 +410,7 @@ fn read_matrix(
                         ..InputError::key(file, key, msg)
                     });
                 }
-                out.push(xs.clone());
+                out.push(xs);
             }
             out
         }
@@ -415,14 +423,17 @@ fn read_matrix(
         }
     };
     let nrows = cells.len();
-    let ncols = cells.first().map_or(0, Vec::len);
+    let ncols = cells.first().map_or(0, |r| r.len());
     let mut data = Vec::with_capacity(nrows * ncols);
     for (i, row) in cells.iter().enumerate() {
         for (j, x) in row.iter().enumerate() {
             let at = |m: String| InputError::entry(file, key, i + 1, j + 1, m);
             let v = eval_scalar(x, lookup).map_err(at)?;
-            scan.admit(&v, &format!("key {key}, row {}, column {}", i + 1, j + 1))
-                .map_err(at)?;
+            // the place text is only needed for a non-rational value (most are rational)
+            if v.k.is_some() {
+                scan.admit(&v, &format!("key {key}, row {}, column {}", i + 1, j + 1))
+                    .map_err(at)?;
+            }
             data.push(ExactScalar { a: v.a, b: v.b });
         }
     }
