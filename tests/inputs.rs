@@ -219,9 +219,9 @@ fn transfer_matrix_key_works_in_state_space_commands() {
     // the realization reproduces G: Markov parameter C B and D
     let cb = t.ss.c.try_mul(&t.ss.b).unwrap();
     let want = [["1", "2"], ["0", "0"]];
-    for i in 0..2 {
-        for j in 0..2 {
-            assert_eq!(cb.get(i, j).to_string(), want[i][j], "CB[{i}][{j}]");
+    for (i, row) in want.iter().enumerate() {
+        for (j, w) in row.iter().enumerate() {
+            assert_eq!(cb.get(i, j).to_string(), *w, "CB[{i}][{j}]");
         }
     }
     assert_eq!(t.ss.d.get(0, 0).to_string(), "0");
