@@ -119,7 +119,10 @@ fn general_yaw_plane_eq24_26_charpoly_and_discriminant() {
     );
     let jf = jordan_params(&a).unwrap();
     assert!(jf.verified);
-    assert!(!jf.complete, "the nonzero pair is a root pair of a quadratic");
+    assert!(
+        !jf.complete,
+        "the nonzero pair is a root pair of a quadratic"
+    );
     let kk = &jf.field;
     let zero = jf.eigenvalue(&kk.zero()).expect("0");
     // two zeros (lateral offset, heading) in one 2x2 block
@@ -167,10 +170,7 @@ fn planted_structures_random_points() {
             &[1, 1, 1],
         ),
     ];
-    let s = mat(
-        &k,
-        &[&["1", "p", "0"], &["q", "1", "1"], &["0", "1", "2"]],
-    );
+    let s = mat(&k, &[&["1", "p", "0"], &["q", "1", "1"], &["0", "1", "2"]]);
     let si = s.inverse().unwrap();
     let mut seed = 12345u64;
     for (rows, want_blocks) in cases {
@@ -186,9 +186,14 @@ fn planted_structures_random_points() {
         blocks.sort_unstable_by(|x, y| y.cmp(x));
         assert_eq!(&blocks, want_blocks);
         for _ in 0..4 {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             let p0 = [
-                q(((seed >> 33) % 19) as i64 - 9, 1 + ((seed >> 20) % 3) as i64),
+                q(
+                    ((seed >> 33) % 19) as i64 - 9,
+                    1 + ((seed >> 20) % 3) as i64,
+                ),
                 q(((seed >> 40) % 17) as i64 - 8, 1),
             ];
             if jf.conditions_vanish_at(&p0) {

@@ -203,7 +203,7 @@ mod tests {
         assert_eq!(suggest("b", &SYSTEM_KEYS), Some("B"));
         assert_eq!(suggest("output", &SYSTEM_KEYS), Some("outputs"));
         assert_eq!(suggest("paramters", &SYSTEM_KEYS), Some("parameters"));
-        assert_eq!(suggest("Nmae", &SYSTEM_KEYS), Some("name"));
+        assert_eq!(suggest("nmae", &SYSTEM_KEYS), Some("name"));
         assert_eq!(suggest("zzzz", &SYSTEM_KEYS), None);
         assert_eq!(edit_distance("kitten", "sitting"), 3);
     }

@@ -262,7 +262,7 @@ mod tests {
         assert_eq!(e.kind, InputErrorKind::DuplicateKey);
         assert_eq!(
             e.to_string(),
-            "f.json: key b: key given twice (second time at line 1, column 24)"
+            "f.json: key b: key given twice (second time at line 1, column 22)"
         );
         let e = from_json_text("{\"a\": [1,]}", "f.json").unwrap_err();
         assert!(e.to_string().starts_with("f.json: invalid JSON: "), "{e}");

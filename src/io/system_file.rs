@@ -374,14 +374,14 @@ fn read_matrix(
     let cells: Vec<&[Raw]> = match r {
         Raw::Str(s) => {
             owned = split_matlab_matrix(s)
-            .map_err(|e| InputError {
-                row: e.row,
-                col: e.col,
-                ..InputError::key(file, key, e.msg)
-            })?
-            .into_iter()
-            .map(|row| row.into_iter().map(Raw::Str).collect())
-            .collect();
+                .map_err(|e| InputError {
+                    row: e.row,
+                    col: e.col,
+                    ..InputError::key(file, key, e.msg)
+                })?
+                .into_iter()
+                .map(|row| row.into_iter().map(Raw::Str).collect())
+                .collect();
             owned.iter().map(Vec::as_slice).collect()
         }
         Raw::Number(_) => {
