@@ -7,12 +7,15 @@
 //! `--max-seconds` (default 600).
 
 mod analyze;
+mod bifurcations;
 mod commands;
+mod common;
 mod critical;
 mod float_cmds;
 mod pencil_cmds;
 mod sweep;
-mod symbolic_cmds;
+mod symbolic;
+mod symbolic_jordan;
 
 /// One command run in-process (no output, no time bound): the report and its status.
 pub use commands::execute;
@@ -210,6 +213,17 @@ pub enum Command {
     },
     /// Everything that applies, as one report (built-in sliding-mass example without FILE).
     Analyze { file: Option<PathBuf> },
+    /// Structural bifurcations of a symbolic system: the generic result, then the result
+    /// where each condition vanishes (solved for a parameter when linear in it).
+    Bifurcations {
+        file: PathBuf,
+        /// The structure explored.
+        #[arg(long = "of", value_enum, default_value_t = bifurcations::Of::Scb)]
+        of: bifurcations::Of,
+        /// Substitutions along one path.
+        #[arg(long, default_value_t = 2)]
+        depth: usize,
+    },
 }
 
 /// A command's result: the report, and whether every exact check it made passed (read for
