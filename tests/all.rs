@@ -35,6 +35,8 @@ mod float_honesty;
 mod from_transfer;
 #[path = "fuzz.rs"]
 mod fuzz;
+#[path = "inputs.rs"]
+mod inputs;
 #[path = "io.rs"]
 mod io;
 #[path = "jordan.rs"]

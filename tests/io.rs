@@ -62,7 +62,9 @@ fn single_track_toml_floats_are_exact() {
         "[[0]]",
         "missing D is filled in as p x m zeros"
     );
-    assert_eq!(s.extra["output"], serde_json::json!(["yaw rate"]));
+    // strict keys (contract): the signal names key is `outputs`; an `output` key is refused
+    assert_eq!(s.extra["outputs"], serde_json::json!(["yaw rate"]));
+    assert_eq!(s.signals.outputs, Some(vec!["yaw rate".to_string()]));
     // the same entries by direct rational arithmetic
     let (m, izz, a, b, cf, cr, u) = (
         r(1500, 1),

@@ -37,7 +37,7 @@ pub fn handles(cmd: &Command) -> Option<&Path> {
 
 /// A cheap look at the top-level keys (the full reader validates later).
 fn file_has_key(path: &Path, key: &str) -> bool {
-    let Ok(text) = std::fs::read_to_string(path) else {
+    let Ok(text) = crate::io::read_text(path) else {
         return false;
     };
     if path.extension().is_some_and(|x| x == "toml") {

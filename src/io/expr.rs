@@ -8,8 +8,13 @@
 //! term  := unary (('*' | '/') unary)*
 //! unary := ('-' | '+') unary | power
 //! power := atom ('^' unary)?
-//! atom  := number | number 'i' | name | 'i' | 'sqrt' '(' expr ')' | '(' expr ')'
+//! atom  := number | name | 'i' | 'sqrt' '(' expr ')' | '(' expr ')'
 //! ```
+//!
+//! A number written directly before `i` (`2i`, `0.5i`) is an implicit multiplication that
+//! binds exactly like the written-out `*`: `2i^2` is `2*i^2 = -2` and `1/2i` is
+//! `1/2*i = i/2` (not `-4` and `-i/2`). No other implicit multiplication exists: `2x` and
+//! `2 x` are errors.
 //!
 //! Numbers are exact decimals (`0.08`, `1.5e-3`, any number of digits). A value is
 //! $a + b\sqrt d$ with $a, b \in \mathbb{Q}$ and at most one square-free radicand `d`
@@ -28,10 +33,10 @@
 //! | [`eval_expr`] | the exact value of one expression over given parameters |
 //! | [`is_parameter_name`] | whether a string may name a parameter |
 
+pub(crate) use super::value::Value;
 use super::{ExactScalar, Ground};
-use crate::field::{QuadraticField, Rational, fmt_rational, parse_rational};
-use num_bigint::BigInt;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use crate::field::{QuadraticField, Rational, parse_rational};
+use num_traits::{One, Zero};
 use std::fmt;
 
 /// Largest accepted |exponent| in `x^n`.
@@ -62,7 +67,7 @@ impl fmt::Display for ExprError {
 
 impl std::error::Error for ExprError {}
 
-fn err<T>(msg: impl Into<String>) -> Result<T, ExprError> {
+pub(crate) fn err<T>(msg: impl Into<String>) -> Result<T, ExprError> {
     Err(ExprError { msg: msg.into() })
 }
 
@@ -123,171 +128,6 @@ pub fn eval_expr(
     Ok((ExactScalar { a: v.a, b: v.b }, g))
 }
 
-/// A value $a + b\sqrt d$; `k` is `Some` exactly when `b != 0` (canonical).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub(crate) struct Value {
-    pub a: Rational,
-    pub b: Rational,
-    pub k: Option<QuadraticField>,
-}
-
-/// `x + y`, skipping num-rational's gcd reduction when both are integers (its binary gcd
-/// is quadratic even for `gcd(x, 1)`).
-fn q_add(x: &Rational, y: &Rational) -> Rational {
-    if x.is_integer() && y.is_integer() {
-        Rational::from_integer(x.numer() + y.numer())
-    } else {
-        x + y
-    }
-}
-
-/// `x * y`, with the same integer shortcut as [`q_add`].
-fn q_mul(x: &Rational, y: &Rational) -> Rational {
-    if x.is_zero() || y.is_zero() {
-        Rational::zero()
-    } else if x.is_integer() && y.is_integer() {
-        Rational::from_integer(x.numer() * y.numer())
-    } else {
-        x * y
-    }
-}
-
-/// `x^n` for a rational `x`: numerator and denominator powered separately (already in
-/// lowest terms, no gcd needed). `x` must be non-zero when `n < 0`.
-fn q_pow(x: &Rational, n: u32, negative: bool) -> Rational {
-    let p = num_traits::pow(x.numer().clone(), n as usize);
-    let q = num_traits::pow(x.denom().clone(), n as usize);
-    if !negative {
-        Rational::new_raw(p, q)
-    } else if p.is_negative() {
-        Rational::new_raw(-q, -p)
-    } else {
-        Rational::new_raw(q, p)
-    }
-}
-
-fn bits(q: &Rational) -> u64 {
-    q.numer().bits().max(q.denom().bits())
-}
-
-impl Value {
-    pub(crate) fn new(a: Rational, b: Rational, k: Option<QuadraticField>) -> Self {
-        let k = if b.is_zero() { None } else { k };
-        Value { a, b, k }
-    }
-    pub(crate) fn rational(a: Rational) -> Self {
-        Value::new(a, Rational::zero(), None)
-    }
-    fn is_zero(&self) -> bool {
-        self.a.is_zero() && self.b.is_zero()
-    }
-    fn size(&self) -> u64 {
-        bits(&self.a).max(bits(&self.b))
-    }
-    fn checked(self) -> Result<Value, ExprError> {
-        if self.size() > MAX_BITS {
-            return err(format!("number too large (more than {MAX_BITS} bits)"));
-        }
-        Ok(self)
-    }
-    /// The common field of two values, or an error when they have different radicands.
-    fn join(&self, o: &Value) -> Result<Option<QuadraticField>, ExprError> {
-        match (&self.k, &o.k) {
-            (Some(x), Some(y)) if x != y => err(format!(
-                "values of {x} and {y} cannot be mixed: all values must lie in one quadratic field"
-            )),
-            (Some(x), _) | (None, Some(x)) => Ok(Some(x.clone())),
-            (None, None) => Ok(None),
-        }
-    }
-    fn add(&self, o: &Value) -> Result<Value, ExprError> {
-        let k = self.join(o)?;
-        Value::new(q_add(&self.a, &o.a), q_add(&self.b, &o.b), k).checked()
-    }
-    fn neg(&self) -> Value {
-        Value::new(-&self.a, -&self.b, self.k.clone())
-    }
-    fn mul(&self, o: &Value) -> Result<Value, ExprError> {
-        let k = self.join(o)?;
-        let bb = if self.b.is_zero() || o.b.is_zero() {
-            Rational::zero()
-        } else {
-            let d = Rational::from_integer(k.as_ref().map_or_else(BigInt::zero, |k| k.d().clone()));
-            q_mul(&d, &q_mul(&self.b, &o.b))
-        };
-        let a = q_add(&q_mul(&self.a, &o.a), &bb);
-        let b = q_add(&q_mul(&self.a, &o.b), &q_mul(&self.b, &o.a));
-        Value::new(a, b, k).checked()
-    }
-    fn inv(&self) -> Result<Value, ExprError> {
-        if self.is_zero() {
-            return err("division by zero");
-        }
-        // (a + b r)^-1 = (a - b r) / (a^2 - d b^2); the norm is non-zero since d is no square
-        let d =
-            Rational::from_integer(self.k.as_ref().map_or_else(BigInt::zero, |k| k.d().clone()));
-        let n = &self.a * &self.a - d * &self.b * &self.b;
-        Value::new(&self.a / &n, -&self.b / &n, self.k.clone()).checked()
-    }
-    fn pow(&self, e: &Value) -> Result<Value, ExprError> {
-        if e.k.is_some() || !e.a.is_integer() {
-            let shown = if e.k.is_some() {
-                "a non-rational value".to_string()
-            } else {
-                fmt_rational(&e.a)
-            };
-            return err(format!("exponent must be an integer, found {shown}"));
-        }
-        let n = match e.a.numer().abs().to_u32() {
-            Some(n) if n <= MAX_EXPONENT => n,
-            _ => {
-                return err(format!(
-                    "exponent {} is too large (at most {MAX_EXPONENT} in absolute value)",
-                    e.a.numer()
-                ));
-            }
-        };
-        if self.is_zero() && e.a.is_negative() {
-            return err("division by zero: 0 raised to a negative power");
-        }
-        if self.size().saturating_mul(u64::from(n)) > MAX_BITS {
-            return err(format!("power too large (more than {MAX_BITS} bits)"));
-        }
-        if self.k.is_none() {
-            return Value::rational(q_pow(&self.a, n, e.a.is_negative())).checked();
-        }
-        let mut result = Value::rational(Rational::one());
-        let mut base = self.clone();
-        let mut m = n;
-        while m > 0 {
-            if m & 1 == 1 {
-                result = result.mul(&base)?;
-            }
-            m >>= 1;
-            if m > 0 {
-                base = base.mul(&base)?;
-            }
-        }
-        if e.a.is_negative() {
-            result.inv()
-        } else {
-            Ok(result)
-        }
-    }
-    fn sqrt(&self) -> Result<Value, ExprError> {
-        if self.k.is_some() {
-            return err("sqrt of a non-rational value is not supported; use sqrt of a rational");
-        }
-        // squarefree_split is exact below 10^18 (trial division to 10^6)
-        let nm = self.a.numer() * self.a.denom();
-        if nm.abs() >= BigInt::from(10u64.pow(18)) {
-            return err("sqrt argument too large (numerator*denominator must stay below 10^18)");
-        }
-        let (k, a, b) = QuadraticField::sqrt_of_rational(&self.a);
-        Ok(Value::new(a, b, k))
-    }
-}
-
 #[derive(Clone, Debug, PartialEq)]
 enum Tok {
     Num(String),
@@ -330,7 +170,27 @@ fn lex(text: &str) -> Result<Vec<Token>, ExprError> {
                     }
                 }
             }
-            Tok::Num(cs[start..i].iter().collect())
+            let num = Tok::Num(cs[start..i].iter().collect());
+            // `2i`, `0.5i`: implicit multiplication by `i`, bound exactly as the written-out
+            // `2*i` (so `2i^2 = 2*i^2 = -2` and `1/2i = 1/2*i = i/2`)
+            if cs.get(i) == Some(&'i')
+                && !cs
+                    .get(i + 1)
+                    .is_some_and(|c| c.is_ascii_alphanumeric() || *c == '_')
+            {
+                out.push(Token {
+                    tok: num,
+                    start,
+                    end: i,
+                });
+                out.push(Token {
+                    tok: Tok::Op('*'),
+                    start: i,
+                    end: i,
+                });
+                continue;
+            }
+            num
         } else if c.is_ascii_alphabetic() || c == '_' {
             while i < cs.len() && (cs[i].is_ascii_alphanumeric() || cs[i] == '_') {
                 i += 1;
@@ -508,7 +368,7 @@ impl Parser<'_> {
                 self.pos += 1;
                 let q = parse_number(&s)?;
                 let v = Value::rational(q).checked()?;
-                // `2i`, `0.5i`: an imaginary literal; any other letters glued on are an error
+                // letters glued on are an error (`2i` was split into `2 * i` by the lexer)
                 if let Some(Token {
                     tok: Tok::Name(n),
                     start,
@@ -516,10 +376,6 @@ impl Parser<'_> {
                 }) = self.toks.get(self.pos)
                     && *start == end
                 {
-                    if n == "i" {
-                        self.pos += 1;
-                        return v.mul(&imaginary_unit());
-                    }
                     return err(format!("'{s}{n}' is not a number"));
                 }
                 Ok(v)
@@ -559,6 +415,15 @@ impl Parser<'_> {
 
 /// A number literal, within the size limits (checked before any big-number work).
 pub(crate) fn parse_number(s: &str) -> Result<Rational, ExprError> {
+    // fast path: a plain integer that fits in i64 (most entries of most files)
+    let digits = s.strip_prefix(['-', '+']).unwrap_or(s);
+    if !digits.is_empty()
+        && digits.len() <= 18
+        && digits.bytes().all(|c| c.is_ascii_digit())
+        && let Ok(n) = s.parse::<i64>()
+    {
+        return Ok(Rational::from_integer(n.into()));
+    }
     if s.len() > MAX_NUMBER_LEN {
         return err(format!("number with more than {MAX_NUMBER_LEN} characters"));
     }
@@ -605,6 +470,12 @@ mod tests {
         assert_eq!(ev("(1+i)^2").unwrap(), "2*i");
         assert_eq!(ev("1/(1+i)").unwrap(), "1/2 - i/2");
         assert_eq!(ev("3i").unwrap(), "3*i");
+        assert_eq!(ev("2i^2").unwrap(), ev("2*i^2").unwrap());
+        assert_eq!(ev("2i^2").unwrap(), "-2");
+        assert_eq!(ev("1/2i").unwrap(), ev("1/2*i").unwrap());
+        assert_eq!(ev("1/2i").unwrap(), "i/2");
+        assert_eq!(ev("-0.5i^3").unwrap(), "i/2");
+        assert_eq!(ev("2i3").unwrap_err(), "'2i3' is not a number");
         assert_eq!(ev("i^2").unwrap(), "-1");
         assert_eq!(ev("1.5e-3").unwrap(), "3/2000");
         assert_eq!(ev("2e").unwrap_err(), "'2e' is not a number");

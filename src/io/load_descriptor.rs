@@ -9,7 +9,7 @@
 //! | [`load_descriptor_path`] | a file → [`LoadedDescriptor`] |
 //! | [`LoadedDescriptor::run`] | calls a [`DescriptorVisitor`] over the concrete field |
 
-use super::{FromScalars, Ground, InputError, SystemFile, read_system_file};
+use super::{FromScalars, Ground, InputError, SystemFile};
 use crate::field::{Field, Q, QuadraticField, Rational};
 use crate::io::transfer_expr::parse_rational_function;
 use crate::matrix::Matrix;
@@ -93,16 +93,18 @@ fn descriptor_of<K: FromScalars>(f: &SystemFile, k: &K) -> Result<Descriptor<K>,
 /// that does not parse, a transfer matrix that cannot be realized.
 pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError> {
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::file(&name, format!("cannot read: {e}")))?;
-    let is_toml = path.extension().is_some_and(|x| x == "toml");
-    let json: Option<serde_json::Value> = if is_toml {
-        toml::from_str::<toml::Value>(&text)
-            .ok()
-            .and_then(|v| serde_json::to_value(v).ok())
+    let text = super::read_text(path)?;
+    let is_toml = path.extension().is_some_and(|x| x == "toml")
+        || (path.extension().is_none_or(|x| x != "json") && !text.trim_start().starts_with('{'));
+    let raw = if is_toml {
+        super::raw::from_toml_text(&text, &name)?
     } else {
-        serde_json::from_str(&text).ok()
+        super::raw::from_json_text(&text, &name)?
     };
+    if let super::raw::Raw::Table(entries) = &raw {
+        super::keys::check_keys(&name, &super::keys::keys_of(entries))?;
+    }
+    let json = Some(raw.to_json());
     if let Some(g) = json.as_ref().and_then(|v| v.get("G")) {
         return load_g(&name, g, json.as_ref().and_then(|v| v.get("parameters")));
     }
@@ -111,7 +113,7 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
     {
         return Ok(l);
     }
-    let f = read_system_file(path)?;
+    let f = super::system_file::validate(raw, &name)?;
     let has_e = f.e.is_some();
     let system = match &f.ground {
         Ground::Rational => DescriptorAny::Rational(descriptor_of(&f, &Q)?),
@@ -258,6 +260,28 @@ fn load_g(
     g: &serde_json::Value,
     params: Option<&serde_json::Value>,
 ) -> Result<LoadedDescriptor, InputError> {
+    let (tm, r) = realize_g(name, g, params)?;
+    let has_e = r.minimal.infinite_order > 0;
+    Ok(LoadedDescriptor {
+        path: name.to_string(),
+        system: DescriptorAny::Rational(r.minimal.system.clone()),
+        has_e,
+        transfer: Some((tm, r)),
+        pencil: None,
+    })
+}
+
+/// The transfer matrix of key `G` (parameters evaluated first) and its exact minimal
+/// realization.
+///
+/// # Errors
+/// An entry that does not parse (named by row and column), ragged or empty rows, a
+/// realization failure.
+pub(crate) fn realize_g(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+) -> Result<(TransferMatrix<Q>, TransferRealization<Q>), InputError> {
     let values = eval_params(name, params)?;
     let rows = g
         .as_array()
@@ -289,12 +313,5 @@ fn load_g(
     }
     let tm = TransferMatrix { entries };
     let r = realize_transfer(&tm).map_err(|e| InputError::key(name, "G", e.to_string()))?;
-    let has_e = r.minimal.infinite_order > 0;
-    Ok(LoadedDescriptor {
-        path: name.to_string(),
-        system: DescriptorAny::Rational(r.minimal.system.clone()),
-        has_e,
-        transfer: Some((tm, r)),
-        pencil: None,
-    })
+    Ok((tm, r))
 }

@@ -27,21 +27,27 @@
 //! shapes) → [`SystemFile`]. There is no unchecked path from text to a system.
 
 pub mod expr;
+pub mod keys;
 pub mod load;
 pub mod load_descriptor;
 pub mod matlab;
 pub mod qmat;
 pub(crate) mod raw;
+pub mod read;
 pub mod symbolic;
 pub mod system_file;
 pub mod transfer_expr;
+mod transfer_key;
+mod value;
 
 pub use expr::{ExprError, eval_expr};
+pub use keys::SignalNames;
 pub use load::{
     FromScalars, LoadedSystem, SystemFormat, SystemVisitor, TypedAny, TypedSystem, as_rational,
     load_system_path, load_system_str,
 };
 pub use matlab::{parse_matlab_matrix, split_matlab_matrix};
+pub use read::read_text;
 pub use system_file::{SystemFile, parse_system_json, parse_system_toml, read_system_file};
 
 use crate::field::{Field, Quadratic, QuadraticField, Rational, fmt_rational};
@@ -216,6 +222,34 @@ pub struct InputError {
     pub row: Option<usize>,
     pub col: Option<usize>,
     pub msg: String,
+    /// What kind of failure, for callers that must tell cases apart (the message is for
+    /// people).
+    pub kind: InputErrorKind,
+}
+
+/// The kind of an [`InputError`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum InputErrorKind {
+    /// A bad value: an entry or parameter that does not evaluate, a wrong type, a cycle.
+    #[default]
+    Value,
+    /// Text that is not valid JSON/TOML/expression syntax.
+    Syntax,
+    /// The file cannot be read (missing, unreadable, not UTF-8).
+    Read,
+    /// The file is larger than [`read::MAX_FILE_BYTES`].
+    TooLarge,
+    /// A key this format does not know (with a suggestion when one is close).
+    UnknownKey,
+    /// A key given twice.
+    DuplicateKey,
+    /// Matrix shapes that do not agree, or a missing required matrix.
+    Shape,
+    /// Valid data that is not a system file (e.g. the bicycle benchmark's raw matrices).
+    NotASystem,
+    /// A feature or field the reader or the loader does not support here.
+    Unsupported,
 }
 
 impl InputError {
@@ -227,7 +261,12 @@ impl InputError {
             row: None,
             col: None,
             msg: msg.into(),
+            kind: InputErrorKind::Value,
         }
+    }
+    /// The same error with kind `kind`.
+    pub fn with_kind(self, kind: InputErrorKind) -> Self {
+        InputError { kind, ..self }
     }
     /// An error about one key of the file.
     pub fn key(file: &str, key: &str, msg: impl Into<String>) -> Self {

@@ -5,10 +5,13 @@
 //! tokens keep their source text (underscores removed, radix prefixes decoded here). No
 //! number ever passes through `f64`.
 
-use super::InputError;
+use super::{InputError, InputErrorKind};
 use num_bigint::BigInt;
+use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde_json::Value as Json;
 use std::borrow::Cow;
+use std::cell::RefCell;
+use std::collections::HashSet;
 use toml::de::{DeTable, DeValue};
 
 /// A parsed, not yet validated, value.
@@ -54,28 +57,102 @@ impl Raw {
     }
 }
 
-/// Parses JSON text into the proxy tree.
+/// Parses JSON text into the proxy tree, in one pass (no intermediate `serde_json::Value`).
+///
+/// A key given twice in one object is an error naming the key (`serde_json::Value` would
+/// silently keep the last one).
 pub(crate) fn from_json_text(text: &str, file: &str) -> Result<Raw, InputError> {
-    let v: Json = serde_json::from_str(text)
-        .map_err(|e| InputError::file(file, format!("invalid JSON: {e}")))?;
-    Ok(from_json(v))
+    let dup = RefCell::new(None);
+    let mut de = serde_json::Deserializer::from_str(text);
+    let parsed = JsonSeed { dup: &dup }
+        .deserialize(&mut de)
+        .and_then(|r| de.end().map(|()| r));
+    parsed.map_err(|e| {
+        if let Some(k) = dup.borrow_mut().take() {
+            return InputError::key(
+                file,
+                &k,
+                format!(
+                    "key given twice (second time at line {}, column {})",
+                    e.line(),
+                    e.column()
+                ),
+            )
+            .with_kind(InputErrorKind::DuplicateKey);
+        }
+        InputError::file(file, format!("invalid JSON: {e}")).with_kind(InputErrorKind::Syntax)
+    })
 }
 
-fn from_json(v: Json) -> Raw {
-    match v {
-        // arbitrary_precision: to_string gives the number's text as written
-        Json::Number(n) => Raw::Number(n.to_string()),
-        Json::String(s) => Raw::Str(s),
-        Json::Array(xs) => Raw::Array(xs.into_iter().map(from_json).collect()),
-        Json::Object(m) => Raw::Table(m.into_iter().map(|(k, v)| (k, from_json(v))).collect()),
-        Json::Bool(_) => Raw::Other {
+/// serde_json's marker key for a number under `arbitrary_precision` (the number's text is
+/// the map's one value).
+const JSON_NUMBER_TOKEN: &str = "$serde_json::private::Number";
+
+#[derive(Clone, Copy)]
+struct JsonSeed<'a> {
+    dup: &'a RefCell<Option<String>>,
+}
+
+impl<'de> DeserializeSeed<'de> for JsonSeed<'_> {
+    type Value = Raw;
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Raw, D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> Visitor<'de> for JsonSeed<'_> {
+    type Value = Raw;
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a JSON value")
+    }
+    fn visit_bool<E: de::Error>(self, b: bool) -> Result<Raw, E> {
+        Ok(Raw::Other {
             kind: "a boolean",
-            json: v,
-        },
-        Json::Null => Raw::Other {
+            json: Json::Bool(b),
+        })
+    }
+    fn visit_unit<E: de::Error>(self) -> Result<Raw, E> {
+        Ok(Raw::Other {
             kind: "null",
-            json: v,
-        },
+            json: Json::Null,
+        })
+    }
+    // without arbitrary_precision numbers would arrive here; keep them exact anyway
+    fn visit_i64<E: de::Error>(self, n: i64) -> Result<Raw, E> {
+        Ok(Raw::Number(n.to_string()))
+    }
+    fn visit_u64<E: de::Error>(self, n: u64) -> Result<Raw, E> {
+        Ok(Raw::Number(n.to_string()))
+    }
+    fn visit_str<E: de::Error>(self, s: &str) -> Result<Raw, E> {
+        Ok(Raw::Str(s.to_string()))
+    }
+    fn visit_string<E: de::Error>(self, s: String) -> Result<Raw, E> {
+        Ok(Raw::Str(s))
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Raw, A::Error> {
+        let mut xs = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        while let Some(x) = seq.next_element_seed(self)? {
+            xs.push(x);
+        }
+        Ok(Raw::Array(xs))
+    }
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Raw, A::Error> {
+        let mut kv: Vec<(String, Raw)> = Vec::new();
+        let mut seen: HashSet<String> = HashSet::new();
+        while let Some(k) = map.next_key::<String>()? {
+            if k == JSON_NUMBER_TOKEN && kv.is_empty() {
+                let text: String = map.next_value()?;
+                return Ok(Raw::Number(text));
+            }
+            if !seen.insert(k.clone()) {
+                *self.dup.borrow_mut() = Some(k.clone());
+                return Err(de::Error::custom(format!("duplicate key '{k}'")));
+            }
+            let v = map.next_value_seed(self)?;
+            kv.push((k, v));
+        }
+        Ok(Raw::Table(kv))
     }
 }
 
@@ -92,6 +169,7 @@ pub(crate) fn from_toml_text(text: &str, file: &str) -> Result<Raw, InputError> 
             })
             .unwrap_or_default();
         InputError::file(file, format!("invalid TOML{at}: {}", e.message().trim()))
+            .with_kind(InputErrorKind::Syntax)
     })?;
     Ok(from_toml_table(doc.into_inner()))
 }
@@ -180,6 +258,12 @@ mod tests {
             "{e}"
         );
         assert!(!e.to_string().contains('\n'));
+        let e = from_json_text("{\"a\": [1, {\"b\": 1, \"b\": 2}]}", "f.json").unwrap_err();
+        assert_eq!(e.kind, InputErrorKind::DuplicateKey);
+        assert_eq!(
+            e.to_string(),
+            "f.json: key b: key given twice (second time at line 1, column 22)"
+        );
         let e = from_json_text("{\"a\": [1,]}", "f.json").unwrap_err();
         assert!(e.to_string().starts_with("f.json: invalid JSON: "), "{e}");
     }

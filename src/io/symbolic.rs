@@ -24,10 +24,11 @@
 //! assert_eq!(t.ss.a.field().fmt_elem(t.ss.a.get(1, 0)), "-2/m");
 //! ```
 
+use super::keys::{check_keys, keys_of};
 use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
 use super::raw::{Raw, from_json_text, from_toml_text};
 use super::system_file::validate;
-use super::{Ground, InputError, SystemFile, SystemFormat, split_matlab_matrix};
+use super::{Ground, InputError, SignalNames, SystemFile, SystemFormat, split_matlab_matrix};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
 use std::collections::BTreeSet;
@@ -93,8 +94,7 @@ pub fn refusal(what: &str, k: &RatFuncField) -> String {
 /// As [`load_symbolic_str`], and an unreadable file.
 pub fn load_symbolic_path(path: &Path, opts: &SymbolicOptions) -> Result<LoadedSystem, InputError> {
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::file(&shown, format!("cannot read the file: {e}")))?;
+    let text = super::read_text(path)?;
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
@@ -129,6 +129,8 @@ pub fn load_symbolic_str(
     let Raw::Table(entries) = raw else {
         return validate(raw, name).and_then(type_file);
     };
+    check_keys(name, &keys_of(&entries))?;
+    let signals = SignalNames::read(name, &entries)?;
     let mut params: Vec<(String, Option<String>)> = vec![];
     let mut symbols: BTreeSet<String> = BTreeSet::new();
     let mut rest: Vec<(String, Raw)> = vec![];
@@ -253,22 +255,11 @@ pub fn load_symbolic_str(
     }
     let get = |key: &str| mats.iter().find(|(m, _)| *m == key).map(|(_, x)| x.clone());
     let typed = typed_from(name, &get)?;
-    let file = SystemFile {
-        name: sys_name,
-        path: name.to_string(),
-        parameters: vec![],
-        ground: Ground::RatFunc(k),
-        a: None,
-        b: None,
-        c: None,
-        d: None,
-        e: None,
-        m: None,
-        l: None,
-        k: None,
-        f: None,
-        extra,
-    };
+    let mut file = SystemFile::without_matrices(name, Ground::RatFunc(k), extra, signals);
+    file.name = sys_name;
+    let t = &typed.ss;
+    file.signals
+        .check(name, t.nstates(), t.ninputs(), t.noutputs())?;
     Ok(LoadedSystem {
         file,
         system: TypedAny::RatFunc(typed),

@@ -29,9 +29,10 @@
 //! text (`toml::de::DeTable`), so `0.08` in TOML is $2/25$; `inf` and `nan` are rejected.
 
 use super::expr::{self, Value, is_parameter_name, referenced_names};
+use super::keys::{check_keys, keys_of};
 use super::matlab::{FieldScan, ragged_msg, split_matlab_matrix};
 use super::raw::{self, Raw};
-use super::{ExactScalar, Ground, InputError, MatrixEntries};
+use super::{ExactScalar, Ground, InputError, InputErrorKind, MatrixEntries, SignalNames};
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -57,8 +58,11 @@ pub struct SystemFile {
     pub l: Option<MatrixEntries>,
     pub k: Option<MatrixEntries>,
     pub f: Option<MatrixEntries>,
-    /// Keys this reader does not interpret (e.g. `output` names), as JSON.
+    /// Keys this reader does not interpret itself (`G`, `symbols`, and the descriptive
+    /// `inputs`, `outputs`, `states`), as JSON. Unknown keys are errors.
     pub extra: serde_json::Map<String, serde_json::Value>,
+    /// Signal names (`inputs`, `outputs`, `states`), their counts checked against the system.
+    pub signals: super::SignalNames,
 }
 
 impl SystemFile {
@@ -82,6 +86,32 @@ impl SystemFile {
     pub fn noutputs(&self) -> usize {
         self.d.as_ref().map_or(0, |d| d.nrows)
     }
+    /// A file with its field, extra keys and signal names but no name, parameters or
+    /// matrices yet (the readers fill them in).
+    pub(crate) fn without_matrices(
+        path: &str,
+        ground: Ground,
+        extra: serde_json::Map<String, serde_json::Value>,
+        signals: SignalNames,
+    ) -> SystemFile {
+        SystemFile {
+            name: None,
+            path: path.to_string(),
+            parameters: vec![],
+            ground,
+            a: None,
+            b: None,
+            c: None,
+            d: None,
+            e: None,
+            m: None,
+            l: None,
+            k: None,
+            f: None,
+            extra,
+            signals,
+        }
+    }
     /// The value of a parameter.
     pub fn parameter(&self, name: &str) -> Option<&ExactScalar> {
         self.parameters
@@ -98,8 +128,7 @@ impl SystemFile {
 /// An unreadable file, and every error of [`parse_system_json`] / [`parse_system_toml`].
 pub fn read_system_file(path: &Path) -> Result<SystemFile, InputError> {
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::file(&shown, format!("cannot read the file: {e}")))?;
+    let text = super::read_text(path)?;
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
@@ -151,6 +180,9 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
             format!("expected a table of keys, found {}", raw.kind()),
         ));
     };
+    check_keys(file, &keys_of(&entries))?;
+    let signals = SignalNames::read(file, &entries)?;
+    let g_realization = super::transfer_key::realize_g_key(file, &entries)?;
     let mut name = None;
     let mut params_raw = Vec::new();
     let mut mats: HashMap<&'static str, Raw> = HashMap::new();
@@ -200,26 +232,16 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
             got.insert(key, read_matrix(file, key, r, &lookup, &mut scan)?);
         }
     }
-    let mut sys = SystemFile {
-        name,
-        path: file.to_string(),
-        parameters: params
-            .into_iter()
-            .map(|(n, v)| (n, ExactScalar { a: v.a, b: v.b }))
-            .collect(),
-        ground: scan.ground(),
-        a: None,
-        b: None,
-        c: None,
-        d: None,
-        e: None,
-        m: None,
-        l: None,
-        k: None,
-        f: None,
-        extra,
-    };
+    got.extend(g_realization);
+    let mut sys = SystemFile::without_matrices(file, scan.ground(), extra, signals);
+    sys.name = name;
+    sys.parameters = params
+        .into_iter()
+        .map(|(n, v)| (n, ExactScalar { a: v.a, b: v.b }))
+        .collect();
     check_shapes(file, got, &mut sys)?;
+    sys.signals
+        .check(file, sys.nstates(), sys.ninputs(), sys.noutputs())?;
     Ok(sys)
 }
 
@@ -328,8 +350,9 @@ fn eval_parameters(
 /// One entry: a number (exact text) or an expression string.
 fn eval_scalar(r: &Raw, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<Value, String> {
     match r {
+        // the same size limits as the text form (a bare 1e9999 is refused like "1e9999")
         Raw::Number(s) => expr::parse_number(s)
-            .map(Value::rational)
+            .and_then(|q| Value::rational(q).checked())
             .map_err(|e| e.msg),
         Raw::Str(s) => expr::eval_with(s, lookup).map_err(|e| e.msg),
         other => Err(format!(
@@ -346,19 +369,27 @@ fn read_matrix(
     lookup: &dyn Fn(&str) -> Option<Value>,
     scan: &mut FieldScan,
 ) -> Result<MatrixEntries, InputError> {
-    let cells: Vec<Vec<Raw>> = match r {
-        Raw::Str(s) => split_matlab_matrix(s)
-            .map_err(|e| InputError {
-                row: e.row,
-                col: e.col,
-                ..InputError::key(file, key, e.msg)
-            })?
-            .into_iter()
-            .map(|row| row.into_iter().map(Raw::Str).collect())
-            .collect(),
-        Raw::Number(_) => vec![vec![r.clone()]],
+    let owned: Vec<Vec<Raw>>;
+    let single;
+    let cells: Vec<&[Raw]> = match r {
+        Raw::Str(s) => {
+            owned = split_matlab_matrix(s)
+                .map_err(|e| InputError {
+                    row: e.row,
+                    col: e.col,
+                    ..InputError::key(file, key, e.msg)
+                })?
+                .into_iter()
+                .map(|row| row.into_iter().map(Raw::Str).collect())
+                .collect();
+            owned.iter().map(Vec::as_slice).collect()
+        }
+        Raw::Number(_) => {
+            single = [r.clone()];
+            vec![&single[..]]
+        }
         Raw::Array(rows) => {
-            let mut out: Vec<Vec<Raw>> = Vec::with_capacity(rows.len());
+            let mut out: Vec<&[Raw]> = Vec::with_capacity(rows.len());
             for (i, row) in rows.iter().enumerate() {
                 let Raw::Array(xs) = row else {
                     let msg = format!(
@@ -379,7 +410,7 @@ fn read_matrix(
                         ..InputError::key(file, key, msg)
                     });
                 }
-                out.push(xs.clone());
+                out.push(xs);
             }
             out
         }
@@ -392,14 +423,17 @@ fn read_matrix(
         }
     };
     let nrows = cells.len();
-    let ncols = cells.first().map_or(0, Vec::len);
+    let ncols = cells.first().map_or(0, |r| r.len());
     let mut data = Vec::with_capacity(nrows * ncols);
     for (i, row) in cells.iter().enumerate() {
         for (j, x) in row.iter().enumerate() {
             let at = |m: String| InputError::entry(file, key, i + 1, j + 1, m);
             let v = eval_scalar(x, lookup).map_err(at)?;
-            scan.admit(&v, &format!("key {key}, row {}, column {}", i + 1, j + 1))
-                .map_err(at)?;
+            // the place text is only needed for a non-rational value (most are rational)
+            if v.k.is_some() {
+                scan.admit(&v, &format!("key {key}, row {}, column {}", i + 1, j + 1))
+                    .map_err(at)?;
+            }
             data.push(ExactScalar { a: v.a, b: v.b });
         }
     }
@@ -423,6 +457,7 @@ fn shape_err(file: &str, key: &str, want: String, x: &MatrixEntries) -> InputErr
         key,
         format!("{key} must {want}, found {}x{}", x.nrows, x.ncols),
     )
+    .with_kind(InputErrorKind::Shape)
 }
 
 fn check_shapes(
@@ -439,7 +474,8 @@ fn check_shapes(
             file,
             k2,
             "cannot mix the first-order form (A, B, E) with the second-order form (M, L, K, F)",
-        ));
+        )
+        .with_kind(InputErrorKind::Shape));
     }
     // (states n, "what A is" for messages, input-matrix key)
     let (n, what, input_key) = if let Some(k2) = second {
@@ -481,7 +517,8 @@ fn check_shapes(
                 None => InputError::file(
                     file,
                     "no system: give A (first-order form) or M, L, K, F (second-order form)",
-                ),
+                )
+                .with_kind(InputErrorKind::NotASystem),
             });
         };
         if a.nrows != a.ncols {

@@ -86,7 +86,7 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ha
     };
     // cheap test: a file without symbols and no command-line say is left alone
     if opts.is_empty() {
-        let text = std::fs::read_to_string(path).unwrap_or_default();
+        let text = crate::io::read_text(path).unwrap_or_default();
         if !text.contains("symbols") && !text.contains("null") {
             return Ok(None);
         }

@@ -1,0 +1,49 @@
+//! Reading input files with a size cap: an endless or huge file (`/dev/zero`, a log file
+//! given by mistake) is refused after [`MAX_FILE_BYTES`] bytes instead of filling memory.
+
+use super::InputError;
+use std::io::Read;
+use std::path::Path;
+
+/// Largest input file read (64 MiB). A 200x200 system file with 20-digit entries is about
+/// 1 MiB; every expression entry is itself bounded (see [`super::expr`]).
+pub const MAX_FILE_BYTES: u64 = 64 << 20;
+
+/// The text of `path`, at most [`MAX_FILE_BYTES`] bytes.
+///
+/// # Errors
+/// An unreadable file, a file that is not UTF-8, and a file larger than the cap (read no
+/// further than the cap: `/dev/zero` fails at once). The message names the file.
+pub fn read_text(path: &Path) -> Result<String, InputError> {
+    read_text_capped(path, MAX_FILE_BYTES)
+}
+
+/// [`read_text`] with an explicit cap (bytes).
+///
+/// # Errors
+/// As [`read_text`].
+pub fn read_text_capped(path: &Path, cap: u64) -> Result<String, InputError> {
+    let shown = path.display().to_string();
+    let fail = |m: String| InputError::file(&shown, m).with_kind(super::InputErrorKind::Read);
+    let f = std::fs::File::open(path).map_err(|e| fail(format!("cannot read the file: {e}")))?;
+    let mut bytes = Vec::new();
+    f.take(cap + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| fail(format!("cannot read the file: {e}")))?;
+    if bytes.len() as u64 > cap {
+        return Err(InputError::file(
+            &shown,
+            format!(
+                "the file is larger than {} MiB: not a system file",
+                cap >> 20
+            ),
+        )
+        .with_kind(super::InputErrorKind::TooLarge));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        fail(format!(
+            "the file is not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })
+}
