@@ -50,6 +50,10 @@ fn truth_str(t: Truth) -> &'static str {
     }
 }
 
+/// Most complex values (points x outputs x inputs) `freqresp` computes and reports: about
+/// 50 MB of JSON, a few hundred MB while the report is built.
+pub const MAX_RESPONSE_VALUES: usize = 1_000_000;
+
 /// Frequency response (float, from the exact system's embedding).
 pub fn freqresp<K: Field>(
     t: &Typed<K>,
@@ -65,6 +69,22 @@ pub fn freqresp<K: Field>(
             code: 2,
             message: format!(
                 "freqresp: need 0 < --from < --to and 2 <= --points <= 100000 (got {from}, {to}, {points})"
+            ),
+        });
+    }
+    // bounded output: the report holds every value (JSON ~50 bytes each), so a 20x20
+    // system at 100000 points (40 million values, GBs) is refused with the reason
+    let values = points
+        .saturating_mul(t.ss.noutputs())
+        .saturating_mul(t.ss.ninputs());
+    if values > MAX_RESPONSE_VALUES {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "freqresp: {points} points x {} outputs x {} inputs = {values} complex values; at most {MAX_RESPONSE_VALUES} (lower --points to {} or fewer)",
+                t.ss.noutputs(),
+                t.ss.ninputs(),
+                (MAX_RESPONSE_VALUES / (t.ss.noutputs() * t.ss.ninputs()).max(1)).max(2)
             ),
         });
     }
