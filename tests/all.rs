@@ -15,6 +15,8 @@ mod bicycle;
 mod cli;
 #[path = "cli_hardening.rs"]
 mod cli_hardening;
+#[path = "cli_options.rs"]
+mod cli_options;
 #[path = "cli_mpoly.rs"]
 mod cli_mpoly;
 #[path = "cli_pencil.rs"]
@@ -39,6 +41,8 @@ mod fuzz;
 mod io;
 #[path = "jordan.rs"]
 mod jordan;
+#[path = "latex.rs"]
+mod latex;
 #[path = "library_api.rs"]
 mod library_api;
 #[path = "matrix_generic.rs"]

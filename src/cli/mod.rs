@@ -57,7 +57,7 @@ pub struct Cli {
     #[arg(long, global = true)]
     pub standalone: bool,
     /// Upper bound on the wall time in seconds (a number > 0); exceeded: exit 2.
-    #[arg(long, global = true, default_value_t = 600.0, value_name = "SECONDS", value_parser = parse_seconds)]
+    #[arg(long, global = true, default_value_t = 600.0, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
     pub max_seconds: f64,
     /// Keep these parameters as symbols (comma separated; alone: every parameter).
     #[arg(long, global = true, num_args = 0..=1, default_missing_value = "", value_name = "NAMES")]
