@@ -201,7 +201,7 @@ const GREEK: [&str; 24] = [
 
 /// An identifier: `i` as the imaginary unit, Greek names as letters, a trailing number or
 /// `_part` as a subscript (`b7` → `b_{7}`), other multi-letter names in italic.
-fn ident(name: &str) -> String {
+pub(super) fn ident(name: &str) -> String {
     if name == "i" {
         return "\\mathrm{i}".into();
     }
@@ -273,8 +273,11 @@ fn starts_with_digit(n: &Node) -> bool {
     }
 }
 
+/// A multi-letter name typeset in italic (`cr`), which needs a thin space in a product.
 fn is_word(n: &Node) -> bool {
-    matches!(n, Node::Id(x) if x.len() > 1 && x != "pi")
+    matches!(n, Node::Id(x) if x.len() > 1
+        && !GREEK.contains(&x.as_str())
+        && !x.chars().any(|c| c.is_ascii_digit() || c == '_'))
 }
 
 fn render(n: &Node) -> String {

@@ -91,9 +91,9 @@ fn label(k: &str, v: &Value) -> String {
     if matches!(v, Value::Matrix(_))
         && k.len() <= 4
         && k.starts_with(|c: char| c.is_ascii_uppercase())
-        && let Some(m) = to_math(k)
+        && k.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
     {
-        return format!("${m}$");
+        return format!("${}$", expr::ident(k));
     }
     latex_text(&k.replace('_', " "))
 }
