@@ -71,6 +71,8 @@ mod scb;
 mod study;
 #[path = "symbolic.rs"]
 mod symbolic;
+#[path = "symjordan.rs"]
+mod symjordan;
 
 /// Every `tests/*.rs` file (other than this one) is mounted above: Cargo's automatic test
 /// discovery is off (`autotests = false`), so an unlisted file would silently not run.

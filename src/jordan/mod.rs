@@ -37,6 +37,7 @@
 //! enter exact arithmetic. The real/complex/purely-imaginary split is exact.
 
 pub mod chains;
+pub mod params;
 pub mod primary;
 pub mod real;
 pub(crate) mod realfield;

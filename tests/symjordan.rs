@@ -1,0 +1,240 @@
+//! Jordan form over QQ(p1..pk) (issue 13): the vehicle-dynamics paper's yaw-plane models in
+//! symbols (eq. 24-35), random properties (A T = T J, agreement with the rational Jordan form
+//! at points), and a naive oracle (block sizes from ranks of (A - theta I)^k at a point).
+
+use exactlti::field::{Field, Q, Rational};
+use exactlti::jordan::jordan;
+use exactlti::jordan::params::{ParamJordanForm, jordan_params};
+use exactlti::matrix::Matrix;
+use exactlti::ratfunc::RatFuncField;
+
+fn mat(k: &RatFuncField, rows: &[&[&str]]) -> Matrix<RatFuncField> {
+    Matrix::from_rows(
+        k.clone(),
+        rows.iter()
+            .map(|r| r.iter().map(|s| k.parse(s).unwrap()).collect())
+            .collect(),
+    )
+    .unwrap()
+}
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::new(n.into(), d.into())
+}
+
+/// eq. 27 over QQ(cr, m, u).
+fn yaw27() -> (RatFuncField, Matrix<RatFuncField>) {
+    let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();
+    let a = mat(
+        &k,
+        &[
+            &["0", "u", "-1", "0"],
+            &["0", "0", "0", "-1"],
+            &["0", "0", "-cr/(m*u)", "-u"],
+            &["0", "0", "0", "0"],
+        ],
+    );
+    (k, a)
+}
+
+fn strings(jf: &ParamJordanForm, m: &Matrix<RatFuncField>) -> Vec<Vec<String>> {
+    (0..m.nrows())
+        .map(|i| {
+            (0..m.ncols())
+                .map(|j| jf.field.fmt_elem(m.get(i, j)))
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn yaw_single_wheel_eq27_35() {
+    let (k, a) = yaw27();
+    let jf = jordan_params(&a).unwrap();
+    assert!(jf.verified && jf.complete);
+    let kk = &jf.field;
+    // eq. 29: s = -cr/(m u); the zero root in ONE 3x3 block
+    assert_eq!(jf.eigenvalues.len(), 2);
+    let zero = jf.eigenvalue(&kk.zero()).expect("eigenvalue 0");
+    assert_eq!(zero.blocks, [3]);
+    assert_eq!(zero.kernel_dims, [1, 2, 3]);
+    let s = k.parse("-cr/(m*u)").unwrap();
+    let se = jf.eigenvalue(&s).expect("eigenvalue -cr/(m u)");
+    assert_eq!(se.blocks, [1]);
+    assert_eq!(kk.fmt_elem(se.value.as_ref().unwrap()), "-cr/(m*u)");
+    // eq. 35 exactly
+    let j35 = mat(
+        kk,
+        &[
+            &["0", "1", "0", "0"],
+            &["0", "0", "1", "0"],
+            &["0", "0", "0", "0"],
+            &["0", "0", "0", "-cr/(m*u)"],
+        ],
+    );
+    assert_eq!(jf.j, j35);
+    // A T = T J as rational functions (independently of the library's own flag)
+    assert_eq!(jf.a.try_mul(&jf.t).unwrap(), jf.t.try_mul(&jf.j).unwrap());
+    assert!(!kk.is_zero(&jf.t.det().unwrap()));
+    // eq. 28: the eigenvectors are multiples of X1 = e1 and X2 = (m u/cr, 0, 1, 0)
+    let t = &jf.t;
+    for i in 1..4 {
+        assert!(kk.is_zero(t.get(i, 0)));
+    }
+    let x2_ratio = kk.div(t.get(0, 3), t.get(2, 3)).unwrap();
+    assert_eq!(x2_ratio, k.parse("m*u/cr").unwrap());
+    assert!(kk.is_zero(t.get(1, 3)) && kk.is_zero(t.get(3, 3)));
+    // eq. 34 (the paper's normalisation) is a valid T for the same J
+    let t34 = mat(
+        kk,
+        &[
+            &["1", "0", "0", "m*u/cr"],
+            &["0", "1/u", "m/cr", "0"],
+            &["0", "0", "m*u/cr", "1"],
+            &["0", "0", "-1/u", "0"],
+        ],
+    );
+    assert_eq!(jf.a.try_mul(&t34).unwrap(), t34.try_mul(&j35).unwrap());
+    // conditions: cr, m, u (nothing else can make the structure break)
+    assert_eq!(jf.conditions_strings(), ["cr", "m", "u"]);
+    let _ = strings(&jf, &jf.t);
+}
+
+#[test]
+fn general_yaw_plane_eq24_26_charpoly_and_discriminant() {
+    let k = RatFuncField::new(&["a", "b", "cf", "cr", "Izz", "m", "u"]).unwrap();
+    let a = mat(
+        &k,
+        &[
+            &["0", "u", "-1", "0"],
+            &["0", "0", "0", "-1"],
+            &["0", "0", "-(cf + cr)/(m*u)", "-(a*cf - b*cr)/(m*u) - u"],
+            &[
+                "0",
+                "0",
+                "-(a*cf - b*cr)/(Izz*u)",
+                "-(a^2*cf + b^2*cr)/(Izz*u)",
+            ],
+        ],
+    );
+    let jf = jordan_params(&a).unwrap();
+    assert!(jf.verified);
+    assert!(!jf.complete, "the nonzero pair is a root pair of a quadratic");
+    let kk = &jf.field;
+    let zero = jf.eigenvalue(&kk.zero()).expect("0");
+    // two zeros (lateral offset, heading) in one 2x2 block
+    assert_eq!(zero.blocks, [2]);
+    let quad = jf.eigenvalues.iter().find(|e| e.degree == 2).unwrap();
+    assert_eq!(quad.blocks, [1]);
+    // the quadratic: s^2 + tr s + det with the textbook coefficients
+    let tr = k
+        .parse("(cf + cr)/(m*u) + (a^2*cf + b^2*cr)/(Izz*u)")
+        .unwrap();
+    let det = k
+        .parse("(cf*cr*(a + b)^2)/(m*Izz*u^2) - (a*cf - b*cr)/Izz")
+        .unwrap();
+    assert_eq!(quad.monic.coeffs(), &[det.clone(), tr.clone(), k.one()][..]);
+    // the understeer/oversteer split: the discriminant tr^2 - 4 det is a condition
+    let disc = k.sub(&k.mul(&tr, &tr), &k.mul(&k.from_i64(4), &det));
+    let want: Vec<_> = exactlti::mpoly::factor(disc.num())
+        .unwrap()
+        .factors
+        .into_iter()
+        .map(|(f, _)| f)
+        .collect();
+    for f in &want {
+        assert!(jf.conditions.contains(f), "discriminant factor missing");
+    }
+}
+
+/// Random matrices with a planted structure: A = S J S^-1 with symbolic S and J; the
+/// result's blocks match J, and at rational points A(p0) T(p0) = T(p0) J(p0) and the
+/// rational Jordan form has the same blocks wherever no condition vanishes.
+#[test]
+fn planted_structures_random_points() {
+    let k = RatFuncField::new(&["p", "q"]).unwrap();
+    let cases: &[(&[&[&str]], &[usize])] = &[
+        (
+            &[&["p", "1", "0"], &["0", "p", "0"], &["0", "0", "q"]],
+            &[2, 1],
+        ),
+        (
+            &[&["p", "1", "0"], &["0", "p", "1"], &["0", "0", "p"]],
+            &[3],
+        ),
+        (
+            &[&["p+q", "0", "0"], &["0", "p+q", "0"], &["0", "0", "p*q"]],
+            &[1, 1, 1],
+        ),
+    ];
+    let s = mat(
+        &k,
+        &[&["1", "p", "0"], &["q", "1", "1"], &["0", "1", "2"]],
+    );
+    let si = s.inverse().unwrap();
+    let mut seed = 12345u64;
+    for (rows, want_blocks) in cases {
+        let j0 = mat(&k, rows);
+        let a = s.try_mul(&j0).unwrap().try_mul(&si).unwrap();
+        let jf = jordan_params(&a).unwrap();
+        assert!(jf.verified && jf.complete);
+        let mut blocks: Vec<usize> = jf
+            .eigenvalues
+            .iter()
+            .flat_map(|e| e.blocks.iter().copied())
+            .collect();
+        blocks.sort_unstable_by(|x, y| y.cmp(x));
+        assert_eq!(&blocks, want_blocks);
+        for _ in 0..4 {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            let p0 = [
+                q(((seed >> 33) % 19) as i64 - 9, 1 + ((seed >> 20) % 3) as i64),
+                q(((seed >> 40) % 17) as i64 - 8, 1),
+            ];
+            if jf.conditions_vanish_at(&p0) {
+                continue;
+            }
+            let (ap, tp, jp) = jf.at(&p0).expect("no pole off the conditions");
+            assert_eq!(ap.try_mul(&tp).unwrap(), tp.try_mul(&jp).unwrap());
+            assert_ne!(tp.det().unwrap(), Rational::from_integer(0.into()));
+            // naive oracle: the rational Jordan form at the point has the same blocks
+            let jq = jordan(&ap).unwrap();
+            let mut bq: Vec<usize> = jq
+                .components
+                .iter()
+                .flat_map(|c| c.blocks.clone())
+                .collect();
+            bq.sort_unstable_by(|x, y| y.cmp(x));
+            assert_eq!(&bq, want_blocks, "at {p0:?}");
+        }
+    }
+    let _ = Q;
+}
+
+#[test]
+fn cubic_factor_blocks_from_ranks() {
+    // companion of x^3 - p twice (a 2-block per root would need a nilpotent coupling):
+    // A = [[C, I], [0, C]] has blocks [2] for each root of x^3 - p
+    let k = RatFuncField::new(&["p"]).unwrap();
+    let c: &[&str] = &["0", "0", "p", "1", "0", "0", "0", "1", "0"];
+    let a = Matrix::from_fn(k.clone(), 6, 6, |i, j| {
+        if i < 3 && j < 3 {
+            k.parse(c[i * 3 + j]).unwrap()
+        } else if i >= 3 && j >= 3 {
+            k.parse(c[(i - 3) * 3 + j - 3]).unwrap()
+        } else if i < 3 && j == i + 3 {
+            k.one()
+        } else {
+            k.zero()
+        }
+    });
+    let jf = jordan_params(&a).unwrap();
+    assert!(jf.verified && !jf.complete);
+    assert_eq!(jf.eigenvalues.len(), 1);
+    let e = &jf.eigenvalues[0];
+    assert_eq!((e.degree, e.algebraic_multiplicity), (3, 2));
+    assert_eq!(e.blocks, [2]);
+    assert_eq!(e.kernel_dims, [3, 6]);
+    // the discriminant of x^3 - p is -27 p^2: the condition p
+    assert!(jf.conditions_strings().contains(&"p".to_string()));
+}
