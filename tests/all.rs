@@ -15,10 +15,10 @@ mod bicycle;
 mod cli;
 #[path = "cli_hardening.rs"]
 mod cli_hardening;
-#[path = "cli_options.rs"]
-mod cli_options;
 #[path = "cli_mpoly.rs"]
 mod cli_mpoly;
+#[path = "cli_options.rs"]
+mod cli_options;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]

@@ -76,7 +76,10 @@ fn linalg_rank_rref_nullspace_take_any_m_by_n_matrix() {
     let (code, out, err) = run(&["linalg", "rref", f, "--format", "json"]);
     assert_eq!(code, 0, "{err}");
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
-    assert_eq!(j["matrix"], serde_json::json!([["1", "2", "3"], ["0", "0", "0"]]));
+    assert_eq!(
+        j["matrix"],
+        serde_json::json!([["1", "2", "3"], ["0", "0", "0"]])
+    );
     // the null space basis: 2 vectors, each with A v = 0
     let (code, out, err) = run(&["linalg", "nullspace", f, "--format", "json"]);
     assert_eq!(code, 0, "{err}");
@@ -158,7 +161,15 @@ fn help_states_units_and_what_file_and_options_mean() {
     assert_eq!(code, 0);
     assert!(out.contains("in Hz"), "{out}");
     assert!(out.contains("System file"), "{out}");
-    for opt in ["--from", "--to", "--points", "--svg", "--csv", "--max-seconds", "--format"] {
+    for opt in [
+        "--from",
+        "--to",
+        "--points",
+        "--svg",
+        "--csv",
+        "--max-seconds",
+        "--format",
+    ] {
         let line = out
             .lines()
             .find(|l| l.trim_start().starts_with(opt))
@@ -192,7 +203,12 @@ fn broken_pipe_is_a_quiet_exit_and_a_full_disk_exits_2() {
         .unwrap();
     drop(child.stdout.take());
     let mut err = String::new();
-    child.stderr.take().unwrap().read_to_string(&mut err).unwrap();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
     let status = child.wait().unwrap();
     assert_eq!(status.code(), Some(0), "{err}");
     assert!(err.is_empty(), "quiet: {err}");
@@ -218,7 +234,10 @@ fn an_improper_descriptor_file_serves_commands_that_need_only_a() {
     assert_eq!(code, 0, "{err}");
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(j["det"], "-3");
-    assert!(j["note"].as_str().unwrap().contains("only the matrix A"), "{j}");
+    assert!(
+        j["note"].as_str().unwrap().contains("only the matrix A"),
+        "{j}"
+    );
     let (code, out, err) = run(&["jordan", f, "--format", "json"]);
     assert_eq!(code, 0, "{err}");
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
@@ -252,9 +271,7 @@ fn freqresp_refuses_absurd_output_sizes_and_still_answers_moderate_ones() {
     let f = temp_file("big20.json", &sys.to_string());
     let f = f.to_str().unwrap();
     let t = std::time::Instant::now();
-    let err = assert_one_line_exit_2(&[
-        "freqresp", f, "--points", "100000", "--format", "json",
-    ]);
+    let err = assert_one_line_exit_2(&["freqresp", f, "--points", "100000", "--format", "json"]);
     assert!(err.contains("at most") && err.contains("--points"), "{err}");
     assert!(t.elapsed().as_secs() < 30, "refused quickly");
     // the largest count it names is accepted
@@ -268,7 +285,8 @@ fn freqresp_refuses_absurd_output_sizes_and_still_answers_moderate_ones() {
 #[test]
 fn user_strings_are_escaped_in_every_format() {
     let name = "evil\n\\end{document}\n== fake section ==\u{1b}[31m";
-    let sys = serde_json::json!({"name": name, "A": [[0, 1], [-2, -3]], "B": [[0], [1]], "C": [[1, 0]]});
+    let sys =
+        serde_json::json!({"name": name, "A": [[0, 1], [-2, -3]], "B": [[0], [1]], "C": [[1, 0]]});
     let f = temp_file("evil.json", &sys.to_string());
     let f = f.to_str().unwrap();
     // JSON: the name round-trips exactly
@@ -279,11 +297,20 @@ fn user_strings_are_escaped_in_every_format() {
     // text: control characters shown escaped, no forged line
     let (code, out, _) = run(&["analyze", f]);
     assert_eq!(code, 0);
-    assert!(out.contains("evil\\n\\end{document}\\n== fake section ==\\u{1b}[31m"), "{out}");
-    assert!(!out.lines().any(|l| l.starts_with("== fake section")), "{out}");
+    assert!(
+        out.contains("evil\\n\\end{document}\\n== fake section ==\\u{1b}[31m"),
+        "{out}"
+    );
+    assert!(
+        !out.lines().any(|l| l.starts_with("== fake section")),
+        "{out}"
+    );
     assert!(!out.contains('\u{1b}'));
     // LaTeX: no line of the name escapes its comment or its text
-    for args in [vec!["analyze", f, "--format", "latex"], vec!["analyze", f, "--format", "latex", "--standalone"]] {
+    for args in [
+        vec!["analyze", f, "--format", "latex"],
+        vec!["analyze", f, "--format", "latex", "--standalone"],
+    ] {
         let (code, out, _) = run(&args);
         assert_eq!(code, 0);
         // the only line that ends the document is the standalone wrapper's last line
@@ -293,7 +320,11 @@ fn user_strings_are_escaped_in_every_format() {
             .collect();
         assert_eq!(ends.len(), args.len() - 4, "{out}");
         // the comment holding the name is one line
-        assert!(out.lines().any(|l| l.starts_with("% exactlti: exactlti analysis: evil\\n")), "{out}");
+        assert!(
+            out.lines()
+                .any(|l| l.starts_with("% exactlti: exactlti analysis: evil\\n")),
+            "{out}"
+        );
         assert!(!out.lines().any(|l| l.starts_with("== fake")), "{out}");
         assert!(!out.contains('\u{1b}'));
     }

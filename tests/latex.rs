@@ -48,19 +48,33 @@ fn body(t: &str) -> String {
 #[test]
 fn every_result_is_typeset_as_math() {
     // Jordan entries of the sliding masses: sqrt(2), the field generators b7, r7, i
-    let t = body(&latex(&["jordan", "--real"], "data/sliding-masses.json", false));
+    let t = body(&latex(
+        &["jordan", "--real"],
+        "data/sliding-masses.json",
+        false,
+    ));
     assert!(t.contains("\\sqrt{2}") && t.contains("b_{7}"), "{t}");
     assert!(t.contains("\\text{root of } x^{4} - 4 x^{2} + 1"), "{t}");
     assert!(!t.contains("sqrt("), "plain-text entries left:\n{t}");
-    assert!(t.contains("\\left[\\begin{array}{*{20}{c}}"), "20 columns: array");
+    assert!(
+        t.contains("\\left[\\begin{array}{*{20}{c}}"),
+        "20 columns: array"
+    );
     let t = body(&latex(&["jordan"], "data/sliding-masses.json", false));
-    assert!(t.contains("\\sqrt{3} \\mathrm{i}") || t.contains("\\mathrm{i}"), "{t}");
+    assert!(
+        t.contains("\\sqrt{3} \\mathrm{i}") || t.contains("\\mathrm{i}"),
+        "{t}"
+    );
     // transfer function, eigenvalues, zeros, modes: in the body, as math
     let t = body(&latex(&["tf"], "data/sliding-masses.json", false));
     assert!(t.contains("\\frac{"), "transfer function typeset:\n{t}");
     let t = body(&latex(&["modes"], "data/sliding-masses.json", false));
     assert!(t.contains("frequency hz") && t.contains("$"), "{t}");
-    let t = body(&latex(&["zeros"], "data/yaw-plane-single-wheel.json", false));
+    let t = body(&latex(
+        &["zeros"],
+        "data/yaw-plane-single-wheel.json",
+        false,
+    ));
     assert!(t.contains("invariant zeros"), "{t}");
     for (args, file) in CASES {
         let t = body(&latex(args, file, false));
@@ -114,7 +128,8 @@ fn the_seeds_examples_compile_with_pdflatex() {
     let dir = std::env::temp_dir().join(format!("exactlti-latex-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     // every fragment \input into one plain amsmath document
-    let mut doc = String::from("\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n");
+    let mut doc =
+        String::from("\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n");
     for (i, (args, file)) in CASES.iter().enumerate() {
         std::fs::write(dir.join(format!("frag{i}.tex")), latex(args, file, false)).unwrap();
         doc.push_str(&format!("\\input{{frag{i}.tex}}\n"));
@@ -137,7 +152,11 @@ fn the_seeds_examples_compile_with_pdflatex() {
     .iter()
     .enumerate()
     {
-        std::fs::write(dir.join(format!("standalone{k}.tex")), latex(args, file, true)).unwrap();
+        std::fs::write(
+            dir.join(format!("standalone{k}.tex")),
+            latex(args, file, true),
+        )
+        .unwrap();
         compile(&dir, &format!("standalone{k}.tex"))
             .unwrap_or_else(|e| panic!("{args:?} {file} --standalone does not compile:\n{e}"));
     }

@@ -25,7 +25,9 @@ pub(super) fn fallback(cmd: &Command, path: &Path, err: InputError) -> Result<Ou
     let what = if linalg { "linalg" } else { "jordan" };
     let note = if read_system_file(path).is_ok() {
         // the file reads as a system but is not one in standard form (improper, singular)
-        format!("{what} uses only the matrix A as given: the file's system is refused by the other commands ({reason})")
+        format!(
+            "{what} uses only the matrix A as given: the file's system is refused by the other commands ({reason})"
+        )
     } else if linalg && entries.nrows != entries.ncols {
         format!(
             "linalg reads A as a {}x{} matrix (not a system)",

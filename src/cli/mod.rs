@@ -421,8 +421,7 @@ pub fn parse_error_line(e: &clap::Error) -> Option<String> {
     let text = e.render().to_string();
     let mut what = Vec::new();
     let mut usage = None;
-    let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
-    while let Some(l) = lines.next() {
+    for l in text.lines().map(str::trim).filter(|l| !l.is_empty()) {
         if let Some(u) = l.strip_prefix("Usage:") {
             usage = Some(u.trim().to_string());
         } else if l.starts_with("For more information") {

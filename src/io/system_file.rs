@@ -576,8 +576,12 @@ pub fn read_matrix_key(
     let shown = path.display().to_string();
     let text = std::fs::read_to_string(path)
         .map_err(|e| InputError::file(&shown, format!("cannot read the file: {e}")))?;
-    let toml = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("toml"))
-        || !(path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"))
+    let toml = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+        || !(path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("json"))
             || text.trim_start().starts_with('{'));
     let raw = if toml {
         raw::from_toml_text(&text, &shown)?

@@ -413,7 +413,10 @@ mod tests {
         assert_eq!(m("sqrt(2)*i"), "\\sqrt{2} \\mathrm{i}");
         assert_eq!(m("-cr/(m*u)"), "-\\frac{\\mathit{cr}}{m u}");
         assert_eq!(m("2*b7^3 - 7*b7"), "2 b_{7}^{3} - 7 b_{7}");
-        assert_eq!(m("(s^2 + 5*s + 7)/(s^2 + 5*s + 6)"), "\\frac{s^{2} + 5 s + 7}{s^{2} + 5 s + 6}");
+        assert_eq!(
+            m("(s^2 + 5*s + 7)/(s^2 + 5*s + 6)"),
+            "\\frac{s^{2} + 5 s + 7}{s^{2} + 5 s + 6}"
+        );
         assert_eq!(
             m("b7 = root of x^4 - 4*x^2 + 1 near 1.9318516526"),
             "b_{7} = \\text{root of } x^{4} - 4 x^{2} + 1 \\text{ near } 1.9318516526"
@@ -422,7 +425,10 @@ mod tests {
         assert_eq!(m("(-1)^2"), "\\left(-1\\right)^{2}");
         assert_eq!(m("2*3"), "2 \\cdot 3");
         assert_eq!(m("-(a + b)"), "-\\left(a + b\\right)");
-        assert_eq!(m("QQ(cr, m, u)"), "\\mathbf{Q}\\left(\\mathit{cr}, m, u\\right)");
+        assert_eq!(
+            m("QQ(cr, m, u)"),
+            "\\mathbf{Q}\\left(\\mathit{cr}, m, u\\right)"
+        );
         assert_eq!(m("sigma1"), "\\sigma_{1}");
         assert!(to_math("p = 2 > n/2 = 1").is_none());
         assert!(to_math("a $ b").is_none());

@@ -38,7 +38,11 @@ pub fn fragment(r: &Report) -> String {
     let mut s = String::new();
     if let Some(t) = &r.title {
         let _ = writeln!(s, "% exactlti: {}", latex_comment(t));
-        let _ = writeln!(s, "\\par\\medskip\\noindent\\textbf{{{}}}\\par", latex_text(t));
+        let _ = writeln!(
+            s,
+            "\\par\\medskip\\noindent\\textbf{{{}}}\\par",
+            latex_text(t)
+        );
     }
     items(&mut s, r, 0);
     s
@@ -348,10 +352,16 @@ mod tests {
             .str("name", "50% \\input{x}\nnext")
             .list("xs", (0..100).map(Value::Int).collect());
         let t = fragment(&r);
-        assert!(t.contains("\\begin{bmatrix}\n  1 & \\frac{1}{2} \\\\"), "{t}");
+        assert!(
+            t.contains("\\begin{bmatrix}\n  1 & \\frac{1}{2} \\\\"),
+            "{t}"
+        );
         assert!(t.contains("\\begin{array}{*{12}{c}}"), "{t}");
         assert!(t.contains("\\item[$T_{R}$]"), "{t}");
-        assert!(t.contains("50\\% \\textbackslash{}input\\{x\\}\\textbackslash{}nnext"), "{t}");
+        assert!(
+            t.contains("50\\% \\textbackslash{}input\\{x\\}\\textbackslash{}nnext"),
+            "{t}"
+        );
         assert!(t.contains("and 36 more"), "{t}");
         // no user text reaches the start of a line after a comment
         for line in t.lines() {
