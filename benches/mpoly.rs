@@ -67,6 +67,27 @@ fn charpoly_in_x(cs: &[MPoly], np: usize) -> MPoly {
     acc
 }
 
+/// The staged gcd's parts alone: heuristic, Brown's modular, subresultant (ms).
+fn gcd_variants(f: &MPoly, g: &MPoly) -> String {
+    let (cf, pf) = f.content_primitive();
+    let (cg, pg) = g.content_primitive();
+    let want = gcd(f, g);
+    let c = exactlti::mpoly::gcd::integer_gcd(&cf, &cg);
+    let heu = exactlti::mpoly::gcd::gcd_heuristic(&pf, &pg);
+    let th = median_ms(|| {
+        black_box(exactlti::mpoly::gcd::gcd_heuristic(&pf, &pg));
+    });
+    let br = exactlti::mpoly::brown::gcd_brown(&pf, &pg);
+    assert_eq!(br.as_ref().map(|h| h.scale(&c)), Some(want.clone()));
+    let tb = median_ms(|| {
+        black_box(exactlti::mpoly::brown::gcd_brown(&pf, &pg));
+    });
+    format!(
+        "heuristic {th:.3} ms{}, Brown {tb:.3} ms",
+        if heu.is_some() { "" } else { " (failed)" }
+    )
+}
+
 fn main() {
     let mut cases = String::new();
     let mut rng = SplitMix(2026);
@@ -115,6 +136,7 @@ fn main() {
         });
         let gname = format!("gcd({name} * f, {name} * g)");
         println!("{gname}: {ms:.3} ms");
+        println!("  ({})", gcd_variants(&f, &g));
         assert_eq!(gcd(&f, &g), cp.abs_lc());
         writeln!(
             cases,
@@ -177,6 +199,7 @@ fn main() {
         black_box(gcd(&f, &g));
     });
     println!("{name}: {ms:.3} ms");
+    println!("  ({})", gcd_variants(&f, &g));
     writeln!(
         cases,
         "gcd\t{name}\ta,b,c\t{}\t{}",

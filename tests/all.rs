@@ -53,10 +53,14 @@ mod matrix_modular;
 mod mechanical;
 #[path = "mpoly.rs"]
 mod mpoly;
+#[path = "mpoly_gcd.rs"]
+mod mpoly_gcd;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]
 mod pencil_descriptor;
+#[path = "pencil_published.rs"]
+mod pencil_published;
 #[path = "poly_factor.rs"]
 mod poly_factor;
 #[path = "realization.rs"]
@@ -71,6 +75,8 @@ mod scb;
 mod study;
 #[path = "symbolic.rs"]
 mod symbolic;
+#[path = "symbolic_scb.rs"]
+mod symbolic_scb;
 #[path = "symjordan.rs"]
 mod symjordan;
 

@@ -119,7 +119,10 @@ fn general_yaw_plane_eq24_26_charpoly_and_discriminant() {
     );
     let jf = jordan_params(&a).unwrap();
     assert!(jf.verified);
-    assert!(!jf.complete, "the nonzero pair is a root pair of a quadratic");
+    assert!(
+        !jf.complete,
+        "the nonzero pair is a root pair of a quadratic"
+    );
     let kk = &jf.field;
     let zero = jf.eigenvalue(&kk.zero()).expect("0");
     // two zeros (lateral offset, heading) in one 2x2 block
@@ -167,10 +170,7 @@ fn planted_structures_random_points() {
             &[1, 1, 1],
         ),
     ];
-    let s = mat(
-        &k,
-        &[&["1", "p", "0"], &["q", "1", "1"], &["0", "1", "2"]],
-    );
+    let s = mat(&k, &[&["1", "p", "0"], &["q", "1", "1"], &["0", "1", "2"]]);
     let si = s.inverse().unwrap();
     let mut seed = 12345u64;
     for (rows, want_blocks) in cases {
@@ -186,9 +186,14 @@ fn planted_structures_random_points() {
         blocks.sort_unstable_by(|x, y| y.cmp(x));
         assert_eq!(&blocks, want_blocks);
         for _ in 0..4 {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             let p0 = [
-                q(((seed >> 33) % 19) as i64 - 9, 1 + ((seed >> 20) % 3) as i64),
+                q(
+                    ((seed >> 33) % 19) as i64 - 9,
+                    1 + ((seed >> 20) % 3) as i64,
+                ),
                 q(((seed >> 40) % 17) as i64 - 8, 1),
             ];
             if jf.conditions_vanish_at(&p0) {
@@ -237,4 +242,207 @@ fn cubic_factor_blocks_from_ranks() {
     assert_eq!(e.kernel_dims, [3, 6]);
     // the discriminant of x^3 - p is -27 p^2: the condition p
     assert!(jf.conditions_strings().contains(&"p".to_string()));
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn cli_jordan_over_qp_and_at() {
+    let yaw = "data/yaw-plane-single-wheel.json";
+    let (code, out, err) = run(&["jordan", yaw, "--symbolic", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["field"], "QQ(cr, m, u)");
+    assert_eq!(j["verified"], true);
+    assert_eq!(j["eigenvalues"][0]["value"], "0");
+    assert_eq!(j["eigenvalues"][0]["blocks"], serde_json::json!([3]));
+    assert_eq!(j["eigenvalues"][1]["value"], "-cr/(m*u)");
+    assert_eq!(j["J"][3][3], "-cr/(m*u)");
+    assert_eq!(j["J"][0][1], "1");
+    assert_eq!(j["conditions"], serde_json::json!(["cr", "m", "u"]));
+    assert!(!out.contains("approx"));
+    // partly symbolic: cr and u valued, m a symbol
+    let (code, out, _) = run(&["jordan", yaw, "--symbolic", "m", "--format", "json"]);
+    assert_eq!(code, 0);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["eigenvalues"][1]["value"], "-4000/m");
+    // --at: every symbol valued -> the ordinary rational path
+    let (code, out, _) = run(&[
+        "jordan",
+        yaw,
+        "--symbolic",
+        "--at",
+        "m=1500, u=20, cr=80000",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["verified"], true);
+    assert!(out.contains("-8/3"));
+    // --real over QQ(p) is refused with one line
+    let (code, _, err) = run(&["jordan", yaw, "--symbolic", "--real"]);
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+}
+
+/// The mechanical-normal-form paper, App. B (eq. 18-19) over QQ(w1, w2).
+fn app_b() -> (RatFuncField, [Matrix<RatFuncField>; 4]) {
+    let k = RatFuncField::new(&["w1", "w2"]).unwrap();
+    let a = mat(
+        &k,
+        &[
+            &["0", "0", "1", "0"],
+            &["0", "0", "0", "1"],
+            &["-w1^2", "0", "0", "0"],
+            &["0", "-w2^2", "0", "0"],
+        ],
+    );
+    let b = mat(&k, &[&["0"], &["0"], &["0"], &["1"]]);
+    let c = mat(&k, &[&["1", "0", "0", "0"]]);
+    let d = mat(&k, &[&["0"]]);
+    (k, [a, b, c, d])
+}
+
+#[test]
+fn mnf_appendix_b_in_symbols() {
+    use exactlti::structure::mechanical::{
+        DEFAULT_MAX_CANDIDATES, mechanical_normal_form_in, transform::transformation_from_x,
+    };
+    let (k, [a, b, c, d]) = app_b();
+    // eq. 19: X = [e1, e3] gives T = [X, A^T X]^T with a zero row: singular for all w1, w2
+    let x = mat(&k, &[&["1", "0"], &["0", "0"], &["0", "1"], &["0", "0"]]);
+    let t19 = transformation_from_x(&a, &x).unwrap();
+    assert!(k.is_zero(&t19.det().unwrap()));
+    // the paper prints [X, A^T X] (eq. 19); transformation_from_x returns its transpose
+    let eq19 = mat(
+        &k,
+        &[
+            &["1", "0", "0", "-w1^2"],
+            &["0", "0", "0", "0"],
+            &["0", "1", "1", "0"],
+            &["0", "0", "0", "0"],
+        ],
+    );
+    assert_eq!(t19.transpose(), eq19);
+    // X = [e1, e2] gives T = I
+    let x = mat(&k, &[&["1", "0"], &["0", "1"], &["0", "0"], &["0", "0"]]);
+    assert!(transformation_from_x(&a, &x).unwrap().is_identity());
+    // the normal form in symbols: exists, verified as rational functions, same charpoly
+    let m = mechanical_normal_form_in(None, &a, &b, &c, &d, DEFAULT_MAX_CANDIDATES).unwrap();
+    assert!(m.exists && m.verified);
+    let f = m.form.unwrap();
+    assert_eq!(
+        f.a_tilde.charpoly().unwrap(),
+        a.charpoly().unwrap(),
+        "similar matrices"
+    );
+    // naive oracle: at w1 = 2, w2 = 3 the rational normal form exists too
+    let at = |m: &Matrix<RatFuncField>| {
+        Matrix::from_vec(
+            Q,
+            m.nrows(),
+            m.ncols(),
+            m.as_slice()
+                .iter()
+                .map(|x| k.eval(x, &[q(2, 1), q(3, 1)]).unwrap())
+                .collect(),
+        )
+    };
+    let r =
+        exactlti::structure::mechanical::mechanical_normal_form(&at(&a), &at(&b), &at(&c), &at(&d))
+            .unwrap();
+    assert!(r.exists && r.verified);
+    // CLI
+    let (code, out, err) = run(&["mnf", "tests/data/mnf_appendix_b.json", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["field"], "QQ(w1, w2)");
+    assert_eq!(j["exists"], true);
+    assert_eq!(j["verified"], true);
+    assert!(j["conditions"].is_array() && j["existence_checks"].is_array());
+    assert!(!out.contains("approx"));
+}
+
+/// The minimal-realization paper's compaction (sec. 3.3, eq. 34-36) in symbols: eq. 36 holds
+/// only where det P = 0 (co-linear rows of B or columns of C); the general exact rule
+/// (trace conditions) reproduces every Markov parameter.
+#[test]
+fn compaction_rule_eq34_36() {
+    use exactlti::matrix::params::rref_params;
+    let k = RatFuncField::new(&[
+        "a11", "a12", "a22", "b1", "b2", "b3", "b4", "c1", "c2", "c3", "c4",
+    ])
+    .unwrap();
+    let mm = mat(&k, &[&["a11", "a12"], &["-a12", "a22"]]);
+    let a = Matrix::block_diag(k.clone(), &[mm.clone(), mm.clone()]);
+    let b = mat(&k, &[&["b1"], &["b2"], &["b3"], &["b4"]]);
+    let c = mat(&k, &[&["c1", "c2", "c3", "c4"]]);
+    let jf = jordan_params(&a).unwrap();
+    assert!(jf.verified);
+    assert_eq!(jf.eigenvalues.len(), 1);
+    assert_eq!(jf.eigenvalues[0].blocks, [1, 1]);
+    let markov = |a: &Matrix<RatFuncField>, b: &Matrix<RatFuncField>, c: &Matrix<RatFuncField>| {
+        let mut v = b.clone();
+        (0..6)
+            .map(|_| {
+                let x = c.try_mul(&v).unwrap().get(0, 0).clone();
+                v = a.try_mul(&v).unwrap();
+                x
+            })
+            .collect::<Vec<_>>()
+    };
+    let mut ctrb = b.clone();
+    let mut v = b.clone();
+    for _ in 1..4 {
+        v = a.try_mul(&v).unwrap();
+        ctrb = ctrb.hstack(&v).unwrap();
+    }
+    assert_eq!(rref_params(&ctrb).1.len(), 2);
+    let p = b
+        .submatrix(0, 2, 0, 1)
+        .try_mul(&c.submatrix(0, 1, 0, 2))
+        .unwrap()
+        .try_add(
+            &b.submatrix(2, 4, 0, 1)
+                .try_mul(&c.submatrix(0, 1, 2, 4))
+                .unwrap(),
+        )
+        .unwrap();
+    let det = p.det().unwrap();
+    let want = k.parse("(b1*b4 - b2*b3)*(c1*c4 - c2*c3)").unwrap();
+    assert!(
+        det == want || det == k.neg(&want),
+        "det P = {}",
+        k.fmt_elem(&det)
+    );
+    let tr = |m: &Matrix<RatFuncField>| k.add(m.get(0, 0), m.get(1, 1));
+    let tp = tr(&p);
+    let c6 = k
+        .div(
+            &k.sub(
+                &k.mul(&k.parse("a11").unwrap(), &tp),
+                &tr(&mm.try_mul(&p).unwrap()),
+            ),
+            &k.parse("a12").unwrap(),
+        )
+        .unwrap();
+    let c56 = Matrix::from_vec(k.clone(), 1, 2, vec![tp, c6]);
+    let b56 = mat(&k, &[&["1"], &["0"]]);
+    assert_eq!(markov(&a, &b, &c), markov(&mm, &b56, &c56));
+    // a wrong compaction (just the first copy) differs
+    assert_ne!(
+        markov(&a, &b, &c),
+        markov(&mm, &b.submatrix(0, 2, 0, 1), &c.submatrix(0, 1, 0, 2))
+    );
 }

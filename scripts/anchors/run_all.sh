@@ -12,7 +12,7 @@ if [ ! -x .venv-anchors/bin/python ]; then
 fi
 .venv-anchors/bin/pip install -q sympy python-flint numpy scipy control slycot
 cargo build --release --benches -q
-for s in factor matrix jordan realization float_minreal pencil mpoly study everyday; do
+for s in factor matrix jordan realization float_minreal pencil mpoly study everyday symbolic symbolic_jordan; do
   echo "=== $s ==="
   python3 "scripts/anchors/$s.py" 2>&1 | tee "$out/$s.txt"
 done

@@ -4,7 +4,9 @@
 //! [`FileCommand::visit`]; the file's field is decided at one point,
 //! [`crate::io::LoadedSystem::run`].
 
-use super::{Command, Failure, LinalgOp, MethodArg, Outcome};
+use super::common::{linalg_report, with_path};
+use super::symbolic::Handled;
+use super::{Command, Failure, MethodArg, Outcome};
 use crate::error::Error;
 use crate::field::{Field, Q};
 use crate::io::symbolic::SymbolicOptions;
@@ -30,8 +32,13 @@ pub fn execute_with(
 ) -> Result<Outcome, Failure> {
     let opts =
         SymbolicOptions::from_args(symbolic, at).map_err(|message| Failure { code: 2, message })?;
-    if let Some(out) = super::symbolic_cmds::execute(cmd, &opts)? {
-        return Ok(out);
+    if let Command::Bifurcations { file, of, depth } = cmd {
+        return super::bifurcations::run(file, *of, *depth, &opts);
+    }
+    match super::symbolic::execute(cmd, &opts)? {
+        Some(Handled::Done(out)) => return Ok(out),
+        Some(Handled::Valued(l, path)) => return l.run(FileCommand { cmd, path: &path }),
+        None => {}
     }
     if let Some(path) = super::pencil_cmds::handles(cmd) {
         return super::pencil_cmds::execute(cmd, path);
@@ -41,6 +48,7 @@ pub fn execute_with(
         | Command::Ctrb { file }
         | Command::Obsv { file }
         | Command::Tf { file } => super::pencil_cmds::execute(cmd, file),
+        Command::Bifurcations { .. } => unreachable!("dispatched above"),
         Command::Poly { op } => poly(op).map(Outcome::plain),
         Command::Sweep {
             file,
@@ -100,9 +108,9 @@ pub fn execute_with(
 }
 
 /// A command on one system file.
-pub(super) struct FileCommand<'a> {
-    pub(super) cmd: &'a Command,
-    pub(super) path: &'a Path,
+struct FileCommand<'a> {
+    cmd: &'a Command,
+    path: &'a Path,
 }
 
 impl SystemVisitor for FileCommand<'_> {
@@ -175,7 +183,8 @@ impl SystemVisitor for FileCommand<'_> {
             | Command::Pencil { .. }
             | Command::Ctrb { .. }
             | Command::Obsv { .. }
-            | Command::Tf { .. } => {
+            | Command::Tf { .. }
+            | Command::Bifurcations { .. } => {
                 unreachable!("dispatched in execute")
             }
         }
@@ -232,54 +241,6 @@ fn jordan_any<K: Field + 'static>(a: &Matrix<K>) -> crate::Result<crate::jordan:
         "Jordan form over {}",
         a.field()
     )))
-}
-
-pub(super) fn with_path(path: &Path, e: Error) -> Failure {
-    let f: Failure = e.into();
-    Failure {
-        code: f.code,
-        message: format!("{}: {}", path.display(), f.message),
-    }
-}
-
-pub(super) fn linalg_report<K: Field>(
-    op: LinalgOp,
-    a: &Matrix<K>,
-    path: &Path,
-) -> Result<Report, Failure> {
-    let e = |err| with_path(path, err);
-    let r = Report::titled(format!("linalg {op:?}").to_lowercase());
-    Ok(match op {
-        LinalgOp::Rank => r.int("rank", a.rank()),
-        LinalgOp::Det => r.str("det", a.field().fmt_elem(&a.det().map_err(e)?)),
-        LinalgOp::Charpoly => r.str("charpoly", a.charpoly().map_err(e)?.to_string()),
-        LinalgOp::Minpoly => r.str("minpoly", a.minpoly().map_err(e)?.to_string()),
-        LinalgOp::Inverse => r.matrix("matrix", &a.inverse().map_err(e)?),
-        LinalgOp::Rref => {
-            let (m, piv) = a.rref();
-            r.matrix("matrix", &m)
-                .with(
-                    "pivots",
-                    Value::List(piv.iter().map(|&p| Value::Int(p as i64 + 1)).collect()),
-                )
-                .int("rank", piv.len())
-        }
-        LinalgOp::Nullspace => {
-            let n = a.nullspace();
-            let basis = (0..n.ncols())
-                .map(|j| {
-                    Value::List(
-                        n.col(j)
-                            .iter()
-                            .map(|x| Value::Str(a.field().fmt_elem(x)))
-                            .collect(),
-                    )
-                })
-                .collect();
-            r.with("basis", Value::List(basis))
-                .int("nullity", n.ncols())
-        }
-    })
 }
 
 fn minreal<K: Field + 'static>(

@@ -8,12 +8,15 @@
 
 mod a_only;
 mod analyze;
+mod bifurcations;
 mod commands;
+mod common;
 mod critical;
 mod float_cmds;
 mod pencil_cmds;
 mod sweep;
-mod symbolic_cmds;
+mod symbolic;
+mod symbolic_jordan;
 
 /// One command run in-process (no output, no time bound): the report and its status.
 pub use commands::execute;
@@ -279,6 +282,18 @@ pub enum Command {
     Analyze {
         /// System file (JSON or TOML); without it, the built-in sliding-mass example.
         file: Option<PathBuf>,
+    },
+    /// Structural bifurcations of a symbolic system: the generic result, then the result
+    /// where each condition vanishes (solved for a parameter when linear in it).
+    Bifurcations {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+        /// The structure explored.
+        #[arg(long = "of", value_enum, default_value_t = bifurcations::Of::Scb)]
+        of: bifurcations::Of,
+        /// Substitutions along one path.
+        #[arg(long, default_value_t = 2)]
+        depth: usize,
     },
 }
 

@@ -2,7 +2,7 @@
 //! and `zeros` of a file with `E` (contract, second wave). Load with
 //! [`crate::io::load_descriptor::load_descriptor_path`], compute, report.
 
-use super::commands::with_path;
+use super::common::with_path;
 use super::{Command, Failure, Outcome};
 use crate::field::{Field, Q};
 use crate::io::load_descriptor::{DescriptorVisitor, LoadedDescriptor, load_descriptor_path};

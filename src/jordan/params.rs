@@ -413,6 +413,86 @@ impl ParamJordanForm {
     }
 }
 
+/// The free response $x(t) = e^{At} x_0$ in closed form over $\mathbb{Q}(p)$:
+/// $x(t) = \sum_\theta e^{\theta t} \sum_k t^k g_{\theta,k}$ with
+/// $g_{\theta,k} = T_\theta N_\theta^k c_\theta / k!$, $c = T^{-1} x_0$ ($N_\theta$ the
+/// nilpotent part of $J_\theta$).
+#[derive(Clone, Debug)]
+pub struct ParamResponse {
+    /// Per eigenvalue in $\mathbb{Q}(p)$: its value and $g_{\theta,0}, g_{\theta,1}, \dots$.
+    pub terms: Vec<(RatFunc, Vec<Vec<RatFunc>>)>,
+    /// $\sum_\theta g_{\theta,0} = x_0$ and $A g_{\theta,k} = \theta g_{\theta,k} +
+    /// (k+1) g_{\theta,k+1}$ (i.e. $\dot x = A x$) hold as rational functions.
+    pub verified: bool,
+}
+
+impl ParamJordanForm {
+    /// The closed-form free response from `x0` (entries in [`ParamJordanForm::field`]);
+    /// `None` when not every eigenvalue lies in $\mathbb{Q}(p)$ or the sizes differ.
+    ///
+    /// # Errors
+    /// `Singular` if $T$ is singular (not for a verified form).
+    pub fn free_response(&self, x0: &[RatFunc]) -> Result<Option<ParamResponse>> {
+        let n = self.n();
+        if !self.complete || x0.len() != n {
+            return Ok(None);
+        }
+        let k = &self.field;
+        let c = self
+            .t
+            .inverse()?
+            .try_mul(&Matrix::column(k.clone(), x0.to_vec()))?;
+        let mut terms = vec![];
+        let mut sum0 = vec![k.zero(); n];
+        let mut verified = true;
+        for e in &self.eigenvalues {
+            let theta = e.value.clone().expect("complete");
+            let mut gs: Vec<Vec<RatFunc>> = vec![];
+            let mut off = e.offset;
+            for &b in &e.blocks {
+                // block columns off..off+b: chain v_1..v_b, coordinates c_off..c_{off+b-1};
+                // e^{Jt} c on the block: coordinate i gets sum_k t^k/k! c_{i+k}
+                for kk in 0..b {
+                    if gs.len() <= kk {
+                        gs.push(vec![k.zero(); n]);
+                    }
+                    let fact = k.from_rational(&crate::field::Rational::from_integer(
+                        (1..=kk as u64).product::<u64>().into(),
+                    ));
+                    for i in 0..b - kk {
+                        let coef = k
+                            .div_unrecorded(c.get(off + i + kk, 0), &fact)
+                            .expect("k! > 0");
+                        for r in 0..n {
+                            let v = k.add(&gs[kk][r], &k.mul(self.t.get(r, off + i), &coef));
+                            gs[kk][r] = v;
+                        }
+                    }
+                }
+                off += b;
+            }
+            for (r, s) in sum0.iter_mut().enumerate() {
+                if let Some(g0) = gs.first() {
+                    *s = k.add(s, &g0[r]);
+                }
+            }
+            for kk in 0..gs.len() {
+                let ag = self.a.try_mul(&Matrix::column(k.clone(), gs[kk].clone()))?;
+                for r in 0..n {
+                    let mut want = k.mul(&theta, &gs[kk][r]);
+                    if let Some(next) = gs.get(kk + 1) {
+                        want = k.add(&want, &k.mul(&k.from_i64(kk as i64 + 1), &next[r]));
+                    }
+                    verified &= ag.get(r, 0) == &want;
+                }
+            }
+            terms.push((theta, gs));
+        }
+        verified &= sum0.as_slice() == x0;
+        Ok(Some(ParamResponse { terms, verified }))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

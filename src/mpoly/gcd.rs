@@ -13,7 +13,11 @@
 //!    evaluation to huge integers (measured: 4x faster on the bench's charpoly gcds; a
 //!    univariate multi-modular gcd was slower there, as the gcd of the evaluated
 //!    polynomials has coefficients of thousands of bits);
-//! 3. [`gcd_subresultant`]: content and primitive part in a main variable, subresultant PRS
+//! 3. [`super::brown::gcd_brown`]: Brown's dense modular gcd (word primes, evaluation and
+//!    Newton interpolation per variable, CRT), verified by exact division; measured slower
+//!    than the heuristic on the bench's cases (`benches/mpoly.rs` prints both), so it comes
+//!    second, where the heuristic gives up;
+//! 4. [`gcd_subresultant`]: content and primitive part in a main variable, subresultant PRS
 //!    with polynomial coefficients (always succeeds).
 
 use super::MPoly;
@@ -78,6 +82,9 @@ fn primitive_gcd(f: &MPoly, g: &MPoly) -> MPoly {
         }
     }
     if let Some(h) = gcd_heuristic(f, g) {
+        return h;
+    }
+    if let Some(h) = super::brown::gcd_brown(f, g) {
         return h;
     }
     gcd_subresultant(f, g)

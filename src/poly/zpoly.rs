@@ -17,6 +17,8 @@
 //!
 //! `Display` writes `x^4 + 4*x^2 + 1`; [`ZPoly::display_with`] uses another variable name.
 
+use super::Poly;
+use crate::field::Q;
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
@@ -480,6 +482,18 @@ pub(crate) fn coprime_mod_some_prime(f: &ZPoly, g: &ZPoly) -> bool {
         }
     }
     false
+}
+
+impl ZPoly {
+    /// The primitive integer polynomial with positive leading coefficient proportional to
+    /// `p` (zero for zero).
+    pub fn from_poly_q(p: &Poly<Q>) -> ZPoly {
+        ZPoly::new(super::zslice::from_poly_q(p))
+    }
+    /// $f / \operatorname{lc}(f)$ over $\mathbb{Q}$ (zero stays zero).
+    pub fn to_monic_q(&self) -> Poly<Q> {
+        super::zslice::to_monic_q(self.coeffs())
+    }
 }
 
 #[cfg(test)]

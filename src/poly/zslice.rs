@@ -4,7 +4,11 @@
 //! on bare coefficient vectors to avoid re-normalizing after every Taylor shift; these are
 //! the same integer polynomials as [`ZPoly`] (whose [`ZPoly::coeffs`] is such a slice), only
 //! without the "no trailing zero" invariant. [`ZPoly`]'s own ring operations call into this
-//! module where they coincide.
+//! module where they coincide (this file does not depend on `zpoly`, so the two form no
+//! cycle).
+//!
+//! [`ZPoly`]: super::zpoly::ZPoly
+//! [`ZPoly::coeffs`]: super::zpoly::ZPoly::coeffs
 //!
 //! | function | computes |
 //! |---|---|
@@ -19,7 +23,6 @@
 //! | [`parity`] | $\pm 1$ for even / odd $p$, else $0$ |
 
 use super::Poly;
-use super::zpoly::ZPoly;
 use crate::field::rational::denominator_lcm;
 use crate::field::{Q, Rational};
 use num_bigint::BigInt;
@@ -94,7 +97,7 @@ pub fn eval_hom(p: &[BigInt], num: &BigInt, den: &BigInt) -> BigInt {
 }
 
 /// The primitive integer polynomial with positive leading coefficient proportional to `p`
-/// (as a coefficient vector; [`ZPoly::from_poly_q`] wraps it).
+/// (as a coefficient vector; `ZPoly::from_poly_q` wraps it).
 pub fn from_poly_q(p: &Poly<Q>) -> Vec<BigInt> {
     let l = denominator_lcm(p.coeffs());
     let v: Vec<BigInt> = p
@@ -139,21 +142,10 @@ pub fn parity(p: &[BigInt]) -> i8 {
     }
 }
 
-impl ZPoly {
-    /// The primitive integer polynomial with positive leading coefficient proportional to
-    /// `p` (zero for zero).
-    pub fn from_poly_q(p: &Poly<Q>) -> ZPoly {
-        ZPoly::new(from_poly_q(p))
-    }
-    /// $f / \operatorname{lc}(f)$ over $\mathbb{Q}$ (zero stays zero).
-    pub fn to_monic_q(&self) -> Poly<Q> {
-        to_monic_q(self.coeffs())
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::poly::zpoly::ZPoly;
 
     use super::from_i64s as z;
 

@@ -47,55 +47,20 @@ impl<K: Field> StandardForm<K> {}
 /// `Invalid` for a singular pencil; `ImproperTransfer` (naming the highest power of $s$)
 /// when the transfer matrix has a polynomial part.
 pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardForm<K>> {
-    let fld = sys.a.field().clone();
-    let n = sys.nstates();
-    let mut found = None;
-    for t in 0..=n as i64 {
-        let l0 = if t % 2 == 1 { (t + 1) / 2 } else { -(t / 2) };
-        let p = &sys.e.scale(&fld.from_i64(l0)) - &sys.a;
-        if let Ok(m) = p.inverse() {
-            found = Some((l0, m));
-            break;
-        }
-    }
-    let Some((l0, m)) = found else {
-        return Err(Error::Invalid("singular pencil: det(sE - A) is identically zero, the descriptor system has no unique solution".into()));
-    };
-    let eh = &m * &sys.e;
-    let bh = &m * &sys.b;
-    let en = eh.pow(n as u32)?;
-    let v1 = en.column_space();
-    let v2 = en.nullspace();
-    let v = v1.hstack(&v2)?;
-    let vi = v.inverse()?;
-    let et = &(&vi * &eh) * &v;
-    let bt = &vi * &bh;
-    let r = v1.ncols();
-    let e1 = et.submatrix(0, r, 0, r);
-    let nil = et.submatrix(r, n, r, n);
-    let decoupled = et.submatrix(0, r, r, n).is_zero() && et.submatrix(r, n, 0, r).is_zero();
-    let e1i = e1.inverse()?;
-    let l0e = fld.from_i64(l0);
-    let a_std = &Matrix::identity(fld.clone(), r).scale(&l0e) - &e1i;
-    let b1 = bt.submatrix(0, r, 0, sys.b.ncols());
-    let b2 = bt.submatrix(r, n, 0, sys.b.ncols());
-    let b_std = &e1i * &b1;
-    let c_std = &sys.c * &v1;
-    let k2 = n - r;
-    let g = (&Matrix::identity(fld.clone(), k2) - &nil.scale(&l0e)).inverse()?;
-    let cv2 = &sys.c * &v2;
-    let gb = &g * &b2;
-    let d_std = &sys.d + &(&cv2 * &gb);
+    let split = super::weierstrass::fitting_split(sys)?;
+    let (gn, gb) = (&split.gn, &split.gb);
+    let k2 = gn.nrows();
+    let cv2 = &sys.c * &split.v2;
+    let d_std = &sys.d + &(&cv2 * gb);
     // properness: C V2 (G N)^k G B2 = 0 for k >= 1
-    let gn = &g * &nil;
     let mut term = gb.clone();
     for k in 1..=k2 {
-        term = &gn * &term;
+        term = gn * &term;
         if !(&cv2 * &term).is_zero() {
             let mut hi = k;
             let mut t2 = term.clone();
             for kk in k + 1..=k2 {
-                t2 = &gn * &t2;
+                t2 = gn * &t2;
                 if !(&cv2 * &t2).is_zero() {
                     hi = kk;
                 }
@@ -105,12 +70,12 @@ pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardF
             )));
         }
     }
-    let system = StateSpace::new(a_std, b_std, c_std, d_std)?;
+    let system = StateSpace::new(split.a_f, split.b_f, &sys.c * &split.v1, d_std)?;
     Ok(StandardForm {
         system,
         removed_infinite: k2,
-        lambda0: l0,
-        v1,
-        verified: decoupled,
+        lambda0: split.lambda0,
+        v1: split.v1,
+        verified: split.decoupled,
     })
 }

@@ -45,11 +45,27 @@ impl<K: Field> WeierstrassSplit<K> {
     }
 }
 
-/// Splits a regular descriptor system.
+/// The pieces of the Fitting split shared by [`weierstrass_split`] and
+/// [`super::descriptor_to_standard`]: the shift $\lambda_0$, the bases $V_1$, $V_2$, the
+/// finite part $(\lambda_0 I - \hat E_1^{-1}, \hat E_1^{-1}\hat B_1, CV_1)$, the nilpotent
+/// $GN$ and $G\hat B_2$ with $G = (I - \lambda_0 N)^{-1}$, and whether $V^{-1}\hat E V$ is
+/// block diagonal.
+pub(crate) struct FittingSplit<K: Field> {
+    pub lambda0: i64,
+    pub v1: Matrix<K>,
+    pub v2: Matrix<K>,
+    pub a_f: Matrix<K>,
+    pub b_f: Matrix<K>,
+    pub gn: Matrix<K>,
+    pub gb: Matrix<K>,
+    pub decoupled: bool,
+}
+
+/// Steps 1-4 of [`super::descriptor_to_standard`]'s module docs.
 ///
 /// # Errors
 /// `Invalid` when $\det(sE - A) \equiv 0$ (singular pencil).
-pub fn weierstrass_split<K: Field>(sys: &Descriptor<K>) -> Result<WeierstrassSplit<K>> {
+pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSplit<K>> {
     let fld = sys.a.field().clone();
     let n = sys.nstates();
     let mut found = None;
@@ -62,7 +78,7 @@ pub fn weierstrass_split<K: Field>(sys: &Descriptor<K>) -> Result<WeierstrassSpl
     }
     let Some((l0, m)) = found else {
         return Err(Error::Invalid(
-            "singular pencil: det(sE - A) is identically zero".into(),
+            "singular pencil: det(sE - A) is identically zero, the descriptor system has no unique solution".into(),
         ));
     };
     let eh = &m * &sys.e;
@@ -75,20 +91,37 @@ pub fn weierstrass_split<K: Field>(sys: &Descriptor<K>) -> Result<WeierstrassSpl
     let et = &(&vi * &eh) * &v;
     let bt = &vi * &bh;
     let r = v1.ncols();
+    let decoupled = et.submatrix(0, r, r, n).is_zero() && et.submatrix(r, n, 0, r).is_zero();
     let e1i = et.submatrix(0, r, 0, r).inverse()?;
     let nil = et.submatrix(r, n, r, n);
     let l0e = fld.from_i64(l0);
     let a_f = &Matrix::identity(fld.clone(), r).scale(&l0e) - &e1i;
     let b_f = &e1i * &bt.submatrix(0, r, 0, sys.b.ncols());
-    let c_f = &sys.c * &v1;
-    let k2 = n - r;
     // N z2' = (l0 N - I) z2 + B2 u  <=>  (I + s G N) z2 = G B2 u with G = (I - l0 N)^-1
-    let g = (&Matrix::identity(fld.clone(), k2) - &nil.scale(&l0e)).inverse()?;
+    let g = (&Matrix::identity(fld, n - r) - &nil.scale(&l0e)).inverse()?;
+    Ok(FittingSplit {
+        lambda0: l0,
+        a_f,
+        b_f,
+        gn: &g * &nil,
+        gb: &g * &bt.submatrix(r, n, 0, sys.b.ncols()),
+        v1,
+        v2,
+        decoupled,
+    })
+}
+
+/// Splits a regular descriptor system.
+///
+/// # Errors
+/// `Invalid` when $\det(sE - A) \equiv 0$ (singular pencil).
+pub fn weierstrass_split<K: Field>(sys: &Descriptor<K>) -> Result<WeierstrassSplit<K>> {
+    let f = fitting_split(sys)?;
     Ok(WeierstrassSplit {
-        finite: StateSpace::new_strictly_proper(a_f, b_f, c_f)?,
-        n: &g * &nil,
-        b_inf: &g * &bt.submatrix(r, n, 0, sys.b.ncols()),
-        c_inf: &sys.c * &v2,
+        finite: StateSpace::new_strictly_proper(f.a_f, f.b_f, &sys.c * &f.v1)?,
+        n: f.gn,
+        b_inf: f.gb,
+        c_inf: &sys.c * &f.v2,
         d: sys.d.clone(),
     })
 }

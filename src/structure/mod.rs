@@ -6,8 +6,12 @@
 //! | [`scb`] | special coordinate basis (Sannuti–Saberi; Grip–Saberi's symbolic procedure), exact |
 //! | [`zeros`] | invariant zeros from the Rosenbrock system matrix, independent of the SCB |
 //! | [`mechanical`] | mechanical normal form: a first-order system back to $\ddot q + D\dot q + Kq = Wu$ |
+//! | [`bifurcation`] | structural bifurcations over Q(p): the result on each branch where a condition vanishes |
+//! | [`factor_qp`] | a polynomial in s over Q(p) factored into monic irreducibles |
 
+pub mod bifurcation;
 pub mod descriptor_zeros;
+pub mod factor_qp;
 pub mod mechanical;
 pub mod scb;
 pub mod zeros;

@@ -1,17 +1,34 @@
 //! Commands on files with symbolic parameters (over $\mathbb{Q}(p_1, \dots, p_k)$) and with
 //! `--symbolic` / `--at` on the command line.
 //!
-//! What works over $\mathbb{Q}(p)$: `linalg rank|det|charpoly|minpoly|rref|inverse|nullspace`
-//! on `A`, with `field` and `conditions` (the irreducible polynomials the result assumes
-//! nonzero). Every other command refuses with one line and exit status 2.
+//! What works over $\mathbb{Q}(p)$ (every result with `field` and `conditions`, the
+//! irreducible polynomials it assumes nonzero, and `verified` = its identity holds as
+//! rational functions): `linalg rank|det|charpoly|minpoly|rref|inverse|nullspace` on `A`,
+//! `jordan` and `mnf` ([`super::symbolic_jordan`]), `scb`, `minreal` (Kalman, Rosenbrock,
+//! Ho-Kalman), `tf`, `zeros` (with the zero polynomial's factors over $\mathbb{Q}(p)$), `ctrb`,
+//! `obsv`, `standard`, `analyze`
+//! ([`system`]); `bifurcations` in [`super::bifurcations`]. Every other command refuses with
+//! one line and exit status 2 (`modes`: give values with `--at`).
+//!
+//! This module imports only leaf command modules (`common`, `symbolic_jordan`): a file whose
+//! symbols all got values is handed back ([`Handled::Valued`]) to the ordinary dispatch.
 
-use super::commands::{FileCommand, linalg_report};
+pub(super) mod system;
+
+use super::common::{linalg_report, with_path};
 use super::{Command, Failure, Outcome};
-use crate::io::TypedAny;
 use crate::io::symbolic::{SymbolicOptions, load_symbolic_path, refusal};
-use crate::matrix::Matrix;
+use crate::io::{LoadedSystem, TypedAny};
 use crate::report::{Report, Value, str_list};
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+/// What [`execute`] did with a command.
+pub(super) enum Handled {
+    /// Computed over $\mathbb{Q}(p)$ (or refused).
+    Done(Outcome),
+    /// `--at` gave every symbol a value: the ordinary command on this system.
+    Valued(Box<LoadedSystem>, PathBuf),
+}
 
 /// The command's name as typed.
 fn name(cmd: &Command) -> &'static str {
@@ -34,6 +51,7 @@ fn name(cmd: &Command) -> &'static str {
         Command::Analyze { .. } => "analyze",
         Command::Sweep { .. } => "sweep",
         Command::Critical { .. } => "critical",
+        Command::Bifurcations { .. } => "bifurcations",
     }
 }
 
@@ -56,13 +74,13 @@ fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Critical { file, .. }
         | Command::Linalg { file, .. } => Some(file),
         Command::Analyze { file } => file.as_deref(),
-        Command::Poly { .. } => None,
+        Command::Poly { .. } | Command::Bifurcations { .. } => None,
     }
 }
 
 /// Handles `cmd` when its file has symbols or the command line gives `--symbolic`/`--at`;
 /// `Ok(None)`: an ordinary file, left to the ordinary dispatch.
-pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Outcome>, Failure> {
+pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Handled>, Failure> {
     let Some(path) = file_of(cmd) else {
         return Ok(None);
     };
@@ -107,27 +125,33 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ou
             match cmd {
                 Command::Linalg { op, .. } => {
                     let k = k.fresh();
-                    let (n, m) = (t.a_raw.nrows(), t.a_raw.ncols());
-                    let data = (0..n)
-                        .flat_map(|i| (0..m).map(move |j| (i, j)))
-                        .map(|(i, j)| t.a_raw.get(i, j).clone())
-                        .collect();
-                    let a = Matrix::from_vec(k.clone(), n, m, data);
+                    let a = t.a_raw.map(&k, |x| x.clone());
                     let r = linalg_report(*op, &a, path)?;
-                    let conds = k
-                        .conditions_strings()
-                        .map_err(|e| super::commands::with_path(path, e))?;
-                    Ok(Some(Outcome::plain(
+                    let conds = k.conditions_strings().map_err(|e| with_path(path, e))?;
+                    Ok(Some(Handled::Done(Outcome::plain(
                         exact_only(r)
                             .str("field", k.to_string())
                             .with("conditions", str_list(conds)),
-                    )))
+                    ))))
                 }
-                _ => Err(refuse(refusal(&format!("`{}`", name(cmd)), k))),
+                Command::Jordan { real: false, .. } => {
+                    crate::cli::symbolic_jordan::jordan_outcome(&t.a_raw)
+                        .map(|o| Some(Handled::Done(o)))
+                        .map_err(|e| with_path(path, e))
+                }
+                Command::Mnf { .. } => {
+                    crate::cli::symbolic_jordan::mnf_outcome(&t.ss.a, &t.ss.b, &t.ss.c, &t.ss.d)
+                        .map(|o| Some(Handled::Done(o)))
+                        .map_err(|e| with_path(path, e))
+                }
+                _ => match system::run(cmd, &loaded.file, t, path)? {
+                    Some(out) => Ok(Some(Handled::Done(out))),
+                    None => Err(refuse(refusal(&format!("`{}`", name(cmd)), k))),
+                },
             }
         }
         _ if opts.is_empty() => Ok(None),
-        _ if direct => loaded.run(FileCommand { cmd, path }).map(Some),
+        _ if direct => Ok(Some(Handled::Valued(Box::new(loaded), path.to_path_buf()))),
         _ => Err(refuse(format!(
             "`{}` does not take --symbolic or --at yet; write the values into the file",
             name(cmd)
@@ -137,7 +161,7 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ou
 
 /// The report with matrices as lists of exact strings: over $\mathbb{Q}(p)$ there are no
 /// `approx` fields (the contract: only when every symbol has a value).
-fn exact_only(r: Report) -> Report {
+pub(super) fn exact_only(r: Report) -> Report {
     fn value(v: Value) -> Value {
         match v {
             Value::Matrix(m) => Value::List(

@@ -1,0 +1,57 @@
+//! Helpers shared by the command modules (a leaf: it imports no other command module).
+
+use super::{Failure, LinalgOp};
+use crate::error::Error;
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::report::{Report, Value};
+use std::path::Path;
+
+/// The error as a failure whose message starts with the file's path.
+pub(super) fn with_path(path: &Path, e: Error) -> Failure {
+    let f: Failure = e.into();
+    Failure {
+        code: f.code,
+        message: format!("{}: {}", path.display(), f.message),
+    }
+}
+
+pub(super) fn linalg_report<K: Field>(
+    op: LinalgOp,
+    a: &Matrix<K>,
+    path: &Path,
+) -> Result<Report, Failure> {
+    let e = |err| with_path(path, err);
+    let r = Report::titled(format!("linalg {op:?}").to_lowercase());
+    Ok(match op {
+        LinalgOp::Rank => r.int("rank", a.rank()),
+        LinalgOp::Det => r.str("det", a.field().fmt_elem(&a.det().map_err(e)?)),
+        LinalgOp::Charpoly => r.str("charpoly", a.charpoly().map_err(e)?.to_string()),
+        LinalgOp::Minpoly => r.str("minpoly", a.minpoly().map_err(e)?.to_string()),
+        LinalgOp::Inverse => r.matrix("matrix", &a.inverse().map_err(e)?),
+        LinalgOp::Rref => {
+            let (m, piv) = a.rref();
+            r.matrix("matrix", &m)
+                .with(
+                    "pivots",
+                    Value::List(piv.iter().map(|&p| Value::Int(p as i64 + 1)).collect()),
+                )
+                .int("rank", piv.len())
+        }
+        LinalgOp::Nullspace => {
+            let n = a.nullspace();
+            let basis = (0..n.ncols())
+                .map(|j| {
+                    Value::List(
+                        n.col(j)
+                            .iter()
+                            .map(|x| Value::Str(a.field().fmt_elem(x)))
+                            .collect(),
+                    )
+                })
+                .collect();
+            r.with("basis", Value::List(basis))
+                .int("nullity", n.ncols())
+        }
+    })
+}

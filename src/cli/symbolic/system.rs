@@ -1,0 +1,305 @@
+//! The system commands over $\mathbb{Q}(p)$: `scb`, `minreal`, `tf`, `zeros`, `ctrb`,
+//! `obsv`, `standard`, `analyze`.
+//!
+//! Each runs the generic algorithm over [`RatFuncField`] on a fresh condition log and adds
+//! `field` and `conditions` to the report. Decisions that need numbers (signs, Hurwitz,
+//! approximations) are not guessed: `minimum_phase` says "depends on parameters".
+
+use super::exact_only;
+use crate::cli::common::with_path;
+use crate::cli::{Command, Failure, MethodArg, Outcome};
+use crate::field::Field;
+use crate::io::{SystemFile, TypedSystem};
+use crate::poly::Poly;
+use crate::ratfunc::RatFuncField;
+use crate::realization::{self, MinrealMethod};
+use crate::report::{Report, Value, sections, str_list};
+use crate::structure::factor_qp::factor_over_qp;
+use crate::system::{StateSpace, transfer::TransferMatrix};
+use std::path::Path;
+
+type T = TypedSystem<RatFuncField>;
+
+/// Runs `cmd` over $\mathbb{Q}(p)$; `Ok(None)`: the command does not work over
+/// $\mathbb{Q}(p)$ (the caller refuses it).
+pub(in crate::cli) fn run(
+    cmd: &Command,
+    f: &SystemFile,
+    t: &T,
+    path: &Path,
+) -> Result<Option<Outcome>, Failure> {
+    let k = t.a_raw.field().fresh();
+    let t = refield(t, &k);
+    let e = |err| with_path(path, err);
+    let s = &t.ss;
+    let (r, ok) = match cmd {
+        Command::Scb { .. } => {
+            let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
+            let ok = r.verified;
+            let rep = depends(r.report(), "minimum_phase");
+            (
+                rep.with(
+                    "zero_factors",
+                    factors(&r.invariant_zero_polynomial()).map_err(e)?,
+                ),
+                ok,
+            )
+        }
+        Command::Zeros { .. } => {
+            let z = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
+            let rep = depends(z.report(), "minimum_phase");
+            (
+                rep.with("zero_factors", factors(&z.polynomial).map_err(e)?),
+                true,
+            )
+        }
+        Command::Minreal {
+            method, descriptor, ..
+        } => {
+            if *descriptor {
+                return Ok(None);
+            }
+            let m = match method {
+                MethodArg::Kalman => MinrealMethod::Kalman,
+                MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
+                MethodArg::HoKalman => MinrealMethod::HoKalman,
+                MethodArg::Jordan | MethodArg::Era => return Ok(None),
+            };
+            let r = realization::minimal(s, m).map_err(e)?;
+            (r.report(), r.verified)
+        }
+        Command::Ctrb { .. } | Command::Obsv { .. } => {
+            if t.descriptor.is_some() {
+                return Ok(None);
+            }
+            let dual = matches!(cmd, Command::Obsv { .. });
+            let c = if dual {
+                realization::observability_structure(&s.a, &s.c)
+            } else {
+                realization::controllability_structure(&s.a, &s.b)
+            }
+            .map_err(e)?;
+            let part = if dual {
+                c.uncontrollable.transpose()
+            } else {
+                c.uncontrollable.clone()
+            };
+            let key = if dual {
+                "unobservable_charpoly_factors"
+            } else {
+                "uncontrollable_charpoly_factors"
+            };
+            let cp = part.charpoly().map_err(e)?;
+            let rep = sections::ctrb_report(&c, dual).map_err(e)?;
+            (rep.with(key, factors(&cp).map_err(e)?), c.verified)
+        }
+        Command::Tf { .. } => {
+            if t.descriptor.is_some() {
+                return Ok(None);
+            }
+            tf(s).map_err(e)?
+        }
+        Command::Standard { .. } => match &t.descriptor {
+            Some(d) => {
+                let r = realization::descriptor_to_standard(d).map_err(e)?;
+                (r.report(), r.verified)
+            }
+            None => (sections::already_standard(s), true),
+        },
+        Command::Analyze { .. } => {
+            let out = crate::cli::analyze::analyze(f, &t)?;
+            let mut rep = depends(out.report, "minimum_phase");
+            let mut ok = out.verified;
+            // the eigenvalue structure over Q(p) (its conditions join this computation's)
+            let sec = match crate::jordan::params::jordan_params(&s.a) {
+                Ok(jf) => {
+                    ok &= jf.verified;
+                    for c in &jf.conditions {
+                        k.record_condition(c);
+                    }
+                    let eig = jf
+                        .eigenvalues
+                        .iter()
+                        .map(|e| {
+                            let mut r = Report::new()
+                                .str("factor", e.monic.to_string_var("s"))
+                                .int("algebraic_multiplicity", e.algebraic_multiplicity)
+                                .with(
+                                    "blocks",
+                                    Value::List(
+                                        e.blocks.iter().map(|&b| Value::Int(b as i64)).collect(),
+                                    ),
+                                );
+                            if let Some(x) = &e.value {
+                                r = r.str("value", k.fmt_elem(x));
+                            }
+                            Value::Obj(r)
+                        })
+                        .collect();
+                    Report::titled("eigenvalues and Jordan structure over Q(p)")
+                        .list("eigenvalues", eig)
+                        .bool("complete", jf.complete)
+                        .bool("verified", jf.verified)
+                }
+                Err(err) => Report::titled("eigenvalues and Jordan structure over Q(p)")
+                    .str("error", err.to_string()),
+            };
+            rep.push("jordan", Value::Obj(sec));
+            (rep, ok)
+        }
+        Command::Modes { .. } => {
+            return Err(Failure {
+                code: 2,
+                message: format!(
+                    "{}: `modes` needs numbers (frequencies, damping ratios): give every symbol a value with --at",
+                    path.display()
+                ),
+            });
+        }
+        _ => return Ok(None),
+    };
+    let conds = k.conditions_strings().map_err(e)?;
+    let r = exact_only(r)
+        .str("field", k.to_string())
+        .with("conditions", str_list(conds));
+    Ok(Some(Outcome::new(
+        set_key(r, "verified", Value::Bool(ok)),
+        ok,
+    )))
+}
+
+/// The system over `k` (a fresh condition log), entries unchanged.
+fn refield(t: &T, k: &RatFuncField) -> T {
+    let m = |x: &crate::matrix::Matrix<RatFuncField>| x.map(k, |e| e.clone());
+    TypedSystem {
+        descriptor: t.descriptor.as_ref().map(|d| crate::system::Descriptor {
+            e: m(&d.e),
+            a: m(&d.a),
+            b: m(&d.b),
+            c: m(&d.c),
+            d: m(&d.d),
+        }),
+        a_raw: m(&t.a_raw),
+        ss: StateSpace {
+            a: m(&t.ss.a),
+            b: m(&t.ss.b),
+            c: m(&t.ss.c),
+            d: m(&t.ss.d),
+        },
+    }
+}
+
+/// `r` with `key` set to `v` (replaced in place when present, else appended).
+pub(in crate::cli) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
+    match r.items.iter_mut().find(|(k, _)| k == key) {
+        Some(slot) => slot.1 = v,
+        None => r.items.push((key.to_string(), v)),
+    }
+    r
+}
+
+/// A sign question over $\mathbb{Q}(p)$ is not decided: the key says so (nested reports
+/// too, as in `analyze`).
+fn depends(r: Report, key: &str) -> Report {
+    fn value(v: Value, key: &str) -> Value {
+        match v {
+            Value::Obj(r) => Value::Obj(depends(r, key)),
+            Value::List(xs) => Value::List(xs.into_iter().map(|x| value(x, key)).collect()),
+            v => v,
+        }
+    }
+    let items = r
+        .items
+        .into_iter()
+        .map(|(k, v)| {
+            if k == key && matches!(v, Value::Null) {
+                (k, Value::Str("depends on parameters".into()))
+            } else {
+                (k, value(v, key))
+            }
+        })
+        .collect();
+    Report {
+        title: r.title,
+        items,
+    }
+}
+
+/// The monic irreducible factors over $\mathbb{Q}(p)$ as `{factor, multiplicity}` items
+/// (with `root` for linear factors).
+pub(in crate::cli) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
+    let k = p.field().clone();
+    let fs = factor_over_qp(p)?;
+    Ok(Value::List(
+        fs.iter()
+            .map(|(g, e)| {
+                let mut r = Report::new()
+                    .str("factor", g.to_string_var("s"))
+                    .int("multiplicity", *e);
+                if g.deg() == 1 {
+                    r = r.str("root", k.fmt_elem(&k.neg(&g.coeff(0))));
+                }
+                Value::Obj(r)
+            })
+            .collect(),
+    ))
+}
+
+/// `tf` over $\mathbb{Q}(p)$: the transfer matrix in lowest terms, its McMillan degree (the
+/// Kalman minimal order) and the poles' factors; verified: the expansion of every entry at
+/// $s = \infty$ equals $D, CB, CAB, \dots$ ($2n$ terms).
+fn tf(s: &StateSpace<RatFuncField>) -> crate::Result<(Report, bool)> {
+    let g = s.transfer_matrix()?;
+    let min = realization::minimal(s, MinrealMethod::Kalman)?;
+    let poles = min.system.a.charpoly()?;
+    let ok = markov_match(s, &g);
+    let rep = Report::titled("transfer matrix")
+        .with(
+            "transfer_matrix",
+            Value::List(g.to_strings().into_iter().map(str_list).collect()),
+        )
+        .int("mcmillan_degree", min.order)
+        .str("pole_polynomial", poles.to_string_var("s"))
+        .with("pole_factors", factors(&poles)?)
+        .bool("minimal_realization_verified", min.verified);
+    Ok((rep, ok && min.verified))
+}
+
+/// Laurent coefficients at infinity of each entry against the Markov parameters.
+fn markov_match(s: &StateSpace<RatFuncField>, g: &TransferMatrix<RatFuncField>) -> bool {
+    let k = s.field().clone();
+    let n = s.nstates();
+    let terms = 2 * n + 1;
+    let mut h = vec![s.d.clone()];
+    let mut ak_b = s.b.clone();
+    for _ in 1..terms {
+        h.push(&s.c * &ak_b);
+        ak_b = &s.a * &ak_b;
+    }
+    for (i, row) in g.entries.iter().enumerate() {
+        for (j, f) in row.iter().enumerate() {
+            let dd = f.den.deg();
+            if !f.num.is_zero() && f.num.deg() > dd {
+                return false;
+            }
+            // num(1/t) t^dd / (den(1/t) t^dd) as a power series in t (rev den(0) = 1)
+            let rn: Vec<_> = (0..=dd).map(|q| f.num.coeff(dd - q)).collect();
+            let rd: Vec<_> = (0..=dd).map(|q| f.den.coeff(dd - q)).collect();
+            let mut series: Vec<<RatFuncField as Field>::Elem> = Vec::with_capacity(terms);
+            for q in 0..terms {
+                let mut c = rn.get(q).cloned().unwrap_or_else(|| k.zero());
+                for (r, dr) in rd.iter().enumerate().skip(1) {
+                    if r > q {
+                        break;
+                    }
+                    c = k.sub(&c, &k.mul(dr, &series[q - r]));
+                }
+                series.push(c);
+            }
+            if (0..terms).any(|q| series[q] != *h[q].get(i, j)) {
+                return false;
+            }
+        }
+    }
+    true
+}
