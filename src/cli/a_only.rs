@@ -2,7 +2,8 @@
 //! system in standard form: `linalg` on an m x n matrix, and both on an improper or singular
 //! descriptor system (whose `A` is still a matrix). The report says so in a `note`.
 
-use super::commands::{a_command, with_path};
+use super::commands::a_command;
+use super::common::with_path;
 use super::{Command, Failure, Outcome};
 use crate::field::Q;
 use crate::io::system_file::read_matrix_key;
