@@ -17,6 +17,8 @@ mod cli;
 mod cli_hardening;
 #[path = "cli_mpoly.rs"]
 mod cli_mpoly;
+#[path = "cli_options.rs"]
+mod cli_options;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
@@ -41,6 +43,8 @@ mod inputs;
 mod io;
 #[path = "jordan.rs"]
 mod jordan;
+#[path = "latex.rs"]
+mod latex;
 #[path = "library_api.rs"]
 mod library_api;
 #[path = "matrix_generic.rs"]

@@ -1,5 +1,6 @@
 //! The `exactlti` command: see `exactlti --help` and ../shared/CLI-CONTRACT.md.
 use clap::Parser;
+use std::io::Write;
 
 fn main() {
     std::panic::set_hook(Box::new(|info| {
@@ -9,15 +10,13 @@ fn main() {
             .map(|s| s.to_string())
             .or_else(|| info.payload().downcast_ref::<String>().cloned())
             .unwrap_or_default();
-        eprintln!("exactlti: internal failure: {msg}");
+        // never a second panic from a closed stderr
+        let _ = writeln!(std::io::stderr(), "exactlti: internal failure: {msg}");
     }));
     let cli = match exactlti::cli::Cli::try_parse() {
         Ok(c) => c,
-        Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
-            let _ = e.print();
-            std::process::exit(code);
-        }
+        // contract: one line on stderr, exit 2 (help and version: exit 0)
+        Err(e) => std::process::exit(exactlti::cli::report_parse_error(&e)),
     };
     std::process::exit(exactlti::cli::run(cli));
 }

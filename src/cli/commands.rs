@@ -86,16 +86,21 @@ pub fn execute_with(
             let l = load_or_builtin(file.as_deref())?;
             l.run(Analyze)
         }
-        Command::Jordan { file, .. }
-        | Command::Minreal { file, .. }
+        // commands that need only A also take files that are not systems in standard form
+        Command::Jordan { file, .. } | Command::Linalg { file, .. } => {
+            match load_system_path(file) {
+                Ok(l) => l.run(FileCommand { cmd, path: file }),
+                Err(err) => super::a_only::fallback(cmd, file, err),
+            }
+        }
+        Command::Minreal { file, .. }
         | Command::Standard { file }
         | Command::Scb { file }
         | Command::Mnf { file }
         | Command::Zeros { file }
         | Command::Modes { file }
         | Command::Freqresp { file, .. }
-        | Command::Check { file }
-        | Command::Linalg { file, .. } => {
+        | Command::Check { file } => {
             let l = load_system_path(file)?;
             l.run(FileCommand { cmd, path: file })
         }
@@ -115,15 +120,8 @@ impl SystemVisitor for FileCommand<'_> {
         let e = |err| with_path(path, err);
         let s = &t.ss;
         match self.cmd {
-            Command::Jordan { real, expand, .. } => {
-                let jf = jordan_any(&t.a_raw).map_err(e)?;
-                if *real {
-                    let rf = jf.real_form_with(*expand).map_err(e)?;
-                    // a real form left in complex coordinates (exact = false) is not checked
-                    Ok(Outcome::new(rf.report(), !rf.exact || rf.verified))
-                } else {
-                    Ok(Outcome::new(jf.report(), jf.verified))
-                }
+            Command::Jordan { .. } | Command::Linalg { .. } => {
+                a_command(self.cmd, &t.a_raw, path).expect("an A-only command")
             }
             Command::Modes { .. } => {
                 let q = needs_rational(f, t, "the modal table")?;
@@ -179,7 +177,6 @@ impl SystemVisitor for FileCommand<'_> {
                 let agree = !matches!(r.get("agree"), Some(Value::Bool(false)));
                 Ok(Outcome::float_vs_exact(r, agree))
             }
-            Command::Linalg { op, .. } => linalg_report(*op, &t.a_raw, path).map(Outcome::plain),
             Command::Minreal { method, hankel, .. } => minreal(f, t, *method, *hankel, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
             Command::Poly { .. }
@@ -204,6 +201,28 @@ fn mnf<K: Field>(s: &crate::system::StateSpace<K>, path: &Path) -> Result<Outcom
     let m = mechanical_normal_form_in(None, &s.a, &s.b, &s.c, &s.d, DEFAULT_MAX_CANDIDATES)
         .map_err(|err| with_path(path, err))?;
     Ok(Outcome::new(m.report(), !m.exists || m.verified))
+}
+
+/// The commands that need only the matrix `A` (`jordan`, `linalg`); `None` for the others.
+pub(super) fn a_command<K: Field + 'static>(
+    cmd: &Command,
+    a: &Matrix<K>,
+    path: &Path,
+) -> Option<Result<Outcome, Failure>> {
+    let e = |err| with_path(path, err);
+    Some(match cmd {
+        Command::Jordan { real, expand, .. } => jordan_any(a).map_err(e).and_then(|jf| {
+            if *real {
+                let rf = jf.real_form_with(*expand).map_err(e)?;
+                // a real form left in complex coordinates (exact = false) is not checked
+                Ok(Outcome::new(rf.report(), !rf.exact || rf.verified))
+            } else {
+                Ok(Outcome::new(jf.report(), jf.verified))
+            }
+        }),
+        Command::Linalg { op, .. } => linalg_report(*op, a, path).map(Outcome::plain),
+        _ => return None,
+    })
 }
 
 /// The system over Q, or exit 2 naming the field when the file's entries lie in a larger one.

@@ -6,6 +6,7 @@
 //! internal failure (an exact verification that failed). Long exact work is bounded by
 //! `--max-seconds` (default 600).
 
+mod a_only;
 mod analyze;
 mod bifurcations;
 mod commands;
@@ -40,22 +41,32 @@ pub enum Format {
 #[command(
     name = "exactlti",
     version,
-    about = "Exact structure of linear time-invariant systems: Jordan forms, minimal realizations, special coordinate basis, mechanical normal form"
+    about = "Exact structure of linear time-invariant systems: Jordan forms, minimal realizations, special coordinate basis, mechanical normal form",
+    after_help = "FILE is a system file: JSON, or TOML when it ends in .toml. Keys: A, B, C, D \
+(x' = A x + B u, y = C x + D u), E for a descriptor system (E x' = A x + B u), or the \
+second-order form M, L, K, F (M q'' + L q' + K q = F u), or G (a transfer matrix in s); \
+entries exact (0.08 is 2/25) and may use `parameters`. Exit status: 0 success, 1 an exact \
+check failed, 2 bad input or a request that cannot be met (one line on stderr), 3 the float \
+path disagrees with the exact one (check, ERA)."
 )]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
-    /// Output format.
+    /// Output format: text (for reading), json (every exact entry as a string plus
+    /// `<name>_approx` numbers), latex (a fragment for an amsmath document).
     #[arg(long, global = true, value_enum, default_value_t = Format::Text)]
     pub format: Format,
-    /// Upper bound on the wall time of the exact computation; exceeded: exit 2.
-    #[arg(long, global = true, default_value_t = 600.0)]
+    /// With `--format latex`: a complete LaTeX document instead of a fragment.
+    #[arg(long, global = true)]
+    pub standalone: bool,
+    /// Upper bound on the wall time in seconds (a number > 0); exceeded: exit 2.
+    #[arg(long, global = true, default_value_t = 600.0, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
     pub max_seconds: f64,
     /// Keep these parameters as symbols (comma separated; alone: every parameter).
     #[arg(long, global = true, num_args = 0..=1, default_missing_value = "", value_name = "NAMES")]
     pub symbolic: Option<String>,
     /// Values for parameters or symbols before the computation, e.g. "m=1500, u=20".
-    #[arg(long, global = true, value_name = "VALUES")]
+    #[arg(long, global = true, value_name = "VALUES", allow_hyphen_values = true)]
     pub at: Option<String>,
 }
 
@@ -86,18 +97,23 @@ pub enum LinalgOp {
 pub enum PolyCmd {
     /// Factorization over Q into irreducibles with multiplicities (uni- or multivariate).
     Factor {
-        #[arg(allow_hyphen_values = true)]
+        /// A polynomial, e.g. "-4*x^3 + 1" or "x^2*y - y" (may start with '-').
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
         expr: String,
     },
     /// Greatest common divisor of two (multivariate) polynomials over Q, with cofactors.
     Gcd {
-        #[arg(allow_hyphen_values = true)]
+        /// First polynomial (may start with '-').
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
         f: String,
-        #[arg(allow_hyphen_values = true)]
+        /// Second polynomial (may start with '-').
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
         g: String,
     },
     /// All complex roots, certified, as exact algebraic numbers.
     Roots {
+        /// A polynomial in one variable, e.g. "-x^2 + 2" (may start with '-').
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
         expr: String,
         /// Correct significant digits of the displayed approximations.
         #[arg(long, default_value_t = 10)]
@@ -109,6 +125,7 @@ pub enum PolyCmd {
 pub enum Command {
     /// Exact Jordan decomposition of A.
     Jordan {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
         /// Real Jordan form (2x2 blocks [[a, b], [-b, a]] for complex pairs).
         #[arg(long)]
@@ -120,7 +137,10 @@ pub enum Command {
     },
     /// Minimal realization.
     Minreal {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
+        /// Algorithm: kalman (staircase), rosenbrock, ho-kalman, jordan (modal) are exact;
+        /// era is the float eigensystem realization, compared with the exact McMillan degree.
         #[arg(long, value_enum, default_value_t = MethodArg::Kalman)]
         method: MethodArg,
         /// `--method era` only: K x K block Hankel matrices (default: grown until the
@@ -132,66 +152,108 @@ pub enum Command {
         descriptor: bool,
     },
     /// Descriptor system to standard state space.
-    Standard { file: PathBuf },
+    Standard {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Special coordinate basis.
-    Scb { file: PathBuf },
+    Scb {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Mechanical normal form (second-order form of a first-order system).
-    Mnf { file: PathBuf },
+    Mnf {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Invariant zeros (with `E`: finite zeros and infinite zero orders).
-    Zeros { file: PathBuf },
+    Zeros {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Kronecker structure of the pencil A - sE.
-    Pencil { file: PathBuf },
+    Pencil {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Controllability structure of (A, B) (with `E`: finite and infinite).
-    Ctrb { file: PathBuf },
+    Ctrb {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Observability structure of (C, A) (with `E`: finite and infinite).
-    Obsv { file: PathBuf },
+    Obsv {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Transfer matrix in lowest terms, McMillan degree, poles and transmission zeros.
-    Tf { file: PathBuf },
+    Tf {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Modal table: eigenvalue, frequency, damping ratio, time constant, period.
-    Modes { file: PathBuf },
+    Modes {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Frequency response.
     Freqresp {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
-        #[arg(long, default_value_t = 0.01)]
+        /// Lowest frequency in Hz (> 0).
+        #[arg(long, default_value_t = 0.01, value_name = "HZ")]
         from: f64,
-        #[arg(long, default_value_t = 10.0)]
+        /// Highest frequency in Hz (> --from).
+        #[arg(long, default_value_t = 10.0, value_name = "HZ")]
         to: f64,
-        #[arg(long, default_value_t = 200)]
+        /// Number of frequencies, logarithmically spaced from --from to --to (2 to 100000;
+        /// points x outputs x inputs at most 1000000).
+        #[arg(long, default_value_t = 200, value_name = "N")]
         points: usize,
-        #[arg(long)]
+        /// Also write a Bode plot (magnitude in dB, phase in degrees, against Hz) as SVG.
+        #[arg(long, value_name = "OUT.svg")]
         svg: Option<PathBuf>,
-        #[arg(long)]
+        /// Also write the response as CSV (frequency in Hz, real and imaginary parts).
+        #[arg(long, value_name = "OUT.csv")]
         csv: Option<PathBuf>,
     },
     /// Eigenvalues along one parameter (float, parallel), with plots.
     Sweep {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
         /// The parameter swept (its value in the file is overridden).
         #[arg(long)]
         param: String,
+        /// First value of the parameter (in the file's units).
         #[arg(long, allow_hyphen_values = true)]
         from: f64,
+        /// Last value of the parameter.
         #[arg(long, allow_hyphen_values = true)]
         to: f64,
-        #[arg(long, default_value_t = 200)]
+        /// Number of parameter values, evenly spaced.
+        #[arg(long, default_value_t = 200, value_name = "N")]
         points: usize,
-        /// Real and imaginary parts against the parameter.
-        #[arg(long)]
+        /// Real and imaginary parts against the parameter, written as SVG.
+        #[arg(long, value_name = "OUT.svg")]
         svg: Option<PathBuf>,
-        /// Root locus in the complex plane.
-        #[arg(long)]
+        /// Root locus in the complex plane, written as SVG.
+        #[arg(long, value_name = "OUT.svg")]
         locus_svg: Option<PathBuf>,
-        #[arg(long)]
+        /// The eigenvalues (real, imaginary parts) per parameter value, written as CSV.
+        #[arg(long, value_name = "OUT.csv")]
         csv: Option<PathBuf>,
     },
     /// Exact critical values of one parameter and the intervals between them.
     Critical {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
+        /// The parameter (a name from the file's `parameters`).
         #[arg(long)]
         param: String,
-        /// Exact number (decimal or fraction).
+        /// Lower end of the interval: an exact number (decimal or fraction).
         #[arg(long, allow_hyphen_values = true)]
         from: String,
+        /// Upper end of the interval: an exact number (decimal or fraction).
         #[arg(long, allow_hyphen_values = true)]
         to: String,
         /// Correct digits of the displayed critical values.
@@ -199,7 +261,10 @@ pub enum Command {
         digits: usize,
     },
     /// Run the float path beside the exact path and compare.
-    Check { file: PathBuf },
+    Check {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+    },
     /// Polynomials over Q.
     Poly {
         #[command(subcommand)]
@@ -207,15 +272,21 @@ pub enum Command {
     },
     /// Exact linear algebra on the matrix A of a system file.
     Linalg {
+        /// The operation; rank, rref and nullspace take any m x n matrix A.
         #[arg(value_enum)]
         op: LinalgOp,
+        /// A file with the key A (JSON or TOML; the other keys of a system may be present).
         file: PathBuf,
     },
     /// Everything that applies, as one report (built-in sliding-mass example without FILE).
-    Analyze { file: Option<PathBuf> },
+    Analyze {
+        /// System file (JSON or TOML); without it, the built-in sliding-mass example.
+        file: Option<PathBuf>,
+    },
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
         /// The structure explored.
         #[arg(long = "of", value_enum, default_value_t = bifurcations::Of::Scb)]
@@ -298,18 +369,118 @@ impl From<crate::io::InputError> for Failure {
     }
 }
 
-/// Renders a report in the chosen format.
+/// `--max-seconds`: a finite number of seconds greater than zero (at most 10^7).
+fn parse_seconds(text: &str) -> Result<f64, String> {
+    let x: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{text}' is not a number of seconds"))?;
+    if x.is_finite() && x > 0.0 && x <= 1e7 {
+        Ok(x)
+    } else {
+        Err(format!(
+            "must be a number of seconds > 0 and <= 10000000 (got '{text}')"
+        ))
+    }
+}
+
+/// Renders a report in the chosen format (`--standalone` off).
 pub fn render(r: &Report, f: Format) -> String {
+    render_with(r, f, false)
+}
+
+/// Renders a report; `standalone` wraps LaTeX in a complete document. Text output shows
+/// control characters in strings escaped (`\n`, `\u{1b}`), so that a name cannot forge
+/// lines; JSON is escaped by serde; LaTeX escapes every string it prints.
+pub fn render_with(r: &Report, f: Format, standalone: bool) -> String {
     match f {
-        Format::Text => r.to_text(),
+        Format::Text => crate::report::escape::escape_control_report(r).to_text(),
         Format::Json => serde_json::to_string_pretty(&r.to_json()).unwrap_or_default() + "\n",
-        Format::Latex => r.to_latex(),
+        Format::Latex if standalone => crate::report::latex::standalone(r),
+        Format::Latex => crate::report::latex::fragment(r),
+    }
+}
+
+/// One line on stderr (control characters escaped: a file name cannot break the one-line
+/// contract); a closed stderr is ignored.
+fn say(msg: &str) {
+    use std::io::Write;
+    let line = crate::report::escape::escape_control(msg);
+    let _ = writeln!(std::io::stderr().lock(), "exactlti: {line}");
+}
+
+/// Writes the rendered output: `Ok` also when the reader went away (broken pipe: a quiet
+/// stop, as `exactlti analyze | head -1` expects); any other write error is returned.
+fn write_stdout(text: &str) -> std::io::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other,
+    }
+}
+
+/// The one line (contract) for an option-parser error, and its exit status: `None` for
+/// `--help` / `--version`, which clap prints itself (exit 0).
+pub fn parse_error_line(e: &clap::Error) -> Option<String> {
+    use clap::error::ErrorKind;
+    if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+        return None;
+    }
+    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+        return Some(
+            "a command is required (jordan, minreal, scb, zeros, analyze, ...; see exactlti --help)"
+                .into(),
+        );
+    }
+    let text = e.render().to_string();
+    let mut what = Vec::new();
+    let mut usage = None;
+    for l in text.lines().map(str::trim).filter(|l| !l.is_empty()) {
+        if let Some(u) = l.strip_prefix("Usage:") {
+            usage = Some(u.trim().to_string());
+        } else if l.starts_with("For more information") {
+            continue;
+        } else if let Some(tip) = l.strip_prefix("tip:") {
+            // "to pass '-x' as a value, use '-- -x'" is noise; near misses help
+            if !tip.contains("as a value") {
+                what.push(tip.trim().to_string());
+            }
+        } else {
+            what.push(l.strip_prefix("error:").unwrap_or(l).trim().to_string());
+        }
+    }
+    let mut line = String::new();
+    for w in what {
+        if !line.is_empty() {
+            line.push_str(if line.ends_with(':') { " " } else { "; " });
+        }
+        line.push_str(&w);
+    }
+    if let Some(u) = usage {
+        line.push_str(&format!(" (usage: {u})"));
+    }
+    Some(crate::report::escape::escape_control(&line))
+}
+
+/// Prints a parse error as one line (or clap's help/version) and returns the exit status.
+pub fn report_parse_error(e: &clap::Error) -> i32 {
+    match parse_error_line(e) {
+        None => {
+            let _ = e.print();
+            0
+        }
+        Some(line) => {
+            say(&line);
+            2
+        }
     }
 }
 
 /// Runs the command line; returns the process exit code.
 pub fn run(cli: Cli) -> i32 {
     let format = cli.format;
+    let standalone = cli.standalone;
     let limit = cli.max_seconds;
     let (tx, rx) = mpsc::channel();
     let handle = std::thread::Builder::new()
@@ -320,7 +491,7 @@ pub fn run(cli: Cli) -> i32 {
             let _ = tx.send(r);
         });
     if handle.is_err() {
-        eprintln!("exactlti: could not start the worker thread");
+        say("could not start the worker thread");
         return 1;
     }
     let wait = if limit.is_finite() && limit > 0.0 {
@@ -330,32 +501,33 @@ pub fn run(cli: Cli) -> i32 {
     };
     match rx.recv_timeout(wait) {
         Ok(Ok(out)) => {
-            print!("{}", render(&out.report, format));
+            if let Err(e) = write_stdout(&render_with(&out.report, format, standalone)) {
+                say(&format!("cannot write the output: {e}"));
+                return 2;
+            }
             if !out.verified {
-                eprintln!("exactlti: an exact verification failed (verified = false)");
+                say("an exact verification failed (verified = false)");
                 1
             } else if out.float_disagrees {
                 // contract, second wave: 3 = the float path disagrees with the exact one
-                eprintln!(
-                    "exactlti: the float path disagrees with the exact path (see the report)"
-                );
+                say("the float path disagrees with the exact path (see the report)");
                 3
             } else {
                 0
             }
         }
         Ok(Err(f)) => {
-            eprintln!("exactlti: {}", f.message);
+            say(&f.message);
             f.code
         }
         Err(mpsc::RecvTimeoutError::Timeout) => {
-            eprintln!(
-                "exactlti: stopped after --max-seconds {limit}: the exact computation did not finish in time"
-            );
+            say(&format!(
+                "stopped after --max-seconds {limit}: the exact computation did not finish in time"
+            ));
             2
         }
         Err(mpsc::RecvTimeoutError::Disconnected) => {
-            eprintln!("exactlti: internal failure (the computation panicked)");
+            say("internal failure (the computation panicked)");
             1
         }
     }

@@ -599,3 +599,45 @@ fn check_shapes(
     sys.d = Some(d);
     Ok(())
 }
+
+/// Reads only the matrix under `key` (with the parameters it uses) from a system file, of
+/// any shape and whatever the other keys say: for commands on a plain matrix (`linalg`),
+/// where the shape rules of a system do not apply.
+///
+/// # Errors
+/// An unreadable or invalid file, a missing `key`, a bad entry or parameter.
+pub fn read_matrix_key(
+    path: &Path,
+    key: &str,
+) -> Result<(MatrixEntries, super::Ground), InputError> {
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError::file(&shown, format!("cannot read the file: {e}")))?;
+    let toml = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+        || !(path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+            || text.trim_start().starts_with('{'));
+    let raw = if toml {
+        raw::from_toml_text(&text, &shown)?
+    } else {
+        raw::from_json_text(&text, &shown)?
+    };
+    let Raw::Table(entries) = raw else {
+        return Err(InputError::file(&shown, "expected a table of keys"));
+    };
+    let params_raw = match entries.iter().find(|(k, _)| k == "parameters") {
+        Some((_, Raw::Table(kv))) => kv.clone(),
+        _ => Vec::new(),
+    };
+    let Some((_, m)) = entries.iter().find(|(k, _)| k == key) else {
+        return Err(InputError::key(&shown, key, "missing"));
+    };
+    let mut scan = FieldScan::default();
+    let params = eval_parameters(&shown, &params_raw, &mut scan)?;
+    let lookup = |n: &str| params.iter().find(|(p, _)| p == n).map(|(_, v)| v.clone());
+    let m = read_matrix(&shown, key, m, &lookup, &mut scan)?;
+    Ok((m, scan.ground()))
+}

@@ -5,6 +5,8 @@
 //! becomes `"T": [["1", "-1/2"], ...]` plus `"T_approx": [[1.0, -0.5], ...]` as the CLI
 //! contract requires.
 
+pub mod escape;
+pub mod latex;
 pub mod plot;
 pub mod sections;
 
@@ -185,45 +187,9 @@ impl Report {
         }
     }
 
-    /// LaTeX rendering: a description list with `bmatrix` environments.
+    /// LaTeX rendering: a fragment for an `amsmath` document (see [`latex`]).
     pub fn to_latex(&self) -> String {
-        let mut s = String::new();
-        if let Some(t) = &self.title {
-            s.push_str(&format!("% {t}\n"));
-        }
-        for (k, v) in &self.items {
-            match v {
-                Value::Matrix(mo) => {
-                    s.push_str(&format!("{} = \\begin{{bmatrix}}\n", latex_name(k)));
-                    for r in &mo.latex {
-                        s.push_str(&format!("  {} \\\\\n", r.join(" & ")));
-                    }
-                    s.push_str("\\end{bmatrix}\n\n");
-                }
-                Value::Obj(r) => {
-                    s.push_str(&format!("% {k}\n"));
-                    s.push_str(&r.to_latex());
-                }
-                Value::List(xs) => {
-                    s.push_str(&format!("% {k}\n"));
-                    for x in xs {
-                        match x {
-                            Value::Obj(r) => s.push_str(&r.to_latex()),
-                            other => s.push_str(&format!("% - {}\n", inline_text(other))),
-                        }
-                    }
-                }
-                other => s.push_str(&format!("% {k}: {}\n", inline_text(other))),
-            }
-        }
-        s
-    }
-}
-
-fn latex_name(k: &str) -> String {
-    match k.split_once('_') {
-        Some((a, b)) => format!("{a}_{{{b}}}"),
-        None => k.to_string(),
+        latex::fragment(self)
     }
 }
 

@@ -1,0 +1,58 @@
+//! Commands that need only the matrix `A` (`linalg`, `jordan`) on files that are not a
+//! system in standard form: `linalg` on an m x n matrix, and both on an improper or singular
+//! descriptor system (whose `A` is still a matrix). The report says so in a `note`.
+
+use super::commands::a_command;
+use super::common::with_path;
+use super::{Command, Failure, Outcome};
+use crate::field::Q;
+use crate::io::system_file::read_matrix_key;
+use crate::io::{FromScalars, Ground, InputError, read_system_file};
+use crate::report::Value;
+use std::path::Path;
+
+/// `err` is the failure of the ordinary loader; answers it unless the file's `A` serves.
+pub(super) fn fallback(cmd: &Command, path: &Path, err: InputError) -> Result<Outcome, Failure> {
+    let Ok((entries, ground)) = read_matrix_key(path, "A") else {
+        return Err(err.into());
+    };
+    let linalg = matches!(cmd, Command::Linalg { .. });
+    let shown = path.display().to_string();
+    let reason = err.to_string();
+    let reason = reason
+        .strip_prefix(&format!("{shown}: "))
+        .unwrap_or(&reason)
+        .to_string();
+    let what = if linalg { "linalg" } else { "jordan" };
+    let note = if read_system_file(path).is_ok() {
+        // the file reads as a system but is not one in standard form (improper, singular)
+        format!(
+            "{what} uses only the matrix A as given: the file's system is refused by the other commands ({reason})"
+        )
+    } else if linalg && entries.nrows != entries.ncols {
+        format!(
+            "linalg reads A as a {}x{} matrix (not a system)",
+            entries.nrows, entries.ncols
+        )
+    } else {
+        return Err(err.into());
+    };
+    let run = |out: Option<Result<Outcome, Failure>>| -> Result<Outcome, Failure> {
+        let mut out = out.ok_or_else(|| Failure {
+            code: 2,
+            message: format!("{shown}: {reason}"),
+        })??;
+        out.report.push("note", Value::Str(note.clone()));
+        Ok(out)
+    };
+    match &ground {
+        Ground::Rational => run(a_command(cmd, &Q.matrix_from_entries(&entries), path)),
+        Ground::Quadratic(k) => run(a_command(cmd, &k.matrix_from_entries(&entries), path)),
+        Ground::RatFunc(k) => run(a_command(cmd, &k.matrix_from_entries(&entries), path)),
+        #[allow(unreachable_patterns)]
+        _ => Err(with_path(
+            path,
+            crate::error::Error::Unsupported(format!("this command over {ground}")),
+        )),
+    }
+}
