@@ -611,8 +611,7 @@ pub fn read_matrix_key(
     key: &str,
 ) -> Result<(MatrixEntries, super::Ground), InputError> {
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::file(&shown, format!("cannot read the file: {e}")))?;
+    let text = super::read::read_text(path)?;
     let toml = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("toml"))

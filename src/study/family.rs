@@ -245,8 +245,7 @@ impl ParamFamily {
     /// cycles; `Unsupported` for `sqrt`/`i` entries or a transfer-matrix file.
     pub fn from_file(path: &Path, param: &str) -> Result<ParamFamily> {
         let shown = path.display().to_string();
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::Invalid(format!("{shown}: cannot read the file: {e}")))?;
+        let text = crate::io::read::read_text(path).map_err(|e| Error::Invalid(e.to_string()))?;
         let toml = path
             .extension()
             .and_then(|e| e.to_str())
