@@ -24,11 +24,39 @@ pub fn execute(cmd: &Command) -> Result<Outcome, Failure> {
     execute_with(cmd, None, None)
 }
 
+/// How the command line runs a command: when it started, its bound, where events go.
+#[derive(Debug)]
+pub struct RunContext {
+    pub start: std::time::Instant,
+    /// `--max-seconds`.
+    pub max_seconds: f64,
+    /// Where streamed sections go (text mode of `analyze`).
+    pub events: super::budget::Events,
+    /// `--full`.
+    pub full: bool,
+}
+
 /// Dispatches a command with `--symbolic` / `--at` (see [`crate::io::symbolic`]).
 pub fn execute_with(
     cmd: &Command,
     symbolic: Option<&str>,
     at: Option<&str>,
+) -> Result<Outcome, Failure> {
+    let ctx = RunContext {
+        start: std::time::Instant::now(),
+        max_seconds: 1e7,
+        events: None,
+        full: false,
+    };
+    execute_ctx(cmd, symbolic, at, &ctx)
+}
+
+/// Dispatches a command run by the command line (budgets of `analyze` from `ctx`).
+pub fn execute_ctx(
+    cmd: &Command,
+    symbolic: Option<&str>,
+    at: Option<&str>,
+    ctx: &RunContext,
 ) -> Result<Outcome, Failure> {
     let opts =
         SymbolicOptions::from_args(symbolic, at).map_err(|message| Failure { code: 2, message })?;
@@ -37,7 +65,15 @@ pub fn execute_with(
     }
     match super::symbolic::execute(cmd, &opts)? {
         Some(Handled::Done(out)) => return Ok(out),
-        Some(Handled::Valued(l, path)) => return l.run(FileCommand { cmd, path: &path }),
+        Some(Handled::Valued(l, path)) => {
+            if let Command::Analyze {
+                section_seconds, ..
+            } = cmd
+            {
+                return l.run(Analyze(analyze_options(*section_seconds, ctx)));
+            }
+            return l.run(FileCommand { cmd, path: &path });
+        }
         None => {}
     }
     if let Some(path) = super::pencil_cmds::handles(cmd) {
@@ -82,9 +118,12 @@ pub fn execute_with(
             to,
             digits: *digits,
         }),
-        Command::Analyze { file } => {
+        Command::Analyze {
+            file,
+            section_seconds,
+        } => {
             let l = load_or_builtin(file.as_deref())?;
-            l.run(Analyze)
+            l.run(Analyze(analyze_options(*section_seconds, ctx)))
         }
         // commands that need only A also take files that are not systems in standard form
         Command::Jordan { file, .. } | Command::Linalg { file, .. } => {
@@ -370,11 +409,19 @@ fn load_or_builtin(file: Option<&Path>) -> Result<LoadedSystem, Failure> {
 
 /// `analyze`: every section that applies; a section that fails says why instead of
 /// disappearing.
-struct Analyze;
+struct Analyze(super::analyze::AnalyzeOptions);
+
+fn analyze_options(section_seconds: f64, ctx: &RunContext) -> super::analyze::AnalyzeOptions {
+    super::analyze::AnalyzeOptions {
+        budget: super::budget::Budget::new(section_seconds, ctx.start, ctx.max_seconds),
+        events: ctx.events.clone(),
+        full: ctx.full,
+    }
+}
 
 impl SystemVisitor for Analyze {
     type Output = Result<Outcome, Failure>;
     fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
-        super::analyze::analyze(f, t)
+        super::analyze::analyze_with(f, t, &self.0)
     }
 }

@@ -142,12 +142,65 @@ pub fn freqresp<K: Field>(
             )
         })
         .collect();
+    let (header, rows) = bode_table(&freqs, &table);
     Ok(Report::titled("frequency response")
         .with(
             "frequencies_hz",
-            Value::List(freqs.iter().map(|f| Value::Float(*f)).collect()),
+            Value::hidden_in_text(Value::List(freqs.iter().map(|f| Value::Float(*f)).collect())),
         )
-        .with("response", Value::List(resp_json)))
+        .with(
+            "response",
+            Value::table(Value::List(resp_json), header, rows),
+        ))
+}
+
+/// The text of a frequency response: per frequency (Hz), the magnitude (dB) and phase
+/// (degrees, unwrapped along the frequencies) of each channel `y<i>/u<j>`.
+fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>) {
+    use crate::report::text::short;
+    let (p, m) = table
+        .first()
+        .map_or((0, 0), |g| (g.len(), g.first().map_or(0, Vec::len)));
+    let siso = p == 1 && m == 1;
+    let mut header = vec!["frequency (Hz)".to_string()];
+    for i in 0..p {
+        for j in 0..m {
+            if siso {
+                header.push("magnitude (dB)".into());
+                header.push("phase (deg)".into());
+            } else {
+                header.push(format!("y{}/u{} (dB)", i + 1, j + 1));
+                header.push(format!("y{}/u{} (deg)", i + 1, j + 1));
+            }
+        }
+    }
+    let mut last: Vec<Option<f64>> = vec![None; p * m];
+    let rows = freqs
+        .iter()
+        .zip(table)
+        .map(|(f, g)| {
+            let mut row = vec![short(*f)];
+            for i in 0..p {
+                for j in 0..m {
+                    let (re, im) = g[i][j];
+                    let mag = re.hypot(im);
+                    let db = 20.0 * mag.log10();
+                    let mut ph = im.atan2(re).to_degrees();
+                    let k = i * m + j;
+                    if let Some(prev) = last[k] {
+                        ph += 360.0 * ((prev - ph) / 360.0).round();
+                    }
+                    if mag > 0.0 {
+                        last[k] = Some(ph);
+                    }
+                    row.push(if mag > 0.0 { format!("{db:.2}") } else { "-inf".into() });
+                    row.push(if mag > 0.0 { format!("{ph:.1}") } else { "-".into() });
+                }
+            }
+            row
+        })
+        .collect();
+    (header, rows)
 }
 
 /// ERA (float) on the Markov parameters of the exact system, compared with the exact

@@ -9,11 +9,13 @@
 mod a_only;
 mod analyze;
 mod bifurcations;
+pub mod budget;
 mod commands;
 mod common;
 mod critical;
 mod float_cmds;
 mod pencil_cmds;
+mod progress;
 mod sweep;
 mod symbolic;
 mod symbolic_jordan;
@@ -25,8 +27,9 @@ use crate::error::Error;
 use crate::report::Report;
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
+use budget::Event;
 use std::sync::mpsc;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// Output formats.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -68,6 +71,11 @@ pub struct Cli {
     /// Values for parameters or symbols before the computation, e.g. "m=1500, u=20".
     #[arg(long, global = true, value_name = "VALUES", allow_hyphen_values = true)]
     pub at: Option<String>,
+    /// Text output: print every matrix in full (by default a matrix wider than 100 columns
+    /// or with long entries is shown approximately, with its shape and fields; JSON and
+    /// LaTeX are always complete).
+    #[arg(long, global = true)]
+    pub full: bool,
 }
 
 /// `--method` of `minreal`.
@@ -282,6 +290,10 @@ pub enum Command {
     Analyze {
         /// System file (JSON or TOML); without it, the built-in sliding-mass example.
         file: Option<PathBuf>,
+        /// Time budget of each section in seconds (a section out of time is reported as
+        /// skipped, with the command that insists); `--max-seconds` bounds the whole.
+        #[arg(long, default_value_t = budget::DEFAULT_SECTION_SECONDS, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
+        section_seconds: f64,
     },
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
@@ -306,6 +318,8 @@ pub struct Outcome {
     pub verified: bool,
     /// The float path disagrees with the exact one (`check`, ERA): exit 3.
     pub float_disagrees: bool,
+    /// The report is printed but `--max-seconds` cut part of it: exit 2 with this line.
+    pub stopped: Option<String>,
 }
 
 impl Outcome {
@@ -315,6 +329,7 @@ impl Outcome {
             report,
             verified,
             float_disagrees: false,
+            stopped: None,
         }
     }
     /// A float-vs-exact report (`check`, ERA): `agree = false` exits 3.
@@ -323,6 +338,7 @@ impl Outcome {
             report,
             verified: true,
             float_disagrees: !agree,
+            stopped: None,
         }
     }
     /// A report without an exact check to fail (float results, tables, factorizations).
@@ -384,7 +400,7 @@ fn parse_seconds(text: &str) -> Result<f64, String> {
     }
 }
 
-/// Renders a report in the chosen format (`--standalone` off).
+/// Renders a report in the chosen format (`--standalone` off, compact text).
 pub fn render(r: &Report, f: Format) -> String {
     render_with(r, f, false)
 }
@@ -393,8 +409,14 @@ pub fn render(r: &Report, f: Format) -> String {
 /// control characters in strings escaped (`\n`, `\u{1b}`), so that a name cannot forge
 /// lines; JSON is escaped by serde; LaTeX escapes every string it prints.
 pub fn render_with(r: &Report, f: Format, standalone: bool) -> String {
+    render_full(r, f, standalone, false)
+}
+
+/// As [`render_with`]; `full` prints every matrix of the text output in full.
+pub fn render_full(r: &Report, f: Format, standalone: bool, full: bool) -> String {
     match f {
-        Format::Text => crate::report::escape::escape_control_report(r).to_text(),
+        Format::Text => crate::report::escape::escape_control_report(r)
+            .to_text_with(&crate::report::TextOptions::cli(full)),
         Format::Json => serde_json::to_string_pretty(&r.to_json()).unwrap_or_default() + "\n",
         Format::Latex if standalone => crate::report::latex::standalone(r),
         Format::Latex => crate::report::latex::fragment(r),
@@ -478,17 +500,34 @@ pub fn report_parse_error(e: &clap::Error) -> i32 {
 }
 
 /// Runs the command line; returns the process exit code.
+///
+/// The command runs in a worker thread; this thread waits at most `--max-seconds`, prints
+/// what streams (the sections of `analyze` in text mode, as each is done) and shows a
+/// progress line on stderr when stderr is a terminal and the work takes more than a second.
 pub fn run(cli: Cli) -> i32 {
+    let start = Instant::now();
     let format = cli.format;
     let standalone = cli.standalone;
+    let full = cli.full;
     let limit = cli.max_seconds;
     let (tx, rx) = mpsc::channel();
+    let streams = format == Format::Text && matches!(cli.command, Command::Analyze { .. });
+    let ctx = commands::RunContext {
+        start,
+        max_seconds: limit,
+        events: streams.then(|| tx.clone()),
+        full,
+    };
     let handle = std::thread::Builder::new()
         .stack_size(256 << 20)
         .spawn(move || {
-            let r =
-                commands::execute_with(&cli.command, cli.symbolic.as_deref(), cli.at.as_deref());
-            let _ = tx.send(r);
+            let r = commands::execute_ctx(
+                &cli.command,
+                cli.symbolic.as_deref(),
+                cli.at.as_deref(),
+                &ctx,
+            );
+            let _ = tx.send(Event::Finished(Box::new(r)));
         });
     if handle.is_err() {
         say("could not start the worker thread");
@@ -499,9 +538,54 @@ pub fn run(cli: Cli) -> i32 {
     } else {
         Duration::from_secs(600)
     };
-    match rx.recv_timeout(wait) {
-        Ok(Ok(out)) => {
-            if let Err(e) = write_stdout(&render_with(&out.report, format, standalone)) {
+    let deadline = start + wait;
+    let mut printer = progress::Printer::new(full);
+    loop {
+        let now = Instant::now();
+        let Some(left) = deadline.checked_duration_since(now).filter(|d| !d.is_zero()) else {
+            printer.clear();
+            say(&format!(
+                "stopped after --max-seconds {limit}: the exact computation did not finish in time"
+            ));
+            return 2;
+        };
+        match rx.recv_timeout(left.min(Duration::from_millis(100))) {
+            Ok(Event::Finished(r)) => {
+                printer.clear();
+                return finish(*r, &mut printer, format, standalone);
+            }
+            Ok(ev) => {
+                if let Err(e) = printer.event(ev) {
+                    printer.clear();
+                    say(&format!("cannot write the output: {e}"));
+                    return 2;
+                }
+            }
+            Err(mpsc::RecvTimeoutError::Timeout) => printer.tick(start.elapsed()),
+            Err(mpsc::RecvTimeoutError::Disconnected) => {
+                printer.clear();
+                say("internal failure (the computation panicked)");
+                return 1;
+            }
+        }
+    }
+}
+
+/// Prints the rest of the result (what did not stream) and returns the exit status.
+fn finish(
+    r: Result<Outcome, Failure>,
+    printer: &mut progress::Printer,
+    format: Format,
+    standalone: bool,
+) -> i32 {
+    match r {
+        Ok(out) => {
+            let written = if printer.streamed() {
+                printer.rest(&out.report)
+            } else {
+                write_stdout(&render_full(&out.report, format, standalone, printer.full))
+            };
+            if let Err(e) = written {
                 say(&format!("cannot write the output: {e}"));
                 return 2;
             }
@@ -512,23 +596,16 @@ pub fn run(cli: Cli) -> i32 {
                 // contract, second wave: 3 = the float path disagrees with the exact one
                 say("the float path disagrees with the exact path (see the report)");
                 3
+            } else if let Some(m) = &out.stopped {
+                say(m);
+                2
             } else {
                 0
             }
         }
-        Ok(Err(f)) => {
+        Err(f) => {
             say(&f.message);
             f.code
-        }
-        Err(mpsc::RecvTimeoutError::Timeout) => {
-            say(&format!(
-                "stopped after --max-seconds {limit}: the exact computation did not finish in time"
-            ));
-            2
-        }
-        Err(mpsc::RecvTimeoutError::Disconnected) => {
-            say("internal failure (the computation panicked)");
-            1
         }
     }
 }

@@ -50,6 +50,7 @@ pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use primary::PrimaryComponent;
 pub use real::{RealBlock, RealJordanForm};
 pub use response::{FreeResponse, ResponseTerm};
+pub(crate) use roots::value_string as value_display;
 
 use crate::algebraic::AlgebraicNumber;
 use crate::algebraic::{NfElem, NumberField};

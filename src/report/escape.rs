@@ -2,7 +2,7 @@
 //! specials escaped in LaTeX text. User strings (a system's `name`, signal names, file names)
 //! reach every output format; none of them may forge a line or break out of a LaTeX comment.
 
-use super::{Report, Value};
+use super::{Alt, AltText, Report, Value};
 
 /// `s` with every control character written as an escape: `\n`, `\r`, `\t`, `\\` stays
 /// as is, others as `\u{1b}`. A one-line string stays one line.
@@ -60,6 +60,22 @@ fn escape_control_value(v: &Value) -> Value {
                 }
             }
             Value::Matrix(m)
+        }
+        Value::Alt(a) => {
+            let text = match &a.text {
+                AltText::Hidden => AltText::Hidden,
+                AltText::Table { header, rows } => AltText::Table {
+                    header: header.iter().map(|x| escape_control(x)).collect(),
+                    rows: rows
+                        .iter()
+                        .map(|r| r.iter().map(|x| escape_control(x)).collect())
+                        .collect(),
+                },
+            };
+            Value::Alt(Box::new(Alt {
+                data: escape_control_value(&a.data),
+                text,
+            }))
         }
         other => other.clone(),
     }

@@ -7,8 +7,12 @@
 
 pub mod escape;
 pub mod latex;
+pub mod numbers;
 pub mod plot;
 pub mod sections;
+pub mod text;
+
+pub use text::{TextOptions, text_matrix};
 
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -67,6 +71,46 @@ pub enum Value {
     Matrix(Box<MatrixOut>),
     List(Vec<Value>),
     Obj(Report),
+    /// Data with its own text display (a table, or nothing): JSON and LaTeX show the data.
+    Alt(Box<Alt>),
+}
+
+/// A value shown differently in text: [`Value::Alt`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Alt {
+    /// What JSON and LaTeX show.
+    pub data: Value,
+    /// What text shows instead.
+    pub text: AltText,
+}
+
+/// The text display of a [`Value::Alt`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum AltText {
+    /// Nothing (the data is shown by a table elsewhere in the report).
+    Hidden,
+    /// A table with a header row.
+    Table {
+        header: Vec<String>,
+        rows: Vec<Vec<String>>,
+    },
+}
+
+impl Value {
+    /// `data` shown in text as a table.
+    pub fn table(data: Value, header: Vec<String>, rows: Vec<Vec<String>>) -> Value {
+        Value::Alt(Box::new(Alt {
+            data,
+            text: AltText::Table { header, rows },
+        }))
+    }
+    /// `data` not shown in text.
+    pub fn hidden_in_text(data: Value) -> Value {
+        Value::Alt(Box::new(Alt {
+            data,
+            text: AltText::Hidden,
+        }))
+    }
 }
 
 /// An ordered list of named values (a JSON object, a text section).
@@ -143,50 +187,6 @@ impl Report {
         Json::Object(m)
     }
 
-    /// Plain-text rendering.
-    pub fn to_text(&self) -> String {
-        let mut s = String::new();
-        self.text_into(&mut s, 0);
-        s
-    }
-    fn text_into(&self, s: &mut String, indent: usize) {
-        let pad = " ".repeat(indent);
-        if let Some(t) = &self.title {
-            s.push_str(&format!("{pad}== {t} ==\n"));
-        }
-        for (k, v) in &self.items {
-            match v {
-                Value::Matrix(mo) => {
-                    s.push_str(&format!("{pad}{k} ({}x{}) =\n", mo.nrows, mo.ncols));
-                    s.push_str(&text_matrix(&mo.exact, indent + 2));
-                }
-                Value::Obj(r) if r.title.is_some() => r.text_into(s, indent),
-                Value::Obj(r) => {
-                    s.push_str(&format!("{pad}{k}:\n"));
-                    r.text_into(s, indent + 2);
-                }
-                Value::List(xs)
-                    if xs
-                        .iter()
-                        .any(|x| matches!(x, Value::Obj(_) | Value::Matrix(_))) =>
-                {
-                    s.push_str(&format!("{pad}{k}:\n"));
-                    for (i, x) in xs.iter().enumerate() {
-                        match x {
-                            Value::Obj(r) => {
-                                s.push_str(&format!("{pad}  [{}]\n", i + 1));
-                                r.text_into(s, indent + 4);
-                            }
-                            Value::Matrix(mo) => s.push_str(&text_matrix(&mo.exact, indent + 4)),
-                            other => s.push_str(&format!("{pad}  - {}\n", inline_text(other))),
-                        }
-                    }
-                }
-                other => s.push_str(&format!("{pad}{k}: {}\n", inline_text(other))),
-            }
-        }
-    }
-
     /// LaTeX rendering: a fragment for an `amsmath` document (see [`latex`]).
     pub fn to_latex(&self) -> String {
         latex::fragment(self)
@@ -234,50 +234,8 @@ fn value_json(v: &Value) -> Json {
         ),
         Value::List(xs) => Json::Array(xs.iter().map(value_json).collect()),
         Value::Obj(r) => r.to_json(),
+        Value::Alt(a) => value_json(&a.data),
     }
-}
-
-fn inline_text(v: &Value) -> String {
-    match v {
-        Value::Null => "-".into(),
-        Value::Bool(b) => b.to_string(),
-        Value::Int(n) => n.to_string(),
-        Value::Float(x) => format!("{x:.10}"),
-        Value::Str(s) => s.clone(),
-        Value::Matrix(mo) => format!("{:?}", mo.exact),
-        Value::List(xs) => format!(
-            "[{}]",
-            xs.iter().map(inline_text).collect::<Vec<_>>().join(", ")
-        ),
-        Value::Obj(r) => r
-            .items
-            .iter()
-            .map(|(k, v)| format!("{k}={}", inline_text(v)))
-            .collect::<Vec<_>>()
-            .join(", "),
-    }
-}
-
-/// Column-aligned text of a matrix of strings.
-pub fn text_matrix(rows: &[Vec<String>], indent: usize) -> String {
-    let pad = " ".repeat(indent);
-    if rows.is_empty() || rows[0].is_empty() {
-        return format!("{pad}[]\n");
-    }
-    let ncols = rows[0].len();
-    let w: Vec<usize> = (0..ncols)
-        .map(|j| rows.iter().map(|r| r[j].chars().count()).max().unwrap_or(1))
-        .collect();
-    let mut s = String::new();
-    for r in rows {
-        let cells: Vec<String> = r
-            .iter()
-            .enumerate()
-            .map(|(j, c)| format!("{c:>w$}", w = w[j]))
-            .collect();
-        s.push_str(&format!("{pad}[ {} ]\n", cells.join("  ")));
-    }
-    s
 }
 
 /// Helper: a list of exact strings.

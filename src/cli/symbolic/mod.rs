@@ -73,7 +73,7 @@ fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Sweep { file, .. }
         | Command::Critical { file, .. }
         | Command::Linalg { file, .. } => Some(file),
-        Command::Analyze { file } => file.as_deref(),
+        Command::Analyze { file, .. } => file.as_deref(),
         Command::Poly { .. } | Command::Bifurcations { .. } => None,
     }
 }

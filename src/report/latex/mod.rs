@@ -208,6 +208,7 @@ fn value(s: &mut String, v: &Value, depth: usize) {
             let _ = write!(s, "${}$", float_math(*x));
         }
         Value::Str(x) => s.push_str(&scalar_str(x)),
+        Value::Alt(a) => value(s, &a.data, depth),
         Value::Matrix(m) => matrix(s, m),
         Value::List(xs) if xs.is_empty() => s.push_str("(none)"),
         Value::List(xs) => {

@@ -205,8 +205,40 @@ impl ModalTable {
                 )
             })
             .collect();
-        Report::titled("modal table").with("modes", Value::List(modes))
+        let header = [
+            "mode",
+            "multiplicity",
+            "frequency (Hz)",
+            "damping ratio",
+            "time constant (s)",
+        ]
+        .map(String::from)
+        .to_vec();
+        let rows = self.modes.iter().map(mode_row).collect();
+        Report::titled("modal table").with("modes", Value::table(Value::List(modes), header, rows))
     }
+}
+
+/// One row of the modal table's text: the mode (exact when short, the pair as `a ± b i`
+/// otherwise), its multiplicity, frequency in Hz, damping ratio and time constant.
+fn mode_row(m: &crate::realization::Mode) -> Vec<String> {
+    use crate::report::text::{MAX_EXACT_ENTRY, short};
+    let (re, im) = m.approx;
+    let mode = if m.eigenvalue.chars().count() <= MAX_EXACT_ENTRY {
+        m.eigenvalue.clone()
+    } else if im > 0.0 {
+        format!("{} ± {}i (approx.)", short(re), short(im))
+    } else {
+        format!("{} (approx.)", short(re))
+    };
+    let opt = |x: Option<f64>| x.map_or("-".to_string(), short);
+    vec![
+        mode,
+        m.multiplicity.to_string(),
+        short(m.frequency_hz),
+        opt(m.damping_ratio),
+        opt(m.time_constant_s),
+    ]
 }
 
 impl<K: Field> StandardForm<K> {

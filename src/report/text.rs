@@ -1,0 +1,303 @@
+//! Plain-text rendering of a [`Report`], for people.
+//!
+//! With [`TextOptions::cli`] (the command line without `--full`), a matrix whose exact entries
+//! are long (more than [`MAX_EXACT_ENTRY`] characters) is shown approximately, 4 significant
+//! digits per entry, under a line giving its shape and the length of its longest exact entry;
+//! a matrix wider than the terminal width is printed in column blocks. `--full` prints every
+//! exact entry; JSON and LaTeX are always complete. [`Value::Alt`] values show their own text
+//! (a table, or nothing) in place of their data.
+
+use super::{Alt, AltText, MatrixOut, Report, Value};
+
+/// Longest exact entry printed as it is in compact mode.
+pub const MAX_EXACT_ENTRY: usize = 24;
+
+/// How text is rendered.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TextOptions {
+    /// Every matrix in full (exact entries, one block of columns).
+    pub full: bool,
+    /// Width of a line in characters (column blocks in compact mode).
+    pub width: usize,
+}
+
+impl Default for TextOptions {
+    /// Full text (the library's `to_text`).
+    fn default() -> Self {
+        TextOptions {
+            full: true,
+            width: 100,
+        }
+    }
+}
+
+impl TextOptions {
+    /// The command line's text: compact unless `--full`.
+    pub fn cli(full: bool) -> Self {
+        TextOptions { full, width: 100 }
+    }
+}
+
+impl Report {
+    /// Plain-text rendering (every matrix in full).
+    pub fn to_text(&self) -> String {
+        self.to_text_with(&TextOptions::default())
+    }
+    /// Plain-text rendering with options.
+    pub fn to_text_with(&self, o: &TextOptions) -> String {
+        let mut s = String::new();
+        self.text_into(&mut s, 0, o);
+        s
+    }
+    fn text_into(&self, s: &mut String, indent: usize, o: &TextOptions) {
+        let pad = " ".repeat(indent);
+        if let Some(t) = &self.title {
+            s.push_str(&format!("{pad}== {t} ==\n"));
+        }
+        for (k, v) in &self.items {
+            item_text(s, k, v, indent, o);
+        }
+    }
+}
+
+fn item_text(s: &mut String, k: &str, v: &Value, indent: usize, o: &TextOptions) {
+    let pad = " ".repeat(indent);
+    match v {
+        Value::Matrix(mo) => matrix_text(s, &format!("{pad}{k} "), mo, indent, o),
+        Value::Obj(r) if r.title.is_some() => r.text_into(s, indent, o),
+        Value::Obj(r) => {
+            s.push_str(&format!("{pad}{k}:\n"));
+            r.text_into(s, indent + 2, o);
+        }
+        Value::Alt(a) => alt_text(s, k, a, indent),
+        Value::List(xs)
+            if xs
+                .iter()
+                .any(|x| matches!(x, Value::Obj(_) | Value::Matrix(_) | Value::Alt(_))) =>
+        {
+            s.push_str(&format!("{pad}{k}:\n"));
+            for (i, x) in xs.iter().enumerate() {
+                match x {
+                    Value::Obj(r) => {
+                        s.push_str(&format!("{pad}  [{}]\n", i + 1));
+                        r.text_into(s, indent + 4, o);
+                    }
+                    Value::Matrix(mo) => matrix_text(s, &format!("{pad}  - "), mo, indent + 4, o),
+                    Value::Alt(a) => alt_text(s, "-", a, indent + 2),
+                    other => s.push_str(&format!("{pad}  - {}\n", inline_text(other))),
+                }
+            }
+        }
+        other => s.push_str(&format!("{pad}{k}: {}\n", inline_text(other))),
+    }
+}
+
+fn alt_text(s: &mut String, k: &str, a: &Alt, indent: usize) {
+    let pad = " ".repeat(indent);
+    match &a.text {
+        AltText::Hidden => {}
+        AltText::Table { header, rows } => {
+            s.push_str(&format!("{pad}{k}:\n"));
+            let mut all = vec![header.clone()];
+            all.extend(rows.iter().cloned());
+            s.push_str(&text_table(&all, indent + 2));
+        }
+    }
+}
+
+/// A matrix under `head` (`"T "`): exact, or approximate when its entries are long.
+fn matrix_text(s: &mut String, head: &str, mo: &MatrixOut, indent: usize, o: &TextOptions) {
+    let shape = format!("({}x{})", mo.nrows, mo.ncols);
+    let longest = mo
+        .exact
+        .iter()
+        .flatten()
+        .map(|e| e.chars().count())
+        .max()
+        .unwrap_or(0);
+    if o.full {
+        s.push_str(&format!("{head}{shape} =\n"));
+        s.push_str(&text_matrix(&mo.exact, indent + 2));
+    } else if longest <= MAX_EXACT_ENTRY {
+        s.push_str(&format!("{head}{shape} =\n"));
+        s.push_str(&blocks(&mo.exact, indent + 2, o.width));
+    } else {
+        let cells: Vec<Vec<String>> = mo
+            .approx
+            .iter()
+            .map(|r| r.iter().map(|&z| short_complex(z)).collect())
+            .collect();
+        s.push_str(&format!(
+            "{head}{shape} ~ (4 digits; exact entries up to {longest} characters: --full or --format json)\n"
+        ));
+        s.push_str(&blocks(&cells, indent + 2, o.width));
+    }
+}
+
+/// `x` to 4 significant digits (`0`, `-1.25`, `0.003142`, `1.235e-5`).
+pub fn short(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return if x.is_nan() { "nan".into() } else { format!("{x}") };
+    }
+    let a = x.abs();
+    if !(1e-3..1e5).contains(&a) {
+        return format!("{x:.3e}");
+    }
+    let e = a.log10().floor() as i32;
+    let dec = (3 - e).max(0) as usize;
+    let t = format!("{x:.dec$}");
+    let t = if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t
+    };
+    if t == "-0" { "0".into() } else { t }
+}
+
+/// `re + im i` to 4 significant digits (`1.5-0.25i`, `2i`).
+pub fn short_complex((re, im): (f64, f64)) -> String {
+    if im == 0.0 {
+        short(re)
+    } else if re == 0.0 {
+        format!("{}i", short(im))
+    } else if im < 0.0 {
+        format!("{}-{}i", short(re), short(-im))
+    } else {
+        format!("{}+{}i", short(re), short(im))
+    }
+}
+
+/// Column-aligned text of a matrix of strings in blocks of columns that fit `width`.
+fn blocks(rows: &[Vec<String>], indent: usize, width: usize) -> String {
+    let ncols = rows.first().map_or(0, Vec::len);
+    let w: Vec<usize> = (0..ncols)
+        .map(|j| rows.iter().map(|r| r[j].chars().count()).max().unwrap_or(1))
+        .collect();
+    let total = indent + 4 + w.iter().map(|x| x + 2).sum::<usize>();
+    if rows.is_empty() || ncols == 0 || total <= width {
+        return text_matrix(rows, indent);
+    }
+    let mut out = String::new();
+    let mut start = 0;
+    while start < ncols {
+        let mut end = start;
+        let mut used = indent + 4;
+        while end < ncols && (end == start || used + w[end] + 2 <= width) {
+            used += w[end] + 2;
+            end += 1;
+        }
+        out.push_str(&format!(
+            "{}columns {}..{} of {ncols}:\n",
+            " ".repeat(indent),
+            start + 1,
+            end
+        ));
+        let part: Vec<Vec<String>> = rows.iter().map(|r| r[start..end].to_vec()).collect();
+        out.push_str(&text_matrix(&part, indent));
+        start = end;
+    }
+    out
+}
+
+/// A table: the first row is the header, columns left-aligned.
+pub fn text_table(rows: &[Vec<String>], indent: usize) -> String {
+    let pad = " ".repeat(indent);
+    let ncols = rows.iter().map(Vec::len).max().unwrap_or(0);
+    let w: Vec<usize> = (0..ncols)
+        .map(|j| {
+            rows.iter()
+                .filter_map(|r| r.get(j))
+                .map(|c| c.chars().count())
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut s = String::new();
+    for r in rows {
+        let cells: Vec<String> = r
+            .iter()
+            .enumerate()
+            .map(|(j, c)| format!("{c:<w$}", w = w[j]))
+            .collect();
+        s.push_str(&format!("{pad}{}\n", cells.join("  ").trim_end()));
+    }
+    s
+}
+
+pub(super) fn inline_text(v: &Value) -> String {
+    match v {
+        Value::Null => "-".into(),
+        Value::Bool(b) => b.to_string(),
+        Value::Int(n) => n.to_string(),
+        Value::Float(x) => format!("{x:.10}"),
+        Value::Str(s) => s.clone(),
+        Value::Matrix(mo) => format!("{:?}", mo.exact),
+        Value::List(xs) => format!(
+            "[{}]",
+            xs.iter().map(inline_text).collect::<Vec<_>>().join(", ")
+        ),
+        Value::Obj(r) => r
+            .items
+            .iter()
+            .map(|(k, v)| format!("{k}={}", inline_text(v)))
+            .collect::<Vec<_>>()
+            .join(", "),
+        Value::Alt(a) => inline_text(&a.data),
+    }
+}
+
+/// Column-aligned text of a matrix of strings.
+pub fn text_matrix(rows: &[Vec<String>], indent: usize) -> String {
+    let pad = " ".repeat(indent);
+    if rows.is_empty() || rows[0].is_empty() {
+        return format!("{pad}[]\n");
+    }
+    let ncols = rows[0].len();
+    let w: Vec<usize> = (0..ncols)
+        .map(|j| rows.iter().map(|r| r[j].chars().count()).max().unwrap_or(1))
+        .collect();
+    let mut s = String::new();
+    for r in rows {
+        let cells: Vec<String> = r
+            .iter()
+            .enumerate()
+            .map(|(j, c)| format!("{c:>w$}", w = w[j]))
+            .collect();
+        s.push_str(&format!("{pad}[ {} ]\n", cells.join("  ")));
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn short_numbers() {
+        assert_eq!(short(0.0), "0");
+        assert_eq!(short(-1.25), "-1.25");
+        assert_eq!(short(std::f64::consts::PI / 1000.0), "0.003142");
+        assert_eq!(short(12345.678), "12346");
+        assert_eq!(short(1.23456e-5), "1.235e-5");
+        assert_eq!(short_complex((1.5, -0.25)), "1.5-0.25i");
+        assert_eq!(short_complex((0.0, 2.0)), "2i");
+    }
+
+    #[test]
+    fn long_entries_compact_wide_matrices_in_blocks() {
+        let long = "123456789/987654321 + 123456789/987654321*r1".to_string();
+        let m = MatrixOut::from_parts(
+            vec![vec![long.clone(), "0".into()], vec!["1".into(), "2".into()]],
+            vec![vec![(0.125, 0.0), (0.0, 0.0)], vec![(1.0, 0.0), (2.0, 0.0)]],
+        );
+        let r = Report::new().with("T", Value::Matrix(Box::new(m)));
+        let c = r.to_text_with(&TextOptions::cli(false));
+        assert!(c.contains("T (2x2) ~") && c.contains("0.125") && !c.contains(&long), "{c}");
+        assert!(r.to_text_with(&TextOptions::cli(true)).contains(&long));
+        assert!(r.to_text().contains(&long));
+        let wide: Vec<Vec<String>> = vec![(0..40).map(|j| format!("{j}")).collect()];
+        let t = blocks(&wide, 2, 100);
+        assert!(t.contains("columns 1..") && t.lines().all(|l| l.len() <= 100), "{t}");
+        assert!(t.contains(" 39 ]"));
+    }
+}
