@@ -180,3 +180,173 @@ fn simple_component_matches_the_general_chains() {
         }
     }
 }
+
+/// Runs the binary in the crate root: (exit code, stdout, stderr).
+fn cli(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn cli_json(args: &[&str]) -> serde_json::Value {
+    let mut a = args.to_vec();
+    a.extend(["--format", "json"]);
+    let (code, out, err) = cli(&a);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+const SECTIONS: [&str; 8] = [
+    "system",
+    "realization",
+    "structure",
+    "zeros",
+    "jordan",
+    "pbh",
+    "modes",
+    "mechanical",
+];
+
+#[test]
+fn analyze_random_12_has_every_section_done_or_marked() {
+    let f = "tests/data/everyday/random_12_siso.json";
+    let j = cli_json(&["analyze", f]);
+    for key in SECTIONS {
+        let sec = &j[key];
+        assert!(sec.is_object(), "{key} missing");
+        // done (its own keys), skipped (with the reason), failed or not applicable
+        assert!(
+            !sec.as_object().unwrap().is_empty()
+                || sec.get("error").is_some()
+                || sec.get("not_applicable").is_some(),
+            "{key}: {sec}"
+        );
+        if let Some(s) = sec.get("skipped") {
+            assert!(s.as_str().unwrap().contains("to insist") && sec.get("reason").is_some());
+        }
+    }
+    // the free response of a dense 12 x 12 is computed or announced with its size
+    let fr = &j["jordan"]["free_response"];
+    assert!(
+        fr.get("terms").is_some()
+            || fr.get("not_computed").is_some()
+            || fr.get("skipped").is_some(),
+        "{fr}"
+    );
+    // the eigenvalue test of the PBH section agrees with the Kalman ranks
+    if j["pbh"].get("controllable").is_some() {
+        assert_eq!(j["pbh"]["controllable"], j["realization"]["controllable"]);
+        assert_eq!(j["pbh"]["observable"], j["realization"]["observable"]);
+    }
+    // a section budget that nothing fits: every section is still there, marked, exit 0
+    let (code, out, err) = cli(&["analyze", f, "--section-seconds", "0.001"]);
+    assert_eq!(code, 0, "{err}");
+    for title in ["== eigenvalues and Jordan form ==", "== modal table =="] {
+        assert!(out.contains(title), "{title}:\n{out}");
+    }
+    assert!(out.contains("skipped: after") && out.contains("to insist"), "{out}");
+    assert!(out.contains("--section-seconds"), "{out}");
+}
+
+#[test]
+fn compact_text_by_default_full_on_request() {
+    let f = "tests/data/everyday/random_8_siso.json";
+    let j = cli_json(&["jordan", "--real", f]);
+    let long: String = j["T"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|r| r.as_array().unwrap())
+        .map(|x| x.as_str().unwrap().to_string())
+        .max_by_key(String::len)
+        .unwrap();
+    assert!(long.len() > 24, "{long}");
+    let (code, compact, _) = cli(&["jordan", "--real", f]);
+    assert_eq!(code, 0);
+    assert!(compact.contains("T (8x8) ~ (4 digits"), "{compact}");
+    assert!(!compact.contains(&long));
+    let (code, full, _) = cli(&["jordan", "--real", f, "--full"]);
+    assert_eq!(code, 0);
+    assert!(full.contains(&long) && !full.contains("~ (4 digits"));
+    // short entries stay exact in compact mode; wide matrices come in column blocks
+    let (code, out, _) = cli(&["jordan", "data/sliding-masses.json"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("sqrt(2)*i") && out.contains("columns 1.."), "{out}");
+    assert!(
+        out.lines()
+            .filter(|l| l.trim_start().starts_with("[ "))
+            .all(|l| l.chars().count() <= 100)
+    );
+}
+
+#[test]
+fn freqresp_and_modes_as_tables() {
+    let f = "tests/data/everyday/quarter_car.json";
+    let (code, out, _) = cli(&["freqresp", f, "--points", "5"]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("frequency (Hz)  magnitude (dB)  phase (deg)"),
+        "{out}"
+    );
+    assert_eq!(out.lines().filter(|l| l.starts_with("  10 ")).count(), 1, "{out}");
+    // JSON unchanged: the frequencies and [re, im] per channel
+    let j = cli_json(&["freqresp", f, "--points", "5"]);
+    assert_eq!(j["frequencies_hz"].as_array().unwrap().len(), 5);
+    assert_eq!(j["response"][0][0][0].as_array().unwrap().len(), 2);
+    let (code, out, _) = cli(&["modes", f]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("mode") && out.contains("frequency (Hz)") && out.contains("damping ratio"),
+        "{out}"
+    );
+    assert_eq!(out.matches("11.33").count(), 1, "{out}");
+    let j = cli_json(&["modes", f]);
+    assert!(j["modes"][0]["frequency_hz"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn one_display_per_number_in_analyze() {
+    // x^4 + 4 x^2 + 1 is a zero and an eigenvalue of the sliding masses: one display
+    let j = cli_json(&["analyze"]);
+    let mut seen: std::collections::HashMap<String, std::collections::HashSet<String>> =
+        Default::default();
+    fn walk(
+        v: &serde_json::Value,
+        seen: &mut std::collections::HashMap<String, std::collections::HashSet<String>>,
+    ) {
+        match v {
+            serde_json::Value::Object(m) => {
+                if let (Some(mp), Some(ap)) = (m.get("minpoly"), m.get("approx")) {
+                    let shown = m.get("value").or_else(|| m.get("eigenvalue"));
+                    if let Some(s) = shown {
+                        let f = |x: &serde_json::Value| x.as_f64().unwrap_or(0.0) + 0.0;
+                        let key = format!("{mp} {:.6} {:.6}", f(&ap[0]), f(&ap[1]));
+                        seen.entry(key)
+                            .or_default()
+                            .insert(s.as_str().unwrap().to_string());
+                    }
+                }
+                m.values().for_each(|x| walk(x, seen));
+            }
+            serde_json::Value::Array(xs) => xs.iter().for_each(|x| walk(x, seen)),
+            _ => {}
+        }
+    }
+    walk(&j, &mut seen);
+    assert!(seen.keys().any(|k| k.starts_with("\"x^4 + 4*x^2 + 1\"")), "{seen:?}");
+    for (k, shown) in &seen {
+        assert_eq!(shown.len(), 1, "{k}: {shown:?}");
+    }
+    assert!(
+        seen.values()
+            .flatten()
+            .any(|s| s == "i*sqrt(2 + sqrt(3))" || s == "-i*sqrt(2 + sqrt(3))")
+    );
+}

@@ -185,7 +185,7 @@ fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>
                     let (re, im) = g[i][j];
                     let mag = re.hypot(im);
                     let db = 20.0 * mag.log10();
-                    let mut ph = im.atan2(re).to_degrees();
+                    let mut ph = im.atan2(re).to_degrees() + 0.0;
                     let k = i * m + j;
                     if let Some(prev) = last[k] {
                         ph += 360.0 * ((prev - ph) / 360.0).round();
@@ -194,7 +194,11 @@ fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>
                         last[k] = Some(ph);
                     }
                     row.push(if mag > 0.0 { format!("{db:.2}") } else { "-inf".into() });
-                    row.push(if mag > 0.0 { format!("{ph:.1}") } else { "-".into() });
+                    row.push(if mag > 0.0 {
+                        format!("{:.1}", if ph.abs() < 0.05 { 0.0 } else { ph })
+                    } else {
+                        "-".into()
+                    });
                 }
             }
             row

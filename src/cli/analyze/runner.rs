@@ -30,14 +30,14 @@ pub struct Sections<'a> {
     pub done: usize,
     /// Titles of the sections skipped because `--max-seconds` (the whole bound) ran out.
     pub cut: Vec<String>,
+    /// Items sent to `events` (the title goes with the first).
+    streamed: usize,
 }
 
 impl<'a> Sections<'a> {
     pub fn new(report: Report, budget: &'a Budget, events: &'a Events, file: Option<String>) -> Self {
-        if let (Some(tx), Some(t)) = (events, &report.title) {
-            let _ = tx.send(Event::Title(t.clone()));
-        }
         Sections {
+            streamed: 0,
             report,
             verified: true,
             budget,
@@ -48,13 +48,23 @@ impl<'a> Sections<'a> {
         }
     }
 
-    /// Adds a finished section (and streams it).
+    /// Adds a finished section and streams what is ready: nothing before some work is done
+    /// (a report cut by `--max-seconds` before any section finished is not printed).
     pub fn push(&mut self, key: &str, v: Value) {
-        let v = crate::report::numbers::unify(v);
-        if let Some(tx) = self.events {
-            let _ = tx.send(Event::Item(key.to_string(), v.clone()));
+        self.report.push(key, crate::report::numbers::unify(v));
+        let Some(tx) = self.events else { return };
+        if self.done == 0 {
+            return;
         }
-        self.report.push(key, v);
+        if self.streamed == 0
+            && let Some(t) = &self.report.title
+        {
+            let _ = tx.send(Event::Title(t.clone()));
+        }
+        for (k, v) in &self.report.items[self.streamed..] {
+            let _ = tx.send(Event::Item(k.clone(), v.clone()));
+        }
+        self.streamed = self.report.items.len();
     }
 
     /// Runs `work` within the budget: its result, or the section to report in its place
