@@ -251,7 +251,10 @@ fn analyze_random_12_has_every_section_done_or_marked() {
     for title in ["== eigenvalues and Jordan form ==", "== modal table =="] {
         assert!(out.contains(title), "{title}:\n{out}");
     }
-    assert!(out.contains("skipped: after") && out.contains("to insist"), "{out}");
+    assert!(
+        out.contains("skipped: after") && out.contains("to insist"),
+        "{out}"
+    );
     assert!(out.contains("--section-seconds"), "{out}");
 }
 
@@ -278,7 +281,10 @@ fn compact_text_by_default_full_on_request() {
     // short entries stay exact in compact mode; wide matrices come in column blocks
     let (code, out, _) = cli(&["jordan", "data/sliding-masses.json"]);
     assert_eq!(code, 0);
-    assert!(out.contains("sqrt(2)*i") && out.contains("columns 1.."), "{out}");
+    assert!(
+        out.contains("sqrt(2)*i") && out.contains("columns 1.."),
+        "{out}"
+    );
     assert!(
         out.lines()
             .filter(|l| l.trim_start().starts_with("[ "))
@@ -295,7 +301,11 @@ fn freqresp_and_modes_as_tables() {
         out.contains("frequency (Hz)  magnitude (dB)  phase (deg)"),
         "{out}"
     );
-    assert_eq!(out.lines().filter(|l| l.starts_with("  10 ")).count(), 1, "{out}");
+    assert_eq!(
+        out.lines().filter(|l| l.starts_with("  10 ")).count(),
+        1,
+        "{out}"
+    );
     // JSON unchanged: the frequencies and [re, im] per channel
     let j = cli_json(&["freqresp", f, "--points", "5"]);
     assert_eq!(j["frequencies_hz"].as_array().unwrap().len(), 5);
@@ -340,7 +350,10 @@ fn one_display_per_number_in_analyze() {
         }
     }
     walk(&j, &mut seen);
-    assert!(seen.keys().any(|k| k.starts_with("\"x^4 + 4*x^2 + 1\"")), "{seen:?}");
+    assert!(
+        seen.keys().any(|k| k.starts_with("\"x^4 + 4*x^2 + 1\"")),
+        "{seen:?}"
+    );
     for (k, shown) in &seen {
         assert_eq!(shown.len(), 1, "{k}: {shown:?}");
     }

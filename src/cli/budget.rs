@@ -36,7 +36,10 @@ pub enum Ran<T> {
     Done(T),
     /// Out of time after this many seconds; `whole` when the bound of the whole command
     /// (`--max-seconds`) was the binding one rather than the section's own share.
-    OutOfTime { seconds: f64, whole: bool },
+    OutOfTime {
+        seconds: f64,
+        whole: bool,
+    },
     /// The work panicked (an internal failure; its message went to stderr).
     Panicked,
 }

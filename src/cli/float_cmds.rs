@@ -146,7 +146,9 @@ pub fn freqresp<K: Field>(
     Ok(Report::titled("frequency response")
         .with(
             "frequencies_hz",
-            Value::hidden_in_text(Value::List(freqs.iter().map(|f| Value::Float(*f)).collect())),
+            Value::hidden_in_text(Value::List(
+                freqs.iter().map(|f| Value::Float(*f)).collect(),
+            )),
         )
         .with(
             "response",
@@ -193,7 +195,11 @@ fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>
                     if mag > 0.0 {
                         last[k] = Some(ph);
                     }
-                    row.push(if mag > 0.0 { format!("{db:.2}") } else { "-inf".into() });
+                    row.push(if mag > 0.0 {
+                        format!("{db:.2}")
+                    } else {
+                        "-inf".into()
+                    });
                     row.push(if mag > 0.0 {
                         format!("{:.1}", if ph.abs() < 0.05 { 0.0 } else { ph })
                     } else {

@@ -25,9 +25,9 @@ pub use commands::execute;
 
 use crate::error::Error;
 use crate::report::Report;
+use budget::Event;
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
-use budget::Event;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
@@ -542,7 +542,10 @@ pub fn run(cli: Cli) -> i32 {
     let mut printer = progress::Printer::new(full);
     loop {
         let now = Instant::now();
-        let Some(left) = deadline.checked_duration_since(now).filter(|d| !d.is_zero()) else {
+        let Some(left) = deadline
+            .checked_duration_since(now)
+            .filter(|d| !d.is_zero())
+        else {
             printer.clear();
             say(&format!(
                 "stopped after --max-seconds {limit}: the exact computation did not finish in time"

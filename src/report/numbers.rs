@@ -125,7 +125,10 @@ mod tests {
                 )
                 .list(
                     "modes",
-                    vec![item("eigenvalue", "root of x^4 + 4*x^2 + 1 near 1.931851653*i")],
+                    vec![item(
+                        "eigenvalue",
+                        "root of x^4 + 4*x^2 + 1 near 1.931851653*i",
+                    )],
                 )
                 .str("other", "root of x^4 + 4*x^2 + 1 near 1.931851653*i"),
         );

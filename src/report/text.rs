@@ -137,7 +137,11 @@ fn matrix_text(s: &mut String, head: &str, mo: &MatrixOut, indent: usize, o: &Te
 /// `x` to 4 significant digits (`0`, `-1.25`, `0.003142`, `1.235e-5`).
 pub fn short(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
-        return if x.is_nan() { "nan".into() } else { format!("{x}") };
+        return if x.is_nan() {
+            "nan".into()
+        } else {
+            format!("{x}")
+        };
     }
     let a = x.abs();
     if !(1e-3..1e5).contains(&a) {
@@ -292,12 +296,18 @@ mod tests {
         );
         let r = Report::new().with("T", Value::Matrix(Box::new(m)));
         let c = r.to_text_with(&TextOptions::cli(false));
-        assert!(c.contains("T (2x2) ~") && c.contains("0.125") && !c.contains(&long), "{c}");
+        assert!(
+            c.contains("T (2x2) ~") && c.contains("0.125") && !c.contains(&long),
+            "{c}"
+        );
         assert!(r.to_text_with(&TextOptions::cli(true)).contains(&long));
         assert!(r.to_text().contains(&long));
         let wide: Vec<Vec<String>> = vec![(0..40).map(|j| format!("{j}")).collect()];
         let t = blocks(&wide, 2, 100);
-        assert!(t.contains("columns 1..") && t.lines().all(|l| l.len() <= 100), "{t}");
+        assert!(
+            t.contains("columns 1..") && t.lines().all(|l| l.len() <= 100),
+            "{t}"
+        );
         assert!(t.contains(" 39 ]"));
     }
 }

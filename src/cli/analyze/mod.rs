@@ -239,7 +239,8 @@ fn jordan_section(
     let j = jf.clone();
     let title = "Real Jordan form";
     let real = match secs.run(title, Insist::Command("jordan --real"), move || {
-        j.real_form().map(|rf| (!rf.exact || rf.verified, rf.report()))
+        j.real_form()
+            .map(|rf| (!rf.exact || rf.verified, rf.report()))
     }) {
         Ok(Ok((ok, rep))) => {
             secs.verified &= ok;
@@ -277,7 +278,10 @@ fn jordan_section(
 /// (one eigenvalue theta of multiplicity 1) the left-eigenvector form, `w B != 0` and
 /// `C v != 0` in QQ(theta) with `v`, `w` from the Jordan form; otherwise the rank of
 /// `[A - theta I, B]` (and of `[A - theta I; C]`) over QQ(theta).
-fn pbh(jf: Option<&crate::jordan::JordanForm>, s: &crate::system::StateSpace<Q>) -> crate::Result<(bool, bool)> {
+fn pbh(
+    jf: Option<&crate::jordan::JordanForm>,
+    s: &crate::system::StateSpace<Q>,
+) -> crate::Result<(bool, bool)> {
     let Some(jf) = jf.filter(|jf| jf.components.iter().all(|c| c.multiplicity == 1)) else {
         return realization::pbh_controllable(&s.a, &s.b)
             .and_then(|pc| realization::pbh_observable(&s.a, &s.c).map(|po| (pc, po)));
@@ -292,12 +296,7 @@ fn pbh(jf: Option<&crate::jordan::JordanForm>, s: &crate::system::StateSpace<Q>)
 }
 
 /// The sections that need rational matrices.
-fn rational_sections(
-    f: &Arc<SystemFile>,
-    t: Arc<TypedSystem<Q>>,
-    secs: &mut Sections,
-    full: bool,
-) {
+fn rational_sections(f: &Arc<SystemFile>, t: Arc<TypedSystem<Q>>, secs: &mut Sections, full: bool) {
     let (sec, jf) = jordan_section(&t, secs, (full, &f.path));
     secs.push("jordan", sec);
     let s = &t.ss;

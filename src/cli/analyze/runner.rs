@@ -35,7 +35,12 @@ pub struct Sections<'a> {
 }
 
 impl<'a> Sections<'a> {
-    pub fn new(report: Report, budget: &'a Budget, events: &'a Events, file: Option<String>) -> Self {
+    pub fn new(
+        report: Report,
+        budget: &'a Budget,
+        events: &'a Events,
+        file: Option<String>,
+    ) -> Self {
         Sections {
             streamed: 0,
             report,
