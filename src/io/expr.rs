@@ -33,18 +33,12 @@
 //! | [`eval_expr`] | the exact value of one expression over given parameters |
 //! | [`is_parameter_name`] | whether a string may name a parameter |
 
-pub(crate) use super::value::Value;
+pub use super::value::{ExprError, MAX_BITS, MAX_EXPONENT};
+pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
 use crate::field::{QuadraticField, Rational, parse_rational};
 use num_traits::{One, Zero};
-use std::fmt;
 
-/// Largest accepted |exponent| in `x^n`.
-pub const MAX_EXPONENT: u32 = 10_000;
-/// Largest accepted size (bits of a numerator or denominator) of any intermediate value.
-/// num-bigint's gcd (binary, quadratic) makes one operation on numbers of this size cost
-/// tens of milliseconds at most; beyond it an input could stall for seconds.
-pub const MAX_BITS: u64 = 1 << 14;
 /// Longest accepted number literal (characters).
 pub const MAX_NUMBER_LEN: usize = 4_000;
 /// Largest accepted nesting depth of parentheses and unary operators.
@@ -52,24 +46,6 @@ pub const MAX_DEPTH: usize = 256;
 
 /// Names that are never parameters.
 pub const RESERVED: [&str; 3] = ["i", "sqrt", "pi"];
-
-/// An invalid expression: what is wrong, with a 1-based character position where useful.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ExprError {
-    pub msg: String,
-}
-
-impl fmt::Display for ExprError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.msg)
-    }
-}
-
-impl std::error::Error for ExprError {}
-
-pub(crate) fn err<T>(msg: impl Into<String>) -> Result<T, ExprError> {
-    Err(ExprError { msg: msg.into() })
-}
 
 /// Is `s` usable as a parameter name: an identifier `[A-Za-z_][A-Za-z0-9_]*` that is not
 /// one of [`RESERVED`]?

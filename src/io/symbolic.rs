@@ -27,6 +27,7 @@
 use super::keys::{check_keys, keys_of};
 use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
 use super::raw::{Raw, from_json_text, from_toml_text};
+pub use super::refusal;
 use super::system_file::validate;
 use super::{Ground, InputError, SignalNames, SystemFile, SystemFormat, split_matlab_matrix};
 use crate::matrix::Matrix;
@@ -81,11 +82,6 @@ impl SymbolicOptions {
     pub fn is_empty(&self) -> bool {
         self.symbolic.is_none() && self.at.is_empty()
     }
-}
-
-/// The one-line refusal of a command that does not yet work over $\mathbb{Q}(p)$.
-pub fn refusal(what: &str, k: &RatFuncField) -> String {
-    format!("symbolic parameters: {what} is not yet supported over {k}; give values with --at")
 }
 
 /// Reads a system file with symbolic parameters (format as [`super::read_system_file`]).
