@@ -2,7 +2,7 @@
 //! block of size 2 iff $s_{1,1} A(v_0) + s_{1,0} I$ has rank $n - 1$, decided modulo a
 //! prime when possible, else exactly over $\mathbb{Q}(v_0)$.
 
-use super::structure::Known;
+use super::Known;
 use crate::algebraic::{NfElem, NumberField};
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, Rational};

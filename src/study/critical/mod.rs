@@ -39,7 +39,7 @@ use imaginary::imaginary_pair_at;
 use intervals::intervals_between;
 use roots::real_roots_in;
 use std::cmp::Ordering;
-use structure::{Known, structure_at};
+use structure::structure_at;
 
 /// What happens at a critical value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -124,6 +124,15 @@ pub struct CriticalValues {
     pub intervals: Vec<StudyInterval>,
     /// Every confirmation exact and consistent; interval counts agree with Routh–Hurwitz.
     pub verified: bool,
+}
+
+/// What is known about $P$ near the critical values: the discriminant and the first
+/// subresultant of $P$, $\partial_x P$.
+struct Known<'a> {
+    fam: &'a ParamFamily,
+    p: &'a BiPoly,
+    disc: &'a Poly<Q>,
+    s1: &'a (Poly<Q>, Poly<Q>),
 }
 
 /// Critical values of the family's parameter on $[a, b]$ and the intervals between them.

@@ -1,27 +1,17 @@
 //! The eigenvalues of $A(v_0)$ at a critical value $v_0$, with multiplicities and Jordan
 //! block sizes decided exactly over $\mathbb{Q}(v_0)$.
 
-use super::EigenvalueAt;
 use super::approx::{approx_roots, approx_roots_q};
 use super::double::{double_blocks_exact, double_blocks_mod_p};
 use super::roots::rational_near;
+use super::{EigenvalueAt, Known};
 use crate::algebraic::{AlgebraicNumber, NumberField, factor_over_number_field};
 use crate::error::{Error, Result};
-use crate::field::{Field, Q, Rational, rational_to_f64};
+use crate::field::{Field, Rational, rational_to_f64};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::study::bivar::BiPoly;
 use crate::study::family::ParamFamily;
 use num_complex::Complex;
-
-/// What is known about $P$ near the critical values: the discriminant and the first
-/// subresultant of $P$, $\partial_x P$.
-pub(super) struct Known<'a> {
-    pub fam: &'a ParamFamily,
-    pub p: &'a BiPoly,
-    pub disc: &'a Poly<Q>,
-    pub s1: &'a (Poly<Q>, Poly<Q>),
-}
 
 fn simple(z: Complex<f64>) -> EigenvalueAt {
     EigenvalueAt {
