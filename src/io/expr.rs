@@ -36,6 +36,7 @@
 pub use super::value::{ExprError, MAX_BITS, MAX_EXPONENT};
 pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
+use crate::field::scan::{identifier_end, number_end};
 use crate::field::{QuadraticField, Rational, parse_rational};
 use num_traits::{One, Zero};
 
@@ -130,22 +131,8 @@ fn lex(text: &str) -> Result<Vec<Token>, ExprError> {
             continue;
         }
         let tok = if c.is_ascii_digit() || c == '.' {
-            while i < cs.len() && (cs[i].is_ascii_digit() || cs[i] == '.') {
-                i += 1;
-            }
             // exponent only when digits follow: `2e` is 2 followed by the name e
-            if i < cs.len() && (cs[i] == 'e' || cs[i] == 'E') {
-                let mut j = i + 1;
-                if j < cs.len() && (cs[j] == '+' || cs[j] == '-') {
-                    j += 1;
-                }
-                if j < cs.len() && cs[j].is_ascii_digit() {
-                    i = j;
-                    while i < cs.len() && cs[i].is_ascii_digit() {
-                        i += 1;
-                    }
-                }
-            }
+            i = number_end(&cs, i, usize::MAX);
             let num = Tok::Num(cs[start..i].iter().collect());
             // `2i`, `0.5i`: implicit multiplication by `i`, bound exactly as the written-out
             // `2*i` (so `2i^2 = 2*i^2 = -2` and `1/2i = 1/2*i = i/2`)
@@ -168,9 +155,7 @@ fn lex(text: &str) -> Result<Vec<Token>, ExprError> {
             }
             num
         } else if c.is_ascii_alphabetic() || c == '_' {
-            while i < cs.len() && (cs[i].is_ascii_alphanumeric() || cs[i] == '_') {
-                i += 1;
-            }
+            i = identifier_end(&cs, i);
             Tok::Name(cs[start..i].iter().collect())
         } else if "+-*/^()".contains(c) {
             i += 1;

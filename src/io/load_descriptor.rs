@@ -95,9 +95,7 @@ fn descriptor_of<K: FromScalars>(f: &SystemFile, k: &K) -> Result<Descriptor<K>,
 pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError> {
     let name = path.display().to_string();
     let text = super::read_text(path)?;
-    let is_toml = path.extension().is_some_and(|x| x == "toml")
-        || (path.extension().is_none_or(|x| x != "json") && !text.trim_start().starts_with('{'));
-    let raw = if is_toml {
+    let raw = if super::read::SystemFormat::of(path, &text) == super::read::SystemFormat::Toml {
         super::raw::from_toml_text(&text, &name)?
     } else {
         super::raw::from_json_text(&text, &name)?

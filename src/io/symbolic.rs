@@ -91,16 +91,7 @@ impl SymbolicOptions {
 pub fn load_symbolic_path(path: &Path, opts: &SymbolicOptions) -> Result<LoadedSystem, InputError> {
     let shown = path.display().to_string();
     let text = super::read_text(path)?;
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    let format = match ext.as_deref() {
-        Some("toml") => SystemFormat::Toml,
-        Some("json") => SystemFormat::Json,
-        _ if text.trim_start().starts_with('{') => SystemFormat::Json,
-        _ => SystemFormat::Toml,
-    };
+    let format = SystemFormat::of(path, &text);
     load_symbolic_str(&text, format, &shown, opts)
 }
 
