@@ -301,7 +301,6 @@ impl MPoly {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use crate::mpoly::parse::abc as p;
     #[test]
     fn ring_ops() {
