@@ -181,20 +181,20 @@ fn matrixpencils_beelen_example_2_2_1() {
     let i1 = [1, 2, 3, 6, 7, 8, 9, 10, 11, 12, 13, 13, 14];
     let j1 = [4, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 16];
     let aval = [1, 1, 1, 1, 1, 1, 1, 1, 1, 2, 3, 1, 3];
-    for k in 0..i1.len() {
+    for ((i, j), v) in i1.iter().zip(j1).zip(aval) {
         mm.set(
-            i1[k] - 1,
-            j1[k] - 1,
-            exactlti::field::Rational::from_integer(aval[k].into()),
+            i - 1,
+            j - 1,
+            exactlti::field::Rational::from_integer(v.into()),
         );
     }
     let mut nn = Matrix::zeros(Q, 14, 16);
     let i1 = [1, 2, 3, 5, 6, 7, 10, 12, 13, 14];
     let j1 = [3, 5, 6, 8, 9, 10, 13, 14, 15, 16];
-    for k in 0..i1.len() {
+    for (i, j) in i1.iter().zip(j1) {
         nn.set(
-            i1[k] - 1,
-            j1[k] - 1,
+            i - 1,
+            j - 1,
             exactlti::field::Rational::from_integer(1.into()),
         );
     }

@@ -168,10 +168,11 @@ pub struct PencilStructure {
     pub structure: KroneckerStructure<Q>,
     /// Jordan form of the finite part: eigenvalues (algebraic numbers) and block sizes.
     pub finite: JordanForm,
-    /// The structure checks, the Jordan identities of the finite part, and the Toeplitz
-    /// ranks $\dim\ker T_k(\theta)$ of the pencil itself at every finite eigenvalue
-    /// $\theta$ (for an irrational $\theta$ through $A \otimes I - E \otimes C_f$ over
-    /// $\mathbb{Q}$, $C_f$ the companion matrix of its minimal polynomial) held exactly.
+    /// The structure's certificate and checks, the Jordan identities of the finite part
+    /// (the proof), and the Toeplitz cross-checks $\dim\ker T_k(\theta)$ of the pencil
+    /// itself at every finite eigenvalue $\theta$ (for an irrational $\theta$ through
+    /// $A \otimes I - E \otimes C_f$ over $\mathbb{Q}$, $C_f$ the companion matrix of its
+    /// minimal polynomial; modulo a prime as in [`verify`]) held.
     pub verified: bool,
 }
 

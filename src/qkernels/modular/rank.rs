@@ -22,7 +22,7 @@ pub fn reduce_rational(pr: &Prime, x: &Rational) -> Option<u64> {
         pr.reduce_limbs(s == Sign::Minus, &l)
     };
     let num = red(x.numer());
-    if x.denom() == &BigInt::from(1) {
+    if num_traits::One::is_one(x.denom()) {
         return Some(num);
     }
     let d = pr.inv(red(x.denom()))?;
