@@ -68,10 +68,10 @@ def test_sympy_radicals_give_a_quadratic_field():
     assert r.verified and r.nstates == 2
 
 
-def test_symbols_say_they_are_coming():
+def test_sympy_symbols_make_a_symbolic_system():
     k = sympy.Symbol("k")
-    with pytest.raises(NotImplementedError, match="symbolic parameters"):
-        exactlti.ss([[0, 1], [-k, 0]])
+    G = exactlti.ss([[0, 1], [-k, 0]])
+    assert G.is_symbolic and G.params == ("k",)
 
 
 def test_bad_input_is_a_value_error_with_the_cli_message():
@@ -89,11 +89,6 @@ def test_bad_input_is_a_value_error_with_the_cli_message():
 def test_params_are_exact():
     G = exactlti.ss([["-k/m"]], params={"k": "0.5", "m": Fraction(3)})
     assert G.A[0, 0] == Fraction(-1, 6)
-
-
-def test_tf_input_is_not_available_yet():
-    with pytest.raises(NotImplementedError, match="transfer-matrix input"):
-        exactlti.tf([1], [1, 2])
 
 
 def test_load_reads_the_sliding_masses():
