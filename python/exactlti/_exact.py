@@ -440,7 +440,12 @@ class RationalFunction:
         self.den = Polynomial(den, params)
 
     def to_sympy(self, var="s"):
-        return self.num.to_sympy(var) / self.den.to_sympy(var)
+        """``num/den`` in SymPy (with symbolic parameters: cancelled to one fraction of
+        polynomials in ``var`` and the parameters)."""
+        h = self.num.to_sympy(var) / self.den.to_sympy(var)
+        if self.num.params:
+            h = _sympy().cancel(h)
+        return h
 
     def __str__(self):
         if self.den.text == "1":

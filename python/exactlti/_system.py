@@ -503,6 +503,7 @@ def tf(num, den=None, params=None, name="tf"):
     doc = {"name": name, "G": rows}
     if params:
         doc["parameters"] = {str(k): entry_text(v, "parameter %s" % k, note) for k, v in params.items()}
+    note.symbols.discard("s")
     if note.symbols:
         raise _core.UnsupportedError(
             "tf: symbolic parameters (%s) in a transfer matrix are not supported yet; "
@@ -742,13 +743,15 @@ class MinrealResult:
     degree), ``original_order``, ``method``, ``T`` (the state map when the method gives
     one), ``verified`` (controllable, observable, equal Markov parameters, exactly) and,
     for ``method="jordan"``, ``stages`` (e.g. 20 -> 16 -> 8 for the sliding masses).
-    With symbolic parameters: ``conditions`` (see :class:`Conditions`).
+    With symbolic parameters: ``conditions`` (see :class:`Conditions`): the result holds
+    wherever none of them vanishes (here the Kalman decomposition separated the modes
+    ``-a`` and ``-1``, assuming ``a != 1``).
 
     >>> import exactlti
     >>> G = exactlti.ss([["-a", 0], [0, -1]], [[1], [0]], [[1, 1]], params={"a": None})
     >>> r = G.minreal()
     >>> r.nstates, r.verified, r.A.to_sympy(), r.conditions
-    (1, True, Matrix([[-a]]), Conditions())
+    (1, True, Matrix([[-a]]), Conditions(a - 1 != 0))
     """
 
     def __init__(self, d, original):
@@ -817,7 +820,12 @@ class MinrealResult:
 class ScbResult:
     """Special coordinate basis: ``A``..``D`` (SCB form), ``Gamma1``..``Gamma3``, ``U``,
     ``Y``, ``dims = (n_a, n_b, n_c, n_d)``, ``chains``, ``m0``, ``left_invertible``,
-    ``right_invertible``, ``zero_polynomial``, ``minimum_phase``, ``verified``."""
+    ``right_invertible``, ``zero_polynomial``, ``minimum_phase``, ``verified``: the
+    identities ``Gamma1 B_scb = B U Gamma3``, ``Gamma2 C_scb = Y^-1 C Gamma1``,
+    ``Gamma2 D_scb = Y^-1 D U Gamma3`` and ``Gamma1 A_scb = (A - B0 C0) Gamma1`` (``B0``,
+    ``C0``: the feedthrough part) hold exactly. With symbolic parameters also
+    ``conditions`` and ``zero_factors`` (``minimum_phase`` is then ``None``: it depends on
+    the parameters' signs)."""
 
     _MATS = ("A", "B", "C", "D", "Gamma1", "Gamma2", "Gamma3", "U", "Y")
 
@@ -870,7 +878,7 @@ class MnfResult:
         self.exists = d["exists"]
         self.reason = d["reason"]
         self.verified = d["verified"]
-        self.report = json.loads(d["report"])
+        self.report = json.loads(d["report"]) if "report" in d else None
         self.params = tuple(d.get("params", ()))
         self.conditions = Conditions(d.get("conditions", ()), self.params)
         for k in self._MATS:
@@ -929,11 +937,12 @@ class TransferMatrix:
     entry's expansion at infinity equals ``D, CB, CAB, ...``). With symbolic parameters:
     ``pole_polynomial``, ``pole_factors`` and ``conditions``.
 
-    >>> import exactlti
+    >>> import exactlti, sympy
     >>> G = exactlti.ss([[0, 1], ["-k/m", "-c/m"]], [[0], ["1/m"]], [[1, 0]],
     ...                 params={"m": None, "c": None, "k": None}).tf()
-    >>> G[0, 0].to_sympy()
-    1/(m*s**2 + c*s + k)
+    >>> c, k, m, s = sympy.symbols("c k m s")
+    >>> sympy.cancel(G[0, 0].to_sympy() * (m*s**2 + c*s + k))
+    1
     >>> G.mcmillan_degree, G.verified, G.conditions
     (2, True, Conditions(m != 0))
     """
@@ -1031,9 +1040,9 @@ class Factorization:
     ...                 params={"a": None, "b": None})
     >>> p = G.poles()
     >>> p.roots, p.complete
-    (['-b', '-a'], True)
+    (['-a', '-b'], True)
     >>> p.to_sympy()
-    [-b, -a]
+    [-a, -b]
     """
 
     def __init__(self, d):
@@ -1117,7 +1126,7 @@ class SymbolicJordanResult:
     >>> import exactlti
     >>> r = exactlti.jordan([[0, 1], ["-k", "-c"]], params={"k": None, "c": None})
     >>> r.complete, [str(e) for e in r.eigenvalues], r.verified
-    (False, ['root of s^2 + c*s + k'], True)
+    (False, ['root of c*s + s^2 + k'], True)
     """
 
     def __init__(self, d):

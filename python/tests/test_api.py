@@ -317,6 +317,8 @@ def test_panics_become_runtime_errors():
 
 
 def test_gil_is_released_during_work():
+    # another Python thread runs while the worker computes (with the GIL held it could
+    # not tick at all until the call returned)
     ticks = []
     stop = threading.Event()
 
@@ -327,18 +329,21 @@ def test_gil_is_released_during_work():
 
     th = threading.Thread(target=count)
     th.start()
-    _core._sleep_for_test(0.4)
+    _core._sleep_for_test(1.0)
+    during = len(ticks)
     stop.set()
     th.join()
-    assert len(ticks) > 20
+    assert during >= 3
 
 
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name == "nt", reason="POSIX signals")
 def test_ctrl_c_interrupts_exact_work():
+    # the worker would run 60 s; SIGINT after 0.2 s stops the call (bounds generous for a
+    # loaded machine: this is not a timing test)
     timer = threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     t = time.time()
     with pytest.raises(KeyboardInterrupt):
-        _core._sleep_for_test(5.0)
-    assert time.time() - t < 2.0
+        _core._sleep_for_test(60.0)
+    assert time.time() - t < 30.0
     timer.join()
