@@ -39,6 +39,16 @@ fn system_section<K: Field>(f: &SystemFile, t: &TypedSystem<K>) -> Report {
     } else {
         r = r.str("form", "state space");
     }
+    // the signals' names from the file (`inputs`, `outputs`, `states`)
+    for (key, names) in [
+        ("input_names", &f.signals.inputs),
+        ("output_names", &f.signals.outputs),
+        ("state_names", &f.signals.states),
+    ] {
+        if let Some(v) = names {
+            r = r.with(key, str_list(v.clone()));
+        }
+    }
     match t.ss.a.charpoly() {
         Ok(p) => r.str("charpoly", p.to_string_var("s")),
         Err(e) => r.str("charpoly", "").str("charpoly_error", e.to_string()),
