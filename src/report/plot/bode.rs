@@ -66,8 +66,20 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
         yr: phase_range(pl, ph),
         ..top.clone()
     };
-    svg.axes(&top, "frequency [Hz]", "magnitude [dB]", false);
-    svg.axes(&bot, "frequency [Hz]", "phase [deg]", true);
+    svg.axes_with(
+        &top,
+        "frequency [Hz]",
+        "magnitude [dB]",
+        false,
+        Some(&db_ticks(top.yr)),
+    );
+    svg.axes_with(
+        &bot,
+        "frequency [Hz]",
+        "phase [deg]",
+        true,
+        Some(&phase_ticks(bot.yr)),
+    );
     let mut legend = vec![];
     for (c, (mg, ph)) in mags.iter().zip(&phases).enumerate() {
         let col = COLORS[c % COLORS.len()];
@@ -85,6 +97,29 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
     }
     svg.legend(&top, &legend);
     svg.finish()
+}
+
+/// Ticks every `step` in `[lo, hi]`, `step` the first of `steps` giving at most `max` ticks.
+fn ticks_from(r: (f64, f64), steps: &[f64], max: usize) -> Vec<f64> {
+    let span = (r.1 - r.0).abs();
+    let step = steps
+        .iter()
+        .copied()
+        .find(|s| span / s <= max as f64)
+        .unwrap_or_else(|| (span / max as f64 / 360.0).ceil() * 360.0);
+    let first = (r.0 / step).ceil() as i64;
+    let last = (r.1 / step).floor() as i64;
+    (first..=last).map(|k| k as f64 * step).collect()
+}
+
+/// Phase ticks on multiples of 45, 90, 180 or 360 degrees (at most 8).
+pub fn phase_ticks(r: (f64, f64)) -> Vec<f64> {
+    ticks_from(r, &[15.0, 45.0, 90.0, 180.0, 360.0, 720.0], 8)
+}
+
+/// Magnitude ticks on 10, 20, 40, 50, 100 ... dB (at most 7).
+pub fn db_ticks(r: (f64, f64)) -> Vec<f64> {
+    ticks_from(r, &[1.0, 2.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0, 200.0], 7)
 }
 
 /// A phase range on multiples of 45 degrees.
@@ -116,6 +151,12 @@ mod tests {
             })
             .collect();
         let ph = unwrapped_phase_deg(&vals);
+        assert_eq!(
+            phase_ticks((-270.0, 0.0)),
+            vec![-270.0, -225.0, -180.0, -135.0, -90.0, -45.0, 0.0]
+        );
+        assert_eq!(db_ticks((-120.0, 20.0)).len(), 8);
+        assert_eq!(db_ticks((-35.0, 5.0)), vec![-30.0, -20.0, -10.0, 0.0]);
         assert!(ph.windows(2).all(|w| (w[1] - w[0]).abs() < 30.0));
         assert!((ph[199] + 270.0).abs() < 5.0 && ph[0].abs() < 5.0);
     }

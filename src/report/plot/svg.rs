@@ -117,6 +117,18 @@ impl Svg {
     /// Frame, grid, ticks and axis labels of a panel. `show_x_labels` false for upper
     /// panels that share the x axis with the one below.
     pub fn axes(&mut self, p: &Panel, xlabel: &str, ylabel: &str, show_x_labels: bool) {
+        self.axes_with(p, xlabel, ylabel, show_x_labels, None);
+    }
+
+    /// As [`Svg::axes`], with the y ticks given (`None`: 1-2-5 ticks).
+    pub fn axes_with(
+        &mut self,
+        p: &Panel,
+        xlabel: &str,
+        ylabel: &str,
+        show_x_labels: bool,
+        yticks: Option<&[f64]>,
+    ) {
         let s = &mut self.s;
         let _ = writeln!(
             s,
@@ -167,7 +179,16 @@ impl Svg {
                 }
             }
         }
-        let (ticks, step) = nice_ticks(p.yr.0, p.yr.1, 6);
+        let (ticks, step) = match yticks {
+            Some(t) => {
+                let step = t
+                    .windows(2)
+                    .map(|w| (w[1] - w[0]).abs())
+                    .fold(f64::INFINITY, f64::min);
+                (t.to_vec(), if step.is_finite() { step } else { 1.0 })
+            }
+            None => nice_ticks(p.yr.0, p.yr.1, 6),
+        };
         for t in ticks {
             let y = p.py(t);
             let col = if t == 0.0 { "#999" } else { "#e4e4e4" };
