@@ -234,12 +234,14 @@ pub enum Command {
     Step {
         /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
-        /// End time in seconds (default: about 7 time constants of the slowest pole).
+        /// End time in seconds (default: about 7 time constants of the slowest pole, rounded
+        /// up to 1, 2 or 5 x 10^k).
         #[arg(long, value_name = "SECONDS")]
         to: Option<f64>,
-        /// Number of evenly spaced times from 0 to --to (2 to 100000).
-        #[arg(long, default_value_t = 500, value_name = "N")]
-        points: usize,
+        /// Number of evenly spaced times from 0 to --to (2 to 100000; default: 20 per period
+        /// of the fastest mode, 500 to 5000).
+        #[arg(long, value_name = "N")]
+        points: Option<usize>,
         /// Write the plot (one panel per channel, names from the file) as SVG.
         #[arg(long, value_name = "OUT.svg")]
         svg: Option<PathBuf>,
@@ -255,12 +257,14 @@ pub enum Command {
     Impulse {
         /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
-        /// End time in seconds (default: about 7 time constants of the slowest pole).
+        /// End time in seconds (default: about 7 time constants of the slowest pole, rounded
+        /// up to 1, 2 or 5 x 10^k).
         #[arg(long, value_name = "SECONDS")]
         to: Option<f64>,
-        /// Number of evenly spaced times from 0 to --to (2 to 100000).
-        #[arg(long, default_value_t = 500, value_name = "N")]
-        points: usize,
+        /// Number of evenly spaced times from 0 to --to (2 to 100000; default: 20 per period
+        /// of the fastest mode, 500 to 5000).
+        #[arg(long, value_name = "N")]
+        points: Option<usize>,
         /// Write the plot (one panel per channel, names from the file) as SVG.
         #[arg(long, value_name = "OUT.svg")]
         svg: Option<PathBuf>,

@@ -13,7 +13,9 @@ use crate::report::plot::pzmap::{Point, pzmap_svg};
 use crate::report::plot::time::{TimePlot, time_response_svg};
 use crate::report::plot::{Response, logspace};
 use crate::report::{Report, Value};
-use crate::system::time_response::{ClosedFormResponse, default_horizon, time_grid};
+use crate::system::time_response::{
+    ClosedFormResponse, default_horizon, default_points, time_grid,
+};
 use nalgebra::DMatrix;
 use std::path::Path;
 
@@ -234,7 +236,7 @@ pub fn pzmap<K: Field + 'static>(
 pub struct TimeArgs<'a> {
     pub impulse: bool,
     pub to: Option<f64>,
-    pub points: usize,
+    pub points: Option<usize>,
     pub svg: Option<&'a Path>,
     pub csv: Option<&'a Path>,
     pub float_only: bool,
@@ -265,23 +267,14 @@ pub fn time_response<K: Field + 'static>(
     };
     let s = &t.ss;
     let (p, m) = (s.noutputs(), s.ninputs());
-    if !(2..=100_000).contains(&args.points) || args.to.is_some_and(|x| !(x.is_finite() && x > 0.0))
+    if args.points.is_some_and(|n| !(2..=100_000).contains(&n))
+        || args.to.is_some_and(|x| !(x.is_finite() && x > 0.0))
     {
         return Err(Failure {
             code: 2,
             message: format!(
-                "{what}: need 2 <= --points <= 100000 and --to > 0 (got {}, {:?})",
+                "{what}: need 2 <= --points <= 100000 and --to > 0 (got {:?}, {:?})",
                 args.points, args.to
-            ),
-        });
-    }
-    let values = args.points.saturating_mul(p).saturating_mul(m);
-    if values > MAX_TIME_VALUES {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{what}: {} points x {p} outputs x {m} inputs = {values} values; at most {MAX_TIME_VALUES}",
-                args.points
             ),
         });
     }
@@ -295,11 +288,19 @@ pub fn time_response<K: Field + 'static>(
         });
     }
     let [a, b, c, d] = abcd(t, path)?;
-    let t_end = match args.to {
-        Some(x) => x,
-        None => default_horizon(&float_poles(&a, path)?),
-    };
-    let times = time_grid(t_end, args.points);
+    let poles = float_poles(&a, path)?;
+    let t_end = args.to.unwrap_or_else(|| default_horizon(&poles));
+    let points = args.points.unwrap_or_else(|| default_points(t_end, &poles));
+    let values = points.saturating_mul(p).saturating_mul(m);
+    if values > MAX_TIME_VALUES {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{what}: {points} points x {p} outputs x {m} inputs = {values} values; at most {MAX_TIME_VALUES} (lower --points)"
+            ),
+        });
+    }
+    let times = time_grid(t_end, points);
     let e = |err| with_path(path, err);
     let fl = if args.impulse {
         float::impulse_response(&a, &b, &c, &d, &times)
@@ -326,10 +327,7 @@ pub fn time_response<K: Field + 'static>(
         None => fl.clone(),
     };
     let (title, ins, outs) = names(f, path, m, p);
-    let stable = {
-        let q = float_poles(&a, path)?;
-        q.iter().all(|z| z.0 < 0.0)
-    };
+    let stable = poles.iter().all(|z| z.0 < 0.0);
     let mut rep = Report::titled(format!("{what}: {title}"))
         .str("name", title.clone())
         .str(

@@ -230,8 +230,33 @@ pub fn default_horizon(poles: &[(f64, f64)]) -> f64 {
             t = t.max(3.0 * 2.0 * std::f64::consts::PI / im.abs());
         }
     }
-    // a slow pole beside fast oscillation: the fast part still gets a few periods only
-    if t == 0.0 { 10.0 } else { t.min(1e6) }
+    if t == 0.0 {
+        return 10.0;
+    }
+    // rounded up to 1, 2, 5 x 10^k for a readable time axis
+    let t = t.min(1e6);
+    let mag = 10f64.powf(t.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|s| s * mag)
+        .find(|s| *s >= t * (1.0 - 1e-12))
+        .unwrap_or(10.0 * mag)
+}
+
+/// Enough points on `[0, t_end]` for 20 per period of the fastest oscillation (and 20 per
+/// time constant of the fastest decay), between 500 and 5000.
+pub fn default_points(t_end: f64, poles: &[(f64, f64)]) -> usize {
+    let fastest = poles
+        .iter()
+        .map(|&(re, im)| (re.abs(), im.abs() / (2.0 * std::f64::consts::PI)))
+        .map(|(rate, freq)| rate.max(freq))
+        .fold(0.0, f64::max);
+    let want = (t_end * fastest * 20.0).ceil();
+    if want.is_finite() {
+        (want as usize).clamp(500, 5000)
+    } else {
+        5000
+    }
 }
 
 /// `points` evenly spaced times from 0 to `t_end`.

@@ -33,7 +33,10 @@ pub fn unwrapped_phase_deg(values: &[(f64, f64)]) -> Vec<f64> {
 pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<String>]) -> String {
     let p = resp.first().map_or(0, Vec::len);
     let m = resp.first().and_then(|r| r.first()).map_or(0, Vec::len);
-    let (w, h) = (840.0, 660.0);
+    let channels = p * m;
+    let cols = if channels > 1 { 2 } else { 1 };
+    let rows = channels.div_ceil(cols);
+    let (w, h) = (840.0, 650.0 + 18.0 * rows as f64);
     let mut svg = Svg::new(w, h, title);
     let lf = finite_range(freqs.iter().map(|f| f.max(1e-300).log10()));
     let mut mags = vec![];
@@ -95,7 +98,7 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
             .unwrap_or_else(|| format!("G{}{}", i + 1, j + 1));
         legend.push((name, col.to_string(), false));
     }
-    svg.legend(&top, &legend);
+    svg.legend_at(bot.x0, bot.y0 + bot.h + 56.0, cols, 360.0, &legend);
     svg.finish()
 }
 

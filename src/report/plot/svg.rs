@@ -52,7 +52,9 @@ pub fn fmt_tick(x: f64, step: f64) -> String {
         return "0".into();
     }
     if x.abs() >= 1e5 || x.abs() < 1e-3 {
-        return format!("{x:.1e}");
+        // as many mantissa digits as the step needs: 8e-5, 1.2e-4
+        let digits = (x.abs().log10().floor() - step.abs().log10().floor()).clamp(0.0, 6.0);
+        return format!("{x:.*e}", digits as usize);
     }
     let dec = (-step.log10().floor()).max(0.0) as usize;
     let s = format!("{x:.dec$}");
@@ -345,6 +347,36 @@ impl Svg {
                 yy - 4.0,
                 x + 30.0,
                 yy,
+                esc(label)
+            );
+        }
+    }
+
+    /// A legend laid out in `cols` columns of width `colw` from `(x, y)` (outside the
+    /// panels, so it hides no curve): (label, colour, dashed).
+    pub fn legend_at(
+        &mut self,
+        x: f64,
+        y: f64,
+        cols: usize,
+        colw: f64,
+        items: &[(String, String, bool)],
+    ) {
+        let cols = cols.max(1);
+        for (k, (label, color, dash)) in items.iter().enumerate() {
+            let (cx, cy) = (x + colw * (k % cols) as f64, y + 18.0 * (k / cols) as f64);
+            let d = if *dash {
+                r#" stroke-dasharray="6,3""#
+            } else {
+                ""
+            };
+            let _ = writeln!(
+                self.s,
+                r#"<line x1="{cx:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{color}" stroke-width="2.5"{d}/><text x="{:.1}" y="{cy:.1}">{}</text>"#,
+                cy - 4.0,
+                cx + 22.0,
+                cy - 4.0,
+                cx + 28.0,
                 esc(label)
             );
         }

@@ -58,8 +58,8 @@ pub fn time_response_svg(tp: &TimePlot<'_>) -> String {
                 panel.x0 + panel.w / 2.0,
                 panel.y0 - 6.0,
                 "middle",
-                12.5,
-                &format!("{}: {} \u{2192} {}", tp.what, tp.inputs[j], tp.outputs[i]),
+                12.0,
+                &format!("{} \u{2192} {}", tp.inputs[j], tp.outputs[i]),
             );
             let pts: Vec<(f64, f64)> = tp.times.iter().copied().zip(ys).collect();
             svg.polyline(&panel, &pts, COLORS[0], 1.8, false);
