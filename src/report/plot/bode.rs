@@ -9,7 +9,8 @@ pub fn unwrapped_phase_deg(values: &[(f64, f64)]) -> Vec<f64> {
     let mut out = Vec::with_capacity(values.len());
     let mut offset = 0.0;
     let mut prev: Option<f64> = None;
-    for &(re, im) in values {
+    let mag = |k: usize| values[k].0.hypot(values[k].1);
+    for (k, &(re, im)) in values.iter().enumerate() {
         let raw = im.atan2(re).to_degrees();
         if let Some(p) = prev {
             let mut d = raw + offset - p;
@@ -20,6 +21,17 @@ pub fn unwrapped_phase_deg(values: &[(f64, f64)]) -> Vec<f64> {
             while d < -180.0 {
                 offset += 360.0;
                 d += 360.0;
+            }
+            // a jump of exactly 180 degrees (an undamped pole or zero between two grid
+            // points, the response real on both sides): down across a resonance peak (a
+            // pole, the magnitude rising into it), up across a notch (a zero)
+            if (d.abs() - 180.0).abs() < 1e-6 {
+                let rising = k < 2 || mag(k - 1) >= mag(k - 2);
+                if rising && d > 0.0 {
+                    offset -= 360.0;
+                } else if !rising && d < 0.0 {
+                    offset += 360.0;
+                }
             }
         }
         let v = raw + offset;
@@ -142,6 +154,21 @@ fn phase_range(lo: f64, hi: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn undamped_pole_and_zero_turn_the_phase_the_right_way() {
+        // (s^2 + 4)/(s^2 + 1) on the imaginary axis: real, a pole at w = 1, a zero at w = 2
+        let vals: Vec<(f64, f64)> = (1..400)
+            .map(|k| {
+                let w = 0.01 * k as f64 + 0.003;
+                ((4.0 - w * w) / (1.0 - w * w), 0.0)
+            })
+            .collect();
+        let ph = unwrapped_phase_deg(&vals);
+        assert!(ph[0].abs() < 1e-9);
+        assert!((ph[150] + 180.0).abs() < 1e-9, "{}", ph[150]);
+        assert!(ph[398].abs() < 1e-9, "{}", ph[398]);
+    }
 
     #[test]
     fn phase_unwraps_through_180() {

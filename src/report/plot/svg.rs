@@ -106,12 +106,13 @@ impl Svg {
             s,
             r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="DejaVu Sans, Arial, sans-serif" font-size="12">"#
         );
+        let _ = writeln!(s, "<title>{}</title>", esc(title));
         let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
         let _ = writeln!(
             s,
             r#"<text x="{}" y="22" text-anchor="middle" font-size="15" font-weight="bold">{}</text>"#,
             w / 2.0,
-            esc(title)
+            esc(&fit(title, w - 20.0, 9.0))
         );
         Svg { s, w, h }
     }
@@ -397,6 +398,24 @@ impl Svg {
     }
 }
 
+/// `t` cut to about `width` pixels at `px` pixels per character, ending in "...", cut
+/// after the middle of the text where possible (the end, e.g. ": Bode plot", is kept).
+pub fn fit(t: &str, width: f64, px: f64) -> String {
+    let max = (width / px).floor().max(8.0) as usize;
+    let n = t.chars().count();
+    if n <= max {
+        return t.to_string();
+    }
+    // keep a suffix after the last ": " (what the plot is) when there is one
+    let (head, tail) = match t.rfind(": ") {
+        Some(k) if t[k..].chars().count() + 8 < max => (&t[..k], &t[k..]),
+        _ => (t, ""),
+    };
+    let keep = max - tail.chars().count() - 3;
+    let cut: String = head.chars().take(keep).collect();
+    format!("{}...{tail}", cut.trim_end())
+}
+
 /// `(min, max)` of the finite values.
 pub fn finite_range(xs: impl IntoIterator<Item = f64>) -> (f64, f64) {
     xs.into_iter()
@@ -418,5 +437,9 @@ mod tests {
         assert_eq!(fmt_tick(2.5, 0.5), "2.5");
         assert_eq!(fmt_tick(-10.0, 5.0), "-10");
         assert_eq!(nice_range(-0.3, 9.7), (-2.0, 10.0));
+        assert_eq!(fit("short: x", 800.0, 9.0), "short: x");
+        let long = format!("{}: Bode plot", "a".repeat(200));
+        let f = fit(&long, 800.0, 9.0);
+        assert!(f.ends_with("...: Bode plot") && f.chars().count() <= 88);
     }
 }
