@@ -273,8 +273,9 @@ pub fn time_response<K: Field + 'static>(
         return Err(Failure {
             code: 2,
             message: format!(
-                "{what}: need 2 <= --points <= 100000 and --to > 0 (got {:?}, {:?})",
-                args.points, args.to
+                "{what}: need 2 <= --points <= 100000 and --to > 0 seconds (got --points {}, --to {})",
+                args.points.map_or("default".into(), |n| n.to_string()),
+                args.to.map_or("default".into(), |x| x.to_string())
             ),
         });
     }
