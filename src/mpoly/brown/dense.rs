@@ -24,19 +24,17 @@ impl Zp {
     pub fn mul(self, a: u64, b: u64) -> u64 {
         a * b % self.p
     }
-    pub fn pow(self, mut a: u64, mut e: u64) -> u64 {
-        let mut r = 1;
-        while e > 0 {
-            if e & 1 == 1 {
-                r = self.mul(r, a);
-            }
-            a = self.mul(a, a);
-            e >>= 1;
-        }
-        r
-    }
+    /// Inverse of a nonzero residue (extended Euclid).
     pub fn inv(self, a: u64) -> u64 {
-        self.pow(a, self.p - 2)
+        let (mut t, mut nt) = (0i64, 1i64);
+        let (mut r, mut nr) = (self.p as i64, a as i64);
+        while nr != 0 {
+            let q = r / nr;
+            (t, nt) = (nt, t - q * nt);
+            (r, nr) = (nr, r - q * nr);
+        }
+        debug_assert_eq!(r, 1, "inverse of a non-unit");
+        if t < 0 { (t + self.p as i64) as u64 } else { t as u64 }
     }
     /// `c mod p` in `[0, p)`.
     pub fn reduce(self, c: &BigInt) -> u64 {
