@@ -268,22 +268,20 @@ impl Dense {
             }
         }
     }
-    /// Nonzero terms as (exponent vector, coefficient).
-    pub fn terms(&self) -> Vec<(Vec<usize>, u64)> {
+    /// Calls `f(exponents, coefficient)` for every nonzero term.
+    pub fn for_each_term(&self, mut f: impl FnMut(&[usize], u64)) {
         let k = self.dims.len();
-        let mut out = Vec::new();
+        let mut e = [0usize; super::super::MAX_VARS];
         for (i, &c) in self.c.iter().enumerate() {
             if c != 0 {
-                let mut e = vec![0; k];
                 let mut r = i;
                 for j in (0..k).rev() {
                     e[j] = r % self.dims[j];
                     r /= self.dims[j];
                 }
-                out.push((e, c));
+                f(&e[..k], c);
             }
         }
-        out
     }
     /// The same polynomial in another shape; `None` if a term does not fit.
     pub fn reshape(&self, dims: &[usize]) -> Option<Dense> {
@@ -291,13 +289,15 @@ impl Dense {
             return Some(self.clone());
         }
         let mut out = Dense::zeros(dims.to_vec());
-        for (e, c) in self.terms() {
+        let mut fits = true;
+        self.for_each_term(|e, c| {
             if e.iter().zip(dims).any(|(a, d)| a >= d) {
-                return None;
+                fits = false;
+            } else {
+                out.c[index(dims, e)] = c;
             }
-            out.c[index(dims, &e)] = c;
-        }
-        Some(out)
+        });
+        fits.then_some(out)
     }
 }
 
@@ -314,14 +314,19 @@ pub(super) fn div_dense(zp: Zp, a: &Dense, d: &Dense) -> Option<Dense> {
     let dims = &a.dims;
     let mut dt: Vec<(usize, u64)> = Vec::new();
     let mut ddeg = vec![0usize; dims.len()];
-    for (e, c) in d.terms() {
+    let mut fits = true;
+    d.for_each_term(|e, c| {
         if e.iter().zip(dims).any(|(x, n)| x >= n) {
-            return None;
+            fits = false;
+            return;
         }
-        for (m, x) in ddeg.iter_mut().zip(&e) {
+        for (m, x) in ddeg.iter_mut().zip(e) {
             *m = (*m).max(*x);
         }
-        dt.push((index(dims, &e), c));
+        dt.push((index(dims, e), c));
+    });
+    if !fits {
+        return None;
     }
     let &(pd, cd) = dt.last()?;
     dt.pop();

@@ -169,10 +169,13 @@ pub fn gcd_brown(f: &MPoly, g: &MPoly) -> Option<MPoly> {
     }
     let n = f.nvars();
     let (df, dg) = (f.degrees(), g.degrees());
-    let used: Vec<usize> = (0..n).filter(|&i| df[i] > 0 || dg[i] > 0).collect();
+    // dense variable order: the largest degree first (the main variable of the univariate
+    // gcds), the smallest last (evaluated first, fewest points)
+    let mut used: Vec<usize> = (0..n).filter(|&i| df[i] > 0 || dg[i] > 0).collect();
     if used.is_empty() {
         return None;
     }
+    used.sort_by_key(|&i| std::cmp::Reverse(df[i].max(dg[i])));
     let (fdims, fidx) = layout(f, &used);
     let (gdims, gidx) = layout(g, &used);
     if fdims.iter().product::<usize>() > MAX_DENSE || gdims.iter().product::<usize>() > MAX_DENSE
@@ -180,7 +183,12 @@ pub fn gcd_brown(f: &MPoly, g: &MPoly) -> Option<MPoly> {
         return None;
     }
     let hdims: Vec<usize> = fdims.iter().zip(&gdims).map(|(a, b)| *a.min(b)).collect();
-    let (lf, lg) = (f.lc(), g.lc());
+    // leading coefficients in the dense (lex) order
+    let lead_coeff = |p: &MPoly, idx: &[usize]| {
+        let k = (0..idx.len()).max_by_key(|&k| idx[k]).unwrap_or(0);
+        p.terms()[k].1.clone()
+    };
+    let (lf, lg) = (lead_coeff(f, &fidx), lead_coeff(g, &gidx));
     let gamma = lf.abs().gcd(&lg.abs());
     // the trials: 0 = gcd, 1 = cofactor of f, 2 = cofactor of g
     let trial = |which: usize, cand: MPoly| -> Option<MPoly> {
