@@ -131,3 +131,20 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn gcd_with_a_monomial_factor_in_both() {
+    // regression (proptest seed): f = x (x a b + c^2), g = x - c^2, h = x; the heuristic's
+    // cofactor route once returned a proper divisor of the content (a c^2 for a b c^2)
+    let f = p("x^2*a*b + x*c^2");
+    let (g, h) = (p("x - c^2"), p("x"));
+    let (fg, fh) = (f.mul(&g), f.mul(&h));
+    assert_eq!(gcd(&fg, &fh), f);
+    check(&fg, &fh, &f);
+    let r = p("x^2*a^2*b^2*c^2 + x*a*b*c^4");
+    assert_eq!(exactlti::mpoly::gcd::content_in(&r, 0), p("a*b*c^2"));
+    let (m1, m2) = (p("a*b*c^4"), p("a^2*b^2*c^2"));
+    assert_eq!(gcd(&m1, &m2), p("a*b*c^2"));
+    assert_eq!(gcd(&m2, &m1), p("a*b*c^2"));
+    assert_eq!(gcd(&p("961*a*b"), &p("a^2*b^2")), p("a*b"));
+}

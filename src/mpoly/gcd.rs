@@ -147,11 +147,13 @@ fn heu(f: &MPoly, g: &MPoly) -> Option<MPoly> {
                 let cff = interpolate(&cffe, &x, v);
                 if !cff.is_zero()
                     && let Some(h) = f.div_exact(&cff)
+                    // h = f / cff as it stands, NOT its primitive part: dividing out an
+                    // integer content here can turn a proper divisor into one that
+                    // divides both (gcd(961ab, a^2b^2) at xi = 31 gave a), and the
+                    // correctness argument (Char, Geddes, Gonnet) covers only h itself
+                    && g.div_exact(&h).is_some()
                 {
-                    let h = h.primitive_part();
-                    if g.div_exact(&h).is_some() && f.div_exact(&h).is_some() {
-                        return Some(h.scale(&c));
-                    }
+                    return Some(h.abs_lc().scale(&c));
                 }
             }
         }
