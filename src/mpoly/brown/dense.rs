@@ -34,7 +34,11 @@ impl Zp {
             (r, nr) = (nr, r - q * nr);
         }
         debug_assert_eq!(r, 1, "inverse of a non-unit");
-        if t < 0 { (t + self.p as i64) as u64 } else { t as u64 }
+        if t < 0 {
+            (t + self.p as i64) as u64
+        } else {
+            t as u64
+        }
     }
     /// `c mod p` in `[0, p)`.
     pub fn reduce(self, c: &BigInt) -> u64 {
@@ -169,7 +173,10 @@ pub(super) struct Dense {
 impl Dense {
     pub fn zeros(dims: Vec<usize>) -> Dense {
         let n = dims.iter().product();
-        Dense { dims, c: vec![0; n] }
+        Dense {
+            dims,
+            c: vec![0; n],
+        }
     }
     /// Length of a fiber in the last variable.
     pub fn flen(&self) -> usize {
@@ -412,5 +419,94 @@ impl Interp {
     }
     pub fn clear(&mut self) {
         self.c.iter_mut().for_each(|x| *x = 0);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    const ZP: Zp = Zp { p: 2_147_483_647 };
+
+    /// Dense from (exponents, coefficient) pairs.
+    fn dense(dims: &[usize], t: &[(&[usize], u64)]) -> Dense {
+        let mut d = Dense::zeros(dims.to_vec());
+        for (e, c) in t {
+            d.c[index(dims, e)] = *c;
+        }
+        d
+    }
+
+    /// Naive dense product (the oracle).
+    fn mul(a: &Dense, b: &Dense, dims: &[usize]) -> Dense {
+        let mut out = Dense::zeros(dims.to_vec());
+        a.for_each_term(|ea, ca| {
+            b.for_each_term(|eb, cb| {
+                let e: Vec<usize> = ea.iter().zip(eb).map(|(x, y)| x + y).collect();
+                let i = index(dims, &e);
+                out.c[i] = ZP.add(out.c[i], ZP.mul(ca, cb));
+            })
+        });
+        out
+    }
+
+    #[test]
+    fn inverse_and_univariate_gcd() {
+        for a in [1u64, 2, 3, 12345, 2_147_483_646] {
+            assert_eq!(ZP.mul(a, ZP.inv(a)), 1);
+        }
+        // (x + 1)(x + 2) and (x + 1)(x + 3): gcd x + 1, exact cofactors
+        let f = umul(ZP, &[1, 1], &[2, 1]);
+        let g = umul(ZP, &[1, 1], &[3, 1]);
+        assert_eq!(ugcd(ZP, &f, &g), vec![1, 1]);
+        let (q, exact) = udivrem(ZP, &f, &[1, 1]);
+        assert!(exact);
+        assert_eq!(umul(ZP, &q, &[1, 1]), f);
+        assert!(!udivrem(ZP, &f, &[5, 1]).1);
+    }
+
+    #[test]
+    fn kronecker_division_is_exact_or_refused() {
+        // a = (x y + 3 y^2 + 1)(2 x + y + 5) in shape (3, 4)
+        let dims = [3, 4];
+        let u = dense(&[2, 3], &[(&[1, 1], 1), (&[0, 2], 3), (&[0, 0], 1)]);
+        let w = dense(&[2, 2], &[(&[1, 0], 2), (&[0, 1], 1), (&[0, 0], 5)]);
+        let a = mul(&u, &w, &dims);
+        let q = div_dense(ZP, &a, &w).expect("w divides a");
+        assert_eq!(mul(&q, &w, &dims), a);
+        assert_eq!(q.reshape(&[2, 3]).unwrap(), u);
+        let q = div_dense(ZP, &a, &u).expect("u divides a");
+        assert_eq!(mul(&q, &u, &dims), a);
+        // a non-divisor: the remainder is not zero
+        let z = dense(&[2, 2], &[(&[1, 0], 1), (&[0, 1], 1), (&[0, 0], 1)]);
+        assert!(div_dense(ZP, &a, &z).is_none());
+        // a quotient that would wrap around the shape is refused: y^3 / x in shape (2, 4)
+        let y3 = dense(&[2, 4], &[(&[0, 3], 1), (&[1, 0], 1)]);
+        assert!(div_dense(ZP, &y3, &dense(&[2, 1], &[(&[1, 0], 1)])).is_none());
+    }
+
+    #[test]
+    fn newton_interpolation_and_contents() {
+        // interpolate f(y) = 3 y^2 + 2 y + 1 (one fiber) from three points, then check
+        // stability at a fourth
+        let f = |y: u64| ueval(ZP, &[1, 2, 3], y);
+        let mut it = Interp::new(1, 4);
+        let mut m: Up = vec![1];
+        let mut changed = Vec::new();
+        for b in [5u64, 7, 11, 13] {
+            let s = ZP.inv(ueval(ZP, &m, b));
+            changed.push(it.add(ZP, &[f(b)], b, &m, s));
+            m = umul(ZP, &m, &[ZP.sub(0, b), 1]);
+        }
+        assert_eq!(changed, vec![true, true, true, false]);
+        assert_eq!(&it.c[..3], &[1, 2, 3]);
+        // content in the last variable of (y + 1) * (x + y^2) is y + 1
+        let d = dense(
+            &[2, 4],
+            &[(&[1, 0], 1), (&[1, 1], 1), (&[0, 2], 1), (&[0, 3], 1)],
+        );
+        assert_eq!(d.content_last(ZP), vec![1, 1]);
+        let pp = d.pp_last(ZP);
+        assert_eq!(pp, dense(&[2, 4], &[(&[1, 0], 1), (&[0, 2], 1)]));
+        assert_eq!(pp.eval_last(ZP, 2).c, vec![4, 1]);
     }
 }

@@ -178,8 +178,7 @@ pub fn gcd_brown(f: &MPoly, g: &MPoly) -> Option<MPoly> {
     used.sort_by_key(|&i| std::cmp::Reverse(df[i].max(dg[i])));
     let (fdims, fidx) = layout(f, &used);
     let (gdims, gidx) = layout(g, &used);
-    if fdims.iter().product::<usize>() > MAX_DENSE || gdims.iter().product::<usize>() > MAX_DENSE
-    {
+    if fdims.iter().product::<usize>() > MAX_DENSE || gdims.iter().product::<usize>() > MAX_DENSE {
         return None;
     }
     let hdims: Vec<usize> = fdims.iter().zip(&gdims).map(|(a, b)| *a.min(b)).collect();
@@ -194,9 +193,7 @@ pub fn gcd_brown(f: &MPoly, g: &MPoly) -> Option<MPoly> {
     let trial = |which: usize, cand: MPoly| -> Option<MPoly> {
         let cand = cand.primitive_part();
         match which {
-            0 => {
-                (f.div_exact(&cand).is_some() && g.div_exact(&cand).is_some()).then_some(cand)
-            }
+            0 => (f.div_exact(&cand).is_some() && g.div_exact(&cand).is_some()).then_some(cand),
             1 => {
                 let h = f.div_exact(&cand)?.primitive_part();
                 g.div_exact(&h).map(|_| h)
@@ -215,7 +212,10 @@ pub fn gcd_brown(f: &MPoly, g: &MPoly) -> Option<MPoly> {
         if zp.reduce(&lf) == 0 || zp.reduce(&lg) == 0 {
             continue;
         }
-        let (fp, gp) = (to_dense(zp, f, &fdims, &fidx), to_dense(zp, g, &gdims, &gidx));
+        let (fp, gp) = (
+            to_dense(zp, f, &fdims, &fidx),
+            to_dense(zp, g, &gdims, &gidx),
+        );
         let Some((mut h, x, y)) = rec::gcd_rec(zp, &fp, &gp, &mut rng) else {
             continue;
         };

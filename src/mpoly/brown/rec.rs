@@ -98,7 +98,11 @@ pub(super) fn gcd_rec(zp: Zp, a: &Dense, b: &Dense, rng: &mut u64) -> Option<Tri
             d.scale(zp, s);
             Some(d)
         };
-        Some((gf, cofactor(x, &ca, a.dims[v])?, cofactor(y, &cb, b.dims[v])?))
+        Some((
+            gf,
+            cofactor(x, &ca, a.dims[v])?,
+            cofactor(y, &cb, b.dims[v])?,
+        ))
     };
     loop {
         if bad > MAX_BAD {
@@ -168,10 +172,8 @@ pub(super) fn gcd_rec(zp: Zp, a: &Dense, b: &Dense, rng: &mut u64) -> Option<Tri
                             Some((gc, x, y))
                         })
                     }
-                    1 => try_cofactor(zp, &ia.to_dense(pa), &ap, &bp)
-                        .map(|(gc, x, y)| (gc, x, y)),
-                    _ => try_cofactor(zp, &ib.to_dense(pb), &bp, &ap)
-                        .map(|(gc, y, x)| (gc, x, y)),
+                    1 => try_cofactor(zp, &ia.to_dense(pa), &ap, &bp).map(|(gc, x, y)| (gc, x, y)),
+                    _ => try_cofactor(zp, &ib.to_dense(pb), &bp, &ap).map(|(gc, y, x)| (gc, x, y)),
                 };
                 if let Some((gc, x, y)) = t {
                     let gc = gc.reshape(&gdims)?;
