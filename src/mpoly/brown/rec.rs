@@ -172,7 +172,7 @@ pub(super) fn gcd_rec(zp: Zp, a: &Dense, b: &Dense, rng: &mut u64) -> Option<Tri
                             Some((gc, x, y))
                         })
                     }
-                    1 => try_cofactor(zp, &ia.to_dense(pa), &ap, &bp).map(|(gc, x, y)| (gc, x, y)),
+                    1 => try_cofactor(zp, &ia.to_dense(pa), &ap, &bp),
                     _ => try_cofactor(zp, &ib.to_dense(pb), &bp, &ap).map(|(gc, y, x)| (gc, x, y)),
                 };
                 if let Some((gc, x, y)) = t {
