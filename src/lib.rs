@@ -40,26 +40,31 @@
 //! [`io::LoadedSystem::run`]. Reports (text, JSON, LaTeX) are built in [`report`], apart
 //! from the math.
 //!
-//! ## Layers
+//! ## Layers (acyclic)
 //!
-//! Each floor imports only floors below it (`python3 scripts/layers.py` checks the import
-//! graph), lowest first:
+//! Each floor imports only its own floor and the floors below it. `python3 scripts/layers.py`
+//! checks the import graph: no cycle between modules, none between files, no arrow up a
+//! floor. The floors, lowest first, as the script numbers them:
 //!
-//! 1. [`error`], [`rng`]: leaves;
-//! 2. [`field`]: the [`field::Field`] trait, Q, quadratic and complex fields;
-//! 3. [`qkernels`]: integer/rational matrix kernels on `BigRational` (modular, Bareiss, the
-//!    integer product), which [`matrix`] dispatches to;
-//! 4. [`poly`]: polynomials over a field, integer polynomials and their factorization;
+//! 0. [`error`], [`rng`]: leaves;
+//! 1. [`field`]: the [`field::Field`] trait, Q, quadratic and complex fields, the one
+//!    tokenizer for exact literals ([`field::scan`]); beside it [`qkernels`]:
+//!    integer/rational matrix kernels on `BigRational` (modular, Bareiss, the integer
+//!    product), which [`matrix`] dispatches to;
+//! 2. [`poly`]: polynomials over a field, integer polynomials and their factorization;
 //!    beside it [`mpoly`] (multivariate) and [`ratfunc`] (rational functions);
-//! 5. [`algebraic`]: number fields, algebraic numbers, root isolation (needs `Poly<Q>` and
+//! 3. [`algebraic`]: number fields, algebraic numbers, root isolation (needs `Poly<Q>` and
 //!    irreducibility, so it sits above `poly`);
-//! 6. [`matrix`] → [`jordan`] → [`system`] → [`realization`] → [`structure`] (`system` and
-//!    `structure` need only `matrix` and below; [`pencil`] sits on `jordan`);
-//! 7. [`float`]: the nalgebra backend for cross-checks, on `matrix` (feature `float`);
-//! 8. [`io`] (system files), [`report`] (text/JSON/LaTeX), [`cli`] on top (feature `cli`).
-//!
-//! `scripts/layers.py` finds no module-level cycle and no arrow up a floor; `study` (one-
-//! parameter families) sits with `io`, under `report`.
+//! 4. [`matrix`];
+//! 5. [`jordan`], then [`pencil`] (Kronecker structure of pencils, on `jordan`);
+//! 6. [`system`] (needs only `matrix` and below);
+//! 7. [`realization`];
+//! 8. [`structure`];
+//! 9. [`float`]: the nalgebra backend for cross-checks (feature `float`; it may use any
+//!    floor below `io`);
+//! 10. [`io`] (system files), then `study` (one-parameter families read from files);
+//! 11. [`report`] (text/JSON/LaTeX);
+//! 12. [`cli`] (feature `cli`).
 //!
 //! ## Features
 //!

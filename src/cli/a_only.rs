@@ -2,12 +2,13 @@
 //! system in standard form: `linalg` on an m x n matrix, and both on an improper or singular
 //! descriptor system (whose `A` is still a matrix). The report says so in a `note`.
 
-use super::commands::a_command;
-use super::common::with_path;
+use super::common::{linalg_report, with_path};
 use super::{Command, Failure, Outcome};
-use crate::field::Q;
+use crate::error::Error;
+use crate::field::{Field, Q};
 use crate::io::system_file::read_matrix_key;
 use crate::io::{FromScalars, Ground, InputError, read_system_file};
+use crate::matrix::Matrix;
 use crate::report::Value;
 use std::path::Path;
 
@@ -52,7 +53,44 @@ pub(super) fn fallback(cmd: &Command, path: &Path, err: InputError) -> Result<Ou
         #[allow(unreachable_patterns)]
         _ => Err(with_path(
             path,
-            crate::error::Error::Unsupported(format!("this command over {ground}")),
+            Error::Unsupported(format!("this command over {ground}")),
         )),
     }
+}
+
+/// The commands that need only the matrix `A` (`jordan`, `linalg`); `None` for the others.
+pub(super) fn a_command<K: Field + 'static>(
+    cmd: &Command,
+    a: &Matrix<K>,
+    path: &Path,
+) -> Option<Result<Outcome, Failure>> {
+    let e = |err| with_path(path, err);
+    Some(match cmd {
+        Command::Jordan { real, expand, .. } => jordan_any(a).map_err(e).and_then(|jf| {
+            if *real {
+                let rf = jf.real_form_with(*expand).map_err(e)?;
+                // a real form left in complex coordinates (exact = false) is not checked
+                Ok(Outcome::new(rf.report(), !rf.exact || rf.verified))
+            } else {
+                Ok(Outcome::new(jf.report(), jf.verified))
+            }
+        }),
+        Command::Linalg { op, .. } => linalg_report(*op, a, path).map(Outcome::plain),
+        _ => return None,
+    })
+}
+
+/// The exact Jordan form over the fields that have one (Q and quadratic fields).
+fn jordan_any<K: Field + 'static>(a: &Matrix<K>) -> crate::Result<crate::jordan::JordanForm> {
+    let any = a as &dyn std::any::Any;
+    if let Some(q) = any.downcast_ref::<Matrix<Q>>() {
+        return crate::jordan::jordan(q);
+    }
+    if let Some(k) = any.downcast_ref::<Matrix<crate::field::QuadraticField>>() {
+        return crate::jordan::jordan_quadratic(k);
+    }
+    Err(Error::Unsupported(format!(
+        "Jordan form over {}",
+        a.field()
+    )))
 }

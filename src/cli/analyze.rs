@@ -17,6 +17,11 @@ fn failed(title: &str, e: &Error) -> Value {
     Value::Obj(Report::titled(title).str("error", e.to_string()))
 }
 
+/// A section that does not apply to this system: the title and why (never silently absent).
+fn skipped(title: &str, why: impl Into<String>) -> Value {
+    Value::Obj(Report::titled(title).str("not_applicable", why))
+}
+
 fn system_section<K: Field>(f: &SystemFile, t: &TypedSystem<K>) -> Report {
     let mut r = Report::titled("system")
         .str("file", f.path.clone())
@@ -33,6 +38,16 @@ fn system_section<K: Field>(f: &SystemFile, t: &TypedSystem<K>) -> Report {
         r = r.str("form", "second order");
     } else {
         r = r.str("form", "state space");
+    }
+    // the signals' names from the file (`inputs`, `outputs`, `states`)
+    for (key, names) in [
+        ("input_names", &f.signals.inputs),
+        ("output_names", &f.signals.outputs),
+        ("state_names", &f.signals.states),
+    ] {
+        if let Some(v) = names {
+            r = r.with(key, str_list(v.clone()));
+        }
     }
     match t.ss.a.charpoly() {
         Ok(p) => r.str("charpoly", p.to_string_var("s")),
@@ -91,15 +106,39 @@ pub fn analyze<K: Field + 'static>(f: &SystemFile, t: &TypedSystem<K>) -> Result
             Ok(z) => r.push("zeros", Value::Obj(z.report())),
             Err(e) => r.push("zeros", failed("invariant zeros", &e)),
         };
+    } else {
+        let why = format!(
+            "the system has {} inputs and {} outputs",
+            s.ninputs(),
+            s.noutputs()
+        );
+        r.push("realization", skipped("realization", why.clone()));
+        r.push(
+            "structure",
+            skipped("special coordinate basis", why.clone()),
+        );
+        r.push("zeros", skipped("invariant zeros", why));
     }
     if let Some(q) = as_rational(t) {
-        verified &= rational_sections(f, q, &mut r);
+        verified &= rational_sections(q, &mut r);
+    } else {
+        let why = format!(
+            "needs rational matrices; this file's entries lie in {}",
+            f.ground
+        );
+        r.push(
+            "jordan",
+            skipped("eigenvalues and Jordan form", why.clone()),
+        );
+        r.push("pbh", skipped("PBH tests", why.clone()));
+        r.push("modes", skipped("modal table", why));
     }
+    verified &= mechanical_section(f, t, &mut r);
     Ok(Outcome::new(r, verified))
 }
 
 /// The sections that need rational matrices; returns the conjunction of their checks.
-fn rational_sections(f: &SystemFile, t: &TypedSystem<Q>, r: &mut Report) -> bool {
+fn rational_sections(t: &TypedSystem<Q>, r: &mut Report) -> bool {
     let mut verified = true;
     let s = &t.ss;
     match crate::jordan::jordan(&s.a) {
@@ -142,21 +181,40 @@ fn rational_sections(f: &SystemFile, t: &TypedSystem<Q>, r: &mut Report) -> bool
             ),
             Err(e) => r.push("pbh", failed(title, &e)),
         };
+    } else {
+        r.push("pbh", skipped("PBH tests", "the system has no inputs"));
     }
     match realization::modal_table(&s.a) {
         Ok(m) => r.push("modes", Value::Obj(m.report())),
         Err(e) => r.push("modes", failed("modal table", &e)),
     };
+    verified
+}
+
+/// The mechanical normal form (over any exact field); returns whether a form found verified.
+fn mechanical_section<K: Field>(f: &SystemFile, t: &TypedSystem<K>, r: &mut Report) -> bool {
+    use crate::structure::mechanical::{DEFAULT_MAX_CANDIDATES, mechanical_normal_form_in};
+    let s = &t.ss;
+    let mut verified = true;
     // mechanical normal form: applies to first-order systems with inputs and an even
     // number of states (files already in second-order form are mechanical by input)
     if !f.is_second_order() && s.ninputs() > 0 && s.nstates().is_multiple_of(2) {
-        match crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d) {
+        match mechanical_normal_form_in(None, &s.a, &s.b, &s.c, &s.d, DEFAULT_MAX_CANDIDATES) {
             Ok(m) => {
                 verified &= !m.exists || m.verified;
                 r.push("mechanical", Value::Obj(m.report()))
             }
             Err(e) => r.push("mechanical", failed("mechanical normal form", &e)),
         };
+    } else {
+        let why = if f.is_second_order() {
+            "the file is already in second-order form"
+        } else if s.ninputs() == 0 {
+            "the system has no inputs"
+        } else {
+            "an odd number of states has no second-order form"
+        };
+        r.push("mechanical", skipped("mechanical normal form", why));
     }
     verified
 }

@@ -4,17 +4,16 @@
 //! [`FileCommand::visit`]; the file's field is decided at one point,
 //! [`crate::io::LoadedSystem::run`].
 
-use super::common::{linalg_report, with_path};
+use super::a_only::a_command;
+use super::common::with_path;
 use super::symbolic::Handled;
 use super::{Command, Failure, MethodArg, Outcome};
-use crate::error::Error;
 use crate::field::{Field, Q};
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{
     LoadedSystem, SystemFile, SystemFormat, SystemVisitor, TypedSystem, as_rational,
     load_system_path, load_system_str,
 };
-use crate::matrix::Matrix;
 use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, sections};
 use std::path::Path;
@@ -203,28 +202,6 @@ fn mnf<K: Field>(s: &crate::system::StateSpace<K>, path: &Path) -> Result<Outcom
     Ok(Outcome::new(m.report(), !m.exists || m.verified))
 }
 
-/// The commands that need only the matrix `A` (`jordan`, `linalg`); `None` for the others.
-pub(super) fn a_command<K: Field + 'static>(
-    cmd: &Command,
-    a: &Matrix<K>,
-    path: &Path,
-) -> Option<Result<Outcome, Failure>> {
-    let e = |err| with_path(path, err);
-    Some(match cmd {
-        Command::Jordan { real, expand, .. } => jordan_any(a).map_err(e).and_then(|jf| {
-            if *real {
-                let rf = jf.real_form_with(*expand).map_err(e)?;
-                // a real form left in complex coordinates (exact = false) is not checked
-                Ok(Outcome::new(rf.report(), !rf.exact || rf.verified))
-            } else {
-                Ok(Outcome::new(jf.report(), jf.verified))
-            }
-        }),
-        Command::Linalg { op, .. } => linalg_report(*op, a, path).map(Outcome::plain),
-        _ => return None,
-    })
-}
-
 /// The system over Q, or exit 2 naming the field when the file's entries lie in a larger one.
 fn needs_rational<'t, K: Field + 'static>(
     f: &SystemFile,
@@ -238,21 +215,6 @@ fn needs_rational<'t, K: Field + 'static>(
             f.path, f.ground
         ),
     })
-}
-
-/// The exact Jordan form over the fields that have one (Q and quadratic fields).
-fn jordan_any<K: Field + 'static>(a: &Matrix<K>) -> crate::Result<crate::jordan::JordanForm> {
-    let any = a as &dyn std::any::Any;
-    if let Some(q) = any.downcast_ref::<Matrix<Q>>() {
-        return crate::jordan::jordan(q);
-    }
-    if let Some(k) = any.downcast_ref::<Matrix<crate::field::QuadraticField>>() {
-        return crate::jordan::jordan_quadratic(k);
-    }
-    Err(Error::Unsupported(format!(
-        "Jordan form over {}",
-        a.field()
-    )))
 }
 
 fn minreal<K: Field + 'static>(

@@ -55,3 +55,30 @@ pub(super) fn linalg_report<K: Field>(
         }
     })
 }
+
+/// The report with matrices as lists of exact strings: over $\mathbb{Q}(p)$ there are no
+/// `approx` fields (the contract: only when every symbol has a value).
+pub(super) fn exact_only(r: Report) -> Report {
+    fn value(v: Value) -> Value {
+        match v {
+            Value::Matrix(m) => Value::List(
+                m.exact
+                    .into_iter()
+                    .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
+                    .collect(),
+            ),
+            Value::List(xs) => Value::List(xs.into_iter().map(value).collect()),
+            Value::Obj(r) => Value::Obj(exact_only(r)),
+            v => v,
+        }
+    }
+    Report {
+        title: r.title,
+        items: r
+            .items
+            .into_iter()
+            .filter(|(k, _)| !k.contains("approx"))
+            .map(|(k, v)| (k, value(v)))
+            .collect(),
+    }
+}

@@ -357,15 +357,8 @@ pub fn check<K: Field>(
                 .int("float", fz.zeros.len())
                 .str("float_truth", claim_str(ez == fz.zeros.len(), fz.truth));
             // values: each float zero against the nearest exact zero (certified roots)
-            let rational: Option<Vec<crate::field::Rational>> = z
-                .polynomial
-                .coeffs()
-                .iter()
-                .map(|c| z.polynomial.field().to_rational(c))
-                .collect();
-            if let Some(cs) = rational
-                && let Ok(rs) =
-                    crate::algebraic::roots(&crate::poly::Poly::new(crate::field::Q, cs))
+            if let Some(zq) = z.polynomial.to_rational_poly()
+                && let Ok(rs) = crate::algebraic::roots(&zq)
             {
                 let exact: Vec<(f64, f64)> = rs.iter().map(|(r, _)| r.approx()).collect();
                 let worst = fz

@@ -9,6 +9,7 @@
 //! rational functions, $\det T \ne 0$).
 
 use super::Outcome;
+use super::common::exact_only;
 use crate::error::Result;
 use crate::field::Field;
 use crate::jordan::params::{ParamJordanForm, jordan_params};
@@ -122,32 +123,6 @@ pub fn jordan_outcome(a: &Matrix<RatFuncField>) -> Result<Outcome> {
     Ok(Outcome::new(report(&jf), jf.verified))
 }
 
-/// Matrices as rows of exact strings, `approx` keys dropped (recursively).
-fn exact_rows(r: Report) -> Report {
-    fn value(v: Value) -> Value {
-        match v {
-            Value::Matrix(m) => Value::List(
-                m.exact
-                    .into_iter()
-                    .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
-                    .collect(),
-            ),
-            Value::List(xs) => Value::List(xs.into_iter().map(value).collect()),
-            Value::Obj(r) => Value::Obj(exact_rows(r)),
-            v => v,
-        }
-    }
-    Report {
-        title: r.title,
-        items: r
-            .items
-            .into_iter()
-            .filter(|(k, _)| !k.contains("approx"))
-            .map(|(k, v)| (k, value(v)))
-            .collect(),
-    }
-}
-
 /// `mnf FILE` over $\mathbb{Q}(p)$: [`crate::structure::mechanical::mechanical_normal_form_in`]
 /// on $(A, B, C, D)$ in a fresh field. The report is the rational one with the theorem's
 /// checks under `existence_checks` and `conditions` the polynomials in the parameters the
@@ -179,7 +154,7 @@ pub fn mnf_outcome(
         k.record_condition(f.t.det()?.num());
     }
     let conds = k.conditions_strings()?;
-    let mut r = exact_rows(m.report());
+    let mut r = exact_only(m.report());
     for item in r.items.iter_mut() {
         if item.0 == "conditions" {
             item.0 = "existence_checks".to_string();

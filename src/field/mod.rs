@@ -21,6 +21,24 @@ pub mod complex;
 pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
 pub mod rational;
+pub mod scan;
+
+/// $x^e$ by repeated squaring from `one` ($x^0 = $ `one`), `mul` the product: at most
+/// $2 \log_2 e$ products. Serves scalars, polynomials and matrices alike.
+pub fn pow_by_squaring<T: Clone>(x: &T, mut e: u32, one: T, mul: impl Fn(&T, &T) -> T) -> T {
+    let mut base = x.clone();
+    let mut acc = one;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = mul(&acc, &base);
+        }
+        e >>= 1;
+        if e > 0 {
+            base = mul(&base, &base);
+        }
+    }
+    acc
+}
 pub use quadratic::{Quadratic, QuadraticField};
 pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
 

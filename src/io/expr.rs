@@ -33,18 +33,13 @@
 //! | [`eval_expr`] | the exact value of one expression over given parameters |
 //! | [`is_parameter_name`] | whether a string may name a parameter |
 
-pub(crate) use super::value::Value;
+pub use super::value::{ExprError, MAX_BITS, MAX_EXPONENT};
+pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
+use crate::field::scan::{identifier_end, number_end};
 use crate::field::{QuadraticField, Rational, parse_rational};
 use num_traits::{One, Zero};
-use std::fmt;
 
-/// Largest accepted |exponent| in `x^n`.
-pub const MAX_EXPONENT: u32 = 10_000;
-/// Largest accepted size (bits of a numerator or denominator) of any intermediate value.
-/// num-bigint's gcd (binary, quadratic) makes one operation on numbers of this size cost
-/// tens of milliseconds at most; beyond it an input could stall for seconds.
-pub const MAX_BITS: u64 = 1 << 14;
 /// Longest accepted number literal (characters).
 pub const MAX_NUMBER_LEN: usize = 4_000;
 /// Largest accepted nesting depth of parentheses and unary operators.
@@ -52,24 +47,6 @@ pub const MAX_DEPTH: usize = 256;
 
 /// Names that are never parameters.
 pub const RESERVED: [&str; 3] = ["i", "sqrt", "pi"];
-
-/// An invalid expression: what is wrong, with a 1-based character position where useful.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ExprError {
-    pub msg: String,
-}
-
-impl fmt::Display for ExprError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.msg)
-    }
-}
-
-impl std::error::Error for ExprError {}
-
-pub(crate) fn err<T>(msg: impl Into<String>) -> Result<T, ExprError> {
-    Err(ExprError { msg: msg.into() })
-}
 
 /// Is `s` usable as a parameter name: an identifier `[A-Za-z_][A-Za-z0-9_]*` that is not
 /// one of [`RESERVED`]?
@@ -154,22 +131,8 @@ fn lex(text: &str) -> Result<Vec<Token>, ExprError> {
             continue;
         }
         let tok = if c.is_ascii_digit() || c == '.' {
-            while i < cs.len() && (cs[i].is_ascii_digit() || cs[i] == '.') {
-                i += 1;
-            }
             // exponent only when digits follow: `2e` is 2 followed by the name e
-            if i < cs.len() && (cs[i] == 'e' || cs[i] == 'E') {
-                let mut j = i + 1;
-                if j < cs.len() && (cs[j] == '+' || cs[j] == '-') {
-                    j += 1;
-                }
-                if j < cs.len() && cs[j].is_ascii_digit() {
-                    i = j;
-                    while i < cs.len() && cs[i].is_ascii_digit() {
-                        i += 1;
-                    }
-                }
-            }
+            i = number_end(&cs, i, usize::MAX);
             let num = Tok::Num(cs[start..i].iter().collect());
             // `2i`, `0.5i`: implicit multiplication by `i`, bound exactly as the written-out
             // `2*i` (so `2i^2 = 2*i^2 = -2` and `1/2i = 1/2*i = i/2`)
@@ -192,9 +155,7 @@ fn lex(text: &str) -> Result<Vec<Token>, ExprError> {
             }
             num
         } else if c.is_ascii_alphabetic() || c == '_' {
-            while i < cs.len() && (cs[i].is_ascii_alphanumeric() || cs[i] == '_') {
-                i += 1;
-            }
+            i = identifier_end(&cs, i);
             Tok::Name(cs[start..i].iter().collect())
         } else if "+-*/^()".contains(c) {
             i += 1;

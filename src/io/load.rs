@@ -49,12 +49,7 @@ use crate::system::{Descriptor, StateSpace};
 use std::any::Any;
 use std::path::Path;
 
-/// The text format of a system file.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SystemFormat {
-    Json,
-    Toml,
-}
+pub use super::read::SystemFormat;
 
 /// A system over its ground field `K`, as given and (when possible) in standard form.
 #[derive(Clone, Debug)]

@@ -9,11 +9,12 @@
 //! | [`load_descriptor_path`] | a file → [`LoadedDescriptor`] |
 //! | [`LoadedDescriptor::run`] | calls a [`DescriptorVisitor`] over the concrete field |
 
+use super::transfer_key::{eval_params, realize_g, scalar_text};
 use super::{FromScalars, Ground, InputError, SystemFile};
 use crate::field::{Field, Q, QuadraticField, Rational};
 use crate::io::transfer_expr::parse_rational_function;
 use crate::matrix::Matrix;
-use crate::realization::{TransferRealization, realize_transfer};
+use crate::realization::TransferRealization;
 use crate::system::Descriptor;
 use crate::system::transfer::TransferMatrix;
 use std::path::Path;
@@ -94,9 +95,7 @@ fn descriptor_of<K: FromScalars>(f: &SystemFile, k: &K) -> Result<Descriptor<K>,
 pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError> {
     let name = path.display().to_string();
     let text = super::read_text(path)?;
-    let is_toml = path.extension().is_some_and(|x| x == "toml")
-        || (path.extension().is_none_or(|x| x != "json") && !text.trim_start().starts_with('{'));
-    let raw = if is_toml {
+    let raw = if super::read::SystemFormat::of(path, &text) == super::read::SystemFormat::Toml {
         super::raw::from_toml_text(&text, &name)?
     } else {
         super::raw::from_json_text(&text, &name)?
@@ -119,10 +118,7 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
         Ground::Rational => DescriptorAny::Rational(descriptor_of(&f, &Q)?),
         Ground::Quadratic(k) => DescriptorAny::Quadratic(descriptor_of(&f, k)?),
         Ground::RatFunc(k) => {
-            return Err(InputError::file(
-                &name,
-                super::symbolic::refusal("this command", k),
-            ));
+            return Err(InputError::file(&name, super::refusal("this command", k)));
         }
     };
     Ok(LoadedDescriptor {
@@ -132,36 +128,6 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
         transfer: None,
         pencil: None,
     })
-}
-
-/// Parameters of a `G` or pencil file, evaluated in order as rational constants.
-fn eval_params(
-    name: &str,
-    params: Option<&serde_json::Value>,
-) -> Result<Vec<(String, Rational)>, InputError> {
-    let mut values: Vec<(String, Rational)> = Vec::new();
-    if let Some(serde_json::Value::Object(ps)) = params {
-        for (k, v) in ps {
-            let text = scalar_text(v).ok_or_else(|| {
-                InputError::key(
-                    name,
-                    "parameters",
-                    format!("{k}: expected a number or a string"),
-                )
-            })?;
-            let f = parse_rational_function(&text, &values)
-                .map_err(|e| InputError::key(name, "parameters", format!("{k}: {e}")))?;
-            if f.num.deg() > 0 || f.den.deg() > 0 {
-                return Err(InputError::key(
-                    name,
-                    "parameters",
-                    format!("{k}: must be a constant"),
-                ));
-            }
-            values.push((k.clone(), f.num.coeff(0) / f.den.coeff(0)));
-        }
-    }
-    Ok(values)
 }
 
 /// A rational matrix from a JSON key (constant entries).
@@ -247,14 +213,6 @@ fn rectangular_pencil(
     }))
 }
 
-fn scalar_text(v: &serde_json::Value) -> Option<String> {
-    match v {
-        serde_json::Value::String(s) => Some(s.clone()),
-        serde_json::Value::Number(n) => Some(n.to_string()),
-        _ => None,
-    }
-}
-
 fn load_g(
     name: &str,
     g: &serde_json::Value,
@@ -269,49 +227,4 @@ fn load_g(
         transfer: Some((tm, r)),
         pencil: None,
     })
-}
-
-/// The transfer matrix of key `G` (parameters evaluated first) and its exact minimal
-/// realization.
-///
-/// # Errors
-/// An entry that does not parse (named by row and column), ragged or empty rows, a
-/// realization failure.
-pub(crate) fn realize_g(
-    name: &str,
-    g: &serde_json::Value,
-    params: Option<&serde_json::Value>,
-) -> Result<(TransferMatrix<Q>, TransferRealization<Q>), InputError> {
-    let values = eval_params(name, params)?;
-    let rows = g
-        .as_array()
-        .ok_or_else(|| InputError::key(name, "G", "expected a list of rows"))?;
-    let mut entries = Vec::new();
-    for (i, row) in rows.iter().enumerate() {
-        let row = row
-            .as_array()
-            .ok_or_else(|| InputError::key(name, "G", format!("row {} is not a list", i + 1)))?;
-        let mut out = Vec::new();
-        for (j, x) in row.iter().enumerate() {
-            let text = scalar_text(x).ok_or_else(|| {
-                InputError::entry(name, "G", i + 1, j + 1, "expected a number or a string")
-            })?;
-            out.push(
-                parse_rational_function(&text, &values)
-                    .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
-            );
-        }
-        entries.push(out);
-    }
-    let ncols = entries.first().map_or(0, |r| r.len());
-    if entries.is_empty() || ncols == 0 || entries.iter().any(|r| r.len() != ncols) {
-        return Err(InputError::key(
-            name,
-            "G",
-            "rows must be non-empty and of equal length",
-        ));
-    }
-    let tm = TransferMatrix { entries };
-    let r = realize_transfer(&tm).map_err(|e| InputError::key(name, "G", e.to_string()))?;
-    Ok((tm, r))
 }

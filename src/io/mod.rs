@@ -97,6 +97,11 @@ impl ExactScalar {
     }
 }
 
+/// The one-line refusal of a command that does not yet work over $\mathbb{Q}(p)$.
+pub fn refusal(what: &str, k: &crate::ratfunc::RatFuncField) -> String {
+    format!("symbolic parameters: {what} is not yet supported over {k}; give values with --at")
+}
+
 /// The one field all values of a system file live in.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Ground {

@@ -9,6 +9,30 @@ use std::path::Path;
 /// 1 MiB; every expression entry is itself bounded (see [`super::expr`]).
 pub const MAX_FILE_BYTES: u64 = 64 << 20;
 
+/// The text format of a system file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SystemFormat {
+    Json,
+    Toml,
+}
+
+impl SystemFormat {
+    /// The format of the file `path` with contents `text`: by the extension (`.toml`,
+    /// `.json`, any case), else by the first character (`{` means JSON).
+    pub fn of(path: &Path, text: &str) -> SystemFormat {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("toml") => SystemFormat::Toml,
+            Some("json") => SystemFormat::Json,
+            _ if text.trim_start().starts_with('{') => SystemFormat::Json,
+            _ => SystemFormat::Toml,
+        }
+    }
+}
+
 /// The text of `path`, at most [`MAX_FILE_BYTES`] bytes.
 ///
 /// # Errors

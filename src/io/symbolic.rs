@@ -27,6 +27,7 @@
 use super::keys::{check_keys, keys_of};
 use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
 use super::raw::{Raw, from_json_text, from_toml_text};
+pub use super::refusal;
 use super::system_file::validate;
 use super::{Ground, InputError, SignalNames, SystemFile, SystemFormat, split_matlab_matrix};
 use crate::matrix::Matrix;
@@ -83,11 +84,6 @@ impl SymbolicOptions {
     }
 }
 
-/// The one-line refusal of a command that does not yet work over $\mathbb{Q}(p)$.
-pub fn refusal(what: &str, k: &RatFuncField) -> String {
-    format!("symbolic parameters: {what} is not yet supported over {k}; give values with --at")
-}
-
 /// Reads a system file with symbolic parameters (format as [`super::read_system_file`]).
 ///
 /// # Errors
@@ -95,16 +91,7 @@ pub fn refusal(what: &str, k: &RatFuncField) -> String {
 pub fn load_symbolic_path(path: &Path, opts: &SymbolicOptions) -> Result<LoadedSystem, InputError> {
     let shown = path.display().to_string();
     let text = super::read_text(path)?;
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    let format = match ext.as_deref() {
-        Some("toml") => SystemFormat::Toml,
-        Some("json") => SystemFormat::Json,
-        _ if text.trim_start().starts_with('{') => SystemFormat::Json,
-        _ => SystemFormat::Toml,
-    };
+    let format = SystemFormat::of(path, &text);
     load_symbolic_str(&text, format, &shown, opts)
 }
 

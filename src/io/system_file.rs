@@ -129,15 +129,9 @@ impl SystemFile {
 pub fn read_system_file(path: &Path) -> Result<SystemFile, InputError> {
     let shown = path.display().to_string();
     let text = super::read_text(path)?;
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    match ext.as_deref() {
-        Some("toml") => parse_system_toml(&text, &shown),
-        Some("json") => parse_system_json(&text, &shown),
-        _ if text.trim_start().starts_with('{') => parse_system_json(&text, &shown),
-        _ => parse_system_toml(&text, &shown),
+    match super::read::SystemFormat::of(path, &text) {
+        super::read::SystemFormat::Json => parse_system_json(&text, &shown),
+        super::read::SystemFormat::Toml => parse_system_toml(&text, &shown),
     }
 }
 

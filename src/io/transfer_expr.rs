@@ -15,7 +15,8 @@
 //! length $\le 10^4$ characters.
 
 use crate::error::{Error, Result};
-use crate::field::{Q, Rational, parse_rational};
+use crate::field::scan::Cursor;
+use crate::field::{Q, Rational};
 use crate::poly::Poly;
 use crate::system::transfer::RationalFunction;
 use num_traits::{Signed, ToPrimitive};
@@ -49,22 +50,16 @@ pub fn parse_rational_function(
         });
     }
     let mut p = P {
-        s: text.as_bytes(),
-        pos: 0,
-        depth: 0,
+        c: Cursor::new(text),
         params,
     };
     let v = p.expr()?;
-    if p.peek().is_some() {
-        return Err(p.err("unexpected character"));
-    }
+    p.c.finish()?;
     Ok(v)
 }
 
 struct P<'a> {
-    s: &'a [u8],
-    pos: usize,
-    depth: usize,
+    c: Cursor<'a>,
     params: &'a [(String, Rational)],
 }
 
@@ -76,17 +71,7 @@ fn cst(q: Rational) -> RF {
 
 impl P<'_> {
     fn err(&self, msg: &str) -> Error {
-        Error::Parse {
-            line: 1,
-            col: self.pos + 1,
-            msg: msg.into(),
-        }
-    }
-    fn peek(&mut self) -> Option<u8> {
-        while self.pos < self.s.len() && self.s[self.pos].is_ascii_whitespace() {
-            self.pos += 1;
-        }
-        self.s.get(self.pos).copied()
+        self.c.err(msg)
     }
     fn check(&self, v: RF) -> Result<RF> {
         if v.num.deg() > MAX_DEG || v.den.deg() > MAX_DEG {
@@ -96,8 +81,7 @@ impl P<'_> {
     }
     fn expr(&mut self) -> Result<RF> {
         let mut acc = self.term()?;
-        while let Some(c @ (b'+' | b'-')) = self.peek() {
-            self.pos += 1;
+        while let Some(c) = self.c.eat_any(b"+-") {
             let t = self.term()?;
             acc = if c == b'+' {
                 add(&acc, &t)
@@ -109,8 +93,7 @@ impl P<'_> {
     }
     fn term(&mut self) -> Result<RF> {
         let mut acc = self.unary()?;
-        while let Some(c @ (b'*' | b'/')) = self.peek() {
-            self.pos += 1;
+        while let Some(c) = self.c.eat_any(b"*/") {
             let t = self.unary()?;
             acc = if c == b'*' {
                 self.check(mul(&acc, &t))?
@@ -127,38 +110,35 @@ impl P<'_> {
         Ok(acc)
     }
     fn unary(&mut self) -> Result<RF> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            return Err(self.err("nesting too deep"));
-        }
-        let v = match self.peek() {
+        self.c.enter(MAX_DEPTH)?;
+        let v = match self.c.peek() {
             Some(b'-') => {
-                self.pos += 1;
+                self.c.pos += 1;
                 neg(&self.unary()?)
             }
             Some(b'+') => {
-                self.pos += 1;
+                self.c.pos += 1;
                 self.unary()?
             }
             _ => self.power()?,
         };
-        self.depth -= 1;
+        self.c.depth -= 1;
         Ok(v)
     }
     fn power(&mut self) -> Result<RF> {
         let base = self.atom()?;
-        if self.peek() != Some(b'^') {
+        if self.c.peek() != Some(b'^') {
             return Ok(base);
         }
-        self.pos += 1;
-        let at = self.pos;
+        self.c.pos += 1;
+        let at = self.c.pos;
         let e = self.unary()?;
         let exp = (e.den.is_one() && e.num.deg() == 0)
             .then(|| e.num.coeff(0))
             .filter(|q| q.is_integer() && q.abs() <= Rational::from_integer(MAX_EXP.into()))
             .and_then(|q| q.to_integer().to_i64());
         let Some(k) = exp else {
-            self.pos = at;
+            self.c.pos = at;
             return Err(self.err("exponent must be an integer constant with |e| <= 64"));
         };
         let (b, k) = if k < 0 {
@@ -175,61 +155,29 @@ impl P<'_> {
         self.check(RationalFunction::new(b.num.pow(k), b.den.pow(k)))
     }
     fn atom(&mut self) -> Result<RF> {
-        match self.peek() {
+        match self.c.peek() {
             Some(b'(') => {
-                self.pos += 1;
+                self.c.pos += 1;
                 let v = self.expr()?;
-                if self.peek() != Some(b')') {
-                    return Err(self.err("expected ')'"));
-                }
-                self.pos += 1;
+                self.c.expect(b')')?;
                 Ok(v)
             }
             Some(c) if c.is_ascii_digit() || c == b'.' => {
-                let start = self.pos;
-                while self.pos < self.s.len()
-                    && (self.s[self.pos].is_ascii_digit() || self.s[self.pos] == b'.')
-                {
-                    self.pos += 1;
-                }
-                // exponent part of a literal: 1e-3
-                if self.pos < self.s.len() && matches!(self.s[self.pos], b'e' | b'E') {
-                    let save = self.pos;
-                    self.pos += 1;
-                    if self.pos < self.s.len() && matches!(self.s[self.pos], b'+' | b'-') {
-                        self.pos += 1;
-                    }
-                    let d0 = self.pos;
-                    while self.pos < self.s.len() && self.s[self.pos].is_ascii_digit() {
-                        self.pos += 1;
-                    }
-                    if self.pos == d0 || self.pos - d0 > 4 {
-                        self.pos = save;
-                    }
-                }
-                let text = std::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
-                let q = parse_rational(text).map_err(|m| Error::Parse {
-                    line: 1,
-                    col: start + 1,
-                    msg: m,
-                })?;
+                // at most 4 exponent digits: `1e12345` is 1 followed by a name
+                let start = self.c.pos;
+                let q = self.c.number(4).map_err(|m| self.c.err_at(start, &m))?;
                 Ok(cst(q))
             }
             Some(c) if c.is_ascii_alphabetic() || c == b'_' => {
-                let start = self.pos;
-                while self.pos < self.s.len()
-                    && (self.s[self.pos].is_ascii_alphanumeric() || self.s[self.pos] == b'_')
-                {
-                    self.pos += 1;
-                }
-                let name = std::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
+                let start = self.c.pos;
+                let name = self.c.identifier();
                 if name == "s" {
                     return Ok(RationalFunction::new(Poly::x(Q), Poly::one(Q)));
                 }
                 match self.params.iter().find(|(n, _)| n == name) {
                     Some((_, v)) => Ok(cst(v.clone())),
                     None => {
-                        self.pos = start;
+                        self.c.pos = start;
                         Err(self.err(&format!("unknown name '{name}' (the variable is s)")))
                     }
                 }

@@ -7,8 +7,11 @@
 
 use super::raw::Raw;
 use super::{ExactScalar, InputError, InputErrorKind, MatrixEntries};
-use crate::field::Q;
+use crate::field::{Q, Rational};
+use crate::io::transfer_expr::parse_rational_function;
 use crate::matrix::Matrix;
+use crate::realization::{TransferRealization, realize_transfer};
+use crate::system::transfer::TransferMatrix;
 
 fn entries(m: &Matrix<Q>) -> MatrixEntries {
     MatrixEntries {
@@ -45,7 +48,7 @@ pub(crate) fn realize_g_key(
         .with_kind(InputErrorKind::Shape));
     }
     let params = get("parameters").map(Raw::to_json);
-    let (_, r) = super::load_descriptor::realize_g(file, &g.to_json(), params.as_ref())?;
+    let (_, r) = realize_g(file, &g.to_json(), params.as_ref())?;
     let Some(ss) = r.state_space else {
         return Err(InputError::key(
             file,
@@ -66,4 +69,88 @@ pub(crate) fn realize_g_key(
         ("C", entries(&ss.c)),
         ("D", entries(&ss.d)),
     ])
+}
+
+/// Parameters of a `G` or pencil file, evaluated in order as rational constants.
+pub(crate) fn eval_params(
+    name: &str,
+    params: Option<&serde_json::Value>,
+) -> Result<Vec<(String, Rational)>, InputError> {
+    let mut values: Vec<(String, Rational)> = Vec::new();
+    if let Some(serde_json::Value::Object(ps)) = params {
+        for (k, v) in ps {
+            let text = scalar_text(v).ok_or_else(|| {
+                InputError::key(
+                    name,
+                    "parameters",
+                    format!("{k}: expected a number or a string"),
+                )
+            })?;
+            let f = parse_rational_function(&text, &values)
+                .map_err(|e| InputError::key(name, "parameters", format!("{k}: {e}")))?;
+            if f.num.deg() > 0 || f.den.deg() > 0 {
+                return Err(InputError::key(
+                    name,
+                    "parameters",
+                    format!("{k}: must be a constant"),
+                ));
+            }
+            values.push((k.clone(), f.num.coeff(0) / f.den.coeff(0)));
+        }
+    }
+    Ok(values)
+}
+
+/// The text of a JSON scalar: a string as it is, a number as written.
+pub(crate) fn scalar_text(v: &serde_json::Value) -> Option<String> {
+    match v {
+        serde_json::Value::String(s) => Some(s.clone()),
+        serde_json::Value::Number(n) => Some(n.to_string()),
+        _ => None,
+    }
+}
+
+/// The transfer matrix of key `G` (parameters evaluated first) and its exact minimal
+/// realization.
+///
+/// # Errors
+/// An entry that does not parse (named by row and column), ragged or empty rows, a
+/// realization failure.
+pub(crate) fn realize_g(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+) -> Result<(TransferMatrix<Q>, TransferRealization<Q>), InputError> {
+    let values = eval_params(name, params)?;
+    let rows = g
+        .as_array()
+        .ok_or_else(|| InputError::key(name, "G", "expected a list of rows"))?;
+    let mut entries = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let row = row
+            .as_array()
+            .ok_or_else(|| InputError::key(name, "G", format!("row {} is not a list", i + 1)))?;
+        let mut out = Vec::new();
+        for (j, x) in row.iter().enumerate() {
+            let text = scalar_text(x).ok_or_else(|| {
+                InputError::entry(name, "G", i + 1, j + 1, "expected a number or a string")
+            })?;
+            out.push(
+                parse_rational_function(&text, &values)
+                    .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
+            );
+        }
+        entries.push(out);
+    }
+    let ncols = entries.first().map_or(0, |r| r.len());
+    if entries.is_empty() || ncols == 0 || entries.iter().any(|r| r.len() != ncols) {
+        return Err(InputError::key(
+            name,
+            "G",
+            "rows must be non-empty and of equal length",
+        ));
+    }
+    let tm = TransferMatrix { entries };
+    let r = realize_transfer(&tm).map_err(|e| InputError::key(name, "G", e.to_string()))?;
+    Ok((tm, r))
 }

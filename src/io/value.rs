@@ -1,11 +1,37 @@
 //! The value of an exact expression: $a + b\sqrt d$ with $a, b \in \mathbb{Q}$ and at most
 //! one square-free radicand `d`, with every operation size-checked against
-//! [`super::expr::MAX_BITS`] and [`super::expr::MAX_EXPONENT`].
+//! [`MAX_BITS`] and [`MAX_EXPONENT`] (re-exported by [`super::expr`], whose errors
+//! are [`ExprError`]).
 
-use super::expr::{ExprError, MAX_BITS, MAX_EXPONENT, err};
 use crate::field::{QuadraticField, Rational, fmt_rational};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::fmt;
+
+/// Largest accepted |exponent| in `x^n`.
+pub const MAX_EXPONENT: u32 = 10_000;
+/// Largest accepted size (bits of a numerator or denominator) of any intermediate value.
+/// num-bigint's gcd (binary, quadratic) makes one operation on numbers of this size cost
+/// tens of milliseconds at most; beyond it an input could stall for seconds.
+pub const MAX_BITS: u64 = 1 << 14;
+
+/// An invalid expression: what is wrong, with a 1-based character position where useful.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ExprError {
+    pub msg: String,
+}
+
+impl fmt::Display for ExprError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.msg)
+    }
+}
+
+impl std::error::Error for ExprError {}
+
+pub(crate) fn err<T>(msg: impl Into<String>) -> Result<T, ExprError> {
+    Err(ExprError { msg: msg.into() })
+}
 
 /// A value $a + b\sqrt d$; `k` is `Some` exactly when `b != 0` (canonical).
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -195,20 +195,10 @@ impl<K: Field> Matrix<K> {
     ///
     /// # Errors
     /// `NotSquare`.
-    pub fn pow(&self, mut e: u32) -> Result<Self> {
+    pub fn pow(&self, e: u32) -> Result<Self> {
         self.check_square("pow")?;
-        let mut base = self.clone();
-        let mut acc = Matrix::identity(self.field.clone(), self.nrows);
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = &acc * &base;
-            }
-            e >>= 1;
-            if e > 0 {
-                base = &base * &base;
-            }
-        }
-        Ok(acc)
+        let one = Matrix::identity(self.field.clone(), self.nrows);
+        Ok(crate::field::pow_by_squaring(self, e, one, |a, b| a * b))
     }
     /// Kronecker product $A \otimes B$.
     pub fn kron(&self, b: &Matrix<K>) -> Self {

@@ -119,19 +119,8 @@ impl MPoly {
     }
 
     /// `f^e` by repeated squaring.
-    pub fn pow(&self, mut e: u32) -> MPoly {
-        let mut base = self.clone();
-        let mut acc = MPoly::one(self.nvars);
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = acc.mul(&base);
-            }
-            e >>= 1;
-            if e > 0 {
-                base = base.mul(&base);
-            }
-        }
-        acc
+    pub fn pow(&self, e: u32) -> MPoly {
+        crate::field::pow_by_squaring(self, e, MPoly::one(self.nvars), MPoly::mul)
     }
 
     /// Multiplication by the monomial `c * m`.
@@ -312,11 +301,7 @@ impl MPoly {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    fn p(s: &str) -> MPoly {
-        let f = crate::mpoly::parse_mpoly_in(s, &["a", "b", "c"]).unwrap();
-        f.prim.scale(&f.content.to_integer())
-    }
+    use crate::mpoly::parse::abc as p;
     #[test]
     fn ring_ops() {
         let f = p("a*b + c^2 + 1");

@@ -333,10 +333,7 @@ pub fn is_unit(c: &BigInt) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    fn p(s: &str) -> MPoly {
-        let f = crate::mpoly::parse_mpoly_in(s, &["a", "b", "c"]).unwrap();
-        f.prim.scale(&f.content.to_integer())
-    }
+    use crate::mpoly::parse::abc as p;
     #[test]
     fn examples() {
         let f = p("(a*b + c^2 + 1)^3*(a - b + 2*c)^2");

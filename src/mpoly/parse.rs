@@ -8,7 +8,8 @@
 
 use super::{MAX_VARS, MPoly, QPoly, max_exponent};
 use crate::error::{Error, Result};
-use crate::field::{Rational, parse_rational};
+use crate::field::Rational;
+use crate::field::scan::{Cursor, identifier_end, number_end};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -67,26 +68,12 @@ pub fn identifiers(text: &str) -> Result<Vec<String>> {
     while i < s.len() {
         let c = s[i];
         if c.is_ascii_alphabetic() || c == b'_' {
-            // a letter right after digits may be an exponent marker (1e-3)
-            let prev_digit = i > 0 && (s[i - 1].is_ascii_digit() || s[i - 1] == b'.');
-            let exp_marker = prev_digit
-                && (c == b'e' || c == b'E')
-                && s.get(i + 1)
-                    .is_some_and(|d| d.is_ascii_digit() || *d == b'-' || *d == b'+')
-                && number_start_is_plain(s, i);
             let start = i;
-            while i < s.len() && (s[i].is_ascii_alphanumeric() || s[i] == b'_') {
-                i += 1;
-            }
-            if exp_marker {
-                continue;
-            }
+            i = identifier_end(s, i);
             out.push(String::from_utf8_lossy(&s[start..i]).into_owned());
         } else if c.is_ascii_digit() || c == b'.' {
-            i += 1;
-            while i < s.len() && (s[i].is_ascii_digit() || s[i] == b'.') {
-                i += 1;
-            }
+            // a number, with its exponent marker (`1e-3` names nothing)
+            i = number_end(s, i, usize::MAX);
         } else {
             i += 1;
         }
@@ -103,15 +90,6 @@ pub fn identifiers(text: &str) -> Result<Vec<String>> {
     Ok(out)
 }
 
-/// Does the run of digits before `i` start a number (not end an identifier like `x2`)?
-fn number_start_is_plain(s: &[u8], i: usize) -> bool {
-    let mut j = i;
-    while j > 0 && (s[j - 1].is_ascii_digit() || s[j - 1] == b'.') {
-        j -= 1;
-    }
-    !(j > 0 && (s[j - 1].is_ascii_alphabetic() || s[j - 1] == b'_'))
-}
-
 fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPoly, MPoly)> {
     if vars.len() > MAX_VARS {
         return Err(Error::Parse {
@@ -121,17 +99,12 @@ fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPol
         });
     }
     let mut p = P {
-        s: text.as_bytes(),
-        pos: 0,
+        c: Cursor::new(text),
         vars,
-        depth: 0,
         allow_div,
     };
     let f = p.expr()?;
-    p.ws();
-    if p.pos != p.s.len() {
-        return Err(p.err("unexpected character"));
-    }
+    p.c.finish()?;
     let (mut num, mut den) = f;
     if den.lc().is_negative() {
         num = num.neg();
@@ -143,10 +116,8 @@ fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPol
 type Frac = (MPoly, MPoly);
 
 struct P<'a> {
-    s: &'a [u8],
-    pos: usize,
+    c: Cursor<'a>,
     vars: &'a [&'a str],
-    depth: usize,
     allow_div: bool,
 }
 
@@ -155,20 +126,7 @@ impl P<'_> {
         self.vars.len()
     }
     fn err(&self, msg: &str) -> Error {
-        Error::Parse {
-            line: 1,
-            col: self.pos + 1,
-            msg: msg.into(),
-        }
-    }
-    fn ws(&mut self) {
-        while self.pos < self.s.len() && self.s[self.pos].is_ascii_whitespace() {
-            self.pos += 1;
-        }
-    }
-    fn peek(&mut self) -> Option<u8> {
-        self.ws();
-        self.s.get(self.pos).copied()
+        self.c.err(msg)
     }
     fn check(&self, f: &Frac) -> Result<()> {
         let lim = MAX_DEGREE.min(max_exponent(self.n()) / 2);
@@ -222,61 +180,38 @@ impl P<'_> {
         self.mul(a, &(b.1.clone(), b.0.clone()))
     }
     fn expr(&mut self) -> Result<Frac> {
-        let mut acc = match self.peek() {
+        let mut acc = match self.c.eat_any(b"+-") {
             Some(b'-') => {
-                self.pos += 1;
                 let t = self.term()?;
                 (t.0.neg(), t.1)
             }
-            Some(b'+') => {
-                self.pos += 1;
-                self.term()?
-            }
             _ => self.term()?,
         };
-        loop {
-            match self.peek() {
-                Some(b'+') => {
-                    self.pos += 1;
-                    let t = self.term()?;
-                    acc = self.add(&acc, &t, false)?;
-                }
-                Some(b'-') => {
-                    self.pos += 1;
-                    let t = self.term()?;
-                    acc = self.add(&acc, &t, true)?;
-                }
-                _ => return Ok(acc),
-            }
+        while let Some(op) = self.c.eat_any(b"+-") {
+            let t = self.term()?;
+            acc = self.add(&acc, &t, op == b'-')?;
         }
+        Ok(acc)
     }
     fn term(&mut self) -> Result<Frac> {
         let mut acc = self.power()?;
         loop {
-            match self.peek() {
-                Some(b'*') => {
-                    self.pos += 1;
-                    let f = self.power()?;
-                    acc = self.mul(&acc, &f)?;
-                }
-                Some(b'/') => {
-                    self.pos += 1;
-                    let f = self.power()?;
-                    acc = self.div(&acc, &f)?;
-                }
-                Some(b'(') | Some(b'a'..=b'z') | Some(b'A'..=b'Z') | Some(b'_') => {
-                    let f = self.power()?;
-                    acc = self.mul(&acc, &f)?;
-                }
-                _ => return Ok(acc),
+            let op = self.c.eat_any(b"*/");
+            let implicit = matches!(self.c.peek(), Some(b'(' | b'a'..=b'z' | b'A'..=b'Z' | b'_'));
+            if op.is_none() && !implicit {
+                return Ok(acc);
             }
+            let f = self.power()?;
+            acc = match op {
+                Some(b'/') => self.div(&acc, &f)?,
+                _ => self.mul(&acc, &f)?,
+            };
         }
     }
     fn power(&mut self) -> Result<Frac> {
         // unary sign inside a product or after an operator: `a + -2*b`, `a*-b`
         let mut negate = false;
-        while let Some(c @ (b'-' | b'+')) = self.peek() {
-            self.pos += 1;
+        while let Some(c) = self.c.eat_any(b"+-") {
             negate ^= c == b'-';
         }
         if negate {
@@ -284,19 +219,7 @@ impl P<'_> {
             return Ok((f.0.neg(), f.1));
         }
         let base = self.atom()?;
-        if self.peek() == Some(b'^')
-            || (self.peek() == Some(b'*') && self.s.get(self.pos + 1) == Some(&b'*'))
-        {
-            self.pos += if self.s[self.pos] == b'^' { 1 } else { 2 };
-            self.ws();
-            let start = self.pos;
-            while self.pos < self.s.len() && self.s[self.pos].is_ascii_digit() {
-                self.pos += 1;
-            }
-            let e: u32 = std::str::from_utf8(&self.s[start..self.pos])
-                .ok()
-                .and_then(|t| t.parse().ok())
-                .ok_or_else(|| self.err("expected a non-negative integer exponent"))?;
+        if let Some(e) = self.c.power_exponent::<u32>()? {
             let lim = MAX_DEGREE.min(max_exponent(self.n()) / 2) as u64;
             for f in [&base.0, &base.1] {
                 let degs = f.degrees();
@@ -322,59 +245,23 @@ impl P<'_> {
     }
     fn atom(&mut self) -> Result<Frac> {
         let n = self.n();
-        match self.peek() {
+        match self.c.peek() {
             Some(b'(') => {
-                self.depth += 1;
-                if self.depth > 200 {
-                    return Err(self.err("nesting too deep"));
-                }
-                self.pos += 1;
+                self.c.open(200)?;
                 let f = self.expr()?;
-                if self.peek() != Some(b')') {
-                    return Err(self.err("expected ')'"));
-                }
-                self.pos += 1;
-                self.depth -= 1;
-                Ok(f)
+                self.c.close().map(|()| f)
             }
             Some(c) if c.is_ascii_alphabetic() || c == b'_' => {
-                let start = self.pos;
-                while self.pos < self.s.len()
-                    && (self.s[self.pos].is_ascii_alphanumeric() || self.s[self.pos] == b'_')
-                {
-                    self.pos += 1;
-                }
-                let name = std::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
+                let start = self.c.pos;
+                let name = self.c.identifier();
                 let Some(i) = self.vars.iter().position(|v| *v == name) else {
-                    self.pos = start;
+                    self.c.pos = start;
                     return Err(self.err(&format!("unknown symbol '{name}'")));
                 };
                 Ok((MPoly::var(n, i), MPoly::one(n)))
             }
             Some(c) if c.is_ascii_digit() || c == b'.' => {
-                let start = self.pos;
-                while self.pos < self.s.len() {
-                    let c = self.s[self.pos];
-                    let exp_sign = (c == b'-' || c == b'+')
-                        && self.pos > start
-                        && matches!(self.s[self.pos - 1], b'e' | b'E')
-                        && self.s[start..self.pos - 1]
-                            .iter()
-                            .all(|d| d.is_ascii_digit() || *d == b'.');
-                    let is_exp = (c == b'e' || c == b'E')
-                        && self
-                            .s
-                            .get(self.pos + 1)
-                            .is_some_and(|d| d.is_ascii_digit() || *d == b'-' || *d == b'+');
-                    if c.is_ascii_digit() || c == b'.' || is_exp || exp_sign {
-                        self.pos += 1;
-                    } else {
-                        break;
-                    }
-                }
-                let t = std::str::from_utf8(&self.s[start..self.pos])
-                    .map_err(|_| self.err("bad number"))?;
-                let q: Rational = parse_rational(t).map_err(|m| self.err(&m))?;
+                let q = self.c.number(usize::MAX).map_err(|m| self.err(&m))?;
                 if q.is_zero() {
                     return Ok((MPoly::zero(n), MPoly::one(n)));
                 }
@@ -386,6 +273,13 @@ impl P<'_> {
             _ => Err(self.err("expected a number, a symbol or '('")),
         }
     }
+}
+
+/// Test helper: an integer polynomial in `a, b, c` from text (the content cleared).
+#[cfg(test)]
+pub(crate) fn abc(s: &str) -> MPoly {
+    let f = parse_mpoly_in(s, &["a", "b", "c"]).unwrap();
+    f.prim.scale(&f.content.to_integer())
 }
 
 /// Terms of $(t_1 + \dots + t_n)^e$ at most $\binom{n + e - 1}{e}$ (saturating).

@@ -137,19 +137,17 @@ impl<K: Field> Poly<K> {
         Self::new(k.clone(), self.coeffs.iter().map(|a| k.mul(a, c)).collect())
     }
     /// $f^e$ by repeated squaring.
-    pub fn pow(&self, mut e: u32) -> Self {
-        let mut base = self.clone();
-        let mut acc = Self::one(self.field.clone());
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = acc.mul(&base);
-            }
-            e >>= 1;
-            if e > 0 {
-                base = base.mul(&base);
-            }
-        }
-        acc
+    pub fn pow(&self, e: u32) -> Self {
+        crate::field::pow_by_squaring(self, e, Self::one(self.field.clone()), Self::mul)
+    }
+    /// The same polynomial over $\mathbb{Q}$ when every coefficient is rational.
+    pub fn to_rational_poly(&self) -> Option<Poly<Q>> {
+        let cs: Option<Vec<Rational>> = self
+            .coeffs
+            .iter()
+            .map(|c| self.field.to_rational(c))
+            .collect();
+        Some(Poly::new(Q, cs?))
     }
     /// $x^k f$.
     pub fn shift(&self, k: usize) -> Self {

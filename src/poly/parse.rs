@@ -3,13 +3,12 @@
 
 use super::Poly;
 use crate::error::{Error, Result};
-use crate::field::{Q, Rational, parse_rational};
+use crate::field::Q;
+use crate::field::scan::Cursor;
 
 struct P<'a> {
-    s: &'a [u8],
-    pos: usize,
+    c: Cursor<'a>,
     var: Option<u8>,
-    depth: usize,
 }
 
 const MAX_DEGREE: usize = 10_000;
@@ -22,61 +21,28 @@ const MAX_POWER_BITS: u64 = 1 << 24;
 /// `Parse` with the 1-based column of the first problem; never panics.
 pub fn parse_poly_q(text: &str) -> Result<Poly<Q>> {
     let mut p = P {
-        s: text.as_bytes(),
-        pos: 0,
+        c: Cursor::new(text),
         var: None,
-        depth: 0,
     };
     let f = p.expr()?;
-    p.ws();
-    if p.pos != p.s.len() {
-        return Err(p.err("unexpected character"));
-    }
+    p.c.finish()?;
     Ok(f)
 }
 
 impl P<'_> {
     fn err(&self, msg: &str) -> Error {
-        Error::Parse {
-            line: 1,
-            col: self.pos + 1,
-            msg: msg.into(),
-        }
-    }
-    fn ws(&mut self) {
-        while self.pos < self.s.len() && self.s[self.pos].is_ascii_whitespace() {
-            self.pos += 1;
-        }
-    }
-    fn peek(&mut self) -> Option<u8> {
-        self.ws();
-        self.s.get(self.pos).copied()
+        self.c.err(msg)
     }
     fn expr(&mut self) -> Result<Poly<Q>> {
-        let mut acc = match self.peek() {
-            Some(b'-') => {
-                self.pos += 1;
-                self.term()?.neg()
-            }
-            Some(b'+') => {
-                self.pos += 1;
-                self.term()?
-            }
+        let mut acc = match self.c.eat_any(b"+-") {
+            Some(b'-') => self.term()?.neg(),
             _ => self.term()?,
         };
-        loop {
-            match self.peek() {
-                Some(b'+') => {
-                    self.pos += 1;
-                    acc = acc.add(&self.term()?);
-                }
-                Some(b'-') => {
-                    self.pos += 1;
-                    acc = acc.sub(&self.term()?);
-                }
-                _ => return Ok(acc),
-            }
+        while let Some(op) = self.c.eat_any(b"+-") {
+            let t = self.term()?;
+            acc = if op == b'+' { acc.add(&t) } else { acc.sub(&t) };
         }
+        Ok(acc)
     }
     fn check_deg(&self, f: &Poly<Q>) -> Result<()> {
         if f.deg() > MAX_DEGREE {
@@ -88,48 +54,34 @@ impl P<'_> {
     fn term(&mut self) -> Result<Poly<Q>> {
         let mut acc = self.power()?;
         loop {
-            match self.peek() {
+            match self.c.eat_any(b"*/") {
                 Some(b'*') => {
-                    self.pos += 1;
                     let f = self.power()?;
                     if acc.deg() + f.deg() > MAX_DEGREE {
                         return Err(self.err("degree too large"));
                     }
                     acc = acc.mul(&f);
                 }
-                Some(b'/') => {
-                    self.pos += 1;
+                Some(_) => {
                     let f = self.power()?;
                     if f.degree() != Some(0) {
                         return Err(self.err("division only by a non-zero constant"));
                     }
                     acc = acc.scale(&f.lc().recip());
                 }
-                Some(b'(') | Some(b'a'..=b'z') | Some(b'A'..=b'Z') => {
-                    // implicit multiplication: 2x, 3(x+1)
+                // implicit multiplication: 2x, 3(x+1)
+                None if matches!(self.c.peek(), Some(b'(' | b'a'..=b'z' | b'A'..=b'Z')) => {
                     let f = self.power()?;
                     acc = acc.mul(&f);
                     self.check_deg(&acc)?;
                 }
-                _ => return Ok(acc),
+                None => return Ok(acc),
             }
         }
     }
     fn power(&mut self) -> Result<Poly<Q>> {
         let base = self.atom()?;
-        if self.peek() == Some(b'^')
-            || (self.peek() == Some(b'*') && self.s.get(self.pos + 1) == Some(&b'*'))
-        {
-            self.pos += if self.s[self.pos] == b'^' { 1 } else { 2 };
-            self.ws();
-            let start = self.pos;
-            while self.pos < self.s.len() && self.s[self.pos].is_ascii_digit() {
-                self.pos += 1;
-            }
-            let e: usize = std::str::from_utf8(&self.s[start..self.pos])
-                .ok()
-                .and_then(|t| t.parse().ok())
-                .ok_or_else(|| self.err("expected a non-negative integer exponent"))?;
+        if let Some(e) = self.c.power_exponent::<usize>()? {
             if e.saturating_mul(base.deg()) > MAX_DEGREE || e > MAX_DEGREE {
                 return Err(self.err("degree too large"));
             }
@@ -154,25 +106,17 @@ impl P<'_> {
         Ok(base)
     }
     fn atom(&mut self) -> Result<Poly<Q>> {
-        match self.peek() {
+        match self.c.peek() {
             Some(b'(') => {
-                self.depth += 1;
-                if self.depth > 200 {
-                    return Err(self.err("nesting too deep"));
-                }
-                self.pos += 1;
+                self.c.open(200)?;
                 let f = self.expr()?;
-                if self.peek() != Some(b')') {
-                    return Err(self.err("expected ')'"));
-                }
-                self.pos += 1;
-                self.depth -= 1;
-                Ok(f)
+                self.c.close().map(|()| f)
             }
             Some(c) if c.is_ascii_alphabetic() => {
                 if self
+                    .c
                     .s
-                    .get(self.pos + 1)
+                    .get(self.c.pos + 1)
                     .is_some_and(|d| d.is_ascii_alphanumeric())
                 {
                     return Err(self.err("variable must be a single letter"));
@@ -182,33 +126,11 @@ impl P<'_> {
                     Some(v) if v != c => return Err(self.err("only one variable is allowed")),
                     _ => {}
                 }
-                self.pos += 1;
+                self.c.pos += 1;
                 Ok(Poly::x(Q))
             }
             Some(c) if c.is_ascii_digit() || c == b'.' => {
-                let start = self.pos;
-                while self.pos < self.s.len() {
-                    let c = self.s[self.pos];
-                    let exp_sign = (c == b'-' || c == b'+')
-                        && self.pos > start
-                        && matches!(self.s[self.pos - 1], b'e' | b'E')
-                        && self.s[start..self.pos - 1]
-                            .iter()
-                            .all(|d| d.is_ascii_digit() || *d == b'.');
-                    let is_exp = (c == b'e' || c == b'E')
-                        && self
-                            .s
-                            .get(self.pos + 1)
-                            .is_some_and(|d| d.is_ascii_digit() || *d == b'-' || *d == b'+');
-                    if c.is_ascii_digit() || c == b'.' || is_exp || exp_sign {
-                        self.pos += 1;
-                    } else {
-                        break;
-                    }
-                }
-                let t = std::str::from_utf8(&self.s[start..self.pos])
-                    .map_err(|_| self.err("bad number"))?;
-                let q: Rational = parse_rational(t).map_err(|m| self.err(&m))?;
+                let q = self.c.number(usize::MAX).map_err(|m| self.err(&m))?;
                 Ok(Poly::constant(Q, q))
             }
             _ => Err(self.err("expected a number, a variable or '('")),

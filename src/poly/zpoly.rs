@@ -181,19 +181,8 @@ impl ZPoly {
     }
 
     /// $f^e$ by repeated squaring ($f^0 = 1$).
-    pub fn pow(&self, mut e: u32) -> Self {
-        let mut base = self.clone();
-        let mut acc = Self::one();
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = &acc * &base;
-            }
-            e >>= 1;
-            if e > 0 {
-                base = &base * &base;
-            }
-        }
-        acc
+    pub fn pow(&self, e: u32) -> Self {
+        crate::field::pow_by_squaring(self, e, Self::one(), |a, b| a * b)
     }
 
     /// Pseudo-division: $(q, r)$ with $\operatorname{lc}(g)^{\delta} f = q g + r$,

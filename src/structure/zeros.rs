@@ -71,9 +71,7 @@ pub fn invariant_zeros<K: Field>(
     c: &Matrix<K>,
     d: &Matrix<K>,
 ) -> Result<InvariantZeros<K>> {
-    check(a, b, c, d)?;
-    let n = a.nrows();
-    let (m, p) = (b.ncols(), c.nrows());
+    let (n, m, p) = check(a, b, c, d)?;
     // 1. independent input columns of [B; D] and output rows of [C, D]
     let (_, cols) = b.vstack(d)?.rref();
     let (_, rows) = c.hstack(d)?.transpose().rref();
@@ -106,7 +104,13 @@ pub fn invariant_zeros<K: Field>(
     })
 }
 
-fn check<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>) -> Result<()> {
+/// The sizes `(n, m, p)` of a consistent $(A, B, C, D)$.
+fn check<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+) -> Result<(usize, usize, usize)> {
     a.check_square("invariant_zeros")?;
     let n = a.nrows();
     let (m, p) = (b.ncols(), c.nrows());
@@ -117,7 +121,7 @@ fn check<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>) -
             found: d.shape(),
         });
     }
-    Ok(())
+    Ok((n, m, p))
 }
 
 /// [`invariant_zeros`] by the diagonal form of $P(s)$ over $K\[s\]$ only (step 4 of the
@@ -132,10 +136,8 @@ pub fn invariant_zeros_smith<K: Field>(
     c: &Matrix<K>,
     d: &Matrix<K>,
 ) -> Result<InvariantZeros<K>> {
-    check(a, b, c, d)?;
-    let n = a.nrows();
-    let (m, p) = (b.ncols(), c.nrows());
     let k = a.field().clone();
+    let (n, m, p) = check(a, b, c, d)?;
     let cst = |x: &K::Elem| Poly::constant(k.clone(), x.clone());
     let mut pm: Vec<Vec<Poly<K>>> = Vec::with_capacity(n + p);
     for i in 0..n {

@@ -219,21 +219,7 @@ impl ParamFamily {
                     Some(e) => ev(e).lu().solve(&a).ok_or(Error::Singular),
                 }
             }
-            FamilyForm::Second { m, l, k } => {
-                let n = m.len();
-                let lu = ev(m).lu();
-                let mk = lu.solve(&ev(k)).ok_or(Error::Singular)?;
-                let ml = lu.solve(&ev(l)).ok_or(Error::Singular)?;
-                let mut a = DMatrix::zeros(2 * n, 2 * n);
-                for i in 0..n {
-                    a[(i, n + i)] = 1.0;
-                    for j in 0..n {
-                        a[(n + i, j)] = -mk[(i, j)];
-                        a[(n + i, n + j)] = -ml[(i, j)];
-                    }
-                }
-                Ok(a)
-            }
+            FamilyForm::Second { m, l, k } => second_order_state_matrix(&ev(m), &ev(l), &ev(k)),
         }
     }
 
@@ -449,4 +435,29 @@ impl Resolver<'_> {
             })
             .collect()
     }
+}
+
+/// $A = \begin{pmatrix} 0 & I \\ -M^{-1}K & -M^{-1}L \end{pmatrix}$ of $M\ddot q + L\dot q + K q$
+/// in floating point.
+///
+/// # Errors
+/// `Singular` when the LU factorization of $M$ cannot solve.
+pub(crate) fn second_order_state_matrix(
+    m: &DMatrix<f64>,
+    l: &DMatrix<f64>,
+    k: &DMatrix<f64>,
+) -> Result<DMatrix<f64>> {
+    let n = m.nrows();
+    let lu = m.clone().lu();
+    let mk = lu.solve(k).ok_or(Error::Singular)?;
+    let ml = lu.solve(l).ok_or(Error::Singular)?;
+    let mut a = DMatrix::zeros(2 * n, 2 * n);
+    for i in 0..n {
+        a[(i, n + i)] = 1.0;
+        for j in 0..n {
+            a[(n + i, j)] = -mk[(i, j)];
+            a[(n + i, n + j)] = -ml[(i, j)];
+        }
+    }
+    Ok(a)
 }

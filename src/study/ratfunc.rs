@@ -11,6 +11,7 @@
 //! Work is bounded: exponents $|n| \le 64$, degrees $\le 256$, nesting $\le 256$.
 
 use crate::error::{Error, Result};
+use crate::field::scan::{identifier_end, number_end};
 use crate::field::{Field, Q, Rational};
 use crate::poly::Poly;
 use num_traits::{One, Zero};
@@ -170,27 +171,11 @@ fn lex(text: &str) -> Result<Vec<Tok>> {
             i += 1;
         } else if c.is_ascii_digit() || c == '.' {
             let s = i;
-            while i < cs.len() && (cs[i].is_ascii_digit() || cs[i] == '.') {
-                i += 1;
-            }
-            if i < cs.len() && (cs[i] == 'e' || cs[i] == 'E') {
-                let mut j = i + 1;
-                if j < cs.len() && (cs[j] == '+' || cs[j] == '-') {
-                    j += 1;
-                }
-                if j < cs.len() && cs[j].is_ascii_digit() {
-                    i = j;
-                    while i < cs.len() && cs[i].is_ascii_digit() {
-                        i += 1;
-                    }
-                }
-            }
+            i = number_end(&cs, i, usize::MAX);
             out.push(Tok::Num(cs[s..i].iter().collect()));
         } else if c.is_ascii_alphabetic() || c == '_' {
             let s = i;
-            while i < cs.len() && (cs[i].is_ascii_alphanumeric() || cs[i] == '_') {
-                i += 1;
-            }
+            i = identifier_end(&cs, i);
             out.push(Tok::Name(cs[s..i].iter().collect()));
         } else if "+-*/^()".contains(c) {
             out.push(Tok::Op(c));

@@ -6,7 +6,7 @@
 //! of the values; eigenvalues per value sorted by (real, imaginary) part, or matched to the
 //! previous value by [`SweepResult::tracks`] for plotting continuous branches.
 
-use super::family::{FamilyForm, ParamFamily, RatMatrix};
+use super::family::{FamilyForm, ParamFamily, RatMatrix, second_order_state_matrix};
 use crate::error::{Error, Result};
 use crate::field::rational_to_f64;
 use nalgebra::DMatrix;
@@ -88,21 +88,7 @@ impl Compiled {
         match self {
             Compiled::First(a, None) => Ok(at(a, v)),
             Compiled::First(a, Some(e)) => at(e, v).lu().solve(&at(a, v)).ok_or(Error::Singular),
-            Compiled::Second(m, l, k) => {
-                let n = m.len();
-                let lu = at(m, v).lu();
-                let mk = lu.solve(&at(k, v)).ok_or(Error::Singular)?;
-                let ml = lu.solve(&at(l, v)).ok_or(Error::Singular)?;
-                let mut a = DMatrix::zeros(2 * n, 2 * n);
-                for i in 0..n {
-                    a[(i, n + i)] = 1.0;
-                    for j in 0..n {
-                        a[(n + i, j)] = -mk[(i, j)];
-                        a[(n + i, n + j)] = -ml[(i, j)];
-                    }
-                }
-                Ok(a)
-            }
+            Compiled::Second(m, l, k) => second_order_state_matrix(&at(m, v), &at(l, v), &at(k, v)),
         }
     }
 }

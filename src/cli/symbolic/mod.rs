@@ -15,11 +15,11 @@
 
 pub(super) mod system;
 
-use super::common::{linalg_report, with_path};
+use super::common::{exact_only, linalg_report, with_path};
 use super::{Command, Failure, Outcome};
 use crate::io::symbolic::{SymbolicOptions, load_symbolic_path, refusal};
 use crate::io::{LoadedSystem, TypedAny};
-use crate::report::{Report, Value, str_list};
+use crate::report::str_list;
 use std::path::{Path, PathBuf};
 
 /// What [`execute`] did with a command.
@@ -156,32 +156,5 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ha
             "`{}` does not take --symbolic or --at yet; write the values into the file",
             name(cmd)
         ))),
-    }
-}
-
-/// The report with matrices as lists of exact strings: over $\mathbb{Q}(p)$ there are no
-/// `approx` fields (the contract: only when every symbol has a value).
-pub(super) fn exact_only(r: Report) -> Report {
-    fn value(v: Value) -> Value {
-        match v {
-            Value::Matrix(m) => Value::List(
-                m.exact
-                    .into_iter()
-                    .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
-                    .collect(),
-            ),
-            Value::List(xs) => Value::List(xs.into_iter().map(value).collect()),
-            Value::Obj(r) => Value::Obj(exact_only(r)),
-            v => v,
-        }
-    }
-    Report {
-        title: r.title,
-        items: r
-            .items
-            .into_iter()
-            .filter(|(k, _)| !k.contains("approx"))
-            .map(|(k, v)| (k, value(v)))
-            .collect(),
     }
 }

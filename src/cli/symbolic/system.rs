@@ -5,7 +5,7 @@
 //! `field` and `conditions` to the report. Decisions that need numbers (signs, Hurwitz,
 //! approximations) are not guessed: `minimum_phase` says "depends on parameters".
 
-use super::exact_only;
+use crate::cli::common::exact_only;
 use crate::cli::common::with_path;
 use crate::cli::{Command, Failure, MethodArg, Outcome};
 use crate::field::Field;

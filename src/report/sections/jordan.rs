@@ -39,27 +39,7 @@ impl JordanForm {
     /// `approx`, `algebraic_multiplicity`, `geometric_multiplicity`, `blocks`), `J`, `T`
     /// (exact, with `_approx`), `verified`, plus `charpoly`, `presentation`, `symbols`.
     pub fn report(&self) -> Report {
-        let evs: Vec<Value> = self
-            .eigenvalues
-            .iter()
-            .map(|e| {
-                Value::Obj(
-                    Report::new()
-                        .str("minpoly", e.minpoly.to_string())
-                        .str("value", e.value.clone())
-                        .with(
-                            "approx",
-                            Value::List(vec![Value::Float(e.approx.0), Value::Float(e.approx.1)]),
-                        )
-                        .int("algebraic_multiplicity", e.algebraic_multiplicity)
-                        .int("geometric_multiplicity", e.geometric_multiplicity)
-                        .with(
-                            "blocks",
-                            Value::List(e.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
-                        ),
-                )
-            })
-            .collect();
+        let evs = super::pencil::eigen_items(self);
         let single = self.single_field();
         let presentation = match &single {
             Some((j, _)) if j.field().degree() == 1 => "single matrix over QQ".to_string(),

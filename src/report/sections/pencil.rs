@@ -235,14 +235,8 @@ pub fn minreal_descriptor_report<K: Field>(m: &DescriptorMinimal<K>) -> Report {
 pub fn descriptor_zeros_report<K: Field>(z: &DescriptorZeros<K>) -> Result<Report> {
     let k = &z.pencil;
     let mut r = Report::titled("zeros of the descriptor system");
-    let rational: Option<Vec<crate::field::Rational>> = z
-        .polynomial
-        .coeffs()
-        .iter()
-        .map(|c| z.polynomial.field().to_rational(c))
-        .collect();
-    r = match rational {
-        Some(cs) => r.list("invariant_zeros", root_items(&Poly::new(Q, cs))?),
+    r = match z.polynomial.to_rational_poly() {
+        Some(zq) => r.list("invariant_zeros", root_items(&zq)?),
         None => r.list(
             "invariant_zeros",
             super::structure::zero_items(&z.polynomial),

@@ -1,0 +1,229 @@
+//! Exact critical values of one parameter $v$ on an interval $[a, b]$.
+//!
+//! With $P(x, v) = \sum_k p_k(v) x^k$ the characteristic polynomial of $A(v)$
+//! ([`charpoly_xv`]), the eigenvalues change qualitatively only where
+//! * an eigenvalue is zero: $p_0(v) = 0$;
+//! * a pair is purely imaginary: $\Delta_{n-1}(v) = 0$ (Hurwitz determinant, which vanishes
+//!   iff $\lambda_i + \lambda_j = 0$ for some pair), *confirmed* at the root $v_0$ by
+//!   $g = \gcd(E, O) \ne 1$ over $\mathbb{Q}(v_0)$, where $P(x, v_0) = E(x^2) + x O(x^2)$,
+//!   and a root $u = x^2 < 0$ of $g$ (real pairs $\pm a$ are rejected);
+//! * two eigenvalues coincide: $\mathrm{Res}_x(P, \partial_x P)(v) = 0$, confirmed by
+//!   $\gcd(P, \partial_x P) \ne 1$ over $\mathbb{Q}(v_0)$; the Jordan structure there comes
+//!   from the ranks of $q(A(v_0))^k$ over $\mathbb{Q}(v_0)$ for each repeated irreducible
+//!   factor $q$ of $P(x, v_0)$ over $\mathbb{Q}(v_0)$: $\#\{\text{blocks} \ge k\} =
+//!   (\operatorname{rank} q(A)^{k-1} - \operatorname{rank} q(A)^k) / \deg q$.
+//!
+//! Each critical value is an [`AlgebraicNumber`] (minimal polynomial over $\mathbb{Q}$ and
+//! an isolating interval). Between consecutive values the eigenvalue counts are constant;
+//! they are computed exactly at a rational sample point (certified root isolation) and
+//! cross-checked with the Routh–Hurwitz minors.
+
+mod approx;
+mod double;
+mod imaginary;
+mod intervals;
+mod roots;
+mod structure;
+
+pub use roots::{rational_between, sign_at_root};
+pub use structure::block_sizes;
+
+use super::bivar::{BiPoly, charpoly_xv, discriminant_v, hurwitz_delta_n1};
+use super::family::ParamFamily;
+use super::hurwitz::RootCounts;
+use crate::algebraic::AlgebraicNumber;
+use crate::error::{Error, Result};
+use crate::field::{Field, Q, Rational, rational_to_f64};
+use crate::poly::Poly;
+use imaginary::imaginary_pair_at;
+use intervals::intervals_between;
+use roots::real_roots_in;
+use std::cmp::Ordering;
+use structure::structure_at;
+
+/// What happens at a critical value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum CriticalKind {
+    ZeroEigenvalue,
+    ImaginaryPair,
+    DoubleEigenvalue,
+}
+
+impl CriticalKind {
+    /// The contract's name.
+    pub fn name(&self) -> &'static str {
+        match self {
+            CriticalKind::ZeroEigenvalue => "zero_eigenvalue",
+            CriticalKind::ImaginaryPair => "imaginary_pair",
+            CriticalKind::DoubleEigenvalue => "double_eigenvalue",
+        }
+    }
+}
+
+/// One eigenvalue of $A(v_0)$: the roots of one irreducible factor of $P(x, v_0)$ over
+/// $\mathbb{Q}(v_0)$ (each root listed, same structure).
+#[derive(Clone, Debug, PartialEq)]
+pub struct EigenvalueAt {
+    /// Approximate value.
+    pub approx: (f64, f64),
+    /// Algebraic multiplicity.
+    pub multiplicity: usize,
+    /// Jordan block sizes, non-increasing (sum = multiplicity).
+    pub blocks: Vec<usize>,
+    /// For a repeated eigenvalue: the irreducible factor of $P(x, v_0)$ over
+    /// $\mathbb{Q}(v_0)$ it is a root of, in `x` and `t` ($t = v_0$); empty otherwise.
+    pub factor: String,
+}
+
+/// A critical value of the parameter.
+#[derive(Clone, Debug)]
+pub struct CriticalValue {
+    pub value: AlgebraicNumber,
+    pub kind: CriticalKind,
+    /// The eigenvalues of $A(v_0)$ with their Jordan structure.
+    pub eigenvalues_at: Vec<EigenvalueAt>,
+    /// For `ImaginaryPair`: the crossing frequency $\omega$ (approximate).
+    pub omega: Option<f64>,
+    /// The confirmation was decided in exact arithmetic (always, except for an imaginary
+    /// pair whose $g$ has degree $\ge 2$, decided from approximations).
+    pub certified: bool,
+}
+
+/// An open interval between consecutive critical values.
+#[derive(Clone, Debug)]
+pub struct StudyInterval {
+    pub from: AlgebraicNumber,
+    pub to: AlgebraicNumber,
+    /// The rational point where the counts were computed.
+    pub sample: Rational,
+    pub counts: RootCounts,
+    /// Routh–Hurwitz at `sample` (agrees with `counts.is_stable()` when verified).
+    pub stable: bool,
+}
+
+/// The result of [`critical_values`].
+#[derive(Clone, Debug)]
+pub struct CriticalValues {
+    pub param: String,
+    pub from: Rational,
+    pub to: Rational,
+    /// $P(x, v)$.
+    pub charpoly: BiPoly,
+    /// The three polynomials in $v$ whose roots were examined, by kind.
+    pub conditions: Vec<(CriticalKind, Poly<Q>)>,
+    /// Sorted by value, then kind.
+    pub critical: Vec<CriticalValue>,
+    /// Roots of $\Delta_{n-1}$ that are not imaginary pairs (a real pair $\pm a$ or a
+    /// double zero), with the reason.
+    pub rejected: Vec<(AlgebraicNumber, String)>,
+    /// Where $A(v)$ is undefined or the order drops (a denominator or $p_n$ vanishes).
+    pub singular: Vec<AlgebraicNumber>,
+    /// Kinds that hold for every $v$ (e.g. a rigid-body zero eigenvalue): not reported as
+    /// critical values.
+    pub persistent: Vec<CriticalKind>,
+    pub intervals: Vec<StudyInterval>,
+    /// Every confirmation exact and consistent; interval counts agree with Routh–Hurwitz.
+    pub verified: bool,
+}
+
+/// What is known about $P$ near the critical values: the discriminant and the first
+/// subresultant of $P$, $\partial_x P$.
+struct Known<'a> {
+    fam: &'a ParamFamily,
+    p: &'a BiPoly,
+    disc: &'a Poly<Q>,
+    s1: &'a (Poly<Q>, Poly<Q>),
+}
+
+/// Critical values of the family's parameter on $[a, b]$ and the intervals between them.
+///
+/// # Errors
+/// `Invalid` for $a > b$; errors of [`charpoly_xv`], factoring and root isolation.
+pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<CriticalValues> {
+    if a > b {
+        return Err(Error::Invalid(format!("empty range: from {a} > to {b}")));
+    }
+    let p = charpoly_xv(fam)?;
+    let conditions = vec![
+        (CriticalKind::ZeroEigenvalue, p.coeffs[0].clone()),
+        (CriticalKind::ImaginaryPair, hurwitz_delta_n1(&p)?),
+        (CriticalKind::DoubleEigenvalue, discriminant_v(&p)?),
+    ];
+    let s1 = super::bivar::first_subresultant(&p)?;
+    let kn = Known {
+        fam,
+        p: &p,
+        disc: &conditions[2].1,
+        s1: &s1,
+    };
+    let mut sing_poly = p.lead();
+    for d in fam.denominators() {
+        sing_poly = sing_poly.mul(&d);
+    }
+    let singular = real_roots_in(&sing_poly, a, b)?;
+    let mut critical = vec![];
+    let mut rejected = vec![];
+    let mut persistent = vec![];
+    let mut verified = true;
+    for (kind, cond) in &conditions {
+        if cond.is_zero() {
+            if p.deg_x() > 1 || *kind == CriticalKind::ZeroEigenvalue {
+                persistent.push(*kind);
+            }
+            continue;
+        }
+        let rts = real_roots_in(cond, a, b)?;
+        for r in rts {
+            if singular.contains(&r) {
+                continue;
+            }
+            let k = r.to_number_field();
+            let pk = p.at_nf(&k);
+            let (eigenvalues_at, repeated) = structure_at(&kn, &k, &r)?;
+            let (ok, omega, certified) = match kind {
+                CriticalKind::ZeroEigenvalue => (pk.coeff(0) == k.zero(), None, true),
+                CriticalKind::DoubleEigenvalue => (repeated, None, true),
+                CriticalKind::ImaginaryPair => match imaginary_pair_at(&k, &pk, &r)? {
+                    Ok((w, cert)) => (true, Some(w), cert),
+                    Err(why) => {
+                        rejected.push((r.clone(), why));
+                        continue;
+                    }
+                },
+            };
+            verified &= ok && certified;
+            critical.push(CriticalValue {
+                eigenvalues_at,
+                value: r,
+                kind: *kind,
+                omega,
+                certified,
+            });
+        }
+    }
+    critical.sort_by(|x, y| {
+        x.value
+            .partial_cmp(&y.value)
+            .unwrap_or(Ordering::Equal)
+            .then(x.kind.cmp(&y.kind))
+    });
+    let intervals = intervals_between(&p, a, b, &critical, &singular, &mut verified)?;
+    Ok(CriticalValues {
+        param: fam.param.clone(),
+        from: a.clone(),
+        to: b.clone(),
+        charpoly: p,
+        conditions,
+        critical,
+        rejected,
+        singular,
+        persistent,
+        intervals,
+        verified,
+    })
+}
+
+/// `f64` of a rational (re-export for reports).
+pub fn approx_q(q: &Rational) -> f64 {
+    rational_to_f64(q)
+}
