@@ -4,6 +4,8 @@
    same work (read data/sliding-masses.json, minimal realization, verification):
    `exactlti.load(f).minreal(method)` against `exactlti minreal f --method M --format json`
    (release binary, process start included, as a user pays it). Goal: Python within 1.5x.
+   Also the symbolic path: the DC motor's SCB over QQ(J, alpha2, sigma0, sigma1)
+   (`exactlti.load(f).scb()` against `exactlti scb f --format json`).
 2. Converting a 100x100 exact rational matrix to SymPy (`Matrix.to_sympy()`). Goal: <= 50 ms.
 
 Run with the package installed (release build: `pip install ./python`):
@@ -25,6 +27,7 @@ import exactlti  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 SLIDING = os.path.join(ROOT, "data", "sliding-masses.json")
+DC_MOTOR = os.path.join(ROOT, "data", "dc-motor-lugre.json")
 
 
 def best(f, repeat):
@@ -76,6 +79,25 @@ def main():
             "%-12s %12.2f %12.2f %8.2f  %s"
             % (method, tp * 1e3, tc * 1e3, tp / tc, "ok" if tp <= 1.5 * tc else "MISSED")
         )
+
+    # the symbolic path: the DC motor's SCB over QQ(J, alpha2, sigma0, sigma1)
+    def py_sym():
+        r = exactlti.load(DC_MOTOR).scb()
+        assert r.verified and r.dims == (1, 0, 0, 2)
+        r.A, r.conditions  # the result's matrices and conditions, as a user reads them
+
+    def cli_sym():
+        subprocess.run(
+            [cli, "scb", DC_MOTOR, "--format", "json"], check=True, stdout=subprocess.DEVNULL
+        )
+
+    py_sym()
+    cli_sym()
+    tp, tc = best(py_sym, args.repeat), best(cli_sym, args.repeat)
+    print(
+        "%-12s %12.2f %12.2f %8.2f  %s"
+        % ("scb Q(p)", tp * 1e3, tc * 1e3, tp / tc, "ok" if tp <= 1.5 * tc else "MISSED")
+    )
 
     rng = random.Random(1)
     rows = [

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Longer mutation-fuzz run through the CLI binary (issue 17, item 7).
-#   scripts/fuzz.sh [CASES] [SEED]
+#   scripts/fuzz.sh [CASES] [SEED]      (EXACTLTI_BIN=path: use that binary, no build)
 # Mutants of data/*.json and tests/data/* are written to target/fuzz/, every command runs on
 # each with --max-seconds 10; a run fails on a panic (exit 101/134 or "panicked"), on a
 # process still alive past the bound, on exit 1 (internal failure), or on a multi-line error.
@@ -9,8 +9,13 @@ set -u
 cases=${1:-300}
 seed=${2:-1}
 cd "$(dirname "$0")/.."
-cargo build --release --quiet || exit 1
-bin=target/release/exactlti
+# EXACTLTI_BIN=path runs an already built binary (no build)
+if [ -n "${EXACTLTI_BIN:-}" ]; then
+  bin=$EXACTLTI_BIN
+else
+  cargo build --release --quiet || exit 1
+  bin=target/release/exactlti
+fi
 out=target/fuzz
 mkdir -p "$out/failures"
 python3 - "$cases" "$seed" "$out" <<'PY'
@@ -42,7 +47,10 @@ PY
 cmds=("jordan" "jordan --real" "minreal" "minreal --method rosenbrock" "minreal --method ho-kalman"
       "minreal --method jordan" "minreal --method era" "standard" "scb" "mnf" "zeros" "modes"
       "freqresp --points 20" "check" "analyze" "linalg det" "linalg rank" "linalg charpoly"
-      "linalg minpoly" "linalg inverse" "linalg nullspace" "linalg rref")
+      "linalg minpoly" "linalg inverse" "linalg nullspace" "linalg rref" "pencil" "ctrb" "obsv" "tf"
+      "critical --param v --from 0 --to 10" "sweep --param v --from 0 --to 10 --points 20"
+      "jordan --symbolic" "scb --symbolic" "mnf --symbolic" "zeros --symbolic" "tf --symbolic"
+      "minreal --symbolic" "bifurcations --symbolic")
 fail=0
 for f in "$out"/case*; do
   for c in "${cmds[@]}"; do

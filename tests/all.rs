@@ -63,6 +63,8 @@ mod pencil;
 mod pencil_descriptor;
 #[path = "pencil_published.rs"]
 mod pencil_published;
+#[path = "plots.rs"]
+mod plots;
 #[path = "poly_factor.rs"]
 mod poly_factor;
 #[path = "realization.rs"]

@@ -156,3 +156,185 @@ fn fuzz_crashers_stay_fixed() {
     let (code, _, err) = run(&["freqresp", f.to_str().unwrap(), "--points", "3"]);
     assert_eq!(code, 0, "{err}");
 }
+
+#[test]
+fn analyze_names_every_section_it_does_not_compute() {
+    // Q(i) entries: the Jordan form and the modal table need rational matrices; no inputs:
+    // no realization; B = 0: the SCB does not apply. Each says so; none is silently absent.
+    let herm = temp_file(
+        "herm.json",
+        r#"{"A": [["1", "2+i"], ["2-i", "3"]], "B": [[1], [0]], "C": [[1, 0]]}"#,
+    );
+    let noin = temp_file(
+        "noin.json",
+        r#"{"A": [[1, 2, 0], [3, 4, 0], [0, 0, 5]], "B": [[], [], []], "C": [[1, 0, 0]]}"#,
+    );
+    let zero_b = temp_file("zerob.json", r#"{"A": [[-1]], "B": [[0]], "C": [[1]]}"#);
+    let cases: [(&std::path::Path, &[(&str, &str)]); 3] = [
+        (
+            &herm,
+            &[("jordan", "QQ(i)"), ("modes", "QQ(i)"), ("pbh", "QQ(i)")],
+        ),
+        (
+            &noin,
+            &[
+                ("realization", "0 inputs"),
+                ("structure", "0 inputs"),
+                ("zeros", "0 inputs"),
+                ("pbh", "no inputs"),
+                ("mechanical", "no inputs"),
+            ],
+        ),
+        (&zero_b, &[("structure", "rank 0"), ("mechanical", "odd")]),
+    ];
+    for (file, want) in cases {
+        let (code, out, err) = run(&["analyze", file.to_str().unwrap(), "--format", "json"]);
+        assert_eq!(code, 0, "{file:?}: {err}");
+        let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+        for key in [
+            "system",
+            "realization",
+            "structure",
+            "zeros",
+            "jordan",
+            "modes",
+        ] {
+            assert!(j[key].is_object(), "{file:?}: section {key} missing: {j}");
+        }
+        for (key, why) in want {
+            let sec = &j[*key];
+            let reason = sec["not_applicable"]
+                .as_str()
+                .or(sec["error"].as_str())
+                .unwrap_or_else(|| panic!("{file:?}: {key} has no reason: {sec}"));
+            assert!(reason.contains(why), "{file:?}: {key}: {reason}");
+        }
+    }
+    // the mechanical normal form is exact over Q(i) too (it was skipped with the Jordan form)
+    let (_, out, _) = run(&["analyze", herm.to_str().unwrap(), "--format", "json"]);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["mechanical"]["exists"], true, "{j}");
+    assert_eq!(j["mechanical"]["verified"], true, "{j}");
+    // the file's signal names are part of the report
+    let (code, out, err) = run(&["analyze", "data/bicycle-whipple.json", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        j["system"]["input_names"],
+        serde_json::json!(["roll torque", "steer torque"])
+    );
+}
+
+#[test]
+fn every_fuzz_reproducer_runs_its_command_within_the_budget() {
+    // each tests/data/fuzz_* file with the command it was slow or failing on: exit 0, 3 (the
+    // float path disagrees: `check`) or a one-line exit 2 (the --max-seconds bound), never a
+    // panic, exit 1 or a hang
+    let cases: &[(&[&str], &str)] = &[
+        (&["jordan", "--real"], "fuzz_jordan_marking.json"),
+        (&["jordan", "--real"], "fuzz_slow_real_jordan.json"),
+        (
+            &["minreal", "--method", "jordan"],
+            "fuzz_slow_real_minreal.json",
+        ),
+        (&["analyze"], "fuzz_slow_analyze.toml"),
+        (&["jordan"], "fuzz_symbolic_jordan_slow.json"),
+        (&["check"], "fuzz_huge_entry.toml"),
+    ];
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    let mut listed: Vec<&str> = cases.iter().map(|c| c.1).collect();
+    listed.sort();
+    listed.dedup();
+    let mut on_disk: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|n| n.starts_with("fuzz_"))
+        .collect();
+    on_disk.sort();
+    assert_eq!(listed, on_disk, "a fuzz reproducer without a test");
+    for (cmd, file) in cases {
+        let mut a = cmd.to_vec();
+        let p = format!("tests/data/{file}");
+        a.extend([p.as_str(), "--max-seconds", "60"]);
+        let (code, _, err) = run(&a);
+        assert!(
+            code == 0 || ((code == 2 || code == 3) && err.lines().count() == 1),
+            "{a:?}: exit {code}: {err}"
+        );
+        // the file itself is a valid system (not refused by the reader, e.g. a stale key)
+        assert!(!err.contains("unknown key"), "{a:?}: {err}");
+    }
+}
+
+/// The fields each command accepts (issue 17 item 2; docs/hardening.md): exit status over
+/// Q, Q(i), Q(sqrt 3) (a Hermitian-type matrix with irrational off-diagonal entries) and
+/// Q(p) (`--symbolic`). A refusal is exit 2 with one line naming why; no command answers
+/// over a field it does not support. Change a row here when a command gains a field.
+#[test]
+fn fields_each_command_accepts() {
+    let q = temp_file(
+        "fq.json",
+        r#"{"A": [[-1, 2], [0, -3]], "B": [[1], [1]], "C": [[1, 0]]}"#,
+    );
+    let qi = temp_file(
+        "fqi.json",
+        r#"{"A": [["1", "2+i"], ["2-i", "3"]], "B": [[1], [0]], "C": [[1, 0]]}"#,
+    );
+    let qs = temp_file(
+        "fqs.json",
+        r#"{"A": [["1", "2+sqrt(3)"], ["2-sqrt(3)", "3"]], "B": [[1], [0]], "C": [[1, 0]]}"#,
+    );
+    let qp = "tests/data/everyday/quarter_car.json";
+    // command, exit over [Q, Q(i), Q(sqrt 3), Q(p)]
+    let table: &[(&str, [i32; 4])] = &[
+        ("jordan", [0, 2, 2, 0]),
+        ("jordan --real", [0, 2, 2, 2]),
+        ("minreal", [0, 0, 0, 0]),
+        ("minreal --method rosenbrock", [0, 0, 0, 0]),
+        ("minreal --method ho-kalman", [0, 0, 0, 0]),
+        ("minreal --method jordan", [0, 2, 2, 2]),
+        ("minreal --method era", [0, 2, 0, 2]),
+        ("standard", [0, 0, 0, 0]),
+        ("scb", [0, 0, 0, 0]),
+        ("mnf", [0, 0, 0, 0]),
+        ("zeros", [0, 0, 0, 0]),
+        ("pencil", [0, 0, 0, 2]),
+        ("ctrb", [0, 0, 0, 0]),
+        ("obsv", [0, 0, 0, 0]),
+        ("tf", [0, 2, 2, 0]),
+        ("modes", [0, 2, 2, 2]),
+        ("freqresp --points 5", [0, 2, 0, 2]),
+        ("check", [0, 2, 0, 2]),
+        ("linalg det", [0, 0, 0, 0]),
+        ("linalg rank", [0, 0, 0, 0]),
+        ("linalg charpoly", [0, 0, 0, 0]),
+        ("linalg minpoly", [0, 0, 0, 0]),
+        ("linalg inverse", [0, 0, 0, 0]),
+        ("linalg nullspace", [0, 0, 0, 0]),
+        ("linalg rref", [0, 0, 0, 0]),
+        ("analyze", [0, 0, 0, 0]),
+    ];
+    let files = [
+        q.to_str().unwrap(),
+        qi.to_str().unwrap(),
+        qs.to_str().unwrap(),
+        qp,
+    ];
+    let mut wrong = vec![];
+    for (cmd, want) in table {
+        for (k, file) in files.iter().enumerate() {
+            let mut a: Vec<&str> = cmd.split(' ').collect();
+            a.push(file);
+            if k == 3 {
+                a.push("--symbolic");
+            }
+            let (code, _, err) = run(&a);
+            if code != want[k] {
+                wrong.push(format!("{a:?}: exit {code}, table says {}: {err}", want[k]));
+            } else if code == 2 {
+                assert_eq!(err.lines().count(), 1, "{a:?}: {err}");
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}

@@ -37,6 +37,10 @@ fn cli_pencil_and_minreal_descriptor() {
     let (code, _, err) = run(&["minreal", "tests/data/improper_s.json"]);
     assert_eq!(code, 2);
     assert!(err.contains("polynomial part of degree 1"), "{err}");
+    // `standard` refuses too, stating the polynomial part itself (G(s) = s - 1 here)
+    let (code, _, err) = run(&["standard", "tests/data/improper_s.json"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("degree 1 in s, P(s) = [[s - 1]]"), "{err}");
 }
 
 #[test]
@@ -97,4 +101,74 @@ fn cli_pencil_rectangular() {
     let (code, _, err) = run(&["ctrb", "tests/data/pencil_rect.json"]);
     assert_eq!(code, 2);
     assert!(err.contains("must be square"), "{err}");
+}
+
+/// The bicycle descriptor model of the minimal-realization paper (sec. 4.2, v = 2 m/s)
+/// through the CLI: `pencil` (regular, one non-dynamic mode, 6 finite eigenvalues),
+/// `standard` (7 -> 6), `minreal --descriptor` (-> 4, irreducible 4).
+#[test]
+fn cli_bicycle_descriptor() {
+    use exactlti::field::Q;
+    use exactlti::field::fmt_rational;
+    use exactlti::matrix::Matrix;
+    let d = crate::bicycle::bicycle_descriptor("2");
+    let js = |m: &Matrix<Q>| {
+        let rows: Vec<String> = (0..m.nrows())
+            .map(|i| {
+                let r: Vec<String> = m
+                    .row(i)
+                    .iter()
+                    .map(|x| format!("\"{}\"", fmt_rational(x)))
+                    .collect();
+                format!("[{}]", r.join(", "))
+            })
+            .collect();
+        format!("[{}]", rows.join(", "))
+    };
+    let text = format!(
+        "{{\"E\": {}, \"A\": {}, \"B\": {}, \"C\": {}, \"D\": {}}}",
+        js(&d.e),
+        js(&d.a),
+        js(&d.b),
+        js(&d.c),
+        js(&d.d)
+    );
+    let dir = std::env::temp_dir().join("exactlti_cli_pencil");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bicycle_descriptor_2.json");
+    std::fs::write(&path, text).unwrap();
+    let path = path.to_str().unwrap();
+    let (code, v, err) = run(&["pencil", path]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["regular"], true);
+    assert_eq!(v["normal_rank"], 7);
+    assert_eq!(v["infinite_elementary_divisors"], serde_json::json!([1]));
+    assert_eq!(v["right_kronecker_indices"], serde_json::json!([]));
+    assert_eq!(v["left_kronecker_indices"], serde_json::json!([]));
+    let nfin: usize = v["finite_eigenvalues"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| {
+            x["blocks"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|b| b.as_u64().unwrap() as usize)
+                .sum::<usize>()
+        })
+        .sum();
+    assert_eq!(nfin, 6);
+    assert_eq!(v["verified"], true);
+    let (code, v, err) = run(&["standard", path]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["A"].as_array().map(Vec::len), Some(6));
+    assert_eq!(v["verified"], true);
+    let (code, v, err) = run(&["minreal", path, "--descriptor"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        (v["order"].as_u64(), v["irreducible_order"].as_u64()),
+        (Some(4), Some(4))
+    );
+    assert_eq!(v["verified"], true);
 }

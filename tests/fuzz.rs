@@ -230,6 +230,10 @@ fn commands(file: &Path) -> Vec<Command> {
             csv: None,
         },
         Command::Check { file: f() },
+        Command::Pencil { file: f() },
+        Command::Ctrb { file: f() },
+        Command::Obsv { file: f() },
+        Command::Tf { file: f() },
     ];
     // `jordan --real` and Jordan-method `minreal`: re-enabled once the real-field marking
     // (`fuzz_jordan_marking.json`) and the slow real Jordan form (`fuzz_slow_real_jordan.json`,

@@ -184,13 +184,31 @@ fn huge_and_endless_files_are_refused_quickly() {
     assert_eq!(e.kind, InputErrorKind::TooLarge);
     assert!(read_text(&p).is_ok());
     if Path::new("/dev/zero").exists() {
-        let t = std::time::Instant::now();
-        let (code, out, err) = run(&["jordan", "/dev/zero"]);
-        assert_eq!(code, 2, "{out}{err}");
-        assert_eq!(err.trim().lines().count(), 1, "{err}");
-        assert!(err.contains("larger than"), "{err}");
-        // a generous bound (debug build, busy machine): without the cap this never ends
-        assert!(t.elapsed().as_secs() < 60);
+        // every command that reads a file (jordan and linalg read A alone; critical and
+        // sweep read a parameter family): each through the capped reader
+        for cmd in [
+            &["jordan"][..],
+            &["linalg", "det"],
+            &["minreal"],
+            &["analyze"],
+            &["check"],
+            &["freqresp"],
+            &["pencil"],
+            &["tf"],
+            &["bifurcations"],
+            &["critical", "--param", "v", "--from", "0", "--to", "1"],
+            &["sweep", "--param", "v", "--from", "0", "--to", "1"],
+        ] {
+            let t = std::time::Instant::now();
+            let mut a = cmd.to_vec();
+            a.push("/dev/zero");
+            let (code, out, err) = run(&a);
+            assert_eq!(code, 2, "{a:?}: {out}{err}");
+            assert_eq!(err.trim().lines().count(), 1, "{a:?}: {err}");
+            assert!(err.contains("larger than"), "{a:?}: {err}");
+            // a generous bound (debug build, busy machine): without the cap this never ends
+            assert!(t.elapsed().as_secs() < 60, "{a:?}");
+        }
     }
 }
 

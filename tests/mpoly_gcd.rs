@@ -148,3 +148,18 @@ fn gcd_with_a_monomial_factor_in_both() {
     assert_eq!(gcd(&m2, &m1), p("a*b*c^2"));
     assert_eq!(gcd(&p("961*a*b"), &p("a^2*b^2")), p("a*b"));
 }
+
+#[test]
+fn cofactor_route_and_variable_order() {
+    // gcd with ~100-bit coefficients, small cofactors: the cofactor image lifts from one
+    // prime and the gcd follows by exact division
+    let big = BigInt::parse_bytes(b"1267650600228229401496703205653", 10).unwrap();
+    let h = p("x^3*a + b*c^2 - 5*x").scale(&big).add(&p("a^2*c - 7"));
+    check(&h.mul(&p("x - 2*b + 1")), &h.mul(&p("x^2 + a*x - 3")), &h);
+    // the largest degree in the last variable (the dense order puts it first)
+    let h = p("c^9 + a*c^4 - b + x");
+    check(&h.mul(&p("c^3 - a")), &h.mul(&p("c^2 + x*b")), &h);
+    // one input divides the other
+    let h = p("(x + a*b)^2*(c - 1)");
+    check(&h.mul(&p("x*c + 2")), &h, &h);
+}

@@ -7,6 +7,12 @@
 //!   $[A - \lambda E, B]$ and of the system pencil $[A - \lambda E, B; C, D]$.
 //! * SLICOT AB01MD documentation example (single-input controllability staircase):
 //!   $A = [[1, 2, 0], [4, -1, 0], [0, 0, 1]]$, $b = [1, 0, 1]^T$, NCONT = 3.
+//! * MatrixPencils.jl `test/test_klfapps.jl` (`pkstruct`, `prank`, `peigvals`, `pzeros`,
+//!   `isregular`): the 5 x 5 integer pencil $M - \lambda N$ and Beelen's Example 2.2.1
+//!   (14 x 16, before the random orthogonal transformations of the test, which do not
+//!   change the structure). `pkstruct` reports multiplicity vectors: `rki[i]` right
+//!   indices equal to $i - 1$, `lki[i]` left indices equal to $i - 1$, `id[i]` infinite
+//!   elementary divisors of size $i$, `nf` finite eigenvalues.
 
 use exactlti::field::Q;
 use exactlti::matrix::Matrix;
@@ -122,4 +128,99 @@ fn slicot_ab01md_single_input() {
     assert!(c.verified);
     assert_eq!((c.order, c.indices.clone()), (3, vec![3]));
     assert_eq!(c.block_dims, vec![1, 1, 1]);
+}
+
+/// Expands a MatrixPencils.jl multiplicity vector: `v[i]` copies of `i + offset`.
+fn expand(v: &[usize], offset: usize) -> Vec<usize> {
+    v.iter()
+        .enumerate()
+        .flat_map(|(i, &c)| std::iter::repeat_n(i + offset, c))
+        .collect()
+}
+
+#[test]
+fn matrixpencils_pkstruct_5x5() {
+    // rki == [1], lki == [1], id == [1], nf == 3; prank == 4; !isregular;
+    // peigvals: 1 infinite, 3 finite; pzeros: 3 finite, none infinite
+    let mm = m(&[
+        &[22, 34, 31, 31, 17],
+        &[45, 45, 42, 19, 29],
+        &[39, 47, 49, 26, 34],
+        &[27, 31, 26, 21, 15],
+        &[38, 44, 44, 24, 30],
+    ]);
+    let nn = m(&[
+        &[13, 26, 25, 17, 24],
+        &[31, 46, 40, 26, 37],
+        &[26, 40, 19, 25, 25],
+        &[16, 25, 27, 14, 23],
+        &[24, 35, 18, 21, 22],
+    ]);
+    let ps = pencil_structure(&mm, &nn).unwrap();
+    assert!(ps.verified);
+    let k = &ps.structure;
+    assert_eq!(k.right_indices, expand(&[1], 0));
+    assert_eq!(k.left_indices, expand(&[1], 0));
+    assert_eq!(k.infinite_divisors, expand(&[1], 1));
+    assert_eq!(k.finite_order(), 3);
+    assert_eq!(k.normal_rank, 4);
+    assert!(!k.is_regular());
+    // infinite eigenvalues counted with multiplicity (peigvals), infinite zeros = blocks
+    // of size k >= 2 contribute k - 1 (pzeros)
+    assert_eq!(k.infinite_order(), 1);
+    let inf_zeros: usize = k.infinite_divisors.iter().map(|&d| d - 1).sum();
+    assert_eq!(inf_zeros, 0);
+}
+
+#[test]
+fn matrixpencils_beelen_example_2_2_1() {
+    // Test Suite 2 (Example 2.2.1, Beelen): rki == [2, 1, 1], lki == [1, 0, 0, 1],
+    // id == [1, 1], nf == 3; prank == 12; peigvals: 3 infinite + 3 finite; pzeros: 1
+    // infinite + 3 finite
+    let mut mm = Matrix::zeros(Q, 14, 16);
+    let i1 = [1, 2, 3, 6, 7, 8, 9, 10, 11, 12, 13, 13, 14];
+    let j1 = [4, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 16];
+    let aval = [1, 1, 1, 1, 1, 1, 1, 1, 1, 2, 3, 1, 3];
+    for ((i, j), v) in i1.iter().zip(j1).zip(aval) {
+        mm.set(
+            i - 1,
+            j - 1,
+            exactlti::field::Rational::from_integer(v.into()),
+        );
+    }
+    let mut nn = Matrix::zeros(Q, 14, 16);
+    let i1 = [1, 2, 3, 5, 6, 7, 10, 12, 13, 14];
+    let j1 = [3, 5, 6, 8, 9, 10, 13, 14, 15, 16];
+    for (i, j) in i1.iter().zip(j1) {
+        nn.set(
+            i - 1,
+            j - 1,
+            exactlti::field::Rational::from_integer(1.into()),
+        );
+    }
+    let check = |mm: &Matrix<Q>, nn: &Matrix<Q>| {
+        let ps = pencil_structure(mm, nn).unwrap();
+        assert!(ps.verified);
+        let k = &ps.structure;
+        assert_eq!(k.right_indices, expand(&[2, 1, 1], 0));
+        assert_eq!(k.left_indices, expand(&[1, 0, 0, 1], 0));
+        assert_eq!(k.infinite_divisors, expand(&[1, 1], 1));
+        assert_eq!(k.finite_order(), 3);
+        assert_eq!(k.normal_rank, 12);
+        assert_eq!(k.infinite_order(), 3);
+        let inf_zeros: usize = k.infinite_divisors.iter().map(|&d| d - 1).sum();
+        assert_eq!(inf_zeros, 1);
+    };
+    check(&mm, &nn);
+    // the test scrambles by random orthogonal Q, Z; here by fixed unimodular ones
+    let mut q = Matrix::identity(Q, 14);
+    let mut z = Matrix::identity(Q, 16);
+    let one = exactlti::field::Rational::from_integer(1.into());
+    for i in 0..13 {
+        q.set(i, i + 1, one.clone());
+    }
+    for j in 0..15 {
+        z.set(j + 1, j, -one.clone());
+    }
+    check(&(&(&q * &mm) * &z), &(&(&q * &nn) * &z));
 }

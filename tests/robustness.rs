@@ -24,3 +24,98 @@ fn float_freqresp_with_no_states() {
     .unwrap();
     assert_eq!(g[0].shape(), (0, 0));
 }
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Every command on n = 0 finite states (E = 0), no inputs, no outputs, an empty system and
+/// B = 0: an answer (exit 0) or a one-line refusal (exit 2); never a panic or exit 1.
+#[test]
+fn every_command_on_degenerate_shapes() {
+    let dir = std::env::temp_dir().join(format!("exactlti-robust-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let files = [
+        ("e0", r#"{"E": [[0]], "A": [[1]], "B": [[1]], "C": [[1]]}"#),
+        (
+            "e00",
+            r#"{"E": [[0, 0], [0, 0]], "A": [[1, 0], [0, 1]], "B": [[1], [1]], "C": [[1, 1]]}"#,
+        ),
+        (
+            "noin",
+            r#"{"A": [[1, 2], [3, 4]], "B": [[], []], "C": [[1, 0]]}"#,
+        ),
+        (
+            "noout",
+            r#"{"A": [[1, 2], [3, 4]], "B": [[1], [0]], "C": []}"#,
+        ),
+        ("empty", r#"{"A": [], "B": [], "C": []}"#),
+        ("zerob", r#"{"A": [[-1]], "B": [[0]], "C": [[0]]}"#),
+    ];
+    let cmds: &[&[&str]] = &[
+        &["jordan"],
+        &["jordan", "--real"],
+        &["minreal"],
+        &["minreal", "--method", "rosenbrock"],
+        &["minreal", "--method", "ho-kalman"],
+        &["minreal", "--method", "jordan"],
+        &["minreal", "--method", "era"],
+        &["standard"],
+        &["scb"],
+        &["mnf"],
+        &["zeros"],
+        &["pencil"],
+        &["ctrb"],
+        &["obsv"],
+        &["tf"],
+        &["modes"],
+        &["freqresp", "--points", "3"],
+        &["check"],
+        &["analyze"],
+        &["linalg", "det"],
+        &["linalg", "rank"],
+        &["linalg", "charpoly"],
+        &["linalg", "inverse"],
+        &["linalg", "nullspace"],
+        &["linalg", "rref"],
+    ];
+    for (name, text) in files {
+        let p = dir.join(format!("{name}.json"));
+        std::fs::write(&p, text).unwrap();
+        for cmd in cmds {
+            let mut a = cmd.to_vec();
+            a.push(p.to_str().unwrap());
+            let (code, _, err) = run(&a);
+            assert!(
+                code == 0 || (code == 2 && err.lines().count() == 1),
+                "{name}: {a:?}: exit {code}: {err}"
+            );
+        }
+    }
+    // E = 0: no finite dynamics, G = -C A^-1 B = -1 at every frequency (this panicked)
+    let p = dir.join("e0.json");
+    let (code, out, err) = run(&[
+        "freqresp",
+        p.to_str().unwrap(),
+        "--points",
+        "3",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    for g in j["response"].as_array().unwrap() {
+        assert_eq!(g[0][0][0].as_f64(), Some(-1.0), "{g}");
+        assert_eq!(g[0][0][1].as_f64(), Some(0.0), "{g}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -102,3 +102,27 @@ fn cli_refuses_unsupported_commands_with_one_line() {
     assert_eq!(code, 2);
     assert!(err.contains("--symbolic: unknown parameter 'x'"), "{err}");
 }
+
+#[test]
+fn a_alone_is_a_system_without_inputs_and_outputs() {
+    use exactlti::io::SystemFormat;
+    use exactlti::io::symbolic::load_symbolic_str;
+    let text = r#"{"parameters": {"a": null}, "A": [["a", 1], [0, "a"]]}"#;
+    let l = load_symbolic_str(
+        text,
+        SystemFormat::Json,
+        "x.json",
+        &SymbolicOptions::default(),
+    )
+    .unwrap();
+    let TypedAny::RatFunc(t) = &l.system else {
+        panic!("expected QQ(a)")
+    };
+    assert_eq!(t.ss.b.shape(), (2, 0));
+    assert_eq!(t.ss.c.shape(), (0, 2));
+    assert_eq!(t.ss.d.shape(), (0, 0));
+    // the Jordan form of a single block: J = A, two chains of one eigenvalue a
+    let jf = exactlti::jordan::params::jordan_params(&t.a_raw).unwrap();
+    assert!(jf.verified && jf.complete);
+    assert_eq!(jf.eigenvalues[0].blocks, vec![2]);
+}

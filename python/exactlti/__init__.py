@@ -8,13 +8,18 @@ Quick start::
 
 Everything is exact (``"0.08"`` is 2/25; eigenvalues are algebraic numbers); every exact
 result carries ``verified``. Approximations come from ``to_numpy()`` / ``approx()``.
+Transfer functions: ``exactlti.tf([1, 1], [1, 3, 2])`` or ``exactlti.tf("(s+1)/(s^2+3s+2)")``.
+Symbolic parameters: ``exactlti.ss([[0, 1], ["-k/m", "-c/m"]], ..., params={"m": None, ...})``
+or SymPy symbols; results then carry ``conditions`` (polynomials assumed nonzero).
 """
 
 from ._core import UnsupportedError, VerificationError
 from ._convert import ExactnessWarning
-from ._exact import AlgebraicNumber, Matrix, Polynomial, RationalFunction
+from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
 from ._system import (
     CheckResult,
+    Factor,
+    Factorization,
     JordanResult,
     MinrealResult,
     MnfResult,
@@ -22,6 +27,8 @@ from ._system import (
     Roots,
     ScbResult,
     StateSpace,
+    SymbolicEigenvalue,
+    SymbolicJordanResult,
     TransferMatrix,
     from_control,
     jordan,
@@ -51,6 +58,11 @@ __all__ = [
     "Roots",
     "TransferMatrix",
     "CheckResult",
+    "Conditions",
+    "Factor",
+    "Factorization",
+    "SymbolicEigenvalue",
+    "SymbolicJordanResult",
     "ExactnessWarning",
     "UnsupportedError",
     "VerificationError",

@@ -20,8 +20,11 @@ class ExactnessWarning(UserWarning):
 
 
 class _FloatNote:
+    """What the conversion noticed: floats read as decimals, SymPy symbols met."""
+
     def __init__(self):
         self.examples = []
+        self.symbols = set()
 
     def add(self, x, text):
         if len(self.examples) < 3:
@@ -41,20 +44,20 @@ def _is_sympy(x):
     return any(c.__module__.startswith("sympy") for c in t.__mro__)
 
 
-def _sympy_text(x, where):
+def _sympy_text(x, where, note):
     if getattr(x, "free_symbols", None):
-        names = ", ".join(sorted(str(s) for s in x.free_symbols))
-        raise NotImplementedError(
-            "%s: symbolic parameters (%s) are not supported yet: exactlti will take them "
-            "once its symbolic field lands; give numbers, or name a parameter in params={...} "
-            "with a value" % (where, names)
-        )
-    if getattr(x, "is_Rational", False):
+        # a symbolic parameter: the library reads rational functions of the symbols
+        for sym in x.free_symbols:
+            note.symbols.add(str(sym))
+    elif getattr(x, "is_Rational", False):
         return "%d/%d" % (int(x.p), int(x.q))
-    # an algebraic number such as sqrt(2)/2 or 1 + I: the reader evaluates it exactly
+    # an algebraic number such as sqrt(2)/2 or 1 + I, or an expression in symbols: the
+    # reader evaluates it exactly
     import sympy
 
-    text = sympy.sstr(x).replace("**", "^").replace("I", "i")
+    text = sympy.sstr(x).replace("**", "^")
+    if not getattr(x, "free_symbols", None):
+        text = text.replace("I", "i")
     return text
 
 
@@ -73,7 +76,7 @@ def entry_text(x, where, note):
             raise ValueError("%s: %s is not a finite number" % (where, x))
         return str(x)
     if _is_sympy(x):
-        return _sympy_text(x, where)
+        return _sympy_text(x, where, note)
     if isinstance(x, numbers.Rational):
         return "%d/%d" % (x.numerator, x.denominator)
     if isinstance(x, numbers.Real):
@@ -122,18 +125,34 @@ def matrix_text(m, key, note):
     return rows
 
 
-def system_json(name, mats, params=None, warn_floats=True, stacklevel=3):
-    """The system-file JSON text for matrices ``{key: value}`` and ``params``."""
+def _param_value(k, v, where, note):
+    """A parameter's value as reader text, or ``None`` (JSON null) for a symbol."""
+    if v is None:
+        return None
+    if _is_sympy(v) and getattr(v, "is_Symbol", False) and str(v) == str(k):
+        return None  # {"m": Symbol("m")}: m stays a symbol
+    return entry_text(v, where, note)
+
+
+def system_doc(name, mats, params=None, symbols=(), warn_floats=True, stacklevel=3):
+    """The system file (a dict) for matrices ``{key: value}``, ``params`` (value ``None``:
+    a symbol) and ``symbols`` (names kept symbolic); ``symbolic`` is True when a symbol
+    is left (SymPy symbols in the entries count)."""
     note = _FloatNote()
     doc = {"name": name}
     if params:
         doc["parameters"] = {
-            str(k): entry_text(v, "parameter %s" % k, note) for k, v in params.items()
+            str(k): _param_value(k, v, "parameter %s" % k, note) for k, v in params.items()
         }
     for key, m in mats.items():
         t = matrix_text(m, key, note)
         if t is not None:
             doc[key] = t
+    given = set(doc.get("parameters", {}))
+    extra = sorted((note.symbols | set(map(str, symbols))) - given)
+    if extra:
+        doc["symbols"] = extra
+    symbolic = bool(extra) or any(v is None for v in doc.get("parameters", {}).values())
     if note.examples and warn_floats:
         warnings.warn(
             "binary floats were read as the shortest decimals they print as (%s); "
@@ -142,4 +161,10 @@ def system_json(name, mats, params=None, warn_floats=True, stacklevel=3):
             ExactnessWarning,
             stacklevel=stacklevel,
         )
-    return json.dumps(doc)
+    return doc, symbolic
+
+
+def system_json(name, mats, params=None, symbols=(), warn_floats=True, stacklevel=3):
+    """``(JSON text, symbolic)`` of :func:`system_doc`."""
+    doc, symbolic = system_doc(name, mats, params, symbols, warn_floats, stacklevel + 1)
+    return json.dumps(doc), symbolic

@@ -9,7 +9,7 @@ form); ``to_numpy()`` gives the approximation.
 
 from fractions import Fraction
 
-__all__ = ["Matrix", "AlgebraicNumber", "Polynomial", "RationalFunction"]
+__all__ = ["Matrix", "AlgebraicNumber", "Polynomial", "RationalFunction", "Conditions"]
 
 
 def _frac(pq):
@@ -30,6 +30,36 @@ def _sympy():
     except ImportError as e:  # pragma: no cover - depends on the environment
         raise ImportError("to_sympy() needs SymPy: pip install sympy") from e
     return sympy
+
+
+def _sympy_names(sympy, params=()):
+    """The names an exact entry's text may use: ``i``, ``sqrt`` and the parameters."""
+    names = {"i": sympy.I, "sqrt": sympy.sqrt}
+    for p in params:
+        names[p] = sympy.Symbol(p)
+    return names
+
+
+def _sympify(sympy, text, names):
+    return sympy.sympify(text.replace("^", "**"), locals=names)
+
+
+class Conditions(list):
+    """The polynomials in the parameters a symbolic result assumes nonzero (pivots,
+    divisions, discriminants), as strings; ``to_sympy()`` gives SymPy expressions. The
+    result holds for every parameter value at which none of them vanishes."""
+
+    def __init__(self, items=(), params=()):
+        super().__init__(str(x) for x in items)
+        self.params = tuple(params)
+
+    def to_sympy(self):
+        sympy = _sympy()
+        names = _sympy_names(sympy, self.params)
+        return [_sympify(sympy, c, names) for c in self]
+
+    def __repr__(self):
+        return "Conditions(%s != 0)" % ", ".join(self) if self else "Conditions()"
 
 
 def _sympy_rational(sympy, p, q):
@@ -79,23 +109,34 @@ class Polynomial:
     2
     """
 
-    def __init__(self, data):
+    def __init__(self, data, params=()):
         q = data.get("q")
         self.coeffs = [_frac(c) for c in q] if q is not None else None
         self.text = data["text"]
+        #: exact text of each coefficient (low degree first) when they are not rational
+        self.exact_coeffs = data.get("coeffs")
+        self.params = tuple(params)
 
     @property
     def degree(self):
-        if self.coeffs is None:
-            raise ValueError("the coefficients are not rational: %s" % self.text)
-        return len(self.coeffs) - 1
+        if self.coeffs is not None:
+            return len(self.coeffs) - 1
+        if self.exact_coeffs is not None:
+            return len(self.exact_coeffs) - 1
+        raise ValueError("the coefficients are not rational: %s" % self.text)
 
     def to_sympy(self, var="s"):
         """The polynomial as a SymPy expression in ``var`` (a name or a Symbol)."""
         sympy = _sympy()
         s = sympy.Symbol(var) if isinstance(var, str) else var
         if self.coeffs is None:
-            return sympy.sympify(self.text.replace("^", "**"), locals={"s": s, "i": sympy.I})
+            names = _sympy_names(sympy, self.params)
+            if self.exact_coeffs is not None:
+                return sympy.Add(
+                    *[_sympify(sympy, c, names) * s**k for k, c in enumerate(self.exact_coeffs)]
+                )
+            names["s"] = s
+            return _sympify(sympy, self.text, names)
         return sum(
             (_sympy_rational(sympy, c.numerator, c.denominator) * s**k for k, c in enumerate(self.coeffs)),
             sympy.Integer(0),
@@ -255,7 +296,7 @@ class Matrix:
 
     __array_priority__ = 0
 
-    def __init__(self, data, symbols=None):
+    def __init__(self, data, symbols=None, params=()):
         self.nrows = data["nrows"]
         self.ncols = data["ncols"]
         self._q = data.get("q")
@@ -264,6 +305,8 @@ class Matrix:
         self._latex = data.get("latex")
         self._approx = data.get("approx")
         self.symbols = symbols or {}
+        #: names of the symbolic parameters the entries may contain
+        self.params = tuple(params)
 
     @classmethod
     def _from_strings(cls, exact, approx=None, symbols=None):
@@ -330,7 +373,7 @@ class Matrix:
                 Integer(p) if q == 1 else Rational(p, q) for row in self._q for (p, q) in row
             ]
             return sympy.Matrix(self.nrows, self.ncols, flat)
-        names = {"i": sympy.I, "sqrt": sympy.sqrt}
+        names = _sympy_names(sympy, self.params)
         for name, num in self.symbols.items():
             if keep_symbols:
                 names[name] = sympy.Symbol(name)
@@ -349,6 +392,11 @@ class Matrix:
             return np.array(
                 [[p / q for (p, q) in row] for row in self._q], dtype=float
             ).reshape(self.nrows, self.ncols)
+        if self._approx is None:
+            raise TypeError(
+                "the entries depend on the symbolic parameters %s: no floating-point "
+                "value (give values with subs)" % ", ".join(self.params)
+            )
         a = np.array(
             [[complex(re, im) for (re, im) in row] for row in self._approx], dtype=complex
         ).reshape(self.nrows, self.ncols)
@@ -387,12 +435,17 @@ class Matrix:
 class RationalFunction:
     """One entry ``num(s)/den(s)`` of a transfer matrix (exact coefficients)."""
 
-    def __init__(self, num, den):
-        self.num = Polynomial(num)
-        self.den = Polynomial(den)
+    def __init__(self, num, den, params=()):
+        self.num = Polynomial(num, params)
+        self.den = Polynomial(den, params)
 
     def to_sympy(self, var="s"):
-        return self.num.to_sympy(var) / self.den.to_sympy(var)
+        """``num/den`` in SymPy (with symbolic parameters: cancelled to one fraction of
+        polynomials in ``var`` and the parameters)."""
+        h = self.num.to_sympy(var) / self.den.to_sympy(var)
+        if self.num.params:
+            h = _sympy().cancel(h)
+        return h
 
     def __str__(self):
         if self.den.text == "1":

@@ -1,11 +1,12 @@
 """Exact state-space systems and the results of exact operations on them."""
 
 import json
+import re
 import warnings
 
 from . import _core
-from ._convert import ExactnessWarning, system_json
-from ._exact import AlgebraicNumber, Matrix, Polynomial, RationalFunction
+from ._convert import ExactnessWarning, entry_text, _FloatNote, system_doc, system_json
+from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
 
 __all__ = [
     "StateSpace",
@@ -22,6 +23,10 @@ __all__ = [
     "Roots",
     "TransferMatrix",
     "CheckResult",
+    "SymbolicJordanResult",
+    "SymbolicEigenvalue",
+    "Factorization",
+    "Factor",
 ]
 
 _METHODS = ("kalman", "rosenbrock", "ho-kalman", "jordan")
@@ -69,25 +74,25 @@ class StateSpace:
 
     @property
     def A(self):
-        return Matrix(self._mats()["A"])
+        return Matrix(self._mats()["A"], params=self.params)
 
     @property
     def B(self):
-        return Matrix(self._mats()["B"])
+        return Matrix(self._mats()["B"], params=self.params)
 
     @property
     def C(self):
-        return Matrix(self._mats()["C"])
+        return Matrix(self._mats()["C"], params=self.params)
 
     @property
     def D(self):
-        return Matrix(self._mats()["D"])
+        return Matrix(self._mats()["D"], params=self.params)
 
     @property
     def E(self):
         """The descriptor matrix given on input (``None`` for a standard system)."""
         e = self._mats()["E"]
-        return None if e is None else Matrix(e)
+        return None if e is None else Matrix(e, params=self.params)
 
     @property
     def nstates(self):
@@ -103,8 +108,56 @@ class StateSpace:
 
     @property
     def field(self):
-        """The ground field of the entries (``QQ`` or ``QQ(sqrt(d))``)."""
+        """The ground field of the entries (``QQ``, ``QQ(sqrt(d))``, or ``QQ(m, c)`` with
+        symbolic parameters)."""
         return self._core.ground
+
+    @property
+    def params(self):
+        """The names of the symbolic parameters (empty for a numeric system)."""
+        return tuple(self._core.params)
+
+    @property
+    def is_symbolic(self):
+        """True when the entries are rational functions of symbolic parameters."""
+        return bool(self._core.params)
+
+    @property
+    def symbols(self):
+        """The symbolic parameters as SymPy Symbols."""
+        import sympy
+
+        return tuple(sympy.Symbol(p) for p in self.params)
+
+    def subs(self, values=None, **kw):
+        """The system with values for (some of) its symbolic parameters (exact: ints,
+        Fractions, decimal strings, SymPy numbers); parameters left out stay symbols.
+
+        >>> import exactlti
+        >>> G = exactlti.ss([[0, 1], ["-k/m", "-c/m"]], [[0], ["1/m"]], [[1, 0]],
+        ...                 params={"m": None, "c": None, "k": None})
+        >>> G.field
+        'QQ(c, k, m)'
+        >>> H = G.subs(m=2, k="0.5")
+        >>> H.field, H.A[1, 0]
+        ('QQ(c)', '-1/4')
+        >>> H.subs(c=1).A[1, 1]
+        Fraction(-1, 2)
+        """
+        vals = dict(values or {})
+        vals.update(kw)
+        unknown = sorted(set(map(str, vals)) - set(self.params))
+        if unknown:
+            raise ValueError(
+                "subs: unknown parameter%s %s (the system's parameters: %s)"
+                % ("s" if len(unknown) > 1 else "", ", ".join(unknown),
+                   ", ".join(self.params) or "none")
+            )
+        m = self._mats()
+        mats = {k: _exact_rows(m[k]) for k in ("A", "B", "C", "D")}
+        params = {p: vals.get(p) for p in self.params}
+        text, symbolic = system_json("subs", mats, params, stacklevel=3)
+        return StateSpace(_core.load_json(text, "subs", symbolic))
 
     # -- exact operations -------------------------------------------------------------
 
@@ -140,6 +193,8 @@ class StateSpace:
         (['-3'], [Fraction(3, 1), Fraction(1, 1)])
         """
         d = self._core.zeros(max_seconds)
+        if self.is_symbolic:
+            return Factorization(d)
         if d["roots"] is None:
             raise _core.UnsupportedError(
                 "the invariant-zero polynomial %s is not rational: roots over this field "
@@ -152,18 +207,27 @@ class StateSpace:
 
     def poles(self, max_seconds=None):
         """Eigenvalues of ``A`` as exact algebraic numbers (repeated by multiplicity):
-        real ones ascending, then complex ones by real and imaginary part."""
-        return Roots(self._core.poles(max_seconds))
+        real ones ascending, then complex ones by real and imaginary part. With symbolic
+        parameters: the :class:`Factorization` of ``det(sI - A)`` over ``Q(params)``."""
+        d = self._core.poles(max_seconds)
+        if self.is_symbolic:
+            return Factorization(d)
+        return Roots(d)
 
     def charpoly(self):
         """``det(sI - A)`` (exact)."""
+        if self.is_symbolic:
+            return self.poles().polynomial
         j = self._core.jordan(False, None)
         return Polynomial(j["charpoly"])
 
     def jordan(self, real=False, max_seconds=None):
         """Exact Jordan form of ``A``: ``A T = T J`` (``real=True``: real Jordan form with
         2x2 blocks ``[[a, b], [-b, a]]`` and real ``T``). See :func:`exactlti.jordan`."""
-        return JordanResult(self._core.jordan(real, max_seconds))
+        d = self._core.jordan(real, max_seconds)
+        if self.is_symbolic:
+            return SymbolicJordanResult(d)
+        return JordanResult(d)
 
     def scb(self, max_seconds=None):
         """Special coordinate basis (Sannuti–Saberi / Chen): the SCB system with the
@@ -187,15 +251,15 @@ class StateSpace:
 
     def markov(self, count, max_seconds=None):
         """Markov parameters ``C A^k B`` for ``k = 0 .. count-1``."""
-        return [Matrix(m) for m in self._core.markov(int(count), max_seconds)]
+        return [Matrix(m, params=self.params) for m in self._core.markov(int(count), max_seconds)]
 
     def ctrb(self, max_seconds=None):
         """Controllability matrix ``[B, AB, ..., A^(n-1) B]`` (exact)."""
-        return Matrix(self._core.ctrb(max_seconds))
+        return Matrix(self._core.ctrb(max_seconds), params=self.params)
 
     def obsv(self, max_seconds=None):
         """Observability matrix ``[C; CA; ...; CA^(n-1)]`` (exact)."""
-        return Matrix(self._core.obsv(max_seconds))
+        return Matrix(self._core.obsv(max_seconds), params=self.params)
 
     def check(self, max_seconds=None):
         """The floating-point path beside the exact one: McMillan degree, controllability
@@ -250,7 +314,22 @@ class StateSpace:
         )
 
 
-def ss(A, B=None, C=None, D=None, E=None, params=None, name="ss"):
+def _exact_rows(m):
+    """Reader text of a matrix from the core's plain data (rational pairs or exact text)."""
+    if m.get("q") is not None:
+        return [["%d/%d" % (p, q) for (p, q) in row] for row in m["q"]]
+    if m["nrows"] and not m["ncols"]:
+        return [[] for _ in range(m["nrows"])]
+    return [list(r) for r in m["exact"]]
+
+
+def _params_arg(params, parameters):
+    if params is not None and parameters is not None:
+        raise TypeError("give params or parameters, not both")
+    return params if params is not None else parameters
+
+
+def ss(A, B=None, C=None, D=None, E=None, params=None, name="ss", parameters=None, symbols=()):
     """An exact state-space system ``E x' = A x + B u``, ``y = C x + D u``.
 
     Entries may be ints, ``Fraction``, ``Decimal``, decimal or fraction strings
@@ -259,6 +338,12 @@ def ss(A, B=None, C=None, D=None, E=None, params=None, name="ss"):
     (``"[0 1; -2 -3]"``). Binary floats are read as the shortest decimals they print as,
     with an :class:`ExactnessWarning`. ``B``, ``C``, ``D`` default to empty/zero matrices.
     A descriptor system (``E``) is converted to standard form exactly.
+
+    Symbolic parameters: a parameter with value ``None`` (``params={"m": None}``), a name
+    in ``symbols``, or a SymPy ``Symbol`` in the entries stays a symbol; the entries are
+    then rational functions of the symbols (field ``QQ(m, ...)``) and the results carry
+    ``conditions``, the polynomials in the parameters they assume nonzero.
+    ``parameters`` is another name for ``params``.
 
     Bad input raises ``ValueError`` with the command line's one-line message:
 
@@ -269,28 +354,199 @@ def ss(A, B=None, C=None, D=None, E=None, params=None, name="ss"):
     ValueError: ss: key A, row 2, column 1: unknown parameter 'k'
     >>> exactlti.ss([[0, 1], ["-k", 0]], params={"k": "0.5"}).A[1, 0]
     Fraction(-1, 2)
+
+    With symbols (SymPy or strings):
+
+    >>> import sympy
+    >>> m, k = sympy.symbols("m k", positive=True)
+    >>> G = exactlti.ss([[0, 1], [-k / m, 0]], [[0], [1 / m]], [[1, 0]])
+    >>> G.field, G.params
+    ('QQ(k, m)', ('k', 'm'))
+    >>> G.A.to_sympy()
+    Matrix([
+    [   0, 1],
+    [-k/m, 0]])
     """
-    text = system_json(name, {"A": A, "B": B, "C": C, "D": D, "E": E}, params)
-    return StateSpace(_core.load_json(text, name))
-
-
-def tf(*args, **kwargs):
-    """Transfer-matrix input is not available yet.
-
-    The library reads systems in state-space, descriptor and second-order form; reading
-    a transfer matrix ``G(s)`` is being added. Until then build the system with
-    :func:`ss` (or convert with python-control and use :func:`from_control`), and get
-    its exact transfer matrix with ``StateSpace.tf()``.
-    """
-    raise NotImplementedError(
-        "exactlti.tf: transfer-matrix input is not available yet (the library reads "
-        "state-space, descriptor and second-order systems); build the system with "
-        "exactlti.ss(A, B, C, D) and use .tf() for its exact transfer matrix"
+    params = _params_arg(params, parameters)
+    text, symbolic = system_json(
+        name, {"A": A, "B": B, "C": C, "D": D, "E": E}, params, symbols
     )
+    return StateSpace(_core.load_json(text, name, symbolic))
 
 
-def load(path):
-    """Reads a system file (JSON or TOML, as the command line does).
+# -- transfer functions ---------------------------------------------------------------
+
+# a number (or a closing parenthesis) directly before a name or an opening parenthesis:
+# the implicit multiplication of "3s" and "2(s + 1)" (not the exponent of "1e-3")
+_IMPLICIT = re.compile(r"(?<=[0-9.)])\s*(?=(?![eE][+-]?[0-9])[A-Za-z_(])")
+
+
+def _expr_text(x, where, note):
+    """A rational function of ``s`` as reader text: a string (``"(s+1)/(s^2+3s+2)"``,
+    implicit products allowed), a SymPy expression, or a number."""
+    if isinstance(x, str):
+        return _IMPLICIT.sub("*", x.replace("**", "^"))
+    return entry_text(x, where, note)
+
+
+def _coeffs(x):
+    """Coefficients (highest power first) from a list, a numpy array or a scalar."""
+    if hasattr(x, "tolist"):
+        x = x.tolist()
+    if isinstance(x, (list, tuple)):
+        return list(x)
+    return [x]
+
+
+def _poly_text(cs, where, note):
+    cs = _coeffs(cs)
+    if not cs:
+        raise ValueError("%s: an empty list of coefficients" % where)
+    n = len(cs) - 1
+    terms = []
+    for k, c in enumerate(cs):
+        t = entry_text(c, where, note)
+        p = n - k
+        terms.append("(%s)" % t + ("" if p == 0 else "*s" if p == 1 else "*s^%d" % p))
+    return " + ".join(terms)
+
+
+def _ratio_text(num, den, where, note):
+    return "(%s)/(%s)" % (_poly_text(num, where, note), _poly_text(den, where, note))
+
+
+def _depth(x):
+    d = 0
+    while isinstance(x, (list, tuple)) or hasattr(x, "tolist") and hasattr(x, "shape"):
+        if hasattr(x, "tolist"):
+            x = x.tolist()
+        if not x:
+            return d + 1
+        x, d = x[0], d + 1
+    return d
+
+
+def _tf_rows(num, den, note):
+    """Rows of entry text of the transfer matrix ``G``."""
+    if den is not None:
+        # python-control's idiom: coefficient lists, highest power first; MIMO as lists
+        # of lists of coefficient lists
+        if _depth(num) >= 3 or _depth(den) >= 3:
+            num, den = [[_coeffs(c) for c in r] for r in num], [[_coeffs(c) for c in r] for r in den]
+            if len(num) != len(den) or any(len(a) != len(b) for a, b in zip(num, den)):
+                raise ValueError("tf: num and den must have the same shape")
+            return [
+                [
+                    _ratio_text(n, d, "G row %d, column %d" % (i + 1, j + 1), note)
+                    for j, (n, d) in enumerate(zip(rn, rd))
+                ]
+                for i, (rn, rd) in enumerate(zip(num, den))
+            ]
+        return [[_ratio_text(num, den, "G", note)]]
+    if isinstance(num, (list, tuple)):
+        rows = num if num and isinstance(num[0], (list, tuple)) and not _is_pair(num[0]) else [num]
+        out = []
+        for i, row in enumerate(rows):
+            r = []
+            for j, x in enumerate(row):
+                where = "G row %d, column %d" % (i + 1, j + 1)
+                if _is_pair(x):
+                    r.append(_ratio_text(x[0], x[1], where, note))
+                else:
+                    r.append(_expr_text(x, where, note))
+            out.append(r)
+        return out
+    return [[_expr_text(num, "G", note)]]
+
+
+def _is_pair(x):
+    """A ``(num, den)`` pair of coefficient lists (or scalars)."""
+    return isinstance(x, tuple) and len(x) == 2
+
+
+def tf(num, den=None, params=None, name="tf"):
+    """An exact system from a transfer function or matrix ``G(s)``: its exact minimal
+    realization (a :class:`StateSpace`, order = McMillan degree, checked against ``G``).
+
+    * ``tf(num, den)``: coefficient lists, highest power first (python-control's idiom);
+      MIMO: ``num[i][j]``, ``den[i][j]`` coefficient lists.
+    * ``tf("(s+1)/(s^2+3s+2)")``: a rational function of ``s`` as text (``3s`` is
+      ``3*s``) or a SymPy expression in ``s``.
+    * ``tf([[g11, g12], [g21, g22]])``: MIMO, each entry text, SymPy, or a
+      ``(num, den)`` pair of coefficient lists.
+    * a python-control ``TransferFunction`` (floats read as the decimals they print as).
+
+    Coefficients are exact as in :func:`ss`; other names in the text take ``params``.
+    ``G`` must be proper (an improper ``G`` has no state-space realization).
+
+    >>> import exactlti
+    >>> G = exactlti.tf([1, 1], [1, 3, 2])
+    >>> G.nstates, [str(p) for p in G.poles()]
+    (1, ['-2'])
+    >>> print(G.tf()[0, 0])
+    (1)/(s + 2)
+    >>> H = exactlti.tf("(s+1)/(s^2+3s+2)")
+    >>> H.tf().mcmillan_degree, H.tf().verified
+    (1, True)
+    >>> M = exactlti.tf([["1/(s+1)", "1/(s+2)"], [([1], [1, 1]), 0]])
+    >>> M.ninputs, M.noutputs, M.tf().mcmillan_degree
+    (2, 2, 2)
+    """
+    try:
+        import control
+    except ImportError:  # pragma: no cover - python-control is optional
+        control = None
+    if control is not None and isinstance(num, control.TransferFunction):
+        return _from_control_tf(num, name)
+    note = _FloatNote()
+    rows = _tf_rows(num, den, note)
+    doc = {"name": name, "G": rows}
+    if params:
+        doc["parameters"] = {str(k): entry_text(v, "parameter %s" % k, note) for k, v in params.items()}
+    note.symbols.discard("s")
+    if note.symbols:
+        raise _core.UnsupportedError(
+            "tf: symbolic parameters (%s) in a transfer matrix are not supported yet; "
+            "give them values in params, or build the system with ss(...)"
+            % ", ".join(sorted(note.symbols))
+        )
+    _warn_floats(note, 3)
+    return StateSpace(_core.load_json(json.dumps(doc), name, False))
+
+
+def _warn_floats(note, stacklevel):
+    if note.examples:
+        warnings.warn(
+            "binary floats were read as the shortest decimals they print as (%s); "
+            "pass strings or Fractions to say exactly what you mean"
+            % ", ".join(note.examples),
+            ExactnessWarning,
+            stacklevel=stacklevel + 1,
+        )
+
+
+def _from_control_tf(sys, name):
+    if not sys.isctime():
+        raise ValueError("from_control: only continuous-time systems are supported")
+    note = _FloatNote()
+    rows = [
+        [
+            _ratio_text(
+                sys.num[i][j], sys.den[i][j], "G row %d, column %d" % (i + 1, j + 1), note
+            )
+            for j in range(sys.ninputs)
+        ]
+        for i in range(sys.noutputs)
+    ]
+    _warn_floats(note, 4)
+    doc = {"name": name, "G": rows}
+    return StateSpace(_core.load_json(json.dumps(doc), name, False))
+
+
+def load(path, at=None):
+    """Reads a system file (JSON or TOML) as the command line does: parameters with
+    value ``null`` and those named in ``symbols`` stay symbols; ``at`` gives values first
+    (a dict, the command line's ``--at``).
 
     >>> import exactlti, json, os, tempfile
     >>> p = os.path.join(tempfile.mkdtemp(), "two.json")
@@ -299,7 +555,12 @@ def load(path):
     >>> G.A[1, 1], G.nstates, G.ninputs, G.noutputs
     (Fraction(-1, 2), 2, 1, 1)
     """
-    return StateSpace(_core.load_file(str(path)))
+    pairs = None
+    if at:
+        note = _FloatNote()
+        pairs = [(str(k), entry_text(v, "at %s" % k, note)) for k, v in at.items()]
+        _warn_floats(note, 2)
+    return StateSpace(_core.load_file(str(path), pairs))
 
 
 def jordan(A, real=False, max_seconds=None, params=None):
@@ -308,7 +569,8 @@ def jordan(A, real=False, max_seconds=None, params=None):
     Eigenvalues are exact algebraic numbers (``minpoly``, ``value``, ``approx``) with
     their multiplicities and Jordan ``blocks``; entries of ``J`` and ``T`` that are not
     rational are exact in the eigenvalue's field (symbols ``r<k>`` for roots of degree 3
-    and more).
+    and more). With symbolic parameters (``params={"a": None}`` or SymPy symbols) the
+    result is a :class:`SymbolicJordanResult`.
 
     >>> import exactlti
     >>> r = exactlti.jordan([[-2, 0, 0], [0, 0, 1], [0, -2, -2]])
@@ -321,27 +583,35 @@ def jordan(A, real=False, max_seconds=None, params=None):
     [ 0,      0, -1 - I]])
     >>> [(str(e), size) for e, size in exactlti.jordan([[1, 1], [0, 1]]).blocks]
     [('1', 2)]
+    >>> import sympy
+    >>> a = sympy.Symbol("a")
+    >>> s = exactlti.jordan([[a, 1], [0, a]])
+    >>> s.J.to_sympy(), s.blocks, s.verified
+    (Matrix([
+    [a, 1],
+    [0, a]]), [('a', 2)], True)
     """
-    text = system_json("jordan", {"A": A}, params)
-    return JordanResult(_core.load_json(text, "jordan").jordan(real, max_seconds))
+    text, symbolic = system_json("jordan", {"A": A}, params)
+    d = _core.load_json(text, "jordan", symbolic).jordan(real, max_seconds)
+    return SymbolicJordanResult(d) if symbolic else JordanResult(d)
 
 
 def from_control(sys, name="from_control"):
-    """An exact system from a python-control ``StateSpace`` (or ``TransferFunction``,
-    converted by python-control's ``ss`` first). Floats are read as the shortest
+    """An exact system from a python-control ``StateSpace`` or ``TransferFunction`` (read
+    through :func:`tf`: its exact minimal realization). Floats are read as the shortest
     decimals they print as (``0.1`` is 1/10), with an :class:`ExactnessWarning`."""
     import control
 
     if isinstance(sys, control.TransferFunction):
-        sys = control.ss(sys)
+        return _from_control_tf(sys, name)
     if not isinstance(sys, control.StateSpace):
         raise TypeError("from_control expects a control.StateSpace or TransferFunction")
     if not sys.isctime():
         raise ValueError("from_control: only continuous-time systems are supported")
-    text = system_json(
+    text, _ = system_json(
         name, {"A": sys.A, "B": sys.B, "C": sys.C, "D": sys.D}, stacklevel=3
     )
-    return StateSpace(_core.load_json(text, name))
+    return StateSpace(_core.load_json(text, name, False))
 
 
 # -- results ------------------------------------------------------------------------
@@ -472,7 +742,17 @@ class MinrealResult:
     """A minimal realization: ``system`` (a :class:`StateSpace`), ``nstates`` (the McMillan
     degree), ``original_order``, ``method``, ``T`` (the state map when the method gives
     one), ``verified`` (controllable, observable, equal Markov parameters, exactly) and,
-    for ``method="jordan"``, ``stages`` (e.g. 20 -> 16 -> 8 for the sliding masses)."""
+    for ``method="jordan"``, ``stages`` (e.g. 20 -> 16 -> 8 for the sliding masses).
+    With symbolic parameters: ``conditions`` (see :class:`Conditions`): the result holds
+    wherever none of them vanishes (here the Kalman decomposition separated the modes
+    ``-a`` and ``-1``, assuming ``a != 1``).
+
+    >>> import exactlti
+    >>> G = exactlti.ss([["-a", 0], [0, -1]], [[1], [0]], [[1, 1]], params={"a": None})
+    >>> r = G.minreal()
+    >>> r.nstates, r.verified, r.A.to_sympy(), r.conditions
+    (1, True, Matrix([[-a]]), Conditions(a - 1 != 0))
+    """
 
     def __init__(self, d, original):
         sys_core = d["system"]
@@ -480,10 +760,12 @@ class MinrealResult:
         self.nstates = d["order"]
         self.original_order = d["original_order"]
         self.method = d["method"]
-        self.T = Matrix(d["T"]) if d["T"] is not None else None
+        self.params = tuple(d.get("params", ()))
+        self.T = Matrix(d["T"], params=self.params) if d["T"] is not None else None
         self.verified = d["verified"]
         self.stages = tuple(d["stages"]) if "stages" in d else None
-        self.report = json.loads(d["report"])
+        self.report = json.loads(d["report"]) if "report" in d else None
+        self.conditions = Conditions(d.get("conditions", ()), self.params)
         self.original = original
 
     def _mat(self, key):
@@ -538,22 +820,34 @@ class MinrealResult:
 class ScbResult:
     """Special coordinate basis: ``A``..``D`` (SCB form), ``Gamma1``..``Gamma3``, ``U``,
     ``Y``, ``dims = (n_a, n_b, n_c, n_d)``, ``chains``, ``m0``, ``left_invertible``,
-    ``right_invertible``, ``zero_polynomial``, ``minimum_phase``, ``verified``."""
+    ``right_invertible``, ``zero_polynomial``, ``minimum_phase``, ``verified``: the
+    identities ``Gamma1 B_scb = B U Gamma3``, ``Gamma2 C_scb = Y^-1 C Gamma1``,
+    ``Gamma2 D_scb = Y^-1 D U Gamma3`` and ``Gamma1 A_scb = (A - B0 C0) Gamma1`` (``B0``,
+    ``C0``: the feedthrough part) hold exactly. With symbolic parameters also
+    ``conditions`` and ``zero_factors`` (``minimum_phase`` is then ``None``: it depends on
+    the parameters' signs)."""
 
     _MATS = ("A", "B", "C", "D", "Gamma1", "Gamma2", "Gamma3", "U", "Y")
 
     def __init__(self, d):
+        self.params = tuple(d.get("params", ()))
         for k in self._MATS:
-            setattr(self, k, Matrix(d[k]))
+            setattr(self, k, Matrix(d[k], params=self.params))
         self.dims = tuple(d["dims"])
         self.chains = list(d["chains"])
         self.m0 = d["m0"]
         self.left_invertible = d["left_invertible"]
         self.right_invertible = d["right_invertible"]
-        self.zero_polynomial = Polynomial(d["zero_polynomial"])
-        self.minimum_phase = d["minimum_phase"]
+        self.zero_polynomial = Polynomial(d["zero_polynomial"], self.params)
+        #: True/False; None when it depends on the parameters (or there is no answer)
+        self.minimum_phase = d.get("minimum_phase")
         self.verified = d["verified"]
-        self.report = json.loads(d["report"])
+        self.report = json.loads(d["report"]) if "report" in d else None
+        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        #: symbolic: the invariant-zero polynomial's factors over Q(params)
+        self.zero_factors = (
+            [Factor(f, self.params) for f in d["zero_factors"]] if "zero_factors" in d else None
+        )
 
     @property
     def nstates(self):
@@ -584,9 +878,11 @@ class MnfResult:
         self.exists = d["exists"]
         self.reason = d["reason"]
         self.verified = d["verified"]
-        self.report = json.loads(d["report"])
+        self.report = json.loads(d["report"]) if "report" in d else None
+        self.params = tuple(d.get("params", ()))
+        self.conditions = Conditions(d.get("conditions", ()), self.params)
         for k in self._MATS:
-            setattr(self, k, Matrix(d[k]) if k in d else None)
+            setattr(self, k, Matrix(d[k], params=self.params) if k in d else None)
 
     @property
     def nstates(self):
@@ -636,10 +932,35 @@ class ModalTable(list):
 
 
 class TransferMatrix:
-    """Exact transfer matrix: ``G[i, j]`` is a :class:`RationalFunction`."""
+    """Exact transfer matrix in lowest terms: ``G[i, j]`` is a :class:`RationalFunction`;
+    ``mcmillan_degree`` (the order of a verified minimal realization); ``verified`` (every
+    entry's expansion at infinity equals ``D, CB, CAB, ...``). With symbolic parameters:
+    ``pole_polynomial``, ``pole_factors`` and ``conditions``.
 
-    def __init__(self, rows):
-        self.entries = [[RationalFunction(n, d) for (n, d) in row] for row in rows]
+    >>> import exactlti, sympy
+    >>> G = exactlti.ss([[0, 1], ["-k/m", "-c/m"]], [[0], ["1/m"]], [[1, 0]],
+    ...                 params={"m": None, "c": None, "k": None}).tf()
+    >>> c, k, m, s = sympy.symbols("c k m s")
+    >>> sympy.cancel(G[0, 0].to_sympy() * (m*s**2 + c*s + k))
+    1
+    >>> G.mcmillan_degree, G.verified, G.conditions
+    (2, True, Conditions(m != 0))
+    """
+
+    def __init__(self, d):
+        self.params = tuple(d.get("params", ()))
+        self.entries = [
+            [RationalFunction(n, den, self.params) for (n, den) in row] for row in d["entries"]
+        ]
+        self.mcmillan_degree = d["mcmillan_degree"]
+        self.verified = d["verified"]
+        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.pole_polynomial = (
+            Polynomial(d["pole_polynomial"], self.params) if "pole_polynomial" in d else None
+        )
+        self.pole_factors = (
+            [Factor(f, self.params) for f in d["pole_factors"]] if "pole_factors" in d else None
+        )
 
     @property
     def shape(self):
@@ -674,6 +995,183 @@ class TransferMatrix:
         import sympy
 
         return "$%s$" % sympy.latex(self.to_sympy())
+
+
+class Factor:
+    """An irreducible factor over ``Q(params)`` of a polynomial in ``s`` with its
+    ``multiplicity``; ``root`` is its root (exact text) when the factor is linear."""
+
+    def __init__(self, d, params=()):
+        self.params = tuple(params)
+        self.factor = Polynomial(d["factor"], self.params)
+        self.multiplicity = d["multiplicity"]
+        self.root = d.get("root")
+
+    @property
+    def degree(self):
+        return self.factor.degree
+
+    def to_sympy(self, var="s"):
+        """The factor as a SymPy expression in ``var``."""
+        return self.factor.to_sympy(var)
+
+    def root_sympy(self):
+        """The root of a linear factor in SymPy (``None`` for a factor of higher degree)."""
+        if self.root is None:
+            return None
+        import sympy
+
+        from ._exact import _sympify, _sympy_names
+
+        return _sympify(sympy, self.root, _sympy_names(sympy, self.params))
+
+    def __repr__(self):
+        m = "^%d" % self.multiplicity if self.multiplicity > 1 else ""
+        return "Factor((%s)%s)" % (self.factor, m)
+
+
+class Factorization:
+    """A polynomial in ``s`` over ``Q(params)`` (symbolic poles or zeros): ``polynomial``,
+    its irreducible ``factors`` (:class:`Factor`), ``roots`` (those in ``Q(params)``, from
+    the linear factors, repeated by multiplicity) and ``conditions``.
+
+    >>> import exactlti
+    >>> G = exactlti.ss([["-a", 1], [0, "-b"]], [[0], [1]], [[1, 0]],
+    ...                 params={"a": None, "b": None})
+    >>> p = G.poles()
+    >>> p.roots, p.complete
+    (['-a', '-b'], True)
+    >>> p.to_sympy()
+    [-a, -b]
+    """
+
+    def __init__(self, d):
+        self.params = tuple(d.get("params", ()))
+        self.polynomial = Polynomial(d["polynomial"], self.params)
+        self.factors = [Factor(f, self.params) for f in d["factors"]]
+        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.normal_rank = d.get("normal_rank")
+
+    @property
+    def roots(self):
+        return [f.root for f in self.factors if f.root is not None for _ in range(f.multiplicity)]
+
+    @property
+    def complete(self):
+        """True when every factor is linear (every root lies in ``Q(params)``)."""
+        return all(f.root is not None for f in self.factors)
+
+    def to_sympy(self):
+        """The roots in ``Q(params)`` as SymPy expressions (see ``complete``)."""
+        return [
+            f.root_sympy() for f in self.factors if f.root is not None for _ in range(f.multiplicity)
+        ]
+
+    def __repr__(self):
+        return "Factorization(%s)" % " * ".join(repr(f) for f in self.factors)
+
+
+class SymbolicEigenvalue:
+    """An eigenvalue of a matrix over ``Q(params)``: ``value`` (exact text) when it lies in
+    ``Q(params)``, else ``None`` and the root of the irreducible ``factor`` (text in the
+    parameters and ``var``) of ``degree`` >= 2; multiplicities and Jordan ``blocks``."""
+
+    def __init__(self, d, params, var):
+        self.value = d["value"]
+        self.factor = d["factor"]
+        self.degree = d["degree"]
+        self.algebraic_multiplicity = d["algebraic_multiplicity"]
+        self.geometric_multiplicity = d["geometric_multiplicity"]
+        self.blocks = list(d["blocks"])
+        self.params = tuple(params)
+        self.var = var
+
+    def to_sympy(self):
+        """The value in SymPy (``None`` for a root of a factor of degree >= 2: see
+        :meth:`factor_sympy`)."""
+        if self.value is None:
+            return None
+        import sympy
+
+        from ._exact import _sympify, _sympy_names
+
+        return _sympify(sympy, self.value, _sympy_names(sympy, self.params))
+
+    def factor_sympy(self):
+        """The irreducible factor as a SymPy expression in ``var`` and the parameters."""
+        import sympy
+
+        from ._exact import _sympify, _sympy_names
+
+        names = _sympy_names(sympy, self.params)
+        names[self.var] = sympy.Symbol(self.var)
+        return _sympify(sympy, self.factor, names)
+
+    def __str__(self):
+        return self.value if self.value is not None else "root of %s" % self.factor
+
+    def __repr__(self):
+        return "SymbolicEigenvalue(%s)" % self
+
+
+class SymbolicJordanResult:
+    """The Jordan structure of a matrix over ``Q(params)``: ``A T = T J`` with ``J``, ``T``
+    exact rational functions (``to_sympy()``); ``eigenvalues``
+    (:class:`SymbolicEigenvalue`); ``blocks`` as ``(eigenvalue, size)`` pairs;
+    ``complete`` (every eigenvalue in ``Q(params)``: ``J`` is the Jordan matrix; else the
+    block of a factor of degree >= 2 is ``A`` restricted to its generalized eigenspace);
+    ``conditions`` (the result holds where none of them vanishes); ``verified``
+    (``A T = T J`` as rational functions and ``det T != 0``).
+
+    >>> import exactlti
+    >>> r = exactlti.jordan([[0, 1], ["-k", "-c"]], params={"k": None, "c": None})
+    >>> r.complete, [str(e) for e in r.eigenvalues], r.verified
+    (False, ['root of c*s + s^2 + k'], True)
+    """
+
+    def __init__(self, d):
+        self.params = tuple(d.get("params", ()))
+        self.var = d["var"]
+        self.eigenvalues = [SymbolicEigenvalue(e, self.params, self.var) for e in d["eigenvalues"]]
+        self.A = Matrix(d["A"], params=self.params)
+        self.J = Matrix(d["J"], params=self.params)
+        self.T = Matrix(d["T"], params=self.params)
+        self.charpoly = Polynomial(d["charpoly"], self.params)
+        self.complete = d["complete"]
+        self.verified = d["verified"]
+        self.exact = True
+        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.field = d.get("field")
+
+    @property
+    def nstates(self):
+        return self.A.nrows
+
+    @property
+    def blocks(self):
+        return [(str(e), b) for e in self.eigenvalues for b in e.blocks]
+
+    def check(self):
+        """Re-checks ``A T = T J`` in SymPy (rational functions), independently of the
+        library."""
+        import sympy
+
+        A, T, J = self.A.to_sympy(), self.T.to_sympy(), self.J.to_sympy()
+        return all(sympy.cancel(x) == 0 for x in A * T - T * J) and sympy.cancel(T.det()) != 0
+
+    def __repr__(self):
+        return "SymbolicJordanResult(n=%d, field=%s, eigenvalues=[%s], verified=%s)" % (
+            self.nstates,
+            self.field,
+            ", ".join(str(e) for e in self.eigenvalues),
+            self.verified,
+        )
+
+    def _repr_latex_(self):
+        return _latex_section(
+            "Jordan form over %s, A T = T J (verified: %s)" % (self.field, self.verified),
+            [("J", self.J), ("T", self.T), ("conditions", ", ".join(self.conditions) or "none")],
+        )
 
 
 class CheckResult(list):

@@ -11,6 +11,12 @@
    A_aa = -sigma0/sigma1 and the entry A[0, 1] = -sigma0 (sigma0 J - sigma1 alpha2) /
    sigma1^3 = -16003/27 (the paper prints sigma1^2: an erratum); for sigma1 = 0 one
    integrator chain of length 3 and no invariant zero.
+
+3. The same SCB with every parameter a symbol (J, sigma0, sigma1, alpha2; field
+   QQ(J, alpha2, sigma0, sigma1)): A_aa = -sigma0/sigma1 and A[0, 1] =
+   -sigma0 (sigma0 J - sigma1 alpha2) / sigma1^3 as rational functions, valid wherever
+   the listed conditions (polynomials in the parameters) do not vanish; at the paper's
+   values it is the numeric SCB of 2.
 """
 
 import os
@@ -66,7 +72,30 @@ def dc_motor_scb():
     return out
 
 
+def dc_motor_scb_symbolic():
+    import sympy
+
+    J, s0, s1, a2 = sympy.symbols("J sigma0 sigma1 alpha2")
+    A = [[0, 1, 0], [0, -(a2 + s1) / J, -s0 / J], [0, 1, 0]]
+    G = exactlti.ss(A, [[0], [s1 / J], [-1]], [[1, 0, 0]], [[0]], name="dc-motor")
+    s = G.scb()
+    A_scb = s.A.to_sympy()
+    print("DC motor over %s: dims (n_a, n_b, n_c, n_d) = %s, chains %s, verified: %s"
+          % (G.field, s.dims, s.chains, s.verified))
+    print("  A_aa = %s, A[0, 1] = %s" % (A_scb[0, 0], sympy.factor(A_scb[0, 1])))
+    print("  conditions (assumed nonzero): %s" % ", ".join(s.conditions))
+    assert s.dims == (1, 0, 0, 2) and s.verified
+    assert sympy.cancel(A_scb[0, 0] + s0 / s1) == 0
+    assert sympy.cancel(A_scb[0, 1] + s0 * (s0 * J - s1 * a2) / s1**3) == 0
+    paper = {J: sympy.Rational(23, 10000), s0: 260, s1: sympy.Rational(3, 5),
+             a2: sympy.Rational(22, 125)}
+    assert A_scb[0, 1].subs(paper) == sympy.Rational(-16003, 27)
+    return s
+
+
 if __name__ == "__main__":
     sliding_masses()
     print()
     dc_motor_scb()
+    print()
+    dc_motor_scb_symbolic()

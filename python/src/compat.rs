@@ -4,6 +4,7 @@
 
 use exactlti::field::{Q, QuadraticField};
 use exactlti::io::{LoadedSystem, TypedAny, TypedSystem};
+use exactlti::ratfunc::RatFuncField;
 
 /// A system over its ground field, as given and in standard form.
 pub type Typed<K> = TypedSystem<K>;
@@ -13,6 +14,7 @@ pub type Typed<K> = TypedSystem<K>;
 pub enum Loaded {
     Q(String, Typed<Q>),
     Quadratic(String, Typed<QuadraticField>),
+    Sym(String, Typed<RatFuncField>),
 }
 
 /// The loaded system over its field; `Err` for a ground field this layer does not know.
@@ -21,6 +23,7 @@ pub fn from_loaded(l: LoadedSystem) -> Result<Loaded, String> {
     match l.system {
         TypedAny::Rational(t) => Ok(Loaded::Q(g, t)),
         TypedAny::Quadratic(t) => Ok(Loaded::Quadratic(g, t)),
+        TypedAny::RatFunc(t) => Ok(Loaded::Sym(g, t)),
         #[allow(unreachable_patterns)]
         _ => Err(format!("{}: unsupported: entries in {g}", l.file.path)),
     }

@@ -68,10 +68,10 @@ def test_sympy_radicals_give_a_quadratic_field():
     assert r.verified and r.nstates == 2
 
 
-def test_symbols_say_they_are_coming():
+def test_sympy_symbols_make_a_symbolic_system():
     k = sympy.Symbol("k")
-    with pytest.raises(NotImplementedError, match="symbolic parameters"):
-        exactlti.ss([[0, 1], [-k, 0]])
+    G = exactlti.ss([[0, 1], [-k, 0]])
+    assert G.is_symbolic and G.params == ("k",)
 
 
 def test_bad_input_is_a_value_error_with_the_cli_message():
@@ -89,11 +89,6 @@ def test_bad_input_is_a_value_error_with_the_cli_message():
 def test_params_are_exact():
     G = exactlti.ss([["-k/m"]], params={"k": "0.5", "m": Fraction(3)})
     assert G.A[0, 0] == Fraction(-1, 6)
-
-
-def test_tf_input_is_not_available_yet():
-    with pytest.raises(NotImplementedError, match="transfer-matrix input"):
-        exactlti.tf([1], [1, 2])
 
 
 def test_load_reads_the_sliding_masses():
@@ -322,6 +317,8 @@ def test_panics_become_runtime_errors():
 
 
 def test_gil_is_released_during_work():
+    # another Python thread runs while the worker computes (with the GIL held it could
+    # not tick at all until the call returned)
     ticks = []
     stop = threading.Event()
 
@@ -332,18 +329,21 @@ def test_gil_is_released_during_work():
 
     th = threading.Thread(target=count)
     th.start()
-    _core._sleep_for_test(0.4)
+    _core._sleep_for_test(1.0)
+    during = len(ticks)
     stop.set()
     th.join()
-    assert len(ticks) > 20
+    assert during >= 3
 
 
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name == "nt", reason="POSIX signals")
 def test_ctrl_c_interrupts_exact_work():
+    # the worker would run 60 s; SIGINT after 0.2 s stops the call (bounds generous for a
+    # loaded machine: this is not a timing test)
     timer = threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     t = time.time()
     with pytest.raises(KeyboardInterrupt):
-        _core._sleep_for_test(5.0)
-    assert time.time() - t < 2.0
+        _core._sleep_for_test(60.0)
+    assert time.time() - t < 30.0
     timer.join()

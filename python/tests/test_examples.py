@@ -14,3 +14,4 @@ def test_papers_example_runs(capsys):
     out = capsys.readouterr().out
     assert "20 -> 16 -> 8" in out
     assert "-16003/27" in out
+    assert "DC motor over QQ(" in out

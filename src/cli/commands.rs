@@ -138,6 +138,9 @@ pub fn execute_ctx(
         | Command::Zeros { file }
         | Command::Modes { file }
         | Command::Freqresp { file, .. }
+        | Command::Pzmap { file, .. }
+        | Command::Step { file, .. }
+        | Command::Impulse { file, .. }
         | Command::Check { file } => {
             let l = load_system_path(file)?;
             l.run(FileCommand { cmd, path: file })
@@ -196,16 +199,51 @@ impl SystemVisitor for FileCommand<'_> {
                 svg,
                 csv,
                 ..
-            } => super::float_cmds::freqresp(
-                t,
-                path,
-                *from,
-                *to,
-                *points,
-                svg.as_deref(),
-                csv.as_deref(),
-            )
-            .map(Outcome::plain),
+            } => {
+                let r = super::float_cmds::freqresp(
+                    t,
+                    path,
+                    *from,
+                    *to,
+                    *points,
+                    None,
+                    csv.as_deref(),
+                )?;
+                if let Some(out) = svg {
+                    super::plots::bode_file(f, t, path, (*from, *to, *points), out)?;
+                }
+                Ok(Outcome::plain(r))
+            }
+            Command::Pzmap { svg, .. } => {
+                super::plots::pzmap(f, t, path, svg.as_deref()).map(Outcome::plain)
+            }
+            Command::Step {
+                to,
+                points,
+                svg,
+                csv,
+                float,
+                ..
+            }
+            | Command::Impulse {
+                to,
+                points,
+                svg,
+                csv,
+                float,
+                ..
+            } => {
+                let args = super::plots::TimeArgs {
+                    impulse: matches!(self.cmd, Command::Impulse { .. }),
+                    to: *to,
+                    points: *points,
+                    svg: svg.as_deref(),
+                    csv: csv.as_deref(),
+                    float_only: *float,
+                };
+                let (r, ok) = super::plots::time_response(f, t, path, &args)?;
+                Ok(Outcome::new(r, ok))
+            }
             Command::Check { .. } => {
                 let extra = match as_rational(t) {
                     Some(q) => super::float_cmds::jordan_comparison(&q.a_raw, path)?,

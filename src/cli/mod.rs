@@ -15,6 +15,7 @@ mod common;
 mod critical;
 mod float_cmds;
 mod pencil_cmds;
+pub mod plots;
 mod progress;
 mod sweep;
 mod symbolic;
@@ -218,12 +219,69 @@ pub enum Command {
         /// points x outputs x inputs at most 1000000).
         #[arg(long, default_value_t = 200, value_name = "N")]
         points: usize,
-        /// Also write a Bode plot (magnitude in dB, phase in degrees, against Hz) as SVG.
+        /// Also write a Bode plot as SVG: magnitude [dB] and unwrapped phase [deg] against Hz,
+        /// channels named from the file, the grid refined near lightly damped poles.
         #[arg(long, value_name = "OUT.svg")]
         svg: Option<PathBuf>,
         /// Also write the response as CSV (frequency in Hz, real and imaginary parts).
         #[arg(long, value_name = "OUT.csv")]
         csv: Option<PathBuf>,
+    },
+    /// Poles (eigenvalues of A) and invariant zeros, exact over Q; `--svg` draws the
+    /// pole-zero map (poles x, zeros o, equal axis scales, title from the file's `name`).
+    Pzmap {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+        /// Write the pole-zero map as SVG.
+        #[arg(long, value_name = "OUT.svg")]
+        svg: Option<PathBuf>,
+    },
+    /// Step response of every input -> output channel: exact closed form from the Jordan form
+    /// of A over Q (evaluated in floats), float matrix exponential otherwise; with the exact
+    /// DC gain D - C A^-1 B (the final value of a stable system).
+    Step {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+        /// End time in seconds (default: about 7 time constants of the slowest pole, rounded
+        /// up to 1, 2 or 5 x 10^k).
+        #[arg(long, value_name = "SECONDS")]
+        to: Option<f64>,
+        /// Number of evenly spaced times from 0 to --to (2 to 100000; default: 20 per period
+        /// of the fastest mode, 500 to 5000).
+        #[arg(long, value_name = "N")]
+        points: Option<usize>,
+        /// Write the plot (one panel per channel, names from the file) as SVG.
+        #[arg(long, value_name = "OUT.svg")]
+        svg: Option<PathBuf>,
+        /// Write the values as CSV (time, then one column per input -> output channel).
+        #[arg(long, value_name = "OUT.csv")]
+        csv: Option<PathBuf>,
+        /// Float only (matrix exponential), also for a rational system.
+        #[arg(long)]
+        float: bool,
+    },
+    /// Impulse response C e^(At) B of every channel (D delta(t) left out), as `step`; the
+    /// exact value at t = 0 is C B.
+    Impulse {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
+        file: PathBuf,
+        /// End time in seconds (default: about 7 time constants of the slowest pole, rounded
+        /// up to 1, 2 or 5 x 10^k).
+        #[arg(long, value_name = "SECONDS")]
+        to: Option<f64>,
+        /// Number of evenly spaced times from 0 to --to (2 to 100000; default: 20 per period
+        /// of the fastest mode, 500 to 5000).
+        #[arg(long, value_name = "N")]
+        points: Option<usize>,
+        /// Write the plot (one panel per channel, names from the file) as SVG.
+        #[arg(long, value_name = "OUT.svg")]
+        svg: Option<PathBuf>,
+        /// Write the values as CSV (time, then one column per input -> output channel).
+        #[arg(long, value_name = "OUT.csv")]
+        csv: Option<PathBuf>,
+        /// Float only (matrix exponential), also for a rational system.
+        #[arg(long)]
+        float: bool,
     },
     /// Eigenvalues along one parameter (float, parallel), with plots.
     Sweep {

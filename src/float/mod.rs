@@ -33,6 +33,7 @@ mod minreal;
 pub mod random;
 mod staircase;
 mod svd;
+pub mod time_response;
 mod zeros;
 
 pub use convert::to_dmatrix;
@@ -47,6 +48,7 @@ pub use minreal::{FloatMinreal, minreal};
 pub use staircase::{
     FloatRank, controllability_rank, is_controllable, is_observable, observability_rank,
 };
+pub use time_response::{impulse_response, step_response};
 pub use zeros::{FloatZeros, invariant_zeros, invariant_zeros_report};
 
 /// A float answer to a yes/no question: `Unknown` when the numbers do not decide it.

@@ -232,11 +232,22 @@ pub fn load_symbolic_str(
             extra.insert(key, v.to_json());
         }
     }
-    let a_shape = mats.iter().find(|(m, _)| *m == "A").map(|(_, a)| a.nrows());
+    // as the ordinary reader: with `A` given, a missing `B` is n x 0, `C` 0 x n, `D` zero
+    let has =
+        |mats: &[(&str, Matrix<RatFuncField>)], key: &str| mats.iter().any(|(m, _)| *m == key);
+    if let Some(n) = mats.iter().find(|(m, _)| *m == "A").map(|(_, a)| a.nrows()) {
+        if !has(&mats, "B") {
+            mats.push(("B", Matrix::zeros(k.clone(), n, 0)));
+        }
+        if !has(&mats, "C") {
+            mats.push(("C", Matrix::zeros(k.clone(), 0, n)));
+        }
+    }
     let b_cols = mats.iter().find(|(m, _)| *m == "B").map(|(_, b)| b.ncols());
     let c_rows = mats.iter().find(|(m, _)| *m == "C").map(|(_, c)| c.nrows());
-    if let (Some(_), Some(m), Some(p)) = (a_shape, b_cols, c_rows)
-        && !mats.iter().any(|(m, _)| *m == "D")
+    if let (Some(m), Some(p)) = (b_cols, c_rows)
+        && !has(&mats, "D")
+        && has(&mats, "A")
     {
         mats.push(("D", Matrix::zeros(k.clone(), p, m)));
     }

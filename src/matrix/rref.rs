@@ -73,6 +73,32 @@ impl<K: Field> Matrix<K> {
         }
         self.rref().1.len()
     }
+    /// Is $\mathrm{rank}\,A \ge r$? Exact. Over $\mathbb{Q}$ a rank modulo a word prime that
+    /// divides no denominator is a lower bound of the rank (every nonzero minor modulo $p$
+    /// is a nonzero minor over $\mathbb{Q}$, [`crate::qkernels::modular::rank`]), so one
+    /// elimination modulo $p$ usually decides; when two primes fall short, the certified
+    /// rank does. Other fields: the exact rank.
+    pub fn rank_at_least(&self, r: usize) -> bool {
+        self.rank_at_least_mod_p(r) || (r <= self.nrows.min(self.ncols) && self.rank() >= r)
+    }
+    /// The modular half of [`Matrix::rank_at_least`]: `true` proves $\mathrm{rank}\,A \ge r$;
+    /// `false` decides nothing (a prime too few, or not over $\mathbb{Q}$).
+    pub fn rank_at_least_mod_p(&self, r: usize) -> bool {
+        if r == 0 {
+            return true;
+        }
+        if r > self.nrows.min(self.ncols) {
+            return false;
+        }
+        let Some(w) = self.field.as_rationals() else {
+            return false;
+        };
+        let a = w.view(&self.data);
+        crate::qkernels::prime::primes(11).take(2).any(|pr| {
+            crate::qkernels::modular::rank::rank_lower_bound(&pr, self.nrows, self.ncols, a)
+                .is_some_and(|rp| rp >= r)
+        })
+    }
     /// Canonical basis of the right null space $\{v : A v = 0\}$, as the columns of an
     /// `ncols x nullity` matrix.
     pub fn nullspace(&self) -> Matrix<K> {

@@ -5,18 +5,18 @@
 //! `fmpz_mpoly_gcd`, which tries cheap algorithms before Brown/Zippel):
 //!
 //! 1. trivial cases (a zero, a constant, a monomial-free variable split);
-//! 2. [`gcd_heuristic`]: evaluate the last variable at a large integer $\xi$, recurse, and
+//! 2. [`super::brown::gcd_brown`]: Brown's dense modular gcd (word primes, dense arrays of
+//!    residues, evaluation and Newton interpolation per variable of the gcd *and* both
+//!    cofactors, stopping as soon as one is stable and divides; the smallest of the three
+//!    lifted over $\mathbb{Z}$ and proved by exact division). Measured fastest on all the
+//!    bench's gcds (`benches/mpoly.rs` prints each stage alone): a small cofactor needs two or
+//!    three points per variable and one prime;
+//! 3. [`gcd_heuristic`]: evaluate the last variable at a large integer $\xi$, recurse, and
 //!    read the gcd back from its $\xi$-adic expansion (Char, Geddes and Gonnet's GCDHEU as
 //!    in SymPy's `dmp_zz_heu_gcd`); accepted only when it divides both inputs exactly, so it
 //!    is never wrong, only sometimes unsuccessful. Its base case, one variable left, is the
-//!    univariate integer gcd ([`crate::poly::zpoly::ZPoly::gcd`]) instead of a last
-//!    evaluation to huge integers (measured: 4x faster on the bench's charpoly gcds; a
-//!    univariate multi-modular gcd was slower there, as the gcd of the evaluated
-//!    polynomials has coefficients of thousands of bits);
-//! 3. [`super::brown::gcd_brown`]: Brown's dense modular gcd (word primes, evaluation and
-//!    Newton interpolation per variable, CRT), verified by exact division; measured slower
-//!    than the heuristic on the bench's cases (`benches/mpoly.rs` prints both), so it comes
-//!    second, where the heuristic gives up;
+//!    univariate integer gcd ([`crate::poly::zpoly::ZPoly::gcd`]). Used when Brown gives up
+//!    (dense shape too large);
 //! 4. [`gcd_subresultant`]: content and primitive part in a main variable, subresultant PRS
 //!    with polynomial coefficients (always succeeds).
 
@@ -81,10 +81,10 @@ fn primitive_gcd(f: &MPoly, g: &MPoly) -> MPoly {
             return acc;
         }
     }
-    if let Some(h) = gcd_heuristic(f, g) {
+    if let Some(h) = super::brown::gcd_brown(f, g) {
         return h;
     }
-    if let Some(h) = super::brown::gcd_brown(f, g) {
+    if let Some(h) = gcd_heuristic(f, g) {
         return h;
     }
     gcd_subresultant(f, g)

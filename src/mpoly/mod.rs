@@ -17,7 +17,7 @@
 //! | [`MPoly::div_exact`] | $q$ with $f = q g$ in $\mathbb{Z}\lbrack x\rbrack$, if it exists |
 //! | [`MPoly::eval_var`], [`MPoly::eval_all`], [`MPoly::shift_var`] | $f\vert_{x_i = a}$, $f(a)$, $f\vert_{x_i = x_i + a}$ |
 //! | [`MPoly::derivative`], [`MPoly::content`], [`MPoly::primitive_part`] | $\partial f / \partial x_i$, $f = \operatorname{cont}(f) \operatorname{pp}(f)$ |
-//! | [`gcd::gcd`] | $\gcd(f, g)$: heuristic gcd (SymPy `heugcd`), else subresultant PRS in a main variable |
+//! | [`gcd::gcd`] | $\gcd(f, g)$: Brown's modular gcd with cofactors ([`brown`]), else heuristic gcd (SymPy `heugcd`), else subresultant PRS in a main variable |
 //! | [`resultant::resultant`], [`resultant::discriminant`] | $\operatorname{Res}_{x_i}(f, g)$, $\operatorname{Disc}_{x_i}(f)$ |
 //! | [`factor::factor`] | $f = c \prod f_j^{e_j}$, $f_j$ irreducible over $\mathbb{Q}$ |
 //! | [`parse::parse_mpoly`] | `m*u^2 - 3*cr` into a [`QPoly`] and its variables |

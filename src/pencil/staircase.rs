@@ -9,6 +9,19 @@
 //! It stops when $E$ has full column rank. Then (Van Dooren, Thm. 3.2) the number of right
 //! minimal indices equal to $i - 1$ is $n_i - \rho_i$, and the number of infinite Jordan
 //! blocks of size $i$ is $\rho_i - n_{i+1}$. All ranks and null spaces are exact.
+//!
+//! # Certificate of a step
+//! Each step is checked on its outputs, without trusting the eliminations that produced
+//! them: $E N_i = 0$ exactly, the rows of $N_i$ outside the pivots form the identity (so
+//! $[X, N_i]$ is invertible and $N_i$ has full column rank), $\mathrm{rank}\,E \ge
+//! \#\text{pivots}$; hence $\ker E = \mathrm{span}\,N_i$ exactly. Then $Y (A N_i) = 0$
+//! exactly, $\mathrm{rank}\,Y = $ its number of rows and $\mathrm{rank}(A N_i) \ge \rho_i$;
+//! hence $\mathrm{rank}(A N_i) = \rho_i$ and the rows of $Y$ span the left null space of
+//! $A N_i$ (so $[Z; Y]$ is invertible for a complement $Z$). The last step checks
+//! $\mathrm{rank}\,E = $ its number of columns. Every lower bound on a rank is exact
+//! ([`crate::matrix::Matrix::rank_at_least`]: over $\mathbb{Q}$ one elimination modulo a
+//! prime), every upper bound comes from an exhibited exact null space. These are the
+//! hypotheses of Van Dooren's Thm. 3.2, so the indices read off the steps are exact.
 
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -19,6 +32,25 @@ pub(crate) struct Deflation<K: Field> {
     pub steps: Vec<(usize, usize)>,
     pub a: Matrix<K>,
     pub e: Matrix<K>,
+    /// Every step's certificate (module docs) held.
+    pub certified: bool,
+}
+
+/// Do the rows of `ker` outside `piv` form the identity (in increasing order)?
+fn identity_off_pivots<K: Field>(ker: &Matrix<K>, piv: &[usize]) -> bool {
+    let fld = ker.field();
+    let free: Vec<usize> = (0..ker.nrows()).filter(|i| !piv.contains(i)).collect();
+    free.len() == ker.ncols()
+        && free.iter().enumerate().all(|(k, &i)| {
+            (0..ker.ncols()).all(|j| {
+                let x = ker.get(i, j);
+                if j == k {
+                    fld.is_one(x)
+                } else {
+                    fld.is_zero(x)
+                }
+            })
+        })
 }
 
 /// Runs the staircase until $E$ has full column rank.
@@ -26,23 +58,35 @@ pub(crate) fn deflate_right<K: Field>(a: &Matrix<K>, e: &Matrix<K>) -> Deflation
     let mut a = a.clone();
     let mut e = e.clone();
     let mut steps = Vec::new();
+    let mut certified = true;
     loop {
         let n = e.ncols();
         let (r, piv) = e.rref();
+        certified = certified && e.rank_at_least(piv.len());
         if piv.len() == n {
             break;
         }
         let ker = crate::matrix::nullspace_from_rref(&r, &piv);
+        certified = certified && identity_off_pivots(&ker, &piv) && (&e * &ker).is_zero();
         let an = &a * &ker;
         let y = an.left_nullspace();
         let rho = a.nrows() - y.nrows();
+        certified = certified
+            && (&y * &an).is_zero()
+            && y.rank_at_least(y.nrows())
+            && an.rank_at_least(rho);
         steps.push((ker.ncols(), rho));
         let ax = a.select_cols(&piv);
         let ex = e.select_cols(&piv);
         a = &y * &ax;
         e = &y * &ex;
     }
-    Deflation { steps, a, e }
+    Deflation {
+        steps,
+        a,
+        e,
+        certified,
+    }
 }
 
 /// Right minimal indices (ascending) and infinite block sizes (ascending) from the steps.

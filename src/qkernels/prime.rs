@@ -131,11 +131,19 @@ impl Prime {
 
     /// The residue of a big integer given by its sign and little-endian 64-bit limbs.
     pub fn reduce_limbs(&self, negative: bool, limbs: &[u64]) -> u64 {
-        let mut r: u128 = 0;
-        for &l in limbs.iter().rev() {
-            r = ((r << 64) | l as u128) % self.p as u128;
-        }
-        let r = r as u64;
+        let r = match limbs {
+            [] => 0,
+            [l] => l % self.p,
+            _ => {
+                // Horner in base 2^64: r <- r * (2^64 mod p) + l, one Shoup product per limb
+                let t = ((1u128 << 64) % self.p as u128) as u64;
+                let ts = self.shoup(t);
+                limbs
+                    .iter()
+                    .rev()
+                    .fold(0u64, |r, &l| self.add(self.mul_shoup(t, ts, r), l % self.p))
+            }
+        };
         if negative { self.neg(r) } else { r }
     }
 }
@@ -249,5 +257,21 @@ mod tests {
             pr.reduce_limbs(false, &[0, 1]),
             ((1u128 << 64) % p as u128) as u64
         );
+        // many limbs (the Shoup Horner path) against big-integer remainders
+        for limbs in [
+            vec![u64::MAX, u64::MAX, u64::MAX],
+            vec![1, 2, 3, 4, 5, u64::MAX - 7],
+            vec![p, p - 1, p + 1, 0],
+        ] {
+            let big = num_bigint::BigUint::from_slice(
+                &limbs
+                    .iter()
+                    .flat_map(|&l| [l as u32, (l >> 32) as u32])
+                    .collect::<Vec<_>>(),
+            );
+            let want: u64 = (&big % p).try_into().unwrap();
+            assert_eq!(pr.reduce_limbs(false, &limbs), want);
+            assert_eq!(pr.reduce_limbs(true, &limbs), pr.neg(want));
+        }
     }
 }

@@ -13,11 +13,16 @@
 //! $[sI - A, B]$ (SLICOT AB01ND / AB01OD report the same $\rho_k$).
 //!
 //! # Verification
-//! With $S$ the selected Krylov columns and $L$ (rows) a basis of the left null space of
-//! $S$: $\mathrm{rank}\,S = \sum\kappa_j$, $LB = 0$ and $LA = A_{\bar c}L$; so
-//! $\mathrm{span}\,S$ contains $B$, is $A$-invariant and lies in the controllable subspace,
-//! hence equals it, and $A_{\bar c}$ is the uncontrollable part (its eigenvalues are the
-//! uncontrollable eigenvalues).
+//! With $S$ the selected Krylov columns and $L$ ($n - \sum\kappa_j$ rows, the identity on
+//! some columns, so of full row rank): $\mathrm{rank}\,S = \sum\kappa_j$, $LB = 0$ and
+//! $LA = A_{\bar c}L$; so $\ker L$ contains $B$ and is $A$-invariant, hence contains the
+//! controllable subspace, which contains $\mathrm{span}\,S$; the dimensions agree, so all
+//! three are equal and $A_{\bar c}$ is the uncontrollable part (its eigenvalues are the
+//! uncontrollable eigenvalues). Over $\mathbb{Q}$ the rank of $S$ is bounded below by one
+//! elimination modulo a prime, and $L$ and the coefficients that place each rejected
+//! Krylov candidate in the span of the earlier picks are guessed modulo primes and then
+//! checked by exact products (the Krylov vectors have large entries, their relations small
+//! ones: no certified RREF of $S$ is needed).
 
 use super::weierstrass::weierstrass_split;
 use crate::error::Result;
@@ -91,18 +96,37 @@ pub fn controllability_structure<K: Field>(
         None => krylov_levels_exact(a, b)?,
     };
     let order = basis.ncols();
-    let left = basis.left_nullspace();
-    // L in RREF: A_c̄ = (L A) restricted to the pivot columns of L
-    let (_, lpiv) = left.rref();
-    let la = &left * a;
-    let uncontrollable = la.select_cols(&lpiv);
-    // `basis.rank() == order` holds by the selection (certified independent columns);
-    // `left` is in RREF, so its rank is its number of pivots.
-    let verified = left.nrows() == n - order
-        && lpiv.len() == n - order
-        && (&left * b).is_zero()
-        && la == &uncontrollable * &left
-        && kappa.iter().sum::<usize>() == order;
+    // L with the identity on the columns `unit` (so of full row rank n - order) and
+    // A_c̄ = (L A) restricted to those columns: first guessed modulo primes over Q, else
+    // the exact left null space in RREF (unit columns = its pivots)
+    let check = |left: &Matrix<K>, unit: &[usize]| {
+        let la = left * a;
+        let unc = la.select_cols(unit);
+        let ok = left.nrows() == n - order
+            && unit.len() == n - order
+            && identity_on(left, unit)
+            && (left * b).is_zero()
+            && la == &unc * left;
+        ok.then_some(unc)
+    };
+    let guessed =
+        left_kernel_guess(&basis).and_then(|(l, unit)| check(&l, &unit).map(|unc| (l, unc)));
+    let (left, uncontrollable, left_ok) = match guessed {
+        Some((l, unc)) => (l, unc, true),
+        None => {
+            let left = basis.left_nullspace();
+            let (_, lpiv) = left.rref();
+            match check(&left, &lpiv) {
+                Some(unc) => (left, unc, true),
+                None => {
+                    let unc = (&left * a).select_cols(&lpiv);
+                    (left, unc, false)
+                }
+            }
+        }
+    };
+    // `basis.rank() == order` holds by the selection (certified independent columns)
+    let verified = left_ok && kappa.iter().sum::<usize>() == order;
     let mut indices = kappa;
     indices.sort_unstable_by(|x, y| y.cmp(x));
     Ok(ControllabilityStructure {
@@ -184,6 +208,85 @@ pub fn descriptor_controllability<K: Field>(
     })
 }
 
+/// Is `l` restricted to the columns `cols` the identity?
+fn identity_on<K: Field>(l: &Matrix<K>, cols: &[usize]) -> bool {
+    let fld = l.field();
+    cols.len() == l.nrows()
+        && cols.iter().enumerate().all(|(k, &c)| {
+            (0..l.nrows()).all(|i| {
+                let x = l.get(i, c);
+                if i == k {
+                    fld.is_one(x)
+                } else {
+                    fld.is_zero(x)
+                }
+            })
+        })
+}
+
+/// Over $\mathbb{Q}$: a basis $L$ of the left null space of `basis` ($n \times s$) guessed
+/// from its images modulo primes (the canonical null space of $S^T$, identity on the
+/// non-pivot columns, returned with them). Nothing is trusted: the caller checks
+/// $LB = 0$ and $LA = \bar A L$ exactly, which with $\mathrm{rank}\,L = n - s$ and
+/// $\mathrm{rank}\,S = s$ make $\ker L$ the controllable subspace.
+fn left_kernel_guess<K: Field>(basis: &Matrix<K>) -> Option<(Matrix<K>, Vec<usize>)> {
+    let w = basis.field().as_rationals()?;
+    let (n, s) = basis.shape();
+    let st = basis.transpose();
+    let (piv, r) = crate::qkernels::modular::guess::rref_guess(s, n, w.view(st.as_slice()), 24)?;
+    if piv.len() != s {
+        return None;
+    }
+    let free: Vec<usize> = (0..n).filter(|c| !piv.contains(c)).collect();
+    let zero = crate::field::Rational::from_integer(0.into());
+    let one = crate::field::Rational::from_integer(1.into());
+    let mut data = vec![zero; free.len() * n];
+    for (i, &f) in free.iter().enumerate() {
+        data[i * n + f] = one.clone();
+        for (k, &c) in piv.iter().enumerate() {
+            data[i * n + c] = -r[k * n + f].clone();
+        }
+    }
+    let l = Matrix::from_vec(basis.field().clone(), free.len(), n, w.back(data));
+    Some((l, free))
+}
+
+/// Over $\mathbb{Q}$: is every column $t$ of `rej` in the span of the first `lim[t]`
+/// columns of `basis`, with `basis` of full column rank? Coefficients $C$ are guessed
+/// modulo primes and $S C = R$ is checked exactly (with $C$ zero below `lim`); the rank by
+/// one elimination modulo a prime (a lower bound). `None`: undecided (not over
+/// $\mathbb{Q}$, or no stable guess), the caller falls back to the certified RREF.
+fn contained_guess<K: Field>(basis: &Matrix<K>, rej: &Matrix<K>, lim: &[usize]) -> Option<bool> {
+    let w = basis.field().as_rationals()?;
+    let (n, s) = basis.shape();
+    if !basis.rank_at_least_mod_p(s) {
+        return None;
+    }
+    let t = rej.ncols();
+    if t == 0 {
+        return Some(true);
+    }
+    let both = basis.hstack(rej).ok()?;
+    let (piv, r) =
+        crate::qkernels::modular::guess::rref_guess(n, s + t, w.view(both.as_slice()), 24)?;
+    if piv.len() < s || piv[..s].iter().enumerate().any(|(i, &c)| i != c) {
+        return None;
+    }
+    let zero = crate::field::Rational::from_integer(0.into());
+    let mut coef = vec![zero; s * t];
+    for i in 0..s {
+        for j in 0..t {
+            if i < lim[j] {
+                coef[i * t + j] = r[i * (s + t) + s + j].clone();
+            } else if !num_traits::Zero::is_zero(&r[i * (s + t) + s + j]) {
+                return Some(false);
+            }
+        }
+    }
+    let c = Matrix::from_vec(basis.field().clone(), s, t, w.back(coef));
+    Some(&(basis * &c) == rej)
+}
+
 /// A Krylov selection: per level, the positions (in the level's candidate list) of the
 /// picked candidates.  Level 0's candidates are the columns of $B$, level $k+1$'s are $A$
 /// times level $k$'s picks, in order.
@@ -260,8 +363,10 @@ fn krylov_levels_mod_p(
 
 /// Replays `levels` exactly and certifies it: with $S_{\le k}$ the picks of levels
 /// $\le k$ and $R_k$ the rejected candidates of level $k$ (also those of the level after
-/// the last one when $S$ is not square), one exact RREF of $[S \mid R]$ must show $S$ of
-/// full column rank and every column of $R_k$ in $\mathrm{span}\,S_{\le k}$.  Then by
+/// the last one when $S$ is not square), $S$ must have full column rank and every column
+/// of $R_k$ lie in $\mathrm{span}\,S_{\le k}$: over $\mathbb{Q}$ by exhibited coefficients
+/// $SC = R$ (exact product) and a rank modulo a prime ([`contained_guess`]), else by one
+/// exact RREF of $[S \mid R]$.  Then by
 /// induction on $K_{k+1} = \mathrm{span}\,B + A K_k$, the Krylov spaces are
 /// $K_k = \mathrm{span}\,S_{\le k}$, so the block dimensions and indices are exact.
 fn certify_levels<K: Field>(a: &Matrix<K>, b: &Matrix<K>, levels: &Levels) -> Option<Selection<K>> {
@@ -308,10 +413,15 @@ fn certify_levels<K: Field>(a: &Matrix<K>, b: &Matrix<K>, levels: &Levels) -> Op
     for blk in &blocks {
         basis = basis.hstack(blk).ok()?;
     }
-    let mut both = basis.clone();
+    let mut rej_all = Matrix::zeros(a.field().clone(), n, 0);
     for r in &rejected {
-        both = both.hstack(r).ok()?;
+        rej_all = rej_all.hstack(r).ok()?;
     }
+    // a guess that fails its check is no proof of the contrary: the RREF decides
+    if contained_guess(&basis, &rej_all, &rej_limit) == Some(true) {
+        return Some((kappa, basis, block_dims));
+    }
+    let both = basis.hstack(&rej_all).ok()?;
     let (r, piv) = both.rref();
     if piv.len() != s || piv.iter().enumerate().any(|(i, &c)| i != c) {
         return None;

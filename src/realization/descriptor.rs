@@ -66,7 +66,8 @@ pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardF
                 }
             }
             return Err(Error::ImproperTransfer(format!(
-                "the transfer matrix has a polynomial part of degree {hi} in s (derivatives of the input reach the output); no standard state-space form exists"
+                "the transfer matrix has a polynomial part of degree {hi} in s{} (derivatives of the input reach the output); no standard state-space form exists",
+                polynomial_part_display(sys)
             )));
         }
     }
@@ -78,4 +79,30 @@ pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardF
         v1: split.v1,
         verified: split.decoupled,
     })
+}
+
+/// `", P(s) = [[...]]"`: the polynomial part of the transfer matrix (constant term
+/// included) for at most 16 entries; empty otherwise or when the split fails.
+fn polynomial_part_display<K: Field>(sys: &Descriptor<K>) -> String {
+    let (p, m) = (sys.c.nrows(), sys.b.ncols());
+    if p * m > 16 {
+        return String::new();
+    }
+    let Ok(split) = super::weierstrass::weierstrass_split(sys) else {
+        return String::new();
+    };
+    let coeffs = split.polynomial_part();
+    let fld = sys.d.field().clone();
+    let rows: Vec<String> = (0..p)
+        .map(|i| {
+            let entries: Vec<String> = (0..m)
+                .map(|j| {
+                    let c = coeffs.iter().map(|pk| pk.get(i, j).clone()).collect();
+                    crate::poly::Poly::new(fld.clone(), c).to_string_var("s")
+                })
+                .collect();
+            format!("[{}]", entries.join(", "))
+        })
+        .collect();
+    format!(", P(s) = [{}]", rows.join(", "))
 }

@@ -4,8 +4,10 @@
 //! type, and this keeps the dependency tree and CI build small.
 
 pub mod bode;
+pub mod pzmap;
 pub mod svg;
 pub mod sweep;
+pub mod time;
 
 use std::fmt::Write;
 

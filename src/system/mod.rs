@@ -10,6 +10,7 @@
 //! | [`transfer::TransferMatrix`] | $G(s) = C (sI - A)^{-1} B + D$ as exact rational functions |
 
 mod display;
+pub mod time_response;
 pub mod transfer;
 
 use crate::error::{Error, Result};

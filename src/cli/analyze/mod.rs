@@ -37,6 +37,11 @@ fn failed(title: &str, e: &Error) -> Value {
     failed_msg(title, &e.to_string())
 }
 
+/// A section that does not apply to this system: the title and why (never silently absent).
+fn not_applicable(title: &str, why: impl Into<String>) -> Value {
+    Value::Obj(Report::titled(title).str("not_applicable", why))
+}
+
 fn system_section<K: Field>(f: &SystemFile, t: &TypedSystem<K>) -> Report {
     let mut r = Report::titled("system")
         .str("file", f.path.clone())
@@ -53,6 +58,16 @@ fn system_section<K: Field>(f: &SystemFile, t: &TypedSystem<K>) -> Report {
         r = r.str("form", "second order");
     } else {
         r = r.str("form", "state space");
+    }
+    // the signals' names from the file (`inputs`, `outputs`, `states`)
+    for (key, names) in [
+        ("input_names", &f.signals.inputs),
+        ("output_names", &f.signals.outputs),
+        ("state_names", &f.signals.states),
+    ] {
+        if let Some(v) = names {
+            r = r.with(key, str_list(v.clone()));
+        }
     }
     match t.ss.a.charpoly() {
         Ok(p) => r.str("charpoly", p.to_string_var("s")),
@@ -109,10 +124,34 @@ pub fn analyze_with<K: Field + 'static>(
     let s = &t.ss;
     if s.ninputs() > 0 && s.noutputs() > 0 {
         io_sections(&mut secs, &ta);
+    } else {
+        let why = format!(
+            "the system has {} inputs and {} outputs",
+            s.ninputs(),
+            s.noutputs()
+        );
+        secs.push("realization", not_applicable("realization", why.clone()));
+        secs.push(
+            "structure",
+            not_applicable("special coordinate basis", why.clone()),
+        );
+        secs.push("zeros", not_applicable("invariant zeros", why));
     }
     if let Some(q) = as_rational(t) {
         rational_sections(&fa, Arc::new(q.clone()), &mut secs, opts.full);
+    } else {
+        let why = format!(
+            "needs rational matrices; this file's entries lie in {}",
+            f.ground
+        );
+        secs.push(
+            "jordan",
+            not_applicable("eigenvalues and Jordan form", why.clone()),
+        );
+        secs.push("pbh", not_applicable("PBH tests", why.clone()));
+        secs.push("modes", not_applicable("modal table", why));
     }
+    mechanical_section(&fa, &ta, &mut secs);
     if secs.done == 0 && !secs.cut.is_empty() {
         return Err(Failure {
             code: 2,
@@ -313,6 +352,11 @@ fn rational_sections(f: &Arc<SystemFile>, t: Arc<TypedSystem<Q>>, secs: &mut Sec
             Err(v) => v,
         };
         secs.push("pbh", sec);
+    } else {
+        secs.push(
+            "pbh",
+            not_applicable("PBH tests", "the system has no inputs"),
+        );
     }
     let title = "modal table";
     let tt = t.clone();
@@ -324,14 +368,24 @@ fn rational_sections(f: &Arc<SystemFile>, t: Arc<TypedSystem<Q>>, secs: &mut Sec
         Err(v) => v,
     };
     secs.push("modes", sec);
-    // mechanical normal form: applies to first-order systems with inputs and an even
-    // number of states (files already in second-order form are mechanical by input)
+}
+
+/// The mechanical normal form (over any exact field), under its budget.
+fn mechanical_section<K: Field + 'static>(
+    f: &Arc<SystemFile>,
+    t: &Arc<TypedSystem<K>>,
+    secs: &mut Sections,
+) {
+    use crate::structure::mechanical::{DEFAULT_MAX_CANDIDATES, mechanical_normal_form_in};
+    let s = &t.ss;
+    let title = "mechanical normal form";
+    // applies to first-order systems with inputs and an even number of states (files
+    // already in second-order form are mechanical by input)
     if !f.is_second_order() && s.ninputs() > 0 && s.nstates().is_multiple_of(2) {
-        let title = "mechanical normal form";
         let tt = t.clone();
         let sec = match secs.run(title, Insist::Command("mnf"), move || {
             let s = &tt.ss;
-            crate::structure::mechanical::mechanical_normal_form(&s.a, &s.b, &s.c, &s.d)
+            mechanical_normal_form_in(None, &s.a, &s.b, &s.c, &s.d, DEFAULT_MAX_CANDIDATES)
                 .map(|m| (!m.exists || m.verified, m.report()))
         }) {
             Ok(Ok((ok, rep))) => {
@@ -342,5 +396,14 @@ fn rational_sections(f: &Arc<SystemFile>, t: Arc<TypedSystem<Q>>, secs: &mut Sec
             Err(v) => v,
         };
         secs.push("mechanical", sec);
+    } else {
+        let why = if f.is_second_order() {
+            "the file is already in second-order form"
+        } else if s.ninputs() == 0 {
+            "the system has no inputs"
+        } else {
+            "an odd number of states has no second-order form"
+        };
+        secs.push("mechanical", not_applicable(title, why));
     }
 }

@@ -45,6 +45,9 @@ fn name(cmd: &Command) -> &'static str {
         Command::Tf { .. } => "tf",
         Command::Modes { .. } => "modes",
         Command::Freqresp { .. } => "freqresp",
+        Command::Pzmap { .. } => "pzmap",
+        Command::Step { .. } => "step",
+        Command::Impulse { .. } => "impulse",
         Command::Check { .. } => "check",
         Command::Poly { .. } => "poly",
         Command::Linalg { .. } => "linalg",
@@ -69,6 +72,9 @@ fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Tf { file }
         | Command::Modes { file }
         | Command::Freqresp { file, .. }
+        | Command::Pzmap { file, .. }
+        | Command::Step { file, .. }
+        | Command::Impulse { file, .. }
         | Command::Check { file }
         | Command::Sweep { file, .. }
         | Command::Critical { file, .. }
@@ -116,6 +122,9 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ha
             | Command::Zeros { .. }
             | Command::Modes { .. }
             | Command::Freqresp { .. }
+            | Command::Pzmap { .. }
+            | Command::Step { .. }
+            | Command::Impulse { .. }
             | Command::Check { .. }
             | Command::Linalg { .. }
     );

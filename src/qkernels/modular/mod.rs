@@ -11,6 +11,8 @@
 //! | entry point | computes | certificate |
 //! |---|---|---|
 //! | [`rank_modular`] | $\operatorname{rank} A$ | that of [`rref_modular`] |
+//! | [`rank::rank_lower_bound`] | $\operatorname{rank}(A \bmod p) \le \operatorname{rank} A$ | none needed: a lower bound ([`rank`]) |
+//! | [`guess::rref_guess`] | RREF guessed from stable images | none: the caller checks an identity ([`guess`]) |
 //! | [`rref_modular`] | canonical RREF $R$ and pivot columns $P$ | $dB = B_{:,P} N$ checked modulo $M > 2\beta$ ([`rref`]) |
 //! | [`nullspace_modular`] | basis of $\{x : Ax = 0\}$ from the RREF | that of [`rref_modular`] |
 //! | [`det_modular`] | $\det A$ | Hadamard bound ([`det`]) |
@@ -30,7 +32,9 @@
 pub mod charpoly;
 pub mod crt;
 pub mod det;
+pub mod guess;
 pub mod inverse;
+pub mod rank;
 pub mod rref;
 
 use crate::field::Rational;

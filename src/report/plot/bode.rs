@@ -9,7 +9,8 @@ pub fn unwrapped_phase_deg(values: &[(f64, f64)]) -> Vec<f64> {
     let mut out = Vec::with_capacity(values.len());
     let mut offset = 0.0;
     let mut prev: Option<f64> = None;
-    for &(re, im) in values {
+    let mag = |k: usize| values[k].0.hypot(values[k].1);
+    for (k, &(re, im)) in values.iter().enumerate() {
         let raw = im.atan2(re).to_degrees();
         if let Some(p) = prev {
             let mut d = raw + offset - p;
@@ -20,6 +21,17 @@ pub fn unwrapped_phase_deg(values: &[(f64, f64)]) -> Vec<f64> {
             while d < -180.0 {
                 offset += 360.0;
                 d += 360.0;
+            }
+            // a jump of exactly 180 degrees (an undamped pole or zero between two grid
+            // points, the response real on both sides): down across a resonance peak (a
+            // pole, the magnitude rising into it), up across a notch (a zero)
+            if (d.abs() - 180.0).abs() < 1e-6 {
+                let rising = k < 2 || mag(k - 1) >= mag(k - 2);
+                if rising && d > 0.0 {
+                    offset -= 360.0;
+                } else if !rising && d < 0.0 {
+                    offset += 360.0;
+                }
             }
         }
         let v = raw + offset;
@@ -33,7 +45,10 @@ pub fn unwrapped_phase_deg(values: &[(f64, f64)]) -> Vec<f64> {
 pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<String>]) -> String {
     let p = resp.first().map_or(0, Vec::len);
     let m = resp.first().and_then(|r| r.first()).map_or(0, Vec::len);
-    let (w, h) = (840.0, 660.0);
+    let channels = p * m;
+    let cols = if channels > 1 { 2 } else { 1 };
+    let rows = channels.div_ceil(cols);
+    let (w, h) = (840.0, 650.0 + 18.0 * rows as f64);
     let mut svg = Svg::new(w, h, title);
     let lf = finite_range(freqs.iter().map(|f| f.max(1e-300).log10()));
     let mut mags = vec![];
@@ -66,8 +81,20 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
         yr: phase_range(pl, ph),
         ..top.clone()
     };
-    svg.axes(&top, "frequency [Hz]", "magnitude [dB]", false);
-    svg.axes(&bot, "frequency [Hz]", "phase [deg]", true);
+    svg.axes_with(
+        &top,
+        "frequency [Hz]",
+        "magnitude [dB]",
+        false,
+        Some(&db_ticks(top.yr)),
+    );
+    svg.axes_with(
+        &bot,
+        "frequency [Hz]",
+        "phase [deg]",
+        true,
+        Some(&phase_ticks(bot.yr)),
+    );
     let mut legend = vec![];
     for (c, (mg, ph)) in mags.iter().zip(&phases).enumerate() {
         let col = COLORS[c % COLORS.len()];
@@ -83,8 +110,31 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
             .unwrap_or_else(|| format!("G{}{}", i + 1, j + 1));
         legend.push((name, col.to_string(), false));
     }
-    svg.legend(&top, &legend);
+    svg.legend_at(bot.x0, bot.y0 + bot.h + 56.0, cols, 360.0, &legend);
     svg.finish()
+}
+
+/// Ticks every `step` in `[lo, hi]`, `step` the first of `steps` giving at most `max` ticks.
+fn ticks_from(r: (f64, f64), steps: &[f64], max: usize) -> Vec<f64> {
+    let span = (r.1 - r.0).abs();
+    let step = steps
+        .iter()
+        .copied()
+        .find(|s| span / s <= max as f64)
+        .unwrap_or_else(|| (span / max as f64 / 360.0).ceil() * 360.0);
+    let first = (r.0 / step).ceil() as i64;
+    let last = (r.1 / step).floor() as i64;
+    (first..=last).map(|k| k as f64 * step).collect()
+}
+
+/// Phase ticks on multiples of 45, 90, 180 or 360 degrees (at most 8).
+pub fn phase_ticks(r: (f64, f64)) -> Vec<f64> {
+    ticks_from(r, &[15.0, 45.0, 90.0, 180.0, 360.0, 720.0], 8)
+}
+
+/// Magnitude ticks on 10, 20, 40, 50, 100 ... dB (at most 7).
+pub fn db_ticks(r: (f64, f64)) -> Vec<f64> {
+    ticks_from(r, &[1.0, 2.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0, 200.0], 7)
 }
 
 /// A phase range on multiples of 45 degrees.
@@ -106,6 +156,21 @@ mod tests {
     use super::*;
 
     #[test]
+    fn undamped_pole_and_zero_turn_the_phase_the_right_way() {
+        // (s^2 + 4)/(s^2 + 1) on the imaginary axis: real, a pole at w = 1, a zero at w = 2
+        let vals: Vec<(f64, f64)> = (1..400)
+            .map(|k| {
+                let w = 0.01 * k as f64 + 0.003;
+                ((4.0 - w * w) / (1.0 - w * w), 0.0)
+            })
+            .collect();
+        let ph = unwrapped_phase_deg(&vals);
+        assert!(ph[0].abs() < 1e-9);
+        assert!((ph[150] + 180.0).abs() < 1e-9, "{}", ph[150]);
+        assert!(ph[398].abs() < 1e-9, "{}", ph[398]);
+    }
+
+    #[test]
     fn phase_unwraps_through_180() {
         // 1/(s + 1)^3 at growing frequency: phase goes 0 -> -270 without a jump
         let vals: Vec<(f64, f64)> = (0..200)
@@ -116,6 +181,12 @@ mod tests {
             })
             .collect();
         let ph = unwrapped_phase_deg(&vals);
+        assert_eq!(
+            phase_ticks((-270.0, 0.0)),
+            vec![-270.0, -225.0, -180.0, -135.0, -90.0, -45.0, 0.0]
+        );
+        assert_eq!(db_ticks((-120.0, 20.0)).len(), 8);
+        assert_eq!(db_ticks((-35.0, 5.0)), vec![-30.0, -20.0, -10.0, 0.0]);
         assert!(ph.windows(2).all(|w| (w[1] - w[0]).abs() < 30.0));
         assert!((ph[199] + 270.0).abs() < 5.0 && ph[0].abs() < 5.0);
     }

@@ -52,7 +52,9 @@ pub fn fmt_tick(x: f64, step: f64) -> String {
         return "0".into();
     }
     if x.abs() >= 1e5 || x.abs() < 1e-3 {
-        return format!("{x:.1e}");
+        // as many mantissa digits as the step needs: 8e-5, 1.2e-4
+        let digits = (x.abs().log10().floor() - step.abs().log10().floor()).clamp(0.0, 6.0);
+        return format!("{x:.*e}", digits as usize);
     }
     let dec = (-step.log10().floor()).max(0.0) as usize;
     let s = format!("{x:.dec$}");
@@ -104,12 +106,13 @@ impl Svg {
             s,
             r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="DejaVu Sans, Arial, sans-serif" font-size="12">"#
         );
+        let _ = writeln!(s, "<title>{}</title>", esc(title));
         let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
         let _ = writeln!(
             s,
             r#"<text x="{}" y="22" text-anchor="middle" font-size="15" font-weight="bold">{}</text>"#,
             w / 2.0,
-            esc(title)
+            esc(&fit(title, w - 20.0, 9.0))
         );
         Svg { s, w, h }
     }
@@ -117,6 +120,18 @@ impl Svg {
     /// Frame, grid, ticks and axis labels of a panel. `show_x_labels` false for upper
     /// panels that share the x axis with the one below.
     pub fn axes(&mut self, p: &Panel, xlabel: &str, ylabel: &str, show_x_labels: bool) {
+        self.axes_with(p, xlabel, ylabel, show_x_labels, None);
+    }
+
+    /// As [`Svg::axes`], with the y ticks given (`None`: 1-2-5 ticks).
+    pub fn axes_with(
+        &mut self,
+        p: &Panel,
+        xlabel: &str,
+        ylabel: &str,
+        show_x_labels: bool,
+        yticks: Option<&[f64]>,
+    ) {
         let s = &mut self.s;
         let _ = writeln!(
             s,
@@ -167,7 +182,16 @@ impl Svg {
                 }
             }
         }
-        let (ticks, step) = nice_ticks(p.yr.0, p.yr.1, 6);
+        let (ticks, step) = match yticks {
+            Some(t) => {
+                let step = t
+                    .windows(2)
+                    .map(|w| (w[1] - w[0]).abs())
+                    .fold(f64::INFINITY, f64::min);
+                (t.to_vec(), if step.is_finite() { step } else { 1.0 })
+            }
+            None => nice_ticks(p.yr.0, p.yr.1, 6),
+        };
         for t in ticks {
             let y = p.py(t);
             let col = if t == 0.0 { "#999" } else { "#e4e4e4" };
@@ -329,6 +353,36 @@ impl Svg {
         }
     }
 
+    /// A legend laid out in `cols` columns of width `colw` from `(x, y)` (outside the
+    /// panels, so it hides no curve): (label, colour, dashed).
+    pub fn legend_at(
+        &mut self,
+        x: f64,
+        y: f64,
+        cols: usize,
+        colw: f64,
+        items: &[(String, String, bool)],
+    ) {
+        let cols = cols.max(1);
+        for (k, (label, color, dash)) in items.iter().enumerate() {
+            let (cx, cy) = (x + colw * (k % cols) as f64, y + 18.0 * (k / cols) as f64);
+            let d = if *dash {
+                r#" stroke-dasharray="6,3""#
+            } else {
+                ""
+            };
+            let _ = writeln!(
+                self.s,
+                r#"<line x1="{cx:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{color}" stroke-width="2.5"{d}/><text x="{:.1}" y="{cy:.1}">{}</text>"#,
+                cy - 4.0,
+                cx + 22.0,
+                cy - 4.0,
+                cx + 28.0,
+                esc(label)
+            );
+        }
+    }
+
     /// Free text.
     pub fn text(&mut self, x: f64, y: f64, anchor: &str, size: f64, t: &str) {
         let _ = writeln!(
@@ -342,6 +396,24 @@ impl Svg {
         self.s.push_str("</svg>\n");
         self.s
     }
+}
+
+/// `t` cut to about `width` pixels at `px` pixels per character, ending in "...", cut
+/// after the middle of the text where possible (the end, e.g. ": Bode plot", is kept).
+pub fn fit(t: &str, width: f64, px: f64) -> String {
+    let max = (width / px).floor().max(8.0) as usize;
+    let n = t.chars().count();
+    if n <= max {
+        return t.to_string();
+    }
+    // keep a suffix after the last ": " (what the plot is) when there is one
+    let (head, tail) = match t.rfind(": ") {
+        Some(k) if t[k..].chars().count() + 8 < max => (&t[..k], &t[k..]),
+        _ => (t, ""),
+    };
+    let keep = max - tail.chars().count() - 3;
+    let cut: String = head.chars().take(keep).collect();
+    format!("{}...{tail}", cut.trim_end())
 }
 
 /// `(min, max)` of the finite values.
@@ -365,5 +437,9 @@ mod tests {
         assert_eq!(fmt_tick(2.5, 0.5), "2.5");
         assert_eq!(fmt_tick(-10.0, 5.0), "-10");
         assert_eq!(nice_range(-0.3, 9.7), (-2.0, 10.0));
+        assert_eq!(fit("short: x", 800.0, 9.0), "short: x");
+        let long = format!("{}: Bode plot", "a".repeat(200));
+        let f = fit(&long, 800.0, 9.0);
+        assert!(f.ends_with("...: Bode plot") && f.chars().count() <= 88);
     }
 }

@@ -1,0 +1,427 @@
+//! The exact operations on a system over its (numeric) ground field, as plain output data.
+
+use crate::compat::Typed;
+use crate::out::*;
+use crate::{FResult, Fail, Sys};
+use exactlti::field::Field;
+use exactlti::matrix::Matrix;
+use exactlti::realization::{self, MinrealMethod};
+use exactlti::system::StateSpace;
+use exactlti::system::transfer::TransferMatrix;
+use std::sync::Arc;
+
+pub(crate) fn typed_system<K: Field>(t: &Typed<K>) -> Out {
+    let s = &t.ss;
+    Out::Dict(vec![
+        ("A", mat(&s.a)),
+        ("B", mat(&s.b)),
+        ("C", mat(&s.c)),
+        ("D", mat(&s.d)),
+        (
+            "E",
+            t.descriptor
+                .as_ref()
+                .map(|d| mat(&d.e))
+                .unwrap_or(Out::None),
+        ),
+        (
+            "descriptor_A",
+            t.descriptor
+                .as_ref()
+                .map(|d| mat(&d.a))
+                .unwrap_or(Out::None),
+        ),
+    ])
+}
+
+pub(crate) fn minreal_typed<K: Field>(t: &Typed<K>, m: MinrealMethod) -> FResult<Out>
+where
+    Sys: From<(String, Typed<K>)>,
+{
+    let r = realization::minimal(&t.ss, m)?;
+    let sys = Sys::from((
+        String::new(),
+        Typed {
+            descriptor: None,
+            a_raw: r.system.a.clone(),
+            ss: r.system.clone(),
+        },
+    ));
+    Ok(Out::Dict(vec![
+        ("system", Out::Sys(Arc::new(sys))),
+        ("order", usize_out(r.order)),
+        ("original_order", usize_out(r.original_order)),
+        ("method", Out::Str(r.method.name().to_string())),
+        ("T", r.t.as_ref().map(mat).unwrap_or(Out::None)),
+        ("verified", Out::Bool(r.verified)),
+        ("report", report(&r.report())),
+    ]))
+}
+
+pub(crate) fn scb_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
+    let s = &t.ss;
+    let r = exactlti::structure::scb::scb(&s.a, &s.b, &s.c, &s.d)?;
+    let mp = r.minimum_phase();
+    Ok(Out::Dict(vec![
+        ("A", mat(&r.a)),
+        ("B", mat(&r.b)),
+        ("C", mat(&r.c)),
+        ("D", mat(&r.d)),
+        ("Gamma1", mat(&r.gamma1)),
+        ("Gamma2", mat(&r.gamma2)),
+        ("Gamma3", mat(&r.gamma3)),
+        ("U", mat(&r.u_pre)),
+        ("Y", mat(&r.y_pre)),
+        (
+            "dims",
+            Out::List(r.dims.iter().map(|&d| usize_out(d)).collect()),
+        ),
+        (
+            "chains",
+            Out::List(r.chains.iter().map(|&d| usize_out(d)).collect()),
+        ),
+        ("m0", usize_out(r.m0)),
+        ("left_invertible", Out::Bool(r.left_invertible)),
+        ("right_invertible", Out::Bool(r.right_invertible)),
+        ("zero_polynomial", poly(&r.invariant_zero_polynomial())),
+        ("minimum_phase", mp.map(Out::Bool).unwrap_or(Out::None)),
+        ("verified", Out::Bool(r.verified)),
+        ("report", report(&r.report())),
+    ]))
+}
+
+pub(crate) fn zeros_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
+    let s = &t.ss;
+    let z = exactlti::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)?;
+    let rat = poly_q(&z.polynomial);
+    let roots = match rat {
+        Some(p) if !p.is_zero() && p.deg() > 0 => Out::List(
+            exactlti::algebraic::roots(&p)?
+                .iter()
+                .map(|(n, m)| alg(n, *m))
+                .collect(),
+        ),
+        Some(_) => Out::List(vec![]),
+        None => Out::None,
+    };
+    Ok(Out::Dict(vec![
+        ("polynomial", poly(&z.polynomial)),
+        ("normal_rank", usize_out(z.normal_rank)),
+        ("count", usize_out(z.count())),
+        ("roots", roots),
+        ("report", report(&z.report())),
+    ]))
+}
+
+/// The transfer matrix in lowest terms (`entries`: rows of `(num, den)`), its McMillan
+/// degree (the order of a verified minimal realization) and `verified`: every entry's
+/// expansion at infinity equals `D, CB, CAB, ...` ($2n + 1$ terms) and the minimal
+/// realization's checks held.
+pub(crate) fn tf_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
+    let (kv, _) = tf_parts(&t.ss)?;
+    Ok(Out::Dict(kv))
+}
+
+/// [`tf_typed`]'s items and the minimal realization's `A` (for the pole polynomial).
+pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>) -> FResult<(Items, Matrix<K>)> {
+    let g = s.transfer_matrix()?;
+    let min = realization::minimal(s, MinrealMethod::Kalman)?;
+    let verified = min.verified && markov_match(s, &g);
+    let entries = Out::List(
+        g.entries
+            .iter()
+            .map(|row| {
+                Out::List(
+                    row.iter()
+                        .map(|h| Out::Tuple(vec![poly(&h.num), poly(&h.den)]))
+                        .collect(),
+                )
+            })
+            .collect(),
+    );
+    let kv = vec![
+        ("entries", entries),
+        ("mcmillan_degree", usize_out(min.order)),
+        ("verified", Out::Bool(verified)),
+    ];
+    Ok((kv, min.system.a))
+}
+
+/// Laurent coefficients at infinity of every entry of `g` against `D`, `C A^k B`.
+fn markov_match<K: Field>(s: &StateSpace<K>, g: &TransferMatrix<K>) -> bool {
+    let k = s.a.field().clone();
+    let terms = 2 * s.nstates() + 1;
+    let mut h = vec![s.d.clone()];
+    let mut ak_b = s.b.clone();
+    for _ in 1..terms {
+        h.push(&s.c * &ak_b);
+        ak_b = &s.a * &ak_b;
+    }
+    for (i, row) in g.entries.iter().enumerate() {
+        for (j, f) in row.iter().enumerate() {
+            let dd = f.den.deg();
+            if !f.num.is_zero() && f.num.deg() > dd {
+                return false;
+            }
+            // num(1/t) t^dd / (den(1/t) t^dd) as a power series in t
+            let rn: Vec<_> = (0..=dd).map(|q| f.num.coeff(dd - q)).collect();
+            let rd: Vec<_> = (0..=dd).map(|q| f.den.coeff(dd - q)).collect();
+            let Some(lead) = k.inv(&rd[0]) else {
+                return false;
+            };
+            let mut series: Vec<K::Elem> = Vec::with_capacity(terms);
+            for q in 0..terms {
+                let mut c = rn.get(q).cloned().unwrap_or_else(|| k.zero());
+                for (r, dr) in rd.iter().enumerate().skip(1) {
+                    if r > q {
+                        break;
+                    }
+                    c = k.sub(&c, &k.mul(dr, &series[q - r]));
+                }
+                series.push(k.mul(&c, &lead));
+            }
+            if (0..terms).any(|q| series[q] != *h[q].get(i, j)) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+pub(crate) fn to_dmatrix<K: Field>(m: &Matrix<K>) -> FResult<nalgebra::DMatrix<f64>> {
+    let a = m.to_approx_complex();
+    if a.iter().flatten().any(|(_, im)| *im != 0.0) {
+        return Err(Fail::Unsupported(
+            "unsupported: the frequency response needs real matrices".into(),
+        ));
+    }
+    Ok(nalgebra::DMatrix::from_fn(m.nrows(), m.ncols(), |i, j| {
+        a[i][j].0
+    }))
+}
+
+pub(crate) fn freqresp_typed<K: Field>(t: &Typed<K>, omega: &[f64]) -> FResult<Out> {
+    let s = &t.ss;
+    let [a, b, c, d] = [&s.a, &s.b, &s.c, &s.d].map(to_dmatrix);
+    let hz: Vec<f64> = omega
+        .iter()
+        .map(|w| w / (2.0 * std::f64::consts::PI))
+        .collect();
+    let g = exactlti::float::freqresp(&a?, &b?, &c?, &d?, &hz)?;
+    Ok(Out::List(
+        g.iter()
+            .map(|m| {
+                Out::List(
+                    (0..m.nrows())
+                        .map(|i| {
+                            Out::List(
+                                (0..m.ncols())
+                                    .map(|j| {
+                                        Out::Tuple(vec![
+                                            Out::Float(m[(i, j)].re),
+                                            Out::Float(m[(i, j)].im),
+                                        ])
+                                    })
+                                    .collect(),
+                            )
+                        })
+                        .collect(),
+                )
+            })
+            .collect(),
+    ))
+}
+
+pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResult<Out> {
+    let evs = Out::List(
+        jf.eigenvalues
+            .iter()
+            .map(|e| {
+                Out::Dict(vec![
+                    ("minpoly", poly(&e.minpoly)),
+                    ("value", Out::Str(e.value.clone())),
+                    (
+                        "approx",
+                        Out::Tuple(vec![Out::Float(e.approx.0), Out::Float(e.approx.1)]),
+                    ),
+                    ("symbol", Out::Str(e.symbol.clone())),
+                    (
+                        "algebraic_multiplicity",
+                        usize_out(e.algebraic_multiplicity),
+                    ),
+                    (
+                        "geometric_multiplicity",
+                        usize_out(e.geometric_multiplicity),
+                    ),
+                    (
+                        "blocks",
+                        Out::List(e.blocks.iter().map(|&b| usize_out(b)).collect()),
+                    ),
+                ])
+            })
+            .collect(),
+    );
+    let mut kv = vec![
+        ("eigenvalues", evs),
+        ("charpoly", poly(&jf.charpoly)),
+        ("A", mat(&jf.a)),
+    ];
+    if real {
+        let rf = jf.real_form()?;
+        let (j, t) = rf.j_t_out();
+        kv.push(("J", matout(&j)));
+        kv.push(("T", matout(&t)));
+        kv.push(("exact", Out::Bool(rf.exact)));
+        kv.push(("verified", Out::Bool(rf.verified)));
+        kv.push((
+            "notes",
+            Out::List(rf.notes.iter().map(|s| Out::Str(s.clone())).collect()),
+        ));
+        kv.push(("report", report(&rf.report())));
+    } else {
+        let (j, t) = match jf.single_field() {
+            Some((j, t)) if j.field().degree() == 1 => (mat(&j), mat(&t)),
+            _ => {
+                let (j, t) = jf.j_t_out();
+                (matout(&j), matout(&t))
+            }
+        };
+        kv.push(("J", j));
+        kv.push(("T", t));
+        kv.push(("exact", Out::Bool(true)));
+        kv.push(("verified", Out::Bool(jf.verified)));
+        kv.push(("notes", Out::List(vec![])));
+        kv.push(("report", report(&jf.report())));
+    }
+    Ok(Out::Dict(kv))
+}
+
+pub(crate) fn truth(t: exactlti::float::Truth) -> Out {
+    Out::Str(format!("{t:?}"))
+}
+
+pub(crate) fn check_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
+    use exactlti::float::{self, Tol};
+    let s = &t.ss;
+    let [a, b, c, d] = [&s.a, &s.b, &s.c, &s.d].map(to_dmatrix);
+    let (a, b, c, d) = (a?, b?, c?, d?);
+    let tol = Tol::default();
+    let item = |name: &str, exact: Out, fl: Out, tr: Out, agree: bool| {
+        Out::Dict(vec![
+            ("what", Out::Str(name.to_string())),
+            ("exact", exact),
+            ("float", fl),
+            ("float_truth", tr),
+            ("agree", Out::Bool(agree)),
+        ])
+    };
+    let mut items = vec![];
+    let exact_min = realization::minimal(s, MinrealMethod::Kalman)?;
+    let fm = float::minreal(&a, &b, &c, &d, &tol)?;
+    items.push(item(
+        "mcmillan_degree",
+        usize_out(exact_min.order),
+        usize_out(fm.order),
+        truth(fm.truth),
+        exact_min.order == fm.order,
+    ));
+    let rc = realization::controllability_matrix(&s.a, &s.b).rank();
+    let frc = float::controllability_rank(&a, &b, &tol)?;
+    items.push(item(
+        "controllability_rank",
+        usize_out(rc),
+        usize_out(frc.rank),
+        truth(frc.truth),
+        rc == frc.rank,
+    ));
+    let ro = realization::observability_matrix(&s.a, &s.c).rank();
+    let fro = float::observability_rank(&a, &c, &tol)?;
+    items.push(item(
+        "observability_rank",
+        usize_out(ro),
+        usize_out(fro.rank),
+        truth(fro.truth),
+        ro == fro.rank,
+    ));
+    // eigenvalues: the float ones matched to the exact ones (greedy nearest)
+    let fe = float::eigenvalues(&a)?;
+    let exact_ev: Option<Vec<(f64, f64)>> = exactlti::matrix::to_rational_matrix(&s.a)
+        .map(|aq| -> FResult<Vec<(f64, f64)>> {
+            let p = aq.charpoly()?;
+            let mut v = vec![];
+            if p.deg() > 0 {
+                for (n, m) in exactlti::algebraic::roots(&p)? {
+                    for _ in 0..m {
+                        v.push(n.approx());
+                    }
+                }
+            }
+            Ok(v)
+        })
+        .transpose()?;
+    if let Some(ev) = exact_ev {
+        let mut used = vec![false; fe.len()];
+        let mut worst = 0.0f64;
+        for (re, im) in &ev {
+            let mut best = (f64::INFINITY, usize::MAX);
+            for (j, z) in fe.iter().enumerate() {
+                let dist = ((z.re - re).powi(2) + (z.im - im).powi(2)).sqrt();
+                if !used[j] && dist < best.0 {
+                    best = (dist, j);
+                }
+            }
+            if best.1 != usize::MAX {
+                used[best.1] = true;
+                worst = worst.max(best.0);
+            }
+        }
+        items.push(Out::Dict(vec![
+            ("what", Out::Str("max_eigenvalue_error".into())),
+            ("exact", Out::Float(0.0)),
+            ("float", Out::Float(worst)),
+            ("float_truth", Out::None),
+            ("agree", Out::Bool(worst <= 1e-6)),
+        ]));
+    }
+    Ok(Out::List(items))
+}
+
+pub(crate) fn method_of(name: &str) -> FResult<MinrealMethod> {
+    Ok(match name {
+        "kalman" => MinrealMethod::Kalman,
+        "rosenbrock" => MinrealMethod::Rosenbrock,
+        "ho-kalman" | "ho_kalman" | "hokalman" => MinrealMethod::HoKalman,
+        other => {
+            return Err(Fail::Input(format!(
+                "unknown method '{other}' (kalman, rosenbrock, ho-kalman, jordan)"
+            )));
+        }
+    })
+}
+
+/// The mechanical normal form as output data (any field).
+pub(crate) fn mnf_out<K: Field>(
+    r: &exactlti::structure::mechanical::MechanicalNormalForm<K>,
+) -> Vec<(&'static str, Out)> {
+    let mut kv = vec![
+        ("exists", Out::Bool(r.exists)),
+        (
+            "reason",
+            r.reason.clone().map(Out::Str).unwrap_or(Out::None),
+        ),
+        ("verified", Out::Bool(r.verified)),
+        ("report", report(&r.report())),
+    ];
+    if let Some(f) = &r.form {
+        kv.push(("M", mat(&f.mass)));
+        kv.push(("L", mat(&f.damping)));
+        kv.push(("K", mat(&f.stiffness)));
+        kv.push(("F", mat(&f.input)));
+        kv.push(("C", mat(&f.output)));
+        kv.push(("D", mat(&f.feedthrough)));
+        kv.push(("T", mat(&f.t)));
+        kv.push(("A_tilde", mat(&f.a_tilde)));
+        kv.push(("B_tilde", mat(&f.b_tilde)));
+    }
+    kv
+}

@@ -1,0 +1,443 @@
+//! Plot commands and plot outputs: `pzmap`, `step`, `impulse`, and the Bode SVG of
+//! `freqresp --svg` (magnitude and unwrapped phase on a frequency grid refined near lightly
+//! damped poles). Titles and channel names come from the system file's `name`, `inputs`,
+//! `outputs`.
+
+use super::Failure;
+use super::common::with_path;
+use crate::field::{Field, Q};
+use crate::float::{self, to_dmatrix};
+use crate::io::{SystemFile, TypedSystem, as_rational};
+use crate::report::plot::bode::bode_svg;
+use crate::report::plot::pzmap::{Point, pzmap_svg};
+use crate::report::plot::time::{TimePlot, time_response_svg};
+use crate::report::plot::{Response, logspace};
+use crate::report::{Report, Value};
+use crate::system::time_response::{
+    ClosedFormResponse, default_horizon, default_points, time_grid,
+};
+use nalgebra::DMatrix;
+use std::path::Path;
+
+/// The system's title (`name`, else the file name) and its input and output names (`u1`,
+/// `y1`, ... where the file gives none).
+pub fn names(
+    f: &SystemFile,
+    path: &Path,
+    m: usize,
+    p: usize,
+) -> (String, Vec<String>, Vec<String>) {
+    let title = f.name.clone().unwrap_or_else(|| path.display().to_string());
+    let pick = |given: &Option<Vec<String>>, n: usize, base: &str| -> Vec<String> {
+        match given {
+            Some(v) if v.len() == n => v.clone(),
+            _ => (1..=n).map(|k| format!("{base}{k}")).collect(),
+        }
+    };
+    (
+        title,
+        pick(&f.signals.inputs, m, "u"),
+        pick(&f.signals.outputs, p, "y"),
+    )
+}
+
+fn write(p: &Path, text: &str) -> Result<(), Failure> {
+    std::fs::write(p, text).map_err(|e| Failure {
+        code: 2,
+        message: format!("{}: cannot write: {e}", p.display()),
+    })
+}
+
+fn abcd<K: Field>(t: &TypedSystem<K>, path: &Path) -> Result<[DMatrix<f64>; 4], Failure> {
+    let s = &t.ss;
+    let conv = |m| to_dmatrix(m).map_err(|e| with_path(path, e));
+    Ok([conv(&s.a)?, conv(&s.b)?, conv(&s.c)?, conv(&s.d)?])
+}
+
+fn float_poles(a: &DMatrix<f64>, path: &Path) -> Result<Vec<(f64, f64)>, Failure> {
+    if a.nrows() == 0 {
+        return Ok(vec![]);
+    }
+    Ok(float::eigenvalues(a)
+        .map_err(|e| with_path(path, e))?
+        .into_iter()
+        .map(|z| (z.re, z.im))
+        .collect())
+}
+
+/// The Bode plot's grid: `points` log-spaced frequencies plus, near each lightly damped pole
+/// (damping ratio < 0.5) with natural frequency in range, 41 points across
+/// `f_n (1 +- 8 zeta)` (the resonance peak has half-power width about `2 zeta f_n`).
+pub fn bode_grid(from: f64, to: f64, points: usize, poles: &[(f64, f64)]) -> Vec<f64> {
+    let mut f = logspace(from, to, points);
+    for &(re, im) in poles {
+        let wn = re.hypot(im);
+        if im <= 0.0 || wn <= 0.0 {
+            continue; // one of each conjugate pair; real poles have no peak
+        }
+        let zeta = (-re / wn).max(1e-9);
+        if zeta >= 0.5 {
+            continue;
+        }
+        let fnat = wn / (2.0 * std::f64::consts::PI);
+        for k in -20..=20 {
+            let x = fnat * (1.0 + 8.0 * zeta * k as f64 / 20.0);
+            if x >= from && x <= to {
+                f.push(x);
+            }
+        }
+    }
+    f.sort_by(f64::total_cmp);
+    f.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * b.abs());
+    f
+}
+
+/// Writes the Bode SVG of `freqresp --svg`.
+pub fn bode_file<K: Field>(
+    f: &SystemFile,
+    t: &TypedSystem<K>,
+    path: &Path,
+    (from, to, points): (f64, f64, usize),
+    out: &Path,
+) -> Result<(), Failure> {
+    let [a, b, c, d] = abcd(t, path)?;
+    let poles = float_poles(&a, path)?;
+    let freqs = bode_grid(from, to, points, &poles);
+    let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(|e| with_path(path, e))?;
+    let table: Response = resp
+        .iter()
+        .map(|g| {
+            (0..g.nrows())
+                .map(|i| {
+                    (0..g.ncols())
+                        .map(|j| (g[(i, j)].re, g[(i, j)].im))
+                        .collect()
+                })
+                .collect()
+        })
+        .collect();
+    let (title, ins, outs) = names(f, path, t.ss.ninputs(), t.ss.noutputs());
+    let labels: Vec<Vec<String>> = outs
+        .iter()
+        .map(|o| ins.iter().map(|i| format!("{i} \u{2192} {o}")).collect())
+        .collect();
+    write(
+        out,
+        &bode_svg(&freqs, &table, &format!("{title}: Bode plot"), &labels),
+    )
+}
+
+/// A pole or zero: exact (or float) display, approximation, multiplicity.
+type Root = (String, (f64, f64), usize);
+
+/// Roots of a rational polynomial as `(value, approx, multiplicity)`, certified.
+fn exact_roots(p: &crate::poly::Poly<Q>) -> crate::Result<Vec<Root>> {
+    if p.deg() == 0 {
+        return Ok(vec![]);
+    }
+    Ok(crate::algebraic::roots(p)?
+        .into_iter()
+        .map(|(z, mult)| (z.value_string(), z.approx(), mult))
+        .collect())
+}
+
+/// Float values grouped into distinct points with multiplicities (by a relative distance).
+fn group(values: &[(f64, f64)]) -> Vec<Root> {
+    let mut out: Vec<Root> = vec![];
+    let scale = 1.0 + values.iter().map(|z| z.0.hypot(z.1)).fold(0.0, f64::max);
+    for &(re, im) in values {
+        if let Some(e) = out
+            .iter_mut()
+            .find(|e| (e.1.0 - re).hypot(e.1.1 - im) <= 1e-7 * scale)
+        {
+            e.2 += 1;
+        } else {
+            out.push((format!("{re} {im:+}i"), (re, im), 1));
+        }
+    }
+    out
+}
+
+fn point_items(xs: &[Root]) -> Vec<Value> {
+    xs.iter()
+        .map(|(v, (re, im), mult)| {
+            Value::Obj(
+                Report::new()
+                    .str("value", v.clone())
+                    .with(
+                        "approx",
+                        Value::List(vec![Value::Float(*re), Value::Float(*im)]),
+                    )
+                    .int("multiplicity", *mult),
+            )
+        })
+        .collect()
+}
+
+/// `pzmap`: the poles (eigenvalues of `A`) and the invariant zeros, exact over Q (certified
+/// algebraic numbers), float otherwise; `--svg` draws the map.
+pub fn pzmap<K: Field + 'static>(
+    f: &SystemFile,
+    t: &TypedSystem<K>,
+    path: &Path,
+    svg: Option<&Path>,
+) -> Result<Report, Failure> {
+    let e = |err| with_path(path, err);
+    let s = &t.ss;
+    let (poles, zeros, exact) = match as_rational(t) {
+        Some(q) => {
+            let chi = q.ss.a.charpoly().map_err(e)?;
+            let z = crate::structure::zeros::invariant_zeros(&q.ss.a, &q.ss.b, &q.ss.c, &q.ss.d)
+                .map_err(e)?;
+            (
+                exact_roots(&chi).map_err(e)?,
+                exact_roots(&z.polynomial).map_err(e)?,
+                true,
+            )
+        }
+        None => {
+            let [a, b, c, d] = abcd(t, path)?;
+            let z = if s.ninputs() > 0 && s.noutputs() > 0 {
+                float::invariant_zeros(&a, &b, &c, &d, &float::Tol::default())
+                    .map_err(e)?
+                    .into_iter()
+                    .map(|z| (z.re, z.im))
+                    .collect()
+            } else {
+                vec![]
+            };
+            (group(&float_poles(&a, path)?), group(&z), false)
+        }
+    };
+    let (title, _, _) = names(f, path, s.ninputs(), s.noutputs());
+    if let Some(out) = svg {
+        let pts = |xs: &[Root]| -> Vec<Point> {
+            xs.iter().map(|(_, (re, im), k)| (*re, *im, *k)).collect()
+        };
+        write(
+            out,
+            &pzmap_svg(
+                &pts(&poles),
+                &pts(&zeros),
+                &format!("{title}: poles and zeros"),
+            ),
+        )?;
+    }
+    Ok(Report::titled(format!("poles and zeros: {title}"))
+        .str("name", title)
+        .bool("exact", exact)
+        .int("pole_count", poles.iter().map(|p| p.2).sum())
+        .int("zero_count", zeros.iter().map(|p| p.2).sum())
+        .list("poles", point_items(&poles))
+        .list("zeros", point_items(&zeros)))
+}
+
+/// Options of `step` and `impulse`.
+pub struct TimeArgs<'a> {
+    pub impulse: bool,
+    pub to: Option<f64>,
+    pub points: Option<usize>,
+    pub svg: Option<&'a Path>,
+    pub csv: Option<&'a Path>,
+    pub float_only: bool,
+}
+
+/// Most values (points x outputs x inputs) of a time response.
+pub const MAX_TIME_VALUES: usize = 1_000_000;
+
+fn to_rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
+    (0..m.nrows())
+        .map(|i| (0..m.ncols()).map(|j| m[(i, j)]).collect())
+        .collect()
+}
+
+/// `step` / `impulse`: the response of every channel on an even time grid; from the exact
+/// closed form (Jordan form of `A`) over Q, with the float matrix-exponential recursion
+/// beside it (`float_max_difference`); float only otherwise or with `--float`.
+pub fn time_response<K: Field + 'static>(
+    f: &SystemFile,
+    t: &TypedSystem<K>,
+    path: &Path,
+    args: &TimeArgs<'_>,
+) -> Result<(Report, bool), Failure> {
+    let what = if args.impulse {
+        "impulse response"
+    } else {
+        "step response"
+    };
+    let s = &t.ss;
+    let (p, m) = (s.noutputs(), s.ninputs());
+    if args.points.is_some_and(|n| !(2..=100_000).contains(&n))
+        || args.to.is_some_and(|x| !(x.is_finite() && x > 0.0))
+    {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{what}: need 2 <= --points <= 100000 and --to > 0 seconds (got --points {}, --to {})",
+                args.points.map_or("default".into(), |n| n.to_string()),
+                args.to.map_or("default".into(), |x| x.to_string())
+            ),
+        });
+    }
+    if p == 0 || m == 0 {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{}: a {what} needs at least one input and one output (B and C)",
+                path.display()
+            ),
+        });
+    }
+    let [a, b, c, d] = abcd(t, path)?;
+    let poles = float_poles(&a, path)?;
+    let t_end = args.to.unwrap_or_else(|| default_horizon(&poles));
+    let points = args.points.unwrap_or_else(|| default_points(t_end, &poles));
+    let values = points.saturating_mul(p).saturating_mul(m);
+    if values > MAX_TIME_VALUES {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{what}: {points} points x {p} outputs x {m} inputs = {values} values; at most {MAX_TIME_VALUES} (lower --points)"
+            ),
+        });
+    }
+    let times = time_grid(t_end, points);
+    let e = |err| with_path(path, err);
+    let fl = if args.impulse {
+        float::impulse_response(&a, &b, &c, &d, &times)
+    } else {
+        float::step_response(&a, &b, &c, &d, &times)
+    }
+    .map_err(e)?;
+    let fl: Vec<Vec<Vec<f64>>> = fl.iter().map(to_rows).collect();
+    let exact = match as_rational(t) {
+        Some(q) if !args.float_only => Some(ClosedFormResponse::new(&q.ss).map_err(e)?),
+        _ => None,
+    };
+    let vals: Vec<Vec<Vec<f64>>> = match &exact {
+        Some(cf) => times
+            .iter()
+            .map(|&x| {
+                if args.impulse {
+                    cf.impulse_at(x)
+                } else {
+                    cf.step_at(x)
+                }
+            })
+            .collect(),
+        None => fl.clone(),
+    };
+    let (title, ins, outs) = names(f, path, m, p);
+    let stable = poles.iter().all(|z| z.0 < 0.0);
+    let mut rep = Report::titled(format!("{what}: {title}"))
+        .str("name", title.clone())
+        .str(
+            "method",
+            if exact.is_some() {
+                "exact closed form from the Jordan form of A, evaluated in floating point"
+            } else {
+                "float: matrix exponential of [[A, B], [0, 0]] dt (zero-order hold)"
+            },
+        )
+        .list(
+            "inputs",
+            ins.iter().map(|x| Value::Str(x.clone())).collect(),
+        )
+        .list(
+            "outputs",
+            outs.iter().map(|x| Value::Str(x.clone())).collect(),
+        );
+    let mut final_line: Option<Vec<Vec<f64>>> = None;
+    let mut verified = true;
+    if let Some(cf) = &exact {
+        verified = cf.verified;
+        rep = rep.bool("verified", cf.verified);
+        if args.impulse {
+            rep = rep.matrix("initial_value", &cf.impulse_at_zero);
+            if !cf.d.is_zero() {
+                rep = rep.str(
+                    "note",
+                    "D delta(t) (the feedthrough times an impulse) is left out",
+                );
+            }
+        } else if let Some(g) = &cf.dc_gain {
+            rep = rep.matrix("dc_gain", g);
+            if stable {
+                final_line = Some(
+                    (0..p)
+                        .map(|i| {
+                            (0..m)
+                                .map(|j| crate::field::rational_to_f64(g.get(i, j)))
+                                .collect()
+                        })
+                        .collect(),
+                );
+            }
+        }
+        let diff = vals
+            .iter()
+            .zip(&fl)
+            .flat_map(|(x, y)| x.iter().flatten().zip(y.iter().flatten()))
+            .map(|(x, y)| (x - y).abs() / (1.0 + x.abs()))
+            .fold(0.0, f64::max);
+        rep = rep.float("float_max_difference", diff);
+    }
+    rep = rep.bool("stable", stable);
+    if let Some(out) = args.svg {
+        write(
+            out,
+            &time_response_svg(&TimePlot {
+                title: &format!("{title}: {what}"),
+                what,
+                times: &times,
+                values: &vals,
+                inputs: &ins,
+                outputs: &outs,
+                final_values: final_line.as_deref(),
+                final_label: "final value (exact DC gain)",
+            }),
+        )?;
+    }
+    if let Some(out) = args.csv {
+        let mut text = String::from("time_s");
+        for o in &outs {
+            for i in &ins {
+                text.push_str(&format!(",{}", csv_field(&format!("{i} -> {o}"))));
+            }
+        }
+        text.push('\n');
+        for (k, x) in times.iter().enumerate() {
+            text.push_str(&format!("{x}"));
+            for v in vals[k].iter().flatten() {
+                text.push_str(&format!(",{v}"));
+            }
+            text.push('\n');
+        }
+        write(out, &text)?;
+    }
+    Ok((
+        rep.list("times_s", times.iter().map(|x| Value::Float(*x)).collect())
+            .list(
+                "response",
+                vals.iter()
+                    .map(|g| {
+                        Value::List(
+                            g.iter()
+                                .map(|r| Value::List(r.iter().map(|x| Value::Float(*x)).collect()))
+                                .collect(),
+                        )
+                    })
+                    .collect(),
+            ),
+        verified,
+    ))
+}
+
+/// A CSV field, quoted when it holds a comma, quote or line break.
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}

@@ -1,0 +1,128 @@
+//! Float step and impulse responses on an even time grid.
+//!
+//! With $\Phi = \exp\left(\begin{bmatrix} A & B \\ 0 & 0 \end{bmatrix} \Delta t\right)
+//! = \begin{bmatrix} \Phi_{11} & \Phi_{12} \\ 0 & I \end{bmatrix}$ (nalgebra's Padé
+//! `exp`), the step response is $x_{k+1} = \Phi_{11} x_k + \Phi_{12} u$, $x_0 = 0$, exact for
+//! a constant input up to rounding (zero-order hold); the impulse response is
+//! $x_0 = B$, $x_{k+1} = \Phi_{11} x_k$, $y = C x$ (the $D\,\delta(t)$ part left out).
+//!
+//! | entry point | returns |
+//! |---|---|
+//! | [`step_response`] | $s(t_k)$, one $p \times m$ matrix per time |
+//! | [`impulse_response`] | $h(t_k) = C e^{A t_k} B$ |
+
+use nalgebra::DMatrix;
+
+use super::check_system;
+use crate::error::{Error, Result};
+
+fn propagators(
+    a: &DMatrix<f64>,
+    b: &DMatrix<f64>,
+    dt: f64,
+) -> Result<(DMatrix<f64>, DMatrix<f64>)> {
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(Error::Invalid("time response: need a time step > 0".into()));
+    }
+    let (n, m) = (a.nrows(), b.ncols());
+    let mut big = DMatrix::zeros(n + m, n + m);
+    big.view_mut((0, 0), (n, n)).copy_from(&(a * dt));
+    big.view_mut((0, n), (n, m)).copy_from(&(b * dt));
+    let phi = big.exp();
+    if phi.iter().any(|x| !x.is_finite()) {
+        return Err(Error::Invalid(
+            "time response: the matrix exponential overflows on this horizon".into(),
+        ));
+    }
+    Ok((
+        phi.view((0, 0), (n, n)).into_owned(),
+        phi.view((0, n), (n, m)).into_owned(),
+    ))
+}
+
+fn step_of(times: &[f64]) -> Result<f64> {
+    match times {
+        [] | [_] => Ok(1.0),
+        [t0, t1, ..] => {
+            if *t0 != 0.0 {
+                return Err(Error::Invalid(
+                    "time response: the grid starts at t = 0".into(),
+                ));
+            }
+            Ok(t1 - t0)
+        }
+    }
+}
+
+/// The step response (every input a unit step at $t = 0$) at the even grid `times`
+/// (starting at 0).
+///
+/// # Errors
+/// Shape errors as [`super::freqresp`]; a grid that is not even from 0; overflow.
+pub fn step_response(
+    a: &DMatrix<f64>,
+    b: &DMatrix<f64>,
+    c: &DMatrix<f64>,
+    d: &DMatrix<f64>,
+    times: &[f64],
+) -> Result<Vec<DMatrix<f64>>> {
+    let (n, m, _) = check_system("step response", a, b, c, d)?;
+    let dt = step_of(times)?;
+    if n == 0 {
+        return Ok(vec![d.clone(); times.len()]);
+    }
+    let (p11, p12) = propagators(a, b, dt)?;
+    let mut x = DMatrix::zeros(n, m);
+    let mut out = Vec::with_capacity(times.len());
+    for _ in times {
+        out.push(c * &x + d);
+        x = &p11 * &x + &p12;
+    }
+    Ok(out)
+}
+
+/// The impulse response $C e^{A t} B$ at the even grid `times` (starting at 0).
+///
+/// # Errors
+/// As [`step_response`].
+pub fn impulse_response(
+    a: &DMatrix<f64>,
+    b: &DMatrix<f64>,
+    c: &DMatrix<f64>,
+    d: &DMatrix<f64>,
+    times: &[f64],
+) -> Result<Vec<DMatrix<f64>>> {
+    let (n, m, _) = check_system("impulse response", a, b, c, d)?;
+    let dt = step_of(times)?;
+    if n == 0 {
+        return Ok(vec![DMatrix::zeros(c.nrows(), m); times.len()]);
+    }
+    let (p11, _) = propagators(a, b, dt)?;
+    let mut x = b.clone();
+    let mut out = Vec::with_capacity(times.len());
+    for _ in times {
+        out.push(c * &x);
+        x = &p11 * &x;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn first_order_lag() {
+        // 1/(s + 2): step 1/2 (1 - e^{-2t}), impulse e^{-2t}
+        let a = DMatrix::from_element(1, 1, -2.0);
+        let one = DMatrix::from_element(1, 1, 1.0);
+        let z = DMatrix::zeros(1, 1);
+        let ts: Vec<f64> = (0..11).map(|k| k as f64 * 0.3).collect();
+        let s = step_response(&a, &one, &one, &z, &ts).unwrap();
+        let h = impulse_response(&a, &one, &one, &z, &ts).unwrap();
+        for (k, t) in ts.iter().enumerate() {
+            assert!((s[k][(0, 0)] - 0.5 * (1.0 - (-2.0 * t).exp())).abs() < 1e-12);
+            assert!((h[k][(0, 0)] - (-2.0 * t).exp()).abs() < 1e-12);
+        }
+    }
+}
