@@ -200,15 +200,7 @@ impl SystemVisitor for FileCommand<'_> {
                 csv,
                 ..
             } => {
-                let r = super::float_cmds::freqresp(
-                    t,
-                    path,
-                    *from,
-                    *to,
-                    *points,
-                    None,
-                    csv.as_deref(),
-                )?;
+                let r = super::float_cmds::freqresp(t, path, *from, *to, *points, csv.as_deref())?;
                 if let Some(out) = svg {
                     super::plots::bode_file(f, t, path, (*from, *to, *points), out)?;
                 }
@@ -217,29 +209,14 @@ impl SystemVisitor for FileCommand<'_> {
             Command::Pzmap { svg, .. } => {
                 super::plots::pzmap(f, t, path, svg.as_deref()).map(Outcome::plain)
             }
-            Command::Step {
-                to,
-                points,
-                svg,
-                csv,
-                float,
-                ..
-            }
-            | Command::Impulse {
-                to,
-                points,
-                svg,
-                csv,
-                float,
-                ..
-            } => {
+            Command::Step { opts, .. } | Command::Impulse { opts, .. } => {
                 let args = super::plots::TimeArgs {
                     impulse: matches!(self.cmd, Command::Impulse { .. }),
-                    to: *to,
-                    points: *points,
-                    svg: svg.as_deref(),
-                    csv: csv.as_deref(),
-                    float_only: *float,
+                    to: opts.to,
+                    points: opts.points,
+                    svg: opts.svg.as_deref(),
+                    csv: opts.csv.as_deref(),
+                    float_only: opts.float,
                 };
                 let (r, ok) = super::plots::time_response(f, t, path, &args)?;
                 Ok(Outcome::new(r, ok))

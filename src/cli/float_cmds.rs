@@ -5,8 +5,7 @@ use crate::field::Field;
 use crate::float::{self, Tol, Truth, to_dmatrix};
 use crate::io::TypedSystem as Typed;
 use crate::realization;
-use crate::report::plot::bode::bode_svg;
-use crate::report::plot::{Response, logspace, response_csv};
+use crate::report::plot::{Response, logspace, response_csv, response_table};
 use crate::report::{Report, Value};
 use nalgebra::DMatrix;
 use std::path::Path;
@@ -61,7 +60,6 @@ pub fn freqresp<K: Field>(
     from: f64,
     to: f64,
     points: usize,
-    svg: Option<&Path>,
     csv: Option<&Path>,
 ) -> Result<Report, Failure> {
     if !(from > 0.0 && to > from && (2..=100_000).contains(&points)) {
@@ -91,33 +89,7 @@ pub fn freqresp<K: Field>(
     let [a, b, c, d] = float_abcd(t, path)?;
     let freqs = logspace(from, to, points);
     let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(|e| fail(path, e))?;
-    let table: Response = resp
-        .iter()
-        .map(|g| {
-            (0..g.nrows())
-                .map(|i| {
-                    (0..g.ncols())
-                        .map(|j| (g[(i, j)].re, g[(i, j)].im))
-                        .collect()
-                })
-                .collect()
-        })
-        .collect();
-    if let Some(p) = svg {
-        std::fs::write(
-            p,
-            bode_svg(
-                &freqs,
-                &table,
-                &format!("frequency response: {}", path.display()),
-                &[],
-            ),
-        )
-        .map_err(|e| Failure {
-            code: 2,
-            message: format!("{}: cannot write: {e}", p.display()),
-        })?;
-    }
+    let table = response_table(&resp);
     if let Some(p) = csv {
         std::fs::write(p, response_csv(&freqs, &table)).map_err(|e| Failure {
             code: 2,

@@ -11,7 +11,7 @@ use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::report::plot::bode::bode_svg;
 use crate::report::plot::pzmap::{Point, pzmap_svg};
 use crate::report::plot::time::{TimePlot, time_response_svg};
-use crate::report::plot::{Response, logspace};
+use crate::report::plot::{logspace, response_table};
 use crate::report::{Report, Value};
 use crate::system::time_response::{
     ClosedFormResponse, default_horizon, default_points, time_grid,
@@ -104,18 +104,7 @@ pub fn bode_file<K: Field>(
     let poles = float_poles(&a, path)?;
     let freqs = bode_grid(from, to, points, &poles);
     let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(|e| with_path(path, e))?;
-    let table: Response = resp
-        .iter()
-        .map(|g| {
-            (0..g.nrows())
-                .map(|i| {
-                    (0..g.ncols())
-                        .map(|j| (g[(i, j)].re, g[(i, j)].im))
-                        .collect()
-                })
-                .collect()
-        })
-        .collect();
+    let table = response_table(&resp);
     let (title, ins, outs) = names(f, path, t.ss.ninputs(), t.ss.noutputs());
     let labels: Vec<Vec<String>> = outs
         .iter()

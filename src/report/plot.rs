@@ -14,6 +14,22 @@ use std::fmt::Write;
 /// `response[k][i][j]` = $G_{ij}(j 2\pi f_k)$ as `(re, im)`.
 pub type Response = Vec<Vec<Vec<(f64, f64)>>>;
 
+/// The frequency response `G(j w_k)` (one complex matrix per frequency) as a [`Response`]
+/// of `(re, im)` pairs.
+pub fn response_table(resp: &[nalgebra::DMatrix<num_complex::Complex<f64>>]) -> Response {
+    resp.iter()
+        .map(|g| {
+            (0..g.nrows())
+                .map(|i| {
+                    (0..g.ncols())
+                        .map(|j| (g[(i, j)].re, g[(i, j)].im))
+                        .collect()
+                })
+                .collect()
+        })
+        .collect()
+}
+
 /// CSV with one row per frequency: `frequency_hz, G11_mag_db, G11_phase_deg, ...`.
 pub fn response_csv(freqs: &[f64], resp: &Response) -> String {
     let mut s = String::from("frequency_hz");

@@ -1,0 +1,78 @@
+//! Option types of the command line shared by several subcommands: `--method`, `linalg`
+//! operations, `poly` subcommands, the time-response options of `step` and `impulse`.
+
+use clap::{Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// `--method` of `minreal`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MethodArg {
+    Kalman,
+    Rosenbrock,
+    HoKalman,
+    Jordan,
+    Era,
+}
+
+/// Operations of `linalg`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum LinalgOp {
+    Rank,
+    Det,
+    Charpoly,
+    Minpoly,
+    Inverse,
+    Nullspace,
+    Rref,
+}
+
+/// Operations of `poly`.
+#[derive(Subcommand, Debug)]
+pub enum PolyCmd {
+    /// Factorization over Q into irreducibles with multiplicities (uni- or multivariate).
+    Factor {
+        /// A polynomial, e.g. "-4*x^3 + 1" or "x^2*y - y" (may start with '-').
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
+        expr: String,
+    },
+    /// Greatest common divisor of two (multivariate) polynomials over Q, with cofactors.
+    Gcd {
+        /// First polynomial (may start with '-').
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
+        f: String,
+        /// Second polynomial (may start with '-').
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
+        g: String,
+    },
+    /// All complex roots, certified, as exact algebraic numbers.
+    Roots {
+        /// A polynomial in one variable, e.g. "-x^2 + 2" (may start with '-').
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
+        expr: String,
+        /// Correct significant digits of the displayed approximations.
+        #[arg(long, default_value_t = 10)]
+        digits: usize,
+    },
+}
+
+/// Options shared by `step` and `impulse`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct TimeOpts {
+    /// End time in seconds (default: about 7 time constants of the slowest pole, rounded
+    /// up to 1, 2 or 5 x 10^k).
+    #[arg(long, value_name = "SECONDS")]
+    pub to: Option<f64>,
+    /// Number of evenly spaced times from 0 to --to (2 to 100000; default: 20 per period
+    /// of the fastest mode, 500 to 5000).
+    #[arg(long, value_name = "N")]
+    pub points: Option<usize>,
+    /// Write the plot (one panel per channel, names from the file) as SVG.
+    #[arg(long, value_name = "OUT.svg")]
+    pub svg: Option<PathBuf>,
+    /// Write the values as CSV (time, then one column per input -> output channel).
+    #[arg(long, value_name = "OUT.csv")]
+    pub csv: Option<PathBuf>,
+    /// Float only (matrix exponential), also for a rational system.
+    #[arg(long)]
+    pub float: bool,
+}
