@@ -259,6 +259,17 @@ fn transfer_matrix_examples() {
     // (s+1)/((s+1)(s+2)) + 2 = (2 s + 5)/(s + 2)
     assert_eq!(tf.entries[0][0].to_string_var("s"), "(2*s + 5)/(s + 2)");
     let _ = Rational::from_integer(1.into());
+    // D, C B, C A B, ... are the Laurent coefficients of G at infinity
+    assert!(tf.matches_markov(&s));
+    let other = StateSpace::new(
+        qmat![[0, 1], [-2, -3]],
+        qmat![[0], [1]],
+        qmat![[1, 2]],
+        qmat![[2]],
+    )
+    .unwrap();
+    assert!(!tf.matches_markov(&other));
+    assert!(other.transfer_matrix().unwrap().matches_markov(&other));
 }
 
 #[test]

@@ -126,7 +126,7 @@ pub(crate) fn tf_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
 pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>) -> FResult<(Items, Matrix<K>)> {
     let g = s.transfer_matrix()?;
     let min = realization::minimal(s, MinrealMethod::Kalman)?;
-    let verified = min.verified && markov_match(s, &g);
+    let verified = min.verified && g.matches_markov(s);
     let entries = Out::List(
         g.entries
             .iter()
@@ -145,47 +145,6 @@ pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>) -> FResult<(Items, Matrix<K>
         ("verified", Out::Bool(verified)),
     ];
     Ok((kv, min.system.a))
-}
-
-/// Laurent coefficients at infinity of every entry of `g` against `D`, `C A^k B`.
-fn markov_match<K: Field>(s: &StateSpace<K>, g: &TransferMatrix<K>) -> bool {
-    let k = s.a.field().clone();
-    let terms = 2 * s.nstates() + 1;
-    let mut h = vec![s.d.clone()];
-    let mut ak_b = s.b.clone();
-    for _ in 1..terms {
-        h.push(&s.c * &ak_b);
-        ak_b = &s.a * &ak_b;
-    }
-    for (i, row) in g.entries.iter().enumerate() {
-        for (j, f) in row.iter().enumerate() {
-            let dd = f.den.deg();
-            if !f.num.is_zero() && f.num.deg() > dd {
-                return false;
-            }
-            // num(1/t) t^dd / (den(1/t) t^dd) as a power series in t
-            let rn: Vec<_> = (0..=dd).map(|q| f.num.coeff(dd - q)).collect();
-            let rd: Vec<_> = (0..=dd).map(|q| f.den.coeff(dd - q)).collect();
-            let Some(lead) = k.inv(&rd[0]) else {
-                return false;
-            };
-            let mut series: Vec<K::Elem> = Vec::with_capacity(terms);
-            for q in 0..terms {
-                let mut c = rn.get(q).cloned().unwrap_or_else(|| k.zero());
-                for (r, dr) in rd.iter().enumerate().skip(1) {
-                    if r > q {
-                        break;
-                    }
-                    c = k.sub(&c, &k.mul(dr, &series[q - r]));
-                }
-                series.push(k.mul(&c, &lead));
-            }
-            if (0..terms).any(|q| series[q] != *h[q].get(i, j)) {
-                return false;
-            }
-        }
-    }
-    true
 }
 
 pub(crate) fn to_dmatrix<K: Field>(m: &Matrix<K>) -> FResult<nalgebra::DMatrix<f64>> {

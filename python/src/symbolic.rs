@@ -31,26 +31,9 @@ pub(crate) fn needs_numbers(what: &str, field: &str) -> Fail {
     ))
 }
 
-/// The system over a fresh copy of its field (an empty condition log).
 fn refield(t: &T) -> (RatFuncField, T) {
     let k = t.a_raw.field().fresh();
-    let m = |x: &Matrix<RatFuncField>| x.map(&k, |e| e.clone());
-    let t = Typed {
-        descriptor: t.descriptor.as_ref().map(|d| Descriptor {
-            e: m(&d.e),
-            a: m(&d.a),
-            b: m(&d.b),
-            c: m(&d.c),
-            d: m(&d.d),
-        }),
-        a_raw: m(&t.a_raw),
-        ss: StateSpace {
-            a: m(&t.ss.a),
-            b: m(&t.ss.b),
-            c: m(&t.ss.c),
-            d: m(&t.ss.d),
-        },
-    };
+    let t = t.in_field(&k);
     (k, t)
 }
 

@@ -64,6 +64,30 @@ pub struct TypedSystem<K: Field> {
     pub ss: StateSpace<K>,
 }
 
+impl<K: Field> TypedSystem<K> {
+    /// The same system with its matrices carried by the field value `k` (entries cloned):
+    /// over Q(p), a field with a fresh condition log.
+    pub fn in_field(&self, k: &K) -> Self {
+        let m = |x: &Matrix<K>| x.map(k, |e| e.clone());
+        TypedSystem {
+            descriptor: self.descriptor.as_ref().map(|d| Descriptor {
+                e: m(&d.e),
+                a: m(&d.a),
+                b: m(&d.b),
+                c: m(&d.c),
+                d: m(&d.d),
+            }),
+            a_raw: m(&self.a_raw),
+            ss: StateSpace {
+                a: m(&self.ss.a),
+                b: m(&self.ss.b),
+                c: m(&self.ss.c),
+                d: m(&self.ss.d),
+            },
+        }
+    }
+}
+
 /// A typed system over one of the supported ground fields.
 #[derive(Clone, Debug)]
 #[allow(clippy::large_enum_variant)]

@@ -59,6 +59,51 @@ pub struct TransferMatrix<K: Field> {
 }
 
 impl<K: Field> TransferMatrix<K> {
+    /// Whether `self` is the transfer matrix of `s`: the Laurent coefficients at infinity of
+    /// every entry equal `D`, `C B`, `C A B`, ... up to `C A^{2n-1} B` (`n` = states), which
+    /// determines a proper rational matrix of McMillan degree at most `n`. False for an
+    /// improper entry.
+    pub fn matches_markov(&self, s: &StateSpace<K>) -> bool {
+        let g = self;
+        let k = s.a.field().clone();
+        let terms = 2 * s.nstates() + 1;
+        let mut h = vec![s.d.clone()];
+        let mut ak_b = s.b.clone();
+        for _ in 1..terms {
+            h.push(&s.c * &ak_b);
+            ak_b = &s.a * &ak_b;
+        }
+        for (i, row) in g.entries.iter().enumerate() {
+            for (j, f) in row.iter().enumerate() {
+                let dd = f.den.deg();
+                if !f.num.is_zero() && f.num.deg() > dd {
+                    return false;
+                }
+                // num(1/t) t^dd / (den(1/t) t^dd) as a power series in t
+                let rn: Vec<_> = (0..=dd).map(|q| f.num.coeff(dd - q)).collect();
+                let rd: Vec<_> = (0..=dd).map(|q| f.den.coeff(dd - q)).collect();
+                let Some(lead) = k.inv(&rd[0]) else {
+                    return false;
+                };
+                let mut series: Vec<K::Elem> = Vec::with_capacity(terms);
+                for q in 0..terms {
+                    let mut c = rn.get(q).cloned().unwrap_or_else(|| k.zero());
+                    for (r, dr) in rd.iter().enumerate().skip(1) {
+                        if r > q {
+                            break;
+                        }
+                        c = k.sub(&c, &k.mul(dr, &series[q - r]));
+                    }
+                    series.push(k.mul(&c, &lead));
+                }
+                if (0..terms).any(|q| series[q] != *h[q].get(i, j)) {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
     /// Entries as strings in the variable `s`.
     pub fn to_strings(&self) -> Vec<Vec<String>> {
         self.entries

@@ -15,7 +15,7 @@ use crate::ratfunc::RatFuncField;
 use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, sections, str_list};
 use crate::structure::factor_qp::factor_over_qp;
-use crate::system::{StateSpace, transfer::TransferMatrix};
+use crate::system::StateSpace;
 use std::path::Path;
 
 type T = TypedSystem<RatFuncField>;
@@ -29,7 +29,7 @@ pub(in crate::cli) fn run(
     path: &Path,
 ) -> Result<Option<Outcome>, Failure> {
     let k = t.a_raw.field().fresh();
-    let t = refield(t, &k);
+    let t = t.in_field(&k);
     let e = |err| with_path(path, err);
     let s = &t.ss;
     let (r, ok) = match cmd {
@@ -168,27 +168,6 @@ pub(in crate::cli) fn run(
     )))
 }
 
-/// The system over `k` (a fresh condition log), entries unchanged.
-fn refield(t: &T, k: &RatFuncField) -> T {
-    let m = |x: &crate::matrix::Matrix<RatFuncField>| x.map(k, |e| e.clone());
-    TypedSystem {
-        descriptor: t.descriptor.as_ref().map(|d| crate::system::Descriptor {
-            e: m(&d.e),
-            a: m(&d.a),
-            b: m(&d.b),
-            c: m(&d.c),
-            d: m(&d.d),
-        }),
-        a_raw: m(&t.a_raw),
-        ss: StateSpace {
-            a: m(&t.ss.a),
-            b: m(&t.ss.b),
-            c: m(&t.ss.c),
-            d: m(&t.ss.d),
-        },
-    }
-}
-
 /// `r` with `key` set to `v` (replaced in place when present, else appended).
 pub(in crate::cli) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
     match r.items.iter_mut().find(|(k, _)| k == key) {
@@ -252,7 +231,7 @@ fn tf(s: &StateSpace<RatFuncField>) -> crate::Result<(Report, bool)> {
     let g = s.transfer_matrix()?;
     let min = realization::minimal(s, MinrealMethod::Kalman)?;
     let poles = min.system.a.charpoly()?;
-    let ok = markov_match(s, &g);
+    let ok = g.matches_markov(s);
     let rep = Report::titled("transfer matrix")
         .with(
             "transfer_matrix",
@@ -263,43 +242,4 @@ fn tf(s: &StateSpace<RatFuncField>) -> crate::Result<(Report, bool)> {
         .with("pole_factors", factors(&poles)?)
         .bool("minimal_realization_verified", min.verified);
     Ok((rep, ok && min.verified))
-}
-
-/// Laurent coefficients at infinity of each entry against the Markov parameters.
-fn markov_match(s: &StateSpace<RatFuncField>, g: &TransferMatrix<RatFuncField>) -> bool {
-    let k = s.field().clone();
-    let n = s.nstates();
-    let terms = 2 * n + 1;
-    let mut h = vec![s.d.clone()];
-    let mut ak_b = s.b.clone();
-    for _ in 1..terms {
-        h.push(&s.c * &ak_b);
-        ak_b = &s.a * &ak_b;
-    }
-    for (i, row) in g.entries.iter().enumerate() {
-        for (j, f) in row.iter().enumerate() {
-            let dd = f.den.deg();
-            if !f.num.is_zero() && f.num.deg() > dd {
-                return false;
-            }
-            // num(1/t) t^dd / (den(1/t) t^dd) as a power series in t (rev den(0) = 1)
-            let rn: Vec<_> = (0..=dd).map(|q| f.num.coeff(dd - q)).collect();
-            let rd: Vec<_> = (0..=dd).map(|q| f.den.coeff(dd - q)).collect();
-            let mut series: Vec<<RatFuncField as Field>::Elem> = Vec::with_capacity(terms);
-            for q in 0..terms {
-                let mut c = rn.get(q).cloned().unwrap_or_else(|| k.zero());
-                for (r, dr) in rd.iter().enumerate().skip(1) {
-                    if r > q {
-                        break;
-                    }
-                    c = k.sub(&c, &k.mul(dr, &series[q - r]));
-                }
-                series.push(c);
-            }
-            if (0..terms).any(|q| series[q] != *h[q].get(i, j)) {
-                return false;
-            }
-        }
-    }
-    true
 }
