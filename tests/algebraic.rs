@@ -223,7 +223,7 @@ fn factor_q_examples() {
 #[test]
 fn value_strings() {
     let cases = [
-        ("x^2 - x - 1", vec!["(1 - sqrt(5))/2", "(1 + sqrt(5))/2"]),
+        ("x^2 - x - 1", vec!["1/2 - sqrt(5)/2", "1/2 + sqrt(5)/2"]),
         ("x^2 + 2*x + 2", vec!["-1 - i", "-1 + i"]),
         ("2*x^2 + 1", vec!["-sqrt(2)*i/2", "sqrt(2)*i/2"]),
         ("x + 2", vec!["-2"]),
@@ -239,17 +239,20 @@ fn value_strings() {
             check_isolation(x);
         }
     }
+    // the biquadratic case: the nested radicals of the Jordan form (one display per number)
     let rs = AlgebraicNumber::roots_of_irreducible(&p("x^4 + 4*x^2 + 1")).unwrap();
     let got: Vec<String> = rs.iter().map(|x| x.value_string()).collect();
     assert_eq!(
         got,
         [
-            "root of x^4 + 4*x^2 + 1 near -1.931851653*i",
-            "root of x^4 + 4*x^2 + 1 near -0.5176380902*i",
-            "root of x^4 + 4*x^2 + 1 near 0.5176380902*i",
-            "root of x^4 + 4*x^2 + 1 near 1.931851653*i",
+            "-i*sqrt(2 + sqrt(3))",
+            "-i*sqrt(2 - sqrt(3))",
+            "i*sqrt(2 - sqrt(3))",
+            "i*sqrt(2 + sqrt(3))",
         ]
     );
+    let rs = AlgebraicNumber::roots_of_irreducible(&p("x^4 + 2")).unwrap();
+    assert!(rs[0].value_string().starts_with("root of x^4 + 2 near "));
     let rs = AlgebraicNumber::roots_of_irreducible(&p("x^3 - 2")).unwrap();
     assert_eq!(rs[0].value_string(), "root of x^3 - 2 near 1.259921050");
     assert_eq!(

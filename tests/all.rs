@@ -23,6 +23,8 @@ mod cli_options;
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
+#[path = "display.rs"]
+mod display;
 #[path = "everyday.rs"]
 mod everyday;
 #[path = "field_axioms.rs"]

@@ -297,7 +297,7 @@ fn pzmap_markers_match_the_poles() {
     assert_eq!(poles.len(), 3);
     let values: Vec<&str> = poles.iter().map(|p| p["value"].as_str().unwrap()).collect();
     assert!(
-        values.contains(&"-1") && values.contains(&"(-1 + 6*i)/2"),
+        values.contains(&"-1") && values.contains(&"-1/2 + 3*i"),
         "{values:?}"
     );
     let text = std::fs::read_to_string(&svg).unwrap();

@@ -3,10 +3,13 @@
 //! | entry point | computes |
 //! |---|---|
 //! | [`round_sig`] | a rational rounded (half away from zero) to `n` significant digits |
-//! | [`quadratic_string`] | `a + b sqrt(d)` as `(1 + sqrt(5))/2`, `-1 + i`, `sqrt(2)*i/2` |
+//! | [`quadratic_string`] | `a + b sqrt(d)` as `1/2 + sqrt(5)/2`, `-1 + i`, `sqrt(2)*i/2` ([`crate::field::quadratic_display`]) |
+//! | [`closed_form`] | the closed form of a root of an irreducible polynomial: degree 1, 2 and $x^4 + b x^2 + c$ |
 
-use crate::field::Rational;
+use crate::field::{Q, QuadraticField, Rational, quadratic_display, rational_to_f64};
+use crate::poly::Poly;
 use num_bigint::BigInt;
+use num_complex::Complex64;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
@@ -70,68 +73,82 @@ pub fn round_sig(q: &Rational, n: usize) -> String {
     if neg { format!("-{body}") } else { body }
 }
 
-/// `n = s^2 d` with `d` free of squares of primes below `2^16` and not a perfect square
-/// cofactor; returns `(s, d)` (sign kept in `d`).
+/// `n = s^2 d` with `d` square-free (up to square factors of primes above `10^6` whose
+/// cofactor is no perfect square); returns `(s, d)` (sign kept in `d`). The same split as
+/// [`crate::field::quadratic::squarefree_split`], so every display of a quadratic number
+/// names the same radicand.
 pub fn split_square(n: &BigInt) -> (BigInt, BigInt) {
-    let sign = if n.is_negative() { -1 } else { 1 };
-    let mut m = n.abs();
-    let mut s = BigInt::one();
-    let mut p: u64 = 2;
-    while p < 65536 {
-        let pp = BigInt::from(p * p);
-        if pp > m {
-            break;
-        }
-        let bp = BigInt::from(p);
-        while (&m % &pp).is_zero() {
-            m /= &pp;
-            s *= &bp;
-        }
-        p += if p == 2 { 1 } else { 2 };
-    }
-    let r = num_integer::Roots::sqrt(&m);
-    if &r * &r == m && !m.is_one() {
-        s *= &r;
-        m = BigInt::one();
-    }
-    (s, m * sign)
+    crate::field::quadratic::squarefree_split(n)
 }
 
-/// Display of `a + b*sqrt(d)` (`d` square-free, `d != 1`; `d = -1` is `i`).
+/// Display of `a + b*sqrt(d)` (`d` square-free, `d != 1`; `d = -1` is `i`): the one display
+/// of quadratic numbers, [`crate::field::quadratic_display`].
 pub fn quadratic_string(a: &Rational, b: &Rational, d: &BigInt) -> String {
-    if b.is_zero() || d.is_zero() {
+    if d.is_zero() {
         return crate::field::fmt_rational(a);
     }
-    let l = a.denom().lcm(b.denom());
-    let an = (a * Rational::from_integer(l.clone())).to_integer();
-    let bn = (b * Rational::from_integer(l.clone())).to_integer();
-    let rad = if *d == BigInt::from(-1) {
-        "i".to_string()
-    } else if d.is_negative() {
-        format!("sqrt({})*i", -d)
-    } else {
-        format!("sqrt({d})")
-    };
-    let term = if bn.abs().is_one() {
-        rad
-    } else {
-        format!("{}*{rad}", bn.abs())
-    };
-    let num = if an.is_zero() {
-        if bn.is_negative() {
-            format!("-{term}")
-        } else {
-            term
+    crate::field::quadratic_display(a, b, d)
+}
+
+/// For a monic quadratic $x^2 + b x + c$: roots $a_0 \pm s\sqrt f$ as `(a0, s, f)` with
+/// `s > 0` and `f` square-free (`None` when the roots are rational).
+pub fn quadratic_roots(p: &Poly<Q>) -> Option<(Rational, Rational, BigInt)> {
+    let b = p.coeff(1);
+    let c = p.coeff(0);
+    let half = Rational::new(1.into(), 2.into());
+    let a0 = -&b * &half;
+    let disc4 = &a0 * &a0 - c; // (b^2 - 4c)/4
+    let (field, _, s) = QuadraticField::sqrt_of_rational(&disc4);
+    field.map(|k| (a0, s, k.d().clone()))
+}
+
+/// The closed form of the root of the irreducible monic `p` nearest `approx`, the one used
+/// by every report: the rational for degree 1, [`crate::field::quadratic_display`] for
+/// degree 2 (the sign of the radical read off `approx`), and for $x^4 + b x^2 + c$ with a
+/// real square root of the discriminant the nested radical `sqrt(u)` / `i*sqrt(-u)`
+/// (`i*sqrt(2 - sqrt(3))`); `None` otherwise (the caller writes `root of p near ...`).
+///
+/// `approx` only chooses among the roots: it must be nearer the wanted root than half the
+/// distance to the others (any certified approximation is).
+pub fn closed_form(p: &Poly<Q>, approx: (f64, f64)) -> Option<String> {
+    match p.deg() {
+        1 => Some(crate::field::fmt_rational(&-p.coeff(0))),
+        2 => {
+            let (a0, s, f) = quadratic_roots(p)?;
+            let positive = if f.is_negative() {
+                approx.1 > 0.0
+            } else {
+                approx.0 > rational_to_f64(&a0)
+            };
+            let coef = if positive { s } else { -s };
+            Some(quadratic_display(&a0, &coef, &f))
         }
-    } else {
-        format!("{an} {} {term}", if bn.is_negative() { "-" } else { "+" })
-    };
-    if l.is_one() {
-        num
-    } else if an.is_zero() {
-        format!("{num}/{l}")
-    } else {
-        format!("({num})/{l}")
+        4 if p.coeff(1).is_zero() && p.coeff(3).is_zero() => {
+            // theta^2 = u with u a root of y^2 + b y + c
+            let q = Poly::new(Q, vec![p.coeff(0), p.coeff(2), Rational::one()]);
+            let (a0, s, f) = quadratic_roots(&q)?;
+            if !f.is_positive() {
+                return None;
+            }
+            let z = Complex64::new(approx.0, approx.1);
+            let u = z * z;
+            let coef = if u.re > rational_to_f64(&a0) { s } else { -s };
+            let u_pos = u.re > 0.0;
+            let sign_neg = if u_pos {
+                approx.0 < 0.0
+            } else {
+                approx.1 < 0.0
+            };
+            let (ua, ub) = if u_pos { (a0, coef) } else { (-a0, -coef) };
+            let inner = quadratic_display(&ua, &ub, &f);
+            let body = if u_pos {
+                format!("sqrt({inner})")
+            } else {
+                format!("i*sqrt({inner})")
+            };
+            Some(if sign_neg { format!("-{body}") } else { body })
+        }
+        _ => None,
     }
 }
 
@@ -155,7 +172,7 @@ mod tests {
         let b = BigInt::from;
         assert_eq!(
             quadratic_string(&r(1, 2), &r(1, 2), &b(5)),
-            "(1 + sqrt(5))/2"
+            "1/2 + sqrt(5)/2"
         );
         assert_eq!(quadratic_string(&r(-1, 1), &r(1, 1), &b(-1)), "-1 + i");
         assert_eq!(quadratic_string(&r(0, 1), &r(1, 2), &b(-2)), "sqrt(2)*i/2");

@@ -458,10 +458,17 @@ impl AlgebraicNumber {
         }
     }
 
-    /// Exact closed form up to degree 2, else `root of <minpoly> near <10 digits>`.
+    /// Exact closed form up to degree 2 and for $x^4 + b x^2 + c$ (the nested radicals of
+    /// [`super::display::closed_form`], the display every report uses), else
+    /// `root of <minpoly> near <10 digits>`.
     pub fn value_string(&self) -> String {
         if let Some((a, b, d)) = self.quadratic_parts() {
             return quadratic_string(&a, &b, &d);
+        }
+        if self.degree() == 4
+            && let Some(s) = super::display::closed_form(&self.minpoly, self.approx())
+        {
+            return s;
         }
         let (re, im) = self.digits(10);
         let near = if self.is_real() {

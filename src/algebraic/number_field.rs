@@ -63,6 +63,23 @@ impl PartialEq for NumberField {
 pub struct NfElem(pub Vec<Rational>);
 
 impl NumberField {
+    /// `Some(d)` when this is $\mathbb{Q}(\sqrt d)$ displayed with its radical: modulus
+    /// $t^2 - d$ and variable [`crate::field::radical_text`]`(d)` (`sqrt(3)`, `sqrt(2)*i`,
+    /// `i`). Its elements are then shown as every quadratic number is
+    /// ([`crate::field::quadratic_display`]: `-6 + sqrt(1598)/10`, not
+    /// `1/10*sqrt(1598) - 6`).
+    pub fn radicand(&self) -> Option<num_bigint::BigInt> {
+        let m = &self.0.modulus;
+        if m.deg() != 2 || !m.coeff(1).is_zero() || !self.0.var.starts_with(['s', 'i']) {
+            return None;
+        }
+        let d = -m.coeff(0);
+        if !d.is_integer() {
+            return None;
+        }
+        let d = d.to_integer();
+        (crate::field::radical_text(&d) == self.0.var).then_some(d)
+    }
     /// The field $\mathbb{Q}\[t\]/(m)$ with $t$ the root of $m$ near `root`.
     ///
     /// The modulus is made monic and checked irreducible over $\mathbb{Q}$
@@ -281,7 +298,22 @@ impl Field for NumberField {
         }
     }
     fn fmt_elem(&self, a: &NfElem) -> String {
-        fmt_poly(&Q, &a.0, &self.0.var)
+        match self.radicand() {
+            Some(d) => {
+                let c = |i: usize| a.0.get(i).cloned().unwrap_or_else(Rational::zero);
+                crate::field::quadratic_display(&c(0), &c(1), &d)
+            }
+            None => fmt_poly(&Q, &a.0, &self.0.var),
+        }
+    }
+    fn latex_elem(&self, a: &NfElem) -> String {
+        match self.radicand() {
+            Some(d) => {
+                let c = |i: usize| a.0.get(i).cloned().unwrap_or_else(Rational::zero);
+                crate::field::quadratic_latex(&c(0), &c(1), &d)
+            }
+            None => self.fmt_elem(a),
+        }
     }
     fn approx(&self, a: &NfElem) -> Option<(f64, f64)> {
         Some(NumberField::approx(self, a))

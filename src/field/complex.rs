@@ -4,7 +4,7 @@
 //! marked embedding is real). $(a + bi)^{-1} = (a - bi)/(a^2 + b^2)$.
 
 use super::{Field, Rational};
-use crate::field::quadratic::fmt_pair;
+use crate::field::quadratic_display;
 use std::fmt;
 
 /// The field $F(i)$ for a real field $F$.
@@ -117,7 +117,7 @@ impl<F: Field> Field for ComplexField<F> {
     fn fmt_elem(&self, a: &Self::Elem) -> String {
         let k = &self.base;
         if let (Some(r), Some(i)) = (k.to_rational(&a.re), k.to_rational(&a.im)) {
-            return fmt_pair(&r, &i, "i");
+            return quadratic_display(&r, &i, &(-1).into());
         }
         let re = k.fmt_elem(&a.re);
         if k.is_zero(&a.im) {

@@ -39,7 +39,7 @@ pub fn pow_by_squaring<T: Clone>(x: &T, mut e: u32, one: T, mul: impl Fn(&T, &T)
     }
     acc
 }
-pub use quadratic::{Quadratic, QuadraticField};
+pub use quadratic::{Quadratic, QuadraticField, quadratic_display, quadratic_latex, radical_text};
 pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
 
 /// An exact field, as a domain value.

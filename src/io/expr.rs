@@ -20,7 +20,9 @@
 //! $a + b\sqrt d$ with $a, b \in \mathbb{Q}$ and at most one square-free radicand `d`
 //! per expression: `i` is $\sqrt{-1}$, `sqrt(r)` of a rational `r` is reduced to
 //! $s\sqrt f$ with $r = s^2 f$ (`sqrt(8) = 2*sqrt(2)`, `sqrt(9) = 3`,
-//! `sqrt(1/2) = sqrt(2)/2`). `pi` is rejected (transcendental); `i`, `sqrt`, `pi` are
+//! `sqrt(1/2) = sqrt(2)/2`); a product of two square roots is one (`sqrt(3)*i` is
+//! $\sqrt{-3}$, `sqrt(2)*sqrt(3)` is $\sqrt 6$), so every display of a quadratic number
+//! ([`crate::field::quadratic_display`]: `-3/20 - sqrt(1991)*i/20`) reads back. `pi` is rejected (transcendental); `i`, `sqrt`, `pi` are
 //! never parameter names.
 //!
 //! Every input gives a value or an [`ExprError`] in time bounded by the input length:
@@ -455,6 +457,22 @@ mod tests {
         assert!(ev("2^(1/2)").unwrap_err().contains("integer"));
         assert!(ev("pi").unwrap_err().starts_with("pi is transcendental"));
         assert!(ev("sqrt(2) + i").unwrap_err().contains("cannot be mixed"));
+        assert!(
+            ev("(1 + sqrt(2))*i")
+                .unwrap_err()
+                .contains("cannot be mixed")
+        );
+        // products of square roots are square roots
+        assert_eq!(ev("sqrt(3)*i/2").unwrap(), "sqrt(3)*i/2");
+        assert_eq!(ev("i*sqrt(3)").unwrap(), "sqrt(3)*i");
+        assert_eq!(ev("sqrt(2)*sqrt(3)").unwrap(), "sqrt(6)");
+        assert_eq!(ev("sqrt(6)*sqrt(-3)").unwrap(), "3*sqrt(2)*i");
+        assert_eq!(ev("sqrt(-2)*sqrt(-3)").unwrap(), "-sqrt(6)");
+        assert_eq!(ev("sqrt(2)*sqrt(-2)").unwrap(), "2*i");
+        assert_eq!(
+            ev("-3/20 - sqrt(1991)*i/20 + 3/20").unwrap(),
+            "-sqrt(1991)*i/20"
+        );
         assert_eq!(ev("(1+2").unwrap_err(), "missing ')' at the end of '(1+2'");
         assert_eq!(
             ev("1+2)").unwrap_err(),

@@ -80,6 +80,35 @@ fn bits(q: &Rational) -> u64 {
     q.numer().bits().max(q.denom().bits())
 }
 
+/// `(b sqrt(d)) * (c sqrt(e))` for square-free `d != e`: `b c g sqrt(f)` with `g = gcd(d, e)`
+/// and `f = (d/g)(e/g)` square-free (`sqrt(3)*i` is `sqrt(-3)`, `sqrt(2)*sqrt(3)` is
+/// `sqrt(6)`), so every display of a quadratic number (`sqrt(3)*i/2`) reads back.
+fn radical_product(
+    b: &Rational,
+    x: &QuadraticField,
+    c: &Rational,
+    y: &QuadraticField,
+) -> Result<Value, ExprError> {
+    use num_integer::Integer;
+    let g = x.d().gcd(y.d());
+    let f = (x.d() / &g) * (y.d() / &g);
+    // both negative: sqrt(d) sqrt(e) = i^2 sqrt(|d| |e|) = -sqrt(|d e|)
+    let g = if x.d().is_negative() && y.d().is_negative() {
+        -g
+    } else {
+        g
+    };
+    let coef = q_mul(&q_mul(b, c), &Rational::from_integer(g));
+    if f.is_one() {
+        return Value::rational(coef).checked();
+    }
+    if f.abs() >= BigInt::from(10u64.pow(18)) {
+        return err("product of square roots too large (the radicand must stay below 10^18)");
+    }
+    let k = QuadraticField::new(f).map_err(|e| ExprError { msg: e.to_string() })?;
+    Value::new(Rational::zero(), coef, Some(k)).checked()
+}
+
 impl Value {
     pub(crate) fn new(a: Rational, b: Rational, k: Option<QuadraticField>) -> Self {
         let k = if b.is_zero() { None } else { k };
@@ -118,6 +147,13 @@ impl Value {
         Value::new(-&self.a, -&self.b, self.k.clone())
     }
     pub(crate) fn mul(&self, o: &Value) -> Result<Value, ExprError> {
+        if let (Some(x), Some(y)) = (&self.k, &o.k)
+            && x != y
+            && self.a.is_zero()
+            && o.a.is_zero()
+        {
+            return radical_product(&self.b, x, &o.b, y);
+        }
         let k = self.join(o)?;
         let bb = if self.b.is_zero() || o.b.is_zero() {
             Rational::zero()

@@ -10,12 +10,9 @@
 
 use crate::algebraic::AlgebraicNumber;
 use crate::error::Result;
-use crate::field::quadratic::fmt_pair;
-use crate::field::{Field, Q, QuadraticField, Rational, rational_to_f64};
+use crate::field::{Q, Rational, rational_to_f64};
 use crate::poly::Poly;
-use num_bigint::BigInt;
-use num_complex::Complex64;
-use num_traits::{One, Signed, Zero};
+use num_traits::Signed;
 use std::cmp::Ordering;
 
 /// Irreducible monic factors of `p` over $\mathbb{Q}$ with multiplicities (sorted by
@@ -105,71 +102,14 @@ fn real_approx(p: &Poly<Q>, z: AlgebraicNumber) -> (AlgebraicNumber, f64) {
     (z.clone(), z.approx().0)
 }
 
-/// Radical text for $\sqrt f$ (`i` for $f = -1$).
-pub(crate) fn radical_text(f: &BigInt) -> String {
-    if *f == BigInt::from(-1) {
-        "i".into()
-    } else if f.is_negative() {
-        format!("sqrt({})*i", -f)
-    } else {
-        format!("sqrt({f})")
-    }
-}
+pub(crate) use crate::algebraic::display::quadratic_roots;
+pub(crate) use crate::field::radical_text;
 
-/// For a monic quadratic $x^2 + b x + c$: roots $a_0 \pm s\sqrt f$ as `(a0, s, f)` with
-/// `s > 0` and `f` square-free (`None` when the roots are rational).
-pub(crate) fn quadratic_roots(p: &Poly<Q>) -> Option<(Rational, Rational, BigInt)> {
-    let b = p.coeff(1);
-    let c = p.coeff(0);
-    let half = Rational::new(1.into(), 2.into());
-    let a0 = -&b * &half;
-    let disc4 = &a0 * &a0 - c; // (b^2 - 4c)/4
-    let (field, _, s) = QuadraticField::sqrt_of_rational(&disc4);
-    field.map(|k| (a0, s, k.d().clone()))
-}
-
-/// Exact display of the root of the irreducible `p` nearest `approx`.
+/// Exact display of the root of the irreducible `p` nearest `approx`: the closed form of
+/// [`crate::algebraic::display::closed_form`] (the same as
+/// [`AlgebraicNumber::value_string`]'s), else `root of p near ...`.
 pub(crate) fn value_string(p: &Poly<Q>, approx: (f64, f64)) -> String {
-    match p.deg() {
-        1 => Q.fmt_elem(&-p.coeff(0)),
-        2 => {
-            let (a0, s, f) = quadratic_roots(p).expect("irreducible quadratic");
-            let positive = if f.is_negative() {
-                approx.1 > 0.0
-            } else {
-                approx.0 > rational_to_f64(&a0)
-            };
-            let coef = if positive { s } else { -s };
-            fmt_pair(&a0, &coef, &radical_text(&f))
-        }
-        4 if p.coeff(1).is_zero() && p.coeff(3).is_zero() => {
-            // theta^2 = u with u a root of y^2 + b y + c
-            let q = Poly::new(Q, vec![p.coeff(0), p.coeff(2), Rational::one()]);
-            match quadratic_roots(&q) {
-                Some((a0, s, f)) if f.is_positive() => {
-                    let z = Complex64::new(approx.0, approx.1);
-                    let u = z * z;
-                    let coef = if u.re > rational_to_f64(&a0) { s } else { -s };
-                    let u_pos = u.re > 0.0;
-                    let sign_neg = if u_pos {
-                        approx.0 < 0.0
-                    } else {
-                        approx.1 < 0.0
-                    };
-                    let (ua, ub) = if u_pos { (a0, coef) } else { (-a0, -coef) };
-                    let inner = fmt_pair(&ua, &ub, &radical_text(&f));
-                    let body = if u_pos {
-                        format!("sqrt({inner})")
-                    } else {
-                        format!("i*sqrt({inner})")
-                    };
-                    if sign_neg { format!("-{body}") } else { body }
-                }
-                _ => root_of(p, approx),
-            }
-        }
-        _ => root_of(p, approx),
-    }
+    crate::algebraic::display::closed_form(p, approx).unwrap_or_else(|| root_of(p, approx))
 }
 
 fn root_of(p: &Poly<Q>, approx: (f64, f64)) -> String {

@@ -45,9 +45,7 @@ fn sqrt_display(r: &Rational) -> String {
     let (field, a, b) = QuadraticField::sqrt_of_rational(r);
     match field {
         None => fmt_rational(&a),
-        Some(k) => {
-            crate::field::quadratic::fmt_pair(&Rational::zero(), &b, &format!("sqrt({})", k.d()))
-        }
+        Some(k) => crate::field::quadratic_display(&Rational::zero(), &b, k.d()),
     }
 }
 
