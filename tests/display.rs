@@ -309,3 +309,43 @@ fn analyze_reports_show_each_quadratic_number_one_way() {
         }
     }
 }
+
+/// The Jordan-method minimal realization writes a real quadratic mode in its closed form
+/// over Q(sqrt 2) (it showed `r1 = root of x^2 - 2 near 1.41...` and entries `r1 + 2`).
+#[test]
+fn jordan_method_real_quadratic_modes_in_closed_form() {
+    use exactlti::qmat;
+    use exactlti::realization::minimal_jordan;
+    use exactlti::system::StateSpace;
+    let sys =
+        StateSpace::new_strictly_proper(qmat![[0, 1], [2, 0]], qmat![[0], [1]], qmat![[1, 1]])
+            .unwrap();
+    let jm = minimal_jordan(&sys).unwrap();
+    assert!(jm.verified);
+    let evs: Vec<&str> = jm.blocks.iter().map(|b| b.eigenvalue.as_str()).collect();
+    assert_eq!(evs, ["sqrt(2)", "-sqrt(2)"]);
+    for b in &jm.blocks {
+        let f = &b.field;
+        assert_eq!(f.radicand(), Some(BigInt::from(2)));
+        assert_eq!(f.fmt_elem(b.a.get(0, 0)), b.eigenvalue);
+        let want = if b.eigenvalue == "sqrt(2)" {
+            "2 + sqrt(2)"
+        } else {
+            "2 - sqrt(2)"
+        };
+        assert_eq!(f.fmt_elem(b.c.get(0, 0)), want);
+    }
+    // the two blocks (both over Q(sqrt 2)) reproduce the Markov parameters C A^k B exactly
+    let f = &jm.blocks[0].field;
+    for (k, mk) in sys.markov(4).iter().enumerate() {
+        let mut sum = f.zero();
+        for b in &jm.blocks {
+            let mut x = f.mul(b.c.get(0, 0), b.b.get(0, 0));
+            for _ in 0..k {
+                x = f.mul(&x, b.a.get(0, 0));
+            }
+            sum = f.add(&sum, &x);
+        }
+        assert_eq!(f.to_rational(&sum).as_ref(), Some(mk.get(0, 0)), "k = {k}");
+    }
+}

@@ -345,18 +345,35 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
                 symbols.iter().filter(|(k, _)| k.starts_with('r')).count() + 1
             );
             if im == 0.0 || p.deg() == 1 {
-                // a real root: the same data in K marked at this root
-                let f = NumberField(Arc::new(NumberFieldCtx {
-                    modulus: c.field.modulus().clone(),
-                    root: c.roots[j],
-                    var: var.clone(),
-                }));
-                let conv = |m: &Matrix<NumberField>| m.map(&f, |x| x.clone());
-                if p.deg() > 1 {
+                // a real root: the same data in K marked at this root; a quadratic K as
+                // Q(sqrt f), shown as every quadratic number is (`1 - sqrt(2)/2`)
+                let (f, radical) = match crate::algebraic::display::quadratic_roots(p) {
+                    Some((a0, s, fd)) if p.deg() == 2 => {
+                        let s = if re > crate::field::rational_to_f64(&a0) {
+                            s
+                        } else {
+                            -s
+                        };
+                        (crate::jordan::quadratic_field(&fd), Some((a0, s)))
+                    }
+                    _ => (
+                        NumberField(Arc::new(NumberFieldCtx {
+                            modulus: c.field.modulus().clone(),
+                            root: c.roots[j],
+                            var: var.clone(),
+                        })),
+                        None,
+                    ),
+                };
+                let conv = |m: &Matrix<NumberField>| match &radical {
+                    Some((a0, s)) => m.map(&f, |x| crate::jordan::quadratic_image(x, a0, s)),
+                    None => m.map(&f, |x| x.clone()),
+                };
+                if p.deg() > 2 {
                     symbols.push((var, format!("root of {p} near {re:.10}")));
                 }
-                let ev = if p.deg() == 1 {
-                    crate::field::fmt_rational(&-p.coeff(0))
+                let ev = if p.deg() <= 2 {
+                    crate::jordan::value_display(p, c.roots[j])
                 } else {
                     format!("root of {p} near {re:.10}")
                 };
