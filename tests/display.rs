@@ -85,7 +85,7 @@ fn examples_of_the_one_display() {
     assert_eq!(l(r(-6, 1), r(1, 10), 1598), "-6 + \\frac{\\sqrt{1598}}{10}");
     assert_eq!(
         l(r(-1, 2), r(3, 2), -3),
-        "-\\frac{1}{2} + \\frac{3 \\sqrt{3} \\mathrm{i}}{2}"
+        "-\\frac{1}{2} + \\frac{3 \\sqrt{3}\\,\\mathrm{i}}{2}"
     );
     for d in RADICANDS {
         for (a, b) in [(r(0, 1), r(0, 1)), (r(0, 1), r(1, 1)), (r(-1, 1), r(-1, 1))] {

@@ -184,7 +184,7 @@ pub fn quadratic_display(a: &Rational, b: &Rational, d: &BigInt) -> String {
 }
 
 /// The LaTeX of [`quadratic_display`], as the report's LaTeX output typesets that display:
-/// `-6 + \frac{\sqrt{1598}}{10}`, `-\frac{\sqrt{3}}{24}`, `\frac{\sqrt{2} \mathrm{i}}{2}`,
+/// `-6 + \frac{\sqrt{1598}}{10}`, `-\frac{\sqrt{3}}{24}`, `\frac{\sqrt{2}\,\mathrm{i}}{2}`,
 /// `-1 + \mathrm{i}`.
 pub fn quadratic_latex(a: &Rational, b: &Rational, d: &BigInt) -> String {
     let q = |x: &Rational| crate::field::Q.latex_elem(x);
@@ -194,7 +194,7 @@ pub fn quadratic_latex(a: &Rational, b: &Rational, d: &BigInt) -> String {
     let rad = if *d == BigInt::from(-1) {
         "\\mathrm{i}".to_string()
     } else if d.is_negative() {
-        format!("\\sqrt{{{}}} \\mathrm{{i}}", -d)
+        format!("\\sqrt{{{}}}\\,\\mathrm{{i}}", -d)
     } else {
         format!("\\sqrt{{{d}}}")
     };

@@ -1,4 +1,4 @@
-//! Exact display strings (`"-1/2*sqrt(2)"`, `"(1 + sqrt(5))/2"`, `"0 + (b7)*i"`,
+//! Exact display strings (`"-sqrt(2)/2"`, `"1/2 + sqrt(5)/2"`, `"0 + (b7)*i"`,
 //! `"root of x^4 - 4*x^2 + 1 near 1.93"`, `"-cr/(m*u)"`) as LaTeX math.
 //!
 //! A small bounded parser of the display grammar: numbers, identifiers, `+ - * / ^`,
@@ -273,6 +273,15 @@ fn starts_with_digit(n: &Node) -> bool {
     }
 }
 
+/// Does the rendering of `n` end with a radical (`\sqrt{2}\,\mathrm{i}` needs a thin space)?
+fn ends_with_sqrt(n: &Node) -> bool {
+    match n {
+        Node::Call(f, _) => f == "sqrt",
+        Node::Mul(_, b) => ends_with_sqrt(b),
+        _ => false,
+    }
+}
+
 /// A multi-letter name typeset in italic (`cr`), which needs a thin space in a product.
 fn is_word(n: &Node) -> bool {
     matches!(n, Node::Id(x) if x.len() > 1
@@ -331,7 +340,7 @@ fn render(n: &Node) -> String {
             };
             let sep = if starts_with_digit(b) && !matches!(**b, Node::Paren(_)) {
                 " \\cdot "
-            } else if is_word(a) || is_word(b) {
+            } else if is_word(a) || is_word(b) || ends_with_sqrt(a) {
                 "\\,"
             } else {
                 " "
@@ -383,7 +392,8 @@ fn side(s: &str) -> Option<String> {
 /// # Examples
 /// ```
 /// use exactlti::report::latex::to_math;
-/// assert_eq!(to_math("-1/2*sqrt(2)").unwrap(), "-\\frac{1}{2} \\sqrt{2}");
+/// assert_eq!(to_math("-sqrt(2)/2").unwrap(), "-\\frac{\\sqrt{2}}{2}");
+/// assert_eq!(to_math("1/2 + sqrt(5)/2").unwrap(), "\\frac{1}{2} + \\frac{\\sqrt{5}}{2}");
 /// assert_eq!(to_math("(1 + sqrt(5))/2").unwrap(), "\\frac{1 + \\sqrt{5}}{2}");
 /// assert_eq!(to_math("0 + (b7)*i").unwrap(), "0 + \\left(b_{7}\\right) \\mathrm{i}");
 /// assert_eq!(to_math("x^4 + 4*x^2 + 1").unwrap(), "x^{4} + 4 x^{2} + 1");
@@ -410,7 +420,9 @@ mod tests {
     fn display_strings_become_math() {
         let m = |s: &str| to_math(s).unwrap_or_else(|| panic!("{s}"));
         assert_eq!(m("r7"), "r_{7}");
-        assert_eq!(m("sqrt(2)*i"), "\\sqrt{2} \\mathrm{i}");
+        assert_eq!(m("sqrt(2)*i"), "\\sqrt{2}\\,\\mathrm{i}");
+        assert_eq!(m("-sqrt(3)*i/24"), "-\\frac{\\sqrt{3}\\,\\mathrm{i}}{24}");
+        assert_eq!(m("-6 + sqrt(1598)/10"), "-6 + \\frac{\\sqrt{1598}}{10}");
         assert_eq!(m("-cr/(m*u)"), "-\\frac{\\mathit{cr}}{m u}");
         assert_eq!(m("2*b7^3 - 7*b7"), "2 b_{7}^{3} - 7 b_{7}");
         assert_eq!(

@@ -29,9 +29,9 @@ pub const MAX_MATRIX_COLS: usize = 24;
 /// ```
 /// use exactlti::report::Report;
 /// use exactlti::report::latex::fragment;
-/// let r = Report::titled("eigen\nvalues").str("value", "(1 + sqrt(5))/2");
+/// let r = Report::titled("eigen\nvalues").str("value", "1/2 + sqrt(5)/2");
 /// let t = fragment(&r);
-/// assert!(t.contains("$\\frac{1 + \\sqrt{5}}{2}$"));
+/// assert!(t.contains("$\\frac{1}{2} + \\frac{\\sqrt{5}}{2}$"));
 /// assert!(t.starts_with("% exactlti: eigen\\nvalues\n"));
 /// ```
 pub fn fragment(r: &Report) -> String {
