@@ -349,3 +349,40 @@ fn jordan_method_real_quadratic_modes_in_closed_form() {
         assert_eq!(f.to_rational(&sum).as_ref(), Some(mk.get(0, 0)), "k = {k}");
     }
 }
+
+/// The Jordan-method realization of the sliding masses lists only the symbols its entries
+/// use: the pair at +/- sqrt(3)*i is expanded over Q(sqrt 3) and shown with the radical, so
+/// no `r1 = root of x^2 - 3 near ...` is left in the legend.
+#[test]
+fn jordan_method_legend_lists_used_symbols_only() {
+    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args([
+            "minreal",
+            "--method",
+            "jordan",
+            "data/sliding-masses.json",
+            "--format",
+            "json",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(0));
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let mut entries = vec![];
+    for k in ["A", "B", "C"] {
+        strings(&j[k], &mut entries);
+    }
+    assert!(entries.contains(&"sqrt(3)/6"), "{entries:?}");
+    let mut legend = vec![];
+    strings(&j["symbols"], &mut legend);
+    assert!(!legend.is_empty());
+    for s in legend {
+        assert!(!s.contains("root of x^2"), "{s}");
+        let name = s.split(" = ").next().unwrap();
+        assert!(
+            entries.iter().any(|e| e.contains(name)),
+            "{name} is not used: {s}"
+        );
+    }
+}

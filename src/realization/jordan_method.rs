@@ -430,7 +430,8 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
                 });
                 continue;
             };
-            if f.degree() > 1 {
+            // a quadratic real field shows its radical (`sqrt(3)`), not the symbol
+            if f.degree() > 1 && f.0.var == var {
                 symbols.push((
                     var,
                     format!("root of {} near {:.10}", f.modulus(), f.root_approx().0),
