@@ -12,17 +12,12 @@
 
 use super::crt::{CommonDenominator, Crt};
 use super::rank::reduce_rational;
-use super::rref::rref_mod_p;
+use super::rref::{ProfileImages, rref_mod_p};
 use crate::field::Rational;
 use crate::qkernels::gcd;
-use crate::qkernels::prime::{Prime, primes};
+use crate::qkernels::prime::primes;
 use num_bigint::BigInt;
 use num_traits::Zero;
-
-/// Is the pivot profile `a` better (rank higher, or equal rank with earlier pivots) than `b`?
-fn better(a: &[usize], b: &[usize]) -> bool {
-    a.len() > b.len() || (a.len() == b.len() && a < b)
-}
 
 /// The guessed RREF of the `m x n` row-major `a`: pivot columns and the `r x n` nonzero
 /// rows (row-major). `None` when `max_primes` primes give no stable reconstruction.
@@ -41,10 +36,7 @@ pub fn rref_guess(
         "rref_guess: slice of length {} for {m}x{n}",
         a.len()
     );
-    let mut best: Option<Vec<usize>> = None;
-    let mut used: Vec<Prime> = Vec::new();
-    let mut images: Vec<Vec<u64>> = Vec::new();
-    let mut free: Vec<usize> = Vec::new();
+    let mut st = ProfileImages::default();
     let mut last: Option<(Vec<BigInt>, BigInt)> = None;
     for pr in primes(20).take(max_primes) {
         let Some(mut red) = a
@@ -55,26 +47,14 @@ pub fn rref_guess(
             continue;
         };
         let piv = rref_mod_p(&pr, m, n, &mut red);
-        match &best {
-            Some(bp) if *bp == piv => {}
-            Some(bp) if !better(&piv, bp) => continue,
-            _ => {
-                free = (0..n).filter(|c| !piv.contains(c)).collect();
-                best = Some(piv.clone());
-                used.clear();
-                images.clear();
-                last = None;
-            }
+        match st.push(pr, piv, &red, n) {
+            None => continue,
+            Some(true) => last = None,
+            Some(false) => {}
         }
+        let (piv, free, images) = (st.pivots(), &st.free, &st.images);
         let r = piv.len();
-        images.push(
-            (0..r)
-                .flat_map(|k| free.iter().map(move |&f| (k, f)))
-                .map(|(k, f)| red[k * n + f])
-                .collect(),
-        );
-        used.push(pr);
-        let crt = Crt::new(&used);
+        let crt = Crt::new(&st.used);
         let total = r * free.len();
         let us = (0..total).map(|i| crt.lift_nonneg(|t| images[t][i]));
         let Some(cd) = CommonDenominator::reconstruct(&crt, us) else {
@@ -93,14 +73,14 @@ pub fn rref_guess(
         }
         let mut it = nums.into_iter();
         for k in 0..r {
-            for &f in &free {
+            for &f in free {
                 let x = it.next().expect("count");
                 if !x.is_zero() {
                     out[k * n + f] = gcd::fraction(x, &den);
                 }
             }
         }
-        return Some((piv, out));
+        return Some((piv.to_vec(), out));
     }
     None
 }

@@ -97,38 +97,75 @@ fn better(a: &[usize], b: &[usize]) -> bool {
     a.len() > b.len() || (a.len() == b.len() && a < b)
 }
 
+/// The free-column entries of the RREF modulo each prime on the best pivot profile seen so
+/// far: a prime with a worse profile is unlucky and discarded, a better profile drops the
+/// earlier images. Shared by [`rref_int`] and [`super::guess::rref_guess`].
+#[derive(Default)]
+pub(super) struct ProfileImages {
+    best: Option<Vec<usize>>,
+    /// The non-pivot columns of the best profile.
+    pub free: Vec<usize>,
+    /// The primes of `images`.
+    pub used: Vec<Prime>,
+    /// `images[t][k * free.len() + f]`: free-column entries of row `k` modulo `used[t]`.
+    pub images: Vec<Vec<u64>>,
+}
+
+impl ProfileImages {
+    /// Records the RREF `red` (row-major, `n` columns, pivot columns `piv`) modulo `pr`:
+    /// `None` when the prime is unlucky, else `Some(restarted)`, `true` when `piv` became
+    /// the best profile and the images of earlier primes were dropped.
+    pub(super) fn push(
+        &mut self,
+        pr: Prime,
+        piv: Vec<usize>,
+        red: &[u64],
+        n: usize,
+    ) -> Option<bool> {
+        let restarted = match &self.best {
+            Some(bp) if *bp == piv => false,
+            Some(bp) if !better(&piv, bp) => return None,
+            _ => {
+                self.free = (0..n).filter(|c| !piv.contains(c)).collect();
+                self.best = Some(piv);
+                self.used.clear();
+                self.images.clear();
+                true
+            }
+        };
+        let r = self.pivots().len();
+        let free = &self.free;
+        let img: Vec<u64> = (0..r)
+            .flat_map(|k| free.iter().map(move |&f| (k, f)))
+            .map(|(k, f)| red[k * n + f])
+            .collect();
+        self.images.push(img);
+        self.used.push(pr);
+        Some(restarted)
+    }
+    /// The best pivot profile (empty before the first prime).
+    pub(super) fn pivots(&self) -> &[usize] {
+        self.best.as_deref().unwrap_or_default()
+    }
+}
+
 /// Certified RREF of `b` by the multi-modular method (see the module docs).
 pub fn rref_int(b: &IntMat) -> IntRref {
     let (m, n) = (b.m, b.n);
-    let mut best: Option<Vec<usize>> = None;
-    let mut used: Vec<Prime> = Vec::new();
-    // images[t][k * nfree + f]: free-column entries of row k modulo used[t]
-    let mut images: Vec<Vec<u64>> = Vec::new();
-    let mut free: Vec<usize> = Vec::new();
+    let mut st = ProfileImages::default();
     let mut last_probe: Option<(Vec<BigInt>, BigInt)> = None;
     let max_a = b.max_abs();
     for pr in primes(0) {
         let mut a = b.reduce(&pr);
         let piv = rref_mod_p(&pr, m, n, &mut a);
-        match &best {
-            Some(bp) if *bp == piv => {}
-            Some(bp) if !better(&piv, bp) => continue,
-            _ => {
-                free = (0..n).filter(|c| !piv.contains(c)).collect();
-                best = Some(piv.clone());
-                used.clear();
-                images.clear();
-                last_probe = None;
-            }
+        match st.push(pr, piv, &a, n) {
+            None => continue,
+            Some(true) => last_probe = None,
+            Some(false) => {}
         }
+        let (piv, free, used, images) = (st.pivots(), &st.free, &st.used, &st.images);
         let r = piv.len();
-        let img: Vec<u64> = (0..r)
-            .flat_map(|k| free.iter().map(move |&f| (k, f)))
-            .map(|(k, f)| a[k * n + f])
-            .collect();
-        images.push(img);
-        used.push(pr);
-        let crt = Crt::new(&used);
+        let crt = Crt::new(used);
         let total = r * free.len();
         // probe a few entries for stability before the full reconstruction
         let probe_idx: Vec<usize> = if total == 0 {
@@ -136,14 +173,14 @@ pub fn rref_int(b: &IntMat) -> IntRref {
         } else {
             vec![total - 1, total / 2, 0]
         };
-        let probe = probe_reconstruct(&crt, &probe_idx, &images);
+        let probe = probe_reconstruct(&crt, &probe_idx, images);
         let stable = total == 0 || (probe.is_some() && probe == last_probe);
         // entries whose reconstruction survives one more prime have (very likely) been found
         last_probe = probe;
         if !stable {
             continue;
         }
-        if let Some(res) = try_certify(b, &piv, &free, &crt, &images, &max_a) {
+        if let Some(res) = try_certify(b, piv, free, &crt, images, &max_a) {
             return res;
         }
     }
