@@ -386,3 +386,27 @@ fn jordan_method_legend_lists_used_symbols_only() {
         );
     }
 }
+
+/// Numbers without a closed form: the algebraic number and the Jordan form's display
+/// (`report::numbers::canonical`) write the same `root of P near X`, 10 significant digits.
+#[test]
+fn root_of_displays_agree() {
+    for s in [
+        "x^3 - 2",
+        "x^5 - x - 1",
+        "x^4 + x + 1",
+        "x^3 - 1/1000000",
+        "x^3 + 7000*x + 1",
+    ] {
+        let p = exactlti::poly::parse_poly_q(s).unwrap();
+        for z in AlgebraicNumber::roots_of_irreducible(&p).unwrap() {
+            let shown = z.value_string();
+            assert!(shown.starts_with(&format!("root of {p} near ")), "{shown}");
+            let jordan = exactlti::report::numbers::canonical(&p.to_string(), z.approx());
+            assert_eq!(jordan.as_deref(), Some(shown.as_str()), "{s}");
+        }
+    }
+    let p = exactlti::poly::parse_poly_q("x^3 - 2").unwrap();
+    let z = &AlgebraicNumber::roots_of_irreducible(&p).unwrap()[0];
+    assert_eq!(z.value_string(), "root of x^3 - 2 near 1.259921050");
+}

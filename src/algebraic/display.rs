@@ -4,6 +4,7 @@
 //! |---|---|
 //! | [`round_sig`] | a rational rounded (half away from zero) to `n` significant digits |
 //! | [`quadratic_string`] | `a + b sqrt(d)` as `1/2 + sqrt(5)/2`, `-1 + i`, `sqrt(2)*i/2` ([`crate::field::quadratic_display`]) |
+//! | [`approx_text`], [`near_text`] | the `near` part of `root of P near X` (10 significant digits) |
 //! | [`closed_form`] | the closed form of a root of an irreducible polynomial: degree 1, 2 and $x^4 + b x^2 + c$ |
 
 use crate::field::{Q, QuadraticField, Rational, quadratic_display, rational_to_f64};
@@ -71,6 +72,30 @@ pub fn round_sig(q: &Rational, n: usize) -> String {
         format!("{}.{}e{e}", &digits[..1], &digits[1..])
     };
     if neg { format!("-{body}") } else { body }
+}
+
+/// The `near` part of `root of P near X`, from the decimal strings of the real and imaginary
+/// parts: `1.259921050`, `1.931851653*i` (purely imaginary: `re` is `"0"`),
+/// `-0.6299605249 - 1.091123636*i`; `real` drops the imaginary part.
+pub fn near_text(re: &str, im: &str, real: bool) -> String {
+    if real {
+        re.to_string()
+    } else if re == "0" {
+        format!("{im}*i")
+    } else if let Some(m) = im.strip_prefix('-') {
+        format!("{re} - {m}*i")
+    } else {
+        format!("{re} + {im}*i")
+    }
+}
+
+/// [`near_text`] of an `f64` approximation `(re, im)` to 10 significant digits (the exact
+/// rounding of the `f64`s), as [`crate::algebraic::AlgebraicNumber::value_string`] writes its
+/// certified digits: real when `im == 0`, purely imaginary when `re == 0`.
+pub fn approx_text((re, im): (f64, f64)) -> String {
+    let digits =
+        |x: f64| Rational::from_float(x).map_or_else(|| format!("{x}"), |q| round_sig(&q, 10));
+    near_text(&digits(re), &digits(im), im == 0.0)
 }
 
 /// `n = s^2 d` with `d` square-free (up to square factors of primes above `10^6` whose

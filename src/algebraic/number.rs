@@ -471,15 +471,7 @@ impl AlgebraicNumber {
             return s;
         }
         let (re, im) = self.digits(10);
-        let near = if self.is_real() {
-            re
-        } else if re == "0" {
-            format!("{im}*i")
-        } else if let Some(m) = im.strip_prefix('-') {
-            format!("{re} - {m}*i")
-        } else {
-            format!("{re} + {im}*i")
-        };
+        let near = super::display::near_text(&re, &im, self.is_real());
         format!("root of {} near {near}", self.minpoly)
     }
 

@@ -60,7 +60,6 @@ use crate::matrix::Matrix;
 use crate::poly::Poly;
 use primary::{named_field, rational_field};
 #[cfg(feature = "cli")]
-pub(crate) use roots::fmt_approx;
 use roots::{quadratic_roots, radical_text};
 
 /// An embedding of a component field into an eigenvalue's display field.

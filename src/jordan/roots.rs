@@ -116,15 +116,11 @@ fn root_of(p: &Poly<Q>, approx: (f64, f64)) -> String {
     format!("root of {p} near {}", fmt_approx(approx))
 }
 
-/// `1.2345678901` or `-1.2 + 0.5*i`.
-pub(crate) fn fmt_approx((re, im): (f64, f64)) -> String {
-    if im == 0.0 {
-        format!("{re:.10}")
-    } else if im > 0.0 {
-        format!("{re:.10} + {im:.10}*i")
-    } else {
-        format!("{re:.10} - {:.10}*i", -im)
-    }
+/// `1.259921050`, `1.931851653*i` or `-0.6299605249 - 1.091123636*i`: 10 significant
+/// digits, as [`AlgebraicNumber::value_string`] writes them
+/// ([`crate::algebraic::display::approx_text`]).
+pub(crate) fn fmt_approx(z: (f64, f64)) -> String {
+    crate::algebraic::display::approx_text(z)
 }
 
 #[cfg(test)]

@@ -369,14 +369,10 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
                     Some((a0, s)) => m.map(&f, |x| crate::jordan::quadratic_image(x, a0, s)),
                     None => m.map(&f, |x| x.clone()),
                 };
+                let ev = crate::jordan::value_display(p, c.roots[j]);
                 if p.deg() > 2 {
-                    symbols.push((var, format!("root of {p} near {re:.10}")));
+                    symbols.push((var, ev.clone()));
                 }
-                let ev = if p.deg() <= 2 {
-                    crate::jordan::value_display(p, c.roots[j])
-                } else {
-                    format!("root of {p} near {re:.10}")
-                };
                 blocks.push(RealModalBlock {
                     eigenvalue: ev,
                     field: f.clone(),
@@ -412,10 +408,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
                     var: var.clone(),
                 }));
                 let k = var.trim_start_matches('r').to_string();
-                symbols.push((
-                    var.clone(),
-                    format!("root of {p} near {re:.10} + {im:.10}*i"),
-                ));
+                symbols.push((var.clone(), crate::jordan::value_display(p, (re, im))));
                 symbols.push((format!("a{k}"), format!("Re {var}")));
                 symbols.push((format!("b{k}"), format!("Im {var}")));
                 let conv = |m: &Matrix<NumberField>| m.map(&f, |x| x.clone());
@@ -434,7 +427,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
             if f.degree() > 1 && f.0.var == var {
                 symbols.push((
                     var,
-                    format!("root of {} near {:.10}", f.modulus(), f.root_approx().0),
+                    crate::jordan::value_display(f.modulus(), f.root_approx()),
                 ));
             }
             let cf = ComplexField::new(f.clone());

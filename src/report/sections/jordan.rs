@@ -4,7 +4,6 @@
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
 use crate::field::Field;
-use crate::jordan::fmt_approx;
 use crate::jordan::{FreeResponse, JordanForm, RealJordanForm};
 use crate::report::{MatrixOut, Report, Value};
 
@@ -54,10 +53,9 @@ impl JordanForm {
             .filter(|e| e.minpoly.deg() >= 3)
             .map(|e| {
                 Value::Str(format!(
-                    "{} = root of {} near {}",
+                    "{} = {}",
                     e.symbol,
-                    e.minpoly,
-                    fmt_approx(e.approx)
+                    crate::jordan::value_display(&e.minpoly, e.approx)
                 ))
             })
             .collect();
@@ -132,10 +130,9 @@ impl RealJordanForm {
             .filter(|f| f.degree() >= 3)
             .map(|f| {
                 Value::Str(format!(
-                    "{} = root of {} near {}",
+                    "{} = {}",
                     f.0.var,
-                    f.modulus(),
-                    fmt_approx(f.root_approx())
+                    crate::jordan::value_display(f.modulus(), f.root_approx())
                 ))
             })
             .collect();
