@@ -395,7 +395,7 @@ fn root_of_displays_agree() {
         "x^3 - 2",
         "x^5 - x - 1",
         "x^4 + x + 1",
-        "x^3 - 1/1000000",
+        "x^3 - 3/1000000",
         "x^3 + 7000*x + 1",
     ] {
         let p = exactlti::poly::parse_poly_q(s).unwrap();

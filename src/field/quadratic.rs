@@ -13,7 +13,7 @@
 use super::{Field, Rational, fmt_rational, rational_to_f64};
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -36,6 +36,30 @@ impl Quadratic {
     }
 }
 
+/// Trial division in [`squarefree_split`] goes up to this bound.
+const TRIAL_LIMIT: u64 = 1_000_000;
+
+/// The primes up to [`TRIAL_LIMIT`] (sieved once).
+fn small_primes() -> &'static [u32] {
+    static PRIMES: std::sync::OnceLock<Vec<u32>> = std::sync::OnceLock::new();
+    PRIMES.get_or_init(|| {
+        let n = TRIAL_LIMIT as usize;
+        let mut composite = vec![false; n + 1];
+        let mut out = vec![];
+        for i in 2..=n {
+            if !composite[i] {
+                out.push(i as u32);
+                let mut j = i * i;
+                while j <= n {
+                    composite[j] = true;
+                    j += i;
+                }
+            }
+        }
+        out
+    })
+}
+
 /// Square-free part and square root of the square part: `n = s^2 * f`, returns `(s, f)`.
 /// Trial division up to `10^6`; a remaining cofactor is assumed square-free only if it is
 /// not a perfect square (larger square factors are then rejected by the caller).
@@ -48,21 +72,30 @@ pub fn squarefree_split(n: &BigInt) -> (BigInt, BigInt) {
     let mut m = n.abs();
     let mut s = BigInt::one();
     let mut f = BigInt::one();
-    let mut p = BigInt::from(2u32);
-    let limit = BigInt::from(1_000_000u32);
-    while &p * &p <= m && p <= limit {
+    // the last trial divisor: min(sqrt(m), TRIAL_LIMIT), updated when m shrinks
+    let bound = |m: &BigInt| {
+        m.sqrt()
+            .to_u64()
+            .map_or(TRIAL_LIMIT, |r| r.min(TRIAL_LIMIT))
+    };
+    let mut last = bound(&m);
+    for &p in small_primes() {
+        let p = u64::from(p);
+        if p > last {
+            break;
+        }
         let mut e = 0u32;
-        while (&m % &p).is_zero() {
-            m /= &p;
+        while (&m % p).is_zero() {
+            m /= p;
             e += 1;
         }
         if e > 0 {
-            s *= num_traits::pow(p.clone(), (e / 2) as usize);
+            s *= num_traits::pow(BigInt::from(p), (e / 2) as usize);
             if e % 2 == 1 {
-                f *= &p;
+                f *= p;
             }
+            last = bound(&m);
         }
-        p += if p == BigInt::from(2u32) { 1u32 } else { 2u32 };
     }
     let r = m.sqrt();
     if &r * &r == m {
@@ -392,6 +425,17 @@ mod tests {
         assert_eq!(g.fmt_elem(&Quadratic::new(r(-1, 1), r(1, 1))), "-1 + i");
         assert_eq!(g.fmt_elem(&Quadratic::new(r(0, 1), r(1, 2))), "i/2");
         assert!(QuadraticField::new(8).is_err());
+        // square factors of primes up to 10^6 are found, also beside a large cofactor
+        let b = |x: i64| BigInt::from(x);
+        assert_eq!(
+            squarefree_split(&(b(999_983) * b(999_983) * 3)),
+            (b(999_983), b(3))
+        );
+        let big = b(65_537) * b(65_537) * b(-5) * b(1_000_000_007);
+        assert_eq!(squarefree_split(&big), (b(65_537), b(-5_000_000_035)));
+        assert_eq!(squarefree_split(&b(-20)), (b(2), b(-5)));
+        assert_eq!(squarefree_split(&b(49)), (b(7), b(1)));
+        assert_eq!(squarefree_split(&b(1)), (b(1), b(1)));
         assert!(QuadraticField::new(1).is_err());
         let (f, a, b) = QuadraticField::sqrt_of_rational(&r(8, 3));
         assert_eq!(f.unwrap().d(), &BigInt::from(6));
