@@ -60,6 +60,8 @@ use crate::matrix::Matrix;
 use crate::poly::Poly;
 use primary::{named_field, rational_field};
 #[cfg(feature = "cli")]
+#[allow(unused_imports)] // the `near` text of root legends (the Jordan form over K uses it)
+pub(crate) use roots::fmt_approx;
 use roots::{quadratic_roots, radical_text};
 
 /// An embedding of a component field into an eigenvalue's display field.
