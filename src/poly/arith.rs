@@ -375,7 +375,12 @@ pub fn fmt_poly<K: Field>(k: &K, cs: &[K::Elem], var: &str) -> String {
             _ => format!("{var}^{i}"),
         };
         let body = if i == 0 {
-            if compound { format!("({t})") } else { t }
+            // a compound constant term in parentheses beside other terms, bare alone
+            if compound && !s.is_empty() {
+                format!("({t})")
+            } else {
+                t
+            }
         } else if t == "1" {
             mono
         } else if compound {
@@ -411,6 +416,16 @@ mod tests {
         assert_eq!(f.to_string(), "x^4 + 4*x^2 + 1");
         assert_eq!(p(&[-1, 1]).to_string(), "x - 1");
         assert_eq!(p(&[0, -2]).to_string(), "-2*x");
+        // a constant in Q(sqrt 3) shows as the number itself (`1/6 - sqrt(3)/9`)
+        let k = crate::field::QuadraticField::new(3).unwrap();
+        let h = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        let c = crate::field::Quadratic::new(h(1, 6), h(-1, 9));
+        assert_eq!(
+            fmt_poly(&k, std::slice::from_ref(&c), "t"),
+            "1/6 - sqrt(3)/9"
+        );
+        let lin = [c.clone(), k.one()];
+        assert_eq!(fmt_poly(&k, &lin, "t"), "t + (1/6 - sqrt(3)/9)");
         let g = p(&[2, 1]);
         let (q, r) = f.divrem(&g).unwrap();
         assert_eq!(q.mul(&g).add(&r), f);
