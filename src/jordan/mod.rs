@@ -38,6 +38,7 @@
 
 pub mod chains;
 pub(crate) mod coeffs;
+pub mod over_k;
 pub mod params;
 pub mod primary;
 pub mod real;

@@ -1,0 +1,228 @@
+//! Jordan decomposition over K = Q(i) and Q(sqrt d) (issue 17 item 2): exact identities in
+//! each component's field, eigenvalue sets of the Hermitian examples, the conj(A) trap
+//! (eigenvalues of A, not of its Galois conjugate), planted non-trivial blocks, and a
+//! proptest over both fields.
+
+use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
+use exactlti::jordan::over_k::{JordanFormK, jordan_over_k};
+use exactlti::matrix::Matrix;
+use proptest::prelude::*;
+
+fn q(a: i64, b: i64) -> Quadratic {
+    Quadratic::new(
+        Rational::from_integer(a.into()),
+        Rational::from_integer(b.into()),
+    )
+}
+
+fn mat(k: &QuadraticField, rows: &[&[(i64, i64)]]) -> Matrix<QuadraticField> {
+    Matrix::from_rows(
+        k.clone(),
+        rows.iter()
+            .map(|r| r.iter().map(|&(a, b)| q(a, b)).collect())
+            .collect(),
+    )
+    .unwrap()
+}
+
+fn values(jf: &JordanFormK) -> Vec<String> {
+    jf.eigenvalues.iter().map(|e| e.value.clone()).collect()
+}
+
+/// |chi_A(z)| small against the size of its terms at every eigenvalue's approximation.
+fn approx_roots_of_charpoly(jf: &JordanFormK) -> bool {
+    let k = jf.base();
+    jf.eigenvalues.iter().all(|e| {
+        let z = num_complex::Complex64::new(e.approx.0, e.approx.1);
+        let (mut v, mut scale) = (num_complex::Complex64::new(0.0, 0.0), 0.0);
+        for (i, c) in jf.charpoly.coeffs().iter().enumerate() {
+            let (re, im) = k.approx(c);
+            let t = num_complex::Complex64::new(re, im) * z.powi(i as i32);
+            v += t;
+            scale += t.norm();
+        }
+        // a root of multiplicity m is only determined to about eps^(1/m)
+        v.norm() <= 1e-6 * scale.max(1.0)
+    })
+}
+
+/// The exact identities and dimensions, and the eigenvalues' approximations are roots.
+fn check(jf: &JordanFormK) {
+    assert!(jf.verified, "{:?}", values(jf));
+    for c in &jf.components {
+        assert!(c.verify(&jf.a));
+        assert_eq!(c.blocks.iter().sum::<usize>(), c.multiplicity);
+    }
+    let total: usize = jf
+        .eigenvalues
+        .iter()
+        .map(|e| e.algebraic_multiplicity)
+        .sum();
+    assert_eq!(total, jf.n());
+    assert!(approx_roots_of_charpoly(jf), "{:?}", values(jf));
+}
+
+#[test]
+fn hermitian_examples_have_real_eigenvalues_2_pm_sqrt6() {
+    let k = QuadraticField::gaussian();
+    let a = mat(&k, &[&[(1, 0), (2, 1)], &[(2, -1), (3, 0)]]);
+    let jf = jordan_over_k(&a).unwrap();
+    check(&jf);
+    assert_eq!(values(&jf), ["2 + sqrt(6)", "2 - sqrt(6)"]);
+    assert!(jf.eigenvalues.iter().all(|e| e.number.is_real()));
+    // [[1, 2 + sqrt 3], [2 - sqrt 3, 3]]: chi = x^2 - 4x + 2, eigenvalues 2 +- sqrt(2)
+    let k = QuadraticField::new(3).unwrap();
+    let a = mat(&k, &[&[(1, 0), (2, 1)], &[(2, -1), (3, 0)]]);
+    let jf = jordan_over_k(&a).unwrap();
+    check(&jf);
+    assert_eq!(values(&jf), ["2 + sqrt(2)", "2 - sqrt(2)"]);
+}
+
+#[test]
+fn eigenvalues_are_those_of_a_not_of_its_conjugate() {
+    // triangular over Q(i) with diagonal i, 2i: eigenvalues i and 2i, never -i or -2i
+    let k = QuadraticField::gaussian();
+    let a = mat(&k, &[&[(0, 1), (3, 1)], &[(0, 0), (0, 2)]]);
+    let jf = jordan_over_k(&a).unwrap();
+    check(&jf);
+    let mut v = values(&jf);
+    v.sort();
+    assert_eq!(v, ["2*i", "i"]);
+    // over Q(sqrt 2): diagonal sqrt 2, 1 + sqrt 2 (not -sqrt 2, 1 - sqrt 2)
+    let k = QuadraticField::new(2).unwrap();
+    let a = mat(&k, &[&[(0, 1), (5, 0)], &[(0, 0), (1, 1)]]);
+    let jf = jordan_over_k(&a).unwrap();
+    check(&jf);
+    let mut v = values(&jf);
+    v.sort();
+    assert_eq!(v, ["1 + sqrt(2)", "sqrt(2)"]);
+    // a non-linear factor that is not rational: x^2 - i (roots +-(1 + i)/sqrt 2), whose
+    // Q-minimal polynomial x^4 + 1 also has the roots of x^2 + i (eigenvalues of conj A)
+    let k = QuadraticField::gaussian();
+    let a = mat(&k, &[&[(0, 0), (0, 1)], &[(1, 0), (0, 0)]]);
+    let jf = jordan_over_k(&a).unwrap();
+    check(&jf);
+    assert_eq!(jf.eigenvalues.len(), 2);
+    for e in &jf.eigenvalues {
+        // z^2 = i: re^2 - im^2 = 0 and 2 re im = 1 (so re and im have the same sign)
+        let (re, im) = e.approx;
+        assert!((re * re - im * im).abs() < 1e-12 && (2.0 * re * im - 1.0).abs() < 1e-12);
+        assert_eq!(e.minpoly.to_string(), "x^4 + 1");
+    }
+}
+
+/// `S J S^-1` for a unit-triangular product `S = L U` over `k` (exactly invertible).
+fn planted(
+    k: &QuadraticField,
+    j: &Matrix<QuadraticField>,
+    seed: &[(i64, i64)],
+) -> Matrix<QuadraticField> {
+    let n = j.nrows();
+    let mut it = seed.iter().cycle();
+    let mut next = || {
+        let &(a, b) = it.next().unwrap();
+        q(a, b)
+    };
+    let mut l = Matrix::identity(k.clone(), n);
+    let mut u = Matrix::identity(k.clone(), n);
+    for r in 0..n {
+        for c in 0..r {
+            l.set(r, c, next());
+            u.set(c, r, next());
+        }
+    }
+    let s = &l * &u;
+    &(&s * j) * &s.inverse().unwrap()
+}
+
+fn jordan_matrix(k: &QuadraticField, blocks: &[(Quadratic, usize)]) -> Matrix<QuadraticField> {
+    let n: usize = blocks.iter().map(|b| b.1).sum();
+    let mut j = Matrix::zeros(k.clone(), n, n);
+    let mut off = 0;
+    for (theta, size) in blocks {
+        for i in 0..*size {
+            j.set(off + i, off + i, theta.clone());
+            if i + 1 < *size {
+                j.set(off + i, off + i + 1, k.one());
+            }
+        }
+        off += size;
+    }
+    j
+}
+
+#[test]
+fn planted_jordan_blocks_over_qi_and_q_sqrt2() {
+    let seed = [(1, 1), (-2, 0), (0, 1), (3, -1), (1, 0), (-1, 2)];
+    for d in [-1, 2] {
+        let k = QuadraticField::new(d).unwrap();
+        // blocks: (1 + alpha) of sizes 3, 1; (-2) of size 2
+        let j = jordan_matrix(&k, &[(q(1, 1), 3), (q(1, 1), 1), (q(-2, 0), 2)]);
+        let a = planted(&k, &j, &seed);
+        let jf = jordan_over_k(&a).unwrap();
+        check(&jf);
+        let e = jf
+            .eigenvalues
+            .iter()
+            .find(|e| e.algebraic_multiplicity == 4)
+            .unwrap();
+        assert_eq!(e.blocks, [3, 1]);
+        assert_eq!(e.value, if d == -1 { "1 + i" } else { "1 + sqrt(2)" });
+        let e = jf.eigenvalues.iter().find(|e| e.value == "-2").unwrap();
+        assert_eq!(e.blocks, [2]);
+        // every eigenvalue in K: one exact pair (J, T) over K with A T = T J
+        let (jj, t) = jf.single_field().unwrap();
+        assert_eq!(&a * &t, &t * &jj);
+        assert!(t.inverse().is_ok());
+    }
+    // a block of a non-linear factor: x^2 - alpha with a 2-block (chi = (x^2 - alpha)^2)
+    for d in [-1, 2] {
+        let k = QuadraticField::new(d).unwrap();
+        // companion of x^2 - alpha, doubled with a coupling: [[C, I], [0, C]]
+        let mut j = Matrix::zeros(k.clone(), 4, 4);
+        for off in [0, 2] {
+            j.set(off, off + 1, k.one());
+            j.set(off + 1, off, q(0, 1));
+        }
+        j.set(0, 2, k.one());
+        j.set(1, 3, k.one());
+        let a = planted(&k, &j, &seed);
+        let jf = jordan_over_k(&a).unwrap();
+        check(&jf);
+        assert_eq!(jf.eigenvalues.len(), 2);
+        assert!(jf.eigenvalues.iter().all(|e| e.blocks == [2]));
+    }
+}
+
+fn small_entry() -> impl Strategy<Value = (i64, i64)> {
+    (-3i64..=3, -2i64..=2)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, .. ProptestConfig::default() })]
+    /// Random 1..4 x 4 matrices over Q(i) and Q(sqrt 2), and planted blocks of a repeated
+    /// eigenvalue in K: verified, block sizes add up to n, approximations are roots.
+    #[test]
+    fn jordan_over_k_is_verified(
+        d in prop::sample::select(vec![-1i64, 2]),
+        n in 1usize..=4,
+        entries in prop::collection::vec(small_entry(), 16),
+        theta in small_entry(),
+        sizes in prop::sample::select(vec![vec![1usize], vec![2], vec![2, 1], vec![1, 1], vec![3]]),
+    ) {
+        let k = QuadraticField::new(d).unwrap();
+        let a = Matrix::from_fn(k.clone(), n, n, |i, j| {
+            let (x, y) = entries[i * n + j];
+            q(x, y)
+        });
+        let jf = jordan_over_k(&a).unwrap();
+        check(&jf);
+        let blocks: Vec<(Quadratic, usize)> = sizes.iter().map(|&s| (q(theta.0, theta.1), s)).collect();
+        let j = jordan_matrix(&k, &blocks);
+        let a = planted(&k, &j, &entries);
+        let jf = jordan_over_k(&a).unwrap();
+        check(&jf);
+        prop_assert_eq!(jf.eigenvalues.len(), 1);
+        prop_assert_eq!(&jf.eigenvalues[0].blocks, &sizes);
+    }
+}
