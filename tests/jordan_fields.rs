@@ -226,3 +226,204 @@ proptest! {
         prop_assert_eq!(&jf.eigenvalues[0].blocks, &sizes);
     }
 }
+
+/// The real form's approximations satisfy A T = T J (its exact check is on the complex side).
+fn real_form_close(a: &Matrix<QuadraticField>, rf: &exactlti::jordan::over_k::RealFormK) {
+    let k = a.field();
+    let n = a.nrows();
+    let av: Vec<Vec<f64>> = (0..n)
+        .map(|i| (0..n).map(|j| k.approx(a.get(i, j)).0).collect())
+        .collect();
+    let (t, j) = (&rf.t_approx, &rf.j_approx);
+    for r in 0..n {
+        for c in 0..n {
+            let at: f64 = (0..n).map(|l| av[r][l] * t[l][c]).sum();
+            let tj: f64 = (0..n).map(|l| t[r][l] * j[l][c]).sum();
+            assert!(
+                (at - tj).abs() < 1e-8 * (1.0 + at.abs()),
+                "{r},{c}: {at} vs {tj}"
+            );
+        }
+    }
+}
+
+#[test]
+fn real_jordan_form_over_q_sqrt2() {
+    let k = QuadraticField::new(2).unwrap();
+    // [[1, sqrt 2], [-sqrt 2, 1]]: chi = x^2 - 2x + 3, roots 1 +- sqrt(2) i (radical form)
+    let a = mat(&k, &[&[(1, 0), (0, 1)], &[(0, -1), (1, 0)]]);
+    let jf = jordan_over_k(&a).unwrap();
+    check(&jf);
+    let rf = jf.real_form().unwrap();
+    assert!(rf.verified && !rf.compact);
+    assert_eq!(rf.j, [["1", "sqrt(2)"], ["-sqrt(2)", "1"]]);
+    real_form_close(&a, &rf);
+    // [[sqrt 2, 1], [-1, sqrt 2]] (roots sqrt 2 +- i, minimal polynomial of degree 4), a
+    // real root, and a 2-block of a complex pair: planted, compact form
+    let mut j = Matrix::zeros(k.clone(), 5, 5);
+    for off in [0, 2] {
+        j.set(off, off, q(0, 1));
+        j.set(off + 1, off + 1, q(0, 1));
+        j.set(off, off + 1, q(1, 0));
+        j.set(off + 1, off, q(-1, 0));
+    }
+    j.set(0, 2, k.one());
+    j.set(1, 3, k.one());
+    j.set(4, 4, q(-1, 1));
+    let a = planted(&k, &j, &[(1, 0), (0, 1), (-1, 1), (2, 0)]);
+    let jf = jordan_over_k(&a).unwrap();
+    check(&jf);
+    let pair: Vec<_> = jf
+        .eigenvalues
+        .iter()
+        .filter(|e| e.approx.1 != 0.0)
+        .collect();
+    assert_eq!(pair.len(), 2);
+    assert!(pair.iter().all(|e| e.blocks == [2]));
+    let rf = jf.real_form().unwrap();
+    assert!(rf.verified && rf.compact, "{rf:?}");
+    real_form_close(&a, &rf);
+    // Q(i): no real form
+    let a = mat(&QuadraticField::gaussian(), &[&[(0, 1)]]);
+    assert!(jordan_over_k(&a).unwrap().real_form().is_err());
+}
+
+#[test]
+fn jordan_method_minreal_over_k_is_minimal_and_verified() {
+    use exactlti::realization::{MinrealMethod, minimal, minimal_jordan_over_k};
+    use exactlti::system::StateSpace;
+    for d in [-1, 2, 3] {
+        let k = QuadraticField::new(d).unwrap();
+        // a 3-block and a 1-block of 1 + alpha, a simple -2, and x^2 - alpha
+        let mut j = jordan_matrix(&k, &[(q(1, 1), 3), (q(1, 1), 1), (q(-2, 0), 1)]);
+        let mut big = Matrix::zeros(k.clone(), 7, 7);
+        for r in 0..5 {
+            for c in 0..5 {
+                big.set(r, c, j.get(r, c).clone());
+            }
+        }
+        big.set(5, 6, k.one());
+        big.set(6, 5, q(0, 1));
+        j = big;
+        let a = planted(&k, &j, &[(1, 0), (0, 1), (-1, 0), (1, -1), (0, 0)]);
+        for (b, c) in [
+            (
+                vec![(1, 0), (0, 1), (0, 0), (2, 0), (0, 0), (1, 0), (0, 0)],
+                vec![(1, 0), (0, 0), (0, 1), (1, 0), (0, 0), (0, 0), (1, 1)],
+            ),
+            (
+                vec![(0, 0), (0, 0), (1, 0), (0, 0), (0, 0), (0, 0), (0, 0)],
+                vec![(1, 0), (0, 0), (0, 0), (0, 0), (0, 0), (0, 0), (0, 0)],
+            ),
+        ] {
+            let bm = Matrix::from_fn(k.clone(), 7, 1, |i, _| q(b[i].0, b[i].1));
+            let cm = Matrix::from_fn(k.clone(), 1, 7, |_, i| q(c[i].0, c[i].1));
+            let sys = StateSpace::new_strictly_proper(a.clone(), bm, cm).unwrap();
+            let r = minimal_jordan_over_k(&sys).unwrap();
+            let kal = minimal(&sys, MinrealMethod::Kalman).unwrap();
+            assert!(r.verified, "d = {d}");
+            assert_eq!(r.order(), kal.order, "d = {d}");
+            assert_eq!(r.order(), r.mcmillan_degree);
+        }
+    }
+}
+
+#[test]
+fn modal_table_over_k_lists_the_eigenvalues_of_a() {
+    use exactlti::realization::modal_table_over_k;
+    let k = QuadraticField::gaussian();
+    let a = mat(&k, &[&[(0, 1), (3, 1)], &[(0, 0), (-1, 2)]]);
+    let t = modal_table_over_k(&a).unwrap();
+    let mut v: Vec<&str> = t.modes.iter().map(|m| m.eigenvalue.as_str()).collect();
+    v.sort();
+    assert_eq!(v, ["-1 + 2*i", "i"]);
+    assert!(t.modes.iter().all(|m| !m.paired));
+    // -1 + 2i: omega_n = sqrt 5, zeta = 1/sqrt 5, tau = 1
+    let m = t.modes.iter().find(|m| m.eigenvalue == "-1 + 2*i").unwrap();
+    assert!((m.damping_ratio.unwrap() - 1.0 / 5f64.sqrt()).abs() < 1e-12);
+    assert!((m.time_constant_s.unwrap() - 1.0).abs() < 1e-12);
+    // a real matrix over Q(sqrt 2) with a complex pair: one mode for the pair
+    let k = QuadraticField::new(2).unwrap();
+    let a = mat(&k, &[&[(0, 1), (1, 0)], &[(-1, 0), (0, 1)]]);
+    let t = modal_table_over_k(&a).unwrap();
+    assert_eq!(t.modes.len(), 1);
+    assert!(t.modes[0].paired);
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn temp_file(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("exactlti-jfields-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn cli_commands_over_quadratic_fields() {
+    let qi = temp_file(
+        "qi.json",
+        r#"{"A": [["1", "2+i"], ["2-i", "3"]], "B": [[1], [0]], "C": [[1, 0]]}"#,
+    );
+    let qs = temp_file(
+        "qs.json",
+        r#"{"A": [["1", "2+sqrt(3)"], ["2-sqrt(3)", "3"]], "B": [[1], [0]], "C": [[1, 0]]}"#,
+    );
+    let json = |args: &[&str]| -> serde_json::Value {
+        let (code, out, err) = run(args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        serde_json::from_str(&out).unwrap()
+    };
+    for (f, want) in [
+        (&qi, ["2 + sqrt(6)", "2 - sqrt(6)"]),
+        (&qs, ["2 + sqrt(2)", "2 - sqrt(2)"]),
+    ] {
+        let f = f.to_str().unwrap();
+        let j = json(&["jordan", f, "--format", "json"]);
+        for key in ["eigenvalues", "J", "T", "verified"] {
+            assert!(!j[key].is_null(), "{key}: {j}");
+        }
+        assert_eq!(j["verified"], true);
+        let vals: Vec<&str> = j["eigenvalues"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|e| e["value"].as_str().unwrap())
+            .collect();
+        assert_eq!(vals, want);
+        assert_eq!(j["eigenvalues"][0]["blocks"], serde_json::json!([1]));
+        let j = json(&["modes", f, "--format", "json"]);
+        assert_eq!(j["modes"].as_array().unwrap().len(), 2, "{j}");
+        let j = json(&["minreal", "--method", "jordan", f, "--format", "json"]);
+        let kal = json(&["minreal", f, "--format", "json"]);
+        assert_eq!(j["verified"], true);
+        assert_eq!(j["order"], kal["order"]);
+        let j = json(&["analyze", f, "--format", "json"]);
+        assert_eq!(j["jordan"]["verified"], true, "{j}");
+        assert!(j["modes"]["modes"].is_array(), "{j}");
+        assert!(j["pbh"]["controllable"].is_boolean(), "{j}");
+    }
+    // --real: the real Jordan form over Q(sqrt 3); none over Q(i) (A is not real)
+    let j = json(&["jordan", "--real", qs.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(j["verified"], true);
+    assert_eq!(j["exact"], true);
+    let (code, _, err) = run(&["jordan", "--real", qi.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("not real") && err.contains("`jordan`"),
+        "{err}"
+    );
+}

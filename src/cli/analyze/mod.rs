@@ -453,26 +453,29 @@ fn quadratic_sections(t: Arc<TypedSystem<QuadraticField>>, secs: &mut Sections) 
     secs.push("modes", sec);
 }
 
-/// PBH over $K$: per factor $g$ the ranks of $[A - tI, B]$ and $[A - tI; C]$ over
-/// $E = K\[t\]/(g)$ (`None` without a Jordan form).
+/// PBH over $K$ from the Jordan form, per factor $g$ in $E = K\[t\]/(g)$: the left
+/// eigenvectors of $t$ are the rows of $W$ ending a Jordan block (they span the left
+/// eigenspace) and the right ones the columns of $V$ starting one, so $(A, B)$ is
+/// controllable at $t$ iff $W_{\text{ends}} B$ has full row rank (the number of blocks), and
+/// observable iff $C V_{\text{starts}}$ has full column rank (`None` without a Jordan form).
 fn pbh_over_k(
     jf: Option<&crate::jordan::over_k::JordanFormK>,
     t: &TypedSystem<QuadraticField>,
 ) -> Option<(bool, bool)> {
     let s = &t.ss;
-    let n = s.nstates();
     let (mut pc, mut po) = (true, true);
     for c in &jf?.components {
         let e = &c.field;
         let lift = |m: &crate::matrix::Matrix<QuadraticField>| m.map(e, |x| e.from_base(x));
-        let mut m = lift(&s.a);
-        let th = c.root_elem();
-        for i in 0..n {
-            let v = e.sub(m.get(i, i), &th);
-            m.set(i, i, v);
+        let (mut starts, mut ends, mut off) = (vec![], vec![], 0);
+        for &b in &c.blocks {
+            starts.push(off);
+            ends.push(off + b - 1);
+            off += b;
         }
-        pc &= m.hstack(&lift(&s.b)).ok()?.rank() == n;
-        po &= m.vstack(&lift(&s.c)).ok()?.rank() == n;
+        let nb = c.blocks.len();
+        pc &= (&c.left_chains.select_rows(&ends) * &lift(&s.b)).rank() == nb;
+        po &= (&lift(&s.c) * &c.chains.select_cols(&starts)).rank() == nb;
     }
     Some((pc, po))
 }

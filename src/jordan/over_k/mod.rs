@@ -34,6 +34,7 @@
 pub mod eigen;
 pub mod real;
 pub mod relfield;
+mod simple;
 
 pub use real::RealFormK;
 pub use relfield::{RelElem, RelField};
@@ -169,13 +170,24 @@ pub fn jordan_over_k(a: &Matrix<QuadraticField>) -> Result<JordanFormK> {
         let approx: Vec<(f64, f64)> = roots.iter().map(|z| z.1).collect();
         let field = RelField::new(&g, approx[0], "t");
         let t = field.generator();
-        let nm = lift(a, &field).try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;
         let Chains {
             blocks,
             kernel_dims,
             v,
             w,
-        } = jordan_chains(&nm, e)?;
+        } = if e == 1 && g.deg() >= 2 {
+            // a simple eigenvalue: Krylov vectors, no elimination in E
+            let (v, w) = simple::simple_chains(a, &chi, &field)?;
+            Chains {
+                blocks: vec![1],
+                kernel_dims: vec![1],
+                v,
+                w,
+            }
+        } else {
+            let nm = lift(a, &field).try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;
+            jordan_chains(&nm, e)?
+        };
         let ci = components.len();
         for (j, (number, z)) in roots.into_iter().enumerate() {
             let k = eigenvalues.len() + 1;
