@@ -162,14 +162,15 @@ fn fixes_alpha(r: &Poly<Q>, z: &AlgebraicNumber, real_k: bool) -> Result<bool> {
 
 use num_bigint::BigInt;
 
+/// Certified roots with their approximations.
+pub type CertifiedRoots = Vec<(AlgebraicNumber, (f64, f64))>;
+
 /// The roots of the monic irreducible `g` over $K$ (under the embedding fixing $\alpha$),
 /// as certified algebraic numbers with approximations, real part descending.
 ///
 /// # Errors
 /// `Limit` from root isolation or from [`fixes_alpha`].
-pub fn roots_of_factor(
-    g: &Poly<QuadraticField>,
-) -> Result<(Poly<Q>, Vec<(AlgebraicNumber, (f64, f64))>)> {
+pub fn roots_of_factor(g: &Poly<QuadraticField>) -> Result<(Poly<Q>, CertifiedRoots)> {
     let m = rational_minpoly(g);
     let all = super::super::roots::certified_roots(&m)?;
     let (g0, g1) = split(g);

@@ -110,24 +110,24 @@ pub struct JordanFormK {
     pub verified: bool,
 }
 
+/// One irreducible factor $g$ over $K$, its multiplicity, the minimal polynomial over
+/// $\mathbb{Q}$ of its roots and the certified roots of $g$.
+pub type FactorRoots = (
+    Poly<QuadraticField>,
+    usize,
+    Poly<crate::field::Q>,
+    eigen::CertifiedRoots,
+);
+
 /// The eigenvalues of $A$ over $K$ without chains: per irreducible factor $g$ of
 /// $\chi_A$ over $K$ (multiplicity $e$), $g$, $e$, the minimal polynomial over
 /// $\mathbb{Q}$ and the certified roots of $g$ (see [`eigen::roots_of_factor`]).
 ///
 /// # Errors
 /// `NotSquare`; those of the factorization and root isolation.
-#[allow(clippy::type_complexity)]
 pub fn eigenvalues_over_k(
     a: &Matrix<QuadraticField>,
-) -> Result<(
-    Poly<QuadraticField>,
-    Vec<(
-        Poly<QuadraticField>,
-        usize,
-        Poly<crate::field::Q>,
-        Vec<(crate::algebraic::AlgebraicNumber, (f64, f64))>,
-    )>,
-)> {
+) -> Result<(Poly<QuadraticField>, Vec<FactorRoots>)> {
     a.check_square("jordan")?;
     let chi = a.charpoly()?;
     let mut out = vec![];

@@ -125,6 +125,9 @@ impl crate::jordan::over_k::RealFormK {
     }
 }
 
+/// Exact texts and approximations of a matrix under construction.
+type Cells = (Vec<Vec<String>>, Vec<Vec<(f64, f64)>>);
+
 impl crate::realization::JordanMinimalK {
     /// The CLI report: the keys of the rational Jordan-method report (`order`,
     /// `mcmillan_degree`, `stages`, `A`..`D`, `modes`, `symbols`, `verified`).
@@ -141,10 +144,7 @@ impl crate::realization::JordanMinimalK {
         let mut off = 0;
         for blk in &self.blocks {
             let f = &blk.field;
-            let put = |o: &mut (Vec<Vec<String>>, Vec<Vec<(f64, f64)>>),
-                       i: usize,
-                       j: usize,
-                       x: &crate::jordan::over_k::RelElem| {
+            let put = |o: &mut Cells, i: usize, j: usize, x: &crate::jordan::over_k::RelElem| {
                 o.0[i][j] = f.fmt_elem(x);
                 o.1[i][j] = f.approx(x);
             };
@@ -162,9 +162,7 @@ impl crate::realization::JordanMinimalK {
             }
             off += s;
         }
-        let out = |x: (Vec<Vec<String>>, Vec<Vec<(f64, f64)>>)| {
-            Value::Matrix(Box::new(MatrixOut::from_parts(x.0, x.1)))
-        };
+        let out = |x: Cells| Value::Matrix(Box::new(MatrixOut::from_parts(x.0, x.1)));
         Report::titled("minimal realization (jordan)")
             .str("method", "jordan")
             .str("field", self.d.field().to_string())
