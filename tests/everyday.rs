@@ -363,3 +363,51 @@ fn one_display_per_number_in_analyze() {
             .any(|s| s == "i*sqrt(2 + sqrt(3))" || s == "-i*sqrt(2 + sqrt(3))")
     );
 }
+
+/// On a terminal (a pseudo-terminal made by util-linux `script`, when installed), work that
+/// passes a second shows a spinner line on stderr naming the section, with the time since the
+/// command started, and clears it; through a pipe stderr carries no control sequences.
+#[test]
+fn spinner_on_a_terminal_only() {
+    let f = "tests/data/everyday/random_16_mimo.json";
+    let args = [
+        "analyze",
+        f,
+        "--full",
+        "--section-seconds",
+        "1.5",
+        "--max-seconds",
+        "3",
+    ];
+    let (_, _, err) = cli(&args);
+    assert!(!err.contains('\u{1b}'), "{err:?}");
+    let have_script = std::process::Command::new("script")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !have_script {
+        eprintln!("util-linux `script` not found: terminal part skipped");
+        return;
+    }
+    let command = format!(
+        "{} {} > /dev/null",
+        env!("CARGO_BIN_EXE_exactlti"),
+        args.join(" ")
+    );
+    let out = std::process::Command::new("script")
+        .args(["-q", "-c", &command, "/dev/null"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("script runs");
+    let tty = String::from_utf8_lossy(&out.stdout);
+    assert!(tty.contains("\u{1b}[2K"), "no progress line: {tty:?}");
+    // the clock counts from the start: the first frame is shown after one second
+    let first = tty.split("\u{1b}[2K").next().unwrap_or_default();
+    assert!(!first.contains(" 0s "), "{first:?}");
+    assert!(
+        ["Jordan", "response", "PBH", "modal", "eigen"]
+            .iter()
+            .any(|w| tty.contains(w)),
+        "no section named: {tty:?}"
+    );
+}

@@ -76,7 +76,8 @@ impl Printer {
             return;
         }
         let bar = self.bar.get_or_insert_with(|| {
-            let b = indicatif::ProgressBar::new_spinner();
+            // The clock counts from the start of the command, not from the spinner's first frame.
+            let b = indicatif::ProgressBar::new_spinner().with_elapsed(elapsed);
             b.set_style(
                 indicatif::ProgressStyle::with_template("{spinner} {elapsed} {msg}")
                     .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
