@@ -86,16 +86,20 @@ fn drop_modes<K: Field>(
     (keep, sizes)
 }
 
-/// Newton power sums $s_0, \dots, s_{d-1}$ of the roots of the monic `g` over $K$.
-fn power_sums(g: &Poly<QuadraticField>) -> Vec<Quadratic> {
+/// Newton power sums $s_0, \dots, s_{u-1}$ of the roots of the monic `g` over $K$.
+fn power_sums(g: &Poly<QuadraticField>, u: usize) -> Vec<Quadratic> {
     let k = g.field();
     let d = g.deg();
     let a = |i: usize| g.coeff(i); // x^d + a_{d-1} x^{d-1} + ... + a_0
     let mut s = vec![k.from_i64(d as i64)];
-    for j in 1..d {
-        // s_j = -(j a_{d-j} + sum_{i=1}^{j-1} a_{d-i} s_{j-i})
-        let mut v = k.mul(&k.from_i64(j as i64), &a(d - j));
-        for i in 1..j {
+    for j in 1..u {
+        // s_j = -(j a_{d-j} [j <= d] + sum_{i=1}^{min(j-1, d)} a_{d-i} s_{j-i})
+        let mut v = if j <= d {
+            k.mul(&k.from_i64(j as i64), &a(d - j))
+        } else {
+            k.zero()
+        };
+        for i in 1..j.min(d + 1) {
             v = k.add(&v, &k.mul(&a(d - i), &s[j - i]));
         }
         s.push(k.neg(&v));
@@ -103,17 +107,69 @@ fn power_sums(g: &Poly<QuadraticField>) -> Vec<Quadratic> {
     s
 }
 
-/// $\mathrm{Tr}_{E/K}(x)$.
-fn trace(x: &RelElem, s: &[Quadratic], k: &QuadraticField) -> Quadratic {
+/// $\mathrm{Tr}_{E/K}(t^e x) = \sum_c x_c s_{e+c}$.
+fn trace_shifted(x: &RelElem, e: usize, s: &[Quadratic], k: &QuadraticField) -> Quadratic {
     x.0.iter()
-        .zip(s)
-        .fold(k.zero(), |acc, (c, p)| k.add(&acc, &k.mul(c, p)))
+        .enumerate()
+        .fold(k.zero(), |acc, (c, xc)| k.add(&acc, &k.mul(xc, &s[e + c])))
+}
+
+/// Adds $\mathrm{Tr}_{E/K}(C J^k B)$ to `sum[k]` for every $k$ without a product in $E$ per
+/// $k$: inside a Jordan block $(J^k)_{l, l+r} = \binom kr t^{k-r}$, so each entry is
+/// $\sum_r \binom kr \mathrm{Tr}(t^{k-r} x_r)$ with $x_r = \sum_l C_{il} B_{l+r,j}$
+/// (products computed once) and the power sums `s` of $g$.
+fn add_traces(c: &Compact, g: &Poly<QuadraticField>, sum: &mut [Matrix<QuadraticField>]) {
+    let kmax = sum.len();
+    let k = g.field().clone();
+    let e = c.b.field();
+    let (p, m) = (c.c.nrows(), c.b.ncols());
+    let smax = c.blocks.iter().copied().max().unwrap_or(0);
+    let s = power_sums(g, kmax + g.deg() + 1);
+    // binomials C(kk, r) for kk < kmax, r < smax
+    let mut binom = vec![vec![0i128; smax.max(1)]; kmax];
+    for (kk, row) in binom.iter_mut().enumerate() {
+        let mut b = 1i128;
+        for (r, x) in row.iter_mut().enumerate() {
+            if r > kk {
+                break;
+            }
+            *x = b;
+            b = b * (kk - r) as i128 / (r + 1) as i128;
+        }
+    }
+    for i in 0..p {
+        for j in 0..m {
+            let mut x = vec![e.zero(); smax];
+            let mut off = 0;
+            for &bs in &c.blocks {
+                for (r, xr) in x.iter_mut().enumerate().take(bs) {
+                    for l in off..off + bs - r {
+                        *xr = e.add(xr, &e.mul(c.c.get(i, l), c.b.get(l + r, j)));
+                    }
+                }
+                off += bs;
+            }
+            for (kk, term) in sum.iter_mut().enumerate() {
+                let mut v = term.get(i, j).clone();
+                for (r, xr) in x.iter().enumerate().take(kk + 1) {
+                    if e.is_zero(xr) {
+                        continue;
+                    }
+                    let bin =
+                        k.from_rational(&crate::field::Rational::from_integer(binom[kk][r].into()));
+                    v = k.add(&v, &k.mul(&bin, &trace_shifted(xr, kk - r, &s, &k)));
+                }
+                term.set(i, j, v);
+            }
+        }
+    }
 }
 
 /// One compacted component: $(J, B, C)$ over $E$ (marked at the first root), the index of
 /// its component.
 struct Compact {
     comp: usize,
+    blocks: Vec<usize>,
     a: Matrix<RelField>,
     b: Matrix<RelField>,
     c: Matrix<RelField>,
@@ -139,6 +195,17 @@ pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanM
             continue;
         }
         let theta = comp.root_elem();
+        if keep.len() == 1 {
+            // one excited and observed mode (a simple eigenvalue): already minimal
+            comps.push(Compact {
+                comp: ci,
+                blocks: vec![1],
+                a: Matrix::from_vec(e.clone(), 1, 1, vec![theta]),
+                b: bk.select_rows(&keep),
+                c: ck.select_cols(&keep),
+            });
+            continue;
+        }
         let nilp = jordan_block_matrix(e, &e.zero(), &sizes);
         let trimmed =
             StateSpace::new_strictly_proper(nilp, bk.select_rows(&keep), ck.select_cols(&keep))?;
@@ -151,6 +218,7 @@ pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanM
         comps.push(Compact {
             comp: ci,
             a: jordan_block_matrix(e, &theta, &ch.blocks),
+            blocks: ch.blocks,
             b: &ch.w * &min.b,
             c: &min.c * &ch.v,
         });
@@ -167,18 +235,7 @@ pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanM
     let mut sum: Vec<Matrix<QuadraticField>> =
         (0..kmax).map(|_| Matrix::zeros(k.clone(), p, m)).collect();
     for c in &comps {
-        let s = power_sums(&jf.components[c.comp].factor);
-        let mut jb = c.b.clone();
-        for term in sum.iter_mut() {
-            let h = &c.c * &jb;
-            for i in 0..p {
-                for j in 0..m {
-                    let v = k.add(term.get(i, j), &trace(h.get(i, j), &s, &k));
-                    term.set(i, j, v);
-                }
-            }
-            jb = &c.a * &jb;
-        }
+        add_traces(c, &jf.components[c.comp].factor, &mut sum);
     }
     let mcm = mcmillan_degree(sys);
     let verified = sum == markov && r == mcm;
