@@ -217,6 +217,15 @@ proptest! {
         });
         let jf = jordan_over_k(&a).unwrap();
         check(&jf);
+        // the Jordan-method minimal realization of (A, B, C) with B, C from the entries:
+        // verified (Markov parameters, McMillan degree) and of the Kalman order
+        let b = Matrix::from_fn(k.clone(), n, 1, |i, _| q(entries[i].1.into(), entries[15 - i].0));
+        let c = Matrix::from_fn(k.clone(), 1, n, |_, i| q(entries[8 + i].0, 0));
+        let sys = exactlti::system::StateSpace::new_strictly_proper(a.clone(), b, c).unwrap();
+        let r = exactlti::realization::minimal_jordan_over_k(&sys).unwrap();
+        let kal = exactlti::realization::minimal(&sys, exactlti::realization::MinrealMethod::Kalman).unwrap();
+        prop_assert!(r.verified);
+        prop_assert_eq!(r.order(), kal.order);
         let blocks: Vec<(Quadratic, usize)> = sizes.iter().map(|&s| (q(theta.0, theta.1), s)).collect();
         let j = jordan_matrix(&k, &blocks);
         let a = planted(&k, &j, &entries);
