@@ -94,11 +94,21 @@ impl JordanFormK {
                 None => {
                     compact = true;
                     let kk = &e.symbol[1..];
-                    symbols.push(format!(
-                        "a{kk} = Re {0}, b{kk} = Im {0} (> 0), {0} = {1}",
-                        e.symbol, e.value
-                    ));
-                    (format!("a{kk}"), format!("b{kk}"))
+                    // a purely imaginary pair (proven by the isolation) has a = 0 exactly
+                    let pure = e.number.is_pure_imaginary();
+                    symbols.push(if pure {
+                        format!(
+                            "b{kk} = Im {0} (> 0, Re {0} = 0), {0} = {1}",
+                            e.symbol, e.value
+                        )
+                    } else {
+                        format!(
+                            "a{kk} = Re {0}, b{kk} = Im {0} (> 0), {0} = {1}",
+                            e.symbol, e.value
+                        )
+                    });
+                    let a = if pure { "0".into() } else { format!("a{kk}") };
+                    (a, format!("b{kk}"))
                 }
             };
             let part = |x: &super::RelElem, imag: bool| -> (String, f64) {

@@ -100,12 +100,30 @@ impl RelField {
     }
     /// The class of `p(t)`.
     pub fn from_poly(&self, p: &Poly<QuadraticField>) -> RelElem {
-        let r = if p.deg() >= self.degree() {
-            p.rem(&self.0.modulus)
-        } else {
-            p.clone()
-        };
-        RelElem(r.into_coeffs())
+        self.reduce(p.coeffs().to_vec())
+    }
+    /// Coefficients reduced modulo the monic $g$ (top down, skipping zero coefficients of
+    /// $g$), without trailing zeros.
+    fn reduce(&self, mut v: Vec<Quadratic>) -> RelElem {
+        let k = &self.0.k;
+        let g = self.0.modulus.coeffs();
+        let d = g.len() - 1;
+        while v.len() > d {
+            let c = v.pop().expect("longer than d");
+            if k.is_zero(&c) {
+                continue;
+            }
+            let off = v.len() - d;
+            for (j, gj) in g.iter().enumerate().take(d) {
+                if !k.is_zero(gj) {
+                    k.mul_sub_assign(&mut v[off + j], &c, gj);
+                }
+            }
+        }
+        while v.last().is_some_and(|c| k.is_zero(c)) {
+            v.pop();
+        }
+        RelElem(v)
     }
     /// The element as a polynomial in $t$ over $K$.
     pub fn to_poly(&self, a: &RelElem) -> Poly<QuadraticField> {
@@ -208,11 +226,16 @@ impl Field for RelField {
         let k = &self.0.k;
         let mut v = vec![k.zero(); a.0.len() + b.0.len() - 1];
         for (i, x) in a.0.iter().enumerate() {
+            if k.is_zero(x) {
+                continue;
+            }
             for (j, y) in b.0.iter().enumerate() {
-                k.mul_add_assign(&mut v[i + j], x, y);
+                if !k.is_zero(y) {
+                    k.mul_add_assign(&mut v[i + j], x, y);
+                }
             }
         }
-        self.from_poly(&Poly::new(k.clone(), v))
+        self.reduce(v)
     }
     fn neg(&self, a: &RelElem) -> RelElem {
         RelElem(a.0.iter().map(|x| self.0.k.neg(x)).collect())
