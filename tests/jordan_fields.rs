@@ -219,7 +219,7 @@ proptest! {
         check(&jf);
         // the Jordan-method minimal realization of (A, B, C) with B, C from the entries:
         // verified (Markov parameters, McMillan degree) and of the Kalman order
-        let b = Matrix::from_fn(k.clone(), n, 1, |i, _| q(entries[i].1.into(), entries[15 - i].0));
+        let b = Matrix::from_fn(k.clone(), n, 1, |i, _| q(entries[i].1, entries[15 - i].0));
         let c = Matrix::from_fn(k.clone(), 1, n, |_, i| q(entries[8 + i].0, 0));
         let sys = exactlti::system::StateSpace::new_strictly_proper(a.clone(), b, c).unwrap();
         let r = exactlti::realization::minimal_jordan_over_k(&sys).unwrap();
