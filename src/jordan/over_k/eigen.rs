@@ -19,6 +19,7 @@ use crate::algebraic::{AlgebraicNumber, NfElem, NumberField, factor_over_number_
 use crate::error::{Error, Result};
 use crate::field::{Q, Quadratic, QuadraticField, Rational};
 use crate::poly::Poly;
+use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
 /// $K$ as the number field $\mathbb{Q}\[t\]/(t^2 - d)$ marked at $\alpha$.
@@ -159,8 +160,6 @@ fn fixes_alpha(r: &Poly<Q>, z: &AlgebraicNumber, real_k: bool) -> Result<bool> {
         "could not separate the eigenvalues of A from those of its conjugate".into(),
     ))
 }
-
-use num_bigint::BigInt;
 
 /// Certified roots with their approximations.
 pub type CertifiedRoots = Vec<(AlgebraicNumber, (f64, f64))>;
