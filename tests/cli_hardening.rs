@@ -301,7 +301,7 @@ fn fields_each_command_accepts() {
         ("pencil", [0, 0, 0, 2]),
         ("ctrb", [0, 0, 0, 0]),
         ("obsv", [0, 0, 0, 0]),
-        ("tf", [0, 2, 2, 0]),
+        ("tf", [0, 0, 0, 0]),
         ("modes", [0, 2, 2, 2]),
         ("freqresp --points 5", [0, 2, 0, 2]),
         ("check", [0, 2, 0, 2]),
