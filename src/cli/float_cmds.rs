@@ -2,12 +2,13 @@
 
 use super::Failure;
 use crate::field::Field;
-use crate::float::{self, Tol, Truth, to_dmatrix};
+use crate::float::{self, FloatScalar, Tol, Truth, to_cmatrix, to_dmatrix};
 use crate::io::TypedSystem as Typed;
 use crate::realization;
 use crate::report::plot::{Response, logspace, response_csv, response_table};
 use crate::report::{Report, Value};
 use nalgebra::DMatrix;
+use num_complex::Complex;
 use std::path::Path;
 
 fn fail(path: &Path, e: crate::error::Error) -> Failure {
@@ -18,22 +19,49 @@ fn fail(path: &Path, e: crate::error::Error) -> Failure {
     }
 }
 
-fn float_abcd<K: Field>(t: &Typed<K>, path: &Path) -> Result<[DMatrix<f64>; 4], Failure> {
-    let s = &t.ss;
-    let conv = |m| to_dmatrix(m).map_err(|e| fail(path, e));
-    Ok([conv(&s.a)?, conv(&s.b)?, conv(&s.c)?, conv(&s.d)?])
+/// The float image of a system: real when every entry is real under the field's
+/// embedding, complex otherwise (a system over $\mathbb{Q}(i)$ with a non-real entry).
+pub(crate) enum FloatAbcd {
+    Real([DMatrix<f64>; 4]),
+    Complex([DMatrix<Complex<f64>>; 4]),
 }
 
-fn dm_report(r: Report, name: &str, m: &DMatrix<f64>) -> Report {
+pub(crate) fn float_abcd<K: Field>(t: &Typed<K>, path: &Path) -> Result<FloatAbcd, Failure> {
+    let s = &t.ss;
+    let conv = |m| to_cmatrix(m).map_err(|e| fail(path, e));
+    let c = [conv(&s.a)?, conv(&s.b)?, conv(&s.c)?, conv(&s.d)?];
+    if c.iter().all(|m| m.iter().all(|z| z.im == 0.0)) {
+        let conv = |m| to_dmatrix(m).map_err(|e| fail(path, e));
+        Ok(FloatAbcd::Real([
+            conv(&s.a)?,
+            conv(&s.b)?,
+            conv(&s.c)?,
+            conv(&s.d)?,
+        ]))
+    } else {
+        Ok(FloatAbcd::Complex(c))
+    }
+}
+
+/// A float matrix in a report: numbers for a real matrix, `[re, im]` pairs for a complex one.
+fn dm_report<T: FloatScalar>(r: Report, name: &str, m: &DMatrix<T>) -> Report {
+    let complex = m.iter().any(|z| z.imaginary() != 0.0);
+    let entry = |z: T| {
+        if complex {
+            Value::List(vec![Value::Float(z.real()), Value::Float(z.imaginary())])
+        } else {
+            Value::Float(z.real())
+        }
+    };
     let rows = (0..m.nrows())
-        .map(|i| Value::List((0..m.ncols()).map(|j| Value::Float(m[(i, j)])).collect()))
+        .map(|i| Value::List((0..m.ncols()).map(|j| entry(m[(i, j)])).collect()))
         .collect();
     r.with(name, Value::List(rows))
 }
 
 /// The label of a float claim beside the exact answer: a claim the exact path refutes is
 /// `"false"`, never `"true"`, whatever its own gap test said.
-fn claim_str(agree: bool, t: Truth) -> &'static str {
+pub(crate) fn claim_str(agree: bool, t: Truth) -> &'static str {
     match (agree, t) {
         (true, t) => truth_str(t),
         (false, Truth::Unknown) => "unknown",
@@ -72,7 +100,11 @@ pub fn freqresp<K: Field>(
     }
     // bounded output: the report holds every value (JSON ~50 bytes each), so a 20x20
     // system at 100000 points (40 million values, GBs) is refused with the reason
+    let sys = float_abcd(t, path)?;
+    // a complex system's response is not conjugate-symmetric: it is shown at -f as well
+    let two_sided = matches!(sys, FloatAbcd::Complex(_));
     let values = points
+        .saturating_mul(if two_sided { 2 } else { 1 })
         .saturating_mul(t.ss.noutputs())
         .saturating_mul(t.ss.ninputs());
     if values > MAX_RESPONSE_VALUES {
@@ -86,9 +118,20 @@ pub fn freqresp<K: Field>(
             ),
         });
     }
-    let [a, b, c, d] = float_abcd(t, path)?;
-    let freqs = logspace(from, to, points);
-    let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(|e| fail(path, e))?;
+    let mut freqs = logspace(from, to, points);
+    let resp = match &sys {
+        FloatAbcd::Real([a, b, c, d]) => float::freqresp(a, b, c, d, &freqs),
+        FloatAbcd::Complex([a, b, c, d]) => {
+            freqs = freqs
+                .iter()
+                .rev()
+                .map(|f| -f)
+                .chain(freqs.iter().copied())
+                .collect();
+            float::freqresp_complex(a, b, c, d, &freqs)
+        }
+    }
+    .map_err(|e| fail(path, e))?;
     let table = response_table(&resp);
     if let Some(p) = csv {
         std::fs::write(p, response_csv(&freqs, &table)).map_err(|e| Failure {
@@ -115,7 +158,14 @@ pub fn freqresp<K: Field>(
         })
         .collect();
     let (header, rows) = bode_table(&freqs, &table);
-    Ok(Report::titled("frequency response")
+    let mut rep = Report::titled("frequency response");
+    if two_sided {
+        rep = rep.bool("two_sided", true).str(
+            "note",
+            "complex system: G(-jw) is not the conjugate of G(jw), so the response is given at -f and +f (Hz), negative frequencies first",
+        );
+    }
+    Ok(rep
         .with(
             "frequencies_hz",
             Value::hidden_in_text(Value::List(
@@ -189,10 +239,24 @@ fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>
 /// McMillan degree: an order that contradicts it is flagged (`agree_with_exact: false`,
 /// `truth: "false"`, no matrices) and exits 3 like `check`.
 pub fn era<K: Field>(t: &Typed<K>, path: &Path, hankel: Option<usize>) -> Result<Report, Failure> {
-    let [a, b, c, d] = float_abcd(t, path)?;
+    let tol = Tol::default();
+    match float_abcd(t, path)? {
+        FloatAbcd::Real([a, b, c, d]) => era_report(
+            t,
+            float::era_system(&a, &b, &c, &d, hankel, &tol).map_err(|e| fail(path, e))?,
+        ),
+        FloatAbcd::Complex([a, b, c, d]) => era_report(
+            t,
+            float::era_system(&a, &b, &c, &d, hankel, &tol).map_err(|e| fail(path, e))?,
+        ),
+    }
+}
+
+fn era_report<K: Field, T: FloatScalar>(
+    t: &Typed<K>,
+    r: float::SystemEra<T>,
+) -> Result<Report, Failure> {
     let n = t.ss.nstates();
-    let r =
-        float::era_system(&a, &b, &c, &d, hankel, &Tol::default()).map_err(|e| fail(path, e))?;
     let exact = realization::mcmillan_degree(&t.ss);
     let e = &r.realization;
     let agree = e.order == exact;
@@ -308,13 +372,30 @@ pub fn jordan_comparison(
 pub const MAX_FLOAT_ZEROS_SIDE: usize = 2000;
 
 /// Float path beside the exact path.
-pub fn check<K: Field>(
+pub fn check<K: Field + 'static>(
     t: &Typed<K>,
     path: &Path,
     extra: Vec<(String, bool, Report)>,
 ) -> Result<Report, Failure> {
-    let [a, b, c, d] = float_abcd(t, path)?;
     let tol = Tol::default();
+    let (mut items, skipped) = match float_abcd(t, path)? {
+        FloatAbcd::Real(m) => real_items(t, path, &m, &tol)?,
+        FloatAbcd::Complex(m) => super::float_complex::complex_items(t, path, &m, &tol)?,
+    };
+    items.extend(extra);
+    check_report(items, skipped, &tol)
+}
+
+type Items = (Vec<(String, bool, Report)>, Vec<(&'static str, String)>);
+
+/// `check`'s comparisons for a real float image.
+fn real_items<K: Field>(
+    t: &Typed<K>,
+    path: &Path,
+    [a, b, c, d]: &[DMatrix<f64>; 4],
+    tol: &Tol,
+) -> Result<Items, Failure> {
+    let tol = *tol;
     let s = &t.ss;
     let mut items: Vec<(String, bool, Report)> = vec![];
     let mut skipped: Vec<(&str, String)> = vec![];
@@ -411,7 +492,14 @@ pub fn check<K: Field>(
             items.push(("invariant_zero_count".into(), ez == fz.zeros.len(), rep));
         }
     }
-    items.extend(extra);
+    Ok((items, skipped))
+}
+
+fn check_report(
+    items: Vec<(String, bool, Report)>,
+    skipped: Vec<(&str, String)>,
+    tol: &Tol,
+) -> Result<Report, Failure> {
     let agree = items.iter().all(|(_, ok, _)| *ok);
     let differences = items
         .iter()

@@ -1,0 +1,145 @@
+//! `check`'s float-vs-exact comparisons for a system with complex entries (over
+//! $\mathbb{Q}(i)$ or $\mathbb{Q}(\sqrt{-d})$).
+//!
+//! The float staircases are real; they see the complex system through its real form
+//! ([`FloatScalar::realify`]: $M = X + iY \mapsto \begin{bmatrix} X & -Y \\ Y & X
+//! \end{bmatrix}$), a ring homomorphism whose singular values are those of $M$ each twice.
+//! So the real form's minimal order, controllability and observability ranks and number of
+//! invariant zeros are twice the complex ones (an odd float count is a disagreement). ERA runs
+//! on the complex Markov parameters (complex Jacobi SVD). The eigenvalues are compared
+//! through the real form too: over $\mathbb{Q}(i)$ the real form of $A$ is a rational
+//! matrix whose exact Jordan form (the structures of $A$ and $\bar A$ together) is compared
+//! with the float guess by [`super::float_cmds::jordan_comparison`].
+
+use super::Failure;
+use super::float_cmds::{claim_str, jordan_comparison};
+use crate::field::{Field, Q, QuadraticField};
+use crate::float::{self, FloatScalar, Tol};
+use crate::io::TypedSystem as Typed;
+use crate::matrix::Matrix;
+use crate::realization;
+use crate::report::Report;
+use nalgebra::DMatrix;
+use num_complex::Complex;
+use std::path::Path;
+
+/// One comparison: (name, agree, detail).
+pub(crate) type Item = (String, bool, Report);
+
+fn fail(path: &Path, e: crate::error::Error) -> Failure {
+    let f: Failure = e.into();
+    Failure {
+        code: f.code,
+        message: format!("{}: {}", path.display(), f.message),
+    }
+}
+
+/// A float count of the real form, halved: `None` when odd (no complex count doubles to it).
+fn half(n: usize) -> Option<usize> {
+    (n % 2 == 0).then_some(n / 2)
+}
+
+fn count_item(exact: usize, real_form: usize, truth: float::Truth) -> (bool, Report) {
+    let ok = half(real_form) == Some(exact);
+    let mut r = Report::new()
+        .int("exact", exact)
+        .int("float_real_form", real_form);
+    if let Some(h) = half(real_form) {
+        r = r.int("float", h);
+    }
+    (ok, r.str("float_truth", claim_str(ok, truth)))
+}
+
+/// The real form of a matrix over $\mathbb{Q}(i)$, exactly; `None` for another field.
+fn exact_real_form<K: Field + 'static>(a: &Matrix<K>) -> Option<Matrix<Q>> {
+    let q = (a as &dyn std::any::Any).downcast_ref::<Matrix<QuadraticField>>()?;
+    let k = q.field();
+    if *k.d() != num_bigint::BigInt::from(-1) {
+        return None;
+    }
+    let n = q.nrows();
+    Some(Matrix::from_fn(Q, 2 * n, 2 * n, |i, j| {
+        let z = q.get(i % n, j % n);
+        match (i < n, j < n) {
+            (true, true) | (false, false) => z.a.clone(),
+            (true, false) => -z.b.clone(),
+            (false, true) => z.b.clone(),
+        }
+    }))
+}
+
+/// The comparisons of `check` for a complex float image `[a, b, c, d]`, and the ones skipped
+/// with the reason.
+pub(crate) fn complex_items<K: Field + 'static>(
+    t: &Typed<K>,
+    path: &Path,
+    [a, b, c, d]: &[DMatrix<Complex<f64>>; 4],
+    tol: &Tol,
+) -> Result<(Vec<Item>, Vec<(&'static str, String)>), Failure> {
+    let s = &t.ss;
+    let mut items: Vec<Item> = vec![];
+    let mut skipped = vec![];
+    let [ar, br, cr, dr] = [a, b, c, d].map(|m| FloatScalar::realify(m));
+    if s.ninputs() > 0 && s.noutputs() > 0 {
+        let exact_order = realization::mcmillan_degree(s);
+        let fm = float::minreal(&ar, &br, &cr, &dr, tol).map_err(|e| fail(path, e))?;
+        let (ok, r) = count_item(exact_order, fm.order, fm.truth);
+        items.push(("minreal_order".into(), ok, r));
+        let rc = realization::controllability_matrix(&s.a, &s.b).rank();
+        let frc = float::controllability_rank(&ar, &br, tol).map_err(|e| fail(path, e))?;
+        let (ok, r) = count_item(rc, frc.rank, frc.truth);
+        items.push(("controllability_rank".into(), ok, r));
+        let ro = realization::observability_matrix(&s.a, &s.c).rank();
+        let fro = float::observability_rank(&ar, &cr, tol).map_err(|e| fail(path, e))?;
+        let (ok, r) = count_item(ro, fro.rank, fro.truth);
+        items.push(("observability_rank".into(), ok, r));
+        match float::era_system(a, b, c, d, None, tol) {
+            Ok(r) => {
+                let e = &r.realization;
+                let ok = e.order == exact_order;
+                items.push((
+                    "era_order".into(),
+                    ok,
+                    Report::new()
+                        .int("exact", exact_order)
+                        .int("float", e.order)
+                        .int("hankel_blocks", e.hankel_blocks.0)
+                        .float("gap_ratio", e.rank_gap.ratio)
+                        .str("float_truth", claim_str(ok, e.truth)),
+                ));
+            }
+            Err(err) => skipped.push(("era_order", err.to_string())),
+        }
+        let side = s.nstates() + s.ninputs().max(s.noutputs());
+        if 2 * side > super::float_cmds::MAX_FLOAT_ZEROS_SIDE {
+            skipped.push((
+                "invariant_zero_count",
+                "the real form's system matrix exceeds the float zeros' size limit".into(),
+            ));
+        } else if let Ok(z) = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)
+            && let Ok(fz) = float::invariant_zeros_report(&ar, &br, &cr, &dr, tol)
+        {
+            let (ok, r) = count_item(z.count(), fz.zeros.len(), fz.truth);
+            items.push(("invariant_zero_count".into(), ok, r));
+        }
+    }
+    match exact_real_form(&t.a_raw) {
+        Some(aq) => {
+            for (name, ok, r) in jordan_comparison(&aq, path)? {
+                items.push((
+                    format!("{name}_real_form"),
+                    ok,
+                    r.str(
+                        "note",
+                        "the real form [[X, -Y], [Y, X]] of A = X + iY: the eigenvalues of A and of its conjugate",
+                    ),
+                ));
+            }
+        }
+        None => skipped.push((
+            "jordan_structure",
+            "the exact real form of A is rational only over Q(i)".into(),
+        )),
+    }
+    Ok((items, skipped))
+}
