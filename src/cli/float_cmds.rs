@@ -1,8 +1,9 @@
 //! Commands that run the float backend: `freqresp`, `minreal --method era`, `check`.
 
 use super::Failure;
+use super::float_compare::{Items, MAX_FLOAT_ZEROS_SIDE, claim_str};
 use crate::field::Field;
-use crate::float::{self, FloatScalar, Tol, Truth, to_cmatrix, to_dmatrix};
+use crate::float::{self, FloatScalar, Tol, to_cmatrix, to_dmatrix};
 use crate::io::TypedSystem as Typed;
 use crate::realization;
 use crate::report::plot::{Response, logspace, response_csv, response_table};
@@ -57,24 +58,6 @@ fn dm_report<T: FloatScalar>(r: Report, name: &str, m: &DMatrix<T>) -> Report {
         .map(|i| Value::List((0..m.ncols()).map(|j| entry(m[(i, j)])).collect()))
         .collect();
     r.with(name, Value::List(rows))
-}
-
-/// The label of a float claim beside the exact answer: a claim the exact path refutes is
-/// `"false"`, never `"true"`, whatever its own gap test said.
-pub(crate) fn claim_str(agree: bool, t: Truth) -> &'static str {
-    match (agree, t) {
-        (true, t) => truth_str(t),
-        (false, Truth::Unknown) => "unknown",
-        (false, _) => "false",
-    }
-}
-
-fn truth_str(t: Truth) -> &'static str {
-    match t {
-        Truth::True => "true",
-        Truth::False => "false",
-        Truth::Unknown => "unknown",
-    }
 }
 
 /// Most complex values (points x outputs x inputs) `freqresp` computes and reports: about
@@ -298,79 +281,6 @@ fn era_report<K: Field, T: FloatScalar>(
     ))
 }
 
-/// Eigenvalues and Jordan structure: exact (rational `A`) against the float guess.
-pub fn jordan_comparison(
-    a_exact: &crate::matrix::Matrix<crate::field::Q>,
-    path: &Path,
-) -> Result<Vec<(String, bool, Report)>, Failure> {
-    let jf = crate::jordan::jordan(a_exact).map_err(|e| fail(path, e))?;
-    let a = to_dmatrix(a_exact).map_err(|e| fail(path, e))?;
-    let tol = Tol::default();
-    let fj = float::jordan_guess(&a, &tol).map_err(|e| fail(path, e))?;
-    let scale = 1.0 + fj.norm;
-    let mut out = vec![];
-    let mut worst = 0.0f64;
-    let mut structure_ok = true;
-    let mut rows = vec![];
-    for ev in &jf.eigenvalues {
-        let (re, im) = ev.approx;
-        let nearest = fj.clusters.iter().min_by(|x, y| {
-            let dx = (x.center.re - re).hypot(x.center.im - im);
-            let dy = (y.center.re - re).hypot(y.center.im - im);
-            dx.total_cmp(&dy)
-        });
-        let Some(c) = nearest else { continue };
-        let dist = (c.center.re - re).hypot(c.center.im - im);
-        // the spread of the computed members around the exact value
-        let spread = c
-            .members
-            .iter()
-            .map(|z| (z.re - re).hypot(z.im - im))
-            .fold(0.0, f64::max);
-        worst = worst.max(spread);
-        let same = dist <= 1e-6 * scale
-            && c.algebraic_multiplicity == ev.algebraic_multiplicity
-            && c.block_sizes == ev.blocks;
-        structure_ok &= same;
-        rows.push(Value::Obj(
-            Report::new()
-                .str("eigenvalue", ev.value.clone())
-                .with(
-                    "exact_blocks",
-                    Value::List(ev.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
-                )
-                .with(
-                    "float_blocks",
-                    Value::List(
-                        c.block_sizes
-                            .iter()
-                            .map(|&b| Value::Int(b as i64))
-                            .collect(),
-                    ),
-                )
-                .float("float_center_distance", dist)
-                .float("float_member_spread", spread)
-                .str("float_truth", claim_str(same, c.truth))
-                .bool("agree", same),
-        ));
-    }
-    let warnings = Value::List(fj.warnings.iter().map(|w| Value::Str(w.clone())).collect());
-    out.push((
-        "jordan_structure".to_string(),
-        structure_ok,
-        Report::new()
-            .with("eigenvalues", Value::List(rows))
-            .float("max_float_eigenvalue_error", worst)
-            .with("float_warnings", warnings)
-            .bool("exact_verified", jf.verified),
-    ));
-    Ok(out)
-}
-
-/// Largest `n + max(m, p)` for which `check` runs the float invariant zeros (their dense
-/// orthogonal factors are side x side: 2000 is 32 MB each).
-pub const MAX_FLOAT_ZEROS_SIDE: usize = 2000;
-
 /// Float path beside the exact path.
 pub fn check<K: Field + 'static>(
     t: &Typed<K>,
@@ -380,13 +290,11 @@ pub fn check<K: Field + 'static>(
     let tol = Tol::default();
     let (mut items, skipped) = match float_abcd(t, path)? {
         FloatAbcd::Real(m) => real_items(t, path, &m, &tol)?,
-        FloatAbcd::Complex(m) => super::float_complex::complex_items(t, path, &m, &tol)?,
+        FloatAbcd::Complex(m) => super::float_compare::complex_items(t, path, &m, &tol)?,
     };
     items.extend(extra);
     check_report(items, skipped, &tol)
 }
-
-type Items = (Vec<(String, bool, Report)>, Vec<(&'static str, String)>);
 
 /// `check`'s comparisons for a real float image.
 fn real_items<K: Field>(
@@ -404,7 +312,7 @@ fn real_items<K: Field>(
         // Hankel matrix, far cheaper than a verified minimal realization (40 s on a
         // 1-state, 20000-input, 200-output system)
         let exact_order = realization::mcmillan_degree(s);
-        let fm = float::minreal(&a, &b, &c, &d, &tol).map_err(|e| fail(path, e))?;
+        let fm = float::minreal(a, b, c, d, &tol).map_err(|e| fail(path, e))?;
         let ok = fm.order == exact_order;
         items.push((
             "minreal_order".into(),
@@ -415,7 +323,7 @@ fn real_items<K: Field>(
                 .str("float_truth", claim_str(ok, fm.truth)),
         ));
         let rc = realization::controllability_matrix(&s.a, &s.b).rank();
-        let frc = float::controllability_rank(&a, &b, &tol).map_err(|e| fail(path, e))?;
+        let frc = float::controllability_rank(a, b, &tol).map_err(|e| fail(path, e))?;
         items.push((
             "controllability_rank".into(),
             rc == frc.rank,
@@ -425,7 +333,7 @@ fn real_items<K: Field>(
                 .str("float_truth", claim_str(rc == frc.rank, frc.truth)),
         ));
         let ro = realization::observability_matrix(&s.a, &s.c).rank();
-        let fro = float::observability_rank(&a, &c, &tol).map_err(|e| fail(path, e))?;
+        let fro = float::observability_rank(a, c, &tol).map_err(|e| fail(path, e))?;
         items.push((
             "observability_rank".into(),
             ro == fro.rank,
@@ -434,7 +342,7 @@ fn real_items<K: Field>(
                 .int("float", fro.rank)
                 .str("float_truth", claim_str(ro == fro.rank, fro.truth)),
         ));
-        match float::era_system(&a, &b, &c, &d, None, &tol) {
+        match float::era_system(a, b, c, d, None, &tol) {
             Ok(r) => {
                 let e = &r.realization;
                 let ok = e.order == exact_order;
@@ -465,7 +373,7 @@ fn real_items<K: Field>(
                 ),
             ));
         } else if let Ok(z) = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)
-            && let Ok(fz) = float::invariant_zeros_report(&a, &b, &c, &d, &tol)
+            && let Ok(fz) = float::invariant_zeros_report(a, b, c, d, &tol)
         {
             let ez = z.count();
             let mut rep = Report::new()

@@ -1,5 +1,7 @@
-//! `check`'s float-vs-exact comparisons for a system with complex entries (over
-//! $\mathbb{Q}(i)$ or $\mathbb{Q}(\sqrt{-d})$).
+//! `check`'s float-vs-exact comparisons: the labels of float claims ([`claim_str`]), the
+//! Jordan structure of a rational `A` ([`jordan_comparison`]), and the comparisons for a
+//! system with complex entries (over $\mathbb{Q}(i)$ or $\mathbb{Q}(\sqrt{-d})$,
+//! [`complex_items`]).
 //!
 //! The float staircases are real; they see the complex system through its real form
 //! ([`FloatScalar::realify`]: $M = X + iY \mapsto \begin{bmatrix} X & -Y \\ Y & X
@@ -12,19 +14,21 @@
 //! with the float guess by [`super::float_cmds::jordan_comparison`].
 
 use super::Failure;
-use super::float_cmds::{claim_str, jordan_comparison};
 use crate::field::{Field, Q, QuadraticField};
-use crate::float::{self, FloatScalar, Tol};
+use crate::float::{self, FloatScalar, Tol, Truth, to_dmatrix};
 use crate::io::TypedSystem as Typed;
 use crate::matrix::Matrix;
 use crate::realization;
-use crate::report::Report;
+use crate::report::{Report, Value};
 use nalgebra::DMatrix;
 use num_complex::Complex;
 use std::path::Path;
 
 /// One comparison: (name, agree, detail).
 pub(crate) type Item = (String, bool, Report);
+
+/// The comparisons made and the ones skipped (name, reason).
+pub(crate) type Items = (Vec<Item>, Vec<(&'static str, String)>);
 
 fn fail(path: &Path, e: crate::error::Error) -> Failure {
     let f: Failure = e.into();
@@ -34,9 +38,100 @@ fn fail(path: &Path, e: crate::error::Error) -> Failure {
     }
 }
 
+/// The label of a float claim beside the exact answer: a claim the exact path refutes is
+/// `"false"`, never `"true"`, whatever its own gap test said.
+pub(crate) fn claim_str(agree: bool, t: Truth) -> &'static str {
+    match (agree, t) {
+        (true, t) => truth_str(t),
+        (false, Truth::Unknown) => "unknown",
+        (false, _) => "false",
+    }
+}
+
+fn truth_str(t: Truth) -> &'static str {
+    match t {
+        Truth::True => "true",
+        Truth::False => "false",
+        Truth::Unknown => "unknown",
+    }
+}
+
+/// Eigenvalues and Jordan structure: exact (rational `A`) against the float guess.
+pub fn jordan_comparison(
+    a_exact: &crate::matrix::Matrix<crate::field::Q>,
+    path: &Path,
+) -> Result<Vec<(String, bool, Report)>, Failure> {
+    let jf = crate::jordan::jordan(a_exact).map_err(|e| fail(path, e))?;
+    let a = to_dmatrix(a_exact).map_err(|e| fail(path, e))?;
+    let tol = Tol::default();
+    let fj = float::jordan_guess(&a, &tol).map_err(|e| fail(path, e))?;
+    let scale = 1.0 + fj.norm;
+    let mut out = vec![];
+    let mut worst = 0.0f64;
+    let mut structure_ok = true;
+    let mut rows = vec![];
+    for ev in &jf.eigenvalues {
+        let (re, im) = ev.approx;
+        let nearest = fj.clusters.iter().min_by(|x, y| {
+            let dx = (x.center.re - re).hypot(x.center.im - im);
+            let dy = (y.center.re - re).hypot(y.center.im - im);
+            dx.total_cmp(&dy)
+        });
+        let Some(c) = nearest else { continue };
+        let dist = (c.center.re - re).hypot(c.center.im - im);
+        // the spread of the computed members around the exact value
+        let spread = c
+            .members
+            .iter()
+            .map(|z| (z.re - re).hypot(z.im - im))
+            .fold(0.0, f64::max);
+        worst = worst.max(spread);
+        let same = dist <= 1e-6 * scale
+            && c.algebraic_multiplicity == ev.algebraic_multiplicity
+            && c.block_sizes == ev.blocks;
+        structure_ok &= same;
+        rows.push(Value::Obj(
+            Report::new()
+                .str("eigenvalue", ev.value.clone())
+                .with(
+                    "exact_blocks",
+                    Value::List(ev.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
+                )
+                .with(
+                    "float_blocks",
+                    Value::List(
+                        c.block_sizes
+                            .iter()
+                            .map(|&b| Value::Int(b as i64))
+                            .collect(),
+                    ),
+                )
+                .float("float_center_distance", dist)
+                .float("float_member_spread", spread)
+                .str("float_truth", claim_str(same, c.truth))
+                .bool("agree", same),
+        ));
+    }
+    let warnings = Value::List(fj.warnings.iter().map(|w| Value::Str(w.clone())).collect());
+    out.push((
+        "jordan_structure".to_string(),
+        structure_ok,
+        Report::new()
+            .with("eigenvalues", Value::List(rows))
+            .float("max_float_eigenvalue_error", worst)
+            .with("float_warnings", warnings)
+            .bool("exact_verified", jf.verified),
+    ));
+    Ok(out)
+}
+
+/// Largest `n + max(m, p)` for which `check` runs the float invariant zeros (their dense
+/// orthogonal factors are side x side: 2000 is 32 MB each).
+pub const MAX_FLOAT_ZEROS_SIDE: usize = 2000;
+
 /// A float count of the real form, halved: `None` when odd (no complex count doubles to it).
 fn half(n: usize) -> Option<usize> {
-    (n % 2 == 0).then_some(n / 2)
+    n.is_multiple_of(2).then_some(n / 2)
 }
 
 fn count_item(exact: usize, real_form: usize, truth: float::Truth) -> (bool, Report) {
@@ -75,11 +170,11 @@ pub(crate) fn complex_items<K: Field + 'static>(
     path: &Path,
     [a, b, c, d]: &[DMatrix<Complex<f64>>; 4],
     tol: &Tol,
-) -> Result<(Vec<Item>, Vec<(&'static str, String)>), Failure> {
+) -> Result<Items, Failure> {
     let s = &t.ss;
     let mut items: Vec<Item> = vec![];
     let mut skipped = vec![];
-    let [ar, br, cr, dr] = [a, b, c, d].map(|m| FloatScalar::realify(m));
+    let [ar, br, cr, dr] = [a, b, c, d].map(FloatScalar::realify);
     if s.ninputs() > 0 && s.noutputs() > 0 {
         let exact_order = realization::mcmillan_degree(s);
         let fm = float::minreal(&ar, &br, &cr, &dr, tol).map_err(|e| fail(path, e))?;
@@ -111,7 +206,7 @@ pub(crate) fn complex_items<K: Field + 'static>(
             Err(err) => skipped.push(("era_order", err.to_string())),
         }
         let side = s.nstates() + s.ninputs().max(s.noutputs());
-        if 2 * side > super::float_cmds::MAX_FLOAT_ZEROS_SIDE {
+        if 2 * side > MAX_FLOAT_ZEROS_SIDE {
             skipped.push((
                 "invariant_zero_count",
                 "the real form's system matrix exceeds the float zeros' size limit".into(),
