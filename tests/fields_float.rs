@@ -299,6 +299,12 @@ fn check_and_era_commands_over_gaussian_rationals() {
             .len(),
         5
     );
+    // the exact G(ri) over Q(i) against the float one, at r = -3, -1/2, 1/3, 2, 5 except the
+    // pole 2i (sI - A singular there, left out)
+    let fr = &cmp["frequency_response"];
+    assert_eq!(fr["agree"], true);
+    assert_eq!(fr["omega"].as_array().unwrap().len(), 4, "{fr}");
+    assert!(fr["max_abs_error"].as_f64().unwrap() < 1e-12, "{fr}");
     let (code, j, err) = json(&["minreal", p, "--method", "era"]);
     assert_eq!(code, 0, "{err}");
     assert_eq!(

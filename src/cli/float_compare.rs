@@ -11,7 +11,12 @@
 //! on the complex Markov parameters (complex Jacobi SVD). The eigenvalues are compared
 //! through the real form too: over $\mathbb{Q}(i)$ the real form of $A$ is a rational
 //! matrix whose exact Jordan form (the structures of $A$ and $\bar A$ together) is compared
-//! with the float guess by [`super::float_cmds::jordan_comparison`].
+//! with the float guess by [`jordan_comparison`]. The frequency response is compared with
+//! the exact $G(s)$ at points $s$ of the imaginary axis that lie in the field
+//! ([`MAX_EXACT_RESPONSE_STATES`]).
+//!
+//! A float claim is `true` only when its own test is clear and the exact path agrees; a
+//! disagreement makes `check` exit 3.
 
 use super::Failure;
 use crate::field::{Field, Q, QuadraticField};
@@ -218,6 +223,10 @@ pub(crate) fn complex_items<K: Field + 'static>(
             items.push(("invariant_zero_count".into(), ok, r));
         }
     }
+    match response_item(t, [a, b, c, d]) {
+        Ok(item) => items.push(item),
+        Err(why) => skipped.push(("frequency_response", why)),
+    }
     match exact_real_form(&t.a_raw) {
         Some(aq) => {
             for (name, ok, r) in jordan_comparison(&aq, path)? {
@@ -237,4 +246,86 @@ pub(crate) fn complex_items<K: Field + 'static>(
         )),
     }
     Ok((items, skipped))
+}
+
+/// Most states for which `check` evaluates the exact transfer matrix at sample points.
+pub const MAX_EXACT_RESPONSE_STATES: usize = 40;
+
+/// The float frequency response against the exact one at the points $s = r\sqrt d$ of the
+/// imaginary axis that lie in $K = \mathbb{Q}(\sqrt d)$, $d < 0$ (for $\mathbb{Q}(i)$,
+/// $s = ri$), $r \in \{-3, -1/2, 1/3, 2, 5\}$: $G(s) = C(sI - A)^{-1}B + D$ exactly over
+/// $K$ (a point where $sI - A$ is singular is left out), then its embedding compared with
+/// the float value at $\omega = r\sqrt{-d}$. Agreement: every entry within
+/// $10^{-6}(1 + \max|G|)$; `float_truth` is `true` within $10^{-10}(1 + \max|G|)$.
+fn response_item<K: Field + 'static>(
+    t: &Typed<K>,
+    [a, b, c, d]: [&DMatrix<Complex<f64>>; 4],
+) -> Result<Item, String> {
+    use crate::field::Quadratic;
+    let Some(s) =
+        (&t.ss as &dyn std::any::Any).downcast_ref::<crate::system::StateSpace<QuadraticField>>()
+    else {
+        return Err("the exact response needs a quadratic field".into());
+    };
+    let k = s.a.field();
+    if !num_traits::Signed::is_negative(k.d()) {
+        return Err("the imaginary axis meets a real field only at 0".into());
+    }
+    let n = s.nstates();
+    if n > MAX_EXACT_RESPONSE_STATES || s.ninputs() == 0 || s.noutputs() == 0 {
+        return Err(format!(
+            "evaluated for 1..{MAX_EXACT_RESPONSE_STATES} states with inputs and outputs"
+        ));
+    }
+    let root = num_traits::ToPrimitive::to_f64(&-k.d())
+        .unwrap_or(f64::NAN)
+        .sqrt();
+    let mut worst = 0.0f64;
+    let mut scale = 0.0f64;
+    let mut used = vec![];
+    for (num, den) in [(-3, 1), (-1, 2), (1, 3), (2, 1), (5, 1)] {
+        let r = crate::field::Rational::new(num.into(), den.into());
+        let sk = Quadratic::new(crate::field::Rational::from_integer(0.into()), r.clone());
+        let m = Matrix::from_fn(k.clone(), n, n, |i, j| {
+            let x = k.neg(s.a.get(i, j));
+            if i == j { k.add(&x, &sk) } else { x }
+        });
+        let Ok(inv) = m.inverse() else { continue };
+        let g = &(&(&s.c * &inv) * &s.b) + &s.d;
+        let omega = crate::field::rational_to_f64(&r) * root;
+        let hz = omega / (2.0 * std::f64::consts::PI);
+        let Ok(fr) = float::freqresp_complex(a, b, c, d, &[hz]) else {
+            continue;
+        };
+        for i in 0..g.nrows() {
+            for j in 0..g.ncols() {
+                let (re, im) = k.approx(g.get(i, j));
+                let e = Complex::new(re, im);
+                scale = scale.max(e.norm());
+                worst = worst.max((fr[0][(i, j)] - e).norm());
+            }
+        }
+        used.push(omega);
+    }
+    if used.is_empty() {
+        return Err("every sample point is a pole".into());
+    }
+    let ok = worst <= 1e-6 * (1.0 + scale);
+    let truth = if worst <= 1e-10 * (1.0 + scale) {
+        Truth::True
+    } else {
+        Truth::Unknown
+    };
+    Ok((
+        "frequency_response".into(),
+        ok,
+        Report::new()
+            .with(
+                "omega",
+                Value::List(used.into_iter().map(Value::Float).collect()),
+            )
+            .float("max_abs_error", worst)
+            .float("max_abs_exact", scale)
+            .str("float_truth", claim_str(ok, truth)),
+    ))
 }
