@@ -179,6 +179,17 @@ fn tf_command_over_sqrt2() {
     assert_eq!(j["transmission_zeros"][0]["value"], "-sqrt(2)/2");
     assert_eq!(j["poles"][0]["degree"], 2);
     assert_eq!(j["poles"][0]["minpoly"], "x^4 + 2*x^2 + 4");
+    // its roots (sqrt 2 +- i sqrt 6)/2, not those of the conjugate factor s^2 + sqrt(2) s + 2
+    let roots = j["poles"][0]["roots"].as_array().unwrap();
+    assert_eq!(roots.len(), 2);
+    for r in roots {
+        let (re, im) = (
+            r["approx"][0].as_f64().unwrap(),
+            r["approx"][1].as_f64().unwrap(),
+        );
+        assert!((re - 2f64.sqrt() / 2.0).abs() < 1e-9, "{r}");
+        assert!((im.abs() - 6f64.sqrt() / 2.0).abs() < 1e-9, "{r}");
+    }
     assert_eq!(j["verified"], true);
     // a descriptor system over Q(sqrt 2): polynomial part kept
     let f = temp_file(

@@ -62,10 +62,62 @@ fn factor_items(p: &Poly<QuadraticField>, mult_key: &str) -> Result<(Vec<Value>,
             );
         } else {
             r = r.str("value", format!("a root of {}", f.to_string_var("s")));
+            if let Some(rs) = roots_of_factor(f, &minpoly) {
+                r = r.list("roots", rs);
+            }
         }
         items.push(Value::Obj(r.int(mult_key, *e)));
     }
     Ok((items, prod == *p))
+}
+
+/// The roots of a factor `f` (irreducible over $K$, degree >= 2) as `{value, approx}`: the
+/// certified roots of its minimal polynomial over $\mathbb{Q}$ (exact values), of which
+/// those of `f` are told apart from those of its Galois conjugate by $|f(z)|$ at their
+/// approximations. `None` when that separation is not clear by a factor $10^6$ (or the
+/// isolation fails): the item then keeps only `factor` and `minpoly`.
+fn roots_of_factor(
+    f: &Poly<QuadraticField>,
+    minpoly: &Poly<crate::field::Q>,
+) -> Option<Vec<Value>> {
+    let k = f.field().clone();
+    let rs = crate::algebraic::roots(minpoly).ok()?;
+    let cs: Vec<(f64, f64)> = f.coeffs().iter().map(|c| k.approx(c)).collect();
+    let residual = |(x, y): (f64, f64)| {
+        // Horner in complex floats
+        let (mut re, mut im) = (0.0f64, 0.0f64);
+        for &(cr, ci) in cs.iter().rev() {
+            let (nr, ni) = (re * x - im * y + cr, re * y + im * x + ci);
+            re = nr;
+            im = ni;
+        }
+        re.hypot(im)
+    };
+    let mut scored: Vec<(f64, &crate::algebraic::AlgebraicNumber)> =
+        rs.iter().map(|(z, _)| (residual(z.approx()), z)).collect();
+    scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let n = f.deg();
+    if scored.len() < n {
+        return None;
+    }
+    if scored.len() > n {
+        let (kept, next) = (scored[n - 1].0, scored[n].0);
+        if next.is_nan() || next <= 1e6 * kept.max(f64::MIN_POSITIVE) {
+            return None;
+        }
+    }
+    Some(
+        scored[..n]
+            .iter()
+            .map(|(_, z)| {
+                let (re, im) = z.approx();
+                Value::Obj(Report::new().str("value", z.value_string()).with(
+                    "approx",
+                    Value::List(vec![Value::Float(re), Value::Float(im)]),
+                ))
+            })
+            .collect(),
+    )
 }
 
 /// Zero-pole-gain display over $K$: `k (factors) / (factors)`.
