@@ -123,15 +123,22 @@ impl DescriptorVisitor for Run<'_> {
                 if let Some(sk) = (s as &dyn Any).downcast_ref::<Descriptor<QuadraticField>>() {
                     // exact over Q(i) / Q(sqrt d); a state-space input is also checked by
                     // its Markov parameters
-                    let g = descriptor_transfer_matrix(sk).map_err(e)?;
-                    let r = realize_transfer(&g).map_err(e)?;
-                    let ss = if l.has_e {
-                        None
+                    let (g, r, ss) = if l.has_e {
+                        let g = descriptor_transfer_matrix(sk).map_err(e)?;
+                        let r = realize_transfer(&g).map_err(e)?;
+                        (g, sections::TfRealization::from_transfer(&r), None)
                     } else {
-                        Some(
+                        let ss =
                             StateSpace::new(sk.a.clone(), sk.b.clone(), sk.c.clone(), sk.d.clone())
-                                .map_err(e)?,
-                        )
+                                .map_err(e)?;
+                        let g = ss.transfer_matrix().map_err(e)?;
+                        let m = crate::realization::minimal_kalman(&ss).map_err(e)?;
+                        // the minimal realization has the input's transfer matrix: checked
+                        // by the Markov parameters of both against g (in the report)
+                        let ok = m.verified && g.matches_markov(&m.system);
+                        let r =
+                            sections::TfRealization::from_state_space(&m.system, ok).map_err(e)?;
+                        (g, r, Some(ss))
                     };
                     let rep = sections::tf_report_quadratic(&g, &r, ss.as_ref()).map_err(e)?;
                     let ok = matches!(rep.get("verified"), Some(crate::report::Value::Bool(true)));

@@ -20,7 +20,7 @@ pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, kronecker_report,
     minreal_descriptor_report, pencil_report, tf_report,
 };
-pub use tf_field::tf_report_quadratic;
+pub use tf_field::{TfRealization, tf_report_quadratic};
 
 use crate::field::Field;
 use crate::float::{Tol, jordan_guess, to_dmatrix};

@@ -13,11 +13,12 @@
 use crate::algebraic::{factor_over_quadratic, norm_over_q};
 use crate::error::Result;
 use crate::field::{Field, QuadraticField};
+use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::realization::TransferRealization;
 use crate::report::{Report, Value};
-use crate::system::StateSpace;
 use crate::system::transfer::TransferMatrix;
+use crate::system::{Descriptor, StateSpace};
 
 fn ints(v: &[usize]) -> Value {
     Value::List(v.iter().map(|&x| Value::Int(x as i64)).collect())
@@ -156,6 +157,53 @@ fn zpk_string(num: &Poly<QuadraticField>, den: &Poly<QuadraticField>) -> Result<
     Ok(s)
 }
 
+/// A minimal realization of a transfer matrix over $K$ as `tf` reports it: from
+/// [`crate::realization::realize_transfer`] (descriptor input), or the Kalman minimal
+/// realization of a state-space input (same transfer matrix, far cheaper than realizing
+/// the transfer matrix's entries one by one).
+pub struct TfRealization {
+    /// Minimal system, finite block first (`E = diag(I, N)`; `E = I` when proper).
+    pub system: Descriptor<QuadraticField>,
+    /// Order of the finite block.
+    pub finite_order: usize,
+    /// Finite poles plus the orders of the poles at infinity.
+    pub mcmillan_degree: usize,
+    /// Its own checks held.
+    pub verified: bool,
+}
+
+impl TfRealization {
+    /// From a realization of the transfer matrix.
+    pub fn from_transfer(r: &TransferRealization<QuadraticField>) -> Self {
+        TfRealization {
+            system: r.minimal.system.clone(),
+            finite_order: r.minimal.finite_order,
+            mcmillan_degree: r.mcmillan_degree,
+            verified: r.verified,
+        }
+    }
+    /// From a verified-or-not minimal state-space realization.
+    ///
+    /// # Errors
+    /// Never for a valid system (shapes).
+    pub fn from_state_space(m: &StateSpace<QuadraticField>, verified: bool) -> Result<Self> {
+        let k = m.a.field().clone();
+        let n = m.nstates();
+        Ok(TfRealization {
+            system: Descriptor::new(
+                Matrix::identity(k, n),
+                m.a.clone(),
+                m.b.clone(),
+                m.c.clone(),
+                m.d.clone(),
+            )?,
+            finite_order: n,
+            mcmillan_degree: n,
+            verified,
+        })
+    }
+}
+
 /// `tf` over a quadratic field: the rational report's keys plus `field` and
 /// `pole_polynomial`; `ss` is the input state-space system when there is one (its Markov
 /// parameters are compared with the transfer matrix's).
@@ -164,11 +212,11 @@ fn zpk_string(num: &Poly<QuadraticField>, den: &Poly<QuadraticField>) -> Result<
 /// From the factorizations and the zero pencil.
 pub fn tf_report_quadratic(
     g: &TransferMatrix<QuadraticField>,
-    r: &TransferRealization<QuadraticField>,
+    r: &TfRealization,
     ss: Option<&StateSpace<QuadraticField>>,
 ) -> Result<Report> {
-    let sys = &r.minimal.system;
-    let nf = r.minimal.finite_order;
+    let sys = &r.system;
+    let nf = r.finite_order;
     let k = sys.a.field().clone();
     let pole_poly = sys.a.submatrix(0, nf, 0, nf).charpoly()?;
     let (poles, poles_ok) = factor_items(&pole_poly, "algebraic_multiplicity")?;
@@ -202,7 +250,7 @@ pub fn tf_report_quadratic(
         .list("transmission_zeros", tzeros)
         .with("infinite_zero_orders", ints(&zeros.infinite_zero_orders))
         .int("normal_rank", zeros.pencil.normal_rank - sys.nstates())
-        .int("order", r.minimal.order);
+        .int("order", sys.nstates());
     if ss.is_some() {
         rep = rep.bool("markov_verified", markov_ok);
     }
