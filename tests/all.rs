@@ -45,6 +45,8 @@ mod inputs;
 mod io;
 #[path = "jordan.rs"]
 mod jordan;
+#[path = "jordan_fields.rs"]
+mod jordan_fields;
 #[path = "latex.rs"]
 mod latex;
 #[path = "library_api.rs"]

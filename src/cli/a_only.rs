@@ -66,6 +66,10 @@ pub(super) fn a_command<K: Field + 'static>(
 ) -> Option<Result<Outcome, Failure>> {
     let e = |err| with_path(path, err);
     Some(match cmd {
+        Command::Jordan { real, .. } if irrational_quadratic(a).is_some() => {
+            let k = irrational_quadratic(a).expect("checked");
+            jordan_over_k_cmd(k, *real, path)
+        }
         Command::Jordan { real, expand, .. } => jordan_any(a).map_err(e).and_then(|jf| {
             if *real {
                 let rf = jf.real_form_with(*expand).map_err(e)?;
@@ -93,4 +97,46 @@ fn jordan_any<K: Field + 'static>(a: &Matrix<K>) -> crate::Result<crate::jordan:
         "Jordan form over {}",
         a.field()
     )))
+}
+
+/// `a` as a matrix over a quadratic field when some entry is not rational.
+fn irrational_quadratic<K: Field + 'static>(
+    a: &Matrix<K>,
+) -> Option<&Matrix<crate::field::QuadraticField>> {
+    let k = (a as &dyn std::any::Any).downcast_ref::<Matrix<crate::field::QuadraticField>>()?;
+    crate::matrix::to_rational_matrix(k).is_none().then_some(k)
+}
+
+/// `jordan [--real]` over K = Q(i) / Q(sqrt d) for a matrix with an irrational entry.
+fn jordan_over_k_cmd(
+    a: &Matrix<crate::field::QuadraticField>,
+    real: bool,
+    path: &Path,
+) -> Result<Outcome, Failure> {
+    let e = |err| with_path(path, err);
+    let k = a.field();
+    if real && !k.is_real() {
+        // the first entry with a nonzero imaginary part
+        let (i, j) = (0..a.nrows())
+            .flat_map(|i| (0..a.ncols()).map(move |j| (i, j)))
+            .find(|&(i, j)| k.to_rational(a.get(i, j)).is_none())
+            .unwrap_or((0, 0));
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{}: A is not real (entry ({}, {}) = {}), so it has no real Jordan form; \
+                 `jordan` gives its Jordan form over {k}",
+                path.display(),
+                i + 1,
+                j + 1,
+                k.fmt_elem(a.get(i, j))
+            ),
+        });
+    }
+    let jf = crate::jordan::over_k::jordan_over_k(a).map_err(e)?;
+    if real {
+        let rf = jf.real_form().map_err(e)?;
+        return Ok(Outcome::new(rf.report(), rf.verified));
+    }
+    Ok(Outcome::new(jf.report(), jf.verified))
 }

@@ -165,6 +165,12 @@ impl SystemVisitor for FileCommand<'_> {
                 a_command(self.cmd, &t.a_raw, path).expect("an A-only command")
             }
             Command::Modes { .. } => {
+                // exact over Q and the quadratic fields Q(i), Q(sqrt d)
+                if let Some(a) = quadratic(&s.a) {
+                    return Ok(Outcome::plain(
+                        realization::modal_table_over_k(a).map_err(e)?.report(),
+                    ));
+                }
                 let q = needs_rational(f, t, "the modal table")?;
                 Ok(Outcome::plain(
                     realization::modal_table(&q.ss.a).map_err(e)?.report(),
@@ -256,6 +262,14 @@ fn mnf<K: Field>(s: &crate::system::StateSpace<K>, path: &Path) -> Result<Outcom
     Ok(Outcome::new(m.report(), !m.exists || m.verified))
 }
 
+/// `a` as a matrix over a quadratic field $\mathbb{Q}(i)$ / $\mathbb{Q}(\sqrt d)$ (files whose
+/// entries are all rational are typed over $\mathbb{Q}$ by the loader).
+fn quadratic<K: Field + 'static>(
+    a: &crate::matrix::Matrix<K>,
+) -> Option<&crate::matrix::Matrix<crate::field::QuadraticField>> {
+    (a as &dyn std::any::Any).downcast_ref()
+}
+
 /// The system over Q, or exit 2 naming the field when the file's entries lie in a larger one.
 fn needs_rational<'t, K: Field + 'static>(
     f: &SystemFile,
@@ -280,6 +294,13 @@ fn minreal<K: Field + 'static>(
 ) -> Result<Outcome, Failure> {
     let m = match method {
         MethodArg::Jordan => {
+            // exact over Q(i) / Q(sqrt d) too: the complex modal form
+            if let Some(s) = (&t.ss as &dyn std::any::Any)
+                .downcast_ref::<crate::system::StateSpace<crate::field::QuadraticField>>()
+            {
+                let r = realization::minimal_jordan_over_k(s).map_err(|e| with_path(path, e))?;
+                return Ok(Outcome::new(r.report(), r.verified));
+            }
             let q = needs_rational(f, t, "the Jordan-form method")?;
             let r = realization::minimal_jordan(&q.ss).map_err(|e| with_path(path, e))?;
             return Ok(Outcome::new(r.report(), r.verified));

@@ -38,6 +38,7 @@
 
 pub mod chains;
 pub(crate) mod coeffs;
+pub mod over_k;
 pub mod params;
 pub mod primary;
 pub mod real;
@@ -183,11 +184,10 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
 /// $\mathbb{Q}(i)$).
 ///
 /// A matrix whose entries are all rational is decomposed exactly by [`jordan`]. A matrix
-/// with irrational entries is not supported yet: its characteristic polynomial lies in
-/// $\mathbb{Q}(\sqrt d)\[x\]$ and needs the factorization over $\mathbb{Q}(\sqrt d)$ and
-/// components over absolute fields $\mathbb{Q}(\sqrt d)\[t\]/(q)$, which
-/// [`JordanForm`] (a rational matrix and a rational characteristic polynomial) cannot
-/// carry; the error says so instead of answering approximately.
+/// with irrational entries is decomposed by [`over_k::jordan_over_k`] into an
+/// [`over_k::JordanFormK`] (components over the relative fields $K\[t\]/(g)$, which
+/// [`JordanForm`], a rational matrix and a rational characteristic polynomial, cannot
+/// carry); this function refuses it with a typed error pointing there.
 ///
 /// # Errors
 /// `Unsupported` for an entry outside $\mathbb{Q}$; those of [`jordan`] otherwise.
@@ -211,9 +211,8 @@ pub fn jordan_quadratic(a: &Matrix<crate::field::QuadraticField>) -> Result<Jord
         for j in 0..a.ncols() {
             let Some(q) = k.to_rational(a.get(i, j)) else {
                 return Err(crate::error::Error::Unsupported(format!(
-                    "Jordan form over {k}: entry ({}, {}) = {} is not rational; exact \
-                     decomposition over a quadratic field is not implemented (only rational \
-                     matrices are)",
+                    "Jordan form over {k}: entry ({}, {}) = {} is not rational; the \
+                     decomposition over {k} is jordan::over_k::jordan_over_k",
                     i + 1,
                     j + 1,
                     k.fmt_elem(a.get(i, j))

@@ -16,8 +16,9 @@
 //! | `MinrealMethod::Rosenbrock` | staircase of exact row compressions of $[A\ B; C\ 0]$, then of the dual (paper sec. 2.3) |
 //! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
 //! | [`minimal_jordan`] | Jordan-form method (sec. 3.3): drop non-contributing modes, compact repeated ones, real Jordan blocks |
+//! | [`minimal_jordan_over_k`] | the same over $\mathbb{Q}(i)$ / $\mathbb{Q}(\sqrt d)$: complex modal blocks per eigenvalue |
 //! | [`descriptor_to_standard`] | Weierstrass-type split of $(E, A)$ without inverting $E$ |
-//! | [`modal_table`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
+//! | [`modal_table`], [`modal_table_over_k`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
 mod controllability;
@@ -28,6 +29,7 @@ mod from_transfer;
 mod gramian;
 mod ho_kalman;
 mod jordan_method;
+mod jordan_method_k;
 mod kalman;
 mod method;
 mod minimal;
@@ -51,10 +53,11 @@ pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{
     JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational, minimal_jordan_with,
 };
+pub use jordan_method_k::{JordanMinimalK, ModalBlockK, minimal_jordan_over_k};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
-pub use modal::{ModalTable, Mode, modal_table};
+pub use modal::{ModalTable, Mode, modal_table, modal_table_over_k};
 pub use rosenbrock::{controllable_staircase, minimal_rosenbrock};
 pub use weierstrass::{
     WeierstrassSplit, descriptor_transfer_matrix, eval_transfer, same_transfer, weierstrass_split,

@@ -32,6 +32,9 @@ pub struct Mode {
     pub period_s: Option<f64>,
     /// Exact closed forms where the minimal polynomial has degree <= 2.
     pub exact: Vec<(String, String)>,
+    /// The row stands for a conjugate pair (a real matrix); `false` for a real eigenvalue and
+    /// for each eigenvalue of a non-real matrix over $\mathbb{Q}(i)$ (listed one by one).
+    pub paired: bool,
 }
 
 /// The modal table of a rational matrix.
@@ -63,46 +66,82 @@ pub fn modal_table(a: &Matrix<Q>) -> Result<ModalTable> {
         if im < 0.0 {
             continue; // the conjugate is listed
         }
-        let wn = re.hypot(im);
-        let mut exact = vec![];
-        let mp = lam.minpoly();
-        if mp.deg() == 1 {
-            let l = -mp.coeff(0);
-            if !l.is_zero() {
-                exact.push(("time_constant_s".into(), fmt_rational(&(-l.recip()))));
-                exact.push(("natural_frequency_rad_s".into(), fmt_rational(&l.abs())));
-            }
-        } else if mp.deg() == 2 && im > 0.0 {
-            let (a0, a1) = (mp.coeff(0), mp.coeff(1));
-            exact.push(("natural_frequency_squared".into(), fmt_rational(&a0)));
-            exact.push(("natural_frequency_rad_s".into(), sqrt_display(&a0)));
-            // zeta = a1 / (2 sqrt(a0)) = sqrt(a1^2 / (4 a0)) with the sign of a1
-            let z2 = &a1 * &a1 / (Rational::from_integer(4.into()) * &a0);
-            let z = sqrt_display(&z2);
-            exact.push((
-                "damping_ratio".into(),
-                if a1.is_negative() { format!("-{z}") } else { z },
-            ));
-            if !a1.is_zero() {
-                exact.push((
-                    "time_constant_s".into(),
-                    fmt_rational(&(Rational::from_integer(2.into()) / &a1)),
-                ));
-            }
-        }
-        modes.push(Mode {
-            eigenvalue: lam.value_string(),
-            minpoly: mp.to_string(),
-            approx: (re, im),
-            multiplicity: mult,
-            frequency_hz: wn / (2.0 * PI),
-            damping_ratio: (wn > 0.0).then(|| -re / wn + 0.0),
-            time_constant_s: (re != 0.0).then(|| -1.0 / re),
-            period_s: (im > 0.0).then(|| 2.0 * PI / im),
-            exact,
-        });
+        modes.push(mode(&lam, (re, im), mult, im > 0.0));
     }
     Ok(ModalTable { modes })
+}
+
+/// The modal table of a matrix over a quadratic field $K$ (eigenvalues from
+/// [`crate::jordan::over_k::eigenvalues_over_k`]). Over a real $K$ ($A$ real) a complex pair
+/// is one mode, as over $\mathbb{Q}$; over $\mathbb{Q}(i)$ the eigenvalues of a non-real $A$
+/// do not come in conjugate pairs, so each is listed (its damping ratio and time constant
+/// from its real part, its period from $|\mathrm{Im}\,\lambda|$).
+///
+/// # Errors
+/// `NotSquare`; those of the factorization over $K$ and of root isolation.
+pub fn modal_table_over_k(a: &Matrix<QuadraticField>) -> Result<ModalTable> {
+    let (_, factors) = crate::jordan::over_k::eigenvalues_over_k(a)?;
+    let real = a.field().is_real() || crate::matrix::to_rational_matrix(a).is_some();
+    let mut modes = vec![];
+    for (_, mult, _, roots) in factors {
+        for (lam, z) in roots {
+            if real && z.1 < 0.0 {
+                continue; // the conjugate is listed
+            }
+            modes.push(mode(&lam, z, mult, real && z.1 > 0.0));
+        }
+    }
+    Ok(ModalTable { modes })
+}
+
+/// One row: the figures of `lam` (approximation `(re, im)`, algebraic multiplicity `mult`;
+/// `paired` when the row stands for `lam` and its conjugate).
+fn mode(
+    lam: &crate::algebraic::AlgebraicNumber,
+    (re, im): (f64, f64),
+    mult: usize,
+    paired: bool,
+) -> Mode {
+    let wn = re.hypot(im);
+    let mut exact = vec![];
+    let mp = lam.minpoly();
+    if mp.deg() == 1 {
+        let l = -mp.coeff(0);
+        if !l.is_zero() {
+            exact.push(("time_constant_s".into(), fmt_rational(&(-l.recip()))));
+            exact.push(("natural_frequency_rad_s".into(), fmt_rational(&l.abs())));
+        }
+    } else if mp.deg() == 2 && im != 0.0 {
+        // mp = (x - lam)(x - conj lam): a0 = |lam|^2, a1 = -2 Re lam
+        let (a0, a1) = (mp.coeff(0), mp.coeff(1));
+        exact.push(("natural_frequency_squared".into(), fmt_rational(&a0)));
+        exact.push(("natural_frequency_rad_s".into(), sqrt_display(&a0)));
+        // zeta = a1 / (2 sqrt(a0)) = sqrt(a1^2 / (4 a0)) with the sign of a1
+        let z2 = &a1 * &a1 / (Rational::from_integer(4.into()) * &a0);
+        let z = sqrt_display(&z2);
+        exact.push((
+            "damping_ratio".into(),
+            if a1.is_negative() { format!("-{z}") } else { z },
+        ));
+        if !a1.is_zero() {
+            exact.push((
+                "time_constant_s".into(),
+                fmt_rational(&(Rational::from_integer(2.into()) / &a1)),
+            ));
+        }
+    }
+    Mode {
+        eigenvalue: lam.value_string(),
+        minpoly: mp.to_string(),
+        approx: (re, im),
+        multiplicity: mult,
+        frequency_hz: wn / (2.0 * PI),
+        damping_ratio: (wn > 0.0).then(|| -re / wn + 0.0),
+        time_constant_s: (re != 0.0).then(|| -1.0 / re),
+        period_s: (im != 0.0).then(|| 2.0 * PI / im.abs()),
+        exact,
+        paired,
+    }
 }
 
 impl ModalTable {}

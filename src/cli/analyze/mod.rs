@@ -16,7 +16,7 @@ mod runner;
 use super::budget::{Budget, Events};
 use super::{Failure, Outcome};
 use crate::error::Error;
-use crate::field::{Field, Q};
+use crate::field::{Field, Q, QuadraticField};
 use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, sections, str_list};
@@ -137,8 +137,11 @@ pub fn analyze_with<K: Field + 'static>(
         );
         secs.push("zeros", not_applicable("invariant zeros", why));
     }
+    let quad = (t as &dyn std::any::Any).downcast_ref::<TypedSystem<QuadraticField>>();
     if let Some(q) = as_rational(t) {
         rational_sections(&fa, Arc::new(q.clone()), &mut secs, opts.full);
+    } else if let Some(q) = quad {
+        quadratic_sections(Arc::new(q.clone()), &mut secs);
     } else {
         let why = format!(
             "needs rational matrices; this file's entries lie in {}",
@@ -368,6 +371,113 @@ fn rational_sections(f: &Arc<SystemFile>, t: Arc<TypedSystem<Q>>, secs: &mut Sec
         Err(v) => v,
     };
     secs.push("modes", sec);
+}
+
+/// The Jordan form (with the real form over a real field), PBH tests and the modal table
+/// over a quadratic field $K$ ([`crate::jordan::over_k`]).
+fn quadratic_sections(t: Arc<TypedSystem<QuadraticField>>, secs: &mut Sections) {
+    let title = "eigenvalues and Jordan form";
+    let tt = t.clone();
+    let jf = match secs.run(title, Insist::Command("jordan"), move || {
+        crate::jordan::over_k::jordan_over_k(&tt.ss.a).map(|jf| {
+            let rep = jf.report();
+            (Arc::new(jf), rep)
+        })
+    }) {
+        Ok(Ok((jf, mut sec))) => {
+            secs.verified &= jf.verified;
+            sec.title = Some(title.into());
+            if jf.base().is_real() {
+                let title = "Real Jordan form";
+                let j = jf.clone();
+                let real = match secs.run(title, Insist::Command("jordan --real"), move || {
+                    j.real_form().map(|rf| (rf.verified, rf.report()))
+                }) {
+                    Ok(Ok((ok, rep))) => {
+                        secs.verified &= ok;
+                        Value::Obj(rep)
+                    }
+                    Ok(Err(e)) => failed(title, &e),
+                    Err(v) => v,
+                };
+                sec.push("real_form", real);
+            } else {
+                sec.push(
+                    "real_form",
+                    not_applicable("Real Jordan form", "A is not real (entries in QQ(i))"),
+                );
+            }
+            secs.push("jordan", Value::Obj(sec));
+            Some(jf)
+        }
+        Ok(Err(e)) => {
+            secs.push("jordan", failed(title, &e));
+            None
+        }
+        Err(v) => {
+            secs.push("jordan", v);
+            None
+        }
+    };
+    let s = &t.ss;
+    if s.ninputs() > 0 {
+        let title = "PBH tests (exact, one test per irreducible factor)";
+        let tt = t.clone();
+        let sec = match secs.run(title, Insist::Analyze, move || {
+            pbh_over_k(jf.as_deref(), &tt)
+        }) {
+            Ok(Some((pc, po))) => Value::Obj(
+                Report::titled(title)
+                    .bool("controllable", pc)
+                    .bool("observable", po),
+            ),
+            Ok(None) => not_applicable(title, "the Jordan form was not computed"),
+            Err(v) => v,
+        };
+        secs.push("pbh", sec);
+    } else {
+        secs.push(
+            "pbh",
+            not_applicable("PBH tests", "the system has no inputs"),
+        );
+    }
+    let title = "modal table";
+    let tt = t.clone();
+    let sec = match secs.run(title, Insist::Command("modes"), move || {
+        realization::modal_table_over_k(&tt.ss.a).map(|m| m.report())
+    }) {
+        Ok(Ok(rep)) => Value::Obj(rep),
+        Ok(Err(e)) => failed(title, &e),
+        Err(v) => v,
+    };
+    secs.push("modes", sec);
+}
+
+/// PBH over $K$ from the Jordan form, per factor $g$ in $E = K\[t\]/(g)$: the left
+/// eigenvectors of $t$ are the rows of $W$ ending a Jordan block (they span the left
+/// eigenspace) and the right ones the columns of $V$ starting one, so $(A, B)$ is
+/// controllable at $t$ iff $W_{\text{ends}} B$ has full row rank (the number of blocks), and
+/// observable iff $C V_{\text{starts}}$ has full column rank (`None` without a Jordan form).
+fn pbh_over_k(
+    jf: Option<&crate::jordan::over_k::JordanFormK>,
+    t: &TypedSystem<QuadraticField>,
+) -> Option<(bool, bool)> {
+    let s = &t.ss;
+    let (mut pc, mut po) = (true, true);
+    for c in &jf?.components {
+        let e = &c.field;
+        let lift = |m: &crate::matrix::Matrix<QuadraticField>| m.map(e, |x| e.from_base(x));
+        let (mut starts, mut ends, mut off) = (vec![], vec![], 0);
+        for &b in &c.blocks {
+            starts.push(off);
+            ends.push(off + b - 1);
+            off += b;
+        }
+        let nb = c.blocks.len();
+        pc &= (&c.left_chains.select_rows(&ends) * &lift(&s.b)).rank() == nb;
+        po &= (&lift(&s.c) * &c.chains.select_cols(&starts)).rank() == nb;
+    }
+    Some((pc, po))
 }
 
 /// The mechanical normal form (over any exact field), under its budget.

@@ -8,6 +8,7 @@
 
 mod algebraic;
 mod jordan;
+mod jordan_k;
 mod mpoly;
 mod pencil;
 mod realization;
@@ -17,8 +18,8 @@ mod tf_field;
 pub use algebraic::{factor_report, roots_report};
 pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{
-    ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, kronecker_report,
-    minreal_descriptor_report, pencil_report, tf_report,
+    ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,
+    kronecker_report, minreal_descriptor_report, pencil_report, tf_report,
 };
 pub use tf_field::{TfRealization, tf_report_quadratic};
 

@@ -25,8 +25,12 @@ fn approx(a: (f64, f64)) -> Value {
 
 /// Eigenvalue objects (`minpoly`, `value`, `approx`, multiplicities, `blocks`) of a Jordan form.
 pub fn eigen_items(jf: &JordanForm) -> Vec<Value> {
-    jf.eigenvalues
-        .iter()
+    eigenvalue_items(&jf.eigenvalues)
+}
+
+/// Eigenvalue objects of a list of eigenvalues (rational or quadratic-field Jordan forms).
+pub fn eigenvalue_items(evs: &[crate::jordan::Eigenvalue]) -> Vec<Value> {
+    evs.iter()
         .map(|e| {
             Value::Obj(
                 Report::new()

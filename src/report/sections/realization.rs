@@ -219,15 +219,18 @@ impl ModalTable {
     }
 }
 
-/// One row of the modal table's text: the mode (exact when short, the pair as `a ± b i`
-/// otherwise), its multiplicity, frequency in Hz, damping ratio and time constant.
+/// One row of the modal table's text: the mode (exact when short, the pair as `a ± b i`,
+/// an unpaired eigenvalue of a non-real matrix as `a + b i`, otherwise), its multiplicity, frequency in Hz, damping ratio and time constant.
 fn mode_row(m: &crate::realization::Mode) -> Vec<String> {
     use crate::report::text::{MAX_EXACT_ENTRY, short};
     let (re, im) = m.approx;
     let mode = if m.eigenvalue.chars().count() <= MAX_EXACT_ENTRY {
         m.eigenvalue.clone()
-    } else if im > 0.0 {
+    } else if m.paired {
         format!("{} ± {}i (approx.)", short(re), short(im))
+    } else if im != 0.0 {
+        let sign = if im > 0.0 { "+" } else { "-" };
+        format!("{} {sign} {}i (approx.)", short(re), short(im.abs()))
     } else {
         format!("{} (approx.)", short(re))
     };

@@ -1,0 +1,300 @@
+//! Exact Jordan decomposition over a quadratic field $K = \mathbb{Q}(\alpha)$, $\alpha = i$ or
+//! $\sqrt d$ (the matrices the reader types as `QQ(i)` / `QQ(sqrt(d))`).
+//!
+//! # Design
+//! For $A \in K^{n \times n}$, $\chi_A \in K\[x\]$ is factored over $K$ into $\prod g^{e}$
+//! with Trager's norm method ([`eigen::factor_over_k`], the existing
+//! [`crate::algebraic::factor_over_number_field`]). For each factor $g$ the chains are
+//! computed once, for the generic root $t$, in the **relative** extension
+//! $E = K\[t\]/(g)$ ([`RelField`], a [`crate::field::Field`], so the generic
+//! [`super::chains::jordan_chains`] applies): $A V = V J_t$, $W A = J_t W$, $W V = I$ are
+//! checked exactly in $E$. No absolute primitive element of $E$ over $\mathbb{Q}$ is
+//! needed: the eigenvalues' certified form comes from their minimal polynomial over
+//! $\mathbb{Q}$, $m = g$ or $g \bar g$, and an exact choice of which roots of $m$ are
+//! roots of $g$ ([`eigen::roots_of_factor`]).
+//!
+//! **Embeddings.** The eigenvalues of $A$ are the roots $\theta_j$ of $g$ under the
+//! embeddings of $E$ that keep $\alpha$ at its value in $K$ ($i$, or $\sqrt d > 0$). The
+//! embeddings sending $\alpha \mapsto -\alpha$ give the eigenvalues of $\bar A$ (the Galois
+//! conjugate matrix), never of $A$: for the triangular $A$ with diagonal $i, 2i$ the
+//! eigenvalues are $i, 2i$, not $-i$. Each $\theta_j$ marks $E$ at that root
+//! ([`JordanFormK::root_field`]): $t \mapsto \theta_j$ carries the chains to those of
+//! $\theta_j$ (conjugation over $K$, never a per-root computation).
+//!
+//! A matrix whose entries all lie in $\mathbb{Q}$ keeps the rational code path
+//! ([`super::jordan`]): callers dispatch on that (see `jordan_quadratic`).
+//!
+//! # Presentation
+//! Eigenvalues display like the rational ones (closed form when $\deg m \le 2$, e.g.
+//! `2 + sqrt(6)`, else `root of m near ...`). The columns of $\theta_j$ lie in $E$ at
+//! $\theta_j$: for $\deg g = 1$ in $K$ itself (all linear: one matrix over $K$); for a
+//! rational quadratic $g$ with roots $a_0 \pm s\sqrt f$ as `u + v*sqrt(f)`, $u, v \in K$;
+//! otherwise as polynomials in the root's symbol `r<k>` with coefficients in $K$.
+
+pub mod eigen;
+pub mod real;
+pub mod relfield;
+mod simple;
+
+pub use real::RealFormK;
+pub use relfield::{RelElem, RelField};
+
+use super::Eigenvalue;
+use super::chains::{Chains, jordan_block_matrix, jordan_chains};
+use crate::error::Result;
+use crate::field::QuadraticField;
+use crate::matrix::Matrix;
+use crate::poly::Poly;
+
+/// The data of one irreducible factor $g$ of $\chi_A$ over $K$, in $E = K\[t\]/(g)$.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ComponentK {
+    /// The monic irreducible factor $g \in K\[x\]$.
+    pub factor: Poly<QuadraticField>,
+    /// The minimal polynomial over $\mathbb{Q}$ of its roots ($g$ or $g\bar g$).
+    pub minpoly: Poly<crate::field::Q>,
+    /// Multiplicity of $g$ in $\chi_A$.
+    pub multiplicity: usize,
+    /// $E = K\[t\]/(g)$ marked at `roots[0]`.
+    pub field: RelField,
+    /// Approximations of the roots of $g$ (the eigenvalues of this factor).
+    pub roots: Vec<(f64, f64)>,
+    /// Jordan block sizes of each root, largest first.
+    pub blocks: Vec<usize>,
+    /// $\dim \ker (A - tI)^k$ over $E$.
+    pub kernel_dims: Vec<usize>,
+    /// Right chains $V$ ($n \times m$): $A V = V J_t$.
+    pub chains: Matrix<RelField>,
+    /// Left chains $W$ ($m \times n$): $W A = J_t W$, $W V = I$.
+    pub left_chains: Matrix<RelField>,
+}
+
+impl ComponentK {
+    /// The generic root $t \in E$.
+    pub fn root_elem(&self) -> RelElem {
+        self.field.generator()
+    }
+    /// $J_t$ over $E$.
+    pub fn jordan_matrix(&self) -> Matrix<RelField> {
+        jordan_block_matrix(&self.field, &self.root_elem(), &self.blocks)
+    }
+    /// Exact check in $E$ of $A V = V J_t$, $W A = J_t W$, $W V = I$.
+    pub fn verify(&self, a: &Matrix<QuadraticField>) -> bool {
+        let (v, w) = (&self.chains, &self.left_chains);
+        if v.nrows() != a.nrows() || v.ncols() != self.multiplicity {
+            return false;
+        }
+        let ak = lift(a, &self.field);
+        let j = self.jordan_matrix();
+        &ak * v == v * &j && w * &ak == &j * w && (w * v).is_identity()
+    }
+}
+
+/// `a` with entries in $E \supset K$.
+pub(crate) fn lift(a: &Matrix<QuadraticField>, e: &RelField) -> Matrix<RelField> {
+    a.map(e, |x| e.from_base(x))
+}
+
+/// The exact Jordan decomposition of a matrix over $K$.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JordanFormK {
+    /// The input matrix.
+    pub a: Matrix<QuadraticField>,
+    /// $\chi_A \in K\[x\]$.
+    pub charpoly: Poly<QuadraticField>,
+    /// One component per irreducible factor of $\chi_A$ over $K$.
+    pub components: Vec<ComponentK>,
+    /// All eigenvalues of $A$, component by component.
+    pub eigenvalues: Vec<Eigenvalue>,
+    /// Every component's identities held exactly and the dimensions add up to $n$.
+    pub verified: bool,
+}
+
+/// One irreducible factor $g$ over $K$, its multiplicity, the minimal polynomial over
+/// $\mathbb{Q}$ of its roots and the certified roots of $g$.
+pub type FactorRoots = (
+    Poly<QuadraticField>,
+    usize,
+    Poly<crate::field::Q>,
+    eigen::CertifiedRoots,
+);
+
+/// The eigenvalues of $A$ over $K$ without chains: per irreducible factor $g$ of
+/// $\chi_A$ over $K$ (multiplicity $e$), $g$, $e$, the minimal polynomial over
+/// $\mathbb{Q}$ and the certified roots of $g$ (see [`eigen::roots_of_factor`]).
+///
+/// # Errors
+/// `NotSquare`; those of the factorization and root isolation.
+pub fn eigenvalues_over_k(
+    a: &Matrix<QuadraticField>,
+) -> Result<(Poly<QuadraticField>, Vec<FactorRoots>)> {
+    a.check_square("jordan")?;
+    let chi = a.charpoly()?;
+    let mut out = vec![];
+    if chi.deg() == 0 {
+        return Ok((chi, out));
+    }
+    for (g, e) in eigen::factor_over_k(&chi)? {
+        let (m, roots) = eigen::roots_of_factor(&g)?;
+        out.push((g, e, m, roots));
+    }
+    Ok((chi, out))
+}
+
+/// Exact Jordan decomposition of a square matrix over a quadratic field (module docs).
+///
+/// # Errors
+/// `NotSquare`; `Limit` from the factorization or root isolation; `Verification` if an
+/// internal identity fails.
+///
+/// # Examples
+/// ```
+/// use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
+/// use exactlti::jordan::over_k::jordan_over_k;
+/// use exactlti::matrix::Matrix;
+/// let k = QuadraticField::gaussian();
+/// let q = |a: i64, b: i64| Quadratic::new(Rational::from_integer(a.into()), Rational::from_integer(b.into()));
+/// // the Hermitian [[1, 2+i], [2-i, 3]]: eigenvalues 2 +- sqrt(6)
+/// let a = Matrix::from_rows(k, vec![vec![q(1, 0), q(2, 1)], vec![q(2, -1), q(3, 0)]]).unwrap();
+/// let jf = jordan_over_k(&a).unwrap();
+/// let values: Vec<&str> = jf.eigenvalues.iter().map(|e| e.value.as_str()).collect();
+/// assert_eq!(values, ["2 + sqrt(6)", "2 - sqrt(6)"]);
+/// assert!(jf.verified);
+/// ```
+pub fn jordan_over_k(a: &Matrix<QuadraticField>) -> Result<JordanFormK> {
+    let n = a.nrows();
+    let (chi, factors) = eigenvalues_over_k(a)?;
+    let mut components = vec![];
+    let mut eigenvalues = vec![];
+    for (g, e, m, roots) in factors {
+        let approx: Vec<(f64, f64)> = roots.iter().map(|z| z.1).collect();
+        let field = RelField::new(&g, approx[0], "t");
+        let t = field.generator();
+        let Chains {
+            blocks,
+            kernel_dims,
+            v,
+            w,
+        } = if e == 1 && g.deg() >= 2 {
+            // a simple eigenvalue: Krylov vectors, no elimination in E
+            let (v, w) = simple::simple_chains(a, &chi, &field)?;
+            Chains {
+                blocks: vec![1],
+                kernel_dims: vec![1],
+                v,
+                w,
+            }
+        } else {
+            let nm = lift(a, &field).try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;
+            jordan_chains(&nm, e)?
+        };
+        let ci = components.len();
+        for (j, (number, z)) in roots.into_iter().enumerate() {
+            let k = eigenvalues.len() + 1;
+            eigenvalues.push(Eigenvalue {
+                minpoly: m.clone(),
+                value: super::roots::value_string(&m, z),
+                approx: z,
+                number,
+                component: ci,
+                root: j,
+                symbol: format!("r{k}"),
+                algebraic_multiplicity: e,
+                geometric_multiplicity: blocks.len(),
+                blocks: blocks.clone(),
+            });
+        }
+        components.push(ComponentK {
+            factor: g,
+            minpoly: m,
+            multiplicity: e,
+            field,
+            roots: approx,
+            blocks,
+            kernel_dims,
+            chains: v,
+            left_chains: w,
+        });
+    }
+    let dim: usize = components
+        .iter()
+        .map(|c| c.factor.deg() * c.multiplicity)
+        .sum();
+    let verified = dim == n && components.iter().all(|c| c.verify(a));
+    Ok(JordanFormK {
+        a: a.clone(),
+        charpoly: chi,
+        components,
+        eigenvalues,
+        verified,
+    })
+}
+
+impl JordanFormK {
+    /// Size of $A$.
+    pub fn n(&self) -> usize {
+        self.a.nrows()
+    }
+    /// The base field $K$.
+    pub fn base(&self) -> &QuadraticField {
+        self.a.field()
+    }
+    /// $E$ of eigenvalue `ev`'s component marked at that eigenvalue (display symbol
+    /// `r<k>`, or the radical for a rational quadratic factor).
+    pub fn root_field(&self, ev: usize) -> RelField {
+        let e = &self.eigenvalues[ev];
+        let c = &self.components[e.component];
+        let radical = if c.factor.deg() == 2 && c.minpoly.deg() == 2 {
+            super::roots::quadratic_roots(&c.minpoly).map(|(a0, s, f)| {
+                let positive = if num_traits::Signed::is_negative(&f) {
+                    e.approx.1 > 0.0
+                } else {
+                    e.approx.0 > crate::field::rational_to_f64(&a0)
+                };
+                (a0, if positive { s } else { -s }, f)
+            })
+        } else {
+            None
+        };
+        c.field.marked(e.approx, &e.symbol, radical)
+    }
+    /// Per eigenvalue: its field, $\sigma_j(V)$ ($n \times m$) and $\sigma_j(J_t)$.
+    pub fn root_columns(&self) -> Vec<(RelField, Matrix<RelField>, Matrix<RelField>)> {
+        (0..self.eigenvalues.len())
+            .map(|ev| {
+                let c = &self.components[self.eigenvalues[ev].component];
+                let f = self.root_field(ev);
+                let v = c.chains.map(&f, |x| x.clone());
+                let j = c.jordan_matrix().map(&f, |x| x.clone());
+                (f, v, j)
+            })
+            .collect()
+    }
+    /// $J$ and $T$ over $K$ when every eigenvalue lies in $K$ (all factors linear).
+    pub fn single_field(&self) -> Option<(Matrix<QuadraticField>, Matrix<QuadraticField>)> {
+        if self.components.iter().any(|c| c.factor.deg() != 1) {
+            return None;
+        }
+        let k = self.base().clone();
+        let n = self.n();
+        let mut t = Matrix::zeros(k.clone(), n, n);
+        let mut j = Matrix::zeros(k.clone(), n, n);
+        let mut off = 0;
+        for (f, v, jj) in self.root_columns() {
+            let m = v.ncols();
+            let b = |x: &RelElem| f.to_base(x).expect("a linear factor's field is K");
+            for r in 0..n {
+                for q in 0..m {
+                    t.set(r, off + q, b(v.get(r, q)));
+                }
+            }
+            for r in 0..m {
+                for q in 0..m {
+                    j.set(off + r, off + q, b(jj.get(r, q)));
+                }
+            }
+            off += m;
+        }
+        Some((j, t))
+    }
+}
