@@ -29,6 +29,8 @@ mod display;
 mod everyday;
 #[path = "field_axioms.rs"]
 mod field_axioms;
+#[path = "fields_float.rs"]
+mod fields_float;
 #[path = "float.rs"]
 mod float;
 #[path = "float_era.rs"]

@@ -229,7 +229,7 @@ impl SystemVisitor for FileCommand<'_> {
             }
             Command::Check { .. } => {
                 let extra = match as_rational(t) {
-                    Some(q) => super::float_cmds::jordan_comparison(&q.a_raw, path)?,
+                    Some(q) => super::float_compare::jordan_comparison(&q.a_raw, path)?,
                     None => vec![],
                 };
                 let r = super::float_cmds::check(t, path, extra)?;

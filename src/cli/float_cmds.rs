@@ -1,13 +1,15 @@
 //! Commands that run the float backend: `freqresp`, `minreal --method era`, `check`.
 
 use super::Failure;
+use super::float_compare::{Items, MAX_FLOAT_ZEROS_SIDE, claim_str};
 use crate::field::Field;
-use crate::float::{self, Tol, Truth, to_dmatrix};
+use crate::float::{self, FloatScalar, Tol, to_cmatrix, to_dmatrix};
 use crate::io::TypedSystem as Typed;
 use crate::realization;
 use crate::report::plot::{Response, logspace, response_csv, response_table};
 use crate::report::{Report, Value};
 use nalgebra::DMatrix;
+use num_complex::Complex;
 use std::path::Path;
 
 fn fail(path: &Path, e: crate::error::Error) -> Failure {
@@ -18,35 +20,44 @@ fn fail(path: &Path, e: crate::error::Error) -> Failure {
     }
 }
 
-fn float_abcd<K: Field>(t: &Typed<K>, path: &Path) -> Result<[DMatrix<f64>; 4], Failure> {
-    let s = &t.ss;
-    let conv = |m| to_dmatrix(m).map_err(|e| fail(path, e));
-    Ok([conv(&s.a)?, conv(&s.b)?, conv(&s.c)?, conv(&s.d)?])
+/// The float image of a system: real when every entry is real under the field's
+/// embedding, complex otherwise (a system over $\mathbb{Q}(i)$ with a non-real entry).
+pub(crate) enum FloatAbcd {
+    Real([DMatrix<f64>; 4]),
+    Complex([DMatrix<Complex<f64>>; 4]),
 }
 
-fn dm_report(r: Report, name: &str, m: &DMatrix<f64>) -> Report {
+pub(crate) fn float_abcd<K: Field>(t: &Typed<K>, path: &Path) -> Result<FloatAbcd, Failure> {
+    let s = &t.ss;
+    let conv = |m| to_cmatrix(m).map_err(|e| fail(path, e));
+    let c = [conv(&s.a)?, conv(&s.b)?, conv(&s.c)?, conv(&s.d)?];
+    if c.iter().all(|m| m.iter().all(|z| z.im == 0.0)) {
+        let conv = |m| to_dmatrix(m).map_err(|e| fail(path, e));
+        Ok(FloatAbcd::Real([
+            conv(&s.a)?,
+            conv(&s.b)?,
+            conv(&s.c)?,
+            conv(&s.d)?,
+        ]))
+    } else {
+        Ok(FloatAbcd::Complex(c))
+    }
+}
+
+/// A float matrix in a report: numbers for a real matrix, `[re, im]` pairs for a complex one.
+fn dm_report<T: FloatScalar>(r: Report, name: &str, m: &DMatrix<T>) -> Report {
+    let complex = m.iter().any(|z| z.imaginary() != 0.0);
+    let entry = |z: T| {
+        if complex {
+            Value::List(vec![Value::Float(z.real()), Value::Float(z.imaginary())])
+        } else {
+            Value::Float(z.real())
+        }
+    };
     let rows = (0..m.nrows())
-        .map(|i| Value::List((0..m.ncols()).map(|j| Value::Float(m[(i, j)])).collect()))
+        .map(|i| Value::List((0..m.ncols()).map(|j| entry(m[(i, j)])).collect()))
         .collect();
     r.with(name, Value::List(rows))
-}
-
-/// The label of a float claim beside the exact answer: a claim the exact path refutes is
-/// `"false"`, never `"true"`, whatever its own gap test said.
-fn claim_str(agree: bool, t: Truth) -> &'static str {
-    match (agree, t) {
-        (true, t) => truth_str(t),
-        (false, Truth::Unknown) => "unknown",
-        (false, _) => "false",
-    }
-}
-
-fn truth_str(t: Truth) -> &'static str {
-    match t {
-        Truth::True => "true",
-        Truth::False => "false",
-        Truth::Unknown => "unknown",
-    }
 }
 
 /// Most complex values (points x outputs x inputs) `freqresp` computes and reports: about
@@ -72,7 +83,11 @@ pub fn freqresp<K: Field>(
     }
     // bounded output: the report holds every value (JSON ~50 bytes each), so a 20x20
     // system at 100000 points (40 million values, GBs) is refused with the reason
+    let sys = float_abcd(t, path)?;
+    // a complex system's response is not conjugate-symmetric: it is shown at -f as well
+    let two_sided = matches!(sys, FloatAbcd::Complex(_));
     let values = points
+        .saturating_mul(if two_sided { 2 } else { 1 })
         .saturating_mul(t.ss.noutputs())
         .saturating_mul(t.ss.ninputs());
     if values > MAX_RESPONSE_VALUES {
@@ -86,9 +101,20 @@ pub fn freqresp<K: Field>(
             ),
         });
     }
-    let [a, b, c, d] = float_abcd(t, path)?;
-    let freqs = logspace(from, to, points);
-    let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(|e| fail(path, e))?;
+    let mut freqs = logspace(from, to, points);
+    let resp = match &sys {
+        FloatAbcd::Real([a, b, c, d]) => float::freqresp(a, b, c, d, &freqs),
+        FloatAbcd::Complex([a, b, c, d]) => {
+            freqs = freqs
+                .iter()
+                .rev()
+                .map(|f| -f)
+                .chain(freqs.iter().copied())
+                .collect();
+            float::freqresp_complex(a, b, c, d, &freqs)
+        }
+    }
+    .map_err(|e| fail(path, e))?;
     let table = response_table(&resp);
     if let Some(p) = csv {
         std::fs::write(p, response_csv(&freqs, &table)).map_err(|e| Failure {
@@ -115,7 +141,14 @@ pub fn freqresp<K: Field>(
         })
         .collect();
     let (header, rows) = bode_table(&freqs, &table);
-    Ok(Report::titled("frequency response")
+    let mut rep = Report::titled("frequency response");
+    if two_sided {
+        rep = rep.bool("two_sided", true).str(
+            "note",
+            "complex system: G(-jw) is not the conjugate of G(jw), so the response is given at -f and +f (Hz), negative frequencies first",
+        );
+    }
+    Ok(rep
         .with(
             "frequencies_hz",
             Value::hidden_in_text(Value::List(
@@ -189,10 +222,24 @@ fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>
 /// McMillan degree: an order that contradicts it is flagged (`agree_with_exact: false`,
 /// `truth: "false"`, no matrices) and exits 3 like `check`.
 pub fn era<K: Field>(t: &Typed<K>, path: &Path, hankel: Option<usize>) -> Result<Report, Failure> {
-    let [a, b, c, d] = float_abcd(t, path)?;
+    let tol = Tol::default();
+    match float_abcd(t, path)? {
+        FloatAbcd::Real([a, b, c, d]) => era_report(
+            t,
+            float::era_system(&a, &b, &c, &d, hankel, &tol).map_err(|e| fail(path, e))?,
+        ),
+        FloatAbcd::Complex([a, b, c, d]) => era_report(
+            t,
+            float::era_system(&a, &b, &c, &d, hankel, &tol).map_err(|e| fail(path, e))?,
+        ),
+    }
+}
+
+fn era_report<K: Field, T: FloatScalar>(
+    t: &Typed<K>,
+    r: float::SystemEra<T>,
+) -> Result<Report, Failure> {
     let n = t.ss.nstates();
-    let r =
-        float::era_system(&a, &b, &c, &d, hankel, &Tol::default()).map_err(|e| fail(path, e))?;
     let exact = realization::mcmillan_degree(&t.ss);
     let e = &r.realization;
     let agree = e.order == exact;
@@ -234,87 +281,29 @@ pub fn era<K: Field>(t: &Typed<K>, path: &Path, hankel: Option<usize>) -> Result
     ))
 }
 
-/// Eigenvalues and Jordan structure: exact (rational `A`) against the float guess.
-pub fn jordan_comparison(
-    a_exact: &crate::matrix::Matrix<crate::field::Q>,
-    path: &Path,
-) -> Result<Vec<(String, bool, Report)>, Failure> {
-    let jf = crate::jordan::jordan(a_exact).map_err(|e| fail(path, e))?;
-    let a = to_dmatrix(a_exact).map_err(|e| fail(path, e))?;
-    let tol = Tol::default();
-    let fj = float::jordan_guess(&a, &tol).map_err(|e| fail(path, e))?;
-    let scale = 1.0 + fj.norm;
-    let mut out = vec![];
-    let mut worst = 0.0f64;
-    let mut structure_ok = true;
-    let mut rows = vec![];
-    for ev in &jf.eigenvalues {
-        let (re, im) = ev.approx;
-        let nearest = fj.clusters.iter().min_by(|x, y| {
-            let dx = (x.center.re - re).hypot(x.center.im - im);
-            let dy = (y.center.re - re).hypot(y.center.im - im);
-            dx.total_cmp(&dy)
-        });
-        let Some(c) = nearest else { continue };
-        let dist = (c.center.re - re).hypot(c.center.im - im);
-        // the spread of the computed members around the exact value
-        let spread = c
-            .members
-            .iter()
-            .map(|z| (z.re - re).hypot(z.im - im))
-            .fold(0.0, f64::max);
-        worst = worst.max(spread);
-        let same = dist <= 1e-6 * scale
-            && c.algebraic_multiplicity == ev.algebraic_multiplicity
-            && c.block_sizes == ev.blocks;
-        structure_ok &= same;
-        rows.push(Value::Obj(
-            Report::new()
-                .str("eigenvalue", ev.value.clone())
-                .with(
-                    "exact_blocks",
-                    Value::List(ev.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
-                )
-                .with(
-                    "float_blocks",
-                    Value::List(
-                        c.block_sizes
-                            .iter()
-                            .map(|&b| Value::Int(b as i64))
-                            .collect(),
-                    ),
-                )
-                .float("float_center_distance", dist)
-                .float("float_member_spread", spread)
-                .str("float_truth", claim_str(same, c.truth))
-                .bool("agree", same),
-        ));
-    }
-    let warnings = Value::List(fj.warnings.iter().map(|w| Value::Str(w.clone())).collect());
-    out.push((
-        "jordan_structure".to_string(),
-        structure_ok,
-        Report::new()
-            .with("eigenvalues", Value::List(rows))
-            .float("max_float_eigenvalue_error", worst)
-            .with("float_warnings", warnings)
-            .bool("exact_verified", jf.verified),
-    ));
-    Ok(out)
-}
-
-/// Largest `n + max(m, p)` for which `check` runs the float invariant zeros (their dense
-/// orthogonal factors are side x side: 2000 is 32 MB each).
-pub const MAX_FLOAT_ZEROS_SIDE: usize = 2000;
-
 /// Float path beside the exact path.
-pub fn check<K: Field>(
+pub fn check<K: Field + 'static>(
     t: &Typed<K>,
     path: &Path,
     extra: Vec<(String, bool, Report)>,
 ) -> Result<Report, Failure> {
-    let [a, b, c, d] = float_abcd(t, path)?;
     let tol = Tol::default();
+    let (mut items, skipped) = match float_abcd(t, path)? {
+        FloatAbcd::Real(m) => real_items(t, path, &m, &tol)?,
+        FloatAbcd::Complex(m) => super::float_compare::complex_items(t, path, &m, &tol)?,
+    };
+    items.extend(extra);
+    check_report(items, skipped, &tol)
+}
+
+/// `check`'s comparisons for a real float image.
+fn real_items<K: Field>(
+    t: &Typed<K>,
+    path: &Path,
+    [a, b, c, d]: &[DMatrix<f64>; 4],
+    tol: &Tol,
+) -> Result<Items, Failure> {
+    let tol = *tol;
     let s = &t.ss;
     let mut items: Vec<(String, bool, Report)> = vec![];
     let mut skipped: Vec<(&str, String)> = vec![];
@@ -323,7 +312,7 @@ pub fn check<K: Field>(
         // Hankel matrix, far cheaper than a verified minimal realization (40 s on a
         // 1-state, 20000-input, 200-output system)
         let exact_order = realization::mcmillan_degree(s);
-        let fm = float::minreal(&a, &b, &c, &d, &tol).map_err(|e| fail(path, e))?;
+        let fm = float::minreal(a, b, c, d, &tol).map_err(|e| fail(path, e))?;
         let ok = fm.order == exact_order;
         items.push((
             "minreal_order".into(),
@@ -334,7 +323,7 @@ pub fn check<K: Field>(
                 .str("float_truth", claim_str(ok, fm.truth)),
         ));
         let rc = realization::controllability_matrix(&s.a, &s.b).rank();
-        let frc = float::controllability_rank(&a, &b, &tol).map_err(|e| fail(path, e))?;
+        let frc = float::controllability_rank(a, b, &tol).map_err(|e| fail(path, e))?;
         items.push((
             "controllability_rank".into(),
             rc == frc.rank,
@@ -344,7 +333,7 @@ pub fn check<K: Field>(
                 .str("float_truth", claim_str(rc == frc.rank, frc.truth)),
         ));
         let ro = realization::observability_matrix(&s.a, &s.c).rank();
-        let fro = float::observability_rank(&a, &c, &tol).map_err(|e| fail(path, e))?;
+        let fro = float::observability_rank(a, c, &tol).map_err(|e| fail(path, e))?;
         items.push((
             "observability_rank".into(),
             ro == fro.rank,
@@ -353,7 +342,7 @@ pub fn check<K: Field>(
                 .int("float", fro.rank)
                 .str("float_truth", claim_str(ro == fro.rank, fro.truth)),
         ));
-        match float::era_system(&a, &b, &c, &d, None, &tol) {
+        match float::era_system(a, b, c, d, None, &tol) {
             Ok(r) => {
                 let e = &r.realization;
                 let ok = e.order == exact_order;
@@ -384,7 +373,7 @@ pub fn check<K: Field>(
                 ),
             ));
         } else if let Ok(z) = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)
-            && let Ok(fz) = float::invariant_zeros_report(&a, &b, &c, &d, &tol)
+            && let Ok(fz) = float::invariant_zeros_report(a, b, c, d, &tol)
         {
             let ez = z.count();
             let mut rep = Report::new()
@@ -411,7 +400,14 @@ pub fn check<K: Field>(
             items.push(("invariant_zero_count".into(), ez == fz.zeros.len(), rep));
         }
     }
-    items.extend(extra);
+    Ok((items, skipped))
+}
+
+fn check_report(
+    items: Vec<(String, bool, Report)>,
+    skipped: Vec<(&str, String)>,
+    tol: &Tol,
+) -> Result<Report, Failure> {
     let agree = items.iter().all(|(_, ok, _)| *ok);
     let differences = items
         .iter()

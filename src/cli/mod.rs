@@ -15,6 +15,7 @@ mod commands;
 mod common;
 mod critical;
 mod float_cmds;
+mod float_compare;
 mod pencil_cmds;
 pub mod plots;
 mod progress;

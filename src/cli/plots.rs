@@ -100,6 +100,18 @@ pub fn bode_file<K: Field>(
     (from, to, points): (f64, f64, usize),
     out: &Path,
 ) -> Result<(), Failure> {
+    if matches!(
+        super::float_cmds::float_abcd(t, path)?,
+        super::float_cmds::FloatAbcd::Complex(_)
+    ) {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{}: --svg: the Bode plot of a complex system (its response is two-sided) is not drawn; the report and --csv give it",
+                path.display()
+            ),
+        });
+    }
     let [a, b, c, d] = abcd(t, path)?;
     let poles = float_poles(&a, path)?;
     let freqs = bode_grid(from, to, points, &poles);

@@ -4,6 +4,7 @@ use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
 use nalgebra::DMatrix;
+use num_complex::Complex;
 
 /// The real `f64` image of an exact matrix.
 ///
@@ -25,6 +26,26 @@ pub fn to_dmatrix<K: Field>(m: &Matrix<K>) -> Result<DMatrix<f64>> {
                 ));
             }
             out[(i, j)] = re;
+        }
+    }
+    Ok(out)
+}
+
+/// The complex `f64` image of an exact matrix (for fields with a non-real embedding, such
+/// as $\mathbb{Q}(i)$).
+///
+/// # Errors
+/// `Unsupported` when the field has no embedding ([`Field::approx`] is `None`).
+pub fn to_cmatrix<K: Field>(m: &Matrix<K>) -> Result<DMatrix<Complex<f64>>> {
+    let mut out = DMatrix::zeros(m.nrows(), m.ncols());
+    for i in 0..m.nrows() {
+        for j in 0..m.ncols() {
+            let Some((re, im)) = m.field().approx(m.get(i, j)) else {
+                return Err(Error::Unsupported(
+                    "the float path needs numeric entries; this field has no embedding".into(),
+                ));
+            };
+            out[(i, j)] = Complex::new(re, im);
         }
     }
     Ok(out)

@@ -20,20 +20,20 @@
 use super::svd::jacobi_svd;
 use nalgebra::DMatrix;
 
-use super::{RankGap, Tol, Truth, check_finite, check_system, decide_rank};
+use super::{FloatScalar, RankGap, Tol, Truth, check_finite, check_system, decide_rank};
 use crate::error::{Error, Result};
 
 /// A realization computed from Markov parameters, with its diagnostics.
 #[derive(Clone, Debug, PartialEq)]
-pub struct FloatRealization {
+pub struct FloatRealization<T: FloatScalar = f64> {
     /// State matrix (`order x order`).
-    pub a: DMatrix<f64>,
+    pub a: DMatrix<T>,
     /// Input matrix (`order x m`).
-    pub b: DMatrix<f64>,
+    pub b: DMatrix<T>,
     /// Output matrix (`p x order`).
-    pub c: DMatrix<f64>,
+    pub c: DMatrix<T>,
     /// Feedthrough `M_0`.
-    pub d: DMatrix<f64>,
+    pub d: DMatrix<T>,
     /// The order used.
     pub order: usize,
     /// Block rows and block columns of the Hankel matrices.
@@ -52,13 +52,13 @@ pub struct FloatRealization {
 ///
 /// # Errors
 /// Shape errors and non-finite entries, as [`super::minreal`].
-pub fn markov_parameters(
-    a: &DMatrix<f64>,
-    b: &DMatrix<f64>,
-    c: &DMatrix<f64>,
-    d: &DMatrix<f64>,
+pub fn markov_parameters<T: FloatScalar>(
+    a: &DMatrix<T>,
+    b: &DMatrix<T>,
+    c: &DMatrix<T>,
+    d: &DMatrix<T>,
     k: usize,
-) -> Result<Vec<DMatrix<f64>>> {
+) -> Result<Vec<DMatrix<T>>> {
     check_system("markov_parameters", a, b, c, d)?;
     let mut out = Vec::with_capacity(k);
     if k == 0 {
@@ -96,7 +96,11 @@ pub fn markov_parameters(
 /// [`Error::Invalid`] for fewer than three parameters, parameters of different shapes,
 /// non-finite entries, or a requested order larger than the Hankel matrix or beyond a zero
 /// singular value.
-pub fn era(markov: &[DMatrix<f64>], order: Option<usize>, tol: &Tol) -> Result<FloatRealization> {
+pub fn era<T: FloatScalar>(
+    markov: &[DMatrix<T>],
+    order: Option<usize>,
+    tol: &Tol,
+) -> Result<FloatRealization<T>> {
     if markov.len() < 3 {
         return Err(Error::Invalid(format!(
             "era: need at least 3 Markov parameters (D, CB, CAB), got {}",
@@ -124,7 +128,7 @@ pub fn era(markov: &[DMatrix<f64>], order: Option<usize>, tol: &Tol) -> Result<F
     let s = moments - r;
     check_hankel_size(r * p, s * m)?;
     let hankel = |shift: usize| {
-        let mut h = DMatrix::<f64>::zeros(r * p, s * m);
+        let mut h = DMatrix::<T>::zeros(r * p, s * m);
         for i in 0..r {
             for j in 0..s {
                 h.view_mut((i * p, j * m), (p, m))
@@ -144,20 +148,20 @@ pub fn era(markov: &[DMatrix<f64>], order: Option<usize>, tol: &Tol) -> Result<F
         let sv: Vec<f64> = svd.sv[..k].to_vec();
         let u = DMatrix::from_fn(r * p, k, |i, j| {
             if sv[j] > 0.0 {
-                svd.w[(i, j)] / sv[j]
+                svd.w[(i, j)].unscale(sv[j])
             } else {
-                0.0
+                T::zero()
             }
         });
         (sv, u, svd.v.columns(0, k).into_owned())
     } else {
-        let svd = jacobi_svd(h0.transpose());
+        let svd = jacobi_svd(h0.adjoint());
         let sv: Vec<f64> = svd.sv[..k].to_vec();
         let v = DMatrix::from_fn(s * m, k, |i, j| {
             if sv[j] > 0.0 {
-                svd.w[(i, j)] / sv[j]
+                svd.w[(i, j)].unscale(sv[j])
             } else {
-                0.0
+                T::zero()
             }
         });
         (sv, svd.v.columns(0, k).into_owned(), v)
@@ -177,15 +181,15 @@ pub fn era(markov: &[DMatrix<f64>], order: Option<usize>, tol: &Tol) -> Result<F
     }
     let sq: Vec<f64> = sv[..n].iter().map(|x| x.sqrt()).collect();
     let un = un_all.columns(0, n).into_owned();
-    let vtn = vk_all.columns(0, n).transpose();
-    let mut a = un.transpose() * &h1 * vtn.transpose();
+    let vtn = vk_all.columns(0, n).adjoint();
+    let mut a = un.adjoint() * &h1 * vtn.adjoint();
     for i in 0..n {
         for j in 0..n {
-            a[(i, j)] /= sq[i] * sq[j];
+            a[(i, j)] = a[(i, j)].unscale(sq[i] * sq[j]);
         }
     }
-    let b = DMatrix::from_fn(n, m, |i, j| sq[i] * vtn[(i, j)]);
-    let c = DMatrix::from_fn(p, n, |i, j| un[(i, j)] * sq[j]);
+    let b = DMatrix::from_fn(n, m, |i, j| vtn[(i, j)].scale(sq[i]));
+    let c = DMatrix::from_fn(p, n, |i, j| un[(i, j)].scale(sq[j]));
     let saturated = gap.rank >= maxrank;
     // Markov parameters of a finite system give a Hankel matrix whose discarded singular
     // values are rounding noise; dropped values far above that floor mean the fast modes
@@ -232,9 +236,9 @@ fn check_hankel_size(rows: usize, cols: usize) -> Result<()> {
 
 /// ERA run on a state-space system, with the Hankel size chosen by rank stabilisation.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SystemEra {
+pub struct SystemEra<T: FloatScalar = f64> {
     /// The realization (of the original time scale: `A` multiplied back by `time_scale`).
-    pub realization: FloatRealization,
+    pub realization: FloatRealization<T>,
     /// `ρ`, a power of two at least the spectral radius: ERA runs on the Markov parameters of
     /// $(A/\rho, B, C, D)$ so that no mode grows along the Hankel matrix.
     pub time_scale: f64,
@@ -259,14 +263,14 @@ pub struct SystemEra {
 /// # Errors
 /// Shapes and non-finite entries as [`markov_parameters`]; [`Error::Invalid`] without inputs
 /// or outputs; [`Error::Limit`] when the Hankel matrix would exceed [`HANKEL_ENTRY_LIMIT`].
-pub fn era_system(
-    a: &DMatrix<f64>,
-    b: &DMatrix<f64>,
-    c: &DMatrix<f64>,
-    d: &DMatrix<f64>,
+pub fn era_system<T: FloatScalar>(
+    a: &DMatrix<T>,
+    b: &DMatrix<T>,
+    c: &DMatrix<T>,
+    d: &DMatrix<T>,
     hankel: Option<usize>,
     tol: &Tol,
-) -> Result<SystemEra> {
+) -> Result<SystemEra<T>> {
     let (n, m, p) = check_system("era", a, b, c, d)?;
     if p == 0 || m == 0 {
         return Err(Error::Invalid(format!(
@@ -276,7 +280,8 @@ pub fn era_system(
     if hankel == Some(0) {
         return Err(Error::Invalid("era: --hankel must be at least 1".into()));
     }
-    let radius = super::eigenvalues(a)?
+    // the real form's eigenvalues are those of A and of its conjugate: same moduli
+    let radius = super::eigenvalues(&T::realify(a))?
         .iter()
         .map(|z| z.norm())
         .fold(0.0, f64::max);
@@ -285,8 +290,8 @@ pub fn era_system(
     } else {
         1.0
     };
-    let a_s = a / rho;
-    let run = |k: usize| -> Result<FloatRealization> {
+    let a_s = a.unscale(rho);
+    let run = |k: usize| -> Result<FloatRealization<T>> {
         check_hankel_size(k.saturating_mul(p), k.saturating_mul(m))?;
         let mk = markov_parameters(&a_s, b, c, d, 2 * k + 1)?;
         era(&mk, None, tol)
@@ -336,10 +341,10 @@ pub fn era_system(
             None => (prev, false),
         }
     };
-    best.a *= rho;
+    best.a.scale_mut(rho);
     // Powers of A/ρ underflow when the entries of A span more than ~1e100: Markov parameters
     // that vanish in float need not vanish (an order found is then not clear).
-    let nonzero = a.iter().filter(|x| **x != 0.0).map(|x| x.abs());
+    let nonzero = a.iter().map(|x| x.modulus()).filter(|x| *x != 0.0);
     let (lo, hi) = nonzero.fold((f64::INFINITY, 0.0f64), |(l, h), x| (l.min(x), h.max(x)));
     let range_ok = hi == 0.0 || hi / lo <= 1e100;
     if !stabilised || !range_ok {

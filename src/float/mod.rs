@@ -36,13 +36,13 @@ mod svd;
 pub mod time_response;
 mod zeros;
 
-pub use convert::to_dmatrix;
+pub use convert::{to_cmatrix, to_dmatrix};
 pub use eigen::{EigenPairs, eigenvalues, eigenvectors};
 pub use era::{
     FloatRealization, HANKEL_ENTRY_LIMIT, HANKEL_WORK_LIMIT, SystemEra, era, era_system,
     markov_parameters,
 };
-pub use freqresp::freqresp;
+pub use freqresp::{freqresp, freqresp_complex};
 pub use jordan_guess::{Cluster, FloatJordan, jordan_guess};
 pub use minreal::{FloatMinreal, minreal};
 pub use staircase::{
@@ -220,13 +220,45 @@ pub(crate) fn all_clear(gaps: &[RankGap]) -> Truth {
     }
 }
 
+/// A float scalar of the backend: `f64`, or `Complex<f64>` for systems over a non-real
+/// field such as $\mathbb{Q}(i)$. The generic routines ([`era`], [`freqresp`],
+/// [`markov_parameters`]) are written once for both; the rank-revealing staircases stay real
+/// and see a complex matrix through its real form [`FloatScalar::realify`], whose singular
+/// values are those of the complex matrix, each twice.
+pub trait FloatScalar: nalgebra::ComplexField<RealField = f64> + Copy {
+    /// The real form of `m`: `m` itself for `f64`; for a complex `M = X + iY` the
+    /// `2r x 2c` matrix $\begin{bmatrix} X & -Y \\ Y & X \end{bmatrix}$ (a ring
+    /// homomorphism: ranks double, eigenvalues are those of $M$ and $\bar M$).
+    fn realify(m: &DMatrix<Self>) -> DMatrix<f64>;
+}
+
+impl FloatScalar for f64 {
+    fn realify(m: &DMatrix<f64>) -> DMatrix<f64> {
+        m.clone()
+    }
+}
+
+impl FloatScalar for num_complex::Complex<f64> {
+    fn realify(m: &DMatrix<Self>) -> DMatrix<f64> {
+        let (r, c) = m.shape();
+        DMatrix::from_fn(2 * r, 2 * c, |i, j| {
+            let z = m[(i % r.max(1), j % c.max(1))];
+            match (i < r, j < c) {
+                (true, true) | (false, false) => z.re,
+                (true, false) => -z.im,
+                (false, true) => z.im,
+            }
+        })
+    }
+}
+
 /// Checks the shapes of `(A, B, C, D)` and that all entries are finite; returns `(n, m, p)`.
-pub(crate) fn check_system(
+pub(crate) fn check_system<T: FloatScalar>(
     op: &'static str,
-    a: &DMatrix<f64>,
-    b: &DMatrix<f64>,
-    c: &DMatrix<f64>,
-    d: &DMatrix<f64>,
+    a: &DMatrix<T>,
+    b: &DMatrix<T>,
+    c: &DMatrix<T>,
+    d: &DMatrix<T>,
 ) -> Result<(usize, usize, usize)> {
     check_square(op, a)?;
     let n = a.nrows();
@@ -260,7 +292,7 @@ pub(crate) fn check_system(
 }
 
 /// Errors unless `a` is square with finite entries.
-pub(crate) fn check_square(op: &'static str, a: &DMatrix<f64>) -> Result<()> {
+pub(crate) fn check_square<T: FloatScalar>(op: &'static str, a: &DMatrix<T>) -> Result<()> {
     if a.nrows() != a.ncols() {
         return Err(Error::NotSquare {
             op,
@@ -272,7 +304,7 @@ pub(crate) fn check_square(op: &'static str, a: &DMatrix<f64>) -> Result<()> {
 }
 
 /// Errors if some entry is NaN or infinite.
-pub(crate) fn check_finite(op: &'static str, a: &DMatrix<f64>) -> Result<()> {
+pub(crate) fn check_finite<T: FloatScalar>(op: &'static str, a: &DMatrix<T>) -> Result<()> {
     if a.iter().all(|x| x.is_finite()) {
         Ok(())
     } else {

@@ -13,30 +13,45 @@
 use nalgebra::DMatrix;
 use num_complex::Complex;
 
-/// The result of [`jacobi_svd`]: singular values descending, `v` orthogonal, `w = G v`.
-pub(crate) struct JacobiSvd {
+use super::FloatScalar;
+
+/// The result of [`jacobi_svd`]: singular values descending, `v` orthogonal (unitary for
+/// complex `T`), `w = G v`.
+pub(crate) struct JacobiSvd<T: FloatScalar = f64> {
     pub sv: Vec<f64>,
-    pub v: DMatrix<f64>,
-    pub w: DMatrix<f64>,
+    pub v: DMatrix<T>,
+    pub w: DMatrix<T>,
 }
 
 /// One-sided Jacobi SVD of `g` (`m x n`): `n` singular values (zeros included when `m < n`).
-pub(crate) fn jacobi_svd(mut g: DMatrix<f64>) -> JacobiSvd {
+///
+/// Complex columns: with $\gamma = g_p^H g_q = |\gamma| e^{i\varphi}$, column `q` is first
+/// multiplied by $e^{-i\varphi}$ (a unitary diagonal factor, applied to `v` as well), which
+/// makes $\gamma$ real, then rotated as in the real case. Real input never takes that step.
+pub(crate) fn jacobi_svd<T: FloatScalar>(mut g: DMatrix<T>) -> JacobiSvd<T> {
     let (m, n) = g.shape();
-    let mut v = DMatrix::<f64>::identity(n, n);
+    let mut v = DMatrix::<T>::identity(n, n);
     let tol = f64::EPSILON * (m.max(1) as f64).sqrt();
     for _sweep in 0..80 {
         let mut rotated = false;
         for p in 0..n {
             for q in p + 1..n {
-                let (alpha, beta, gamma) = {
+                let (alpha, beta, mut gamma) = {
                     let gp = g.column(p);
                     let gq = g.column(q);
-                    (gp.norm_squared(), gq.norm_squared(), gp.dot(&gq))
+                    (gp.norm_squared(), gq.norm_squared(), gp.dotc(&gq))
                 };
-                if alpha == 0.0 || beta == 0.0 || gamma.abs() <= tol * (alpha * beta).sqrt() {
+                let modulus = gamma.modulus();
+                if alpha == 0.0 || beta == 0.0 || modulus <= tol * (alpha * beta).sqrt() {
                     continue;
                 }
+                if gamma.imaginary() != 0.0 {
+                    let phase = (gamma / T::from_real(modulus)).conjugate();
+                    scale_column(&mut g, q, phase);
+                    scale_column(&mut v, q, phase);
+                    gamma = T::from_real(modulus);
+                }
+                let gamma = gamma.real();
                 rotated = true;
                 let zeta = (beta - alpha) / (2.0 * gamma);
                 let t = zeta.signum() / (zeta.abs() + (1.0 + zeta * zeta).sqrt());
@@ -59,8 +74,15 @@ pub(crate) fn jacobi_svd(mut g: DMatrix<f64>) -> JacobiSvd {
     JacobiSvd { sv, v, w }
 }
 
+/// Column `q` of `x` <- `z x_q`.
+fn scale_column<T: FloatScalar>(x: &mut DMatrix<T>, q: usize, z: T) {
+    for e in x.column_mut(q).iter_mut() {
+        *e *= z;
+    }
+}
+
 /// Columns `p, q` of `x` <- `(c x_p - s x_q, s x_p + c x_q)`.
-fn rotate(x: &mut DMatrix<f64>, p: usize, q: usize, c: f64, s: f64) {
+fn rotate<T: FloatScalar>(x: &mut DMatrix<T>, p: usize, q: usize, c: f64, s: f64) {
     let nr = x.nrows();
     let data = x.as_mut_slice();
     let (lo, hi) = data.split_at_mut(q * nr);
@@ -68,8 +90,8 @@ fn rotate(x: &mut DMatrix<f64>, p: usize, q: usize, c: f64, s: f64) {
     let xq = &mut hi[..nr];
     for (a, b) in xp.iter_mut().zip(xq.iter_mut()) {
         let (u, w) = (*a, *b);
-        *a = c * u - s * w;
-        *b = s * u + c * w;
+        *a = u.scale(c) - w.scale(s);
+        *b = u.scale(s) + w.scale(c);
     }
 }
 

@@ -92,7 +92,7 @@ impl P<'_> {
                 .map(|c| c.numer().bits() + c.denom().bits())
                 .max()
                 .unwrap_or(0)
-                + (base.coeffs().len() as u64).ilog2() as u64
+                + (base.coeffs().len().max(1) as u64).ilog2() as u64
                 + 1;
             let e64 = e as u64;
             let total = e64

@@ -13,6 +13,7 @@ mod mpoly;
 mod pencil;
 mod realization;
 mod structure;
+mod tf_field;
 
 pub use algebraic::{factor_report, roots_report};
 pub use mpoly::{mfactor_report, mgcd_report};
@@ -20,6 +21,7 @@ pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,
     kronecker_report, minreal_descriptor_report, pencil_report, tf_report,
 };
+pub use tf_field::{TfRealization, tf_report_quadratic};
 
 use crate::field::Field;
 use crate::float::{Tol, jordan_guess, to_dmatrix};

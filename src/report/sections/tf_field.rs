@@ -1,0 +1,261 @@
+//! `tf` over a quadratic field $K = \mathbb{Q}(\sqrt d)$ or $\mathbb{Q}(i)$: the keys of
+//! the rational [`super::tf_report`], with poles and zeros as the irreducible factors over
+//! $K$ of the pole and zero polynomials ([`crate::algebraic::factor_over_quadratic`]).
+//!
+//! # Verification
+//! `verified` is the conjunction of: the minimal realization's checks
+//! ([`crate::realization::realize_transfer`]), the zero pencil's checks, the product of the
+//! pole factors equals the pole polynomial (the characteristic polynomial of the minimal
+//! realization's finite block), and, for a state-space system, the Markov parameters of the
+//! transfer matrix equal $D, CB, CAB, \dots, CA^{2n-1}B$ of the input system
+//! ([`TransferMatrix::matches_markov`]).
+
+use crate::algebraic::{factor_over_quadratic, norm_over_q};
+use crate::error::Result;
+use crate::field::{Field, QuadraticField};
+use crate::matrix::Matrix;
+use crate::poly::Poly;
+use crate::realization::TransferRealization;
+use crate::report::{Report, Value};
+use crate::system::transfer::TransferMatrix;
+use crate::system::{Descriptor, StateSpace};
+
+fn ints(v: &[usize]) -> Value {
+    Value::List(v.iter().map(|&x| Value::Int(x as i64)).collect())
+}
+
+/// One report item per irreducible factor over $K$ of `p`: `factor`, `degree`, `minpoly`
+/// (over $\mathbb{Q}$, of the factor's roots), `algebraic_multiplicity` (under `mult_key`),
+/// and for a linear factor the exact `value` and `approx`. Returns the items and whether
+/// the product of the factors is `p` up to its leading coefficient.
+fn factor_items(p: &Poly<QuadraticField>, mult_key: &str) -> Result<(Vec<Value>, bool)> {
+    if p.is_zero() || p.deg() == 0 {
+        return Ok((vec![], true));
+    }
+    let k = p.field().clone();
+    let fs = factor_over_quadratic(p)?;
+    let mut prod = Poly::new(k.clone(), vec![p.lc()]);
+    let mut items = vec![];
+    for (f, e) in &fs {
+        for _ in 0..*e {
+            prod = prod.mul(f);
+        }
+        // the roots of f are roots of its norm f * conj(f); the minimal polynomial over Q
+        // of each is the norm's square-free part (f irreducible over K)
+        let norm = norm_over_q(f);
+        let minpoly = norm
+            .squarefree()
+            .into_iter()
+            .map(|(g, _)| g)
+            .find(|g| g.deg() > 0)
+            .unwrap_or(norm)
+            .monic();
+        let mut r = Report::new()
+            .str("factor", f.to_string_var("s"))
+            .int("degree", f.deg())
+            .str("minpoly", minpoly.to_string());
+        if f.deg() == 1 {
+            let root = k.neg(&k.div(&f.coeff(0), &f.coeff(1)).expect("non-zero lc"));
+            let (re, im) = k.approx(&root);
+            r = r.str("value", k.fmt_elem(&root)).with(
+                "approx",
+                Value::List(vec![Value::Float(re), Value::Float(im)]),
+            );
+        } else {
+            r = r.str("value", format!("a root of {}", f.to_string_var("s")));
+            if let Some(rs) = roots_of_factor(f, &minpoly) {
+                r = r.list("roots", rs);
+            }
+        }
+        items.push(Value::Obj(r.int(mult_key, *e)));
+    }
+    Ok((items, prod == *p))
+}
+
+/// The roots of a factor `f` (irreducible over $K$, degree >= 2) as `{value, approx}`: the
+/// certified roots of its minimal polynomial over $\mathbb{Q}$ (exact values), of which
+/// those of `f` are told apart from those of its Galois conjugate by $|f(z)|$ at their
+/// approximations. `None` when that separation is not clear by a factor $10^6$ (or the
+/// isolation fails): the item then keeps only `factor` and `minpoly`.
+fn roots_of_factor(
+    f: &Poly<QuadraticField>,
+    minpoly: &Poly<crate::field::Q>,
+) -> Option<Vec<Value>> {
+    let k = f.field().clone();
+    let rs = crate::algebraic::roots(minpoly).ok()?;
+    let cs: Vec<(f64, f64)> = f.coeffs().iter().map(|c| k.approx(c)).collect();
+    let residual = |(x, y): (f64, f64)| {
+        // Horner in complex floats
+        let (mut re, mut im) = (0.0f64, 0.0f64);
+        for &(cr, ci) in cs.iter().rev() {
+            let (nr, ni) = (re * x - im * y + cr, re * y + im * x + ci);
+            re = nr;
+            im = ni;
+        }
+        re.hypot(im)
+    };
+    let mut scored: Vec<(f64, &crate::algebraic::AlgebraicNumber)> =
+        rs.iter().map(|(z, _)| (residual(z.approx()), z)).collect();
+    scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let n = f.deg();
+    if scored.len() < n {
+        return None;
+    }
+    if scored.len() > n {
+        let (kept, next) = (scored[n - 1].0, scored[n].0);
+        if next.is_nan() || next <= 1e6 * kept.max(f64::MIN_POSITIVE) {
+            return None;
+        }
+    }
+    Some(
+        scored[..n]
+            .iter()
+            .map(|(_, z)| {
+                let (re, im) = z.approx();
+                Value::Obj(Report::new().str("value", z.value_string()).with(
+                    "approx",
+                    Value::List(vec![Value::Float(re), Value::Float(im)]),
+                ))
+            })
+            .collect(),
+    )
+}
+
+/// Zero-pole-gain display over $K$: `k (factors) / (factors)`.
+fn zpk_string(num: &Poly<QuadraticField>, den: &Poly<QuadraticField>) -> Result<String> {
+    if num.is_zero() {
+        return Ok("0".into());
+    }
+    let k = num.field().clone();
+    let gain = k.fmt_elem(&k.div(&num.lc(), &den.lc()).expect("non-zero denominator"));
+    let factors = |p: &Poly<QuadraticField>| -> Result<String> {
+        Ok(factor_over_quadratic(p)?
+            .iter()
+            .map(|(f, e)| {
+                let f = f.to_string_var("s");
+                if *e > 1 {
+                    format!("({f})^{e}")
+                } else {
+                    format!("({f})")
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(" "))
+    };
+    let (n, d) = (factors(num)?, factors(den)?);
+    let mut s = if gain.contains(' ') {
+        format!("({gain})")
+    } else {
+        gain
+    };
+    if !n.is_empty() {
+        s = format!("{s} {n}");
+    }
+    if !d.is_empty() {
+        s = format!("{s} / {d}");
+    }
+    Ok(s)
+}
+
+/// A minimal realization of a transfer matrix over $K$ as `tf` reports it: from
+/// [`crate::realization::realize_transfer`] (descriptor input), or the Kalman minimal
+/// realization of a state-space input (same transfer matrix, far cheaper than realizing
+/// the transfer matrix's entries one by one).
+pub struct TfRealization {
+    /// Minimal system, finite block first (`E = diag(I, N)`; `E = I` when proper).
+    pub system: Descriptor<QuadraticField>,
+    /// Order of the finite block.
+    pub finite_order: usize,
+    /// Finite poles plus the orders of the poles at infinity.
+    pub mcmillan_degree: usize,
+    /// Its own checks held.
+    pub verified: bool,
+}
+
+impl TfRealization {
+    /// From a realization of the transfer matrix.
+    pub fn from_transfer(r: &TransferRealization<QuadraticField>) -> Self {
+        TfRealization {
+            system: r.minimal.system.clone(),
+            finite_order: r.minimal.finite_order,
+            mcmillan_degree: r.mcmillan_degree,
+            verified: r.verified,
+        }
+    }
+    /// From a verified-or-not minimal state-space realization.
+    ///
+    /// # Errors
+    /// Never for a valid system (shapes).
+    pub fn from_state_space(m: &StateSpace<QuadraticField>, verified: bool) -> Result<Self> {
+        let k = m.a.field().clone();
+        let n = m.nstates();
+        Ok(TfRealization {
+            system: Descriptor::new(
+                Matrix::identity(k, n),
+                m.a.clone(),
+                m.b.clone(),
+                m.c.clone(),
+                m.d.clone(),
+            )?,
+            finite_order: n,
+            mcmillan_degree: n,
+            verified,
+        })
+    }
+}
+
+/// `tf` over a quadratic field: the rational report's keys plus `field` and
+/// `pole_polynomial`; `ss` is the input state-space system when there is one (its Markov
+/// parameters are compared with the transfer matrix's).
+///
+/// # Errors
+/// From the factorizations and the zero pencil.
+pub fn tf_report_quadratic(
+    g: &TransferMatrix<QuadraticField>,
+    r: &TfRealization,
+    ss: Option<&StateSpace<QuadraticField>>,
+) -> Result<Report> {
+    let sys = &r.system;
+    let nf = r.finite_order;
+    let k = sys.a.field().clone();
+    let pole_poly = sys.a.submatrix(0, nf, 0, nf).charpoly()?;
+    let (poles, poles_ok) = factor_items(&pole_poly, "algebraic_multiplicity")?;
+    let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
+    let (tzeros, zeros_ok) = factor_items(&zeros.polynomial, "algebraic_multiplicity")?;
+    let markov_ok = ss.is_none_or(|s| g.matches_markov(s));
+    let zpk = g
+        .entries
+        .iter()
+        .map(|row| {
+            Ok(Value::List(
+                row.iter()
+                    .map(|f| zpk_string(&f.num, &f.den).map(Value::Str))
+                    .collect::<Result<Vec<_>>>()?,
+            ))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let tm: Vec<Value> = g
+        .to_strings()
+        .into_iter()
+        .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
+        .collect();
+    let mut rep = Report::titled(format!("transfer matrix over {k}"))
+        .str("field", k.to_string())
+        .list("transfer_matrix", tm)
+        .list("zpk", zpk)
+        .int("mcmillan_degree", r.mcmillan_degree)
+        .int("infinite_pole_degree", r.mcmillan_degree - nf)
+        .str("pole_polynomial", pole_poly.to_string_var("s"))
+        .list("poles", poles)
+        .list("transmission_zeros", tzeros)
+        .with("infinite_zero_orders", ints(&zeros.infinite_zero_orders))
+        .int("normal_rank", zeros.pencil.normal_rank - sys.nstates())
+        .int("order", sys.nstates());
+    if ss.is_some() {
+        rep = rep.bool("markov_verified", markov_ok);
+    }
+    Ok(rep.bool(
+        "verified",
+        r.verified && zeros.pencil.verified && poles_ok && zeros_ok && markov_ok,
+    ))
+}
