@@ -18,6 +18,7 @@
 //! | [`AlgebraicNumber::roots_of_irreducible`] | the $\deg p$ roots of an irreducible $p$ |
 //! | [`factor_over_number_field`] | factorization over $\mathbb{Q}\[t\]/(m)$ (Trager) |
 //! | [`factor_over_quadratic`] | factorization over $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$ (through Trager) |
+//! | [`roots_of_quadratic_factor`] | the roots of a factor over $\mathbb{Q}(\sqrt d)$, told exactly from its conjugate's |
 //! | [`composed_half_sum`], [`composed_half_diff_imag`] | $\prod (x - \frac{r_i + r_j}{2})$, $\prod (x - \frac{r_i - r_j}{2i})$ |
 //! | [`crate::report::sections::factor_report`], [`crate::report::sections::roots_report`] | the CLI's `poly factor` / `poly roots` reports |
 
@@ -28,12 +29,14 @@ pub mod nf_factor;
 pub mod number;
 pub mod number_field;
 pub mod quadratic_factor;
+pub mod quadratic_roots;
 pub(crate) mod zp; // re-export shim, see its docs
 
 pub use nf_factor::factor_over_number_field;
 pub use number::AlgebraicNumber;
 pub use number_field::{NfElem, NumberField, NumberFieldCtx};
 pub use quadratic_factor::{factor_over_quadratic, norm_over_q, quadratic_as_number_field};
+pub use quadratic_roots::{rational_minpoly, roots_of_quadratic_factor};
 
 use crate::error::{Error, Result};
 use crate::field::{Q, Rational};

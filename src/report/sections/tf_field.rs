@@ -10,7 +10,7 @@
 //! transfer matrix equal $D, CB, CAB, \dots, CA^{2n-1}B$ of the input system
 //! ([`TransferMatrix::matches_markov`]).
 
-use crate::algebraic::{factor_over_quadratic, norm_over_q};
+use crate::algebraic::{factor_over_quadratic, rational_minpoly};
 use crate::error::Result;
 use crate::field::{Field, QuadraticField};
 use crate::matrix::Matrix;
@@ -40,16 +40,8 @@ fn factor_items(p: &Poly<QuadraticField>, mult_key: &str) -> Result<(Vec<Value>,
         for _ in 0..*e {
             prod = prod.mul(f);
         }
-        // the roots of f are roots of its norm f * conj(f); the minimal polynomial over Q
-        // of each is the norm's square-free part (f irreducible over K)
-        let norm = norm_over_q(f);
-        let minpoly = norm
-            .squarefree()
-            .into_iter()
-            .map(|(g, _)| g)
-            .find(|g| g.deg() > 0)
-            .unwrap_or(norm)
-            .monic();
+        // the minimal polynomial over Q of the roots of f (f irreducible over K)
+        let minpoly = rational_minpoly(f);
         let mut r = Report::new()
             .str("factor", f.to_string_var("s"))
             .int("degree", f.deg())
@@ -63,9 +55,7 @@ fn factor_items(p: &Poly<QuadraticField>, mult_key: &str) -> Result<(Vec<Value>,
             );
         } else {
             r = r.str("value", format!("a root of {}", f.to_string_var("s")));
-            if let Some(rs) = roots_of_factor(f, &minpoly) {
-                r = r.list("roots", rs);
-            }
+            r = r.list("roots", roots_of_factor(f, &minpoly)?);
         }
         items.push(Value::Obj(r.int(mult_key, *e)));
     }
@@ -73,52 +63,27 @@ fn factor_items(p: &Poly<QuadraticField>, mult_key: &str) -> Result<(Vec<Value>,
 }
 
 /// The roots of a factor `f` (irreducible over $K$, degree >= 2) as `{value, approx}`: the
-/// certified roots of its minimal polynomial over $\mathbb{Q}$ (exact values), of which
-/// those of `f` are told apart from those of its Galois conjugate by $|f(z)|$ at their
-/// approximations. `None` when that separation is not clear by a factor $10^6$ (or the
-/// isolation fails): the item then keeps only `factor` and `minpoly`.
+/// certified roots of its minimal polynomial over $\mathbb{Q}$, of which those of `f` are
+/// told exactly from those of its Galois conjugate
+/// ([`crate::algebraic::roots_of_quadratic_factor`]).
 fn roots_of_factor(
     f: &Poly<QuadraticField>,
     minpoly: &Poly<crate::field::Q>,
-) -> Option<Vec<Value>> {
-    let k = f.field().clone();
-    let rs = crate::algebraic::roots(minpoly).ok()?;
-    let cs: Vec<(f64, f64)> = f.coeffs().iter().map(|c| k.approx(c)).collect();
-    let residual = |(x, y): (f64, f64)| {
-        // Horner in complex floats
-        let (mut re, mut im) = (0.0f64, 0.0f64);
-        for &(cr, ci) in cs.iter().rev() {
-            let (nr, ni) = (re * x - im * y + cr, re * y + im * x + ci);
-            re = nr;
-            im = ni;
-        }
-        re.hypot(im)
-    };
-    let mut scored: Vec<(f64, &crate::algebraic::AlgebraicNumber)> =
-        rs.iter().map(|(z, _)| (residual(z.approx()), z)).collect();
-    scored.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let n = f.deg();
-    if scored.len() < n {
-        return None;
-    }
-    if scored.len() > n {
-        let (kept, next) = (scored[n - 1].0, scored[n].0);
-        if next.is_nan() || next <= 1e6 * kept.max(f64::MIN_POSITIVE) {
-            return None;
-        }
-    }
-    Some(
-        scored[..n]
-            .iter()
-            .map(|(_, z)| {
-                let (re, im) = z.approx();
-                Value::Obj(Report::new().str("value", z.value_string()).with(
-                    "approx",
-                    Value::List(vec![Value::Float(re), Value::Float(im)]),
-                ))
-            })
-            .collect(),
-    )
+) -> Result<Vec<Value>> {
+    let all = crate::algebraic::AlgebraicNumber::roots_of_irreducible_unchecked(minpoly)?
+        .into_iter()
+        .map(|z| (z, ()))
+        .collect();
+    Ok(crate::algebraic::roots_of_quadratic_factor(f, all)?
+        .into_iter()
+        .map(|(z, ())| {
+            let (re, im) = z.approx();
+            Value::Obj(Report::new().str("value", z.value_string()).with(
+                "approx",
+                Value::List(vec![Value::Float(re), Value::Float(im)]),
+            ))
+        })
+        .collect())
 }
 
 /// Zero-pole-gain display over $K$: `k (factors) / (factors)`.
