@@ -172,3 +172,16 @@ fn cli_bicycle_descriptor() {
     );
     assert_eq!(v["verified"], true);
 }
+
+/// `tf` of a rational state-space file checks G against the system's Markov parameters
+/// (as over Q(i) / Q(sqrt d)); a G given directly has no system to check against.
+#[test]
+fn cli_tf_of_a_state_space_checks_markov_parameters() {
+    let (code, v, err) = run(&["tf", "data/quarter-car.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(v["markov_verified"], true);
+    assert_eq!(v["verified"], true);
+    let (code, v, err) = run(&["tf", "tests/data/tf_G.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(v.get("markov_verified").is_none());
+}

@@ -348,3 +348,67 @@ fn check_exits_3_when_the_complex_float_path_misses_a_close_mode() {
     assert_eq!(c["agree"], false);
     assert_ne!(c["float_truth"], "true");
 }
+
+mod cross_check {
+    //! The float path against the exact one over every quadratic field: random small systems
+    //! over Q(i) and Q(sqrt 2), the exact transfer matrix over K (its coefficients rounded
+    //! once at the end) against the complex float frequency response of the state space, and
+    //! the exact McMillan degree against the complex ERA's order where the ERA is certain.
+    use super::*;
+    use exactlti::realization::{MinrealMethod, minimal};
+    use proptest::prelude::*;
+
+    fn entry() -> impl Strategy<Value = (i64, i64)> {
+        (-3i64..=3, -2i64..=2)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 24, .. ProptestConfig::default() })]
+        #[test]
+        fn float_frequency_response_matches_the_exact_transfer_matrix(
+            d in prop::sample::select(vec![-1i64, 2]),
+            n in 1usize..=4,
+            m in 1usize..=2,
+            p in 1usize..=2,
+            e in prop::collection::vec(entry(), 16 + 8 + 8),
+        ) {
+            let k = QuadraticField::new(d).unwrap();
+            let a = Matrix::from_fn(k.clone(), n, n, |i, j| { let (x, y) = e[i * n + j]; q(x, y) });
+            let b = Matrix::from_fn(k.clone(), n, m, |i, j| { let (x, y) = e[16 + i * m + j]; q(x, y) });
+            let c = Matrix::from_fn(k.clone(), p, n, |i, j| { let (x, y) = e[24 + i * n + j]; q(x, y) });
+            let s = StateSpace::new_strictly_proper(a, b, c).unwrap();
+            let g = s.transfer_matrix().unwrap();
+            prop_assert!(g.matches_markov(&s));
+            let [fa, fb, fc, fd] = [&s.a, &s.b, &s.c, &s.d].map(|x| to_cmatrix(x).unwrap());
+            let freqs = [-1.7, -0.37, 0.013, 0.29, 1.3];
+            // a frequency within reach of a pole is singular for the float solve: skip it
+            let Ok(resp) = freqresp_complex(&fa, &fb, &fc, &fd, &freqs) else { return Ok(()) };
+            for (hz, r) in freqs.iter().zip(&resp) {
+                let jw = Complex::new(0.0, 2.0 * std::f64::consts::PI * hz);
+                for i in 0..p {
+                    for j in 0..m {
+                        let f = &g.entries[i][j];
+                        let den = eval_exact(&f.den, jw);
+                        prop_assume!(den.norm() > 1e-6);
+                        let want = eval_exact(&f.num, jw) / den;
+                        prop_assert!(
+                            (r[(i, j)] - want).norm() <= 1e-8 * (1.0 + want.norm()),
+                            "{} Hz ({}, {}): float {} exact {}", hz, i, j, r[(i, j)], want
+                        );
+                    }
+                }
+            }
+            // the exact McMillan degree bounds the ERA's order; where its gap test is
+            // certain (`True`) they agree
+            let exact = minimal(&s, MinrealMethod::Kalman).unwrap();
+            prop_assert!(exact.verified);
+            if let Ok(era) = era_system(&fa, &fb, &fc, &fd, None, &Tol::default()) {
+                let r = &era.realization;
+                prop_assert!(r.order <= n);
+                if r.truth == Truth::True {
+                    prop_assert_eq!(r.order, exact.order);
+                }
+            }
+        }
+    }
+}

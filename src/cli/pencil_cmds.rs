@@ -161,8 +161,24 @@ impl DescriptorVisitor for Run<'_> {
                         (g, r)
                     }
                 };
-                let rep = sections::tf_report(&g, &r).map_err(e)?;
-                Ok(Outcome::new(rep, r.verified))
+                let mut rep = sections::tf_report(&g, &r).map_err(e)?;
+                let mut ok = r.verified;
+                if !l.has_e && l.transfer.is_none() {
+                    // a state-space input: G is also checked against its Markov parameters,
+                    // as over Q(i) / Q(sqrt d)
+                    let ss =
+                        StateSpace::new(sq.a.clone(), sq.b.clone(), sq.c.clone(), sq.d.clone())
+                            .map_err(e)?;
+                    let mv = g.matches_markov(&ss);
+                    ok &= mv;
+                    for (k, v) in rep.items.iter_mut() {
+                        if k == "verified" {
+                            *v = crate::report::Value::Bool(ok);
+                        }
+                    }
+                    rep.push("markov_verified", crate::report::Value::Bool(mv));
+                }
+                Ok(Outcome::new(rep, ok))
             }
             _ => Err(Failure {
                 code: 1,
