@@ -259,3 +259,30 @@ fn mnf_over_gaussian_rationals_is_verified() {
         Some(exactlti::report::Value::Bool(true))
     ));
 }
+
+// ---- tf of a state-space file with a 1e300 entry ----
+
+/// The fuzzer's case: `tf` realized G entry by entry (a stacked descriptor system reduced by
+/// a Weierstrass split with 10^3-digit coefficients) and ran for minutes; a state-space input
+/// now keeps its own Kalman minimal realization, G checked by Markov parameters.
+#[test]
+fn tf_of_a_state_space_with_a_huge_entry_is_realized_from_the_system() {
+    let out = execute(&Command::Tf {
+        file: data("fuzz_tf_huge_entry.json"),
+    })
+    .unwrap();
+    assert!(out.verified);
+    let get = |k: &str| out.report.get(k).cloned();
+    assert_eq!(
+        get("markov_verified"),
+        Some(exactlti::report::Value::Bool(true))
+    );
+    assert!(
+        matches!(
+            get("mcmillan_degree"),
+            Some(exactlti::report::Value::Int(4))
+        ),
+        "{:?}",
+        get("mcmillan_degree")
+    );
+}

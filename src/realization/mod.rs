@@ -47,7 +47,7 @@ pub use ctrb_structure::{
 };
 pub use descriptor::{StandardForm, descriptor_to_standard};
 pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
-pub use from_transfer::{TransferRealization, realize_transfer};
+pub use from_transfer::{TransferRealization, realize_state_space, realize_transfer};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{
