@@ -247,6 +247,7 @@ fn every_fuzz_reproducer_runs_its_command_within_the_budget() {
         (&["analyze"], "fuzz_slow_analyze.toml"),
         (&["jordan"], "fuzz_symbolic_jordan_slow.json"),
         (&["check"], "fuzz_huge_entry.toml"),
+        (&["tf"], "fuzz_tf_huge_entry.json"),
     ];
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
     let mut listed: Vec<&str> = cases.iter().map(|c| c.1).collect();
