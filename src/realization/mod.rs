@@ -53,7 +53,7 @@ pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{
     JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational, minimal_jordan_with,
 };
-pub use jordan_method_k::{JordanMinimalK, ModalBlockK, minimal_jordan_over_k};
+pub use jordan_method_k::{JordanMinimalK, ModalBlockK, RealModalBlockK, minimal_jordan_over_k};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};

@@ -32,8 +32,10 @@
 //! otherwise as polynomials in the root's symbol `r<k>` with coefficients in $K$.
 
 pub mod eigen;
+pub mod pair_field;
 pub mod real;
 pub mod relfield;
+pub mod response;
 mod simple;
 
 pub use real::RealFormK;
