@@ -64,7 +64,7 @@ impl JordanFormK {
             let mut fact = Rational::from_integer(1.into());
             for power in 0..smax {
                 if power > 0 {
-                    fact = fact * Rational::from_integer(power.into());
+                    fact *= Rational::from_integer(power.into());
                 }
                 let mut g = Matrix::zeros(e.clone(), n, n);
                 let mut off = 0;
