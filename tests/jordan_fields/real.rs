@@ -99,6 +99,21 @@ fn real_jordan_form_over_k_expands_small_pairs() {
         rf.fields
     );
     assert_eq!(real_identity(&a), 1);
+    // x^5 - x^4 - sqrt(2) x + 1: K(theta) of degree 10 over Q, beyond the expansion bound:
+    // compact with a note, at once
+    let a = mat(
+        &k,
+        &[
+            &[(0, 0), (0, 0), (0, 0), (0, 0), (-1, 0)],
+            &[(1, 0), (0, 0), (0, 0), (0, 0), (0, 1)],
+            &[(0, 0), (1, 0), (0, 0), (0, 0), (0, 0)],
+            &[(0, 0), (0, 0), (1, 0), (0, 0), (0, 0)],
+            &[(0, 0), (0, 0), (0, 0), (1, 0), (1, 0)],
+        ],
+    );
+    let rf = jordan_over_k(&a).unwrap().real_form_with(true).unwrap();
+    assert!(rf.verified && rf.compact, "{rf:?}");
+    assert!(rf.notes.iter().all(|n| n.contains("degree 10")) && !rf.notes.is_empty());
     // Q(i) with a non-real entry: no real form, expanded or not
     let a = mat(&QuadraticField::gaussian(), &[&[(0, 1)]]);
     assert!(jordan_over_k(&a).unwrap().real_form_with(true).is_err());

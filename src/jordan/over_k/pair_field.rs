@@ -28,6 +28,11 @@ use crate::error::{Error, Result};
 use crate::field::{ComplexField, ComplexPair, Field, Quadratic, QuadraticField, Rational};
 use crate::poly::Poly;
 
+/// Largest degree over $\mathbb{Q}$ of $E = K(\theta)$ whose real field is built, even on
+/// request (`--expand`): the construction factors a polynomial of degree $[E:\mathbb{Q}]^2$
+/// (64 at the bound: about 6 s for a quartic factor over $K$; 100 did not finish in 100 s).
+pub const EXPAND_MAX_PRIMITIVE_DEGREE: usize = 8;
+
 /// $F$ with the images of $\sqrt d$ and of the eigenvalue $\theta$ (module docs).
 #[derive(Clone, Debug)]
 pub struct PairField {
@@ -74,7 +79,8 @@ fn eval_k(
 /// $\ge 3$ in displays.
 ///
 /// # Errors
-/// `Invalid` for a non-real $K$ or a real root; those of root isolation and of
+/// `Invalid` for a non-real $K$ or a real root; `Limit` when $[E : \mathbb{Q}] >$
+/// [`EXPAND_MAX_PRIMITIVE_DEGREE`]; those of root isolation and of
 /// [`crate::jordan::realfield`]; `Verification` if a check fails.
 pub fn pair_field(
     g: &Poly<QuadraticField>,
@@ -115,6 +121,14 @@ pub fn pair_field(
         .ok_or_else(|| Error::Verification(format!("no root of {h}")))?;
     if !expand && !small_real_field(&gamma) {
         return Ok(None);
+    }
+    if gamma.degree() > EXPAND_MAX_PRIMITIVE_DEGREE {
+        return Err(Error::Limit(format!(
+            "K(theta) has degree {} over QQ (at most {EXPAND_MAX_PRIMITIVE_DEGREE} is expanded: \
+             its real field has degree up to {})",
+            gamma.degree(),
+            gamma.degree() * (gamma.degree() - 1)
+        )));
     }
     let parts = crate::jordan::realfield::real_parts_field(&gamma, var)?;
     let f = parts.field;
