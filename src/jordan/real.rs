@@ -510,21 +510,23 @@ fn compact_pair(
     }
 }
 
-/// The legend lines of a compact pair: `r<k> = a<k> + b<k>*i` and each part's definition.
+/// The legend lines of a compact pair: `r<k> = a<k> + b<k>*i` and each part's definition,
+/// in the one display of every other section ([`AlgebraicNumber::value_string`]: a closed
+/// form where there is one, else `root of P near X`; a part not computed exactly is
+/// `near X` with the digits of [`crate::algebraic::display::approx_text`]).
 fn part_lines(e: &super::Eigenvalue, cp: &CompactPair) -> Vec<String> {
     let define = |sym: &str, what: &str, x: &Option<AlgebraicNumber>, approx: f64| match x {
         Some(x) if x.degree() <= 2 => None,
-        Some(x) => {
-            let (lo, hi) = x.interval().unwrap_or_default();
-            Some(format!(
-                "{sym} = {what} {} = root of {} in [{}, {}], near {approx:.10}",
-                e.symbol,
-                x.minpoly(),
-                crate::field::fmt_rational(&lo),
-                crate::field::fmt_rational(&hi)
-            ))
-        }
-        None => Some(format!("{sym} = {what} {}, near {approx:.10}", e.symbol)),
+        Some(x) => Some(format!(
+            "{sym} = {what} {} = {}",
+            e.symbol,
+            x.value_string()
+        )),
+        None => Some(format!(
+            "{sym} = {what} {}, near {}",
+            e.symbol,
+            crate::algebraic::display::approx_text((approx, 0.0))
+        )),
     };
     let mut out = vec![format!(
         "{} = {} + {}*i",
