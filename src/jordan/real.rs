@@ -102,6 +102,7 @@ pub struct CompactPair {
 }
 
 /// `-x` for a display string (`-b3`, `-(1 + sqrt(2))`).
+#[cfg(feature = "cli")]
 fn neg_display(x: &str) -> String {
     if let Some(rest) = x.strip_prefix('-')
         && !rest.contains([' ', '+', '-'])
@@ -125,6 +126,7 @@ pub const EXPAND_MAX_DEGREE: usize = 4;
 impl CompactPair {
     /// Entry `(r, q)` of the pair block: `a`, `b`, `-b` on the $2 \times 2$ diagonal
     /// blocks, `1` where the chain couples (`coupling`), else `0`.
+    #[cfg(feature = "cli")]
     pub(crate) fn j_entry(&self, r: usize, q: usize, coupling: bool) -> String {
         if r / 2 == q / 2 {
             match (r % 2, q % 2) {
@@ -153,6 +155,7 @@ impl CompactPair {
         }
     }
     /// `Re(x)` / `Im(x)` displays of an element of $K$ (plain when $x$ is rational).
+    #[cfg(feature = "cli")]
     pub(crate) fn part_strings(&self, x: &NfElem) -> (String, String) {
         let f = &self.field;
         if let Some(q) = f.to_rational(x) {
