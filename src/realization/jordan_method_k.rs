@@ -68,6 +68,11 @@ pub enum RealModalBlockK {
         b: Matrix<NumberField>,
         c: Matrix<NumberField>,
     },
+    /// A pair $a_0 \pm s\sqrt f$ of a rational quadratic factor ($f < 0$): the complex data of
+    /// the upper root, whose entries $u + w\sqrt f$ ($u, w \in K$) have the exact real and
+    /// imaginary parts $u$ and $w\sqrt{-f}$ (the real block is read off as for `Pair`, written
+    /// with the radical).
+    Radical(ModalBlockK),
     /// A complex pair whose real field is large: the complex modal data of the upper root,
     /// the real block read off as the real and imaginary parts of its entries (compact form).
     Compact(ModalBlockK),
@@ -79,7 +84,7 @@ impl RealModalBlockK {
         match self {
             RealModalBlockK::Root(b) => b.a.nrows(),
             RealModalBlockK::Pair { a, .. } => a.nrows(),
-            RealModalBlockK::Compact(b) => 2 * b.a.nrows(),
+            RealModalBlockK::Compact(b) | RealModalBlockK::Radical(b) => 2 * b.a.nrows(),
         }
     }
     /// Display of the eigenvalue(s).
@@ -87,7 +92,9 @@ impl RealModalBlockK {
         match self {
             RealModalBlockK::Root(b) => b.eigenvalue.clone(),
             RealModalBlockK::Pair { eigenvalue, .. } => format!("{eigenvalue} (and its conjugate)"),
-            RealModalBlockK::Compact(b) => format!("{} (and its conjugate)", b.eigenvalue),
+            RealModalBlockK::Compact(b) | RealModalBlockK::Radical(b) => {
+                format!("{} (and its conjugate)", b.eigenvalue)
+            }
         }
     }
 }
@@ -310,9 +317,13 @@ pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanM
                     real.push(RealModalBlockK::Root(blk.clone()));
                 } else if e.approx.1 > 0.0 {
                     let kk = &e.symbol[1..];
-                    let pf = pair_field(g, e.approx, &format!("c{kk}"), false)
-                        .ok()
-                        .flatten();
+                    let pf = if blk.field.0.radical.is_some() {
+                        None
+                    } else {
+                        pair_field(g, e.approx, &format!("c{kk}"), false)
+                            .ok()
+                            .flatten()
+                    };
                     match pf {
                         Some(pf) => {
                             if let Some(line) = pf.symbol() {
@@ -320,6 +331,9 @@ pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanM
                                 real_symbols.push((name.into(), def.into()));
                             }
                             real.push(expand_pair(&blk, &pf));
+                        }
+                        None if blk.field.0.radical.is_some() => {
+                            real.push(RealModalBlockK::Radical(blk.clone()));
                         }
                         None => {
                             real_symbols.push(own);
@@ -390,6 +404,60 @@ fn expand_pair(blk: &ModalBlockK, pf: &PairField) -> RealModalBlockK {
     }
 }
 
+/// The real block of a radical pair over $K$ when $\sqrt{-f} \in K$ ($-f = 1$ or $-f = d$):
+/// $(A_r, B_r, C_r)$ as in [`expand_pair`], from the exact parts $u$, $w\sqrt{-f}$.
+fn radical_to_base(
+    b: &ModalBlockK,
+    k: &QuadraticField,
+) -> Option<(
+    Matrix<QuadraticField>,
+    Matrix<QuadraticField>,
+    Matrix<QuadraticField>,
+)> {
+    let (a0, s, fd) = b.field.0.radical.clone()?;
+    let g = -fd;
+    let unit = if g == 1.into() {
+        k.one()
+    } else if &g == k.d() {
+        k.gen_elem()
+    } else {
+        return None;
+    };
+    let parts = |x: &RelElem| {
+        let c0 = x.0.first().cloned().unwrap_or_else(|| k.zero());
+        let c1 = x.0.get(1).cloned().unwrap_or_else(|| k.zero());
+        let re = k.add(&c0, &k.mul(&k.from_rational(&a0), &c1));
+        let im = k.mul(&k.mul(&k.from_rational(&s), &c1), &unit);
+        (re, im)
+    };
+    let sz = b.a.nrows();
+    let (m, p) = (b.b.ncols(), b.c.nrows());
+    let two = k.from_i64(2);
+    let mut a = Matrix::zeros(k.clone(), 2 * sz, 2 * sz);
+    let mut bb = Matrix::zeros(k.clone(), 2 * sz, m);
+    let mut c = Matrix::zeros(k.clone(), p, 2 * sz);
+    for i in 0..sz {
+        for j in 0..sz {
+            let (x, y) = parts(b.a.get(i, j));
+            a.set(2 * i, 2 * j, x.clone());
+            a.set(2 * i, 2 * j + 1, y.clone());
+            a.set(2 * i + 1, 2 * j, k.neg(&y));
+            a.set(2 * i + 1, 2 * j + 1, x);
+        }
+        for col in 0..m {
+            let (x, y) = parts(b.b.get(i, col));
+            bb.set(2 * i, col, x);
+            bb.set(2 * i + 1, col, k.neg(&y));
+        }
+        for row in 0..p {
+            let (x, y) = parts(b.c.get(row, i));
+            c.set(row, 2 * i, k.mul(&two, &x));
+            c.set(row, 2 * i + 1, k.mul(&two, &y));
+        }
+    }
+    Some((a, bb, c))
+}
+
 impl JordanMinimalK {
     /// The real modal form as one system over $K$ when every entry lies in $K$ (real
     /// roots in $K$, pairs whose real field is $\mathbb{Q}$ or $K$ itself).
@@ -433,6 +501,7 @@ impl JordanMinimalK {
                     };
                     (to(a)?, to(b)?, to(c)?)
                 }
+                RealModalBlockK::Radical(b) => radical_to_base(b, &k)?,
                 RealModalBlockK::Compact(_) => return None,
             });
         }

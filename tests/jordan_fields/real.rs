@@ -160,6 +160,40 @@ fn real_modal_realization_over_real_k() {
             }
         }
     }
+    // pairs of a rational quadratic factor, written with their radical: 1 +- sqrt(2) i (real
+    // system over K: its own Markov parameters) and +- sqrt(3) i (imaginary parts in
+    // sqrt(3) K, not in K)
+    let k = QuadraticField::new(2).unwrap();
+    for (a, want) in [
+        (
+            mat(&k, &[&[(1, 0), (0, 1)], &[(0, -1), (1, 0)]]),
+            [["1", "sqrt(2)"], ["-sqrt(2)", "1"]],
+        ),
+        (
+            mat(&k, &[&[(0, 0), (-3, 0)], &[(1, 0), (0, 0)]]),
+            [["0", "sqrt(3)"], ["-sqrt(3)", "0"]],
+        ),
+    ] {
+        let bm = Matrix::from_fn(k.clone(), 2, 1, |i, _| q(1, i as i64));
+        let cm = Matrix::from_fn(k.clone(), 1, 2, |_, i| q(1 - i as i64, 1));
+        let sys = StateSpace::new_strictly_proper(a, bm, cm).unwrap();
+        let r = minimal_jordan_over_k(&sys).unwrap();
+        assert!(r.verified);
+        let real = r.real.as_ref().unwrap();
+        assert!(matches!(real[0], RealModalBlockK::Radical(_)));
+        match r.real_to_base() {
+            Some(rs) => {
+                assert_eq!(want[0][1], "sqrt(2)");
+                assert_eq!(rs.markov(6), sys.markov(6));
+            }
+            None => assert_eq!(want[0][1], "sqrt(3)"),
+        }
+        let rep = r.report();
+        let Some(exactlti::report::Value::Matrix(am)) = rep.get("A") else {
+            panic!("A")
+        };
+        assert_eq!(am.exact, want);
+    }
     // a large real field: the compact form, still verified on the complex side
     let k = QuadraticField::new(2).unwrap();
     let one = Matrix::from_fn(k.clone(), 3, 1, |i, _| q((i == 0) as i64, 0));

@@ -160,28 +160,7 @@ impl JordanFormK {
                 let (re, im) = f.approx(x);
                 let val = if imag { im } else { re };
                 let txt = match &radical {
-                    // x = u + w sqrt(fd) = u + (w sqrt(-fd)) i, u, w in K (real)
-                    Some((a0, s, fd)) => {
-                        let kf = f.base();
-                        let c0 = x.0.first().cloned().unwrap_or_else(|| kf.zero());
-                        let c1 = x.0.get(1).cloned().unwrap_or_else(|| kf.zero());
-                        if imag {
-                            let w = kf.mul(&kf.from_rational(s), &c1);
-                            if kf.is_zero(&w) {
-                                "0".into()
-                            } else {
-                                let wt = kf.fmt_elem(&w);
-                                let wt = if wt[1..].contains([' ', '+', '-']) {
-                                    format!("({wt})")
-                                } else {
-                                    wt
-                                };
-                                format!("{wt}*sqrt({})", -fd)
-                            }
-                        } else {
-                            kf.fmt_elem(&kf.add(&c0, &kf.mul(&kf.from_rational(a0), &c1)))
-                        }
-                    }
+                    Some(_) => radical_part(&f, x, imag).unwrap_or_default(),
                     None => {
                         if f.is_zero(x) {
                             "0".into()
@@ -316,4 +295,31 @@ fn expanded_pair(
         vec![]
     };
     (ok, lines)
+}
+
+/// `Re x` (`imag` false) or `Im x` of $x \in E$ at a root $\theta = a_0 + s\sqrt f$
+/// ($f < 0$) of a rational quadratic factor, exact: $x = c_0 + c_1\theta$ has
+/// $\operatorname{Re} x = c_0 + a_0 c_1 \in K$ and $\operatorname{Im} x = (s c_1)
+/// \sqrt{-f}$, written `u` and `w*sqrt(-f)` (`None` without the radical form).
+pub(crate) fn radical_part(f: &super::RelField, x: &super::RelElem, imag: bool) -> Option<String> {
+    let (a0, s, fd) = f.0.radical.as_ref()?;
+    let kf = f.base();
+    let c0 = x.0.first().cloned().unwrap_or_else(|| kf.zero());
+    let c1 = x.0.get(1).cloned().unwrap_or_else(|| kf.zero());
+    if !imag {
+        return Some(kf.fmt_elem(&kf.add(&c0, &kf.mul(&kf.from_rational(a0), &c1))));
+    }
+    let w = kf.mul(&kf.from_rational(s), &c1);
+    let rad = format!("sqrt({})", -fd);
+    Some(match kf.to_rational(&w) {
+        Some(q) => crate::field::quadratic::fmt_pair(&num_traits::Zero::zero(), &q, &rad),
+        None => {
+            let wt = kf.fmt_elem(&w);
+            if wt[1..].contains([' ', '+', '-']) {
+                format!("({wt})*{rad}")
+            } else {
+                format!("{wt}*{rad}")
+            }
+        }
+    })
 }

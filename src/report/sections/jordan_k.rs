@@ -189,6 +189,9 @@ fn put_block(blk: &ModalBlockK, off: usize, [a, b, c]: [&mut Cells; 3]) {
 fn part(f: &RelField, x: &RelElem, imag: bool, sym: &str) -> (String, (f64, f64)) {
     let (re, im) = f.approx(x);
     let val = (if imag { im } else { re }, 0.0);
+    if let Some(t) = crate::jordan::over_k::real::radical_part(f, x, imag) {
+        return (t, val);
+    }
     let txt = if f.is_zero(x) {
         "0".to_string()
     } else if let Some(c) = f.to_base(x) {
@@ -210,7 +213,7 @@ fn part(f: &RelField, x: &RelElem, imag: bool, sym: &str) -> (String, (f64, f64)
 /// [`part`] of $-x$, written `-Re(x)` / `-Im(x)` when not plain.
 fn part_neg(f: &RelField, x: &RelElem, imag: bool, sym: &str) -> (String, (f64, f64)) {
     let (t, v) = part(f, &f.neg(x), imag, sym);
-    if t.starts_with("Re(") || t.starts_with("Im(") {
+    if f.0.radical.is_none() && (t.starts_with("Re(") || t.starts_with("Im(")) {
         (format!("-{}", part(f, x, imag, sym).0), v)
     } else {
         (t, v)
@@ -295,7 +298,9 @@ impl crate::realization::JordanMinimalK {
                             }
                         }
                     }
-                    RealModalBlockK::Compact(bk) => put_compact(bk, off, cells),
+                    RealModalBlockK::Compact(bk) | RealModalBlockK::Radical(bk) => {
+                        put_compact(bk, off, cells)
+                    }
                 }
                 off += s;
             }
