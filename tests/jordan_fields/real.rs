@@ -194,6 +194,31 @@ fn real_modal_realization_over_real_k() {
         };
         assert_eq!(am.exact, want);
     }
+    // -1 +- 2i (f = -1): plain rational parts, no `sqrt(1)`
+    let a = mat(
+        &k,
+        &[
+            &[(-1, 0), (2, 0), (0, 0)],
+            &[(-2, 0), (-1, 0), (0, 0)],
+            &[(0, 0), (0, 0), (0, 1)],
+        ],
+    );
+    let bm = Matrix::from_fn(k.clone(), 3, 1, |_, _| k.one());
+    let sys = StateSpace::new_strictly_proper(a.clone(), bm.clone(), bm.transpose()).unwrap();
+    let r = minimal_jordan_over_k(&sys).unwrap();
+    let rs = r.real_to_base().unwrap();
+    assert!(r.verified && rs.markov(8) == sys.markov(8));
+    let rep = r.report().to_text();
+    assert!(
+        rep.contains("-1   2 ]") && !rep.contains("sqrt(1)"),
+        "{rep}"
+    );
+    let rf = jordan_over_k(&a).unwrap().real_form().unwrap();
+    assert!(
+        rf.j.iter().flatten().all(|x| !x.contains("sqrt(1)")),
+        "{:?}",
+        rf.j
+    );
     // a large real field: the compact form, still verified on the complex side
     let k = QuadraticField::new(2).unwrap();
     let one = Matrix::from_fn(k.clone(), 3, 1, |i, _| q((i == 0) as i64, 0));

@@ -128,14 +128,7 @@ impl JordanFormK {
                 }
             }
             let (a_txt, b_txt) = match &radical {
-                Some((a0, s, fd)) => (
-                    crate::field::fmt_rational(a0),
-                    crate::field::quadratic::fmt_pair(
-                        &num_traits::Zero::zero(),
-                        s,
-                        &format!("sqrt({})", -fd),
-                    ),
-                ),
+                Some((a0, s, fd)) => (crate::field::fmt_rational(a0), im_radical(s, &-fd)),
                 None => {
                     compact = true;
                     let kk = &e.symbol[1..];
@@ -310,9 +303,11 @@ pub(crate) fn radical_part(f: &super::RelField, x: &super::RelElem, imag: bool) 
         return Some(kf.fmt_elem(&kf.add(&c0, &kf.mul(&kf.from_rational(a0), &c1))));
     }
     let w = kf.mul(&kf.from_rational(s), &c1);
-    let rad = format!("sqrt({})", -fd);
+    let g = -fd;
+    let rad = format!("sqrt({g})");
     Some(match kf.to_rational(&w) {
-        Some(q) => crate::field::quadratic::fmt_pair(&num_traits::Zero::zero(), &q, &rad),
+        Some(q) => im_radical(&q, &g),
+        None if num_traits::One::is_one(&g) => kf.fmt_elem(&w),
         None => {
             let wt = kf.fmt_elem(&w);
             if wt[1..].contains([' ', '+', '-']) {
@@ -322,4 +317,13 @@ pub(crate) fn radical_part(f: &super::RelField, x: &super::RelElem, imag: bool) 
             }
         }
     })
+}
+
+/// $q\sqrt g$ for rational $q$ and square-free $g > 0$ (`q` itself when $g = 1$).
+fn im_radical(q: &crate::field::Rational, g: &num_bigint::BigInt) -> String {
+    if num_traits::One::is_one(g) {
+        crate::field::fmt_rational(q)
+    } else {
+        crate::field::quadratic::fmt_pair(&num_traits::Zero::zero(), q, &format!("sqrt({g})"))
+    }
 }
