@@ -9,7 +9,12 @@
 //! v_1, \dots$: from $A v = \theta v$, $A\,\mathrm{Re}\, v = a\,\mathrm{Re}\, v -
 //! b\,\mathrm{Im}\, v$ and $A\,\mathrm{Im}\, v = b\,\mathrm{Re}\, v + a\,\mathrm{Im}\, v$.
 //!
-//! Presentation (the compact form of the rational real Jordan form): a pair's entries are
+//! Presentation, as over $\mathbb{Q}$: a pair whose real field $F = K(\operatorname{Re}
+//! \theta, \operatorname{Im}\theta)$ has degree at most
+//! [`crate::jordan::real::EXPAND_MAX_DEGREE`] (always with `expand`, up to
+//! [`super::pair_field::EXPAND_MAX_PRIMITIVE_DEGREE`]) is written in $F$
+//! ([`super::pair_field`]) and checked there: $A T = T J$ exactly. Otherwise (the compact
+//! form of the rational real Jordan form) a pair's entries are
 //! the real and imaginary parts of exact elements of $E = K(\theta)$, written `Re(x)`,
 //! `Im(x)` with $a$, $b$ as `a<k>`, `b<k>`; for a rational quadratic factor with roots
 //! $a_0 \pm s\sqrt f$ ($f < 0$) they are explicit: `u` and `v*sqrt(-f)`, $u, v \in K$.
