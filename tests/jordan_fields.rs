@@ -204,7 +204,8 @@ fn small_entry() -> impl Strategy<Value = (i64, i64)> {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 24, .. ProptestConfig::default() })]
     /// Random 1..4 x 4 matrices over Q(i) and Q(sqrt 2), and planted blocks of a repeated
-    /// eigenvalue in K: verified, block sizes add up to n, approximations are roots.
+    /// eigenvalue in K: verified (Jordan form, real form over Q(sqrt 2), free response,
+    /// Jordan-method realization), block sizes add up to n, approximations are roots.
     #[test]
     fn jordan_over_k_is_verified(
         d in prop::sample::select(vec![-1i64, 2]),
@@ -220,6 +221,13 @@ proptest! {
         });
         let jf = jordan_over_k(&a).unwrap();
         check(&jf);
+        // the real form over Q(sqrt 2) (pairs in their real field when small, checked there)
+        // and the free response (x(0) = x0, x' = A x)
+        if d > 0 {
+            let rf = jf.real_form().unwrap();
+            prop_assert!(rf.verified, "A = {}", a);
+        }
+        prop_assert!(jf.free_response().verify(&jf), "A = {}", a);
         // the Jordan-method minimal realization of (A, B, C) with B, C from the entries:
         // verified (Markov parameters, McMillan degree) and of the Kalman order
         let b = Matrix::from_fn(k.clone(), n, 1, |i, _| q(entries[i].1, entries[15 - i].0));
