@@ -567,3 +567,37 @@ fn quadratic_input_rational_entries_or_explicit_unsupported() {
         Err(Error::NotSquare { .. })
     ));
 }
+
+/// `--expand` is bounded: the pair of a sextic (x^6 - x + 1, real field of degree up to 30,
+/// 16 s to build) stays in the compact exact form with a note naming the bound, and the
+/// form is still exact and verified; a quintic (real field of degree 20) is expanded.
+#[test]
+fn real_form_expand_stops_at_the_eigenvalue_degree_bound() {
+    use exactlti::jordan::real::EXPAND_MAX_EIGENVALUE_DEGREE;
+    assert_eq!(EXPAND_MAX_EIGENVALUE_DEGREE, 5);
+    let companion = |last: [i64; 2], n: usize| {
+        let mut a = Matrix::zeros(Q, n, n);
+        for i in 0..n - 1 {
+            a.set(i, i + 1, Rational::from_integer(1.into()));
+        }
+        a.set(n - 1, 0, Rational::from_integer(last[0].into()));
+        a.set(n - 1, 1, Rational::from_integer(last[1].into()));
+        a
+    };
+    let sextic = jordan(&companion([-1, 1], 6)).unwrap();
+    let rf = sextic.real_form_expanded().unwrap();
+    assert!(rf.verified, "{:?}", rf.notes);
+    let pairs: Vec<_> = rf.blocks.iter().filter(|b| b.pair).collect();
+    assert_eq!(pairs.len(), 3);
+    assert!(pairs.iter().all(|b| b.compact.is_some() && b.t.is_none()));
+    assert_eq!(rf.notes.len(), 3, "{:?}", rf.notes);
+    assert!(rf.notes[0].contains("degree 6") && rf.notes[0].contains("up to 30"));
+    let quintic = jordan(&companion([1, 1], 5)).unwrap();
+    let rf = quintic.real_form_expanded().unwrap();
+    assert!(
+        rf.exact && rf.verified && rf.notes.is_empty(),
+        "{:?}",
+        rf.notes
+    );
+    assert!(rf.blocks.iter().filter(|b| b.pair).all(|b| b.t.is_some()));
+}
