@@ -18,6 +18,7 @@
 use std::fmt;
 
 pub mod complex;
+pub mod lehmer;
 pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
 pub mod rational;

@@ -10,7 +10,7 @@
 //! | [`QuadraticField::sqrt_of_rational`] | $\sqrt{r}$ as (field, element) for any rational `r` |
 //! | [`Field::sign`] | exact sign (real fields only) |
 
-use super::{Field, Rational, fmt_rational, rational_to_f64};
+use super::{Field, Rational, fmt_rational, lehmer, rational_to_f64};
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -162,7 +162,18 @@ impl QuadraticField {
     }
     /// Norm $a^2 - d b^2$.
     pub fn norm(&self, x: &Quadratic) -> Rational {
-        &x.a * &x.a - Rational::from_integer(self.d.clone()) * &x.b * &x.b
+        lehmer::sub(
+            &lehmer::mul(&x.a, &x.a),
+            &self.times_d(&lehmer::mul(&x.b, &x.b)),
+        )
+    }
+    /// `d * x` (canonical), for the products of the $\sqrt d$ parts.
+    fn times_d(&self, x: &Rational) -> Rational {
+        if self.d.is_negative() && self.d.magnitude().is_one() {
+            -x
+        } else {
+            lehmer::mul(x, &Rational::from_integer(self.d.clone()))
+        }
     }
     /// The Galois conjugate $a - b\sqrt d$.
     pub fn galois(&self, x: &Quadratic) -> Quadratic {
@@ -311,27 +322,39 @@ impl Field for QuadraticField {
     }
     fn add(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
         Quadratic {
-            a: &x.a + &y.a,
-            b: &x.b + &y.b,
+            a: lehmer::add(&x.a, &y.a),
+            b: lehmer::add(&x.b, &y.b),
         }
     }
     fn sub(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
         Quadratic {
-            a: &x.a - &y.a,
-            b: &x.b - &y.b,
+            a: lehmer::sub(&x.a, &y.a),
+            b: lehmer::sub(&x.b, &y.b),
         }
     }
     fn mul(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
         if x.b.is_zero() && y.b.is_zero() {
             return Quadratic {
-                a: &x.a * &y.a,
+                a: lehmer::mul(&x.a, &y.a),
                 b: Rational::zero(),
             };
         }
-        let d = Rational::from_integer(self.d.clone());
         Quadratic {
-            a: &x.a * &y.a + d * &x.b * &y.b,
-            b: &x.a * &y.b + &x.b * &y.a,
+            a: lehmer::add(
+                &lehmer::mul(&x.a, &y.a),
+                &self.times_d(&lehmer::mul(&x.b, &y.b)),
+            ),
+            b: lehmer::add(&lehmer::mul(&x.a, &y.b), &lehmer::mul(&x.b, &y.a)),
+        }
+    }
+    fn mul_add_assign(&self, acc: &mut Quadratic, x: &Quadratic, y: &Quadratic) {
+        if !self.is_zero(x) && !self.is_zero(y) {
+            *acc = self.add(acc, &self.mul(x, y));
+        }
+    }
+    fn mul_sub_assign(&self, acc: &mut Quadratic, x: &Quadratic, y: &Quadratic) {
+        if !self.is_zero(x) && !self.is_zero(y) {
+            *acc = self.sub(acc, &self.mul(x, y));
         }
     }
     fn neg(&self, x: &Quadratic) -> Quadratic {
@@ -341,10 +364,10 @@ impl Field for QuadraticField {
         if self.is_zero(x) {
             return None;
         }
-        let n = self.norm(x);
+        let ni = self.norm(x).recip();
         Some(Quadratic {
-            a: &x.a / &n,
-            b: -&x.b / &n,
+            a: lehmer::mul(&x.a, &ni),
+            b: -lehmer::mul(&x.b, &ni),
         })
     }
     fn from_rational(&self, q: &Rational) -> Quadratic {
