@@ -24,7 +24,7 @@
 
 use super::AlgebraicNumber;
 use crate::error::{Error, Result};
-use crate::field::{Q, QuadraticField, Rational};
+use crate::field::{Q, QuadraticField, Rational, lehmer};
 use crate::poly::Poly;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -60,17 +60,17 @@ impl Iv {
         Iv(x.clone(), x)
     }
     fn add(&self, o: &Iv) -> Iv {
-        Iv(&self.0 + &o.0, &self.1 + &o.1)
+        Iv(lehmer::add(&self.0, &o.0), lehmer::add(&self.1, &o.1))
     }
     fn sub(&self, o: &Iv) -> Iv {
-        Iv(&self.0 - &o.1, &self.1 - &o.0)
+        Iv(lehmer::sub(&self.0, &o.1), lehmer::sub(&self.1, &o.0))
     }
     fn mul(&self, o: &Iv) -> Iv {
         let p = [
-            &self.0 * &o.0,
-            &self.0 * &o.1,
-            &self.1 * &o.0,
-            &self.1 * &o.1,
+            lehmer::mul(&self.0, &o.0),
+            lehmer::mul(&self.0, &o.1),
+            lehmer::mul(&self.1, &o.0),
+            lehmer::mul(&self.1, &o.1),
         ];
         let lo = p.iter().min().cloned().unwrap_or_default();
         let hi = p.iter().max().cloned().unwrap_or_default();

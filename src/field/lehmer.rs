@@ -88,6 +88,9 @@ fn combine(a: &BigUint, b: &BigUint, s: i128, t: i128) -> BigUint {
 
 /// $\gcd(a, b) \ge 0$ of big integers.
 pub fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
+    if a.magnitude().is_one() || b.magnitude().is_one() {
+        return BigInt::one();
+    }
     BigInt::from_biguint(Sign::Plus, gcd_biguint(a.magnitude(), b.magnitude()))
 }
 
@@ -146,6 +149,9 @@ fn add_or_sub(x: &Rational, y: &Rational, minus: bool) -> Rational {
     }
     let (a, b) = (x.numer(), x.denom());
     let (c, d) = (y.numer(), y.denom());
+    if b.is_one() && d.is_one() {
+        return Rational::new_raw(pm(a.clone(), c.clone()), BigInt::one());
+    }
     if b == d {
         // also the integer case b = d = 1, where `fraction` finds gcd(n, 1) = 1 at once
         return fraction(pm(a.clone(), c.clone()), b);
