@@ -31,6 +31,7 @@
 //! rational quadratic $g$ with roots $a_0 \pm s\sqrt f$ as `u + v*sqrt(f)`, $u, v \in K$;
 //! otherwise as polynomials in the root's symbol `r<k>` with coefficients in $K$.
 
+mod coeffs;
 pub mod eigen;
 pub mod real;
 pub mod relfield;
@@ -83,6 +84,9 @@ impl ComponentK {
         let (v, w) = (&self.chains, &self.left_chains);
         if v.nrows() != a.nrows() || v.ncols() != self.multiplicity {
             return false;
+        }
+        if self.multiplicity == 1 && self.blocks == [1] {
+            return coeffs::verify_simple(&self.field, v, w, a);
         }
         let ak = lift(a, &self.field);
         let j = self.jordan_matrix();
