@@ -254,6 +254,34 @@ pub fn descriptor_zeros_report<K: Field>(z: &DescriptorZeros<K>) -> Result<Repor
         .bool("verified", k.verified))
 }
 
+/// The `transfer_matrix` and `zpk` lists of a `tf` report (rows of entries), the latter
+/// with the field's zero-pole-gain display `zpk`.
+///
+/// # Errors
+/// From `zpk` (a factorization).
+pub(super) fn transfer_lists<K: Field>(
+    g: &TransferMatrix<K>,
+    zpk: impl Fn(&Poly<K>, &Poly<K>) -> Result<String>,
+) -> Result<(Vec<Value>, Vec<Value>)> {
+    let zpk = g
+        .entries
+        .iter()
+        .map(|row| {
+            Ok(Value::List(
+                row.iter()
+                    .map(|f| zpk(&f.num, &f.den).map(Value::Str))
+                    .collect::<Result<Vec<_>>>()?,
+            ))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let tm = g
+        .to_strings()
+        .into_iter()
+        .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
+        .collect();
+    Ok((tm, zpk))
+}
+
 /// Zero-pole-gain display of one rational function over Q: `k (factors)/(factors)` with
 /// the monic irreducible factors over Q.
 fn zpk_string(num: &Poly<Q>, den: &Poly<Q>) -> Result<String> {
@@ -303,22 +331,7 @@ pub fn tf_report(g: &TransferMatrix<Q>, r: &TransferRealization<Q>) -> Result<Re
     let poles = eigen_items_of(&a_f)?.unwrap_or_default();
     let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
     let zero_poly = zeros.polynomial.clone();
-    let zpk: Vec<Value> = g
-        .entries
-        .iter()
-        .map(|row| {
-            Ok(Value::List(
-                row.iter()
-                    .map(|f| zpk_string(&f.num, &f.den).map(Value::Str))
-                    .collect::<Result<Vec<_>>>()?,
-            ))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let tm: Vec<Value> = g
-        .to_strings()
-        .into_iter()
-        .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
-        .collect();
+    let (tm, zpk) = transfer_lists(g, zpk_string)?;
     Ok(Report::titled("transfer matrix")
         .list("transfer_matrix", tm)
         .list("zpk", zpk)

@@ -188,22 +188,7 @@ pub fn tf_report_quadratic(
     let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
     let (tzeros, zeros_ok) = factor_items(&zeros.polynomial, "algebraic_multiplicity")?;
     let markov_ok = ss.is_none_or(|s| g.matches_markov(s));
-    let zpk = g
-        .entries
-        .iter()
-        .map(|row| {
-            Ok(Value::List(
-                row.iter()
-                    .map(|f| zpk_string(&f.num, &f.den).map(Value::Str))
-                    .collect::<Result<Vec<_>>>()?,
-            ))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let tm: Vec<Value> = g
-        .to_strings()
-        .into_iter()
-        .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
-        .collect();
+    let (tm, zpk) = super::pencil::transfer_lists(g, zpk_string)?;
     let mut rep = Report::titled(format!("transfer matrix over {k}"))
         .str("field", k.to_string())
         .list("transfer_matrix", tm)
