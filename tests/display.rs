@@ -202,6 +202,9 @@ fn strings<'a>(v: &'a serde_json::Value, out: &mut Vec<&'a str>) {
 /// before the radical (`1/24*sqrt(3)`) or a rational part after it (`sqrt(1598) - 6`,
 /// `1/10*sqrt(1598) - 6`).
 fn non_canonical(s: &str) -> Option<String> {
+    if let Some(why) = non_canonical_near(s) {
+        return Some(why);
+    }
     let b = s.as_bytes();
     let mut from = 0;
     while let Some(k) = s[from..].find("sqrt(") {
@@ -257,6 +260,45 @@ fn non_canonical(s: &str) -> Option<String> {
     None
 }
 
+/// What is wrong with the approximations in `s`: every `near X` (and `near X + Y*i`) writes
+/// at most 10 significant digits, as [`AlgebraicNumber::value_string`] does, and a
+/// `root of P` is not followed by an isolating interval (the old real Jordan form legends:
+/// `root of P in [a, b], near -1.7239457174`).
+fn non_canonical_near(s: &str) -> Option<String> {
+    if s.contains("root of") && s.contains(" in [") {
+        return Some(format!("an isolating interval in {s:?}"));
+    }
+    let mut from = 0;
+    while let Some(k) = s[from..].find("near ") {
+        from += k + 5;
+        // the real part, then an optional ` + Y*i` / ` - Y*i`
+        for (n, num) in s[from..]
+            .split([' ', ','])
+            .filter(|w| !matches!(*w, "" | "+" | "-"))
+            .take(2)
+            .enumerate()
+        {
+            let num = num.trim_end_matches("*i");
+            let Some(mantissa) = num
+                .trim_start_matches('-')
+                .split(['e', 'E'])
+                .next()
+                .filter(|m| !m.is_empty() && m.chars().all(|c| c.is_ascii_digit() || c == '.'))
+            else {
+                break; // not a number (the next word of the text)
+            };
+            let sig = mantissa.trim_start_matches(['0', '.']).replace('.', "");
+            if sig.len() > 10 {
+                return Some(format!("{} significant digits in {s:?}", sig.len()));
+            }
+            if n == 0 && !s[from..].contains("*i") {
+                break;
+            }
+        }
+    }
+    None
+}
+
 #[test]
 fn the_pattern_check_finds_the_old_displays() {
     for bad in [
@@ -266,6 +308,9 @@ fn the_pattern_check_finds_the_old_displays() {
         "1/3192*sqrt(399)*i - 1/8",
         "(1 + sqrt(5))/2",
         "-1/2*sqrt(2)*i",
+        "a1 = Re r1 = root of x^6 + 87/2*x^5 + 141015625/4 in [-99/57, -19/11], near -1.7239457174",
+        "b1 = Im r1, near 7.5522983973",
+        "root of x^4 + 1 near 0.7071067812 + 0.70710678119*i",
     ] {
         assert!(non_canonical(bad).is_some(), "{bad}");
     }
@@ -277,6 +322,11 @@ fn the_pattern_check_finds_the_old_displays() {
         "s^2 - sqrt(3)/2*s - 3/2",
         "(sqrt(3)/12*s^2 + (-49/8 + sqrt(3)/10)*s + (1/5 + 45*sqrt(3)/8))/(s^2 - 3/2)",
         "QQ(sqrt(1598))",
+        "a1 = Re r1 = root of x^6 + 87/2*x^5 + 141015625/4 near -1.723945717",
+        "b1 = Im r1, near 7.552298397",
+        "root of x^4 + 1 near 0.7071067812 + 0.7071067812*i",
+        "near 0.001234567890 and more",
+        "near 1.5e-12",
     ] {
         assert_eq!(non_canonical(good), None, "{good}");
     }
@@ -409,4 +459,55 @@ fn root_of_displays_agree() {
     let p = exactlti::poly::parse_poly_q("x^3 - 2").unwrap();
     let z = &AlgebraicNumber::roots_of_irreducible(&p).unwrap()[0];
     assert_eq!(z.value_string(), "root of x^3 - 2 near 1.259921050");
+}
+
+/// The real Jordan form's legends (`jordan --real`: `symbols` and `parts`) show each number
+/// as the other sections do: closed forms for the parts of a quartic's roots, `root of P
+/// near X` (10 significant digits, no interval) for parts of degree 6 and 12, `near X` for
+/// parts not computed (a sextic's roots).
+#[test]
+fn real_jordan_legends_show_each_number_one_way() {
+    let dir = std::env::temp_dir().join(format!("exactlti-display-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let write = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).expect("write");
+        p.to_str().expect("utf-8").to_string()
+    };
+    let quartic = write(
+        "quartic.json",
+        r#"{"A": [[0,1,0,0],[0,0,1,0],[0,0,0,1],[-2,0,-1,0]]}"#,
+    );
+    let sextic = write(
+        "sextic.json",
+        r#"{"A": [[0,1,0,0,0,0],[0,0,1,0,0,0],[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1],[-1,-1,0,0,0,0]]}"#,
+    );
+    let quarter_car = "tests/data/everyday/quarter_car.json".to_string();
+    for (file, want) in [
+        (&quartic, "a1 = Re r1 = sqrt(-1/4 + sqrt(2)/2)"),
+        (&sextic, "a1 = Re r1, near 0.9454023333"),
+        (
+            &quarter_car,
+            "a1 = Re r1 = root of x^6 + 87/2*x^5 + 12951/4*x^4 + 629213/8*x^3 + 4411343/2*x^2 + 192275771/8*x + 141015625/4 near -1.723945717",
+        ),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
+            .args(["jordan", file, "--real", "--format", "json"])
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .output()
+            .expect("runs");
+        assert_eq!(out.status.code(), Some(0), "{file}");
+        let j: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        let mut all = vec![];
+        strings(&j, &mut all);
+        let bad: Vec<String> = all.iter().filter_map(|s| non_canonical(s)).collect();
+        assert!(bad.is_empty(), "{file}: {}", bad.join("\n"));
+        let parts: Vec<&str> = j["parts"]
+            .as_array()
+            .expect("parts")
+            .iter()
+            .filter_map(|v| v.as_str())
+            .collect();
+        assert!(parts.contains(&want), "{file}: {parts:?}");
+    }
 }

@@ -412,3 +412,68 @@ mod cross_check {
         }
     }
 }
+
+/// `check` over Q(sqrt -3) compares the eigenvalues too: the exact spectrum of the real form
+/// [[X, -Y], [Y, X]] is that of A and of its conjugate, from the Jordan form of A over K.
+/// Here A has sqrt(-3) and its conjugate -sqrt(-3) (the real form doubles each), 2, and the
+/// four roots of x^4 + 3 (two from x^2 - sqrt(-3) over K, two from the conjugate factor).
+#[test]
+fn check_compares_the_eigenvalues_over_q_sqrt_minus_3() {
+    let f = temp_file(
+        "s3.json",
+        r#"{"A": [["sqrt(-3)", 1, 0, 0, 0], [0, "-sqrt(-3)", 0, 0, 0], [0, 0, 2, 0, 0],
+                  [0, 0, 0, 0, 1], [0, 0, 0, "sqrt(-3)", 0]],
+            "B": [[1], [1], [1], [0], [1]], "C": [[1, 1, 1, 1, 0]]}"#,
+    );
+    let (code, j, err) = json(&["check", f.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err} {j}");
+    assert_eq!(j["agree"], true);
+    let c = &j["comparisons"]["jordan_structure_real_form"];
+    assert_eq!(c["agree"], true, "{c}");
+    assert_eq!(c["exact_verified"], true);
+    let evs = c["eigenvalues"].as_array().unwrap();
+    assert_eq!(evs.len(), 7, "{c}");
+    let blocks = |v: &str| {
+        evs.iter()
+            .find(|e| e["eigenvalue"] == v)
+            .map(|e| e["exact_blocks"].clone())
+    };
+    for doubled in ["sqrt(3)*i", "-sqrt(3)*i", "2"] {
+        assert_eq!(
+            blocks(doubled),
+            Some(serde_json::json!([1, 1])),
+            "{doubled}"
+        );
+    }
+    let quartic = evs
+        .iter()
+        .filter(|e| {
+            e["eigenvalue"]
+                .as_str()
+                .unwrap()
+                .starts_with("root of x^4 + 3 near")
+        })
+        .count();
+    assert_eq!(quartic, 4);
+    let skipped = j["skipped"].to_string();
+    assert!(!skipped.contains("jordan_structure"), "{skipped}");
+}
+
+#[test]
+fn check_exits_3_when_the_float_eigenvalues_merge_over_q_sqrt_minus_3() {
+    // sqrt(-3) and sqrt(-3) + 1e-12: two simple eigenvalues exactly, one double one in floats
+    let f = temp_file(
+        "s3close.json",
+        r#"{"A": [["sqrt(-3)", 0], [0, "sqrt(-3) + 1/1000000000000"]], "B": [[1], [0]], "C": [[1, 1]]}"#,
+    );
+    let (code, j, err) = json(&["check", f.to_str().unwrap()]);
+    assert_eq!(code, 3, "{err} {j}");
+    assert_eq!(j["agree"], false);
+    let c = &j["comparisons"]["jordan_structure_real_form"];
+    assert_eq!(c["agree"], false, "{c}");
+    for e in c["eigenvalues"].as_array().unwrap() {
+        assert_eq!(e["exact_blocks"], serde_json::json!([1]), "{e}");
+        assert_eq!(e["agree"], false, "{e}");
+        assert_ne!(e["float_truth"], "true", "{e}");
+    }
+}

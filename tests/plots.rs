@@ -362,3 +362,90 @@ fn bode_svg_has_both_panels_and_named_channels() {
     // 41 added across f_n (1 +- 8 zeta), besides the log grid's own
     assert!(near >= 41 + 5, "{near} points near the resonance");
 }
+
+/// The x pixel of the tick label `label` (a `<text>` element with that exact content).
+fn tick_x(svg: &str, label: &str) -> Option<f64> {
+    svg.lines()
+        .find(|l| l.starts_with("<text x=\"") && l.ends_with(&format!(">{label}</text>")))
+        .and_then(|l| l[9..].split('"').next()?.parse().ok())
+}
+
+#[test]
+fn bode_svg_of_a_complex_system_is_two_sided() {
+    // poles -1/10 + 2i (resonance at +2 rad/s) and -1/20 - i (at -1 rad/s)
+    let file = tmp(
+        "qi-bode.json",
+        r#"{"name": "over Q(i)", "inputs": ["u"], "outputs": ["y", "z"],
+            "A": [["-1/10 + 2*i", 1], [0, "-1/20 - i"]], "B": [[1], [1]],
+            "C": [[1, "i"], [0, 1]]}"#,
+    );
+    let svg = file.with_extension("bode.svg");
+    let j = run(&[
+        "freqresp",
+        file.to_str().unwrap(),
+        "--from",
+        "0.01",
+        "--to",
+        "10",
+        "--points",
+        "60",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(j["two_sided"], true);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    well_formed(&text);
+    for want in [
+        "over Q(i): Bode plot",
+        "negative frequencies (f &lt; 0)",
+        "positive frequencies (f &gt; 0)",
+        "frequency [Hz], f &lt; 0",
+        "frequency [Hz], f &gt; 0",
+        "magnitude [dB]",
+        "phase [deg]",
+        "u \u{2192} y",
+        "u \u{2192} z",
+    ] {
+        assert!(text.contains(want), "missing {want}");
+    }
+    // two channels in four panels (magnitude and phase, each side)
+    assert_eq!(text.matches("<polyline").count(), 8);
+    // the negative side's axis is mirrored: -10 Hz on its left, -0.01 Hz on its right, and
+    // both left of the positive side's 0.01 Hz
+    let (a, b, c) = (
+        tick_x(&text, "-10").expect("tick -10"),
+        tick_x(&text, "-0.01").expect("tick -0.01"),
+        tick_x(&text, "0.01").expect("tick 0.01"),
+    );
+    assert!(a < b && b < c, "{a} {b} {c}");
+    // the grid is refined near each resonance on its own side
+    let poles = [(-0.1, 2.0), (-0.05, -1.0)];
+    let grid = exactlti::cli::plots::bode_grid_two_sided(0.01, 10.0, 60, &poles);
+    assert!(grid.windows(2).all(|w| w[0] < w[1]), "increasing");
+    let near = |f0: f64| grid.iter().filter(|f| (**f / f0 - 1.0).abs() < 0.2).count();
+    let tau = 2.0 * std::f64::consts::PI;
+    assert!(near(2.0 / tau) >= 20, "{}", near(2.0 / tau));
+    assert!(near(-1.0 / tau) >= 20, "{}", near(-1.0 / tau));
+    assert!(near(-2.0 / tau) < 10 && near(1.0 / tau) < 10);
+}
+
+#[test]
+fn bode_svg_of_a_real_system_stays_one_sided() {
+    let file = tmp("mimo-bode-1.json", MIMO);
+    let svg = file.with_extension("bode1.svg");
+    run(&[
+        "freqresp",
+        file.to_str().unwrap(),
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    well_formed(&text);
+    assert!(!text.contains("negative frequencies"));
+    assert!(!text.contains("f &lt; 0"));
+    assert!(text.contains(">frequency [Hz]</text>"));
+    // two panels, four channels
+    assert_eq!(text.matches("<polyline").count(), 8);
+    assert_eq!(text.matches(r##"fill="none" stroke="#333""##).count(), 2);
+    assert!(tick_x(&text, "-10").is_none() && tick_x(&text, "-0.01").is_none());
+}

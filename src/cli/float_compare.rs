@@ -11,7 +11,9 @@
 //! on the complex Markov parameters (complex Jacobi SVD). The eigenvalues are compared
 //! through the real form too: over $\mathbb{Q}(i)$ the real form of $A$ is a rational
 //! matrix whose exact Jordan form (the structures of $A$ and $\bar A$ together) is compared
-//! with the float guess by [`jordan_comparison`]. The frequency response is compared with
+//! with the float guess by [`jordan_comparison`]; over $\mathbb{Q}(\sqrt{-d})$, $d \ne 1$,
+//! the exact spectrum of the real form comes from the Jordan form of $A$ over $K$ and its
+//! conjugate ([`real_form_spectrum`]). The frequency response is compared with
 //! the exact $G(s)$ at points $s$ of the imaginary axis that lie in the field
 //! ([`MAX_EXACT_RESPONSE_STATES`]).
 //!
@@ -61,6 +63,10 @@ fn truth_str(t: Truth) -> &'static str {
     }
 }
 
+/// One exact eigenvalue for [`spectrum_comparison`]: display, approximation, Jordan block
+/// sizes (largest first; the algebraic multiplicity is their sum).
+pub(crate) type ExactEigenvalue = (String, (f64, f64), Vec<usize>);
+
 /// Eigenvalues and Jordan structure: exact (rational `A`) against the float guess.
 pub fn jordan_comparison(
     a_exact: &crate::matrix::Matrix<crate::field::Q>,
@@ -68,15 +74,31 @@ pub fn jordan_comparison(
 ) -> Result<Vec<(String, bool, Report)>, Failure> {
     let jf = crate::jordan::jordan(a_exact).map_err(|e| fail(path, e))?;
     let a = to_dmatrix(a_exact).map_err(|e| fail(path, e))?;
+    let exact: Vec<ExactEigenvalue> = jf
+        .eigenvalues
+        .iter()
+        .map(|ev| (ev.value.clone(), ev.approx, ev.blocks.clone()))
+        .collect();
+    Ok(vec![spectrum_comparison(&exact, &a, jf.verified, path)?])
+}
+
+/// The item `jordan_structure`: each exact eigenvalue against the nearest cluster of the
+/// float Jordan guess of `a` (within $10^{-6}(1 + \lVert A \rVert)$, same algebraic
+/// multiplicity and block sizes).
+pub(crate) fn spectrum_comparison(
+    exact: &[ExactEigenvalue],
+    a: &DMatrix<f64>,
+    exact_verified: bool,
+    path: &Path,
+) -> Result<Item, Failure> {
     let tol = Tol::default();
-    let fj = float::jordan_guess(&a, &tol).map_err(|e| fail(path, e))?;
+    let fj = float::jordan_guess(a, &tol).map_err(|e| fail(path, e))?;
     let scale = 1.0 + fj.norm;
-    let mut out = vec![];
     let mut worst = 0.0f64;
     let mut structure_ok = true;
     let mut rows = vec![];
-    for ev in &jf.eigenvalues {
-        let (re, im) = ev.approx;
+    for (value, (re, im), blocks) in exact {
+        let (re, im) = (*re, *im);
         let nearest = fj.clusters.iter().min_by(|x, y| {
             let dx = (x.center.re - re).hypot(x.center.im - im);
             let dy = (y.center.re - re).hypot(y.center.im - im);
@@ -92,25 +114,15 @@ pub fn jordan_comparison(
             .fold(0.0, f64::max);
         worst = worst.max(spread);
         let same = dist <= 1e-6 * scale
-            && c.algebraic_multiplicity == ev.algebraic_multiplicity
-            && c.block_sizes == ev.blocks;
+            && c.algebraic_multiplicity == blocks.iter().sum::<usize>()
+            && &c.block_sizes == blocks;
         structure_ok &= same;
+        let ints = |v: &[usize]| Value::List(v.iter().map(|&b| Value::Int(b as i64)).collect());
         rows.push(Value::Obj(
             Report::new()
-                .str("eigenvalue", ev.value.clone())
-                .with(
-                    "exact_blocks",
-                    Value::List(ev.blocks.iter().map(|&b| Value::Int(b as i64)).collect()),
-                )
-                .with(
-                    "float_blocks",
-                    Value::List(
-                        c.block_sizes
-                            .iter()
-                            .map(|&b| Value::Int(b as i64))
-                            .collect(),
-                    ),
-                )
+                .str("eigenvalue", value.clone())
+                .with("exact_blocks", ints(blocks))
+                .with("float_blocks", ints(&c.block_sizes))
                 .float("float_center_distance", dist)
                 .float("float_member_spread", spread)
                 .str("float_truth", claim_str(same, c.truth))
@@ -118,16 +130,15 @@ pub fn jordan_comparison(
         ));
     }
     let warnings = Value::List(fj.warnings.iter().map(|w| Value::Str(w.clone())).collect());
-    out.push((
+    Ok((
         "jordan_structure".to_string(),
         structure_ok,
         Report::new()
             .with("eigenvalues", Value::List(rows))
             .float("max_float_eigenvalue_error", worst)
             .with("float_warnings", warnings)
-            .bool("exact_verified", jf.verified),
-    ));
-    Ok(out)
+            .bool("exact_verified", exact_verified),
+    ))
 }
 
 /// Largest `n + max(m, p)` for which `check` runs the float invariant zeros (their dense
@@ -148,6 +159,60 @@ fn count_item(exact: usize, real_form: usize, truth: float::Truth) -> (bool, Rep
         r = r.int("float", h);
     }
     (ok, r.str("float_truth", claim_str(ok, truth)))
+}
+
+/// The exact spectrum of the real form $\begin{bmatrix} X & -Y \\ Y & X \end{bmatrix}$ of
+/// $A = X + iY$ over $K = \mathbb{Q}(\sqrt d)$, $d < 0$ (`None` for another field), and
+/// whether $A$'s Jordan form over $K$ verified. The real form is similar over $\mathbb{C}$
+/// to $A \oplus \bar A$, so an eigenvalue $\mu$ has the blocks of $A$ at $\mu$ and at
+/// $\bar\mu$: from the components of the Jordan form of $A$ over $K$
+/// ([`crate::jordan::over_k::jordan_over_k`]), those of a factor $g$ and of $\bar g$
+/// (coefficients conjugated in $K$, compared exactly).
+fn real_form_spectrum<K: Field + 'static>(
+    a: &Matrix<K>,
+    path: &Path,
+) -> Result<Option<(Vec<ExactEigenvalue>, bool)>, Failure> {
+    let Some(q) = (a as &dyn std::any::Any).downcast_ref::<Matrix<QuadraticField>>() else {
+        return Ok(None);
+    };
+    let k = q.field();
+    if !num_traits::Signed::is_negative(k.d()) {
+        return Ok(None);
+    }
+    let jf = crate::jordan::over_k::jordan_over_k(q).map_err(|e| fail(path, e))?;
+    let conj_of = |g: &crate::poly::Poly<QuadraticField>| {
+        let cs = g.coeffs().iter().map(|c| k.galois(c)).collect();
+        crate::poly::Poly::new(k.clone(), cs)
+    };
+    // the component whose factor is the conjugate of component c's, if any
+    let partner: Vec<Option<usize>> = jf
+        .components
+        .iter()
+        .map(|c| {
+            let gbar = conj_of(&c.factor);
+            jf.components.iter().position(|o| o.factor == gbar)
+        })
+        .collect();
+    let mut out = vec![];
+    for ev in &jf.eigenvalues {
+        // mu = ev: the blocks of A at mu and (when mu-bar is an eigenvalue of A) at mu-bar
+        let mut blocks = ev.blocks.clone();
+        if let Some(p) = partner[ev.component] {
+            blocks.extend(jf.components[p].blocks.iter().copied());
+        }
+        blocks.sort_unstable_by(|x, y| y.cmp(x));
+        out.push((ev.value.clone(), ev.approx, blocks));
+        if partner[ev.component].is_none() {
+            // mu-bar is an eigenvalue of conj(A) only, with the blocks of A at mu
+            let (re, im) = ev.approx;
+            out.push((
+                ev.number.conj().value_string(),
+                (re, -im),
+                ev.blocks.clone(),
+            ));
+        }
+    }
+    Ok(Some((out, jf.verified)))
 }
 
 /// The real form of a matrix over $\mathbb{Q}(i)$, exactly; `None` for another field.
@@ -227,23 +292,34 @@ pub(crate) fn complex_items<K: Field + 'static>(
         Ok(item) => items.push(item),
         Err(why) => skipped.push(("frequency_response", why)),
     }
-    match exact_real_form(&t.a_raw) {
-        Some(aq) => {
-            for (name, ok, r) in jordan_comparison(&aq, path)? {
-                items.push((
-                    format!("{name}_real_form"),
-                    ok,
-                    r.str(
-                        "note",
-                        "the real form [[X, -Y], [Y, X]] of A = X + iY: the eigenvalues of A and of its conjugate",
-                    ),
-                ));
+    // over Q(i) the real form of A is rational: its own exact Jordan form; over another
+    // imaginary quadratic field, the Jordan form of A over K and its conjugate's
+    let compared = match exact_real_form(&t.a_raw) {
+        Some(aq) => jordan_comparison(&aq, path)?,
+        None => match real_form_spectrum(&t.a_raw, path)? {
+            Some((exact, verified)) => {
+                let az = float::to_cmatrix(&t.a_raw).map_err(|e| fail(path, e))?;
+                let ar = FloatScalar::realify(&az);
+                vec![spectrum_comparison(&exact, &ar, verified, path)?]
             }
-        }
-        None => skipped.push((
+            None => vec![],
+        },
+    };
+    if compared.is_empty() {
+        skipped.push((
             "jordan_structure",
-            "the exact real form of A is rational only over Q(i)".into(),
-        )),
+            "the eigenvalues are compared over imaginary quadratic fields".into(),
+        ));
+    }
+    for (name, ok, r) in compared {
+        items.push((
+            format!("{name}_real_form"),
+            ok,
+            r.str(
+                "note",
+                "the real form [[X, -Y], [Y, X]] of A = X + iY: the eigenvalues of A and of its conjugate",
+            ),
+        ));
     }
     Ok((items, skipped))
 }

@@ -172,7 +172,8 @@ pub enum Command {
         #[arg(long, default_value_t = 200, value_name = "N")]
         points: usize,
         /// Also write a Bode plot as SVG: magnitude [dB] and unwrapped phase [deg] against Hz,
-        /// channels named from the file, the grid refined near lightly damped poles.
+        /// channels named from the file, the grid refined near lightly damped poles; for a
+        /// complex system over f < 0 (mirrored log axis) and f > 0 side by side.
         #[arg(long, value_name = "OUT.svg")]
         svg: Option<PathBuf>,
         /// Also write the response as CSV (frequency in Hz, real and imaginary parts).

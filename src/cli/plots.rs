@@ -1,6 +1,7 @@
 //! Plot commands and plot outputs: `pzmap`, `step`, `impulse`, and the Bode SVG of
 //! `freqresp --svg` (magnitude and unwrapped phase on a frequency grid refined near lightly
-//! damped poles). Titles and channel names come from the system file's `name`, `inputs`,
+//! damped poles; over negative and positive frequencies for a system with complex
+//! coefficients, as MATLAB draws it). Titles and channel names come from the system file's `name`, `inputs`,
 //! `outputs`.
 
 use super::Failure;
@@ -8,7 +9,7 @@ use super::common::with_path;
 use crate::field::{Field, Q};
 use crate::float::{self, to_dmatrix};
 use crate::io::{SystemFile, TypedSystem, as_rational};
-use crate::report::plot::bode::bode_svg;
+use crate::report::plot::bode::{bode_svg, bode_svg_two_sided};
 use crate::report::plot::pzmap::{Point, pzmap_svg};
 use crate::report::plot::time::{TimePlot, time_response_svg};
 use crate::report::plot::{logspace, response_table};
@@ -92,7 +93,18 @@ pub fn bode_grid(from: f64, to: f64, points: usize, poles: &[(f64, f64)]) -> Vec
     f
 }
 
-/// Writes the Bode SVG of `freqresp --svg`.
+/// The two-sided grid of a complex system's Bode plot: the negative frequencies (increasing)
+/// then the positive ones, each side a [`bode_grid`] refined near the lightly damped poles
+/// whose resonance lies on that side (a pole $a + ib$ peaks at $\omega = b$).
+pub fn bode_grid_two_sided(from: f64, to: f64, points: usize, poles: &[(f64, f64)]) -> Vec<f64> {
+    let mirrored: Vec<(f64, f64)> = poles.iter().map(|&(re, im)| (re, -im)).collect();
+    let neg = bode_grid(from, to, points, &mirrored);
+    let pos = bode_grid(from, to, points, poles);
+    neg.iter().rev().map(|f| -f).chain(pos).collect()
+}
+
+/// Writes the Bode SVG of `freqresp --svg`: one-sided for a real system, over negative and
+/// positive frequencies for a complex one.
 pub fn bode_file<K: Field>(
     f: &SystemFile,
     t: &TypedSystem<K>,
@@ -100,32 +112,36 @@ pub fn bode_file<K: Field>(
     (from, to, points): (f64, f64, usize),
     out: &Path,
 ) -> Result<(), Failure> {
-    if matches!(
-        super::float_cmds::float_abcd(t, path)?,
-        super::float_cmds::FloatAbcd::Complex(_)
-    ) {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{}: --svg: the Bode plot of a complex system (its response is two-sided) is not drawn; the report and --csv give it",
-                path.display()
-            ),
-        });
-    }
-    let [a, b, c, d] = abcd(t, path)?;
-    let poles = float_poles(&a, path)?;
-    let freqs = bode_grid(from, to, points, &poles);
-    let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(|e| with_path(path, e))?;
-    let table = response_table(&resp);
     let (title, ins, outs) = names(f, path, t.ss.ninputs(), t.ss.noutputs());
     let labels: Vec<Vec<String>> = outs
         .iter()
         .map(|o| ins.iter().map(|i| format!("{i} \u{2192} {o}")).collect())
         .collect();
-    write(
-        out,
-        &bode_svg(&freqs, &table, &format!("{title}: Bode plot"), &labels),
-    )
+    let title = format!("{title}: Bode plot");
+    let e = |err| with_path(path, err);
+    let text = match super::float_cmds::float_abcd(t, path)? {
+        super::float_cmds::FloatAbcd::Complex([a, b, c, d]) => {
+            // the poles only refine the grid: none when the complex Schur form fails
+            let n = a.nrows();
+            let poles: Vec<(f64, f64)> = if n == 0 {
+                vec![]
+            } else {
+                nalgebra::Schur::try_new(a.clone(), f64::EPSILON, 200 * n.max(10))
+                    .and_then(|s| s.eigenvalues())
+                    .map_or_else(Vec::new, |v| v.iter().map(|z| (z.re, z.im)).collect())
+            };
+            let freqs = bode_grid_two_sided(from, to, points, &poles);
+            let resp = float::freqresp_complex(&a, &b, &c, &d, &freqs).map_err(e)?;
+            bode_svg_two_sided(&freqs, &response_table(&resp), &title, &labels)
+        }
+        super::float_cmds::FloatAbcd::Real([a, b, c, d]) => {
+            let poles = float_poles(&a, path)?;
+            let freqs = bode_grid(from, to, points, &poles);
+            let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(e)?;
+            bode_svg(&freqs, &response_table(&resp), &title, &labels)
+        }
+    };
+    write(out, &text)
 }
 
 /// A pole or zero: exact (or float) display, approximation, multiplicity.

@@ -102,6 +102,7 @@ pub struct CompactPair {
 }
 
 /// `-x` for a display string (`-b3`, `-(1 + sqrt(2))`).
+#[cfg(feature = "cli")]
 fn neg_display(x: &str) -> String {
     if let Some(rest) = x.strip_prefix('-')
         && !rest.contains([' ', '+', '-'])
@@ -125,6 +126,7 @@ pub const EXPAND_MAX_DEGREE: usize = 4;
 impl CompactPair {
     /// Entry `(r, q)` of the pair block: `a`, `b`, `-b` on the $2 \times 2$ diagonal
     /// blocks, `1` where the chain couples (`coupling`), else `0`.
+    #[cfg(feature = "cli")]
     pub(crate) fn j_entry(&self, r: usize, q: usize, coupling: bool) -> String {
         if r / 2 == q / 2 {
             match (r % 2, q % 2) {
@@ -153,6 +155,7 @@ impl CompactPair {
         }
     }
     /// `Re(x)` / `Im(x)` displays of an element of $K$ (plain when $x$ is rational).
+    #[cfg(feature = "cli")]
     pub(crate) fn part_strings(&self, x: &NfElem) -> (String, String) {
         let f = &self.field;
         if let Some(q) = f.to_rational(x) {
@@ -510,21 +513,23 @@ fn compact_pair(
     }
 }
 
-/// The legend lines of a compact pair: `r<k> = a<k> + b<k>*i` and each part's definition.
+/// The legend lines of a compact pair: `r<k> = a<k> + b<k>*i` and each part's definition,
+/// in the one display of every other section ([`AlgebraicNumber::value_string`]: a closed
+/// form where there is one, else `root of P near X`; a part not computed exactly is
+/// `near X` with the digits of [`crate::algebraic::display::approx_text`]).
 fn part_lines(e: &super::Eigenvalue, cp: &CompactPair) -> Vec<String> {
     let define = |sym: &str, what: &str, x: &Option<AlgebraicNumber>, approx: f64| match x {
         Some(x) if x.degree() <= 2 => None,
-        Some(x) => {
-            let (lo, hi) = x.interval().unwrap_or_default();
-            Some(format!(
-                "{sym} = {what} {} = root of {} in [{}, {}], near {approx:.10}",
-                e.symbol,
-                x.minpoly(),
-                crate::field::fmt_rational(&lo),
-                crate::field::fmt_rational(&hi)
-            ))
-        }
-        None => Some(format!("{sym} = {what} {}, near {approx:.10}", e.symbol)),
+        Some(x) => Some(format!(
+            "{sym} = {what} {} = {}",
+            e.symbol,
+            x.value_string()
+        )),
+        None => Some(format!(
+            "{sym} = {what} {}, near {}",
+            e.symbol,
+            crate::algebraic::display::approx_text((approx, 0.0))
+        )),
     };
     let mut out = vec![format!(
         "{} = {} + {}*i",

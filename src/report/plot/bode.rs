@@ -1,5 +1,7 @@
 //! Bode plot: magnitude [dB] and unwrapped phase [deg] panels over a log frequency axis,
-//! one curve per input-output channel (named from the system's `inputs`/`outputs`).
+//! one curve per input-output channel (named from the system's `inputs`/`outputs`); for a
+//! system with complex coefficients ([`bode_svg_two_sided`]) over negative and positive
+//! frequencies side by side.
 
 use super::Response;
 use super::svg::{COLORS, Panel, Svg, finite_range, nice_range};
@@ -41,18 +43,14 @@ pub fn unwrapped_phase_deg(values: &[(f64, f64)]) -> Vec<f64> {
     out
 }
 
-/// The Bode plot of `resp` at `freqs` [Hz]; `labels[i][j]` names channel (i, j).
-pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<String>]) -> String {
+/// Magnitudes [dB] and unwrapped phases [deg] of each channel, row by row, and the
+/// channel names (`labels[i][j]`, else `G<i><j>`).
+type Curves = (Vec<Vec<f64>>, Vec<Vec<f64>>, Vec<String>);
+
+fn curves(resp: &Response, labels: &[Vec<String>]) -> Curves {
     let p = resp.first().map_or(0, Vec::len);
     let m = resp.first().and_then(|r| r.first()).map_or(0, Vec::len);
-    let channels = p * m;
-    let cols = if channels > 1 { 2 } else { 1 };
-    let rows = channels.div_ceil(cols);
-    let (w, h) = (840.0, 650.0 + 18.0 * rows as f64);
-    let mut svg = Svg::new(w, h, title);
-    let lf = finite_range(freqs.iter().map(|f| f.max(1e-300).log10()));
-    let mut mags = vec![];
-    let mut phases = vec![];
+    let (mut mags, mut phases, mut names) = (vec![], vec![], vec![]);
     for i in 0..p {
         for j in 0..m {
             let ch: Vec<(f64, f64)> = resp.iter().map(|g| g[i][j]).collect();
@@ -63,8 +61,27 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
                     .collect::<Vec<f64>>(),
             );
             phases.push(unwrapped_phase_deg(&ch));
+            names.push(
+                labels
+                    .get(i)
+                    .and_then(|r| r.get(j))
+                    .cloned()
+                    .unwrap_or_else(|| format!("G{}{}", i + 1, j + 1)),
+            );
         }
     }
+    (mags, phases, names)
+}
+
+/// The Bode plot of `resp` at `freqs` [Hz]; `labels[i][j]` names channel (i, j).
+pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<String>]) -> String {
+    let (mags, phases, names) = curves(resp, labels);
+    let channels = names.len();
+    let cols = if channels > 1 { 2 } else { 1 };
+    let rows = channels.div_ceil(cols);
+    let (w, h) = (840.0, 650.0 + 18.0 * rows as f64);
+    let mut svg = Svg::new(w, h, title);
+    let lf = finite_range(freqs.iter().map(|f| f.max(1e-300).log10()));
     let (ml, mh) = finite_range(mags.iter().flatten().copied());
     let (pl, ph) = finite_range(phases.iter().flatten().copied());
     let top = Panel {
@@ -75,6 +92,7 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
         xr: lf,
         yr: nice_range(ml, mh),
         logx: true,
+        mirror: false,
     };
     let bot = Panel {
         y0: 340.0,
@@ -96,21 +114,101 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
         Some(&phase_ticks(bot.yr)),
     );
     let mut legend = vec![];
-    for (c, (mg, ph)) in mags.iter().zip(&phases).enumerate() {
+    for (c, ((mg, ph), name)) in mags.iter().zip(&phases).zip(names).enumerate() {
         let col = COLORS[c % COLORS.len()];
         let mp: Vec<(f64, f64)> = freqs.iter().copied().zip(mg.iter().copied()).collect();
         let pp: Vec<(f64, f64)> = freqs.iter().copied().zip(ph.iter().copied()).collect();
         svg.polyline(&top, &mp, col, 1.8, false);
         svg.polyline(&bot, &pp, col, 1.8, false);
-        let (i, j) = (c / m.max(1), c % m.max(1));
-        let name = labels
-            .get(i)
-            .and_then(|r| r.get(j))
-            .cloned()
-            .unwrap_or_else(|| format!("G{}{}", i + 1, j + 1));
         legend.push((name, col.to_string(), false));
     }
     svg.legend_at(bot.x0, bot.y0 + bot.h + 56.0, cols, 360.0, &legend);
+    svg.finish()
+}
+
+/// The Bode plot of a system with complex coefficients, whose response is two-sided
+/// ($G(-j\omega) \ne \overline{G(j\omega)}$), as MATLAB draws it: magnitude [dB] and phase
+/// [deg] over negative frequencies on the left (a mirrored log axis, $-f_{max}$ to
+/// $-f_{min}$) and positive ones on the right ($f_{min}$ to $f_{max}$), the two sides on
+/// the same vertical scales. `freqs` [Hz] holds the negative frequencies (increasing) then
+/// the positive ones; the phase is unwrapped along them in that order.
+pub fn bode_svg_two_sided(
+    freqs: &[f64],
+    resp: &Response,
+    title: &str,
+    labels: &[Vec<String>],
+) -> String {
+    let (mags, phases, names) = curves(resp, labels);
+    let channels = names.len();
+    let cols = if channels > 1 { 2 } else { 1 };
+    let rows = channels.div_ceil(cols);
+    let (w, h) = (1000.0, 690.0 + 18.0 * rows as f64);
+    let mut svg = Svg::new(w, h, title);
+    let lf = finite_range(freqs.iter().map(|f| f.abs().max(1e-300).log10()));
+    let (ml, mh) = finite_range(mags.iter().flatten().copied());
+    let (pl, ph) = finite_range(phases.iter().flatten().copied());
+    let neg_mag = Panel {
+        x0: 90.0,
+        y0: 64.0,
+        w: 400.0,
+        h: 250.0,
+        xr: lf,
+        yr: nice_range(ml, mh),
+        logx: true,
+        mirror: true,
+    };
+    let neg_phase = Panel {
+        y0: 364.0,
+        yr: phase_range(pl, ph),
+        ..neg_mag.clone()
+    };
+    let right = |p: &Panel| Panel {
+        x0: 560.0,
+        mirror: false,
+        ..p.clone()
+    };
+    let (pos_mag, pos_phase) = (right(&neg_mag), right(&neg_phase));
+    for (p, head) in [
+        (&neg_mag, "negative frequencies (f < 0)"),
+        (&pos_mag, "positive frequencies (f > 0)"),
+    ] {
+        svg.text(p.x0 + p.w / 2.0, p.y0 - 10.0, "middle", 13.0, head);
+    }
+    let db = db_ticks(neg_mag.yr);
+    let deg = phase_ticks(neg_phase.yr);
+    let xneg = "frequency [Hz], f < 0 (log |f|, mirrored)";
+    svg.axes_with(&neg_mag, xneg, "magnitude [dB]", false, Some(&db));
+    svg.axes_with(&neg_phase, xneg, "phase [deg]", true, Some(&deg));
+    let xpos = "frequency [Hz], f > 0";
+    svg.axes_with(&pos_mag, xpos, "magnitude [dB]", false, Some(&db));
+    svg.axes_with(&pos_phase, xpos, "phase [deg]", true, Some(&deg));
+    let mut legend = vec![];
+    for (c, ((mg, ph), name)) in mags.iter().zip(&phases).zip(names).enumerate() {
+        let col = COLORS[c % COLORS.len()];
+        for (neg, (top, bot)) in [
+            (true, (&neg_mag, &neg_phase)),
+            (false, (&pos_mag, &pos_phase)),
+        ] {
+            let side = |ys: &[f64]| -> Vec<(f64, f64)> {
+                freqs
+                    .iter()
+                    .zip(ys)
+                    .filter(|(f, _)| if neg { **f < 0.0 } else { **f > 0.0 })
+                    .map(|(f, y)| (*f, *y))
+                    .collect()
+            };
+            svg.polyline(top, &side(mg), col, 1.8, false);
+            svg.polyline(bot, &side(ph), col, 1.8, false);
+        }
+        legend.push((name, col.to_string(), false));
+    }
+    svg.legend_at(
+        neg_phase.x0,
+        neg_phase.y0 + neg_phase.h + 56.0,
+        cols,
+        430.0,
+        &legend,
+    );
     svg.finish()
 }
 

@@ -53,6 +53,7 @@ pub fn pzmap_svg(poles: &[Point], zeros: &[Point], title: &str) -> String {
         xr,
         yr,
         logx: false,
+        mirror: false,
     };
     svg.axes(&p, "real part [1/s]", "imaginary part [rad/s]", true);
     // the imaginary axis: the stability boundary

@@ -76,12 +76,25 @@ pub struct Panel {
     pub yr: (f64, f64),
     /// x axis in log10 (`xr` then holds log10 values).
     pub logx: bool,
+    /// With `logx`: the axis of negative x (`xr` holds log10 of `|x|`), mirrored: `|x|`
+    /// decreases from left to right, so that x increases (`-10^xr.1` on the left,
+    /// `-10^xr.0` on the right) and the ticks read `-10^k`.
+    pub mirror: bool,
 }
 
 impl Panel {
     pub fn px(&self, x: f64) -> f64 {
+        if self.logx && self.mirror {
+            return self.lpx((-x).max(1e-300).log10());
+        }
         let x = if self.logx { x.max(1e-300).log10() } else { x };
         self.x0 + (x - self.xr.0) / (self.xr.1 - self.xr.0) * self.w
+    }
+    /// The pixel of a log10 value on a log axis (of `|x|` when mirrored).
+    fn lpx(&self, lx: f64) -> f64 {
+        let t = (lx - self.xr.0) / (self.xr.1 - self.xr.0);
+        let t = if self.mirror { 1.0 - t } else { t };
+        self.x0 + t * self.w
     }
     pub fn py(&self, y: f64) -> f64 {
         let y = y.clamp(
@@ -146,7 +159,7 @@ impl Svg {
                     if lx < p.xr.0 - 1e-9 || lx > p.xr.1 + 1e-9 {
                         continue;
                     }
-                    let x = p.x0 + (lx - p.xr.0) / (p.xr.1 - p.xr.0) * p.w;
+                    let x = p.lpx(lx);
                     let col = if m == 1 { "#ccc" } else { "#eee" };
                     let _ = writeln!(
                         s,
@@ -154,11 +167,12 @@ impl Svg {
                         p.y0
                     );
                     if m == 1 && show_x_labels {
+                        let v = 10f64.powi(d as i32);
                         let _ = writeln!(
                             s,
                             r#"<text x="{x:.1}" y="{}" text-anchor="middle">{}</text>"#,
                             bottom + 16.0,
-                            fmt_tick(10f64.powi(d as i32), 10f64.powi(d as i32))
+                            fmt_tick(if p.mirror { -v } else { v }, v)
                         );
                     }
                 }

@@ -60,6 +60,7 @@ pub fn sweep_svg(sw: &SweepResult, title: &str, xlabel: &str, marks: &[(f64, Str
         xr,
         yr: robust_range(&res),
         logx: false,
+        mirror: false,
     };
     let imr = robust_range(&ims);
     let bot = Panel {
@@ -142,6 +143,7 @@ pub fn root_locus_svg(sw: &SweepResult, title: &str) -> String {
         xr: robust_range(&res),
         yr: robust_range(&ims),
         logx: false,
+        mirror: false,
     };
     svg.axes(&p, "real part [1/s]", "imaginary part [rad/s]", true);
     svg.vline(&p, 0.0, "#999", None);

@@ -51,6 +51,7 @@ pub fn time_response_svg(tp: &TimePlot<'_>) -> String {
                 xr,
                 yr: nice_range(lo, hi),
                 logx: false,
+                mirror: false,
             };
             let show_x = true;
             svg.axes(&panel, "time [s]", &tp.outputs[i], show_x);
