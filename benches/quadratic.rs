@@ -6,8 +6,9 @@
 //! -5..=5 from a fixed xorshift stream. Prints `case<TAB>seconds` lines (median of repeats);
 //! an argument keeps the cases whose label contains it.
 //!
-//! 2026-11-24 (machine shared with ~6 builds): jordan 10x10 0.27 s (was 3.5-7.8 s), tf
-//! 8-state 0.40 s (was 2.9-4.7 s) with the CLI on the same distribution.
+//! 2026-11-24 21:27 UTC, load average ~3 on 2 shared cores: jordan 10x10 0.16 s, minreal
+//! --method jordan 0.18 s, tf 8-state 0.18-0.21 s. The CLI on inputs of the same distribution
+//! (best of 3) before this kernel work: jordan 3.95 s, minreal 4.25 s, tf 1.44 s.
 
 use exactlti::field::{Quadratic, QuadraticField, Rational};
 use exactlti::jordan::over_k::jordan_over_k;
