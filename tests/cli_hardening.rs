@@ -297,6 +297,7 @@ fn fields_each_command_accepts() {
     let table: &[(&str, [i32; 4])] = &[
         ("jordan", [0, 0, 0, 0]),
         ("jordan --real", [0, 2, 0, 2]),
+        ("jordan --real --expand", [0, 2, 0, 2]),
         ("minreal", [0, 0, 0, 0]),
         ("minreal --method rosenbrock", [0, 0, 0, 0]),
         ("minreal --method ho-kalman", [0, 0, 0, 0]),

@@ -8,6 +8,9 @@ use exactlti::jordan::over_k::{JordanFormK, jordan_over_k};
 use exactlti::matrix::Matrix;
 use proptest::prelude::*;
 
+#[path = "jordan_fields/real.rs"]
+mod real;
+
 fn q(a: i64, b: i64) -> Quadratic {
     Quadratic::new(
         Rational::from_integer(a.into()),
@@ -201,7 +204,8 @@ fn small_entry() -> impl Strategy<Value = (i64, i64)> {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 24, .. ProptestConfig::default() })]
     /// Random 1..4 x 4 matrices over Q(i) and Q(sqrt 2), and planted blocks of a repeated
-    /// eigenvalue in K: verified, block sizes add up to n, approximations are roots.
+    /// eigenvalue in K: verified (Jordan form, real form over Q(sqrt 2), free response,
+    /// Jordan-method realization), block sizes add up to n, approximations are roots.
     #[test]
     fn jordan_over_k_is_verified(
         d in prop::sample::select(vec![-1i64, 2]),
@@ -217,6 +221,13 @@ proptest! {
         });
         let jf = jordan_over_k(&a).unwrap();
         check(&jf);
+        // the real form over Q(sqrt 2) (pairs in their real field when small, checked there)
+        // and the free response (x(0) = x0, x' = A x)
+        if d > 0 {
+            let rf = jf.real_form().unwrap();
+            prop_assert!(rf.verified, "A = {}", a);
+        }
+        prop_assert!(jf.free_response().verify(&jf), "A = {}", a);
         // the Jordan-method minimal realization of (A, B, C) with B, C from the entries:
         // verified (Markov parameters, McMillan degree) and of the Kalman order
         let b = Matrix::from_fn(k.clone(), n, 1, |i, _| q(entries[i].1, entries[15 - i].0));
@@ -268,7 +279,7 @@ fn real_jordan_form_over_q_sqrt2() {
     assert_eq!(rf.j, [["1", "sqrt(2)"], ["-sqrt(2)", "1"]]);
     real_form_close(&a, &rf);
     // [[sqrt 2, 1], [-1, sqrt 2]] (roots sqrt 2 +- i, minimal polynomial of degree 4), a
-    // real root, and a 2-block of a complex pair: planted, compact form
+    // real root, and a 2-block of a complex pair: planted
     let mut j = Matrix::zeros(k.clone(), 5, 5);
     for off in [0, 2] {
         j.set(off, off, q(0, 1));
@@ -289,8 +300,9 @@ fn real_jordan_form_over_q_sqrt2() {
         .collect();
     assert_eq!(pair.len(), 2);
     assert!(pair.iter().all(|e| e.blocks == [2]));
+    // the pair's real field is Q(sqrt 2) itself: expanded, as over Q (tests/jordan_fields/real.rs)
     let rf = jf.real_form().unwrap();
-    assert!(rf.verified && rf.compact, "{rf:?}");
+    assert!(rf.verified && !rf.compact, "{rf:?}");
     real_form_close(&a, &rf);
     // Q(i): no real form
     let a = mat(&QuadraticField::gaussian(), &[&[(0, 1)]]);

@@ -66,9 +66,9 @@ pub(super) fn a_command<K: Field + 'static>(
 ) -> Option<Result<Outcome, Failure>> {
     let e = |err| with_path(path, err);
     Some(match cmd {
-        Command::Jordan { real, .. } if irrational_quadratic(a).is_some() => {
+        Command::Jordan { real, expand, .. } if irrational_quadratic(a).is_some() => {
             let k = irrational_quadratic(a).expect("checked");
-            jordan_over_k_cmd(k, *real, path)
+            jordan_over_k_cmd(k, (*real, *expand), path)
         }
         Command::Jordan { real, expand, .. } => jordan_any(a).map_err(e).and_then(|jf| {
             if *real {
@@ -110,7 +110,7 @@ fn irrational_quadratic<K: Field + 'static>(
 /// `jordan [--real]` over K = Q(i) / Q(sqrt d) for a matrix with an irrational entry.
 fn jordan_over_k_cmd(
     a: &Matrix<crate::field::QuadraticField>,
-    real: bool,
+    (real, expand): (bool, bool),
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let e = |err| with_path(path, err);
@@ -135,7 +135,7 @@ fn jordan_over_k_cmd(
     }
     let jf = crate::jordan::over_k::jordan_over_k(a).map_err(e)?;
     if real {
-        let rf = jf.real_form().map_err(e)?;
+        let rf = jf.real_form_with(expand).map_err(e)?;
         return Ok(Outcome::new(rf.report(), rf.verified));
     }
     Ok(Outcome::new(jf.report(), jf.verified))

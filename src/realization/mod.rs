@@ -16,7 +16,7 @@
 //! | `MinrealMethod::Rosenbrock` | staircase of exact row compressions of $[A\ B; C\ 0]$, then of the dual (paper sec. 2.3) |
 //! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
 //! | [`minimal_jordan`] | Jordan-form method (sec. 3.3): drop non-contributing modes, compact repeated ones, real Jordan blocks |
-//! | [`minimal_jordan_over_k`] | the same over $\mathbb{Q}(i)$ / $\mathbb{Q}(\sqrt d)$: complex modal blocks per eigenvalue |
+//! | [`minimal_jordan_over_k`] | the same over $\mathbb{Q}(i)$ / $\mathbb{Q}(\sqrt d)$: real modal blocks over a real $K$, complex modal blocks over $\mathbb{Q}(i)$ |
 //! | [`descriptor_to_standard`] | Weierstrass-type split of $(E, A)$ without inverting $E$ |
 //! | [`modal_table`], [`modal_table_over_k`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
@@ -53,7 +53,7 @@ pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{
     JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational, minimal_jordan_with,
 };
-pub use jordan_method_k::{JordanMinimalK, ModalBlockK, minimal_jordan_over_k};
+pub use jordan_method_k::{JordanMinimalK, ModalBlockK, RealModalBlockK, minimal_jordan_over_k};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};

@@ -141,7 +141,7 @@ pub fn analyze_with<K: Field + 'static>(
     if let Some(q) = as_rational(t) {
         rational_sections(&fa, Arc::new(q.clone()), &mut secs, opts.full);
     } else if let Some(q) = quad {
-        quadratic_sections(Arc::new(q.clone()), &mut secs);
+        quadratic_sections(Arc::new(q.clone()), &mut secs, (opts.full, &f.path));
     } else {
         let why = format!(
             "needs rational matrices; this file's entries lie in {}",
@@ -375,7 +375,11 @@ fn rational_sections(f: &Arc<SystemFile>, t: Arc<TypedSystem<Q>>, secs: &mut Sec
 
 /// The Jordan form (with the real form over a real field), PBH tests and the modal table
 /// over a quadratic field $K$ ([`crate::jordan::over_k`]).
-fn quadratic_sections(t: Arc<TypedSystem<QuadraticField>>, secs: &mut Sections) {
+fn quadratic_sections(
+    t: Arc<TypedSystem<QuadraticField>>,
+    secs: &mut Sections,
+    (full, path): (bool, &str),
+) {
     let title = "eigenvalues and Jordan form";
     let tt = t.clone();
     let jf = match secs.run(title, Insist::Command("jordan"), move || {
@@ -407,6 +411,13 @@ fn quadratic_sections(t: Arc<TypedSystem<QuadraticField>>, secs: &mut Sections) 
                     not_applicable("Real Jordan form", "A is not real (entries in QQ(i))"),
                 );
             }
+            let fr = free_response_k(
+                &jf,
+                secs,
+                free_response_estimate(&sec, jf.n()),
+                (full, path),
+            );
+            sec.push("free_response", fr);
             secs.push("jordan", Value::Obj(sec));
             Some(jf)
         }
@@ -451,6 +462,38 @@ fn quadratic_sections(t: Arc<TypedSystem<QuadraticField>>, secs: &mut Sections) 
         Err(v) => v,
     };
     secs.push("modes", sec);
+}
+
+/// The free response over $K$ under its budget, or its size when too large (as over Q).
+fn free_response_k(
+    jf: &Arc<crate::jordan::over_k::JordanFormK>,
+    secs: &mut Sections,
+    est: usize,
+    (full, path): (bool, &str),
+) -> Value {
+    let title = "Free response x(t) = sum_k t^k e^(s t) G x0";
+    if !full && est > MAX_FREE_RESPONSE_BYTES {
+        return Value::Obj(Report::titled(title).str(
+            "not_computed",
+            format!(
+                "about {} KB of exact entries (an n x n matrix G per eigenvalue and power, in the \
+                 eigenvalue's field); run `{}` to compute it",
+                est / 1000,
+                insist_full(path)
+            ),
+        ));
+    }
+    let j = jf.clone();
+    match secs.run(title, Insist::Analyze, move || {
+        let rep = j.free_response().report(&j);
+        (matches!(rep.get("verified"), Some(Value::Bool(true))), rep)
+    }) {
+        Ok((ok, rep)) => {
+            secs.verified &= ok;
+            Value::Obj(rep)
+        }
+        Err(v) => v,
+    }
 }
 
 /// PBH over $K$ from the Jordan form, per factor $g$ in $E = K\[t\]/(g)$: the left

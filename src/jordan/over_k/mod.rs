@@ -30,11 +30,17 @@
 //! $\theta_j$: for $\deg g = 1$ in $K$ itself (all linear: one matrix over $K$); for a
 //! rational quadratic $g$ with roots $a_0 \pm s\sqrt f$ as `u + v*sqrt(f)`, $u, v \in K$;
 //! otherwise as polynomials in the root's symbol `r<k>` with coefficients in $K$.
+//!
+//! Over a real $K$ the real Jordan form ([`real`]) writes each complex pair in its real field
+//! $K(\operatorname{Re}\theta, \operatorname{Im}\theta)$ ([`pair_field`]) when that is
+//! small, else in the compact form; [`response`] gives the free response $e^{At}x_0$.
 
 mod coeffs;
 pub mod eigen;
+pub mod pair_field;
 pub mod real;
 pub mod relfield;
+pub mod response;
 mod simple;
 
 pub use real::RealFormK;

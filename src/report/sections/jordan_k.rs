@@ -5,7 +5,8 @@
 use super::eigenvalue_items;
 use crate::field::Field;
 use crate::jordan::fmt_approx;
-use crate::jordan::over_k::JordanFormK;
+use crate::jordan::over_k::{JordanFormK, RelElem, RelField};
+use crate::realization::{ModalBlockK, RealModalBlockK};
 use crate::report::{MatrixOut, Report, Value};
 
 impl JordanFormK {
@@ -91,6 +92,28 @@ impl std::fmt::Display for JordanFormK {
     }
 }
 
+impl crate::jordan::over_k::response::FreeResponseK {
+    /// Report: the keys of the rational free response (`terms`: `eigenvalue`, `power`, `G`
+    /// per eigenvalue and power, `G` exact in the eigenvalue's field) and `verified`
+    /// ([`Self::verify`]).
+    pub fn report(&self, jf: &JordanFormK) -> Report {
+        let mut items = vec![];
+        for (ev, e) in jf.eigenvalues.iter().enumerate() {
+            for (power, g) in self.terms_of(jf, ev) {
+                items.push(Value::Obj(
+                    Report::new()
+                        .str("eigenvalue", e.value.clone())
+                        .int("power", power)
+                        .matrix("G", &g),
+                ));
+            }
+        }
+        Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0")
+            .list("terms", items)
+            .bool("verified", self.verify(jf))
+    }
+}
+
 impl crate::jordan::over_k::RealFormK {
     /// Report: `J`, `T` (exact texts and `_approx`), `exact`, `verified`, and for the compact
     /// form `presentation` and `symbols` (the keys of the rational real Jordan report).
@@ -114,12 +137,24 @@ impl crate::jordan::over_k::RealFormK {
                     "compact: each complex pair r<k> = a<k> + b<k>*i has the block [[a, b], \
                      [-b, a]] and the columns Re v, Im v of its complex chains v (exact in \
                      K(r<k>)); verified on the complex side (A V = V J in K(r<k>), which \
-                     implies A T = T J)",
+                     implies A T = T J); `--expand` writes the entries in a real field",
                 )
                 .list(
                     "symbols",
                     self.symbols.iter().cloned().map(Value::Str).collect(),
                 );
+        }
+        if !self.fields.is_empty() {
+            r = r.list(
+                "fields",
+                self.fields.iter().cloned().map(Value::Str).collect(),
+            );
+        }
+        if !self.notes.is_empty() {
+            r = r.list(
+                "notes",
+                self.notes.iter().cloned().map(Value::Str).collect(),
+            );
         }
         r
     }
@@ -127,6 +162,102 @@ impl crate::jordan::over_k::RealFormK {
 
 /// Exact texts and approximations of a matrix under construction.
 type Cells = (Vec<Vec<String>>, Vec<Vec<(f64, f64)>>);
+
+/// Writes a modal block over $E$ at `off` into the cells of `A`, `B`, `C`.
+fn put_block(blk: &ModalBlockK, off: usize, [a, b, c]: [&mut Cells; 3]) {
+    let f = &blk.field;
+    let put = |o: &mut Cells, i: usize, j: usize, x: &RelElem| {
+        o.0[i][j] = f.fmt_elem(x);
+        o.1[i][j] = f.approx(x);
+    };
+    let s = blk.a.nrows();
+    for i in 0..s {
+        for j in 0..s {
+            put(a, off + i, off + j, blk.a.get(i, j));
+        }
+        for j in 0..blk.b.ncols() {
+            put(b, off + i, j, blk.b.get(i, j));
+        }
+        for row in 0..blk.c.nrows() {
+            put(c, row, off + i, blk.c.get(row, i));
+        }
+    }
+}
+
+/// `Re(x)` / `Im(x)` display and value of an element of $E$ at $\theta$ (plain when it
+/// lies in $K$; `a<k>`, `b<k>` for $\theta$ itself).
+fn part(f: &RelField, x: &RelElem, imag: bool, sym: &str) -> (String, (f64, f64)) {
+    let (re, im) = f.approx(x);
+    let val = (if imag { im } else { re }, 0.0);
+    if let Some(t) = crate::jordan::over_k::real::radical_part(f, x, imag) {
+        return (t, val);
+    }
+    let txt = if f.is_zero(x) {
+        "0".to_string()
+    } else if let Some(c) = f.to_base(x) {
+        if imag {
+            "0".into()
+        } else {
+            f.base().fmt_elem(&c)
+        }
+    } else if *x == f.generator() {
+        format!("{}{sym}", if imag { "b" } else { "a" })
+    } else if f.neg(x) == f.generator() && imag {
+        format!("-b{sym}")
+    } else {
+        format!("{}({})", if imag { "Im" } else { "Re" }, f.fmt_elem(x))
+    };
+    (txt, val)
+}
+
+/// [`part`] of $-x$, written `-Re(x)` / `-Im(x)` when not plain.
+fn part_neg(f: &RelField, x: &RelElem, imag: bool, sym: &str) -> (String, (f64, f64)) {
+    let (t, v) = part(f, &f.neg(x), imag, sym);
+    if f.0.radical.is_none() && (t.starts_with("Re(") || t.starts_with("Im(")) {
+        (format!("-{}", part(f, x, imag, sym).0), v)
+    } else {
+        (t, v)
+    }
+}
+
+/// Writes the compact real block of a pair (complex data `blk` of the upper root) at `off`:
+/// $A_r = [[\mathrm{Re}, \mathrm{Im}], [-\mathrm{Im}, \mathrm{Re}]]$ of $J$,
+/// $B_r = [\mathrm{Re}; -\mathrm{Im}]$ of $WB$, $C_r = [\mathrm{Re}, \mathrm{Im}]$ of $2CV$.
+fn put_compact(blk: &ModalBlockK, off: usize, [a, b, c]: [&mut Cells; 3]) {
+    let f = &blk.field;
+    let sym = &f.0.var[1..];
+    let two = f.from_i64(2);
+    let put = |o: &mut Cells, i: usize, j: usize, x: &RelElem, imag: bool, neg: bool| {
+        let (t, v) = if neg {
+            part_neg(f, x, imag, sym)
+        } else {
+            part(f, x, imag, sym)
+        };
+        o.0[i][j] = t;
+        o.1[i][j] = v;
+    };
+    let s = blk.a.nrows();
+    for i in 0..s {
+        for j in 0..s {
+            let x = blk.a.get(i, j);
+            let (o, q) = (off + 2 * i, off + 2 * j);
+            put(a, o, q, x, false, false);
+            put(a, o, q + 1, x, true, false);
+            put(a, o + 1, q, x, true, true);
+            put(a, o + 1, q + 1, x, false, false);
+        }
+        for j in 0..blk.b.ncols() {
+            let x = blk.b.get(i, j);
+            put(b, off + 2 * i, j, x, false, false);
+            put(b, off + 2 * i + 1, j, x, true, true);
+        }
+        for row in 0..blk.c.nrows() {
+            let x = f.mul(&two, blk.c.get(row, i));
+            put(c, row, off + 2 * i, &x, false, false);
+            put(c, row, off + 2 * i + 1, &x, true, false);
+        }
+    }
+}
 
 impl crate::realization::JordanMinimalK {
     /// The CLI report: the keys of the rational Jordan-method report (`order`,
@@ -142,7 +273,39 @@ impl crate::realization::JordanMinimalK {
         };
         let (mut a, mut b, mut c) = (empty(r, r), empty(r, m), empty(p, r));
         let mut off = 0;
-        for blk in &self.blocks {
+        if let Some(real) = &self.real {
+            for blk in real {
+                let s = blk.order();
+                let cells = [&mut a, &mut b, &mut c];
+                match blk {
+                    RealModalBlockK::Root(bk) => put_block(bk, off, cells),
+                    RealModalBlockK::Pair { field, a, b, c, .. } => {
+                        let [ca, cb, cc] = cells;
+                        let put =
+                            |o: &mut Cells, i: usize, j: usize, x: &crate::algebraic::NfElem| {
+                                o.0[i][j] = field.fmt_elem(x);
+                                o.1[i][j] = field.approx(x);
+                            };
+                        for i in 0..s {
+                            for j in 0..s {
+                                put(ca, off + i, off + j, a.get(i, j));
+                            }
+                            for j in 0..m {
+                                put(cb, off + i, j, b.get(i, j));
+                            }
+                            for row in 0..p {
+                                put(cc, row, off + i, c.get(row, i));
+                            }
+                        }
+                    }
+                    RealModalBlockK::Compact(bk) | RealModalBlockK::Radical(bk) => {
+                        put_compact(bk, off, cells)
+                    }
+                }
+                off += s;
+            }
+        }
+        for blk in self.blocks.iter().filter(|_| self.real.is_none()) {
             let f = &blk.field;
             let put = |o: &mut Cells, i: usize, j: usize, x: &crate::jordan::over_k::RelElem| {
                 o.0[i][j] = f.fmt_elem(x);
@@ -163,6 +326,27 @@ impl crate::realization::JordanMinimalK {
             off += s;
         }
         let out = |x: Cells| Value::Matrix(Box::new(MatrixOut::from_parts(x.0, x.1)));
+        let compact = self
+            .real
+            .iter()
+            .flatten()
+            .any(|b| matches!(b, RealModalBlockK::Compact(_)));
+        let presentation = match (&self.real, compact) {
+            (None, _) => "complex modal form: one Jordan block group per eigenvalue r<k>, entries \
+                          exact in K(r<k>)"
+                .to_string(),
+            (Some(_), false) => "real modal form: real eigenvalues as they are, each complex pair \
+                                 a +- b*i as blocks [[a, b], [-b, a]] with I2 coupling, entries \
+                                 exact in a real field; verified on the complex side (Markov \
+                                 parameters through traces over K)"
+                .to_string(),
+            (Some(_), true) => "real modal form: real eigenvalues as they are, each complex pair \
+                                a +- b*i as blocks [[a, b], [-b, a]]; a pair r<k> = a<k> + b<k>*i \
+                                with a large real field is compact: entries Re(x), Im(x) of \
+                                elements of K(r<k>); verified on the complex side (Markov \
+                                parameters through traces over K)"
+                .to_string(),
+        };
         Report::titled("minimal realization (jordan)")
             .str("method", "jordan")
             .str("field", self.d.field().to_string())
@@ -179,13 +363,12 @@ impl crate::realization::JordanMinimalK {
             .matrix("D", &self.d)
             .with(
                 "modes",
-                crate::report::str_list(self.blocks.iter().map(|b| b.eigenvalue.clone())),
+                crate::report::str_list(match &self.real {
+                    Some(real) => real.iter().map(|b| b.eigenvalue()).collect::<Vec<_>>(),
+                    None => self.blocks.iter().map(|b| b.eigenvalue.clone()).collect(),
+                }),
             )
-            .str(
-                "presentation",
-                "complex modal form: one Jordan block group per eigenvalue r<k>, entries exact \
-                 in K(r<k>)",
-            )
+            .str("presentation", presentation)
             .with(
                 "symbols",
                 Value::List(
