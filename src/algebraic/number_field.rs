@@ -15,8 +15,9 @@
 
 use super::AlgebraicNumber;
 use crate::error::{Error, Result};
-use crate::field::{Field, Q, Rational, rational_to_f64};
+use crate::field::{Field, Q, Rational, lehmer, rational_to_f64};
 use crate::poly::{Poly, fmt_poly};
+use num_bigint::BigInt;
 use num_traits::{One, Zero};
 use std::fmt;
 use std::sync::Arc;
@@ -173,6 +174,44 @@ impl NumberField {
     pub fn elem_to_poly(&self, a: &NfElem) -> Poly<Q> {
         Poly::new(Q, a.0.clone())
     }
+    /// `a * b` for an integral modulus: $(s_a a)(s_b b)$ with the lcms $s_a, s_b$ of the
+    /// denominators is an integer polynomial, reduced modulo the monic integral $m$ in
+    /// integers, and each coefficient is divided by $s_a s_b$ once (one Lehmer gcd), instead
+    /// of normalising a rational after every multiply-add.
+    fn mul_integral(&self, a: &NfElem, b: &NfElem) -> NfElem {
+        let (sa, ia) = integer_scaled(&a.0);
+        let (sb, ib) = integer_scaled(&b.0);
+        let mut v = vec![BigInt::zero(); ia.len() + ib.len() - 1];
+        for (i, x) in ia.iter().enumerate() {
+            if x.is_zero() {
+                continue;
+            }
+            for (j, y) in ib.iter().enumerate() {
+                if !y.is_zero() {
+                    v[i + j] += x * y;
+                }
+            }
+        }
+        let m = self.0.modulus.coeffs();
+        let d = m.len() - 1;
+        while v.len() > d {
+            let c = v.pop().expect("longer than d");
+            if c.is_zero() {
+                continue;
+            }
+            let off = v.len() - d;
+            for (j, mj) in m.iter().enumerate().take(d) {
+                if !mj.is_zero() {
+                    v[off + j] -= &c * mj.numer();
+                }
+            }
+        }
+        while v.last().is_some_and(|c| c.is_zero()) {
+            v.pop();
+        }
+        let den = sa * sb;
+        NfElem(v.into_iter().map(|x| lehmer::fraction(x, &den)).collect())
+    }
     fn reduce(&self, mut v: Vec<Rational>) -> NfElem {
         let m = self.0.modulus.coeffs();
         let d = m.len() - 1;
@@ -184,7 +223,7 @@ impl NumberField {
             let off = v.len() - d;
             for j in 0..d {
                 if !m[j].is_zero() {
-                    v[off + j] -= &c * &m[j];
+                    v[off + j] = lehmer::sub(&v[off + j], &lehmer::mul(&c, &m[j]));
                 }
             }
         }
@@ -232,7 +271,7 @@ impl Field for NumberField {
         let n = a.0.len().max(b.0.len());
         let mut v: Vec<Rational> = (0..n)
             .map(|i| match (a.0.get(i), b.0.get(i)) {
-                (Some(x), Some(y)) => x + y,
+                (Some(x), Some(y)) => lehmer::add(x, y),
                 (Some(x), None) => x.clone(),
                 (None, Some(y)) => y.clone(),
                 _ => Rational::zero(),
@@ -251,10 +290,13 @@ impl Field for NumberField {
             return NfElem(vec![]);
         }
         if a.0.len() == 1 {
-            return NfElem(b.0.iter().map(|y| &a.0[0] * y).collect());
+            return NfElem(b.0.iter().map(|y| lehmer::mul(&a.0[0], y)).collect());
         }
         if b.0.len() == 1 {
-            return NfElem(a.0.iter().map(|x| x * &b.0[0]).collect());
+            return NfElem(a.0.iter().map(|x| lehmer::mul(x, &b.0[0])).collect());
+        }
+        if self.0.modulus.coeffs().iter().all(|c| c.denom().is_one()) {
+            return self.mul_integral(a, b);
         }
         let mut v = vec![Rational::zero(); a.0.len() + b.0.len() - 1];
         for (i, x) in a.0.iter().enumerate() {
@@ -263,7 +305,7 @@ impl Field for NumberField {
             }
             for (j, y) in b.0.iter().enumerate() {
                 if !y.is_zero() {
-                    v[i + j] += x * y;
+                    v[i + j] = lehmer::add(&v[i + j], &lehmer::mul(x, y));
                 }
             }
         }
@@ -320,6 +362,28 @@ impl Field for NumberField {
     }
 }
 
+/// The lcm $s$ of the denominators of `xs` and the integers $s x$.
+fn integer_scaled(xs: &[Rational]) -> (BigInt, Vec<BigInt>) {
+    let mut s = BigInt::one();
+    for x in xs {
+        if !x.denom().is_one() {
+            let g = lehmer::gcd(&s, x.denom());
+            s = &s / g * x.denom();
+        }
+    }
+    let v = xs
+        .iter()
+        .map(|x| {
+            if x.denom().is_one() {
+                x.numer() * &s
+            } else {
+                x.numer() * (&s / x.denom())
+            }
+        })
+        .collect();
+    (s, v)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -339,5 +403,41 @@ mod tests {
         assert!(NumberField::new(&Poly::from_i64s(&[1, 2, 1]), (0.0, 0.0)).is_err());
         assert!(NumberField::new(&Poly::from_i64s(&[1, 0, 4, 0, 1]), (0.0, 0.5)).is_ok());
         assert!(NumberField::new(&Poly::from_i64s(&[1, 0, 2, 0, 1]), (0.0, 1.0)).is_err());
+    }
+
+    #[test]
+    fn products_match_the_polynomial_remainder() {
+        // integral modulus (integer kernel) and a non-integral one (rational path): a b is
+        // the remainder of the polynomial product, for fractions with unrelated denominators
+        let r = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        let x5 = Poly::from_i64s(&[-3, 1, 0, 0, 0, 1]);
+        let half = Poly::new(Q, vec![r(-1, 2), r(0, 1), r(1, 3), r(1, 1)]);
+        for m in [x5, half] {
+            let k = NumberField::new(&m, (1.0, 0.0)).unwrap();
+            let mut seed = 7u64;
+            let mut next = |lo: i64, hi: i64| {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                lo + ((seed >> 33) % (hi - lo + 1) as u64) as i64
+            };
+            for _ in 0..40 {
+                let mut el = || {
+                    let c: Vec<Rational> = (0..m.deg())
+                        .map(|_| r(next(-50, 50) * next(0, 1), next(1, 12)))
+                        .collect();
+                    Poly::new(Q, c)
+                };
+                let (pa, pb) = (el(), el());
+                let (a, b) = (k.elem_from_poly(&pa), k.elem_from_poly(&pb));
+                assert_eq!(k.mul(&a, &b), k.elem_from_poly(&pa.mul(&pb)), "{pa} * {pb}");
+            }
+            // the zero product and a product with a one-coefficient element
+            assert!(k.is_zero(&k.mul(&k.zero(), &k.generator())));
+            assert_eq!(
+                k.mul(&k.from_i64(3), &k.generator()).0,
+                vec![r(0, 1), r(3, 1)]
+            );
+        }
     }
 }

@@ -6,13 +6,15 @@
 //! \mathbb{Q}\[x\]$) and $\bar g = g_0 - \alpha g_1$ (the Galois conjugate). The minimal
 //! polynomial over $\mathbb{Q}$ of a root of $g$ is $m = g$ when $g_1 = 0$, else
 //! $m = g \bar g$. In the second case half of the roots of $m$ are roots of $\bar g$ (for a
-//! characteristic polynomial: eigenvalues of $\bar A$, **not** of $A$). At a root $\rho$ of
-//! $m$, $g_1(\rho) \ne 0$ ($g$ and $\bar g$ have no common root) and
-//! $$R(\rho) = -g_0(\rho)/g_1(\rho) = \pm\alpha, \qquad R = -g_0\, g_1^{-1} \bmod m,$$
-//! with $+\alpha$ exactly for the roots of $g$. The sign is decided by evaluating $R$ in
-//! exact rational interval arithmetic on the isolating box of $\rho$, refined until the
-//! enclosure excludes the other candidate ($|2\alpha| \ge 2$ apart); no floating point is
-//! involved in the decision.
+//! characteristic polynomial: eigenvalues of $\bar A$, **not** of $A$); $g$ and $\bar g$
+//! are distinct monic irreducibles, so no root is shared. A root $\rho$ of $m$ is a root
+//! of $g$ exactly when $g(\rho) = g_0(\rho) + \alpha g_1(\rho) = 0$. This is decided by
+//! exact rational interval arithmetic: $g_0$ and $g_1$ (real coefficients, degree
+//! $\deg g$) are evaluated on the isolating box of $\rho$, $\alpha$ enters as a rational
+//! enclosure of $\sqrt{|d|}$ (exact for $\mathbb{Q}(i)$), and the box is refined until
+//! the enclosure of one of $g(\rho)$, $\bar g(\rho)$ excludes 0; the other one is then
+//! the polynomial that vanishes. No floating point is involved in the decision, and the
+//! count of the roots found is checked against $\deg g$.
 //!
 //! | entry point | computes |
 //! |---|---|
@@ -24,7 +26,7 @@
 
 use super::AlgebraicNumber;
 use crate::error::{Error, Result};
-use crate::field::{Q, QuadraticField, Rational};
+use crate::field::{Q, QuadraticField, Rational, lehmer};
 use crate::poly::Poly;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -60,21 +62,24 @@ impl Iv {
         Iv(x.clone(), x)
     }
     fn add(&self, o: &Iv) -> Iv {
-        Iv(&self.0 + &o.0, &self.1 + &o.1)
+        Iv(lehmer::add(&self.0, &o.0), lehmer::add(&self.1, &o.1))
     }
     fn sub(&self, o: &Iv) -> Iv {
-        Iv(&self.0 - &o.1, &self.1 - &o.0)
+        Iv(lehmer::sub(&self.0, &o.1), lehmer::sub(&self.1, &o.0))
     }
     fn mul(&self, o: &Iv) -> Iv {
         let p = [
-            &self.0 * &o.0,
-            &self.0 * &o.1,
-            &self.1 * &o.0,
-            &self.1 * &o.1,
+            lehmer::mul(&self.0, &o.0),
+            lehmer::mul(&self.0, &o.1),
+            lehmer::mul(&self.1, &o.0),
+            lehmer::mul(&self.1, &o.1),
         ];
         let lo = p.iter().min().cloned().unwrap_or_default();
         let hi = p.iter().max().cloned().unwrap_or_default();
         Iv(lo, hi)
+    }
+    fn neg(&self) -> Iv {
+        Iv(-&self.1, -&self.0)
     }
     /// `Some(true)` if every point is positive, `Some(false)` if every point is negative.
     fn sign(&self) -> Option<bool> {
@@ -101,23 +106,61 @@ fn eval_box(p: &Poly<Q>, re: &Iv, im: &Iv) -> (Iv, Iv) {
     (ar, ai)
 }
 
-/// Does the root `z` of $m$ satisfy $R(z) = +\alpha$ (see the module docs)? Decided exactly
-/// by interval evaluation on refined isolating regions.
+/// A rational interval of width at most $2^{-\text{bits}}$ around $\sqrt{|d|}$ (a point
+/// when $|d|$ is a square, e.g. $d = -1$).
+fn sqrt_enclosure(d: &BigInt, bits: u32) -> Iv {
+    let n = d.abs() << (2 * bits);
+    let r = n.sqrt();
+    let den = BigInt::one() << bits;
+    if &r * &r == n {
+        Iv::point(Rational::new(r, den))
+    } else {
+        Iv(
+            Rational::new(r.clone(), den.clone()),
+            Rational::new(r + 1, den),
+        )
+    }
+}
+
+/// Is the root `z` of $m = g \bar g$ a root of $g = g_0 + \alpha g_1$ (see the module
+/// docs)? Decided exactly by interval evaluation on refined isolating regions.
 ///
 /// # Errors
 /// `Limit` when 40 refinements (down to width $2^{-400}$) do not decide (not expected:
-/// the two candidates are at least 2 apart).
-fn fixes_alpha(r: &Poly<Q>, z: &AlgebraicNumber, real_k: bool) -> Result<bool> {
+/// exactly one of $g(z)$, $\bar g(z)$ is zero); `Verification` when both enclosures
+/// exclude 0 (`z` is then no root of $m$).
+fn is_root_of_g(g0: &Poly<Q>, g1: &Poly<Q>, d: &BigInt, z: &AlgebraicNumber) -> Result<bool> {
+    let real_k = d.is_positive();
+    let nonzero = |re: &Iv, im: &Iv| re.sign().is_some() || im.sign().is_some();
     let mut z = z.clone();
-    for step in 0..40 {
+    for step in 0..40u32 {
         let ((r0, r1), (i0, i1)) = z.bounding_box();
-        let (vr, vi) = eval_box(r, &Iv(r0, r1), &Iv(i0, i1));
-        // alpha = +sqrt(d) (real K) or +i sqrt(-d): the relevant part's sign
-        if let Some(s) = if real_k { vr.sign() } else { vi.sign() } {
-            return Ok(s);
+        let (re, im) = (Iv(r0, r1), Iv(i0, i1));
+        let (a_re, a_im) = eval_box(g0, &re, &im);
+        let (b_re, b_im) = eval_box(g1, &re, &im);
+        let s = sqrt_enclosure(d, 10 * (step + 1) + 20);
+        // alpha g1(z): sqrt(d) (b_re + i b_im), or i sqrt(-d) (b_re + i b_im)
+        let (t_re, t_im) = if real_k {
+            (s.mul(&b_re), s.mul(&b_im))
+        } else {
+            (s.mul(&b_im).neg(), s.mul(&b_re))
+        };
+        let g_nonzero = nonzero(&a_re.add(&t_re), &a_im.add(&t_im));
+        let gbar_nonzero = nonzero(&a_re.sub(&t_re), &a_im.sub(&t_im));
+        match (g_nonzero, gbar_nonzero) {
+            (false, true) => return Ok(true),
+            (true, false) => return Ok(false),
+            (true, true) => {
+                return Err(Error::Verification(
+                    "a root of the minimal polynomial is a root of neither g nor its conjugate"
+                        .into(),
+                ));
+            }
+            (false, false) => {
+                let w = Rational::new(BigInt::one(), BigInt::one() << (10 * (step + 1)));
+                z = z.refined(&w)?;
+            }
         }
-        let w = Rational::new(BigInt::one(), BigInt::one() << (10 * (step + 1)));
-        z = z.refined(&w)?;
     }
     Err(Error::Limit(
         "could not separate the eigenvalues of A from those of its conjugate".into(),
@@ -163,18 +206,10 @@ pub fn roots_of_quadratic_factor<T>(
     if g1.is_zero() {
         return Ok(all);
     }
-    // R = -g0 / g1 mod m
-    let (one, s, _) = g1.rem(&m).xgcd(&m);
-    if !one.is_one() {
-        return Err(Error::Verification(format!(
-            "g1 and the minimal polynomial {m} have a common factor"
-        )));
-    }
-    let r = g0.mul(&s).neg().rem(&m);
-    let real_k = g.field().is_real();
+    let d = g.field().d();
     let mut out = vec![];
     for (z, a) in all {
-        if fixes_alpha(&r, &z, real_k)? {
+        if is_root_of_g(&g0, &g1, d, &z)? {
             out.push((z, a));
         }
     }

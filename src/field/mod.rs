@@ -18,6 +18,7 @@
 use std::fmt;
 
 pub mod complex;
+pub mod lehmer;
 pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
 pub mod rational;
@@ -39,7 +40,9 @@ pub fn pow_by_squaring<T: Clone>(x: &T, mut e: u32, one: T, mul: impl Fn(&T, &T)
     }
     acc
 }
-pub use quadratic::{Quadratic, QuadraticField, quadratic_display, quadratic_latex, radical_text};
+pub use quadratic::{
+    Quadratic, QuadraticElems, QuadraticField, quadratic_display, quadratic_latex, radical_text,
+};
 pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
 
 /// An exact field, as a domain value.
@@ -100,6 +103,12 @@ pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
     /// of [`crate::qkernels`] (a method table as in FLINT's `gr`, since Rust has no
     /// specialization). The matrix side chooses the kernel and its thresholds.
     fn as_rationals(&self) -> Option<RationalElems<Self::Elem>> {
+        None
+    }
+    /// `Some((w, d))` exactly when the elements are [`Quadratic`]s of $\mathbb{Q}(\sqrt d)$:
+    /// the witness the matrix layer uses to send products, inverses and ranks to the
+    /// integer kernels of `matrix::over_k` (as [`Field::as_rationals`] does for $\mathbb{Q}$).
+    fn as_quadratic(&self) -> Option<(QuadraticElems<Self::Elem>, &num_bigint::BigInt)> {
         None
     }
     /// Is `a` zero-or-positive-real? Meaningful for real fields only (`None` otherwise).

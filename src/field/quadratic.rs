@@ -10,7 +10,7 @@
 //! | [`QuadraticField::sqrt_of_rational`] | $\sqrt{r}$ as (field, element) for any rational `r` |
 //! | [`Field::sign`] | exact sign (real fields only) |
 
-use super::{Field, Rational, fmt_rational, rational_to_f64};
+use super::{Field, Rational, fmt_rational, lehmer, rational_to_f64};
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -33,6 +33,46 @@ pub struct Quadratic {
 impl Quadratic {
     pub fn new(a: Rational, b: Rational) -> Self {
         Quadratic { a, b }
+    }
+}
+
+/// A type-equality witness `E = Quadratic`, returned by [`Field::as_quadratic`]: views a
+/// slice of elements as [`Quadratic`]s and turns them back into elements, without copying.
+pub struct QuadraticElems<E> {
+    view: for<'a> fn(&'a [E]) -> &'a [Quadratic],
+    back: fn(Vec<Quadratic>) -> Vec<E>,
+}
+
+impl<E> Clone for QuadraticElems<E> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<E> Copy for QuadraticElems<E> {}
+
+fn same_slice(a: &[Quadratic]) -> &[Quadratic] {
+    a
+}
+fn same_vec(v: Vec<Quadratic>) -> Vec<Quadratic> {
+    v
+}
+
+impl QuadraticElems<Quadratic> {
+    /// The witness for the quadratic fields themselves.
+    pub const IDENTITY: Self = QuadraticElems {
+        view: same_slice,
+        back: same_vec,
+    };
+}
+
+impl<E> QuadraticElems<E> {
+    /// The elements `a`, seen as quadratic numbers.
+    pub fn view<'a>(&self, a: &'a [E]) -> &'a [Quadratic] {
+        (self.view)(a)
+    }
+    /// Quadratic numbers, as elements.
+    pub fn back(&self, v: Vec<Quadratic>) -> Vec<E> {
+        (self.back)(v)
     }
 }
 
@@ -162,7 +202,18 @@ impl QuadraticField {
     }
     /// Norm $a^2 - d b^2$.
     pub fn norm(&self, x: &Quadratic) -> Rational {
-        &x.a * &x.a - Rational::from_integer(self.d.clone()) * &x.b * &x.b
+        lehmer::sub(
+            &lehmer::mul(&x.a, &x.a),
+            &self.times_d(&lehmer::mul(&x.b, &x.b)),
+        )
+    }
+    /// `d * x` (canonical), for the products of the $\sqrt d$ parts.
+    fn times_d(&self, x: &Rational) -> Rational {
+        if self.d.is_negative() && self.d.magnitude().is_one() {
+            -x
+        } else {
+            lehmer::mul(x, &Rational::from_integer(self.d.clone()))
+        }
     }
     /// The Galois conjugate $a - b\sqrt d$.
     pub fn galois(&self, x: &Quadratic) -> Quadratic {
@@ -311,27 +362,39 @@ impl Field for QuadraticField {
     }
     fn add(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
         Quadratic {
-            a: &x.a + &y.a,
-            b: &x.b + &y.b,
+            a: lehmer::add(&x.a, &y.a),
+            b: lehmer::add(&x.b, &y.b),
         }
     }
     fn sub(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
         Quadratic {
-            a: &x.a - &y.a,
-            b: &x.b - &y.b,
+            a: lehmer::sub(&x.a, &y.a),
+            b: lehmer::sub(&x.b, &y.b),
         }
     }
     fn mul(&self, x: &Quadratic, y: &Quadratic) -> Quadratic {
         if x.b.is_zero() && y.b.is_zero() {
             return Quadratic {
-                a: &x.a * &y.a,
+                a: lehmer::mul(&x.a, &y.a),
                 b: Rational::zero(),
             };
         }
-        let d = Rational::from_integer(self.d.clone());
         Quadratic {
-            a: &x.a * &y.a + d * &x.b * &y.b,
-            b: &x.a * &y.b + &x.b * &y.a,
+            a: lehmer::add(
+                &lehmer::mul(&x.a, &y.a),
+                &self.times_d(&lehmer::mul(&x.b, &y.b)),
+            ),
+            b: lehmer::add(&lehmer::mul(&x.a, &y.b), &lehmer::mul(&x.b, &y.a)),
+        }
+    }
+    fn mul_add_assign(&self, acc: &mut Quadratic, x: &Quadratic, y: &Quadratic) {
+        if !self.is_zero(x) && !self.is_zero(y) {
+            *acc = self.add(acc, &self.mul(x, y));
+        }
+    }
+    fn mul_sub_assign(&self, acc: &mut Quadratic, x: &Quadratic, y: &Quadratic) {
+        if !self.is_zero(x) && !self.is_zero(y) {
+            *acc = self.sub(acc, &self.mul(x, y));
         }
     }
     fn neg(&self, x: &Quadratic) -> Quadratic {
@@ -341,10 +404,10 @@ impl Field for QuadraticField {
         if self.is_zero(x) {
             return None;
         }
-        let n = self.norm(x);
+        let ni = self.norm(x).recip();
         Some(Quadratic {
-            a: &x.a / &n,
-            b: -&x.b / &n,
+            a: lehmer::mul(&x.a, &ni),
+            b: -lehmer::mul(&x.b, &ni),
         })
     }
     fn from_rational(&self, q: &Rational) -> Quadratic {
@@ -375,6 +438,9 @@ impl Field for QuadraticField {
         } else {
             Some(self.galois(x))
         }
+    }
+    fn as_quadratic(&self) -> Option<(QuadraticElems<Quadratic>, &BigInt)> {
+        Some((QuadraticElems::IDENTITY, &self.d))
     }
     fn sign(&self, x: &Quadratic) -> Option<Ordering> {
         if !self.d.is_positive() {

@@ -3,7 +3,7 @@
 //! Parsing is exact: `0.08` is $2/25$, `1.5e-3` is $3/2000$, `-3/7` is $-3/7$; no binary
 //! floating point is ever involved.
 
-use super::{Field, RationalElems};
+use super::{Field, RationalElems, lehmer};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -45,13 +45,13 @@ impl Field for Q {
         a.is_one()
     }
     fn add(&self, a: &Rational, b: &Rational) -> Rational {
-        a + b
+        lehmer::add(a, b)
     }
     fn sub(&self, a: &Rational, b: &Rational) -> Rational {
-        a - b
+        lehmer::sub(a, b)
     }
     fn mul(&self, a: &Rational, b: &Rational) -> Rational {
-        a * b
+        lehmer::mul(a, b)
     }
     fn neg(&self, a: &Rational) -> Rational {
         -a
@@ -67,12 +67,12 @@ impl Field for Q {
     }
     fn mul_add_assign(&self, acc: &mut Rational, a: &Rational, b: &Rational) {
         if !a.is_zero() && !b.is_zero() {
-            *acc += a * b;
+            *acc = lehmer::add(acc, &lehmer::mul(a, b));
         }
     }
     fn mul_sub_assign(&self, acc: &mut Rational, a: &Rational, b: &Rational) {
         if !a.is_zero() && !b.is_zero() {
-            *acc -= a * b;
+            *acc = lehmer::sub(acc, &lehmer::mul(a, b));
         }
     }
     fn fmt_elem(&self, a: &Rational) -> String {

@@ -17,6 +17,7 @@
 
 mod charpoly;
 mod ops;
+pub mod over_k;
 pub mod over_q;
 pub mod params;
 mod rref;

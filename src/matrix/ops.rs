@@ -166,6 +166,18 @@ impl<K: Field> Matrix<K> {
         {
             return Ok(Matrix::from_vec(k.clone(), self.nrows, b.ncols, w.back(v)));
         }
+        if let Some((w, d)) = k.as_quadratic()
+            && let Some(v) = super::over_k::mul_k(
+                d,
+                self.nrows,
+                self.ncols,
+                b.ncols,
+                w.view(&self.data),
+                w.view(&b.data),
+            )
+        {
+            return Ok(Matrix::from_vec(k.clone(), self.nrows, b.ncols, w.back(v)));
+        }
         let mut out = vec![k.zero(); self.nrows * b.ncols];
         for i in 0..self.nrows {
             let orow = &mut out[i * b.ncols..(i + 1) * b.ncols];

@@ -71,6 +71,14 @@ impl<K: Field> Matrix<K> {
         if let Some(w) = self.field.as_rationals() {
             return over_q::rank_q(self.nrows, self.ncols, w.view(&self.data));
         }
+        if let Some((w, d)) = self.field.as_quadratic() {
+            return super::over_k::rank_k(d, self.nrows, self.ncols, w.view(&self.data));
+        }
+        if self.nrows.min(self.ncols) <= 1 {
+            // a row or a column (or empty): rank 1 exactly when some entry is nonzero, with
+            // no pivot inverse (an extended gcd in a number field)
+            return usize::from(self.data.iter().any(|x| !self.field.is_zero(x)));
+        }
         self.rref().1.len()
     }
     /// Is $\mathrm{rank}\,A \ge r$? Exact. Over $\mathbb{Q}$ a rank modulo a word prime that
@@ -146,6 +154,11 @@ impl<K: Field> Matrix<K> {
         if let Some(w) = self.field.as_rationals() {
             return over_q::inverse_q(n, w.view(&self.data))
                 .map(|d| Matrix::from_vec(self.field.clone(), n, n, w.back(d)))
+                .ok_or(Error::Singular);
+        }
+        if let Some((w, d)) = self.field.as_quadratic() {
+            return super::over_k::inverse_k(d, n, w.view(&self.data))
+                .map(|x| Matrix::from_vec(self.field.clone(), n, n, w.back(x)))
                 .ok_or(Error::Singular);
         }
         let aug = self.hstack(&Matrix::identity(self.field.clone(), n))?;

@@ -35,6 +35,7 @@
 //! $K(\operatorname{Re}\theta, \operatorname{Im}\theta)$ ([`pair_field`]) when that is
 //! small, else in the compact form; [`response`] gives the free response $e^{At}x_0$.
 
+mod coeffs;
 pub mod eigen;
 pub mod pair_field;
 pub mod real;
@@ -89,6 +90,9 @@ impl ComponentK {
         let (v, w) = (&self.chains, &self.left_chains);
         if v.nrows() != a.nrows() || v.ncols() != self.multiplicity {
             return false;
+        }
+        if self.multiplicity == 1 && self.blocks == [1] {
+            return coeffs::verify_simple(&self.field, v, w, a);
         }
         let ak = lift(a, &self.field);
         let j = self.jordan_matrix();
