@@ -601,3 +601,36 @@ fn real_form_expand_stops_at_the_eigenvalue_degree_bound() {
     );
     assert!(rf.blocks.iter().filter(|b| b.pair).all(|b| b.t.is_some()));
 }
+
+/// The free response report carries its check (`verified`: A G_k = θ G_k + (k+1) G_{k+1}
+/// and the traces of G_0 sum to I), as over K; a tampered term is reported unverified, and
+/// `analyze` prints the section's `verified` for an everyday model with complex pairs.
+#[test]
+fn free_response_report_is_verified_and_a_tampered_term_is_not() {
+    use exactlti::report::Value;
+    let a = qmat![[0, 1, 0], [-2, -1, 1], [0, 0, -3]];
+    let jf = jordan(&a).unwrap();
+    let fr = jf.free_response();
+    let rep = fr.report(&jf);
+    assert_eq!(rep.get("verified"), Some(&Value::Bool(true)));
+    let mut bad = fr.clone();
+    let c = &mut bad.terms[0].coeff;
+    let one = c.field().one();
+    let x = c.field().add(c.get(0, 0), &one);
+    c.set(0, 0, x);
+    assert_eq!(bad.report(&jf).get("verified"), Some(&Value::Bool(false)));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
+        .args([
+            "analyze",
+            "tests/data/everyday/quarter_car.json",
+            "--format",
+            "json",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let out = String::from_utf8(out.stdout).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["jordan"]["free_response"]["verified"], true);
+}

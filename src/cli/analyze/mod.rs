@@ -307,10 +307,16 @@ fn jordan_section(
             ),
         ))
     } else {
-        secs.run(title, Insist::Analyze, move || {
-            Value::Obj(j.free_response().report(&j))
-        })
-        .unwrap_or_else(|v| v)
+        match secs.run(title, Insist::Analyze, move || {
+            let rep = j.free_response().report(&j);
+            (matches!(rep.get("verified"), Some(Value::Bool(true))), rep)
+        }) {
+            Ok((ok, rep)) => {
+                secs.verified &= ok;
+                Value::Obj(rep)
+            }
+            Err(v) => v,
+        }
     };
     sec.push("free_response", fr);
     (Value::Obj(sec), Some(jf))

@@ -175,7 +175,8 @@ impl RealJordanForm {
 }
 
 impl FreeResponse {
-    /// Report: one entry per eigenvalue and power, `x(t) = sum t^k e^(s t) G x0`.
+    /// Report: one entry per eigenvalue and power, `x(t) = sum t^k e^(s t) G x0`, and
+    /// `verified` ([`FreeResponse::verify`]: the derivative and the value at `t = 0`).
     pub fn report(&self, jf: &JordanForm) -> Report {
         let mut items = vec![];
         for (ev, e) in jf.eigenvalues.iter().enumerate() {
@@ -189,7 +190,9 @@ impl FreeResponse {
                 ));
             }
         }
-        Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0").list("terms", items)
+        Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0")
+            .list("terms", items)
+            .bool("verified", self.verify(jf))
     }
 }
 
