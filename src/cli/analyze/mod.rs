@@ -347,31 +347,39 @@ fn pbh(
 fn rational_sections(f: &Arc<SystemFile>, t: Arc<TypedSystem<Q>>, secs: &mut Sections, full: bool) {
     let (sec, jf) = jordan_section(&t, secs, (full, &f.path));
     secs.push("jordan", sec);
-    let s = &t.ss;
-    if s.ninputs() > 0 {
-        let title = "PBH tests (exact, one test per irreducible factor)";
-        let tt = t.clone();
-        let sec = match secs.run(title, Insist::Analyze, move || pbh(jf.as_deref(), &tt.ss)) {
-            Ok(Ok((pc, po))) => Value::Obj(
+    let tt = t.clone();
+    let pbh = move || pbh(jf.as_deref(), &tt.ss).map(Some);
+    let tt = t.clone();
+    let modes = move || realization::modal_table(&tt.ss.a).map(|m| m.report());
+    pbh_and_modes(secs, t.ss.ninputs() > 0, pbh, modes);
+}
+
+/// The PBH section (when the system has inputs; `pbh` gives `None` when the Jordan form
+/// it uses was not computed) and the modal table, each under its own budget.
+fn pbh_and_modes(
+    secs: &mut Sections,
+    has_inputs: bool,
+    pbh: impl FnOnce() -> crate::Result<Option<(bool, bool)>> + Send + 'static,
+    modes: impl FnOnce() -> crate::Result<Report> + Send + 'static,
+) {
+    let title = "PBH tests (exact, one test per irreducible factor)";
+    let sec = if !has_inputs {
+        not_applicable("PBH tests", "the system has no inputs")
+    } else {
+        match secs.run(title, Insist::Analyze, pbh) {
+            Ok(Ok(Some((pc, po)))) => Value::Obj(
                 Report::titled(title)
                     .bool("controllable", pc)
                     .bool("observable", po),
             ),
+            Ok(Ok(None)) => not_applicable(title, "the Jordan form was not computed"),
             Ok(Err(e)) => failed(title, &e),
             Err(v) => v,
-        };
-        secs.push("pbh", sec);
-    } else {
-        secs.push(
-            "pbh",
-            not_applicable("PBH tests", "the system has no inputs"),
-        );
-    }
+        }
+    };
+    secs.push("pbh", sec);
     let title = "modal table";
-    let tt = t.clone();
-    let sec = match secs.run(title, Insist::Command("modes"), move || {
-        realization::modal_table(&tt.ss.a).map(|m| m.report())
-    }) {
+    let sec = match secs.run(title, Insist::Command("modes"), modes) {
         Ok(Ok(rep)) => Value::Obj(rep),
         Ok(Err(e)) => failed(title, &e),
         Err(v) => v,
@@ -436,38 +444,11 @@ fn quadratic_sections(
             None
         }
     };
-    let s = &t.ss;
-    if s.ninputs() > 0 {
-        let title = "PBH tests (exact, one test per irreducible factor)";
-        let tt = t.clone();
-        let sec = match secs.run(title, Insist::Analyze, move || {
-            pbh_over_k(jf.as_deref(), &tt)
-        }) {
-            Ok(Some((pc, po))) => Value::Obj(
-                Report::titled(title)
-                    .bool("controllable", pc)
-                    .bool("observable", po),
-            ),
-            Ok(None) => not_applicable(title, "the Jordan form was not computed"),
-            Err(v) => v,
-        };
-        secs.push("pbh", sec);
-    } else {
-        secs.push(
-            "pbh",
-            not_applicable("PBH tests", "the system has no inputs"),
-        );
-    }
-    let title = "modal table";
     let tt = t.clone();
-    let sec = match secs.run(title, Insist::Command("modes"), move || {
-        realization::modal_table_over_k(&tt.ss.a).map(|m| m.report())
-    }) {
-        Ok(Ok(rep)) => Value::Obj(rep),
-        Ok(Err(e)) => failed(title, &e),
-        Err(v) => v,
-    };
-    secs.push("modes", sec);
+    let pbh = move || Ok(pbh_over_k(jf.as_deref(), &tt));
+    let tt = t.clone();
+    let modes = move || realization::modal_table_over_k(&tt.ss.a).map(|m| m.report());
+    pbh_and_modes(secs, t.ss.ninputs() > 0, pbh, modes);
 }
 
 /// The free response over $K$ under its budget, or its size when too large (as over Q).
