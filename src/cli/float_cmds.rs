@@ -342,24 +342,9 @@ fn real_items<K: Field>(
                 .int("float", fro.rank)
                 .str("float_truth", claim_str(ro == fro.rank, fro.truth)),
         ));
-        match float::era_system(a, b, c, d, None, &tol) {
-            Ok(r) => {
-                let e = &r.realization;
-                let ok = e.order == exact_order;
-                items.push((
-                    "era_order".into(),
-                    ok,
-                    Report::new()
-                        .int("exact", exact_order)
-                        .int("float", e.order)
-                        .int("hankel_blocks", e.hankel_blocks.0)
-                        .float("gap_ratio", e.rank_gap.ratio)
-                        .str("float_truth", claim_str(ok, e.truth)),
-                ));
-            }
-            // too large for the float ERA: said, not silently dropped
-            Err(err) => skipped.push(("era_order", err.to_string())),
-        }
+        // too large for the float ERA: said (skipped), not silently dropped
+        let era = float::era_system(a, b, c, d, None, &tol);
+        super::float_compare::era_order_item(era, exact_order, &mut items, &mut skipped);
         // the float zeros compress the (n + p) x (n + m) system matrix with dense
         // orthogonal factors: GBs on very wide or tall systems, so those are skipped, said
         let side = s.nstates() + s.ninputs().max(s.noutputs());

@@ -145,6 +145,33 @@ pub(crate) fn spectrum_comparison(
 /// orthogonal factors are side x side: 2000 is 32 MB each).
 pub const MAX_FLOAT_ZEROS_SIDE: usize = 2000;
 
+/// The `era_order` item: the float ERA's order against the exact McMillan degree, with
+/// its Hankel size, gap ratio and truth; an ERA refused (too large) is listed in `skipped`.
+pub(crate) fn era_order_item<T: FloatScalar>(
+    era: crate::Result<float::SystemEra<T>>,
+    exact_order: usize,
+    items: &mut Vec<Item>,
+    skipped: &mut Vec<(&'static str, String)>,
+) {
+    match era {
+        Ok(r) => {
+            let e = &r.realization;
+            let ok = e.order == exact_order;
+            items.push((
+                "era_order".into(),
+                ok,
+                Report::new()
+                    .int("exact", exact_order)
+                    .int("float", e.order)
+                    .int("hankel_blocks", e.hankel_blocks.0)
+                    .float("gap_ratio", e.rank_gap.ratio)
+                    .str("float_truth", claim_str(ok, e.truth)),
+            ));
+        }
+        Err(err) => skipped.push(("era_order", err.to_string())),
+    }
+}
+
 /// A float count of the real form, halved: `None` when odd (no complex count doubles to it).
 fn half(n: usize) -> Option<usize> {
     n.is_multiple_of(2).then_some(n / 2)
@@ -258,23 +285,12 @@ pub(crate) fn complex_items<K: Field + 'static>(
         let fro = float::observability_rank(&ar, &cr, tol).map_err(|e| fail(path, e))?;
         let (ok, r) = count_item(ro, fro.rank, fro.truth);
         items.push(("observability_rank".into(), ok, r));
-        match float::era_system(a, b, c, d, None, tol) {
-            Ok(r) => {
-                let e = &r.realization;
-                let ok = e.order == exact_order;
-                items.push((
-                    "era_order".into(),
-                    ok,
-                    Report::new()
-                        .int("exact", exact_order)
-                        .int("float", e.order)
-                        .int("hankel_blocks", e.hankel_blocks.0)
-                        .float("gap_ratio", e.rank_gap.ratio)
-                        .str("float_truth", claim_str(ok, e.truth)),
-                ));
-            }
-            Err(err) => skipped.push(("era_order", err.to_string())),
-        }
+        era_order_item(
+            float::era_system(a, b, c, d, None, tol),
+            exact_order,
+            &mut items,
+            &mut skipped,
+        );
         let side = s.nstates() + s.ninputs().max(s.noutputs());
         if 2 * side > MAX_FLOAT_ZEROS_SIDE {
             skipped.push((
