@@ -1,18 +1,5 @@
 //! End-to-end runs of the `exactlti` binary: outputs, JSON fields and exit codes.
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use crate::common::cli::run;
 
 fn json(args: &[&str]) -> serde_json::Value {
     let mut a = args.to_vec();

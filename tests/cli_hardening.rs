@@ -1,27 +1,10 @@
 //! Hardening of the command line (issue 17): the float path's disagreement is visible in the
 //! exit status (3), float claims refuted by the exact path are never labelled true, ERA's
 //! Hankel size, and bounded work on wide systems.
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use crate::common::cli::{self, run};
 
 fn temp_file(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("exactlti-hardening-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
+    cli::temp_file("hardening", name, text)
 }
 
 /// Every comparison in a `check` report: a disagreement never carries float_truth "true".

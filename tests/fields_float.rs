@@ -1,5 +1,6 @@
 //! Issue 17 item 2 for the commands other than Jordan: `tf` exact over Q(i) and Q(sqrt d),
 //! and the complex float path (`freqresp`, `check`, `minreal --method era`) over Q(i).
+use crate::common::cli::{self, run};
 use exactlti::algebraic::{factor_over_quadratic, norm_over_q};
 use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
 use exactlti::float::{Tol, Truth, era_system, freqresp_complex, markov_parameters, to_cmatrix};
@@ -8,27 +9,9 @@ use exactlti::poly::Poly;
 use exactlti::realization::realize_transfer;
 use exactlti::system::StateSpace;
 use num_complex::Complex;
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 fn temp_file(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("exactlti-fields-float-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
+    cli::temp_file("fields-float", name, text)
 }
 
 fn json(args: &[&str]) -> (i32, serde_json::Value, String) {

@@ -2,32 +2,15 @@
 //! suggestion, duplicate JSON keys, bare numbers under the same size limit as strings, the
 //! bicycle benchmark's raw data refused as a system, signal names, capped file reads,
 //! implicit multiplication by `i`, and key `G` in the state-space commands.
+use crate::common::cli::{self, run};
 use exactlti::io::{
     Ground, InputErrorKind, SystemFormat, eval_expr, load_system_path, load_system_str,
     parse_system_json, parse_system_toml, read_text,
 };
 use std::path::Path;
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 fn temp_file(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("exactlti-inputs-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
+    cli::temp_file("inputs", name, text)
 }
 
 fn data(p: &str) -> std::path::PathBuf {

@@ -3,6 +3,7 @@
 //! (eigenvalues of A, not of its Galois conjugate), planted non-trivial blocks, and a
 //! proptest over both fields.
 
+use crate::common::cli::{self, run};
 use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
 use exactlti::jordan::over_k::{JordanFormK, jordan_over_k};
 use exactlti::matrix::Matrix;
@@ -371,25 +372,8 @@ fn modal_table_over_k_lists_the_eigenvalues_of_a() {
     assert!(t.modes[0].paired);
 }
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
 fn temp_file(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("exactlti-jfields-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
+    cli::temp_file("jfields", name, text)
 }
 
 #[test]

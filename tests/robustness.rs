@@ -1,6 +1,7 @@
 //! Degenerate shapes through every library command (issue 17): n = 0 finite states, no
 //! inputs, no outputs, E = 0, empty matrices. Each answers or errs with a typed error; no panic.
 
+use crate::common::cli::run;
 use exactlti::float;
 use nalgebra::DMatrix;
 
@@ -23,19 +24,6 @@ fn float_freqresp_with_no_states() {
     )
     .unwrap();
     assert_eq!(g[0].shape(), (0, 0));
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 /// Every command on n = 0 finite states (E = 0), no inputs, no outputs, an empty system and

@@ -1,5 +1,6 @@
 //! Shared test helpers: a deterministic generator and the three test fields.
 #![allow(dead_code)]
+pub mod cli;
 pub mod pencils;
 pub mod polys;
 pub mod systems;
