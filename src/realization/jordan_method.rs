@@ -89,15 +89,13 @@ struct Compact {
 }
 
 /// Keeps, per Jordan block, the states from the first observed to the last excited one.
-fn drop_modes(
+pub(super) fn drop_modes<K: Field>(
     blocks: &[usize],
-    b: &Matrix<NumberField>,
-    c: &Matrix<NumberField>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
 ) -> (Vec<usize>, Vec<usize>) {
     let k = b.field().clone();
-    let mut keep = vec![];
-    let mut sizes = vec![];
-    let mut start = 0;
+    let (mut keep, mut sizes, mut start) = (vec![], vec![], 0);
     for &s in blocks {
         let idx: Vec<usize> = (start..start + s).collect();
         let excited = idx

@@ -122,33 +122,6 @@ impl JordanMinimalK {
     }
 }
 
-/// Keeps, per Jordan block, the states from the first observed to the last excited one.
-fn drop_modes<K: Field>(
-    blocks: &[usize],
-    b: &Matrix<K>,
-    c: &Matrix<K>,
-) -> (Vec<usize>, Vec<usize>) {
-    let k = b.field().clone();
-    let (mut keep, mut sizes, mut start) = (vec![], vec![], 0);
-    for &s in blocks {
-        let idx: Vec<usize> = (start..start + s).collect();
-        let excited = idx
-            .iter()
-            .rposition(|&i| b.row(i).iter().any(|x| !k.is_zero(x)));
-        let observed = idx
-            .iter()
-            .position(|&i| (0..c.nrows()).any(|r| !k.is_zero(c.get(r, i))));
-        if let (Some(hi), Some(lo)) = (excited, observed)
-            && lo <= hi
-        {
-            keep.extend(start + lo..=start + hi);
-            sizes.push(hi - lo + 1);
-        }
-        start += s;
-    }
-    (keep, sizes)
-}
-
 /// $\mathrm{Tr}_{E/K}(t^e x) = \sum_c x_c s_{e+c}$.
 fn trace_shifted(x: &RelElem, e: usize, s: &[Quadratic], k: &QuadraticField) -> Quadratic {
     x.0.iter()
@@ -231,7 +204,7 @@ pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanM
         let lift = |m: &Matrix<QuadraticField>| m.map(e, |x| e.from_base(x));
         let bk = &comp.left_chains * &lift(&sys.b);
         let ck = &lift(&sys.c) * &comp.chains;
-        let (keep, sizes) = drop_modes(&comp.blocks, &bk, &ck);
+        let (keep, sizes) = super::jordan_method::drop_modes(&comp.blocks, &bk, &ck);
         stage1 += keep.len() * comp.factor.deg();
         if keep.is_empty() {
             continue;
