@@ -146,6 +146,16 @@ fn int(i: usize) -> Rational {
 /// `Singular` when the pencil is singular (its determinant vanishes identically);
 /// `Limit` for degree bounds above [`MAX_BIDEGREE`]; `Verification` if the check fails.
 pub fn charpoly_xv(fam: &ParamFamily) -> Result<BiPoly> {
+    Ok(charpoly_xv_content(fam)?.0)
+}
+
+/// [`charpoly_xv`] and the content $c(v)$ it divided out (monic): with the rows of the
+/// pencil made polynomial, $\det = c(v) P(x, v)$, so at a root of $c$ that is no pole of an
+/// entry the pencil is singular ($\det(xE(v_0) - A(v_0)) = 0$ for every $x$).
+///
+/// # Errors
+/// As [`charpoly_xv`].
+pub fn charpoly_xv_content(fam: &ParamFamily) -> Result<(BiPoly, Poly<Q>)> {
     let pencil = fam.pencil();
     let n2 = pencil[0].len();
     // scale each row by the lcm of its denominators: entries in Q[v]
@@ -236,7 +246,7 @@ pub fn charpoly_xv(fam: &ParamFamily) -> Result<BiPoly> {
     coeffs = coeffs.iter().map(|c| c.scale(&scale)).collect();
     let p = BiPoly { coeffs };
     check_charpoly(fam, &p)?;
-    Ok(p)
+    Ok((p, content.monic()))
 }
 
 /// Checks $P(x, v_0) = p_n(v_0) \chi_{A(v_0)}(x)$ at a rational $v_0$ where both sides

@@ -14,6 +14,7 @@
 //! | [`ParamFamily::state_matrix_in`] | $A(v_0)$ over any field holding $v_0$ |
 //! | [`ParamFamily::state_matrix_f64`] | $A(v)$ in floating point (sweeps) |
 
+use super::finite::{finite_part, linearize_second_order};
 use super::ratfunc::{RatFunc, eval_ratfunc, ratfunc_from_number};
 use crate::algebraic::NumberField;
 use crate::error::{Error, Result};
@@ -144,11 +145,14 @@ impl ParamFamily {
         out
     }
 
-    /// $A(v_0)$ over the field `k`, where `v0` is an element of `k`.
+    /// $A(v_0)$ over the field `k`, where `v0` is an element of `k`: $E(v_0)^{-1} A(v_0)$
+    /// (resp. the companion form of $M, L, K$), or where $E(v_0)$ (resp. $M(v_0)$) is
+    /// singular the finite part $A_f$ of the pencil ([`finite_part`]), whose order is the
+    /// number of finite eigenvalues $\deg \det(xE - A)$.
     ///
     /// # Errors
-    /// `DivisionByZero` at a pole of an entry; `Singular` where $E(v_0)$ or $M(v_0)$ is
-    /// singular.
+    /// `DivisionByZero` at a pole of an entry; `Singular` where the pencil is singular
+    /// ($\det(xE(v_0) - A(v_0)) = 0$ for every $x$).
     pub fn state_matrix_in<K: Field>(&self, k: &K, v0: &K::Elem) -> Result<Matrix<K>> {
         let ev = |m: &RatMatrix| -> Result<Matrix<K>> {
             let rows = m
@@ -169,12 +173,27 @@ impl ParamFamily {
                 let a = ev(a)?;
                 match e {
                     None => Ok(a),
-                    Some(e) => ev(e)?.inverse()?.try_mul(&a),
+                    Some(e) => {
+                        let e = ev(e)?;
+                        match e.inverse() {
+                            Ok(ei) => ei.try_mul(&a),
+                            Err(Error::Singular) => finite_part(e, a),
+                            Err(err) => Err(err),
+                        }
+                    }
                 }
             }
             FamilyForm::Second { m, l, k: kk } => {
                 let n = m.len();
-                let minv = ev(m)?.inverse()?;
+                let mm = ev(m)?;
+                let minv = match mm.inverse() {
+                    Ok(x) => x,
+                    Err(Error::Singular) => {
+                        let (e, a) = linearize_second_order(&mm, &ev(l)?, &ev(kk)?);
+                        return finite_part(e, a);
+                    }
+                    Err(err) => return Err(err),
+                };
                 let mk = minv.try_mul(&ev(kk)?)?.scale(&k.neg(&k.one()));
                 let ml = minv.try_mul(&ev(l)?)?.scale(&k.neg(&k.one()));
                 let mut a = Matrix::zeros(k.clone(), 2 * n, 2 * n);
@@ -270,7 +289,9 @@ impl ParamFamily {
             memo: RefCell::new(HashMap::new()),
             active: RefCell::new(vec![]),
         };
+        check_param_named(file, param, &params, get("symbols"))?;
         let nominal = match params.iter().find(|(n, _)| n == param) {
+            Some((_, Raw::Other { kind: "null", .. })) | None => None,
             Some((_, r)) => {
                 let f = resolver.scalar(r, &format!("parameters.{param}"), false)?;
                 if !f.is_poly() || f.num.deg() > 0 {
@@ -280,7 +301,6 @@ impl ParamFamily {
                 }
                 Some(f.num.coeff(0))
             }
-            None => None,
         };
         let mat = |k: &str| -> Result<Option<RatMatrix>> {
             get(k).map(|r| resolver.matrix(r, k)).transpose()
@@ -313,6 +333,40 @@ impl ParamFamily {
             form,
         })
     }
+}
+
+/// The swept parameter must be one the file names (in `parameters` or `symbols`):
+/// otherwise the study would run on a constant system and call it a result.
+///
+/// # Errors
+/// `Invalid` naming the file, the key and the parameters the file has.
+fn check_param_named(
+    file: &str,
+    param: &str,
+    params: &[(String, Raw)],
+    symbols: Option<&Raw>,
+) -> Result<()> {
+    let mut names: Vec<&str> = params.iter().map(|(n, _)| n.as_str()).collect();
+    if let Some(Raw::Array(xs)) = symbols {
+        for x in xs {
+            if let Raw::Str(s) = x
+                && !names.contains(&s.as_str())
+            {
+                names.push(s);
+            }
+        }
+    }
+    if names.contains(&param) {
+        return Ok(());
+    }
+    let has = if names.is_empty() {
+        "the file has no parameters".to_string()
+    } else {
+        format!("the file has: {}", names.join(", "))
+    };
+    Err(Error::Invalid(format!(
+        "{file}: key parameters: no parameter '{param}' to vary ({has})"
+    )))
 }
 
 fn check_square(m: &RatMatrix, n: usize) -> Result<()> {

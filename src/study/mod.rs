@@ -15,13 +15,16 @@
 pub mod bivar;
 pub mod critical;
 pub mod family;
+pub mod finite;
 pub mod hurwitz;
 pub mod modp;
 pub mod ratfunc;
 pub mod sweep;
 
-pub use bivar::{BiPoly, charpoly_xv, discriminant_v, hurwitz_delta_n1};
-pub use critical::{CriticalKind, CriticalValue, CriticalValues, StudyInterval, critical_values};
+pub use bivar::{BiPoly, charpoly_xv, charpoly_xv_content, discriminant_v, hurwitz_delta_n1};
+pub use critical::{
+    CriticalKind, CriticalValue, CriticalValues, SingularReason, StudyInterval, critical_values,
+};
 pub use family::{FamilyForm, ParamFamily};
 pub use hurwitz::{RootCounts, hurwitz_stable, root_counts};
 pub use ratfunc::RatFunc;

@@ -28,7 +28,7 @@ mod structure;
 pub use roots::{rational_between, sign_at_root};
 pub use structure::block_sizes;
 
-use super::bivar::{BiPoly, charpoly_xv, discriminant_v, hurwitz_delta_n1};
+use super::bivar::{BiPoly, charpoly_xv_content, discriminant_v, hurwitz_delta_n1};
 use super::family::ParamFamily;
 use super::hurwitz::RootCounts;
 use crate::algebraic::AlgebraicNumber;
@@ -56,6 +56,29 @@ impl CriticalKind {
             CriticalKind::ZeroEigenvalue => "zero_eigenvalue",
             CriticalKind::ImaginaryPair => "imaginary_pair",
             CriticalKind::DoubleEigenvalue => "double_eigenvalue",
+        }
+    }
+}
+
+/// Why the family is excluded at a point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SingularReason {
+    /// An entry of the matrices has a pole.
+    Pole,
+    /// $\det(xE - A) = 0$ for every $x$ (resp. $\det(x^2M + xL + K)$).
+    SingularPencil,
+    /// The leading coefficient of $P(x, v)$ vanishes: an eigenvalue goes to infinity
+    /// ($E(v)$ or $M(v)$ loses rank), fewer finite eigenvalues than elsewhere.
+    OrderDrop,
+}
+
+impl SingularReason {
+    /// Its name in reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            SingularReason::Pole => "pole",
+            SingularReason::SingularPencil => "singular_pencil",
+            SingularReason::OrderDrop => "eigenvalue_at_infinity",
         }
     }
 }
@@ -116,8 +139,11 @@ pub struct CriticalValues {
     /// Roots of $\Delta_{n-1}$ that are not imaginary pairs (a real pair $\pm a$ or a
     /// double zero), with the reason.
     pub rejected: Vec<(AlgebraicNumber, String)>,
-    /// Where $A(v)$ is undefined or the order drops (a denominator or $p_n$ vanishes).
+    /// Where $A(v)$ is undefined or the order drops (a denominator, the content of the
+    /// determinant or $p_n$ vanishes), ascending.
     pub singular: Vec<AlgebraicNumber>,
+    /// Why, for each entry of `singular`.
+    pub singular_reasons: Vec<SingularReason>,
     /// Kinds that hold for every $v$ (e.g. a rigid-body zero eigenvalue): not reported as
     /// critical values.
     pub persistent: Vec<CriticalKind>,
@@ -143,7 +169,7 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
     if a > b {
         return Err(Error::Invalid(format!("empty range: from {a} > to {b}")));
     }
-    let p = charpoly_xv(fam)?;
+    let (p, content) = charpoly_xv_content(fam)?;
     let conditions = vec![
         (CriticalKind::ZeroEigenvalue, p.coeffs[0].clone()),
         (CriticalKind::ImaginaryPair, hurwitz_delta_n1(&p)?),
@@ -156,11 +182,7 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
         disc: &conditions[2].1,
         s1: &s1,
     };
-    let mut sing_poly = p.lead();
-    for d in fam.denominators() {
-        sing_poly = sing_poly.mul(&d);
-    }
-    let singular = real_roots_in(&sing_poly, a, b)?;
+    let (singular, singular_reasons) = singular_points(fam, &p, &content, a, b)?;
     let mut critical = vec![];
     let mut rejected = vec![];
     let mut persistent = vec![];
@@ -217,10 +239,44 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
         critical,
         rejected,
         singular,
+        singular_reasons,
         persistent,
         intervals,
         verified,
     })
+}
+
+/// The points of $[a, b]$ where the family is undefined or its finite spectrum changes
+/// size, each with its first reason: a pole of an entry, a singular pencil (a root of the
+/// content $c$ of the determinant), the leading coefficient $p_r$ vanishing (an
+/// eigenvalue goes to infinity: fewer finite eigenvalues).
+fn singular_points(
+    fam: &ParamFamily,
+    p: &BiPoly,
+    content: &Poly<Q>,
+    a: &Rational,
+    b: &Rational,
+) -> Result<(Vec<AlgebraicNumber>, Vec<SingularReason>)> {
+    let mut out: Vec<(AlgebraicNumber, SingularReason)> = vec![];
+    let dens = fam.denominators();
+    let lead = p.lead();
+    let parts = dens
+        .iter()
+        .map(|d| (d, SingularReason::Pole))
+        .chain([
+            (content, SingularReason::SingularPencil),
+            (&lead, SingularReason::OrderDrop),
+        ])
+        .collect::<Vec<_>>();
+    for (poly, why) in parts {
+        for r in real_roots_in(poly, a, b)? {
+            if !out.iter().any(|(x, _)| *x == r) {
+                out.push((r, why));
+            }
+        }
+    }
+    out.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap_or(Ordering::Equal));
+    Ok(out.into_iter().unzip())
 }
 
 /// `f64` of a rational (re-export for reports).
