@@ -5,7 +5,7 @@
 use super::{Failure, Outcome};
 use crate::report::plot::sweep::{root_locus_svg, sweep_svg};
 use crate::report::{Report, Value};
-use crate::study::{ParamFamily, sweep, sweep_values};
+use crate::study::{ParamFamily, PointStatus, SweepResult, sweep, sweep_values};
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -92,14 +92,16 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
     if let Some(p) = a.csv {
         write(p, &sw.to_csv())?;
     }
+    let r = Report::titled(format!("sweep of {} over [{}, {}]", a.param, a.from, a.to))
+        .str("param", a.param)
+        .int("points", values.len());
+    let r = status_fields(r, &sw, a.param);
     let stable = sw
         .eigenvalues
         .iter()
         .filter(|ev| !ev.is_empty() && ev.iter().all(|z| z.re < 0.0))
         .count();
-    let r = Report::titled(format!("sweep of {} over [{}, {}]", a.param, a.from, a.to))
-        .str("param", a.param)
-        .int("points", values.len())
+    let r = r
         .int("stable_points", stable)
         .list("values", values.iter().map(|v| Value::Float(*v)).collect())
         .list(
@@ -116,4 +118,54 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
                 .collect(),
         );
     Ok(Outcome::plain(r))
+}
+
+/// `method`, and where needed `infinite_eigenvalues[]` (per point) and `notes[]` (one per
+/// point without eigenvalues: `index`, `value`, `reason`, `note`).
+fn status_fields(r: Report, sw: &SweepResult, param: &str) -> Report {
+    let descriptor = sw
+        .status
+        .iter()
+        .any(|s| matches!(s, PointStatus::Descriptor { .. }));
+    let method = if descriptor {
+        "finite eigenvalues of the pencil det(sE - A) = 0: their number exact, their values by shift-and-invert in floating point; eigenvalues of A(v) where E(v) is invertible"
+    } else {
+        "eigenvalues of A(v) in floating point (balanced real Schur)"
+    };
+    let mut r = r.str("method", method);
+    if descriptor {
+        let inf = sw.status.iter().map(|s| match s {
+            PointStatus::Descriptor { infinite } => Value::Int(*infinite as i64),
+            _ => Value::Int(0),
+        });
+        r = r.list("infinite_eigenvalues", inf.collect());
+    }
+    let notes: Vec<Value> = sw
+        .status
+        .iter()
+        .zip(&sw.values)
+        .enumerate()
+        .filter_map(|(i, (s, v))| {
+            let (reason, why) = match s {
+                PointStatus::Pole => ("pole", "an entry of the matrices has a pole"),
+                PointStatus::SingularPencil => (
+                    "singular_pencil",
+                    "det(sE - A) = 0 for every s (a singular pencil)",
+                ),
+                PointStatus::Failed => ("failed", "the float eigenvalue computation failed"),
+                _ => return None,
+            };
+            Some(Value::Obj(
+                Report::new()
+                    .int("index", i)
+                    .float("value", *v)
+                    .str("reason", reason)
+                    .str("note", format!("{param} = {v}: {why}; no eigenvalues")),
+            ))
+        })
+        .collect();
+    if !notes.is_empty() {
+        r = r.list("notes", notes);
+    }
+    r
 }

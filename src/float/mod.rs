@@ -18,6 +18,7 @@
 //! | [`controllability_rank`], [`observability_rank`] | $\operatorname{rank}[B, AB, \dots]$, dual     | orthogonal staircase                    |
 //! | [`markov_parameters`], [`era`]       | $D, CB, CAB, \dots$; realization from them              | ERA (Juang and Pappa), paper eq. 10-15  |
 //! | [`invariant_zeros`]                  | $s$ where $\operatorname{rank}[A-sI, B; C, D]$ drops    | Emami-Naeini and Van Dooren reduction   |
+//! | [`pencil_finite_eigenvalues`]        | the $r$ finite $\lambda$ with $\det(\lambda E - A) = 0$, $r$ given exactly | shift and invert, no QZ |
 //! | [`freqresp`]                         | $G(j\omega) = C(j\omega I - A)^{-1}B + D$               | complex LU solves                       |
 
 use nalgebra::DMatrix;
@@ -30,6 +31,7 @@ mod era;
 mod freqresp;
 mod jordan_guess;
 mod minreal;
+mod pencil_eig;
 pub mod random;
 mod staircase;
 mod svd;
@@ -45,6 +47,7 @@ pub use era::{
 pub use freqresp::{freqresp, freqresp_complex};
 pub use jordan_guess::{Cluster, FloatJordan, jordan_guess};
 pub use minreal::{FloatMinreal, minreal};
+pub use pencil_eig::pencil_finite_eigenvalues;
 pub use staircase::{
     FloatRank, controllability_rank, is_controllable, is_observable, observability_rank,
 };

@@ -6,7 +6,7 @@
 //! | [`ParamFamily::from_file`] | the family $A(v)$ of a system file, one parameter symbolic |
 //! | [`charpoly_xv`] | $P(x, v) = p_n(v) \chi_{A(v)}(x)$ exactly (evaluation/interpolation) |
 //! | [`critical_values`] | zero eigenvalues, imaginary pairs, double eigenvalues as algebraic numbers; stability per interval |
-//! | [`sweep`] | float eigenvalues at many parameter values, in parallel |
+//! | [`sweep`] | float eigenvalues at many parameter values, in parallel (finite eigenvalues of the pencil where $E(v)$ is singular, counted exactly by [`SweepPlan`]) |
 //!
 //! The exact path never uses floats: $P$, the Hurwitz determinant and the discriminant are
 //! polynomials over $\mathbb{Q}$, their roots are certified, and the confirmations and
@@ -20,6 +20,7 @@ pub mod hurwitz;
 pub mod modp;
 pub mod ratfunc;
 pub mod sweep;
+pub mod sweep_plan;
 
 pub use bivar::{BiPoly, charpoly_xv, charpoly_xv_content, discriminant_v, hurwitz_delta_n1};
 pub use critical::{
@@ -29,3 +30,4 @@ pub use family::{FamilyForm, ParamFamily};
 pub use hurwitz::{RootCounts, hurwitz_stable, root_counts};
 pub use ratfunc::RatFunc;
 pub use sweep::{SweepResult, sweep, sweep_values};
+pub use sweep_plan::{PointStatus, SweepPlan};

@@ -7,6 +7,7 @@
 //! previous value by [`SweepResult::tracks`] for plotting continuous branches.
 
 use super::family::{FamilyForm, ParamFamily, RatMatrix, second_order_state_matrix};
+use super::sweep_plan::{PointStatus, SweepPlan};
 use crate::error::{Error, Result};
 use crate::field::rational_to_f64;
 use nalgebra::DMatrix;
@@ -21,8 +22,10 @@ pub const MAX_POINTS: usize = 10_000_000;
 pub struct SweepResult {
     pub param: String,
     pub values: Vec<f64>,
-    /// `eigenvalues[i]`: the eigenvalues at `values[i]`, sorted by (re, im).
+    /// `eigenvalues[i]`: the (finite) eigenvalues at `values[i]`, sorted by (re, im).
     pub eigenvalues: Vec<Vec<Complex<f64>>>,
+    /// `status[i]`: what `eigenvalues[i]` is (or why it is empty).
+    pub status: Vec<PointStatus>,
 }
 
 /// `n` equally spaced values from `a` to `b` (both included; `n = 1` gives `a`).
@@ -91,16 +94,72 @@ impl Compiled {
             Compiled::Second(m, l, k) => second_order_state_matrix(&at(m, v), &at(l, v), &at(k, v)),
         }
     }
+    /// The pencil $(E(v), A(v))$; the second-order form linearized as in
+    /// [`super::finite`] ($E = \mathrm{diag}(I, M)$, $A = [0, I; -K, -L]$).
+    fn pencil(&self, v: f64) -> (DMatrix<f64>, DMatrix<f64>) {
+        match self {
+            Compiled::First(a, e) => {
+                let a = at(a, v);
+                let e = e
+                    .as_ref()
+                    .map_or_else(|| DMatrix::identity(a.nrows(), a.nrows()), |e| at(e, v));
+                (e, a)
+            }
+            Compiled::Second(m, l, k) => {
+                let (m, l, k) = (at(m, v), at(l, v), at(k, v));
+                let n = m.nrows();
+                let mut e = DMatrix::identity(2 * n, 2 * n);
+                e.view_mut((n, n), (n, n)).copy_from(&m);
+                let mut a = DMatrix::zeros(2 * n, 2 * n);
+                a.view_mut((0, n), (n, n)).fill_with_identity();
+                a.view_mut((n, 0), (n, n)).copy_from(&(-k));
+                a.view_mut((n, n), (n, n)).copy_from(&(-l));
+                (e, a)
+            }
+        }
+    }
+    /// The finite eigenvalues at `v` for the exact `status` (empty where there are none).
+    fn eigenvalues(
+        &self,
+        v: f64,
+        status: PointStatus,
+        n: usize,
+    ) -> (Vec<Complex<f64>>, PointStatus) {
+        let finite = |x: &DMatrix<f64>| x.iter().all(|y| y.is_finite());
+        let shift_invert = |r: usize| {
+            let (e, a) = self.pencil(v);
+            (finite(&e) && finite(&a))
+                .then(|| crate::float::pencil_finite_eigenvalues(&e, &a, r).ok())
+                .flatten()
+        };
+        let ev = match status {
+            PointStatus::Regular => self
+                .state_matrix(v)
+                .ok()
+                .filter(finite)
+                .and_then(|a| crate::float::eigenvalues(&a).ok())
+                .or_else(|| shift_invert(n)),
+            PointStatus::Descriptor { infinite } => shift_invert(n - infinite),
+            _ => return (vec![], status),
+        };
+        match ev {
+            Some(ev) => (ev, status),
+            None => (vec![], PointStatus::Failed),
+        }
+    }
 }
 
 /// Eigenvalues of $A(v)$ for every `v` in `values`, in parallel; `progress(k)` is called
 /// with the number of points finished so far (from worker threads, unordered).
 ///
-/// A value where $A(v)$ is undefined (a pole, singular $M$ or $E$) gives an empty
-/// eigenvalue list rather than an error, so one bad point does not spoil a sweep.
+/// Where $E(v)$ (or $M(v)$) is singular the list holds the finite eigenvalues of the
+/// pencil ($\det(xE - A) = 0$; their number decided exactly by [`SweepPlan`], their values
+/// by [`crate::float::pencil_finite_eigenvalues`]). A value where the family is undefined
+/// (a pole, a singular pencil) gives an empty list and says so in `status`, so one bad
+/// point does not spoil a sweep.
 ///
 /// # Errors
-/// `Limit` for more than [`MAX_POINTS`] values.
+/// `Limit` for more than [`MAX_POINTS`] values; errors of [`SweepPlan::new`].
 pub fn sweep(
     fam: &ParamFamily,
     values: &[f64],
@@ -109,28 +168,25 @@ pub fn sweep(
     if values.len() > MAX_POINTS {
         return Err(Error::Limit(format!("more than {MAX_POINTS} sweep points")));
     }
+    let plan = SweepPlan::new(fam)?;
     let c = Compiled::new(fam);
     let done = std::sync::atomic::AtomicUsize::new(0);
-    let eigenvalues: Vec<Vec<Complex<f64>>> = values
+    let (eigenvalues, status): (Vec<Vec<Complex<f64>>>, Vec<PointStatus>) = values
         .par_iter()
         .with_min_len(16)
         .map(|&v| {
-            let ev = c
-                .state_matrix(v)
-                .ok()
-                .filter(|a| a.iter().all(|x| x.is_finite()))
-                .and_then(|a| crate::float::eigenvalues(&a).ok())
-                .unwrap_or_default();
+            let out = c.eigenvalues(v, plan.status(v), plan.nstates);
             if let Some(p) = progress {
                 p(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
             }
-            ev
+            out
         })
-        .collect();
+        .unzip();
     Ok(SweepResult {
         param: fam.param.clone(),
         values: values.to_vec(),
         eigenvalues,
+        status,
     })
 }
 
