@@ -87,6 +87,8 @@ mod scb;
 mod slowpaths;
 #[path = "study.rs"]
 mod study;
+#[path = "study_classes.rs"]
+mod study_classes;
 #[path = "symbolic.rs"]
 mod symbolic;
 #[path = "symbolic_scb.rs"]

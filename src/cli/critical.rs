@@ -125,7 +125,8 @@ pub fn report(cv: &CriticalValues, digits: usize) -> Report {
         "singular_values",
         cv.singular
             .iter()
-            .map(|a| Value::Obj(number(a, digits)))
+            .zip(&cv.singular_reasons)
+            .map(|(a, why)| Value::Obj(number(a, digits).str("reason", why.name())))
             .collect(),
     )
     .list(
