@@ -396,7 +396,8 @@ fn has_imaginary_pair(a: &Matrix<Q>) -> Option<bool> {
     if ev.iter().any(|z| !near(z.re) && z.re.abs() < 1e-5 * scale) {
         return None; // too close to call in floating point
     }
-    Some(ev.iter().any(|z| near(z.re) && !near(z.im)))
+    // a zero eigenvalue in a Jordan block scatters by sqrt(eps): not a pair
+    Some(ev.iter().any(|z| near(z.re) && z.im.abs() > 1e-6 * scale))
 }
 
 #[test]
@@ -431,7 +432,10 @@ fn undamped_point_of_second_order_families_is_certified() {
         let cv = critical_values(&fam, &q(from), &q(to)).unwrap();
         assert!(cv.verified, "{text} on [{from}, {to}]");
         assert!(cv.critical.iter().all(|c| c.certified), "{text}");
-        if cv.persistent.contains(&CriticalKind::ImaginaryPair) {
+        // (a singular M can make v = 0 a point where an eigenvalue goes to infinity)
+        if cv.persistent.contains(&CriticalKind::ImaginaryPair)
+            || cv.singular.iter().any(|s| s.to_string() == "0")
+        {
             continue;
         }
         let at0 = cv
