@@ -16,6 +16,7 @@ or SymPy symbols; results then carry ``conditions`` (polynomials assumed nonzero
 from ._core import UnsupportedError, VerificationError
 from ._convert import ExactnessWarning
 from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
+from ._study import critical, sweep
 from ._system import (
     CheckResult,
     Factor,
@@ -45,6 +46,8 @@ __all__ = [
     "jordan",
     "load",
     "from_control",
+    "sweep",
+    "critical",
     "StateSpace",
     "Matrix",
     "AlgebraicNumber",

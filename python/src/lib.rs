@@ -10,6 +10,7 @@
 
 use exactlti::Error;
 mod compat;
+mod study;
 use compat::{Loaded, Typed, from_loaded};
 use exactlti::field::{Q, QuadraticField};
 use exactlti::ratfunc::RatFuncField;
@@ -559,6 +560,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<System>()?;
     m.add_function(wrap_pyfunction!(load_json, m)?)?;
     m.add_function(wrap_pyfunction!(load_file, m)?)?;
+    m.add_function(wrap_pyfunction!(study::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(study::critical, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_test, m)?)?;
     m.add_function(wrap_pyfunction!(_sleep_for_test, m)?)?;
     m.add("UnsupportedError", m.py().get_type::<UnsupportedError>())?;
