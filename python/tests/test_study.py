@@ -40,11 +40,11 @@ def test_a_parameter_the_file_lacks_raises_naming_the_ones_it_has(seed):
 
 
 def test_singular_e_sweep_gives_finite_eigenvalues_and_notes():
-    # E = diag(1, 1, 0), A: x3 = x2, so s^2 + 2 s + v; a pole at v = 1/2
+    # E = diag(1, 1, 0), A: x3 = x2, so s^2 + 2 s + v; a pole at v = 1/2 (row 3 scaled)
     doc = {
         "parameters": {"v": 1},
         "E": [[1, 0, 0], [0, 1, 0], [0, 0, 0]],
-        "A": [[0, 1, 0], ["-v", -3, 1], [0, "1/(2*v - 1)*(2*v - 1)", -1]],
+        "A": [[0, 1, 0], ["-v", -3, 1], [0, "1/(2*v - 1)", "-1/(2*v - 1)"]],
     }
     r = exactlti.sweep(_write(doc, "e.json"), "v", [0.0, 0.5, 1.0])
     assert r["status"] == ["descriptor", "pole", "descriptor"]
