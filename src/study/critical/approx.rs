@@ -87,6 +87,22 @@ fn aberth_roots(c: &[f64]) -> Vec<Complex<f64>> {
     z
 }
 
+/// Approximate roots of a polynomial over $\mathbb{Q}(v_0)$ (companion eigenvalues).
+pub(super) fn approx_roots(
+    k: &NumberField,
+    q: &Poly<NumberField>,
+    v0: &Rational,
+) -> Result<Vec<Complex<f64>>> {
+    let c: Vec<f64> = q.coeffs().iter().map(|e| approx_elem(k, e, v0)).collect();
+    companion_roots(&c)
+}
+
+/// Numeric roots of a rational polynomial (companion eigenvalues).
+pub(super) fn approx_roots_q(p: &Poly<Q>) -> Result<Vec<Complex<f64>>> {
+    let c: Vec<f64> = p.coeffs().iter().map(rational_to_f64).collect();
+    companion_roots(&c)
+}
+
 #[cfg(test)]
 mod tests {
     #[test]
@@ -105,20 +121,4 @@ mod tests {
         }
         assert!(r.iter().all(|z| z.im == 0.0));
     }
-}
-
-/// Approximate roots of a polynomial over $\mathbb{Q}(v_0)$ (companion eigenvalues).
-pub(super) fn approx_roots(
-    k: &NumberField,
-    q: &Poly<NumberField>,
-    v0: &Rational,
-) -> Result<Vec<Complex<f64>>> {
-    let c: Vec<f64> = q.coeffs().iter().map(|e| approx_elem(k, e, v0)).collect();
-    companion_roots(&c)
-}
-
-/// Numeric roots of a rational polynomial (companion eigenvalues).
-pub(super) fn approx_roots_q(p: &Poly<Q>) -> Result<Vec<Complex<f64>>> {
-    let c: Vec<f64> = p.coeffs().iter().map(rational_to_f64).collect();
-    companion_roots(&c)
 }
