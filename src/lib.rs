@@ -84,6 +84,7 @@ pub mod field;
 pub mod float;
 #[cfg(feature = "cli")]
 pub mod io;
+pub mod multibody;
 pub mod jordan;
 pub mod matrix;
 pub mod mpoly;

@@ -159,6 +159,9 @@ pub fn load_system_str(
     format: SystemFormat,
     name: &str,
 ) -> Result<LoadedSystem, InputError> {
+    if super::model_file::is_model_text(text, format) {
+        return super::model_file::load_model_str(text, format, name, &Default::default());
+    }
     let file = match format {
         SystemFormat::Json => parse_system_json(text, name)?,
         SystemFormat::Toml => parse_system_toml(text, name)?,
@@ -172,6 +175,14 @@ pub fn load_system_str(
 /// # Errors
 /// An unreadable file, and every error of [`load_system_str`].
 pub fn load_system_path(path: &Path) -> Result<LoadedSystem, InputError> {
+    // a model file (top-level `bodies`) is assembled into its descriptor system
+    if let Ok(text) = super::read_text(path) {
+        let format = SystemFormat::of(path, &text);
+        if super::model_file::is_model_text(&text, format) {
+            let shown = path.display().to_string();
+            return super::model_file::load_model_str(&text, format, &shown, &Default::default());
+        }
+    }
     type_file(read_system_file(path)?)
 }
 

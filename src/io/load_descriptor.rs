@@ -100,6 +100,12 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
     } else {
         super::raw::from_json_text(&text, &name)?
     };
+    if let super::raw::Raw::Table(entries) = &raw
+        && entries.iter().any(|(k, _)| k == "bodies")
+    {
+        let format = super::read::SystemFormat::of(path, &text);
+        return super::model_file::model_descriptor(&text, format, &name);
+    }
     if let super::raw::Raw::Table(entries) = &raw {
         super::keys::check_keys(&name, &super::keys::keys_of(entries))?;
     }

@@ -31,6 +31,7 @@ pub mod keys;
 pub mod load;
 pub mod load_descriptor;
 pub mod matlab;
+pub mod model_file;
 pub mod qmat;
 pub(crate) mod raw;
 pub mod read;

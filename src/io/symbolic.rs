@@ -116,6 +116,9 @@ pub fn load_symbolic_str(
     let Raw::Table(entries) = raw else {
         return validate(raw, name).and_then(type_file);
     };
+    if entries.iter().any(|(k, _)| k == "bodies") {
+        return super::model_file::load_model_str(text, format, name, opts);
+    }
     check_keys(name, &keys_of(&entries))?;
     let signals = SignalNames::read(name, &entries)?;
     let mut params: Vec<(String, Option<String>)> = vec![];
@@ -272,12 +275,12 @@ fn field_of(name: &str, symbols: &BTreeSet<String>) -> Result<RatFuncField, Inpu
 }
 
 /// Valued parameters, substituted into entry text as `(value)` until no name is left.
-struct Substitution {
+pub(crate) struct Substitution {
     valued: Vec<(String, String)>,
 }
 
 impl Substitution {
-    fn new(file: &str, valued: &[(String, String)]) -> Result<Self, InputError> {
+    pub(crate) fn new(file: &str, valued: &[(String, String)]) -> Result<Self, InputError> {
         let s = Substitution {
             valued: valued.to_vec(),
         };
@@ -294,7 +297,7 @@ impl Substitution {
             .map(|(_, v)| v.as_str())
     }
     /// The text with every valued parameter replaced (at most one round per parameter).
-    fn apply(&self, text: &str) -> Result<String, String> {
+    pub(crate) fn apply(&self, text: &str) -> Result<String, String> {
         let mut cur = text.to_string();
         for _ in 0..=self.valued.len() {
             let (next, changed) = self.once(&cur);
