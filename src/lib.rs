@@ -84,10 +84,10 @@ pub mod field;
 pub mod float;
 #[cfg(feature = "cli")]
 pub mod io;
-pub mod multibody;
 pub mod jordan;
 pub mod matrix;
 pub mod mpoly;
+pub mod multibody;
 pub mod pencil;
 pub mod poly;
 pub mod qkernels;

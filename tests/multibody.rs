@@ -27,7 +27,10 @@ fn q(s: &str) -> Rational {
 }
 
 fn qm(rows: &[&[&str]]) -> Matrix<Q> {
-    let r: Vec<Vec<Rational>> = rows.iter().map(|r| r.iter().map(|x| q(x)).collect()).collect();
+    let r: Vec<Vec<Rational>> = rows
+        .iter()
+        .map(|r| r.iter().map(|x| q(x)).collect())
+        .collect();
     Matrix::from_rows(Q, r).unwrap()
 }
 
@@ -57,7 +60,13 @@ fn quarter_car_a_arm_pushrod_tables_7_8() {
         (0.0, 0.0),
     ];
     let modes = modal_table(&t.ss.a).unwrap().modes;
-    assert_eq!(modes.iter().map(|m| m.multiplicity * if m.paired { 2 } else { 1 }).sum::<usize>(), 8);
+    assert_eq!(
+        modes
+            .iter()
+            .map(|m| m.multiplicity * if m.paired { 2 } else { 1 })
+            .sum::<usize>(),
+        8
+    );
     for (re, im) in table7 {
         let m = modes
             .iter()
@@ -65,7 +74,11 @@ fn quarter_car_a_arm_pushrod_tables_7_8() {
             .unwrap_or_else(|| panic!("no eigenvalue near {re} + {im}i in {modes:?}"));
         let tol = |x: f64| 6e-11 * x.abs().max(1e-30);
         assert!((m.approx.0 - re).abs() <= tol(re), "{re}: {:?}", m.approx);
-        assert!((m.approx.1.abs() - im).abs() <= tol(im), "{im}: {:?}", m.approx);
+        assert!(
+            (m.approx.1.abs() - im).abs() <= tol(im),
+            "{im}: {:?}",
+            m.approx
+        );
     }
     // Table 8: frequency (Hz), damping ratio, time constant (s), period (s) of the pairs;
     // the time constants of the real modes
@@ -75,16 +88,29 @@ fn quarter_car_a_arm_pushrod_tables_7_8() {
     assert!(close(hop.damping_ratio.unwrap(), 3.4357776649e-2));
     assert!(close(hop.time_constant_s.unwrap(), 3.6866906218e-1));
     assert!(close(hop.period_s.unwrap(), 7.9633920827e-2));
-    let heave = modes.iter().find(|m| (m.approx.1.abs() - 7.75).abs() < 0.1).unwrap();
+    let heave = modes
+        .iter()
+        .find(|m| (m.approx.1.abs() - 7.75).abs() < 0.1)
+        .unwrap();
     assert!(close(heave.frequency_hz, 1.2410351444));
     assert!(close(heave.damping_ratio.unwrap(), 1.1178369687e-1));
     assert!(close(heave.time_constant_s.unwrap(), 1.1472487231));
     assert!(close(heave.period_s.unwrap(), 8.1086097430e-1));
     for tau in [1.4708591974e-2, 5.8712982475e-2, 2.2263334716e-2] {
-        assert!(modes.iter().any(|m| m.time_constant_s.is_some_and(|x| close(x, tau))), "{tau}");
+        assert!(
+            modes
+                .iter()
+                .any(|m| m.time_constant_s.is_some_and(|x| close(x, tau))),
+            "{tau}"
+        );
     }
     // the rigid-body mode (wheel angle) is not observable: the minimal realization drops 0
-    let cp = minimal(&t.ss, MinrealMethod::Kalman).unwrap().system.a.charpoly().unwrap();
+    let cp = minimal(&t.ss, MinrealMethod::Kalman)
+        .unwrap()
+        .system
+        .a
+        .charpoly()
+        .unwrap();
     assert!(!Q.is_zero(&cp.coeff(0)), "0 is no pole of G");
 }
 
@@ -93,7 +119,9 @@ fn quarter_car_a_arm_pushrod_tables_7_8() {
 #[test]
 fn yaw_plane_symbolic_equals_eq_24_26() {
     let l = load_system_path(Path::new("data/models/yaw-plane.toml")).unwrap();
-    let TypedAny::RatFunc(t) = &l.system else { panic!("expected Q(p)") };
+    let TypedAny::RatFunc(t) = &l.system else {
+        panic!("expected Q(p)")
+    };
     let k: RatFuncField = t.ss.a.field().clone();
     assert_eq!(k.to_string(), "QQ(Izz, a, b, cf, cr, m, u)");
     let p = |s: &str| k.parse(s).unwrap();
@@ -102,13 +130,38 @@ fn yaw_plane_symbolic_equals_eq_24_26() {
         vec![
             vec![p("0"), p("u"), p("-1"), p("0")],
             vec![p("0"), p("0"), p("0"), p("-1")],
-            vec![p("0"), p("0"), p("-(cf + cr)/(m*u)"), p("-(a*cf - b*cr)/(m*u) - u")],
-            vec![p("0"), p("0"), p("-(a*cf - b*cr)/(Izz*u)"), p("-(a^2*cf + b^2*cr)/(Izz*u)")],
+            vec![
+                p("0"),
+                p("0"),
+                p("-(cf + cr)/(m*u)"),
+                p("-(a*cf - b*cr)/(m*u) - u"),
+            ],
+            vec![
+                p("0"),
+                p("0"),
+                p("-(a*cf - b*cr)/(Izz*u)"),
+                p("-(a^2*cf + b^2*cr)/(Izz*u)"),
+            ],
         ],
     )
     .unwrap();
-    let b = Matrix::from_rows(k.clone(), vec![vec![p("0")], vec![p("0")], vec![p("cf/m")], vec![p("a*cf/Izz")]]).unwrap();
-    let paper = StateSpace::new(a, b, Matrix::identity(k.clone(), 4), Matrix::zeros(k.clone(), 4, 1)).unwrap();
+    let b = Matrix::from_rows(
+        k.clone(),
+        vec![
+            vec![p("0")],
+            vec![p("0")],
+            vec![p("cf/m")],
+            vec![p("a*cf/Izz")],
+        ],
+    )
+    .unwrap();
+    let paper = StateSpace::new(
+        a,
+        b,
+        Matrix::identity(k.clone(), 4),
+        Matrix::zeros(k.clone(), 4, 1),
+    )
+    .unwrap();
     assert_eq!(t.ss.nstates(), 4);
     // equal Markov parameters up to 2n = 8 determine equal transfer matrices (both order 4)
     assert!(t.ss.same_markov(&paper, 8));
@@ -129,7 +182,11 @@ fn quarter_car_two_mass_matches_second_order() {
     let l = qm(&[&[cs, "-1500"], &["-1500", cs]]);
     let f = qm(&[&[kt], &["0"]]);
     // outputs on [x_u, x_s, x_u', x_s']: x_s, x_s - x_u, x_u - z0
-    let c = qm(&[&["0", "1", "0", "0"], &["-1", "1", "0", "0"], &["1", "0", "0", "0"]]);
+    let c = qm(&[
+        &["0", "1", "0", "0"],
+        &["-1", "1", "0", "0"],
+        &["1", "0", "0", "0"],
+    ]);
     let d = qm(&[&["0"], &["0"], &["-1"]]);
     let want = StateSpace::from_second_order(&m, &l, &kk, &f, Some(&c), Some(&d)).unwrap();
     assert!(t.ss.same_markov(&want, 10));
@@ -184,7 +241,9 @@ fn chain_properties() {
         f.set(n - 1, 0, Q.one());
         let mut c = Matrix::zeros(Q, 1, 2 * n);
         c.set(0, n - 1, Q.one());
-        let want = StateSpace::from_second_order(&Matrix::identity(Q, n), &k, &k, &f, Some(&c), None).unwrap();
+        let want =
+            StateSpace::from_second_order(&Matrix::identity(Q, n), &k, &k, &f, Some(&c), None)
+                .unwrap();
         assert!(ss.same_markov(&want, 4 * n), "n = {n}");
         // the assembly's mass/stiffness restricted to the x coordinates are M and K
         let xs: Vec<usize> = (0..n).map(|i| 6 * i).collect();
@@ -206,10 +265,23 @@ fn json_and_toml_agree_and_null_is_a_symbol() {
       "sensors": [{"name": "z", "bodies": ["block", "ground"], "locations": [[0, 0, 0], [0, 0, -0.1]]}]}"#;
     let a = load_system_str(&toml, SystemFormat::Toml, "smd.toml").unwrap();
     let b = load_system_str(json, SystemFormat::Json, "smd.json").unwrap();
-    assert!(a.rational().unwrap().ss.same_markov(&b.rational().unwrap().ss, 4));
+    assert!(
+        a.rational()
+            .unwrap()
+            .ss
+            .same_markov(&b.rational().unwrap().ss, 4)
+    );
     let sym = json.replace("\"c\": 0.2", "\"c\": null");
-    let m = read_model_str(&sym, SystemFormat::Json, "smd.json", &SymbolicOptions::default()).unwrap();
-    let ModelAny::RatFunc(m) = m else { panic!("c is a symbol") };
+    let m = read_model_str(
+        &sym,
+        SystemFormat::Json,
+        "smd.json",
+        &SymbolicOptions::default(),
+    )
+    .unwrap();
+    let ModelAny::RatFunc(m) = m else {
+        panic!("c is a symbol")
+    };
     assert_eq!(m.field.to_string(), "QQ(c)");
     let asm = assemble(&m).unwrap();
     assert_eq!(asm.descriptor.e.shape(), (3, 3));
@@ -220,14 +292,40 @@ fn json_and_toml_agree_and_null_is_a_symbol() {
 fn bad_models_name_the_key() {
     let base = std::fs::read_to_string("data/models/quarter-car-2mass.toml").unwrap();
     let cases = [
-        (base.replace("bodies = [\"sprung\", \"unsprung\"]", "bodies = [\"sprung\", \"wheel\"]"), "flex_points[2].bodies: unknown body 'wheel'"),
-        (base.replace("mass = \"ms\"", "mass = \"ms\"\nmas = 1"), "bodies[2].mas: unknown key"),
-        (base.replace("forces = 1\naxis = [0, 0, 1]\nstiffness = \"kt\"", "forces = 1\nstiffness = \"kt\""), "flex_points[1].axis: missing"),
-        (base.replace("gain = \"kt\"", "gain = \"kq\""), "actuators[1].gain: unknown"),
-        (base.replace("locations = [[0.05, 0, 0.3], [0.05, 0, 0]]", "locations = [[0.05, 0, 0.3], [0.06, 0, 0]]"), "z0: the distance between the two locations must be a rational number"),
+        (
+            base.replace(
+                "bodies = [\"sprung\", \"unsprung\"]",
+                "bodies = [\"sprung\", \"wheel\"]",
+            ),
+            "flex_points[2].bodies: unknown body 'wheel'",
+        ),
+        (
+            base.replace("mass = \"ms\"", "mass = \"ms\"\nmas = 1"),
+            "bodies[2].mas: unknown key",
+        ),
+        (
+            base.replace(
+                "forces = 1\naxis = [0, 0, 1]\nstiffness = \"kt\"",
+                "forces = 1\nstiffness = \"kt\"",
+            ),
+            "flex_points[1].axis: missing",
+        ),
+        (
+            base.replace("gain = \"kt\"", "gain = \"kq\""),
+            "actuators[1].gain: unknown",
+        ),
+        (
+            base.replace(
+                "locations = [[0.05, 0, 0.3], [0.05, 0, 0]]",
+                "locations = [[0.05, 0, 0.3], [0.06, 0, 0]]",
+            ),
+            "z0: the distance between the two locations must be a rational number",
+        ),
     ];
     for (text, want) in cases {
-        let e = load_system_str(&text, SystemFormat::Toml, "qc.toml").unwrap_err().to_string();
+        let e = load_system_str(&text, SystemFormat::Toml, "qc.toml")
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("qc.toml") && e.contains(want), "{e}");
         assert!(!e.contains('\n'), "{e}");
     }

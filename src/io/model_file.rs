@@ -36,8 +36,20 @@ pub enum ModelAny {
 }
 
 const TOP_KEYS: [&str; 14] = [
-    "name", "parameters", "symbols", "bodies", "rigid_points", "flex_points", "nh_points",
-    "springs", "links", "actuators", "sensors", "loads", "gravity", "description",
+    "name",
+    "parameters",
+    "symbols",
+    "bodies",
+    "rigid_points",
+    "flex_points",
+    "nh_points",
+    "springs",
+    "links",
+    "actuators",
+    "sensors",
+    "loads",
+    "gravity",
+    "description",
 ];
 
 /// Does `text` (JSON or TOML) hold a model file (a top-level key `bodies`)?
@@ -71,7 +83,10 @@ pub fn model_descriptor(
                 pencil: None,
             })
         }
-        ModelAny::RatFunc(m) => Err(InputError::file(name, super::refusal("this command", &m.field))),
+        ModelAny::RatFunc(m) => Err(InputError::file(
+            name,
+            super::refusal("this command", &m.field),
+        )),
     }
 }
 
@@ -175,7 +190,8 @@ pub fn read_model_str(
         return Ok(ModelAny::Rational(build(name, &top, &Q, &eval)?));
     }
     let vars: Vec<&str> = symbols.iter().map(String::as_str).collect();
-    let k = RatFuncField::new(&vars).map_err(|e| InputError::key(name, "symbols", e.to_string()))?;
+    let k =
+        RatFuncField::new(&vars).map_err(|e| InputError::key(name, "symbols", e.to_string()))?;
     let eval = |t: &str| {
         let text = subst.apply(t)?;
         k.parse(&text).map_err(|e| e.to_string())
@@ -185,7 +201,11 @@ pub fn read_model_str(
 
 type Params = (Vec<(String, String)>, BTreeSet<String>);
 
-fn parameters(file: &str, top: &[(String, Raw)], opts: &SymbolicOptions) -> Result<Params, InputError> {
+fn parameters(
+    file: &str,
+    top: &[(String, Raw)],
+    opts: &SymbolicOptions,
+) -> Result<Params, InputError> {
     let mut params: Vec<(String, Option<String>)> = vec![];
     let mut symbols = BTreeSet::new();
     for (key, v) in top {
@@ -199,18 +219,29 @@ fn parameters(file: &str, top: &[(String, Raw)], opts: &SymbolicOptions) -> Resu
                             return Err(InputError::key(
                                 file,
                                 &format!("parameters.{n}"),
-                                format!("expected a number, a string or null, found {}", other.kind()),
+                                format!(
+                                    "expected a number, a string or null, found {}",
+                                    other.kind()
+                                ),
                             ));
                         }
                     };
                     if !super::expr::is_parameter_name(n) {
-                        return Err(InputError::key(file, &format!("parameters.{n}"), "not a name"));
+                        return Err(InputError::key(
+                            file,
+                            &format!("parameters.{n}"),
+                            "not a name",
+                        ));
                     }
                     params.push((n.clone(), val));
                 }
             }
             ("parameters", other) => {
-                return Err(InputError::key(file, "parameters", format!("expected a table, found {}", other.kind())));
+                return Err(InputError::key(
+                    file,
+                    "parameters",
+                    format!("expected a table, found {}", other.kind()),
+                ));
             }
             ("symbols", Raw::Array(xs)) => {
                 for x in xs {
@@ -220,7 +251,9 @@ fn parameters(file: &str, top: &[(String, Raw)], opts: &SymbolicOptions) -> Resu
                     symbols.insert(s.clone());
                 }
             }
-            ("symbols", _) => return Err(InputError::key(file, "symbols", "expected a list of names")),
+            ("symbols", _) => {
+                return Err(InputError::key(file, "symbols", "expected a list of names"));
+            }
             _ => {}
         }
     }
@@ -230,17 +263,28 @@ fn parameters(file: &str, top: &[(String, Raw)], opts: &SymbolicOptions) -> Resu
         Some(list) => {
             for n in list {
                 if !known(n, &params) {
-                    return Err(InputError::file(file, format!("--symbolic: unknown parameter '{n}'")));
+                    return Err(InputError::file(
+                        file,
+                        format!("--symbolic: unknown parameter '{n}'"),
+                    ));
                 }
                 symbols.insert(n.clone());
             }
         }
         None => {}
     }
-    symbols.extend(params.iter().filter(|(_, v)| v.is_none()).map(|(n, _)| n.clone()));
+    symbols.extend(
+        params
+            .iter()
+            .filter(|(_, v)| v.is_none())
+            .map(|(n, _)| n.clone()),
+    );
     for (n, v) in &opts.at {
         if !known(n, &params) && !symbols.contains(n) {
-            return Err(InputError::file(file, format!("--at: unknown parameter '{n}'")));
+            return Err(InputError::file(
+                file,
+                format!("--at: unknown parameter '{n}'"),
+            ));
         }
         symbols.remove(n);
         match params.iter_mut().find(|(p, _)| p == n) {
@@ -274,7 +318,10 @@ impl<K: Field> Reader<'_, K> {
         t.iter().find(|(k, _)| k == key).map(|(_, v)| v)
     }
     fn check(&self, t: &Table, at: &str, allowed: &[&str]) -> Result<(), InputError> {
-        match t.iter().find(|(k, _)| !allowed.contains(&k.as_str()) && k != "name" && k != "description") {
+        match t
+            .iter()
+            .find(|(k, _)| !allowed.contains(&k.as_str()) && k != "name" && k != "description")
+        {
             Some((k, _)) => Err(self.err(&format!("{at}.{k}"), "unknown key")),
             None => Ok(()),
         }
@@ -282,10 +329,19 @@ impl<K: Field> Reader<'_, K> {
     fn scalar_raw(&self, v: &Raw, at: &str) -> Result<K::Elem, InputError> {
         match v {
             Raw::Number(s) | Raw::Str(s) => (self.eval)(s).map_err(|e| self.err(at, e)),
-            other => Err(self.err(at, format!("expected a number or an expression, found {}", other.kind()))),
+            other => Err(self.err(
+                at,
+                format!("expected a number or an expression, found {}", other.kind()),
+            )),
         }
     }
-    fn scalar(&self, t: &Table, at: &str, key: &str, default: Option<K::Elem>) -> Result<K::Elem, InputError> {
+    fn scalar(
+        &self,
+        t: &Table,
+        at: &str,
+        key: &str,
+        default: Option<K::Elem>,
+    ) -> Result<K::Elem, InputError> {
         match (self.get(t, key), default) {
             (Some(v), _) => self.scalar_raw(v, &format!("{at}.{key}")),
             (None, Some(d)) => Ok(d),
@@ -295,15 +351,26 @@ impl<K: Field> Reader<'_, K> {
     fn list<'t>(&self, v: &'t Raw, at: &str, n: Option<usize>) -> Result<&'t [Raw], InputError> {
         match v {
             Raw::Array(xs) if n.is_none_or(|n| xs.len() == n) => Ok(xs),
-            other => Err(self.err(at, format!("expected {}, found {}", n.map_or("a list".to_string(), |n| format!("a list of {n}")), match other {
-                Raw::Array(xs) => format!("a list of {}", xs.len()),
-                o => o.kind().to_string(),
-            }))),
+            other => Err(self.err(
+                at,
+                format!(
+                    "expected {}, found {}",
+                    n.map_or("a list".to_string(), |n| format!("a list of {n}")),
+                    match other {
+                        Raw::Array(xs) => format!("a list of {}", xs.len()),
+                        o => o.kind().to_string(),
+                    }
+                ),
+            )),
         }
     }
     fn vec3_raw(&self, v: &Raw, at: &str) -> Result<Vec3<K>, InputError> {
         let xs = self.list(v, at, Some(3))?;
-        Ok([self.scalar_raw(&xs[0], at)?, self.scalar_raw(&xs[1], at)?, self.scalar_raw(&xs[2], at)?])
+        Ok([
+            self.scalar_raw(&xs[0], at)?,
+            self.scalar_raw(&xs[1], at)?,
+            self.scalar_raw(&xs[2], at)?,
+        ])
     }
     fn vec3(&self, t: &Table, at: &str, key: &str, default: bool) -> Result<Vec3<K>, InputError> {
         match self.get(t, key) {
@@ -315,7 +382,10 @@ impl<K: Field> Reader<'_, K> {
     fn name(&self, t: &Table, at: &str) -> Result<String, InputError> {
         match self.get(t, "name") {
             Some(Raw::Str(s)) => Ok(s.clone()),
-            Some(other) => Err(self.err(&format!("{at}.name"), format!("expected a string, found {}", other.kind()))),
+            Some(other) => Err(self.err(
+                &format!("{at}.name"),
+                format!("expected a string, found {}", other.kind()),
+            )),
             None => Ok(at.to_string()),
         }
     }
@@ -333,26 +403,45 @@ impl<K: Field> Reader<'_, K> {
     }
     fn two_bodies(&self, t: &Table, at: &str) -> Result<[usize; 2], InputError> {
         let key = format!("{at}.bodies");
-        let v = self.get(t, "bodies").ok_or_else(|| self.err(&key, "missing"))?;
+        let v = self
+            .get(t, "bodies")
+            .ok_or_else(|| self.err(&key, "missing"))?;
         let xs = self.list(v, &key, Some(2))?;
-        Ok([self.body_index(&xs[0], &key)?, self.body_index(&xs[1], &key)?])
+        Ok([
+            self.body_index(&xs[0], &key)?,
+            self.body_index(&xs[1], &key)?,
+        ])
     }
-    fn small(&self, t: &Table, at: &str, key: &str, max: u8, default: u8) -> Result<u8, InputError> {
+    fn small(
+        &self,
+        t: &Table,
+        at: &str,
+        key: &str,
+        max: u8,
+        default: u8,
+    ) -> Result<u8, InputError> {
         match self.get(t, key) {
             None => Ok(default),
-            Some(Raw::Number(s)) => s
-                .parse::<u8>()
-                .ok()
-                .filter(|n| *n <= max)
-                .ok_or_else(|| self.err(&format!("{at}.{key}"), format!("expected an integer from 0 to {max}"))),
-            Some(o) => Err(self.err(&format!("{at}.{key}"), format!("expected an integer, found {}", o.kind()))),
+            Some(Raw::Number(s)) => s.parse::<u8>().ok().filter(|n| *n <= max).ok_or_else(|| {
+                self.err(
+                    &format!("{at}.{key}"),
+                    format!("expected an integer from 0 to {max}"),
+                )
+            }),
+            Some(o) => Err(self.err(
+                &format!("{at}.{key}"),
+                format!("expected an integer, found {}", o.kind()),
+            )),
         }
     }
     fn flag(&self, t: &Table, at: &str, key: &str) -> Result<bool, InputError> {
         match self.get(t, key) {
             None => Ok(false),
             Some(Raw::Other { json, .. }) if json.is_boolean() => Ok(json.as_bool() == Some(true)),
-            Some(o) => Err(self.err(&format!("{at}.{key}"), format!("expected true or false, found {}", o.kind()))),
+            Some(o) => Err(self.err(
+                &format!("{at}.{key}"),
+                format!("expected true or false, found {}", o.kind()),
+            )),
         }
     }
     /// `[force, moment]` from a number or a list of two.
@@ -360,14 +449,23 @@ impl<K: Field> Reader<'_, K> {
         let at = format!("{at}.{key}");
         match self.get(t, key) {
             None => Ok([self.k.zero(), self.k.zero()]),
-            Some(Raw::Array(xs)) if xs.len() == 2 => Ok([self.scalar_raw(&xs[0], &at)?, self.scalar_raw(&xs[1], &at)?]),
-            Some(v @ (Raw::Number(_) | Raw::Str(_))) => Ok([self.scalar_raw(v, &at)?, self.k.zero()]),
-            Some(o) => Err(self.err(&at, format!("expected a number or [force, moment], found {}", o.kind()))),
+            Some(Raw::Array(xs)) if xs.len() == 2 => {
+                Ok([self.scalar_raw(&xs[0], &at)?, self.scalar_raw(&xs[1], &at)?])
+            }
+            Some(v @ (Raw::Number(_) | Raw::Str(_))) => {
+                Ok([self.scalar_raw(v, &at)?, self.k.zero()])
+            }
+            Some(o) => Err(self.err(
+                &at,
+                format!("expected a number or [force, moment], found {}", o.kind()),
+            )),
         }
     }
     fn locations(&self, t: &Table, at: &str) -> Result<[Vec3<K>; 2], InputError> {
         let key = format!("{at}.locations");
-        let v = self.get(t, "locations").ok_or_else(|| self.err(&key, "missing"))?;
+        let v = self
+            .get(t, "locations")
+            .ok_or_else(|| self.err(&key, "missing"))?;
         let xs = self.list(v, &key, Some(2))?;
         Ok([self.vec3_raw(&xs[0], &key)?, self.vec3_raw(&xs[1], &key)?])
     }
@@ -378,13 +476,21 @@ fn items<'t>(file: &str, top: &'t Table, key: &str) -> Result<Vec<&'t Table>, In
         return Ok(vec![]);
     };
     let Raw::Array(xs) = v else {
-        return Err(InputError::key(file, key, format!("expected a list of tables, found {}", v.kind())));
+        return Err(InputError::key(
+            file,
+            key,
+            format!("expected a list of tables, found {}", v.kind()),
+        ));
     };
     xs.iter()
         .enumerate()
         .map(|(i, x)| match x {
             Raw::Table(t) => Ok(t.as_slice()),
-            o => Err(InputError::key(file, &format!("{key}[{}]", i + 1), format!("expected a table, found {}", o.kind()))),
+            o => Err(InputError::key(
+                file,
+                &format!("{key}[{}]", i + 1),
+                format!("expected a table, found {}", o.kind()),
+            )),
         })
         .collect()
 }
@@ -395,17 +501,32 @@ fn build<K: Field>(
     k: &K,
     eval: &dyn Fn(&str) -> Result<K::Elem, String>,
 ) -> Result<Model<K>, InputError> {
-    let mut r = Reader { file, k, eval, bodies: vec![] };
+    let mut r = Reader {
+        file,
+        k,
+        eval,
+        bodies: vec![],
+    };
     let name = match top.iter().find(|(x, _)| x == "name") {
         Some((_, Raw::Str(s))) => Some(s.clone()),
         _ => None,
     };
-    let mut m = Model { field: k.clone(), name, bodies: vec![], points: vec![], lines: vec![], loads: vec![] };
+    let mut m = Model {
+        field: k.clone(),
+        name,
+        bodies: vec![],
+        points: vec![],
+        lines: vec![],
+        loads: vec![],
+    };
     for (i, t) in items(file, top, "bodies")?.into_iter().enumerate() {
         let at = format!("bodies[{}]", i + 1);
         let b = body(&r, t, &at)?;
         if b.name == "ground" || r.bodies.contains(&b.name) {
-            return Err(r.err(&format!("{at}.name"), format!("'{}' is the ground or already a body", b.name)));
+            return Err(r.err(
+                &format!("{at}.name"),
+                format!("'{}' is the ground or already a body", b.name),
+            ));
         }
         r.bodies.push(b.name.clone());
         m.bodies.push(b);
@@ -413,9 +534,14 @@ fn build<K: Field>(
     if m.bodies.is_empty() {
         return Err(r.err("bodies", "a model needs at least one body"));
     }
-    for (key, kind) in [("rigid_points", PointKind::Rigid), ("flex_points", PointKind::Flexible), ("nh_points", PointKind::Nonholonomic)] {
+    for (key, kind) in [
+        ("rigid_points", PointKind::Rigid),
+        ("flex_points", PointKind::Flexible),
+        ("nh_points", PointKind::Nonholonomic),
+    ] {
         for (i, t) in items(file, top, key)?.into_iter().enumerate() {
-            m.points.push(point(&r, t, &format!("{key}[{}]", i + 1), kind)?);
+            m.points
+                .push(point(&r, t, &format!("{key}[{}]", i + 1), kind)?);
         }
     }
     for key in ["springs", "links", "actuators", "sensors"] {
@@ -430,7 +556,17 @@ fn build<K: Field>(
 }
 
 fn body<K: Field>(r: &Reader<'_, K>, t: &Table, at: &str) -> Result<Body<K>, InputError> {
-    r.check(t, at, &["mass", "location", "inertia", "velocity", "angular_velocity"])?;
+    r.check(
+        t,
+        at,
+        &[
+            "mass",
+            "location",
+            "inertia",
+            "velocity",
+            "angular_velocity",
+        ],
+    )?;
     let k = r.k;
     let inertia = match r.get(t, "inertia") {
         None => Matrix::zeros(k.clone(), 3, 3),
@@ -438,16 +574,33 @@ fn body<K: Field>(r: &Reader<'_, K>, t: &Table, at: &str) -> Result<Body<K>, Inp
             let key = format!("{at}.inertia");
             let xs = r.list(v, &key, None)?;
             if xs.len() != 3 && xs.len() != 6 {
-                return Err(r.err(&key, "expected [Ixx, Iyy, Izz] or [Ixx, Iyy, Izz, Ixy, Iyz, Izx]"));
+                return Err(r.err(
+                    &key,
+                    "expected [Ixx, Iyy, Izz] or [Ixx, Iyy, Izz, Ixy, Iyz, Izx]",
+                ));
             }
-            let e: Vec<K::Elem> = xs.iter().map(|x| r.scalar_raw(x, &key)).collect::<Result<_, _>>()?;
+            let e: Vec<K::Elem> = xs
+                .iter()
+                .map(|x| r.scalar_raw(x, &key))
+                .collect::<Result<_, _>>()?;
             let p = |i: usize| e.get(i).map_or_else(|| k.zero(), |x| k.neg(x));
             let (xy, yz, zx) = (p(3), p(4), p(5));
-            Matrix::from_vec(k.clone(), 3, 3, vec![
-                e[0].clone(), xy.clone(), zx.clone(),
-                xy, e[1].clone(), yz.clone(),
-                zx, yz, e[2].clone(),
-            ])
+            Matrix::from_vec(
+                k.clone(),
+                3,
+                3,
+                vec![
+                    e[0].clone(),
+                    xy.clone(),
+                    zx.clone(),
+                    xy,
+                    e[1].clone(),
+                    yz.clone(),
+                    zx,
+                    yz,
+                    e[2].clone(),
+                ],
+            )
         }
     };
     Ok(Body {
@@ -460,10 +613,33 @@ fn body<K: Field>(r: &Reader<'_, K>, t: &Table, at: &str) -> Result<Body<K>, Inp
     })
 }
 
-fn point<K: Field>(r: &Reader<'_, K>, t: &Table, at: &str, kind: PointKind) -> Result<PointItem<K>, InputError> {
-    r.check(t, at, &["bodies", "location", "forces", "moments", "axis", "rolling_axis", "stiffness", "damping"])?;
-    if kind != PointKind::Flexible && (r.get(t, "stiffness").is_some() || r.get(t, "damping").is_some()) {
-        return Err(r.err(&format!("{at}.stiffness"), "only flexible points have stiffness and damping"));
+fn point<K: Field>(
+    r: &Reader<'_, K>,
+    t: &Table,
+    at: &str,
+    kind: PointKind,
+) -> Result<PointItem<K>, InputError> {
+    r.check(
+        t,
+        at,
+        &[
+            "bodies",
+            "location",
+            "forces",
+            "moments",
+            "axis",
+            "rolling_axis",
+            "stiffness",
+            "damping",
+        ],
+    )?;
+    if kind != PointKind::Flexible
+        && (r.get(t, "stiffness").is_some() || r.get(t, "damping").is_some())
+    {
+        return Err(r.err(
+            &format!("{at}.stiffness"),
+            "only flexible points have stiffness and damping",
+        ));
     }
     let forces = r.small(t, at, "forces", 3, 0)?;
     let moments = r.small(t, at, "moments", 3, 0)?;
@@ -490,11 +666,21 @@ fn point<K: Field>(r: &Reader<'_, K>, t: &Table, at: &str, kind: PointKind) -> R
     })
 }
 
-fn line<K: Field>(r: &Reader<'_, K>, t: &Table, at: &str, key: &str, m: &Model<K>) -> Result<LineItem<K>, InputError> {
+fn line<K: Field>(
+    r: &Reader<'_, K>,
+    t: &Table,
+    at: &str,
+    key: &str,
+    m: &Model<K>,
+) -> Result<LineItem<K>, InputError> {
     let k = r.k;
     let kind = match key {
         "springs" => {
-            r.check(t, at, &["bodies", "locations", "stiffness", "damping", "twist"])?;
+            r.check(
+                t,
+                at,
+                &["bodies", "locations", "stiffness", "damping", "twist"],
+            )?;
             LineKind::Spring {
                 stiffness: r.scalar(t, at, "stiffness", Some(k.zero()))?,
                 damping: r.scalar(t, at, "damping", Some(k.zero()))?,
@@ -505,37 +691,71 @@ fn line<K: Field>(r: &Reader<'_, K>, t: &Table, at: &str, key: &str, m: &Model<K
             LineKind::Link
         }
         "actuators" => {
-            r.check(t, at, &["bodies", "locations", "gain", "rate_gain", "twist"])?;
+            r.check(
+                t,
+                at,
+                &["bodies", "locations", "gain", "rate_gain", "twist"],
+            )?;
             LineKind::Actuator {
                 gain: r.scalar(t, at, "gain", Some(k.one()))?,
                 rate_gain: r.scalar(t, at, "rate_gain", Some(k.zero()))?,
             }
         }
         _ => {
-            r.check(t, at, &["bodies", "locations", "gain", "order", "frame", "twist", "actuator", "actuator_gain"])?;
+            r.check(
+                t,
+                at,
+                &[
+                    "bodies",
+                    "locations",
+                    "gain",
+                    "order",
+                    "frame",
+                    "twist",
+                    "actuator",
+                    "actuator_gain",
+                ],
+            )?;
             let gain = r.scalar(t, at, "gain", Some(k.one()))?;
             let local = match r.get(t, "frame") {
                 None => false,
                 Some(Raw::Str(s)) if s == "global" => false,
                 Some(Raw::Str(s)) if s == "local" => true,
-                Some(_) => return Err(r.err(&format!("{at}.frame"), "expected \"global\" or \"local\"")),
+                Some(_) => {
+                    return Err(r.err(&format!("{at}.frame"), "expected \"global\" or \"local\""));
+                }
             };
             let order = r.small(t, at, "order", 2, 1)?;
             if order == 0 {
-                return Err(r.err(&format!("{at}.order"), "expected 1 (position) or 2 (velocity)"));
+                return Err(r.err(
+                    &format!("{at}.order"),
+                    "expected 1 (position) or 2 (velocity)",
+                ));
             }
             let actuator = match r.get(t, "actuator") {
                 None => None,
                 Some(Raw::Str(s)) => {
-                    let i = m
-                        .actuators()
-                        .position(|a| &a.name == s)
-                        .ok_or_else(|| r.err(&format!("{at}.actuator"), format!("unknown actuator '{s}' (actuators come before sensors)")))?;
+                    let i = m.actuators().position(|a| &a.name == s).ok_or_else(|| {
+                        r.err(
+                            &format!("{at}.actuator"),
+                            format!("unknown actuator '{s}' (actuators come before sensors)"),
+                        )
+                    })?;
                     Some((i, r.scalar(t, at, "actuator_gain", Some(gain.clone()))?))
                 }
-                Some(o) => return Err(r.err(&format!("{at}.actuator"), format!("expected a name, found {}", o.kind()))),
+                Some(o) => {
+                    return Err(r.err(
+                        &format!("{at}.actuator"),
+                        format!("expected a name, found {}", o.kind()),
+                    ));
+                }
             };
-            LineKind::Sensor { gain, order, local, actuator }
+            LineKind::Sensor {
+                gain,
+                order,
+                local,
+                actuator,
+            }
         }
     };
     Ok(LineItem {
@@ -556,7 +776,11 @@ fn loads<K: Field>(r: &Reader<'_, K>, top: &Table, m: &mut Model<K>) -> Result<(
             if k.is_zero(&b.mass) || g.iter().all(|x| k.is_zero(x)) {
                 continue;
             }
-            let force = [k.mul(&b.mass, &g[0]), k.mul(&b.mass, &g[1]), k.mul(&b.mass, &g[2])];
+            let force = [
+                k.mul(&b.mass, &g[0]),
+                k.mul(&b.mass, &g[1]),
+                k.mul(&b.mass, &g[2]),
+            ];
             m.loads.push(Load {
                 name: format!("{} weight", b.name),
                 body: r.bodies.iter().position(|x| x == &b.name).unwrap_or(0),
@@ -570,7 +794,10 @@ fn loads<K: Field>(r: &Reader<'_, K>, top: &Table, m: &mut Model<K>) -> Result<(
         let at = format!("loads[{}]", i + 1);
         r.check(t, &at, &["body", "location", "force", "moment"])?;
         let key = format!("{at}.body");
-        let body = r.body_index(r.get(t, "body").ok_or_else(|| r.err(&key, "missing"))?, &key)?;
+        let body = r.body_index(
+            r.get(t, "body").ok_or_else(|| r.err(&key, "missing"))?,
+            &key,
+        )?;
         if body >= m.bodies.len() {
             return Err(r.err(&key, "a load acts on a body, not on the ground"));
         }

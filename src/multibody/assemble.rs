@@ -31,7 +31,10 @@ pub fn assemble<K: Field>(m: &Model<K>) -> Result<Assembly<K>> {
     let nh_constraint = stack(k, d, m, PointKind::Nonholonomic, false)?;
     let (velocity, momentum) = motion_terms(m);
     let (tangent, loads) = if m.loads.is_empty() {
-        (Matrix::zeros(k.clone(), d, d), Matrix::zeros(k.clone(), d, d))
+        (
+            Matrix::zeros(k.clone(), d, d),
+            Matrix::zeros(k.clone(), d, d),
+        )
     } else {
         let t = tangent_stiffness(m, &rigid, &h, &kd, &stiffness)?;
         (t, load_stiffness(m))
@@ -53,7 +56,13 @@ pub fn assemble<K: Field>(m: &Model<K>) -> Result<Assembly<K>> {
     add_block(&mut kc, d, 0, &kk, false);
     add_block(&mut kc, d, d, &(&damping + &momentum), false);
     add_block(&mut kc, d, 2 * d, &f, true);
-    add_block(&mut kc, 2 * d, 2 * d, &Matrix::identity(k.clone(), nin), false);
+    add_block(
+        &mut kc,
+        2 * d,
+        2 * d,
+        &Matrix::identity(k.clone(), nin),
+        false,
+    );
     let (jr, jl) = constraint_pair(k, &rigid, &nh_constraint, &velocity, nin);
     let r = jr.nullspace();
     let l = jl.nullspace();
@@ -104,7 +113,9 @@ fn check_indices<K: Field>(m: &Model<K>) -> Result<()> {
         .chain(m.lines.iter().map(|l| (&l.name, l.bodies)))
         .find(|(_, b)| b[0] > nb || b[1] > nb || b[0] == b[1]);
     if let Some((name, _)) = bad {
-        return invalid(format!("{name}: the two bodies must be different bodies of the model"));
+        return invalid(format!(
+            "{name}: the two bodies must be different bodies of the model"
+        ));
     }
     if let Some(l) = m.loads.iter().find(|l| l.body >= nb) {
         return invalid(format!("{}: unknown body", l.name));
@@ -156,7 +167,10 @@ fn point_rows<K: Field>(m: &Model<K>, p: &PointItem<K>) -> Result<Matrix<K>> {
     let k = &m.field;
     let proj = |n: u8| {
         carried(k, n, &p.axis).ok_or_else(|| {
-            Error::Invalid(format!("{}: an axis is needed (and must be non-zero)", p.name))
+            Error::Invalid(format!(
+                "{}: an axis is needed (and must be non-zero)",
+                p.name
+            ))
         })
     };
     let mut p6 = Matrix::zeros(k.clone(), 6, 6);
@@ -207,8 +221,7 @@ fn rational_sqrt(q: &crate::field::Rational) -> Option<crate::field::Rational> {
         return None;
     }
     let (n, dd) = (q.numer().sqrt(), q.denom().sqrt());
-    (&n * &n == *q.numer() && &dd * &dd == *q.denom())
-        .then(|| crate::field::Rational::new(n, dd))
+    (&n * &n == *q.numer() && &dd * &dd == *q.denom()).then(|| crate::field::Rational::new(n, dd))
 }
 
 /// Deflection Jacobian `H` of the flexible items with their stiffness and damping weights.
@@ -273,13 +286,29 @@ fn stack<K: Field>(
 fn motion_terms<K: Field>(m: &Model<K>) -> (Matrix<K>, Matrix<K>) {
     let k = &m.field;
     let d = 6 * m.bodies.len();
-    let (mut v, mut mv) = (Matrix::zeros(k.clone(), d, d), Matrix::zeros(k.clone(), d, d));
+    let (mut v, mut mv) = (
+        Matrix::zeros(k.clone(), d, d),
+        Matrix::zeros(k.clone(), d, d),
+    );
     for (i, b) in m.bodies.iter().enumerate() {
         let w = &b.angular_velocity;
-        let h = b.inertia.try_mul(&Matrix::column(k.clone(), w.to_vec())).expect("3x3 by 3x1");
-        let h: Vec3<K> = [h.get(0, 0).clone(), h.get(1, 0).clone(), h.get(2, 0).clone()];
+        let h = b
+            .inertia
+            .try_mul(&Matrix::column(k.clone(), w.to_vec()))
+            .expect("3x3 by 3x1");
+        let h: Vec3<K> = [
+            h.get(0, 0).clone(),
+            h.get(1, 0).clone(),
+            h.get(2, 0).clone(),
+        ];
         add_block(&mut mv, 6 * i + 3, 6 * i + 3, &skew(k, &h), true);
-        add_block(&mut mv, 6 * i, 6 * i + 3, &skew(k, &scale3(k, &b.mass, &b.velocity)), true);
+        add_block(
+            &mut mv,
+            6 * i,
+            6 * i + 3,
+            &skew(k, &scale3(k, &b.mass, &b.velocity)),
+            true,
+        );
         add_block(&mut v, 6 * i, 6 * i + 3, &skew(k, &b.velocity), false);
     }
     (v, mv)
@@ -334,7 +363,12 @@ fn outputs<K: Field>(m: &Model<K>, v: &Matrix<K>) -> Result<(Matrix<K>, Matrix<K
                 add_block(&mut c, i, 0, &(&row * v), true);
                 add_block(&mut c, i, d, &row, false);
             }
-            _ => return invalid(format!("{}: order must be 1 (position) or 2 (velocity)", s.name)),
+            _ => {
+                return invalid(format!(
+                    "{}: order must be 1 (position) or 2 (velocity)",
+                    s.name
+                ));
+            }
         }
         if let Some((a, g)) = actuator {
             dd.set(i, *a, k.neg(g));
@@ -374,7 +408,10 @@ fn free_names(r: &Matrix<impl Field>, coords: &[String], inputs: &[String]) -> V
             // the free coordinate is the last row with a one that no other column has
             let i = (0..r.nrows())
                 .rev()
-                .find(|&i| k.is_one(r.get(i, j)) && (0..r.ncols()).all(|c| c == j || k.is_zero(r.get(i, c))))
+                .find(|&i| {
+                    k.is_one(r.get(i, j))
+                        && (0..r.ncols()).all(|c| c == j || k.is_zero(r.get(i, c)))
+                })
                 .unwrap_or(0);
             if i < d {
                 coords[i].clone()

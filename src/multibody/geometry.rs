@@ -12,7 +12,11 @@ pub type Vec3<K> = [<K as Field>::Elem; 3];
 
 /// `a - b`.
 pub fn sub3<K: Field>(k: &K, a: &Vec3<K>, b: &Vec3<K>) -> Vec3<K> {
-    [k.sub(&a[0], &b[0]), k.sub(&a[1], &b[1]), k.sub(&a[2], &b[2])]
+    [
+        k.sub(&a[0], &b[0]),
+        k.sub(&a[1], &b[1]),
+        k.sub(&a[2], &b[2]),
+    ]
 }
 
 /// `a . b`.

@@ -41,8 +41,8 @@ mod preload;
 mod standard;
 
 pub use assemble::assemble;
-pub use standard::index_one_standard;
 pub use geometry::Vec3;
+pub use standard::index_one_standard;
 
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -98,7 +98,10 @@ pub struct PointItem<K: Field> {
 #[derive(Clone, Debug)]
 pub enum LineKind<K: Field> {
     /// A spring/damper along the line.
-    Spring { stiffness: K::Elem, damping: K::Elem },
+    Spring {
+        stiffness: K::Elem,
+        damping: K::Elem,
+    },
     /// A rigid link: the distance is constrained.
     Link,
     /// An input: a force (or a moment with `twist`) `gain * u + rate_gain * u'` along the

@@ -86,7 +86,9 @@ pub(super) fn tangent_stiffness<K: Field>(
     let lam: Vec<K::Elem> = (0..q).map(|i| sol.get(i, 0).clone()).collect();
     let x = Matrix::from_fn(k.clone(), d, 1, |i, _| sol.get(q + i, 0).clone());
     let hx = sparse_mul(h, &x);
-    let lam_f: Vec<K::Elem> = (0..h.nrows()).map(|i| k.mul(&kd[i], hx.get(i, 0))).collect();
+    let lam_f: Vec<K::Elem> = (0..h.nrows())
+        .map(|i| k.mul(&kd[i], hx.get(i, 0)))
+        .collect();
     let mut out = Matrix::zeros(k.clone(), d, d);
     let (mut ir, mut iff) = (0, 0);
     // EoM's order: links, springs, flexible points, rigid points (the sum does not care)
@@ -114,7 +116,14 @@ pub(super) fn tangent_stiffness<K: Field>(
 }
 
 /// Adds `s * b` at the block (`rb`, `cb`) of 3x3 blocks when neither is the ground.
-fn put<K: Field>(out: &mut Matrix<K>, nb: usize, rb: (usize, usize), cb: (usize, usize), b: &Matrix<K>, neg: bool) {
+fn put<K: Field>(
+    out: &mut Matrix<K>,
+    nb: usize,
+    rb: (usize, usize),
+    cb: (usize, usize),
+    b: &Matrix<K>,
+    neg: bool,
+) {
     if rb.0 < nb && cb.0 < nb {
         add_block(out, 6 * rb.0 + rb.1, 6 * cb.0 + cb.1, b, neg);
     }
@@ -128,14 +137,27 @@ fn point_hessian<K: Field>(
 ) -> Result<()> {
     let k = &m.field;
     let nb = m.bodies.len();
-    let bad = || Error::Invalid(format!("{}: an axis is needed (and must be non-zero)", p.name));
+    let bad = || {
+        Error::Invalid(format!(
+            "{}: an axis is needed (and must be non-zero)",
+            p.name
+        ))
+    };
     let pf = carried(k, p.forces, &p.axis).ok_or_else(bad)?;
     let pm = carried(k, p.moments, &p.axis).ok_or_else(bad)?;
     let col = |v: &[K::Elem]| Matrix::column(k.clone(), v.to_vec());
     let frc = &pf * &col(&lam[0..3]);
     let mmt = &pm * &col(&lam[3..6]);
-    let frc: Vec3<K> = [frc.get(0, 0).clone(), frc.get(1, 0).clone(), frc.get(2, 0).clone()];
-    let mmt: Vec3<K> = [mmt.get(0, 0).clone(), mmt.get(1, 0).clone(), mmt.get(2, 0).clone()];
+    let frc: Vec3<K> = [
+        frc.get(0, 0).clone(),
+        frc.get(1, 0).clone(),
+        frc.get(2, 0).clone(),
+    ];
+    let mmt: Vec3<K> = [
+        mmt.get(0, 0).clone(),
+        mmt.get(1, 0).clone(),
+        mmt.get(2, 0).clone(),
+    ];
     let [b1, b2] = p.bodies;
     let rs = sub3(k, &p.location, &origin(m, b1));
     let re = sub3(k, &p.location, &origin(m, b2));

@@ -45,7 +45,11 @@ pub fn index_one_standard<K: Field>(s: &Descriptor<K>) -> Option<(StateSpace<K>,
 fn unit_complement<K: Field>(k: &K, v: &Matrix<K>, n: usize) -> (Matrix<K>, Vec<usize>) {
     let vi = v.hstack(&Matrix::identity(k.clone(), n)).expect("n rows");
     let (_, piv) = vi.rref();
-    let kept: Vec<usize> = piv.iter().filter(|&&p| p >= v.ncols()).map(|p| p - v.ncols()).collect();
+    let kept: Vec<usize> = piv
+        .iter()
+        .filter(|&&p| p >= v.ncols())
+        .map(|p| p - v.ncols())
+        .collect();
     let mut x = Matrix::zeros(k.clone(), n, kept.len());
     for (c, &j) in kept.iter().enumerate() {
         x.set(j, c, k.one());
