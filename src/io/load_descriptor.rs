@@ -104,7 +104,7 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
         && entries.iter().any(|(k, _)| k == "bodies")
     {
         let format = super::read::SystemFormat::of(path, &text);
-        return super::model_file::model_descriptor(&text, format, &name);
+        return model_descriptor(&text, format, &name);
     }
     if let super::raw::Raw::Table(entries) = &raw {
         super::keys::check_keys(&name, &super::keys::keys_of(entries))?;
@@ -233,4 +233,33 @@ fn load_g(
         transfer: Some((tm, r)),
         pencil: None,
     })
+}
+
+/// A model file as a descriptor system over $\mathbb{Q}$ (for the descriptor-level
+/// commands).
+///
+/// # Errors
+/// As [`super::load::load_model_str`]; a model with symbols (these commands refuse $\mathbb{Q}(p)$).
+pub fn model_descriptor(
+    text: &str,
+    format: super::read::SystemFormat,
+    name: &str,
+) -> Result<LoadedDescriptor, InputError> {
+    match super::model_file::read_model_str(text, format, name, &Default::default())? {
+        super::model_file::ModelAny::Rational(m) => {
+            let a = crate::multibody::assemble(&m)
+                .map_err(|e| InputError::file(name, e.to_string()))?;
+            Ok(LoadedDescriptor {
+                path: name.to_string(),
+                system: DescriptorAny::Rational(a.descriptor),
+                has_e: true,
+                transfer: None,
+                pencil: None,
+            })
+        }
+        super::model_file::ModelAny::RatFunc(m) => Err(InputError::file(
+            name,
+            super::refusal("this command", &m.field),
+        )),
+    }
 }

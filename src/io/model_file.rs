@@ -11,19 +11,14 @@
 //! |---|---|
 //! | [`is_model_text`] | does the text hold a model (top-level `bodies`)? |
 //! | [`read_model_str`] | text -> [`ModelAny`] (the model over its field) |
-//! | [`load_model_str`] | text -> [`LoadedSystem`] (assembled, typed, standard form) |
+//! | [`super::load::load_model_str`] | text -> [`super::LoadedSystem`] (assembled, typed, standard form) |
 
-use super::keys::SignalNames;
-use super::load::{LoadedSystem, TypedAny, typed_from};
 use super::raw::{Raw, from_json_text, from_toml_text};
-use super::symbolic::{Substitution, SymbolicOptions};
-use super::{Ground, InputError, SystemFile, SystemFormat};
+use super::subst::{Substitution, SymbolicOptions};
+use super::{Ground, InputError, SystemFormat};
 use crate::field::{Field, Q};
 use crate::matrix::Matrix;
-use crate::multibody::{
-    Assembly, Body, LineItem, LineKind, Load, Model, PointItem, PointKind, Vec3, assemble,
-    index_one_standard,
-};
+use crate::multibody::{Body, LineItem, LineKind, Load, Model, PointItem, PointKind, Vec3};
 use crate::ratfunc::RatFuncField;
 use std::collections::BTreeSet;
 
@@ -59,100 +54,6 @@ pub fn is_model_text(text: &str, format: SystemFormat) -> bool {
         SystemFormat::Toml => from_toml_text(text, ""),
     };
     matches!(raw, Ok(Raw::Table(t)) if t.iter().any(|(k, _)| k == "bodies"))
-}
-
-/// A model file as a descriptor system over $\mathbb{Q}$ (for the descriptor-level
-/// commands).
-///
-/// # Errors
-/// As [`load_model_str`]; a model with symbols (these commands refuse $\mathbb{Q}(p)$).
-pub fn model_descriptor(
-    text: &str,
-    format: SystemFormat,
-    name: &str,
-) -> Result<super::load_descriptor::LoadedDescriptor, InputError> {
-    use super::load_descriptor::{DescriptorAny, LoadedDescriptor};
-    match read_model_str(text, format, name, &SymbolicOptions::default())? {
-        ModelAny::Rational(m) => {
-            let a = assemble(&m).map_err(|e| InputError::file(name, e.to_string()))?;
-            Ok(LoadedDescriptor {
-                path: name.to_string(),
-                system: DescriptorAny::Rational(a.descriptor),
-                has_e: true,
-                transfer: None,
-                pencil: None,
-            })
-        }
-        ModelAny::RatFunc(m) => Err(InputError::file(
-            name,
-            super::refusal("this command", &m.field),
-        )),
-    }
-}
-
-/// Reads, assembles and types a model file: the descriptor system of the model, in
-/// standard form as every system file.
-///
-/// # Errors
-/// Every error of [`read_model_str`]; an assembly that fails (a zero axis, an irrational
-/// actuator length, loads without equilibrium), named by the file.
-pub fn load_model_str(
-    text: &str,
-    format: SystemFormat,
-    name: &str,
-    opts: &SymbolicOptions,
-) -> Result<LoadedSystem, InputError> {
-    match read_model_str(text, format, name, opts)? {
-        ModelAny::Rational(m) => loaded(name, &m, Ground::Rational, TypedAny::Rational),
-        ModelAny::RatFunc(m) => {
-            let g = Ground::RatFunc(m.field.clone());
-            loaded(name, &m, g, TypedAny::RatFunc)
-        }
-    }
-}
-
-fn loaded<K: Field>(
-    name: &str,
-    m: &Model<K>,
-    ground: Ground,
-    wrap: impl Fn(super::TypedSystem<K>) -> TypedAny,
-) -> Result<LoadedSystem, InputError> {
-    let a: Assembly<K> = assemble(m).map_err(|e| InputError::file(name, e.to_string()))?;
-    let d = a.descriptor.clone();
-    let get = |key: &str| match key {
-        "E" => Some(d.e.clone()),
-        "A" => Some(d.a.clone()),
-        "B" => Some(d.b.clone()),
-        "C" => Some(d.c.clone()),
-        "D" => Some(d.d.clone()),
-        _ => None,
-    };
-    // the index-1 elimination first (cheap, also over Q(p)); the general conversion else
-    let (typed, states) = match index_one_standard(&d) {
-        Some((ss, kept)) => {
-            let names = kept.iter().map(|&i| a.state_names[i].clone()).collect();
-            let t = super::TypedSystem {
-                a_raw: d.a.clone(),
-                descriptor: Some(d.clone()),
-                ss,
-            };
-            (t, Some(names))
-        }
-        None => (typed_from(name, &get)?, None),
-    };
-    let signals = SignalNames {
-        inputs: Some(a.input_names.clone()),
-        outputs: Some(a.output_names.clone()),
-        states,
-    };
-    let mut extra = serde_json::Map::new();
-    extra.insert("descriptor_states".into(), a.state_names.clone().into());
-    let mut file = SystemFile::without_matrices(name, ground, extra, signals);
-    file.name = m.name.clone();
-    Ok(LoadedSystem {
-        file,
-        system: wrap(typed),
-    })
 }
 
 /// Reads a model file into a [`Model`] over $\mathbb{Q}$, or over $\mathbb{Q}(p)$ when

@@ -1,7 +1,7 @@
 //! Assembly of a [`Model`] into its descriptor system (see the module docs of
 //! [`crate::multibody`] for the equations).
 
-use super::geometry::{Vec3, add_block, carried, dot3, point_map, scale3, skew, sub3, zero3};
+use super::geometry::{Vec3, add_block, carried, dot3, point_map, scale3, skew, sparse_mul, sub3};
 use super::preload::{load_stiffness, tangent_stiffness};
 use super::{Assembly, LineItem, LineKind, Model, PointItem, PointKind};
 use crate::error::{Error, Result};
@@ -135,13 +135,6 @@ fn mass_matrix<K: Field>(m: &Model<K>) -> Matrix<K> {
     mm
 }
 
-/// Location of body `b` (the ground sits at the origin; its columns are dropped anyway).
-fn origin<K: Field>(m: &Model<K>, b: usize) -> Vec3<K> {
-    m.bodies
-        .get(b)
-        .map_or_else(|| zero3(&m.field), |x| x.location.clone())
-}
-
 /// Places `rows * T(r)` at body `b1` and its negative at body `b2` (each at its own point).
 fn two_body_rows<K: Field>(
     m: &Model<K>,
@@ -154,7 +147,7 @@ fn two_body_rows<K: Field>(
     let mut out = Matrix::zeros(k.clone(), rows.nrows(), 6 * nb);
     for (side, (&b, p)) in bodies.iter().zip(at).enumerate() {
         if b < nb {
-            let r = sub3(k, p, &origin(m, b));
+            let r = sub3(k, p, &m.origin(b));
             let blk = rows * &point_map(k, &r);
             add_block(&mut out, 0, 6 * b, &blk, side == 1);
         }
@@ -227,7 +220,7 @@ fn rational_sqrt(q: &crate::field::Rational) -> Option<crate::field::Rational> {
 /// Deflection Jacobian `H` of the flexible items with their stiffness and damping weights.
 type Weighted<K> = (Matrix<K>, Vec<<K as Field>::Elem>, Vec<<K as Field>::Elem>);
 
-pub(super) fn deflection<K: Field>(m: &Model<K>) -> Result<Weighted<K>> {
+fn deflection<K: Field>(m: &Model<K>) -> Result<Weighted<K>> {
     let k = &m.field;
     let mut h = Matrix::zeros(k.clone(), 0, 6 * m.bodies.len());
     let (mut kd, mut cd) = (vec![], vec![]);
@@ -422,32 +415,4 @@ fn free_names(r: &Matrix<impl Field>, coords: &[String], inputs: &[String]) -> V
             }
         })
         .collect()
-}
-
-/// `a b`, skipping the zero entries of both factors.
-pub(super) fn sparse_mul<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Matrix<K> {
-    let k = a.field().clone();
-    let nz: Vec<Vec<(usize, K::Elem)>> = (0..b.nrows())
-        .map(|i| {
-            b.row(i)
-                .iter()
-                .enumerate()
-                .filter(|(_, x)| !k.is_zero(x))
-                .map(|(j, x)| (j, x.clone()))
-                .collect()
-        })
-        .collect();
-    let mut out = vec![k.zero(); a.nrows() * b.ncols()];
-    for i in 0..a.nrows() {
-        let orow = &mut out[i * b.ncols()..(i + 1) * b.ncols()];
-        for (l, x) in a.row(i).iter().enumerate() {
-            if k.is_zero(x) {
-                continue;
-            }
-            for (j, y) in &nz[l] {
-                k.mul_add_assign(&mut orow[*j], x, y);
-            }
-        }
-    }
-    Matrix::from_vec(k, a.nrows(), b.ncols(), out)
 }

@@ -106,3 +106,31 @@ pub fn point_map<K: Field>(k: &K, r: &Vec3<K>) -> Matrix<K> {
     add_block(&mut t, 0, 3, &skew(k, r), true);
     t
 }
+
+/// `a b`, skipping the zero entries of both factors.
+pub fn sparse_mul<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Matrix<K> {
+    let k = a.field().clone();
+    let nz: Vec<Vec<(usize, K::Elem)>> = (0..b.nrows())
+        .map(|i| {
+            b.row(i)
+                .iter()
+                .enumerate()
+                .filter(|(_, x)| !k.is_zero(x))
+                .map(|(j, x)| (j, x.clone()))
+                .collect()
+        })
+        .collect();
+    let mut out = vec![k.zero(); a.nrows() * b.ncols()];
+    for i in 0..a.nrows() {
+        let orow = &mut out[i * b.ncols()..(i + 1) * b.ncols()];
+        for (l, x) in a.row(i).iter().enumerate() {
+            if k.is_zero(x) {
+                continue;
+            }
+            for (j, y) in &nz[l] {
+                k.mul_add_assign(&mut orow[*j], x, y);
+            }
+        }
+    }
+    Matrix::from_vec(k, a.nrows(), b.ncols(), out)
+}

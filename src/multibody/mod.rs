@@ -152,6 +152,12 @@ pub struct Model<K: Field> {
 }
 
 impl<K: Field> Model<K> {
+    /// Location of body `b` (the ground, `b == bodies.len()`, sits at the origin).
+    pub fn origin(&self, b: usize) -> Vec3<K> {
+        self.bodies
+            .get(b)
+            .map_or_else(|| geometry::zero3(&self.field), |x| x.location.clone())
+    }
     /// The actuators in file order.
     pub fn actuators(&self) -> impl Iterator<Item = &LineItem<K>> {
         self.lines

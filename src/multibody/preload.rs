@@ -11,25 +11,18 @@
 //! of length $L$ adds the string stiffness $T^T T \lambda / L$. A load $F$ at radius $r$
 //! adds $-[F]_\times$ and $-[r]_\times [F]_\times - [M]_\times$.
 
-use super::assemble::sparse_mul;
-use super::geometry::{Vec3, add_block, along, carried, dot3, skew, sub3, zero3};
+use super::geometry::{Vec3, add_block, along, carried, dot3, skew, sparse_mul, sub3};
 use super::{LineKind, Model, PointKind};
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
-
-fn origin<K: Field>(m: &Model<K>, b: usize) -> Vec3<K> {
-    m.bodies
-        .get(b)
-        .map_or_else(|| zero3(&m.field), |x| x.location.clone())
-}
 
 /// The applied load vector `f` (`6 n`).
 fn load_vector<K: Field>(m: &Model<K>) -> Vec<K::Elem> {
     let k = &m.field;
     let mut f = vec![k.zero(); 6 * m.bodies.len()];
     for l in &m.loads {
-        let r = sub3(k, &l.location, &origin(m, l.body));
+        let r = sub3(k, &l.location, &m.origin(l.body));
         let rxf = skew(k, &r).try_mul(&Matrix::column(k.clone(), l.force.to_vec()));
         let rxf = rxf.expect("3x3 by 3x1");
         for j in 0..3 {
@@ -48,7 +41,7 @@ pub(super) fn load_stiffness<K: Field>(m: &Model<K>) -> Matrix<K> {
     let d = 6 * m.bodies.len();
     let mut out = Matrix::zeros(k.clone(), d, d);
     for l in &m.loads {
-        let r = sub3(k, &l.location, &origin(m, l.body));
+        let r = sub3(k, &l.location, &m.origin(l.body));
         let sf = skew(k, &l.force);
         let b = 6 * l.body;
         add_block(&mut out, b, b + 3, &sf, true);
@@ -159,8 +152,8 @@ fn point_hessian<K: Field>(
         mmt.get(2, 0).clone(),
     ];
     let [b1, b2] = p.bodies;
-    let rs = sub3(k, &p.location, &origin(m, b1));
-    let re = sub3(k, &p.location, &origin(m, b2));
+    let rs = sub3(k, &p.location, &m.origin(b1));
+    let re = sub3(k, &p.location, &m.origin(b2));
     let b3 = if p.moments < 2 && (p.forces == 1 || p.forces == 2) && p.rolling_axis.is_none() {
         b2
     } else {
@@ -213,8 +206,8 @@ fn line_hessian<K: Field>(m: &Model<K>, l: &super::LineItem<K>, t: &K::Elem, out
     let d = 6 * nb;
     let dir = sub3(k, &l.locations[1], &l.locations[0]);
     let [b1, b2] = l.bodies;
-    let rs = sub3(k, &l.locations[0], &origin(m, b1));
-    let re = sub3(k, &l.locations[1], &origin(m, b2));
+    let rs = sub3(k, &l.locations[0], &m.origin(b1));
+    let re = sub3(k, &l.locations[1], &m.origin(b2));
     let su = skew(k, &dir);
     let mut t1 = Matrix::zeros(k.clone(), 3, 6);
     add_block(&mut t1, 0, 0, &su, true);
