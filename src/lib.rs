@@ -87,6 +87,7 @@ pub mod io;
 pub mod jordan;
 pub mod matrix;
 pub mod mpoly;
+pub mod multibody;
 pub mod pencil;
 pub mod poly;
 pub mod qkernels;

@@ -65,6 +65,8 @@ mod mechanical;
 mod mpoly;
 #[path = "mpoly_gcd.rs"]
 mod mpoly_gcd;
+#[path = "multibody.rs"]
+mod multibody;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]

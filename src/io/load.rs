@@ -36,6 +36,8 @@
 //! assert_eq!(e.to_string(), "x.json: key A, row 1, column 2: unknown parameter 'k'");
 //! ```
 
+use super::keys::SignalNames;
+use super::subst::SymbolicOptions;
 use super::{
     Ground, InputError, MatrixEntries, SystemFile, parse_system_json, parse_system_toml,
     read_system_file,
@@ -43,6 +45,7 @@ use super::{
 use crate::error::Error;
 use crate::field::{Field, Q, QuadraticField};
 use crate::matrix::Matrix;
+use crate::multibody::{Assembly, Model, assemble, index_one_standard};
 use crate::ratfunc::RatFuncField;
 use crate::realization::descriptor_to_standard;
 use crate::system::{Descriptor, StateSpace};
@@ -159,6 +162,9 @@ pub fn load_system_str(
     format: SystemFormat,
     name: &str,
 ) -> Result<LoadedSystem, InputError> {
+    if super::model_file::is_model_text(text, format) {
+        return load_model_str(text, format, name, &Default::default());
+    }
     let file = match format {
         SystemFormat::Json => parse_system_json(text, name)?,
         SystemFormat::Toml => parse_system_toml(text, name)?,
@@ -172,6 +178,14 @@ pub fn load_system_str(
 /// # Errors
 /// An unreadable file, and every error of [`load_system_str`].
 pub fn load_system_path(path: &Path) -> Result<LoadedSystem, InputError> {
+    // a model file (top-level `bodies`) is assembled into its descriptor system
+    if let Ok(text) = super::read_text(path) {
+        let format = SystemFormat::of(path, &text);
+        if super::model_file::is_model_text(&text, format) {
+            let shown = path.display().to_string();
+            return load_model_str(&text, format, &shown, &Default::default());
+        }
+    }
     type_file(read_system_file(path)?)
 }
 
@@ -288,5 +302,72 @@ pub(crate) fn typed_from<K: Field>(
         a_raw: ss.a.clone(),
         descriptor: None,
         ss,
+    })
+}
+
+/// Reads, assembles and types a model file: the descriptor system of the model, in
+/// standard form as every system file.
+///
+/// # Errors
+/// Every error of [`super::model_file::read_model_str`]; an assembly that fails (a zero axis, an irrational
+/// actuator length, loads without equilibrium), named by the file.
+pub fn load_model_str(
+    text: &str,
+    format: SystemFormat,
+    name: &str,
+    opts: &SymbolicOptions,
+) -> Result<LoadedSystem, InputError> {
+    match super::model_file::read_model_str(text, format, name, opts)? {
+        super::model_file::ModelAny::Rational(m) => {
+            loaded(name, &m, Ground::Rational, TypedAny::Rational)
+        }
+        super::model_file::ModelAny::RatFunc(m) => {
+            let g = Ground::RatFunc(m.field.clone());
+            loaded(name, &m, g, TypedAny::RatFunc)
+        }
+    }
+}
+
+fn loaded<K: Field>(
+    name: &str,
+    m: &Model<K>,
+    ground: Ground,
+    wrap: impl Fn(TypedSystem<K>) -> TypedAny,
+) -> Result<LoadedSystem, InputError> {
+    let a: Assembly<K> = assemble(m).map_err(|e| InputError::file(name, e.to_string()))?;
+    let d = a.descriptor.clone();
+    let get = |key: &str| match key {
+        "E" => Some(d.e.clone()),
+        "A" => Some(d.a.clone()),
+        "B" => Some(d.b.clone()),
+        "C" => Some(d.c.clone()),
+        "D" => Some(d.d.clone()),
+        _ => None,
+    };
+    // the index-1 elimination first (cheap, also over Q(p)); the general conversion else
+    let (typed, states) = match index_one_standard(&d) {
+        Some((ss, kept)) => {
+            let names = kept.iter().map(|&i| a.state_names[i].clone()).collect();
+            let t = TypedSystem {
+                a_raw: d.a.clone(),
+                descriptor: Some(d.clone()),
+                ss,
+            };
+            (t, Some(names))
+        }
+        None => (typed_from(name, &get)?, None),
+    };
+    let signals = SignalNames {
+        inputs: Some(a.input_names.clone()),
+        outputs: Some(a.output_names.clone()),
+        states,
+    };
+    let mut extra = serde_json::Map::new();
+    extra.insert("descriptor_states".into(), a.state_names.clone().into());
+    let mut file = SystemFile::without_matrices(name, ground, extra, signals);
+    file.name = m.name.clone();
+    Ok(LoadedSystem {
+        file,
+        system: wrap(typed),
     })
 }

@@ -100,6 +100,12 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
     } else {
         super::raw::from_json_text(&text, &name)?
     };
+    if let super::raw::Raw::Table(entries) = &raw
+        && entries.iter().any(|(k, _)| k == "bodies")
+    {
+        let format = super::read::SystemFormat::of(path, &text);
+        return model_descriptor(&text, format, &name);
+    }
     if let super::raw::Raw::Table(entries) = &raw {
         super::keys::check_keys(&name, &super::keys::keys_of(entries))?;
     }
@@ -227,4 +233,33 @@ fn load_g(
         transfer: Some((tm, r)),
         pencil: None,
     })
+}
+
+/// A model file as a descriptor system over $\mathbb{Q}$ (for the descriptor-level
+/// commands).
+///
+/// # Errors
+/// As [`super::load::load_model_str`]; a model with symbols (these commands refuse $\mathbb{Q}(p)$).
+pub fn model_descriptor(
+    text: &str,
+    format: super::read::SystemFormat,
+    name: &str,
+) -> Result<LoadedDescriptor, InputError> {
+    match super::model_file::read_model_str(text, format, name, &Default::default())? {
+        super::model_file::ModelAny::Rational(m) => {
+            let a = crate::multibody::assemble(&m)
+                .map_err(|e| InputError::file(name, e.to_string()))?;
+            Ok(LoadedDescriptor {
+                path: name.to_string(),
+                system: DescriptorAny::Rational(a.descriptor),
+                has_e: true,
+                transfer: None,
+                pencil: None,
+            })
+        }
+        super::model_file::ModelAny::RatFunc(m) => Err(InputError::file(
+            name,
+            super::refusal("this command", &m.field),
+        )),
+    }
 }

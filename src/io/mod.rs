@@ -31,9 +31,11 @@ pub mod keys;
 pub mod load;
 pub mod load_descriptor;
 pub mod matlab;
+pub mod model_file;
 pub mod qmat;
 pub(crate) mod raw;
 pub mod read;
+mod subst;
 pub mod symbolic;
 pub mod system_file;
 pub mod transfer_expr;
@@ -44,7 +46,7 @@ pub use expr::{ExprError, eval_expr};
 pub use keys::SignalNames;
 pub use load::{
     FromScalars, LoadedSystem, SystemFormat, SystemVisitor, TypedAny, TypedSystem, as_rational,
-    load_system_path, load_system_str,
+    load_model_str, load_system_path, load_system_str,
 };
 pub use matlab::{parse_matlab_matrix, split_matlab_matrix};
 pub use read::read_text;

@@ -35,54 +35,8 @@ use crate::ratfunc::RatFuncField;
 use std::collections::BTreeSet;
 use std::path::Path;
 
-/// The command line's say on symbols.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct SymbolicOptions {
-    /// `--symbolic`: `None` when not given, `Some(vec![])` for every parameter, else the names.
-    pub symbolic: Option<Vec<String>>,
-    /// `--at "m=1500, u=20"`: values (exact text) for parameters or symbols.
-    pub at: Vec<(String, String)>,
-}
-
-impl SymbolicOptions {
-    /// Parses `--symbolic` and `--at` values.
-    ///
-    /// # Errors
-    /// An `--at` item without `=` or with an empty name or value.
-    pub fn from_args(symbolic: Option<&str>, at: Option<&str>) -> Result<Self, String> {
-        let names = |s: &str| -> Vec<String> {
-            s.split(',')
-                .map(|x| x.trim().to_string())
-                .filter(|x| !x.is_empty())
-                .collect()
-        };
-        let mut out = SymbolicOptions {
-            symbolic: symbolic.map(names),
-            at: vec![],
-        };
-        for item in at.unwrap_or("").split(',').filter(|x| !x.trim().is_empty()) {
-            let Some((n, v)) = item.split_once('=') else {
-                return Err(format!(
-                    "--at: expected name=value, found '{}'",
-                    item.trim()
-                ));
-            };
-            let (n, v) = (n.trim(), v.trim());
-            if n.is_empty() || v.is_empty() {
-                return Err(format!(
-                    "--at: expected name=value, found '{}'",
-                    item.trim()
-                ));
-            }
-            out.at.push((n.to_string(), v.to_string()));
-        }
-        Ok(out)
-    }
-    /// Nothing asked on the command line.
-    pub fn is_empty(&self) -> bool {
-        self.symbolic.is_none() && self.at.is_empty()
-    }
-}
+use super::subst::Substitution;
+pub use super::subst::SymbolicOptions;
 
 /// Reads a system file with symbolic parameters (format as [`super::read_system_file`]).
 ///
@@ -116,6 +70,9 @@ pub fn load_symbolic_str(
     let Raw::Table(entries) = raw else {
         return validate(raw, name).and_then(type_file);
     };
+    if entries.iter().any(|(k, _)| k == "bodies") {
+        return super::load::load_model_str(text, format, name, opts);
+    }
     check_keys(name, &keys_of(&entries))?;
     let signals = SignalNames::read(name, &entries)?;
     let mut params: Vec<(String, Option<String>)> = vec![];
@@ -269,74 +226,6 @@ const MATRIX_KEYS: [&str; 9] = ["A", "B", "C", "D", "E", "M", "L", "K", "F"];
 fn field_of(name: &str, symbols: &BTreeSet<String>) -> Result<RatFuncField, InputError> {
     let vars: Vec<&str> = symbols.iter().map(String::as_str).collect();
     RatFuncField::new(&vars).map_err(|e| InputError::key(name, "symbols", e.to_string()))
-}
-
-/// Valued parameters, substituted into entry text as `(value)` until no name is left.
-struct Substitution {
-    valued: Vec<(String, String)>,
-}
-
-impl Substitution {
-    fn new(file: &str, valued: &[(String, String)]) -> Result<Self, InputError> {
-        let s = Substitution {
-            valued: valued.to_vec(),
-        };
-        for (n, v) in valued {
-            s.apply(v)
-                .map_err(|e| InputError::key(file, &format!("parameters.{n}"), e))?;
-        }
-        Ok(s)
-    }
-    fn lookup(&self, ident: &str) -> Option<&str> {
-        self.valued
-            .iter()
-            .find(|(n, _)| n == ident)
-            .map(|(_, v)| v.as_str())
-    }
-    /// The text with every valued parameter replaced (at most one round per parameter).
-    fn apply(&self, text: &str) -> Result<String, String> {
-        let mut cur = text.to_string();
-        for _ in 0..=self.valued.len() {
-            let (next, changed) = self.once(&cur);
-            if !changed {
-                return Ok(next);
-            }
-            cur = next;
-        }
-        Err("parameters depend on each other in a cycle".to_string())
-    }
-    fn once(&self, text: &str) -> (String, bool) {
-        let b = text.as_bytes();
-        let mut out = String::with_capacity(text.len());
-        let mut changed = false;
-        let mut i = 0;
-        while i < b.len() {
-            let c = b[i];
-            if c.is_ascii_alphabetic() || c == b'_' {
-                // an exponent marker inside a number (1e-3) is not a name
-                let in_number = i > 0 && (b[i - 1].is_ascii_digit() || b[i - 1] == b'.');
-                let start = i;
-                while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                    i += 1;
-                }
-                let ident = &text[start..i];
-                match self.lookup(ident) {
-                    Some(v) if !in_number => {
-                        out.push('(');
-                        out.push_str(v);
-                        out.push(')');
-                        changed = true;
-                    }
-                    _ => out.push_str(ident),
-                }
-            } else {
-                let ch = text[i..].chars().next().unwrap_or(' ');
-                out.push(ch);
-                i += ch.len_utf8();
-            }
-        }
-        (out, changed)
-    }
 }
 
 fn read_matrix(

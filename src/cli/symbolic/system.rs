@@ -94,7 +94,8 @@ pub(in crate::cli) fn run(
             (rep.with(key, factors(&cp).map_err(e)?), c.verified)
         }
         Command::Tf { .. } => {
-            if t.descriptor.is_some() {
+            // a model file's standard form comes from the index-1 elimination, which keeps G
+            if t.descriptor.is_some() && !f.extra.contains_key("descriptor_states") {
                 return Ok(None);
             }
             tf(s).map_err(e)?
