@@ -33,6 +33,8 @@ mod field_axioms;
 mod fields_float;
 #[path = "float.rs"]
 mod float;
+#[path = "float_eigen.rs"]
+mod float_eigen;
 #[path = "float_era.rs"]
 mod float_era;
 #[path = "float_honesty.rs"]
