@@ -81,6 +81,8 @@ mod poly_factor;
 mod realization;
 #[path = "realization_planted.rs"]
 mod realization_planted;
+#[path = "reserved_names.rs"]
+mod reserved_names;
 #[path = "robustness.rs"]
 mod robustness;
 #[path = "scb.rs"]
