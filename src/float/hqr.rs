@@ -117,11 +117,11 @@ fn deflation_point(h: &DMatrix<f64>, i: usize) -> usize {
 /// of the trailing 2x2 block (a real pair is replaced by the one closer to `h[i][i]`, used
 /// twice), or of the exceptional 2x2 block after 10 and 20 steps without deflation.
 fn shifts(h: &DMatrix<f64>, l: usize, i: usize, kdefl: usize) -> [f64; 4] {
-    let (h11, h12, h21, h22) = if kdefl % (2 * KEXSH) == 0 {
+    let (h11, h12, h21, h22) = if kdefl.is_multiple_of(2 * KEXSH) {
         let s = h[(i, i - 1)].abs() + h[(i - 1, i - 2)].abs();
         let h11 = DAT1 * s + h[(i, i)];
         (h11, DAT2 * s, s, h11)
-    } else if kdefl % KEXSH == 0 {
+    } else if kdefl.is_multiple_of(KEXSH) {
         let s = h[(l + 1, l)].abs() + h[(l + 2, l + 1)].abs();
         let h11 = DAT1 * s + h[(l, l)];
         (h11, DAT2 * s, s, h11)
