@@ -20,11 +20,11 @@ use num_complex::Complex;
 fn companion(c: &[Rational]) -> Matrix<Q> {
     let n = c.len();
     let mut a = Matrix::zeros(Q, n, n);
-    for i in 0..n {
+    for (i, ci) in c.iter().enumerate() {
         if i + 1 < n {
             a.set(i + 1, i, Q.one());
         }
-        a.set(i, n - 1, -c[i].clone());
+        a.set(i, n - 1, -ci.clone());
     }
     a
 }
@@ -91,7 +91,7 @@ fn cyclotomic(n: usize) -> Vec<i64> {
     let mut p = vec![0i64; n + 1];
     p[0] = -1;
     p[n] = 1;
-    for d in (1..n).filter(|d| n % d == 0) {
+    for d in (1..n).filter(|d| n.is_multiple_of(*d)) {
         let q = cyclotomic(d);
         // exact division by the monic q
         let mut rem = p.clone();

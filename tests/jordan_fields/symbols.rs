@@ -196,11 +196,11 @@ fn planted_case(k: &QuadraticField, rng: &mut Rng) -> Matrix<QuadraticField> {
     let mut off = 0;
     for c in &blocks {
         let m = c.len() - 1;
-        for i in 0..m {
+        for (i, ci) in c[..m].iter().enumerate() {
             if i + 1 < m {
                 a.set(off + i + 1, off + i, k.one());
             }
-            a.set(off + i, off + m - 1, k.neg(&c[i]));
+            a.set(off + i, off + m - 1, k.neg(ci));
         }
         off += m;
     }
