@@ -33,6 +33,8 @@ mod field_axioms;
 mod fields_float;
 #[path = "float.rs"]
 mod float;
+#[path = "float_eigen.rs"]
+mod float_eigen;
 #[path = "float_era.rs"]
 mod float_era;
 #[path = "float_honesty.rs"]
@@ -81,6 +83,8 @@ mod poly_factor;
 mod realization;
 #[path = "realization_planted.rs"]
 mod realization_planted;
+#[path = "reserved_names.rs"]
+mod reserved_names;
 #[path = "robustness.rs"]
 mod robustness;
 #[path = "scb.rs"]

@@ -11,6 +11,8 @@ use proptest::prelude::*;
 
 #[path = "jordan_fields/real.rs"]
 mod real;
+#[path = "jordan_fields/symbols.rs"]
+mod symbols;
 
 fn q(a: i64, b: i64) -> Quadratic {
     Quadratic::new(

@@ -25,6 +25,21 @@ class _FloatNote:
     def __init__(self):
         self.examples = []
         self.symbols = set()
+        self._objects = {}
+
+    def symbol(self, sym, where):
+        """Records a SymPy symbol; two different symbols with one name are refused (the
+        reader knows symbols by name, so ``Symbol('x')`` and ``Symbol('x', positive=True)``
+        would silently become one)."""
+        name = str(sym)
+        prev = self._objects.setdefault(name, sym)
+        if prev != sym:
+            raise ValueError(
+                "%s: two different SymPy symbols are both named '%s' (%s and %s, which "
+                "differ in their assumptions); give them different names"
+                % (where, name, _srepr(prev), _srepr(sym))
+            )
+        self.symbols.add(name)
 
     def add(self, x, text):
         if len(self.examples) < 3:
@@ -39,6 +54,12 @@ def _float_text(x, where, note):
     return text
 
 
+def _srepr(sym):
+    import sympy
+
+    return sympy.srepr(sym)
+
+
 def _is_sympy(x):
     t = type(x)
     return any(c.__module__.startswith("sympy") for c in t.__mro__)
@@ -47,8 +68,8 @@ def _is_sympy(x):
 def _sympy_text(x, where, note):
     if getattr(x, "free_symbols", None):
         # a symbolic parameter: the library reads rational functions of the symbols
-        for sym in x.free_symbols:
-            note.symbols.add(str(sym))
+        for sym in sorted(x.free_symbols, key=str):
+            note.symbol(sym, where)
     elif getattr(x, "is_Rational", False):
         return "%d/%d" % (int(x.p), int(x.q))
     # an algebraic number such as sqrt(2)/2 or 1 + I, or an expression in symbols: the
@@ -130,6 +151,7 @@ def _param_value(k, v, where, note):
     if v is None:
         return None
     if _is_sympy(v) and getattr(v, "is_Symbol", False) and str(v) == str(k):
+        note.symbol(v, where)
         return None  # {"m": Symbol("m")}: m stays a symbol
     return entry_text(v, where, note)
 

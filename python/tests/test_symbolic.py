@@ -199,3 +199,24 @@ def test_symbolic_reprs():
         assert repr(obj)
         if hasattr(obj, "_repr_latex_"):
             assert obj._repr_latex_().startswith("$")
+
+
+def test_two_sympy_symbols_with_one_name_are_refused():
+    # Symbol('x') and Symbol('x', positive=True) are different SymPy symbols; the reader
+    # knows symbols by name, so taking both would silently merge them into one
+    rng = random.Random(2205)
+    variants = [{}, {"positive": True}, {"real": True}, {"integer": True}, {"nonzero": True}]
+    for _ in range(12):
+        a, b = rng.sample(variants, 2)
+        x, y = sympy.Symbol("x", **a), sympy.Symbol("x", **b)
+        assert x != y
+        where = rng.choice(["entries", "param"])
+        with pytest.raises(ValueError, match="two different SymPy symbols are both named 'x'"):
+            if where == "entries":
+                exactlti.ss([[x, 1], [0, y + 1]])
+            else:
+                exactlti.ss([[x, 1], [0, 1]], params={"x": y})
+    # one symbol used twice (equal, same assumptions) is fine
+    x = sympy.Symbol("x", positive=True)
+    S = exactlti.ss([[x, 1], [0, x + 1]], params={"x": sympy.Symbol("x", positive=True)})
+    assert S.params == ("x",)

@@ -12,6 +12,22 @@
 use super::rational::{Rational, parse_rational};
 use crate::error::Error;
 
+/// Names the expression reader gives a meaning (`i` the imaginary unit, `sqrt` the square
+/// root, `pi` refused as transcendental): never a parameter, symbol or polynomial variable,
+/// since a variable of that name would silently change what a text means (`i^2 + 1` is 0
+/// with the unit and a nonzero polynomial with a variable `i`).
+pub const RESERVED: [&str; 3] = ["i", "sqrt", "pi"];
+
+/// What a reserved name means (`None` for any other name), for error messages.
+pub fn reserved_meaning(name: &str) -> Option<&'static str> {
+    match name {
+        "i" => Some("the imaginary unit"),
+        "sqrt" => Some("the square root"),
+        "pi" => Some("the transcendental constant pi"),
+        _ => None,
+    }
+}
+
 /// End (exclusive) of the number starting at `i`; an exponent with more than
 /// `max_exp_digits` digits is not taken (the number then ends before `e`).
 pub fn number_end<T: Copy + Into<char>>(s: &[T], i: usize, max_exp_digits: usize) -> usize {

@@ -12,7 +12,7 @@
 //!
 //! | entry point                          | computes                                                | algorithm                               |
 //! |--------------------------------------|---------------------------------------------------------|-----------------------------------------|
-//! | [`eigenvalues`], [`eigenvectors`]    | $\lambda_i(A)$, $A v_i = \lambda_i v_i$                 | balancing + real Schur; inverse iteration |
+//! | [`eigenvalues`], [`eigenvectors`]    | $\lambda_i(A)$, $A v_i = \lambda_i v_i$                 | balancing + Hessenberg QR (`dlahqr`); inverse iteration |
 //! | [`jordan_guess`]                     | clusters, multiplicities, Jordan block sizes            | clustering + ranks of $(A-cI)^k$ by SVD |
 //! | [`minreal`]                          | controllable and observable part of $(A,B,C,D)$         | orthogonal staircase (as SLICOT TB01PD) |
 //! | [`controllability_rank`], [`observability_rank`] | $\operatorname{rank}[B, AB, \dots]$, dual     | orthogonal staircase                    |
@@ -29,6 +29,7 @@ pub mod convert;
 mod eigen;
 mod era;
 mod freqresp;
+mod hqr;
 mod jordan_guess;
 mod minreal;
 mod pencil_eig;

@@ -47,8 +47,8 @@ pub const MAX_NUMBER_LEN: usize = 4_000;
 /// Largest accepted nesting depth of parentheses and unary operators.
 pub const MAX_DEPTH: usize = 256;
 
-/// Names that are never parameters.
-pub const RESERVED: [&str; 3] = ["i", "sqrt", "pi"];
+/// Names that are never parameters ([`crate::field::scan::RESERVED`]).
+pub const RESERVED: [&str; 3] = crate::field::scan::RESERVED;
 
 /// Is `s` usable as a parameter name: an identifier `[A-Za-z_][A-Za-z0-9_]*` that is not
 /// one of [`RESERVED`]?

@@ -96,6 +96,13 @@ pub fn load_symbolic_str(
                             ));
                         }
                     };
+                    if super::expr::RESERVED.contains(&n.as_str()) {
+                        return Err(InputError::key(
+                            name,
+                            &format!("parameters.{n}"),
+                            format!("'{n}' is reserved and cannot name a parameter"),
+                        ));
+                    }
                     params.push((n, val));
                 }
             }
@@ -104,6 +111,7 @@ pub fn load_symbolic_str(
                     let Raw::Str(s) = x else {
                         return Err(InputError::key(name, "symbols", "expected a list of names"));
                     };
+                    reserved_symbol(name, &s)?;
                     symbols.insert(s);
                 }
             }
@@ -219,6 +227,19 @@ pub fn load_symbolic_str(
         file,
         system: TypedAny::RatFunc(typed),
     })
+}
+
+/// Refuses a reserved name (`i`, `sqrt`, `pi`) in the `symbols` key: as a symbol it would
+/// change what the entries mean (`i^2 + 1` a polynomial instead of 0).
+pub(crate) fn reserved_symbol(file: &str, s: &str) -> Result<(), InputError> {
+    match crate::field::scan::reserved_meaning(s) {
+        Some(m) => Err(InputError::key(
+            file,
+            "symbols",
+            format!("'{s}' is reserved ({m}) and cannot name a symbol"),
+        )),
+        None => Ok(()),
+    }
 }
 
 const MATRIX_KEYS: [&str; 9] = ["A", "B", "C", "D", "E", "M", "L", "K", "F"];

@@ -214,6 +214,13 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
                 format!("matrix keys are upper case: did you mean '{up}'?"),
             ));
         } else {
+            if let (true, Raw::Array(xs)) = (key == "symbols", &v) {
+                for x in xs {
+                    if let Raw::Str(s) = x {
+                        super::symbolic::reserved_symbol(file, s)?;
+                    }
+                }
+            }
             extra.insert(key, v.to_json());
         }
     }

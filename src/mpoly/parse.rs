@@ -70,7 +70,15 @@ pub fn identifiers(text: &str) -> Result<Vec<String>> {
         if c.is_ascii_alphabetic() || c == b'_' {
             let start = i;
             i = identifier_end(s, i);
-            out.push(String::from_utf8_lossy(&s[start..i]).into_owned());
+            let name = String::from_utf8_lossy(&s[start..i]).into_owned();
+            if let Some(msg) = reserved_message(&name) {
+                return Err(Error::Parse {
+                    line: 1,
+                    col: start + 1,
+                    msg,
+                });
+            }
+            out.push(name);
         } else if c.is_ascii_digit() || c == b'.' {
             // a number, with its exponent marker (`1e-3` names nothing)
             i = number_end(s, i, usize::MAX);
@@ -88,6 +96,16 @@ pub fn identifiers(text: &str) -> Result<Vec<String>> {
         });
     }
     Ok(out)
+}
+
+/// The refusal of a reserved name ([`crate::field::scan::RESERVED`]) as a variable.
+pub(crate) fn reserved_message(name: &str) -> Option<String> {
+    crate::field::scan::reserved_meaning(name).map(|m| {
+        format!(
+            "'{name}' is {m}, not a variable: polynomials here have rational coefficients \
+             (no i, sqrt or pi)"
+        )
+    })
 }
 
 fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPoly, MPoly)> {
@@ -254,6 +272,10 @@ impl P<'_> {
             Some(c) if c.is_ascii_alphabetic() || c == b'_' => {
                 let start = self.c.pos;
                 let name = self.c.identifier();
+                if let Some(msg) = reserved_message(name) {
+                    self.c.pos = start;
+                    return Err(self.err(&msg));
+                }
                 let Some(i) = self.vars.iter().position(|v| *v == name) else {
                     self.c.pos = start;
                     return Err(self.err(&format!("unknown symbol '{name}'")));

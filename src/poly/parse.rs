@@ -121,6 +121,9 @@ impl P<'_> {
                 {
                     return Err(self.err("variable must be a single letter"));
                 }
+                if let Some(msg) = crate::mpoly::parse::reserved_message(&(c as char).to_string()) {
+                    return Err(self.err(&msg));
+                }
                 match self.var {
                     None => self.var = Some(c),
                     Some(v) if v != c => return Err(self.err("only one variable is allowed")),

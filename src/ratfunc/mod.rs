@@ -97,8 +97,8 @@ impl RatFuncField {
     /// $\mathbb{Q}(v_1, \dots, v_k)$ with the given parameter names (in this order).
     ///
     /// # Errors
-    /// `Invalid` for more than [`MAX_VARS`] names, duplicates or names that are not
-    /// identifiers.
+    /// `Invalid` for more than [`MAX_VARS`] names, duplicates, names that are not
+    /// identifiers, or reserved names (`i`, `sqrt`, `pi`: [`crate::field::scan::RESERVED`]).
     pub fn new<S: AsRef<str>>(vars: &[S]) -> Result<Self> {
         let vars: Vec<String> = vars.iter().map(|s| s.as_ref().to_string()).collect();
         if vars.len() > MAX_VARS {
@@ -114,6 +114,11 @@ impl RatFuncField {
                 && v.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
             if !ok || vars[..i].contains(v) {
                 return Err(Error::Invalid(format!("bad or repeated symbol name '{v}'")));
+            }
+            if let Some(m) = crate::field::scan::reserved_meaning(v) {
+                return Err(Error::Invalid(format!(
+                    "'{v}' is reserved ({m}) and cannot name a symbol"
+                )));
             }
         }
         Ok(RatFuncField {

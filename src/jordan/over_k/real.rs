@@ -86,6 +86,10 @@ impl JordanFormK {
             let e = &self.eigenvalues[ev];
             let m = v.ncols();
             if e.approx.1 == 0.0 || e.number.is_real() {
+                // a real root written through its symbol r<k> is defined with the fields
+                if f.0.radical.is_none() && self.components[e.component].factor.deg() >= 2 {
+                    fields.push(self.root_definition(ev));
+                }
                 for r in 0..n {
                     for q in 0..m {
                         t[r][off + q] = f.fmt_elem(v.get(r, q));
@@ -219,6 +223,22 @@ impl JordanFormK {
             compact,
             verified,
         })
+    }
+}
+
+impl JordanFormK {
+    /// `r<k> = root of P near X (over K: root of g)`: the definition of the symbol of
+    /// eigenvalue `ev` (its minimal polynomial over $\mathbb{Q}$, an isolating
+    /// approximation, and its factor over $K$), as in the `symbols` of the complex report.
+    pub fn root_definition(&self, ev: usize) -> String {
+        let e = &self.eigenvalues[ev];
+        format!(
+            "{} = {} (over {}: root of {})",
+            e.symbol,
+            e.value,
+            self.base(),
+            self.components[e.component].factor
+        )
     }
 }
 
