@@ -73,6 +73,8 @@ mod pencil_descriptor;
 mod pencil_published;
 #[path = "plots.rs"]
 mod plots;
+#[path = "qp_kernels.rs"]
+mod qp_kernels;
 #[path = "poly_factor.rs"]
 mod poly_factor;
 #[path = "realization.rs"]
