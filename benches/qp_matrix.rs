@@ -120,7 +120,11 @@ fn main() {
             0 => s.transfer_matrix().map(|t| t.entries.len()).unwrap(),
             1 => minimal(&s, MinrealMethod::Kalman).unwrap().order,
             2 => scb(&s.a, &s.b, &s.c, &s.d).unwrap().dims[0],
-            _ => invariant_zeros(&s.a, &s.b, &s.c, &s.d).unwrap().polynomial.degree().unwrap_or(0),
+            _ => invariant_zeros(&s.a, &s.b, &s.c, &s.d)
+                .unwrap()
+                .polynomial
+                .degree()
+                .unwrap_or(0),
         });
     }
     let s = chain_system(10);

@@ -73,10 +73,10 @@ mod pencil_descriptor;
 mod pencil_published;
 #[path = "plots.rs"]
 mod plots;
-#[path = "qp_kernels.rs"]
-mod qp_kernels;
 #[path = "poly_factor.rs"]
 mod poly_factor;
+#[path = "qp_kernels.rs"]
+mod qp_kernels;
 #[path = "realization.rs"]
 mod realization;
 #[path = "realization_planted.rs"]

@@ -32,7 +32,12 @@ fn entry(k: &RatFuncField, rng: &mut SplitMix64) -> RatFunc {
 }
 
 /// A random `m x n` matrix; one time in three of rank at most 1 or 2 (a product of factors).
-fn random_matrix(k: &RatFuncField, rng: &mut SplitMix64, m: usize, n: usize) -> Matrix<RatFuncField> {
+fn random_matrix(
+    k: &RatFuncField,
+    rng: &mut SplitMix64,
+    m: usize,
+    n: usize,
+) -> Matrix<RatFuncField> {
     let full = |rng: &mut SplitMix64, m: usize, n: usize| {
         Matrix::from_fn(k.clone(), m, n, |_, _| entry(k, rng))
     };
@@ -78,7 +83,11 @@ fn kernels_agree_with_the_generic_algorithms() {
                 let det = a.det().unwrap();
                 let c0 = cp.coeff(0);
                 let sign = if n % 2 == 0 { k.one() } else { k.neg(&k.one()) };
-                assert_eq!(det, k.mul(&sign, &c0), "det = (-1)^n charpoly(0), case {case}");
+                assert_eq!(
+                    det,
+                    k.mul(&sign, &c0),
+                    "det = (-1)^n charpoly(0), case {case}"
+                );
                 match a.inverse() {
                     Ok(inv) => {
                         assert!(!k.is_zero(&det));
@@ -159,7 +168,11 @@ fn dense_8x8_in_three_parameters() {
     }
     let det = a.det().unwrap();
     assert_eq!(det.num().total_degree(), 8);
-    let point = [Rational::from_integer(2.into()), Rational::from_integer((-1).into()), Rational::new(1.into(), 3.into())];
+    let point = [
+        Rational::from_integer(2.into()),
+        Rational::from_integer((-1).into()),
+        Rational::new(1.into(), 3.into()),
+    ];
     let aq = at(&a, &point).unwrap();
     assert_eq!(k.eval(&det, &point).unwrap(), aq.det().unwrap());
     let (r, piv) = a.rref();
@@ -201,8 +214,12 @@ fn chain_system(n: usize) -> exactlti::system::StateSpace<RatFuncField> {
             k.zero()
         }
     });
-    let b = Matrix::from_fn(k.clone(), 2 * n, 1, |i, _| if i == n { e("1/m") } else { k.zero() });
-    let c = Matrix::from_fn(k.clone(), 1, 2 * n, |_, j| if j == n - 1 { k.one() } else { k.zero() });
+    let b = Matrix::from_fn(k.clone(), 2 * n, 1, |i, _| {
+        if i == n { e("1/m") } else { k.zero() }
+    });
+    let c = Matrix::from_fn(k.clone(), 1, 2 * n, |_, j| {
+        if j == n - 1 { k.one() } else { k.zero() }
+    });
     let d = Matrix::zeros(k, 1, 1);
     exactlti::system::StateSpace::new(a, b, c, d).unwrap()
 }
@@ -215,8 +232,8 @@ fn diag_p0_to_p9_transfer_function_and_minimal_order() {
     let chi = s.a.charpoly().unwrap();
     assert_eq!(g.entries[0][0].den, chi);
     assert_eq!(g.entries[0][0].num, chi.derivative());
-    let r = exactlti::realization::minimal(&s, exactlti::realization::MinrealMethod::Kalman)
-        .unwrap();
+    let r =
+        exactlti::realization::minimal(&s, exactlti::realization::MinrealMethod::Kalman).unwrap();
     assert_eq!(r.order, 10);
     assert!(r.verified);
 }
@@ -243,13 +260,17 @@ fn mass_chains_transfer_functions_and_minimal_orders() {
         .unwrap();
         let gq = sq.transfer_matrix().unwrap();
         let ev = |p: &exactlti::poly::Poly<RatFuncField>| -> Vec<Rational> {
-            p.coeffs().iter().map(|c| k.eval(c, &point).unwrap()).collect()
+            p.coeffs()
+                .iter()
+                .map(|c| k.eval(c, &point).unwrap())
+                .collect()
         };
         assert_eq!(ev(num), gq.entries[0][0].num.coeffs().to_vec(), "n = {n}");
         assert_eq!(ev(den), gq.entries[0][0].den.coeffs().to_vec(), "n = {n}");
         if n <= 6 || n == 10 {
-            let r = exactlti::realization::minimal(&s, exactlti::realization::MinrealMethod::Kalman)
-                .unwrap();
+            let r =
+                exactlti::realization::minimal(&s, exactlti::realization::MinrealMethod::Kalman)
+                    .unwrap();
             assert_eq!(r.order, 2 * n, "n = {n}");
             assert!(r.verified);
         }

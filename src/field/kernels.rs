@@ -51,6 +51,11 @@ pub trait KernelTable<K: Field>: Sync {
         let _ = (k, m, n, a);
         None
     }
+    /// The pivot columns of the RREF when they are cheap to certify (without the RREF).
+    fn pivots(&self, k: &K, m: usize, n: usize, a: &[K::Elem]) -> Option<Vec<usize>> {
+        let _ = (k, m, n, a);
+        None
+    }
     /// $\operatorname{rank} A$.
     fn rank(&self, k: &K, m: usize, n: usize, a: &[K::Elem]) -> Option<usize> {
         let _ = (k, m, n, a);

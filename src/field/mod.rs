@@ -19,7 +19,7 @@ use std::fmt;
 
 pub mod complex;
 pub mod kernels;
-pub use kernels::{Kernels, KernelTable};
+pub use kernels::{KernelTable, Kernels};
 pub mod lehmer;
 pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};

@@ -51,6 +51,14 @@ pub(super) fn rref<K: Field>(a: &Matrix<K>) -> Option<(Matrix<K>, Vec<usize>)> {
     Some((Matrix::from_vec(k.clone(), m, n, d), piv))
 }
 
+/// The pivot columns of the RREF, when the field certifies them without the RREF.
+pub(super) fn pivots<K: Field>(a: &Matrix<K>) -> Option<Vec<usize>> {
+    match a.field.kernels() {
+        Kernels::Table(t) => t.pivots(&a.field, a.nrows, a.ncols, &a.data),
+        Kernels::Rational(_) | Kernels::Quadratic(..) | Kernels::Generic => None,
+    }
+}
+
 /// $\operatorname{rank} A$.
 pub(super) fn rank<K: Field>(a: &Matrix<K>) -> Option<usize> {
     let (k, m, n) = (&a.field, a.nrows, a.ncols);

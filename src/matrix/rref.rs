@@ -63,6 +63,13 @@ impl<K: Field> Matrix<K> {
         let piv = rref_in_place(&self.field, self.nrows, self.ncols, &mut r.data);
         (r, piv)
     }
+    /// The pivot columns of the canonical RREF (the column rank profile).
+    pub fn pivots(&self) -> Vec<usize> {
+        if let Some(p) = kernels::pivots(self) {
+            return p;
+        }
+        self.rref().1
+    }
     pub fn rank(&self) -> usize {
         if let Some(r) = kernels::rank(self) {
             return r;
@@ -117,7 +124,7 @@ impl<K: Field> Matrix<K> {
     }
     /// Basis of the column space: the pivot columns of `A`.
     pub fn column_space(&self) -> Matrix<K> {
-        let (_, piv) = self.rref();
+        let piv = self.pivots();
         self.select_cols(&piv)
     }
     /// Canonical basis of the row space: the non-zero rows of the RREF.
@@ -132,7 +139,7 @@ impl<K: Field> Matrix<K> {
         let vi = self
             .hstack(&Matrix::identity(self.field.clone(), n))
             .expect("same rows");
-        let (_, piv) = vi.rref();
+        let piv = vi.pivots();
         let extra: Vec<usize> = piv
             .into_iter()
             .filter(|&c| c >= self.ncols)

@@ -87,6 +87,20 @@ struct Grid {
     dtot: u32,
 }
 
+/// Number of points of the grid [`interpolate_zp`] would use (the box or the simplex,
+/// whichever is smaller; `usize::MAX` on overflow).
+pub fn grid_points(bounds: &Bounds) -> usize {
+    let nbox = bounds
+        .dv
+        .iter()
+        .try_fold(1usize, |acc, &d| acc.checked_mul(d as usize + 1))
+        .unwrap_or(usize::MAX);
+    nbox.min(binomial(
+        bounds.dtot as usize + bounds.dv.len(),
+        bounds.dv.len(),
+    ))
+}
+
 fn grid(bounds: &Bounds) -> Result<Grid> {
     let nvars = bounds.dv.len();
     let sizes: Vec<usize> = bounds.dv.iter().map(|&d| d as usize + 1).collect();
@@ -153,7 +167,13 @@ where
         let mut done = None;
         for attempt in 0..3 {
             let shifts: Vec<u64> = (0..nvars)
-                .map(|_| if shifted || attempt > 0 { rng.next_u64() % pr.p } else { 0 })
+                .map(|_| {
+                    if shifted || attempt > 0 {
+                        rng.next_u64() % pr.p
+                    } else {
+                        0
+                    }
+                })
                 .collect();
             if let Some(v) = images_mod_p(pr, &g, &entries, &shifts, nout, &f) {
                 done = Some(v);
@@ -195,7 +215,11 @@ where
     let nvars = shifts.len();
     let red: Vec<Vec<(&[u32], u64)>> = entries
         .iter()
-        .map(|e| e.iter().map(|(x, c)| (x.as_slice(), reduce(pr, c))).collect())
+        .map(|e| {
+            e.iter()
+                .map(|(x, c)| (x.as_slice(), reduce(pr, c)))
+                .collect()
+        })
         .collect();
     let maxd = entries
         .iter()
@@ -243,25 +267,11 @@ where
         }
     }
     if g.simplex {
-        let index: HashMap<&[u32], usize> = g
-            .points
-            .iter()
-            .enumerate()
-            .map(|(i, p)| (p.as_slice(), i))
-            .collect();
+        let lines = lower_set_lines(&g.points, nvars);
         let invs = small_inverses(pr, g.dtot as usize + 1);
+        let mut buf = Vec::new();
         for v in vals.iter_mut() {
-            let map: HashMap<Vec<u32>, u64> = g
-                .points
-                .iter()
-                .zip(v.iter())
-                .map(|(p, x)| (p.clone(), *x))
-                .collect();
-            let coeffs = interpolate_simplex(pr, nvars, g.dtot, &map, &invs, shifts);
-            v.iter_mut().for_each(|x| *x = 0);
-            for (e, c) in coeffs {
-                v[index[e.as_slice()]] = c;
-            }
+            interpolate_lower_set(pr, v, &lines, &invs, shifts, &mut buf);
         }
     } else {
         for v in vals.iter_mut() {
@@ -311,71 +321,96 @@ fn small_inverses(pr: &Prime, m: usize) -> Vec<u64> {
         .collect()
 }
 
-/// Interpolation of a polynomial of total degree at most `d` in `k` variables from its values
-/// on the simplex grid $\{e : |e| \le d\}$ (node $e_v$ of axis $v$ is $c_v + e_v$): Newton
-/// divided differences in the last variable on each line (the $l$-th one has total degree at
-/// most $d - l$ in the others, known on the smaller simplex), recursion, then the Newton basis
-/// $\prod_{m < l} (x - c - m)$ expanded into monomials.
-fn interpolate_simplex(
-    pr: &Prime,
-    k: usize,
-    d: u32,
-    vals: &HashMap<Vec<u32>, u64>,
-    invs: &[u64],
-    shifts: &[u64],
-) -> HashMap<Vec<u32>, u64> {
-    if k == 0 {
-        return vals.clone();
-    }
-    let mut w: Vec<HashMap<Vec<u32>, u64>> = vec![HashMap::new(); d as usize + 1];
-    let mut key = Vec::with_capacity(k);
-    for p in simplex_points(k - 1, d) {
-        let m = (d - p.iter().sum::<u32>()) as usize;
-        let mut y: Vec<u64> = (0..=m)
-            .map(|c| {
-                key.clear();
-                key.extend_from_slice(&p);
-                key.push(c as u32);
-                vals[&key]
-            })
-            .collect();
-        for j in 1..=m {
-            for i in (j..=m).rev() {
-                y[i] = pr.mul(pr.sub(y[i], y[i - 1]), invs[j]);
-            }
-        }
-        for (l, yl) in y.into_iter().enumerate() {
-            w[l].insert(p.clone(), yl);
-        }
-    }
-    let mut out: HashMap<Vec<u32>, u64> = HashMap::new();
-    let mut newton = vec![1u64]; // prod_{m < l} (x - c - m), low degree first
-    for (l, wl) in w.iter().enumerate() {
-        let g = interpolate_simplex(pr, k - 1, d - l as u32, wl, invs, &shifts[..k - 1]);
-        for (e, c) in g {
-            if c == 0 {
-                continue;
-            }
-            for (j, nj) in newton.iter().enumerate() {
-                if *nj == 0 {
+/// For each axis $v$, the lines of a lower set of exponent vectors along $v$: the point
+/// indices with $e_v = 0, 1, \dots$ and the other coordinates fixed, for every start point
+/// with $e_v = 0$.
+fn lower_set_lines(points: &[Vec<u32>], nvars: usize) -> Vec<Vec<Vec<usize>>> {
+    let index: HashMap<&[u32], usize> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (p.as_slice(), i))
+        .collect();
+    (0..nvars)
+        .map(|v| {
+            let mut lines = Vec::new();
+            for (i, p) in points.iter().enumerate() {
+                if p[v] != 0 {
                     continue;
                 }
-                let mut key = e.clone();
-                key.push(j as u32);
-                let slot = out.entry(key).or_insert(0);
-                *slot = pr.add(*slot, pr.mul(c, *nj));
+                let mut line = vec![i];
+                let mut key = p.clone();
+                loop {
+                    key[v] += 1;
+                    match index.get(key.as_slice()) {
+                        Some(&j) => line.push(j),
+                        None => break,
+                    }
+                }
+                if line.len() > 1 {
+                    lines.push(line);
+                }
+            }
+            lines
+        })
+        .collect()
+}
+
+/// Interpolation on a lower set of exponent vectors (here the simplex $\{e : |e| \le D\}$,
+/// node $e_v$ of axis $v$ at $c_v + e_v$): the Newton coefficients by divided differences
+/// along every axis in turn (on a lower set the Newton basis $\prod_v \prod_{t < e_v}
+/// (x_v - c_v - t)$ is triangular axis by axis), then the change to monomials along every
+/// axis in turn. Values in, coefficients out (at the index of their exponent vector).
+fn interpolate_lower_set(
+    pr: &Prime,
+    vals: &mut [u64],
+    lines: &[Vec<Vec<usize>>],
+    invs: &[u64],
+    shifts: &[u64],
+    buf: &mut Vec<u64>,
+) {
+    for axis in lines {
+        for line in axis {
+            buf.clear();
+            buf.extend(line.iter().map(|&i| vals[i]));
+            let m = buf.len();
+            for j in 1..m {
+                for i in (j..m).rev() {
+                    buf[i] = pr.mul(pr.sub(buf[i], buf[i - 1]), invs[j]);
+                }
+            }
+            for (&i, &x) in line.iter().zip(buf.iter()) {
+                vals[i] = x;
             }
         }
-        // newton *= (x - c - l)
-        let nl = pr.neg(pr.add(shifts[k - 1], l as u64 % pr.p));
-        let mut next = vec![0u64; newton.len() + 1];
-        for (j, nj) in newton.iter().enumerate() {
-            next[j + 1] = pr.add(next[j + 1], *nj);
-            next[j] = pr.add(next[j], pr.mul(*nj, nl));
-        }
-        newton = next;
     }
-    out
+    for (v, axis) in lines.iter().enumerate() {
+        for line in axis {
+            buf.clear();
+            buf.extend(line.iter().map(|&i| vals[i]));
+            newton_to_monomial(pr, buf, shifts[v]);
+            for (&i, &x) in line.iter().zip(buf.iter()) {
+                vals[i] = x;
+            }
+        }
+    }
+}
+
+/// Newton coefficients at the nodes $c, c + 1, \dots$ to monomial coefficients, in place.
+fn newton_to_monomial(pr: &Prime, c: &mut [u64], shift: u64) {
+    let m = c.len();
+    // p = c[m-1]; p = p*(x - c - i) + c[i]
+    let mut p = vec![0u64; m];
+    p[0] = c[m - 1];
+    for (deg, i) in (0..m - 1).rev().enumerate() {
+        let ni = pr.neg(pr.add(shift, i as u64 % pr.p));
+        for k in (0..=deg + 1).rev() {
+            let hi = if k > 0 { p[k - 1] } else { 0 };
+            let lo = if k <= deg { pr.mul(p[k], ni) } else { 0 };
+            p[k] = pr.add(hi, lo);
+        }
+        p[0] = pr.add(p[0], c[i]);
+    }
+    c.copy_from_slice(&p);
 }
 
 /// Replaces values on the grid $\{0..s_0-1\} \times \dots$ (last axis fastest; node $t$ of
@@ -415,17 +450,5 @@ fn interpolate_line(pr: &Prime, c: &mut [u64], invs: &[u64], shift: u64) {
             c[i] = pr.mul(pr.sub(c[i], c[i - 1]), invs[j]);
         }
     }
-    // p = c[m-1]; p = p*(x - c - i) + c[i]
-    let mut p = vec![0u64; m];
-    p[0] = c[m - 1];
-    for (deg, i) in (0..m - 1).rev().enumerate() {
-        let ni = pr.neg(pr.add(shift, i as u64 % pr.p));
-        for k in (0..=deg + 1).rev() {
-            let hi = if k > 0 { p[k - 1] } else { 0 };
-            let lo = if k <= deg { pr.mul(p[k], ni) } else { 0 };
-            p[k] = pr.add(hi, lo);
-        }
-        p[0] = pr.add(p[0], c[i]);
-    }
-    c.copy_from_slice(&p);
+    newton_to_monomial(pr, c, shift);
 }

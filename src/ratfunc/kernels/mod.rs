@@ -192,6 +192,12 @@ impl KernelTable<RatFuncField> for QpKernels {
         }
         rank_qp(k, m, n, a)
     }
+    fn pivots(&self, k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Vec<usize>> {
+        if m * n <= TINY || k.nvars() == 0 {
+            return None;
+        }
+        rref::pivots_qp(k, m, n, a)
+    }
     fn poly_gcd(&self, k: &RatFuncField, f: &[RatFunc], g: &[RatFunc]) -> Option<Vec<RatFunc>> {
         if k.nvars() == 0 {
             return None;

@@ -1,7 +1,7 @@
 //! The RREF and rank kernels of $\mathbb{Q}(p)$ (see the parent module docs for the method
 //! and its exact check).
 
-use super::interp::{Bounds, interpolate_zp};
+use super::interp::{Bounds, grid_points, interpolate_zp};
 use super::modp::{minors_and_solve_mod_p, profile_mod_p};
 use super::{clear_rows, profile_prime};
 use crate::mpoly::MPoly;
@@ -9,6 +9,10 @@ use crate::qkernels::prime::Prime;
 use crate::ratfunc::{RatFunc, RatFuncField};
 use crate::rng::SplitMix64;
 use num_bigint::Sign;
+
+/// Largest number of residues (grid points times outputs and entries) one prime may hold;
+/// beyond it the generic algorithm runs (a memory bound: 64 MB).
+const MAX_VALUES: usize = 1 << 23;
 
 /// A certified echelon form of the row-cleared matrix $B$ (`m x n`).
 struct Echelon {
@@ -126,6 +130,9 @@ fn echelon(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Echelo
         let all: Vec<usize> = (0..r).collect();
         let bounds = Bounds::of_rows(nv, n, &c, &all);
         let nout = r + r * free.len();
+        if grid_points(&bounds).saturating_mul(nout + c.len()) > MAX_VALUES {
+            return None;
+        }
         let out = match interpolate_zp(nv, &c, &bounds, nout, true, |pr, x| {
             minors_and_solve_mod_p(pr, n, x, &piv, &free)
         }) {
@@ -190,6 +197,20 @@ pub fn rref_qp(
         }
     }
     Some((out, e.piv))
+}
+
+/// The pivot columns of the RREF when a point proves them: its pivots are
+/// $0, 1, \dots, r - 1$ with $r = \min(m, n)$ (every prefix of columns has the largest rank
+/// it can have, so no generic pivot lies further left). `None` otherwise (the caller takes
+/// the RREF). Nothing is recorded.
+pub fn pivots_qp(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Vec<usize>> {
+    let (b, _) = clear_rows(k.nvars(), m, n, a);
+    let pr = profile_prime(0);
+    let x = point(&pr, k.nvars(), 0xb17);
+    let mut at: Vec<u64> = b.iter().map(|f| eval_mod_p(&pr, f, &x)).collect();
+    let (piv, _) = profile_mod_p(&pr, m, n, &mut at);
+    let r = m.min(n);
+    (piv.len() == r && piv.iter().enumerate().all(|(i, &p)| i == p)).then_some(piv)
 }
 
 /// $\operatorname{rank} A$ over $\mathbb{Q}(p)$ (the conditions as for [`rref_qp`]).
