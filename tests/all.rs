@@ -79,6 +79,8 @@ mod pencil_published;
 mod plots;
 #[path = "poly_factor.rs"]
 mod poly_factor;
+#[path = "qp_kernels.rs"]
+mod qp_kernels;
 #[path = "realization.rs"]
 mod realization;
 #[path = "realization_planted.rs"]

@@ -18,6 +18,8 @@
 use std::fmt;
 
 pub mod complex;
+pub mod kernels;
+pub use kernels::{KernelTable, Kernels};
 pub mod lehmer;
 pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
@@ -98,18 +100,25 @@ pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
         let _ = a;
         None
     }
-    /// `Some` exactly when the elements are [`Rational`]s (the field is $\mathbb{Q}$): a
-    /// witness the matrix layer uses to send the heavy operations to the $\mathbb{Q}$ kernels
-    /// of [`crate::qkernels`] (a method table as in FLINT's `gr`, since Rust has no
-    /// specialization). The matrix side chooses the kernel and its thresholds.
-    fn as_rationals(&self) -> Option<RationalElems<Self::Elem>> {
-        None
+    /// The field's entry in the matrix-kernel table ([`kernels`]): which fast kernels
+    /// `Matrix<K>` uses for charpoly, det, RREF/rank, null space, inverse and products.
+    /// The one place a field says what it is to the matrix layer.
+    fn kernels(&self) -> Kernels<'_, Self>
+    where
+        Self: Sized,
+    {
+        Kernels::Generic
     }
-    /// `Some((w, d))` exactly when the elements are [`Quadratic`]s of $\mathbb{Q}(\sqrt d)$:
-    /// the witness the matrix layer uses to send products, inverses and ranks to the
-    /// integer kernels of `matrix::over_k` (as [`Field::as_rationals`] does for $\mathbb{Q}$).
-    fn as_quadratic(&self) -> Option<(QuadraticElems<Self::Elem>, &num_bigint::BigInt)> {
-        None
+    /// `Some` exactly when the elements are [`Rational`]s (read off [`Field::kernels`]):
+    /// for the $\mathbb{Q}$-only modular shortcuts outside the matrix kernels.
+    fn as_rationals(&self) -> Option<RationalElems<Self::Elem>>
+    where
+        Self: Sized,
+    {
+        match self.kernels() {
+            Kernels::Rational(w) => Some(w),
+            _ => None,
+        }
     }
     /// Is `a` zero-or-positive-real? Meaningful for real fields only (`None` otherwise).
     fn sign(&self, a: &Self::Elem) -> Option<std::cmp::Ordering> {

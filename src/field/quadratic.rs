@@ -10,7 +10,7 @@
 //! | [`QuadraticField::sqrt_of_rational`] | $\sqrt{r}$ as (field, element) for any rational `r` |
 //! | [`Field::sign`] | exact sign (real fields only) |
 
-use super::{Field, Rational, fmt_rational, lehmer, rational_to_f64};
+use super::{Field, Kernels, Rational, fmt_rational, lehmer, rational_to_f64};
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -36,7 +36,7 @@ impl Quadratic {
     }
 }
 
-/// A type-equality witness `E = Quadratic`, returned by [`Field::as_quadratic`]: views a
+/// A type-equality witness `E = Quadratic`, returned in [`crate::field::Kernels::Quadratic`]: views a
 /// slice of elements as [`Quadratic`]s and turns them back into elements, without copying.
 pub struct QuadraticElems<E> {
     view: for<'a> fn(&'a [E]) -> &'a [Quadratic],
@@ -439,8 +439,8 @@ impl Field for QuadraticField {
             Some(self.galois(x))
         }
     }
-    fn as_quadratic(&self) -> Option<(QuadraticElems<Quadratic>, &BigInt)> {
-        Some((QuadraticElems::IDENTITY, &self.d))
+    fn kernels(&self) -> Kernels<'_, QuadraticField> {
+        Kernels::Quadratic(QuadraticElems::IDENTITY, &self.d)
     }
     fn sign(&self, x: &Quadratic) -> Option<Ordering> {
         if !self.d.is_positive() {

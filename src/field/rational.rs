@@ -3,7 +3,7 @@
 //! Parsing is exact: `0.08` is $2/25$, `1.5e-3` is $3/2000$, `-3/7` is $-3/7$; no binary
 //! floating point is ever involved.
 
-use super::{Field, RationalElems, lehmer};
+use super::{Field, Kernels, RationalElems, lehmer};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -95,8 +95,8 @@ impl Field for Q {
     fn sign(&self, a: &Rational) -> Option<std::cmp::Ordering> {
         Some(a.cmp(&Rational::zero()))
     }
-    fn as_rationals(&self) -> Option<RationalElems<Rational>> {
-        Some(RationalElems::IDENTITY)
+    fn kernels(&self) -> Kernels<'_, Q> {
+        Kernels::Rational(RationalElems::IDENTITY)
     }
 }
 

@@ -19,9 +19,8 @@ impl<K: Field> Matrix<K> {
     /// `NotSquare`.
     pub fn charpoly(&self) -> Result<Poly<K>> {
         self.check_square("charpoly")?;
-        if let Some(w) = self.field.as_rationals() {
-            let c = super::over_q::charpoly_q(self.nrows, w.view(&self.data));
-            return Ok(Poly::new(self.field.clone(), w.back(c)));
+        if let Some(c) = super::kernels::charpoly(self) {
+            return c;
         }
         self.charpoly_hessenberg()
     }

@@ -12,10 +12,14 @@
 //! | [`Matrix::charpoly`], [`Matrix::minpoly`] | $\det(xI - A)$ (Hessenberg), minimal polynomial |
 //! | [`Matrix::eval_poly`] | $p(A)$ by Horner |
 //!
-//! Over $\mathbb{Q}$ the heavy operations dispatch to fraction-free and multi-modular
-//! kernels of [`crate::qkernels`], chosen by size in [`over_q`].
+//! The heavy operations first ask the field for a registered kernel ([`crate::field::Kernels`],
+//! dispatched in one place per operation by `kernels`): over $\mathbb{Q}$ the fraction-free
+//! and multi-modular kernels of [`crate::qkernels`] (chosen by size in [`over_q`]), over
+//! $\mathbb{Q}(\sqrt d)$ those of [`over_k`], over $\mathbb{Q}(p)$ evaluation/interpolation
+//! ([`crate::ratfunc::kernels`]).
 
 mod charpoly;
+mod kernels;
 mod ops;
 pub mod over_k;
 pub mod over_q;

@@ -2,7 +2,6 @@
 //! Kronecker products, `vec`/`unvec`, similarity.
 
 use super::Matrix;
-use super::over_q;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use std::ops::{Add, Mul, Neg, Sub};
@@ -155,28 +154,8 @@ impl<K: Field> Matrix<K> {
             });
         }
         let k = &self.field;
-        if let Some(w) = k.as_rationals()
-            && let Some(v) = over_q::mul_q(
-                self.nrows,
-                self.ncols,
-                b.ncols,
-                w.view(&self.data),
-                w.view(&b.data),
-            )
-        {
-            return Ok(Matrix::from_vec(k.clone(), self.nrows, b.ncols, w.back(v)));
-        }
-        if let Some((w, d)) = k.as_quadratic()
-            && let Some(v) = super::over_k::mul_k(
-                d,
-                self.nrows,
-                self.ncols,
-                b.ncols,
-                w.view(&self.data),
-                w.view(&b.data),
-            )
-        {
-            return Ok(Matrix::from_vec(k.clone(), self.nrows, b.ncols, w.back(v)));
+        if let Some(p) = super::kernels::mul(self, b) {
+            return Ok(p);
         }
         let mut out = vec![k.zero(); self.nrows * b.ncols];
         for i in 0..self.nrows {

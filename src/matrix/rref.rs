@@ -6,7 +6,7 @@
 //! $f$ and zeros at the other free columns (the SCB paper's sec. III-A.1 relies on this).
 
 use super::Matrix;
-use super::over_q;
+use super::kernels;
 use crate::error::{Error, Result};
 use crate::field::Field;
 
@@ -52,12 +52,8 @@ impl<K: Field> Matrix<K> {
     /// Canonical reduced row echelon form and pivot columns (Gauss–Jordan, $O(m n \min(m,n))$
     /// field operations).
     pub fn rref(&self) -> (Matrix<K>, Vec<usize>) {
-        if let Some(w) = self.field.as_rationals() {
-            let (d, piv) = over_q::rref_q(self.nrows, self.ncols, w.view(&self.data));
-            return (
-                Matrix::from_vec(self.field.clone(), self.nrows, self.ncols, w.back(d)),
-                piv,
-            );
+        if let Some(r) = kernels::rref(self) {
+            return r;
         }
         self.rref_gauss_jordan()
     }
@@ -67,12 +63,16 @@ impl<K: Field> Matrix<K> {
         let piv = rref_in_place(&self.field, self.nrows, self.ncols, &mut r.data);
         (r, piv)
     }
-    pub fn rank(&self) -> usize {
-        if let Some(w) = self.field.as_rationals() {
-            return over_q::rank_q(self.nrows, self.ncols, w.view(&self.data));
+    /// The pivot columns of the canonical RREF (the column rank profile).
+    pub fn pivots(&self) -> Vec<usize> {
+        if let Some(p) = kernels::pivots(self) {
+            return p;
         }
-        if let Some((w, d)) = self.field.as_quadratic() {
-            return super::over_k::rank_k(d, self.nrows, self.ncols, w.view(&self.data));
+        self.rref().1
+    }
+    pub fn rank(&self) -> usize {
+        if let Some(r) = kernels::rank(self) {
+            return r;
         }
         if self.nrows.min(self.ncols) <= 1 {
             // a row or a column (or empty): rank 1 exactly when some entry is nonzero, with
@@ -110,6 +110,9 @@ impl<K: Field> Matrix<K> {
     /// Canonical basis of the right null space $\{v : A v = 0\}$, as the columns of an
     /// `ncols x nullity` matrix.
     pub fn nullspace(&self) -> Matrix<K> {
+        if let Some(n) = kernels::nullspace(self) {
+            return n;
+        }
         let (r, piv) = self.rref();
         nullspace_from_rref(&r, &piv)
     }
@@ -121,7 +124,7 @@ impl<K: Field> Matrix<K> {
     }
     /// Basis of the column space: the pivot columns of `A`.
     pub fn column_space(&self) -> Matrix<K> {
-        let (_, piv) = self.rref();
+        let piv = self.pivots();
         self.select_cols(&piv)
     }
     /// Canonical basis of the row space: the non-zero rows of the RREF.
@@ -136,7 +139,7 @@ impl<K: Field> Matrix<K> {
         let vi = self
             .hstack(&Matrix::identity(self.field.clone(), n))
             .expect("same rows");
-        let (_, piv) = vi.rref();
+        let piv = vi.pivots();
         let extra: Vec<usize> = piv
             .into_iter()
             .filter(|&c| c >= self.ncols)
@@ -151,15 +154,8 @@ impl<K: Field> Matrix<K> {
     pub fn inverse(&self) -> Result<Matrix<K>> {
         self.check_square("inverse")?;
         let n = self.nrows;
-        if let Some(w) = self.field.as_rationals() {
-            return over_q::inverse_q(n, w.view(&self.data))
-                .map(|d| Matrix::from_vec(self.field.clone(), n, n, w.back(d)))
-                .ok_or(Error::Singular);
-        }
-        if let Some((w, d)) = self.field.as_quadratic() {
-            return super::over_k::inverse_k(d, n, w.view(&self.data))
-                .map(|x| Matrix::from_vec(self.field.clone(), n, n, w.back(x)))
-                .ok_or(Error::Singular);
+        if let Some(r) = kernels::inverse(self) {
+            return r;
         }
         let aug = self.hstack(&Matrix::identity(self.field.clone(), n))?;
         let (r, piv) = aug.rref();
@@ -176,8 +172,8 @@ impl<K: Field> Matrix<K> {
         self.check_square("det")?;
         let k = &self.field;
         let n = self.nrows;
-        if let Some(w) = k.as_rationals() {
-            return Ok(w.back_one(over_q::det_q(n, w.view(&self.data))));
+        if let Some(d) = kernels::det(self) {
+            return d;
         }
         let mut a = self.data.clone();
         let mut det = k.one();

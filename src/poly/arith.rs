@@ -212,6 +212,13 @@ impl<K: Field> Poly<K> {
     }
     /// Monic greatest common divisor (zero when both are zero).
     pub fn gcd(&self, g: &Self) -> Self {
+        if let crate::field::Kernels::Table(t) = self.field.kernels()
+            && !self.is_zero()
+            && !g.is_zero()
+            && let Some(c) = t.poly_gcd(&self.field, self.coeffs(), g.coeffs())
+        {
+            return Self::new(self.field.clone(), c);
+        }
         let (mut a, mut b) = (self.clone(), g.clone());
         while !b.is_zero() {
             let r = a.rem(&b);

@@ -15,15 +15,17 @@
 //! field value share it, so a matrix computation reports what it divided by).
 //! [`RatFuncField::conditions`] returns the distinct irreducible factors (sorted) that the
 //! result assumes nonzero; [`RatFuncField::fresh`] gives the same field with an empty log for a
-//! new computation. Matrices over $\mathbb{Q}(p)$ go through the generic `Matrix<K>` code.
+//! new computation. Matrices over $\mathbb{Q}(p)$ go through `Matrix<K>`, which calls the
+//! evaluation/interpolation kernels of [`kernels`] for charpoly, det, RREF and rank.
 //!
 //! Display: `-cr/(m*u)`; numerator and denominator are shown factored where that is shorter
 //! (`(a + b)^2/c`); LaTeX uses `\frac{}{}`.
 
 mod display;
+pub mod kernels;
 
 use crate::error::{Error, Result};
-use crate::field::{Field, Rational};
+use crate::field::{Field, Kernels, Rational};
 use crate::mpoly::factor::cmp_poly;
 use crate::mpoly::{MAX_VARS, MPoly, QPoly, factor, gcd};
 use num_bigint::BigInt;
@@ -451,6 +453,10 @@ impl Field for RatFuncField {
     }
     fn latex_elem(&self, a: &RatFunc) -> String {
         display::fmt(self.vars(), a, true)
+    }
+    /// Evaluation/interpolation kernels ([`kernels`]).
+    fn kernels(&self) -> Kernels<'_, RatFuncField> {
+        Kernels::Table(&kernels::QP_KERNELS)
     }
     /// Only constants have an approximation (no values are attached to the parameters).
     fn approx(&self, a: &RatFunc) -> Option<(f64, f64)> {

@@ -10,6 +10,11 @@
 //! \\ 0 & 0 & A_{33} & A_{34} \\ 0 & 0 & 0 & A_{44}\end{bmatrix},\ T^{-1}B = \begin{bmatrix}
 //! B_1 \\ B_2 \\ 0 \\ 0\end{bmatrix},\ CT = [0, C_2, 0, C_4],$$
 //! and $(A_{22}, B_2, C_2, D)$ is a minimal realization.
+//!
+//! When one input makes the system controllable and observable, $T$ is the Krylov basis
+//! $[b, Ab, \dots, A^{n-1}b]$ and $(T^{-1}AT, T^{-1}b)$ is read off without $T^{-1}$: the
+//! companion matrix of $\det(sI - A) = s^n + \sum_i c_i s^i$ (ones below the diagonal, last
+//! column $-c$; $A\,A^{n-1}b = -\sum_i c_i A^i b$ by Cayley–Hamilton) and $e_1$.
 
 use super::controllability::{controllability_matrix, observability_matrix};
 use crate::error::Result;
@@ -42,13 +47,37 @@ impl<K: Field> KalmanDecomposition<K> {
 /// of both, chosen greedily in order.
 fn extend_with<K: Field>(base: &Matrix<K>, cand: &Matrix<K>) -> Matrix<K> {
     let both = base.hstack(cand).expect("same rows");
-    let (_, piv) = both.rref();
+    let piv = both.pivots();
     let picked: Vec<usize> = piv
         .into_iter()
         .filter(|&c| c >= base.ncols())
         .map(|c| c - base.ncols())
         .collect();
     cand.select_cols(&picked)
+}
+
+/// $(T^{-1}AT, T^{-1}b, CT, D)$ for the Krylov basis $T = [b, Ab, \dots, A^{n-1}b]$ (module
+/// docs).
+fn krylov_companion<K: Field>(sys: &StateSpace<K>, t: &Matrix<K>) -> Result<StateSpace<K>> {
+    let k = sys.field().clone();
+    let n = sys.nstates();
+    let cp = sys.a.charpoly()?;
+    let a = Matrix::from_fn(k.clone(), n, n, |i, j| {
+        if j + 1 == n {
+            k.neg(&cp.coeff(i))
+        } else if i == j + 1 {
+            k.one()
+        } else {
+            k.zero()
+        }
+    });
+    let b = Matrix::from_fn(
+        k.clone(),
+        n,
+        1,
+        |i, _| if i == 0 { k.one() } else { k.zero() },
+    );
+    StateSpace::new(a, b, sys.c.try_mul(t)?, sys.d.clone())
 }
 
 /// Computes the Kalman decomposition.
@@ -74,7 +103,11 @@ pub fn kalman_decomposition<K: Field>(sys: &StateSpace<K>) -> Result<KalmanDecom
     let x4 = sofar.complete_basis();
     let t = sofar.hstack(&x4)?;
     debug_assert_eq!(t.ncols(), n);
-    let system = sys.transform(&t)?;
+    let system = if sys.ninputs() == 1 && x2.ncols() == n {
+        krylov_companion(sys, &t)?
+    } else {
+        sys.transform(&t)?
+    };
     Ok(KalmanDecomposition {
         t,
         system,

@@ -119,9 +119,20 @@ impl<K: Field> StateSpace<K> {
             d: self.d.clone(),
         })
     }
-    /// The first `k` Markov parameters $C A^i B$, $i = 0..k-1$.
+    /// The first `k` Markov parameters $C A^i B$, $i = 0..k-1$: as $(C A^i) B$ when there are
+    /// no more outputs than inputs (the rows $C A^i$ of a controllable companion form with
+    /// $B = e_1$ are the Markov parameters themselves, while its columns $A^i e_1$ swell),
+    /// else as $C (A^i B)$.
     pub fn markov(&self, k: usize) -> Vec<Matrix<K>> {
         let mut out = Vec::with_capacity(k);
+        if self.noutputs() <= self.ninputs() {
+            let mut ca = self.c.clone();
+            for _ in 0..k {
+                out.push(&ca * &self.b);
+                ca = &ca * &self.a;
+            }
+            return out;
+        }
         let mut ab = self.b.clone();
         for _ in 0..k {
             out.push(&self.c * &ab);

@@ -3,13 +3,15 @@
 //! # Algorithm
 //! Faddeev–LeVerrier form of the adjugate: with $\det(sI - A) = \sum_k c_k s^k$ (monic),
 //! $\mathrm{adj}(sI - A) = \sum_{k=0}^{n-1} s^{n-1-k} R_k$, $R_0 = I$,
-//! $R_k = A R_{k-1} + c_{n-k} I$. Then $G_{ij} = (C\,\mathrm{adj}\,B)_{ij}/\det + D_{ij}$,
-//! each entry reduced to lowest terms with a monic denominator.
+//! $R_k = A R_{k-1} + c_{n-k} I = \sum_{j \le k} c_{n-k+j} A^j$, so
+//! $C R_k B = \sum_{j \le k} c_{n-k+j} h_j$ with the Markov parameters $h_j = C A^j B$
+//! ($n$ products of $A$ with an $n \times m$ matrix). Then
+//! $G_{ij} = (C\,\mathrm{adj}\,B)_{ij}/\det + D_{ij}$, each entry reduced to lowest terms with
+//! a monic denominator.
 
 use super::StateSpace;
 use crate::error::Result;
 use crate::field::Field;
-use crate::matrix::Matrix;
 use crate::poly::Poly;
 
 /// A rational function `num / den` in lowest terms, `den` monic.
@@ -122,23 +124,29 @@ impl<K: Field> StateSpace<K> {
         let k = self.field().clone();
         let n = self.nstates();
         let cp = self.a.charpoly()?;
-        // numerator polynomial matrix N(s) = sum_k s^{n-1-k} C R_k B
+        // numerator polynomial matrix N(s) = sum_k s^{n-1-k} C R_k B, with
+        // C R_k B = sum_{j <= k} c_{n-k+j} h_j from the Markov parameters h_j = C A^j B
+        // (products of A with the n x m matrix A^j B, not with n x n matrices)
         let (p, m) = (self.noutputs(), self.ninputs());
         let mut num: Vec<Vec<Vec<K::Elem>>> = vec![vec![vec![k.zero(); n.max(1)]; m]; p];
-        let mut r = Matrix::identity(k.clone(), n);
-        for kk in 0..n {
-            if kk > 0 {
-                r = &self.a * &r;
-                let c = cp.coeff(n - kk);
-                for i in 0..n {
-                    let v = k.add(r.get(i, i), &c);
-                    r.set(i, i, v);
-                }
+        let mut markov = Vec::with_capacity(n);
+        let mut w = self.b.clone();
+        for j in 0..n {
+            if j > 0 {
+                w = &self.a * &w;
             }
-            let crb = &(&self.c * &r) * &self.b;
-            for i in 0..p {
-                for j in 0..m {
-                    num[i][j][n - 1 - kk] = crb.get(i, j).clone();
+            markov.push(&self.c * &w);
+        }
+        for kk in 0..n {
+            for (j, h) in markov.iter().enumerate().take(kk + 1) {
+                let c = cp.coeff(n - kk + j);
+                if k.is_zero(&c) {
+                    continue;
+                }
+                for (i, row) in num.iter_mut().enumerate() {
+                    for (jj, slot) in row.iter_mut().enumerate() {
+                        k.mul_add_assign(&mut slot[n - 1 - kk], &c, h.get(i, jj));
+                    }
                 }
             }
         }

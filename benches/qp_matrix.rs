@@ -1,0 +1,140 @@
+//! Matrices over Q(p) on the user's path (`Matrix<RatFuncField>`, whose charpoly, det, RREF
+//! and rank go to the evaluation/interpolation kernels registered on the field), beside
+//! `scripts/anchors/qp_matrix.py` (SymPy's DomainMatrix on the same matrices).
+//!
+//! Cases:
+//! - `dense N charpoly|det|rref`: dense N x N (N = 6, 7, 8), entries linear in a, b, c
+//!   (goal: >= 10x faster than SymPy's DomainMatrix);
+//! - `diag10 tf|minreal|scb|zeros`: A = diag(p0..p9), B = ones, C = ones (goal <= 1 s);
+//! - `chain10 tf|minreal`: the 10-mass chain in symbolic m, k, c (goal <= 2 s).
+//!
+//! Output lines: `<label>: <best> ms (median <ms> ms, <reps> reps)`; the dense inputs are
+//! written to `target/qp-matrix-cases.txt` (`name<TAB>n<TAB>entries;...`) for the anchor.
+//!
+//! Run: `cargo bench --bench qp_matrix [FILTER]`.
+#[path = "common.rs"]
+mod common;
+
+use common::{bench, selected};
+use exactlti::field::Field;
+use exactlti::matrix::Matrix;
+use exactlti::ratfunc::RatFuncField;
+use exactlti::realization::{MinrealMethod, minimal};
+use exactlti::rng::SplitMix64;
+use exactlti::structure::scb::scb;
+use exactlti::structure::zeros::invariant_zeros;
+use exactlti::system::StateSpace;
+use std::fmt::Write as _;
+
+/// Entries `c0 + c1*a + c2*b + c3*c` with coefficients in -5..=5 (row-major text).
+fn dense_entries(n: usize, seed: u64) -> Vec<String> {
+    let mut rng = SplitMix64(seed);
+    (0..n * n)
+        .map(|_| {
+            let c: Vec<i64> = (0..4).map(|_| rng.int(-5, 5)).collect();
+            format!("{} + {}*a + {}*b + {}*c", c[0], c[1], c[2], c[3])
+        })
+        .collect()
+}
+
+/// diag(p0..p{n-1}), B = C^T = ones.
+pub fn diag_system(n: usize) -> StateSpace<RatFuncField> {
+    let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
+    let k = RatFuncField::new(&names).unwrap();
+    let a = Matrix::diagonal(k.clone(), &(0..n).map(|i| k.var(i)).collect::<Vec<_>>());
+    let b = Matrix::from_fn(k.clone(), n, 1, |_, _| k.one());
+    let c = Matrix::from_fn(k.clone(), 1, n, |_, _| k.one());
+    let d = Matrix::zeros(k, 1, 1);
+    StateSpace::new(a, b, c, d).unwrap()
+}
+
+/// The n-mass chain between two walls: masses m, springs k, dampers c; force on mass 1,
+/// output the position of mass n. A = [[0, I], [-K/m, -L/m]].
+pub fn chain_system(n: usize) -> StateSpace<RatFuncField> {
+    let k = RatFuncField::new(&["m", "k", "c"]).unwrap();
+    let e = |s: &str| k.parse(s).unwrap();
+    let a = Matrix::from_fn(k.clone(), 2 * n, 2 * n, |i, j| {
+        if i < n {
+            return if j == i + n { k.one() } else { k.zero() };
+        }
+        let (r, col) = (i - n, j % n);
+        let what = if j < n { "k" } else { "c" };
+        if r == col {
+            e(&format!("-2*{what}/m"))
+        } else if r.abs_diff(col) == 1 {
+            e(&format!("{what}/m"))
+        } else {
+            k.zero()
+        }
+    });
+    let b = Matrix::from_fn(k.clone(), 2 * n, 1, |i, _| {
+        if i == n { e("1/m") } else { k.zero() }
+    });
+    let c = Matrix::from_fn(k.clone(), 1, 2 * n, |_, j| {
+        if j == n - 1 { k.one() } else { k.zero() }
+    });
+    let d = Matrix::zeros(k, 1, 1);
+    StateSpace::new(a, b, c, d).unwrap()
+}
+
+fn main() {
+    let k = RatFuncField::new(&["a", "b", "c"]).unwrap();
+    let mut cases = String::new();
+    for n in [6usize, 7, 8] {
+        let ents = dense_entries(n, 1000 + n as u64);
+        writeln!(cases, "dense {n}\t{n}\t{}", ents.join(";")).unwrap();
+        let m = Matrix::from_vec(
+            k.clone(),
+            n,
+            n,
+            ents.iter().map(|s| k.parse(s).unwrap()).collect(),
+        );
+        let label = format!("dense {n} charpoly");
+        if selected(&label) {
+            bench(&label, 3, 1500.0, || m.charpoly().unwrap());
+        }
+        let label = format!("dense {n} det");
+        if selected(&label) {
+            bench(&label, 3, 1500.0, || m.det().unwrap());
+        }
+        let label = format!("dense {n} rref");
+        if selected(&label) {
+            bench(&label, 3, 1500.0, || m.rref());
+        }
+    }
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target");
+    std::fs::create_dir_all(&dir).ok();
+    std::fs::write(dir.join("qp-matrix-cases.txt"), cases).expect("cases file");
+
+    let s = diag_system(10);
+    for (label, run) in [
+        ("diag10 tf", 0),
+        ("diag10 minreal", 1),
+        ("diag10 scb", 2),
+        ("diag10 zeros", 3),
+    ] {
+        if !selected(label) {
+            continue;
+        }
+        bench(label, 1, 2000.0, || match run {
+            0 => s.transfer_matrix().map(|t| t.entries.len()).unwrap(),
+            1 => minimal(&s, MinrealMethod::Kalman).unwrap().order,
+            2 => scb(&s.a, &s.b, &s.c, &s.d).unwrap().dims[0],
+            _ => invariant_zeros(&s.a, &s.b, &s.c, &s.d)
+                .unwrap()
+                .polynomial
+                .degree()
+                .unwrap_or(0),
+        });
+    }
+    let s = chain_system(10);
+    for (label, run) in [("chain10 tf", 0), ("chain10 minreal", 1)] {
+        if !selected(label) {
+            continue;
+        }
+        bench(label, 1, 2000.0, || match run {
+            0 => s.transfer_matrix().map(|t| t.entries.len()).unwrap(),
+            _ => minimal(&s, MinrealMethod::Kalman).unwrap().order,
+        });
+    }
+}

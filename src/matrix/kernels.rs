@@ -1,0 +1,117 @@
+//! The kernel dispatch: for each heavy operation, the one place that asks the field which
+//! kernels it registered ([`Field::kernels`], see [`crate::field::kernels`]) and calls them.
+//!
+//! | field entry | kernels |
+//! |---|---|
+//! | `Rational` ($\mathbb{Q}$) | [`super::over_q`]: charpoly, det, RREF, rank, null space, inverse, product |
+//! | `Quadratic` ($\mathbb{Q}(\sqrt d)$) | [`super::over_k`]: rank, inverse, product |
+//! | `Table` (e.g. $\mathbb{Q}(p)$) | the field's [`crate::field::KernelTable`] |
+//! | `Generic` | none |
+//!
+//! Each function returns `None` when no kernel applies; the caller then runs the generic
+//! algorithm of [`Matrix`], which computes the same canonical result.
+
+use super::{Matrix, over_k, over_q};
+use crate::error::{Error, Result};
+use crate::field::{Field, Kernels};
+use crate::poly::Poly;
+
+/// $\det(xI - A)$ (square `a`).
+pub(super) fn charpoly<K: Field>(a: &Matrix<K>) -> Option<Result<Poly<K>>> {
+    let (k, n) = (&a.field, a.nrows);
+    let c = match k.kernels() {
+        Kernels::Rational(w) => Ok(w.back(over_q::charpoly_q(n, w.view(&a.data)))),
+        Kernels::Table(t) => t.charpoly(k, n, &a.data)?,
+        Kernels::Quadratic(..) | Kernels::Generic => return None,
+    };
+    Some(c.map(|c| Poly::new(k.clone(), c)))
+}
+
+/// $\det A$ (square `a`).
+pub(super) fn det<K: Field>(a: &Matrix<K>) -> Option<Result<K::Elem>> {
+    let (k, n) = (&a.field, a.nrows);
+    match k.kernels() {
+        Kernels::Rational(w) => Some(Ok(w.back_one(over_q::det_q(n, w.view(&a.data))))),
+        Kernels::Table(t) => t.det(k, n, &a.data),
+        Kernels::Quadratic(..) | Kernels::Generic => None,
+    }
+}
+
+/// Canonical RREF and pivot columns.
+pub(super) fn rref<K: Field>(a: &Matrix<K>) -> Option<(Matrix<K>, Vec<usize>)> {
+    let (k, m, n) = (&a.field, a.nrows, a.ncols);
+    let (d, piv) = match k.kernels() {
+        Kernels::Rational(w) => {
+            let (d, piv) = over_q::rref_q(m, n, w.view(&a.data));
+            (w.back(d), piv)
+        }
+        Kernels::Table(t) => t.rref(k, m, n, &a.data)?,
+        Kernels::Quadratic(..) | Kernels::Generic => return None,
+    };
+    Some((Matrix::from_vec(k.clone(), m, n, d), piv))
+}
+
+/// The pivot columns of the RREF, when the field certifies them without the RREF.
+pub(super) fn pivots<K: Field>(a: &Matrix<K>) -> Option<Vec<usize>> {
+    match a.field.kernels() {
+        Kernels::Table(t) => t.pivots(&a.field, a.nrows, a.ncols, &a.data),
+        Kernels::Rational(_) | Kernels::Quadratic(..) | Kernels::Generic => None,
+    }
+}
+
+/// $\operatorname{rank} A$.
+pub(super) fn rank<K: Field>(a: &Matrix<K>) -> Option<usize> {
+    let (k, m, n) = (&a.field, a.nrows, a.ncols);
+    match k.kernels() {
+        Kernels::Rational(w) => Some(over_q::rank_q(m, n, w.view(&a.data))),
+        Kernels::Quadratic(w, d) => Some(over_k::rank_k(d, m, n, w.view(&a.data))),
+        Kernels::Table(t) => t.rank(k, m, n, &a.data),
+        Kernels::Generic => None,
+    }
+}
+
+/// The canonical null-space basis as the columns of an `ncols x nullity` matrix.
+pub(super) fn nullspace<K: Field>(a: &Matrix<K>) -> Option<Matrix<K>> {
+    let (k, m, n) = (&a.field, a.nrows, a.ncols);
+    let vs = match k.kernels() {
+        Kernels::Rational(w) => over_q::nullspace_q(m, n, w.view(&a.data))
+            .into_iter()
+            .map(|v| w.back(v))
+            .collect(),
+        Kernels::Table(t) => t.nullspace(k, m, n, &a.data)?,
+        Kernels::Quadratic(..) | Kernels::Generic => return None,
+    };
+    Some(Matrix::from_fn(k.clone(), n, vs.len(), |i, j| {
+        vs[j][i].clone()
+    }))
+}
+
+/// $A^{-1}$; `Err(Singular)` when $A$ is singular (square `a`).
+pub(super) fn inverse<K: Field>(a: &Matrix<K>) -> Option<Result<Matrix<K>>> {
+    let (k, n) = (&a.field, a.nrows);
+    let inv = match k.kernels() {
+        Kernels::Rational(w) => over_q::inverse_q(n, w.view(&a.data)).map(|d| w.back(d)),
+        Kernels::Quadratic(w, d) => over_k::inverse_k(d, n, w.view(&a.data)).map(|x| w.back(x)),
+        Kernels::Table(t) => t.inverse(k, n, &a.data)?,
+        Kernels::Generic => return None,
+    };
+    Some(
+        inv.map(|d| Matrix::from_vec(k.clone(), n, n, d))
+            .ok_or(Error::Singular),
+    )
+}
+
+/// $AB$ (shapes already checked).
+pub(super) fn mul<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Option<Matrix<K>> {
+    let k = &a.field;
+    let (m, l, n) = (a.nrows, a.ncols, b.ncols);
+    let v = match k.kernels() {
+        Kernels::Rational(w) => w.back(over_q::mul_q(m, l, n, w.view(&a.data), w.view(&b.data))?),
+        Kernels::Quadratic(w, d) => {
+            w.back(over_k::mul_k(d, m, l, n, w.view(&a.data), w.view(&b.data))?)
+        }
+        Kernels::Table(t) => t.mul(k, (m, l, n), &a.data, &b.data)?,
+        Kernels::Generic => return None,
+    };
+    Some(Matrix::from_vec(k.clone(), m, n, v))
+}

@@ -1,0 +1,454 @@
+//! Evaluation/interpolation over $\mathbb{Z}\lbrack p_0, \dots, p_{k-1}\rbrack$: polynomials
+//! that are minors of a matrix $B$ over $\mathbb{Z}\lbrack p\rbrack$ (or coefficients of
+//! $\det(xI - B)$), from their values modulo word primes on a grid in the parameters.
+//!
+//! [`interpolate_zp`] evaluates $B$ at every grid point modulo each prime, hands the image to
+//! a per-point map (a Hessenberg charpoly, an elimination), interpolates every output by
+//! Newton divided differences (dense, per parameter) and lifts the coefficients by the CRT.
+//!
+//! **Certificate.** A polynomial taking one entry from each row $i \in I$ of $B$ (a minor on
+//! the rows $I$, a coefficient of $\det(xI - B_{II})$) has degree in $p_v$ at most
+//! $\sum_{i \in I} \max_j \deg_{p_v} B_{ij}$ and total degree at most
+//! $D = \sum_{i \in I} \max_j \operatorname{tdeg} B_{ij}$, so the box grid of that many plus
+//! one points per parameter, or the simplex grid $\{e : |e| \le D\}$ (unisolvent for total
+//! degree $D$, with any distinct nodes per axis), determines it; the smaller grid is used.
+//! With $r_i = \sum_j \lVert B_{ij} \rVert_1$ (1-norms are submultiplicative) every integer
+//! coefficient is at most $\prod_{i \in I} (1 + r_i)$ in absolute value, and enough primes are
+//! taken for twice that bound: the symmetric CRT lift is exact. The nodes of axis $v$ are
+//! $c_v, c_v + 1, \dots$ with a shift $c_v$ (zero, or random when the per-point map may meet
+//! a point where it is undefined: it returns `None` and the prime is retried with new shifts).
+
+use crate::error::{Error, Result};
+use crate::mpoly::MPoly;
+use crate::qkernels::modular::crt::Crt;
+use crate::qkernels::prime::{Prime, nth_prime};
+use crate::rng::SplitMix64;
+use num_bigint::{BigInt, Sign};
+use num_traits::{One, Signed, Zero};
+use std::collections::HashMap;
+
+/// Largest interpolation grid (points per prime) accepted by [`interpolate_zp`].
+pub const MAX_GRID_POINTS: usize = 1 << 20;
+
+/// Degree and coefficient bounds of the outputs (see the module docs).
+#[derive(Clone, Debug)]
+pub struct Bounds {
+    /// Degree bound per parameter.
+    pub dv: Vec<u32>,
+    /// Total-degree bound.
+    pub dtot: u32,
+    /// Bound on the absolute value of every integer coefficient.
+    pub coef: BigInt,
+}
+
+impl Bounds {
+    /// Bounds for polynomials taking one entry from each row in `rows` of the row-major
+    /// `B` with `ncols` columns (and possibly the 1 of $xI$).
+    pub fn of_rows(nvars: usize, ncols: usize, b: &[MPoly], rows: &[usize]) -> Self {
+        let mut dv = vec![0u32; nvars];
+        let mut dtot = 0u32;
+        let mut coef = BigInt::one();
+        for &i in rows {
+            let mut rowmax = vec![0u32; nvars];
+            let mut rowtot = 0u32;
+            let mut r = BigInt::zero();
+            for e in &b[i * ncols..(i + 1) * ncols] {
+                for (v, d) in e.degrees().into_iter().enumerate() {
+                    rowmax[v] = rowmax[v].max(d);
+                }
+                rowtot = rowtot.max(e.total_degree());
+                r += norm1(e);
+            }
+            for v in 0..nvars {
+                dv[v] += rowmax[v];
+            }
+            dtot += rowtot;
+            coef *= r + 1u32;
+        }
+        Bounds { dv, dtot, coef }
+    }
+}
+
+/// 1-norm of a polynomial's coefficient vector.
+fn norm1(f: &MPoly) -> BigInt {
+    f.terms().iter().map(|t| t.1.abs()).sum()
+}
+
+fn reduce(pr: &Prime, c: &BigInt) -> u64 {
+    let (s, digits) = c.to_u64_digits();
+    pr.reduce_limbs(s == Sign::Minus, &digits)
+}
+
+/// The grid: exponent (node index) vectors and whether it is the simplex.
+struct Grid {
+    points: Vec<Vec<u32>>,
+    simplex: bool,
+    sizes: Vec<usize>,
+    dtot: u32,
+}
+
+/// Number of points of the grid [`interpolate_zp`] would use (the box or the simplex,
+/// whichever is smaller; `usize::MAX` on overflow).
+pub fn grid_points(bounds: &Bounds) -> usize {
+    let nbox = bounds
+        .dv
+        .iter()
+        .try_fold(1usize, |acc, &d| acc.checked_mul(d as usize + 1))
+        .unwrap_or(usize::MAX);
+    nbox.min(binomial(
+        bounds.dtot as usize + bounds.dv.len(),
+        bounds.dv.len(),
+    ))
+}
+
+fn grid(bounds: &Bounds) -> Result<Grid> {
+    let nvars = bounds.dv.len();
+    let sizes: Vec<usize> = bounds.dv.iter().map(|&d| d as usize + 1).collect();
+    let nbox = sizes
+        .iter()
+        .try_fold(1usize, |acc, &s| acc.checked_mul(s))
+        .unwrap_or(usize::MAX);
+    let nsimplex = binomial(bounds.dtot as usize + nvars, nvars);
+    let simplex = nsimplex < nbox;
+    if nbox.min(nsimplex) > MAX_GRID_POINTS {
+        return Err(Error::Limit(
+            "matrix over Q(p): interpolation grid too large".into(),
+        ));
+    }
+    let points = if simplex {
+        simplex_points(nvars, bounds.dtot)
+    } else {
+        (0..nbox)
+            .map(|idx| {
+                let mut r = idx;
+                let mut e = vec![0u32; nvars];
+                for v in (0..nvars).rev() {
+                    e[v] = (r % sizes[v]) as u32;
+                    r /= sizes[v];
+                }
+                e
+            })
+            .collect()
+    };
+    Ok(Grid {
+        points,
+        simplex,
+        sizes,
+        dtot: bounds.dtot,
+    })
+}
+
+/// The `nout` polynomials whose values at each point are `f(prime, B(point))` (see the
+/// module docs); `Ok(None)` when `f` kept failing (`None`) on three shifted grids of a prime.
+///
+/// # Errors
+/// `Limit` when the grid exceeds [`MAX_GRID_POINTS`].
+pub fn interpolate_zp<F>(
+    nvars: usize,
+    b: &[MPoly],
+    bounds: &Bounds,
+    nout: usize,
+    shifted: bool,
+    f: F,
+) -> Result<Option<Vec<MPoly>>>
+where
+    F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
+{
+    let g = grid(bounds)?;
+    let nprimes = ((bounds.coef.bits() + 2) / 61 + 1) as usize;
+    let primes: Vec<Prime> = (0..nprimes).map(nth_prime).collect();
+    let entries: Vec<Vec<(Vec<u32>, &BigInt)>> = b
+        .iter()
+        .map(|e| e.terms().iter().map(|(m, c)| (e.exps(*m), c)).collect())
+        .collect();
+    let mut rng = SplitMix64(0x5eed ^ (nvars as u64));
+    let mut images: Vec<Vec<Vec<u64>>> = Vec::with_capacity(nprimes);
+    for pr in &primes {
+        let mut done = None;
+        for attempt in 0..3 {
+            let shifts: Vec<u64> = (0..nvars)
+                .map(|_| {
+                    if shifted || attempt > 0 {
+                        rng.next_u64() % pr.p
+                    } else {
+                        0
+                    }
+                })
+                .collect();
+            if let Some(v) = images_mod_p(pr, &g, &entries, &shifts, nout, &f) {
+                done = Some(v);
+                break;
+            }
+        }
+        let Some(v) = done else {
+            return Ok(None);
+        };
+        images.push(v);
+    }
+    let crt = Crt::new(&primes);
+    let mut out = Vec::with_capacity(nout);
+    for k in 0..nout {
+        let mut terms = Vec::new();
+        for (idx, e) in g.points.iter().enumerate() {
+            let c = crt.lift(|j| images[j][k][idx]);
+            if !c.is_zero() {
+                terms.push((crate::mpoly::pack(nvars, e), c));
+            }
+        }
+        out.push(MPoly::from_terms(nvars, terms));
+    }
+    Ok(Some(out))
+}
+
+/// Per prime: the coefficients (indexed like the grid points) of every output.
+fn images_mod_p<F>(
+    pr: &Prime,
+    g: &Grid,
+    entries: &[Vec<(Vec<u32>, &BigInt)>],
+    shifts: &[u64],
+    nout: usize,
+    f: &F,
+) -> Option<Vec<Vec<u64>>>
+where
+    F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
+{
+    let nvars = shifts.len();
+    let red: Vec<Vec<(&[u32], u64)>> = entries
+        .iter()
+        .map(|e| {
+            e.iter()
+                .map(|(x, c)| (x.as_slice(), reduce(pr, c)))
+                .collect()
+        })
+        .collect();
+    let maxd = entries
+        .iter()
+        .flatten()
+        .flat_map(|(x, _)| x.iter().copied())
+        .max()
+        .unwrap_or(0) as usize;
+    let maxs = (g.dtot as usize + 1).max(g.sizes.iter().copied().max().unwrap_or(1));
+    // pw[v][t][e] = (shift_v + t)^e
+    let pw: Vec<Vec<Vec<u64>>> = shifts
+        .iter()
+        .map(|&c| {
+            (0..maxs)
+                .map(|t| {
+                    let x = pr.add(c, t as u64 % pr.p);
+                    let mut v = vec![1u64; maxd + 1];
+                    for e in 1..=maxd {
+                        v[e] = pr.mul(v[e - 1], x);
+                    }
+                    v
+                })
+                .collect()
+        })
+        .collect();
+    let npts = g.points.len();
+    let mut vals = vec![vec![0u64; npts]; nout];
+    let mut a = vec![0u64; entries.len()];
+    for (idx, point) in g.points.iter().enumerate() {
+        for (slot, e) in a.iter_mut().zip(&red) {
+            let mut s = 0u64;
+            for (x, c) in e {
+                let mut t = *c;
+                for v in 0..nvars {
+                    if x[v] > 0 {
+                        t = pr.mul(t, pw[v][point[v] as usize][x[v] as usize]);
+                    }
+                }
+                s = pr.add(s, t);
+            }
+            *slot = s;
+        }
+        let out = f(pr, &mut a)?;
+        for (k, c) in out.into_iter().enumerate() {
+            vals[k][idx] = c;
+        }
+    }
+    if g.simplex {
+        let lines = lower_set_lines(&g.points, nvars);
+        let invs = small_inverses(pr, g.dtot as usize + 1);
+        let mut buf = Vec::new();
+        for v in vals.iter_mut() {
+            interpolate_lower_set(pr, v, &lines, &invs, shifts, &mut buf);
+        }
+    } else {
+        for v in vals.iter_mut() {
+            interpolate_tensor(pr, v, &g.sizes, shifts);
+        }
+    }
+    Some(vals)
+}
+
+fn binomial(n: usize, k: usize) -> usize {
+    let mut r: usize = 1;
+    for i in 0..k {
+        r = match r.checked_mul(n - i) {
+            Some(x) => x / (i + 1),
+            None => return usize::MAX,
+        };
+    }
+    r
+}
+
+/// All exponent vectors of `k` entries with sum at most `d`.
+fn simplex_points(k: usize, d: u32) -> Vec<Vec<u32>> {
+    if k == 0 {
+        return vec![Vec::new()];
+    }
+    let mut out = Vec::new();
+    for head in simplex_points(k - 1, d) {
+        let used: u32 = head.iter().sum();
+        for last in 0..=d - used {
+            let mut e = head.clone();
+            e.push(last);
+            out.push(e);
+        }
+    }
+    out
+}
+
+fn small_inverses(pr: &Prime, m: usize) -> Vec<u64> {
+    (0..=m)
+        .map(|j| {
+            if j == 0 {
+                0
+            } else {
+                pr.inv(j as u64).expect("small")
+            }
+        })
+        .collect()
+}
+
+/// For each axis $v$, the lines of a lower set of exponent vectors along $v$: the point
+/// indices with $e_v = 0, 1, \dots$ and the other coordinates fixed, for every start point
+/// with $e_v = 0$.
+fn lower_set_lines(points: &[Vec<u32>], nvars: usize) -> Vec<Vec<Vec<usize>>> {
+    let index: HashMap<&[u32], usize> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (p.as_slice(), i))
+        .collect();
+    (0..nvars)
+        .map(|v| {
+            let mut lines = Vec::new();
+            for (i, p) in points.iter().enumerate() {
+                if p[v] != 0 {
+                    continue;
+                }
+                let mut line = vec![i];
+                let mut key = p.clone();
+                loop {
+                    key[v] += 1;
+                    match index.get(key.as_slice()) {
+                        Some(&j) => line.push(j),
+                        None => break,
+                    }
+                }
+                if line.len() > 1 {
+                    lines.push(line);
+                }
+            }
+            lines
+        })
+        .collect()
+}
+
+/// Interpolation on a lower set of exponent vectors (here the simplex $\{e : |e| \le D\}$,
+/// node $e_v$ of axis $v$ at $c_v + e_v$): the Newton coefficients by divided differences
+/// along every axis in turn (on a lower set the Newton basis $\prod_v \prod_{t < e_v}
+/// (x_v - c_v - t)$ is triangular axis by axis), then the change to monomials along every
+/// axis in turn. Values in, coefficients out (at the index of their exponent vector).
+fn interpolate_lower_set(
+    pr: &Prime,
+    vals: &mut [u64],
+    lines: &[Vec<Vec<usize>>],
+    invs: &[u64],
+    shifts: &[u64],
+    buf: &mut Vec<u64>,
+) {
+    for axis in lines {
+        for line in axis {
+            buf.clear();
+            buf.extend(line.iter().map(|&i| vals[i]));
+            let m = buf.len();
+            for j in 1..m {
+                for i in (j..m).rev() {
+                    buf[i] = pr.mul(pr.sub(buf[i], buf[i - 1]), invs[j]);
+                }
+            }
+            for (&i, &x) in line.iter().zip(buf.iter()) {
+                vals[i] = x;
+            }
+        }
+    }
+    for (v, axis) in lines.iter().enumerate() {
+        for line in axis {
+            buf.clear();
+            buf.extend(line.iter().map(|&i| vals[i]));
+            newton_to_monomial(pr, buf, shifts[v]);
+            for (&i, &x) in line.iter().zip(buf.iter()) {
+                vals[i] = x;
+            }
+        }
+    }
+}
+
+/// Newton coefficients at the nodes $c, c + 1, \dots$ to monomial coefficients, in place.
+fn newton_to_monomial(pr: &Prime, c: &mut [u64], shift: u64) {
+    let m = c.len();
+    // p = c[m-1]; p = p*(x - c - i) + c[i]
+    let mut p = vec![0u64; m];
+    p[0] = c[m - 1];
+    for (deg, i) in (0..m - 1).rev().enumerate() {
+        let ni = pr.neg(pr.add(shift, i as u64 % pr.p));
+        for k in (0..=deg + 1).rev() {
+            let hi = if k > 0 { p[k - 1] } else { 0 };
+            let lo = if k <= deg { pr.mul(p[k], ni) } else { 0 };
+            p[k] = pr.add(hi, lo);
+        }
+        p[0] = pr.add(p[0], c[i]);
+    }
+    c.copy_from_slice(&p);
+}
+
+/// Replaces values on the grid $\{0..s_0-1\} \times \dots$ (last axis fastest; node $t$ of
+/// axis $v$ is $c_v + t$) by the coefficients of the interpolating polynomial (same layout,
+/// exponent = index).
+fn interpolate_tensor(pr: &Prime, v: &mut [u64], sizes: &[usize], shifts: &[u64]) {
+    let total = v.len();
+    let mut stride = 1;
+    for ax in (0..sizes.len()).rev() {
+        let s = sizes[ax];
+        if s > 1 {
+            let invs = small_inverses(pr, s);
+            let block = stride * s;
+            let mut line = vec![0u64; s];
+            for base in (0..total).step_by(block) {
+                for off in 0..stride {
+                    for (t, l) in line.iter_mut().enumerate() {
+                        *l = v[base + off + t * stride];
+                    }
+                    interpolate_line(pr, &mut line, &invs, shifts[ax]);
+                    for (t, l) in line.iter().enumerate() {
+                        v[base + off + t * stride] = *l;
+                    }
+                }
+            }
+        }
+        stride *= s;
+    }
+}
+
+/// Newton interpolation at the nodes $c, c + 1, \dots, c + m - 1$, then conversion to
+/// monomials.
+fn interpolate_line(pr: &Prime, c: &mut [u64], invs: &[u64], shift: u64) {
+    let m = c.len();
+    for j in 1..m {
+        for i in (j..m).rev() {
+            c[i] = pr.mul(pr.sub(c[i], c[i - 1]), invs[j]);
+        }
+    }
+    newton_to_monomial(pr, c, shift);
+}
