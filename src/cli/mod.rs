@@ -16,6 +16,7 @@ mod common;
 mod critical;
 mod float_cmds;
 mod float_compare;
+pub mod memory;
 mod pencil_cmds;
 pub mod plots;
 mod progress;
@@ -69,6 +70,10 @@ pub struct Cli {
     /// Upper bound on the wall time in seconds (a number > 0); exceeded: exit 2.
     #[arg(long, global = true, default_value_t = 600.0, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
     pub max_seconds: f64,
+    /// Memory budget in MiB (0: none). An allocation past it stops the command with one line
+    /// on stderr and exit 2 instead of exhausting the machine (see `exactlti::cli::memory`).
+    #[arg(long, global = true, default_value_t = memory::DEFAULT_MAX_MEMORY_MIB, value_name = "MIB")]
+    pub max_memory: u64,
     /// Keep these parameters as symbols (comma separated; alone: every parameter).
     #[arg(long, global = true, num_args = 0..=1, default_missing_value = "", value_name = "NAMES")]
     pub symbolic: Option<String>,
@@ -491,6 +496,7 @@ pub fn run(cli: Cli) -> i32 {
     let standalone = cli.standalone;
     let full = cli.full;
     let limit = cli.max_seconds;
+    memory::set_max_memory_mib(cli.max_memory);
     let (tx, rx) = mpsc::channel();
     let streams = format == Format::Text && matches!(cli.command, Command::Analyze { .. });
     let ctx = commands::RunContext {
