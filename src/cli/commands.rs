@@ -33,6 +33,9 @@ pub struct RunContext {
     pub events: super::budget::Events,
     /// `--full`.
     pub full: bool,
+    /// The format of stdout when a command may write its report there as it computes it
+    /// (long sweeps); `None` in process.
+    pub stdout: Option<super::Format>,
 }
 
 /// Dispatches a command with `--symbolic` / `--at` (see [`crate::io::symbolic`]).
@@ -46,6 +49,7 @@ pub fn execute_with(
         max_seconds: 1e7,
         events: None,
         full: false,
+        stdout: None,
     };
     execute_ctx(cmd, symbolic, at, &ctx)
 }
@@ -103,7 +107,7 @@ pub fn execute_ctx(
             svg: svg.as_deref(),
             locus_svg: locus_svg.as_deref(),
             csv: csv.as_deref(),
-        }),
+        }, ctx.stdout),
         Command::Critical {
             file,
             param,

@@ -21,6 +21,7 @@ mod pencil_cmds;
 pub mod plots;
 mod progress;
 mod sweep;
+mod sweep_stream;
 mod symbolic;
 mod symbolic_jordan;
 
@@ -306,6 +307,8 @@ pub struct Outcome {
     pub float_disagrees: bool,
     /// The report is printed but `--max-seconds` cut part of it: exit 2 with this line.
     pub stopped: Option<String>,
+    /// The report was already written to stdout as it was computed (long sweeps).
+    pub streamed: bool,
 }
 
 impl Outcome {
@@ -316,6 +319,7 @@ impl Outcome {
             verified,
             float_disagrees: false,
             stopped: None,
+            streamed: false,
         }
     }
     /// A float-vs-exact report (`check`, ERA): `agree = false` exits 3.
@@ -325,6 +329,7 @@ impl Outcome {
             verified: true,
             float_disagrees: !agree,
             stopped: None,
+            streamed: false,
         }
     }
     /// A report without an exact check to fail (float results, tables, factorizations).
@@ -504,6 +509,7 @@ pub fn run(cli: Cli) -> i32 {
         max_seconds: limit,
         events: streams.then(|| tx.clone()),
         full,
+        stdout: Some(format),
     };
     let handle = std::thread::Builder::new()
         .stack_size(256 << 20)
@@ -570,7 +576,9 @@ fn finish(
 ) -> i32 {
     match r {
         Ok(out) => {
-            let written = if printer.streamed() {
+            let written = if out.streamed {
+                Ok(())
+            } else if printer.streamed() {
                 printer.rest(&out.report)
             } else {
                 write_stdout(&render_full(&out.report, format, standalone, printer.full))

@@ -5,7 +5,8 @@
 use super::{Failure, Outcome};
 use crate::report::plot::sweep::{root_locus_svg, sweep_svg};
 use crate::report::{Report, Value};
-use crate::study::{ParamFamily, sweep, sweep_values};
+use crate::study::{FamilyForm, ParamFamily, SweepResult, sweep, sweep_values};
+use super::sweep_stream::{CsvSink, Sink};
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -28,8 +29,27 @@ fn write(p: &Path, text: &str) -> Result<(), Failure> {
     })
 }
 
-/// Runs `sweep`.
-pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
+/// Parameter values computed per batch (each batch in parallel, then written out).
+const BATCH: usize = 4096;
+
+/// Sweeps with more points than this write their report row by row (`--format json|text` on
+/// stdout), so that memory does not grow with `--points`.
+pub const STREAM_POINTS: usize = 10_000;
+
+/// At most this many rows are kept for the plots (evenly spaced; the plots draw 1500).
+const PLOT_ROWS: usize = 15_000;
+
+/// The number of eigenvalues of the family (columns of the CSV).
+fn family_dim(fam: &ParamFamily) -> usize {
+    match &fam.form {
+        FamilyForm::First { a, .. } => a.len(),
+        FamilyForm::Second { m, .. } => 2 * m.len(),
+    }
+}
+
+/// Runs `sweep`; `stream`: the output format when the report may be written to stdout row by
+/// row (the command line; `None` in process).
+pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, Failure> {
     if !(a.from.is_finite()
         && a.to.is_finite()
         && a.from <= a.to
@@ -43,9 +63,28 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
             ),
         });
     }
+    let stream = stream.filter(|_| a.points > STREAM_POINTS);
+    if stream == Some(super::Format::Latex) {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "sweep: --format latex takes at most {STREAM_POINTS} points (got {}; use --format json or --csv)",
+                a.points
+            ),
+        });
+    }
     crate::io::read_system_file(a.file)?; // the file is a valid system
     let fam = ParamFamily::from_file(a.file, a.param)?;
     let values = sweep_values(a.from, a.to, a.points);
+    let title = format!("sweep of {} over [{}, {}]", a.param, a.from, a.to);
+    let mut sink = match stream {
+        Some(f) => Some(Sink::start(f == super::Format::Json, &title, a.param, &values)?),
+        None => None,
+    };
+    let mut csv = match a.csv {
+        Some(p) => Some(CsvSink::start(p, a.param, family_dim(&fam))?),
+        None => None,
+    };
     let bar = std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::new(values.len() as u64);
         b.set_style(
@@ -56,27 +95,67 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
         );
         b
     });
-    let tick = |k: usize| {
-        if let Some(b) = &bar
-            && k.is_multiple_of(64)
-        {
-            b.set_position(k as u64);
-        }
+    let keep_every = values.len().div_ceil(PLOT_ROWS).max(1);
+    let plots = a.svg.is_some() || a.locus_svg.is_some();
+    let mut kept = SweepResult {
+        param: a.param.to_string(),
+        values: vec![],
+        eigenvalues: vec![],
     };
-    let sw = sweep(&fam, &values, Some(&tick))?;
+    let mut stable = 0usize;
+    for (b, batch) in values.chunks(BATCH).enumerate() {
+        let offset = b * BATCH;
+        let tick = |k: usize| {
+            if let Some(bar) = &bar
+                && k.is_multiple_of(64)
+            {
+                bar.set_position((offset + k) as u64);
+            }
+        };
+        let sw = sweep(&fam, batch, Some(&tick))?;
+        for (k, (v, ev)) in batch.iter().zip(sw.eigenvalues).enumerate() {
+            let i = offset + k;
+            if !ev.is_empty() && ev.iter().all(|z| z.re < 0.0) {
+                stable += 1;
+            }
+            if let Some(c) = csv.as_mut() {
+                c.row(*v, &ev)?;
+            }
+            if let Some(s) = sink.as_mut() {
+                s.row(&ev)?;
+            }
+            let for_plot = plots && (i % keep_every == 0 || i + 1 == values.len());
+            if sink.is_none() || for_plot {
+                kept.values.push(*v);
+                kept.eigenvalues.push(ev);
+            }
+        }
+    }
     if let Some(b) = bar {
         b.finish_and_clear();
+    }
+    if let Some(c) = csv {
+        c.finish()?;
     }
     let name = fam
         .name
         .clone()
         .unwrap_or_else(|| a.file.display().to_string());
     let xlabel = format!("{} (parameter)", a.param);
+    let drawn = match (plots, sink.is_none() && values.len() > PLOT_ROWS) {
+        (false, _) => SweepResult {
+            param: String::new(),
+            values: vec![],
+            eigenvalues: vec![],
+        },
+        (true, true) => thin(&kept, keep_every),
+        (true, false) => kept.clone(),
+    };
     if let Some(p) = a.svg {
         write(
             p,
             &sweep_svg(
-                &sw,
+                &drawn,
                 &format!("{name}: eigenvalues against {}", a.param),
                 &xlabel,
                 &[],
@@ -86,25 +165,23 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
     if let Some(p) = a.locus_svg {
         write(
             p,
-            &root_locus_svg(&sw, &format!("{name}: root locus in {}", a.param)),
+            &root_locus_svg(&drawn, &format!("{name}: root locus in {}", a.param)),
         )?;
     }
-    if let Some(p) = a.csv {
-        write(p, &sw.to_csv())?;
+    if let Some(s) = sink {
+        s.finish(stable)?;
+        let mut out = Outcome::plain(Report::titled(title));
+        out.streamed = true;
+        return Ok(out);
     }
-    let stable = sw
-        .eigenvalues
-        .iter()
-        .filter(|ev| !ev.is_empty() && ev.iter().all(|z| z.re < 0.0))
-        .count();
-    let r = Report::titled(format!("sweep of {} over [{}, {}]", a.param, a.from, a.to))
+    let r = Report::titled(title)
         .str("param", a.param)
         .int("points", values.len())
         .int("stable_points", stable)
         .list("values", values.iter().map(|v| Value::Float(*v)).collect())
         .list(
             "eigenvalues_approx",
-            sw.eigenvalues
+            kept.eigenvalues
                 .iter()
                 .map(|ev| {
                     Value::List(
@@ -116,4 +193,15 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
                 .collect(),
         );
     Ok(Outcome::plain(r))
+}
+
+/// Every `step`-th row of `sw` and its last row (the rows drawn).
+fn thin(sw: &SweepResult, step: usize) -> SweepResult {
+    let n = sw.values.len();
+    let keep = |i: &usize| i % step == 0 || i + 1 == n;
+    SweepResult {
+        param: sw.param.clone(),
+        values: (0..n).filter(keep).map(|i| sw.values[i]).collect(),
+        eigenvalues: (0..n).filter(keep).map(|i| sw.eigenvalues[i].clone()).collect(),
+    }
 }
