@@ -358,10 +358,13 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
         }
         super::PolyCmd::Roots { expr, digits } => {
             let p = parse(expr)?;
-            if *digits == 0 || *digits > 10_000 {
+            if *digits == 0 || *digits > super::args::MAX_DIGITS {
                 return Err(Failure {
                     code: 2,
-                    message: format!("--digits must be between 1 and 10000 (got {digits})"),
+                    message: format!(
+                        "--digits must be between 1 and {} (got {digits})",
+                        super::args::MAX_DIGITS
+                    ),
                 });
             }
             Ok(sections::roots_report(&p, *digits)?)

@@ -251,7 +251,7 @@ pub enum Command {
         /// Upper end of the interval: an exact number (decimal or fraction).
         #[arg(long, allow_hyphen_values = true)]
         to: String,
-        /// Correct digits of the displayed critical values.
+        /// Correct digits of the displayed critical values (1 to 200).
         #[arg(long, default_value_t = 20)]
         digits: usize,
     },
