@@ -34,7 +34,9 @@ static TRIPPED: AtomicBool = AtomicBool::new(false);
 
 /// Sets the budget (MiB); 0 or a value beyond the address space means no budget.
 pub fn set_max_memory_mib(mib: u64) {
-    let bytes = mib.checked_mul(1 << 20).and_then(|b| usize::try_from(b).ok());
+    let bytes = mib
+        .checked_mul(1 << 20)
+        .and_then(|b| usize::try_from(b).ok());
     LIMIT.store(
         bytes.filter(|&b| b > 0).unwrap_or(usize::MAX),
         Ordering::Relaxed,

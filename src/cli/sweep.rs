@@ -2,11 +2,11 @@
 //! [--csv F]`: float eigenvalues of $A(v)$ along the parameter, in parallel, with a progress
 //! bar when stderr is a terminal.
 
+use super::sweep_stream::{CsvSink, Sink};
 use super::{Failure, Outcome};
 use crate::report::plot::sweep::{root_locus_svg, sweep_svg};
 use crate::report::{Report, Value};
 use crate::study::{FamilyForm, ParamFamily, SweepResult, sweep, sweep_values};
-use super::sweep_stream::{CsvSink, Sink};
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -78,7 +78,12 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
     let values = sweep_values(a.from, a.to, a.points);
     let title = format!("sweep of {} over [{}, {}]", a.param, a.from, a.to);
     let mut sink = match stream {
-        Some(f) => Some(Sink::start(f == super::Format::Json, &title, a.param, &values)?),
+        Some(f) => Some(Sink::start(
+            f == super::Format::Json,
+            &title,
+            a.param,
+            &values,
+        )?),
         None => None,
     };
     let mut csv = match a.csv {
@@ -202,6 +207,9 @@ fn thin(sw: &SweepResult, step: usize) -> SweepResult {
     SweepResult {
         param: sw.param.clone(),
         values: (0..n).filter(keep).map(|i| sw.values[i]).collect(),
-        eigenvalues: (0..n).filter(keep).map(|i| sw.eigenvalues[i].clone()).collect(),
+        eigenvalues: (0..n)
+            .filter(keep)
+            .map(|i| sw.eigenvalues[i].clone())
+            .collect(),
     }
 }

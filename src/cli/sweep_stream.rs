@@ -58,7 +58,11 @@ impl Sink {
         s.put(&head)?;
         for (i, v) in values.iter().enumerate() {
             let sep = if i == 0 { "" } else { ", " };
-            let x = if json { json_num(*v) } else { format!("{v:.10}") };
+            let x = if json {
+                json_num(*v)
+            } else {
+                format!("{v:.10}")
+            };
             s.put(&format!("{sep}{x}"))?;
         }
         s.put(if json {

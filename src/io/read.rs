@@ -81,9 +81,7 @@ fn read_once(path: &Path, cap: u64) -> Result<String, InputError> {
     let f: Box<dyn Read> = if path.as_os_str() == "-" {
         Box::new(std::io::stdin())
     } else {
-        Box::new(
-            std::fs::File::open(path).map_err(|e| fail(format!("cannot read the file: {e}")))?,
-        )
+        Box::new(std::fs::File::open(path).map_err(|e| fail(format!("cannot read the file: {e}")))?)
     };
     let mut bytes = Vec::new();
     f.take(cap + 1)
