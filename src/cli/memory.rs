@@ -107,16 +107,16 @@ fn refuse(size: usize, by_system: bool) -> ! {
         len: 0,
     };
     let _ = if by_system {
-        write!(
+        writeln!(
             line,
-            "exactlti: out of memory: the system refused {:.0} MiB with {:.0} MiB in use (an address-space or memory limit); the problem is too large for this machine\n",
+            "exactlti: out of memory: the system refused {:.0} MiB with {:.0} MiB in use (an address-space or memory limit); the problem is too large for this machine",
             mib(size),
             mib(in_use())
         )
     } else {
-        write!(
+        writeln!(
             line,
-            "exactlti: out of memory: the computation needs more than --max-memory {:.0} MiB ({:.0} MiB in use, {:.0} MiB more asked for); raise --max-memory or give a smaller problem\n",
+            "exactlti: out of memory: the computation needs more than --max-memory {:.0} MiB ({:.0} MiB in use, {:.0} MiB more asked for); raise --max-memory or give a smaller problem",
             mib(limit),
             mib(in_use()),
             mib(size)

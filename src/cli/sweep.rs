@@ -129,7 +129,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
             if let Some(s) = sink.as_mut() {
                 s.row(&ev)?;
             }
-            let for_plot = plots && (i % keep_every == 0 || i + 1 == values.len());
+            let for_plot = plots && (i.is_multiple_of(keep_every) || i + 1 == values.len());
             if sink.is_none() || for_plot {
                 kept.values.push(*v);
                 kept.eigenvalues.push(ev);
@@ -203,7 +203,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
 /// Every `step`-th row of `sw` and its last row (the rows drawn).
 fn thin(sw: &SweepResult, step: usize) -> SweepResult {
     let n = sw.values.len();
-    let keep = |i: &usize| i % step == 0 || i + 1 == n;
+    let keep = |i: &usize| i.is_multiple_of(step) || i + 1 == n;
     SweepResult {
         param: sw.param.clone(),
         values: (0..n).filter(keep).map(|i| sw.values[i]).collect(),
