@@ -63,6 +63,7 @@ mod matrix_modular;
 mod matrix_quadratic;
 #[path = "mechanical.rs"]
 mod mechanical;
+mod memory_budget;
 #[path = "mpoly.rs"]
 mod mpoly;
 #[path = "mpoly_gcd.rs"]
