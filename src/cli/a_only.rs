@@ -175,7 +175,7 @@ pub(super) fn descriptor_jordan<K: Field + 'static>(
     out.report.push(
         "note",
         Value::Str(format!(
-            "descriptor system: J is the Jordan form of the finite dynamics of sE - A ({} finite eigenvalues; A here is the standard form's, {}), A T = T J for that A; infinite_blocks are the sizes of the Jordan blocks at s = infinity ({} states, size 1 = non-dynamic mode)",
+            "descriptor system: J is the Jordan form of the finite part of the pencil sE - A ({} finite eigenvalues), computed on the finite part's A ({}); A T = T J holds for that A. infinite_blocks: sizes of the Jordan blocks at s = infinity ({} states; size 1 = non-dynamic mode)",
             af.nrows(),
             method.name(),
             ks.infinite_order()

@@ -74,7 +74,8 @@ fn complement(n: usize, idx: &[usize]) -> Vec<usize> {
 
 /// Eliminates the states `cols` with the equations `rows` ($X = A_{rows, cols}$ invertible,
 /// rows and columns of $E$ there zero): the formulas of the module docs. Also returns
-/// $-X^{-1}A_{IS}$ (the eliminated states in terms of the kept ones when $u = 0$).
+/// $-X^{-1}A_{IS}$ and $-X^{-1}B_I$: the eliminated states are
+/// $z_J = -X^{-1}A_{IS}z_S - X^{-1}B_Iu$.
 ///
 /// # Errors
 /// `Singular` when $X$ is not invertible.
@@ -82,7 +83,7 @@ pub(crate) fn eliminate<K: Field>(
     sys: &Descriptor<K>,
     rows: &[usize],
     cols: &[usize],
-) -> Result<(Descriptor<K>, Matrix<K>)> {
+) -> Result<(Descriptor<K>, Matrix<K>, Matrix<K>)> {
     let n = sys.nstates();
     let (rr, ss) = (complement(n, rows), complement(n, cols));
     let a_r = sys.a.select_rows(&rr);
@@ -99,7 +100,7 @@ pub(crate) fn eliminate<K: Field>(
         c: &sys.c.select_cols(&ss) - &(&c_j * &xa),
         d: &sys.d - &(&c_j * &xb),
     };
-    Ok((out, -&xa))
+    Ok((out, -&xa, -&xb))
 }
 
 /// The elimination of the module docs on a compressed system: the rows and states of a
@@ -124,6 +125,6 @@ pub(crate) fn remove_nondynamic<K: Field>(sys: &Descriptor<K>) -> Result<(Descri
     if rows.is_empty() {
         return Ok((sys.clone(), 0));
     }
-    let (out, _) = eliminate(&c.system, &rows, &cols)?;
+    let (out, _, _) = eliminate(&c.system, &rows, &cols)?;
     Ok((out, rows.len()))
 }
