@@ -356,7 +356,12 @@ fn minimal_descriptor_order_never_exceeds_the_input() {
     let mut reduced = 0;
     for (kind, s) in sample(0x22_07, crate::common::iters(85)) {
         let m = minimal_descriptor(&s).unwrap();
-        assert!(m.order <= s.nstates(), "{kind:?}: {} > {}", m.order, s.nstates());
+        assert!(
+            m.order <= s.nstates(),
+            "{kind:?}: {} > {}",
+            m.order,
+            s.nstates()
+        );
         assert!(m.order <= m.irreducible_order && m.irreducible_order <= s.nstates());
         assert!(m.verified, "{kind:?}: {s:?}");
         assert!(same_tf(&s, &m.system), "{kind:?}");
@@ -372,7 +377,9 @@ fn minimal_descriptor_order_never_exceeds_the_input() {
 fn published_minimal_and_irreducible_orders() {
     use exactlti::qmat;
     let shift = |n: usize, k: usize| {
-        Matrix::from_fn(Q, n, n, |i, j| Rational::from_integer(i64::from(j == i + k).into()))
+        Matrix::from_fn(Q, n, n, |i, j| {
+            Rational::from_integer(i64::from(j == i + k).into())
+        })
     };
     // De Teran, Dopico, Mackey (ELA 2009), G = [[s^2, s], [s, 1]]: minimal 3, irreducible 4
     let dtdm = Descriptor::new(
@@ -457,7 +464,10 @@ mod cli {
             let g = num_complex::Complex::new(1.0, 0.0) / den;
             let z = &v["response"][k][0][0];
             let got = num_complex::Complex::new(z[0].as_f64().unwrap(), z[1].as_f64().unwrap());
-            assert!((got - g).norm() <= 1e-12 * g.norm(), "f = {f}: {got} vs {g}");
+            assert!(
+                (got - g).norm() <= 1e-12 * g.norm(),
+                "f = {f}: {got} vs {g}"
+            );
         }
     }
 
@@ -472,24 +482,43 @@ mod cli {
         let p = temp_file("descr", "dtdm.json", DTDM);
         let (code, v, err) = json_of(&["jordan", p.to_str().unwrap(), "--format", "json"]);
         assert_eq!(code, 0, "{err}");
-        assert_eq!((&v["n"], &v["infinite_blocks"]), (&json!(0), &json!([3, 3])));
+        assert_eq!(
+            (&v["n"], &v["infinite_blocks"]),
+            (&json!(0), &json!([3, 3]))
+        );
         // improper and singular pencils: the finite part, or a refusal with the reason
         let (code, v, err) = json_of(&["jordan", "tests/data/improper_s.json", "--format", "json"]);
         assert_eq!(code, 0, "{err}");
-        assert_eq!((&v["n"], &v["infinite_blocks"]), (&json!(1), &json!([1, 2])));
-        let sing = r#"{"E": [[1, 0], [0, 0]], "A": [[1, 0], [0, 0]], "B": [[1], [0]], "C": [[1, 0]]}"#;
+        assert_eq!(
+            (&v["n"], &v["infinite_blocks"]),
+            (&json!(1), &json!([1, 2]))
+        );
+        let sing =
+            r#"{"E": [[1, 0], [0, 0]], "A": [[1, 0], [0, 0]], "B": [[1], [0]], "C": [[1, 0]]}"#;
         let p = temp_file("descr", "sing.json", sing);
         let (code, _, err) = run(&["jordan", p.to_str().unwrap()]);
         assert_eq!(code, 2, "{err}");
-        assert!(err.contains("singular") && err.lines().count() == 1, "{err}");
+        assert!(
+            err.contains("singular") && err.lines().count() == 1,
+            "{err}"
+        );
     }
 
     #[test]
     fn tf_and_minreal_of_the_published_example_exit_0() {
         let p = temp_file("descr", "dtdm2.json", DTDM);
-        let (code, v, err) = json_of(&["minreal", "--descriptor", p.to_str().unwrap(), "--format", "json"]);
+        let (code, v, err) = json_of(&[
+            "minreal",
+            "--descriptor",
+            p.to_str().unwrap(),
+            "--format",
+            "json",
+        ]);
         assert_eq!(code, 0, "{err}");
-        assert_eq!((&v["order"], &v["irreducible_order"]), (&json!(3), &json!(4)));
+        assert_eq!(
+            (&v["order"], &v["irreducible_order"]),
+            (&json!(3), &json!(4))
+        );
         let (code, v, err) = json_of(&["tf", p.to_str().unwrap(), "--format", "json"]);
         assert_eq!(code, 0, "{err}");
         assert_eq!(v["verified"], json!(true));
@@ -509,7 +538,10 @@ fn bicycle_standard_form_is_the_hand_elimination() {
         e4.set(3, 0, Rational::from_integer(1.into()));
         let e11 = desc.e.submatrix(0, 6, 0, 6);
         assert_eq!(f.system.b, &e11.inverse().unwrap() * &e4);
-        assert_eq!(f.system.a, &e11.inverse().unwrap() * &desc.a.submatrix(0, 6, 0, 6));
+        assert_eq!(
+            f.system.a,
+            &e11.inverse().unwrap() * &desc.a.submatrix(0, 6, 0, 6)
+        );
         assert_eq!(f.v1.submatrix(0, 6, 0, 6), Matrix::identity(Q, 6));
         assert!(f.v1.submatrix(6, 7, 0, 6).is_zero());
     }

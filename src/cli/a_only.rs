@@ -171,7 +171,8 @@ pub(super) fn descriptor_jordan<K: Field + 'static>(
     let (af, method) = crate::realization::finite_dynamics(d).map_err(e)?;
     let mut out = a_command(cmd, &af, path).expect("jordan is an A-only command")?;
     let blocks = ks.infinite_divisors.iter().map(|&k| Value::Int(k as i64));
-    out.report.push("infinite_blocks", Value::List(blocks.collect()));
+    out.report
+        .push("infinite_blocks", Value::List(blocks.collect()));
     out.report.push(
         "note",
         Value::Str(format!(
@@ -187,7 +188,10 @@ pub(super) fn descriptor_jordan<K: Field + 'static>(
 
 /// `jordan` of a file with `E` whose system the ordinary loader refuses (improper or
 /// singular): [`descriptor_jordan`] on the file read as a descriptor system.
-pub(super) fn descriptor_jordan_path(cmd: &Command, path: &Path) -> Option<Result<Outcome, Failure>> {
+pub(super) fn descriptor_jordan_path(
+    cmd: &Command,
+    path: &Path,
+) -> Option<Result<Outcome, Failure>> {
     struct Visit<'a>(&'a Command, &'a Path);
     impl crate::io::load_descriptor::DescriptorVisitor for Visit<'_> {
         type Output = Result<Outcome, Failure>;

@@ -30,10 +30,10 @@
 //! $C(sE - A)^{-1}B + D$ exactly ([`super::weierstrass::same_transfer`], agreement at more
 //! rational points than the degree of the difference allows).
 
+use super::weierstrass::same_transfer;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
-use super::weierstrass::same_transfer;
 use crate::system::{Descriptor, StateSpace};
 
 /// The standard form of a descriptor system.

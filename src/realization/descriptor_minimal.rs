@@ -16,13 +16,17 @@
 //!    irreducible realization without non-dynamic modes has least order
 //!    (Verghese-Lévy-Kailath 1981).
 //!
+//! When the realization of the shifted sequence $(0, P_1, \dots, P_q)$ with $D = P_0$ (the
+//! constant of the polynomial part) has the same order, it is preferred (same least order,
+//! $D$ is then $G$'s constant at infinity).
+//!
 //! Both steps only remove states, so the order never exceeds the input's. The result is
 //! checked exactly: same transfer matrix, finite part controllable and observable,
 //! $\mathrm{rank}[E, B] = \mathrm{rank}[E; C] = n$ and $A\ker E \subseteq \mathrm{im}\,E$.
 //!
-//! (Realizing the shifted sequence $(0, P_1, \dots, P_q)$ of the polynomial part instead,
-//! as an earlier version did, fixes $C_rB_r = 0$ and can need more states than the input:
-//! $[[s^2, s], [s, 1]]$ from De Terán-Dopico-Mackey has minimal order 3, that gave 4.)
+//! (Realizing only the shifted sequence, as an earlier version did, fixes $C_rB_r = 0$ and
+//! can need more states than the input: $[[s^2, s], [s, 1]]$ from De Terán-Dopico-Mackey
+//! has minimal order 3, that gave 4.)
 
 use super::controllability::{is_controllable, is_observable};
 use super::descriptor_elim::remove_nondynamic;
@@ -69,6 +73,37 @@ fn assemble<K: Field>(fin: &StateSpace<K>, inf: &Descriptor<K>) -> Result<Descri
     )
 }
 
+/// A realization of the infinite part with $D = P_0$: a minimal realization $(N_m, B_z, C_z)$
+/// of the Markov sequence $(0, P_1, \dots, P_q)$ (as the system $w' = u$, $x' = -Nx - NBw$,
+/// $y = C_\infty x$), $E = N_m$, $A = I$, $C = -C_z$. It fixes $C_zB_z = 0$, so its order can
+/// exceed the minimal one; [`minimal_descriptor`] takes it only at the minimal order, where it
+/// shows the constant of the polynomial part as $D$.
+fn shifted_sequence<K: Field>(
+    n: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    p0: &Matrix<K>,
+) -> Result<Descriptor<K>> {
+    let fld = n.field().clone();
+    let (p, m) = p0.shape();
+    let ni = n.nrows();
+    let a_aug = Matrix::block(
+        fld.clone(),
+        &[
+            vec![&-n, &-&(n * b)],
+            vec![
+                &Matrix::zeros(fld.clone(), m, ni),
+                &Matrix::zeros(fld.clone(), m, m),
+            ],
+        ],
+    )?;
+    let b_aug = Matrix::zeros(fld.clone(), ni, m).vstack(&Matrix::identity(fld.clone(), m))?;
+    let c_aug = c.hstack(&Matrix::zeros(fld.clone(), p, m))?;
+    let z = minimal_kalman(&StateSpace::new_strictly_proper(a_aug, b_aug, c_aug)?)?.system;
+    let k = z.nstates();
+    Descriptor::new(z.a, Matrix::identity(fld, k), z.b, -&z.c, p0.clone())
+}
+
 /// Minimal descriptor realization of a regular descriptor system (proper or not).
 ///
 /// # Errors
@@ -77,7 +112,8 @@ pub fn minimal_descriptor<K: Field>(sys: &Descriptor<K>) -> Result<DescriptorMin
     let split = weierstrass_split(sys)?;
     let fld = sys.a.field().clone();
     let fin = minimal_kalman(&split.finite)?.system;
-    let q = split.polynomial_part().len() - 1;
+    let poly = split.polynomial_part();
+    let q = poly.len() - 1;
     let tri =
         StateSpace::new_strictly_proper(split.n.clone(), split.b_inf.clone(), split.c_inf.clone())?;
     let red = minimal_kalman(&tri)?.system;
@@ -89,7 +125,12 @@ pub fn minimal_descriptor<K: Field>(sys: &Descriptor<K>) -> Result<DescriptorMin
         red.c.clone(),
         split.d.clone(),
     )?;
-    let (inf, _) = remove_nondynamic(&irreducible)?;
+    let (mut inf, _) = remove_nondynamic(&irreducible)?;
+    // the same order with D = P_0 (the constant of the polynomial part) when it exists
+    let shifted = shifted_sequence(&split.n, &split.b_inf, &split.c_inf, &poly[0])?;
+    if shifted.nstates() == inf.nstates() {
+        inf = shifted;
+    }
     let system = assemble(&fin, &inf)?;
     let verified = same_transfer(sys, &system)
         && is_controllable(&fin.a, &fin.b)

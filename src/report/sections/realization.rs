@@ -255,7 +255,10 @@ impl<K: Field> StandardForm<K> {
             .matrix("C", &self.system.c)
             .matrix("D", &self.system.d)
             .matrix("V1", &self.v1)
-            .str("V1_note", "the descriptor's states x = V1 z + (terms in u), z the states of A")
+            .str(
+                "V1_note",
+                "the descriptor's states x = V1 z + (terms in u), z the states of A",
+            )
             .bool("verified", self.verified)
     }
 }
