@@ -44,9 +44,9 @@ pub(crate) fn float_abcd<K: Field>(t: &Typed<K>, path: &Path) -> Result<FloatAbc
     }
 }
 
-/// The float frequency response at `freqs` (hertz): on the pencil, $C(j\omega E - A)^{-1}B
-/// + D$, for a file with `E` (never through the standard form, whose basis may be badly
-/// scaled), else on `sys` (the embedding of the standard system).
+/// The float frequency response at `freqs` (hertz). For a file with `E` on the pencil,
+/// $G(j\omega) = C(j\omega E - A)^{-1}B + D$, never through the standard form (whose basis
+/// may be badly scaled); else on `sys` (the embedding of the standard system).
 pub(crate) fn float_response<K: Field>(
     t: &Typed<K>,
     sys: &FloatAbcd,
