@@ -23,6 +23,8 @@ mod cli_options;
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
+#[path = "descriptor_class.rs"]
+mod descriptor_class;
 #[path = "display.rs"]
 mod display;
 #[path = "everyday.rs"]

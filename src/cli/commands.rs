@@ -168,6 +168,10 @@ impl SystemVisitor for FileCommand<'_> {
         let e = |err| with_path(path, err);
         let s = &t.ss;
         match self.cmd {
+            Command::Jordan { .. } if t.descriptor.is_some() => {
+                let d = t.descriptor.as_ref().expect("checked");
+                super::a_only::descriptor_jordan(self.cmd, d, path)
+            }
             Command::Jordan { .. } | Command::Linalg { .. } => {
                 a_command(self.cmd, &t.a_raw, path).expect("an A-only command")
             }
