@@ -127,7 +127,11 @@ fn main() {
 const SWEEP: &[(&str, &[usize], &[usize])] = &[
     ("rank", &[10, 25, 50, 100, 200], &[10, 25, 50, 100, 200]),
     ("rref", &[10, 25, 50, 100, 200], &[10, 25, 50, 100, 200]),
-    ("nullspace", &[10, 25, 50, 100, 200], &[10, 25, 50, 100, 200]),
+    (
+        "nullspace",
+        &[10, 25, 50, 100, 200],
+        &[10, 25, 50, 100, 200],
+    ),
     ("det", &[10, 25, 50, 100, 200], &[10, 25, 50, 100]),
     ("solve", &[10, 25, 50, 100, 200], &[10, 25, 50, 100]),
     ("inverse", &[10, 25, 50, 100], &[10, 25, 50]),
@@ -145,7 +149,11 @@ fn sweep_matrix(rat: bool, n: usize, deficient: bool) -> Vec<Rational> {
     let mut a: Vec<Rational> = (0..n * n)
         .map(|_| {
             let p = (g.next_u31() % 2_000_001) as i64 - 1_000_000;
-            let q = if rat { (g.next_u31() % 1_000_000) as i64 + 1 } else { 1 };
+            let q = if rat {
+                (g.next_u31() % 1_000_000) as i64 + 1
+            } else {
+                1
+            };
             Rational::new(p.into(), q.into())
         })
         .collect();

@@ -57,10 +57,10 @@ mod library_api;
 mod matrix_generic;
 #[path = "matrix_modular.rs"]
 mod matrix_modular;
-#[path = "matrix_rational.rs"]
-mod matrix_rational;
 #[path = "matrix_quadratic.rs"]
 mod matrix_quadratic;
+#[path = "matrix_rational.rs"]
+mod matrix_rational;
 #[path = "mechanical.rs"]
 mod mechanical;
 #[path = "mpoly.rs"]

@@ -74,7 +74,10 @@ fn check_rect(m: usize, n: usize, a: &[Rational], ctx: &str) {
     let ns = oq::nullspace_q(m, n, a);
     assert_eq!(ns.len() + piv.len(), n, "rank + nullity {ctx}");
     for v in &ns {
-        assert!(matmul(m, n, 1, a, v).iter().all(Zero::is_zero), "A v = 0 {ctx}");
+        assert!(
+            matmul(m, n, 1, a, v).iter().all(Zero::is_zero),
+            "A v = 0 {ctx}"
+        );
     }
     if let Some(rk) = direct::rank_if_full(m, n, a) {
         assert_eq!(rk, piv.len(), "full-rank test {ctx}");
@@ -91,11 +94,19 @@ fn check_square(n: usize, a: &[Rational], ctx: &str) {
     assert_eq!(cp, direct::charpoly_direct(n, a), "charpoly direct {ctx}");
     let hess = m.charpoly_hessenberg().unwrap();
     assert_eq!(cp, hess.coeffs(), "charpoly against Hessenberg {ctx}");
-    let sign = if n % 2 == 0 { det.clone() } else { -det.clone() };
+    let sign = if n.is_multiple_of(2) {
+        det.clone()
+    } else {
+        -det.clone()
+    };
     assert_eq!(cp[0], sign, "charpoly(0) = (-1)^n det {ctx}");
     let inv = oq::inverse_q(n, a);
     assert_eq!(inv, direct::inverse_direct(n, a), "inverse direct {ctx}");
-    assert_eq!(inv.is_none(), det.is_zero(), "singular iff no inverse {ctx}");
+    assert_eq!(
+        inv.is_none(),
+        det.is_zero(),
+        "singular iff no inverse {ctx}"
+    );
     if let Some(x) = &inv {
         let id = Matrix::<Q>::identity(Q, n);
         assert_eq!(matmul(n, n, n, a, x), id.as_slice(), "A A^-1 = I {ctx}");
@@ -125,7 +136,10 @@ fn examples_edge_shapes() {
     assert_eq!(direct::det_direct(0, &[]), Rational::one());
     assert_eq!(direct::charpoly_direct(0, &[]), vec![Rational::one()]);
     assert_eq!(direct::det_direct(1, &[qq(-3, 7)]), qq(-3, 7));
-    assert_eq!(direct::inverse_direct(1, &[qq(-3, 7)]), Some(vec![qq(-7, 3)]));
+    assert_eq!(
+        direct::inverse_direct(1, &[qq(-3, 7)]),
+        Some(vec![qq(-7, 3)])
+    );
     assert_eq!(direct::inverse_direct(1, &[Rational::zero()]), None);
     // 2x2 by hand: det [[1/2, 1/3], [1/5, 1/7]] = 1/14 - 1/15 = 1/210
     let a = [qq(1, 2), qq(1, 3), qq(1, 5), qq(1, 7)];

@@ -1,6 +1,14 @@
 //! Size dispatch of the $\mathbb{Q}$ kernels of [`crate::qkernels`] (the matrix-side choice
 //! of method, as SymPy's `_dm_rref_choose_method` and FLINT's `gr_mat` do).
 //!
+//! Larger inputs reduce the rational matrix itself modulo each prime
+//! ([`crate::qkernels::modular::direct`], issue 29: no row-wise denominator clearing, whose
+//! integer entries have $n \log_2 q$ bits on a matrix of fractions): determinant,
+//! characteristic polynomial, inverse, the full-rank shortcut of rank / RREF / null space
+//! (one image of rank $n$ proves them), and the minimal polynomial (a Krylov sequence of
+//! rank $n$ modulo a prime proves $\mu_A = \chi_A$, otherwise the multi-modular Krylov
+//! method of [`crate::qkernels::modular::minpoly`]).
+//!
 //! Small problems go to the fraction-free routines of [`crate::qkernels::fraction_free`]
 //! (Bareiss elimination, Berkowitz), which have no per-prime overhead: square matrices with
 //! $n \le$ [`SMALL_N`] and RREF inputs with $mn \le$ [`SMALL_MN`] (thresholds measured with
@@ -144,7 +152,8 @@ pub fn mul_q(
 }
 
 /// Solution of $AX = B$ (`a` is `m x n`, `b` is `m x k`): one particular solution `n x k`
-/// (free variables zero), or `None` when the system is inconsistent.
+/// (free variables zero), or `None` when the system is inconsistent. A nonsingular square
+/// $A$ takes [`direct::solve_direct`]; the others the RREF of $[A \mid B]$.
 ///
 /// # Panics
 /// When `a.len() != m * n` or `b.len() != m * k`.
@@ -157,6 +166,12 @@ pub fn solve_q(
 ) -> Option<Vec<Rational>> {
     check_len("solve_q", a.len(), m, n);
     check_len("solve_q", b.len(), m, k);
+    if m == n
+        && n > SMALL_N
+        && let Some(x) = direct::solve_direct(n, k, a, b)
+    {
+        return Some(x);
+    }
     let mut aug = Vec::with_capacity(m * (n + k));
     for i in 0..m {
         aug.extend_from_slice(&a[i * n..(i + 1) * n]);

@@ -13,7 +13,7 @@
 //! | [`det_direct`] | $\det A = \det(DA) / \Delta$ | Hadamard: $|\det DA| \le \prod_i d_i \|A_{i,:}\|_2$ |
 //! | [`charpoly_direct`] | $\det(xI - A)$ | $\Delta c_k \in \mathbb{Z}$, $|\Delta c_k| \le \Delta \binom{n}{k} \max_{|S| = k} \prod_{i \in S} \|A_{i,:}\|_2$ |
 //! | [`is_cyclic`] | whether $\mu_A = \chi_A$ (`false`: undecided) | a Krylov basis $v, \bar A v, \dots, \bar A^{n-1} v$ modulo $p$ |
-//! | [`inverse_direct`] | $A^{-1} = N / \delta$ or `None` | $(DA) N = \delta D$ checked modulo $M > 2\beta$ |
+//! | [`solve_direct`], [`inverse_direct`] | $A^{-1} B = N / \delta$ or `None` | $(DA) N = \delta DB$ checked modulo $M > 2\beta$ |
 //!
 //! The minimal-polynomial certificate: $\mu_A$ divides $\chi_A \in \mathbb{Z}_{(p)}[x]$ and is
 //! monic, so (Gauss's lemma over the valuation ring $\mathbb{Z}_{(p)}$) $\mu_A \in
@@ -26,9 +26,9 @@
 use super::charpoly::charpoly_mod_p;
 use super::crt::{CommonDenominator, Crt};
 use super::det::det_mod_p;
-use super::inverse::inverse_mod_p;
 use super::qimage::{RatMat, log2_int};
 use super::rank::rank_mod_p;
+use super::rref::rref_mod_p;
 use crate::field::Rational;
 use crate::qkernels::gcd;
 use crate::qkernels::intmat::primes_for_bits;
@@ -146,10 +146,9 @@ pub fn is_cyclic(n: usize, a: &[Rational]) -> bool {
         v = (0..n)
             .map(|i| {
                 let row = &img[i * n..(i + 1) * n];
-                let s: u128 = row
-                    .iter()
-                    .zip(&v)
-                    .fold(0u128, |s, (&x, &y)| (s + x as u128 * y as u128) % pr.p as u128);
+                let s: u128 = row.iter().zip(&v).fold(0u128, |s, (&x, &y)| {
+                    (s + x as u128 * y as u128) % pr.p as u128
+                });
                 s as u64
             })
             .collect();
@@ -157,24 +156,46 @@ pub fn is_cyclic(n: usize, a: &[Rational]) -> bool {
     rank_mod_p(&pr, n, n, &mut krylov) == n
 }
 
-/// $A^{-1}$ (`None` when $A$ is singular), reconstructed from the inverses of the images
-/// over one common denominator, output-sensitive: the reconstruction is tried when a few
-/// probe entries are stable between two checkpoints, and accepted only with the
-/// certificate of the module docs.
+/// $A^{-1}$ (`None` when $A$ is singular): [`solve_direct`] with $B = I$.
 ///
 /// # Panics
 /// When `a.len() != n * n`.
 pub fn inverse_direct(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
-    let rm = RatMat::new(n, n, a);
-    if n == 0 {
-        return Some(vec![]);
+    let mut id = vec![Rational::zero(); n * n];
+    (0..n).for_each(|i| id[i * n + i] = Rational::one());
+    solve_direct(n, n, a, &id)
+}
+
+/// $X = A^{-1} B$ for the `n x n` `a` and the `n x k` `b` (`None` when $A$ is singular),
+/// reconstructed from the solutions modulo each prime (Gauss–Jordan on $[\bar A \mid \bar
+/// B]$) over one common denominator, output-sensitive: the reconstruction is tried when a
+/// few probe entries are stable between two checkpoints, and accepted only with the
+/// certificate of the module docs ($D$ the row denominators of $[A \mid B]$).
+///
+/// # Panics
+/// When `a.len() != n * n` or `b.len() != n * k`.
+pub fn solve_direct(n: usize, k: usize, a: &[Rational], b: &[Rational]) -> Option<Vec<Rational>> {
+    assert_eq!(a.len(), n * n, "solve_direct: A is not n x n");
+    assert_eq!(b.len(), n * k, "solve_direct: B is not n x k");
+    let w = n + k;
+    let mut aug = Vec::with_capacity(n * w);
+    for i in 0..n {
+        aug.extend_from_slice(&a[i * n..(i + 1) * n]);
+        aug.extend_from_slice(&b[i * k..(i + 1) * k]);
     }
-    let cert = InverseCertificate::new(&rm);
-    let total = n * n;
+    let rm = RatMat::new(n, w, &aug);
+    let total = n * k;
+    if total == 0 {
+        let singular = n > 0 && det_direct(n, a).is_zero();
+        return (!singular).then(Vec::new);
+    }
+    let cert = SolveCertificate::new(&rm, n);
     let (mut used, mut imgs): (Vec<Prime>, Vec<Vec<u64>>) = (vec![], vec![]);
     let (mut next_check, mut last_probe, mut checked_det) = (1usize, None, false);
     for (pr, mut img) in images(&rm) {
-        if !inverse_mod_p(&pr, n, &mut img) {
+        let piv = rref_mod_p(&pr, n, w, &mut img);
+        // pivots strictly increase: they are 0..n exactly when the n-th one is n - 1
+        if piv.len() < n || piv[n - 1] != n - 1 {
             if !checked_det {
                 if det_direct(n, a).is_zero() {
                     return None;
@@ -183,7 +204,11 @@ pub fn inverse_direct(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
             }
             continue; // unlucky prime
         }
-        imgs.push(img);
+        imgs.push(
+            (0..n)
+                .flat_map(|i| img[i * w + n..(i + 1) * w].to_vec())
+                .collect(),
+        );
         used.push(pr);
         if used.len() < next_check {
             continue;
@@ -204,44 +229,57 @@ pub fn inverse_direct(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
         let Some(cd) = CommonDenominator::reconstruct(&crt, us) else {
             continue;
         };
-        if cert.holds(&crt, &cd) {
-            return Some(cd.nums.into_iter().map(|x| gcd::fraction(x, &cd.den)).collect());
+        match cert.needed_bits(&crt, &cd) {
+            None => {
+                return Some(
+                    cd.nums
+                        .into_iter()
+                        .map(|x| gcd::fraction(x, &cd.den))
+                        .collect(),
+                );
+            }
+            // the candidate is (very likely) right: wait until the modulus can certify it
+            Some(bits) => next_check = next_check.max(primes_for_bits(bits)),
         }
     }
     unreachable!("the prime sequence is endless")
 }
 
-/// The bound data of $(DA) N = \delta D$: $\max_i \sum_j |d_i a_{ij}|$ and $\max_i d_i$.
-struct InverseCertificate {
+/// The bound data of $(DA) N = \delta (DB)$: $\max_i \sum_j |d_i a_{ij}|$ and
+/// $\max_{ij} |d_i b_{ij}|$.
+struct SolveCertificate {
     max_row: BigInt,
-    max_d: BigInt,
+    max_b: BigInt,
 }
 
-impl InverseCertificate {
-    fn new(rm: &RatMat) -> Self {
+impl SolveCertificate {
+    fn new(rm: &RatMat, n: usize) -> Self {
         let dens = rm.row_dens();
+        let w = rm.n;
+        let scaled = |i: usize, x: &Rational| x.numer().abs() * (&dens[i] / x.denom());
         let max_row = (0..rm.m)
-            .map(|i| {
-                rm.a[i * rm.n..(i + 1) * rm.n]
-                    .iter()
-                    .map(|x| x.numer().abs() * (&dens[i] / x.denom()))
-                    .sum::<BigInt>()
-            })
+            .map(|i| (0..n).map(|j| scaled(i, &rm.a[i * w + j])).sum::<BigInt>())
             .max()
             .unwrap_or_default();
-        let max_d = dens.into_iter().max().unwrap_or_else(BigInt::one);
-        InverseCertificate { max_row, max_d }
+        let max_b = (0..rm.m)
+            .flat_map(|i| (n..w).map(move |j| (i, j)))
+            .map(|(i, j)| scaled(i, &rm.a[i * w + j]))
+            .max()
+            .unwrap_or_default();
+        SolveCertificate { max_row, max_b }
     }
 
-    /// $(DA) N \equiv \delta D$ modulo every prime used (by construction, $\delta$ a unit
+    /// $(DA) N \equiv \delta (DB)$ modulo every prime used (by construction, $\delta$ a unit
     /// modulo each), and $M > 2\beta$ with $\beta = \max_i \sum_j |d_i a_{ij}| \max|N| +
-    /// \delta \max d_i$ bounding both sides: the identity holds over $\mathbb{Z}$.
-    fn holds(&self, crt: &Crt, cd: &CommonDenominator) -> bool {
-        if crt.primes().iter().any(|p| (&cd.den % p.p).is_zero()) {
-            return false;
-        }
+    /// \delta \max |d_i b_{ij}|$ bounding both sides: the identity holds over $\mathbb{Z}$.
+    /// `None` when the identity is certified, else $\log_2 2\beta$ (the modulus it needs).
+    fn needed_bits(&self, crt: &Crt, cd: &CommonDenominator) -> Option<f64> {
         let max_n = cd.nums.iter().map(|x| x.abs()).max().unwrap_or_default();
-        let beta = &self.max_row * max_n + &cd.den * &self.max_d;
-        *crt.modulus() > beta * 2u32
+        let beta2 = (&self.max_row * max_n + &cd.den * &self.max_b) * 2u32;
+        let unit = crt.primes().iter().all(|p| !(&cd.den % p.p).is_zero());
+        if unit && *crt.modulus() > beta2 {
+            return None;
+        }
+        Some(log2_int(&beta2))
     }
 }

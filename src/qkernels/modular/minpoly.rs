@@ -51,7 +51,9 @@ pub fn krylov_minpoly_mod_p(pr: &Prime, n: usize, a: &[u64], v: &[u64]) -> Vec<u
                 let s = a[i * n..(i + 1) * n]
                     .iter()
                     .zip(&cur)
-                    .fold(0u128, |s, (&x, &y)| (s + x as u128 * y as u128) % pr.p as u128);
+                    .fold(0u128, |s, (&x, &y)| {
+                        (s + x as u128 * y as u128) % pr.p as u128
+                    });
                 s as u64
             })
             .collect();

@@ -41,7 +41,12 @@ impl<'a> RatMat<'a> {
     /// # Panics
     /// When `a.len() != m * n`.
     pub fn new(m: usize, n: usize, a: &'a [Rational]) -> Self {
-        assert_eq!(a.len(), m * n, "RatMat: slice of length {} for {m}x{n}", a.len());
+        assert_eq!(
+            a.len(),
+            m * n,
+            "RatMat: slice of length {} for {m}x{n}",
+            a.len()
+        );
         let small = a
             .iter()
             .map(|x| Some((x.numer().to_i64()?, x.denom().to_u64()?)))
@@ -127,8 +132,9 @@ impl<'a> RatMat<'a> {
     pub fn col_norm_log2(&self) -> Vec<f64> {
         (0..self.n)
             .map(|j| {
-                let col: Vec<Rational> =
-                    (0..self.m).map(|i| self.a[i * self.n + j].clone()).collect();
+                let col: Vec<Rational> = (0..self.m)
+                    .map(|i| self.a[i * self.n + j].clone())
+                    .collect();
                 norm_log2(&col)
             })
             .collect()
@@ -182,7 +188,10 @@ mod tests {
         let a = vec![q(1, 2), q(-3, 4), q(0, 1), q(5, 1), big, q(-7, 999_983)];
         let pr = nth_prime(2);
         for rm in [RatMat::new(2, 3, &a), RatMat::new(2, 2, &a[..4])] {
-            let want: Vec<u64> = rm.a.iter().map(|x| reduce_rational(&pr, x).unwrap()).collect();
+            let want: Vec<u64> =
+                rm.a.iter()
+                    .map(|x| reduce_rational(&pr, x).unwrap())
+                    .collect();
             assert_eq!(rm.image(&pr).unwrap(), want);
         }
         let bad = vec![q(1, 1), Rational::new(1.into(), BigInt::from(pr.p))];
@@ -192,6 +201,9 @@ mod tests {
         let l = rm.row_norm_log2();
         let exact0 = (0.25f64 + 9.0 / 16.0).sqrt().log2();
         assert!(l[0] >= exact0 && l[0] < exact0 + 1e-5);
-        assert_eq!(RatMat::new(1, 1, &[q(0, 1)]).row_norm_log2()[0], f64::NEG_INFINITY);
+        assert_eq!(
+            RatMat::new(1, 1, &[q(0, 1)]).row_norm_log2()[0],
+            f64::NEG_INFINITY
+        );
     }
 }
