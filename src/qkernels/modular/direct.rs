@@ -138,7 +138,7 @@ pub fn is_cyclic(n: usize, a: &[Rational]) -> bool {
     let Some((pr, img)) = images(&rm).next() else {
         return false;
     };
-    let mut rng = SplitMix64(0x6d69_6e70_6f6c_79);
+    let mut rng = SplitMix64(0x006d_696e_706f_6c79);
     let mut v: Vec<u64> = (0..n).map(|_| rng.next_u64() % pr.p).collect();
     let mut krylov = Vec::with_capacity(n * n);
     for _ in 0..n {
