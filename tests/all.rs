@@ -63,6 +63,8 @@ mod matrix_generic;
 mod matrix_modular;
 #[path = "matrix_quadratic.rs"]
 mod matrix_quadratic;
+#[path = "matrix_rational.rs"]
+mod matrix_rational;
 #[path = "mechanical.rs"]
 mod mechanical;
 mod memory_budget;
