@@ -67,6 +67,7 @@ mod matrix_quadratic;
 mod matrix_rational;
 #[path = "mechanical.rs"]
 mod mechanical;
+#[path = "memory_budget.rs"]
 mod memory_budget;
 #[path = "mpoly.rs"]
 mod mpoly;
