@@ -208,7 +208,9 @@ impl<K: Field> Scb<K> {
 }
 
 /// Routh–Hurwitz: are all roots of `p` in the open left half plane? `None` when the field
-/// has no exact sign. The constant polynomial counts as Hurwitz (no roots).
+/// has no exact sign for an entry it needs (over $\mathbb{Q}(p)$: a sign that depends on the
+/// parameters). The constant polynomial counts as Hurwitz (no roots). A coefficient that is
+/// zero, or two of opposite signs, decide `false` first (necessary condition).
 ///
 /// A polynomial with positive leading coefficient is Hurwitz iff every entry of the first
 /// column of its Routh array is positive; a zero entry means it is not.
@@ -217,6 +219,14 @@ pub fn hurwitz<K: Field>(p: &Poly<K>) -> Option<bool> {
     let n = p.degree()?;
     if n == 0 {
         return Some(true);
+    }
+    // necessary: every coefficient nonzero, all of one sign (decided where the field can)
+    let signs: Vec<Option<std::cmp::Ordering>> = (0..=n).map(|i| k.sign(&p.coeff(i))).collect();
+    if signs.contains(&Some(std::cmp::Ordering::Equal))
+        || (signs.contains(&Some(std::cmp::Ordering::Less))
+            && signs.contains(&Some(std::cmp::Ordering::Greater)))
+    {
+        return Some(false);
     }
     let lc = p.lc();
     let neg = k.sign(&lc)? == std::cmp::Ordering::Less;
