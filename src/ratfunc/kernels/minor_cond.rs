@@ -7,7 +7,7 @@
 //! | size of $\det C$ | how its factors are found |
 //! |---|---|
 //! | interpolation grid $\le$ [`DENSE_GRID`] points | $\det C$ interpolated ([`super::det_zp`]), divided by $\prod d_i$; factored by the log |
-//! | larger (e.g. a Vandermonde minor: $10!$ terms) | **peeling**: candidates $f$ (irreducible factors of the entries of $C$, of differences of two entries in one row or column, of the $d_i$, and the conditions recorded so far in this computation); on a random line $x = a + t b$ modulo a word prime, $g(t) = \det C(x)$ is interpolated ($\deg g \le D$, the total-degree bound) and divided by each $f(a + t b)$ as often as it goes; when the cofactor is a constant $c_0$, the identity $\det C = c_0 \prod f^{e_f}$ is checked at two further random points (Schwartz–Zippel: wrong with probability $\le 2D/q$, $q \approx 2^{62}$) |
+//! | larger (e.g. a Vandermonde minor: $10!$ terms) | **peeling**: candidates $f$ (irreducible factors of the entries of $C$ of total degree $\le 3$, of differences of two entries in one row or column, of the $d_i$, and the conditions recorded so far in this computation); on a random line $x = a + t b$ modulo a word prime, $g(t) = \det C(x)$ is interpolated ($\deg g \le D$, the total-degree bound) and divided by each $f(a + t b)$ as often as it goes; when the cofactor is a constant $c_0$, the identity $\det C = c_0 \prod f^{e_f}$ is checked at two further random points (Schwartz–Zippel: wrong with probability $\le 2D/q$, $q \approx 2^{62}$) |
 //!
 //! When neither applies (a cofactor that is not a constant), nothing is recorded and the caller
 //! gives the shortcut up (the generic elimination then records its pivots itself).
@@ -73,8 +73,9 @@ pub fn record_minor(
     }
 }
 
-/// The irreducible factors of `den` and of the entries of `c` and of differences of two
-/// entries in one row or column (of total degree at most 2); `None` past [`MAX_RAW`]. (The
+/// The irreducible factors of `den`, of the entries of `c` of total degree at most 3 and of
+/// differences of two entries in one row or column (of total degree at most 2); `None` past
+/// [`MAX_RAW`]. (The
 /// caller adds the conditions recorded so far: a product such as $\mathcal O \mathcal C$
 /// has the factors of both.)
 fn candidates(r: usize, c: &[MPoly], den: &MPoly) -> Option<Vec<MPoly>> {
@@ -86,7 +87,9 @@ fn candidates(r: usize, c: &[MPoly], den: &MPoly) -> Option<Vec<MPoly>> {
     };
     add(den.clone());
     for e in c {
-        add(e.clone());
+        if e.total_degree() <= 3 {
+            add(e.clone());
+        }
     }
     let small = |e: &MPoly| e.total_degree() <= 2;
     for line in 0..r {
