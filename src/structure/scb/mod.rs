@@ -68,6 +68,8 @@ pub struct Scb<K: Field> {
     pub verified: bool,
     /// The system as given.
     pub orig: [Matrix<K>; 4],
+    /// $\det(sI - A_{aa})$, once computed.
+    zero_poly: std::sync::OnceLock<Poly<K>>,
 }
 
 /// Special coordinate basis of $(A, B, C, D)$.
@@ -141,6 +143,7 @@ pub fn scb<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>)
         right_invertible: sp.dims[1] == 0,
         verified: false,
         orig: [a.clone(), b.clone(), c.clone(), d.clone()],
+        zero_poly: std::sync::OnceLock::new(),
     };
     s.check()?;
     s.verified = true;
@@ -187,7 +190,9 @@ impl<K: Field> Scb<K> {
     /// The invariant zero polynomial $\det(sI - A_{aa})$ (monic; `1` when there are no
     /// finite invariant zeros).
     pub fn invariant_zero_polynomial(&self) -> Poly<K> {
-        self.a_aa().charpoly().expect("A_aa is square")
+        self.zero_poly
+            .get_or_init(|| self.a_aa().charpoly().expect("A_aa is square"))
+            .clone()
     }
     /// Minimum phase (all invariant zeros in the open left half plane), decided exactly by
     /// the Routh–Hurwitz test; `None` when the field is not real (no exact sign).
