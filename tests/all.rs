@@ -85,6 +85,8 @@ mod pencil_published;
 mod plots;
 #[path = "poly_factor.rs"]
 mod poly_factor;
+#[path = "qp_conditions.rs"]
+mod qp_conditions;
 #[path = "qp_kernels.rs"]
 mod qp_kernels;
 #[path = "realization.rs"]
