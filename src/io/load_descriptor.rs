@@ -111,7 +111,11 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
     if let super::raw::Raw::Table(entries) = &raw {
         if let Some((_, g)) = entries.iter().find(|(k, _)| k == "G") {
             let params = entries.iter().find(|(k, _)| k == "parameters");
-            return load_g(&name, &g.to_json(), params.map(|(_, p)| p.to_json()).as_ref());
+            return load_g(
+                &name,
+                &g.to_json(),
+                params.map(|(_, p)| p.to_json()).as_ref(),
+            );
         }
         if let Some(l) = rectangular_pencil(&name, entries)? {
             return Ok(l);
@@ -147,8 +151,7 @@ fn rectangular_pencil(
         return Ok(None);
     }
     let (ms, _) = super::system_file::matrices_of_table(name, entries, &["A", "E"])?;
-    let [Some(a), e] = <[Option<super::MatrixEntries>; 2]>::try_from(ms).expect("two keys")
-    else {
+    let [Some(a), e] = <[Option<super::MatrixEntries>; 2]>::try_from(ms).expect("two keys") else {
         return Ok(None);
     };
     if a.nrows == a.ncols {
