@@ -95,6 +95,8 @@ mod realization;
 mod realization_planted;
 #[path = "reserved_names.rs"]
 mod reserved_names;
+#[path = "rest22.rs"]
+mod rest22;
 #[path = "robustness.rs"]
 mod robustness;
 #[path = "scb.rs"]
