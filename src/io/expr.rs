@@ -41,6 +41,7 @@ pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
 use crate::field::scan::{identifier_end, number_end};
 use crate::field::{QuadraticField, Rational, parse_rational};
+use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
 /// Longest accepted number literal (characters).
@@ -216,12 +217,40 @@ pub fn too_long(text: &str) -> Result<(), ExprError> {
     Ok(())
 }
 
+/// The value of a plain `[-]digits[/digits]` (at most 18 digits each, a non-zero
+/// denominator, no spaces): the shape of a user's decimal data written as fractions,
+/// read without the parser and with one word gcd (issue 29: 10^4 entries of a rational
+/// matrix); `None` for every other text (the parser decides it, with its messages).
+fn plain_fraction(text: &str) -> Option<Rational> {
+    fn digits(s: &str) -> Option<i64> {
+        let ok = !s.is_empty() && s.len() <= 18 && s.bytes().all(|b| b.is_ascii_digit());
+        ok.then(|| s.parse().ok()).flatten()
+    }
+    let (neg, body) = match text.as_bytes().first()? {
+        b'-' => (true, &text[1..]),
+        _ => (false, text),
+    };
+    let (p, q) = match body.split_once('/') {
+        Some((p, q)) => (digits(p)?, digits(q)?),
+        None => (digits(body)?, 1),
+    };
+    if q == 0 {
+        return None;
+    }
+    let g = num_integer::Integer::gcd(&p, &q);
+    let p = if neg { -(p / g) } else { p / g };
+    Some(Rational::new_raw(BigInt::from(p), BigInt::from(q / g)))
+}
+
 /// Evaluates `text`; `lookup` gives the value of a parameter name (`None`: unknown).
 pub(crate) fn eval_with(
     text: &str,
     lookup: &dyn Fn(&str) -> Option<Value>,
 ) -> Result<Value, ExprError> {
     too_long(text)?;
+    if let Some(q) = plain_fraction(text) {
+        return Ok(Value::rational(q));
+    }
     let toks = lex(text)?;
     if toks.is_empty() {
         return err("empty expression");
