@@ -184,6 +184,7 @@ pub fn rref_int<S: RrefSource>(b: &S) -> IntRref {
     let mut st = ProfileImages::default();
     let mut last_probe: Option<(Vec<BigInt>, BigInt)> = None;
     let max_a = b.max_abs();
+    let mut next_check = 1usize;
     for pr in primes(0) {
         let Some(mut a) = b.image(&pr) else {
             continue;
@@ -191,9 +192,15 @@ pub fn rref_int<S: RrefSource>(b: &S) -> IntRref {
         let piv = rref_mod_p(&pr, m, n, &mut a);
         match st.push(pr, piv, &a, n) {
             None => continue,
-            Some(true) => last_probe = None,
+            Some(true) => (last_probe, next_check) = (None, 1),
             Some(false) => {}
         }
+        // checkpoints at geometrically spaced prime counts: a probe costs O(k^2) for k
+        // primes, so probing after every prime would cost O(k^3)
+        if st.used.len() < next_check {
+            continue;
+        }
+        next_check = st.used.len() + (st.used.len() / 8).max(1);
         let (piv, free, used, images) = (st.pivots(), &st.free, &st.used, &st.images);
         let r = piv.len();
         let crt = Crt::new(used);
