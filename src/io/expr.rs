@@ -466,6 +466,43 @@ mod tests {
             .map(|(x, g)| g.fmt_scalar(&x))
             .map_err(|e| e.msg)
     }
+    /// The plain-fraction shortcut gives what the parser gives, on a generator of the
+    /// shapes it takes (signs, zeros, long digit strings) and of near misses it leaves to the
+    /// parser (spaces, a plus sign, a zero denominator, 19 digits, two slashes).
+    #[test]
+    fn plain_fractions_as_the_parser() {
+        let parsed = |s: &str| {
+            let mut p = Parser {
+                text: s,
+                toks: lex(s).unwrap(),
+                pos: 0,
+                depth: 0,
+                lookup: &|_: &str| None,
+            };
+            p.expr().map(|v| v.a).map_err(|e| e.msg)
+        };
+        let mut g = crate::rng::SplitMix64(29);
+        for _ in 0..500 {
+            let p = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
+            let q = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
+            let sign = if g.next_u64() % 2 == 0 { "-" } else { "" };
+            for s in [format!("{sign}{p}/{q}"), format!("{sign}{p}"), format!("{sign}0{p}")] {
+                let want = parsed(&s);
+                if let Some(x) = plain_fraction(&s) {
+                    assert_eq!(Ok(x), want, "{s}");
+                }
+                assert_eq!(eval_with(&s, &|_| None).map(|v| v.a).map_err(|e| e.msg), want);
+            }
+            let s = format!("{sign}{p}/{q}");
+            assert_eq!(plain_fraction(&s).is_some(), q != 0, "{s} takes the shortcut");
+        }
+        for s in ["1 /2", "+1/2", "1/0", "1/2/3", "1234567890123456789/2", "-", "/2", "1/"] {
+            assert_eq!(plain_fraction(s), None, "{s}");
+        }
+        assert_eq!(ev("1/0").unwrap_err(), parsed("1/0").unwrap_err());
+        assert_eq!(ev("-6/4").unwrap(), "-3/2");
+    }
+
     #[test]
     fn examples() {
         assert_eq!(ev("1 + 2*3").unwrap(), "7");
