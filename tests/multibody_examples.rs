@@ -54,7 +54,7 @@ fn bounce_pitch_equals_hand_equations() {
     let (kf, kr, cf, cr) = (q("35000"), q("38000"), q("1000"), q("1200"));
     let (m, iy) = (q("16975") / q("981/100"), q("3267"));
     let qm = |rows: Vec<Vec<Rational>>| Matrix::from_rows(Q, rows).unwrap();
-    let z = Rational::from(0);
+    let z = q("0");
     let mm = qm(vec![vec![m, z.clone()], vec![z.clone(), iy]]);
     let coupling = |kf: &Rational, kr: &Rational| {
         qm(vec![

@@ -19,7 +19,7 @@ mod reader;
 use super::raw::{Raw, from_json_text, from_toml_text};
 use super::subst::{Substitution, SymbolicOptions};
 use super::{Ground, InputError, SystemFormat};
-use crate::field::{Field, Q};
+use crate::field::Q;
 use crate::multibody::Model;
 use crate::ratfunc::RatFuncField;
 use std::collections::BTreeSet;
