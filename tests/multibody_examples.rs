@@ -64,8 +64,14 @@ fn bounce_pitch_equals_hand_equations() {
     };
     let kk = coupling(&kf, &kr);
     let ll = coupling(&cf, &cr);
-    let f = qm(vec![vec![kf.clone(), kr.clone()], vec![-(&a * &kf), &b * &kr]]);
-    let fr = qm(vec![vec![cf.clone(), cr.clone()], vec![-(&a * &cf), &b * &cr]]);
+    let f = qm(vec![
+        vec![kf.clone(), kr.clone()],
+        vec![-(&a * &kf), &b * &kr],
+    ]);
+    let fr = qm(vec![
+        vec![cf.clone(), cr.clone()],
+        vec![-(&a * &cf), &b * &cr],
+    ]);
     // z_G; the pitch sensor reads along loc1 - loc2 = -y: -(a + b) theta; z_P = z - a/2 theta
     let cq = qm(vec![
         vec![q("1"), z.clone()],
@@ -77,7 +83,10 @@ fn bounce_pitch_equals_hand_equations() {
     // and not the model with the pitch sensor's sign flipped (the check can fail)
     let mut flipped = cq.clone();
     flipped.set(1, 1, &a + &b);
-    assert!(!t.ss.same_markov(&with_input_rate(&mm, &ll, &kk, &f, &fr, &flipped), 8));
+    assert!(
+        !t.ss
+            .same_markov(&with_input_rate(&mm, &ll, &kk, &f, &fr, &flipped), 8)
+    );
 }
 
 /// The pendulum over Q(r): lateral motion y and rotation theta about x; the string's
@@ -97,7 +106,9 @@ fn pendulum_equals_hand_equations_over_q_r() {
     let rows = |r: Vec<Vec<&str>>| {
         Matrix::from_rows(
             k.clone(),
-            r.into_iter().map(|row| row.into_iter().map(p).collect()).collect(),
+            r.into_iter()
+                .map(|row| row.into_iter().map(p).collect())
+                .collect(),
         )
         .unwrap()
     };
@@ -105,10 +116,7 @@ fn pendulum_equals_hand_equations_over_q_r() {
     let mm = rows(vec![vec!["10", "0"], vec!["0", "11/2 - 10*r^2"]]);
     let kk = rows(vec![
         vec![&format!("{mg}/{lg}"), &format!("-{mg}*r/{lg}")],
-        vec![
-            &format!("-{mg}*r/{lg}"),
-            &format!("{mg}*r^2/{lg} + {mg}*r"),
-        ],
+        vec![&format!("-{mg}*r/{lg}"), &format!("{mg}*r^2/{lg} + {mg}*r")],
     ]);
     let zero = Matrix::zeros(k.clone(), 2, 2);
     let f = rows(vec![vec!["1"], vec!["0"]]);
@@ -119,4 +127,124 @@ fn pendulum_equals_hand_equations_over_q_r() {
     assert!(t.ss.same_markov(&want, 8));
     let g = t.ss.transfer_matrix().unwrap();
     assert_eq!(g.to_strings(), want.transfer_matrix().unwrap().to_strings());
+}
+
+/// An acceleration sensor (`order = 3`) on the spring-mass-damper: y = x'' = f - c x' - k x,
+/// so G(s) = s^2 / (s^2 + s/5 + 1) with feedthrough 1; the appended algebraic state is
+/// eliminated and the states keep the descriptor's names.
+#[test]
+fn acceleration_sensor_reads_the_second_derivative() {
+    let json = r#"{"name": "smd", "parameters": {"m": 1, "c": 0.2, "k": 1},
+      "bodies": [{"name": "block", "mass": "m", "location": [0, 0, 0]}],
+      "flex_points": [{"name": "spring", "bodies": ["block", "ground"], "location": [0, 0, 0],
+                       "forces": 1, "axis": [0, 0, 1], "stiffness": "k", "damping": "c"}],
+      "rigid_points": [{"name": "slider", "bodies": ["block", "ground"], "location": [0, 0, 0],
+                        "forces": 2, "moments": 3, "axis": [0, 0, 1]}],
+      "actuators": [{"name": "f", "bodies": ["block", "ground"], "locations": [[0, 0, 0], [0, 0, -0.1]]}],
+      "sensors": [{"name": "a", "order": 3, "bodies": ["block", "ground"], "locations": [[0, 0, 0], [0, 0, -0.1]]}]}"#;
+    let l =
+        exactlti::io::load_system_str(json, exactlti::io::SystemFormat::Json, "a.json").unwrap();
+    let t = l.rational().unwrap();
+    assert_eq!(t.descriptor.as_ref().unwrap().e.shape(), (4, 4));
+    let qm = |rows: Vec<Vec<&str>>| {
+        Matrix::from_rows(
+            Q,
+            rows.into_iter()
+                .map(|r| r.into_iter().map(q).collect())
+                .collect(),
+        )
+        .unwrap()
+    };
+    let want = StateSpace::new(
+        qm(vec![vec!["0", "1"], vec!["-1", "-1/5"]]),
+        qm(vec![vec!["0"], vec!["1"]]),
+        qm(vec![vec!["-1", "-1/5"]]),
+        qm(vec![vec!["1"]]),
+    )
+    .unwrap();
+    assert!(t.ss.same_markov(&want, 6));
+    let names = l
+        .file
+        .signals
+        .states
+        .clone()
+        .expect("the descriptor's own states");
+    assert_eq!(names, ["block.z", "v.block.z"]);
+    // order 4 is refused with its key
+    let bad = json.replace("\"order\": 3", "\"order\": 4");
+    let e = exactlti::io::load_system_str(&bad, exactlti::io::SystemFormat::Json, "a.json")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("sensors[1].order"), "{e}");
+}
+
+/// The descriptor-level loader (`tf`, `pencil`) names the channels of a model file by its
+/// actuators and sensors.
+#[test]
+fn model_channels_are_named() {
+    let l = exactlti::io::load_descriptor::load_descriptor_path(Path::new(
+        "data/models/quarter-car-a-arm-pushrod.toml",
+    ))
+    .unwrap();
+    assert_eq!(l.signals.inputs.as_deref(), Some(&["z_g".to_string()][..]));
+    assert_eq!(
+        l.signals.outputs.clone().unwrap(),
+        ["chassis motion", "suspension travel", "tire compression"]
+    );
+}
+
+/// The benchmark bicycle (Table 2) from its bodies, joints and rolling contacts: at every
+/// speed its finite nonzero eigenvalues are those of Meijaard et al.'s
+/// M q'' + v C1 q' + (g K0 + v^2 K2) q = f (data/bicycle-benchmark.json, 14 decimals), and
+/// the McMillan degree is 4 (paper sec. 4.2).
+#[test]
+fn bicycle_matches_the_benchmark_eigenvalues() {
+    use exactlti::io::symbolic::SymbolicOptions;
+    let text = std::fs::read_to_string("data/models/bicycle.toml").unwrap();
+    let bench: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string("data/bicycle-benchmark.json").unwrap())
+            .unwrap();
+    let mat = |key: &str| -> nalgebra::DMatrix<f64> {
+        let rows = bench[key].as_array().unwrap();
+        nalgebra::DMatrix::from_fn(2, 2, |i, j| {
+            rows[i][j].as_str().unwrap().parse::<f64>().unwrap()
+        })
+    };
+    let (m, c1, k0, k2) = (mat("M"), mat("C1"), mat("K0"), mat("K2"));
+    for v in [2i64, 5, 8] {
+        let opts = SymbolicOptions {
+            symbolic: None,
+            at: vec![("u".into(), v.to_string())],
+        };
+        let l = exactlti::io::load_model_str(
+            &text,
+            exactlti::io::SystemFormat::Toml,
+            "bicycle.toml",
+            &opts,
+        )
+        .unwrap();
+        let t = l.rational().unwrap();
+        let vf = v as f64;
+        let mi = m.clone().try_inverse().unwrap();
+        let kk = &k0 * 9.81 + &k2 * (vf * vf);
+        let mut a = nalgebra::DMatrix::zeros(4, 4);
+        a.view_mut((0, 2), (2, 2))
+            .copy_from(&nalgebra::DMatrix::identity(2, 2));
+        a.view_mut((2, 0), (2, 2)).copy_from(&(-(&mi * kk)));
+        a.view_mut((2, 2), (2, 2)).copy_from(&(-(&mi * (&c1 * vf))));
+        let want = exactlti::float::eigenvalues(&a).unwrap();
+        let ours =
+            exactlti::float::eigenvalues(&exactlti::float::to_dmatrix(&t.ss.a).unwrap()).unwrap();
+        for w in &want {
+            let best = ours
+                .iter()
+                .map(|z| (z - w).norm())
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                best < 1e-8 * w.norm().max(1.0),
+                "v = {v}: {w} not in {ours:?}"
+            );
+        }
+        assert_eq!(exactlti::realization::mcmillan_degree(&t.ss), 4, "v = {v}");
+    }
 }

@@ -443,7 +443,13 @@ fn bases<K: Field>(
     let mut l = Matrix::zeros(k.clone(), 2 * d + nin, f1 + f2 + nin);
     add_block(&mut l, 0, 0, null_j, false);
     add_block(&mut l, d, f1, &null_w, false);
-    add_block(&mut l, 2 * d, f1 + f2, &Matrix::identity(k.clone(), nin), false);
+    add_block(
+        &mut l,
+        2 * d,
+        f1 + f2,
+        &Matrix::identity(k.clone(), nin),
+        false,
+    );
     let jv = sparse_mul(j, v);
     if jv.is_zero() {
         return (l.clone(), l);

@@ -65,7 +65,9 @@ fn equilibrium<K: Field>(
     stiffness: &Matrix<K>,
 ) -> Result<(Vec<K::Elem>, Matrix<K>)> {
     let k = &m.field;
-    let none = || Error::Invalid("the loads cannot be carried: the model has no static equilibrium".into());
+    let none = || {
+        Error::Invalid("the loads cannot be carried: the model has no static equilibrium".into())
+    };
     let f = Matrix::column(k.clone(), load_vector(m));
     let nt = null_j.transpose();
     let red = sparse_mul(&nt, &sparse_mul(stiffness, null_j));
@@ -149,7 +151,11 @@ fn carried_load<K: Field>(
     let (nf, nm) = (pf.nrows(), pm.nrows());
     let vec3 = |pr: &Matrix<K>, l: &[K::Elem]| -> Vec3<K> {
         let v = &pr.transpose() * &Matrix::column(k.clone(), l.to_vec());
-        [v.get(0, 0).clone(), v.get(1, 0).clone(), v.get(2, 0).clone()]
+        [
+            v.get(0, 0).clone(),
+            v.get(1, 0).clone(),
+            v.get(2, 0).clone(),
+        ]
     };
     Ok((vec3(&pf, &lam[..nf]), vec3(&pm, &lam[nf..nf + nm]), nf + nm))
 }

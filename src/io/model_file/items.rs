@@ -9,7 +9,6 @@ use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::multibody::{Body, LineItem, LineKind, Load, Model, PointItem, PointKind};
 
-
 fn items<'t>(file: &str, top: &'t Table, key: &str) -> Result<Vec<&'t Table>, InputError> {
     let Some((_, v)) = top.iter().find(|(k, _)| k == key) else {
         return Ok(vec![]);

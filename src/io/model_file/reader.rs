@@ -57,7 +57,12 @@ impl<K: Field> Reader<'_, K> {
             (None, None) => Err(self.err(&format!("{at}.{key}"), "missing")),
         }
     }
-    pub fn list<'t>(&self, v: &'t Raw, at: &str, n: Option<usize>) -> Result<&'t [Raw], InputError> {
+    pub fn list<'t>(
+        &self,
+        v: &'t Raw,
+        at: &str,
+        n: Option<usize>,
+    ) -> Result<&'t [Raw], InputError> {
         match v {
             Raw::Array(xs) if n.is_none_or(|n| xs.len() == n) => Ok(xs),
             other => Err(self.err(
@@ -81,7 +86,13 @@ impl<K: Field> Reader<'_, K> {
             self.scalar_raw(&xs[2], at)?,
         ])
     }
-    pub fn vec3(&self, t: &Table, at: &str, key: &str, default: bool) -> Result<Vec3<K>, InputError> {
+    pub fn vec3(
+        &self,
+        t: &Table,
+        at: &str,
+        key: &str,
+        default: bool,
+    ) -> Result<Vec3<K>, InputError> {
         match self.get(t, key) {
             Some(v) => self.vec3_raw(v, &format!("{at}.{key}")),
             None if default => Ok([self.k.zero(), self.k.zero(), self.k.zero()]),
