@@ -75,6 +75,8 @@ mod mpoly;
 mod mpoly_gcd;
 #[path = "multibody.rs"]
 mod multibody;
+#[path = "multibody_examples.rs"]
+mod multibody_examples;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]

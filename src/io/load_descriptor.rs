@@ -38,6 +38,8 @@ pub struct LoadedDescriptor {
     /// A rectangular pencil `(A, E)` (a file with only `A`, `E` and a non-square `A`, over
     /// $\mathbb{Q}$): only `pencil` accepts it; `system` is then empty.
     pub pencil: Option<(Matrix<Q>, Matrix<Q>)>,
+    /// The channel names the file gives (a model file: its actuators and sensors).
+    pub signals: super::SignalNames,
 }
 
 /// Work on a loaded descriptor system, generic over the field.
@@ -136,6 +138,7 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
         has_e,
         transfer: None,
         pencil: None,
+        signals: f.signals.clone(),
     })
 }
 
@@ -189,6 +192,7 @@ fn rectangular_pencil(
         has_e: true,
         transfer: None,
         pencil: Some((a, e)),
+        signals: Default::default(),
     }))
 }
 
@@ -205,6 +209,7 @@ fn load_g(
         has_e,
         transfer: Some((tm, r)),
         pencil: None,
+        signals: Default::default(),
     })
 }
 
@@ -228,6 +233,11 @@ pub fn model_descriptor(
                 has_e: true,
                 transfer: None,
                 pencil: None,
+                signals: super::SignalNames {
+                    inputs: Some(a.input_names),
+                    outputs: Some(a.output_names),
+                    states: Some(a.state_names),
+                },
             })
         }
         super::model_file::ModelAny::RatFunc(m) => Err(InputError::file(
