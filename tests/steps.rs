@@ -484,3 +484,79 @@ fn charpoly_factors_multiply_back() {
     assert_eq!(prod, chi);
     check_jordan(&d, &a.map(&k, |x| k.from_rational(x)));
 }
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let (code, out, err) = common::cli::run(args);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&out).expect("json")
+}
+
+#[test]
+fn cli_steps_json_text_latex() {
+    let f = "data/yaw-plane-single-wheel.json";
+    let j = json(&["jordan", f, "--steps", "--format", "json"]);
+    assert_eq!(j["verified"], true);
+    let steps = j["steps"].as_array().unwrap();
+    assert_eq!(steps[0]["step"], "charpoly");
+    let ks = steps
+        .iter()
+        .find(|s| s["step"] == "kernel_sequence")
+        .unwrap();
+    assert_eq!(ks["dims"], serde_json::json!([1, 2, 3]));
+    assert!(
+        steps
+            .iter()
+            .all(|s| s.get("holds").is_none_or(|h| h == true))
+    );
+    // over Q(p): the conditions of each step
+    let j = json(&["jordan", f, "--steps", "--symbolic", "--format", "json"]);
+    let conds: Vec<&str> = j["conditions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_str().unwrap())
+        .collect();
+    assert!(
+        conds.contains(&"cr != 0") && conds.contains(&"u != 0"),
+        "{conds:?}"
+    );
+    let j = json(&[
+        "minreal",
+        "data/sliding-masses.json",
+        "--method",
+        "jordan",
+        "--steps",
+        "--format",
+        "json",
+    ]);
+    let st = j["steps"].as_array().unwrap().last().unwrap().clone();
+    assert_eq!(st["stages"], serde_json::json!([20, 16, 8]));
+    let (code, out, _) = common::cli::run(&["minreal", f, "--steps"]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("step 7. The controllable and observable part"),
+        "{out}"
+    );
+    let (code, out, _) =
+        common::cli::run(&["jordan", f, "--steps", "--format", "latex", "--standalone"]);
+    assert_eq!(code, 0);
+    assert!(out.starts_with("\\documentclass[11pt,a4paper]{article}"));
+    assert!(out.contains("\\end{document}") && out.contains("holds exactly"));
+}
+
+#[test]
+fn cli_steps_refusals_are_one_line_exit_2() {
+    let f = "data/yaw-plane-single-wheel.json";
+    for args in [
+        vec!["scb", f, "--steps"],
+        vec!["jordan", f, "--real", "--steps"],
+        vec!["minreal", f, "--method", "rosenbrock", "--steps"],
+        vec!["jordan", "tests/data/sqrt2.toml", "--steps"],
+        vec!["jordan", "tests/data/no-such-file.json", "--steps"],
+    ] {
+        let (code, out, err) = common::cli::run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty());
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    }
+}

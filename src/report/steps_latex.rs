@@ -6,15 +6,17 @@
 //! small, wider than 20 in column blocks, so every page is A4.
 
 use super::escape::latex_text;
-use super::steps::{identity, kind_name, sentence, step_field, title};
+use super::steps::{generic_root, identity, kind_name, step_field, theta_step, title};
 use crate::field::Field;
-use crate::jordan::derivation::{Derivation, Object, Step};
+use crate::jordan::derivation::{Derivation, Object, Step, StepKind};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use std::fmt::Write;
 
-/// Columns of a matrix set in one block.
+/// Most columns of a matrix set in one block.
 const BLOCK_COLS: usize = 20;
+/// The A4 text width with 2 cm margins, in mm (a little less, for the brackets).
+const TEXT_MM: f64 = 145.0;
 
 /// The math symbol of an object key.
 fn symbol(key: &str) -> String {
@@ -51,6 +53,16 @@ fn symbol(key: &str) -> String {
     }
 }
 
+/// An entry's LaTeX: the field's own, or a plain display (`1/4*t`) through the display grammar.
+fn entry<K: Field>(k: &K, x: &K::Elem) -> String {
+    let e = k.latex_elem(x);
+    if !e.contains('\\') && e.contains(['*', '/']) {
+        super::latex::to_math(&e).unwrap_or(e)
+    } else {
+        e
+    }
+}
+
 /// A polynomial in `var` with the field's LaTeX coefficients (compound ones in parentheses).
 pub fn poly_latex<K: Field>(p: &Poly<K>, var: &str) -> String {
     let k = p.field();
@@ -59,7 +71,7 @@ pub fn poly_latex<K: Field>(p: &Poly<K>, var: &str) -> String {
         if k.is_zero(c) {
             continue;
         }
-        let mut t = k.latex_elem(c);
+        let mut t = entry(k, c);
         let neg = t.starts_with('-') && !t[1..].contains(['+', '-']);
         if neg {
             t = t[1..].to_string();
@@ -105,25 +117,50 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
         );
         return;
     }
-    let small = m.ncols() > 10;
+    let cells: Vec<Vec<String>> = (0..m.nrows())
+        .map(|i| (0..m.ncols()).map(|j| entry(k, m.get(i, j))).collect())
+        .collect();
+    // rough widths in mm: a character of the plain display, plus the column gap
+    let plain: Vec<usize> = (0..m.ncols())
+        .map(|j| {
+            (0..m.nrows())
+                .map(|i| k.fmt_elem(m.get(i, j)).chars().count())
+                .max()
+                .unwrap_or(1)
+        })
+        .collect();
+    let width = |small: bool, c: &[usize]| -> f64 {
+        let (ch, gap) = if small { (1.3, 3.6) } else { (2.0, 5.0) };
+        c.iter().map(|&w| w as f64 * ch + gap).sum::<f64>() + 20.0
+    };
+    let small = m.ncols() > 10 || width(false, &plain) > TEXT_MM;
     if small {
         s.push_str("{\\scriptsize\n");
     }
-    for c0 in (0..m.ncols()).step_by(BLOCK_COLS) {
-        let c1 = (c0 + BLOCK_COLS).min(m.ncols());
-        let head = if m.ncols() > BLOCK_COLS {
-            format!("{name}_{{:, {}..{}}}", c0 + 1, c1)
+    // column blocks that fit the A4 text width
+    let mut blocks = vec![];
+    let mut c0 = 0;
+    while c0 < m.ncols() {
+        let mut c1 = c0 + 1;
+        while c1 < m.ncols() && c1 - c0 < BLOCK_COLS && width(small, &plain[c0..=c1]) <= TEXT_MM {
+            c1 += 1;
+        }
+        blocks.push((c0, c1));
+        c0 = c1;
+    }
+    for &(c0, c1) in &blocks {
+        let head = if blocks.len() > 1 {
+            format!("{name}_{{:,\\,{}..{}}}", c0 + 1, c1)
         } else {
             name.to_string()
         };
-        let _ = write!(
+        let _ = writeln!(
             s,
-            "\\[ {head} = \\left[\\begin{{array}}{{*{{{}}}{{c}}}}\n",
+            "\\[ {head} = \\left[\\begin{{array}}{{*{{{}}}{{c}}}}",
             c1 - c0
         );
-        for i in 0..m.nrows() {
-            let cells: Vec<String> = (c0..c1).map(|j| k.latex_elem(m.get(i, j))).collect();
-            let _ = writeln!(s, "{} \\\\", cells.join(" & "));
+        for row in &cells {
+            let _ = writeln!(s, "{} \\\\", row[c0..c1].join(" & "));
         }
         s.push_str("\\end{array}\\right] \\]\n");
     }
@@ -159,7 +196,7 @@ fn object_latex<K: Field>(s: &mut String, key: &str, o: &Object<K>, field: &K) {
             let _ = writeln!(s, "\\[ {name} = {} \\]", parts.join(""));
         }
         Object::Scalar(x) => {
-            let _ = writeln!(s, "\\[ {name} = {} \\]", field.latex_elem(x));
+            let _ = writeln!(s, "\\[ {name} = {} \\]", entry(field, x));
         }
         Object::Count(c) => {
             let _ = writeln!(s, "\\[ {name} = {c} \\]");
@@ -170,6 +207,59 @@ fn object_latex<K: Field>(s: &mut String, key: &str, o: &Object<K>, field: &K) {
     }
 }
 
+/// The sentence of a step in LaTeX (the objects follow it in display math).
+fn sentence_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
+    let th = theta_step(d, st.part)
+        .and_then(|s| s.scalar("theta").map(|t| entry(&step_field(d, s), t)))
+        .unwrap_or_default();
+    let c = |k: &str| st.count(k).unwrap_or(0);
+    let conj = if c("deg") > 1 {
+        format!(" (the same for each of the {} conjugate roots)", c("deg"))
+    } else {
+        String::new()
+    };
+    let generic = if generic_root(d, st) {
+        format!(
+            ", worked once in \\texttt{{{}}} at the generic root $t$ (its conjugates by the embeddings $t \\mapsto \\theta_j$)",
+            latex_text(&step_field(d, st).to_string())
+        )
+    } else {
+        String::new()
+    };
+    match st.kind {
+        StepKind::CharPoly => "The characteristic polynomial $\\chi_A(s) = \\det(sI - A)$.".into(),
+        StepKind::Factorization => "Its irreducible factors.".into(),
+        StepKind::KernelSequence => format!(
+            "Eigenvalue $\\theta = {th}$ of algebraic multiplicity $m$ {generic}: with $N = A - \\theta I$ the ranks of $N, N^2, \\dots$ give the kernel dimensions $\\dim\\ker N^k = n - \\operatorname{{rank}} N^k$, up to $m$."
+        ),
+        StepKind::WeyrSegre => "The Weyr characteristic $w_k = \\dim\\ker N^k - \\dim\\ker N^{k-1}$ counts the Jordan blocks of size $\\ge k$; its conjugate partition (the Segre characteristic) lists the block sizes.".into(),
+        StepKind::Chain if c("top") == 1 => format!("An eigenvector of $\\theta = {th}$: $v_1 \\in \\ker N$."),
+        StepKind::Chain => format!(
+            "A chain of length {top} for $\\theta = {th}$, built top-down: $v_{top} \\in \\ker N^{top} \\setminus \\ker N^{below}$, then $v_{{j-1}} = N v_j$; the columns of $V$ are $v_1, \\dots, v_{top}$.",
+            top = c("top"),
+            below = c("top") - 1
+        ),
+        StepKind::EigenCheck => format!("The chains of $\\theta = {th}$ side by side, and its Jordan matrix."),
+        StepKind::PrimaryBlock => "An irreducible factor $f$ of degree $\\ge 2$ (its roots are not in the field of the entries): the kernel dimensions of $f(A)^k$, the block sizes of each root, a basis $B$ of $\\ker f(A)^e$ and $M$ with $AB = BM$.".into(),
+        StepKind::Similarity => "The Jordan basis $T$ and the Jordan matrix $J$ from the steps above (conjugate roots by Galois conjugation).".into(),
+        StepKind::Controllability => "The controllability matrix $\\mathcal C = [B, AB, \\dots, A^{n-1}B]$ and its rank.".into(),
+        StepKind::ControllableSubspace => "The controllable subspace $\\mathcal R$: the pivot columns of the RREF of $\\mathcal C$ (Krylov vectors).".into(),
+        StepKind::Observability => "The observability matrix $\\mathcal O = [C; CA; \\dots; CA^{n-1}]$ and its rank.".into(),
+        StepKind::UnobservableSubspace => "The unobservable subspace $\\mathcal N = \\ker \\mathcal O$.".into(),
+        StepKind::KalmanBasis => "The Kalman basis $T = [X_{c\\bar o}, X_{co}, X_{\\bar c\\bar o}, X_{\\bar co}]$: $\\mathcal R \\cap \\mathcal N$, completed to $\\mathcal R$, to $\\mathcal N$, to the whole space (dimensions of the parts).".into(),
+        StepKind::KalmanForm => "The Kalman form $(T^{-1}AT, T^{-1}B, CT)$.".into(),
+        StepKind::MinimalPart => "The controllable and observable part $(A_{22}, B_2, C_2, D)$: a minimal realization.".into(),
+        StepKind::ModalData => format!("Eigenvalue $\\theta = {th}${generic}: the modal data $(J_\\theta, WB, CV)$ in $z = Wx${conj}."),
+        StepKind::DropModes => format!(
+            "Non-contributing modes of $\\theta = {th}$ dropped{conj}: in each Jordan block the states after the last excited one are never excited and those before the first observed one never reach $y$ (state numbers below, within the block)."
+        ),
+        StepKind::Compaction => format!(
+            "Repeated modes of $\\theta = {th}$ compacted{conj}: a minimal realization of $(N, WB, CV)$ over the field, back in Jordan form by its chains."
+        ),
+        StepKind::Stages => "The orders of the stages: original, after dropping, after compacting; the last is the McMillan degree $\\delta_M$.".into(),
+    }
+}
+
 fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K>) {
     let _ = writeln!(
         s,
@@ -177,7 +267,7 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
         i + 1,
         latex_text(kind_name(st.kind))
     );
-    let _ = writeln!(s, "{}\n", latex_text(&sentence(d, st)));
+    let _ = writeln!(s, "{}\n", sentence_latex(d, st));
     let field = step_field(d, st);
     for (k, o) in &st.objects {
         object_latex(s, k, o, &field);
