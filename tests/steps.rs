@@ -232,6 +232,8 @@ fn yaw_plane_single_wheel_reproduces_the_paper() {
     let sim = d.of_kind(StepKind::Similarity).next().unwrap();
     let (t, j) = (sim.matrix("T").unwrap(), sim.matrix("J").unwrap());
     assert_eq!(j.map(&k, |x| x.clone()), j35, "J of eq. 35");
+    // the chains built top-down are the paper's choice (eq. 33): T is eq. 34 exactly
+    assert_eq!(t.map(&k, |x| x.clone()), t34, "T of eq. 34");
     assert_eq!(&a.map(t.field(), |x| x.clone()) * t, t * j);
     // the conditions: cr, m, u nonzero (and nothing else)
     let conds: Vec<String> = d.assumptions().iter().map(|x| k.fmt_elem(x)).collect();

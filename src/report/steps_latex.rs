@@ -19,7 +19,16 @@ const BLOCK_COLS: usize = 20;
 const TEXT_MM: f64 = 145.0;
 
 /// The math symbol of an object key.
-fn symbol(key: &str) -> String {
+fn symbol(kind: StepKind, key: &str) -> String {
+    match (kind, key) {
+        (StepKind::KalmanBasis, "dims") => {
+            return r"\dim X_{c\bar o},\,\dim X_{co},\,\dim X_{\bar c\bar o},\,\dim X_{\bar co}"
+                .into();
+        }
+        (StepKind::Similarity, "dims") => return r"d_i\,m_i".into(),
+        (StepKind::PrimaryBlock, "dims") => return r"\dim\ker f(A)^k".into(),
+        _ => {}
+    }
     match key {
         "chi" => r"\chi_A(s)".into(),
         "factors" => r"\chi_A(s)".into(),
@@ -177,8 +186,8 @@ fn counts_latex(xs: &[usize], one_based: bool) -> String {
     format!("({})", v.join(",\\ "))
 }
 
-fn object_latex<K: Field>(s: &mut String, key: &str, o: &Object<K>, field: &K) {
-    let name = symbol(key);
+fn object_latex<K: Field>(s: &mut String, kind: StepKind, key: &str, o: &Object<K>, field: &K) {
+    let name = symbol(kind, key);
     let index_list = matches!(key, "kept" | "not_excited" | "not_observed" | "pivots");
     match o {
         Object::Matrix(m) => matrix_latex(s, &name, m),
@@ -270,7 +279,7 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
     let _ = writeln!(s, "{}\n", sentence_latex(d, st));
     let field = step_field(d, st);
     for (k, o) in &st.objects {
-        object_latex(s, k, o, &field);
+        object_latex(s, st.kind, k, o, &field);
     }
     let (_, id) = identity(st.kind);
     if let Some(h) = st.holds {
