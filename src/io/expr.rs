@@ -485,7 +485,11 @@ mod tests {
         for _ in 0..500 {
             let p = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
             let q = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
-            let sign = if g.next_u64() % 2 == 0 { "-" } else { "" };
+            let sign = if g.next_u64().is_multiple_of(2) {
+                "-"
+            } else {
+                ""
+            };
             for s in [
                 format!("{sign}{p}/{q}"),
                 format!("{sign}{p}"),
