@@ -47,6 +47,8 @@ mod from_transfer;
 mod fuzz;
 #[path = "inputs.rs"]
 mod inputs;
+#[path = "interconnect.rs"]
+mod interconnect;
 #[path = "io.rs"]
 mod io;
 #[path = "jordan.rs"]
