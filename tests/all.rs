@@ -15,6 +15,8 @@ mod bicycle;
 mod cli;
 #[path = "cli_hardening.rs"]
 mod cli_hardening;
+#[path = "cli_interconnect.rs"]
+mod cli_interconnect;
 #[path = "cli_mpoly.rs"]
 mod cli_mpoly;
 #[path = "cli_options.rs"]

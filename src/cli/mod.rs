@@ -16,6 +16,7 @@ mod common;
 mod critical;
 mod float_cmds;
 mod float_compare;
+mod interconnect;
 pub mod memory;
 mod pencil_cmds;
 pub mod plots;
@@ -282,6 +283,10 @@ pub enum Command {
         #[arg(long, default_value_t = budget::DEFAULT_SECTION_SECONDS, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
         section_seconds: f64,
     },
+    /// Interconnections: series, parallel, feedback, append (exact, python-control's
+    /// conventions), with `--minreal` and `--out`.
+    #[command(flatten)]
+    Interconnect(interconnect::InterconnectCmd),
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {

@@ -56,6 +56,7 @@ fn name(cmd: &Command) -> &'static str {
         Command::Sweep { .. } => "sweep",
         Command::Critical { .. } => "critical",
         Command::Bifurcations { .. } => "bifurcations",
+        Command::Interconnect(c) => c.name(),
     }
 }
 
@@ -81,7 +82,7 @@ fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Critical { file, .. }
         | Command::Linalg { file, .. } => Some(file),
         Command::Analyze { file, .. } => file.as_deref(),
-        Command::Poly { .. } | Command::Bifurcations { .. } => None,
+        Command::Poly { .. } | Command::Bifurcations { .. } | Command::Interconnect(_) => None,
     }
 }
 

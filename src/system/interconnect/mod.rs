@@ -200,3 +200,91 @@ impl<K: Field> Descriptor<K> {
         }
     }
 }
+
+/// One of the interconnections, for callers that choose it at run time (command line,
+/// Python).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Operation {
+    /// [`series`] of two parts.
+    Series,
+    /// [`parallel`] of two parts.
+    Parallel,
+    /// [`feedback`] of two parts (the system, then the feedback path).
+    Feedback(Sign),
+    /// [`append`] of one or more parts.
+    Append,
+}
+
+impl Operation {
+    /// `series`, `parallel`, `feedback`, `append`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Operation::Series => "series",
+            Operation::Parallel => "parallel",
+            Operation::Feedback(_) => "feedback",
+            Operation::Append => "append",
+        }
+    }
+    /// The transfer matrix of the result in terms of the parts' ($G_1, G_2$; $G, K$).
+    pub fn identity(self) -> &'static str {
+        match self {
+            Operation::Series => "G = G2 G1",
+            Operation::Parallel => "G = G1 + G2",
+            Operation::Feedback(Sign::Negative) => "G_fb = (I + G K)^-1 G",
+            Operation::Feedback(Sign::Positive) => "G_fb = (I - G K)^-1 G",
+            Operation::Append => "G = diag(G1, G2, ...)",
+        }
+    }
+}
+
+impl<'a, S> Interconnection<'a, S> {
+    /// The interconnection `op` of `parts`.
+    ///
+    /// # Errors
+    /// `Invalid` when `op` takes two parts and `parts` has another length.
+    pub fn of(op: Operation, parts: &'a [S]) -> Result<Self> {
+        if let Operation::Append = op {
+            return Ok(Interconnection::Append(parts));
+        }
+        let [a, b] = parts else {
+            return Err(Error::Invalid(format!(
+                "{} takes two systems, got {}",
+                op.name(),
+                parts.len()
+            )));
+        };
+        Ok(match op {
+            Operation::Series => Interconnection::Series(a, b),
+            Operation::Parallel => Interconnection::Parallel(a, b),
+            Operation::Feedback(sign) => Interconnection::Feedback(a, b, sign),
+            Operation::Append => Interconnection::Append(parts),
+        })
+    }
+    /// Computes the interconnection (check it with [`verify`]).
+    ///
+    /// # Errors
+    /// Every error of the operation.
+    pub fn compute<K: Field>(&self) -> Result<S>
+    where
+        S: Blocks<K>,
+    {
+        match *self {
+            Interconnection::Series(a, b) => series(a, b),
+            Interconnection::Parallel(a, b) => parallel(a, b),
+            Interconnection::Feedback(a, b, sign) => feedback(a, b, sign),
+            Interconnection::Append(list) => append(list),
+        }
+    }
+}
+
+/// The interconnection `op` of `parts` and its exact check ([`verify`]).
+///
+/// # Errors
+/// `Invalid` when `op` takes two parts and `parts` has another length (or `append` gets
+/// none); every error of the operation.
+pub fn interconnect<K: Field, S: Blocks<K>>(op: Operation, parts: &[S]) -> Result<(S, bool)> {
+    let c = Interconnection::of(op, parts)?;
+    let r = c.compute()?;
+    let ok = verify(&c, &r);
+    Ok((r, ok))
+}
