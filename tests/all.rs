@@ -25,6 +25,8 @@ mod cli_options;
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
+#[path = "dcgain.rs"]
+mod dcgain;
 #[path = "descriptor_class.rs"]
 mod descriptor_class;
 #[path = "display.rs"]

@@ -69,6 +69,9 @@ pub fn execute_ctx(
     if let Command::Interconnect(c) = cmd {
         return super::interconnect::run(c, &opts);
     }
+    if let Command::Dcgain { file } = cmd {
+        return super::dcgain::run(file, &opts);
+    }
     match super::symbolic::execute(cmd, &opts)? {
         Some(Handled::Done(out)) => return Ok(out),
         Some(Handled::Valued(l, path)) => {
@@ -90,7 +93,7 @@ pub fn execute_ctx(
         | Command::Ctrb { file }
         | Command::Obsv { file }
         | Command::Tf { file } => super::pencil_cmds::execute(cmd, file),
-        Command::Bifurcations { .. } | Command::Interconnect(_) => {
+        Command::Bifurcations { .. } | Command::Interconnect(_) | Command::Dcgain { .. } => {
             unreachable!("dispatched above")
         }
         Command::Poly { op } => poly(op).map(Outcome::plain),
@@ -273,7 +276,8 @@ impl SystemVisitor for FileCommand<'_> {
             | Command::Obsv { .. }
             | Command::Tf { .. }
             | Command::Bifurcations { .. }
-            | Command::Interconnect(_) => {
+            | Command::Interconnect(_)
+            | Command::Dcgain { .. } => {
                 unreachable!("dispatched in execute")
             }
         }

@@ -14,6 +14,7 @@ pub mod budget;
 mod commands;
 mod common;
 mod critical;
+mod dcgain;
 mod float_cmds;
 mod float_compare;
 mod interconnect;
@@ -282,6 +283,12 @@ pub enum Command {
         /// skipped, with the command that insists); `--max-seconds` bounds the whole.
         #[arg(long, default_value_t = budget::DEFAULT_SECTION_SECONDS, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
         section_seconds: f64,
+    },
+    /// Exact DC gain G(0) = D - C A^-1 B per channel (`inf` where the channel has a pole at
+    /// s = 0), python-control's `dcgain`.
+    Dcgain {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`), or a file with only D.
+        file: PathBuf,
     },
     /// Interconnections: series, parallel, feedback, append (exact, python-control's
     /// conventions), with `--minreal` and `--out`.

@@ -57,6 +57,7 @@ fn name(cmd: &Command) -> &'static str {
         Command::Critical { .. } => "critical",
         Command::Bifurcations { .. } => "bifurcations",
         Command::Interconnect(c) => c.name(),
+        Command::Dcgain { .. } => "dcgain",
     }
 }
 
@@ -82,7 +83,10 @@ fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Critical { file, .. }
         | Command::Linalg { file, .. } => Some(file),
         Command::Analyze { file, .. } => file.as_deref(),
-        Command::Poly { .. } | Command::Bifurcations { .. } | Command::Interconnect(_) => None,
+        Command::Poly { .. }
+        | Command::Bifurcations { .. }
+        | Command::Interconnect(_)
+        | Command::Dcgain { .. } => None,
     }
 }
 
