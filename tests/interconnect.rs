@@ -316,6 +316,12 @@ fn descriptor_series_with_an_improper_part() {
     assert_eq!(tr, tf(&g2s).try_mul(&t1, &Q).unwrap());
     assert_eq!(tr.to_strings(), vec![vec!["(s + 1)/(s^2 + 4*s + 4)"]]);
     assert!(verify(&Interconnection::Series(&g1, &g2), &r));
+    let mut wrong = r.clone();
+    wrong.d.set(0, 0, Q.one());
+    assert!(
+        !verify(&Interconnection::Series(&g1, &g2), &wrong),
+        "the points check fails too"
+    );
     let p = parallel(&g1, &g2).unwrap();
     assert_eq!(
         descriptor_transfer_matrix(&p).unwrap(),
@@ -358,7 +364,14 @@ fn random_systems_satisfy_the_transfer_identities() {
         );
         let g1 = random_ss(&mut rng, r, m);
         let g2 = random_ss(&mut rng, p, r);
-        check_series(&g1, &g2);
+        let s12 = check_series(&g1, &g2);
+        // the check by values (descriptor path) agrees with the one on Markov parameters
+        let (d1, d2) = (
+            Descriptor::from_standard(&g1),
+            Descriptor::from_standard(&g2),
+        );
+        let ds = Descriptor::from_standard(&s12);
+        assert!(verify(&Interconnection::Series(&d1, &d2), &ds));
         let g3 = random_ss(&mut rng, r, m);
         check_parallel(&g1, &g3);
         check_append(&[g1.clone(), g2.clone()]);
