@@ -14,8 +14,10 @@ pub mod budget;
 mod commands;
 mod common;
 mod critical;
+mod dcgain;
 mod float_cmds;
 mod float_compare;
+mod interconnect;
 pub mod memory;
 mod pencil_cmds;
 pub mod plots;
@@ -287,6 +289,16 @@ pub enum Command {
         #[arg(long, default_value_t = budget::DEFAULT_SECTION_SECONDS, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
         section_seconds: f64,
     },
+    /// Exact DC gain G(0) = D - C A^-1 B per channel (`inf` where the channel has a pole at
+    /// s = 0), python-control's `dcgain`.
+    Dcgain {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`), or a file with only D.
+        file: PathBuf,
+    },
+    /// Interconnections: series, parallel, feedback, append (exact, python-control's
+    /// conventions), with `--minreal` and `--out`.
+    #[command(flatten)]
+    Interconnect(interconnect::InterconnectCmd),
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {
