@@ -250,7 +250,7 @@ pub(crate) fn quadratic_image(
     while v.last().is_some_and(|c| c.is_zero()) {
         v.pop();
     }
-    NfElem(v)
+    crate::algebraic::ExtElem(v)
 }
 
 /// $\mathbb{Q}(\sqrt f)$ as a marked number field displayed with the radical.

@@ -12,12 +12,11 @@
 //! Identities checked exactly in $K$: $A V = V J_t$, $W A = J_t W$, $W V = I_m$.
 
 use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
-use crate::algebraic::{NfElem, NumberField, NumberFieldCtx};
+use crate::algebraic::{NfElem, NumberField};
 use crate::error::Result;
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use std::sync::Arc;
 
 /// The data of one irreducible factor $p$ of $\chi_A$, in $K = \mathbb{Q}\[t\]/(p)$.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,11 +42,7 @@ pub struct PrimaryComponent {
 
 /// A number field $\mathbb{Q}[x]/(m)$ marked at `root`, displayed with variable `var`.
 pub(crate) fn named_field(m: &Poly<Q>, root: (f64, f64), var: &str) -> NumberField {
-    NumberField(Arc::new(NumberFieldCtx {
-        modulus: m.monic(),
-        root,
-        var: var.into(),
-    }))
+    NumberField::with_var(m, root, var)
 }
 
 /// $\mathbb{Q}$ as a number field of degree 1 (modulus $x$).

@@ -53,7 +53,7 @@ fn krylov(m: &Matrix<Q>, x: Vec<Rational>) -> Matrix<Q> {
 fn apply(kb: &Matrix<Q>, coef: &Matrix<Q>, field: &NumberField) -> Vec<NfElem> {
     let prod = super::chains::mul(kb, coef);
     (0..prod.nrows())
-        .map(|i| field.elem_from_poly(&Poly::new(Q, prod.row(i).to_vec())))
+        .map(|i| field.from_poly(&Poly::new(Q, prod.row(i).to_vec())))
         .collect()
 }
 
@@ -135,5 +135,5 @@ fn elem_of_col(m: &Matrix<Q>, j: usize) -> NfElem {
     while c.last().is_some_and(|x| x.is_zero()) {
         c.pop();
     }
-    NfElem(c)
+    crate::algebraic::ExtElem(c)
 }

@@ -30,7 +30,7 @@
 use super::controllability::mcmillan_degree;
 use super::minimal::minimal_kalman;
 use crate::algebraic::AlgebraicNumber;
-use crate::algebraic::{NfElem, NumberField, NumberFieldCtx};
+use crate::algebraic::{NfElem, NumberField};
 use crate::error::Result;
 use crate::field::{ComplexField, ComplexPair, Field, Q, Rational};
 use crate::jordan::{chains::jordan_chains, jordan};
@@ -38,7 +38,6 @@ use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::system::StateSpace;
 use num_traits::Zero;
-use std::sync::Arc;
 
 /// One real block of the result: its field, and its (A, B, C) over that field.
 #[derive(Clone, Debug)]
@@ -208,7 +207,7 @@ fn elem_of(m: &Matrix<Q>, j: usize) -> NfElem {
     while c.last().is_some_and(|x| x.is_zero()) {
         c.pop();
     }
-    NfElem(c)
+    crate::algebraic::ExtElem(c)
 }
 
 /// $W B$ for $W$ over $K$ and rational $B$, as rational products of coefficient matrices
@@ -355,11 +354,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
                         (crate::jordan::quadratic_field(&fd), Some((a0, s)))
                     }
                     _ => (
-                        NumberField(Arc::new(NumberFieldCtx {
-                            modulus: c.field.modulus().clone(),
-                            root: c.roots[j],
-                            var: var.clone(),
-                        })),
+                        NumberField::with_var(c.field.modulus(), c.roots[j], &var),
                         None,
                     ),
                 };
@@ -400,11 +395,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
             };
             let Some((f, a_re, beta)) = expanded else {
                 // compact: the complex modal data over K marked at theta
-                let f = NumberField(Arc::new(NumberFieldCtx {
-                    modulus: c.field.modulus().clone(),
-                    root: (re, im),
-                    var: var.clone(),
-                }));
+                let f = NumberField::with_var(c.field.modulus(), (re, im), &var);
                 let k = var.trim_start_matches('r').to_string();
                 symbols.push((var.clone(), crate::jordan::value_display(p, (re, im))));
                 symbols.push((format!("a{k}"), format!("Re {var}")));

@@ -25,7 +25,7 @@ pub(crate) fn elem_of_col(m: &Matrix<QuadraticField>, j: usize) -> RelElem {
     while c.last().is_some_and(|x| k.is_zero(x)) {
         c.pop();
     }
-    RelElem(c)
+    crate::algebraic::ExtElem(c)
 }
 
 /// Row `i` of a matrix whose rows are coefficient vectors, as a canonical element.
@@ -35,7 +35,7 @@ pub(crate) fn elem_of_row(m: &Matrix<QuadraticField>, i: usize) -> RelElem {
     while c.last().is_some_and(|x| k.is_zero(x)) {
         c.pop();
     }
-    RelElem(c)
+    crate::algebraic::ExtElem(c)
 }
 
 /// Multiplication by `x` on $E$ in the basis $1, t, \dots, t^{d-1}$: column $k$ holds the

@@ -39,12 +39,14 @@ mod coeffs;
 pub mod eigen;
 pub mod pair_field;
 pub mod real;
-pub mod relfield;
 pub mod response;
 mod simple;
 
 pub use real::RealFormK;
-pub use relfield::{RelElem, RelField};
+/// $E = K\[t\]/(g)$ over a quadratic field $K$: the generic extension.
+pub type RelField = crate::algebraic::Ext<QuadraticField>;
+/// An element of a [`RelField`].
+pub type RelElem = crate::algebraic::ExtElem<crate::field::Quadratic>;
 
 use super::Eigenvalue;
 use super::chains::{Chains, jordan_block_matrix, jordan_chains};
@@ -178,7 +180,7 @@ pub fn jordan_over_k(a: &Matrix<QuadraticField>) -> Result<JordanFormK> {
     let mut eigenvalues = vec![];
     for (g, e, m, roots) in factors {
         let approx: Vec<(f64, f64)> = roots.iter().map(|z| z.1).collect();
-        let field = RelField::new(&g, approx[0], "t");
+        let field = RelField::with_var(&g, approx[0], "t");
         let t = field.generator();
         let Chains {
             blocks,
