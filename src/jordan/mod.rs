@@ -48,7 +48,7 @@ mod roots;
 mod simple;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
-pub use primary::PrimaryComponent;
+pub use primary::{Component, PrimaryComponent};
 pub use real::{RealBlock, RealJordanForm};
 pub use response::{FreeResponse, ResponseTerm};
 pub(crate) use roots::value_string as value_display;
@@ -106,15 +106,16 @@ pub struct RootColumns {
     pub j: Matrix<NumberField>,
 }
 
-/// The exact Jordan decomposition of a rational matrix.
+/// The exact Jordan decomposition of a matrix over $F$ (over $\mathbb{Q}$ by default; over
+/// $\mathbb{Q}(\sqrt d)$: [`over_k::JordanFormK`]).
 #[derive(Clone, Debug, PartialEq)]
-pub struct JordanForm {
+pub struct JordanForm<F: Field = Q> {
     /// The input matrix.
-    pub a: Matrix<Q>,
+    pub a: Matrix<F>,
     /// $\chi_A(x) = \det(xI - A)$.
-    pub charpoly: Poly<Q>,
-    /// One component per irreducible factor of $\chi_A$.
-    pub components: Vec<PrimaryComponent>,
+    pub charpoly: Poly<F>,
+    /// One component per irreducible factor of $\chi_A$ over $F$.
+    pub components: Vec<Component<F>>,
     /// All eigenvalues, component by component.
     pub eigenvalues: Vec<Eigenvalue>,
     /// Every component's identities held exactly and the dimensions add up to $n$.
@@ -269,11 +270,26 @@ pub(crate) fn quadratic_field(f: &num_bigint::BigInt) -> NumberField {
     named_field(&m, root, &radical_text(f))
 }
 
-impl JordanForm {
+impl<F: Field> JordanForm<F> {
     /// Size of $A$.
     pub fn n(&self) -> usize {
         self.a.nrows()
     }
+    /// The base field $F$.
+    pub fn base(&self) -> &F {
+        self.a.field()
+    }
+    /// The exact terms $G_{\theta,k}$ of $e^{At}$, one set per component.
+    pub fn free_response(&self) -> FreeResponse<crate::algebraic::Ext<F>> {
+        let comps = self
+            .components
+            .iter()
+            .map(|c| (&c.field, &c.blocks[..], &c.chains, &c.left_chains));
+        FreeResponse::from_chains(self.n(), comps)
+    }
+}
+
+impl JordanForm {
     /// The exact field of eigenvalue `ev` (marked at that root, displayed as in the module
     /// docs) and the embedding $\sigma_j$ of the component field into it.
     pub fn root_map(&self, ev: usize) -> (NumberField, Embedding<'_>) {

@@ -37,7 +37,6 @@ use crate::jordan::{chains::jordan_chains, jordan};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::system::StateSpace;
-use num_traits::Zero;
 
 /// One real block of the result: its field, and its (A, B, C) over that field.
 #[derive(Clone, Debug)]
@@ -201,27 +200,17 @@ fn split(cf: &ComplexField<NumberField>, t: &ComplexPair<NfElem>, e: &NfElem) ->
     (acc.re, acc.im)
 }
 
-/// An element of $K$ from a coefficient column (trailing zeros dropped: canonical form).
-fn elem_of(m: &Matrix<Q>, j: usize) -> NfElem {
-    let mut c: Vec<Rational> = (0..m.nrows()).map(|i| m.get(i, j).clone()).collect();
-    while c.last().is_some_and(|x| x.is_zero()) {
-        c.pop();
-    }
-    crate::algebraic::ExtElem(c)
-}
-
 /// $W B$ for $W$ over $K$ and rational $B$, as rational products of coefficient matrices
 /// (row $r$ of $W$ as the $d \times n$ matrix of its coefficients times $B$): no product in
 /// $K$, and the integer product kernel does the work.
 fn times_rational(w: &Matrix<NumberField>, b: &Matrix<Q>) -> Matrix<NumberField> {
     let k = w.field().clone();
-    let d = k.degree();
-    let mut out = Matrix::zeros(k, w.nrows(), b.ncols());
+    let mut out = Matrix::zeros(k.clone(), w.nrows(), b.ncols());
     for r in 0..w.nrows() {
-        let wc = crate::jordan::coeffs::coeff_cols(w.row(r), d);
+        let wc = crate::jordan::coeffs::coeff_cols(&k, w.row(r));
         let prod = &wc * b;
         for j in 0..b.ncols() {
-            out.set(r, j, elem_of(&prod, j));
+            out.set(r, j, crate::jordan::coeffs::elem_of_col(&prod, j));
         }
     }
     out
@@ -230,14 +219,13 @@ fn times_rational(w: &Matrix<NumberField>, b: &Matrix<Q>) -> Matrix<NumberField>
 /// $C V$ for rational $C$ and $V$ over $K$, as [`times_rational`] does $W B$.
 fn rational_times(c: &Matrix<Q>, v: &Matrix<NumberField>) -> Matrix<NumberField> {
     let k = v.field().clone();
-    let d = k.degree();
     let ct = c.transpose();
-    let mut out = Matrix::zeros(k, c.nrows(), v.ncols());
+    let mut out = Matrix::zeros(k.clone(), c.nrows(), v.ncols());
     for r in 0..v.ncols() {
-        let vc = crate::jordan::coeffs::coeff_cols(&v.col(r), d);
+        let vc = crate::jordan::coeffs::coeff_cols(&k, &v.col(r));
         let prod = &vc * &ct;
         for i in 0..c.nrows() {
-            out.set(i, r, elem_of(&prod, i));
+            out.set(i, r, crate::jordan::coeffs::elem_of_col(&prod, i));
         }
     }
     out
