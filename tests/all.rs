@@ -51,6 +51,8 @@ mod io;
 mod jordan;
 #[path = "jordan_fields.rs"]
 mod jordan_fields;
+#[path = "jordan_generic.rs"]
+mod jordan_generic;
 #[path = "latex.rs"]
 mod latex;
 #[path = "library_api.rs"]

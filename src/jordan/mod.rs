@@ -38,6 +38,7 @@
 
 pub mod chains;
 pub(crate) mod coeffs;
+pub mod decompose;
 pub mod over_k;
 pub mod params;
 pub mod primary;
@@ -48,6 +49,7 @@ mod roots;
 mod simple;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
+pub use decompose::{EigenField, jordan_over};
 pub use primary::{Component, PrimaryComponent};
 pub use real::{RealBlock, RealJordanForm};
 pub use response::{FreeResponse, ResponseTerm};
@@ -138,48 +140,7 @@ pub struct JordanForm<F: Field = Q> {
 /// assert!(jf.verified);
 /// ```
 pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
-    a.check_square("jordan")?;
-    let n = a.nrows();
-    let chi = a.charpoly()?;
-    let mut components = vec![];
-    let mut numbers = vec![];
-    for (p, e) in roots::factor_q(&chi)? {
-        let rts = roots::certified_roots(&p)?;
-        let approx = rts.iter().map(|z| z.1).collect();
-        components.push(if e == 1 && p.deg() >= 2 {
-            simple::simple_component(a, &chi, &p, approx)?
-        } else {
-            PrimaryComponent::compute(a, &p, e, approx)?
-        });
-        numbers.push(rts);
-    }
-    let mut eigenvalues = vec![];
-    for (ci, (c, nums)) in components.iter().zip(numbers).enumerate() {
-        for (j, (number, z)) in nums.into_iter().enumerate() {
-            let k = eigenvalues.len() + 1;
-            eigenvalues.push(Eigenvalue {
-                minpoly: c.factor.clone(),
-                value: roots::value_string(&c.factor, z),
-                approx: z,
-                number,
-                component: ci,
-                root: j,
-                symbol: format!("r{k}"),
-                algebraic_multiplicity: c.multiplicity,
-                geometric_multiplicity: c.geometric_multiplicity(),
-                blocks: c.blocks.clone(),
-            });
-        }
-    }
-    let dim: usize = components.iter().map(|c| c.degree() * c.multiplicity).sum();
-    let verified = dim == n && components.iter().all(|c| c.verify(a));
-    Ok(JordanForm {
-        a: a.clone(),
-        charpoly: chi,
-        components,
-        eigenvalues,
-        verified,
-    })
+    jordan_over(a)
 }
 
 /// Jordan decomposition of a matrix over a quadratic field $\mathbb{Q}(\sqrt d)$ (or

@@ -22,10 +22,9 @@
 //! The component is checked exactly as every other one.
 
 use super::coeffs::{coeff_cols, dot, elem_of_col, elem_of_row, mul_matrix};
-use super::primary::{PrimaryComponent, named_field};
 use crate::algebraic::{Ext, ExtElem};
 use crate::error::{Error, Result};
-use crate::field::{Field, Q};
+use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 
@@ -93,30 +92,4 @@ pub(crate) fn simple_chains<F: Field>(
         Matrix::from_vec(e.clone(), n, 1, v),
         Matrix::from_vec(e.clone(), 1, n, w),
     ))
-}
-
-/// The component of the simple irreducible factor `factor` of $\chi_A$ = `chi`
-/// (multiplicity 1, degree $\ge 2$), as described in the module docs.
-///
-/// # Errors
-/// Those of [`simple_chains`].
-pub(crate) fn simple_component(
-    a: &Matrix<Q>,
-    chi: &Poly<Q>,
-    factor: &Poly<Q>,
-    roots: Vec<(f64, f64)>,
-) -> Result<PrimaryComponent> {
-    let field = named_field(factor, roots[0], "t");
-    let (chains, left_chains) = simple_chains(a, chi, &field)?;
-    Ok(PrimaryComponent {
-        factor: factor.clone(),
-        minpoly: factor.monic(),
-        multiplicity: 1,
-        roots,
-        blocks: vec![1],
-        kernel_dims: vec![1],
-        chains,
-        left_chains,
-        field,
-    })
 }

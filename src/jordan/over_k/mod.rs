@@ -46,8 +46,6 @@ pub type RelField = crate::algebraic::Ext<QuadraticField>;
 /// An element of a [`RelField`].
 pub type RelElem = crate::algebraic::ExtElem<crate::field::Quadratic>;
 
-use super::Eigenvalue;
-use super::chains::{Chains, jordan_chains};
 use crate::error::Result;
 use crate::field::QuadraticField;
 use crate::matrix::Matrix;
@@ -63,12 +61,7 @@ pub type JordanFormK = crate::jordan::JordanForm<QuadraticField>;
 
 /// One irreducible factor $g$ over $K$, its multiplicity, the minimal polynomial over
 /// $\mathbb{Q}$ of its roots and the certified roots of $g$.
-pub type FactorRoots = (
-    Poly<QuadraticField>,
-    usize,
-    Poly<crate::field::Q>,
-    eigen::CertifiedRoots,
-);
+pub type FactorRoots = crate::jordan::decompose::FactorRoots<QuadraticField>;
 
 /// The eigenvalues of $A$ over $K$ without chains: per irreducible factor $g$ of
 /// $\chi_A$ over $K$ (multiplicity $e$), $g$, $e$, the minimal polynomial over
@@ -81,14 +74,7 @@ pub fn eigenvalues_over_k(
 ) -> Result<(Poly<QuadraticField>, Vec<FactorRoots>)> {
     a.check_square("jordan")?;
     let chi = a.charpoly()?;
-    let mut out = vec![];
-    if chi.deg() == 0 {
-        return Ok((chi, out));
-    }
-    for (g, e) in eigen::factor_over_k(&chi)? {
-        let (m, roots) = eigen::roots_of_factor(&g)?;
-        out.push((g, e, m, roots));
-    }
+    let out = <QuadraticField as crate::jordan::EigenField>::eigen_factors(&chi)?;
     Ok((chi, out))
 }
 
@@ -113,74 +99,7 @@ pub fn eigenvalues_over_k(
 /// assert!(jf.verified);
 /// ```
 pub fn jordan_over_k(a: &Matrix<QuadraticField>) -> Result<JordanFormK> {
-    let n = a.nrows();
-    let (chi, factors) = eigenvalues_over_k(a)?;
-    let mut components = vec![];
-    let mut eigenvalues = vec![];
-    for (g, e, m, roots) in factors {
-        let approx: Vec<(f64, f64)> = roots.iter().map(|z| z.1).collect();
-        let field = RelField::with_var(&g, approx[0], "t");
-        let t = field.generator();
-        let Chains {
-            blocks,
-            kernel_dims,
-            v,
-            w,
-        } = if e == 1 && g.deg() >= 2 {
-            // a simple eigenvalue: Krylov vectors, no elimination in E
-            let (v, w) = crate::jordan::simple::simple_chains(a, &chi, &field)?;
-            Chains {
-                blocks: vec![1],
-                kernel_dims: vec![1],
-                v,
-                w,
-            }
-        } else {
-            let nm = a
-                .map(&field, |x| field.from_base(x))
-                .try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;
-            jordan_chains(&nm, e)?
-        };
-        let ci = components.len();
-        for (j, (number, z)) in roots.into_iter().enumerate() {
-            let k = eigenvalues.len() + 1;
-            eigenvalues.push(Eigenvalue {
-                minpoly: m.clone(),
-                value: super::roots::value_string(&m, z),
-                approx: z,
-                number,
-                component: ci,
-                root: j,
-                symbol: format!("r{k}"),
-                algebraic_multiplicity: e,
-                geometric_multiplicity: blocks.len(),
-                blocks: blocks.clone(),
-            });
-        }
-        components.push(crate::jordan::primary::Component {
-            factor: g,
-            minpoly: m,
-            multiplicity: e,
-            field,
-            roots: approx,
-            blocks,
-            kernel_dims,
-            chains: v,
-            left_chains: w,
-        });
-    }
-    let dim: usize = components
-        .iter()
-        .map(|c| c.factor.deg() * c.multiplicity)
-        .sum();
-    let verified = dim == n && components.iter().all(|c| c.verify(a));
-    Ok(crate::jordan::JordanForm {
-        a: a.clone(),
-        charpoly: chi,
-        components,
-        eigenvalues,
-        verified,
-    })
+    crate::jordan::jordan_over(a)
 }
 
 impl JordanFormK {
