@@ -23,6 +23,8 @@ mod cli_options;
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
+#[path = "descriptor_class.rs"]
+mod descriptor_class;
 #[path = "display.rs"]
 mod display;
 #[path = "everyday.rs"]
@@ -63,8 +65,12 @@ mod matrix_generic;
 mod matrix_modular;
 #[path = "matrix_quadratic.rs"]
 mod matrix_quadratic;
+#[path = "matrix_rational.rs"]
+mod matrix_rational;
 #[path = "mechanical.rs"]
 mod mechanical;
+#[path = "memory_budget.rs"]
+mod memory_budget;
 #[path = "mpoly.rs"]
 mod mpoly;
 #[path = "mpoly_gcd.rs"]

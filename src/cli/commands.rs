@@ -33,6 +33,9 @@ pub struct RunContext {
     pub events: super::budget::Events,
     /// `--full`.
     pub full: bool,
+    /// The format of stdout when a command may write its report there as it computes it
+    /// (long sweeps); `None` in process.
+    pub stdout: Option<super::Format>,
 }
 
 /// Dispatches a command with `--symbolic` / `--at` (see [`crate::io::symbolic`]).
@@ -46,6 +49,7 @@ pub fn execute_with(
         max_seconds: 1e7,
         events: None,
         full: false,
+        stdout: None,
     };
     execute_ctx(cmd, symbolic, at, &ctx)
 }
@@ -94,16 +98,19 @@ pub fn execute_ctx(
             svg,
             locus_svg,
             csv,
-        } => super::sweep::run(&super::sweep::SweepArgs {
-            file,
-            param,
-            from: *from,
-            to: *to,
-            points: *points,
-            svg: svg.as_deref(),
-            locus_svg: locus_svg.as_deref(),
-            csv: csv.as_deref(),
-        }),
+        } => super::sweep::run(
+            &super::sweep::SweepArgs {
+                file,
+                param,
+                from: *from,
+                to: *to,
+                points: *points,
+                svg: svg.as_deref(),
+                locus_svg: locus_svg.as_deref(),
+                csv: csv.as_deref(),
+            },
+            ctx.stdout,
+        ),
         Command::Critical {
             file,
             param,
@@ -161,6 +168,10 @@ impl SystemVisitor for FileCommand<'_> {
         let e = |err| with_path(path, err);
         let s = &t.ss;
         match self.cmd {
+            Command::Jordan { .. } if t.descriptor.is_some() => {
+                let d = t.descriptor.as_ref().expect("checked");
+                super::a_only::descriptor_jordan(self.cmd, d, path)
+            }
             Command::Jordan { .. } | Command::Linalg { .. } => {
                 a_command(self.cmd, &t.a_raw, path).expect("an A-only command")
             }
@@ -354,10 +365,13 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
         }
         super::PolyCmd::Roots { expr, digits } => {
             let p = parse(expr)?;
-            if *digits == 0 || *digits > 10_000 {
+            if *digits == 0 || *digits > super::args::MAX_DIGITS {
                 return Err(Failure {
                     code: 2,
-                    message: format!("--digits must be between 1 and 10000 (got {digits})"),
+                    message: format!(
+                        "--digits must be between 1 and {} (got {digits})",
+                        super::args::MAX_DIGITS
+                    ),
                 });
             }
             Ok(sections::roots_report(&p, *digits)?)

@@ -44,6 +44,27 @@ pub(crate) fn float_abcd<K: Field>(t: &Typed<K>, path: &Path) -> Result<FloatAbc
     }
 }
 
+/// The float frequency response at `freqs` (hertz). For a file with `E` on the pencil,
+/// $G(j\omega) = C(j\omega E - A)^{-1}B + D$, never through the standard form (whose basis
+/// may be badly scaled); else on `sys` (the embedding of the standard system).
+pub(crate) fn float_response<K: Field>(
+    t: &Typed<K>,
+    sys: &FloatAbcd,
+    path: &Path,
+    freqs: &[f64],
+) -> Result<Vec<DMatrix<Complex<f64>>>, Failure> {
+    let resp = match (&t.descriptor, sys) {
+        (Some(ds), _) => {
+            let conv = |m| to_cmatrix(m).map_err(|e| fail(path, e));
+            let [e, a, b, c, d] = [&ds.e, &ds.a, &ds.b, &ds.c, &ds.d].map(conv);
+            float::freqresp_descriptor(&e?, &a?, &b?, &c?, &d?, freqs)
+        }
+        (None, FloatAbcd::Real([a, b, c, d])) => float::freqresp(a, b, c, d, freqs),
+        (None, FloatAbcd::Complex([a, b, c, d])) => float::freqresp_complex(a, b, c, d, freqs),
+    };
+    resp.map_err(|e| fail(path, e))
+}
+
 /// A float matrix in a report: numbers for a real matrix, `[re, im]` pairs for a complex one.
 fn dm_report<T: FloatScalar>(r: Report, name: &str, m: &DMatrix<T>) -> Report {
     let complex = m.iter().any(|z| z.imaginary() != 0.0);
@@ -102,19 +123,15 @@ pub fn freqresp<K: Field>(
         });
     }
     let mut freqs = logspace(from, to, points);
-    let resp = match &sys {
-        FloatAbcd::Real([a, b, c, d]) => float::freqresp(a, b, c, d, &freqs),
-        FloatAbcd::Complex([a, b, c, d]) => {
-            freqs = freqs
-                .iter()
-                .rev()
-                .map(|f| -f)
-                .chain(freqs.iter().copied())
-                .collect();
-            float::freqresp_complex(a, b, c, d, &freqs)
-        }
+    if two_sided {
+        freqs = freqs
+            .iter()
+            .rev()
+            .map(|f| -f)
+            .chain(freqs.iter().copied())
+            .collect();
     }
-    .map_err(|e| fail(path, e))?;
+    let resp = float_response(t, &sys, path, &freqs)?;
     let table = response_table(&resp);
     if let Some(p) = csv {
         std::fs::write(p, response_csv(&freqs, &table)).map_err(|e| Failure {

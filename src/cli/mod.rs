@@ -16,10 +16,12 @@ mod common;
 mod critical;
 mod float_cmds;
 mod float_compare;
+pub mod memory;
 mod pencil_cmds;
 pub mod plots;
 mod progress;
 mod sweep;
+mod sweep_stream;
 mod symbolic;
 mod symbolic_jordan;
 
@@ -69,6 +71,10 @@ pub struct Cli {
     /// Upper bound on the wall time in seconds (a number > 0); exceeded: exit 2.
     #[arg(long, global = true, default_value_t = 600.0, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
     pub max_seconds: f64,
+    /// Memory budget in MiB (0: none). An allocation past it stops the command with one line
+    /// on stderr and exit 2 instead of exhausting the machine (see `exactlti::cli::memory`).
+    #[arg(long, global = true, default_value_t = memory::DEFAULT_MAX_MEMORY_MIB, value_name = "MIB")]
+    pub max_memory: u64,
     /// Keep these parameters as symbols (comma separated; alone: every parameter).
     #[arg(long, global = true, num_args = 0..=1, default_missing_value = "", value_name = "NAMES")]
     pub symbolic: Option<String>,
@@ -245,7 +251,7 @@ pub enum Command {
         /// Upper end of the interval: an exact number (decimal or fraction).
         #[arg(long, allow_hyphen_values = true)]
         to: String,
-        /// Correct digits of the displayed critical values.
+        /// Correct digits of the displayed critical values (1 to 200).
         #[arg(long, default_value_t = 20)]
         digits: usize,
     },
@@ -301,6 +307,8 @@ pub struct Outcome {
     pub float_disagrees: bool,
     /// The report is printed but `--max-seconds` cut part of it: exit 2 with this line.
     pub stopped: Option<String>,
+    /// The report was already written to stdout as it was computed (long sweeps).
+    pub streamed: bool,
 }
 
 impl Outcome {
@@ -311,6 +319,7 @@ impl Outcome {
             verified,
             float_disagrees: false,
             stopped: None,
+            streamed: false,
         }
     }
     /// A float-vs-exact report (`check`, ERA): `agree = false` exits 3.
@@ -320,6 +329,7 @@ impl Outcome {
             verified: true,
             float_disagrees: !agree,
             stopped: None,
+            streamed: false,
         }
     }
     /// A report without an exact check to fail (float results, tables, factorizations).
@@ -491,6 +501,7 @@ pub fn run(cli: Cli) -> i32 {
     let standalone = cli.standalone;
     let full = cli.full;
     let limit = cli.max_seconds;
+    memory::set_max_memory_mib(cli.max_memory);
     let (tx, rx) = mpsc::channel();
     let streams = format == Format::Text && matches!(cli.command, Command::Analyze { .. });
     let ctx = commands::RunContext {
@@ -498,6 +509,7 @@ pub fn run(cli: Cli) -> i32 {
         max_seconds: limit,
         events: streams.then(|| tx.clone()),
         full,
+        stdout: Some(format),
     };
     let handle = std::thread::Builder::new()
         .stack_size(256 << 20)
@@ -564,7 +576,9 @@ fn finish(
 ) -> i32 {
     match r {
         Ok(out) => {
-            let written = if printer.streamed() {
+            let written = if out.streamed {
+                Ok(())
+            } else if printer.streamed() {
                 printer.rest(&out.report)
             } else {
                 write_stdout(&render_full(&out.report, format, standalone, printer.full))

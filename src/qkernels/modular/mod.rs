@@ -19,6 +19,10 @@
 //! | [`charpoly_modular`] | $\det(xI - A)$, low degree first | principal-minor Hadamard bound ([`charpoly`]) |
 //! | [`inverse_modular`] | $A^{-1}$ or `None` | $BN = dI$ checked modulo $M > 2\beta$ ([`inverse`]) |
 //!
+//! [`direct`] holds the kernels that reduce the rational matrix itself modulo each prime
+//! ([`qimage`]): determinant, characteristic polynomial, inverse, the full-rank test and the
+//! cyclicity test of the minimal polynomial.
+//!
 //! These always take the multi-modular path; the size dispatch between them and the
 //! fraction-free routines of [`crate::qkernels::fraction_free`] lives on the matrix side
 //! (`crate::matrix::over_q`).
@@ -32,8 +36,11 @@
 pub mod charpoly;
 pub mod crt;
 pub mod det;
+pub mod direct;
 pub mod guess;
 pub mod inverse;
+pub mod minpoly;
+pub mod qimage;
 pub mod rank;
 pub mod rref;
 
