@@ -28,6 +28,9 @@ use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 
+/// Right ($n \times 1$) and left ($1 \times n$) chains over $F\[t\]/(g)$.
+pub(crate) type ChainPair<F> = (Matrix<Ext<F>>, Matrix<Ext<F>>);
+
 /// $K_b$ for `b = e_i` ($n \times n$, column $j$ is $M^j e_i$), each product on the
 /// product kernel of the matrix layer.
 fn krylov<F: Field>(m: &Matrix<F>, i: usize) -> Matrix<F> {
@@ -55,7 +58,7 @@ pub(crate) fn simple_chains<F: Field>(
     a: &Matrix<F>,
     chi: &Poly<F>,
     e: &Ext<F>,
-) -> Result<(Matrix<Ext<F>>, Matrix<Ext<F>>)> {
+) -> Result<ChainPair<F>> {
     let n = a.nrows();
     let t = e.generator();
     let chi = chi.monic();
