@@ -77,6 +77,8 @@ mod mpoly;
 mod mpoly_gcd;
 #[path = "multibody.rs"]
 mod multibody;
+#[path = "multibody_examples.rs"]
+mod multibody_examples;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]
@@ -87,6 +89,8 @@ mod pencil_published;
 mod plots;
 #[path = "poly_factor.rs"]
 mod poly_factor;
+#[path = "qp_conditions.rs"]
+mod qp_conditions;
 #[path = "qp_kernels.rs"]
 mod qp_kernels;
 #[path = "realization.rs"]
@@ -95,6 +99,8 @@ mod realization;
 mod realization_planted;
 #[path = "reserved_names.rs"]
 mod reserved_names;
+#[path = "rest22.rs"]
+mod rest22;
 #[path = "robustness.rs"]
 mod robustness;
 #[path = "scb.rs"]

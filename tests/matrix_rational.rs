@@ -179,3 +179,55 @@ fn derogatory_minpoly_over_rationals() {
     assert_eq!(mp, bm.charpoly_hessenberg().unwrap());
     assert!(d.eval_poly(&mp).unwrap().is_zero());
 }
+
+#[test]
+fn solve_and_inverse_lift_det_scaled_numerators() {
+    // solve_direct lifts N = det(DA) X by CRT alone: several right-hand columns, integer and
+    // rational inputs, against the generic RREF of [A | B] and by A X = B
+    let mut g = SplitMix64(2929);
+    for (n, k, qmax) in [(9, 3, 1_000_000), (14, 2, 1), (20, 5, 1000), (11, 11, 1_000_000)] {
+        let a = random(&mut g, n, n, qmax, 0);
+        let b = random(&mut g, n, k, qmax, 4);
+        let x = direct::solve_direct(n, k, &a, &b).expect("a random matrix is nonsingular");
+        assert_eq!(matmul(n, n, k, &a, &x), b, "A X = B {n}x{n} k {k}");
+        let mut aug = Vec::new();
+        for i in 0..n {
+            aug.extend_from_slice(&a[i * n..(i + 1) * n]);
+            aug.extend_from_slice(&b[i * k..(i + 1) * k]);
+        }
+        let (r, _) = mat(n, n + k, &aug).rref_gauss_jordan();
+        let want: Vec<Rational> = (0..n)
+            .flat_map(|i| r.as_slice()[i * (n + k) + n..(i + 1) * (n + k)].to_vec())
+            .collect();
+        assert_eq!(x, want, "against the generic RREF {n}x{n} k {k}");
+        let inv = direct::inverse_direct(n, &a).expect("nonsingular");
+        let id = Matrix::<Q>::identity(Q, n);
+        assert_eq!(matmul(n, n, n, &inv, &a), id.as_slice(), "A^-1 A = I {n}");
+    }
+    // singular (a repeated row): no solution is claimed, no inverse
+    let mut a = random(&mut g, 10, 10, 1000, 0);
+    let r0 = a[..10].to_vec();
+    a[90..].clone_from_slice(&r0);
+    assert_eq!(direct::inverse_direct(10, &a), None);
+    assert_eq!(direct::solve_direct(10, 1, &a, &random(&mut g, 10, 1, 7, 0)), None);
+}
+
+#[test]
+fn deficient_rref_on_images_of_a() {
+    // rank-deficient rational matrices take the multi-modular RREF on images of A itself:
+    // canonical RREF equal to the generic one, every row of A in its row space
+    let mut g = SplitMix64(4242);
+    for (m, n) in [(18, 18), (15, 22), (24, 13)] {
+        let mut a = random(&mut g, m, n, 1_000_000, 0);
+        for j in 0..n {
+            a[(m - 1) * n + j] = &a[j] * qq(5, 3) - &a[n + j];
+        }
+        let (r, piv) = oq::rref_q(m, n, &a);
+        let (rg, pg) = mat(m, n, &a).rref_gauss_jordan();
+        assert_eq!((r.as_slice(), &piv), (rg.as_slice(), &pg), "{m}x{n}");
+        assert_eq!(piv.len(), m.min(n) - usize::from(m <= n), "rank {m}x{n}");
+        for v in oq::nullspace_q(m, n, &a) {
+            assert!(matmul(m, n, 1, &a, &v).iter().all(Zero::is_zero));
+        }
+    }
+}

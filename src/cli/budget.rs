@@ -126,6 +126,12 @@ impl Budget {
         }
         let start = Instant::now();
         match rx.recv_timeout(wait) {
+            // a result that arrives after the whole bound (this thread was not scheduled in
+            // time) is not used: the bound holds however the threads are scheduled
+            Ok(_) if whole && self.deadline.is_some_and(|d| Instant::now() > d) => Ran::OutOfTime {
+                seconds: start.elapsed().as_secs_f64(),
+                whole,
+            },
             Ok(v) => Ran::Done(v),
             Err(mpsc::RecvTimeoutError::Timeout) => Ran::OutOfTime {
                 seconds: start.elapsed().as_secs_f64(),

@@ -217,7 +217,17 @@ impl SystemVisitor for FileCommand<'_> {
                 csv,
                 ..
             } => {
-                let r = super::float_cmds::freqresp(t, path, *from, *to, *points, csv.as_deref())?;
+                let (_, ins, outs) = super::plots::names(f, path, s.ninputs(), s.noutputs());
+                let names = (ins.as_slice(), outs.as_slice());
+                let r = super::float_cmds::freqresp(
+                    t,
+                    path,
+                    names,
+                    *from,
+                    *to,
+                    *points,
+                    csv.as_deref(),
+                )?;
                 if let Some(out) = svg {
                     super::plots::bode_file(f, t, path, (*from, *to, *points), out)?;
                 }

@@ -155,7 +155,8 @@ pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
             ),
         });
     }
-    crate::io::read_system_file(a.file)?;
+    // the file is a valid system (its swept parameter may be `null`: symbols allowed)
+    crate::io::symbolic::load_symbolic_path(a.file, &Default::default())?;
     let fam = ParamFamily::from_file(a.file, a.param)?;
     let cv = critical_values(&fam, &from, &to)?;
     Ok(Outcome::new(report(&cv, a.digits), cv.verified))

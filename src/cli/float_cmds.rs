@@ -85,10 +85,12 @@ fn dm_report<T: FloatScalar>(r: Report, name: &str, m: &DMatrix<T>) -> Report {
 /// 50 MB of JSON, a few hundred MB while the report is built.
 pub const MAX_RESPONSE_VALUES: usize = 1_000_000;
 
-/// Frequency response (float, from the exact system's embedding).
+/// Frequency response (float, from the exact system's embedding); `names`: the input and
+/// output names of the channels (`u1`, `y1`, ... when the file gives none).
 pub fn freqresp<K: Field>(
     t: &Typed<K>,
     path: &Path,
+    names: (&[String], &[String]),
     from: f64,
     to: f64,
     points: usize,
@@ -157,7 +159,7 @@ pub fn freqresp<K: Field>(
             )
         })
         .collect();
-    let (header, rows) = bode_table(&freqs, &table);
+    let (header, rows) = bode_table(&freqs, &table, names);
     let mut rep = Report::titled("frequency response");
     if two_sided {
         rep = rep.bool("two_sided", true).str(
@@ -179,8 +181,12 @@ pub fn freqresp<K: Field>(
 }
 
 /// The text of a frequency response: per frequency (Hz), the magnitude (dB) and phase
-/// (degrees, unwrapped along the frequencies) of each channel `y<i>/u<j>`.
-fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>) {
+/// (degrees, unwrapped along the frequencies) of each channel `output/input` (by name).
+fn bode_table(
+    freqs: &[f64],
+    table: &Response,
+    (inputs, outputs): (&[String], &[String]),
+) -> (Vec<String>, Vec<Vec<String>>) {
     use crate::report::text::short;
     let (p, m) = table
         .first()
@@ -193,8 +199,9 @@ fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>
                 header.push("magnitude (dB)".into());
                 header.push("phase (deg)".into());
             } else {
-                header.push(format!("y{}/u{} (dB)", i + 1, j + 1));
-                header.push(format!("y{}/u{} (deg)", i + 1, j + 1));
+                let ch = format!("{}/{}", outputs[i], inputs[j]);
+                header.push(format!("{ch} (dB)"));
+                header.push(format!("{ch} (deg)"));
             }
         }
     }

@@ -545,7 +545,17 @@ pub fn run(cli: Cli) -> i32 {
             ));
             return 2;
         };
-        match rx.recv_timeout(left.min(Duration::from_millis(100))) {
+        let got = rx.recv_timeout(left.min(Duration::from_millis(100)));
+        if got.is_ok() && Instant::now() > deadline {
+            // what arrives after the bound (this thread was not scheduled in time) is not
+            // printed: --max-seconds holds however the threads are scheduled
+            printer.clear();
+            say(&format!(
+                "stopped after --max-seconds {limit}: the exact computation did not finish in time"
+            ));
+            return 2;
+        }
+        match got {
             Ok(Event::Finished(r)) => {
                 printer.clear();
                 return finish(*r, &mut printer, format, standalone);

@@ -35,6 +35,20 @@ pub fn handles(cmd: &Command) -> Option<&Path> {
     }
 }
 
+/// The rows and columns of a transfer matrix by name (`outputs`, `inputs`) when the file
+/// names them (a model file: its sensors and actuators).
+fn channel_names(rep: &mut crate::report::Report, s: &crate::io::SignalNames, p: usize, m: usize) {
+    let strs = |v: &[String]| {
+        crate::report::Value::List(v.iter().cloned().map(crate::report::Value::Str).collect())
+    };
+    if let Some(o) = s.outputs.as_ref().filter(|o| o.len() == p) {
+        rep.push("outputs", strs(o));
+    }
+    if let Some(i) = s.inputs.as_ref().filter(|i| i.len() == m) {
+        rep.push("inputs", strs(i));
+    }
+}
+
 /// A cheap look at the top-level keys (the full reader validates later).
 fn file_has_key(path: &Path, key: &str) -> bool {
     let Ok(text) = crate::io::read_text(path) else {
@@ -177,6 +191,12 @@ impl DescriptorVisitor for Run<'_> {
                 if let Some(mv) = markov {
                     rep.push("markov_verified", crate::report::Value::Bool(mv));
                 }
+                channel_names(
+                    &mut rep,
+                    &l.signals,
+                    g.entries.len(),
+                    g.entries.first().map_or(0, Vec::len),
+                );
                 let ok = r.verified;
                 Ok(Outcome::new(rep, ok))
             }

@@ -73,7 +73,8 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
             ),
         });
     }
-    crate::io::read_system_file(a.file)?; // the file is a valid system
+    // the file is a valid system (its swept parameter may be `null`: symbols allowed)
+    crate::io::symbolic::load_symbolic_path(a.file, &Default::default())?;
     let fam = ParamFamily::from_file(a.file, a.param)?;
     let values = sweep_values(a.from, a.to, a.points);
     let title = format!("sweep of {} over [{}, {}]", a.param, a.from, a.to);

@@ -41,6 +41,7 @@ pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
 use crate::field::scan::{identifier_end, number_end};
 use crate::field::{QuadraticField, Rational, parse_rational};
+use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
 /// Longest accepted number literal (characters).
@@ -216,12 +217,40 @@ pub fn too_long(text: &str) -> Result<(), ExprError> {
     Ok(())
 }
 
+/// The value of a plain `[-]digits[/digits]` (at most 18 digits each, a non-zero
+/// denominator, no spaces): the shape of a user's decimal data written as fractions,
+/// read without the parser and with one word gcd (issue 29: 10^4 entries of a rational
+/// matrix); `None` for every other text (the parser decides it, with its messages).
+fn plain_fraction(text: &str) -> Option<Rational> {
+    fn digits(s: &str) -> Option<i64> {
+        let ok = !s.is_empty() && s.len() <= 18 && s.bytes().all(|b| b.is_ascii_digit());
+        ok.then(|| s.parse().ok()).flatten()
+    }
+    let (neg, body) = match text.as_bytes().first()? {
+        b'-' => (true, &text[1..]),
+        _ => (false, text),
+    };
+    let (p, q) = match body.split_once('/') {
+        Some((p, q)) => (digits(p)?, digits(q)?),
+        None => (digits(body)?, 1),
+    };
+    if q == 0 {
+        return None;
+    }
+    let g = num_integer::Integer::gcd(&p, &q);
+    let p = if neg { -(p / g) } else { p / g };
+    Some(Rational::new_raw(BigInt::from(p), BigInt::from(q / g)))
+}
+
 /// Evaluates `text`; `lookup` gives the value of a parameter name (`None`: unknown).
 pub(crate) fn eval_with(
     text: &str,
     lookup: &dyn Fn(&str) -> Option<Value>,
 ) -> Result<Value, ExprError> {
     too_long(text)?;
+    if let Some(q) = plain_fraction(text) {
+        return Ok(Value::rational(q));
+    }
     let toks = lex(text)?;
     if toks.is_empty() {
         return err("empty expression");
@@ -437,6 +466,43 @@ mod tests {
             .map(|(x, g)| g.fmt_scalar(&x))
             .map_err(|e| e.msg)
     }
+    /// The plain-fraction shortcut gives what the parser gives, on a generator of the
+    /// shapes it takes (signs, zeros, long digit strings) and of near misses it leaves to the
+    /// parser (spaces, a plus sign, a zero denominator, 19 digits, two slashes).
+    #[test]
+    fn plain_fractions_as_the_parser() {
+        let parsed = |s: &str| {
+            let mut p = Parser {
+                text: s,
+                toks: lex(s).unwrap(),
+                pos: 0,
+                depth: 0,
+                lookup: &|_: &str| None,
+            };
+            p.expr().map(|v| v.a).map_err(|e| e.msg)
+        };
+        let mut g = crate::rng::SplitMix64(29);
+        for _ in 0..500 {
+            let p = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
+            let q = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
+            let sign = if g.next_u64() % 2 == 0 { "-" } else { "" };
+            for s in [format!("{sign}{p}/{q}"), format!("{sign}{p}"), format!("{sign}0{p}")] {
+                let want = parsed(&s);
+                if let Some(x) = plain_fraction(&s) {
+                    assert_eq!(Ok(x), want, "{s}");
+                }
+                assert_eq!(eval_with(&s, &|_| None).map(|v| v.a).map_err(|e| e.msg), want);
+            }
+            let s = format!("{sign}{p}/{q}");
+            assert_eq!(plain_fraction(&s).is_some(), q != 0, "{s} takes the shortcut");
+        }
+        for s in ["1 /2", "+1/2", "1/0", "1/2/3", "1234567890123456789/2", "-", "/2", "1/"] {
+            assert_eq!(plain_fraction(s), None, "{s}");
+        }
+        assert_eq!(ev("1/0").unwrap_err(), parsed("1/0").unwrap_err());
+        assert_eq!(ev("-6/4").unwrap(), "-3/2");
+    }
+
     #[test]
     fn examples() {
         assert_eq!(ev("1 + 2*3").unwrap(), "7");

@@ -48,6 +48,11 @@ pub struct StandardForm<K: Field> {
     pub lambda0: Option<i64>,
     /// `x = V1 z + (terms in u)`: the standard form's states in the descriptor's.
     pub v1: Matrix<K>,
+    /// `z_j = x_{states[j]}` exactly, when every state of the standard form is one of the
+    /// descriptor's own ($x = V_1 z + W u$ with row `states[j]` of $V_1$ the unit row $e_j^T$
+    /// and of $W$ zero; the index-0 and index-1 routes when $E$ is block diagonal up to a
+    /// permutation); `None` otherwise.
+    pub states: Option<Vec<usize>>,
     /// The transfer matrix of the standard form equals the descriptor's (exactly, at enough
     /// rational points) and, for the Weierstrass split, the transformed pencil is block
     /// diagonal.
@@ -98,14 +103,37 @@ fn index_one_form<K: Field>(sys: &Descriptor<K>) -> Result<Option<StandardForm<K
         StandardMethod::IndexOne
     };
     let verified = maps_solutions(sys, &system, &v1, &w);
+    let states = own_states(&v1, &w);
     Ok(Some(StandardForm {
         system,
         removed_infinite: n - r,
         method,
         lambda0: None,
         v1,
+        states,
         verified,
     }))
+}
+
+/// For each state $z_j$ the descriptor state $x_i$ it equals ($x = V_1 z + W u$, row $i$ of
+/// $V_1$ is $e_j^T$ and row $i$ of $W$ is zero), the first such $i$; `None` when some $z_j$
+/// has none.
+fn own_states<K: Field>(v1: &Matrix<K>, w: &Matrix<K>) -> Option<Vec<usize>> {
+    let k = v1.field();
+    let unit_row = |i: usize| -> Option<usize> {
+        let nz: Vec<usize> = (0..v1.ncols())
+            .filter(|&j| !k.is_zero(v1.get(i, j)))
+            .collect();
+        let clean = (0..w.ncols()).all(|j| k.is_zero(w.get(i, j)));
+        (clean && nz.len() == 1 && k.is_one(v1.get(i, nz[0]))).then(|| nz[0])
+    };
+    let mut states = vec![None; v1.ncols()];
+    for i in 0..v1.nrows() {
+        if let Some(j) = unit_row(i) {
+            states[j].get_or_insert(i);
+        }
+    }
+    states.into_iter().collect()
 }
 
 /// The certificate of the index-1 route: with $x = V_1z + Wu$ every solution of the
@@ -179,6 +207,7 @@ pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardF
         method: StandardMethod::Weierstrass,
         lambda0: Some(split.lambda0),
         v1: split.v1,
+        states: None,
         verified,
     })
 }

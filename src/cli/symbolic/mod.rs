@@ -13,6 +13,7 @@
 //! This module imports only leaf command modules (`common`, `symbolic_jordan`): a file whose
 //! symbols all got values is handed back ([`Handled::Valued`]) to the ordinary dispatch.
 
+mod modes;
 pub(super) mod system;
 
 use super::common::{exact_only, linalg_report, with_path};
@@ -132,6 +133,26 @@ pub(super) fn execute(cmd: &Command, opts: &SymbolicOptions) -> Result<Option<Ha
         TypedAny::RatFunc(t) => {
             let k = t.a_raw.field();
             match cmd {
+                Command::Sweep { param, .. } | Command::Critical { param, .. } => {
+                    // the swept parameter may be `null` (the study gives it its values);
+                    // every other symbol needs a number: a plot and a crossing are numbers
+                    let other: Vec<&String> = k.vars().iter().filter(|v| *v != param).collect();
+                    if !opts.is_empty() {
+                        return Err(refuse(format!(
+                            "`{}` does not take --symbolic or --at yet; write the values into the file",
+                            name(cmd)
+                        )));
+                    }
+                    if other.is_empty() {
+                        return Ok(None);
+                    }
+                    let list: Vec<&str> = other.iter().map(|s| s.as_str()).collect();
+                    Err(refuse(format!(
+                        "`{}` along {param} needs a number for every other parameter ({} without one); write their values into the file",
+                        name(cmd),
+                        list.join(", ")
+                    )))
+                }
                 Command::Linalg { op, .. } => {
                     let k = k.fresh();
                     let a = t.a_raw.map(&k, |x| x.clone());

@@ -13,7 +13,7 @@
 //! | [`det_direct`] | $\det A = \det(DA) / \Delta$ | Hadamard: $|\det DA| \le \prod_i d_i \|A_{i,:}\|_2$ |
 //! | [`charpoly_direct`] | $\det(xI - A)$ | $\Delta c_k \in \mathbb{Z}$, $|\Delta c_k| \le \Delta \binom{n}{k} \max_{|S| = k} \prod_{i \in S} \|A_{i,:}\|_2$ |
 //! | [`is_cyclic`] | whether $\mu_A = \chi_A$ (`false`: undecided) | a Krylov basis $v, \bar A v, \dots, \bar A^{n-1} v$ modulo $p$ |
-//! | [`solve_direct`], [`inverse_direct`] | $A^{-1} B = N / \delta$ or `None` | $(DA) N = \delta DB$ checked modulo $M > 2\beta$ |
+//! | [`solve_direct`], [`inverse_direct`] | $A^{-1} B = N / \delta$, $\delta = \det(DA)$, or `None` | $(DA) N = \delta DB$ checked modulo $M > 2\beta$ |
 //!
 //! The minimal-polynomial certificate: $\mu_A$ divides $\chi_A \in \mathbb{Z}_{(p)}[x]$ and is
 //! monic, so (Gauss's lemma over the valuation ring $\mathbb{Z}_{(p)}$) $\mu_A \in
@@ -24,7 +24,7 @@
 //! Primes dividing a denominator of $A$ have no image and are skipped.
 
 use super::charpoly::charpoly_mod_p;
-use super::crt::{CommonDenominator, Crt};
+use super::crt::Crt;
 use super::det::det_mod_p;
 use super::qimage::{RatMat, log2_int};
 use super::rank::rank_mod_p;
@@ -166,11 +166,15 @@ pub fn inverse_direct(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
     solve_direct(n, n, a, &id)
 }
 
-/// $X = A^{-1} B$ for the `n x n` `a` and the `n x k` `b` (`None` when $A$ is singular),
-/// reconstructed from the solutions modulo each prime (Gauss–Jordan on $[\bar A \mid \bar
-/// B]$) over one common denominator, output-sensitive: the reconstruction is tried when a
-/// few probe entries are stable between two checkpoints, and accepted only with the
-/// certificate of the module docs ($D$ the row denominators of $[A \mid B]$).
+/// $X = A^{-1} B$ for the `n x n` `a` and the `n x k` `b` (`None` when $A$ is singular).
+///
+/// With $D$ the row denominators of $[A \mid B]$ and $\delta = \det(DA)$, the matrix
+/// $N = \delta X = \operatorname{adj}(DA)\,DB$ is integral: each prime gives $\bar\delta$
+/// (the determinant of $\bar A$ times $\bar\Delta$) and $\bar N = \bar\delta \bar X$
+/// (Gauss–Jordan on $[\bar A \mid \bar B]$), and $N$ is lifted by CRT alone, with no
+/// rational reconstruction (which would need a modulus of twice the bits). Output-sensitive:
+/// the lift is tried when $\delta$ is stable between two checkpoints, and accepted only with
+/// the certificate of the module docs.
 ///
 /// # Panics
 /// When `a.len() != n * n` or `b.len() != n * k`.
@@ -190,12 +194,16 @@ pub fn solve_direct(n: usize, k: usize, a: &[Rational], b: &[Rational]) -> Optio
         return (!singular).then(Vec::new);
     }
     let cert = SolveCertificate::new(&rm, n);
-    let (mut used, mut imgs): (Vec<Prime>, Vec<Vec<u64>>) = (vec![], vec![]);
-    let (mut next_check, mut last_probe, mut checked_det) = (1usize, None, false);
+    let (big_delta, _) = delta(&rm);
+    // images[t] = (delta mod p_t, N mod p_t)
+    let (mut used, mut imgs): (Vec<Prime>, Vec<(u64, Vec<u64>)>) = (vec![], vec![]);
+    let (mut next_check, mut last_det, mut checked_det) = (1usize, None, false);
     for (pr, mut img) in images(&rm) {
+        let mut sq: Vec<u64> = (0..n).flat_map(|i| img[i * w..i * w + n].to_vec()).collect();
+        let det = pr.mul(det_mod_p(&pr, n, &mut sq), delta_mod(&pr, &big_delta));
         let piv = rref_mod_p(&pr, n, w, &mut img);
         // pivots strictly increase: they are 0..n exactly when the n-th one is n - 1
-        if piv.len() < n || piv[n - 1] != n - 1 {
+        if det == 0 || piv.len() < n || piv[n - 1] != n - 1 {
             if !checked_det {
                 if det_direct(n, a).is_zero() {
                     return None;
@@ -204,39 +212,27 @@ pub fn solve_direct(n: usize, k: usize, a: &[Rational], b: &[Rational]) -> Optio
             }
             continue; // unlucky prime
         }
-        imgs.push(
-            (0..n)
-                .flat_map(|i| img[i * w + n..(i + 1) * w].to_vec())
-                .collect(),
-        );
+        let mut x: Vec<u64> = (0..n)
+            .flat_map(|i| img[i * w + n..(i + 1) * w].to_vec())
+            .collect();
+        pr.scale(&mut x, det);
+        imgs.push((det, x));
         used.push(pr);
         if used.len() < next_check {
             continue;
         }
         next_check = used.len() + (used.len() / 8).max(1);
         let crt = Crt::new(&used);
-        let probe_idx = [total - 1, total / 2, 0];
-        let probe = {
-            let us = probe_idx.iter().map(|&i| crt.lift_nonneg(|t| imgs[t][i]));
-            CommonDenominator::reconstruct(&crt, us).map(|cd| cd.den)
-        };
-        let stable = probe.is_some() && probe == last_probe;
-        last_probe = probe;
+        let d = crt.lift(|t| imgs[t].0);
+        let stable = last_det.as_ref() == Some(&d);
+        last_det = Some(d.clone());
         if !stable {
             continue;
         }
-        let us = (0..total).map(|i| crt.lift_nonneg(|t| imgs[t][i]));
-        let Some(cd) = CommonDenominator::reconstruct(&crt, us) else {
-            continue;
-        };
-        match cert.needed_bits(&crt, &cd) {
+        let nums: Vec<BigInt> = (0..total).map(|i| crt.lift(|t| imgs[t].1[i])).collect();
+        match cert.needed_bits(&crt, &d, &nums) {
             None => {
-                return Some(
-                    cd.nums
-                        .into_iter()
-                        .map(|x| gcd::fraction(x, &cd.den))
-                        .collect(),
-                );
+                return Some(nums.into_iter().map(|x| gcd::fraction(x, &d)).collect());
             }
             // the candidate is (very likely) right: wait until the modulus can certify it
             Some(bits) => next_check = next_check.max(primes_for_bits(bits)),
@@ -269,15 +265,15 @@ impl SolveCertificate {
         SolveCertificate { max_row, max_b }
     }
 
-    /// $(DA) N \equiv \delta (DB)$ modulo every prime used (by construction, $\delta$ a unit
-    /// modulo each), and $M > 2\beta$ with $\beta = \max_i \sum_j |d_i a_{ij}| \max|N| +
-    /// \delta \max |d_i b_{ij}|$ bounding both sides: the identity holds over $\mathbb{Z}$.
-    /// `None` when the identity is certified, else $\log_2 2\beta$ (the modulus it needs).
-    fn needed_bits(&self, crt: &Crt, cd: &CommonDenominator) -> Option<f64> {
-        let max_n = cd.nums.iter().map(|x| x.abs()).max().unwrap_or_default();
-        let beta2 = (&self.max_row * max_n + &cd.den * &self.max_b) * 2u32;
-        let unit = crt.primes().iter().all(|p| !(&cd.den % p.p).is_zero());
-        if unit && *crt.modulus() > beta2 {
+    /// $(DA) N \equiv \delta (DB)$ modulo every prime used (by construction), $\delta \ne 0$
+    /// and $M > 2\beta$ with $\beta = \max_i \sum_j |d_i a_{ij}| \max|N| + |\delta| \max
+    /// |d_i b_{ij}|$ bounding both sides: the identity holds over $\mathbb{Z}$, so $X = N /
+    /// \delta$ solves $AX = B$. `None` when certified, else $\log_2 2\beta$ (the modulus it
+    /// needs).
+    fn needed_bits(&self, crt: &Crt, den: &BigInt, nums: &[BigInt]) -> Option<f64> {
+        let max_n = nums.iter().map(|x| x.abs()).max().unwrap_or_default();
+        let beta2 = (&self.max_row * max_n + den.abs() * &self.max_b) * 2u32;
+        if !den.is_zero() && *crt.modulus() > beta2 {
             return None;
         }
         Some(log2_int(&beta2))

@@ -16,7 +16,7 @@ use crate::field::Rational;
 use crate::qkernels::prime::Prime;
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
-use num_traits::{One, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// A rational matrix prepared for fast reduction modulo word primes.
 #[derive(Clone, Debug)]
@@ -109,13 +109,25 @@ impl<'a> RatMat<'a> {
             .map(|i| {
                 self.a[i * self.n..(i + 1) * self.n]
                     .iter()
-                    .fold(BigInt::one(), |l, x| {
-                        if x.denom().is_one() || (&l % x.denom()).is_zero() {
-                            l
-                        } else {
-                            l.lcm(x.denom())
-                        }
-                    })
+                    .fold(BigInt::one(), |l, x| lcm_small(l, x.denom()))
+            })
+            .collect()
+    }
+
+    /// $|d_i a_{ij}|$ row-major: the integer matrix $DA$ of [`RatMat::row_dens`], in
+    /// absolute value (what the certificates bound).
+    pub fn scaled_abs(&self) -> Vec<BigInt> {
+        let dens = self.row_dens();
+        (0..self.m * self.n)
+            .map(|t| {
+                let x = &self.a[t];
+                let d = &dens[t / self.n];
+                let s = if x.denom().is_one() {
+                    d.clone()
+                } else {
+                    d / x.denom()
+                };
+                x.numer().abs() * s
             })
             .collect()
     }
@@ -141,12 +153,30 @@ impl<'a> RatMat<'a> {
     }
 }
 
+/// $\operatorname{lcm}(l, d)$ for $d > 0$, with the gcd taken on $(d, l \bmod d)$ (words
+/// when $d$ fits one): a row lcm grows to $n \log_2 q$ bits while each $d \le q$ is small,
+/// and a binary gcd on the long operand would shift it bit by bit.
+fn lcm_small(l: BigInt, d: &BigInt) -> BigInt {
+    if d.is_one() {
+        return l;
+    }
+    let r = &l % d;
+    if r.is_zero() {
+        return l;
+    }
+    let g = match (d.to_u64(), r.to_u64()) {
+        (Some(x), Some(y)) => BigInt::from(x.gcd(&y)),
+        _ => d.gcd(&r),
+    };
+    l * (d / g)
+}
+
 /// $\log_2$ of a positive integer rounded up (within $10^{-9}$), `-inf` for zero.
 pub fn log2_int(x: &BigInt) -> f64 {
     if x.is_zero() {
         return f64::NEG_INFINITY;
     }
-    crate::qkernels::intmat::log2_upper(&num_traits::Signed::abs(x))
+    crate::qkernels::intmat::log2_upper(&x.abs())
 }
 
 /// An upper bound of $\log_2 \sqrt{\sum x_j^2}$ for rationals $x_j$.
