@@ -185,7 +185,12 @@ fn solve_and_inverse_lift_det_scaled_numerators() {
     // solve_direct lifts N = det(DA) X by CRT alone: several right-hand columns, integer and
     // rational inputs, against the generic RREF of [A | B] and by A X = B
     let mut g = SplitMix64(2929);
-    for (n, k, qmax) in [(9, 3, 1_000_000), (14, 2, 1), (20, 5, 1000), (11, 11, 1_000_000)] {
+    for (n, k, qmax) in [
+        (9, 3, 1_000_000),
+        (14, 2, 1),
+        (20, 5, 1000),
+        (11, 11, 1_000_000),
+    ] {
         let a = random(&mut g, n, n, qmax, 0);
         let b = random(&mut g, n, k, qmax, 4);
         let x = direct::solve_direct(n, k, &a, &b).expect("a random matrix is nonsingular");
@@ -209,7 +214,10 @@ fn solve_and_inverse_lift_det_scaled_numerators() {
     let r0 = a[..10].to_vec();
     a[90..].clone_from_slice(&r0);
     assert_eq!(direct::inverse_direct(10, &a), None);
-    assert_eq!(direct::solve_direct(10, 1, &a, &random(&mut g, 10, 1, 7, 0)), None);
+    assert_eq!(
+        direct::solve_direct(10, 1, &a, &random(&mut g, 10, 1, 7, 0)),
+        None
+    );
 }
 
 #[test]

@@ -11,7 +11,7 @@
 //! embedding and $t \mapsto \theta$ (its approximation `root`), so elements have
 //! approximations; over $\mathbb{Q}$ the marked root is told from its conjugates exactly
 //! ([`Ext::marked_root_index`]). Over $\mathbb{Q}$ with an integral modulus the product runs
-//! in integers ([`super::number_field`]).
+//! in integers (`ext_q`).
 //!
 //! Displays use the variable (`t`, a root symbol `r<k>`), the radical when the field is
 //! $\mathbb{Q}(\sqrt d)$ named by its radical ([`Ext::radicand`]), or, when
@@ -183,7 +183,7 @@ impl<F: Field> Ext<F> {
     pub fn marked_root_index(&self) -> Option<usize> {
         let w = self.0.base.as_rationals()?;
         let m = Poly::new(crate::field::Q, w.view(self.0.modulus.coeffs()).to_vec());
-        super::number_field::marked_root_index(&m, self.0.root)
+        super::ext_q::marked_root_index(&m, self.0.root)
     }
     /// `Some(d)` when this is $\mathbb{Q}(\sqrt d)$ displayed with its radical: modulus
     /// $t^2 - d$ with rational $d$ and variable [`crate::field::radical_text`]`(d)`
@@ -346,7 +346,7 @@ impl<F: Field> Field for Ext<F> {
         if let Some(w) = k.as_rationals() {
             let m = w.view(self.0.modulus.coeffs());
             if m.iter().all(|c| c.is_integer()) {
-                let p = super::number_field::mul_integral(m, w.view(&a.0), w.view(&b.0));
+                let p = super::ext_q::mul_integral(m, w.view(&a.0), w.view(&b.0));
                 return ExtElem(w.back(p));
             }
         }

@@ -24,6 +24,7 @@
 
 pub mod display;
 pub mod ext;
+mod ext_q;
 pub mod isolate_complex;
 pub mod isolate_real;
 pub mod nf_factor;

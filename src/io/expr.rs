@@ -485,18 +485,42 @@ mod tests {
         for _ in 0..500 {
             let p = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
             let q = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
-            let sign = if g.next_u64() % 2 == 0 { "-" } else { "" };
-            for s in [format!("{sign}{p}/{q}"), format!("{sign}{p}"), format!("{sign}0{p}")] {
+            let sign = if g.next_u64().is_multiple_of(2) {
+                "-"
+            } else {
+                ""
+            };
+            for s in [
+                format!("{sign}{p}/{q}"),
+                format!("{sign}{p}"),
+                format!("{sign}0{p}"),
+            ] {
                 let want = parsed(&s);
                 if let Some(x) = plain_fraction(&s) {
                     assert_eq!(Ok(x), want, "{s}");
                 }
-                assert_eq!(eval_with(&s, &|_| None).map(|v| v.a).map_err(|e| e.msg), want);
+                assert_eq!(
+                    eval_with(&s, &|_| None).map(|v| v.a).map_err(|e| e.msg),
+                    want
+                );
             }
             let s = format!("{sign}{p}/{q}");
-            assert_eq!(plain_fraction(&s).is_some(), q != 0, "{s} takes the shortcut");
+            assert_eq!(
+                plain_fraction(&s).is_some(),
+                q != 0,
+                "{s} takes the shortcut"
+            );
         }
-        for s in ["1 /2", "+1/2", "1/0", "1/2/3", "1234567890123456789/2", "-", "/2", "1/"] {
+        for s in [
+            "1 /2",
+            "+1/2",
+            "1/0",
+            "1/2/3",
+            "1234567890123456789/2",
+            "-",
+            "/2",
+            "1/",
+        ] {
             assert_eq!(plain_fraction(s), None, "{s}");
         }
         assert_eq!(ev("1/0").unwrap_err(), parsed("1/0").unwrap_err());

@@ -199,7 +199,9 @@ pub fn solve_direct(n: usize, k: usize, a: &[Rational], b: &[Rational]) -> Optio
     let (mut used, mut imgs): (Vec<Prime>, Vec<(u64, Vec<u64>)>) = (vec![], vec![]);
     let (mut next_check, mut last_det, mut checked_det) = (1usize, None, false);
     for (pr, mut img) in images(&rm) {
-        let mut sq: Vec<u64> = (0..n).flat_map(|i| img[i * w..i * w + n].to_vec()).collect();
+        let mut sq: Vec<u64> = (0..n)
+            .flat_map(|i| img[i * w..i * w + n].to_vec())
+            .collect();
         let det = pr.mul(det_mod_p(&pr, n, &mut sq), delta_mod(&pr, &big_delta));
         let piv = rref_mod_p(&pr, n, w, &mut img);
         // pivots strictly increase: they are 0..n exactly when the n-th one is n - 1
