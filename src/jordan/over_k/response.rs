@@ -12,22 +12,13 @@
 //! the trace from the Newton power sums of $g$ over $K$.
 
 use super::{JordanFormK, RelField};
-use crate::field::{Quadratic, QuadraticField};
 use crate::matrix::Matrix;
-use crate::poly::Poly;
 
 /// $G_{\theta,k}$ of one component ($n \times n$ over $E$).
 pub type ResponseTermK = crate::jordan::ResponseTerm<RelField>;
 
 /// $e^{At}$ over $K$ as a finite sum of exact terms.
 pub type FreeResponseK = crate::jordan::FreeResponse<RelField>;
-
-/// Newton power sums $s_0, \dots, s_{u-1}$ of the roots of the monic `g` over $K$.
-pub(crate) fn power_sums(g: &Poly<QuadraticField>, u: usize) -> Vec<Quadratic> {
-    let mut s = crate::poly::newton_power_sums(g, u.saturating_sub(1));
-    s.truncate(u.max(1));
-    s
-}
 
 impl FreeResponseK {
     /// $G_{\theta,k}$ of eigenvalue `ev` of `jf` in that eigenvalue's field
