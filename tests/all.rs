@@ -57,6 +57,8 @@ mod jordan_fields;
 mod jordan_generic;
 #[path = "latex.rs"]
 mod latex;
+#[path = "layers.rs"]
+mod layers;
 #[path = "library_api.rs"]
 mod library_api;
 #[path = "matrix_generic.rs"]
