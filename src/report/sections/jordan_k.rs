@@ -12,28 +12,7 @@ use crate::report::{MatrixOut, Report, Value};
 impl JordanFormK {
     /// $J$ and $T$ for output: per eigenvalue, entries exact in its field $E$ at that root.
     pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
-        let n = self.n();
-        let zero_s = || vec![vec!["0".to_string(); n]; n];
-        let zero_a = || vec![vec![(0.0, 0.0); n]; n];
-        let (mut je, mut ja, mut te, mut ta) = (zero_s(), zero_a(), zero_s(), zero_a());
-        let mut off = 0;
-        for (f, v, j) in self.root_columns() {
-            let m = v.ncols();
-            for r in 0..n {
-                for q in 0..m {
-                    te[r][off + q] = f.fmt_elem(v.get(r, q));
-                    ta[r][off + q] = f.approx(v.get(r, q));
-                }
-            }
-            for r in 0..m {
-                for q in 0..m {
-                    je[off + r][off + q] = f.fmt_elem(j.get(r, q));
-                    ja[off + r][off + q] = f.approx(j.get(r, q));
-                }
-            }
-            off += m;
-        }
-        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
+        super::jordan::j_t_cells(self.n(), self.root_columns())
     }
     /// The report with the CLI contract's keys (those of the rational Jordan report).
     pub fn report(&self) -> Report {
@@ -125,38 +104,23 @@ impl crate::jordan::over_k::RealFormK {
         };
         let jo = MatrixOut::from_parts(self.j.clone(), cx(&self.j_approx));
         let to = MatrixOut::from_parts(self.t.clone(), cx(&self.t_approx));
-        let mut r = Report::titled("Real Jordan form")
+        let r = Report::titled("Real Jordan form")
             .with("J", Value::Matrix(Box::new(jo)))
             .with("T", Value::Matrix(Box::new(to)))
             .bool("exact", true)
             .bool("verified", self.verified);
-        if self.compact {
-            r = r
-                .str(
-                    "presentation",
-                    "compact: each complex pair r<k> = a<k> + b<k>*i has the block [[a, b], \
-                     [-b, a]] and the columns Re v, Im v of its complex chains v (exact in \
-                     K(r<k>)); verified on the complex side (A V = V J in K(r<k>), which \
-                     implies A T = T J); `--expand` writes the entries in a real field",
-                )
-                .list(
-                    "symbols",
-                    self.symbols.iter().cloned().map(Value::Str).collect(),
-                );
-        }
-        if !self.fields.is_empty() {
-            r = r.list(
-                "fields",
-                self.fields.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        if !self.notes.is_empty() {
-            r = r.list(
-                "notes",
-                self.notes.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        r
+        let presentation = "compact: each complex pair r<k> = a<k> + b<k>*i has the block \
+             [[a, b], [-b, a]] and the columns Re v, Im v of its complex chains v (exact in \
+             K(r<k>)); verified on the complex side (A V = V J in K(r<k>), which implies \
+             A T = T J); `--expand` writes the entries in a real field";
+        let fields = self.fields.iter().cloned().map(Value::Str).collect();
+        super::jordan::real_form_tail(
+            r,
+            self.compact.then_some(presentation),
+            &self.symbols,
+            fields,
+            [&[], &self.notes],
+        )
     }
 }
 
