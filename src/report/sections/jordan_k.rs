@@ -3,9 +3,11 @@
 //! `field`, `charpoly`, `presentation`, `symbols`).
 
 use super::eigenvalue_items;
+use crate::algebraic::{Ext, ExtElem};
 use crate::field::Field;
 use crate::jordan::fmt_approx;
 use crate::jordan::over_k::{JordanFormK, RelElem, RelField};
+use crate::matrix::Matrix;
 use crate::realization::{ModalBlockK, RealModalBlockK};
 use crate::report::{MatrixOut, Report, Value};
 
@@ -127,25 +129,35 @@ impl crate::jordan::over_k::RealFormK {
 /// Exact texts and approximations of a matrix under construction.
 type Cells = (Vec<Vec<String>>, Vec<Vec<(f64, f64)>>);
 
-/// Writes a modal block over $E$ at `off` into the cells of `A`, `B`, `C`.
-fn put_block(blk: &ModalBlockK, off: usize, [a, b, c]: [&mut Cells; 3]) {
-    let f = &blk.field;
-    let put = |o: &mut Cells, i: usize, j: usize, x: &RelElem| {
+/// Writes a block $(A, B, C)$ over an extension $E = F\[t\]/(g)$ (any base field) at
+/// `off` into the cells of `A`, `B`, `C`: block-diagonal `A`, stacked `B`, `C`.
+fn put_block<F: Field>(
+    f: &Ext<F>,
+    [ba, bb, bc]: [&Matrix<Ext<F>>; 3],
+    off: usize,
+    [a, b, c]: [&mut Cells; 3],
+) {
+    let put = |o: &mut Cells, i: usize, j: usize, x: &ExtElem<F::Elem>| {
         o.0[i][j] = f.fmt_elem(x);
         o.1[i][j] = f.approx(x);
     };
-    let s = blk.a.nrows();
+    let s = ba.nrows();
     for i in 0..s {
         for j in 0..s {
-            put(a, off + i, off + j, blk.a.get(i, j));
+            put(a, off + i, off + j, ba.get(i, j));
         }
-        for j in 0..blk.b.ncols() {
-            put(b, off + i, j, blk.b.get(i, j));
+        for j in 0..bb.ncols() {
+            put(b, off + i, j, bb.get(i, j));
         }
-        for row in 0..blk.c.nrows() {
-            put(c, row, off + i, blk.c.get(row, i));
+        for row in 0..bc.nrows() {
+            put(c, row, off + i, bc.get(row, i));
         }
     }
+}
+
+/// [`put_block`] of a complex modal block.
+fn put_modal(blk: &ModalBlockK, off: usize, cells: [&mut Cells; 3]) {
+    put_block(&blk.field, [&blk.a, &blk.b, &blk.c], off, cells);
 }
 
 /// `Re(x)` / `Im(x)` display and value of an element of $E$ at $\theta$ (plain when it
@@ -242,25 +254,9 @@ impl crate::realization::JordanMinimalK {
                 let s = blk.order();
                 let cells = [&mut a, &mut b, &mut c];
                 match blk {
-                    RealModalBlockK::Root(bk) => put_block(bk, off, cells),
+                    RealModalBlockK::Root(bk) => put_modal(bk, off, cells),
                     RealModalBlockK::Pair { field, a, b, c, .. } => {
-                        let [ca, cb, cc] = cells;
-                        let put =
-                            |o: &mut Cells, i: usize, j: usize, x: &crate::algebraic::NfElem| {
-                                o.0[i][j] = field.fmt_elem(x);
-                                o.1[i][j] = field.approx(x);
-                            };
-                        for i in 0..s {
-                            for j in 0..s {
-                                put(ca, off + i, off + j, a.get(i, j));
-                            }
-                            for j in 0..m {
-                                put(cb, off + i, j, b.get(i, j));
-                            }
-                            for row in 0..p {
-                                put(cc, row, off + i, c.get(row, i));
-                            }
-                        }
+                        put_block(field, [a, b, c], off, cells)
                     }
                     RealModalBlockK::Compact(bk) | RealModalBlockK::Radical(bk) => {
                         put_compact(bk, off, cells)
@@ -270,24 +266,8 @@ impl crate::realization::JordanMinimalK {
             }
         }
         for blk in self.blocks.iter().filter(|_| self.real.is_none()) {
-            let f = &blk.field;
-            let put = |o: &mut Cells, i: usize, j: usize, x: &crate::jordan::over_k::RelElem| {
-                o.0[i][j] = f.fmt_elem(x);
-                o.1[i][j] = f.approx(x);
-            };
-            let s = blk.a.nrows();
-            for i in 0..s {
-                for j in 0..s {
-                    put(&mut a, off + i, off + j, blk.a.get(i, j));
-                }
-                for j in 0..m {
-                    put(&mut b, off + i, j, blk.b.get(i, j));
-                }
-                for row in 0..p {
-                    put(&mut c, row, off + i, blk.c.get(row, i));
-                }
-            }
-            off += s;
+            put_modal(blk, off, [&mut a, &mut b, &mut c]);
+            off += blk.a.nrows();
         }
         let out = |x: Cells| Value::Matrix(Box::new(MatrixOut::from_parts(x.0, x.1)));
         let compact = self
