@@ -155,9 +155,8 @@ pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
             ),
         });
     }
-    // the file is a valid system (its swept parameter may be `null`: symbols allowed)
-    crate::io::symbolic::load_symbolic_path(a.file, &Default::default())?;
     let fam = ParamFamily::from_file(a.file, a.param)?;
+    super::common::check_study_file(a.file)?;
     let cv = critical_values(&fam, &from, &to)?;
     Ok(Outcome::new(report(&cv, a.digits), cv.verified))
 }

@@ -73,9 +73,8 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
             ),
         });
     }
-    // the file is a valid system (its swept parameter may be `null`: symbols allowed)
-    crate::io::symbolic::load_symbolic_path(a.file, &Default::default())?;
     let fam = ParamFamily::from_file(a.file, a.param)?;
+    super::common::check_study_file(a.file)?;
     let values = sweep_values(a.from, a.to, a.points);
     let title = format!("sweep of {} over [{}, {}]", a.param, a.from, a.to);
     let mut sink = match stream {
