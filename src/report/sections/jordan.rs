@@ -38,6 +38,19 @@ pub(super) fn j_t_cells<F: Field>(
     (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
 }
 
+/// `J` and `T` as report values: one exact matrix each when every eigenvalue lies in one
+/// field (`single`), else the per-eigenvalue writer `per_root`.
+pub(super) fn j_t_values<K: Field>(
+    single: Option<(Matrix<K>, Matrix<K>)>,
+    per_root: impl FnOnce() -> (MatrixOut, MatrixOut),
+) -> (Value, Value) {
+    let (jo, to) = match single {
+        Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
+        None => per_root(),
+    };
+    (Value::Matrix(Box::new(jo)), Value::Matrix(Box::new(to)))
+}
+
 /// The tail shared by the real Jordan reports over every field: `presentation` and `symbols`
 /// for the compact form (`presentation` the field's wording), then `fields`, `parts` and
 /// `notes` (each when not empty).
@@ -97,16 +110,13 @@ impl JordanForm {
                 ))
             })
             .collect();
-        let (jo, to) = match single {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
+        let (jo, to) = j_t_values(single, || self.j_t_out());
         let mut r = Report::titled("Jordan form")
             .int("n", self.n())
             .str("charpoly", self.charpoly.to_string())
             .list("eigenvalues", evs)
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
+            .with("J", jo)
+            .with("T", to)
             .str("presentation", presentation);
         if !symbols.is_empty() {
             r = r.list("symbols", symbols);
@@ -157,10 +167,7 @@ impl RealJordanForm {
     /// Report: `J`, `T` (exact strings and `_approx`), `exact`, `verified`, `fields`,
     /// `parts`, `notes`.
     pub fn report(&self) -> Report {
-        let (jo, to) = match self.single_field() {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
+        let (jo, to) = j_t_values(self.single_field(), || self.j_t_out());
         let fields: Vec<Value> = self
             .blocks
             .iter()
@@ -176,8 +183,8 @@ impl RealJordanForm {
             .collect();
         let compact = self.blocks.iter().any(|b| b.compact.is_some());
         let r = Report::titled("Real Jordan form")
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
+            .with("J", jo)
+            .with("T", to)
             .bool("exact", self.exact)
             .bool("verified", self.verified);
         let presentation = "compact: each complex pair r<k> = a<k> + b<k>*i has the block \

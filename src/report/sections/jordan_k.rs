@@ -48,17 +48,14 @@ impl JordanFormK {
                 ))
             })
             .collect();
-        let (jo, to) = match single {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
+        let (jo, to) = super::jordan::j_t_values(single, || self.j_t_out());
         let mut r = Report::titled("Jordan form")
             .int("n", self.n())
             .str("field", k.to_string())
             .str("charpoly", self.charpoly.to_string())
             .list("eigenvalues", eigenvalue_items(&self.eigenvalues))
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
+            .with("J", jo)
+            .with("T", to)
             .str("presentation", presentation);
         if !symbols.is_empty() {
             r = r.list("symbols", symbols);
@@ -313,15 +310,7 @@ impl crate::realization::JordanMinimalK {
                 }),
             )
             .str("presentation", presentation)
-            .with(
-                "symbols",
-                Value::List(
-                    self.symbols
-                        .iter()
-                        .map(|(k, v)| Value::Str(format!("{k} = {v}")))
-                        .collect(),
-                ),
-            )
+            .with("symbols", super::realization::symbol_list(&self.symbols))
             .bool("verified", self.verified)
     }
 }
