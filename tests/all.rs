@@ -109,6 +109,8 @@ mod robustness;
 mod scb;
 #[path = "slowpaths.rs"]
 mod slowpaths;
+#[path = "steps.rs"]
+mod steps;
 #[path = "study.rs"]
 mod study;
 #[path = "study_classes.rs"]

@@ -20,6 +20,7 @@ pub mod memory;
 mod pencil_cmds;
 pub mod plots;
 mod progress;
+mod steps;
 mod sweep;
 mod sweep_stream;
 mod symbolic;
@@ -86,6 +87,10 @@ pub struct Cli {
     /// LaTeX are always complete).
     #[arg(long, global = true)]
     pub full: bool,
+    /// `jordan`, `minreal --method kalman|jordan`: the derivation step by step (each step's
+    /// sentence, exact objects, identity and its check; over Q(p) what it assumes).
+    #[arg(long, global = true)]
+    pub steps: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -500,6 +505,7 @@ pub fn run(cli: Cli) -> i32 {
     let format = cli.format;
     let standalone = cli.standalone;
     let full = cli.full;
+    let with_steps = cli.steps;
     let limit = cli.max_seconds;
     memory::set_max_memory_mib(cli.max_memory);
     let (tx, rx) = mpsc::channel();
@@ -514,12 +520,12 @@ pub fn run(cli: Cli) -> i32 {
     let handle = std::thread::Builder::new()
         .stack_size(256 << 20)
         .spawn(move || {
-            let r = commands::execute_ctx(
-                &cli.command,
-                cli.symbolic.as_deref(),
-                cli.at.as_deref(),
-                &ctx,
-            );
+            let (sym, at) = (cli.symbolic.as_deref(), cli.at.as_deref());
+            let r = if with_steps {
+                steps::execute(&cli.command, sym, at, format, standalone)
+            } else {
+                commands::execute_ctx(&cli.command, sym, at, &ctx)
+            };
             let _ = tx.send(Event::Finished(Box::new(r)));
         });
     if handle.is_err() {

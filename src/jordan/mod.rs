@@ -39,6 +39,7 @@
 pub mod chains;
 pub(crate) mod coeffs;
 pub mod decompose;
+pub mod derivation;
 pub mod over_k;
 pub mod params;
 pub mod primary;
@@ -47,6 +48,7 @@ pub(crate) mod realfield;
 pub mod response;
 mod roots;
 mod simple;
+pub mod steps;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use decompose::{EigenField, jordan_over};
