@@ -59,8 +59,12 @@ mod io;
 mod jordan;
 #[path = "jordan_fields.rs"]
 mod jordan_fields;
+#[path = "jordan_generic.rs"]
+mod jordan_generic;
 #[path = "latex.rs"]
 mod latex;
+#[path = "layers.rs"]
+mod layers;
 #[path = "library_api.rs"]
 mod library_api;
 #[path = "matrix_generic.rs"]

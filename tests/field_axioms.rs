@@ -17,7 +17,7 @@ fn q(n: i64, d: i64) -> Rational {
 }
 
 fn nf_elem(k: &NumberField, c: &[(i64, i64)]) -> <NumberField as Field>::Elem {
-    k.elem_from_coeffs(c.iter().map(|&(n, d)| q(n, d)).collect())
+    k.from_coeffs(c.iter().map(|&(n, d)| q(n, d)).collect())
 }
 
 fn coeffs() -> impl Strategy<Value = Vec<(i64, i64)>> {

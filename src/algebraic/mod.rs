@@ -23,6 +23,8 @@
 //! | [`crate::report::sections::factor_report`], [`crate::report::sections::roots_report`] | the CLI's `poly factor` / `poly roots` reports |
 
 pub mod display;
+pub mod ext;
+mod ext_q;
 pub mod isolate_complex;
 pub mod isolate_real;
 pub mod nf_factor;
@@ -32,6 +34,7 @@ pub mod quadratic_factor;
 pub mod quadratic_roots;
 pub(crate) mod zp; // re-export shim, see its docs
 
+pub use ext::{Ext, ExtCtx, ExtElem};
 pub use nf_factor::factor_over_number_field;
 pub use number::AlgebraicNumber;
 pub use number_field::{NfElem, NumberField, NumberFieldCtx};

@@ -35,7 +35,7 @@ pub fn norm(f: &Poly<NumberField>) -> Poly<Q> {
             let mut acc = Poly::zero(Q);
             let mut pw = Rational::from_integer(1.into());
             for c in f.coeffs() {
-                let ct = k.elem_to_poly(c);
+                let ct = k.to_poly(c);
                 acc = acc.add(&ct.scale(&pw));
                 pw *= x0;
             }

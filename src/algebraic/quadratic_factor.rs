@@ -42,7 +42,7 @@ fn to_nf(x: &Quadratic) -> NfElem {
     while v.last().is_some_and(|c| c.is_zero()) {
         v.pop();
     }
-    NfElem(v)
+    crate::algebraic::ExtElem(v)
 }
 
 fn from_nf(x: &NfElem) -> Quadratic {

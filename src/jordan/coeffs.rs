@@ -1,70 +1,91 @@
-//! Coefficient-matrix kernels for elements of $K = \mathbb{Q}[t]/(p)$: an element is its
-//! coefficient column in the basis $1, t, \dots, t^{d-1}$, multiplication by $x$ is the
-//! $d \times d$ rational matrix $M_x$, so products in $K$ become rational matrix products
-//! (the integer product kernel). Used by the simple-eigenvalue component ([`super::simple`])
-//! and its exact check (called from [`super::primary::PrimaryComponent::verify`]).
+//! Coefficient-matrix kernels for elements of $E = F\[t\]/(g)$ over any field $F$: an
+//! element is its coefficient column in the basis $1, t, \dots, t^{d-1}$, multiplication by
+//! $x$ is the $d \times d$ matrix $M_x$ over $F$, so products in $E$ become matrix products
+//! over $F$, which run on the field's product kernel (the integer kernels over $\mathbb{Q}$
+//! and $\mathbb{Q}(\sqrt d)$) instead of normalising after every multiply-add. Used by the
+//! simple-eigenvalue chains ([`super::simple`]) and their exact check ([`verify_simple`]).
 
-use super::chains::mul;
-use crate::algebraic::{NfElem, NumberField};
-use crate::field::{Field, Q, Rational};
+use crate::algebraic::{Ext, ExtElem};
+use crate::field::Field;
 use crate::matrix::Matrix;
-use num_traits::Zero;
 
-/// The $d \times n$ matrix whose column $j$ holds the coefficients of `xs[j]`.
-pub(crate) fn coeff_cols(xs: &[NfElem], d: usize) -> Matrix<Q> {
-    Matrix::from_fn(Q, d, xs.len(), |k, j| {
-        xs[j].0.get(k).cloned().unwrap_or_else(Rational::zero)
+/// The $d \times n$ matrix over $F$ whose column $j$ holds the coefficients of `xs[j]`.
+pub(crate) fn coeff_cols<F: Field>(e: &Ext<F>, xs: &[ExtElem<F::Elem>]) -> Matrix<F> {
+    let k = e.base();
+    Matrix::from_fn(k.clone(), e.degree(), xs.len(), |r, j| {
+        xs[j].0.get(r).cloned().unwrap_or_else(|| k.zero())
     })
 }
 
-/// Multiplication by `x` on $K = \mathbb{Q}[t]/(p)$ in the basis $1, t, \dots,
-/// t^{d-1}$: column $k$ holds the coefficients of $x t^k$.
-pub(crate) fn mul_matrix(field: &NumberField, x: &NfElem) -> Matrix<Q> {
-    let d = field.degree();
-    let t = field.generator();
-    let mut cols = vec![x.clone()];
-    for k in 1..d {
-        let next = field.mul(&cols[k - 1], &t);
-        cols.push(next);
+/// `v` without trailing zeros: a canonical element.
+fn canonical<F: Field>(k: &F, mut c: Vec<F::Elem>) -> ExtElem<F::Elem> {
+    while c.last().is_some_and(|x| k.is_zero(x)) {
+        c.pop();
     }
-    coeff_cols(&cols, d)
+    ExtElem(c)
 }
 
-/// Exact check of $A V = t V$, $W A = t W$, $W V = 1$ for a component of multiplicity 1,
-/// done on coefficient matrices over $\mathbb{Q}$ (the integer product kernel) instead of
-/// entry-wise products in $K$: with $V_c$ ($d \times n$, column $i$ = coefficients of
-/// $V_i$), $M_t$ the multiplication matrix of $t$ and $W_c$ likewise,
-/// $V_c A^T = M_t V_c$, $W_c A = M_t W_c$ and $\sum_i M_{V_i} W_{c,i} = e_0$.
-pub(crate) fn verify_simple(
-    f: &NumberField,
-    v: &Matrix<NumberField>,
-    w: &Matrix<NumberField>,
-    a: &Matrix<Q>,
+/// Column `j` of a coefficient matrix as a canonical element (no trailing zeros).
+pub(crate) fn elem_of_col<F: Field>(m: &Matrix<F>, j: usize) -> ExtElem<F::Elem> {
+    canonical(m.field(), m.col(j))
+}
+
+/// Row `i` of a matrix whose rows are coefficient vectors, as a canonical element.
+pub(crate) fn elem_of_row<F: Field>(m: &Matrix<F>, i: usize) -> ExtElem<F::Elem> {
+    canonical(m.field(), m.row(i).to_vec())
+}
+
+/// Multiplication by `x` on $E$ in the basis $1, t, \dots, t^{d-1}$: column $k$ holds the
+/// coefficients of $x t^k$.
+pub(crate) fn mul_matrix<F: Field>(e: &Ext<F>, x: &ExtElem<F::Elem>) -> Matrix<F> {
+    let t = e.generator();
+    let mut cols = vec![x.clone()];
+    for k in 1..e.degree() {
+        let next = e.mul(&cols[k - 1], &t);
+        cols.push(next);
+    }
+    coeff_cols(e, &cols)
+}
+
+/// $\sum_i x_i y_i$ in $E$ as one product over $F$: $[M_{x_1} \cdots M_{x_n}]$ times the
+/// stacked coefficient columns of the $y_i$.
+pub(crate) fn dot<F: Field>(
+    e: &Ext<F>,
+    xs: &[ExtElem<F::Elem>],
+    ys: &[ExtElem<F::Elem>],
+) -> ExtElem<F::Elem> {
+    let (d, n) = (e.degree(), xs.len());
+    let k = e.base();
+    let mut big = Matrix::zeros(k.clone(), d, n * d);
+    for (i, x) in xs.iter().enumerate() {
+        big.set_block(0, i * d, &mul_matrix(e, x));
+    }
+    let yc = coeff_cols(e, ys);
+    let stacked = Matrix::from_fn(k.clone(), n * d, 1, |r, _| yc.get(r % d, r / d).clone());
+    elem_of_col(&(&big * &stacked), 0)
+}
+
+/// Exact check of $A V = t V$, $W A = t W$, $W V = 1$ for a component of multiplicity 1
+/// (`v` is $n \times 1$, `w` is $1 \times n$), on coefficient matrices over $F$: with $V_c$
+/// ($d \times n$, column $i$ = coefficients of $V_i$), $M_t$ the multiplication matrix of
+/// $t$ and $W_c$ likewise, $V_c A^T = M_t V_c$, $W_c A = M_t W_c$ and
+/// $\sum_i V_i W_i = 1$ ([`dot`]).
+pub(crate) fn verify_simple<F: Field>(
+    e: &Ext<F>,
+    v: &Matrix<Ext<F>>,
+    w: &Matrix<Ext<F>>,
+    a: &Matrix<F>,
 ) -> bool {
     let n = a.nrows();
-    let d = f.degree();
     if v.shape() != (n, 1) || w.shape() != (1, n) {
         return false;
     }
-    let vs: Vec<NfElem> = (0..n).map(|i| v.get(i, 0).clone()).collect();
-    let ws: Vec<NfElem> = (0..n).map(|i| w.get(0, i).clone()).collect();
-    let (vc, wc) = (coeff_cols(&vs, d), coeff_cols(&ws, d));
-    let mt = mul_matrix(f, &f.generator());
-    if mul(&vc, &a.transpose()) != mul(&mt, &vc) || mul(&wc, a) != mul(&mt, &wc) {
+    let vs: Vec<ExtElem<F::Elem>> = (0..n).map(|i| v.get(i, 0).clone()).collect();
+    let ws: Vec<ExtElem<F::Elem>> = (0..n).map(|i| w.get(0, i).clone()).collect();
+    if vs.iter().chain(&ws).any(|x| x.0.len() > e.degree()) {
         return false;
     }
-    // W V = sum_i V_i W_i: [M_{V_1} ... M_{V_n}] times the stacked coefficients of W
-    let mut big = Matrix::zeros(Q, d, n * d);
-    for (i, x) in vs.iter().enumerate() {
-        big.set_block(0, i * d, &mul_matrix(f, x));
-    }
-    let stacked = Matrix::from_fn(Q, n * d, 1, |r, _| wc.get(r % d, r / d).clone());
-    let wv = mul(&big, &stacked);
-    (0..d).all(|k| {
-        if k == 0 {
-            num_traits::One::is_one(wv.get(0, 0))
-        } else {
-            wv.get(k, 0).is_zero()
-        }
-    })
+    let (vc, wc) = (coeff_cols(e, &vs), coeff_cols(e, &ws));
+    let mt = mul_matrix(e, &e.generator());
+    &vc * &a.transpose() == &mt * &vc && &wc * a == &mt * &wc && e.is_one(&dot(e, &ws, &vs))
 }

@@ -38,6 +38,7 @@
 
 pub mod chains;
 pub(crate) mod coeffs;
+pub mod decompose;
 pub mod derivation;
 pub mod over_k;
 pub mod params;
@@ -50,7 +51,8 @@ mod simple;
 pub mod steps;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
-pub use primary::PrimaryComponent;
+pub use decompose::{EigenField, jordan_over};
+pub use primary::{Component, PrimaryComponent};
 pub use real::{RealBlock, RealJordanForm};
 pub use response::{FreeResponse, ResponseTerm};
 pub(crate) use roots::value_string as value_display;
@@ -108,15 +110,16 @@ pub struct RootColumns {
     pub j: Matrix<NumberField>,
 }
 
-/// The exact Jordan decomposition of a rational matrix.
+/// The exact Jordan decomposition of a matrix over $F$ (over $\mathbb{Q}$ by default; over
+/// $\mathbb{Q}(\sqrt d)$: [`over_k::JordanFormK`]).
 #[derive(Clone, Debug, PartialEq)]
-pub struct JordanForm {
+pub struct JordanForm<F: Field = Q> {
     /// The input matrix.
-    pub a: Matrix<Q>,
+    pub a: Matrix<F>,
     /// $\chi_A(x) = \det(xI - A)$.
-    pub charpoly: Poly<Q>,
-    /// One component per irreducible factor of $\chi_A$.
-    pub components: Vec<PrimaryComponent>,
+    pub charpoly: Poly<F>,
+    /// One component per irreducible factor of $\chi_A$ over $F$.
+    pub components: Vec<Component<F>>,
     /// All eigenvalues, component by component.
     pub eigenvalues: Vec<Eigenvalue>,
     /// Every component's identities held exactly and the dimensions add up to $n$.
@@ -139,48 +142,7 @@ pub struct JordanForm {
 /// assert!(jf.verified);
 /// ```
 pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
-    a.check_square("jordan")?;
-    let n = a.nrows();
-    let chi = a.charpoly()?;
-    let mut components = vec![];
-    let mut numbers = vec![];
-    for (p, e) in roots::factor_q(&chi)? {
-        let rts = roots::certified_roots(&p)?;
-        let approx = rts.iter().map(|z| z.1).collect();
-        components.push(if e == 1 && p.deg() >= 2 {
-            simple::simple_component(a, &chi, &p, approx)?
-        } else {
-            PrimaryComponent::compute(a, &p, e, approx)?
-        });
-        numbers.push(rts);
-    }
-    let mut eigenvalues = vec![];
-    for (ci, (c, nums)) in components.iter().zip(numbers).enumerate() {
-        for (j, (number, z)) in nums.into_iter().enumerate() {
-            let k = eigenvalues.len() + 1;
-            eigenvalues.push(Eigenvalue {
-                minpoly: c.factor.clone(),
-                value: roots::value_string(&c.factor, z),
-                approx: z,
-                number,
-                component: ci,
-                root: j,
-                symbol: format!("r{k}"),
-                algebraic_multiplicity: c.multiplicity,
-                geometric_multiplicity: c.geometric_multiplicity(),
-                blocks: c.blocks.clone(),
-            });
-        }
-    }
-    let dim: usize = components.iter().map(|c| c.degree() * c.multiplicity).sum();
-    let verified = dim == n && components.iter().all(|c| c.verify(a));
-    Ok(JordanForm {
-        a: a.clone(),
-        charpoly: chi,
-        components,
-        eigenvalues,
-        verified,
-    })
+    jordan_over(a)
 }
 
 /// Jordan decomposition of a matrix over a quadratic field $\mathbb{Q}(\sqrt d)$ (or
@@ -252,7 +214,7 @@ pub(crate) fn quadratic_image(
     while v.last().is_some_and(|c| c.is_zero()) {
         v.pop();
     }
-    NfElem(v)
+    crate::algebraic::ExtElem(v)
 }
 
 /// $\mathbb{Q}(\sqrt f)$ as a marked number field displayed with the radical.
@@ -271,11 +233,26 @@ pub(crate) fn quadratic_field(f: &num_bigint::BigInt) -> NumberField {
     named_field(&m, root, &radical_text(f))
 }
 
-impl JordanForm {
+impl<F: Field> JordanForm<F> {
     /// Size of $A$.
     pub fn n(&self) -> usize {
         self.a.nrows()
     }
+    /// The base field $F$.
+    pub fn base(&self) -> &F {
+        self.a.field()
+    }
+    /// The exact terms $G_{\theta,k}$ of $e^{At}$, one set per component.
+    pub fn free_response(&self) -> FreeResponse<crate::algebraic::Ext<F>> {
+        let comps = self
+            .components
+            .iter()
+            .map(|c| (&c.field, &c.blocks[..], &c.chains, &c.left_chains));
+        FreeResponse::from_chains(self.n(), comps)
+    }
+}
+
+impl JordanForm {
     /// The exact field of eigenvalue `ev` (marked at that root, displayed as in the module
     /// docs) and the embedding $\sigma_j$ of the component field into it.
     pub fn root_map(&self, ev: usize) -> (NumberField, Embedding<'_>) {

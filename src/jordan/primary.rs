@@ -12,42 +12,108 @@
 //! Identities checked exactly in $K$: $A V = V J_t$, $W A = J_t W$, $W V = I_m$.
 
 use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
-use crate::algebraic::{NfElem, NumberField, NumberFieldCtx};
+use crate::algebraic::{Ext, ExtElem, NumberField};
 use crate::error::Result;
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use std::sync::Arc;
 
-/// The data of one irreducible factor $p$ of $\chi_A$, in $K = \mathbb{Q}\[t\]/(p)$.
+/// The data of one irreducible factor $p \in F\[x\]$ of $\chi_A$, in $E = F\[t\]/(p)$ (over
+/// $\mathbb{Q}$: [`PrimaryComponent`], over $\mathbb{Q}(\sqrt d)$:
+/// [`super::over_k::ComponentK`]).
 #[derive(Clone, Debug, PartialEq)]
-pub struct PrimaryComponent {
-    /// The monic irreducible factor $p$ (minimal polynomial of each of its roots).
-    pub factor: Poly<Q>,
+pub struct Component<F: Field> {
+    /// The monic irreducible factor $p$.
+    pub factor: Poly<F>,
+    /// The minimal polynomial over $\mathbb{Q}$ of its roots ($p$ itself over $\mathbb{Q}$).
+    pub minpoly: Poly<Q>,
     /// Multiplicity of $p$ in $\chi_A$ = algebraic multiplicity of each root.
     pub multiplicity: usize,
-    /// $K = \mathbb{Q}\[t\]/(p)$, marked at `roots[0]`.
-    pub field: NumberField,
+    /// $E = F\[t\]/(p)$, marked at `roots[0]`.
+    pub field: Ext<F>,
     /// Approximations of the roots $\theta_j$ (real part descending); the embedding
     /// $t \mapsto \theta_j$ carries the chains to the root $\theta_j$.
     pub roots: Vec<(f64, f64)>,
     /// Jordan block sizes of each root, largest first.
     pub blocks: Vec<usize>,
-    /// $\dim \ker (A - t I)^k$, $k = 1, \dots$ (over $K$).
+    /// $\dim \ker (A - t I)^k$, $k = 1, \dots$ (over $E$).
     pub kernel_dims: Vec<usize>,
-    /// Right chains $V$ ($n \times m$) over $K$: $A V = V J_t$.
-    pub chains: Matrix<NumberField>,
-    /// Left chains $W$ ($m \times n$) over $K$: $W A = J_t W$, $W V = I$.
-    pub left_chains: Matrix<NumberField>,
+    /// Right chains $V$ ($n \times m$) over $E$: $A V = V J_t$.
+    pub chains: Matrix<Ext<F>>,
+    /// Left chains $W$ ($m \times n$) over $E$: $W A = J_t W$, $W V = I$.
+    pub left_chains: Matrix<Ext<F>>,
+}
+
+/// A component over $\mathbb{Q}$: $K = \mathbb{Q}\[t\]/(p)$.
+pub type PrimaryComponent = Component<Q>;
+
+impl<F: Field> Component<F> {
+    /// Degree of the factor (number of conjugate eigenvalues over $F$).
+    pub fn degree(&self) -> usize {
+        self.factor.deg()
+    }
+    /// The generic root $t \in E$ (for $\deg p = 1$ the root itself).
+    pub fn root_elem(&self) -> ExtElem<F::Elem> {
+        self.field.generator()
+    }
+    /// Geometric multiplicity of each root (number of blocks).
+    pub fn geometric_multiplicity(&self) -> usize {
+        self.blocks.len()
+    }
+    /// $J_t$ over $E$ ($m \times m$).
+    pub fn jordan_matrix(&self) -> Matrix<Ext<F>> {
+        jordan_block_matrix(&self.field, &self.root_elem(), &self.blocks)
+    }
+    /// The same field marked at root `j` (the embedding $t \mapsto \theta_j$) with display
+    /// variable `var`.
+    pub fn embedding(&self, j: usize, var: &str) -> Ext<F> {
+        self.field.marked(self.roots[j], var, None)
+    }
+    /// `a` with entries in $E \supset F$.
+    pub fn lift(&self, a: &Matrix<F>) -> Matrix<Ext<F>> {
+        a.map(&self.field, |x| self.field.from_base(x))
+    }
+    /// Exact check of $A V = V J_t$, $W A = J_t W$ and $W V = I$: for a simple factor of
+    /// degree $\ge 2$ on coefficient matrices over $F$ ([`super::coeffs::verify_simple`]),
+    /// for a linear factor over $F$ itself (the field's product kernel), else in $E$.
+    pub fn verify(&self, a: &Matrix<F>) -> bool {
+        let v = &self.chains;
+        let w = &self.left_chains;
+        if self.multiplicity == 1 && self.degree() >= 2 {
+            return super::coeffs::verify_simple(&self.field, v, w, a);
+        }
+        if v.nrows() != a.nrows() || v.ncols() != self.multiplicity {
+            return false;
+        }
+        if self.degree() == 1 {
+            let k = a.field();
+            let to_base = |m: &Matrix<Ext<F>>| -> Option<Matrix<F>> {
+                let mut out = Matrix::zeros(k.clone(), m.nrows(), m.ncols());
+                for i in 0..m.nrows() {
+                    for j in 0..m.ncols() {
+                        out.set(i, j, self.field.to_base(m.get(i, j))?);
+                    }
+                }
+                Some(out)
+            };
+            let (Some(vf), Some(wf), Some(jf)) =
+                (to_base(v), to_base(w), to_base(&self.jordan_matrix()))
+            else {
+                return false;
+            };
+            return mul(a, &vf) == mul(&vf, &jf)
+                && mul(&wf, a) == mul(&jf, &wf)
+                && mul(&wf, &vf).is_identity();
+        }
+        let ak = self.lift(a);
+        let j = self.jordan_matrix();
+        &ak * v == v * &j && w * &ak == &j * w && (w * v).is_identity()
+    }
 }
 
 /// A number field $\mathbb{Q}[x]/(m)$ marked at `root`, displayed with variable `var`.
 pub(crate) fn named_field(m: &Poly<Q>, root: (f64, f64), var: &str) -> NumberField {
-    NumberField(Arc::new(NumberFieldCtx {
-        modulus: m.monic(),
-        root,
-        var: var.into(),
-    }))
+    NumberField::with_var(m, root, var)
 }
 
 /// $\mathbb{Q}$ as a number field of degree 1 (modulus $x$).
@@ -128,6 +194,7 @@ impl PrimaryComponent {
             let lift = |m: &Matrix<Q>| m.map(&field, |x| field.from_rational(x));
             return Ok(PrimaryComponent {
                 factor: factor.clone(),
+                minpoly: factor.monic(),
                 multiplicity: mult,
                 roots,
                 blocks: ch.blocks,
@@ -166,6 +233,7 @@ impl PrimaryComponent {
         };
         Ok(PrimaryComponent {
             factor: factor.clone(),
+            minpoly: factor.monic(),
             multiplicity: mult,
             roots,
             blocks,
@@ -174,55 +242,5 @@ impl PrimaryComponent {
             left_chains: w,
             field,
         })
-    }
-    /// Degree of the factor (number of conjugate eigenvalues).
-    pub fn degree(&self) -> usize {
-        self.factor.deg()
-    }
-    /// The generic root $t \in K$.
-    pub fn root_elem(&self) -> NfElem {
-        if self.degree() == 1 {
-            self.field.from_rational(&-self.factor.coeff(0))
-        } else {
-            self.field.generator()
-        }
-    }
-    /// Geometric multiplicity of each root (number of blocks).
-    pub fn geometric_multiplicity(&self) -> usize {
-        self.blocks.len()
-    }
-    /// $J_t$ over $K$ ($m \times m$).
-    pub fn jordan_matrix(&self) -> Matrix<NumberField> {
-        jordan_block_matrix(&self.field, &self.root_elem(), &self.blocks)
-    }
-    /// The same field marked at root `j` (the embedding $t \mapsto \theta_j$) with display
-    /// variable `var`.
-    pub fn embedding(&self, j: usize, var: &str) -> NumberField {
-        named_field(&self.factor, self.roots[j], var)
-    }
-    /// Exact check in $K$ of $A V = V J_t$, $W A = J_t W$ and $W V = I$.
-    pub fn verify(&self, a: &Matrix<Q>) -> bool {
-        if self.multiplicity == 1 && self.degree() >= 2 {
-            return super::coeffs::verify_simple(&self.field, &self.chains, &self.left_chains, a);
-        }
-        let v = &self.chains;
-        let w = &self.left_chains;
-        if v.nrows() != a.nrows() || v.ncols() != self.multiplicity {
-            return false;
-        }
-        if self.degree() == 1 {
-            // over Q with the integer product kernel
-            let to_q = |m: &Matrix<NumberField>| crate::matrix::to_rational_matrix(m);
-            let (Some(vq), Some(wq), Some(jq)) = (to_q(v), to_q(w), to_q(&self.jordan_matrix()))
-            else {
-                return false;
-            };
-            return mul(a, &vq) == mul(&vq, &jq)
-                && mul(&wq, a) == mul(&jq, &wq)
-                && mul(&wq, &vq).is_identity();
-        }
-        let ak = a.convert_to(&self.field);
-        let j = self.jordan_matrix();
-        &ak * v == v * &j && w * &ak == &j * w && (w * v).is_identity()
     }
 }

@@ -256,7 +256,7 @@ fn real_field_for(
         let im = if g.is_one() {
             f.from_rational(&s)
         } else {
-            f.elem_from_poly(&Poly::new(Q, vec![Rational::zero(), s]))
+            f.from_poly(&Poly::new(Q, vec![Rational::zero(), s]))
         };
         let powers = theta_powers(p, &f, &re, &im).map_err(|e| e.to_string())?;
         return Ok((f, ReImMap::Complex(powers)));

@@ -278,11 +278,11 @@ pub(crate) fn real_parts_field(theta: &AlgebraicNumber, var: &str) -> Result<Rea
         let croot = c.approx().0;
         let f = named_field(&g, (croot, 0.0), var);
         // theta = H(c) / P'(c)
-        let Some(den) = f.inv(&f.elem_from_poly(&dpk)) else {
+        let Some(den) = f.inv(&f.from_poly(&dpk)) else {
             continue;
         };
-        let re = f.mul(&f.elem_from_poly(&hr), &den);
-        let im = f.mul(&f.elem_from_poly(&hi), &den);
+        let re = f.mul(&f.from_poly(&hr), &den);
+        let im = f.mul(&f.from_poly(&hi), &den);
         // the marked embedding carries (a, b) to the parts of this root: evaluated exactly
         // at a rational point within 2^-128 of c (a float evaluation of a high-degree
         // polynomial with large coefficients loses every digit and used to report a
@@ -330,7 +330,7 @@ fn marked_at(
     };
     let (lo, hi) = c.interval().unwrap_or((lo, hi));
     let mid = (&lo + &hi) * Rational::new(1.into(), 2.into());
-    let at = |x: &NfElem| crate::field::rational_to_f64(&f.elem_to_poly(x).eval(&mid));
+    let at = |x: &NfElem| crate::field::rational_to_f64(&f.to_poly(x).eval(&mid));
     let (ta, tb) = theta.approx();
     let tol = 1e-6 * (1.0 + ta.abs() + tb.abs());
     Ok((at(re) - ta).abs() <= tol && (at(im) - tb).abs() <= tol)
@@ -504,7 +504,7 @@ mod tests {
             "t",
         );
         for x in [p(&[1, 1]), p(&[3, 0, -1, 0, 0, 2, 0, 0, 1])] {
-            let x = f.elem_from_poly(&x);
+            let x = f.from_poly(&x);
             let y = f.inv(&x).unwrap();
             assert!(f.is_one(&f.mul(&x, &y)));
         }

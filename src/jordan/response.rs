@@ -16,21 +16,21 @@
 //! the vehicle-dynamics paper.
 
 use super::{JordanForm, RealJordanForm};
-use crate::algebraic::{NfElem, NumberField};
+use crate::algebraic::{Ext, NumberField};
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
-use crate::poly::newton_power_sums;
+use crate::poly::{Poly, newton_power_sums};
 use num_complex::Complex64;
 use num_traits::{One, Zero};
 
-/// $G_{\theta,k}$ of one component ($n \times n$ over the component field).
+/// $G_{\theta,k}$ of one component ($n \times n$ over the component field $E = F\[t\]/(p)$).
 #[derive(Clone, Debug, PartialEq)]
-pub struct ResponseTerm {
-    /// Index into [`JordanForm::components`].
+pub struct ResponseTerm<E: Field = NumberField> {
+    /// Index into the Jordan form's components.
     pub component: usize,
     /// The power $k$ of $t$.
     pub power: usize,
-    pub coeff: Matrix<NumberField>,
+    pub coeff: Matrix<E>,
 }
 
 /// A real-form term $t^k e^{a t}(\cos(bt) C + \sin(bt) S)$ ($b = 0$, $S = 0$ for a real
@@ -44,40 +44,49 @@ pub struct RealResponseTerm {
     pub sin: Option<Matrix<NumberField>>,
 }
 
-/// $e^{At}$ as a finite sum of exact terms.
+/// $e^{At}$ as a finite sum of exact terms, over the component fields $E = F\[t\]/(p)$.
 #[derive(Clone, Debug, PartialEq)]
-pub struct FreeResponse {
-    pub terms: Vec<ResponseTerm>,
+pub struct FreeResponse<E: Field = NumberField> {
+    pub terms: Vec<ResponseTerm<E>>,
 }
 
-fn factorial(k: usize) -> Rational {
-    (1..=k).fold(Rational::one(), |acc, i| {
-        acc * Rational::from_integer(i.into())
-    })
-}
+/// The chains of one component: its field, block sizes (largest first), $V$ and $W$.
+pub(crate) type ComponentChains<'a, F> = (
+    &'a Ext<F>,
+    &'a [usize],
+    &'a Matrix<Ext<F>>,
+    &'a Matrix<Ext<F>>,
+);
 
-impl JordanForm {
-    /// The exact terms $G_{\theta,k}$ of $e^{At}$, one set per component.
-    pub fn free_response(&self) -> FreeResponse {
+impl<F: Field> FreeResponse<Ext<F>> {
+    /// The exact terms $G_{\theta,k} = \frac1{k!}\sum_{\text{chains}} \sum_j v_j w_{j+k}$,
+    /// one set per component (in order), for an $n \times n$ matrix.
+    pub(crate) fn from_chains<'a>(
+        n: usize,
+        components: impl Iterator<Item = ComponentChains<'a, F>>,
+    ) -> Self
+    where
+        F: 'a,
+    {
         let mut terms = vec![];
-        for (ci, c) in self.components.iter().enumerate() {
-            let k = &c.field;
-            let n = self.n();
-            let smax = c.blocks.first().copied().unwrap_or(0);
+        for (ci, (e, blocks, chains, left)) in components.enumerate() {
+            let smax = blocks.iter().copied().max().unwrap_or(0);
+            let mut fact = Rational::one();
             for power in 0..smax {
-                let mut g = Matrix::zeros(k.clone(), n, n);
+                if power > 0 {
+                    fact *= Rational::from_integer(power.into());
+                }
+                let mut g = Matrix::zeros(e.clone(), n, n);
                 let mut off = 0;
-                for &b in &c.blocks {
+                for &b in blocks {
                     for j in 0..b.saturating_sub(power) {
-                        let v = c.chains.submatrix(0, n, off + j, off + j + 1);
-                        let w = c
-                            .left_chains
-                            .submatrix(off + j + power, off + j + power + 1, 0, n);
+                        let v = chains.submatrix(0, n, off + j, off + j + 1);
+                        let w = left.submatrix(off + j + power, off + j + power + 1, 0, n);
                         g = &g + &(&v * &w);
                     }
                     off += b;
                 }
-                let inv = k.from_rational(&factorial(power).recip());
+                let inv = e.from_rational(&fact.recip());
                 terms.push(ResponseTerm {
                     component: ci,
                     power,
@@ -87,40 +96,60 @@ impl JordanForm {
         }
         FreeResponse { terms }
     }
-}
-
-impl FreeResponse {
-    /// Exact checks: $A G_k = t G_k + (k+1) G_{k+1}$ in each component field and
-    /// $\sum_p \operatorname{Tr}_{K_p/\mathbb{Q}}(G_{p,0}) = I$.
-    pub fn verify(&self, jf: &JordanForm) -> bool {
-        let n = jf.n();
-        let mut sum0 = Matrix::zeros(Q, n, n);
+    /// Exact checks for $A$ over $F$: $A G_k = t G_k + (k+1) G_{k+1}$ in each component's
+    /// $E = F\[t\]/(p)$ and $\sum_p \operatorname{Tr}_{E/F}(G_{p,0}) = I$, the trace from
+    /// the Newton power sums of $p$. `component(i)` gives the field and the factor $p$.
+    pub(crate) fn verify_over<'a>(
+        &self,
+        a: &Matrix<F>,
+        component: impl Fn(usize) -> (&'a Ext<F>, &'a Poly<F>),
+    ) -> bool
+    where
+        F: 'a,
+    {
+        let n = a.nrows();
+        let k = a.field();
+        let mut sum0 = Matrix::zeros(k.clone(), n, n);
         for term in &self.terms {
-            let c = &jf.components[term.component];
-            let k = &c.field;
-            let ak = jf.a.convert_to(k);
+            let (e, p) = component(term.component);
+            let ae = a.map(e, |x| e.from_base(x));
             let next = self
                 .terms
                 .iter()
                 .find(|t| t.component == term.component && t.power == term.power + 1)
-                .map(|t| t.coeff.scale(&k.from_i64(term.power as i64 + 1)))
-                .unwrap_or_else(|| Matrix::zeros(k.clone(), n, n));
-            let rhs = &term.coeff.scale(&c.root_elem()) + &next;
-            if &ak * &term.coeff != rhs {
+                .map(|t| t.coeff.scale(&e.from_i64(term.power as i64 + 1)))
+                .unwrap_or_else(|| Matrix::zeros(e.clone(), n, n));
+            let rhs = &term.coeff.scale(&e.generator()) + &next;
+            if &ae * &term.coeff != rhs {
                 return false;
             }
             if term.power == 0 {
-                let ps = newton_power_sums(&c.factor, c.factor.deg().saturating_sub(1));
-                let tr = term.coeff.map(&Q, |x: &NfElem| {
-                    x.0.iter()
-                        .zip(&ps)
-                        .fold(Rational::zero(), |acc, (a, b)| acc + a * b)
+                let ps = newton_power_sums(p, p.deg().saturating_sub(1));
+                let tr = term.coeff.map(k, |x| {
+                    x.0.iter().zip(&ps).fold(k.zero(), |mut acc, (a, b)| {
+                        k.mul_add_assign(&mut acc, a, b);
+                        acc
+                    })
                 });
                 sum0 = &sum0 + &tr;
             }
         }
         sum0.is_identity()
     }
+}
+
+impl<F: Field> FreeResponse<Ext<F>> {
+    /// Exact checks: $A G_k = t G_k + (k+1) G_{k+1}$ in each component field $E$ and
+    /// $\sum_p \operatorname{Tr}_{E/F}(G_{p,0}) = I$.
+    pub fn verify(&self, jf: &JordanForm<F>) -> bool {
+        self.verify_over(&jf.a, |i| {
+            let c = &jf.components[i];
+            (&c.field, &c.factor)
+        })
+    }
+}
+
+impl FreeResponse {
     /// The exact term vectors $G_{\theta,k} x_0$ for eigenvalue `ev` of `jf`, in that
     /// eigenvalue's field (see [`JordanForm::root_map`]): `(power, vector)` pairs.
     pub fn term_vectors(

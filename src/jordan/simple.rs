@@ -13,127 +13,86 @@
 //! is $w = e_j^T q(A)$ alike, and $W = w / (w v)$ gives $W V = 1$ ($w v \ne 0$ for a
 //! simple eigenvalue).
 //!
-//! All work is over $\mathbb{Q}$ (Krylov matrices and one rational product $K_b C$ with
-//! the coefficient matrix $C$ of $Q(t)$ in $K = \mathbb{Q}[t]/(p)$) plus $n$ products and
-//! one inverse in $K$. For a dense $16 \times 16$ integer matrix with an irreducible
+//! The same holds over any base field $F$ with $E = F\[t\]/(g)$ ([`simple_chains`], used
+//! over $\mathbb{Q}$ and over $\mathbb{Q}(\sqrt d)$). All work is over $F$ (Krylov
+//! matrices, one product $K_b C$ with the coefficient matrix $C$ of the $q_k(t)$, $w v$ and
+//! $W$ as products and one $d \times d$ inverse, [`super::coeffs`]: the product kernels of
+//! the matrix layer) plus the $n$ steps of $q$ in $E$. For a dense $16 \times 16$ integer matrix with an irreducible
 //! characteristic polynomial this replaces an elimination over a field of degree 16.
-//! The component is checked exactly by [`PrimaryComponent::verify`] as every other one.
+//! The component is checked exactly as every other one.
 
-use super::coeffs::{coeff_cols, mul_matrix};
-use super::primary::{PrimaryComponent, named_field};
-use crate::algebraic::{NfElem, NumberField};
+use super::coeffs::{coeff_cols, dot, elem_of_col, elem_of_row, mul_matrix};
+use crate::algebraic::{Ext, ExtElem};
 use crate::error::{Error, Result};
-use crate::field::{Field, Q, Rational};
+use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use num_traits::Zero;
 
-/// $[x, M x, \dots, M^{n-1} x]$ as the columns of an $n \times n$ rational matrix.
-fn krylov(m: &Matrix<Q>, x: Vec<Rational>) -> Matrix<Q> {
+/// Right ($n \times 1$) and left ($1 \times n$) chains over $F\[t\]/(g)$.
+pub(crate) type ChainPair<F> = (Matrix<Ext<F>>, Matrix<Ext<F>>);
+
+/// $K_b$ for `b = e_i` ($n \times n$, column $j$ is $M^j e_i$), each product on the
+/// product kernel of the matrix layer.
+fn krylov<F: Field>(m: &Matrix<F>, i: usize) -> Matrix<F> {
+    let k = m.field();
     let n = m.nrows();
-    let mut cols = vec![x];
-    for k in 1..n {
-        let prev = &cols[k - 1];
-        let next: Vec<Rational> = (0..n)
-            .map(|i| {
-                m.row(i)
-                    .iter()
-                    .zip(prev)
-                    .filter(|(a, b)| !a.is_zero() && !b.is_zero())
-                    .map(|(a, b)| a * b)
-                    .sum()
-            })
-            .collect();
-        cols.push(next);
+    let mut x = Matrix::zeros(k.clone(), n, 1);
+    x.set(i, 0, k.one());
+    let mut out = Matrix::zeros(k.clone(), n, n);
+    for j in 0..n {
+        if j > 0 {
+            x = m * &x;
+        }
+        out.set_block(0, j, &x);
     }
-    Matrix::from_fn(Q, n, n, |i, j| cols[j][i].clone())
+    out
 }
 
-/// $v = K_b\, Q(t)$ over $K$: row $i$ is $\sum_k (K_b)_{ik} q_k(t)$.
-fn apply(kb: &Matrix<Q>, coef: &Matrix<Q>, field: &NumberField) -> Vec<NfElem> {
-    let prod = super::chains::mul(kb, coef);
-    (0..prod.nrows())
-        .map(|i| field.elem_from_poly(&Poly::new(Q, prod.row(i).to_vec())))
-        .collect()
-}
-
-/// The component of the simple irreducible factor `factor` of $\chi_A$ = `chi`
-/// (multiplicity 1, degree $\ge 2$), as described in the module docs.
+/// Right and left chains ($n \times 1$, $1 \times n$) of the simple factor `e.modulus()` of
+/// `chi` $= \chi_A$.
 ///
 /// # Errors
-/// `Verification` if no unit vector gives a nonzero eigenvector (impossible for a simple
-/// factor; kept as a typed error rather than a panic).
-pub(crate) fn simple_component(
-    a: &Matrix<Q>,
-    chi: &Poly<Q>,
-    factor: &Poly<Q>,
-    roots: Vec<(f64, f64)>,
-) -> Result<PrimaryComponent> {
+/// `Verification` if no unit vector gives an eigenvector or $w v = 0$ (impossible for a
+/// simple root; a typed error rather than a panic).
+pub(crate) fn simple_chains<F: Field>(
+    a: &Matrix<F>,
+    chi: &Poly<F>,
+    e: &Ext<F>,
+) -> Result<ChainPair<F>> {
     let n = a.nrows();
-    let d = factor.deg();
-    let field = named_field(factor, roots[0], "t");
-    let t = field.generator();
-    // q_{n-1} = 1, q_{k-1} = c_k + t q_k (chi monic of degree n)
+    let t = e.generator();
     let chi = chi.monic();
-    let mut q = vec![field.zero(); n];
-    q[n - 1] = field.one();
+    let mut q = vec![e.zero(); n];
+    q[n - 1] = e.one();
     for k in (1..n).rev() {
-        let next = field.add(&field.from_rational(&chi.coeff(k)), &field.mul(&t, &q[k]));
-        q[k - 1] = next;
+        q[k - 1] = e.add(&e.from_base(&chi.coeff(k)), &e.mul(&t, &q[k]));
     }
-    let coef = Matrix::from_fn(Q, n, d, |k, j| {
-        q[k].0.get(j).cloned().unwrap_or_else(Rational::zero)
-    });
-    let unit = |i: usize| {
-        (0..n)
-            .map(|r| {
-                if r == i {
-                    Rational::from_integer(1.into())
-                } else {
-                    Rational::zero()
-                }
-            })
-            .collect::<Vec<_>>()
-    };
-    let first_nonzero = |m: &Matrix<Q>| -> Option<Vec<NfElem>> {
+    // the coefficients of q_k(t) as the rows of an n x d matrix over F: v = K_b Q
+    let qc = coeff_cols(e, &q).transpose();
+    let first = |m: &Matrix<F>| {
         (0..n).find_map(|i| {
-            let v = apply(&krylov(m, unit(i)), &coef, &field);
-            v.iter().any(|x| !field.is_zero(x)).then_some(v)
+            let kq = &krylov(m, i) * &qc;
+            let v: Vec<ExtElem<F::Elem>> = (0..n).map(|r| elem_of_row(&kq, r)).collect();
+            v.iter().any(|x| !e.is_zero(x)).then_some(v)
         })
     };
     let none = || {
         Error::Verification(format!(
-            "no nonzero eigenvector from unit vectors for the simple factor {factor}"
+            "no nonzero eigenvector from unit vectors for the simple factor {}",
+            e.modulus()
         ))
     };
-    let v = first_nonzero(a).ok_or_else(none)?;
-    let w = first_nonzero(&a.transpose()).ok_or_else(none)?;
-    // s = w v, then W = w / s as one rational solve: coeffs(W) = M_s^{-1} coeffs(w)
-    let s = v.iter().zip(&w).fold(field.zero(), |acc, (x, y)| {
-        field.add(&acc, &field.mul(x, y))
-    });
-    let ms_inv = mul_matrix(&field, &s)
-        .inverse()
-        .map_err(|_| Error::Verification(format!("w v = 0 for the simple factor {factor}")))?;
-    let wm = super::chains::mul(&ms_inv, &coeff_cols(&w, d));
-    let w: Vec<NfElem> = (0..n).map(|j| elem_of_col(&wm, j)).collect();
-    Ok(PrimaryComponent {
-        factor: factor.clone(),
-        multiplicity: 1,
-        roots,
-        blocks: vec![1],
-        kernel_dims: vec![1],
-        chains: Matrix::from_vec(field.clone(), n, 1, v),
-        left_chains: Matrix::from_vec(field.clone(), 1, n, w),
-        field,
-    })
-}
-
-/// Column `j` of a coefficient matrix as a canonical element.
-fn elem_of_col(m: &Matrix<Q>, j: usize) -> NfElem {
-    let mut c: Vec<Rational> = (0..m.nrows()).map(|k| m.get(k, j).clone()).collect();
-    while c.last().is_some_and(|x| x.is_zero()) {
-        c.pop();
-    }
-    NfElem(c)
+    let v = first(a).ok_or_else(none)?;
+    let w = first(&a.transpose()).ok_or_else(none)?;
+    // s = w v, then W = w / s as one solve over F: coeffs(W) = M_s^{-1} coeffs(w)
+    let s = dot(e, &v, &w);
+    let ms_inv = mul_matrix(e, &s).inverse().map_err(|_| {
+        Error::Verification(format!("w v = 0 for the simple factor {}", e.modulus()))
+    })?;
+    let wc = &ms_inv * &coeff_cols(e, &w);
+    let w: Vec<ExtElem<F::Elem>> = (0..n).map(|j| elem_of_col(&wc, j)).collect();
+    Ok((
+        Matrix::from_vec(e.clone(), n, 1, v),
+        Matrix::from_vec(e.clone(), 1, n, w),
+    ))
 }

@@ -9,7 +9,7 @@
 use super::{MAX_VARS, MPoly, QPoly, max_exponent};
 use crate::error::{Error, Result};
 use crate::field::Rational;
-use crate::field::scan::{Cursor, identifier_end, number_end};
+use crate::field::scan::{Cursor, identifier_end, number_end, reserved_message};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -96,16 +96,6 @@ pub fn identifiers(text: &str) -> Result<Vec<String>> {
         });
     }
     Ok(out)
-}
-
-/// The refusal of a reserved name ([`crate::field::scan::RESERVED`]) as a variable.
-pub(crate) fn reserved_message(name: &str) -> Option<String> {
-    crate::field::scan::reserved_meaning(name).map(|m| {
-        format!(
-            "'{name}' is {m}, not a variable: polynomials here have rational coefficients \
-             (no i, sqrt or pi)"
-        )
-    })
 }
 
 fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPoly, MPoly)> {

@@ -1,4 +1,4 @@
-//! Newton's identities over $\mathbb{Q}$: power sums of the roots of a monic polynomial and
+//! Newton's identities: power sums of the roots of a monic polynomial and
 //! back.
 //!
 //! For monic $p = x^n + a_{n-1}x^{n-1} + \dots + a_0$ with roots $\theta_1, \dots, \theta_n$
@@ -7,35 +7,35 @@
 //! ($a_{n-k} = 0$ for $k > n$).
 
 use super::Poly;
-use crate::field::{Q, Rational};
+use crate::field::{Field, Q, Rational};
 use num_traits::{One, Zero};
 
 /// Newton power sums $s_0, s_1, \dots, s_{\text{upto}}$ of the roots of the **monic** `p`
-/// (length `upto + 1`). The one implementation in the crate; use it rather than a copy.
+/// over any field (length `upto + 1`). The one implementation in the crate; use it rather
+/// than a copy.
 ///
 /// # Panics
 /// In debug builds, when `p` is not monic.
-pub fn newton_power_sums(p: &Poly<Q>, upto: usize) -> Vec<Rational> {
+pub fn newton_power_sums<K: Field>(p: &Poly<K>, upto: usize) -> Vec<K::Elem> {
+    let k = p.field();
     let n = p.deg();
     debug_assert!(
-        p.is_zero() || p.coeff(n).is_one(),
+        p.is_zero() || k.is_one(&p.coeff(n)),
         "power sums need a monic polynomial"
     );
-    let a: Vec<Rational> = (0..=n).map(|i| p.coeff(i)).collect(); // a[i]: coefficient of x^i
+    let a: Vec<K::Elem> = (0..=n).map(|i| p.coeff(i)).collect(); // a[i]: coefficient of x^i
     let mut s = Vec::with_capacity(upto + 1);
-    s.push(Rational::from_integer(n.into()));
-    for k in 1..=upto {
-        let mut v = if k <= n {
-            &a[n - k] * Rational::from_integer(k.into())
+    s.push(k.from_i64(n as i64));
+    for j in 1..=upto {
+        let mut v = if j <= n {
+            k.mul(&a[n - j], &k.from_i64(j as i64))
         } else {
-            Rational::zero()
+            k.zero()
         };
-        for i in 1..k.min(n + 1) {
-            if !a[n - i].is_zero() {
-                v += &a[n - i] * &s[k - i];
-            }
+        for i in 1..j.min(n + 1) {
+            k.mul_add_assign(&mut v, &a[n - i], &s[j - i]);
         }
-        s.push(-v);
+        s.push(k.neg(&v));
     }
     s
 }

@@ -27,18 +27,12 @@
 //! trace over the conjugates of each factor is rational), and the order equals the McMillan
 //! degree (Hankel rank), so the result is minimal.
 
-use super::controllability::mcmillan_degree;
-use super::minimal::minimal_kalman;
 use crate::algebraic::AlgebraicNumber;
-use crate::algebraic::{NfElem, NumberField, NumberFieldCtx};
+use crate::algebraic::{NfElem, NumberField};
 use crate::error::Result;
-use crate::field::{ComplexField, ComplexPair, Field, Q, Rational};
-use crate::jordan::{chains::jordan_chains, jordan};
+use crate::field::{ComplexField, ComplexPair, Field, Q};
 use crate::matrix::Matrix;
-use crate::poly::Poly;
 use crate::system::StateSpace;
-use num_traits::Zero;
-use std::sync::Arc;
 
 /// One real block of the result: its field, and its (A, B, C) over that field.
 #[derive(Clone, Debug)]
@@ -78,98 +72,6 @@ pub struct JordanMinimal {
     pub verified: bool,
 }
 
-/// Per-component complex-form data after compaction.
-struct Compact {
-    field: NumberField,
-    factor: Poly<Q>,
-    roots: Vec<(f64, f64)>,
-    a: Matrix<NumberField>,
-    b: Matrix<NumberField>,
-    c: Matrix<NumberField>,
-}
-
-/// Keeps, per Jordan block, the states from the first observed to the last excited one.
-pub(super) fn drop_modes<K: Field>(
-    blocks: &[usize],
-    b: &Matrix<K>,
-    c: &Matrix<K>,
-) -> (Vec<usize>, Vec<usize>) {
-    let k = b.field().clone();
-    let (mut keep, mut sizes, mut start) = (vec![], vec![], 0);
-    for &s in blocks {
-        let idx: Vec<usize> = (start..start + s).collect();
-        let excited = idx
-            .iter()
-            .rposition(|&i| b.row(i).iter().any(|x| !k.is_zero(x)));
-        let observed = idx
-            .iter()
-            .position(|&i| (0..c.nrows()).any(|r| !k.is_zero(c.get(r, i))));
-        if let (Some(hi), Some(lo)) = (excited, observed)
-            && lo <= hi
-        {
-            keep.extend(start + lo..=start + hi);
-            sizes.push(hi - lo + 1);
-        }
-        start += s;
-    }
-    (keep, sizes)
-}
-
-/// Newton power sums $p_j = \sum_i \theta_i^j$, $j < m$, of the roots of `p`
-/// ([`crate::poly::newton_power_sums`]).
-fn power_sums(p: &Poly<Q>, m: usize) -> Vec<Rational> {
-    let mut s = crate::poly::newton_power_sums(&p.monic(), m.saturating_sub(1));
-    s.truncate(m);
-    s
-}
-
-/// Adds $\mathrm{Tr}_{K/\mathbb{Q}}(C_p J_\theta^k B_p)$ to `sum[k]` for every $k$, without
-/// products in $K$ per $k$: $(J_\theta^k)_{l, l+r} = \binom kr \theta^{k-r}$ inside a Jordan
-/// block, so each entry is a sum of $\binom kr \mathrm{Tr}(\theta^{k-r} x)$ over the
-/// products $x = C_{il} B_{l+r,j}$ (computed once), and $\mathrm{Tr}(\theta^e x) = \sum_c
-/// x_c\, s_{e+c}$ with the power sums $s$ of the factor.
-fn add_traces(c: &Compact, sum: &mut [Matrix<Q>]) {
-    let kmax = sum.len();
-    let f = &c.field;
-    let s = c.a.nrows();
-    let sums = power_sums(&c.factor, kmax + c.factor.deg() + 1);
-    let mut start = vec![0; s];
-    for l in 1..s {
-        start[l] = if f.is_zero(c.a.get(l - 1, l)) {
-            l
-        } else {
-            start[l - 1]
-        };
-    }
-    for i in 0..c.c.nrows() {
-        for j in 0..c.b.ncols() {
-            for l in 0..s {
-                for l2 in l..s {
-                    if start[l2] != start[l] {
-                        continue;
-                    }
-                    let x = f.mul(c.c.get(i, l), c.b.get(l2, j));
-                    if f.is_zero(&x) {
-                        continue;
-                    }
-                    let r = l2 - l;
-                    // binom(k, r) for k = r, r + 1, ...
-                    let mut binom = Rational::from_integer(1.into());
-                    for (k, mk) in sum.iter_mut().enumerate().skip(r) {
-                        if k > r {
-                            binom = binom * Rational::from_integer(k.into())
-                                / Rational::from_integer((k - r).into());
-                        }
-                        let tr: Rational = x.0.iter().zip(&sums[k - r..]).map(|(a, b)| a * b).sum();
-                        let cur = mk.get(i, j) + &(&binom * &tr);
-                        mk.set(i, j, cur);
-                    }
-                }
-            }
-        }
-    }
-}
-
 /// The certified root among `roots` (those of one irreducible polynomial, isolated once per
 /// factor) closest to the approximation `theta`.
 fn closest_root(roots: &[AlgebraicNumber], theta: (f64, f64)) -> Option<AlgebraicNumber> {
@@ -202,94 +104,6 @@ fn split(cf: &ComplexField<NumberField>, t: &ComplexPair<NfElem>, e: &NfElem) ->
     (acc.re, acc.im)
 }
 
-/// An element of $K$ from a coefficient column (trailing zeros dropped: canonical form).
-fn elem_of(m: &Matrix<Q>, j: usize) -> NfElem {
-    let mut c: Vec<Rational> = (0..m.nrows()).map(|i| m.get(i, j).clone()).collect();
-    while c.last().is_some_and(|x| x.is_zero()) {
-        c.pop();
-    }
-    NfElem(c)
-}
-
-/// $W B$ for $W$ over $K$ and rational $B$, as rational products of coefficient matrices
-/// (row $r$ of $W$ as the $d \times n$ matrix of its coefficients times $B$): no product in
-/// $K$, and the integer product kernel does the work.
-pub(super) fn times_rational(w: &Matrix<NumberField>, b: &Matrix<Q>) -> Matrix<NumberField> {
-    let k = w.field().clone();
-    let d = k.degree();
-    let mut out = Matrix::zeros(k, w.nrows(), b.ncols());
-    for r in 0..w.nrows() {
-        let wc = crate::jordan::coeffs::coeff_cols(w.row(r), d);
-        let prod = &wc * b;
-        for j in 0..b.ncols() {
-            out.set(r, j, elem_of(&prod, j));
-        }
-    }
-    out
-}
-
-/// $C V$ for rational $C$ and $V$ over $K$, as [`times_rational`] does $W B$.
-pub(super) fn rational_times(c: &Matrix<Q>, v: &Matrix<NumberField>) -> Matrix<NumberField> {
-    let k = v.field().clone();
-    let d = k.degree();
-    let ct = c.transpose();
-    let mut out = Matrix::zeros(k, c.nrows(), v.ncols());
-    for r in 0..v.ncols() {
-        let vc = crate::jordan::coeffs::coeff_cols(&v.col(r), d);
-        let prod = &vc * &ct;
-        for i in 0..c.nrows() {
-            out.set(i, r, elem_of(&prod, i));
-        }
-    }
-    out
-}
-
-fn compact_component(
-    sys: &StateSpace<Q>,
-    comp: &crate::jordan::primary::PrimaryComponent,
-    stage1: &mut usize,
-) -> Result<Option<Compact>> {
-    let k = comp.field.clone();
-    let d = comp.degree();
-    let bk = times_rational(&comp.left_chains, &sys.b);
-    let ck = rational_times(&sys.c, &comp.chains);
-    let (keep, sizes) = drop_modes(&comp.blocks, &bk, &ck);
-    *stage1 += keep.len() * d;
-    if keep.is_empty() {
-        return Ok(None);
-    }
-    let theta = comp.root_elem();
-    if keep.len() == 1 {
-        // one excited and observed mode (a simple eigenvalue): already minimal
-        return Ok(Some(Compact {
-            a: Matrix::from_vec(k.clone(), 1, 1, vec![theta]),
-            b: bk.select_rows(&keep),
-            c: ck.select_cols(&keep),
-            field: k,
-            factor: comp.factor.clone(),
-            roots: comp.roots.clone(),
-        }));
-    }
-    let nilp = crate::jordan::chains::jordan_block_matrix(&k, &k.zero(), &sizes);
-    let trimmed =
-        StateSpace::new_strictly_proper(nilp, bk.select_rows(&keep), ck.select_cols(&keep))?;
-    let min = minimal_kalman(&trimmed)?.system;
-    let r = min.nstates();
-    if r == 0 {
-        return Ok(None);
-    }
-    let ch = jordan_chains(&min.a, r)?;
-    let jn = crate::jordan::chains::jordan_block_matrix(&k, &theta, &ch.blocks);
-    Ok(Some(Compact {
-        field: k,
-        factor: comp.factor.clone(),
-        roots: comp.roots.clone(),
-        a: jn,
-        b: &ch.w * &min.b,
-        c: &min.c * &ch.v,
-    }))
-}
-
 /// Minimal realization by the Jordan-form method, complex pairs expanded into their real
 /// field only when it is small (degree at most [`crate::jordan::real::EXPAND_MAX_DEGREE`]),
 /// otherwise in the compact form ([`RealModalBlock::compact`]).
@@ -307,34 +121,15 @@ pub fn minimal_jordan(sys: &StateSpace<Q>) -> Result<JordanMinimal> {
 /// # Errors
 /// Errors of the Jordan decomposition.
 pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMinimal> {
-    let n = sys.nstates();
-    let jf = jordan(&sys.a)?;
-    let mut stage1 = 0;
-    let mut comps = vec![];
-    for comp in &jf.components {
-        if let Some(c) = compact_component(sys, comp, &mut stage1)? {
-            comps.push(c);
-        }
-    }
-    // exact verification through traces
-    let r: usize = comps.iter().map(|c| c.a.nrows() * c.factor.deg()).sum();
-    let kmax = n + r;
-    let markov = sys.markov(kmax);
-    let mut sum: Vec<Matrix<Q>> = (0..kmax)
-        .map(|_| Matrix::zeros(Q, sys.noutputs(), sys.ninputs()))
-        .collect();
-    for c in &comps {
-        add_traces(c, &mut sum);
-    }
-    let mcm = mcmillan_degree(sys);
-    let verified = sum == markov && r == mcm;
+    let core = super::jordan_core::jordan_core(sys)?;
     // real blocks
     let mut blocks = vec![];
     let mut symbols: Vec<(String, String)> = vec![];
-    for c in &comps {
-        let p = &c.factor;
+    for c in &core.comps {
+        let comp = &core.jf.components[c.comp];
+        let p = &comp.factor;
         let mut certified: Option<Vec<AlgebraicNumber>> = None;
-        for (j, &(re, im)) in c.roots.iter().enumerate() {
+        for (j, &(re, im)) in comp.roots.iter().enumerate() {
             if im < 0.0 {
                 continue;
             }
@@ -355,11 +150,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
                         (crate::jordan::quadratic_field(&fd), Some((a0, s)))
                     }
                     _ => (
-                        NumberField(Arc::new(NumberFieldCtx {
-                            modulus: c.field.modulus().clone(),
-                            root: c.roots[j],
-                            var: var.clone(),
-                        })),
+                        NumberField::with_var(comp.field.modulus(), comp.roots[j], &var),
                         None,
                     ),
                 };
@@ -367,7 +158,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
                     Some((a0, s)) => m.map(&f, |x| crate::jordan::quadratic_image(x, a0, s)),
                     None => m.map(&f, |x| x.clone()),
                 };
-                let ev = crate::jordan::value_display(p, c.roots[j]);
+                let ev = crate::jordan::value_display(p, comp.roots[j]);
                 if p.deg() > 2 {
                     symbols.push((var, ev.clone()));
                 }
@@ -400,11 +191,7 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
             };
             let Some((f, a_re, beta)) = expanded else {
                 // compact: the complex modal data over K marked at theta
-                let f = NumberField(Arc::new(NumberFieldCtx {
-                    modulus: c.field.modulus().clone(),
-                    root: (re, im),
-                    var: var.clone(),
-                }));
+                let f = NumberField::with_var(comp.field.modulus(), (re, im), &var);
                 let k = var.trim_start_matches('r').to_string();
                 symbols.push((var.clone(), crate::jordan::value_display(p, (re, im))));
                 symbols.push((format!("a{k}"), format!("Re {var}")));
@@ -430,33 +217,9 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
             }
             let cf = ComplexField::new(f.clone());
             let t = ComplexPair { re: a_re, im: beta };
+            let [a, b, cc] =
+                super::jordan_core::real_pair_block(&f, [&c.a, &c.b, &c.c], |x| split(&cf, &t, x));
             let s = c.a.nrows();
-            let two = f.from_i64(2);
-            let mut a = Matrix::zeros(f.clone(), 2 * s, 2 * s);
-            let mut b = Matrix::zeros(f.clone(), 2 * s, c.b.ncols());
-            let mut cc = Matrix::zeros(f.clone(), c.c.nrows(), 2 * s);
-            for i in 0..s {
-                for jj in 0..s {
-                    let (x, y) = split(&cf, &t, c.a.get(i, jj));
-                    // z = x1 - i x2: [[Re, -Im], [Im, Re]] acting on (x1, -x2) -> [[Re, Im], [-Im, Re]]
-                    a.set(2 * i, 2 * jj, x.clone());
-                    a.set(2 * i, 2 * jj + 1, y.clone());
-                    a.set(2 * i + 1, 2 * jj, f.neg(&y));
-                    a.set(2 * i + 1, 2 * jj + 1, x);
-                }
-                for col in 0..c.b.ncols() {
-                    let (x, y) = split(&cf, &t, c.b.get(i, col));
-                    b.set(2 * i, col, x);
-                    b.set(2 * i + 1, col, f.neg(&y));
-                }
-            }
-            for row in 0..c.c.nrows() {
-                for i in 0..s {
-                    let (x, y) = split(&cf, &t, c.c.get(row, i));
-                    cc.set(row, 2 * i, f.mul(&two, &x));
-                    cc.set(row, 2 * i + 1, f.mul(&two, &y));
-                }
-            }
             blocks.push(RealModalBlock {
                 eigenvalue: format!("{ev} (and its conjugate)"),
                 field: f,
@@ -469,12 +232,12 @@ pub fn minimal_jordan_with(sys: &StateSpace<Q>, expand: bool) -> Result<JordanMi
         }
     }
     Ok(JordanMinimal {
-        stages: [n, stage1, r],
+        stages: core.stages,
         blocks,
         d: sys.d.clone(),
-        mcmillan_degree: mcm,
+        mcmillan_degree: core.mcmillan_degree,
         symbols,
-        verified,
+        verified: core.verified,
     })
 }
 
@@ -569,19 +332,4 @@ pub fn minimal_jordan_rational(sys: &StateSpace<Q>) -> Result<super::MinimalReal
         super::MinrealMethod::Jordan,
         None,
     ))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    #[test]
-    fn power_sums_of_quadratic() {
-        // x^2 - 3x + 2: roots 1, 2 -> p0 = 2, p1 = 3, p2 = 5, p3 = 9
-        let s = power_sums(&Poly::from_i64s(&[2, -3, 1]), 4);
-        let want: Vec<Rational> = [2, 3, 5, 9]
-            .iter()
-            .map(|&v: &i64| Rational::from_integer(v.into()))
-            .collect();
-        assert_eq!(s, want);
-    }
 }

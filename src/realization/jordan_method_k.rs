@@ -25,15 +25,12 @@
 //! realization's own Markov parameters are also compared
 //! ([`JordanMinimalK::real_to_base`]).
 
-use super::controllability::mcmillan_degree;
-use super::minimal::minimal_kalman;
+use super::jordan_core::real_pair_block;
 use crate::algebraic::{NfElem, NumberField};
 use crate::error::Result;
 use crate::field::{Field, Quadratic, QuadraticField};
-use crate::jordan::chains::{jordan_block_matrix, jordan_chains};
 use crate::jordan::over_k::pair_field::{PairField, pair_field};
-use crate::jordan::over_k::response::power_sums;
-use crate::jordan::over_k::{JordanFormK, RelElem, RelField, jordan_over_k};
+use crate::jordan::over_k::{JordanFormK, RelElem, RelField};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::system::StateSpace;
@@ -122,144 +119,20 @@ impl JordanMinimalK {
     }
 }
 
-/// $\mathrm{Tr}_{E/K}(t^e x) = \sum_c x_c s_{e+c}$.
-fn trace_shifted(x: &RelElem, e: usize, s: &[Quadratic], k: &QuadraticField) -> Quadratic {
-    x.0.iter()
-        .enumerate()
-        .fold(k.zero(), |acc, (c, xc)| k.add(&acc, &k.mul(xc, &s[e + c])))
-}
-
-/// Adds $\mathrm{Tr}_{E/K}(C J^k B)$ to `sum[k]` for every $k$ without a product in $E$ per
-/// $k$: inside a Jordan block $(J^k)_{l, l+r} = \binom kr t^{k-r}$, so each entry is
-/// $\sum_r \binom kr \mathrm{Tr}(t^{k-r} x_r)$ with $x_r = \sum_l C_{il} B_{l+r,j}$
-/// (products computed once) and the power sums `s` of $g$.
-fn add_traces(c: &Compact, g: &Poly<QuadraticField>, sum: &mut [Matrix<QuadraticField>]) {
-    let kmax = sum.len();
-    let k = g.field().clone();
-    let e = c.b.field();
-    let (p, m) = (c.c.nrows(), c.b.ncols());
-    let smax = c.blocks.iter().copied().max().unwrap_or(0);
-    let s = power_sums(g, kmax + g.deg() + 1);
-    // binomials C(kk, r) for kk < kmax, r < smax
-    let mut binom = vec![vec![0i128; smax.max(1)]; kmax];
-    for (kk, row) in binom.iter_mut().enumerate() {
-        let mut b = 1i128;
-        for (r, x) in row.iter_mut().enumerate() {
-            if r > kk {
-                break;
-            }
-            *x = b;
-            b = b * (kk - r) as i128 / (r + 1) as i128;
-        }
-    }
-    for i in 0..p {
-        for j in 0..m {
-            let mut x = vec![e.zero(); smax];
-            let mut off = 0;
-            for &bs in &c.blocks {
-                for (r, xr) in x.iter_mut().enumerate().take(bs) {
-                    for l in off..off + bs - r {
-                        *xr = e.add(xr, &e.mul(c.c.get(i, l), c.b.get(l + r, j)));
-                    }
-                }
-                off += bs;
-            }
-            for (kk, term) in sum.iter_mut().enumerate() {
-                let mut v = term.get(i, j).clone();
-                for (r, xr) in x.iter().enumerate().take(kk + 1) {
-                    if e.is_zero(xr) {
-                        continue;
-                    }
-                    let bin =
-                        k.from_rational(&crate::field::Rational::from_integer(binom[kk][r].into()));
-                    v = k.add(&v, &k.mul(&bin, &trace_shifted(xr, kk - r, &s, &k)));
-                }
-                term.set(i, j, v);
-            }
-        }
-    }
-}
-
-/// One compacted component: $(J, B, C)$ over $E$ (marked at the first root), the index of
-/// its component.
-struct Compact {
-    comp: usize,
-    blocks: Vec<usize>,
-    a: Matrix<RelField>,
-    b: Matrix<RelField>,
-    c: Matrix<RelField>,
-}
-
 /// Minimal realization of a system over $K$ by the Jordan-form method (module docs).
 ///
 /// # Errors
 /// Those of [`jordan_over_k`] and of the Kalman decomposition.
 pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanMinimalK> {
-    let n = sys.nstates();
-    let jf: JordanFormK = jordan_over_k(&sys.a)?;
-    let mut stage1 = 0;
-    let mut comps = vec![];
-    for (ci, comp) in jf.components.iter().enumerate() {
-        let e = &comp.field;
-        let lift = |m: &Matrix<QuadraticField>| m.map(e, |x| e.from_base(x));
-        let bk = &comp.left_chains * &lift(&sys.b);
-        let ck = &lift(&sys.c) * &comp.chains;
-        let (keep, sizes) = super::jordan_method::drop_modes(&comp.blocks, &bk, &ck);
-        stage1 += keep.len() * comp.factor.deg();
-        if keep.is_empty() {
-            continue;
-        }
-        let theta = comp.root_elem();
-        if keep.len() == 1 {
-            // one excited and observed mode (a simple eigenvalue): already minimal
-            comps.push(Compact {
-                comp: ci,
-                blocks: vec![1],
-                a: Matrix::from_vec(e.clone(), 1, 1, vec![theta]),
-                b: bk.select_rows(&keep),
-                c: ck.select_cols(&keep),
-            });
-            continue;
-        }
-        let nilp = jordan_block_matrix(e, &e.zero(), &sizes);
-        let trimmed =
-            StateSpace::new_strictly_proper(nilp, bk.select_rows(&keep), ck.select_cols(&keep))?;
-        let min = minimal_kalman(&trimmed)?.system;
-        let r = min.nstates();
-        if r == 0 {
-            continue;
-        }
-        let ch = jordan_chains(&min.a, r)?;
-        comps.push(Compact {
-            comp: ci,
-            a: jordan_block_matrix(e, &theta, &ch.blocks),
-            blocks: ch.blocks,
-            b: &ch.w * &min.b,
-            c: &min.c * &ch.v,
-        });
-    }
-    // exact verification through traces over K
-    let r: usize = comps
-        .iter()
-        .map(|c| c.a.nrows() * jf.components[c.comp].factor.deg())
-        .sum();
-    let kmax = n + r;
+    let core = super::jordan_core::jordan_core(sys)?;
+    let jf: &JordanFormK = &core.jf;
     let k = sys.a.field().clone();
-    let markov = sys.markov(kmax);
-    let (p, m) = (sys.noutputs(), sys.ninputs());
-    let mut sum: Vec<Matrix<QuadraticField>> =
-        (0..kmax).map(|_| Matrix::zeros(k.clone(), p, m)).collect();
-    for c in &comps {
-        add_traces(c, &jf.components[c.comp].factor, &mut sum);
-    }
-    let mcm = mcmillan_degree(sys);
-    let verified = sum == markov && r == mcm;
     // one block per eigenvalue, marked at it
     let mut blocks = vec![];
     let mut symbols = vec![];
     let mut real = k.is_real().then(Vec::new);
     let mut real_symbols = vec![];
-    for c in &comps {
+    for c in &core.comps {
         for (ev, e) in jf.eigenvalues.iter().enumerate() {
             if e.component != c.comp {
                 continue;
@@ -323,18 +196,19 @@ pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanM
     if real.is_some() {
         symbols = real_symbols;
     }
+    let mcm = core.mcmillan_degree;
     let mut out = JordanMinimalK {
-        stages: [n, stage1, r],
+        stages: core.stages,
         blocks,
         real,
         d: sys.d.clone(),
         mcmillan_degree: mcm,
         symbols,
-        verified,
+        verified: core.verified,
     };
     // the real form in one field K: its Markov parameters directly
     if let Some(rs) = out.real_to_base() {
-        out.verified &= rs.markov(kmax) == markov && rs.nstates() == mcm;
+        out.verified &= rs.markov(core.markov.len()) == core.markov && rs.nstates() == mcm;
     }
     Ok(out)
 }
@@ -343,31 +217,7 @@ pub fn minimal_jordan_over_k(sys: &StateSpace<QuadraticField>) -> Result<JordanM
 /// [`RealModalBlockK::Pair`]; the split of [`super::minimal_jordan`]).
 fn expand_pair(blk: &ModalBlockK, pf: &PairField) -> RealModalBlockK {
     let f = &pf.field;
-    let s = blk.a.nrows();
-    let (m, p) = (blk.b.ncols(), blk.c.nrows());
-    let two = f.from_i64(2);
-    let mut a = Matrix::zeros(f.clone(), 2 * s, 2 * s);
-    let mut b = Matrix::zeros(f.clone(), 2 * s, m);
-    let mut c = Matrix::zeros(f.clone(), p, 2 * s);
-    for i in 0..s {
-        for j in 0..s {
-            let (x, y) = pf.re_im(blk.a.get(i, j));
-            a.set(2 * i, 2 * j, x.clone());
-            a.set(2 * i, 2 * j + 1, y.clone());
-            a.set(2 * i + 1, 2 * j, f.neg(&y));
-            a.set(2 * i + 1, 2 * j + 1, x);
-        }
-        for col in 0..m {
-            let (x, y) = pf.re_im(blk.b.get(i, col));
-            b.set(2 * i, col, x);
-            b.set(2 * i + 1, col, f.neg(&y));
-        }
-        for row in 0..p {
-            let (x, y) = pf.re_im(blk.c.get(row, i));
-            c.set(row, 2 * i, f.mul(&two, &x));
-            c.set(row, 2 * i + 1, f.mul(&two, &y));
-        }
-    }
+    let [a, b, c] = real_pair_block(f, [&blk.a, &blk.b, &blk.c], |x| pf.re_im(x));
     RealModalBlockK::Pair {
         eigenvalue: blk.eigenvalue.clone(),
         field: f.clone(),
@@ -403,31 +253,7 @@ fn radical_to_base(
         let im = k.mul(&k.mul(&k.from_rational(&s), &c1), &unit);
         (re, im)
     };
-    let sz = b.a.nrows();
-    let (m, p) = (b.b.ncols(), b.c.nrows());
-    let two = k.from_i64(2);
-    let mut a = Matrix::zeros(k.clone(), 2 * sz, 2 * sz);
-    let mut bb = Matrix::zeros(k.clone(), 2 * sz, m);
-    let mut c = Matrix::zeros(k.clone(), p, 2 * sz);
-    for i in 0..sz {
-        for j in 0..sz {
-            let (x, y) = parts(b.a.get(i, j));
-            a.set(2 * i, 2 * j, x.clone());
-            a.set(2 * i, 2 * j + 1, y.clone());
-            a.set(2 * i + 1, 2 * j, k.neg(&y));
-            a.set(2 * i + 1, 2 * j + 1, x);
-        }
-        for col in 0..m {
-            let (x, y) = parts(b.b.get(i, col));
-            bb.set(2 * i, col, x);
-            bb.set(2 * i + 1, col, k.neg(&y));
-        }
-        for row in 0..p {
-            let (x, y) = parts(b.c.get(row, i));
-            c.set(row, 2 * i, k.mul(&two, &x));
-            c.set(row, 2 * i + 1, k.mul(&two, &y));
-        }
-    }
+    let [a, bb, c] = real_pair_block(k, [&b.a, &b.b, &b.c], parts);
     Some((a, bb, c))
 }
 

@@ -29,6 +29,7 @@ mod descriptor_minimal;
 mod from_transfer;
 mod gramian;
 mod ho_kalman;
+mod jordan_core;
 mod jordan_method;
 mod jordan_method_k;
 mod kalman;

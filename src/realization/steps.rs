@@ -20,7 +20,7 @@
 //! check of [`super::minimal_jordan`].
 
 use super::controllability::{controllability_matrix, mcmillan_degree, observability_matrix};
-use super::jordan_method::{drop_modes, rational_times, times_rational};
+use super::jordan_core::{base_times as rational_times, drop_modes, times_base as times_rational};
 use super::kalman::kalman_decomposition;
 use super::minimal::minimal_kalman;
 use crate::algebraic::NumberField;

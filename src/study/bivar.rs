@@ -53,7 +53,7 @@ impl BiPoly {
     pub fn at_nf(&self, k: &NumberField) -> Poly<NumberField> {
         Poly::new(
             k.clone(),
-            self.coeffs.iter().map(|c| k.elem_from_poly(c)).collect(),
+            self.coeffs.iter().map(|c| k.from_poly(c)).collect(),
         )
     }
     /// The leading coefficient $p_n(v)$.

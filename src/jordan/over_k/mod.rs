@@ -35,99 +35,33 @@
 //! $K(\operatorname{Re}\theta, \operatorname{Im}\theta)$ ([`pair_field`]) when that is
 //! small, else in the compact form; [`response`] gives the free response $e^{At}x_0$.
 
-mod coeffs;
 pub mod eigen;
 pub mod pair_field;
 pub mod real;
-pub mod relfield;
 pub mod response;
-mod simple;
 
 pub use real::RealFormK;
-pub use relfield::{RelElem, RelField};
+/// $E = K\[t\]/(g)$ over a quadratic field $K$: the generic extension.
+pub type RelField = crate::algebraic::Ext<QuadraticField>;
+/// An element of a [`RelField`].
+pub type RelElem = crate::algebraic::ExtElem<crate::field::Quadratic>;
 
-use super::Eigenvalue;
-use super::chains::{Chains, jordan_block_matrix, jordan_chains};
 use crate::error::Result;
 use crate::field::QuadraticField;
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 
-/// The data of one irreducible factor $g$ of $\chi_A$ over $K$, in $E = K\[t\]/(g)$.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ComponentK {
-    /// The monic irreducible factor $g \in K\[x\]$.
-    pub factor: Poly<QuadraticField>,
-    /// The minimal polynomial over $\mathbb{Q}$ of its roots ($g$ or $g\bar g$).
-    pub minpoly: Poly<crate::field::Q>,
-    /// Multiplicity of $g$ in $\chi_A$.
-    pub multiplicity: usize,
-    /// $E = K\[t\]/(g)$ marked at `roots[0]`.
-    pub field: RelField,
-    /// Approximations of the roots of $g$ (the eigenvalues of this factor).
-    pub roots: Vec<(f64, f64)>,
-    /// Jordan block sizes of each root, largest first.
-    pub blocks: Vec<usize>,
-    /// $\dim \ker (A - tI)^k$ over $E$.
-    pub kernel_dims: Vec<usize>,
-    /// Right chains $V$ ($n \times m$): $A V = V J_t$.
-    pub chains: Matrix<RelField>,
-    /// Left chains $W$ ($m \times n$): $W A = J_t W$, $W V = I$.
-    pub left_chains: Matrix<RelField>,
-}
+/// The data of one irreducible factor $g$ of $\chi_A$ over $K$, in $E = K\[t\]/(g)$: the
+/// generic [`crate::jordan::primary::Component`].
+pub type ComponentK = crate::jordan::primary::Component<QuadraticField>;
 
-impl ComponentK {
-    /// The generic root $t \in E$.
-    pub fn root_elem(&self) -> RelElem {
-        self.field.generator()
-    }
-    /// $J_t$ over $E$.
-    pub fn jordan_matrix(&self) -> Matrix<RelField> {
-        jordan_block_matrix(&self.field, &self.root_elem(), &self.blocks)
-    }
-    /// Exact check in $E$ of $A V = V J_t$, $W A = J_t W$, $W V = I$.
-    pub fn verify(&self, a: &Matrix<QuadraticField>) -> bool {
-        let (v, w) = (&self.chains, &self.left_chains);
-        if v.nrows() != a.nrows() || v.ncols() != self.multiplicity {
-            return false;
-        }
-        if self.multiplicity == 1 && self.blocks == [1] {
-            return coeffs::verify_simple(&self.field, v, w, a);
-        }
-        let ak = lift(a, &self.field);
-        let j = self.jordan_matrix();
-        &ak * v == v * &j && w * &ak == &j * w && (w * v).is_identity()
-    }
-}
-
-/// `a` with entries in $E \supset K$.
-pub(crate) fn lift(a: &Matrix<QuadraticField>, e: &RelField) -> Matrix<RelField> {
-    a.map(e, |x| e.from_base(x))
-}
-
-/// The exact Jordan decomposition of a matrix over $K$.
-#[derive(Clone, Debug, PartialEq)]
-pub struct JordanFormK {
-    /// The input matrix.
-    pub a: Matrix<QuadraticField>,
-    /// $\chi_A \in K\[x\]$.
-    pub charpoly: Poly<QuadraticField>,
-    /// One component per irreducible factor of $\chi_A$ over $K$.
-    pub components: Vec<ComponentK>,
-    /// All eigenvalues of $A$, component by component.
-    pub eigenvalues: Vec<Eigenvalue>,
-    /// Every component's identities held exactly and the dimensions add up to $n$.
-    pub verified: bool,
-}
+/// The exact Jordan decomposition of a matrix over $K$: the generic
+/// [`crate::jordan::JordanForm`].
+pub type JordanFormK = crate::jordan::JordanForm<QuadraticField>;
 
 /// One irreducible factor $g$ over $K$, its multiplicity, the minimal polynomial over
 /// $\mathbb{Q}$ of its roots and the certified roots of $g$.
-pub type FactorRoots = (
-    Poly<QuadraticField>,
-    usize,
-    Poly<crate::field::Q>,
-    eigen::CertifiedRoots,
-);
+pub type FactorRoots = crate::jordan::decompose::FactorRoots<QuadraticField>;
 
 /// The eigenvalues of $A$ over $K$ without chains: per irreducible factor $g$ of
 /// $\chi_A$ over $K$ (multiplicity $e$), $g$, $e$, the minimal polynomial over
@@ -140,14 +74,7 @@ pub fn eigenvalues_over_k(
 ) -> Result<(Poly<QuadraticField>, Vec<FactorRoots>)> {
     a.check_square("jordan")?;
     let chi = a.charpoly()?;
-    let mut out = vec![];
-    if chi.deg() == 0 {
-        return Ok((chi, out));
-    }
-    for (g, e) in eigen::factor_over_k(&chi)? {
-        let (m, roots) = eigen::roots_of_factor(&g)?;
-        out.push((g, e, m, roots));
-    }
+    let out = <QuadraticField as crate::jordan::EigenField>::eigen_factors(&chi)?;
     Ok((chi, out))
 }
 
@@ -172,83 +99,10 @@ pub fn eigenvalues_over_k(
 /// assert!(jf.verified);
 /// ```
 pub fn jordan_over_k(a: &Matrix<QuadraticField>) -> Result<JordanFormK> {
-    let n = a.nrows();
-    let (chi, factors) = eigenvalues_over_k(a)?;
-    let mut components = vec![];
-    let mut eigenvalues = vec![];
-    for (g, e, m, roots) in factors {
-        let approx: Vec<(f64, f64)> = roots.iter().map(|z| z.1).collect();
-        let field = RelField::new(&g, approx[0], "t");
-        let t = field.generator();
-        let Chains {
-            blocks,
-            kernel_dims,
-            v,
-            w,
-        } = if e == 1 && g.deg() >= 2 {
-            // a simple eigenvalue: Krylov vectors, no elimination in E
-            let (v, w) = simple::simple_chains(a, &chi, &field)?;
-            Chains {
-                blocks: vec![1],
-                kernel_dims: vec![1],
-                v,
-                w,
-            }
-        } else {
-            let nm = lift(a, &field).try_sub(&Matrix::identity(field.clone(), n).scale(&t))?;
-            jordan_chains(&nm, e)?
-        };
-        let ci = components.len();
-        for (j, (number, z)) in roots.into_iter().enumerate() {
-            let k = eigenvalues.len() + 1;
-            eigenvalues.push(Eigenvalue {
-                minpoly: m.clone(),
-                value: super::roots::value_string(&m, z),
-                approx: z,
-                number,
-                component: ci,
-                root: j,
-                symbol: format!("r{k}"),
-                algebraic_multiplicity: e,
-                geometric_multiplicity: blocks.len(),
-                blocks: blocks.clone(),
-            });
-        }
-        components.push(ComponentK {
-            factor: g,
-            minpoly: m,
-            multiplicity: e,
-            field,
-            roots: approx,
-            blocks,
-            kernel_dims,
-            chains: v,
-            left_chains: w,
-        });
-    }
-    let dim: usize = components
-        .iter()
-        .map(|c| c.factor.deg() * c.multiplicity)
-        .sum();
-    let verified = dim == n && components.iter().all(|c| c.verify(a));
-    Ok(JordanFormK {
-        a: a.clone(),
-        charpoly: chi,
-        components,
-        eigenvalues,
-        verified,
-    })
+    crate::jordan::jordan_over(a)
 }
 
 impl JordanFormK {
-    /// Size of $A$.
-    pub fn n(&self) -> usize {
-        self.a.nrows()
-    }
-    /// The base field $K$.
-    pub fn base(&self) -> &QuadraticField {
-        self.a.field()
-    }
     /// $E$ of eigenvalue `ev`'s component marked at that eigenvalue (display symbol
     /// `r<k>`, or the radical for a rational quadratic factor).
     pub fn root_field(&self, ev: usize) -> RelField {

@@ -3,36 +3,87 @@
 //! Presentation only: these `report` methods read finished results of [`crate::jordan`] and
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
+use crate::algebraic::Ext;
 use crate::field::Field;
 use crate::jordan::{FreeResponse, JordanForm, RealJordanForm};
+use crate::matrix::Matrix;
 use crate::report::{MatrixOut, Report, Value};
+
+/// $J$ and $T$ for output from the columns of each eigenvalue, $(E, \sigma_j(V),
+/// \sigma_j(J))$ exact in its field $E = F(\theta_j)$: one writer for every base field.
+pub(super) fn j_t_cells<F: Field>(
+    n: usize,
+    cols: impl IntoIterator<Item = (Ext<F>, Matrix<Ext<F>>, Matrix<Ext<F>>)>,
+) -> (MatrixOut, MatrixOut) {
+    let zero_s = || vec![vec!["0".to_string(); n]; n];
+    let zero_a = || vec![vec![(0.0, 0.0); n]; n];
+    let (mut je, mut ja, mut te, mut ta) = (zero_s(), zero_a(), zero_s(), zero_a());
+    let mut off = 0;
+    for (k, v, j) in cols {
+        let m = v.ncols();
+        for r in 0..n {
+            for q in 0..m {
+                te[r][off + q] = k.fmt_elem(v.get(r, q));
+                ta[r][off + q] = k.approx(v.get(r, q));
+            }
+        }
+        for r in 0..m {
+            for q in 0..m {
+                je[off + r][off + q] = k.fmt_elem(j.get(r, q));
+                ja[off + r][off + q] = k.approx(j.get(r, q));
+            }
+        }
+        off += m;
+    }
+    (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
+}
+
+/// `J` and `T` as report values: one exact matrix each when every eigenvalue lies in one
+/// field (`single`), else the per-eigenvalue writer `per_root`.
+pub(super) fn j_t_values<K: Field>(
+    single: Option<(Matrix<K>, Matrix<K>)>,
+    per_root: impl FnOnce() -> (MatrixOut, MatrixOut),
+) -> (Value, Value) {
+    let (jo, to) = match single {
+        Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
+        None => per_root(),
+    };
+    (Value::Matrix(Box::new(jo)), Value::Matrix(Box::new(to)))
+}
+
+/// The tail shared by the real Jordan reports over every field: `presentation` and `symbols`
+/// for the compact form (`presentation` the field's wording), then `fields`, `parts` and
+/// `notes` (each when not empty).
+pub(super) fn real_form_tail(
+    mut r: Report,
+    compact: Option<&str>,
+    symbols: &[String],
+    fields: Vec<Value>,
+    [parts, notes]: [&[String]; 2],
+) -> Report {
+    let strs = |xs: &[String]| xs.iter().cloned().map(Value::Str).collect::<Vec<_>>();
+    if let Some(presentation) = compact {
+        r = r
+            .str("presentation", presentation)
+            .list("symbols", strs(symbols));
+    }
+    if !fields.is_empty() {
+        r = r.list("fields", fields);
+    }
+    if !parts.is_empty() {
+        r = r.list("parts", strs(parts));
+    }
+    if !notes.is_empty() {
+        r = r.list("notes", strs(notes));
+    }
+    r
+}
 
 impl JordanForm {
     /// $J$ and $T$ for output: exact strings (per-root fields) and approximations.
     pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
-        let n = self.n();
-        let zero_s = || vec![vec!["0".to_string(); n]; n];
-        let zero_a = || vec![vec![(0.0, 0.0); n]; n];
-        let (mut je, mut ja, mut te, mut ta) = (zero_s(), zero_a(), zero_s(), zero_a());
-        let mut off = 0;
-        for c in self.root_columns() {
-            let k = &c.field;
-            let m = c.v.ncols();
-            for r in 0..n {
-                for q in 0..m {
-                    te[r][off + q] = k.fmt_elem(c.v.get(r, q));
-                    ta[r][off + q] = k.approx(c.v.get(r, q));
-                }
-            }
-            for r in 0..m {
-                for q in 0..m {
-                    je[off + r][off + q] = k.fmt_elem(c.j.get(r, q));
-                    ja[off + r][off + q] = k.approx(c.j.get(r, q));
-                }
-            }
-            off += m;
-        }
-        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
+        let cols = self.root_columns().into_iter().map(|c| (c.field, c.v, c.j));
+        j_t_cells(self.n(), cols)
     }
     /// The report with the CLI contract's keys: `eigenvalues[]` (`minpoly`, `value`,
     /// `approx`, `algebraic_multiplicity`, `geometric_multiplicity`, `blocks`), `J`, `T`
@@ -59,16 +110,13 @@ impl JordanForm {
                 ))
             })
             .collect();
-        let (jo, to) = match single {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
+        let (jo, to) = j_t_values(single, || self.j_t_out());
         let mut r = Report::titled("Jordan form")
             .int("n", self.n())
             .str("charpoly", self.charpoly.to_string())
             .list("eigenvalues", evs)
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
+            .with("J", jo)
+            .with("T", to)
             .str("presentation", presentation);
         if !symbols.is_empty() {
             r = r.list("symbols", symbols);
@@ -119,10 +167,7 @@ impl RealJordanForm {
     /// Report: `J`, `T` (exact strings and `_approx`), `exact`, `verified`, `fields`,
     /// `parts`, `notes`.
     pub fn report(&self) -> Report {
-        let (jo, to) = match self.single_field() {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
+        let (jo, to) = j_t_values(self.single_field(), || self.j_t_out());
         let fields: Vec<Value> = self
             .blocks
             .iter()
@@ -137,40 +182,22 @@ impl RealJordanForm {
             })
             .collect();
         let compact = self.blocks.iter().any(|b| b.compact.is_some());
-        let mut r = Report::titled("Real Jordan form")
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
+        let r = Report::titled("Real Jordan form")
+            .with("J", jo)
+            .with("T", to)
             .bool("exact", self.exact)
             .bool("verified", self.verified);
-        if compact {
-            r = r.str(
-                "presentation",
-                "compact: each complex pair r<k> = a<k> + b<k>*i has the block [[a, b], [-b, a]] \
-                 and the columns Re v, Im v of its complex chains v in QQ(r<k>) (T_R = T_C S); \
-                 verified on the complex side (A T_C = T_C J_C in QQ(r<k>), which implies \
-                 A T_R = T_R J_R); `--expand` writes the entries in a real field",
-            );
-            r = r.list(
-                "symbols",
-                self.symbols.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        if !fields.is_empty() {
-            r = r.list("fields", fields);
-        }
-        if !self.parts.is_empty() {
-            r = r.list(
-                "parts",
-                self.parts.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        if !self.notes.is_empty() {
-            r = r.list(
-                "notes",
-                self.notes.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        r
+        let presentation = "compact: each complex pair r<k> = a<k> + b<k>*i has the block \
+             [[a, b], [-b, a]] and the columns Re v, Im v of its complex chains v in QQ(r<k>) \
+             (T_R = T_C S); verified on the complex side (A T_C = T_C J_C in QQ(r<k>), which \
+             implies A T_R = T_R J_R); `--expand` writes the entries in a real field";
+        real_form_tail(
+            r,
+            compact.then_some(presentation),
+            &self.symbols,
+            fields,
+            [&self.parts, &self.notes],
+        )
     }
 }
 

@@ -3,37 +3,18 @@
 //! `field`, `charpoly`, `presentation`, `symbols`).
 
 use super::eigenvalue_items;
+use crate::algebraic::{Ext, ExtElem};
 use crate::field::Field;
 use crate::jordan::fmt_approx;
 use crate::jordan::over_k::{JordanFormK, RelElem, RelField};
+use crate::matrix::Matrix;
 use crate::realization::{ModalBlockK, RealModalBlockK};
 use crate::report::{MatrixOut, Report, Value};
 
 impl JordanFormK {
     /// $J$ and $T$ for output: per eigenvalue, entries exact in its field $E$ at that root.
     pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
-        let n = self.n();
-        let zero_s = || vec![vec!["0".to_string(); n]; n];
-        let zero_a = || vec![vec![(0.0, 0.0); n]; n];
-        let (mut je, mut ja, mut te, mut ta) = (zero_s(), zero_a(), zero_s(), zero_a());
-        let mut off = 0;
-        for (f, v, j) in self.root_columns() {
-            let m = v.ncols();
-            for r in 0..n {
-                for q in 0..m {
-                    te[r][off + q] = f.fmt_elem(v.get(r, q));
-                    ta[r][off + q] = f.approx(v.get(r, q));
-                }
-            }
-            for r in 0..m {
-                for q in 0..m {
-                    je[off + r][off + q] = f.fmt_elem(j.get(r, q));
-                    ja[off + r][off + q] = f.approx(j.get(r, q));
-                }
-            }
-            off += m;
-        }
-        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
+        super::jordan::j_t_cells(self.n(), self.root_columns())
     }
     /// The report with the CLI contract's keys (those of the rational Jordan report).
     pub fn report(&self) -> Report {
@@ -67,17 +48,14 @@ impl JordanFormK {
                 ))
             })
             .collect();
-        let (jo, to) = match single {
-            Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-            None => self.j_t_out(),
-        };
+        let (jo, to) = super::jordan::j_t_values(single, || self.j_t_out());
         let mut r = Report::titled("Jordan form")
             .int("n", self.n())
             .str("field", k.to_string())
             .str("charpoly", self.charpoly.to_string())
             .list("eigenvalues", eigenvalue_items(&self.eigenvalues))
-            .with("J", Value::Matrix(Box::new(jo)))
-            .with("T", Value::Matrix(Box::new(to)))
+            .with("J", jo)
+            .with("T", to)
             .str("presentation", presentation);
         if !symbols.is_empty() {
             r = r.list("symbols", symbols);
@@ -125,63 +103,58 @@ impl crate::jordan::over_k::RealFormK {
         };
         let jo = MatrixOut::from_parts(self.j.clone(), cx(&self.j_approx));
         let to = MatrixOut::from_parts(self.t.clone(), cx(&self.t_approx));
-        let mut r = Report::titled("Real Jordan form")
+        let r = Report::titled("Real Jordan form")
             .with("J", Value::Matrix(Box::new(jo)))
             .with("T", Value::Matrix(Box::new(to)))
             .bool("exact", true)
             .bool("verified", self.verified);
-        if self.compact {
-            r = r
-                .str(
-                    "presentation",
-                    "compact: each complex pair r<k> = a<k> + b<k>*i has the block [[a, b], \
-                     [-b, a]] and the columns Re v, Im v of its complex chains v (exact in \
-                     K(r<k>)); verified on the complex side (A V = V J in K(r<k>), which \
-                     implies A T = T J); `--expand` writes the entries in a real field",
-                )
-                .list(
-                    "symbols",
-                    self.symbols.iter().cloned().map(Value::Str).collect(),
-                );
-        }
-        if !self.fields.is_empty() {
-            r = r.list(
-                "fields",
-                self.fields.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        if !self.notes.is_empty() {
-            r = r.list(
-                "notes",
-                self.notes.iter().cloned().map(Value::Str).collect(),
-            );
-        }
-        r
+        let presentation = "compact: each complex pair r<k> = a<k> + b<k>*i has the block \
+             [[a, b], [-b, a]] and the columns Re v, Im v of its complex chains v (exact in \
+             K(r<k>)); verified on the complex side (A V = V J in K(r<k>), which implies \
+             A T = T J); `--expand` writes the entries in a real field";
+        let fields = self.fields.iter().cloned().map(Value::Str).collect();
+        super::jordan::real_form_tail(
+            r,
+            self.compact.then_some(presentation),
+            &self.symbols,
+            fields,
+            [&[], &self.notes],
+        )
     }
 }
 
 /// Exact texts and approximations of a matrix under construction.
 type Cells = (Vec<Vec<String>>, Vec<Vec<(f64, f64)>>);
 
-/// Writes a modal block over $E$ at `off` into the cells of `A`, `B`, `C`.
-fn put_block(blk: &ModalBlockK, off: usize, [a, b, c]: [&mut Cells; 3]) {
-    let f = &blk.field;
-    let put = |o: &mut Cells, i: usize, j: usize, x: &RelElem| {
+/// Writes a block $(A, B, C)$ over an extension $E = F\[t\]/(g)$ (any base field) at
+/// `off` into the cells of `A`, `B`, `C`: block-diagonal `A`, stacked `B`, `C`.
+fn put_block<F: Field>(
+    f: &Ext<F>,
+    [ba, bb, bc]: [&Matrix<Ext<F>>; 3],
+    off: usize,
+    [a, b, c]: [&mut Cells; 3],
+) {
+    let put = |o: &mut Cells, i: usize, j: usize, x: &ExtElem<F::Elem>| {
         o.0[i][j] = f.fmt_elem(x);
         o.1[i][j] = f.approx(x);
     };
-    let s = blk.a.nrows();
+    let s = ba.nrows();
     for i in 0..s {
         for j in 0..s {
-            put(a, off + i, off + j, blk.a.get(i, j));
+            put(a, off + i, off + j, ba.get(i, j));
         }
-        for j in 0..blk.b.ncols() {
-            put(b, off + i, j, blk.b.get(i, j));
+        for j in 0..bb.ncols() {
+            put(b, off + i, j, bb.get(i, j));
         }
-        for row in 0..blk.c.nrows() {
-            put(c, row, off + i, blk.c.get(row, i));
+        for row in 0..bc.nrows() {
+            put(c, row, off + i, bc.get(row, i));
         }
     }
+}
+
+/// [`put_block`] of a complex modal block.
+fn put_modal(blk: &ModalBlockK, off: usize, cells: [&mut Cells; 3]) {
+    put_block(&blk.field, [&blk.a, &blk.b, &blk.c], off, cells);
 }
 
 /// `Re(x)` / `Im(x)` display and value of an element of $E$ at $\theta$ (plain when it
@@ -278,25 +251,9 @@ impl crate::realization::JordanMinimalK {
                 let s = blk.order();
                 let cells = [&mut a, &mut b, &mut c];
                 match blk {
-                    RealModalBlockK::Root(bk) => put_block(bk, off, cells),
+                    RealModalBlockK::Root(bk) => put_modal(bk, off, cells),
                     RealModalBlockK::Pair { field, a, b, c, .. } => {
-                        let [ca, cb, cc] = cells;
-                        let put =
-                            |o: &mut Cells, i: usize, j: usize, x: &crate::algebraic::NfElem| {
-                                o.0[i][j] = field.fmt_elem(x);
-                                o.1[i][j] = field.approx(x);
-                            };
-                        for i in 0..s {
-                            for j in 0..s {
-                                put(ca, off + i, off + j, a.get(i, j));
-                            }
-                            for j in 0..m {
-                                put(cb, off + i, j, b.get(i, j));
-                            }
-                            for row in 0..p {
-                                put(cc, row, off + i, c.get(row, i));
-                            }
-                        }
+                        put_block(field, [a, b, c], off, cells)
                     }
                     RealModalBlockK::Compact(bk) | RealModalBlockK::Radical(bk) => {
                         put_compact(bk, off, cells)
@@ -306,24 +263,8 @@ impl crate::realization::JordanMinimalK {
             }
         }
         for blk in self.blocks.iter().filter(|_| self.real.is_none()) {
-            let f = &blk.field;
-            let put = |o: &mut Cells, i: usize, j: usize, x: &crate::jordan::over_k::RelElem| {
-                o.0[i][j] = f.fmt_elem(x);
-                o.1[i][j] = f.approx(x);
-            };
-            let s = blk.a.nrows();
-            for i in 0..s {
-                for j in 0..s {
-                    put(&mut a, off + i, off + j, blk.a.get(i, j));
-                }
-                for j in 0..m {
-                    put(&mut b, off + i, j, blk.b.get(i, j));
-                }
-                for row in 0..p {
-                    put(&mut c, row, off + i, blk.c.get(row, i));
-                }
-            }
-            off += s;
+            put_modal(blk, off, [&mut a, &mut b, &mut c]);
+            off += blk.a.nrows();
         }
         let out = |x: Cells| Value::Matrix(Box::new(MatrixOut::from_parts(x.0, x.1)));
         let compact = self
@@ -369,15 +310,7 @@ impl crate::realization::JordanMinimalK {
                 }),
             )
             .str("presentation", presentation)
-            .with(
-                "symbols",
-                Value::List(
-                    self.symbols
-                        .iter()
-                        .map(|(k, v)| Value::Str(format!("{k} = {v}")))
-                        .collect(),
-                ),
-            )
+            .with("symbols", super::realization::symbol_list(&self.symbols))
             .bool("verified", self.verified)
     }
 }

@@ -79,6 +79,16 @@ fn compact_outputs(
     }
 }
 
+/// The symbols of a Jordan-method realization, `name = definition` each.
+pub(super) fn symbol_list(symbols: &[(String, String)]) -> Value {
+    Value::List(
+        symbols
+            .iter()
+            .map(|(k, v)| Value::Str(format!("{k} = {v}")))
+            .collect(),
+    )
+}
+
 impl JordanMinimal {
     /// Assembles block-diagonal `A` and stacked `B`, `C` for output (entries exact in each
     /// block's field, symbols defined in `symbols`).
@@ -143,15 +153,7 @@ impl JordanMinimal {
                 "modes",
                 str_list(self.blocks.iter().map(|b| b.eigenvalue.clone())),
             )
-            .with(
-                "symbols",
-                Value::List(
-                    self.symbols
-                        .iter()
-                        .map(|(k, v)| Value::Str(format!("{k} = {v}")))
-                        .collect(),
-                ),
-            )
+            .with("symbols", symbol_list(&self.symbols))
             .bool("verified", self.verified)
     }
 }

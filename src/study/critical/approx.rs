@@ -9,7 +9,7 @@ use num_complex::Complex;
 
 /// $e(v_0)$ in `f64`, evaluated exactly at the rational `vq` near $v_0$.
 pub(super) fn approx_elem(k: &NumberField, e: &NfElem, vq: &Rational) -> f64 {
-    rational_to_f64(&k.elem_to_poly(e).eval(vq))
+    rational_to_f64(&k.to_poly(e).eval(vq))
 }
 
 /// Roots of $\sum_i c_i x^i$ (`c` low degree first, leading `c` nonzero) as the

@@ -138,8 +138,8 @@ pub(super) fn double_blocks_mod_p(kn: &Known<'_>, f: &Poly<Q>) -> Result<Option<
 
 /// Jordan blocks of the double eigenvalue over $\mathbb{Q}(v_0)$ exactly (slow path).
 pub(super) fn double_blocks_exact(kn: &Known<'_>, k: &NumberField) -> Result<Vec<usize>> {
-    let s11 = k.elem_from_poly(&kn.s1.0);
-    let s10 = k.elem_from_poly(&kn.s1.1);
+    let s11 = k.from_poly(&kn.s1.0);
+    let s10 = k.from_poly(&kn.s1.1);
     let a = kn.fam.state_matrix_nf(k)?;
     let n = a.nrows();
     let mut shifted = a.scale(&s11);

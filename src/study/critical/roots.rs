@@ -51,7 +51,7 @@ fn real_roots_of_irreducible(f: &Poly<Q>) -> Vec<AlgebraicNumber> {
 /// Sign of the element `e` of $\mathbb{Q}(r) = \mathbb{Q}[t]/(f)$ at the real root `r`
 /// (`e` nonzero), by interval Horner on refined isolating intervals.
 pub fn sign_at_root(k: &NumberField, e: &NfElem, r: &AlgebraicNumber) -> Result<Ordering> {
-    let p = k.elem_to_poly(e);
+    let p = k.to_poly(e);
     if p.is_zero() {
         return Ok(Ordering::Equal);
     }

@@ -44,7 +44,7 @@ pub(super) fn structure_at(
         sort_eigs(&mut out);
         return Ok((out, false));
     }
-    let s11 = k.elem_from_poly(&kn.s1.0);
+    let s11 = k.from_poly(&kn.s1.0);
     if k.is_zero(&s11) {
         let pk = kn.p.at_nf(k);
         let out = structure_general(kn.fam, k, &pk, &vq)?;

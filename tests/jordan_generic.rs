@@ -1,0 +1,141 @@
+//! One generic test of the Jordan decomposition (issue 23 item 2): the same planted inputs,
+//! built by one generic generator, decomposed by the one code path `jordan_over` over
+//! Q, Q(sqrt 2) and Q(i). Asserted: the exact identities A V = V J_t, W A = J_t W, W V = I
+//! in each component field (recomputed here, not only the flag), the dimensions, the
+//! planted block sizes of every planted eigenvalue, the eigenvalues as roots of the
+//! characteristic polynomial, and the free response identities.
+
+use crate::common::{self, Rng};
+use exactlti::field::Field;
+use exactlti::jordan::{EigenField, jordan_over};
+use exactlti::matrix::Matrix;
+
+/// `A = P J P^-1` over `k`: Jordan blocks of eigenvalues `c + s g` (`c` in -2..=2, `s` in
+/// {0, 1} when a generator `g` is given) and, on some seeds, a block pair of the companion
+/// matrix of x^2 + 3 (irreducible over all three fields) with a chain of length 2. Returns
+/// `A` and the planted linear blocks `(eigenvalue, size)`.
+fn planted<F: Field>(
+    k: &F,
+    g: &Option<F::Elem>,
+    rng: &mut Rng,
+) -> (Matrix<F>, Vec<(F::Elem, usize)>) {
+    let mut blocks = vec![];
+    let mut size = 0;
+    let n_lin = rng.int(2, 5) as usize;
+    while size < n_lin {
+        let m = [1, 1, 2, 3][rng.int(0, 3) as usize].min(n_lin - size);
+        let mut lam = k.from_i64(rng.int(-2, 2));
+        if let Some(g) = g
+            && rng.int(0, 1) == 1
+        {
+            lam = k.add(&lam, g);
+        }
+        blocks.push((lam, m));
+        size += m;
+    }
+    let pair = rng.int(0, 1) == 1;
+    let n = size + if pair { 4 } else { 0 };
+    let mut j = Matrix::zeros(k.clone(), n, n);
+    let mut off = 0;
+    for (lam, m) in &blocks {
+        for i in 0..*m {
+            j.set(off + i, off + i, lam.clone());
+            if i + 1 < *m {
+                j.set(off + i, off + i + 1, k.one());
+            }
+        }
+        off += m;
+    }
+    if pair {
+        // [[C, I], [0, C]] with C the companion matrix of x^2 + 3
+        for b in [0, 2] {
+            j.set(off + b, off + b + 1, k.one());
+            j.set(off + b + 1, off + b, k.from_i64(-3));
+        }
+        j.set(off, off + 2, k.one());
+        j.set(off + 1, off + 3, k.one());
+    }
+    let p = common::unimodular(k, n, rng);
+    let pi = p.inverse().expect("unimodular");
+    (&(&p * &j) * &pi, blocks)
+}
+
+/// Every assertion of the module docs for one matrix.
+fn check<F: EigenField>(a: &Matrix<F>, planted: &[(F::Elem, usize)]) {
+    let k = a.field();
+    let n = a.nrows();
+    let jf = jordan_over(a).unwrap();
+    assert!(jf.verified, "not verified");
+    let dim: usize = jf
+        .components
+        .iter()
+        .map(|c| c.degree() * c.multiplicity)
+        .sum();
+    assert_eq!(dim, n);
+    assert_eq!(
+        jf.eigenvalues.len(),
+        jf.components.iter().map(|c| c.degree()).sum::<usize>()
+    );
+    for c in &jf.components {
+        assert!(c.verify(a));
+        let (v, w, jt) = (&c.chains, &c.left_chains, c.jordan_matrix());
+        let ae = c.lift(a);
+        assert_eq!(&ae * v, v * &jt, "A V = V J over {}", c.field);
+        assert_eq!(w * &ae, &jt * w, "W A = J W over {}", c.field);
+        assert!((w * v).is_identity(), "W V = I over {}", c.field);
+        assert_eq!(c.blocks.iter().sum::<usize>(), c.multiplicity);
+        // the factor divides the characteristic polynomial to its multiplicity
+        let mut q = jf.charpoly.clone();
+        for _ in 0..c.multiplicity {
+            q = q.div_exact(&c.factor).expect("the factor divides chi");
+        }
+    }
+    // planted blocks: for each planted eigenvalue, its linear component has those sizes
+    let mut lams: Vec<F::Elem> = vec![];
+    for (lam, _) in planted {
+        if !lams.contains(lam) {
+            lams.push(lam.clone());
+        }
+    }
+    for lam in &lams {
+        let mut want: Vec<usize> = planted
+            .iter()
+            .filter(|(l, _)| l == lam)
+            .map(|(_, m)| *m)
+            .collect();
+        want.sort_unstable_by(|x, y| y.cmp(x));
+        let c = jf
+            .components
+            .iter()
+            .find(|c| c.degree() == 1 && k.neg(&c.factor.coeff(0)) == *lam)
+            .unwrap_or_else(|| panic!("no component for {}", k.fmt_elem(lam)));
+        assert_eq!(c.blocks, want, "blocks of {}", k.fmt_elem(lam));
+    }
+    // the eigenvalues' certified numbers are roots of their minimal polynomials, which
+    // divide the norm of chi: checked through the factor of each component
+    for e in &jf.eigenvalues {
+        let c = &jf.components[e.component];
+        assert_eq!(e.algebraic_multiplicity, c.multiplicity);
+        assert_eq!(e.blocks, c.blocks);
+        assert!(e.minpoly.deg() >= c.degree());
+    }
+    let fr = jf.free_response();
+    assert!(fr.verify(&jf), "free response");
+}
+
+fn run<F: EigenField>(k: &F, g: &Option<F::Elem>, seed: u64) {
+    let mut rng = Rng(seed);
+    for _ in 0..common::iters(6) {
+        let (a, blocks) = planted(k, g, &mut rng);
+        check(&a, &blocks);
+    }
+}
+
+#[test]
+fn jordan_over_q_qsqrt2_qi_from_one_generic_test() {
+    run(&common::q(), &None, 23);
+    let (k, g) = common::qsqrt2();
+    run(&k, &g, 24);
+    let (k, g) = common::qi();
+    run(&k, &g, 25);
+}
