@@ -24,8 +24,11 @@
 //! minors of $A$ that the generic elimination divides by. The entries $N_{kf}/\Delta$ are
 //! brought to lowest terms (the only gcds). A rank or pivot pattern proved by one nonzero
 //! minor at a point (full rank, pivots $0..r-1$) holds where that minor is nonzero: its
-//! factors are recorded ([`minor_cond`]), or the shortcut is given up.
+//! factors are recorded ([`minor_cond`]), or the shortcut is given up. A matrix whose rows
+//! and columns split into independent blocks (a diagonal $A - \lambda I$) is reduced block by
+//! block ([`blocks`]).
 
+pub mod blocks;
 pub mod interp;
 pub mod minor_cond;
 pub mod modp;
