@@ -59,8 +59,7 @@ const TINY: usize = 1;
 /// `Limit` when the grid exceeds [`interp::MAX_GRID_POINTS`].
 pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
     assert_eq!(b.len(), n * n);
-    let rows: Vec<usize> = (0..n).collect();
-    let bounds = Bounds::of_rows(nvars, n, b, &rows);
+    let bounds = Bounds::of_square(nvars, n, b);
     let out = interpolate_zp(nvars, b, &bounds, n + 1, false, |pr, a| {
         Some(charpoly_mod_p(pr, n, a))
     })?;
@@ -73,8 +72,7 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
 /// `Limit` when the grid exceeds [`interp::MAX_GRID_POINTS`].
 pub fn det_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<MPoly> {
     assert_eq!(b.len(), n * n);
-    let rows: Vec<usize> = (0..n).collect();
-    let bounds = Bounds::of_rows(nvars, n, b, &rows);
+    let bounds = Bounds::of_square(nvars, n, b);
     let out = interpolate_zp(nvars, b, &bounds, 1, false, |pr, a| {
         Some(vec![modp::det_mod_p(pr, n, a)])
     })?;
