@@ -66,6 +66,12 @@ pub fn execute_ctx(
     if let Command::Bifurcations { file, of, depth } = cmd {
         return super::bifurcations::run(file, *of, *depth, &opts);
     }
+    if let Command::Interconnect(c) = cmd {
+        return super::interconnect::run(c, &opts);
+    }
+    if let Command::Dcgain { file } = cmd {
+        return super::dcgain::run(file, &opts);
+    }
     match super::symbolic::execute(cmd, &opts)? {
         Some(Handled::Done(out)) => return Ok(out),
         Some(Handled::Valued(l, path)) => {
@@ -87,7 +93,9 @@ pub fn execute_ctx(
         | Command::Ctrb { file }
         | Command::Obsv { file }
         | Command::Tf { file } => super::pencil_cmds::execute(cmd, file),
-        Command::Bifurcations { .. } => unreachable!("dispatched above"),
+        Command::Bifurcations { .. } | Command::Interconnect(_) | Command::Dcgain { .. } => {
+            unreachable!("dispatched above")
+        }
         Command::Poly { op } => poly(op).map(Outcome::plain),
         Command::Sweep {
             file,
@@ -267,7 +275,9 @@ impl SystemVisitor for FileCommand<'_> {
             | Command::Ctrb { .. }
             | Command::Obsv { .. }
             | Command::Tf { .. }
-            | Command::Bifurcations { .. } => {
+            | Command::Bifurcations { .. }
+            | Command::Interconnect(_)
+            | Command::Dcgain { .. } => {
                 unreachable!("dispatched in execute")
             }
         }

@@ -14,12 +14,15 @@ pub mod budget;
 mod commands;
 mod common;
 mod critical;
+mod dcgain;
 mod float_cmds;
 mod float_compare;
+mod interconnect;
 pub mod memory;
 mod pencil_cmds;
 pub mod plots;
 mod progress;
+mod steps;
 mod sweep;
 mod sweep_stream;
 mod symbolic;
@@ -86,6 +89,10 @@ pub struct Cli {
     /// LaTeX are always complete).
     #[arg(long, global = true)]
     pub full: bool,
+    /// `jordan`, `minreal --method kalman|jordan`: the derivation step by step (each step's
+    /// sentence, exact objects, identity and its check; over Q(p) what it assumes).
+    #[arg(long, global = true)]
+    pub steps: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -282,6 +289,16 @@ pub enum Command {
         #[arg(long, default_value_t = budget::DEFAULT_SECTION_SECONDS, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
         section_seconds: f64,
     },
+    /// Exact DC gain G(0) = D - C A^-1 B per channel (`inf` where the channel has a pole at
+    /// s = 0), python-control's `dcgain`.
+    Dcgain {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`), or a file with only D.
+        file: PathBuf,
+    },
+    /// Interconnections: series, parallel, feedback, append (exact, python-control's
+    /// conventions), with `--minreal` and `--out`.
+    #[command(flatten)]
+    Interconnect(interconnect::InterconnectCmd),
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {
@@ -500,6 +517,7 @@ pub fn run(cli: Cli) -> i32 {
     let format = cli.format;
     let standalone = cli.standalone;
     let full = cli.full;
+    let with_steps = cli.steps;
     let limit = cli.max_seconds;
     memory::set_max_memory_mib(cli.max_memory);
     let (tx, rx) = mpsc::channel();
@@ -514,12 +532,12 @@ pub fn run(cli: Cli) -> i32 {
     let handle = std::thread::Builder::new()
         .stack_size(256 << 20)
         .spawn(move || {
-            let r = commands::execute_ctx(
-                &cli.command,
-                cli.symbolic.as_deref(),
-                cli.at.as_deref(),
-                &ctx,
-            );
+            let (sym, at) = (cli.symbolic.as_deref(), cli.at.as_deref());
+            let r = if with_steps {
+                steps::execute(&cli.command, sym, at, format, standalone)
+            } else {
+                commands::execute_ctx(&cli.command, sym, at, &ctx)
+            };
             let _ = tx.send(Event::Finished(Box::new(r)));
         });
     if handle.is_err() {

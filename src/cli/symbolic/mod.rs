@@ -56,6 +56,8 @@ fn name(cmd: &Command) -> &'static str {
         Command::Sweep { .. } => "sweep",
         Command::Critical { .. } => "critical",
         Command::Bifurcations { .. } => "bifurcations",
+        Command::Interconnect(c) => c.name(),
+        Command::Dcgain { .. } => "dcgain",
     }
 }
 
@@ -81,7 +83,10 @@ fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Critical { file, .. }
         | Command::Linalg { file, .. } => Some(file),
         Command::Analyze { file, .. } => file.as_deref(),
-        Command::Poly { .. } | Command::Bifurcations { .. } => None,
+        Command::Poly { .. }
+        | Command::Bifurcations { .. }
+        | Command::Interconnect(_)
+        | Command::Dcgain { .. } => None,
     }
 }
 
