@@ -5,7 +5,7 @@
 //! Cases:
 //! - `dense N charpoly|det|rref`: dense N x N (N = 6, 7, 8), entries linear in a, b, c
 //!   (goal: >= 10x faster than SymPy's DomainMatrix);
-//! - `diag10 tf|minreal|scb|zeros`: A = diag(p0..p9), B = ones, C = ones (goal <= 1 s);
+//! - `diag10 tf|minreal|scb|zeros|jordan`: A = diag(p0..p9), B = ones, C = ones (goal <= 1 s);
 //! - `chain10 tf|minreal`: the 10-mass chain in symbolic m, k, c (goal <= 2 s).
 //!
 //! Output lines: `<label>: <best> ms (median <ms> ms, <reps> reps)`; the dense inputs are
@@ -17,6 +17,7 @@ mod common;
 
 use common::{bench, selected};
 use exactlti::field::Field;
+use exactlti::jordan::params::jordan_params;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization::{MinrealMethod, minimal};
@@ -112,6 +113,7 @@ fn main() {
         ("diag10 minreal", 1),
         ("diag10 scb", 2),
         ("diag10 zeros", 3),
+        ("diag10 jordan", 4),
     ] {
         if !selected(label) {
             continue;
@@ -120,6 +122,7 @@ fn main() {
             0 => s.transfer_matrix().map(|t| t.entries.len()).unwrap(),
             1 => minimal(&s, MinrealMethod::Kalman).unwrap().order,
             2 => scb(&s.a, &s.b, &s.c, &s.d).unwrap().dims[0],
+            4 => jordan_params(&s.a).unwrap().eigenvalues.len(),
             _ => invariant_zeros(&s.a, &s.b, &s.c, &s.d)
                 .unwrap()
                 .polynomial

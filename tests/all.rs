@@ -101,6 +101,8 @@ mod poly_factor;
 mod qp_conditions;
 #[path = "qp_kernels.rs"]
 mod qp_kernels;
+#[path = "qp_scale.rs"]
+mod qp_scale;
 #[path = "realization.rs"]
 mod realization;
 #[path = "realization_planted.rs"]

@@ -67,6 +67,27 @@ impl Bounds {
         }
         Bounds { dv, dtot, coef }
     }
+    /// Bounds for $\det B$ and the coefficients of $\det(xI - B)$, `B` square `n x n`: every
+    /// term takes one entry from each row AND each column, so the row bounds of
+    /// [`Bounds::of_rows`] and the same bounds over the columns (those of $B^T$) both hold;
+    /// the smaller of each is kept (diag-like matrices whose every row holds every parameter
+    /// but each column few of them: a grid $2^9 \cdot 10$ instead of the simplex of degree 9).
+    pub fn of_square(nvars: usize, n: usize, b: &[MPoly]) -> Self {
+        let rows: Vec<usize> = (0..n).collect();
+        let by_rows = Bounds::of_rows(nvars, n, b, &rows);
+        let bt: Vec<MPoly> = (0..n * n).map(|k| b[(k % n) * n + k / n].clone()).collect();
+        let by_cols = Bounds::of_rows(nvars, n, &bt, &rows);
+        Bounds {
+            dv: by_rows
+                .dv
+                .iter()
+                .zip(&by_cols.dv)
+                .map(|(x, y)| *x.min(y))
+                .collect(),
+            dtot: by_rows.dtot.min(by_cols.dtot),
+            coef: by_rows.coef.min(by_cols.coef),
+        }
+    }
 }
 
 /// 1-norm of a polynomial's coefficient vector.

@@ -48,8 +48,7 @@ pub fn record_minor(
         .flat_map(|&i| cols.iter().map(move |&j| b[i * n + j].clone()))
         .collect();
     let den = rows.iter().fold(MPoly::one(nv), |acc, &i| acc.mul(&ds[i]));
-    let all: Vec<usize> = (0..r).collect();
-    let bounds = Bounds::of_rows(nv, r, &c, &all);
+    let bounds = Bounds::of_square(nv, r, &c);
     if grid_points(&bounds) <= DENSE_GRID
         && let Ok(d) = det_zp(nv, r, &c)
     {

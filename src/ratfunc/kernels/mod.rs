@@ -24,8 +24,11 @@
 //! minors of $A$ that the generic elimination divides by. The entries $N_{kf}/\Delta$ are
 //! brought to lowest terms (the only gcds). A rank or pivot pattern proved by one nonzero
 //! minor at a point (full rank, pivots $0..r-1$) holds where that minor is nonzero: its
-//! factors are recorded ([`minor_cond`]), or the shortcut is given up.
+//! factors are recorded ([`minor_cond`]), or the shortcut is given up. A matrix whose rows
+//! and columns split into independent blocks (a diagonal $A - \lambda I$) is reduced block by
+//! block ([`blocks`]).
 
+pub mod blocks;
 pub mod interp;
 pub mod minor_cond;
 pub mod modp;
@@ -56,8 +59,7 @@ const TINY: usize = 1;
 /// `Limit` when the grid exceeds [`interp::MAX_GRID_POINTS`].
 pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
     assert_eq!(b.len(), n * n);
-    let rows: Vec<usize> = (0..n).collect();
-    let bounds = Bounds::of_rows(nvars, n, b, &rows);
+    let bounds = Bounds::of_square(nvars, n, b);
     let out = interpolate_zp(nvars, b, &bounds, n + 1, false, |pr, a| {
         Some(charpoly_mod_p(pr, n, a))
     })?;
@@ -70,8 +72,7 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
 /// `Limit` when the grid exceeds [`interp::MAX_GRID_POINTS`].
 pub fn det_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<MPoly> {
     assert_eq!(b.len(), n * n);
-    let rows: Vec<usize> = (0..n).collect();
-    let bounds = Bounds::of_rows(nvars, n, b, &rows);
+    let bounds = Bounds::of_square(nvars, n, b);
     let out = interpolate_zp(nvars, b, &bounds, 1, false, |pr, a| {
         Some(vec![modp::det_mod_p(pr, n, a)])
     })?;

@@ -1,6 +1,7 @@
 //! The RREF and rank kernels of $\mathbb{Q}(p)$ (see the parent module docs for the method
 //! and its exact check).
 
+use super::blocks::{assemble, split, sub};
 use super::interp::{Bounds, grid_points, interpolate_zp};
 use super::minor_cond::record_minor;
 use super::modp::{eval_mod_p, minors_and_solve_mod_p, profile_mod_p};
@@ -166,6 +167,9 @@ pub fn rref_qp(
     a: &[RatFunc],
 ) -> Option<(Vec<RatFunc>, Vec<usize>)> {
     use crate::field::Field;
+    if let Some(blocks) = split(k, m, n, a) {
+        return assemble(k, m, n, a, &blocks, |x, bm, bn| rref_qp(k, bm, bn, x));
+    }
     let e = echelon(k, m, n, a)?;
     record(k, &e);
     let r = e.piv.len();
@@ -205,6 +209,12 @@ pub fn pivots_qp(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<
 
 /// $\operatorname{rank} A$ over $\mathbb{Q}(p)$ (the conditions as for [`rref_qp`]).
 pub fn rank_qp(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<usize> {
+    if let Some(blocks) = split(k, m, n, a) {
+        // rank A = sum of the blocks' ranks (see [`super::blocks`])
+        return blocks.iter().try_fold(0, |acc, b| {
+            rank_qp(k, b.rows.len(), b.cols.len(), &sub(a, n, b)).map(|r| acc + r)
+        });
+    }
     let (b, ds) = clear_rows(k.nvars(), m, n, a);
     // a rank equal to min(m, n) at a point is proved (a nonzero minor), where that minor is
     // nonzero (its factors are recorded)
