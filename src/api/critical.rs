@@ -13,6 +13,8 @@ use std::path::Path;
 pub struct CriticalArgs<'a> {
     pub file: &'a Path,
     pub param: &'a str,
+    /// `--at`: values of other parameters (overriding the file's).
+    pub at: &'a [(String, String)],
     pub from: &'a str,
     pub to: &'a str,
     pub digits: usize,
@@ -153,7 +155,7 @@ pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
         });
     }
     crate::io::read_system_file(a.file)?;
-    let fam = ParamFamily::from_file(a.file, a.param)?;
+    let fam = ParamFamily::from_file_at(a.file, a.param, a.at)?;
     let cv = critical_values(&fam, &from, &to)?;
     Ok(Outcome::new(report(&cv, a.digits), cv.verified))
 }

@@ -13,6 +13,8 @@ use std::path::Path;
 pub struct SweepArgs<'a> {
     pub file: &'a Path,
     pub param: &'a str,
+    /// `--at`: values of other parameters (overriding the file's).
+    pub at: &'a [(String, String)],
     pub from: f64,
     pub to: f64,
     pub points: usize,
@@ -44,7 +46,7 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
         });
     }
     crate::io::read_system_file(a.file)?; // the file is a valid system
-    let fam = ParamFamily::from_file(a.file, a.param)?;
+    let fam = ParamFamily::from_file_at(a.file, a.param, a.at)?;
     let values = sweep_values(a.from, a.to, a.points);
     let bar = std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::new(values.len() as u64);

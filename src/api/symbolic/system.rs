@@ -5,9 +5,9 @@
 //! `field` and `conditions` to the report. Decisions that need numbers (signs, Hurwitz,
 //! approximations) are not guessed: `minimum_phase` says "depends on parameters".
 
-use crate::cli::common::exact_only;
-use crate::cli::common::with_path;
-use crate::cli::{Command, Failure, MethodArg, Outcome};
+use crate::api::common::exact_only;
+use crate::api::common::with_path;
+use crate::api::{Command, Failure, MethodArg, Outcome};
 use crate::field::Field;
 use crate::io::{SystemFile, TypedSystem};
 use crate::poly::Poly;
@@ -22,7 +22,7 @@ type T = TypedSystem<RatFuncField>;
 
 /// Runs `cmd` over $\mathbb{Q}(p)$; `Ok(None)`: the command does not work over
 /// $\mathbb{Q}(p)$ (the caller refuses it).
-pub(in crate::cli) fn run(
+pub(in crate::api) fn run(
     cmd: &Command,
     f: &SystemFile,
     t: &T,
@@ -108,7 +108,7 @@ pub(in crate::cli) fn run(
             None => (sections::already_standard(s), true),
         },
         Command::Analyze { .. } => {
-            let out = crate::cli::analyze::analyze(f, &t)?;
+            let out = crate::api::analyze::analyze(f, &t)?;
             let mut rep = depends(out.report, "minimum_phase");
             let mut ok = out.verified;
             // the eigenvalue structure over Q(p) (its conditions join this computation's)
@@ -170,7 +170,7 @@ pub(in crate::cli) fn run(
 }
 
 /// `r` with `key` set to `v` (replaced in place when present, else appended).
-pub(in crate::cli) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
+pub(in crate::api) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
     match r.items.iter_mut().find(|(k, _)| k == key) {
         Some(slot) => slot.1 = v,
         None => r.items.push((key.to_string(), v)),
@@ -207,7 +207,7 @@ fn depends(r: Report, key: &str) -> Report {
 
 /// The monic irreducible factors over $\mathbb{Q}(p)$ as `{factor, multiplicity}` items
 /// (with `root` for linear factors).
-pub(in crate::cli) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
+pub(in crate::api) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
     let k = p.field().clone();
     let fs = factor_over_qp(p)?;
     Ok(Value::List(
