@@ -73,6 +73,10 @@ fn main() {
         kernels(&sq, &low);
         return;
     }
+    if std::env::var("SWEEP_ONLY").is_ok() {
+        sweep();
+        return;
+    }
 
     let det = oq::det_q(100, &sq);
     let check = det.numer() % num_bigint::BigInt::from(1_000_000_007u64);
@@ -87,6 +91,7 @@ fn main() {
     time("charpoly 100x100", reps, || oq::charpoly_q(100, &sq));
     time("inverse 100x100", reps, || oq::inverse_q(100, &sq));
 
+    sweep();
     // algorithm against algorithm on small sizes (dispatch thresholds)
     for n in [4usize, 8, 12, 16, 24] {
         let a = to_q(&g.matrix(n, n));
@@ -117,6 +122,75 @@ fn main() {
         });
     }
 }
+/// Sizes of the sweep per operation and entry kind (`int`: |p| <= 10^6; `rat`: p/q with
+/// |p|, q <= 10^6). `scripts/anchors/matrix.py` keeps the same table.
+const SWEEP: &[(&str, &[usize], &[usize])] = &[
+    ("rank", &[10, 25, 50, 100, 200], &[10, 25, 50, 100, 200]),
+    ("rref", &[10, 25, 50, 100, 200], &[10, 25, 50, 100, 200]),
+    (
+        "nullspace",
+        &[10, 25, 50, 100, 200],
+        &[10, 25, 50, 100, 200],
+    ),
+    ("det", &[10, 25, 50, 100, 200], &[10, 25, 50, 100]),
+    ("solve", &[10, 25, 50, 100, 200], &[10, 25, 50, 100]),
+    ("inverse", &[10, 25, 50, 100], &[10, 25, 50]),
+    ("charpoly", &[10, 25, 50, 100], &[10, 25, 50]),
+    ("minpoly", &[10, 25, 50, 100], &[10, 25, 50]),
+    ("rref-def", &[10, 25, 50], &[10, 25, 50]),
+];
+
+/// Sweep matrices: `square` n x n and `deficient` (rank n - 1: last row = row 0 + row 1,
+/// for `rref-def`, whose RREF has a free column of ~n^2 log(10^6)-bit entries),
+/// from `Lcg64(seed)`, entry `p = (x mod 2000001) - 10^6`, `q = (x mod 10^6) + 1` (rat).
+fn sweep_matrix(rat: bool, n: usize, deficient: bool) -> Vec<Rational> {
+    let seed = if rat { 1000 } else { 2000 } + n as u64 + if deficient { 500 } else { 0 };
+    let mut g = Lcg64(seed);
+    let mut a: Vec<Rational> = (0..n * n)
+        .map(|_| {
+            let p = (g.next_u31() % 2_000_001) as i64 - 1_000_000;
+            let q = if rat {
+                (g.next_u31() % 1_000_000) as i64 + 1
+            } else {
+                1
+            };
+            Rational::new(p.into(), q.into())
+        })
+        .collect();
+    if deficient && n >= 2 {
+        for j in 0..n {
+            a[(n - 1) * n + j] = &a[j] + &a[n + j];
+        }
+    }
+    a
+}
+
+/// One line per case: `sweep KIND OP N: X ms`.
+fn sweep() {
+    for rat in [false, true] {
+        let kind = if rat { "rat" } else { "int" };
+        for &(op, int_sizes, rat_sizes) in SWEEP {
+            for &n in if rat { rat_sizes } else { int_sizes } {
+                let name = format!("sweep {kind} {op} {n}");
+                let def = sweep_matrix(rat, n, op == "rref-def");
+                let sq = sweep_matrix(rat, n, false);
+                let b: Vec<Rational> = sq.chunks(n).map(|r| r[0].clone()).collect();
+                let reps = if n <= 50 { 3 } else { 1 };
+                match op {
+                    "rank" => time(&name, reps, || oq::rank_q(n, n, &sq)),
+                    "rref" | "rref-def" => time(&name, reps, || oq::rref_q(n, n, &def)),
+                    "nullspace" => time(&name, reps, || oq::nullspace_q(n, n, &sq)),
+                    "det" => time(&name, reps, || oq::det_q(n, &sq)),
+                    "solve" => time(&name, reps, || oq::solve_q(n, n, 1, &sq, &b)),
+                    "inverse" => time(&name, reps, || oq::inverse_q(n, &sq)),
+                    "charpoly" => time(&name, reps, || oq::charpoly_q(n, &sq)),
+                    _ => time(&name, reps, || mq(n, &sq).minpoly()),
+                }
+            }
+        }
+    }
+}
+
 #[allow(dead_code)]
 fn kernels(sq: &[Rational], low: &[Rational]) {
     use qk::intmat::integer_rows;
@@ -140,4 +214,8 @@ fn kernels(sq: &[Rational], low: &[Rational]) {
     time("  rref_mod_p 100x200", 5, || {
         mm::rref::rref_mod_p(&pr, 100, 200, &mut l0.clone())
     });
+}
+
+fn mq(n: usize, a: &[Rational]) -> exactlti::matrix::Matrix<exactlti::field::Q> {
+    exactlti::matrix::Matrix::from_vec(exactlti::field::Q, n, n, a.to_vec())
 }

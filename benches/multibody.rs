@@ -12,8 +12,8 @@ mod common;
 use common::{bench, selected};
 use exactlti::field::Q;
 use exactlti::io::{SystemFormat, load_system_str};
-use exactlti::multibody::{assemble, chain, index_one_standard};
-use exactlti::realization::{MinrealMethod, minimal};
+use exactlti::multibody::{assemble, chain};
+use exactlti::realization::{MinrealMethod, descriptor_to_standard, minimal};
 
 fn main() {
     let qc = std::fs::read_to_string("data/models/quarter-car-a-arm-pushrod.toml")
@@ -30,9 +30,10 @@ fn main() {
         let m = chain(&Q, 40);
         bench("chain_40_assemble_standard", 3, 2000.0, || {
             let a = assemble(&m).expect("valid");
-            let (ss, _) = index_one_standard(&a.descriptor).expect("index 1");
-            assert_eq!(ss.nstates(), 80);
-            ss
+            let sf = descriptor_to_standard(&a.descriptor).expect("index 1");
+            assert!(sf.verified);
+            assert_eq!(sf.system.nstates(), 80);
+            sf
         });
     }
 }

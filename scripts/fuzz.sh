@@ -3,7 +3,7 @@
 #   scripts/fuzz.sh [CASES] [SEED]      (EXACTLTI_BIN=path: use that binary, no build)
 # Mutants of data/*.json and tests/data/* are written to target/fuzz/, every command runs on
 # each with --max-seconds 10; a run fails on a panic (exit 101/134 or "panicked"), on a
-# process still alive past the bound, on exit 1 (internal failure), or on a multi-line error.
+# process still alive past the bound (each run under `ulimit -v` 4 GB), on exit 1 (internal failure), or on a multi-line error.
 # Failing mutants are kept in target/fuzz/failures/ (add them to tests/data with a test).
 set -u
 cases=${1:-300}
@@ -55,7 +55,8 @@ fail=0
 for f in "$out"/case*; do
   for c in "${cmds[@]}"; do
     # shellcheck disable=SC2086
-    timeout 30 "$bin" $c "$f" --max-seconds 10 >/dev/null 2>"$out/err"
+    # under a 4 GB address-space limit (issue 22): past it, one line and exit 2, never 134
+    (ulimit -v 4194304; exec timeout 30 "$bin" $c "$f" --max-seconds 10) >/dev/null 2>"$out/err"
     code=$?
     lines=$(wc -l <"$out/err")
     if [ $code -eq 124 ] || [ $code -ge 100 ] || [ $code -eq 1 ] || grep -q panicked "$out/err" \

@@ -25,6 +25,8 @@ mod cli_options;
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
+#[path = "descriptor_class.rs"]
+mod descriptor_class;
 #[path = "display.rs"]
 mod display;
 #[path = "everyday.rs"]
@@ -63,14 +65,20 @@ mod matrix_generic;
 mod matrix_modular;
 #[path = "matrix_quadratic.rs"]
 mod matrix_quadratic;
+#[path = "matrix_rational.rs"]
+mod matrix_rational;
 #[path = "mechanical.rs"]
 mod mechanical;
+#[path = "memory_budget.rs"]
+mod memory_budget;
 #[path = "mpoly.rs"]
 mod mpoly;
 #[path = "mpoly_gcd.rs"]
 mod mpoly_gcd;
 #[path = "multibody.rs"]
 mod multibody;
+#[path = "multibody_examples.rs"]
+mod multibody_examples;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]
@@ -81,6 +89,8 @@ mod pencil_published;
 mod plots;
 #[path = "poly_factor.rs"]
 mod poly_factor;
+#[path = "qp_conditions.rs"]
+mod qp_conditions;
 #[path = "qp_kernels.rs"]
 mod qp_kernels;
 #[path = "realization.rs"]
@@ -89,6 +99,8 @@ mod realization;
 mod realization_planted;
 #[path = "reserved_names.rs"]
 mod reserved_names;
+#[path = "rest22.rs"]
+mod rest22;
 #[path = "robustness.rs"]
 mod robustness;
 #[path = "scb.rs"]

@@ -9,7 +9,9 @@ use exactlti::io::{SystemFormat, TypedAny, TypedSystem, load_system_path, load_s
 use exactlti::matrix::Matrix;
 use exactlti::multibody::{assemble, chain};
 use exactlti::ratfunc::RatFuncField;
-use exactlti::realization::{MinrealMethod, mcmillan_degree, minimal, modal_table};
+use exactlti::realization::{
+    MinrealMethod, descriptor_to_standard, mcmillan_degree, minimal, modal_table,
+};
 use exactlti::rng::SplitMix64;
 use exactlti::system::StateSpace;
 use std::path::Path;
@@ -228,7 +230,9 @@ fn chain_properties() {
         let a = assemble(&chain(&Q, n)).unwrap();
         let d = &a.descriptor;
         assert_eq!(d.e.shape(), (2 * n + 1, 2 * n + 1), "n = {n}");
-        let (ss, _) = exactlti::multibody::index_one_standard(d).unwrap();
+        let sf = descriptor_to_standard(d).unwrap();
+        assert!(sf.verified, "n = {n}");
+        let ss = sf.system;
         let mut k = Matrix::zeros(Q, n, n);
         for i in 0..n {
             k.set(i, i, Q.from_i64(if i + 1 < n { 2 } else { 1 }));

@@ -238,7 +238,9 @@ class StateSpace(Operations):
 
     def jordan(self, real=False, max_seconds=None):
         """Exact Jordan form of ``A``: ``A T = T J`` (``real=True``: real Jordan form with
-        2x2 blocks ``[[a, b], [-b, a]]`` and real ``T``). See :func:`exactlti.jordan`."""
+        2x2 blocks ``[[a, b], [-b, a]]`` and real ``T``). See :func:`exactlti.jordan`.
+        For a descriptor system (``E`` given) the finite part of the pencil ``sE - A``
+        (``A`` of the result is the standard form's), with ``infinite_blocks``."""
         if self._extension:
             a = ("--real",) if real else ()
             return _run(self, "jordan", *a, max_seconds=max_seconds)
@@ -296,7 +298,7 @@ class StateSpace(Operations):
 
     def freqresp(self, omega):
         """Frequency response ``G(j w)`` in floating point at the angular frequencies
-        ``omega`` (rad/s), as a complex numpy array of shape ``(noutputs, ninputs,
+        ``omega`` (rad/s; for a descriptor system on the pencil, ``C (jwE - A)^-1 B + D``), as a complex numpy array of shape ``(noutputs, ninputs,
         len(omega))`` (python-control's layout)."""
         import numpy as np
 
@@ -692,6 +694,9 @@ class JordanResult:
         self.exact = d["exact"]
         self.notes = list(d["notes"])
         self.report = json.loads(d["report"])
+        # a descriptor system: sizes of the Jordan blocks at s = infinity (J, T, A are the
+        # finite part's)
+        self.infinite_blocks = list(d.get("infinite_blocks", []))
 
     @property
     def nstates(self):

@@ -362,6 +362,12 @@ impl System {
         let s = self.inner.clone();
         run(py, max_seconds, move || {
             let jf = match &*s {
+                Sys::Q(_, t) if t.descriptor.is_some() => {
+                    return ops::descriptor_jordan(t, real, exactlti::jordan::jordan);
+                }
+                Sys::Quadratic(_, t) if t.descriptor.is_some() => {
+                    return ops::descriptor_jordan(t, real, exactlti::jordan::jordan_quadratic);
+                }
                 Sys::Q(_, t) => exactlti::jordan::jordan(&t.a_raw)?,
                 Sys::Quadratic(_, t) => exactlti::jordan::jordan_quadratic(&t.a_raw)?,
                 Sys::Sym(g, t) => {

@@ -161,12 +161,22 @@ pub(crate) fn to_dmatrix<K: Field>(m: &Matrix<K>) -> FResult<nalgebra::DMatrix<f
 
 pub(crate) fn freqresp_typed<K: Field>(t: &Typed<K>, omega: &[f64]) -> FResult<Out> {
     let s = &t.ss;
-    let [a, b, c, d] = [&s.a, &s.b, &s.c, &s.d].map(to_dmatrix);
     let hz: Vec<f64> = omega
         .iter()
         .map(|w| w / (2.0 * std::f64::consts::PI))
         .collect();
-    let g = exactlti::float::freqresp(&a?, &b?, &c?, &d?, &hz)?;
+    let g = match &t.descriptor {
+        // on the pencil, C (jw E - A)^-1 B + D: never through the standard form's basis
+        Some(ds) => {
+            let z = |m| to_dmatrix(m).map(|m| m.map(|x| nalgebra::Complex::new(x, 0.0)));
+            let [e, a, b, c, d] = [&ds.e, &ds.a, &ds.b, &ds.c, &ds.d].map(z);
+            exactlti::float::freqresp_descriptor(&e?, &a?, &b?, &c?, &d?, &hz)?
+        }
+        None => {
+            let [a, b, c, d] = [&s.a, &s.b, &s.c, &s.d].map(to_dmatrix);
+            exactlti::float::freqresp(&a?, &b?, &c?, &d?, &hz)?
+        }
+    };
     Ok(Out::List(
         g.iter()
             .map(|m| {
@@ -251,6 +261,44 @@ pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResu
         kv.push(("verified", Out::Bool(jf.verified)));
         kv.push(("notes", Out::List(vec![])));
         kv.push(("report", report(&jf.report())));
+    }
+    Ok(Out::Dict(kv))
+}
+
+/// `jordan` of a descriptor system: the Jordan form of the pencil's finite dynamics (the
+/// standard form's `A`), with `infinite_blocks` (sizes of the Jordan blocks at infinity) and
+/// a `note`; a singular pencil is refused.
+pub(crate) fn descriptor_jordan<K: Field>(
+    t: &Typed<K>,
+    real: bool,
+    jordan: impl Fn(&Matrix<K>) -> exactlti::Result<exactlti::jordan::JordanForm>,
+) -> FResult<Out> {
+    let d = t.descriptor.as_ref().expect("a descriptor system");
+    let ks = exactlti::pencil::kronecker_structure(&d.a, &d.e)?;
+    let (af, method) = realization::finite_dynamics(d)?;
+    let jf = jordan(&af)?;
+    let Out::Dict(mut kv) = jordan_out(&jf, real)? else {
+        unreachable!("jordan_out returns a dict")
+    };
+    let ok = ks.verified && af.nrows() == ks.finite_order();
+    for (k, v) in kv.iter_mut() {
+        if *k == "verified" {
+            let was = matches!(v, Out::Bool(true));
+            *v = Out::Bool(was && ok);
+        }
+    }
+    kv.push((
+        "infinite_blocks",
+        Out::List(ks.infinite_divisors.iter().map(|&b| usize_out(b)).collect()),
+    ));
+    let note = format!(
+        "descriptor system: J is the Jordan form of the finite part of the pencil sE - A, computed on the finite part's A ({}); infinite_blocks: sizes of the Jordan blocks at s = infinity (size 1 = non-dynamic mode)",
+        method.name()
+    );
+    for (k, v) in kv.iter_mut() {
+        if let ("notes", Out::List(notes)) = (*k, v) {
+            notes.push(Out::Str(note.clone()));
+        }
     }
     Ok(Out::Dict(kv))
 }

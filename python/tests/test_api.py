@@ -106,6 +106,55 @@ def test_descriptor_systems_are_converted_exactly():
     assert sympy.simplify(h - (-1 / (s + 1))) == 0
 
 
+def _descriptor(n, seed):
+    """A random descriptor system E = P diag(I, 0) Q, A = P [[A11, A12], [A21, I]] Q (index 1)
+    or with E invertible (every other seed)."""
+    rng = random.Random(seed)
+    r = n if seed % 2 else rng.randint(1, n - 1)
+    mk = lambda a, b: [[rng.randint(-3, 3) for _ in range(b)] for _ in range(a)]
+    e0 = sympy.zeros(n, n)
+    for i in range(r):
+        e0[i, i] = rng.randint(1, 3)
+        for j in range(i + 1, r):
+            e0[i, j] = rng.randint(-2, 2)
+    a0 = sympy.Matrix(mk(n, n))
+    for i in range(r, n):
+        for j in range(r, n):
+            a0[i, j] = 1 if i == j else 0
+    p = sympy.eye(n) + sympy.Matrix(n, n, lambda i, j: rng.randint(-1, 1) if j > i else 0)
+    q = sympy.eye(n) + sympy.Matrix(n, n, lambda i, j: rng.randint(-1, 1) if j < i else 0)
+    E, A = p * e0 * q, p * a0 * q
+    B, C, D = sympy.Matrix(mk(n, 1)), sympy.Matrix(mk(1, n)), sympy.Matrix(mk(1, 1))
+    return E, A, B, C, D
+
+
+def test_descriptor_freqresp_is_the_pencils():
+    # class: random index-0/1 descriptor systems; G(jw) = C (jwE - A)^-1 B + D exactly in SymPy
+    for seed in range(8):
+        E, A, B, C, D = _descriptor(5, seed)
+        ints = lambda M: [[int(x) for x in row] for row in M.tolist()]
+        G = exactlti.ss(ints(A), ints(B), ints(C), ints(D), E=ints(E))
+        for w in (sympy.Rational(1, 3), sympy.Integer(2)):
+            exact = (C * (sympy.I * w * E - A).inv() * B + D)[0, 0]
+            got = G.freqresp([float(w)])[0, 0, 0]
+            ref = complex(sympy.N(exact, 30))
+            assert abs(got - ref) <= 1e-9 * max(abs(ref), 1e-300), (seed, w)
+
+
+def test_descriptor_jordan_is_the_pencils_finite_part():
+    # E = diag(2, 1): the finite dynamics are E^-1 A (charpoly x^2 + x + 1/2), not A
+    G = exactlti.ss([[0, 1], [-1, -1]], [[0], [1]], [[1, 0]], [[0]], E=[[2, 0], [0, 1]])
+    j = G.jordan()
+    assert j.verified and j.infinite_blocks == []
+    x = sympy.Symbol("x")
+    assert sympy.expand(j.charpoly.to_sympy(x) - (x**2 + x + sympy.Rational(1, 2))) == 0
+    assert any("finite part" in n for n in j.notes)
+    # one algebraic state: one infinite block of size 1, one finite eigenvalue
+    G = exactlti.ss([[0, 1], [1, 1]], [[0], [1]], [[1, 0]], [[0]], E=[[1, 0], [0, 0]])
+    j = G.jordan()
+    assert j.verified and j.infinite_blocks == [1] and j.nstates == 1
+
+
 # ---------------------------------------------------------------- operations
 
 

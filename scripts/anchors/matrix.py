@@ -1,26 +1,43 @@
 #!/usr/bin/env python3
 """Side-by-side timings: exactlti's exact matrix kernels vs python-flint and SymPy.
 
-Usage (from anywhere): python3 scripts/anchors/matrix.py [--no-sympy-slow]
+Usage (from anywhere): python3 scripts/anchors/matrix.py [--no-sympy-slow] [--no-cli]
+    [--only OP[,OP...]] [--kinds int,rat] [--no-bench] [--no-sympy]
 
 Creates the venv `.venv-anchors` at the repository root when missing (pip install sympy
-python-flint), re-runs itself inside it, times FLINT and SymPy's DomainMatrix over QQ on the
-SAME matrices as `benches/matrix.rs` (a shared 64-bit LCG), runs
-`cargo bench --bench matrix`, and prints one table with the ratios.
+python-flint), re-runs itself inside it, and times on the SAME matrices (a shared 64-bit
+LCG, see `benches/matrix.rs`):
 
-Cases: rank, rref, null space of L*R (L 100x50, R 50x200, factor entries -9..9, rank 50);
-det, charpoly, inverse of a 100x100 matrix with entries -9..9. Times are the best of a few
-repetitions, in milliseconds.
+1. the fixed cases of issue 3 (rank / rref / null space of a 100x200 rank-50 product, det,
+   charpoly, inverse of a 100x100 matrix with entries -9..9), bench against FLINT and SymPy;
+2. the sweep of issue 29: every operation at n = 10, 25, 50, 100, 200 (table `SWEEP`, the
+   same as in `benches/matrix.rs`) on integer entries (|p| <= 10^6) and on rational entries
+   p/q (|p|, q <= 10^6): the bench (`cargo bench --bench matrix`), the user's path (the
+   release CLI `exactlti linalg OP FILE` on a JSON file holding the matrix, wall clock,
+   parsing and printing included), python-flint (fmpz_mat for integers, fmpq_mat for
+   rationals) and SymPy's DomainMatrix over QQ (n <= 25); ratios to FLINT and the scaling
+   exponent (least-squares slope of log t over log n for n >= 25) per operation.
+
+Every operation runs on a full random n x n matrix (as issue 29 measured); `rref-def` is the
+RREF of a rank-deficient one (last row = row 0 + row 1), whose free column has entries of
+~n^2 log2(10^6) bits (output-heavy); `solve` has the right-hand side column 0.
+FLINT's null space over Q is its RREF (fmpq_mat has no nullspace; the basis is read off).
+Times are the best of a few repetitions, in milliseconds.
 """
+import json
+import math
 import os
 import re
 import subprocess
 import sys
+import tempfile
 import time
+from fractions import Fraction
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 VENV = os.path.join(ROOT, ".venv-anchors")
 VPY = os.path.join(VENV, "bin", "python")
+CLI_TIMEOUT = 120.0
 
 
 def ensure_venv():
@@ -34,6 +51,20 @@ def ensure_venv():
 
 MASK = (1 << 64) - 1
 
+# (op, integer sizes, rational sizes): the table of benches/matrix.rs
+SWEEP = [
+    ("rank", [10, 25, 50, 100, 200], [10, 25, 50, 100, 200]),
+    ("rref", [10, 25, 50, 100, 200], [10, 25, 50, 100, 200]),
+    ("nullspace", [10, 25, 50, 100, 200], [10, 25, 50, 100, 200]),
+    ("det", [10, 25, 50, 100, 200], [10, 25, 50, 100]),
+    ("solve", [10, 25, 50, 100, 200], [10, 25, 50, 100]),
+    ("inverse", [10, 25, 50, 100], [10, 25, 50]),
+    ("charpoly", [10, 25, 50, 100], [10, 25, 50]),
+    ("minpoly", [10, 25, 50, 100], [10, 25, 50]),
+    ("rref-def", [10, 25, 50], [10, 25, 50]),
+]
+DEFICIENT = {"rref-def"}
+
 
 class Lcg:
     """x <- (6364136223846793005 x + 1442695040888963407) mod 2^64; entry ((x>>33) % 19) - 9."""
@@ -41,12 +72,29 @@ class Lcg:
     def __init__(self, seed):
         self.x = seed
 
-    def entry(self):
+    def u31(self):
         self.x = (self.x * 6364136223846793005 + 1442695040888963407) & MASK
-        return ((self.x >> 33) % 19) - 9
+        return self.x >> 33
+
+    def entry(self):
+        return (self.u31() % 19) - 9
 
     def matrix(self, m, n):
         return [[self.entry() for _ in range(n)] for _ in range(m)]
+
+
+def sweep_matrix(rat, n, deficient):
+    """The sweep matrix of benches/matrix.rs (`sweep_matrix`), rows of Fractions."""
+    g = Lcg((1000 if rat else 2000) + n + (500 if deficient else 0))
+    flat = []
+    for _ in range(n * n):
+        p = g.u31() % 2000001 - 1000000
+        q = g.u31() % 1000000 + 1 if rat else 1
+        flat.append(Fraction(p, q))
+    a = [flat[i * n:(i + 1) * n] for i in range(n)]
+    if deficient and n >= 2:
+        a[n - 1] = [x + y for x, y in zip(a[0], a[1])]
+    return a
 
 
 def matmul(a, b):
@@ -134,16 +182,185 @@ def time_rust():
     return out, check
 
 
+def reps_for(n):
+    return 3 if n <= 50 else 1
+
+
+def flint_sweep_case(rat, op, a):
+    """FLINT's time on one sweep case (fmpq_mat for rationals, fmpz_mat for integers)."""
+    import flint
+
+    n = len(a)
+    flat = [x for row in a for x in row]
+    reps = reps_for(n)
+    if rat:
+        M = flint.fmpq_mat(n, n, [flint.fmpq(x.numerator, x.denominator) for x in flat])
+        b = flint.fmpq_mat(n, 1, [flint.fmpq(row[0].numerator, row[0].denominator) for row in a])
+    else:
+        M = flint.fmpz_mat(n, n, [int(x) for x in flat])
+        b = flint.fmpz_mat(n, 1, [int(row[0]) for row in a])
+    f = {
+        "rank": lambda: M.rank(),
+        "rref": lambda: M.rref(),
+        "rref-def": lambda: M.rref(),
+        "nullspace": (lambda: M.rref()) if rat else (lambda: M.nullspace()),
+        "det": lambda: M.det(),
+        "solve": lambda: M.solve(b),
+        "inverse": lambda: M.inv(),
+        "charpoly": lambda: M.charpoly(),
+        "minpoly": lambda: M.minpoly(),
+    }[op]
+    return best(f, reps)
+
+
+def sympy_sweep_case(op, a):
+    from sympy import QQ
+    from sympy.polys.matrices import DomainMatrix
+
+    n = len(a)
+    M = DomainMatrix([[QQ(x.numerator, x.denominator) for x in row] for row in a], (n, n), QQ)
+    b = DomainMatrix([[QQ(row[0].numerator, row[0].denominator)] for row in a], (n, 1), QQ)
+    f = {
+        "rank": lambda: M.rank(),
+        "rref": lambda: M.rref(),
+        "rref-def": lambda: M.rref(),
+        "nullspace": lambda: M.nullspace(),
+        "det": lambda: M.det(),
+        "solve": lambda: M.lu_solve(b),
+        "inverse": lambda: M.inv(),
+        "charpoly": lambda: M.charpoly(),
+        "minpoly": lambda: M.to_Matrix().minimal_polynomial(),
+    }[op]
+    return best(f, 1)
+
+
+def build_cli():
+    """The release CLI (`EXACTLTI_EXE` overrides it, e.g. a binary of an earlier commit)."""
+    if os.environ.get("EXACTLTI_EXE"):
+        return os.environ["EXACTLTI_EXE"]
+    subprocess.run(
+        ["cargo", "build", "--release", "--bin", "exactlti"],
+        cwd=ROOT,
+        check=True,
+        capture_output=True,
+    )
+    return os.path.join(ROOT, "target", "release", "exactlti")
+
+
+def cli_case(exe, tmp, kind, op, a):
+    """Wall-clock ms of `exactlti linalg OP FILE` (best of reps); None past CLI_TIMEOUT."""
+    if op == "solve":
+        return None
+    n = len(a)
+    path = os.path.join(tmp, f"{kind}_{'def' if op in DEFICIENT else 'sq'}_{n}.json")
+    if not os.path.exists(path):
+        with open(path, "w") as f:
+            json.dump({"A": [[str(x) for x in row] for row in a]}, f)
+    t = float("inf")
+    for _ in range(reps_for(n)):
+        s = time.perf_counter()
+        try:
+            subprocess.run(
+                [exe, "linalg", op.replace("-def", ""), path],
+                check=True,
+                stdout=subprocess.DEVNULL,
+                timeout=CLI_TIMEOUT,
+            )
+        except subprocess.TimeoutExpired:
+            return None
+        t = min(t, time.perf_counter() - s)
+    return t * 1e3
+
+
+def slope(points):
+    """Least-squares slope of log t over log n (points with n >= 25 and t > 0)."""
+    pts = [(math.log(n), math.log(t)) for n, t in points if n >= 25 and t and t > 0]
+    if len(pts) < 2:
+        return None
+    mx = sum(x for x, _ in pts) / len(pts)
+    my = sum(y for _, y in pts) / len(pts)
+    sxx = sum((x - mx) ** 2 for x, _ in pts)
+    return sum((x - mx) * (y - my) for x, y in pts) / sxx
+
+
+def fmt(x, w=9):
+    return f"{'-':>{w}}" if x is None else f"{x:{w}.2f}"
+
+
+def ratio(a, b):
+    return None if a is None or b is None or b == 0 else a / b
+
+
+def run_sweep(rust, args):
+    exe = None if args["no_cli"] else build_cli()
+    print("\n# issue 29 sweep: int |p| <= 10^6, rat p/q |p|,q <= 10^6; ms; x = / FLINT")
+    head = (
+        f"{'kind':<4} {'op':<9} {'n':>4} {'bench':>9} {'CLI':>9} {'FLINT':>9} "
+        f"{'bench x':>8} {'CLI x':>8} {'SymPy':>9}"
+    )
+    print(head)
+    print("-" * len(head))
+    expo = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for kind in args["kinds"]:
+            rat = kind == "rat"
+            for op, isz, rsz in SWEEP:
+                if args["only"] and op not in args["only"]:
+                    continue
+                series = {"bench": [], "CLI": [], "FLINT": []}
+                for n in rsz if rat else isz:
+                    a = sweep_matrix(rat, n, op in DEFICIENT)
+                    r = rust.get(f"sweep {kind} {op} {n}")
+                    c = cli_case(exe, tmp, kind, op, a) if exe else None
+                    fl = flint_sweep_case(rat, op, a)
+                    sp = sympy_sweep_case(op, a) if n <= 25 and not args["no_sympy"] else None
+                    for key, v in (("bench", r), ("CLI", c), ("FLINT", fl)):
+                        series[key].append((n, v))
+                    print(
+                        f"{kind:<4} {op:<9} {n:>4} {fmt(r)} {fmt(c)} {fmt(fl)} "
+                        f"{fmt(ratio(r, fl), 7)}x {fmt(ratio(c, fl), 7)}x {fmt(sp)}",
+                        flush=True,
+                    )
+                expo.append((kind, op, {k: slope(v) for k, v in series.items()}))
+    print("\n# scaling exponent (slope of log t over log n, n >= 25)")
+    print(f"{'kind':<4} {'op':<9} {'bench':>7} {'CLI':>7} {'FLINT':>7}")
+    for kind, op, s in expo:
+        print(f"{kind:<4} {op:<9} {fmt(s['bench'], 7)} {fmt(s['CLI'], 7)} {fmt(s['FLINT'], 7)}")
+
+
+def parse_args():
+    argv = sys.argv[1:]
+    only = None
+    kinds = ["int", "rat"]
+    for i, a in enumerate(argv):
+        if a == "--only":
+            only = set(argv[i + 1].split(","))
+        if a == "--kinds":
+            kinds = argv[i + 1].split(",")
+    return {
+        "slow": "--no-sympy-slow" not in argv,
+        "no_cli": "--no-cli" in argv,
+        "no_bench": "--no-bench" in argv,
+        "no_sympy": "--no-sympy" in argv,
+        "only": only,
+        "kinds": kinds,
+    }
+
+
 def main():
     ensure_venv()
     # SymPy's own (pure Python) domain arithmetic: with python-flint installed SymPy would
     # otherwise hand DomainMatrix work to FLINT and time FLINT twice
     os.environ["SYMPY_GROUND_TYPES"] = "python"
-    slow = "--no-sympy-slow" not in sys.argv
+    args = parse_args()
     low, sq = cases()
+    if args["no_bench"]:
+        rust, rcheck = {}, None
+        run_sweep(rust, args)
+        return
     rust, rcheck = time_rust()
     flint_t, flint_extra, fcheck = time_flint(low, sq)
-    sympy_t = time_sympy(low, sq, slow)
+    sympy_t = time_sympy(low, sq, args["slow"]) if not args["no_sympy"] else {}
     same = "same matrices: OK" if rcheck == fcheck else f"MISMATCH {rcheck} != {fcheck}"
     print(f"# exact matrix kernels over Q, best-of times in ms ({same})")
     head = f"{'case':<24} {'exactlti':>10} {'FLINT':>10} {'x FLINT':>8} {'SymPy':>10} {'SymPy/us':>9}"
@@ -156,6 +373,7 @@ def main():
         print(f"{case:<24} {r:10.2f} {ft:10.2f} {r / ft:7.2f}x {s_str}")
     for case, ft in flint_extra.items():
         print(f"  FLINT {case}: {ft:.2f} ms")
+    run_sweep(rust, args)
 
 
 if __name__ == "__main__":

@@ -14,6 +14,11 @@ use std::path::Path;
 
 /// `err` is the failure of the ordinary loader; answers it unless the file's `A` serves.
 pub(super) fn fallback(cmd: &Command, path: &Path, err: InputError) -> Result<Outcome, Failure> {
+    if matches!(cmd, Command::Jordan { .. })
+        && let Some(out) = descriptor_jordan_path(cmd, path)
+    {
+        return out;
+    }
     let Ok((entries, ground)) = read_matrix_key(path, "A") else {
         return Err(err.into());
     };
@@ -139,4 +144,65 @@ fn jordan_over_k_cmd(
         return Ok(Outcome::new(rf.report(), rf.verified));
     }
     Ok(Outcome::new(jf.report(), jf.verified))
+}
+
+/// `jordan` of a file with `E`: the Jordan form of the pencil's finite dynamics (the finite
+/// eigenvalues of $sE - A$ with their blocks) beside the sizes of its infinite blocks (from
+/// the Kronecker structure, [`crate::pencil::kronecker_structure`]). A singular pencil has
+/// no Jordan structure and is refused with the reason (exit 2).
+pub(super) fn descriptor_jordan<K: Field + 'static>(
+    cmd: &Command,
+    d: &crate::system::Descriptor<K>,
+    path: &Path,
+) -> Result<Outcome, Failure> {
+    let e = |err| with_path(path, err);
+    let ks = crate::pencil::kronecker_structure(&d.a, &d.e).map_err(e)?;
+    if !ks.is_regular() {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{}: the pencil sE - A is singular (det(sE - A) = 0 for every s, normal rank {} < {}): it has no Jordan structure; `exactlti pencil` gives its Kronecker structure",
+                path.display(),
+                ks.normal_rank,
+                ks.shape.0
+            ),
+        });
+    }
+    let (af, method) = crate::realization::finite_dynamics(d).map_err(e)?;
+    let mut out = a_command(cmd, &af, path).expect("jordan is an A-only command")?;
+    let blocks = ks.infinite_divisors.iter().map(|&k| Value::Int(k as i64));
+    out.report
+        .push("infinite_blocks", Value::List(blocks.collect()));
+    out.report.push(
+        "note",
+        Value::Str(format!(
+            "descriptor system: J is the Jordan form of the finite part of the pencil sE - A ({} finite eigenvalues), computed on the finite part's A ({}); A T = T J holds for that A. infinite_blocks: sizes of the Jordan blocks at s = infinity ({} states; size 1 = non-dynamic mode)",
+            af.nrows(),
+            method.name(),
+            ks.infinite_order()
+        )),
+    );
+    out.verified = out.verified && ks.verified && af.nrows() == ks.finite_order();
+    Ok(out)
+}
+
+/// `jordan` of a file with `E` whose system the ordinary loader refuses (improper or
+/// singular): [`descriptor_jordan`] on the file read as a descriptor system.
+pub(super) fn descriptor_jordan_path(
+    cmd: &Command,
+    path: &Path,
+) -> Option<Result<Outcome, Failure>> {
+    struct Visit<'a>(&'a Command, &'a Path);
+    impl crate::io::load_descriptor::DescriptorVisitor for Visit<'_> {
+        type Output = Result<Outcome, Failure>;
+        fn visit<K: Field + 'static>(
+            self,
+            _: &crate::io::load_descriptor::LoadedDescriptor,
+            s: &crate::system::Descriptor<K>,
+        ) -> Self::Output {
+            descriptor_jordan(self.0, s, self.1)
+        }
+    }
+    let l = crate::io::load_descriptor::load_descriptor_path(path).ok()?;
+    (l.has_e && l.pencil.is_none() && l.transfer.is_none()).then(|| l.run(Visit(cmd, path)))
 }

@@ -119,6 +119,14 @@ impl Budget {
             return Ran::Panicked;
         };
         match w.wait() {
+            // a result that arrives after the whole bound (this thread was not scheduled in
+            // time) is not used: the bound holds however the threads are scheduled
+            Poll::Done(_) if whole && self.deadline.is_some_and(|d| Instant::now() > d) => {
+                Ran::OutOfTime {
+                    seconds: start.elapsed().as_secs_f64(),
+                    whole,
+                }
+            }
             Poll::Done(v) => Ran::Done(v),
             Poll::TimedOut | Poll::Pending => Ran::OutOfTime {
                 seconds: start.elapsed().as_secs_f64(),

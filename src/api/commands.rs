@@ -30,6 +30,9 @@ pub struct RunContext {
     pub events: super::budget::Events,
     /// `--full`.
     pub full: bool,
+    /// The format of stdout when a command may write its report there as it computes it
+    /// (long sweeps); `None` in process.
+    pub stdout: Option<super::Format>,
 }
 
 /// Dispatches a command with `--symbolic` / `--at` (see [`crate::io::symbolic`]).
@@ -43,6 +46,7 @@ pub fn execute_with(
         max_seconds: 1e7,
         events: None,
         full: false,
+        stdout: None,
     };
     execute_ctx(cmd, symbolic, at, &ctx)
 }
@@ -60,9 +64,8 @@ pub fn execute_ctx(
 ) -> Result<Outcome, Failure> {
     let opts =
         SymbolicOptions::from_args(symbolic, at).map_err(|message| Failure { code: 2, message })?;
-    match cmd {
-        Command::Poly { op } => return poly(op).map(Outcome::plain),
-        _ => {}
+    if let Command::Poly { op } = cmd {
+        return poly(op).map(Outcome::plain);
     }
     let sys = match file_of(cmd) {
         None => System::builtin(&opts)?,
@@ -76,6 +79,10 @@ pub fn execute_ctx(
                 }
                 if matches!(cmd, Command::Jordan { .. } | Command::Linalg { .. }) {
                     return super::a_only::fallback(cmd, path, err);
+                }
+                // a parameter study of a file without that parameter: that is the answer
+                if let Command::Sweep { param, .. } | Command::Critical { param, .. } = cmd {
+                    crate::study::ParamFamily::from_file(path, param)?;
                 }
                 return Err(err.into());
             }
@@ -114,6 +121,7 @@ impl Default for RunContext {
             max_seconds: 1e7,
             events: None,
             full: false,
+            stdout: None,
         }
     }
 }
@@ -166,7 +174,7 @@ impl SystemVisitor for FileCommand<'_> {
             return if self.opts.is_empty() && self.from_file {
                 super::pencil_cmds::execute(self.cmd, path)
             } else {
-                super::pencil_cmds::execute_typed(self.cmd, path, t)
+                super::pencil_cmds::execute_typed(self.cmd, path, f, t)
             };
         }
         match self.cmd {
@@ -190,17 +198,20 @@ impl SystemVisitor for FileCommand<'_> {
                 locus_svg,
                 csv,
                 ..
-            } => super::sweep::run(&super::sweep::SweepArgs {
-                file: path,
-                param,
-                from: *from,
-                to: *to,
-                points: *points,
-                svg: svg.as_deref(),
-                locus_svg: locus_svg.as_deref(),
-                csv: csv.as_deref(),
-                at: &self.opts.at,
-            }),
+            } => super::sweep::run(
+                &super::sweep::SweepArgs {
+                    file: path,
+                    param,
+                    from: *from,
+                    to: *to,
+                    points: *points,
+                    svg: svg.as_deref(),
+                    locus_svg: locus_svg.as_deref(),
+                    csv: csv.as_deref(),
+                    at: &self.opts.at,
+                },
+                self.ctx.stdout,
+            ),
             Command::Critical {
                 param,
                 from,
@@ -215,6 +226,10 @@ impl SystemVisitor for FileCommand<'_> {
                 digits: *digits,
                 at: &self.opts.at,
             }),
+            Command::Jordan { .. } if t.descriptor.is_some() => {
+                let d = t.descriptor.as_ref().expect("checked");
+                super::a_only::descriptor_jordan(self.cmd, d, path)
+            }
             Command::Jordan { .. } | Command::Linalg { .. } => {
                 a_command(self.cmd, &t.a_raw, path).expect("an A-only command")
             }
@@ -260,7 +275,17 @@ impl SystemVisitor for FileCommand<'_> {
                 csv,
                 ..
             } => {
-                let r = super::float_cmds::freqresp(t, path, *from, *to, *points, csv.as_deref())?;
+                let (_, ins, outs) = super::plots::names(f, path, s.ninputs(), s.noutputs());
+                let names = (ins.as_slice(), outs.as_slice());
+                let r = super::float_cmds::freqresp(
+                    t,
+                    path,
+                    names,
+                    *from,
+                    *to,
+                    *points,
+                    csv.as_deref(),
+                )?;
                 if let Some(out) = svg {
                     super::plots::bode_file(f, t, path, (*from, *to, *points), out)?;
                 }
@@ -310,6 +335,33 @@ impl SystemVisitor for FileCommand<'_> {
         match self.cmd {
             Command::Bifurcations { of, depth, .. } => {
                 super::bifurcations::run(self.path, t, *of, *depth)
+            }
+            // the swept parameter may be a symbol (the study gives it its values); every
+            // other symbol needs a number: a plot and a crossing are numbers
+            Command::Sweep { param, .. } | Command::Critical { param, .. } => {
+                let k = t.a_raw.field();
+                let other: Vec<&str> = k
+                    .vars()
+                    .iter()
+                    .filter(|v| *v != param)
+                    .map(String::as_str)
+                    .collect();
+                if other.is_empty() {
+                    return self.visit(f, t);
+                }
+                let name = if matches!(self.cmd, Command::Sweep { .. }) {
+                    "sweep"
+                } else {
+                    "critical"
+                };
+                Err(Failure {
+                    code: 2,
+                    message: format!(
+                        "{}: `{name}` along {param} needs a number for every other parameter ({} without one); give them values with --at or in the file",
+                        self.path.display(),
+                        other.join(", ")
+                    ),
+                })
             }
             _ => super::symbolic::execute(self.cmd, f, t, self.path),
         }
@@ -417,10 +469,13 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
         }
         super::PolyCmd::Roots { expr, digits } => {
             let p = parse(expr)?;
-            if *digits == 0 || *digits > 10_000 {
+            if *digits == 0 || *digits > super::args::MAX_DIGITS {
                 return Err(Failure {
                     code: 2,
-                    message: format!("--digits must be between 1 and 10000 (got {digits})"),
+                    message: format!(
+                        "--digits must be between 1 and {} (got {digits})",
+                        super::args::MAX_DIGITS
+                    ),
                 });
             }
             Ok(sections::roots_report(&p, *digits)?)

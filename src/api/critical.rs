@@ -145,16 +145,20 @@ pub fn report(cv: &CriticalValues, digits: usize) -> Report {
 /// Runs `critical`.
 pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
     let (from, to) = (bound(a.from, "from")?, bound(a.to, "to")?);
-    if from > to || !(1..=10_000).contains(&a.digits) {
+    if from > to || !(1..=super::args::MAX_DIGITS).contains(&a.digits) {
         return Err(Failure {
             code: 2,
             message: format!(
-                "critical: need --from <= --to and 1 <= --digits <= 10000 (got {}, {}, {})",
-                a.from, a.to, a.digits
+                "critical: need --from <= --to and 1 <= --digits <= {} (got {}, {}, {})",
+                super::args::MAX_DIGITS,
+                a.from,
+                a.to,
+                a.digits
             ),
         });
     }
-    crate::io::read_system_file(a.file)?;
+    // the file was read as a system by the caller ([`crate::api::System::open`]; the
+    // parameter studied may be `null`: a symbol)
     let fam = ParamFamily::from_file_at(a.file, a.param, a.at)?;
     let cv = critical_values(&fam, &from, &to)?;
     Ok(Outcome::new(report(&cv, a.digits), cv.verified))

@@ -44,6 +44,27 @@ pub(crate) fn float_abcd<K: Field>(t: &Typed<K>, path: &Path) -> Result<FloatAbc
     }
 }
 
+/// The float frequency response at `freqs` (hertz). For a file with `E` on the pencil,
+/// $G(j\omega) = C(j\omega E - A)^{-1}B + D$, never through the standard form (whose basis
+/// may be badly scaled); else on `sys` (the embedding of the standard system).
+pub(crate) fn float_response<K: Field>(
+    t: &Typed<K>,
+    sys: &FloatAbcd,
+    path: &Path,
+    freqs: &[f64],
+) -> Result<Vec<DMatrix<Complex<f64>>>, Failure> {
+    let resp = match (&t.descriptor, sys) {
+        (Some(ds), _) => {
+            let conv = |m| to_cmatrix(m).map_err(|e| fail(path, e));
+            let [e, a, b, c, d] = [&ds.e, &ds.a, &ds.b, &ds.c, &ds.d].map(conv);
+            float::freqresp_descriptor(&e?, &a?, &b?, &c?, &d?, freqs)
+        }
+        (None, FloatAbcd::Real([a, b, c, d])) => float::freqresp(a, b, c, d, freqs),
+        (None, FloatAbcd::Complex([a, b, c, d])) => float::freqresp_complex(a, b, c, d, freqs),
+    };
+    resp.map_err(|e| fail(path, e))
+}
+
 /// A float matrix in a report: numbers for a real matrix, `[re, im]` pairs for a complex one.
 fn dm_report<T: FloatScalar>(r: Report, name: &str, m: &DMatrix<T>) -> Report {
     let complex = m.iter().any(|z| z.imaginary() != 0.0);
@@ -64,10 +85,12 @@ fn dm_report<T: FloatScalar>(r: Report, name: &str, m: &DMatrix<T>) -> Report {
 /// 50 MB of JSON, a few hundred MB while the report is built.
 pub const MAX_RESPONSE_VALUES: usize = 1_000_000;
 
-/// Frequency response (float, from the exact system's embedding).
+/// Frequency response (float, from the exact system's embedding); `names`: the input and
+/// output names of the channels (`u1`, `y1`, ... when the file gives none).
 pub fn freqresp<K: Field>(
     t: &Typed<K>,
     path: &Path,
+    names: (&[String], &[String]),
     from: f64,
     to: f64,
     points: usize,
@@ -102,19 +125,15 @@ pub fn freqresp<K: Field>(
         });
     }
     let mut freqs = logspace(from, to, points);
-    let resp = match &sys {
-        FloatAbcd::Real([a, b, c, d]) => float::freqresp(a, b, c, d, &freqs),
-        FloatAbcd::Complex([a, b, c, d]) => {
-            freqs = freqs
-                .iter()
-                .rev()
-                .map(|f| -f)
-                .chain(freqs.iter().copied())
-                .collect();
-            float::freqresp_complex(a, b, c, d, &freqs)
-        }
+    if two_sided {
+        freqs = freqs
+            .iter()
+            .rev()
+            .map(|f| -f)
+            .chain(freqs.iter().copied())
+            .collect();
     }
-    .map_err(|e| fail(path, e))?;
+    let resp = float_response(t, &sys, path, &freqs)?;
     let table = response_table(&resp);
     if let Some(p) = csv {
         std::fs::write(p, response_csv(&freqs, &table)).map_err(|e| Failure {
@@ -140,7 +159,7 @@ pub fn freqresp<K: Field>(
             )
         })
         .collect();
-    let (header, rows) = bode_table(&freqs, &table);
+    let (header, rows) = bode_table(&freqs, &table, names);
     let mut rep = Report::titled("frequency response");
     if two_sided {
         rep = rep.bool("two_sided", true).str(
@@ -162,8 +181,12 @@ pub fn freqresp<K: Field>(
 }
 
 /// The text of a frequency response: per frequency (Hz), the magnitude (dB) and phase
-/// (degrees, unwrapped along the frequencies) of each channel `y<i>/u<j>`.
-fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>) {
+/// (degrees, unwrapped along the frequencies) of each channel `output/input` (by name).
+fn bode_table(
+    freqs: &[f64],
+    table: &Response,
+    (inputs, outputs): (&[String], &[String]),
+) -> (Vec<String>, Vec<Vec<String>>) {
     use crate::report::text::short;
     let (p, m) = table
         .first()
@@ -176,8 +199,9 @@ fn bode_table(freqs: &[f64], table: &Response) -> (Vec<String>, Vec<Vec<String>>
                 header.push("magnitude (dB)".into());
                 header.push("phase (deg)".into());
             } else {
-                header.push(format!("y{}/u{} (dB)", i + 1, j + 1));
-                header.push(format!("y{}/u{} (deg)", i + 1, j + 1));
+                let ch = format!("{}/{}", outputs[i], inputs[j]);
+                header.push(format!("{ch} (dB)"));
+                header.push(format!("{ch} (deg)"));
             }
         }
     }

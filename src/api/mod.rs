@@ -24,6 +24,7 @@ mod pencil_cmds;
 pub mod plots;
 pub mod runner;
 mod sweep;
+mod sweep_stream;
 mod symbolic;
 mod symbolic_jordan;
 mod system;
@@ -38,6 +39,16 @@ use crate::error::Error;
 use crate::report::Report;
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
+
+/// Output formats of a report (the command line's `--format`; a long `sweep` writes its
+/// report in this format as it computes it, [`RunContext::stdout`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    #[default]
+    Text,
+    Json,
+    Latex,
+}
 
 /// Every operation on a system, with its options (the command line's subcommands).
 #[derive(Subcommand, Debug, Clone)]
@@ -203,7 +214,7 @@ pub enum Command {
         /// Upper end of the interval: an exact number (decimal or fraction).
         #[arg(long, allow_hyphen_values = true)]
         to: String,
-        /// Correct digits of the displayed critical values.
+        /// Correct digits of the displayed critical values (1 to 200).
         #[arg(long, default_value_t = 20)]
         digits: usize,
     },
@@ -259,6 +270,8 @@ pub struct Outcome {
     pub float_disagrees: bool,
     /// The report is printed but `--max-seconds` cut part of it: exit 2 with this line.
     pub stopped: Option<String>,
+    /// The report was already written to stdout as it was computed (long sweeps).
+    pub streamed: bool,
 }
 
 impl Outcome {
@@ -269,6 +282,7 @@ impl Outcome {
             verified,
             float_disagrees: false,
             stopped: None,
+            streamed: false,
         }
     }
     /// A float-vs-exact report (`check`, ERA): `agree = false` exits 3.
@@ -278,6 +292,7 @@ impl Outcome {
             verified: true,
             float_disagrees: !agree,
             stopped: None,
+            streamed: false,
         }
     }
     /// A report without an exact check to fail (float results, tables, factorizations).

@@ -42,6 +42,7 @@ pub fn handles(cmd: &Command, file: Option<&SystemFile>) -> bool {
 pub fn execute_typed<K: Field + 'static>(
     cmd: &Command,
     path: &Path,
+    f: &SystemFile,
     t: &TypedSystem<K>,
 ) -> Result<Outcome, Failure> {
     let (desc, has_e) = match &t.descriptor {
@@ -54,7 +55,21 @@ pub fn execute_typed<K: Field + 'static>(
             (d, false)
         }
     };
-    run_on(cmd, path, has_e, None, &desc)
+    run_on(cmd, path, (has_e, &f.signals), None, &desc)
+}
+
+/// The rows and columns of a transfer matrix by name (`outputs`, `inputs`) when the file
+/// names them (a model file: its sensors and actuators).
+fn channel_names(rep: &mut crate::report::Report, s: &crate::io::SignalNames, p: usize, m: usize) {
+    let strs = |v: &[String]| {
+        crate::report::Value::List(v.iter().cloned().map(crate::report::Value::Str).collect())
+    };
+    if let Some(o) = s.outputs.as_ref().filter(|o| o.len() == p) {
+        rep.push("outputs", strs(o));
+    }
+    if let Some(i) = s.inputs.as_ref().filter(|i| i.len() == m) {
+        rep.push("inputs", strs(i));
+    }
 }
 
 /// A cheap look at the top-level keys (the full reader validates later).
@@ -101,16 +116,22 @@ struct Run<'a> {
 impl DescriptorVisitor for Run<'_> {
     type Output = Result<Outcome, Failure>;
     fn visit<K: Field + 'static>(self, l: &LoadedDescriptor, s: &Descriptor<K>) -> Self::Output {
-        run_on(self.cmd, self.path, l.has_e, l.transfer.as_ref(), s)
+        run_on(
+            self.cmd,
+            self.path,
+            (l.has_e, &l.signals),
+            l.transfer.as_ref(),
+            s,
+        )
     }
 }
 
-/// One command on a descriptor system; `has_e`: the file gave `E`; `transfer`: the file's
-/// `G` and its realization.
+/// One command on a descriptor system; `has_e`: the file gave `E`; `signals`: the file's
+/// names of inputs and outputs; `transfer`: the file's `G` and its realization.
 fn run_on<K: Field + 'static>(
     cmd: &Command,
     path: &Path,
-    has_e: bool,
+    (has_e, signals): (bool, &crate::io::SignalNames),
     transfer: Option<&GivenTransfer>,
     s: &Descriptor<K>,
 ) -> Result<Outcome, Failure> {
@@ -166,7 +187,7 @@ fn run_on<K: Field + 'static>(
                     // its Markov parameters
                     let (g, r, ss) = if has_e {
                         let g = descriptor_transfer_matrix(sk).map_err(e)?;
-                        let r = realize_transfer(&g).map_err(e)?;
+                        let r = realize_g(sk, &g).map_err(e)?;
                         (g, sections::TfRealization::from_transfer(&r), None)
                     } else {
                         let ss =
@@ -210,7 +231,7 @@ fn run_on<K: Field + 'static>(
                     }
                     None => {
                         let g = descriptor_transfer_matrix(sq).map_err(e)?;
-                        let r = realize_transfer(&g).map_err(e)?;
+                        let r = realize_g(sq, &g).map_err(e)?;
                         (g, r)
                     }
                 };
@@ -218,6 +239,12 @@ fn run_on<K: Field + 'static>(
                 if let Some(mv) = markov {
                     rep.push("markov_verified", crate::report::Value::Bool(mv));
                 }
+                channel_names(
+                    &mut rep,
+                    signals,
+                    g.entries.len(),
+                    g.entries.first().map_or(0, Vec::len),
+                );
                 let ok = r.verified;
                 Ok(Outcome::new(rep, ok))
             }
@@ -227,4 +254,21 @@ fn run_on<K: Field + 'static>(
             }),
         }
     }
+}
+
+/// The minimal realization of `g`, the transfer matrix of the descriptor system `s`; without
+/// inputs or without outputs `g` is the empty `p x m` matrix (no entry to realize), realized
+/// by the order-0 system `D` (`p x m`).
+fn realize_g<K: Field>(
+    s: &Descriptor<K>,
+    g: &crate::system::transfer::TransferMatrix<K>,
+) -> crate::Result<crate::realization::TransferRealization<K>> {
+    let (p, m) = (s.c.nrows(), s.b.ncols());
+    if p > 0 && m > 0 {
+        return realize_transfer(g);
+    }
+    let k = s.a.field().clone();
+    let zero = |r, c| Matrix::zeros(k.clone(), r, c);
+    let s0 = StateSpace::new(zero(0, 0), zero(0, m), zero(p, 0), s.d.clone())?;
+    realize_state_space(&s0, g)
 }

@@ -118,9 +118,9 @@ pub fn bode_file<K: Field>(
         .map(|o| ins.iter().map(|i| format!("{i} \u{2192} {o}")).collect())
         .collect();
     let title = format!("{title}: Bode plot");
-    let e = |err| with_path(path, err);
-    let text = match super::float_cmds::float_abcd(t, path)? {
-        super::float_cmds::FloatAbcd::Complex([a, b, c, d]) => {
+    let sys = super::float_cmds::float_abcd(t, path)?;
+    let text = match &sys {
+        super::float_cmds::FloatAbcd::Complex([a, ..]) => {
             // the poles only refine the grid: none when the complex Schur form fails
             let n = a.nrows();
             let poles: Vec<(f64, f64)> = if n == 0 {
@@ -131,13 +131,13 @@ pub fn bode_file<K: Field>(
                     .map_or_else(Vec::new, |v| v.iter().map(|z| (z.re, z.im)).collect())
             };
             let freqs = bode_grid_two_sided(from, to, points, &poles);
-            let resp = float::freqresp_complex(&a, &b, &c, &d, &freqs).map_err(e)?;
+            let resp = super::float_cmds::float_response(t, &sys, path, &freqs)?;
             bode_svg_two_sided(&freqs, &response_table(&resp), &title, &labels)
         }
-        super::float_cmds::FloatAbcd::Real([a, b, c, d]) => {
-            let poles = float_poles(&a, path)?;
+        super::float_cmds::FloatAbcd::Real([a, ..]) => {
+            let poles = float_poles(a, path)?;
             let freqs = bode_grid(from, to, points, &poles);
-            let resp = float::freqresp(&a, &b, &c, &d, &freqs).map_err(e)?;
+            let resp = super::float_cmds::float_response(t, &sys, path, &freqs)?;
             bode_svg(&freqs, &response_table(&resp), &title, &labels)
         }
     };

@@ -2,10 +2,11 @@
 //! [--csv F]`: float eigenvalues of $A(v)$ along the parameter, in parallel, with a progress
 //! bar when stderr is a terminal.
 
+use super::sweep_stream::{CsvSink, Sink};
 use super::{Failure, Outcome};
 use crate::report::plot::sweep::{root_locus_svg, sweep_svg};
 use crate::report::{Report, Value};
-use crate::study::{ParamFamily, PointStatus, SweepResult, sweep, sweep_values};
+use crate::study::{FamilyForm, ParamFamily, PointStatus, SweepResult, sweep, sweep_values};
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -30,8 +31,27 @@ fn write(p: &Path, text: &str) -> Result<(), Failure> {
     })
 }
 
-/// Runs `sweep`.
-pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
+/// Parameter values computed per batch (each batch in parallel, then written out).
+const BATCH: usize = 4096;
+
+/// Sweeps with more points than this write their report row by row (`--format json|text` on
+/// stdout), so that memory does not grow with `--points`.
+pub const STREAM_POINTS: usize = 10_000;
+
+/// At most this many rows are kept for the plots (evenly spaced; the plots draw 1500).
+const PLOT_ROWS: usize = 15_000;
+
+/// The number of eigenvalues of the family (columns of the CSV).
+fn family_dim(fam: &ParamFamily) -> usize {
+    match &fam.form {
+        FamilyForm::First { a, .. } => a.len(),
+        FamilyForm::Second { m, .. } => 2 * m.len(),
+    }
+}
+
+/// Runs `sweep`; `stream`: the output format when the report may be written to stdout row by
+/// row (the command line; `None` in process).
+pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, Failure> {
     if !(a.from.is_finite()
         && a.to.is_finite()
         && a.from <= a.to
@@ -45,9 +65,34 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
             ),
         });
     }
-    crate::io::read_system_file(a.file)?; // the file is a valid system
+    let stream = stream.filter(|_| a.points > STREAM_POINTS);
+    if stream == Some(super::Format::Latex) {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "sweep: --format latex takes at most {STREAM_POINTS} points (got {}; use --format json or --csv)",
+                a.points
+            ),
+        });
+    }
+    // the file was read as a system by the caller ([`crate::api::System::open`]; the
+    // parameter swept may be `null`: a symbol)
     let fam = ParamFamily::from_file_at(a.file, a.param, a.at)?;
     let values = sweep_values(a.from, a.to, a.points);
+    let title = format!("sweep of {} over [{}, {}]", a.param, a.from, a.to);
+    let mut sink = match stream {
+        Some(f) => Some(Sink::start(
+            f == super::Format::Json,
+            &title,
+            a.param,
+            &values,
+        )?),
+        None => None,
+    };
+    let mut csv = match a.csv {
+        Some(p) => Some(CsvSink::start(p, a.param, family_dim(&fam))?),
+        None => None,
+    };
     let bar = std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::new(values.len() as u64);
         b.set_style(
@@ -58,27 +103,78 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
         );
         b
     });
-    let tick = |k: usize| {
-        if let Some(b) = &bar
-            && k.is_multiple_of(64)
-        {
-            b.set_position(k as u64);
-        }
+    let keep_every = values.len().div_ceil(PLOT_ROWS).max(1);
+    let plots = a.svg.is_some() || a.locus_svg.is_some();
+    let mut kept = SweepResult {
+        param: a.param.to_string(),
+        values: vec![],
+        eigenvalues: vec![],
+        status: vec![],
     };
-    let sw = sweep(&fam, &values, Some(&tick))?;
+    // points without eigenvalues (poles, singular pencils, failures): few, kept for the notes
+    let mut notes: Vec<(usize, f64, PointStatus)> = vec![];
+    let mut descriptor = false;
+    let mut stable = 0usize;
+    for (b, batch) in values.chunks(BATCH).enumerate() {
+        let offset = b * BATCH;
+        let tick = |k: usize| {
+            if let Some(bar) = &bar
+                && k.is_multiple_of(64)
+            {
+                bar.set_position((offset + k) as u64);
+            }
+        };
+        let sw = sweep(&fam, batch, Some(&tick))?;
+        let rows = batch.iter().zip(sw.eigenvalues).zip(sw.status);
+        for (k, ((v, ev), st)) in rows.enumerate() {
+            let i = offset + k;
+            descriptor |= matches!(st, PointStatus::Descriptor { .. });
+            if note_of(&st).is_some() {
+                notes.push((i, *v, st));
+            }
+            if !ev.is_empty() && ev.iter().all(|z| z.re < 0.0) {
+                stable += 1;
+            }
+            if let Some(c) = csv.as_mut() {
+                c.row(*v, &ev)?;
+            }
+            if let Some(s) = sink.as_mut() {
+                s.row(&ev)?;
+            }
+            let for_plot = plots && (i.is_multiple_of(keep_every) || i + 1 == values.len());
+            if sink.is_none() || for_plot {
+                kept.values.push(*v);
+                kept.eigenvalues.push(ev);
+                kept.status.push(st);
+            }
+        }
+    }
     if let Some(b) = bar {
         b.finish_and_clear();
+    }
+    if let Some(c) = csv {
+        c.finish()?;
     }
     let name = fam
         .name
         .clone()
         .unwrap_or_else(|| a.file.display().to_string());
     let xlabel = format!("{} (parameter)", a.param);
+    let drawn = match (plots, sink.is_none() && values.len() > PLOT_ROWS) {
+        (false, _) => SweepResult {
+            param: String::new(),
+            values: vec![],
+            eigenvalues: vec![],
+            status: vec![],
+        },
+        (true, true) => thin(&kept, keep_every),
+        (true, false) => kept.clone(),
+    };
     if let Some(p) = a.svg {
         write(
             p,
             &sweep_svg(
-                &sw,
+                &drawn,
                 &format!("{name}: eigenvalues against {}", a.param),
                 &xlabel,
                 &[],
@@ -88,27 +184,40 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
     if let Some(p) = a.locus_svg {
         write(
             p,
-            &root_locus_svg(&sw, &format!("{name}: root locus in {}", a.param)),
+            &root_locus_svg(&drawn, &format!("{name}: root locus in {}", a.param)),
         )?;
     }
-    if let Some(p) = a.csv {
-        write(p, &sw.to_csv())?;
-    }
-    let r = Report::titled(format!("sweep of {} over [{}, {}]", a.param, a.from, a.to))
-        .str("param", a.param)
-        .int("points", values.len());
-    let r = status_fields(r, &sw, a.param);
-    let stable = sw
-        .eigenvalues
+    let notes: Vec<Value> = notes
         .iter()
-        .filter(|ev| !ev.is_empty() && ev.iter().all(|z| z.re < 0.0))
-        .count();
+        .filter_map(|(i, v, st)| note_value(*i, *v, st, a.param))
+        .collect();
+    if let Some(s) = sink {
+        let method = Value::Str(method_of(descriptor).into());
+        s.finish(&[("method", method), ("notes", Value::List(notes))], stable)?;
+        let mut out = Outcome::plain(Report::titled(title));
+        out.streamed = true;
+        return Ok(out);
+    }
+    let mut r = Report::titled(title)
+        .str("param", a.param)
+        .int("points", values.len())
+        .str("method", method_of(descriptor));
+    if descriptor {
+        let inf = kept.status.iter().map(|s| match s {
+            PointStatus::Descriptor { infinite } => Value::Int(*infinite as i64),
+            _ => Value::Int(0),
+        });
+        r = r.list("infinite_eigenvalues", inf.collect());
+    }
+    if !notes.is_empty() {
+        r = r.list("notes", notes);
+    }
     let r = r
         .int("stable_points", stable)
         .list("values", values.iter().map(|v| Value::Float(*v)).collect())
         .list(
             "eigenvalues_approx",
-            sw.eigenvalues
+            kept.eigenvalues
                 .iter()
                 .map(|ev| {
                     Value::List(
@@ -122,52 +231,51 @@ pub fn run(a: &SweepArgs<'_>) -> Result<Outcome, Failure> {
     Ok(Outcome::plain(r))
 }
 
-/// `method`, and where needed `infinite_eigenvalues[]` (per point) and `notes[]` (one per
-/// point without eigenvalues: `index`, `value`, `reason`, `note`).
-fn status_fields(r: Report, sw: &SweepResult, param: &str) -> Report {
-    let descriptor = sw
-        .status
-        .iter()
-        .any(|s| matches!(s, PointStatus::Descriptor { .. }));
-    let method = if descriptor {
+/// Every `step`-th row of `sw` and its last row (the rows drawn).
+fn thin(sw: &SweepResult, step: usize) -> SweepResult {
+    let n = sw.values.len();
+    let keep = |i: &usize| i.is_multiple_of(step) || i + 1 == n;
+    SweepResult {
+        param: sw.param.clone(),
+        values: (0..n).filter(keep).map(|i| sw.values[i]).collect(),
+        eigenvalues: (0..n)
+            .filter(keep)
+            .map(|i| sw.eigenvalues[i].clone())
+            .collect(),
+        status: (0..n).filter(keep).map(|i| sw.status[i]).collect(),
+    }
+}
+
+/// How the eigenvalues were computed (`method`).
+fn method_of(descriptor: bool) -> &'static str {
+    if descriptor {
         "finite eigenvalues of the pencil det(sE - A) = 0: their number exact, their values by shift-and-invert in floating point; eigenvalues of A(v) where E(v) is invertible"
     } else {
         "eigenvalues of A(v) in floating point (balanced real Schur)"
-    };
-    let mut r = r.str("method", method);
-    if descriptor {
-        let inf = sw.status.iter().map(|s| match s {
-            PointStatus::Descriptor { infinite } => Value::Int(*infinite as i64),
-            _ => Value::Int(0),
-        });
-        r = r.list("infinite_eigenvalues", inf.collect());
     }
-    let notes: Vec<Value> = sw
-        .status
-        .iter()
-        .zip(&sw.values)
-        .enumerate()
-        .filter_map(|(i, (s, v))| {
-            let (reason, why) = match s {
-                PointStatus::Pole => ("pole", "an entry of the matrices has a pole"),
-                PointStatus::SingularPencil => (
-                    "singular_pencil",
-                    "det(sE - A) = 0 for every s (a singular pencil)",
-                ),
-                PointStatus::Failed => ("failed", "the float eigenvalue computation failed"),
-                _ => return None,
-            };
-            Some(Value::Obj(
-                Report::new()
-                    .int("index", i)
-                    .float("value", *v)
-                    .str("reason", reason)
-                    .str("note", format!("{param} = {v}: {why}; no eigenvalues")),
-            ))
-        })
-        .collect();
-    if !notes.is_empty() {
-        r = r.list("notes", notes);
+}
+
+/// `(reason, why)` of a point without eigenvalues; `None` for a point that has them.
+fn note_of(s: &PointStatus) -> Option<(&'static str, &'static str)> {
+    match s {
+        PointStatus::Pole => Some(("pole", "an entry of the matrices has a pole")),
+        PointStatus::SingularPencil => Some((
+            "singular_pencil",
+            "det(sE - A) = 0 for every s (a singular pencil)",
+        )),
+        PointStatus::Failed => Some(("failed", "the float eigenvalue computation failed")),
+        _ => None,
     }
-    r
+}
+
+/// One entry of `notes[]`: `index`, `value`, `reason`, `note`.
+fn note_value(i: usize, v: f64, s: &PointStatus, param: &str) -> Option<Value> {
+    let (reason, why) = note_of(s)?;
+    Some(Value::Obj(
+        Report::new()
+            .int("index", i)
+            .float("value", v)
+            .str("reason", reason)
+            .str("note", format!("{param} = {v}: {why}; no eigenvalues")),
+    ))
 }

@@ -2,7 +2,12 @@
 use clap::Parser;
 use std::io::Write;
 
+/// Every allocation is counted against `--max-memory` (over it: one line, exit 2).
+#[global_allocator]
+static ALLOC: exactlti::cli::memory::Counting = exactlti::cli::memory::Counting;
+
 fn main() {
+    exactlti::cli::memory::set_max_memory_mib(exactlti::cli::memory::DEFAULT_MAX_MEMORY_MIB);
     std::panic::set_hook(Box::new(|info| {
         let msg = info
             .payload()

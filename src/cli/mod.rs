@@ -7,26 +7,19 @@
 //! internal failure (an exact verification that failed). Long exact work is bounded by
 //! `--max-seconds` (default 600).
 
+pub mod memory;
 mod progress;
 
 pub use crate::api::{
-    Command, Failure, LinalgOp, MethodArg, Outcome, PolyCmd, TimeOpts, budget, execute, plots,
+    Command, Failure, Format, LinalgOp, MethodArg, Outcome, PolyCmd, TimeOpts, budget, execute,
+    plots,
 };
 
 use crate::api::runner::{Poll, Worker};
 use crate::report::Report;
-use clap::{Parser, ValueEnum};
+use clap::Parser;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
-
-/// Output formats.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
-pub enum Format {
-    #[default]
-    Text,
-    Json,
-    Latex,
-}
 
 #[derive(Parser, Debug)]
 #[command(
@@ -53,6 +46,10 @@ pub struct Cli {
     /// Upper bound on the wall time in seconds (a number > 0); exceeded: exit 2.
     #[arg(long, global = true, default_value_t = 600.0, value_name = "SECONDS", value_parser = crate::api::parse_seconds, allow_hyphen_values = true)]
     pub max_seconds: f64,
+    /// Memory budget in MiB (0: none). An allocation past it stops the command with one line
+    /// on stderr and exit 2 instead of exhausting the machine (see `exactlti::cli::memory`).
+    #[arg(long, global = true, default_value_t = memory::DEFAULT_MAX_MEMORY_MIB, value_name = "MIB")]
+    pub max_memory: u64,
     /// Keep these parameters as symbols (comma separated; alone: every parameter).
     #[arg(long, global = true, num_args = 0..=1, default_missing_value = "", value_name = "NAMES")]
     pub symbolic: Option<String>,
@@ -176,6 +173,7 @@ pub fn run(cli: Cli) -> i32 {
     let standalone = cli.standalone;
     let full = cli.full;
     let limit = cli.max_seconds;
+    memory::set_max_memory_mib(cli.max_memory);
     let (tx, rx) = mpsc::channel();
     let streams = format == Format::Text && matches!(cli.command, Command::Analyze { .. });
     let ctx = crate::api::RunContext {
@@ -183,6 +181,7 @@ pub fn run(cli: Cli) -> i32 {
         max_seconds: limit,
         events: streams.then_some(tx),
         full,
+        stdout: Some(format),
     };
     let deadline = start + Duration::from_secs_f64(limit.clamp(1e-3, 1e7));
     let work = move || {
@@ -202,9 +201,21 @@ pub fn run(cli: Cli) -> i32 {
     };
     let mut printer = progress::Printer::new(full);
     let tick = Duration::from_millis(if streams { 20 } else { 100 });
+    let stopped = |printer: &mut progress::Printer| {
+        printer.clear();
+        say(&format!(
+            "stopped after --max-seconds {limit}: the exact computation did not finish in time"
+        ));
+        2
+    };
     loop {
-        // the streamed sections first (in order), then the result
+        // the streamed sections first (in order), then the result; what arrives after the
+        // bound (this thread was not scheduled in time) is not printed: --max-seconds holds
+        // however the threads are scheduled
         while let Ok(ev) = rx.try_recv() {
+            if Instant::now() > deadline {
+                return stopped(&mut printer);
+            }
             if let Err(e) = printer.event(ev) {
                 printer.clear();
                 say(&format!("cannot write the output: {e}"));
@@ -213,6 +224,7 @@ pub fn run(cli: Cli) -> i32 {
         }
         match worker.poll(tick) {
             Poll::Pending => printer.tick(start.elapsed()),
+            Poll::Done(_) if Instant::now() > deadline => return stopped(&mut printer),
             Poll::Done(r) => {
                 for ev in rx.try_iter() {
                     if let Err(e) = printer.event(ev) {
@@ -224,13 +236,7 @@ pub fn run(cli: Cli) -> i32 {
                 printer.clear();
                 return finish(r, &mut printer, format, standalone);
             }
-            Poll::TimedOut => {
-                printer.clear();
-                say(&format!(
-                    "stopped after --max-seconds {limit}: the exact computation did not finish in time"
-                ));
-                return 2;
-            }
+            Poll::TimedOut => return stopped(&mut printer),
             Poll::Panicked(_) => {
                 printer.clear();
                 say("internal failure (the computation panicked)");
@@ -249,7 +255,9 @@ fn finish(
 ) -> i32 {
     match r {
         Ok(out) => {
-            let written = if printer.streamed() {
+            let written = if out.streamed {
+                Ok(())
+            } else if printer.streamed() {
                 printer.rest(&out.report)
             } else {
                 write_stdout(&render_full(&out.report, format, standalone, printer.full))

@@ -28,6 +28,16 @@ pub fn reserved_meaning(name: &str) -> Option<&'static str> {
     }
 }
 
+/// The refusal of a reserved name ([`RESERVED`]) as a variable.
+pub(crate) fn reserved_message(name: &str) -> Option<String> {
+    reserved_meaning(name).map(|m| {
+        format!(
+            "'{name}' is {m}, not a variable: polynomials here have rational coefficients \
+             (no i, sqrt or pi)"
+        )
+    })
+}
+
 /// End (exclusive) of the number starting at `i`; an exponent with more than
 /// `max_exp_digits` digits is not taken (the number then ends before `e`).
 pub fn number_end<T: Copy + Into<char>>(s: &[T], i: usize, max_exp_digits: usize) -> usize {

@@ -101,6 +101,18 @@ pub fn era<T: FloatScalar>(
     order: Option<usize>,
     tol: &Tol,
 ) -> Result<FloatRealization<T>> {
+    era_scaled(markov, order, 0.0, tol)
+}
+
+/// [`era`] with the rank threshold relative to `scale` (at least $\sigma_1(H_0)$): the size
+/// the Markov parameters have before cancellation, so that Markov parameters that are all
+/// rounding noise give order 0, not a full rank of noise.
+fn era_scaled<T: FloatScalar>(
+    markov: &[DMatrix<T>],
+    order: Option<usize>,
+    scale: f64,
+    tol: &Tol,
+) -> Result<FloatRealization<T>> {
     if markov.len() < 3 {
         return Err(Error::Invalid(format!(
             "era: need at least 3 Markov parameters (D, CB, CAB), got {}",
@@ -166,7 +178,7 @@ pub fn era<T: FloatScalar>(
         });
         (sv, svd.v.columns(0, k).into_owned(), v)
     };
-    let gap = decide_rank("rank H0", &sv, 0.0, tol);
+    let gap = decide_rank("rank H0", &sv, scale, tol);
     let maxrank = sv.len();
     let n = order.unwrap_or(gap.rank);
     if n > maxrank {
@@ -194,7 +206,7 @@ pub fn era<T: FloatScalar>(
     // Markov parameters of a finite system give a Hankel matrix whose discarded singular
     // values are rounding noise; dropped values far above that floor mean the fast modes
     // swamped the slow ones (the paper's sec. 4 ERA failure), so the order is not trusted.
-    let floor = f64::EPSILON * sv.first().copied().unwrap_or(0.0) * sv.len() as f64;
+    let floor = f64::EPSILON * scale.max(sv.first().copied().unwrap_or(0.0)) * sv.len() as f64;
     let noise_only = gap.dropped <= tol.gap.max(1.0).sqrt() * floor;
     let truth = if gap.truth == Truth::True && n == gap.rank && !saturated && noise_only {
         Truth::True
@@ -294,7 +306,7 @@ pub fn era_system<T: FloatScalar>(
     let run = |k: usize| -> Result<FloatRealization<T>> {
         check_hankel_size(k.saturating_mul(p), k.saturating_mul(m))?;
         let mk = markov_parameters(&a_s, b, c, d, 2 * k + 1)?;
-        era(&mk, None, tol)
+        era_scaled(&mk, None, markov_scale(&a_s, b, c, 2 * k), tol)
     };
     let mut ranks = Vec::new();
     let (mut best, stabilised) = if let Some(k) = hankel {
@@ -356,4 +368,19 @@ pub fn era_system<T: FloatScalar>(
         ranks,
         stabilised,
     })
+}
+
+/// The size of the Markov parameters $C A^{j-1} B$ before cancellation:
+/// $\|C\|_F \max_{j < k} \|A^j B\|_F$. Their rounding errors are $\varepsilon$ times this
+/// size, so a Hankel matrix whose singular values are all at that level has rank 0 (a zero
+/// transfer function: the uncontrollable or unobservable states cancel in $C A^j B$).
+fn markov_scale<T: FloatScalar>(a: &DMatrix<T>, b: &DMatrix<T>, c: &DMatrix<T>, k: usize) -> f64 {
+    let fro = |m: &DMatrix<T>| m.iter().map(|x| x.modulus().powi(2)).sum::<f64>().sqrt();
+    let mut x = b.clone();
+    let mut most = fro(&x);
+    for _ in 1..k {
+        x = a * &x;
+        most = most.max(fro(&x));
+    }
+    fro(c) * most
 }

@@ -6,6 +6,7 @@
 //! | entry point  | returns                               |
 //! |--------------|---------------------------------------|
 //! | [`freqresp`] | one `p x m` complex matrix per frequency |
+//! | [`freqresp_descriptor`] | the same for $E\dot x = Ax + Bu$: $C(j\omega E - A)^{-1}B + D$ on the pencil |
 
 use nalgebra::DMatrix;
 use nalgebra::linalg::LU;
@@ -67,6 +68,58 @@ pub fn freqresp_complex(
     d: &DMatrix<Complex<f64>>,
     freqs_hz: &[f64],
 ) -> Result<Vec<DMatrix<Complex<f64>>>> {
+    freqresp_pencil(None, a, b, c, d, freqs_hz)
+}
+
+/// The frequency response of a descriptor system $E\dot x = Ax + Bu$, $y = Cx + Du$,
+/// evaluated on the pencil: $G(j\omega) = C(j\omega E - A)^{-1}B + D$, one complex LU
+/// factorisation of $j\omega E - A$ per frequency. No standard form is formed, so a badly
+/// scaled conversion ($E^{-1}$ or a Weierstrass basis) cannot spoil the values.
+///
+/// # Examples
+/// ```
+/// use exactlti::float::freqresp_descriptor;
+/// use nalgebra::DMatrix;
+/// use num_complex::Complex;
+/// // 2 x' = -x + u: G(s) = 1 / (2s + 1), G(0) = 1.
+/// let z = |x: f64| DMatrix::from_element(1, 1, Complex::new(x, 0.0));
+/// let g = freqresp_descriptor(&z(2.0), &z(-1.0), &z(1.0), &z(1.0), &z(0.0), &[0.0]).unwrap();
+/// assert!((g[0][(0, 0)] - Complex::new(1.0, 0.0)).norm() < 1e-15);
+/// ```
+///
+/// # Errors
+/// As [`freqresp`]; [`Error::Shape`] when `E` is not `n x n`; [`Error::Singular`] at a
+/// finite eigenvalue of the pencil (or for a singular pencil).
+pub fn freqresp_descriptor(
+    e: &DMatrix<Complex<f64>>,
+    a: &DMatrix<Complex<f64>>,
+    b: &DMatrix<Complex<f64>>,
+    c: &DMatrix<Complex<f64>>,
+    d: &DMatrix<Complex<f64>>,
+    freqs_hz: &[f64],
+) -> Result<Vec<DMatrix<Complex<f64>>>> {
+    if e.shape() != a.shape() {
+        return Err(Error::Shape {
+            op: "freqresp E",
+            expected: a.shape(),
+            found: e.shape(),
+        });
+    }
+    if e.iter().any(|z| !z.re.is_finite() || !z.im.is_finite()) {
+        return Err(Error::Invalid("freqresp: non-finite entry in E".into()));
+    }
+    freqresp_pencil(Some(e), a, b, c, d, freqs_hz)
+}
+
+/// $C(j\omega E - A)^{-1}B + D$ with $E = I$ when `e` is `None`.
+fn freqresp_pencil(
+    e: Option<&DMatrix<Complex<f64>>>,
+    a: &DMatrix<Complex<f64>>,
+    b: &DMatrix<Complex<f64>>,
+    c: &DMatrix<Complex<f64>>,
+    d: &DMatrix<Complex<f64>>,
+    freqs_hz: &[f64],
+) -> Result<Vec<DMatrix<Complex<f64>>>> {
     let (n, _, _) = check_system("freqresp", a, b, c, d)?;
     if freqs_hz.iter().any(|f| !f.is_finite()) {
         return Err(Error::Invalid("freqresp: non-finite frequency".into()));
@@ -79,10 +132,16 @@ pub fn freqresp_complex(
     }
     for &f in freqs_hz {
         let jw = Complex::new(0.0, 2.0 * std::f64::consts::PI * f);
-        let mut m = -a;
-        for i in 0..n {
-            m[(i, i)] += jw;
-        }
+        let m = match e {
+            Some(e) => e * jw - a,
+            None => {
+                let mut m = -a;
+                for i in 0..n {
+                    m[(i, i)] += jw;
+                }
+                m
+            }
+        };
         let x = LU::new(m).solve(b).ok_or(Error::Singular)?;
         if x.iter().any(|z| !z.re.is_finite() || !z.im.is_finite()) {
             return Err(Error::Singular);

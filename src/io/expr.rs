@@ -26,7 +26,8 @@
 //! never parameter names.
 //!
 //! Every input gives a value or an [`ExprError`] in time bounded by the input length:
-//! exponents satisfy $|n| \le 10^4$ (also in literals such as `1e-3`), literals have at most
+//! expressions have at most [`MAX_EXPR_LEN`] characters (longer ones are refused before
+//! parsing), exponents satisfy $|n| \le 10^4$ (also in literals such as `1e-3`), literals have at most
 //! 4000 characters, intermediate numbers stay below $2^{14}$ bits (about 4900 digits),
 //! nesting below 256 levels, radicands below $10^{18}$ (so the square-free split is exact).
 //!
@@ -40,10 +41,15 @@ pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
 use crate::field::scan::{identifier_end, number_end};
 use crate::field::{QuadraticField, Rational, parse_rational};
+use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
 /// Longest accepted number literal (characters).
 pub const MAX_NUMBER_LEN: usize = 4_000;
+/// Longest accepted expression (characters), checked before it is read: a longer entry is
+/// refused at once (a 300 KB product took 20 s to reach the bit bound). Also the bound of
+/// `G` entries and of symbolic entries.
+pub const MAX_EXPR_LEN: usize = 10_000;
 /// Largest accepted nesting depth of parentheses and unary operators.
 pub const MAX_DEPTH: usize = 256;
 
@@ -197,11 +203,54 @@ pub(crate) fn referenced_names(text: &str) -> Vec<String> {
     names
 }
 
+/// Refuses an expression longer than [`MAX_EXPR_LEN`] characters (before any parsing).
+///
+/// # Errors
+/// The length and the bound.
+pub fn too_long(text: &str) -> Result<(), ExprError> {
+    let n = text.chars().count();
+    if text.len() > MAX_EXPR_LEN && n > MAX_EXPR_LEN {
+        return err(format!(
+            "expression of {n} characters (at most {MAX_EXPR_LEN}): not read"
+        ));
+    }
+    Ok(())
+}
+
+/// The value of a plain `[-]digits[/digits]` (at most 18 digits each, a non-zero
+/// denominator, no spaces): the shape of a user's decimal data written as fractions,
+/// read without the parser and with one word gcd (issue 29: 10^4 entries of a rational
+/// matrix); `None` for every other text (the parser decides it, with its messages).
+fn plain_fraction(text: &str) -> Option<Rational> {
+    fn digits(s: &str) -> Option<i64> {
+        let ok = !s.is_empty() && s.len() <= 18 && s.bytes().all(|b| b.is_ascii_digit());
+        ok.then(|| s.parse().ok()).flatten()
+    }
+    let (neg, body) = match text.as_bytes().first()? {
+        b'-' => (true, &text[1..]),
+        _ => (false, text),
+    };
+    let (p, q) = match body.split_once('/') {
+        Some((p, q)) => (digits(p)?, digits(q)?),
+        None => (digits(body)?, 1),
+    };
+    if q == 0 {
+        return None;
+    }
+    let g = num_integer::Integer::gcd(&p, &q);
+    let p = if neg { -(p / g) } else { p / g };
+    Some(Rational::new_raw(BigInt::from(p), BigInt::from(q / g)))
+}
+
 /// Evaluates `text`; `lookup` gives the value of a parameter name (`None`: unknown).
 pub(crate) fn eval_with(
     text: &str,
     lookup: &dyn Fn(&str) -> Option<Value>,
 ) -> Result<Value, ExprError> {
+    too_long(text)?;
+    if let Some(q) = plain_fraction(text) {
+        return Ok(Value::rational(q));
+    }
     let toks = lex(text)?;
     if toks.is_empty() {
         return err("empty expression");
@@ -417,6 +466,67 @@ mod tests {
             .map(|(x, g)| g.fmt_scalar(&x))
             .map_err(|e| e.msg)
     }
+    /// The plain-fraction shortcut gives what the parser gives, on a generator of the
+    /// shapes it takes (signs, zeros, long digit strings) and of near misses it leaves to the
+    /// parser (spaces, a plus sign, a zero denominator, 19 digits, two slashes).
+    #[test]
+    fn plain_fractions_as_the_parser() {
+        let parsed = |s: &str| {
+            let mut p = Parser {
+                text: s,
+                toks: lex(s).unwrap(),
+                pos: 0,
+                depth: 0,
+                lookup: &|_: &str| None,
+            };
+            p.expr().map(|v| v.a).map_err(|e| e.msg)
+        };
+        let mut g = crate::rng::SplitMix64(29);
+        for _ in 0..500 {
+            let p = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
+            let q = g.next_u64() % 10u64.pow((g.next_u64() % 19) as u32);
+            let sign = if g.next_u64().is_multiple_of(2) {
+                "-"
+            } else {
+                ""
+            };
+            for s in [
+                format!("{sign}{p}/{q}"),
+                format!("{sign}{p}"),
+                format!("{sign}0{p}"),
+            ] {
+                let want = parsed(&s);
+                if let Some(x) = plain_fraction(&s) {
+                    assert_eq!(Ok(x), want, "{s}");
+                }
+                assert_eq!(
+                    eval_with(&s, &|_| None).map(|v| v.a).map_err(|e| e.msg),
+                    want
+                );
+            }
+            let s = format!("{sign}{p}/{q}");
+            assert_eq!(
+                plain_fraction(&s).is_some(),
+                q != 0,
+                "{s} takes the shortcut"
+            );
+        }
+        for s in [
+            "1 /2",
+            "+1/2",
+            "1/0",
+            "1/2/3",
+            "1234567890123456789/2",
+            "-",
+            "/2",
+            "1/",
+        ] {
+            assert_eq!(plain_fraction(s), None, "{s}");
+        }
+        assert_eq!(ev("1/0").unwrap_err(), parsed("1/0").unwrap_err());
+        assert_eq!(ev("-6/4").unwrap(), "-3/2");
+    }
+
     #[test]
     fn examples() {
         assert_eq!(ev("1 + 2*3").unwrap(), "7");

@@ -35,7 +35,7 @@ use super::{
 use crate::error::Error;
 use crate::field::{Field, Q, QuadraticField};
 use crate::matrix::Matrix;
-use crate::multibody::{Assembly, Model, assemble, index_one_standard};
+use crate::multibody::{Assembly, Model, assemble};
 use crate::ratfunc::RatFuncField;
 use crate::realization::descriptor_to_standard;
 use crate::system::{Descriptor, StateSpace};
@@ -307,26 +307,15 @@ fn loaded<K: Field>(
 ) -> Result<LoadedSystem, InputError> {
     let a: Assembly<K> = assemble(m).map_err(|e| InputError::file(name, e.to_string()))?;
     let d = a.descriptor.clone();
-    let get = |key: &str| match key {
-        "E" => Some(d.e.clone()),
-        "A" => Some(d.a.clone()),
-        "B" => Some(d.b.clone()),
-        "C" => Some(d.c.clone()),
-        "D" => Some(d.d.clone()),
-        _ => None,
-    };
-    // the index-1 elimination first (cheap, also over Q(p)); the general conversion else
-    let (typed, states) = match index_one_standard(&d) {
-        Some((ss, kept)) => {
-            let names = kept.iter().map(|&i| a.state_names[i].clone()).collect();
-            let t = TypedSystem {
-                a_raw: d.a.clone(),
-                descriptor: Some(d.clone()),
-                ss,
-            };
-            (t, Some(names))
-        }
-        None => (typed_from(name, &get)?, None),
+    let sf = descriptor_to_standard(&d).map_err(|e| InputError::file(name, e.to_string()))?;
+    let states = sf
+        .states
+        .as_ref()
+        .map(|st| st.iter().map(|&i| a.state_names[i].clone()).collect());
+    let typed = TypedSystem {
+        a_raw: d.a.clone(),
+        descriptor: Some(d),
+        ss: sf.system,
     };
     let signals = SignalNames {
         inputs: Some(a.input_names.clone()),

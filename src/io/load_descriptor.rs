@@ -9,10 +9,9 @@
 //! | [`load_descriptor_path`] | a file → [`LoadedDescriptor`] |
 //! | [`LoadedDescriptor::run`] | calls a [`DescriptorVisitor`] over the concrete field |
 
-use super::transfer_key::{eval_params, realize_g, scalar_text};
+use super::transfer_key::realize_g;
 use super::{FromScalars, Ground, InputError, SystemFile};
-use crate::field::{Field, Q, QuadraticField, Rational};
-use crate::io::transfer_expr::parse_rational_function;
+use crate::field::{Field, Q, QuadraticField};
 use crate::matrix::Matrix;
 use crate::realization::TransferRealization;
 use crate::system::Descriptor;
@@ -39,6 +38,8 @@ pub struct LoadedDescriptor {
     /// A rectangular pencil `(A, E)` (a file with only `A`, `E` and a non-square `A`, over
     /// $\mathbb{Q}$): only `pencil` accepts it; `system` is then empty.
     pub pencil: Option<(Matrix<Q>, Matrix<Q>)>,
+    /// The channel names the file gives (a model file: its actuators and sensors).
+    pub signals: super::SignalNames,
 }
 
 /// Work on a loaded descriptor system, generic over the field.
@@ -109,14 +110,18 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
     if let super::raw::Raw::Table(entries) = &raw {
         super::keys::check_keys(&name, &super::keys::keys_of(entries))?;
     }
-    let json = Some(raw.to_json());
-    if let Some(g) = json.as_ref().and_then(|v| v.get("G")) {
-        return load_g(&name, g, json.as_ref().and_then(|v| v.get("parameters")));
-    }
-    if let Some(v) = json.as_ref()
-        && let Some(l) = rectangular_pencil(&name, v)?
-    {
-        return Ok(l);
+    if let super::raw::Raw::Table(entries) = &raw {
+        if let Some((_, g)) = entries.iter().find(|(k, _)| k == "G") {
+            let params = entries.iter().find(|(k, _)| k == "parameters");
+            return load_g(
+                &name,
+                &g.to_json(),
+                params.map(|(_, p)| p.to_json()).as_ref(),
+            );
+        }
+        if let Some(l) = rectangular_pencil(&name, entries)? {
+            return Ok(l);
+        }
     }
     let f = super::system_file::validate(raw, &name)?;
     let has_e = f.e.is_some();
@@ -133,80 +138,51 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
         has_e,
         transfer: None,
         pencil: None,
+        signals: f.signals.clone(),
     })
 }
 
-/// A rational matrix from a JSON key (constant entries).
-fn rational_matrix(
-    name: &str,
-    key: &str,
-    v: &serde_json::Value,
-    params: &[(String, Rational)],
-) -> Result<Matrix<Q>, InputError> {
-    let rows = v
-        .as_array()
-        .ok_or_else(|| InputError::key(name, key, "expected a list of rows"))?;
-    let mut out = Vec::new();
-    for (i, row) in rows.iter().enumerate() {
-        let row = row
-            .as_array()
-            .ok_or_else(|| InputError::key(name, key, format!("row {} is not a list", i + 1)))?;
-        let mut r = Vec::new();
-        for (j, x) in row.iter().enumerate() {
-            let bad = |m: String| InputError::entry(name, key, i + 1, j + 1, m);
-            let text = scalar_text(x).ok_or_else(|| bad("expected a number or a string".into()))?;
-            let f = parse_rational_function(&text, params).map_err(|e| bad(e.to_string()))?;
-            if f.num.deg() > 0 || f.den.deg() > 0 {
-                return Err(bad("must be a constant (s is not allowed here)".into()));
-            }
-            r.push(f.num.coeff(0) / f.den.coeff(0));
-        }
-        out.push(r);
-    }
-    Matrix::from_rows(Q, out).map_err(|e| InputError::key(name, key, e.to_string()))
-}
-
-/// A file with only `A` (non-square) and optionally `E`: a rectangular pencil.
+/// A file with only `A` (non-square) and optionally `E`: a rectangular pencil. Its
+/// matrices are read by the same reader as every system file's (arrays of rows or
+/// MATLAB-style strings, entries over `parameters`).
 fn rectangular_pencil(
     name: &str,
-    v: &serde_json::Value,
+    entries: &[(String, super::raw::Raw)],
 ) -> Result<Option<LoadedDescriptor>, InputError> {
-    let Some(obj) = v.as_object() else {
-        return Ok(None);
-    };
-    let Some(a) = obj.get("A") else {
-        return Ok(None);
-    };
-    let square = a.as_array().is_some_and(|rows| {
-        rows.iter()
-            .all(|r| r.as_array().is_some_and(|r| r.len() == rows.len()))
-    });
-    if square
-        || ["B", "C", "D", "M", "L", "K", "F"]
-            .iter()
-            .any(|k| obj.contains_key(*k))
-    {
+    let has = |k: &str| entries.iter().any(|(n, _)| n == k);
+    if !has("A") || ["B", "C", "D", "M", "L", "K", "F"].iter().any(|k| has(k)) {
         return Ok(None);
     }
-    let params = eval_params(name, obj.get("parameters"))?;
-    let a = rational_matrix(name, "A", a, &params)?;
-    let e = match obj.get("E") {
-        Some(e) => rational_matrix(name, "E", e, &params)?,
-        None => {
-            return Err(InputError::key(
-                name,
-                "E",
-                "a non-square A needs E of the same shape",
-            ));
-        }
+    let (ms, _) = super::system_file::matrices_of_table(name, entries, &["A", "E"])?;
+    let [Some(a), e] = <[Option<super::MatrixEntries>; 2]>::try_from(ms).expect("two keys") else {
+        return Ok(None);
     };
-    if e.shape() != a.shape() {
+    if a.nrows == a.ncols {
+        return Ok(None);
+    }
+    let Some(e) = e else {
         return Err(InputError::key(
             name,
             "E",
-            format!("must be {}x{} like A", a.nrows(), a.ncols()),
+            "a non-square A needs E of the same shape",
+        ));
+    };
+    if (e.nrows, e.ncols) != (a.nrows, a.ncols) {
+        return Err(InputError::key(
+            name,
+            "E",
+            format!("must be {}x{} like A", a.nrows, a.ncols),
         ));
     }
+    let rational = |key: &str, m: &super::MatrixEntries| match m.to_rational_rows() {
+        Some(_) => Ok(Q.matrix_from_entries(m)),
+        None => Err(InputError::key(
+            name,
+            key,
+            "a rectangular pencil must have rational entries",
+        )),
+    };
+    let (a, e) = (rational("A", &a)?, rational("E", &e)?);
     let z = |r, c| Matrix::zeros(Q, r, c);
     Ok(Some(LoadedDescriptor {
         path: name.to_string(),
@@ -216,6 +192,7 @@ fn rectangular_pencil(
         has_e: true,
         transfer: None,
         pencil: Some((a, e)),
+        signals: Default::default(),
     }))
 }
 
@@ -232,6 +209,7 @@ fn load_g(
         has_e,
         transfer: Some((tm, r)),
         pencil: None,
+        signals: Default::default(),
     })
 }
 
@@ -255,6 +233,11 @@ pub fn model_descriptor(
                 has_e: true,
                 transfer: None,
                 pencil: None,
+                signals: super::SignalNames {
+                    inputs: Some(a.input_names),
+                    outputs: Some(a.output_names),
+                    states: Some(a.state_names),
+                },
             })
         }
         super::model_file::ModelAny::RatFunc(m) => Err(InputError::file(

@@ -1,5 +1,10 @@
 //! Reading input files with a size cap: an endless or huge file (`/dev/zero`, a log file
 //! given by mistake) is refused after [`MAX_FILE_BYTES`] bytes instead of filling memory.
+//!
+//! A file that is not a regular file (a pipe: `/dev/stdin`, `<(...)`, a FIFO; `-` means
+//! stdin) can be read only once, but a command may look at its file more than once (its
+//! keys, then the system). Such a file is read once, streamed with the same cap, and its text
+//! is kept for the rest of the process: every later read of the same path gets the same text.
 
 use super::InputError;
 use std::io::Read;
@@ -47,9 +52,37 @@ pub fn read_text(path: &Path) -> Result<String, InputError> {
 /// # Errors
 /// As [`read_text`].
 pub fn read_text_capped(path: &Path, cap: u64) -> Result<String, InputError> {
+    let stdin = path.as_os_str() == "-";
+    let regular = !stdin && std::fs::metadata(path).is_ok_and(|m| m.is_file());
+    if regular {
+        return read_once(path, cap);
+    }
+    let key = path.to_path_buf();
+    let mut kept = KEPT
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some(t) = kept.iter().find(|(p, _)| *p == key) {
+        return t.1.clone();
+    }
+    let text = read_once(path, cap);
+    kept.push((key, text.clone()));
+    text
+}
+
+type Kept = Vec<(std::path::PathBuf, Result<String, InputError>)>;
+
+/// The texts of the non-regular files read so far (see the module docs).
+static KEPT: std::sync::Mutex<Kept> = std::sync::Mutex::new(Vec::new());
+
+/// Reads `path` (`-`: stdin) once, at most `cap` bytes.
+fn read_once(path: &Path, cap: u64) -> Result<String, InputError> {
     let shown = path.display().to_string();
     let fail = |m: String| InputError::file(&shown, m).with_kind(super::InputErrorKind::Read);
-    let f = std::fs::File::open(path).map_err(|e| fail(format!("cannot read the file: {e}")))?;
+    let f: Box<dyn Read> = if path.as_os_str() == "-" {
+        Box::new(std::io::stdin())
+    } else {
+        Box::new(std::fs::File::open(path).map_err(|e| fail(format!("cannot read the file: {e}")))?)
+    };
     let mut bytes = Vec::new();
     f.take(cap + 1)
         .read_to_end(&mut bytes)

@@ -28,7 +28,7 @@ use super::keys::{check_keys, keys_of};
 use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
 use super::raw::{Raw, from_json_text, from_toml_text};
 pub use super::refusal;
-use super::system_file::validate;
+use super::system_file::{reserved_symbol, validate};
 use super::{Ground, InputError, SignalNames, SystemFile, SystemFormat, split_matlab_matrix};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
@@ -248,19 +248,6 @@ pub fn declares_symbols(text: &str, format: SystemFormat, name: &str) -> bool {
     })
 }
 
-/// Refuses a reserved name (`i`, `sqrt`, `pi`) in the `symbols` key: as a symbol it would
-/// change what the entries mean (`i^2 + 1` a polynomial instead of 0).
-pub(crate) fn reserved_symbol(file: &str, s: &str) -> Result<(), InputError> {
-    match crate::field::scan::reserved_meaning(s) {
-        Some(m) => Err(InputError::key(
-            file,
-            "symbols",
-            format!("'{s}' is reserved ({m}) and cannot name a symbol"),
-        )),
-        None => Ok(()),
-    }
-}
-
 const MATRIX_KEYS: [&str; 9] = ["A", "B", "C", "D", "E", "M", "L", "K", "F"];
 
 fn field_of(name: &str, symbols: &BTreeSet<String>) -> Result<RatFuncField, InputError> {
@@ -334,6 +321,7 @@ fn read_matrix(
             let at = |m: String| {
                 InputError::key(file, key, format!("row {}, column {}: {m}", i + 1, j + 1))
             };
+            super::expr::too_long(t).map_err(|e| at(e.msg))?;
             let text = subst.apply(t).map_err(at)?;
             data.push(k.parse(&text).map_err(|e| at(e.to_string()))?);
         }

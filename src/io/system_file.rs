@@ -217,7 +217,7 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
             if let (true, Raw::Array(xs)) = (key == "symbols", &v) {
                 for x in xs {
                     if let Raw::Str(s) = x {
-                        super::symbolic::reserved_symbol(file, s)?;
+                        reserved_symbol(file, s)?;
                     }
                 }
             }
@@ -541,7 +541,8 @@ fn check_shapes(
     let d = got.remove("D");
     let input = match got.remove(input_key) {
         Some(x) => {
-            let x = fit_empty(x, Some(rows_in), None);
+            // `[]` with no states takes its input count from D (a static gain)
+            let x = fit_empty(x, Some(rows_in), d.as_ref().map(|d| d.ncols));
             if x.nrows != rows_in {
                 let why = if input_key == "F" {
                     format!("M is {rows_in}x{rows_in}")
@@ -562,7 +563,7 @@ fn check_shapes(
     let m = input.ncols;
     let c = match got.remove("C") {
         Some(x) => {
-            let x = fit_empty(x, None, Some(n));
+            let x = fit_empty(x, d.as_ref().map(|d| d.nrows), Some(n));
             if x.ncols != n {
                 return Err(shape_err(
                     file,
@@ -628,16 +629,50 @@ pub fn read_matrix_key(
     let Raw::Table(entries) = raw else {
         return Err(InputError::file(&shown, "expected a table of keys"));
     };
+    let (mut ms, ground) = matrices_of_table(&shown, &entries, &[key])?;
+    match ms.pop().flatten() {
+        Some(m) => Ok((m, ground)),
+        None => Err(InputError::key(&shown, key, "missing")),
+    }
+}
+
+/// The matrices under `keys` of a file's table (`None` for a key it lacks), of any shape,
+/// read by the one matrix reader of system files (arrays of rows or MATLAB-style strings,
+/// entries over the file's `parameters`), and the field they lie in.
+///
+/// # Errors
+/// A bad parameter or entry, ragged rows, values from two quadratic fields.
+pub(crate) fn matrices_of_table(
+    file: &str,
+    entries: &[(String, Raw)],
+    keys: &[&str],
+) -> Result<(Vec<Option<MatrixEntries>>, super::Ground), InputError> {
     let params_raw = match entries.iter().find(|(k, _)| k == "parameters") {
         Some((_, Raw::Table(kv))) => kv.clone(),
         _ => Vec::new(),
     };
-    let Some((_, m)) = entries.iter().find(|(k, _)| k == key) else {
-        return Err(InputError::key(&shown, key, "missing"));
-    };
     let mut scan = FieldScan::default();
-    let params = eval_parameters(&shown, &params_raw, &mut scan)?;
+    let params = eval_parameters(file, &params_raw, &mut scan)?;
     let lookup = |n: &str| params.iter().find(|(p, _)| p == n).map(|(_, v)| v.clone());
-    let m = read_matrix(&shown, key, m, &lookup, &mut scan)?;
-    Ok((m, scan.ground()))
+    let mut out = Vec::with_capacity(keys.len());
+    for key in keys {
+        out.push(match entries.iter().find(|(k, _)| k == key) {
+            Some((_, m)) => Some(read_matrix(file, key, m, &lookup, &mut scan)?),
+            None => None,
+        });
+    }
+    Ok((out, scan.ground()))
+}
+
+/// Refuses a reserved name (`i`, `sqrt`, `pi`) in the `symbols` key: as a symbol it would
+/// change what the entries mean (`i^2 + 1` a polynomial instead of 0).
+pub(crate) fn reserved_symbol(file: &str, s: &str) -> Result<(), InputError> {
+    match crate::field::scan::reserved_meaning(s) {
+        Some(m) => Err(InputError::key(
+            file,
+            "symbols",
+            format!("'{s}' is reserved ({m}) and cannot name a symbol"),
+        )),
+        None => Ok(()),
+    }
 }

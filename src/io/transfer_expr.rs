@@ -24,7 +24,7 @@ use num_traits::{Signed, ToPrimitive};
 const MAX_EXP: i64 = 64;
 const MAX_DEG: usize = 512;
 const MAX_DEPTH: usize = 256;
-const MAX_LEN: usize = 10_000;
+const MAX_LEN: usize = super::expr::MAX_EXPR_LEN;
 
 /// Parses a rational function in `s`; `params` gives the values of other names.
 ///
@@ -46,7 +46,10 @@ pub fn parse_rational_function(
         return Err(Error::Parse {
             line: 1,
             col: 1,
-            msg: "expression too long".into(),
+            msg: format!(
+                "expression of {} characters (at most {MAX_LEN}): not read",
+                text.chars().count()
+            ),
         });
     }
     let mut p = P {

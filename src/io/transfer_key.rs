@@ -122,21 +122,13 @@ pub(crate) fn realize_g(
     params: Option<&serde_json::Value>,
 ) -> Result<(TransferMatrix<Q>, TransferRealization<Q>), InputError> {
     let values = eval_params(name, params)?;
-    let rows = g
-        .as_array()
-        .ok_or_else(|| InputError::key(name, "G", "expected a list of rows"))?;
+    let texts = g_texts(name, g)?;
     let mut entries = Vec::new();
-    for (i, row) in rows.iter().enumerate() {
-        let row = row
-            .as_array()
-            .ok_or_else(|| InputError::key(name, "G", format!("row {} is not a list", i + 1)))?;
+    for (i, row) in texts.iter().enumerate() {
         let mut out = Vec::new();
-        for (j, x) in row.iter().enumerate() {
-            let text = scalar_text(x).ok_or_else(|| {
-                InputError::entry(name, "G", i + 1, j + 1, "expected a number or a string")
-            })?;
+        for (j, text) in row.iter().enumerate() {
             out.push(
-                parse_rational_function(&text, &values)
+                parse_rational_function(text, &values)
                     .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
             );
         }
@@ -153,4 +145,33 @@ pub(crate) fn realize_g(
     let tm = TransferMatrix { entries };
     let r = realize_transfer(&tm).map_err(|e| InputError::key(name, "G", e.to_string()))?;
     Ok((tm, r))
+}
+
+/// The entries of `G` as text, row by row: from an array of rows or a MATLAB-style string
+/// (`"[1/(s+1) 2; 0 s/(s+2)]"`), the two matrix forms of every key.
+fn g_texts(name: &str, g: &serde_json::Value) -> Result<Vec<Vec<String>>, InputError> {
+    if let serde_json::Value::String(s) = g {
+        return super::matlab::split_matlab_matrix(s).map_err(|e| InputError {
+            row: e.row,
+            col: e.col,
+            ..InputError::key(name, "G", e.msg)
+        });
+    }
+    let rows = g
+        .as_array()
+        .ok_or_else(|| InputError::key(name, "G", "expected a list of rows"))?;
+    let mut out = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let row = row
+            .as_array()
+            .ok_or_else(|| InputError::key(name, "G", format!("row {} is not a list", i + 1)))?;
+        let mut r = Vec::new();
+        for (j, x) in row.iter().enumerate() {
+            r.push(scalar_text(x).ok_or_else(|| {
+                InputError::entry(name, "G", i + 1, j + 1, "expected a number or a string")
+            })?);
+        }
+        out.push(r);
+    }
+    Ok(out)
 }

@@ -1,6 +1,14 @@
 //! Size dispatch of the $\mathbb{Q}$ kernels of [`crate::qkernels`] (the matrix-side choice
 //! of method, as SymPy's `_dm_rref_choose_method` and FLINT's `gr_mat` do).
 //!
+//! Larger inputs reduce the rational matrix itself modulo each prime
+//! ([`crate::qkernels::modular::direct`], issue 29: no row-wise denominator clearing, whose
+//! integer entries have $n \log_2 q$ bits on a matrix of fractions): determinant,
+//! characteristic polynomial, inverse, the full-rank shortcut of rank / RREF / null space
+//! (one image of rank $n$ proves them), and the minimal polynomial (a Krylov sequence of
+//! rank $n$ modulo a prime proves $\mu_A = \chi_A$, otherwise the multi-modular Krylov
+//! method of [`crate::qkernels::modular::minpoly`]).
+//!
 //! Small problems go to the fraction-free routines of [`crate::qkernels::fraction_free`]
 //! (Bareiss elimination, Berkowitz), which have no per-prime overhead: square matrices with
 //! $n \le$ [`SMALL_N`] and RREF inputs with $mn \le$ [`SMALL_MN`] (thresholds measured with
@@ -17,9 +25,10 @@
 //! caller bug and panics.
 
 use crate::field::Rational;
+use crate::qkernels::modular::direct;
 use crate::qkernels::{fraction_free, intmul, modular};
 use num_bigint::BigInt;
-use num_traits::One;
+use num_traits::{One, Zero};
 
 /// Square matrices up to this size use the fraction-free path.
 pub const SMALL_N: usize = 8;
@@ -46,7 +55,7 @@ pub fn rank_q(m: usize, n: usize, a: &[Rational]) -> usize {
     if m * n <= SMALL_MN {
         return fraction_free::rank_bareiss(m, n, a);
     }
-    modular::rank_modular(m, n, a)
+    direct::rank_if_full(m, n, a).unwrap_or_else(|| modular::rank_modular(m, n, a))
 }
 
 /// Canonical reduced row echelon form (`m x n`, pivots 1, zeros above and below them,
@@ -58,6 +67,12 @@ pub fn rref_q(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<usize>)
     check_len("rref_q", a.len(), m, n);
     if m * n <= SMALL_MN {
         return fraction_free::rref_bareiss(m, n, a);
+    }
+    if n <= m && direct::rank_if_full(m, n, a) == Some(n) {
+        // rank n: the RREF is the identity over zero rows
+        let mut r = vec![Rational::zero(); m * n];
+        (0..n).for_each(|k| r[k * n + k] = Rational::one());
+        return (r, (0..n).collect());
     }
     modular::rref_modular(m, n, a)
 }
@@ -71,6 +86,9 @@ pub fn rref_q(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<usize>)
 pub fn nullspace_q(m: usize, n: usize, a: &[Rational]) -> Vec<Vec<Rational>> {
     check_len("nullspace_q", a.len(), m, n);
     if m * n > SMALL_MN {
+        if n <= m && direct::rank_if_full(m, n, a) == Some(n) {
+            return vec![];
+        }
         return modular::nullspace_modular(m, n, a);
     }
     let (r, p) = fraction_free::rref_bareiss(m, n, a);
@@ -93,7 +111,7 @@ pub fn det_q(n: usize, a: &[Rational]) -> Rational {
     if n <= SMALL_N {
         return fraction_free::det_bareiss(n, a);
     }
-    modular::det_modular(n, a)
+    direct::det_direct(n, a)
 }
 
 /// Characteristic polynomial $\det(xI - A)$: coefficients low degree first, monic, length
@@ -106,7 +124,7 @@ pub fn charpoly_q(n: usize, a: &[Rational]) -> Vec<Rational> {
     if n <= SMALL_N {
         return fraction_free::charpoly_berkowitz(n, a);
     }
-    modular::charpoly_modular(n, a)
+    direct::charpoly_direct(n, a)
 }
 
 /// Inverse of the `n x n` row-major matrix `a`; `None` when `a` is singular.
@@ -118,7 +136,7 @@ pub fn inverse_q(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
     if n <= SMALL_N {
         return fraction_free::inverse_bareiss(n, a);
     }
-    modular::inverse_modular(n, a)
+    direct::inverse_direct(n, a)
 }
 
 /// Row-major product of `m x k` and `k x n`; `None` when the generic loop is the better
@@ -131,4 +149,57 @@ pub fn mul_q(
     b: &[Rational],
 ) -> Option<Vec<Rational>> {
     (k >= MUL_MIN_K && m * n >= 4).then(|| intmul::mul_q(m, k, n, a, b))
+}
+
+/// Solution of $AX = B$ (`a` is `m x n`, `b` is `m x k`): one particular solution `n x k`
+/// (free variables zero), or `None` when the system is inconsistent. A nonsingular square
+/// $A$ takes [`direct::solve_direct`]; the others the RREF of $[A \mid B]$.
+///
+/// # Panics
+/// When `a.len() != m * n` or `b.len() != m * k`.
+pub fn solve_q(
+    m: usize,
+    n: usize,
+    k: usize,
+    a: &[Rational],
+    b: &[Rational],
+) -> Option<Vec<Rational>> {
+    check_len("solve_q", a.len(), m, n);
+    check_len("solve_q", b.len(), m, k);
+    if m == n
+        && n > SMALL_N
+        && let Some(x) = direct::solve_direct(n, k, a, b)
+    {
+        return Some(x);
+    }
+    let mut aug = Vec::with_capacity(m * (n + k));
+    for i in 0..m {
+        aug.extend_from_slice(&a[i * n..(i + 1) * n]);
+        aug.extend_from_slice(&b[i * k..(i + 1) * k]);
+    }
+    let (r, piv) = rref_q(m, n + k, &aug);
+    if piv.last().is_some_and(|&p| p >= n) {
+        return None;
+    }
+    let mut x = vec![Rational::zero(); n * k];
+    for (i, &p) in piv.iter().enumerate() {
+        x[p * k..(p + 1) * k].clone_from_slice(&r[i * (n + k) + n..(i + 1) * (n + k)]);
+    }
+    Some(x)
+}
+
+/// Minimal polynomial of the `n x n` matrix `a` (monic, low degree first): the
+/// characteristic polynomial when one Krylov sequence modulo a prime certifies that they
+/// are equal ([`direct::is_cyclic`]), otherwise the multi-modular Krylov method of
+/// [`modular::minpoly`]; `None` when that found no certified candidate (the caller takes
+/// the generic path).
+///
+/// # Panics
+/// When `a.len() != n * n`.
+pub fn minpoly_q(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
+    check_len("minpoly_q", a.len(), n, n);
+    if direct::is_cyclic(n, a) {
+        return Some(charpoly_q(n, a));
+    }
+    modular::minpoly::minpoly_modular(n, a)
 }

@@ -98,15 +98,7 @@ pub fn identifiers(text: &str) -> Result<Vec<String>> {
     Ok(out)
 }
 
-/// The refusal of a reserved name ([`crate::field::scan::RESERVED`]) as a variable.
-pub(crate) fn reserved_message(name: &str) -> Option<String> {
-    crate::field::scan::reserved_meaning(name).map(|m| {
-        format!(
-            "'{name}' is {m}, not a variable: polynomials here have rational coefficients \
-             (no i, sqrt or pi)"
-        )
-    })
-}
+pub(crate) use crate::field::scan::reserved_message;
 
 fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPoly, MPoly)> {
     if vars.len() > MAX_VARS {

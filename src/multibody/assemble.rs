@@ -1,7 +1,9 @@
 //! Assembly of a [`Model`] into its descriptor system (see the module docs of
 //! [`crate::multibody`] for the equations).
 
-use super::geometry::{Vec3, add_block, carried, dot3, point_map, scale3, skew, sparse_mul, sub3};
+use super::geometry::{
+    Vec3, add_block, carried, carried_rows, dot3, point_map, scale3, skew, sparse_mul, sub3,
+};
 use super::preload::{load_stiffness, tangent_stiffness};
 use super::{Assembly, LineItem, LineKind, Model, PointItem, PointKind};
 use crate::error::{Error, Result};
@@ -16,7 +18,7 @@ const COORDS: [&str; 6] = ["x", "y", "z", "rx", "ry", "rz"];
 /// # Errors
 /// `Invalid` for a body index out of range, an axis that is zero where a direction is
 /// needed, an actuator or sensor whose two locations coincide or are an irrational
-/// distance apart, a sensor `order` other than 1 or 2; the errors of
+/// distance apart, a sensor `order` other than 1, 2 or 3; the errors of
 /// [`Descriptor::new`].
 pub fn assemble<K: Field>(m: &Model<K>) -> Result<Assembly<K>> {
     let k = &m.field;
@@ -29,6 +31,7 @@ pub fn assemble<K: Field>(m: &Model<K>) -> Result<Assembly<K>> {
     let damping = weighted_gram(k, &h, &cd);
     let rigid = stack(k, d, m, PointKind::Rigid, true)?;
     let nh_constraint = stack(k, d, m, PointKind::Nonholonomic, false)?;
+    let null_j = rigid.nullspace();
     let (velocity, momentum) = motion_terms(m);
     let (tangent, loads) = if m.loads.is_empty() {
         (
@@ -36,11 +39,11 @@ pub fn assemble<K: Field>(m: &Model<K>) -> Result<Assembly<K>> {
             Matrix::zeros(k.clone(), d, d),
         )
     } else {
-        let t = tangent_stiffness(m, &rigid, &h, &kd, &stiffness)?;
+        let t = tangent_stiffness(m, &rigid, &null_j, &h, &kd, &stiffness)?;
         (t, load_stiffness(m))
     };
     let (f, fr) = inputs(m)?;
-    let (out, feed) = outputs(m, &velocity)?;
+    let (out, feed, acc) = outputs(m, &velocity)?;
     let nin = f.ncols();
     let n = 2 * d + nin;
     // E_full, KC_full
@@ -63,9 +66,7 @@ pub fn assemble<K: Field>(m: &Model<K>) -> Result<Assembly<K>> {
         &Matrix::identity(k.clone(), nin),
         false,
     );
-    let (jr, jl) = constraint_pair(k, &rigid, &nh_constraint, &velocity, nin);
-    let r = jr.nullspace();
-    let l = jl.nullspace();
+    let (r, l) = bases(k, &rigid, &nh_constraint, &null_j, &velocity, nin);
     let lt = l.transpose();
     let e = sparse_mul(&lt, &sparse_mul(&ef, &r));
     let a = -&sparse_mul(&lt, &sparse_mul(&kc, &r));
@@ -73,18 +74,21 @@ pub fn assemble<K: Field>(m: &Model<K>) -> Result<Assembly<K>> {
     add_block(&mut bu, 2 * d, 0, &Matrix::identity(k.clone(), nin), false);
     let b = sparse_mul(&lt, &bu);
     let c = sparse_mul(&out, &r);
+    let (e, a, b, c) = with_accelerations(k, [e, a, b, c], &acc, &r);
     let coordinate_names: Vec<String> = m
         .bodies
         .iter()
         .flat_map(|b| COORDS.iter().map(move |c| format!("{}.{c}", b.name)))
         .collect();
     let inputs: Vec<String> = m.actuators().map(|a| a.name.clone()).collect();
-    let state_names = free_names(&r, &coordinate_names, &inputs);
+    let mut state_names = free_names(&r, &coordinate_names, &inputs);
+    let sensor_names: Vec<String> = m.sensors().map(|s| s.name.clone()).collect();
+    state_names.extend(acc.iter().map(|(i, _)| format!("a.{}", sensor_names[*i])));
     Ok(Assembly {
         descriptor: Descriptor::new(e, a, b, c, feed)?,
         state_names,
         input_names: inputs,
-        output_names: m.sensors().map(|s| s.name.clone()).collect(),
+        output_names: sensor_names,
         coordinate_names,
         mass,
         stiffness,
@@ -155,20 +159,28 @@ fn two_body_rows<K: Field>(
     out
 }
 
-/// The 6 rows `[Pf 0; 0 Pm] T` of a point item.
-fn point_rows<K: Field>(m: &Model<K>, p: &PointItem<K>) -> Result<Matrix<K>> {
+/// The rows `[Pf 0; 0 Pm] T` of a point item: the 6 rows of the projections for a flexible
+/// item (its stiffness is `k T^T P T`), the independent rows of [`carried_rows`] for a
+/// constraint (one equation per carried direction).
+pub(super) fn point_rows<K: Field>(m: &Model<K>, p: &PointItem<K>) -> Result<Matrix<K>> {
     let k = &m.field;
     let proj = |n: u8| {
-        carried(k, n, &p.axis).ok_or_else(|| {
+        let p6 = if p.kind == PointKind::Flexible {
+            carried(k, n, &p.axis)
+        } else {
+            carried_rows(k, n, &p.axis)
+        };
+        p6.ok_or_else(|| {
             Error::Invalid(format!(
                 "{}: an axis is needed (and must be non-zero)",
                 p.name
             ))
         })
     };
-    let mut p6 = Matrix::zeros(k.clone(), 6, 6);
-    add_block(&mut p6, 0, 0, &proj(p.forces)?, false);
-    add_block(&mut p6, 3, 3, &proj(p.moments)?, false);
+    let (pf, pm) = (proj(p.forces)?, proj(p.moments)?);
+    let mut p6 = Matrix::zeros(k.clone(), pf.nrows() + pm.nrows(), 6);
+    add_block(&mut p6, 0, 0, &pf, false);
+    add_block(&mut p6, pf.nrows(), 3, &pm, false);
     Ok(two_body_rows(m, &p6, p.bodies, [&p.location, &p.location]))
 }
 
@@ -330,14 +342,19 @@ fn inputs<K: Field>(m: &Model<K>) -> Result<(Matrix<K>, Matrix<K>)> {
     Ok((f, fr))
 }
 
-/// The output matrix over the full state `[p; w; u]` and the feedthrough `D`.
-fn outputs<K: Field>(m: &Model<K>, v: &Matrix<K>) -> Result<(Matrix<K>, Matrix<K>)> {
+/// The output matrix over the full state `[p; w; u]`, the feedthrough `D` and, for each
+/// acceleration sensor (`order` 3), its index and its velocity row (whose derivative it
+/// reads).
+type Outputs<K> = (Matrix<K>, Matrix<K>, Vec<(usize, Matrix<K>)>);
+
+fn outputs<K: Field>(m: &Model<K>, v: &Matrix<K>) -> Result<Outputs<K>> {
     let k = &m.field;
     let d = 6 * m.bodies.len();
     let nin = m.actuators().count();
     let sensors: Vec<&LineItem<K>> = m.sensors().collect();
     let mut c = Matrix::zeros(k.clone(), sensors.len(), 2 * d + nin);
     let mut dd = Matrix::zeros(k.clone(), sensors.len(), nin);
+    let mut acc = vec![];
     for (i, s) in sensors.iter().enumerate() {
         let LineKind::Sensor {
             gain,
@@ -349,16 +366,19 @@ fn outputs<K: Field>(m: &Model<K>, v: &Matrix<K>) -> Result<(Matrix<K>, Matrix<K
             continue;
         };
         let row = line_row(m, s, &line_unit(m, s)?).scale(&k.neg(gain));
-        match (order, local) {
-            (1, _) => add_block(&mut c, i, 0, &row, false),
-            (2, true) => add_block(&mut c, i, d, &row, false),
-            (2, false) => {
-                add_block(&mut c, i, 0, &(&row * v), true);
-                add_block(&mut c, i, d, &row, false);
-            }
+        // velocity: w in the body's frame, p' = w - V p in the ground's
+        let mut vel = Matrix::zeros(k.clone(), 1, 2 * d + nin);
+        add_block(&mut vel, 0, d, &row, false);
+        if !local {
+            add_block(&mut vel, 0, 0, &(&row * v), true);
+        }
+        match order {
+            1 => add_block(&mut c, i, 0, &row, false),
+            2 => add_block(&mut c, i, 0, &vel, false),
+            3 => acc.push((i, vel)),
             _ => {
                 return invalid(format!(
-                    "{}: order must be 1 (position) or 2 (velocity)",
+                    "{}: order must be 1 (position), 2 (velocity) or 3 (acceleration)",
                     s.name
                 ));
             }
@@ -367,28 +387,80 @@ fn outputs<K: Field>(m: &Model<K>, v: &Matrix<K>) -> Result<(Matrix<K>, Matrix<K
             dd.set(i, *a, k.neg(g));
         }
     }
-    Ok((c, dd))
+    Ok((c, dd, acc))
 }
 
-/// `J_r = [J 0; -J V, J; 0 J_n]` and `J_l = [J 0; 0 J; 0 J_n]`, with `nin` zero columns.
-fn constraint_pair<K: Field>(
+/// Appends one state $\xi_j$ per acceleration sensor $i$: the equation $v_i R \dot x = \xi_j$
+/// ($v_i$ its velocity row) and the output $y_i = \xi_j$. $\xi_j$ is algebraic (a zero
+/// column of $E$), so the standard form eliminates it and $y_i$ is the velocity's derivative
+/// (EoM's order 3), with the feedthrough the dynamics give it.
+fn with_accelerations<K: Field>(
+    k: &K,
+    [e, a, b, c]: [Matrix<K>; 4],
+    acc: &[(usize, Matrix<K>)],
+    r: &Matrix<K>,
+) -> (Matrix<K>, Matrix<K>, Matrix<K>, Matrix<K>) {
+    if acc.is_empty() {
+        return (e, a, b, c);
+    }
+    let (n, na) = (e.nrows(), acc.len());
+    let grow = |x: &Matrix<K>, rows: usize, cols: usize| {
+        let mut y = Matrix::zeros(k.clone(), rows, cols);
+        add_block(&mut y, 0, 0, x, false);
+        y
+    };
+    let (mut e2, mut a2) = (grow(&e, n + na, n + na), grow(&a, n + na, n + na));
+    let b2 = grow(&b, n + na, b.ncols());
+    let mut c2 = grow(&c, c.nrows(), n + na);
+    for (j, (i, vel)) in acc.iter().enumerate() {
+        add_block(&mut e2, n + j, 0, &sparse_mul(vel, r), false);
+        a2.set(n + j, n + j, k.one());
+        c2.set(*i, n + j, k.one());
+    }
+    (e2, a2, b2, c2)
+}
+
+/// The right and left bases `R`, `L`: the canonical null spaces of
+/// `J_r = [J 0; -J V, J; 0 J_n]` and `J_l = [J 0; 0 J; 0 J_n]` (with `nin` zero columns).
+/// `J_l` is block diagonal, so its canonical basis is `diag(null J, null [J; J_n], I)` (the
+/// RREF of a block-diagonal matrix is block diagonal); so is `J_r` when its block
+/// `J V` vanishes. `null_j` is `null J`.
+fn bases<K: Field>(
     k: &K,
     j: &Matrix<K>,
     jn: &Matrix<K>,
+    null_j: &Matrix<K>,
     v: &Matrix<K>,
     nin: usize,
 ) -> (Matrix<K>, Matrix<K>) {
     let d = j.ncols();
+    let null_w = if jn.nrows() == 0 {
+        null_j.clone()
+    } else {
+        j.vstack(jn).expect("same columns").nullspace()
+    };
+    let (f1, f2) = (null_j.ncols(), null_w.ncols());
+    let mut l = Matrix::zeros(k.clone(), 2 * d + nin, f1 + f2 + nin);
+    add_block(&mut l, 0, 0, null_j, false);
+    add_block(&mut l, d, f1, &null_w, false);
+    add_block(
+        &mut l,
+        2 * d,
+        f1 + f2,
+        &Matrix::identity(k.clone(), nin),
+        false,
+    );
+    let jv = sparse_mul(j, v);
+    if jv.is_zero() {
+        return (l.clone(), l);
+    }
     let (q, t) = (j.nrows(), jn.nrows());
     let mut jr = Matrix::zeros(k.clone(), 2 * q + t, 2 * d + nin);
-    let mut jl = jr.clone();
-    for x in [&mut jr, &mut jl] {
-        add_block(x, 0, 0, j, false);
-        add_block(x, q, d, j, false);
-        add_block(x, 2 * q, d, jn, false);
-    }
-    add_block(&mut jr, q, 0, &sparse_mul(j, v), true);
-    (jr, jl)
+    add_block(&mut jr, 0, 0, j, false);
+    add_block(&mut jr, q, d, j, false);
+    add_block(&mut jr, 2 * q, d, jn, false);
+    add_block(&mut jr, q, 0, &jv, true);
+    (jr.nullspace(), l)
 }
 
 /// Names of the free coordinates of the canonical null space basis `r`: its columns are

@@ -83,6 +83,17 @@ pub fn carried<K: Field>(k: &K, n: u8, axis: &Vec3<K>) -> Option<Matrix<K>> {
     }
 }
 
+/// Independent rows spanning the directions a connection carries (`n x 3`): the rows of
+/// [`carried`] at the pivots of its RREF (the projection is symmetric, so these rows are
+/// independent and span its row space). A constraint writes one equation per direction,
+/// so its Jacobian has no dependent rows of its own; the force it carries is
+/// $P_{sel}^T \lambda$.
+pub fn carried_rows<K: Field>(k: &K, n: u8, axis: &Vec3<K>) -> Option<Matrix<K>> {
+    let p = carried(k, n, axis)?;
+    let (_, piv) = p.rref();
+    Some(p.select_rows(&piv))
+}
+
 /// `m[r0.., c0..] += s * b` for `s = +1` (`neg = false`) or `-1`.
 pub fn add_block<K: Field>(m: &mut Matrix<K>, r0: usize, c0: usize, b: &Matrix<K>, neg: bool) {
     let k = m.field().clone();

@@ -32,17 +32,18 @@
 //! |---|---|
 //! | [`assemble`] | a [`Model`] over any field `K` -> [`Assembly`] (descriptor + derivation) |
 //! | [`chain`] | the `n`-body spring-mass chain used by the benches |
+//!
+//! The standard form of the assembled descriptor is [`crate::realization::descriptor_to_standard`]
+//! (the index-1 elimination when $E$ is block diagonal up to a permutation, as here).
 
 #![allow(non_snake_case)]
 
 mod assemble;
 pub mod geometry;
 mod preload;
-mod standard;
 
 pub use assemble::assemble;
 pub use geometry::Vec3;
-pub use standard::index_one_standard;
 
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -108,8 +109,8 @@ pub enum LineKind<K: Field> {
     /// line, acting on body 1 (and reacting on body 2).
     Actuator { gain: K::Elem, rate_gain: K::Elem },
     /// An output: `gain` times the motion of body 1 relative to body 2 along the line
-    /// (from location 1 to location 2, then negated: EoM's sign), of position (`order` 1)
-    /// or velocity (2), in the ground frame or the body's own (`local`); minus
+    /// (from location 1 to location 2, then negated: EoM's sign), of position (`order` 1),
+    /// velocity (2) or acceleration (3, an algebraic state appended per sensor), in the ground frame or the body's own (`local`); minus
     /// `actuator_gain` times input `actuator`.
     Sensor {
         gain: K::Elem,
@@ -194,7 +195,8 @@ pub struct Assembly<K: Field> {
     pub momentum: Matrix<K>,
     /// Kinematic velocity terms ($\dot p = w - V p$).
     pub velocity: Matrix<K>,
-    /// Rigid constraint Jacobian $J$ (rows of the carried projections).
+    /// Rigid constraint Jacobian $J$ (one row per carried direction: the independent rows
+    /// of the carried projections).
     pub constraint: Matrix<K>,
     /// Nonholonomic constraint Jacobian $J_n$.
     pub nh_constraint: Matrix<K>,

@@ -11,7 +11,9 @@
 //! of length $L$ adds the string stiffness $T^T T \lambda / L$. A load $F$ at radius $r$
 //! adds $-[F]_\times$ and $-[r]_\times [F]_\times - [M]_\times$.
 
-use super::geometry::{Vec3, add_block, along, carried, dot3, skew, sparse_mul, sub3};
+use super::geometry::{
+    Vec3, add_block, along, carried, carried_rows, dot3, skew, sparse_mul, sub3,
+};
 use super::{LineKind, Model, PointKind};
 use crate::error::{Error, Result};
 use crate::field::Field;
@@ -51,33 +53,47 @@ pub(super) fn load_stiffness<K: Field>(m: &Model<K>) -> Matrix<K> {
     out
 }
 
-/// $K_t$: tangent stiffness of the preloaded connections.
+/// The static equilibrium under the applied loads $f$: displacements $x = N y$ in the null
+/// space $N$ of the rigid constraints with $N^T K N y = -N^T f$, then the constraint forces
+/// from $J^T \lambda = -f - K x$ (consistent: its right side is orthogonal to $N$). This
+/// is the KKT system $[0, J; J^T, K][\lambda; x] = [0; -f]$ solved in two small pieces
+/// ($N$ has as many columns as the model has free coordinates). Returns $\lambda$ and $x$.
+fn equilibrium<K: Field>(
+    m: &Model<K>,
+    rigid: &Matrix<K>,
+    null_j: &Matrix<K>,
+    stiffness: &Matrix<K>,
+) -> Result<(Vec<K::Elem>, Matrix<K>)> {
+    let k = &m.field;
+    let none = || {
+        Error::Invalid("the loads cannot be carried: the model has no static equilibrium".into())
+    };
+    let f = Matrix::column(k.clone(), load_vector(m));
+    let nt = null_j.transpose();
+    let red = sparse_mul(&nt, &sparse_mul(stiffness, null_j));
+    let (y, _) = red.solve(&-&sparse_mul(&nt, &f))?.ok_or_else(none)?;
+    let x = sparse_mul(null_j, &y);
+    if rigid.nrows() == 0 {
+        return Ok((vec![], x));
+    }
+    let g = -&(&f + &sparse_mul(stiffness, &x));
+    let (lam, _) = rigid.transpose().solve(&g)?.ok_or_else(none)?;
+    Ok(((0..lam.nrows()).map(|i| lam.get(i, 0).clone()).collect(), x))
+}
+
+/// $K_t$: tangent stiffness of the preloaded connections (`null_j`: the null space of the
+/// rigid constraint Jacobian `rigid`).
 pub(super) fn tangent_stiffness<K: Field>(
     m: &Model<K>,
     rigid: &Matrix<K>,
+    null_j: &Matrix<K>,
     h: &Matrix<K>,
     kd: &[K::Elem],
     stiffness: &Matrix<K>,
 ) -> Result<Matrix<K>> {
     let k = &m.field;
     let d = 6 * m.bodies.len();
-    let q = rigid.nrows();
-    let mut kkt = Matrix::zeros(k.clone(), q + d, q + d);
-    add_block(&mut kkt, 0, q, rigid, false);
-    add_block(&mut kkt, q, 0, &rigid.transpose(), false);
-    add_block(&mut kkt, q, q, stiffness, false);
-    let f = load_vector(m);
-    let mut rhs = Matrix::zeros(k.clone(), q + d, 1);
-    for (i, x) in f.iter().enumerate() {
-        rhs.set(q + i, 0, k.neg(x));
-    }
-    let Some((sol, _)) = kkt.solve(&rhs)? else {
-        return Err(Error::Invalid(
-            "the loads cannot be carried: the model has no static equilibrium".into(),
-        ));
-    };
-    let lam: Vec<K::Elem> = (0..q).map(|i| sol.get(i, 0).clone()).collect();
-    let x = Matrix::from_fn(k.clone(), d, 1, |i, _| sol.get(q + i, 0).clone());
+    let (lam, x) = equilibrium(m, rigid, null_j, stiffness)?;
     let hx = sparse_mul(h, &x);
     let lam_f: Vec<K::Elem> = (0..h.nrows())
         .map(|i| k.mul(&kd[i], hx.get(i, 0)))
@@ -86,14 +102,14 @@ pub(super) fn tangent_stiffness<K: Field>(
     let (mut ir, mut iff) = (0, 0);
     // EoM's order: links, springs, flexible points, rigid points (the sum does not care)
     for p in &m.points {
-        let (src, at) = match p.kind {
-            PointKind::Rigid => (&lam, &mut ir),
-            PointKind::Flexible => (&lam_f, &mut iff),
+        let (src, at, full) = match p.kind {
+            PointKind::Rigid => (&lam, &mut ir, false),
+            PointKind::Flexible => (&lam_f, &mut iff, true),
             PointKind::Nonholonomic => continue,
         };
-        let l6 = &src[*at..*at + 6];
-        *at += 6;
-        point_hessian(m, p, l6, &mut out)?;
+        let (frc, mmt, used) = carried_load(m, p, &src[*at..], full)?;
+        *at += used;
+        point_hessian(m, p, &frc, &mmt, &mut out)?;
     }
     for l in &m.lines {
         let (src, at) = match l.kind {
@@ -106,6 +122,42 @@ pub(super) fn tangent_stiffness<K: Field>(
         line_hessian(m, l, &t, &mut out);
     }
     Ok(out)
+}
+
+/// The force and moment a point item carries from its multipliers `lam` (the 6 of a
+/// flexible item's projections, `full`, or one per independent row of a constraint):
+/// $P^T \lambda$; and how many multipliers it used.
+fn carried_load<K: Field>(
+    m: &Model<K>,
+    p: &super::PointItem<K>,
+    lam: &[K::Elem],
+    full: bool,
+) -> Result<(Vec3<K>, Vec3<K>, usize)> {
+    let k = &m.field;
+    let rows = |n: u8| {
+        let r = if full {
+            carried(k, n, &p.axis)
+        } else {
+            carried_rows(k, n, &p.axis)
+        };
+        r.ok_or_else(|| {
+            Error::Invalid(format!(
+                "{}: an axis is needed (and must be non-zero)",
+                p.name
+            ))
+        })
+    };
+    let (pf, pm) = (rows(p.forces)?, rows(p.moments)?);
+    let (nf, nm) = (pf.nrows(), pm.nrows());
+    let vec3 = |pr: &Matrix<K>, l: &[K::Elem]| -> Vec3<K> {
+        let v = &pr.transpose() * &Matrix::column(k.clone(), l.to_vec());
+        [
+            v.get(0, 0).clone(),
+            v.get(1, 0).clone(),
+            v.get(2, 0).clone(),
+        ]
+    };
+    Ok((vec3(&pf, &lam[..nf]), vec3(&pm, &lam[nf..nf + nm]), nf + nm))
 }
 
 /// Adds `s * b` at the block (`rb`, `cb`) of 3x3 blocks when neither is the ground.
@@ -125,7 +177,8 @@ fn put<K: Field>(
 fn point_hessian<K: Field>(
     m: &Model<K>,
     p: &super::PointItem<K>,
-    lam: &[K::Elem],
+    frc: &Vec3<K>,
+    mmt: &Vec3<K>,
     out: &mut Matrix<K>,
 ) -> Result<()> {
     let k = &m.field;
@@ -136,21 +189,6 @@ fn point_hessian<K: Field>(
             p.name
         ))
     };
-    let pf = carried(k, p.forces, &p.axis).ok_or_else(bad)?;
-    let pm = carried(k, p.moments, &p.axis).ok_or_else(bad)?;
-    let col = |v: &[K::Elem]| Matrix::column(k.clone(), v.to_vec());
-    let frc = &pf * &col(&lam[0..3]);
-    let mmt = &pm * &col(&lam[3..6]);
-    let frc: Vec3<K> = [
-        frc.get(0, 0).clone(),
-        frc.get(1, 0).clone(),
-        frc.get(2, 0).clone(),
-    ];
-    let mmt: Vec3<K> = [
-        mmt.get(0, 0).clone(),
-        mmt.get(1, 0).clone(),
-        mmt.get(2, 0).clone(),
-    ];
     let [b1, b2] = p.bodies;
     let rs = sub3(k, &p.location, &m.origin(b1));
     let re = sub3(k, &p.location, &m.origin(b2));
@@ -159,7 +197,7 @@ fn point_hessian<K: Field>(
     } else {
         nb
     };
-    let ff = skew(k, &frc);
+    let ff = skew(k, frc);
     let ff1 = &skew(k, &rs) * &ff;
     let ff2 = &skew(k, &re) * &ff;
     let (t, r) = (0, 3);
@@ -184,12 +222,12 @@ fn point_hessian<K: Field>(
         add((b2, r), (b2, r), &g, true);
         add((b2, r), (b1, r), &g, false);
     } else if p.moments == 2 {
-        let g = &skew(k, &mmt) * &along(k, &p.axis).ok_or_else(bad)?;
+        let g = &skew(k, mmt) * &along(k, &p.axis).ok_or_else(bad)?;
         add((b1, r), (b1, r), &g, true);
         add((b2, r), (b2, r), &g, false);
     } else if p.moments == 1 {
         let half = k.inv(&k.from_i64(2)).expect("2 is invertible");
-        let g = skew(k, &mmt).scale(&half);
+        let g = skew(k, mmt).scale(&half);
         add((b1, r), (b1, r), &g, true);
         add((b1, r), (b2, r), &g, false);
         add((b2, r), (b2, r), &g, false);

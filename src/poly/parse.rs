@@ -121,7 +121,7 @@ impl P<'_> {
                 {
                     return Err(self.err("variable must be a single letter"));
                 }
-                if let Some(msg) = crate::mpoly::parse::reserved_message(&(c as char).to_string()) {
+                if let Some(msg) = crate::field::scan::reserved_message(&(c as char).to_string()) {
                     return Err(self.err(&msg));
                 }
                 match self.var {

@@ -66,6 +66,8 @@ impl RatFunc {
 struct Ctx {
     vars: Vec<String>,
     log: Mutex<HashSet<MPoly>>,
+    /// The irreducible factors of each recorded divisor, once computed.
+    factored: Mutex<std::collections::HashMap<MPoly, Vec<MPoly>>>,
 }
 
 /// The field $\mathbb{Q}(p_1, \dots, p_k)$ (a domain value; clones share the condition log).
@@ -127,6 +129,7 @@ impl RatFuncField {
             ctx: Arc::new(Ctx {
                 vars,
                 log: Mutex::new(HashSet::new()),
+                factored: Mutex::new(std::collections::HashMap::new()),
             }),
         })
     }
@@ -232,9 +235,23 @@ impl RatFuncField {
     pub fn conditions(&self) -> Result<Vec<MPoly>> {
         let mut set: HashSet<MPoly> = HashSet::new();
         for p in self.recorded() {
-            for (g, _) in factor(&p)?.factors {
-                set.insert(g);
-            }
+            let known = self
+                .ctx
+                .factored
+                .lock()
+                .ok()
+                .and_then(|m| m.get(&p).cloned());
+            let fs = match known {
+                Some(fs) => fs,
+                None => {
+                    let fs: Vec<MPoly> = factor(&p)?.factors.into_iter().map(|(g, _)| g).collect();
+                    if let Ok(mut m) = self.ctx.factored.lock() {
+                        m.insert(p.clone(), fs.clone());
+                    }
+                    fs
+                }
+            };
+            set.extend(fs);
         }
         let mut v: Vec<MPoly> = set.into_iter().collect();
         v.sort_by(cmp_poly);
@@ -416,6 +433,12 @@ impl Field for RatFuncField {
             num: a.num.neg(),
             den: a.den.clone(),
         }
+    }
+    /// The sign where it is the same for every parameter value: constants only (`None` for
+    /// an element that depends on the parameters).
+    fn sign(&self, a: &RatFunc) -> Option<std::cmp::Ordering> {
+        let q = a.to_rational()?;
+        Some(q.cmp(&Rational::zero()))
     }
     /// Records the numerator of `a` as a condition (see the module docs).
     fn inv(&self, a: &RatFunc) -> Option<RatFunc> {

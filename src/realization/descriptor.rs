@@ -1,7 +1,15 @@
 //! Descriptor to standard state space (paper sec. 3.5), exactly and for any index.
 //!
-//! The paper compresses $E$ by an SVD and eliminates the algebraic part $z_2$ (eq. 40-47),
-//! which needs $\tilde A_{22}$ invertible (index 1). Here, without inverting $E$:
+//! The basis is the one a person would write down by hand whenever possible:
+//!
+//! * **$E$ invertible**: $\dot x = E^{-1}Ax + E^{-1}Bu$, $y = Cx + Du$ (the file's states).
+//! * **index 1** (paper eq. 40-47): compress $UEV = \mathrm{diag}(E_{11}, 0)$ (a permutation
+//!   when $E$ is block diagonal up to one; [`super::descriptor_elim`]); with $\hat A_{22}$
+//!   invertible the algebraic states are eliminated,
+//!   $\dot z_1 = E_{11}^{-1}(\hat A_{11} - \hat A_{12}\hat A_{22}^{-1}\hat A_{21})z_1 +
+//!   E_{11}^{-1}(\hat B_1 - \hat A_{12}\hat A_{22}^{-1}\hat B_2)u$,
+//!   $y = (\hat C_1 - \hat C_2\hat A_{22}^{-1}\hat A_{21})z_1 + (D - \hat C_2\hat A_{22}^{-1}\hat B_2)u$.
+//! * **higher index**: a Weierstrass-type split, without inverting $E$:
 //!
 //! 1. pick $\lambda_0$ with $\det(\lambda_0 E - A) \ne 0$ (trying $0, 1, -1, 2, \dots$: if
 //!    $n + 1$ values fail, $\det(sE - A) \equiv 0$ and the pencil is singular);
@@ -17,7 +25,12 @@
 //! $y = C V_1 z_1 + (D + C V_2 G \hat B_2) u$. Otherwise the polynomial part is reported in the
 //! error. Impulsive (infinite) modes are removed in every case; the result has exactly
 //! $\deg \det(sE - A)$ states.
+//!
+//! Every route is checked the same way: the transfer matrix of the standard form equals
+//! $C(sE - A)^{-1}B + D$ exactly ([`super::weierstrass::same_transfer`], agreement at more
+//! rational points than the degree of the difference allows).
 
+use super::weierstrass::same_transfer;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -29,17 +42,129 @@ pub struct StandardForm<K: Field> {
     pub system: StateSpace<K>,
     /// Number of infinite eigenvalues (states) removed.
     pub removed_infinite: usize,
-    /// The shift $\lambda_0$ used.
-    pub lambda0: i64,
-    /// `x = V1 z1 + V2 z2`: the finite part's basis $V_1$.
+    /// How the basis was chosen.
+    pub method: StandardMethod,
+    /// The shift $\lambda_0$ of the Weierstrass split (`None` for the other methods).
+    pub lambda0: Option<i64>,
+    /// `x = V1 z + (terms in u)`: the standard form's states in the descriptor's.
     pub v1: Matrix<K>,
-    /// Transfer matrices agree (checked exactly on Markov parameters against a second,
-    /// independent route: $(sE - A)^{-1}$ expanded at $s = \infty$ is not needed; we check
-    /// that the transformed pencil is block diagonal and the reconstruction identities hold).
+    /// `z_j = x_{states[j]}` exactly, when every state of the standard form is one of the
+    /// descriptor's own ($x = V_1 z + W u$ with row `states[j]` of $V_1$ the unit row $e_j^T$
+    /// and of $W$ zero; the index-0 and index-1 routes when $E$ is block diagonal up to a
+    /// permutation); `None` otherwise.
+    pub states: Option<Vec<usize>>,
+    /// The transfer matrix of the standard form equals the descriptor's (exactly, at enough
+    /// rational points) and, for the Weierstrass split, the transformed pencil is block
+    /// diagonal.
     pub verified: bool,
 }
 
-impl<K: Field> StandardForm<K> {}
+/// The route of [`descriptor_to_standard`] (module docs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StandardMethod {
+    /// $E$ invertible: $E^{-1}A$, $E^{-1}B$, $C$, $D$.
+    Invertible,
+    /// Index 1: elimination of the algebraic states.
+    IndexOne,
+    /// Higher index: the Weierstrass-type split.
+    Weierstrass,
+}
+
+impl StandardMethod {
+    pub fn name(self) -> &'static str {
+        match self {
+            StandardMethod::Invertible => "E invertible: A = E^-1 A, B = E^-1 B",
+            StandardMethod::IndexOne => "index 1: algebraic states eliminated",
+            StandardMethod::Weierstrass => "Weierstrass split (index > 1)",
+        }
+    }
+}
+
+/// The standard form of an index-0 or index-1 system by compression and elimination
+/// (module docs); `None` for a higher index.
+fn index_one_form<K: Field>(sys: &Descriptor<K>) -> Result<Option<StandardForm<K>>> {
+    let n = sys.nstates();
+    let c = super::descriptor_elim::compress_e(sys)?;
+    let r = c.rank;
+    let (rows, cols) = super::descriptor_elim::algebraic_block(&c);
+    if rows.len() != n - r {
+        return Ok(None);
+    }
+    let (red, xa, xb) = super::descriptor_elim::eliminate(&c.system, &rows, &cols)?;
+    let e11i = red.e.inverse()?;
+    let system = StateSpace::new(&e11i * &red.a, &e11i * &red.b, red.c, red.d)?;
+    // x = V [z1; z2], z2 = -A22^-1 (A21 z1 + B2 u): x = V1 z1 + W u
+    let v2 = c.v.submatrix(0, n, r, n);
+    let v1 = &c.v.submatrix(0, n, 0, r) + &(&v2 * &xa);
+    let w = &v2 * &xb;
+    let method = if r == n {
+        StandardMethod::Invertible
+    } else {
+        StandardMethod::IndexOne
+    };
+    let verified = maps_solutions(sys, &system, &v1, &w);
+    let states = own_states(&v1, &w);
+    Ok(Some(StandardForm {
+        system,
+        removed_infinite: n - r,
+        method,
+        lambda0: None,
+        v1,
+        states,
+        verified,
+    }))
+}
+
+/// For each state $z_j$ the descriptor state $x_i$ it equals ($x = V_1 z + W u$, row $i$ of
+/// $V_1$ is $e_j^T$ and row $i$ of $W$ is zero), the first such $i$; `None` when some $z_j$
+/// has none.
+fn own_states<K: Field>(v1: &Matrix<K>, w: &Matrix<K>) -> Option<Vec<usize>> {
+    let k = v1.field();
+    let unit_row = |i: usize| -> Option<usize> {
+        let nz: Vec<usize> = (0..v1.ncols())
+            .filter(|&j| !k.is_zero(v1.get(i, j)))
+            .collect();
+        let clean = (0..w.ncols()).all(|j| k.is_zero(w.get(i, j)));
+        (clean && nz.len() == 1 && k.is_one(v1.get(i, nz[0]))).then(|| nz[0])
+    };
+    let mut states = vec![None; v1.ncols()];
+    for i in 0..v1.nrows() {
+        if let Some(j) = unit_row(i) {
+            states[j].get_or_insert(i);
+        }
+    }
+    states.into_iter().collect()
+}
+
+/// The certificate of the index-1 route: with $x = V_1z + Wu$ every solution of the
+/// standard system solves the descriptor system with the same output, i.e. $EW = 0$,
+/// $EV_1A_s = AV_1$, $EV_1B_s = AW + B$, $CV_1 = C_s$, $CW + D = D_s$. In the Laplace domain
+/// $(sE - A)(V_1Z + WU) = BU$, and since $sE - A$ is regular ($E_{11}$ and $X$ invertible)
+/// the transfer matrices are equal. Four products, cheap over every field.
+fn maps_solutions<K: Field>(
+    sys: &Descriptor<K>,
+    s: &StateSpace<K>,
+    v1: &Matrix<K>,
+    w: &Matrix<K>,
+) -> bool {
+    let ev1 = &sys.e * v1;
+    (&sys.e * w).is_zero()
+        && &ev1 * &s.a == &sys.a * v1
+        && &ev1 * &s.b == &(&sys.a * w) + &sys.b
+        && &sys.c * v1 == s.c
+        && &(&sys.c * w) + &sys.d == s.d
+}
+
+/// $(I, A, B, C, D)$.
+fn system_as_descriptor<K: Field>(s: &StateSpace<K>) -> Result<Descriptor<K>> {
+    Descriptor::new(
+        Matrix::identity(s.a.field().clone(), s.nstates()),
+        s.a.clone(),
+        s.b.clone(),
+        s.c.clone(),
+        s.d.clone(),
+    )
+}
 
 /// Converts $E\dot x = Ax + Bu$, $y = Cx + Du$ to standard form.
 ///
@@ -47,6 +172,9 @@ impl<K: Field> StandardForm<K> {}
 /// `Invalid` for a singular pencil; `ImproperTransfer` (naming the highest power of $s$)
 /// when the transfer matrix has a polynomial part.
 pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardForm<K>> {
+    if let Some(f) = index_one_form(sys)? {
+        return Ok(f);
+    }
     let split = super::weierstrass::fitting_split(sys)?;
     let (gn, gb) = (&split.gn, &split.gb);
     let k2 = gn.nrows();
@@ -72,12 +200,15 @@ pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardF
         }
     }
     let system = StateSpace::new(split.a_f, split.b_f, &sys.c * &split.v1, d_std)?;
+    let verified = split.decoupled && same_transfer(sys, &system_as_descriptor(&system)?);
     Ok(StandardForm {
         system,
         removed_infinite: k2,
-        lambda0: split.lambda0,
+        method: StandardMethod::Weierstrass,
+        lambda0: Some(split.lambda0),
         v1: split.v1,
-        verified: split.decoupled,
+        states: None,
+        verified,
     })
 }
 
@@ -105,4 +236,22 @@ fn polynomial_part_display<K: Field>(sys: &Descriptor<K>) -> String {
         })
         .collect();
     format!(", P(s) = [{}]", rows.join(", "))
+}
+
+/// The finite dynamics of a regular descriptor system, proper or not: the standard form's
+/// $A$ when the system is proper, else the finite part of the Weierstrass split
+/// ([`super::weierstrass_split`]). Its eigenvalues and Jordan blocks are the finite
+/// eigenvalues and finite elementary divisors of $sE - A$.
+///
+/// # Errors
+/// `Invalid` for a singular pencil.
+pub fn finite_dynamics<K: Field>(sys: &Descriptor<K>) -> Result<(Matrix<K>, StandardMethod)> {
+    match descriptor_to_standard(sys) {
+        Ok(f) => Ok((f.system.a, f.method)),
+        Err(Error::ImproperTransfer(_)) => Ok((
+            super::weierstrass::weierstrass_split(sys)?.finite.a,
+            StandardMethod::Weierstrass,
+        )),
+        Err(e) => Err(e),
+    }
 }

@@ -1,28 +1,37 @@
 //! Minimal and irreducible descriptor realizations, improper systems included.
 //!
-//! From the Weierstrass split ([`weierstrass_split`]) $G(s) = G_f(s) + P(s)$ with $G_f$
-//! strictly proper (finite part) and $P(s) = \sum_{k=0}^q P_ks^k$:
+//! From the Weierstrass split ([`weierstrass_split`]) $G(s) = C_f(sI - A_f)^{-1}B_f + D +
+//! C_\infty(I + sN)^{-1}B_\infty$, $N$ nilpotent:
 //!
-//! * finite part: a minimal realization $(A_m, B_m, C_m)$ of $G_f$ (Kalman);
-//! * infinite part: $P(s) - P_0 = \sum_{k \ge 1} P_ks^k = C_\infty(sN - I)^{-1}B_\infty +
-//!   \mathrm{const}$ needs $-C_\infty N^kB_\infty = P_k$ ($k \ge 1$); a minimal
-//!   realization $(N_m, B_z, C_z)$ of the Markov sequence $(0, P_1, \dots, P_q)$ (nilpotent,
-//!   order = rank of its block Hankel matrix, i.e. $\sum_i(\mu_i + 1)$ over the poles at
-//!   infinity of orders $\mu_i$) gives $E_\infty = N_m$, $A_\infty = I$, $B_\infty = B_z$,
-//!   $C_\infty = -C_z$, and $D = P_0$.
+//! 1. **irreducible**: a minimal (Kalman) realization $(A_m, B_m, C_m)$ of the finite part,
+//!    and one, $(N_r, B_r, C_r)$, of the sequence $C_\infty N^kB_\infty$, $k \ge 0$ ($N_r$ is
+//!    nilpotent as a restriction of $N$); $E = \mathrm{diag}(I, -N_r)$, $A = I$ on the
+//!    infinite part, $B = [B_m; -B_r]$, $C = [C_m, C_r]$ (as $-(-sN_r - I)^{-1} = (I +
+//!    sN_r)^{-1}$). For nilpotent $N_r$ the PBH test at its only eigenvalue reads
+//!    $\mathrm{rank}[N_r, B_r] = n_r$: Kalman's controllability of $(N_r, B_r)$ is
+//!    controllability at infinity, and the same for observability. This is the least order
+//!    with the pole and zero structure kept (SLICOT TG01JD, DescriptorSystems.jl `gir`);
+//! 2. **minimal**: the non-dynamic modes (infinite blocks of size 1) of the irreducible
+//!    infinite part are eliminated ([`super::descriptor_elim::remove_nondynamic`]); an
+//!    irreducible realization without non-dynamic modes has least order
+//!    (Verghese-Lévy-Kailath 1981).
 //!
-//! The result $E = \mathrm{diag}(I, N_m)$, $A = \mathrm{diag}(A_m, I)$ is minimal: it is
-//! controllable and observable at every finite $\lambda$ and at infinity
-//! ($\mathrm{rank}[E, B] = \mathrm{rank}[E; C] = n$) and has no non-dynamic modes
-//! ($A\ker E \subseteq \mathrm{im}\,E$), the characterization of least order
-//! (Verghese–Lévy–Kailath 1981); all five conditions and the equality of the transfer
-//! matrices are checked exactly. The *irreducible* order keeps the non-dynamic modes: the
-//! minimal order of the finite part plus the McMillan degree of the sequence
-//! $C_\infty N^kB_\infty$, $k \ge 0$ (SLICOT TG01JD, DescriptorSystems.jl `gir`).
+//! When the realization of the shifted sequence $(0, P_1, \dots, P_q)$ with $D = P_0$ (the
+//! constant of the polynomial part) has the same order, it is preferred (same least order,
+//! $D$ is then $G$'s constant at infinity).
+//!
+//! Both steps only remove states, so the order never exceeds the input's. The result is
+//! checked exactly: same transfer matrix, finite part controllable and observable,
+//! $\mathrm{rank}[E, B] = \mathrm{rank}[E; C] = n$ and $A\ker E \subseteq \mathrm{im}\,E$.
+//!
+//! (Realizing only the shifted sequence, as an earlier version did, fixes $C_rB_r = 0$ and
+//! can need more states than the input: $[[s^2, s], [s, 1]]$ from De Terán-Dopico-Mackey
+//! has minimal order 3, that gave 4.)
 
-use super::controllability::{is_controllable, is_observable, mcmillan_degree};
+use super::controllability::{is_controllable, is_observable};
+use super::descriptor_elim::remove_nondynamic;
 use super::minimal::minimal_kalman;
-use super::weierstrass::{WeierstrassSplit, same_transfer, weierstrass_split};
+use super::weierstrass::{same_transfer, weierstrass_split};
 use crate::error::Result;
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -47,25 +56,52 @@ pub struct DescriptorMinimal<K: Field> {
     pub verified: bool,
 }
 
-/// A descriptor system as a whole: $E = \mathrm{diag}$ of the parts.
-fn assemble<K: Field>(
-    fin: &StateSpace<K>,
-    e_inf: &Matrix<K>,
-    b_inf: &Matrix<K>,
-    c_inf: &Matrix<K>,
-    d: &Matrix<K>,
-) -> Result<Descriptor<K>> {
-    let fld = d.field().clone();
-    let (nf, ni) = (fin.nstates(), e_inf.nrows());
+/// $\mathrm{diag}$ of a standard system $(A_f, B_f, C_f)$ and a descriptor system.
+fn assemble<K: Field>(fin: &StateSpace<K>, inf: &Descriptor<K>) -> Result<Descriptor<K>> {
+    let fld = inf.d.field().clone();
     let e = Matrix::block_diag(
         fld.clone(),
-        &[Matrix::identity(fld.clone(), nf), e_inf.clone()],
+        &[Matrix::identity(fld.clone(), fin.nstates()), inf.e.clone()],
     );
-    let a = Matrix::block_diag(
+    let a = Matrix::block_diag(fld, &[fin.a.clone(), inf.a.clone()]);
+    Descriptor::new(
+        e,
+        a,
+        fin.b.vstack(&inf.b)?,
+        fin.c.hstack(&inf.c)?,
+        inf.d.clone(),
+    )
+}
+
+/// A realization of the infinite part with $D = P_0$: a minimal realization $(N_m, B_z, C_z)$
+/// of the Markov sequence $(0, P_1, \dots, P_q)$ (as the system $w' = u$, $x' = -Nx - NBw$,
+/// $y = C_\infty x$), $E = N_m$, $A = I$, $C = -C_z$. It fixes $C_zB_z = 0$, so its order can
+/// exceed the minimal one; [`minimal_descriptor`] takes it only at the minimal order, where it
+/// shows the constant of the polynomial part as $D$.
+fn shifted_sequence<K: Field>(
+    n: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    p0: &Matrix<K>,
+) -> Result<Descriptor<K>> {
+    let fld = n.field().clone();
+    let (p, m) = p0.shape();
+    let ni = n.nrows();
+    let a_aug = Matrix::block(
         fld.clone(),
-        &[fin.a.clone(), Matrix::identity(fld.clone(), ni)],
-    );
-    Descriptor::new(e, a, fin.b.vstack(b_inf)?, fin.c.hstack(c_inf)?, d.clone())
+        &[
+            vec![&-n, &-&(n * b)],
+            vec![
+                &Matrix::zeros(fld.clone(), m, ni),
+                &Matrix::zeros(fld.clone(), m, m),
+            ],
+        ],
+    )?;
+    let b_aug = Matrix::zeros(fld.clone(), ni, m).vstack(&Matrix::identity(fld.clone(), m))?;
+    let c_aug = c.hstack(&Matrix::zeros(fld.clone(), p, m))?;
+    let z = minimal_kalman(&StateSpace::new_strictly_proper(a_aug, b_aug, c_aug)?)?.system;
+    let k = z.nstates();
+    Descriptor::new(z.a, Matrix::identity(fld, k), z.b, -&z.c, p0.clone())
 }
 
 /// Minimal descriptor realization of a regular descriptor system (proper or not).
@@ -75,26 +111,27 @@ fn assemble<K: Field>(
 pub fn minimal_descriptor<K: Field>(sys: &Descriptor<K>) -> Result<DescriptorMinimal<K>> {
     let split = weierstrass_split(sys)?;
     let fld = sys.a.field().clone();
-    let (p, m) = sys.d.shape();
     let fin = minimal_kalman(&split.finite)?.system;
     let poly = split.polynomial_part();
     let q = poly.len() - 1;
-    // Markov sequence (0, P_1, .., P_q) as the system w' = u, x' = -N x - N B w, y = [C 0]
-    let ni = split.n.nrows();
-    let z = Matrix::zeros(fld.clone(), m, ni);
-    let nb = -&(&split.n * &split.b_inf);
-    let a_aug = Matrix::block(
-        fld.clone(),
-        &[
-            vec![&-&split.n, &nb],
-            vec![&z, &Matrix::zeros(fld.clone(), m, m)],
-        ],
+    let tri =
+        StateSpace::new_strictly_proper(split.n.clone(), split.b_inf.clone(), split.c_inf.clone())?;
+    let red = minimal_kalman(&tri)?.system;
+    let nr = red.nstates();
+    let irreducible = Descriptor::new(
+        -&red.a,
+        Matrix::identity(fld, nr),
+        -&red.b,
+        red.c.clone(),
+        split.d.clone(),
     )?;
-    let b_aug = Matrix::zeros(fld.clone(), ni, m).vstack(&Matrix::identity(fld.clone(), m))?;
-    let c_aug = split.c_inf.hstack(&Matrix::zeros(fld.clone(), p, m))?;
-    let inf = minimal_kalman(&StateSpace::new_strictly_proper(a_aug, b_aug, c_aug)?)?.system;
-    let system = assemble(&fin, &inf.a, &inf.b, &-&inf.c, &poly[0])?;
-    let irreducible_order = fin.nstates() + infinite_irreducible_order(&split)?;
+    let (mut inf, _) = remove_nondynamic(&irreducible)?;
+    // the same order with D = P_0 (the constant of the polynomial part) when it exists
+    let shifted = shifted_sequence(&split.n, &split.b_inf, &split.c_inf, &poly[0])?;
+    if shifted.nstates() == inf.nstates() {
+        inf = shifted;
+    }
+    let system = assemble(&fin, &inf)?;
     let verified = same_transfer(sys, &system)
         && is_controllable(&fin.a, &fin.b)
         && is_observable(&fin.a, &fin.c)
@@ -103,20 +140,12 @@ pub fn minimal_descriptor<K: Field>(sys: &Descriptor<K>) -> Result<DescriptorMin
         order: system.nstates(),
         finite_order: fin.nstates(),
         infinite_order: inf.nstates(),
-        irreducible_order,
+        irreducible_order: fin.nstates() + nr,
         original_order: sys.nstates(),
         polynomial_degree: q,
         system,
         verified,
     })
-}
-
-/// McMillan degree of $C_\infty N^kB_\infty$, $k \ge 0$ (the controllable and observable
-/// part of the infinite triple).
-fn infinite_irreducible_order<K: Field>(split: &WeierstrassSplit<K>) -> Result<usize> {
-    let tri =
-        StateSpace::new_strictly_proper(split.n.clone(), split.b_inf.clone(), split.c_inf.clone())?;
-    Ok(mcmillan_degree(&tri))
 }
 
 /// $\mathrm{rank}[E, B] = n$, $\mathrm{rank}[E; C] = n$, $A\ker E \subseteq \mathrm{im}\,E$.

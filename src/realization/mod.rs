@@ -17,13 +17,14 @@
 //! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
 //! | [`minimal_jordan`] | Jordan-form method (sec. 3.3): drop non-contributing modes, compact repeated ones, real Jordan blocks |
 //! | [`minimal_jordan_over_k`] | the same over $\mathbb{Q}(i)$ / $\mathbb{Q}(\sqrt d)$: real modal blocks over a real $K$, complex modal blocks over $\mathbb{Q}(i)$ |
-//! | [`descriptor_to_standard`] | Weierstrass-type split of $(E, A)$ without inverting $E$ |
+//! | [`descriptor_to_standard`] | $E^{-1}A$, index-1 elimination, or a Weierstrass-type split |
 //! | [`modal_table`], [`modal_table_over_k`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
 mod controllability;
 mod ctrb_structure;
 mod descriptor;
+mod descriptor_elim;
 mod descriptor_minimal;
 mod from_transfer;
 mod gramian;
@@ -45,7 +46,7 @@ pub use ctrb_structure::{
     ControllabilityStructure, DescriptorControllability, controllability_structure,
     descriptor_controllability, observability_structure,
 };
-pub use descriptor::{StandardForm, descriptor_to_standard};
+pub use descriptor::{StandardForm, StandardMethod, descriptor_to_standard, finite_dynamics};
 pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
 pub use from_transfer::{TransferRealization, realize_state_space, realize_transfer};
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};

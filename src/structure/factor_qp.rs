@@ -75,3 +75,23 @@ pub fn factor_over_qp(f: &Poly<RatFuncField>) -> Result<Vec<(Poly<RatFuncField>,
 fn identity_map(n: usize) -> Vec<usize> {
     (0..n).map(|i| i.min(n - 2)).collect()
 }
+
+/// All roots of `f` in the open left half plane for every parameter value? Decided per
+/// irreducible factor over $\mathbb{Q}(p)$ by [`crate::structure::scb::hurwitz`] (which
+/// knows the signs of constants): `Some(false)` when one factor is not Hurwitz (e.g. `s`, a
+/// zero at the origin for every parameter value), `Some(true)` when every factor is,
+/// `None` when the answer depends on the parameters.
+///
+/// # Errors
+/// As [`factor_over_qp`].
+pub fn hurwitz_over_qp(f: &Poly<RatFuncField>) -> Result<Option<bool>> {
+    let mut all = Some(true);
+    for (g, _) in factor_over_qp(f)? {
+        match crate::structure::scb::hurwitz(&g) {
+            Some(false) => return Ok(Some(false)),
+            Some(true) => {}
+            None => all = None,
+        }
+    }
+    Ok(all)
+}

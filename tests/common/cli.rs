@@ -4,11 +4,56 @@ use std::process::Command;
 /// Runs `exactlti ARGS` in the crate's directory: exit code (-1 when killed by a signal),
 /// stdout and stderr.
 pub fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
+    let out = limited(args).output().expect("runs");
+    outputs(&out)
+}
+
+/// The address-space limit of every binary run by the suite (issue 22: no command aborts on
+/// a 4 GB machine; past its `--max-memory` or this limit it refuses with exit 2).
+pub const ADDRESS_SPACE_BYTES: u64 = 4 << 30;
+
+/// `exactlti ARGS` in the crate's directory under [`ADDRESS_SPACE_BYTES`].
+fn limited(args: &[&str]) -> Command {
+    use std::os::unix::process::CommandExt;
+    let mut c = Command::new(env!("CARGO_BIN_EXE_exactlti"));
+    c.args(args).current_dir(env!("CARGO_MANIFEST_DIR"));
+    // SAFETY: setrlimit is async-signal-safe; nothing else runs between fork and exec.
+    unsafe {
+        c.pre_exec(|| {
+            let lim = libc::rlimit {
+                rlim_cur: ADDRESS_SPACE_BYTES as libc::rlim_t,
+                rlim_max: ADDRESS_SPACE_BYTES as libc::rlim_t,
+            };
+            if libc::setrlimit(libc::RLIMIT_AS, &lim) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    c
+}
+
+/// As [`run`], with `input` written to the program's stdin through a pipe.
+pub fn run_stdin(args: &[&str], input: &str) -> (i32, String, String) {
+    use std::io::Write;
+    use std::process::Stdio;
+    let mut child = limited(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
         .expect("runs");
+    let mut stdin = child.stdin.take().unwrap();
+    let text = input.to_string();
+    let writer = std::thread::spawn(move || {
+        let _ = stdin.write_all(text.as_bytes());
+    });
+    let out = child.wait_with_output().expect("runs");
+    writer.join().unwrap();
+    outputs(&out)
+}
+
+fn outputs(out: &std::process::Output) -> (i32, String, String) {
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stdout).into_owned(),

@@ -13,6 +13,7 @@
 //! [`execute`] is the $\mathbb{Q}(p)$ arm of [`crate::api::System::run`]; a file whose
 //! symbols all got values (`--at`) is typed over its numeric field and never comes here.
 
+mod modes;
 pub(super) mod system;
 
 use super::common::{exact_only, linalg_report, with_path};
@@ -27,12 +28,13 @@ use std::path::Path;
 /// condition log, with `field` and `conditions`.
 fn descriptor(
     cmd: &Command,
+    f: &SystemFile,
     t: &TypedSystem<RatFuncField>,
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let k = t.a_raw.field().fresh();
     let t = t.in_field(&k);
-    let out = super::pencil_cmds::execute_typed(cmd, path, &t)?;
+    let out = super::pencil_cmds::execute_typed(cmd, path, f, &t)?;
     let conds = k.conditions_strings().map_err(|e| with_path(path, e))?;
     let r = exact_only(out.report)
         .str("field", k.to_string())
@@ -128,9 +130,9 @@ pub(super) fn execute(
         Command::Pencil { .. }
         | Command::Minreal {
             descriptor: true, ..
-        } => descriptor(cmd, t, path),
+        } => descriptor(cmd, f, t, path),
         Command::Ctrb { .. } | Command::Obsv { .. } if t.descriptor.is_some() => {
-            descriptor(cmd, t, path)
+            descriptor(cmd, f, t, path)
         }
         _ => match system::run(cmd, f, t, path)? {
             Some(out) => Ok(out),

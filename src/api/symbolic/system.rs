@@ -3,7 +3,8 @@
 //!
 //! Each runs the generic algorithm over [`RatFuncField`] on a fresh condition log and adds
 //! `field` and `conditions` to the report. Decisions that need numbers (signs, Hurwitz,
-//! approximations) are not guessed: `minimum_phase` says "depends on parameters".
+//! approximations) are made only where they hold for every parameter value (a zero at
+//! $s = 0$ is not minimum phase); otherwise `minimum_phase` says "depends on parameters".
 
 use crate::api::common::exact_only;
 use crate::api::common::with_path;
@@ -14,7 +15,7 @@ use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;
 use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, sections, str_list};
-use crate::structure::factor_qp::factor_over_qp;
+use crate::structure::factor_qp::{factor_over_qp, hurwitz_over_qp};
 use crate::system::StateSpace;
 use std::path::Path;
 
@@ -36,18 +37,13 @@ pub(in crate::api) fn run(
         Command::Scb { .. } => {
             let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
             let ok = r.verified;
-            let rep = depends(r.report(), "minimum_phase");
-            (
-                rep.with(
-                    "zero_factors",
-                    factors(&r.invariant_zero_polynomial()).map_err(e)?,
-                ),
-                ok,
-            )
+            let zp = r.invariant_zero_polynomial();
+            let rep = minimum_phase(r.report(), &zp).map_err(e)?;
+            (rep.with("zero_factors", factors(&zp).map_err(e)?), ok)
         }
         Command::Zeros { .. } => {
             let z = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
-            let rep = depends(z.report(), "minimum_phase");
+            let rep = minimum_phase(z.report(), &z.polynomial).map_err(e)?;
             (
                 rep.with("zero_factors", factors(&z.polynomial).map_err(e)?),
                 true,
@@ -148,15 +144,7 @@ pub(in crate::api) fn run(
             rep.push("jordan", Value::Obj(sec));
             (rep, ok)
         }
-        Command::Modes { .. } => {
-            return Err(Failure {
-                code: 2,
-                message: format!(
-                    "{}: `modes` needs numbers (frequencies, damping ratios): give every symbol a value with --at",
-                    path.display()
-                ),
-            });
-        }
+        Command::Modes { .. } => (super::modes::modes_report(&s.a).map_err(e)?, true),
         _ => return Ok(None),
     };
     let conds = k.conditions_strings().map_err(e)?;
@@ -176,6 +164,16 @@ pub(in crate::api) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
         None => r.items.push((key.to_string(), v)),
     }
     r
+}
+
+/// `minimum_phase` decided over $\mathbb{Q}(p)$ from the zero polynomial's factors
+/// ([`hurwitz_over_qp`]: a zero at the origin for every parameter value is not minimum
+/// phase), else "depends on parameters".
+fn minimum_phase(r: Report, zeros: &Poly<RatFuncField>) -> crate::Result<Report> {
+    Ok(match hurwitz_over_qp(zeros)? {
+        Some(b) => set_key(r, "minimum_phase", Value::Bool(b)),
+        None => depends(r, "minimum_phase"),
+    })
 }
 
 /// A sign question over $\mathbb{Q}(p)$ is not decided: the key says so (nested reports

@@ -19,6 +19,10 @@
 //! | [`charpoly_modular`] | $\det(xI - A)$, low degree first | principal-minor Hadamard bound ([`charpoly`]) |
 //! | [`inverse_modular`] | $A^{-1}$ or `None` | $BN = dI$ checked modulo $M > 2\beta$ ([`inverse`]) |
 //!
+//! [`direct`] holds the kernels that reduce the rational matrix itself modulo each prime
+//! ([`qimage`]): determinant, characteristic polynomial, inverse, the full-rank test and the
+//! cyclicity test of the minimal polynomial.
+//!
 //! These always take the multi-modular path; the size dispatch between them and the
 //! fraction-free routines of [`crate::qkernels::fraction_free`] lives on the matrix side
 //! (`crate::matrix::over_q`).
@@ -32,16 +36,52 @@
 pub mod charpoly;
 pub mod crt;
 pub mod det;
+pub mod direct;
 pub mod guess;
 pub mod inverse;
+pub mod minpoly;
+pub mod qimage;
 pub mod rank;
 pub mod rref;
 
 use crate::field::Rational;
 use crate::qkernels::gcd;
 use crate::qkernels::intmat::{integer_rows, integer_scaled, scale_det, unscale_charpoly};
+use crate::qkernels::prime;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
+
+/// The integer matrix $DA$ ($D$ the row denominators, [`qimage::RatMat::row_dens`]) as
+/// the RREF kernel sees it: its images are those of $A$ itself (same RREF modulo every
+/// prime dividing no denominator, since $D$ is then a unit), its entries only enter the
+/// certificate bound (issue 29: no reduction of $n \log_2 q$-bit entries per prime).
+struct RatRows<'a> {
+    rm: qimage::RatMat<'a>,
+    abs: Vec<BigInt>,
+}
+
+impl<'a> RatRows<'a> {
+    fn new(m: usize, n: usize, a: &'a [Rational]) -> Self {
+        let rm = qimage::RatMat::new(m, n, a);
+        let abs = rm.scaled_abs();
+        RatRows { rm, abs }
+    }
+}
+
+impl rref::RrefSource for RatRows<'_> {
+    fn shape(&self) -> (usize, usize) {
+        (self.rm.m, self.rm.n)
+    }
+    fn image(&self, pr: &prime::Prime) -> Option<Vec<u64>> {
+        self.rm.image(pr)
+    }
+    fn abs_at(&self, i: usize, j: usize) -> BigInt {
+        self.abs[i * self.rm.n + j].clone()
+    }
+    fn max_abs(&self) -> BigInt {
+        self.abs.iter().max().cloned().unwrap_or_default()
+    }
+}
 
 fn check_len(op: &str, len: usize, m: usize, n: usize) {
     assert_eq!(
@@ -57,7 +97,7 @@ fn check_len(op: &str, len: usize, m: usize, n: usize) {
 /// When `a.len() != m * n`.
 pub fn rank_modular(m: usize, n: usize, a: &[Rational]) -> usize {
     check_len("rank_modular", a.len(), m, n);
-    let (b, _) = integer_rows(m, n, a);
+    let b = RatRows::new(m, n, a);
     rref::rref_int(&b).pivots.len()
 }
 
@@ -67,7 +107,7 @@ pub fn rank_modular(m: usize, n: usize, a: &[Rational]) -> usize {
 /// When `a.len() != m * n`.
 pub fn rref_modular(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<usize>) {
     check_len("rref_modular", a.len(), m, n);
-    let (b, _) = integer_rows(m, n, a);
+    let b = RatRows::new(m, n, a);
     let res = rref::rref_int(&b);
     let mut out = vec![Rational::zero(); m * n];
     for (x, nu) in out.iter_mut().zip(res.num) {
@@ -84,7 +124,7 @@ pub fn rref_modular(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<u
 /// When `a.len() != m * n`.
 pub fn nullspace_modular(m: usize, n: usize, a: &[Rational]) -> Vec<Vec<Rational>> {
     check_len("nullspace_modular", a.len(), m, n);
-    let (b, _) = integer_rows(m, n, a);
+    let b = RatRows::new(m, n, a);
     let res = rref::rref_int(&b);
     nullspace_from_integer_rref(n, &res.num, &res.den, &res.pivots)
 }

@@ -149,20 +149,58 @@ impl ProfileImages {
     }
 }
 
+/// An integer matrix $B$ as the RREF kernel sees it: its images modulo primes (of $B$ or of
+/// a matrix with the same RREF modulo that prime) and the sizes its certificate bounds.
+pub trait RrefSource {
+    /// `(m, n)`.
+    fn shape(&self) -> (usize, usize);
+    /// A row-major `m x n` matrix over $\mathbb{Z}/p$ with the RREF of $B \bmod p$ (`None`:
+    /// skip the prime).
+    fn image(&self, pr: &Prime) -> Option<Vec<u64>>;
+    /// $|b_{ij}|$.
+    fn abs_at(&self, i: usize, j: usize) -> BigInt;
+    /// $\max_{ij} |b_{ij}|$.
+    fn max_abs(&self) -> BigInt;
+}
+
+impl RrefSource for IntMat {
+    fn shape(&self) -> (usize, usize) {
+        (self.m, self.n)
+    }
+    fn image(&self, pr: &Prime) -> Option<Vec<u64>> {
+        Some(self.reduce(pr))
+    }
+    fn abs_at(&self, i: usize, j: usize) -> BigInt {
+        self.at(i, j).abs()
+    }
+    fn max_abs(&self) -> BigInt {
+        IntMat::max_abs(self)
+    }
+}
+
 /// Certified RREF of `b` by the multi-modular method (see the module docs).
-pub fn rref_int(b: &IntMat) -> IntRref {
-    let (m, n) = (b.m, b.n);
+pub fn rref_int<S: RrefSource>(b: &S) -> IntRref {
+    let (m, n) = b.shape();
     let mut st = ProfileImages::default();
     let mut last_probe: Option<(Vec<BigInt>, BigInt)> = None;
     let max_a = b.max_abs();
+    let mut next_check = 1usize;
     for pr in primes(0) {
-        let mut a = b.reduce(&pr);
+        let Some(mut a) = b.image(&pr) else {
+            continue;
+        };
         let piv = rref_mod_p(&pr, m, n, &mut a);
         match st.push(pr, piv, &a, n) {
             None => continue,
-            Some(true) => last_probe = None,
+            Some(true) => (last_probe, next_check) = (None, 1),
             Some(false) => {}
         }
+        // checkpoints at geometrically spaced prime counts: a probe costs O(k^2) for k
+        // primes, so probing after every prime would cost O(k^3)
+        if st.used.len() < next_check {
+            continue;
+        }
+        next_check = st.used.len() + (st.used.len() / 8).max(1);
         let (piv, free, used, images) = (st.pivots(), &st.free, &st.used, &st.images);
         let r = piv.len();
         let crt = Crt::new(used);
@@ -198,15 +236,15 @@ fn probe_reconstruct(
 }
 
 /// Full reconstruction and the certificate check; `None` when more primes are needed.
-fn try_certify(
-    b: &IntMat,
+fn try_certify<S: RrefSource>(
+    b: &S,
     piv: &[usize],
     free: &[usize],
     crt: &Crt,
     images: &[Vec<u64>],
     max_a: &BigInt,
 ) -> Option<IntRref> {
-    let (n, r) = (b.n, piv.len());
+    let ((m, n), r) = (b.shape(), piv.len());
     let total = r * free.len();
     let us = (0..total).map(|i| crt.lift_nonneg(|t| images[t][i]));
     let cd = CommonDenominator::reconstruct(crt, us)?;
@@ -216,8 +254,8 @@ fn try_certify(
     }
     let max_n = cd.nums.iter().map(|x| x.abs()).max().unwrap_or_default();
     let max_n = max_n.max(den.clone());
-    let max_row_piv: BigInt = (0..b.m)
-        .map(|i| piv.iter().map(|&c| b.at(i, c).abs()).sum::<BigInt>())
+    let max_row_piv: BigInt = (0..m)
+        .map(|i| piv.iter().map(|&c| b.abs_at(i, c)).sum::<BigInt>())
         .max()
         .unwrap_or_default();
     let beta = &den * max_a + max_row_piv * max_n;

@@ -163,6 +163,12 @@ where
         .collect();
     let mut rng = SplitMix64(0x5eed ^ (nvars as u64));
     let mut images: Vec<Vec<Vec<u64>>> = Vec::with_capacity(nprimes);
+    // the lines of the simplex, once for every prime
+    let lines = if g.simplex {
+        lower_set_lines(&g.points, nvars)
+    } else {
+        vec![]
+    };
     for pr in &primes {
         let mut done = None;
         for attempt in 0..3 {
@@ -175,7 +181,7 @@ where
                     }
                 })
                 .collect();
-            if let Some(v) = images_mod_p(pr, &g, &entries, &shifts, nout, &f) {
+            if let Some(v) = images_mod_p(pr, (&g, &lines), &entries, &shifts, nout, &f) {
                 done = Some(v);
                 break;
             }
@@ -203,7 +209,7 @@ where
 /// Per prime: the coefficients (indexed like the grid points) of every output.
 fn images_mod_p<F>(
     pr: &Prime,
-    g: &Grid,
+    (g, lines): (&Grid, &[Vec<Vec<usize>>]),
     entries: &[Vec<(Vec<u32>, &BigInt)>],
     shifts: &[u64],
     nout: usize,
@@ -267,11 +273,10 @@ where
         }
     }
     if g.simplex {
-        let lines = lower_set_lines(&g.points, nvars);
         let invs = small_inverses(pr, g.dtot as usize + 1);
         let mut buf = Vec::new();
         for v in vals.iter_mut() {
-            interpolate_lower_set(pr, v, &lines, &invs, shifts, &mut buf);
+            interpolate_lower_set(pr, v, lines, &invs, shifts, &mut buf);
         }
     } else {
         for v in vals.iter_mut() {

@@ -22,9 +22,12 @@
 //! check (an unlucky point) retries with a new point, then leaves the generic algorithm to
 //! run. Conditions recorded: the numerators of $M_k / \prod_{j \le k} d_{S_j}$, the leading
 //! minors of $A$ that the generic elimination divides by. The entries $N_{kf}/\Delta$ are
-//! brought to lowest terms (the only gcds).
+//! brought to lowest terms (the only gcds). A rank or pivot pattern proved by one nonzero
+//! minor at a point (full rank, pivots $0..r-1$) holds where that minor is nonzero: its
+//! factors are recorded ([`minor_cond`]), or the shortcut is given up.
 
 pub mod interp;
+pub mod minor_cond;
 pub mod modp;
 pub mod pgcd;
 

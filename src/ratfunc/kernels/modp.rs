@@ -2,7 +2,9 @@
 //! generic row/column profile, and the normalised solve $X = C_P^{-1} C$ with the leading
 //! minors of $C_P$.
 
+use crate::mpoly::MPoly;
 use crate::qkernels::prime::Prime;
+use num_bigint::Sign;
 
 /// $\det A$ of the `n x n` row-major `a` (destroyed) by Gaussian elimination.
 pub fn det_mod_p(pr: &Prime, n: usize, a: &mut [u64]) -> u64 {
@@ -119,4 +121,21 @@ pub fn minors_and_solve_mod_p(
         }
     }
     Some(out)
+}
+
+/// $f(x)$ modulo the prime.
+pub fn eval_mod_p(pr: &Prime, f: &MPoly, point: &[u64]) -> u64 {
+    let mut s = 0u64;
+    for (m, c) in f.terms() {
+        let (sg, digits) = c.to_u64_digits();
+        let mut t = pr.reduce_limbs(sg == Sign::Minus, &digits);
+        for (v, &x) in point.iter().enumerate() {
+            let e = f.exp(*m, v);
+            if e > 0 {
+                t = pr.mul(t, pr.pow(x, u64::from(e)));
+            }
+        }
+        s = pr.add(s, t);
+    }
+    s
 }

@@ -2,13 +2,13 @@
 //! and its exact check).
 
 use super::interp::{Bounds, grid_points, interpolate_zp};
-use super::modp::{minors_and_solve_mod_p, profile_mod_p};
+use super::minor_cond::record_minor;
+use super::modp::{eval_mod_p, minors_and_solve_mod_p, profile_mod_p};
 use super::{clear_rows, profile_prime};
 use crate::mpoly::MPoly;
 use crate::qkernels::prime::Prime;
 use crate::ratfunc::{RatFunc, RatFuncField};
 use crate::rng::SplitMix64;
-use num_bigint::Sign;
 
 /// Largest number of residues (grid points times outputs and entries) one prime may hold;
 /// beyond it the generic algorithm runs (a memory bound: 64 MB).
@@ -28,22 +28,6 @@ struct Echelon {
     free: Vec<usize>,
     /// Row denominators $d_i$.
     ds: Vec<MPoly>,
-}
-
-fn eval_mod_p(pr: &Prime, f: &MPoly, point: &[u64]) -> u64 {
-    let mut s = 0u64;
-    for (m, c) in f.terms() {
-        let (sg, digits) = c.to_u64_digits();
-        let mut t = pr.reduce_limbs(sg == Sign::Minus, &digits);
-        for (v, &x) in point.iter().enumerate() {
-            let e = f.exp(*m, v);
-            if e > 0 {
-                t = pr.mul(t, pr.pow(x, u64::from(e)));
-            }
-        }
-        s = pr.add(s, t);
-    }
-    s
 }
 
 /// A point of $(\mathbb{Z}/p)^k$ from a fixed stream.
@@ -113,7 +97,11 @@ fn echelon(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Echelo
             continue;
         }
         if r == n {
-            // full column rank, proved by a nonzero minor at this point: R = [I; 0]
+            // full column rank, proved by a nonzero minor at this point: R = [I; 0] where
+            // that minor is nonzero (its factors are the conditions)
+            if !record_minor(k, &b, n, &rows, &piv, &ds) {
+                return None;
+            }
             return Some(Echelon {
                 piv,
                 rows,
@@ -202,27 +190,30 @@ pub fn rref_qp(
 /// The pivot columns of the RREF when a point proves them: its pivots are
 /// $0, 1, \dots, r - 1$ with $r = \min(m, n)$ (every prefix of columns has the largest rank
 /// it can have, so no generic pivot lies further left). `None` otherwise (the caller takes
-/// the RREF). Nothing is recorded.
+/// the RREF). Recorded: the factors of that pivot minor ([`record_minor`]; `None` when they
+/// cannot be found).
 pub fn pivots_qp(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Vec<usize>> {
-    let (b, _) = clear_rows(k.nvars(), m, n, a);
+    let (b, ds) = clear_rows(k.nvars(), m, n, a);
     let pr = profile_prime(0);
     let x = point(&pr, k.nvars(), 0xb17);
     let mut at: Vec<u64> = b.iter().map(|f| eval_mod_p(&pr, f, &x)).collect();
-    let (piv, _) = profile_mod_p(&pr, m, n, &mut at);
+    let (piv, rows) = profile_mod_p(&pr, m, n, &mut at);
     let r = m.min(n);
-    (piv.len() == r && piv.iter().enumerate().all(|(i, &p)| i == p)).then_some(piv)
+    let ok = piv.len() == r && piv.iter().enumerate().all(|(i, &p)| i == p);
+    (ok && record_minor(k, &b, n, &rows, &piv, &ds)).then_some(piv)
 }
 
 /// $\operatorname{rank} A$ over $\mathbb{Q}(p)$ (the conditions as for [`rref_qp`]).
 pub fn rank_qp(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<usize> {
-    let (b, _) = clear_rows(k.nvars(), m, n, a);
-    // a rank equal to min(m, n) at a point is proved (a nonzero minor)
+    let (b, ds) = clear_rows(k.nvars(), m, n, a);
+    // a rank equal to min(m, n) at a point is proved (a nonzero minor), where that minor is
+    // nonzero (its factors are recorded)
     let pr = profile_prime(0);
     let x = point(&pr, k.nvars(), 0xa11);
     let mut at: Vec<u64> = b.iter().map(|f| eval_mod_p(&pr, f, &x)).collect();
-    let (piv, _) = profile_mod_p(&pr, m, n, &mut at);
+    let (piv, rows) = profile_mod_p(&pr, m, n, &mut at);
     if piv.len() == m.min(n) {
-        return Some(piv.len());
+        return record_minor(k, &b, n, &rows, &piv, &ds).then_some(piv.len());
     }
     let e = echelon(k, m, n, a)?;
     record(k, &e);

@@ -249,10 +249,16 @@ impl<K: Field> StandardForm<K> {
         Report::titled("descriptor to standard form")
             .int("order", self.system.nstates())
             .int("removed_infinite", self.removed_infinite)
+            .str("method", self.method.name())
             .matrix("A", &self.system.a)
             .matrix("B", &self.system.b)
             .matrix("C", &self.system.c)
             .matrix("D", &self.system.d)
+            .matrix("V1", &self.v1)
+            .str(
+                "V1_note",
+                "the descriptor's states x = V1 z + (terms in u), z the states of A",
+            )
             .bool("verified", self.verified)
     }
 }

@@ -54,8 +54,9 @@ impl<K: Field> Scb<K> {
 
 impl<K: Field> MechanicalNormalForm<K> {
     /// The report with the CLI contract keys of `mnf`: `exists`, `reason`, `mass`, `damping`,
-    /// `stiffness`, `input`, `output`, `feedthrough`, `T`, `verified`, then `conditions`
-    /// and the search statistics.
+    /// `stiffness`, `input`, `output`, `feedthrough`, `T`, `verified` (`"not applicable"` when
+    /// no form exists, e.g. an odd number of states), then `conditions` and the search
+    /// statistics.
     pub fn report(&self) -> Report {
         let mut r = Report::titled("mechanical normal form")
             .bool("exists", self.exists)
@@ -91,7 +92,12 @@ impl<K: Field> MechanicalNormalForm<K> {
                 }
             }
         }
-        r = r.bool("verified", self.verified);
+        // no form, nothing to check: "not applicable" (never `false` beside exit 0)
+        r = if self.exists || self.form.is_some() {
+            r.bool("verified", self.verified)
+        } else {
+            r.str("verified", "not applicable")
+        };
         let conds = self
             .conditions
             .iter()

@@ -53,6 +53,7 @@ impl<K: Field> Scb<K> {
         let tinv = t.inverse()?;
         let mut s = self.clone();
         s.a = &(&t * &self.a) * &tinv;
+        s.zero_poly = std::sync::OnceLock::new(); // A changed
         s.b = &t * &self.b;
         s.c = &self.c * &tinv;
         s.gamma1 = &self.gamma1 * &tinv;

@@ -68,6 +68,8 @@ pub struct Scb<K: Field> {
     pub verified: bool,
     /// The system as given.
     pub orig: [Matrix<K>; 4],
+    /// $\det(sI - A_{aa})$, once computed.
+    zero_poly: std::sync::OnceLock<Poly<K>>,
 }
 
 /// Special coordinate basis of $(A, B, C, D)$.
@@ -141,6 +143,7 @@ pub fn scb<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>)
         right_invertible: sp.dims[1] == 0,
         verified: false,
         orig: [a.clone(), b.clone(), c.clone(), d.clone()],
+        zero_poly: std::sync::OnceLock::new(),
     };
     s.check()?;
     s.verified = true;
@@ -187,7 +190,9 @@ impl<K: Field> Scb<K> {
     /// The invariant zero polynomial $\det(sI - A_{aa})$ (monic; `1` when there are no
     /// finite invariant zeros).
     pub fn invariant_zero_polynomial(&self) -> Poly<K> {
-        self.a_aa().charpoly().expect("A_aa is square")
+        self.zero_poly
+            .get_or_init(|| self.a_aa().charpoly().expect("A_aa is square"))
+            .clone()
     }
     /// Minimum phase (all invariant zeros in the open left half plane), decided exactly by
     /// the Routh–Hurwitz test; `None` when the field is not real (no exact sign).
@@ -208,7 +213,9 @@ impl<K: Field> Scb<K> {
 }
 
 /// Routh–Hurwitz: are all roots of `p` in the open left half plane? `None` when the field
-/// has no exact sign. The constant polynomial counts as Hurwitz (no roots).
+/// has no exact sign for an entry it needs (over $\mathbb{Q}(p)$: a sign that depends on the
+/// parameters). The constant polynomial counts as Hurwitz (no roots). A coefficient that is
+/// zero, or two of opposite signs, decide `false` first (necessary condition).
 ///
 /// A polynomial with positive leading coefficient is Hurwitz iff every entry of the first
 /// column of its Routh array is positive; a zero entry means it is not.
@@ -217,6 +224,14 @@ pub fn hurwitz<K: Field>(p: &Poly<K>) -> Option<bool> {
     let n = p.degree()?;
     if n == 0 {
         return Some(true);
+    }
+    // necessary: every coefficient nonzero, all of one sign (decided where the field can)
+    let signs: Vec<Option<std::cmp::Ordering>> = (0..=n).map(|i| k.sign(&p.coeff(i))).collect();
+    if signs.contains(&Some(std::cmp::Ordering::Equal))
+        || (signs.contains(&Some(std::cmp::Ordering::Less))
+            && signs.contains(&Some(std::cmp::Ordering::Greater)))
+    {
+        return Some(false);
     }
     let lc = p.lc();
     let neg = k.sign(&lc)? == std::cmp::Ordering::Less;

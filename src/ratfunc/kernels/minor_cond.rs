@@ -1,0 +1,328 @@
+//! The condition of a pivot minor decided at a point: when a shortcut of the $\mathbb{Q}(p)$
+//! kernels proves a rank or a pivot pattern by one nonzero minor $\det C$ ($C = B_{S,P}$, the
+//! pivot rows and columns of the row-cleared $B$) at a random point, the result holds exactly
+//! where $\det C / \prod_{i \in S} d_i \ne 0$; its numerator's irreducible factors are recorded
+//! as conditions (where one vanishes, the rank drops or the pivots move: a change of structure).
+//!
+//! | size of $\det C$ | how its factors are found |
+//! |---|---|
+//! | interpolation grid $\le$ [`DENSE_GRID`] points | $\det C$ interpolated ([`super::det_zp`]), divided by $\prod d_i$; factored by the log |
+//! | larger (e.g. a Vandermonde minor: $10!$ terms) | **peeling**: candidates $f$ (irreducible factors of the entries of $C$ of total degree $\le 3$, of differences of two entries in one row or column, of the $d_i$, and the conditions recorded so far in this computation); on a random line $x = a + t b$ modulo a word prime, $g(t) = \det C(x)$ is interpolated ($\deg g \le D$, the total-degree bound) and divided by each $f(a + t b)$ as often as it goes; when the cofactor is a constant $c_0$, the identity $\det C = c_0 \prod f^{e_f}$ is checked at two further random points (Schwartz–Zippel: wrong with probability $\le 2D/q$, $q \approx 2^{62}$) |
+//!
+//! When neither applies (a cofactor that is not a constant), nothing is recorded and the caller
+//! gives the shortcut up (the generic elimination then records its pivots itself).
+
+use super::det_zp;
+use super::interp::{Bounds, grid_points};
+use super::modp::{det_mod_p, eval_mod_p};
+use crate::mpoly::{MPoly, factor};
+use crate::qkernels::prime::{Prime, nth_prime};
+use crate::ratfunc::RatFuncField;
+use crate::rng::SplitMix64;
+use std::collections::HashSet;
+
+/// Largest grid on which $\det C$ is interpolated outright.
+pub const DENSE_GRID: usize = 1 << 14;
+
+/// Largest number of distinct polynomials factored for candidates.
+const MAX_RAW: usize = 600;
+
+/// Records the factors of the numerator of $\det B_{S,P} / \prod_{i \in S} d_i$ (`b` row-major
+/// with `n` columns, `ds` the row denominators); `false` when they could not be found (see
+/// the module docs): nothing was recorded.
+pub fn record_minor(
+    k: &RatFuncField,
+    b: &[MPoly],
+    n: usize,
+    rows: &[usize],
+    cols: &[usize],
+    ds: &[MPoly],
+) -> bool {
+    let nv = k.nvars();
+    let r = rows.len();
+    if r == 0 {
+        return true;
+    }
+    let c: Vec<MPoly> = rows
+        .iter()
+        .flat_map(|&i| cols.iter().map(move |&j| b[i * n + j].clone()))
+        .collect();
+    let den = rows.iter().fold(MPoly::one(nv), |acc, &i| acc.mul(&ds[i]));
+    let all: Vec<usize> = (0..r).collect();
+    let bounds = Bounds::of_rows(nv, r, &c, &all);
+    if grid_points(&bounds) <= DENSE_GRID
+        && let Ok(d) = det_zp(nv, r, &c)
+    {
+        return match k.frac(d, den) {
+            Some(q) if !q.num().is_zero() => {
+                k.record_condition(q.num());
+                true
+            }
+            _ => false,
+        };
+    }
+    let known = k.conditions().unwrap_or_default();
+    match peel(r, &c, bounds.dtot as usize, &den, &known) {
+        Some(fs) => {
+            for f in &fs {
+                k.record_condition(f);
+            }
+            true
+        }
+        None => false,
+    }
+}
+
+/// The irreducible factors of `den`, of the entries of `c` of total degree at most 3 and of
+/// differences of two entries in one row or column (of total degree at most 2); `None` past
+/// [`MAX_RAW`]. (The
+/// caller adds the conditions recorded so far: a product such as $\mathcal O \mathcal C$
+/// has the factors of both.)
+fn candidates(r: usize, c: &[MPoly], den: &MPoly) -> Option<Vec<MPoly>> {
+    let mut raw: HashSet<MPoly> = HashSet::new();
+    let mut add = |p: MPoly| {
+        if !p.is_constant() {
+            raw.insert(p.primitive_part());
+        }
+    };
+    add(den.clone());
+    for e in c {
+        if e.total_degree() <= 3 {
+            add(e.clone());
+        }
+    }
+    let small = |e: &MPoly| e.total_degree() <= 2;
+    for line in 0..r {
+        for i in 0..r {
+            for j in i + 1..r {
+                for (x, y) in [
+                    (&c[line * r + i], &c[line * r + j]),
+                    (&c[i * r + line], &c[j * r + line]),
+                ] {
+                    if small(x) && small(y) && !(x.is_constant() && y.is_constant()) {
+                        add(x.sub(y));
+                    }
+                }
+            }
+        }
+    }
+    if raw.len() > MAX_RAW {
+        return None;
+    }
+    let mut out: HashSet<MPoly> = HashSet::new();
+    for p in raw {
+        for (g, _) in factor(&p).ok()?.factors {
+            out.insert(g);
+        }
+    }
+    let mut v: Vec<MPoly> = out.into_iter().collect();
+    v.sort_by(crate::mpoly::factor::cmp_poly);
+    Some(v)
+}
+
+/// The peeling of the module docs: the candidates whose multiplicity in $\det C$ exceeds
+/// that in `den`; `None` when the cofactor is not a constant or the check fails.
+fn peel(r: usize, c: &[MPoly], dtot: usize, den: &MPoly, known: &[MPoly]) -> Option<Vec<MPoly>> {
+    // the conditions recorded so far and the factors of `den` first (cheap), the entries'
+    // factors only when those leave a cofactor
+    let mut first: Vec<MPoly> = known.to_vec();
+    if !den.is_constant() {
+        for (g, _) in factor(den).ok()?.factors {
+            if !first.contains(&g) {
+                first.push(g);
+            }
+        }
+    }
+    if let Some(out) = peel_with(r, c, dtot, den, &first) {
+        return Some(out);
+    }
+    let mut cands = candidates(r, c, den)?;
+    for f in first {
+        if !cands.contains(&f) {
+            cands.push(f);
+        }
+    }
+    peel_with(r, c, dtot, den, &cands)
+}
+
+/// [`peel`] with the candidates `cands`.
+fn peel_with(
+    r: usize,
+    c: &[MPoly],
+    dtot: usize,
+    den: &MPoly,
+    cands: &[MPoly],
+) -> Option<Vec<MPoly>> {
+    let nv = den.nvars();
+    let pr = nth_prime(60);
+    let mut rng = SplitMix64(0x9ee1_c0d5);
+    let rand_pt = |rng: &mut SplitMix64| -> Vec<u64> {
+        (0..nv).map(|_| rng.next_u64() % pr.p).collect::<Vec<u64>>()
+    };
+    let a = rand_pt(&mut rng);
+    let dir = rand_pt(&mut rng);
+    let on_line =
+        |t: u64| -> Vec<u64> { (0..nv).map(|v| pr.add(a[v], pr.mul(t, dir[v]))).collect() };
+    let det_at = |x: &[u64]| -> u64 {
+        let mut m: Vec<u64> = c.iter().map(|f| eval_mod_p(&pr, f, x)).collect();
+        det_mod_p(&pr, r, &mut m)
+    };
+    let restrict = |vals: &dyn Fn(&[u64]) -> u64, deg: usize| -> Vec<u64> {
+        let ys: Vec<u64> = (0..=deg as u64).map(|t| vals(&on_line(t))).collect();
+        let mut g = newton_monomial(&pr, &ys);
+        trim(&mut g);
+        g
+    };
+    let mut g = restrict(&det_at, dtot);
+    if g.is_empty() {
+        return None;
+    }
+    let mut out = Vec::new();
+    let mut exps = Vec::new();
+    for f in cands {
+        let fl = restrict(
+            &|x: &[u64]| eval_mod_p(&pr, f, x),
+            f.total_degree() as usize,
+        );
+        if fl.len() < 2 {
+            return None; // constant on the line: an unlucky line
+        }
+        let mut e = 0usize;
+        while let Some(q) = div_exact(&pr, &g, &fl) {
+            g = q;
+            e += 1;
+        }
+        if e == 0 {
+            continue;
+        }
+        exps.push((f, e));
+        let mut in_den = 0usize;
+        let mut d = den.clone();
+        while let Some(q) = d.div_exact(f) {
+            d = q;
+            in_den += 1;
+        }
+        if e > in_den {
+            out.push(f.clone());
+        }
+    }
+    if g.len() != 1 {
+        return None;
+    }
+    for _ in 0..2 {
+        let x = rand_pt(&mut rng);
+        let rhs = exps.iter().fold(g[0], |acc, (f, e)| {
+            pr.mul(acc, pr.pow(eval_mod_p(&pr, f, &x), *e as u64))
+        });
+        if det_at(&x) != rhs {
+            return None;
+        }
+    }
+    Some(out)
+}
+
+/// Drops trailing zero coefficients.
+fn trim(g: &mut Vec<u64>) {
+    while g.last() == Some(&0) {
+        g.pop();
+    }
+}
+
+/// The coefficients (low degree first) of the polynomial taking the values `ys` at
+/// $t = 0, 1, \dots$ (Newton divided differences, then the change to monomials).
+fn newton_monomial(pr: &Prime, ys: &[u64]) -> Vec<u64> {
+    let m = ys.len();
+    let mut c = ys.to_vec();
+    for j in 1..m {
+        let inv = pr.inv(j as u64 % pr.p).expect("small nonzero");
+        for i in (j..m).rev() {
+            c[i] = pr.mul(pr.sub(c[i], c[i - 1]), inv);
+        }
+    }
+    // Horner: p(t) = c0 + t (c1 + (t - 1)(c2 + ...))
+    let mut out = vec![0u64; m];
+    for i in (0..m).rev() {
+        // out = out * (t - i) + c[i]
+        let shift = pr.neg(i as u64 % pr.p);
+        let mut next = vec![0u64; m];
+        for d in 0..m {
+            if out[d] == 0 {
+                continue;
+            }
+            if d + 1 < m {
+                next[d + 1] = pr.add(next[d + 1], out[d]);
+            }
+            next[d] = pr.add(next[d], pr.mul(out[d], shift));
+        }
+        next[0] = pr.add(next[0], c[i]);
+        out = next;
+    }
+    out
+}
+
+/// `g / f` modulo the prime when `f` divides `g` (both trimmed, `f` non-constant).
+fn div_exact(pr: &Prime, g: &[u64], f: &[u64]) -> Option<Vec<u64>> {
+    if g.len() < f.len() {
+        return None;
+    }
+    let mut rem = g.to_vec();
+    let df = f.len() - 1;
+    let inv = pr.inv(f[df])?;
+    let mut q = vec![0u64; g.len() - df];
+    for i in (0..q.len()).rev() {
+        let co = pr.mul(rem[i + df], inv);
+        q[i] = co;
+        if co != 0 {
+            for (j, &fj) in f.iter().enumerate() {
+                rem[i + j] = pr.sub(rem[i + j], pr.mul(co, fj));
+            }
+        }
+    }
+    rem[..df].iter().all(|&x| x == 0).then_some(q)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn newton_and_division_mod_p() {
+        let pr = nth_prime(60);
+        // (t + 2)(t - 3) = t^2 - t - 6
+        let ys: Vec<u64> = (0..4u64)
+            .map(|t| pr.mul(pr.add(t, 2), pr.sub(t, 3)))
+            .collect();
+        let mut g = newton_monomial(&pr, &ys);
+        trim(&mut g);
+        assert_eq!(g, vec![pr.neg(6), pr.neg(1), 1]);
+        assert_eq!(div_exact(&pr, &g, &[2, 1]), Some(vec![pr.neg(3), 1]));
+        assert_eq!(div_exact(&pr, &g, &[1, 1]), None);
+    }
+
+    /// The Vandermonde minor in 8 variables (8! terms, never expanded): its 28 factors
+    /// $p_i - p_j$ are recorded.
+    #[test]
+    fn vandermonde_by_peeling() {
+        let n = 8;
+        let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
+        let k = RatFuncField::new(&names).unwrap();
+        let b: Vec<MPoly> = (0..n)
+            .flat_map(|i| {
+                let k = k.clone();
+                (0..n).map(move |j| k.var(i).num().pow(j as u32))
+            })
+            .collect();
+        let ds = vec![MPoly::one(n); n];
+        let all: Vec<usize> = (0..n).collect();
+        assert!(record_minor(&k, &b, n, &all, &all, &ds));
+        let conds = k.conditions_strings().unwrap();
+        assert_eq!(conds.len(), n * (n - 1) / 2);
+        assert!(conds.contains(&"p0 - p1".to_string()), "{conds:?}");
+        // a minor with a factor that is no candidate: not found, nothing recorded
+        let k2 = k.fresh();
+        let mut b2 = b.clone();
+        b2[0] = k.parse("p0^3 + p1*p2 + 7").unwrap().num().clone();
+        assert!(!record_minor(&k2, &b2, n, &all, &all, &ds));
+        assert!(k2.conditions().unwrap().is_empty());
+    }
+}
