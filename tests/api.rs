@@ -153,3 +153,93 @@ fn the_worker_stops_waiting_at_the_deadline() {
     assert!(matches!(w.wait(), Poll::TimedOut));
     assert!(t.elapsed().as_secs_f64() < 4.0);
 }
+
+/// A random system over Q(p) (`A0`, `B0`, `C1`, algebraic weights `w`, gain `c`) as two files:
+/// the descriptor system with one algebraic state $0 = w x - x_{n+1}$ and $y = C_1 x + c\,x_{n+1}$,
+/// and the standard system $(A_0, B_0, C_1 + c w)$ it eliminates to.
+fn descriptor_and_eliminated(rng: &mut SplitMix64, n: usize) -> (String, String) {
+    let int = |rng: &mut SplitMix64| rng.int(-3, 3);
+    let entry = |rng: &mut SplitMix64, i: usize, j: usize| -> String {
+        // one symbolic entry on the diagonal, integers elsewhere
+        if i == j && i == 0 {
+            format!("\"p + {}\"", int(rng))
+        } else {
+            int(rng).to_string()
+        }
+    };
+    let a0: Vec<Vec<String>> = (0..n)
+        .map(|i| (0..n).map(|j| entry(rng, i, j)).collect())
+        .collect();
+    let b0: Vec<i64> = (0..n).map(|_| int(rng)).collect();
+    let c1: Vec<i64> = (0..n).map(|_| int(rng)).collect();
+    let w: Vec<i64> = (0..n).map(|_| int(rng)).collect();
+    let c = rng.int(1, 3);
+    let row = |v: Vec<String>| format!("[{}]", v.join(", "));
+    let mut a = Vec::new();
+    let mut e = Vec::new();
+    for (i, r) in a0.iter().enumerate() {
+        let mut r = r.clone();
+        r.push("0".into());
+        a.push(row(r));
+        e.push(row((0..=n).map(|j| u8::from(i == j).to_string()).collect()));
+    }
+    let mut last: Vec<String> = w.iter().map(i64::to_string).collect();
+    last.push("-1".into());
+    a.push(row(last));
+    e.push(row(vec!["0".to_string(); n + 1]));
+    let bcol = |v: &[i64], extra: bool| {
+        let mut rows: Vec<String> = v.iter().map(|x| format!("[{x}]")).collect();
+        if extra {
+            rows.push("[0]".into());
+        }
+        format!("[{}]", rows.join(", "))
+    };
+    let mut cd: Vec<String> = c1.iter().map(i64::to_string).collect();
+    cd.push(c.to_string());
+    let desc = format!(
+        r#"{{"parameters": {{"p": null}}, "E": [{}], "A": [{}], "B": {}, "C": [{}], "D": [[0]]}}"#,
+        e.join(", "),
+        a.join(", "),
+        bcol(&b0, true),
+        row(cd)
+    );
+    let cs: Vec<String> = (0..n).map(|j| (c1[j] + c * w[j]).to_string()).collect();
+    let std = format!(
+        r#"{{"parameters": {{"p": null}}, "A": [{}], "B": {}, "C": [{}], "D": [[0]]}}"#,
+        a0.iter()
+            .map(|r| row(r.clone()))
+            .collect::<Vec<_>>()
+            .join(", "),
+        bcol(&b0, false),
+        row(cs)
+    );
+    (desc, std)
+}
+
+#[test]
+fn tf_of_a_descriptor_over_qp_is_the_pencils() {
+    // class: index-1 descriptor systems over Q(p) (one algebraic state); `tf` gives the
+    // transfer matrix of the pencil, which is that of the eliminated standard system, and
+    // with `--at p=v` the numeric `tf` of the same file
+    let mut rng = SplitMix64(2424);
+    for case in 0..6 {
+        let (desc, std) = descriptor_and_eliminated(&mut rng, 1 + case % 3);
+        let d = temp_file(&format!("qpd{case}.json"), &desc);
+        let s = temp_file(&format!("qps{case}.json"), &std);
+        let tf = |p: &std::path::Path, at: Option<&str>| {
+            let cmd = Command::parse_args(&["tf", p.to_str().unwrap()]).unwrap();
+            json(&cmd, at).unwrap_or_else(|m| panic!("{desc}: {m}"))
+        };
+        let (gd, gs) = (tf(&d, None), tf(&s, None));
+        assert_eq!(gd["verified"], true, "{desc}");
+        assert_eq!(gd["field"], "QQ(p)");
+        assert_eq!(
+            gd["transfer_matrix"], gs["transfer_matrix"],
+            "{desc}\n{std}"
+        );
+        assert_eq!(gd["mcmillan_degree"], gs["mcmillan_degree"], "{desc}");
+        let (nd, ns) = (tf(&d, Some("p=2/3")), tf(&s, Some("p=2/3")));
+        assert_eq!(nd["transfer_matrix"], ns["transfer_matrix"], "{desc}");
+        assert_eq!(nd["verified"], true);
+    }
+}

@@ -264,8 +264,11 @@ class StateSpace(Operations):
         return MnfResult(self._core.mnf(max_seconds))
 
     def modes(self, max_seconds=None):
-        """The modal table: eigenvalue, frequency, damping ratio, time constant, period."""
-        if self._extension:
+        """The modal table: eigenvalue, frequency, damping ratio, time constant, period.
+        Over Q(i) / Q(sqrt d) and with symbolic parameters (the modes as formulas: the
+        factors of ``det(sI - A)`` over Q(p) with ``omega_n^2``, ``2 zeta omega_n``) a
+        :class:`Report`."""
+        if self._extension or self.is_symbolic:
             return _run(self, "modes", max_seconds=max_seconds)
         return ModalTable(self._core.modes(max_seconds))
 

@@ -224,6 +224,20 @@ impl System {
             api: Arc::new(s),
         }
     }
+    /// A system computed here (a minimal realization, ...), given to the front door by its
+    /// matrices.
+    pub(crate) fn of_sys(s: Arc<Sys>) -> Self {
+        let typed = match &*s {
+            Sys::Q(_, t) => TypedAny::Rational(t.clone()),
+            Sys::Quadratic(_, t) => TypedAny::Quadratic(t.clone()),
+            Sys::Sym(_, t) => TypedAny::RatFunc(t.clone()),
+        };
+        let api = exactlti::api::System::from_typed("system", typed);
+        System {
+            inner: s,
+            api: Arc::new(api),
+        }
+    }
 }
 
 impl From<(String, Typed<Q>)> for Sys {

@@ -63,8 +63,8 @@ OPS = {
 NUMBERS = "needs numbers"
 NOT_QUESTIONS = {}
 for _f in ("qp", "qp_descriptor"):
-    for _op in ("minreal era", "modes", "freqresp", "pzmap", "step", "impulse", "check",
-                "sweep", "critical"):
+    for _op in ("minreal era", "freqresp", "pzmap", "step", "impulse", "check", "sweep",
+                "critical"):
         NOT_QUESTIONS[(_op, _f)] = NUMBERS
     for _op in ("jordan --real", "minreal jordan"):
         NOT_QUESTIONS[(_op, _f)] = "a real form needs numbers"
@@ -82,7 +82,6 @@ for _f in ("qi", "qi_descriptor"):
 for _f in ("qi", "qi_descriptor", "qsqrt2", "qsqrt2_descriptor"):
     for _op in ("sweep", "critical"):
         NOT_YET[(_op, _f)] = "a parameter study needs rational entries"
-NOT_YET[("tf", "qp_descriptor")] = "is not yet supported"
 
 
 def _bin():

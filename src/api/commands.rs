@@ -357,7 +357,7 @@ impl SystemVisitor for FileCommand<'_> {
                 Err(Failure {
                     code: 2,
                     message: format!(
-                        "{}: `{name}` along {param} needs a number for every other parameter ({} without one); give them values with --at or in the file",
+                        "{}: `{name}` along {param} needs numbers for every other parameter ({} without one); give them values with --at or in the file",
                         self.path.display(),
                         other.join(", ")
                     ),

@@ -113,6 +113,19 @@ impl System {
         })
     }
 
+    /// A system given by its matrices over their field (`name` is used in messages): no
+    /// parameters, no signal names.
+    pub fn from_typed(name: &str, system: TypedAny) -> Self {
+        let ground = match &system {
+            TypedAny::Rational(_) => Ground::Rational,
+            TypedAny::Quadratic(t) => Ground::Quadratic(t.ss.a.field().clone()),
+            TypedAny::RatFunc(t) => Ground::RatFunc(t.a_raw.field().clone()),
+        };
+        let file =
+            SystemFile::without_matrices(name, ground, Default::default(), Default::default());
+        System::from(LoadedSystem { file, system })
+    }
+
     /// The built-in example of `analyze` without a file (sliding masses).
     ///
     /// # Errors

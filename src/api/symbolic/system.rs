@@ -90,11 +90,13 @@ pub(in crate::api) fn run(
             (rep.with(key, factors(&cp).map_err(e)?), c.verified)
         }
         Command::Tf { .. } => {
-            // a model file's standard form comes from the index-1 elimination, which keeps G
-            if t.descriptor.is_some() && !f.extra.contains_key("descriptor_states") {
-                return Ok(None);
-            }
-            tf(s).map_err(e)?
+            // with E: G = C (sE - A)^-1 B + D of the pencil, and the standard form (the
+            // system the other commands see) checked against it by its Markov parameters
+            let g = match &t.descriptor {
+                Some(d) => realization::descriptor_transfer_matrix(d).map_err(e)?,
+                None => s.transfer_matrix().map_err(e)?,
+            };
+            tf(s, &g).map_err(e)?
         }
         Command::Standard { .. } => match &t.descriptor {
             Some(d) => {
@@ -225,9 +227,12 @@ pub(in crate::api) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
 
 /// `tf` over $\mathbb{Q}(p)$: the transfer matrix in lowest terms, its McMillan degree (the
 /// Kalman minimal order) and the poles' factors; verified: the expansion of every entry at
-/// $s = \infty$ equals $D, CB, CAB, \dots$ ($2n$ terms).
-fn tf(s: &StateSpace<RatFuncField>) -> crate::Result<(Report, bool)> {
-    let g = s.transfer_matrix()?;
+/// $s = \infty$ equals $D, CB, CAB, \dots$ ($2n$ terms) of `s`, the system whose transfer
+/// matrix `g` is (with `E`: `g` from the pencil, `s` the standard form).
+fn tf(
+    s: &StateSpace<RatFuncField>,
+    g: &crate::system::transfer::TransferMatrix<RatFuncField>,
+) -> crate::Result<(Report, bool)> {
     let min = realization::minimal(s, MinrealMethod::Kalman)?;
     let poles = min.system.a.charpoly()?;
     let ok = g.matches_markov(s);
