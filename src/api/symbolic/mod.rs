@@ -5,10 +5,12 @@
 //! irreducible polynomials it assumes nonzero, and `verified` = its identity holds as
 //! rational functions): `linalg rank|det|charpoly|minpoly|rref|inverse|nullspace` on `A`,
 //! `jordan` and `mnf` ([`super::symbolic_jordan`]), `scb`, `minreal` (Kalman, Rosenbrock,
-//! Ho-Kalman), `tf`, `zeros` (with the zero polynomial's factors over $\mathbb{Q}(p)$), `ctrb`,
-//! `obsv`, `standard`, `analyze`
-//! ([`system`]); `bifurcations` in [`super::bifurcations`]. Every other command refuses with
-//! one line and exit status 2 (`modes`: give values with `--at`).
+//! Ho-Kalman), `tf` (with `E`: of the pencil), `zeros` (with the zero polynomial's factors
+//! over $\mathbb{Q}(p)$), `ctrb`, `obsv`, `standard`, `analyze`, `modes` (formulas,
+//! [`modes`]) ([`system`]); `pencil`, `minreal --descriptor` (generic); `bifurcations` in
+//! [`super::bifurcations`]; `sweep` / `critical` along the one symbol. Every other command
+//! refuses with one line and exit status 2 saying why (numbers asked of symbols: give them
+//! values with `--at`).
 //!
 //! [`execute`] is the $\mathbb{Q}(p)$ arm of [`crate::api::System::run`]; a file whose
 //! symbols all got values (`--at`) is typed over its numeric field and never comes here.
