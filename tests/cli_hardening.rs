@@ -294,7 +294,7 @@ fn fields_each_command_accepts() {
         ("ctrb", [0, 0, 0, 0]),
         ("obsv", [0, 0, 0, 0]),
         ("tf", [0, 0, 0, 0]),
-        ("modes", [0, 0, 0, 0]), // over Q(p): the modes as formulas (qp2)
+        ("modes", [0, 0, 0, 0]),
         ("freqresp --points 5", [0, 0, 0, 2]),
         ("check", [0, 0, 0, 2]),
         ("linalg det", [0, 0, 0, 0]),

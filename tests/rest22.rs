@@ -411,6 +411,11 @@ fn every_system_written_reads_back_with_the_same_transfer_matrix() {
             }
             assert_eq!(code, 0, "{cmd:?} {text}: {err}");
             let v: Value = serde_json::from_str(&out).unwrap();
+            if (m == 0 || p == 0) && v["order"] == 0 {
+                // no matrix of an order-0 system with no inputs (outputs) carries the number of
+                // outputs (inputs): nested lists cannot spell a 0 x k matrix
+                continue;
+            }
             for toml in [false, true] {
                 let ext = if toml { "toml" } else { "json" };
                 let back = system_of_output(&v, mats, toml);

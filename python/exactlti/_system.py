@@ -776,14 +776,15 @@ class MinrealResult:
     one), ``verified`` (controllable, observable, equal Markov parameters, exactly) and,
     for ``method="jordan"``, ``stages`` (e.g. 20 -> 16 -> 8 for the sliding masses).
     With symbolic parameters: ``conditions`` (see :class:`Conditions`): the result holds
-    wherever none of them vanishes (here the Kalman decomposition separated the modes
-    ``-a`` and ``-1``, assuming ``a != 1``).
+    wherever none of them vanishes (here both modes ``-a`` and ``-1`` are excited and
+    seen, so the order is 2 where ``a != 1``; at ``a = 1`` they merge into one mode of
+    order 1).
 
     >>> import exactlti
-    >>> G = exactlti.ss([["-a", 0], [0, -1]], [[1], [0]], [[1, 1]], params={"a": None})
+    >>> G = exactlti.ss([["-a", 0], [0, -1]], [[1], [1]], [[1, 1]], params={"a": None})
     >>> r = G.minreal()
-    >>> r.nstates, r.verified, r.A.to_sympy(), r.conditions
-    (1, True, Matrix([[-a]]), Conditions(a - 1 != 0))
+    >>> r.nstates, r.verified, r.conditions
+    (2, True, Conditions(a - 1 != 0))
     """
 
     def __init__(self, d, original):

@@ -80,9 +80,13 @@ pub fn execute_ctx(
                 if matches!(cmd, Command::Jordan { .. } | Command::Linalg { .. }) {
                     return super::a_only::fallback(cmd, path, err);
                 }
-                // a parameter study of a file without that parameter: that is the answer
+                // a parameter study of a file without that parameter: that is the answer; a
+                // file the study reads (an improper pencil) is studied
                 if let Command::Sweep { param, .. } | Command::Critical { param, .. } = cmd {
                     crate::study::ParamFamily::from_file(path, param)?;
+                    if super::common::check_study_file(path).is_ok() {
+                        return study(cmd, path, &opts.at, ctx);
+                    }
                 }
                 return Err(err.into());
             }
@@ -111,6 +115,58 @@ pub fn execute_on(cmd: &Command, sys: &System, ctx: &RunContext) -> Result<Outco
         from_file: sys.from_file(),
         ctx,
     })
+}
+
+/// `sweep` / `critical` of the file at `path` (`at`: values of other parameters).
+fn study(
+    cmd: &Command,
+    path: &Path,
+    at: &[(String, String)],
+    ctx: &RunContext,
+) -> Result<Outcome, Failure> {
+    match cmd {
+        Command::Sweep {
+            param,
+            from,
+            to,
+            points,
+            svg,
+            locus_svg,
+            csv,
+            ..
+        } => super::sweep::run(
+            &super::sweep::SweepArgs {
+                file: path,
+                param,
+                from: *from,
+                to: *to,
+                points: *points,
+                svg: svg.as_deref(),
+                locus_svg: locus_svg.as_deref(),
+                csv: csv.as_deref(),
+                at,
+            },
+            ctx.stdout,
+        ),
+        Command::Critical {
+            param,
+            from,
+            to,
+            digits,
+            ..
+        } => super::critical::run(&super::critical::CriticalArgs {
+            file: path,
+            param,
+            from,
+            to,
+            digits: *digits,
+            at,
+        }),
+        _ => Err(Failure {
+            code: 1,
+            message: "internal: not a parameter study".into(),
+        }),
+    }
 }
 
 impl Default for RunContext {
@@ -189,43 +245,9 @@ impl SystemVisitor for FileCommand<'_> {
                     path.display()
                 ),
             }),
-            Command::Sweep {
-                param,
-                from,
-                to,
-                points,
-                svg,
-                locus_svg,
-                csv,
-                ..
-            } => super::sweep::run(
-                &super::sweep::SweepArgs {
-                    file: path,
-                    param,
-                    from: *from,
-                    to: *to,
-                    points: *points,
-                    svg: svg.as_deref(),
-                    locus_svg: locus_svg.as_deref(),
-                    csv: csv.as_deref(),
-                    at: &self.opts.at,
-                },
-                self.ctx.stdout,
-            ),
-            Command::Critical {
-                param,
-                from,
-                to,
-                digits,
-                ..
-            } => super::critical::run(&super::critical::CriticalArgs {
-                file: path,
-                param,
-                from,
-                to,
-                digits: *digits,
-                at: &self.opts.at,
-            }),
+            Command::Sweep { .. } | Command::Critical { .. } => {
+                study(self.cmd, path, &self.opts.at, self.ctx)
+            }
             Command::Jordan { .. } if t.descriptor.is_some() => {
                 let d = t.descriptor.as_ref().expect("checked");
                 super::a_only::descriptor_jordan(self.cmd, d, path)

@@ -82,3 +82,15 @@ pub(super) fn exact_only(r: Report) -> Report {
             .collect(),
     }
 }
+
+/// Checks that a file swept by `sweep`/`critical` is a valid system: read exactly (any
+/// standard or descriptor form, also improper pencils), or, where its swept parameter is
+/// `null`, as a system over Q(p). The exact reader's error is kept when both refuse.
+pub(super) fn check_study_file(file: &Path) -> Result<(), crate::io::InputError> {
+    match crate::io::read_system_file(file) {
+        Ok(_) => Ok(()),
+        Err(e) => crate::io::symbolic::load_symbolic_path(file, &Default::default())
+            .map(|_| ())
+            .map_err(|_| e),
+    }
+}
