@@ -35,6 +35,9 @@ pub enum Error {
     ImproperTransfer(String),
     /// A system is unstable where stability is required (e.g. Gramians).
     Unstable(String),
+    /// An interconnection whose algebraic loop has no unique solution (feedback with
+    /// $I - \sigma D_2 D_1$ singular).
+    IllPosed(String),
     /// Text that does not parse: 1-based line and column, and what is wrong.
     Parse {
         line: usize,
@@ -83,6 +86,7 @@ impl fmt::Display for Error {
             Error::NotIrreducible(p) => write!(f, "modulus {p} is not irreducible over Q"),
             Error::ImproperTransfer(m) => write!(f, "improper system: {m}"),
             Error::Unstable(m) => write!(f, "unstable system: {m}"),
+            Error::IllPosed(m) => write!(f, "ill-posed interconnection: {m}"),
             Error::Parse { line, col, msg } => write!(f, "line {line}, column {col}: {msg}"),
             Error::Invalid(m) => write!(f, "{m}"),
             Error::Unsupported(m) => write!(f, "unsupported: {m}"),

@@ -17,6 +17,8 @@ mod bicycle;
 mod cli;
 #[path = "cli_hardening.rs"]
 mod cli_hardening;
+#[path = "cli_interconnect.rs"]
+mod cli_interconnect;
 #[path = "cli_mpoly.rs"]
 mod cli_mpoly;
 #[path = "cli_options.rs"]
@@ -25,6 +27,8 @@ mod cli_options;
 mod cli_pencil;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
+#[path = "dcgain.rs"]
+mod dcgain;
 #[path = "descriptor_class.rs"]
 mod descriptor_class;
 #[path = "display.rs"]
@@ -49,6 +53,8 @@ mod from_transfer;
 mod fuzz;
 #[path = "inputs.rs"]
 mod inputs;
+#[path = "interconnect.rs"]
+mod interconnect;
 #[path = "io.rs"]
 mod io;
 #[path = "jordan.rs"]
@@ -107,6 +113,8 @@ mod robustness;
 mod scb;
 #[path = "slowpaths.rs"]
 mod slowpaths;
+#[path = "steps.rs"]
+mod steps;
 #[path = "study.rs"]
 mod study;
 #[path = "study_classes.rs"]

@@ -67,6 +67,13 @@ pub fn execute_ctx(
     if let Command::Poly { op } = cmd {
         return poly(op).map(Outcome::plain);
     }
+    // commands on several files (or a file with only D): their own readers
+    if let Command::Interconnect(c) = cmd {
+        return super::interconnect::run(c, &opts);
+    }
+    if let Command::Dcgain { file } = cmd {
+        return super::dcgain::run(file, &opts);
+    }
     let sys = match file_of(cmd) {
         None => System::builtin(&opts)?,
         Some(path) => match System::open(path, &opts) {
@@ -205,8 +212,9 @@ pub(super) fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Critical { file, .. }
         | Command::Bifurcations { file, .. }
         | Command::Linalg { file, .. } => Some(file),
+        Command::Dcgain { file } => Some(file),
         Command::Analyze { file, .. } => file.as_deref(),
-        Command::Poly { .. } => None,
+        Command::Poly { .. } | Command::Interconnect(_) => None,
     }
 }
 
@@ -343,7 +351,9 @@ impl SystemVisitor for FileCommand<'_> {
             | Command::Pencil { .. }
             | Command::Ctrb { .. }
             | Command::Obsv { .. }
-            | Command::Tf { .. } => Err(Failure {
+            | Command::Tf { .. }
+            | Command::Interconnect(_)
+            | Command::Dcgain { .. } => Err(Failure {
                 code: 1,
                 message: "internal: command dispatched elsewhere".into(),
             }),

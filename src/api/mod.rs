@@ -18,11 +18,14 @@ pub mod budget;
 mod commands;
 mod common;
 mod critical;
+mod dcgain;
 mod float_cmds;
 mod float_compare;
+mod interconnect;
 mod pencil_cmds;
 pub mod plots;
 pub mod runner;
+pub mod steps;
 mod sweep;
 mod sweep_stream;
 mod symbolic;
@@ -33,6 +36,7 @@ pub use args::{LinalgOp, MethodArg, PolyCmd, TimeOpts};
 pub use bifurcations::Of;
 /// One command run in-process (no output, no time bound): the report and its status.
 pub use commands::{BUILTIN_EXAMPLE, RunContext, execute, execute_ctx, execute_on, execute_with};
+pub use interconnect::InterconnectCmd;
 pub use system::{Options, System, SystemVisitor};
 
 use crate::error::Error;
@@ -245,6 +249,16 @@ pub enum Command {
         #[arg(long, default_value_t = budget::DEFAULT_SECTION_SECONDS, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
         section_seconds: f64,
     },
+    /// Exact DC gain G(0) = D - C A^-1 B per channel (`inf` where the channel has a pole at
+    /// s = 0), python-control's `dcgain`.
+    Dcgain {
+        /// System file (JSON or TOML; see "FILE" in `exactlti --help`), or a file with only D.
+        file: PathBuf,
+    },
+    /// Interconnections: series, parallel, feedback, append (exact, python-control's
+    /// conventions), with `--minreal` and `--out`.
+    #[command(flatten)]
+    Interconnect(interconnect::InterconnectCmd),
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {
@@ -384,5 +398,16 @@ impl Command {
                 let first = t.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
                 first.trim().trim_start_matches("error:").trim().to_string()
             })
+    }
+}
+
+/// Writes the rendered output: `Ok` also when the reader went away (broken pipe: a quiet
+/// stop, as `exactlti analyze | head -1` expects); any other write error is returned.
+pub fn write_stdout(text: &str) -> std::io::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other,
     }
 }

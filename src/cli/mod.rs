@@ -61,6 +61,10 @@ pub struct Cli {
     /// LaTeX are always complete).
     #[arg(long, global = true)]
     pub full: bool,
+    /// `jordan`, `minreal --method kalman|jordan`: the derivation step by step (each step's
+    /// sentence, exact objects, identity and its check; over Q(p) what it assumes).
+    #[arg(long, global = true)]
+    pub steps: bool,
 }
 
 /// Renders a report in the chosen format (`--standalone` off, compact text).
@@ -94,16 +98,7 @@ fn say(msg: &str) {
     let _ = writeln!(std::io::stderr().lock(), "exactlti: {line}");
 }
 
-/// Writes the rendered output: `Ok` also when the reader went away (broken pipe: a quiet
-/// stop, as `exactlti analyze | head -1` expects); any other write error is returned.
-fn write_stdout(text: &str) -> std::io::Result<()> {
-    use std::io::Write;
-    let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-        other => other,
-    }
-}
+use crate::api::write_stdout;
 
 /// The one line (contract) for an option-parser error, and its exit status: `None` for
 /// `--help` / `--version`, which clap prints itself (exit 0).
@@ -172,6 +167,7 @@ pub fn run(cli: Cli) -> i32 {
     let format = cli.format;
     let standalone = cli.standalone;
     let full = cli.full;
+    let with_steps = cli.steps;
     let limit = cli.max_seconds;
     memory::set_max_memory_mib(cli.max_memory);
     let (tx, rx) = mpsc::channel();
@@ -185,12 +181,12 @@ pub fn run(cli: Cli) -> i32 {
     };
     let deadline = start + Duration::from_secs_f64(limit.clamp(1e-3, 1e7));
     let work = move || {
-        crate::api::execute_ctx(
-            &cli.command,
-            cli.symbolic.as_deref(),
-            cli.at.as_deref(),
-            &ctx,
-        )
+        let (sym, at) = (cli.symbolic.as_deref(), cli.at.as_deref());
+        if with_steps {
+            crate::api::steps::execute(&cli.command, sym, at, format, standalone)
+        } else {
+            crate::api::execute_ctx(&cli.command, sym, at, &ctx)
+        }
     };
     let worker = match Worker::spawn("exactlti-worker", Some(deadline), work) {
         Ok(w) => w,

@@ -197,15 +197,20 @@ pub fn load_symbolic_str(
             extra.insert(key, v.to_json());
         }
     }
-    // as the ordinary reader: with `A` given, a missing `B` is n x 0, `C` 0 x n, `D` zero
+    // as the ordinary reader: with `A` given, a missing `B` is n x m, `C` p x n (m, p from
+    // `D`, else 0), `D` zero
     let has =
         |mats: &[(&str, Matrix<RatFuncField>)], key: &str| mats.iter().any(|(m, _)| *m == key);
+    let (p_d, m_d) = mats
+        .iter()
+        .find(|(m, _)| *m == "D")
+        .map_or((0, 0), |(_, d)| d.shape());
     if let Some(n) = mats.iter().find(|(m, _)| *m == "A").map(|(_, a)| a.nrows()) {
         if !has(&mats, "B") {
-            mats.push(("B", Matrix::zeros(k.clone(), n, 0)));
+            mats.push(("B", Matrix::zeros(k.clone(), n, m_d)));
         }
         if !has(&mats, "C") {
-            mats.push(("C", Matrix::zeros(k.clone(), 0, n)));
+            mats.push(("C", Matrix::zeros(k.clone(), p_d, n)));
         }
     }
     let b_cols = mats.iter().find(|(m, _)| *m == "B").map(|(_, b)| b.ncols());

@@ -38,6 +38,7 @@
 
 pub mod chains;
 pub(crate) mod coeffs;
+pub mod derivation;
 pub mod over_k;
 pub mod params;
 pub mod primary;
@@ -46,6 +47,7 @@ pub(crate) mod realfield;
 pub mod response;
 mod roots;
 mod simple;
+pub mod steps;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use primary::PrimaryComponent;

@@ -214,7 +214,7 @@ fn elem_of(m: &Matrix<Q>, j: usize) -> NfElem {
 /// $W B$ for $W$ over $K$ and rational $B$, as rational products of coefficient matrices
 /// (row $r$ of $W$ as the $d \times n$ matrix of its coefficients times $B$): no product in
 /// $K$, and the integer product kernel does the work.
-fn times_rational(w: &Matrix<NumberField>, b: &Matrix<Q>) -> Matrix<NumberField> {
+pub(super) fn times_rational(w: &Matrix<NumberField>, b: &Matrix<Q>) -> Matrix<NumberField> {
     let k = w.field().clone();
     let d = k.degree();
     let mut out = Matrix::zeros(k, w.nrows(), b.ncols());
@@ -229,7 +229,7 @@ fn times_rational(w: &Matrix<NumberField>, b: &Matrix<Q>) -> Matrix<NumberField>
 }
 
 /// $C V$ for rational $C$ and $V$ over $K$, as [`times_rational`] does $W B$.
-fn rational_times(c: &Matrix<Q>, v: &Matrix<NumberField>) -> Matrix<NumberField> {
+pub(super) fn rational_times(c: &Matrix<Q>, v: &Matrix<NumberField>) -> Matrix<NumberField> {
     let k = v.field().clone();
     let d = k.degree();
     let ct = c.transpose();

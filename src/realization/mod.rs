@@ -36,6 +36,7 @@ mod method;
 mod minimal;
 mod modal;
 mod rosenbrock;
+pub mod steps;
 mod weierstrass;
 
 pub use controllability::{

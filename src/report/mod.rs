@@ -10,6 +10,8 @@ pub mod latex;
 pub mod numbers;
 pub mod plot;
 pub mod sections;
+pub mod steps;
+pub mod steps_latex;
 pub mod text;
 
 pub use text::{TextOptions, text_matrix};

@@ -8,10 +8,16 @@
 //! | [`StateSpace::transform`] | coordinates $x = T z$: $(T^{-1}AT, T^{-1}B, CT, D)$ |
 //! | [`StateSpace::markov`] | Markov parameters $C A^k B$ |
 //! | [`transfer::TransferMatrix`] | $G(s) = C (sI - A)^{-1} B + D$ as exact rational functions |
+//! | [`transfer_algebra`] | sums, products, block diagonals of transfer matrices (exact) |
+//! | [`dcgain::dc_gain`] | $G(0) = D - C A^{-1} B$ per channel (infinite at a pole at 0) |
+//! | [`interconnect`] | series, parallel, feedback, append (python-control's conventions) |
 
+pub mod dcgain;
 mod display;
+pub mod interconnect;
 pub mod time_response;
 pub mod transfer;
+pub mod transfer_algebra;
 
 use crate::error::{Error, Result};
 use crate::field::Field;

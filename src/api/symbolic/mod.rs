@@ -69,6 +69,8 @@ fn name(cmd: &Command) -> &'static str {
         Command::Sweep { .. } => "sweep",
         Command::Critical { .. } => "critical",
         Command::Bifurcations { .. } => "bifurcations",
+        Command::Interconnect(c) => c.name(),
+        Command::Dcgain { .. } => "dcgain",
     }
 }
 

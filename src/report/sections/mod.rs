@@ -7,6 +7,8 @@
 //! ([`factor_report`], [`roots_report`], [`already_standard`], [`float_jordan_fallback`]).
 
 mod algebraic;
+mod dcgain;
+mod interconnect;
 mod jordan;
 mod jordan_k;
 mod mpoly;
@@ -16,6 +18,7 @@ mod structure;
 mod tf_field;
 
 pub use algebraic::{factor_report, roots_report};
+pub use interconnect::{PartInfo, interconnection_report};
 pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,

@@ -1,0 +1,38 @@
+//! `dcgain FILE`: thin wrapper over [`crate::system::dcgain::dc_gain`] and its report.
+
+use super::SystemVisitor;
+use super::common::with_path;
+use super::{Failure, Outcome};
+use crate::field::Field;
+use crate::io::combine::load_system_or_gain;
+use crate::io::symbolic::SymbolicOptions;
+use crate::io::{SystemFile, TypedSystem};
+use crate::ratfunc::RatFuncField;
+use crate::system::dcgain::dc_gain;
+use std::path::Path;
+
+/// Runs `dcgain` on a system file (or a file with only `D`).
+pub fn run(path: &Path, sym: &SymbolicOptions) -> Result<Outcome, Failure> {
+    super::System::from(load_system_or_gain(path, sym)?).run(Dc { path })
+}
+
+struct Dc<'a> {
+    path: &'a Path,
+}
+
+impl SystemVisitor for Dc<'_> {
+    type Output = Result<Outcome, Failure>;
+    fn visit<K: Field + 'static>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+        let e = |err| with_path(self.path, err);
+        let g = dc_gain(&t.ss).map_err(e)?;
+        let mut r = g.report(t.ss.field());
+        // over Q(p): what the gain assumes nonzero (A invertible, the denominators at 0)
+        if let Some(k) = (t.ss.field() as &dyn std::any::Any).downcast_ref::<RatFuncField>() {
+            let conds = k.conditions_strings().map_err(e)?;
+            r = r
+                .str("field", k.to_string())
+                .with("conditions", crate::report::str_list(conds));
+        }
+        Ok(Outcome::new(r, g.verified))
+    }
+}

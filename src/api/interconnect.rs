@@ -1,0 +1,180 @@
+//! `series`, `parallel`, `feedback`, `append`: thin wrapper over
+//! [`crate::system::interconnect`] (the operations and their exact check),
+//! [`crate::io::combine`] (the files over one field), [`crate::realization::minimal`]
+//! (`--minreal`), [`crate::report::sections::interconnection_report`] and
+//! [`crate::io::write`] (`--out`: the result as a system file that reads back).
+
+use super::common::with_path;
+use super::{Failure, Outcome};
+use crate::field::Field;
+use crate::io::combine::{SystemsVisitor, common_field, load_system_or_gain};
+use crate::io::symbolic::SymbolicOptions;
+use crate::io::{InputError, TypedSystem};
+use crate::ratfunc::RatFuncField;
+use crate::realization::{MinrealMethod, minimal};
+use crate::report::sections::{PartInfo, interconnection_report};
+use crate::system::interconnect::{Interconnection, Operation, Sign, verify};
+use clap::Subcommand;
+use std::path::{Path, PathBuf};
+
+/// Options of every interconnection.
+#[derive(clap::Args, Debug, Clone)]
+pub struct InterconnectOpts {
+    /// Also the exact minimal realization of the result (Kalman decomposition), verified.
+    #[arg(long)]
+    pub minreal: bool,
+    /// Write the result (the minimal realization with --minreal) as a JSON system file.
+    #[arg(long, value_name = "OUT.json")]
+    pub out: Option<PathBuf>,
+}
+
+/// The interconnection subcommands (python-control's conventions).
+#[derive(Subcommand, Debug, Clone)]
+pub enum InterconnectCmd {
+    /// Series connection G then H (python-control `series(G, H)` = H * G): transfer
+    /// matrix H G, states [x_G; x_H].
+    Series {
+        /// The first system (its outputs feed H).
+        g: PathBuf,
+        /// The second system.
+        h: PathBuf,
+        #[command(flatten)]
+        opts: InterconnectOpts,
+    },
+    /// Parallel connection: transfer matrix G + H.
+    Parallel {
+        g: PathBuf,
+        h: PathBuf,
+        #[command(flatten)]
+        opts: InterconnectOpts,
+    },
+    /// Feedback u = r - K y around G: transfer matrix (I + G K)^-1 G (with --positive
+    /// u = r + K y, (I - G K)^-1 G). K is a system file or a static gain (a file with only D).
+    Feedback {
+        /// The system in the forward path.
+        g: PathBuf,
+        /// The feedback path: a system, or a file with only `D` (a gain).
+        k: PathBuf,
+        /// Positive feedback (sign +1).
+        #[arg(long)]
+        positive: bool,
+        #[command(flatten)]
+        opts: InterconnectOpts,
+    },
+    /// The systems side by side: transfer matrix diag(G1, G2, ...).
+    Append {
+        /// The systems, in order.
+        #[arg(required = true, num_args = 1..)]
+        files: Vec<PathBuf>,
+        #[command(flatten)]
+        opts: InterconnectOpts,
+    },
+}
+
+impl InterconnectCmd {
+    /// The command's name as typed.
+    pub fn name(&self) -> &'static str {
+        self.parts().0.name()
+    }
+    fn parts(&self) -> (Operation, Vec<&Path>, &InterconnectOpts) {
+        match self {
+            InterconnectCmd::Series { g, h, opts } => (Operation::Series, vec![g, h], opts),
+            InterconnectCmd::Parallel { g, h, opts } => (Operation::Parallel, vec![g, h], opts),
+            InterconnectCmd::Feedback {
+                g,
+                k,
+                positive,
+                opts,
+            } => {
+                let s = if *positive {
+                    Sign::Positive
+                } else {
+                    Sign::Negative
+                };
+                (Operation::Feedback(s), vec![g, k], opts)
+            }
+            InterconnectCmd::Append { files, opts } => (
+                Operation::Append,
+                files.iter().map(PathBuf::as_path).collect(),
+                opts,
+            ),
+        }
+    }
+}
+
+/// Runs an interconnection command.
+pub fn run(cmd: &InterconnectCmd, sym: &SymbolicOptions) -> Result<Outcome, Failure> {
+    let (op, paths, opts) = cmd.parts();
+    let loaded = paths
+        .iter()
+        .map(|p| load_system_or_gain(p, sym))
+        .collect::<Result<Vec<_>, InputError>>()?;
+    let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let systems = common_field(&loaded)?;
+    systems.run(Connect { op, names, opts })
+}
+
+struct Connect<'a> {
+    op: Operation,
+    names: Vec<String>,
+    opts: &'a InterconnectOpts,
+}
+
+impl SystemsVisitor for Connect<'_> {
+    type Output = Result<Outcome, Failure>;
+    fn visit<K: Field + 'static>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+        let what = format!("{} {}", self.op.name(), self.names.join(" "));
+        let e = |err| with_path(Path::new(&what), err);
+        let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();
+        let conn = Interconnection::of(self.op, &parts).map_err(e)?;
+        let sys = conn.compute().map_err(e)?;
+        let min = if self.opts.minreal {
+            Some(minimal(&sys, MinrealMethod::Kalman).map_err(e)?)
+        } else {
+            None
+        };
+        // over Q(p): the conditions of the result, before the check evaluates at points
+        let symbols = (sys.field() as &dyn std::any::Any)
+            .downcast_ref::<RatFuncField>()
+            .map(|k| (k.vars().to_vec(), k.conditions_strings()));
+        let verified = verify(&conn, &sys);
+        let info: Vec<PartInfo> = self
+            .names
+            .iter()
+            .zip(&parts)
+            .map(|(n, s)| PartInfo {
+                name: n.clone(),
+                states: s.nstates(),
+                inputs: s.ninputs(),
+                outputs: s.noutputs(),
+            })
+            .collect();
+        let mut report = interconnection_report(self.op, &info, &sys, verified, min.as_ref());
+        if let Some((_, conds)) = &symbols {
+            let conds = conds.clone().map_err(e)?;
+            report = report.with("conditions", crate::report::str_list(conds));
+        }
+        if let Some(out) = &self.opts.out {
+            if out
+                .extension()
+                .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
+            {
+                return Err(Failure {
+                    code: 2,
+                    message: format!("{}: --out writes JSON; name the file .json", out.display()),
+                });
+            }
+            let written = min.as_ref().map_or(&sys, |m| &m.system);
+            let vars = symbols.map(|s| s.0).unwrap_or_default();
+            let name = format!("{} of {}", self.op.name(), self.names.join(", "));
+            let text = crate::io::write::system_file_text(Some(&name), written, &vars);
+            std::fs::write(out, text).map_err(|err| Failure {
+                code: 2,
+                message: format!("{}: cannot write: {err}", out.display()),
+            })?;
+            report = report.str("written", out.display().to_string());
+        }
+        let ok = verified && min.as_ref().is_none_or(|m| m.verified);
+        Ok(Outcome::new(report, ok))
+    }
+}

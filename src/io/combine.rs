@@ -1,0 +1,162 @@
+//! Several system files over one field: the systems of an interconnection (`series`,
+//! `feedback`, ...) must live in one field $K$. Files over $\mathbb{Q}$ are lifted into the
+//! field of the others ($\mathbb{Q} \subset \mathbb{Q}(\sqrt d)$, $\mathbb{Q} \subset
+//! \mathbb{Q}(p_1, \dots, p_k)$); two different quadratic fields, or parameter fields with
+//! different symbols, are refused naming the file.
+//!
+//! [`load_system_or_gain`] also reads a static gain: a file with only `D` (a system without
+//! states, $y = D u$).
+
+use super::load::{LoadedSystem, TypedAny, TypedSystem};
+use super::raw::{Raw, from_json_text, from_toml_text};
+use super::symbolic::{SymbolicOptions, load_symbolic_str};
+use super::{Ground, InputError, SystemFormat};
+use crate::field::{Field, Q, QuadraticField};
+use crate::matrix::Matrix;
+use crate::ratfunc::RatFuncField;
+use crate::system::{Descriptor, StateSpace};
+use std::path::Path;
+
+/// Systems over one common field.
+#[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
+pub enum CommonSystems {
+    Rational(Vec<TypedSystem<Q>>),
+    Quadratic(Vec<TypedSystem<QuadraticField>>),
+    RatFunc(Vec<TypedSystem<RatFuncField>>),
+}
+
+/// Work on several systems, written once for every field `K`.
+pub trait SystemsVisitor {
+    type Output;
+    fn visit<K: Field + 'static>(self, systems: &[TypedSystem<K>]) -> Self::Output;
+}
+
+impl CommonSystems {
+    /// Runs `v` over the common field.
+    pub fn run<V: SystemsVisitor>(&self, v: V) -> V::Output {
+        match self {
+            CommonSystems::Rational(s) => v.visit(s),
+            CommonSystems::Quadratic(s) => v.visit(s),
+            CommonSystems::RatFunc(s) => v.visit(s),
+        }
+    }
+}
+
+/// `t` with its matrices mapped into `k` entry by entry.
+fn lift<K: Field, L: Field>(
+    t: &TypedSystem<K>,
+    k: &L,
+    f: &dyn Fn(&K::Elem) -> L::Elem,
+) -> TypedSystem<L> {
+    let m = |x: &Matrix<K>| x.map(k, f);
+    TypedSystem {
+        descriptor: t.descriptor.as_ref().map(|d| Descriptor {
+            e: m(&d.e),
+            a: m(&d.a),
+            b: m(&d.b),
+            c: m(&d.c),
+            d: m(&d.d),
+        }),
+        a_raw: m(&t.a_raw),
+        ss: StateSpace {
+            a: m(&t.ss.a),
+            b: m(&t.ss.b),
+            c: m(&t.ss.c),
+            d: m(&t.ss.d),
+        },
+    }
+}
+
+/// The systems over one field (see the module docs).
+///
+/// # Errors
+/// Files over two different non-rational fields (named by the second file).
+pub fn common_field(systems: &[LoadedSystem]) -> Result<CommonSystems, InputError> {
+    let target = systems.iter().find(|s| s.file.ground != Ground::Rational);
+    let Some(target) = target else {
+        let all = systems
+            .iter()
+            .filter_map(|s| s.rational().cloned())
+            .collect();
+        return Ok(CommonSystems::Rational(all));
+    };
+    for s in systems {
+        if s.file.ground != Ground::Rational && s.file.ground != target.file.ground {
+            return Err(InputError::file(
+                &s.file.path,
+                format!(
+                    "its entries lie in {} but those of {} in {}: the systems need one field",
+                    s.file.ground, target.file.path, target.file.ground
+                ),
+            ));
+        }
+    }
+    Ok(match &target.system {
+        TypedAny::Quadratic(t) => {
+            let k = t.ss.field().clone();
+            CommonSystems::Quadratic(
+                systems
+                    .iter()
+                    .map(|s| match &s.system {
+                        TypedAny::Quadratic(t) => t.clone(),
+                        TypedAny::Rational(t) => lift(t, &k, &|x| k.from_rational(x)),
+                        TypedAny::RatFunc(_) => unreachable!("checked: one field"),
+                    })
+                    .collect(),
+            )
+        }
+        TypedAny::RatFunc(t) => {
+            let k = t.ss.field().fresh();
+            CommonSystems::RatFunc(
+                systems
+                    .iter()
+                    .map(|s| match &s.system {
+                        TypedAny::RatFunc(t) => t.in_field(&k),
+                        TypedAny::Rational(t) => lift(t, &k, &|x| k.from_rational(x)),
+                        TypedAny::Quadratic(_) => unreachable!("checked: one field"),
+                    })
+                    .collect(),
+            )
+        }
+        TypedAny::Rational(_) => unreachable!("not rational"),
+    })
+}
+
+/// Loads a system file (with symbols when it has them or `opts` names them), or a static
+/// gain: a file whose only matrix key is `D` is read as the system without states
+/// $y = D u$ (as if it gave `A = []`).
+///
+/// # Errors
+/// An unreadable file; the reader's errors.
+pub fn load_system_or_gain(
+    path: &Path,
+    opts: &SymbolicOptions,
+) -> Result<LoadedSystem, InputError> {
+    let shown = path.display().to_string();
+    let text = super::read_text(path)?;
+    let format = SystemFormat::of(path, &text);
+    let raw = match format {
+        SystemFormat::Json => from_json_text(&text, &shown),
+        SystemFormat::Toml => from_toml_text(&text, &shown),
+    };
+    let gain_only = match &raw {
+        Ok(Raw::Table(entries)) => {
+            let keys: Vec<&str> = entries.iter().map(|(k, _)| k.as_str()).collect();
+            keys.contains(&"D") && !keys.iter().any(|k| SYSTEM_MATRIX_KEYS.contains(k))
+        }
+        _ => false,
+    };
+    if !gain_only {
+        return load_symbolic_str(&text, format, &shown, opts);
+    }
+    // `A = []` first: a top-level TOML key before any table, a JSON object's first member
+    let with_a = match format {
+        SystemFormat::Toml => format!("A = []\n{text}"),
+        SystemFormat::Json => text.replacen('{', "{\"A\": [], ", 1),
+    };
+    load_symbolic_str(&with_a, format, &shown, opts)
+}
+
+/// Keys that make a file more than a gain.
+const SYSTEM_MATRIX_KEYS: [&str; 9] = ["A", "B", "C", "E", "M", "L", "K", "F", "G"];

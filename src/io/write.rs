@@ -1,0 +1,85 @@
+//! A system written as a system file (JSON) that the reader reads back to the same matrices:
+//! entries as exact strings in the display of their field (`-1/2`, `1 + sqrt(2)/2`,
+//! `-a - k`, each parsed back by [`super::expr`] or the symbolic reader), symbols as `null`
+//! parameters, a matrix with a zero dimension as `[]` (read as $n \times 0$ or
+//! $0 \times n$ by the shape rules).
+
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::system::StateSpace;
+use serde_json::{Map, Value};
+
+fn matrix_json<K: Field>(m: &Matrix<K>) -> Value {
+    if m.nrows() == 0 || m.ncols() == 0 {
+        return Value::Array(vec![]);
+    }
+    let k = m.field();
+    Value::Array(
+        (0..m.nrows())
+            .map(|i| {
+                Value::Array(
+                    m.row(i)
+                        .iter()
+                        .map(|x| Value::String(k.fmt_elem(x)))
+                        .collect(),
+                )
+            })
+            .collect(),
+    )
+}
+
+/// The system file of `ss`: keys `name` (when given), `parameters` (each of `symbols` as
+/// `null`, when there are symbols), `A`, `B`, `C`, `D`.
+pub fn system_file_json<K: Field>(
+    name: Option<&str>,
+    ss: &StateSpace<K>,
+    symbols: &[String],
+) -> Value {
+    let mut o = Map::new();
+    if let Some(n) = name {
+        o.insert("name".into(), Value::String(n.to_string()));
+    }
+    if !symbols.is_empty() {
+        let p: Map<String, Value> = symbols.iter().map(|s| (s.clone(), Value::Null)).collect();
+        o.insert("parameters".into(), Value::Object(p));
+    }
+    for (key, m) in [("A", &ss.a), ("B", &ss.b), ("C", &ss.c), ("D", &ss.d)] {
+        o.insert(key.into(), matrix_json(m));
+    }
+    Value::Object(o)
+}
+
+/// [`system_file_json`] as text: one key per line, one matrix row per line.
+pub fn system_file_text<K: Field>(
+    name: Option<&str>,
+    ss: &StateSpace<K>,
+    symbols: &[String],
+) -> String {
+    let Value::Object(o) = system_file_json(name, ss, symbols) else {
+        unreachable!("an object")
+    };
+    let mut lines = Vec::new();
+    for (k, v) in &o {
+        let key = Value::String(k.clone()).to_string();
+        let val = match v {
+            Value::Array(rows) if !rows.is_empty() => {
+                let rows: Vec<String> = rows.iter().map(row_text).collect();
+                format!("[\n    {}\n  ]", rows.join(",\n    "))
+            }
+            v => v.to_string(),
+        };
+        lines.push(format!("  {key}: {val}"));
+    }
+    format!("{{\n{}\n}}\n", lines.join(",\n"))
+}
+
+/// `["1", "-1/2"]`: a row with a space after each comma.
+fn row_text(row: &Value) -> String {
+    match row {
+        Value::Array(xs) => {
+            let xs: Vec<String> = xs.iter().map(Value::to_string).collect();
+            format!("[{}]", xs.join(", "))
+        }
+        v => v.to_string(),
+    }
+}

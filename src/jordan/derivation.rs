@@ -1,0 +1,250 @@
+//! Derivations as data: the steps a method takes, each with the exact objects it computed and
+//! the identity it establishes (issue 27, `--steps`).
+//!
+//! A [`Derivation`] over a field `K` is a list of [`Step`]s. A step holds
+//! * its [`StepKind`] (which fixes the sentence and the identity the report writes),
+//! * the objects it computed ([`Object`]: matrices, polynomials, ranks, index lists), keyed by
+//!   the symbol they carry in the identity (`"N"`, `"ranks"`, ...),
+//! * `holds`: the identity, checked exactly in `K` (`None` for a step that only computes),
+//! * `assumes`: elements of `K` assumed nonzero from this step on (over $\mathbb{Q}(p)$: the
+//!   irreducible factors of the pivots it divided by; empty over number fields).
+//!
+//! Algorithms record steps through a [`Recorder`]; the text, JSON and LaTeX renderings are made
+//! in `report::steps`. No display strings live here.
+
+use crate::field::Field;
+use crate::matrix::Matrix;
+use crate::poly::Poly;
+
+/// The method a derivation belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// The Jordan decomposition $A T = T J$.
+    Jordan,
+    /// Minimal realization by the Kalman decomposition.
+    Kalman,
+    /// Minimal realization by the Jordan form (minimal-realization paper sec. 3.3).
+    JordanMethod,
+}
+
+/// What a step computes; each kind has one sentence and one identity (see `report::steps`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StepKind {
+    /// $\chi_A(x) = \det(xI - A)$. Objects: `A`, `chi`.
+    CharPoly,
+    /// $\chi_A = \prod_i p_i^{e_i}$, $p_i$ irreducible. Objects: `factors`.
+    Factorization,
+    /// $N = A - \theta I$ and $\operatorname{rank} N^k$, $\dim\ker N^k = n - \operatorname{rank}
+    /// N^k$ until the dimension reaches the multiplicity $m$. Objects: `theta`, `N`, `ranks`,
+    /// `dims`, `m`.
+    KernelSequence,
+    /// Weyr characteristic $w_k = \dim\ker N^k - \dim\ker N^{k-1}$ (blocks of size $\ge k$) and
+    /// its conjugate, the Segre characteristic (block sizes). Objects: `weyr`, `segre`.
+    WeyrSegre,
+    /// One Jordan chain, built top-down: $v_s \in \ker N^s \setminus \ker N^{s-1}$, $v_{j-1} =
+    /// N v_j$, so $N v_1 = 0$. Objects: `V` (columns $v_1, \dots, v_s$), `top` (level $s$).
+    Chain,
+    /// The chains of one eigenvalue: $A V = V J_\theta$. Objects: `V`, `J`.
+    EigenCheck,
+    /// An irreducible factor $f$ of degree $d \ge 2$ over $\mathbb{Q}(p)$: $\dim\ker f(A)^k$,
+    /// block sizes, a basis $B$ of $\ker f(A)^e$ and the restriction $M$ with $A B = B M$.
+    /// Objects: `f`, `dims`, `segre`, `B`, `M`.
+    PrimaryBlock,
+    /// $A T = T J$ with $T$ invertible. Objects: `T`, `J` (over $\mathbb{Q}(p)$) or `n`, `dims`.
+    Similarity,
+    /// $\mathcal C = [B, AB, \dots, A^{n-1}B]$, its rank. Objects: `Ctrb`, `rank`.
+    Controllability,
+    /// Controllable subspace $\mathcal R = \operatorname{im}\mathcal C$: the pivot columns of the
+    /// RREF of $\mathcal C$ (Krylov vectors). Objects: `R`, `pivots`.
+    ControllableSubspace,
+    /// $\mathcal O = [C; CA; \dots; CA^{n-1}]$, its rank. Objects: `Obsv`, `rank`.
+    Observability,
+    /// Unobservable subspace $\mathcal N = \ker\mathcal O$. Objects: `Nobs`.
+    UnobservableSubspace,
+    /// $T = [X_{c\bar o}, X_{co}, X_{\bar c\bar o}, X_{\bar c o}]$. Objects: `T`, `dims`.
+    KalmanBasis,
+    /// $(T^{-1}AT, T^{-1}B, CT)$ with the Kalman zero pattern. Objects: `At`, `Bt`, `Ct`.
+    KalmanForm,
+    /// The controllable and observable part $(A_{22}, B_2, C_2, D)$ and the check of the
+    /// Markov parameters $C A^k B = C_2 A_{22}^k B_2$, $k < n + r$. Objects: `Am`, `Bm`, `Cm`,
+    /// `order`, `mcmillan`.
+    MinimalPart,
+    /// Modal data of one eigenvalue: $(J_\theta, W B, C V)$. Objects: `theta`, `J`, `WB`, `CV`.
+    ModalData,
+    /// Non-contributing modes dropped: per Jordan block the states before the first observed
+    /// one and after the last excited one. Objects: `kept`, `not_excited`, `not_observed`,
+    /// `Jk`, `Bk`, `Ck`; identity: the Markov parameters of the block are unchanged.
+    DropModes,
+    /// Repeated modes compacted: a minimal realization of $(N, W B, C V)$ over $K$ in Jordan
+    /// form. Objects: `J`, `B`, `C`, `order`; identity: Markov parameters unchanged.
+    Compaction,
+    /// The orders of the stages (original, after dropping, after compaction) and the exact
+    /// check $\sum_p \operatorname{Tr}(C_p J_p^k B_p) = C A^k B$, order = McMillan degree.
+    /// Objects: `stages`, `mcmillan`.
+    Stages,
+}
+
+/// An exact object a step computed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Object<K: Field> {
+    Matrix(Matrix<K>),
+    Poly(Poly<K>),
+    /// Irreducible factors with multiplicities.
+    Factors(Vec<(Poly<K>, usize)>),
+    Scalar(K::Elem),
+    Count(usize),
+    /// A sequence of counts (ranks, dimensions, block sizes).
+    Counts(Vec<usize>),
+}
+
+/// One step (see the module docs).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Step<K: Field> {
+    pub kind: StepKind,
+    /// The eigenvalue / factor this step belongs to (index in the order of the factors).
+    pub part: Option<usize>,
+    pub objects: Vec<(&'static str, Object<K>)>,
+    /// The identity of the step, checked exactly (`None`: the step only computes).
+    pub holds: Option<bool>,
+    /// Elements assumed nonzero from this step on (over $\mathbb{Q}(p)$).
+    pub assumes: Vec<K::Elem>,
+}
+
+impl<K: Field> Step<K> {
+    /// The object named `key`.
+    pub fn get(&self, key: &str) -> Option<&Object<K>> {
+        self.objects.iter().find(|(k, _)| *k == key).map(|(_, o)| o)
+    }
+    /// The matrix named `key`.
+    pub fn matrix(&self, key: &str) -> Option<&Matrix<K>> {
+        match self.get(key) {
+            Some(Object::Matrix(m)) => Some(m),
+            _ => None,
+        }
+    }
+    /// The counts named `key` (a single count as a one-element slice is not returned).
+    pub fn counts(&self, key: &str) -> Option<&[usize]> {
+        match self.get(key) {
+            Some(Object::Counts(c)) => Some(c),
+            _ => None,
+        }
+    }
+    /// The count named `key`.
+    pub fn count(&self, key: &str) -> Option<usize> {
+        match self.get(key) {
+            Some(Object::Count(c)) => Some(*c),
+            _ => None,
+        }
+    }
+    /// The scalar named `key`.
+    pub fn scalar(&self, key: &str) -> Option<&K::Elem> {
+        match self.get(key) {
+            Some(Object::Scalar(x)) => Some(x),
+            _ => None,
+        }
+    }
+}
+
+/// A method's derivation: its steps, in order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Derivation<K: Field> {
+    pub method: Method,
+    /// The field of the input (the assumptions' field).
+    pub field: K,
+    pub steps: Vec<Step<K>>,
+}
+
+impl<K: Field> Derivation<K> {
+    /// Every identity recorded holds.
+    pub fn verified(&self) -> bool {
+        self.steps.iter().all(|s| s.holds != Some(false))
+    }
+    /// The steps of one kind.
+    pub fn of_kind(&self, kind: StepKind) -> impl Iterator<Item = &Step<K>> {
+        self.steps.iter().filter(move |s| s.kind == kind)
+    }
+    /// Every element assumed nonzero.
+    pub fn assumptions(&self) -> Vec<&K::Elem> {
+        self.steps.iter().flat_map(|s| &s.assumes).collect()
+    }
+}
+
+/// Source of the elements assumed nonzero so far (over $\mathbb{Q}(p)$: the field's log).
+pub type AssumptionLog<'a, K> = Box<dyn Fn() -> Vec<<K as Field>::Elem> + 'a>;
+
+/// Collects steps; with a log, each step gets the assumptions that appeared since the last.
+pub struct Recorder<'a, K: Field> {
+    derivation: Derivation<K>,
+    log: Option<AssumptionLog<'a, K>>,
+    seen: Vec<K::Elem>,
+}
+
+impl<'a, K: Field> Recorder<'a, K> {
+    /// A recorder for `method` over `field`, without assumptions.
+    pub fn new(method: Method, field: K) -> Self {
+        Recorder {
+            derivation: Derivation {
+                method,
+                field,
+                steps: vec![],
+            },
+            log: None,
+            seen: vec![],
+        }
+    }
+    /// A recorder reading the assumptions made so far from `log` after every step.
+    pub fn with_log(method: Method, field: K, log: AssumptionLog<'a, K>) -> Self {
+        let mut r = Self::new(method, field);
+        r.seen = log();
+        r.log = Some(log);
+        r
+    }
+    /// Records a step.
+    pub fn push(
+        &mut self,
+        kind: StepKind,
+        part: Option<usize>,
+        objects: Vec<(&'static str, Object<K>)>,
+        holds: Option<bool>,
+    ) {
+        let mut assumes = vec![];
+        if let Some(log) = &self.log {
+            for c in log() {
+                if !self.seen.contains(&c) {
+                    self.seen.push(c.clone());
+                    assumes.push(c);
+                }
+            }
+        }
+        self.derivation.steps.push(Step {
+            kind,
+            part,
+            objects,
+            holds,
+            assumes,
+        });
+    }
+    /// The steps recorded so far.
+    pub fn peek(&self) -> &Derivation<K> {
+        &self.derivation
+    }
+    /// The derivation recorded.
+    pub fn finish(self) -> Derivation<K> {
+        self.derivation
+    }
+}
+
+/// The assumption log of a field of rational functions: its conditions (irreducible
+/// polynomials in the parameters assumed nonzero) as elements.
+pub fn ratfunc_log(
+    k: &crate::ratfunc::RatFuncField,
+) -> AssumptionLog<'static, crate::ratfunc::RatFuncField> {
+    let k = k.clone();
+    Box::new(move || {
+        k.conditions()
+            .unwrap_or_default()
+            .into_iter()
+            .map(|c| k.from_mpoly(c))
+            .collect()
+    })
+}

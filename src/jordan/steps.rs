@@ -1,0 +1,373 @@
+//! The Jordan decomposition step by step (`jordan --steps`), over $\mathbb{Q}$ and
+//! $\mathbb{Q}(p)$, recorded as a [`Derivation`].
+//!
+//! Steps: $\chi_A = \det(xI - A)$ (checked by Cayley–Hamilton $\chi_A(A) = 0$); its factors
+//! ($\prod p_i^{e_i} = \chi_A$); per eigenvalue $\theta$ of multiplicity $m$ the kernel
+//! sequence $\dim\ker N^k$, $N = A - \theta I$, from ranks of the powers $N^k$ (equal to the
+//! flag the chains are built on, ending at $m$); the Weyr characteristic $w_k$ and its
+//! conjugate partition, the Segre characteristic (the block sizes); each chain built top-down
+//! ($N v_1 = 0$, $N v_j = v_{j-1}$, $v_1 \ne 0$); $A V = V J_\theta$, $W V = I$; finally
+//! $A T = T J$.
+//!
+//! Over $\mathbb{Q}$ an irreducible factor $p$ of degree $d \ge 2$ is worked once in
+//! $K_p = \mathbb{Q}\[t\]/(p)$ at the generic root $t$ (the conjugate roots by the
+//! embeddings $t \mapsto \theta_j$), so the derivation is over number fields (a rational
+//! eigenvalue in $\mathbb{Q}$ as a field of degree 1). Over $\mathbb{Q}(p)$ a factor of degree
+//! $\ge 2$ gives its primary block ($\dim\ker f(A)^k$, $A B = B M$); every step lists the
+//! polynomials in the parameters it assumes nonzero.
+//!
+//! The chains are those of [`super::chains::jordan_chains`], the primitive [`super::jordan`]
+//! and [`super::params::jordan_params`] use.
+
+use super::chains::{jordan_block_matrix, jordan_chains};
+use super::derivation::{Derivation, Method, Object, Recorder, StepKind, ratfunc_log};
+use super::primary::{named_field, rational_field};
+use crate::algebraic::NumberField;
+use crate::error::Result;
+use crate::field::{Field, Q};
+use crate::matrix::Matrix;
+use crate::mpoly::MPoly;
+use crate::mpoly::resultant::{discriminant, resultant};
+use crate::poly::Poly;
+use crate::ratfunc::RatFuncField;
+
+/// $M - \theta I$.
+fn shift<K: Field>(m: &Matrix<K>, theta: &K::Elem) -> Matrix<K> {
+    let k = m.field().clone();
+    let mut out = m.clone();
+    for i in 0..m.nrows() {
+        let v = k.sub(out.get(i, i), theta);
+        out.set(i, i, v);
+    }
+    out
+}
+
+/// Ranks of $N, N^2, \dots$ until $\dim\ker N^k \ge m$ (at most $m$ powers).
+fn kernel_sequence<K: Field>(nm: &Matrix<K>, m: usize) -> (Vec<usize>, Vec<usize>) {
+    let n = nm.nrows();
+    let (mut ranks, mut dims) = (vec![], vec![]);
+    let mut pw = nm.clone();
+    loop {
+        let r = pw.rank();
+        ranks.push(r);
+        dims.push(n - r);
+        if n - r >= m || dims.len() >= m.max(1) {
+            return (ranks, dims);
+        }
+        pw = &pw * nm;
+    }
+}
+
+/// Weyr characteristic ($w_k = d_k - d_{k-1}$) and its conjugate partition (Segre
+/// characteristic: $s_j = \#\{k : w_k \ge j\}$, the block sizes, largest first).
+pub fn weyr_segre(dims: &[usize]) -> (Vec<usize>, Vec<usize>) {
+    let mut weyr = vec![];
+    let mut prev = 0;
+    for &d in dims {
+        weyr.push(d.saturating_sub(prev));
+        prev = d;
+    }
+    let top = weyr.first().copied().unwrap_or(0);
+    let segre = (1..=top)
+        .map(|j| weyr.iter().filter(|&&w| w >= j).count())
+        .collect();
+    (weyr, segre)
+}
+
+/// Whether the columns of `v` form a chain of `nm`: $N v_1 = 0$, $v_1 \ne 0$, $N v_j =
+/// v_{j-1}$.
+pub fn is_chain<K: Field>(nm: &Matrix<K>, v: &Matrix<K>) -> bool {
+    if v.ncols() == 0 || v.col(0).iter().all(|x| v.field().is_zero(x)) {
+        return false;
+    }
+    let nv = nm * v;
+    let n = v.nrows();
+    (0..v.ncols()).all(|j| {
+        if j == 0 {
+            nv.submatrix(0, n, 0, 1).is_zero()
+        } else {
+            nv.submatrix(0, n, j, j + 1) == v.submatrix(0, n, j - 1, j)
+        }
+    })
+}
+
+/// Records the steps of the eigenvalue `theta` (multiplicity `m`) of `a` and returns its
+/// chains $V$ and block sizes.
+///
+/// # Errors
+/// As [`jordan_chains`] (a wrong multiplicity).
+pub fn eigenvalue_steps<K: Field + 'static>(
+    rec: &mut Recorder<'_, K>,
+    part: usize,
+    a: &Matrix<K>,
+    theta: &K::Elem,
+    m: usize,
+) -> Result<(Matrix<K>, Vec<usize>)> {
+    let k = a.field().clone();
+    let n = a.nrows();
+    let nm = shift(a, theta);
+    let (ranks, dims) = kernel_sequence(&nm, m);
+    let ch = jordan_chains(&nm, m)?;
+    let ok = dims == ch.kernel_dims && dims.last() == Some(&m);
+    rec.push(
+        StepKind::KernelSequence,
+        Some(part),
+        vec![
+            ("theta", Object::Scalar(theta.clone())),
+            ("N", Object::Matrix(nm.clone())),
+            ("ranks", Object::Counts(ranks)),
+            ("dims", Object::Counts(dims.clone())),
+            ("m", Object::Count(m)),
+        ],
+        Some(ok),
+    );
+    let (weyr, segre) = weyr_segre(&dims);
+    let ok = segre == ch.blocks && segre.iter().sum::<usize>() == m;
+    rec.push(
+        StepKind::WeyrSegre,
+        Some(part),
+        vec![
+            ("weyr", Object::Counts(weyr)),
+            ("segre", Object::Counts(segre)),
+        ],
+        Some(ok),
+    );
+    let mut off = 0;
+    for &s in &ch.blocks {
+        let v = ch.v.submatrix(0, n, off, off + s);
+        let ok = is_chain(&nm, &v);
+        rec.push(
+            StepKind::Chain,
+            Some(part),
+            vec![("V", Object::Matrix(v)), ("top", Object::Count(s))],
+            Some(ok),
+        );
+        off += s;
+    }
+    let j = jordan_block_matrix(&k, theta, &ch.blocks);
+    let ok = a * &ch.v == &ch.v * &j && (&ch.w * &ch.v).is_identity();
+    rec.push(
+        StepKind::EigenCheck,
+        Some(part),
+        vec![
+            ("V", Object::Matrix(ch.v.clone())),
+            ("J", Object::Matrix(j)),
+        ],
+        Some(ok),
+    );
+    Ok((ch.v, ch.blocks))
+}
+
+/// $p(A)$ is zero (Cayley–Hamilton for $p = \chi_A$), checked for $n \le$ `max_n`.
+fn annihilates<K: Field>(a: &Matrix<K>, p: &Poly<K>, max_n: usize) -> Option<bool> {
+    if a.nrows() > max_n {
+        return None;
+    }
+    a.eval_poly(p).ok().map(|m| m.is_zero())
+}
+
+/// The product $\prod p_i^{e_i}$.
+fn product<K: Field>(k: &K, factors: &[(Poly<K>, usize)]) -> Poly<K> {
+    factors.iter().fold(Poly::one(k.clone()), |acc, (p, e)| {
+        acc.mul(&p.pow(*e as u32))
+    })
+}
+
+/// The Jordan decomposition of a rational matrix, step by step (module docs).
+///
+/// # Errors
+/// As [`super::jordan`].
+pub fn jordan_steps(a: &Matrix<Q>) -> Result<Derivation<NumberField>> {
+    a.check_square("jordan")?;
+    let n = a.nrows();
+    let q = rational_field();
+    let lift = |m: &Matrix<Q>, f: &NumberField| m.map(f, |x| f.from_rational(x));
+    let lift_poly = |p: &Poly<Q>| p.map(&q, |x| q.from_rational(x));
+    let mut rec = Recorder::new(Method::Jordan, q.clone());
+    let chi = a.charpoly()?;
+    let chi_k = lift_poly(&chi);
+    rec.push(
+        StepKind::CharPoly,
+        None,
+        vec![
+            ("A", Object::Matrix(lift(a, &q))),
+            ("chi", Object::Poly(chi_k.clone())),
+        ],
+        annihilates(&lift(a, &q), &chi_k, 40),
+    );
+    let factors = super::roots::factor_q(&chi)?;
+    let fk: Vec<(Poly<NumberField>, usize)> =
+        factors.iter().map(|(p, e)| (lift_poly(p), *e)).collect();
+    let ok = product(&q, &fk) == chi_k;
+    rec.push(
+        StepKind::Factorization,
+        None,
+        vec![("factors", Object::Factors(fk))],
+        Some(ok),
+    );
+    let mut dims = vec![];
+    for (part, (p, e)) in factors.iter().enumerate() {
+        let (field, theta) = if p.deg() == 1 {
+            (q.clone(), q.from_rational(&-p.coeff(0)))
+        } else {
+            let root = super::roots::certified_roots(p)?
+                .first()
+                .map_or((0.0, 0.0), |z| z.1);
+            let f = named_field(p, root, "t");
+            let t = f.generator();
+            (f, t)
+        };
+        eigenvalue_steps(&mut rec, part, &lift(a, &field), &theta, *e)?;
+        dims.push(p.deg() * e);
+    }
+    // every part's A V = V J (W V = I: independent columns) and the dimensions fill K^n
+    let ok = dims.iter().sum::<usize>() == n && rec_all_hold(&rec, StepKind::EigenCheck);
+    rec.push(
+        StepKind::Similarity,
+        None,
+        vec![("n", Object::Count(n)), ("dims", Object::Counts(dims))],
+        Some(ok),
+    );
+    Ok(rec.finish())
+}
+
+fn rec_all_hold<K: Field>(rec: &Recorder<'_, K>, kind: StepKind) -> bool {
+    rec.peek().of_kind(kind).all(|s| s.holds == Some(true))
+}
+
+/// Drops the last variable (free in it) of a polynomial in the parameters and $x$.
+fn drop_last(f: &MPoly) -> MPoly {
+    let n = f.nvars() - 1;
+    let map: Vec<usize> = (0..n).collect();
+    f.remap(n, &map)
+}
+
+/// The Jordan decomposition over $\mathbb{Q}(p)$, step by step (module docs): the factors of
+/// [`super::params::jordan_params`], each worked again with its conditions recorded.
+///
+/// # Errors
+/// As [`super::params::jordan_params`].
+pub fn jordan_steps_params(a_in: &Matrix<RatFuncField>) -> Result<Derivation<RatFuncField>> {
+    let pj = super::params::jordan_params(a_in)?;
+    let n = pj.n();
+    let k = a_in.field().fresh();
+    let a = Matrix::from_vec(k.clone(), n, n, a_in.as_slice().to_vec());
+    let mut rec = Recorder::with_log(Method::Jordan, k.clone(), ratfunc_log(&k));
+    let chi = Poly::new(k.clone(), pj.charpoly.coeffs().to_vec());
+    rec.push(
+        StepKind::CharPoly,
+        None,
+        vec![
+            ("A", Object::Matrix(a.clone())),
+            ("chi", Object::Poly(chi.clone())),
+        ],
+        annihilates(&a, &chi, 8),
+    );
+    let nv = k.nvars();
+    let facs: Vec<(Poly<RatFuncField>, usize)> = pj
+        .eigenvalues
+        .iter()
+        .map(|e| {
+            let p = Poly::new(k.clone(), e.monic.coeffs().to_vec());
+            (p, e.algebraic_multiplicity)
+        })
+        .collect();
+    for (i, e) in pj.eigenvalues.iter().enumerate() {
+        k.record_condition(&drop_last(&e.factor.lc_in(nv)));
+        if e.degree >= 2 {
+            k.record_condition(&drop_last(&discriminant(&e.factor, nv)));
+        }
+        for g in &pj.eigenvalues[i + 1..] {
+            k.record_condition(&drop_last(&resultant(&e.factor, &g.factor, nv)));
+        }
+    }
+    let ok = product(&k, &facs) == chi;
+    rec.push(
+        StepKind::Factorization,
+        None,
+        vec![("factors", Object::Factors(facs.clone()))],
+        Some(ok),
+    );
+    let (mut t_cols, mut j_blocks) = (vec![], vec![]);
+    for (part, (e, (f, m))) in pj.eigenvalues.iter().zip(&facs).enumerate() {
+        match &e.value {
+            Some(theta) => {
+                let (v, blocks) = eigenvalue_steps(&mut rec, part, &a, theta, *m)?;
+                j_blocks.push(jordan_block_matrix(&k, theta, &blocks));
+                t_cols.push(v);
+            }
+            None => {
+                let (b, mm) = primary_block_steps(&mut rec, part, &a, f, *m)?;
+                j_blocks.push(mm);
+                t_cols.push(b);
+            }
+        }
+    }
+    let width: usize = t_cols.iter().map(|c| c.ncols()).sum();
+    let mut t = Matrix::zeros(k.clone(), n, width);
+    let mut c0 = 0;
+    for c in &t_cols {
+        t.set_block(0, c0, c);
+        c0 += c.ncols();
+    }
+    let j = Matrix::block_diag(k.clone(), &j_blocks);
+    let mut ok = width == n && a.try_mul(&t)? == t.try_mul(&j)?;
+    if ok {
+        let det = t.det()?;
+        ok = !k.is_zero(&det);
+        k.record_condition(det.num());
+    }
+    rec.push(
+        StepKind::Similarity,
+        None,
+        vec![("T", Object::Matrix(t)), ("J", Object::Matrix(j))],
+        Some(ok),
+    );
+    Ok(rec.finish())
+}
+
+/// The primary block of an irreducible factor `f` of degree $d \ge 2$ and multiplicity `e`
+/// over $\mathbb{Q}(p)$: $\dim\ker f(A)^k$, the block sizes of each root, a basis $B$ of
+/// $\ker f(A)^e$ and $M$ with $A B = B M$.
+fn primary_block_steps(
+    rec: &mut Recorder<'_, RatFuncField>,
+    part: usize,
+    a: &Matrix<RatFuncField>,
+    f: &Poly<RatFuncField>,
+    e: usize,
+) -> Result<(Matrix<RatFuncField>, Matrix<RatFuncField>)> {
+    let n = a.nrows();
+    let d = f.deg();
+    let fa = a.eval_poly(f)?;
+    let (mut dims, mut pw) = (vec![], fa.clone());
+    loop {
+        dims.push(n - pw.rank());
+        if *dims.last().expect("one") >= d * e || dims.len() >= e {
+            break;
+        }
+        pw = pw.try_mul(&fa)?;
+    }
+    let per_root: Vec<usize> = dims.iter().map(|x| x / d).collect();
+    let (_, segre) = weyr_segre(&per_root);
+    let basis = pw.nullspace();
+    let (_, rows) = basis.transpose().rref();
+    let ab = a.try_mul(&basis)?;
+    let mm = basis
+        .select_rows(&rows)
+        .inverse()?
+        .try_mul(&ab.select_rows(&rows))?;
+    let ok = basis.ncols() == d * e && ab == basis.try_mul(&mm)?;
+    rec.push(
+        StepKind::PrimaryBlock,
+        Some(part),
+        vec![
+            ("f", Object::Poly(f.clone())),
+            ("dims", Object::Counts(dims)),
+            ("segre", Object::Counts(segre)),
+            ("B", Object::Matrix(basis.clone())),
+            ("M", Object::Matrix(mm.clone())),
+        ],
+        Some(ok),
+    );
+    Ok((basis, mm))
+}

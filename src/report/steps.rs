@@ -1,0 +1,401 @@
+//! Derivations (`--steps`) as reports: one sentence per step, the exact objects it computed,
+//! the identity it establishes, whether that identity held, and (over $\mathbb{Q}(p)$) what it
+//! assumes. JSON gives the steps as data (`steps: [{step, sentence, <objects>, identity,
+//! holds, assumes}]`); text prints them as a numbered derivation; LaTeX
+//! (`report::steps_latex`) typesets a worked example.
+
+use crate::field::Field;
+use crate::jordan::derivation::{Derivation, Method, Object, Step, StepKind};
+use crate::poly::Poly;
+use crate::report::{MatrixOut, Report, Value, str_list};
+
+/// The variable of characteristic polynomials in displays: `s` unless a parameter is so named.
+pub(crate) fn poly_var<K: Field>(k: &K) -> &'static str {
+    let shown = k.to_string();
+    if shown.contains("(s,")
+        || shown.contains(", s)")
+        || shown.contains(", s,")
+        || shown.contains("(s)")
+    {
+        "x"
+    } else {
+        "s"
+    }
+}
+
+/// The name of a derivation's field (the rationals as a number field of degree 1: `QQ`).
+pub fn field_name<K: Field>(k: &K) -> String {
+    let s = k.to_string();
+    if s.ends_with("/(t)") { "QQ".into() } else { s }
+}
+
+/// The method's title.
+pub fn title(m: Method) -> &'static str {
+    match m {
+        Method::Jordan => "Jordan decomposition, step by step",
+        Method::Kalman => "minimal realization (Kalman decomposition), step by step",
+        Method::JordanMethod => "minimal realization (Jordan-form method), step by step",
+    }
+}
+
+/// The JSON name of a step kind.
+pub fn kind_name(k: StepKind) -> &'static str {
+    match k {
+        StepKind::CharPoly => "charpoly",
+        StepKind::Factorization => "factorization",
+        StepKind::KernelSequence => "kernel_sequence",
+        StepKind::WeyrSegre => "weyr_segre",
+        StepKind::Chain => "chain",
+        StepKind::EigenCheck => "eigen_check",
+        StepKind::PrimaryBlock => "primary_block",
+        StepKind::Similarity => "similarity",
+        StepKind::Controllability => "controllability",
+        StepKind::ControllableSubspace => "controllable_subspace",
+        StepKind::Observability => "observability",
+        StepKind::UnobservableSubspace => "unobservable_subspace",
+        StepKind::KalmanBasis => "kalman_basis",
+        StepKind::KalmanForm => "kalman_form",
+        StepKind::MinimalPart => "minimal_part",
+        StepKind::ModalData => "modal_data",
+        StepKind::DropModes => "drop_modes",
+        StepKind::Compaction => "compaction",
+        StepKind::Stages => "stages",
+    }
+}
+
+/// The identity a step establishes, as plain text and as LaTeX math.
+pub fn identity(k: StepKind) -> (&'static str, &'static str) {
+    match k {
+        StepKind::CharPoly => (
+            "chi_A(A) = 0 (Cayley-Hamilton)",
+            r"\chi_A(A) = 0 \quad\text{(Cayley--Hamilton)}",
+        ),
+        StepKind::Factorization => (
+            "prod p_i^e_i = chi_A, p_i irreducible",
+            r"\textstyle\prod_i p_i^{e_i} = \chi_A",
+        ),
+        StepKind::KernelSequence => (
+            "dim ker N^k = n - rank N^k, increasing to the multiplicity m",
+            r"\dim\ker N^k = n - \operatorname{rank} N^k \nearrow m",
+        ),
+        StepKind::WeyrSegre => (
+            "segre = conjugate partition of weyr, sum = m",
+            r"s_j = \#\{k : w_k \ge j\},\ \textstyle\sum_j s_j = m",
+        ),
+        StepKind::Chain => (
+            "N v_1 = 0, v_1 != 0, N v_j = v_(j-1)",
+            r"N v_1 = 0,\ v_1 \ne 0,\ N v_j = v_{j-1}",
+        ),
+        StepKind::EigenCheck => ("A V = V J_theta, W V = I", r"A V = V J_\theta,\ W V = I"),
+        StepKind::PrimaryBlock => ("A B = B M, dim ker f(A)^e = d e", r"A B = B M"),
+        StepKind::Similarity => ("A T = T J, T invertible", r"A T = T J,\ \det T \ne 0"),
+        StepKind::Controllability | StepKind::Observability => ("(rank computed)", ""),
+        StepKind::ControllableSubspace => (
+            "im B in R, A R in R, dim R = rank Ctrb",
+            r"\operatorname{im} B \subseteq \mathcal R,\ A\mathcal R \subseteq \mathcal R",
+        ),
+        StepKind::UnobservableSubspace => (
+            "Obsv N = 0, A N in N, dim N = n - rank Obsv",
+            r"\mathcal O \mathcal N = 0,\ A\mathcal N \subseteq \mathcal N",
+        ),
+        StepKind::KalmanBasis => ("T invertible, dims agree with the ranks", r"\det T \ne 0"),
+        StepKind::KalmanForm => (
+            "A T = T At, B = T Bt, Ct = C T, Kalman zero pattern",
+            r"A T = T \tilde A,\ B = T \tilde B,\ \tilde C = C T",
+        ),
+        StepKind::MinimalPart => (
+            "C A^k B = Cm Am^k Bm (k < n + r), r = McMillan degree",
+            r"C A^k B = C_2 A_{22}^k B_2,\ r = \delta_M",
+        ),
+        StepKind::ModalData => ("(modal coordinates z = W x)", ""),
+        StepKind::DropModes | StepKind::Compaction => (
+            "the block's Markov parameters are unchanged",
+            r"C V J_\theta^k W B\ \text{unchanged for all } k",
+        ),
+        StepKind::Stages => (
+            "sum_p Tr(C_p J_p^k B_p) = C A^k B, order = McMillan degree",
+            r"\textstyle\sum_p \operatorname{Tr}(C_p J_p^k B_p) = C A^k B,\ r = \delta_M",
+        ),
+    }
+}
+
+pub(crate) fn counts(xs: &[usize]) -> String {
+    let v: Vec<String> = xs.iter().map(|x| x.to_string()).collect();
+    v.join(", ")
+}
+
+pub(crate) fn one_based(xs: &[usize]) -> String {
+    if xs.is_empty() {
+        return "none".into();
+    }
+    let v: Vec<String> = xs.iter().map(|x| (x + 1).to_string()).collect();
+    v.join(", ")
+}
+
+/// A polynomial in `var`.
+pub fn poly_text<K: Field>(p: &Poly<K>, var: &str) -> String {
+    p.to_string_var(var)
+}
+
+/// The factors `(p)^e` joined by `*`.
+fn factors_text<K: Field>(fs: &[(Poly<K>, usize)], var: &str) -> String {
+    let v: Vec<String> = fs
+        .iter()
+        .map(|(p, e)| {
+            let s = format!("({})", poly_text(p, var));
+            if *e > 1 { format!("{s}^{e}") } else { s }
+        })
+        .collect();
+    v.join(" * ")
+}
+
+/// The field of a step's first matrix (a number field per part over $\mathbb{Q}$).
+pub(crate) fn step_field<K: Field>(d: &Derivation<K>, s: &Step<K>) -> K {
+    s.objects
+        .iter()
+        .find_map(|(_, o)| match o {
+            Object::Matrix(m) => Some(m.field().clone()),
+            _ => None,
+        })
+        .unwrap_or_else(|| d.field.clone())
+}
+
+/// The step that names the eigenvalue of `part` (kernel sequence or modal data).
+pub(crate) fn theta_step<K: Field>(d: &Derivation<K>, part: Option<usize>) -> Option<&Step<K>> {
+    d.steps.iter().find(|s| {
+        s.part == part && matches!(s.kind, StepKind::KernelSequence | StepKind::ModalData)
+    })
+}
+
+/// The eigenvalue of a part, as text.
+fn theta_of<K: Field>(d: &Derivation<K>, part: Option<usize>) -> String {
+    match theta_step(d, part).and_then(|s| s.scalar("theta").map(|t| (s, t))) {
+        Some((s, t)) => step_field(d, s).fmt_elem(t),
+        None => "?".into(),
+    }
+}
+
+/// Whether a part is worked in a number field at its generic root `t` (degree >= 3).
+pub(crate) fn generic_root<K: Field>(d: &Derivation<K>, s: &Step<K>) -> bool {
+    s.scalar("theta")
+        .is_some_and(|t| step_field(d, s).fmt_elem(t) == "t")
+}
+
+fn field_note<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
+    if generic_root(d, s) {
+        format!(
+            " (worked once in {} at the generic root t; its conjugates by the embeddings t -> theta_j)",
+            step_field(d, s)
+        )
+    } else {
+        String::new()
+    }
+}
+
+fn conjugates(d: usize) -> String {
+    if d > 1 {
+        format!(" (the same for each of the {d} conjugate roots)")
+    } else {
+        String::new()
+    }
+}
+
+/// The sentence of a step (plain text).
+pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
+    let var = poly_var(&d.field);
+    let c = |key: &str| s.count(key).unwrap_or(0);
+    let cs = |key: &str| s.counts(key).map(counts).unwrap_or_default();
+    let ob = |key: &str| s.counts(key).map(one_based).unwrap_or_default();
+    let theta = || theta_of(d, s.part);
+    match s.kind {
+        StepKind::CharPoly => match s.get("chi") {
+            Some(Object::Poly(p)) => format!(
+                "Characteristic polynomial chi_A({var}) = det({var} I - A) = {}.",
+                poly_text(p, var)
+            ),
+            _ => "Characteristic polynomial.".into(),
+        },
+        StepKind::Factorization => match s.get("factors") {
+            Some(Object::Factors(f)) => {
+                format!("Irreducible factors: chi_A = {}.", factors_text(f, var))
+            }
+            _ => "Irreducible factors.".into(),
+        },
+        StepKind::KernelSequence => format!(
+            "Eigenvalue theta = {} of multiplicity m = {}{}: N = A - theta I; rank N^k = {} so dim ker N^k = {} (k = 1..{}).",
+            theta(),
+            c("m"),
+            field_note(d, s),
+            cs("ranks"),
+            cs("dims"),
+            s.counts("dims").map_or(0, |x| x.len())
+        ),
+        StepKind::WeyrSegre => format!(
+            "Weyr characteristic w_k = dim ker N^k - dim ker N^(k-1) = ({}): the number of Jordan blocks of size >= k; its conjugate partition, the Segre characteristic ({}), gives the block sizes.",
+            cs("weyr"),
+            cs("segre")
+        ),
+        StepKind::Chain if c("top") == 1 => format!(
+            "Eigenvector of theta = {} (a chain of length 1): v_1 in ker N.",
+            theta()
+        ),
+        StepKind::Chain => format!(
+            "Chain of length {top} for theta = {}, built top-down: v_{top} in ker N^{top} but not in ker N^{below}, then v_(j-1) = N v_j (the columns v_1..v_{top}).",
+            theta(),
+            top = c("top"),
+            below = c("top") - 1
+        ),
+        StepKind::EigenCheck => format!(
+            "The chains of theta = {} as the columns V, with its Jordan matrix J_theta.",
+            theta()
+        ),
+        StepKind::PrimaryBlock => format!(
+            "Irreducible factor f of degree {} (its roots are not in the field of the entries): dim ker f(A)^k = {}; each root has Jordan blocks ({}); a basis B of ker f(A)^e and M with A B = B M form the primary block.",
+            match s.get("f") {
+                Some(Object::Poly(p)) => p.deg(),
+                _ => 0,
+            },
+            cs("dims"),
+            cs("segre")
+        ),
+        StepKind::Similarity => match s.counts("dims") {
+            Some(dims) => format!(
+                "The generalized eigenspaces (dimension degree x multiplicity: {}) add up to n = {}; with the conjugate roots' columns by Galois conjugation, T = [V_1, V_2, ...] is the Jordan basis.",
+                counts(dims),
+                c("n")
+            ),
+            None => "T = [V_1, V_2, ...] and J = diag(J_1, J_2, ...) from the steps above.".into(),
+        },
+        StepKind::Controllability => format!(
+            "Controllability matrix Ctrb = [B, AB, ..., A^(n-1) B], rank {}.",
+            c("rank")
+        ),
+        StepKind::ControllableSubspace => format!(
+            "Controllable subspace R: the pivot columns ({}) of the RREF of Ctrb (Krylov vectors).",
+            ob("pivots")
+        ),
+        StepKind::Observability => format!(
+            "Observability matrix Obsv = [C; CA; ...; CA^(n-1)], rank {}.",
+            c("rank")
+        ),
+        StepKind::UnobservableSubspace => format!(
+            "Unobservable subspace N = ker Obsv, dimension {}.",
+            s.matrix("Nobs").map_or(0, |m| m.ncols())
+        ),
+        StepKind::KalmanBasis => format!(
+            "Kalman basis T = [X_co', X_co, X_c'o', X_c'o] with parts of dimensions ({}): R meet N, R completed, N completed, the whole space completed.",
+            cs("dims")
+        ),
+        StepKind::KalmanForm => "The Kalman form (T^-1 A T, T^-1 B, C T).".into(),
+        StepKind::MinimalPart => format!(
+            "The controllable and observable part (A_22, B_2, C_2, D) is minimal: order {} = McMillan degree {}.",
+            c("order"),
+            c("mcmillan")
+        ),
+        StepKind::ModalData => format!(
+            "Eigenvalue theta = {}{}: modal data in z = W x: (J_theta, W B, C V){}.",
+            theta(),
+            field_note(d, s),
+            conjugates(c("deg"))
+        ),
+        StepKind::DropModes => format!(
+            "Drop non-contributing modes of theta = {}: kept states ({}); not excited (after the last excited state of their block): {}; not observed (before the first observed state): {}{}.",
+            theta(),
+            ob("kept"),
+            ob("not_excited"),
+            ob("not_observed"),
+            conjugates(c("deg"))
+        ),
+        StepKind::Compaction => format!(
+            "Compact the repeated modes of theta = {}: a minimal realization of (N, W B, C V) over the field (Kalman), back in Jordan form by its chains: order {}{}.",
+            theta(),
+            c("order"),
+            conjugates(c("deg"))
+        ),
+        StepKind::Stages => {
+            let st = s.counts("stages").unwrap_or(&[]);
+            let at = |i: usize| st.get(i).copied().unwrap_or(0);
+            format!(
+                "Stages: {} states -> {} after dropping non-contributing modes -> {} after compacting repeated modes (McMillan degree {}).",
+                at(0),
+                at(1),
+                at(2),
+                c("mcmillan")
+            )
+        }
+    }
+}
+
+fn object_value<K: Field>(o: &Object<K>, var: &str, field: &K) -> Value {
+    match o {
+        Object::Matrix(m) => Value::Matrix(Box::new(MatrixOut::from_matrix(m))),
+        Object::Poly(p) => Value::Str(poly_text(p, var)),
+        Object::Factors(fs) => Value::List(
+            fs.iter()
+                .map(|(p, e)| {
+                    Value::Obj(
+                        Report::new()
+                            .str("factor", poly_text(p, var))
+                            .int("multiplicity", *e),
+                    )
+                })
+                .collect(),
+        ),
+        Object::Scalar(x) => Value::Str(field.fmt_elem(x)),
+        Object::Count(c) => Value::Int(*c as i64),
+        Object::Counts(cs) => Value::List(cs.iter().map(|&c| Value::Int(c as i64)).collect()),
+    }
+}
+
+/// One step as a report.
+fn step_report<K: Field>(d: &Derivation<K>, i: usize, s: &Step<K>) -> Report {
+    let var = poly_var(&d.field);
+    let text = sentence(d, s);
+    let mut r = Report::titled(format!("step {}. {}", i + 1, text))
+        .str("step", kind_name(s.kind))
+        .with("sentence", Value::hidden_in_text(Value::Str(text)));
+    if let Some(p) = s.part {
+        r = r.int("part", p + 1);
+    }
+    let field = step_field(d, s);
+    for (k, o) in &s.objects {
+        r = r.with(*k, object_value(o, var, &field));
+    }
+    let (id, _) = identity(s.kind);
+    if let Some(h) = s.holds {
+        r = r.str("identity", id).bool("holds", h);
+    }
+    if !s.assumes.is_empty() {
+        r = r.with(
+            "assumes",
+            str_list(
+                s.assumes
+                    .iter()
+                    .map(|x| format!("{} != 0", d.field.fmt_elem(x))),
+            ),
+        );
+    }
+    r
+}
+
+/// The derivation as a report (text and JSON).
+pub fn derivation_report<K: Field>(d: &Derivation<K>) -> Report {
+    let steps: Vec<Value> = d
+        .steps
+        .iter()
+        .enumerate()
+        .map(|(i, s)| Value::Obj(step_report(d, i, s)))
+        .collect();
+    let conds: Vec<String> = d
+        .assumptions()
+        .iter()
+        .map(|x| format!("{} != 0", d.field.fmt_elem(x)))
+        .collect();
+    let mut r = Report::titled(title(d.method))
+        .str("field", field_name(&d.field))
+        .list("steps", steps);
+    if !conds.is_empty() {
+        r = r.with("conditions", str_list(conds));
+    }
+    r.bool("verified", d.verified())
+}
