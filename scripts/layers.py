@@ -3,7 +3,7 @@
 
 Usage: python3 scripts/layers.py [--files]
 Floors (low -> high): field, poly, algebraic/numberfield, matrix, jordan, pencil, system, realization, multibody,
-structure; io, study (parameter families read from files), report, cli on top; float apart (it may use anything below io).
+structure; io, study (parameter families read from files), report, api (the front door), cli on top; float apart (it may use anything below io).
 An arrow A -> B is "up" when B's floor is higher than A's. Cycles are reported between
 top-level modules and, with --files, between files.
 """
@@ -14,7 +14,7 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "src")
 FLOOR = {
     "error": 0, "rng": 0, "field": 1, "qkernels": 1, "poly": 2, "mpoly": 2, "ratfunc": 2, "algebraic": 3, "numberfield": 3,
     "matrix": 4, "jordan": 5, "pencil": 5.5, "system": 6, "realization": 7, "multibody": 7.5, "structure": 8,
-    "float": 9, "io": 10, "study": 10.5, "report": 11, "cli": 12,
+    "float": 9, "io": 10, "study": 10.5, "report": 11, "api": 11.5, "cli": 12,
 }
 USE_RE = re.compile(r"crate::([a-z_][a-z0-9_]*)((?:::[a-z_][a-z0-9_]*)*)")
 GROUP_RE = re.compile(r"use\s+crate::\{([^;]*)\};", re.S)

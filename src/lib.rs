@@ -36,8 +36,9 @@
 //!
 //! System files (JSON or TOML, exact numbers and parameter expressions) load without the
 //! command line through [`io::load_system_str`] / [`io::load_system_path`]; generic code
-//! over the file's field is written once as an [`io::SystemVisitor`] and dispatched by
-//! [`io::LoadedSystem::run`]. Reports (text, JSON, LaTeX) are built in [`report`], apart
+//! over the file's field is written once as an [`api::SystemVisitor`] and dispatched by
+//! [`api::System::run`]. Every operation of the command line runs through [`api`] (the
+//! front door the command line and the Python package stand on). Reports (text, JSON, LaTeX) are built in [`report`], apart
 //! from the math.
 //!
 //! ## Layers (acyclic)
@@ -64,7 +65,9 @@
 //!    floor below `io`);
 //! 10. [`io`] (system files), then `study` (one-parameter families read from files);
 //! 11. [`report`] (text/JSON/LaTeX);
-//! 12. [`cli`] (feature `cli`).
+//! 12. [`api`]: the front door ([`api::System`], every operation as an [`api::Command`]
+//!     returning a report with `verified`, the worker thread with a deadline);
+//! 13. [`cli`] (feature `cli`): arguments -> [`api`] -> rendered report.
 //!
 //! ## Features
 //!
@@ -76,6 +79,8 @@
 #![allow(clippy::wrong_self_convention)]
 
 pub mod algebraic;
+#[cfg(feature = "cli")]
+pub mod api;
 #[cfg(feature = "cli")]
 pub mod cli;
 pub mod error;

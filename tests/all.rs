@@ -9,6 +9,8 @@ mod jcommon;
 
 #[path = "algebraic.rs"]
 mod algebraic;
+#[path = "api.rs"]
+mod api;
 #[path = "bicycle.rs"]
 mod bicycle;
 #[path = "cli.rs"]

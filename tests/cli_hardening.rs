@@ -290,7 +290,7 @@ fn fields_each_command_accepts() {
         ("scb", [0, 0, 0, 0]),
         ("mnf", [0, 0, 0, 0]),
         ("zeros", [0, 0, 0, 0]),
-        ("pencil", [0, 0, 0, 2]),
+        ("pencil", [0, 0, 0, 0]), // the Kronecker structure over Q(p) (issue 24)
         ("ctrb", [0, 0, 0, 0]),
         ("obsv", [0, 0, 0, 0]),
         ("tf", [0, 0, 0, 0]),

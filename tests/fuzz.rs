@@ -355,7 +355,7 @@ fn mutation_fuzz_loader_and_every_command() {
         };
         loaded += 1;
         // commands on every third case, small systems only (the budget of the suite)
-        let n = l.run(Size);
+        let n = exactlti::api::System::from(l.clone()).run(Size);
         if n > 8 || case % 3 != 0 {
             continue;
         }
@@ -387,7 +387,7 @@ fn mutation_fuzz_loader_and_every_command() {
 }
 
 struct Size;
-impl exactlti::io::SystemVisitor for Size {
+impl exactlti::api::SystemVisitor for Size {
     type Output = usize;
     fn visit<K: exactlti::field::Field + 'static>(
         self,

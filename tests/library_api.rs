@@ -1,10 +1,10 @@
 //! The library-facing API: loading system files without the CLI, the one dispatch point,
 //! `qmat!` with exact text, `minimal(.., MinrealMethod::Jordan)`, `Display` of results.
 
+use exactlti::api::{System, SystemVisitor};
 use exactlti::field::{Field, Q};
 use exactlti::io::{
-    SystemFile, SystemFormat, SystemVisitor, TypedAny, TypedSystem, as_rational, load_system_path,
-    load_system_str,
+    SystemFile, SystemFormat, TypedAny, TypedSystem, as_rational, load_system_path, load_system_str,
 };
 use exactlti::jordan::jordan;
 use exactlti::matrix::Matrix;
@@ -44,7 +44,7 @@ fn load_from_path_and_text_agree() {
     // the TOML twin of the same file gives the same exact system
     let toml = load_system_path(&data("yaw_contract.toml")).unwrap();
     assert_eq!(toml.rational().unwrap().ss, a.ss);
-    let (n, field, is_q) = from_path.run(Summary);
+    let (n, field, is_q) = System::from(from_path.clone()).run(Summary);
     assert_eq!((n, field.as_str(), is_q), (a.ss.nstates(), "QQ", true));
 }
 
@@ -53,7 +53,7 @@ fn quadratic_file_dispatches_over_its_field() {
     let l = load_system_path(&data("sqrt2.toml")).unwrap();
     assert!(matches!(l.system, TypedAny::Quadratic(_)));
     assert!(l.rational().is_none());
-    let (_, field, is_q) = l.run(Summary);
+    let (_, field, is_q) = System::from(l.clone()).run(Summary);
     assert!(!is_q);
     assert_eq!(field, l.ground().to_string());
 }

@@ -87,14 +87,21 @@ fn cli_rank_of_a_is_3_with_conditions() {
 
 #[test]
 fn cli_refuses_unsupported_commands_with_one_line() {
-    // scb, minreal, zeros, ctrb work over Q(p) now (tests/symbolic_scb.rs)
-    for cmd in ["pencil", "freqresp", "check"] {
+    // scb, minreal, zeros, ctrb work over Q(p) now (tests/symbolic_scb.rs); so does
+    // pencil (the Kronecker structure is generic over the field; issue 24)
+    let (code, out, err) = run(&["pencil", YAW, "--symbolic", "m,u", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["field"], "QQ(m, u)");
+    assert_eq!(j["verified"], true);
+    // numbers asked of symbols: not a question, and the one line says why
+    for cmd in ["freqresp", "check", "step", "pzmap"] {
         let (code, out, err) = run(&[cmd, YAW, "--symbolic", "m,u"]);
         assert_eq!(code, 2, "{cmd}: {err}");
         assert!(out.is_empty());
         assert_eq!(err.lines().count(), 1, "{cmd}: {err}");
         assert!(
-            err.contains(&format!("symbolic parameters: `{cmd}` is not yet supported over QQ(m, u); give values with --at")),
+            err.contains(&format!("`{cmd}` needs numbers (a float computation), this system's entries lie in QQ(m, u); give every symbol a value with --at")),
             "{cmd}: {err}"
         );
     }

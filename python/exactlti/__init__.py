@@ -16,6 +16,7 @@ or SymPy symbols; results then carry ``conditions`` (polynomials assumed nonzero
 from ._core import UnsupportedError, VerificationError
 from ._convert import ExactnessWarning
 from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
+from ._api import Report
 from ._study import critical, sweep
 from ._system import (
     CheckResult,
@@ -49,6 +50,7 @@ __all__ = [
     "sweep",
     "critical",
     "StateSpace",
+    "Report",
     "Matrix",
     "AlgebraicNumber",
     "Polynomial",

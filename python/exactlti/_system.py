@@ -29,6 +29,8 @@ __all__ = [
     "Factor",
 ]
 
+from ._api import Operations, run as _run
+
 _METHODS = ("kalman", "rosenbrock", "ho-kalman", "jordan")
 
 
@@ -43,7 +45,7 @@ def _latex_section(title, items):
     return "$\\begin{gathered}" + " \\\\ ".join(parts) + "\\end{gathered}$"
 
 
-class StateSpace:
+class StateSpace(Operations):
     """An exact LTI system ``x' = A x + B u``, ``y = C x + D u`` (E given: ``E x' = ...``,
     converted to this standard form on input).
 
@@ -161,7 +163,12 @@ class StateSpace:
 
     # -- exact operations -------------------------------------------------------------
 
-    def minreal(self, method="kalman", max_seconds=None):
+    @property
+    def _extension(self):
+        """Entries in a quadratic field Q(i) / Q(sqrt d) (not Q, no symbols)."""
+        return not self.is_symbolic and self.field != "QQ"
+
+    def minreal(self, method="kalman", max_seconds=None, descriptor=False):
         """Exact minimal realization: a controllable and observable system with the same
         transfer matrix (Markov parameters checked exactly, ``verified``).
 
@@ -177,10 +184,16 @@ class StateSpace:
         Matrix(1x1,
         [-1])
         """
+        if descriptor:
+            return _run(self, "minreal", "--descriptor", max_seconds=max_seconds)
+        if method == "era":
+            return self.era(max_seconds=max_seconds)
         if method not in _METHODS:
             raise ValueError(
-                "unknown method '%s' (%s)" % (method, ", ".join(_METHODS))
+                "unknown method '%s' (%s)" % (method, ", ".join(_METHODS + ("era",)))
             )
+        if method == "jordan" and self._extension:
+            return _run(self, "minreal", "--method", "jordan", max_seconds=max_seconds)
         return MinrealResult(self._core.minreal(method, max_seconds), self)
 
     def zeros(self, max_seconds=None):
@@ -192,6 +205,8 @@ class StateSpace:
         >>> [str(x) for x in z], z.polynomial.coeffs
         (['-3'], [Fraction(3, 1), Fraction(1, 1)])
         """
+        if self._extension:
+            return _run(self, "zeros", max_seconds=max_seconds)
         d = self._core.zeros(max_seconds)
         if self.is_symbolic:
             return Factorization(d)
@@ -226,6 +241,9 @@ class StateSpace:
         2x2 blocks ``[[a, b], [-b, a]]`` and real ``T``). See :func:`exactlti.jordan`.
         For a descriptor system (``E`` given) the finite part of the pencil ``sE - A``
         (``A`` of the result is the standard form's), with ``infinite_blocks``."""
+        if self._extension:
+            a = ("--real",) if real else ()
+            return _run(self, "jordan", *a, max_seconds=max_seconds)
         d = self._core.jordan(real, max_seconds)
         if self.is_symbolic:
             return SymbolicJordanResult(d)
@@ -241,10 +259,17 @@ class StateSpace:
         """Mechanical normal form: ``M q'' + L q' + K q = F u`` with ``T A = A~ T``,
         ``T B = B~`` and equal Markov parameters (``verified``), or ``exists=False`` with
         the reason."""
+        if self._extension:
+            return _run(self, "mnf", max_seconds=max_seconds)
         return MnfResult(self._core.mnf(max_seconds))
 
     def modes(self, max_seconds=None):
-        """The modal table: eigenvalue, frequency, damping ratio, time constant, period."""
+        """The modal table: eigenvalue, frequency, damping ratio, time constant, period.
+        Over Q(i) / Q(sqrt d) and with symbolic parameters (the modes as formulas: the
+        factors of ``det(sI - A)`` over Q(p) with ``omega_n^2``, ``2 zeta omega_n``) a
+        :class:`Report`."""
+        if self._extension or self.is_symbolic:
+            return _run(self, "modes", max_seconds=max_seconds)
         return ModalTable(self._core.modes(max_seconds))
 
     def tf(self, max_seconds=None):
@@ -545,10 +570,11 @@ def _from_control_tf(sys, name):
     return StateSpace(_core.load_json(json.dumps(doc), name, False))
 
 
-def load(path, at=None):
+def load(path, at=None, symbolic=None):
     """Reads a system file (JSON or TOML) as the command line does: parameters with
     value ``null`` and those named in ``symbols`` stay symbols; ``at`` gives values first
-    (a dict, the command line's ``--at``).
+    (a dict, the command line's ``--at``); ``symbolic`` names parameters kept as symbols
+    (a list; ``[]``: every parameter; the command line's ``--symbolic``).
 
     >>> import exactlti, json, os, tempfile
     >>> p = os.path.join(tempfile.mkdtemp(), "two.json")
@@ -562,7 +588,8 @@ def load(path, at=None):
         note = _FloatNote()
         pairs = [(str(k), entry_text(v, "at %s" % k, note)) for k, v in at.items()]
         _warn_floats(note, 2)
-    return StateSpace(_core.load_file(str(path), pairs))
+    syms = None if symbolic is None else [str(x) for x in symbolic]
+    return StateSpace(_core.load_file(str(path), pairs, syms))
 
 
 def jordan(A, real=False, max_seconds=None, params=None):

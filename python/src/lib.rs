@@ -9,10 +9,10 @@
 #![allow(non_snake_case)]
 
 use exactlti::Error;
-mod compat;
 mod study;
-use compat::{Loaded, Typed, from_loaded};
+use exactlti::api::runner::{Poll, Worker};
 use exactlti::field::{Q, QuadraticField};
+use exactlti::io::{TypedAny, TypedSystem as Typed};
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization;
 use pyo3::create_exception;
@@ -20,8 +20,7 @@ use pyo3::exceptions::{PyRuntimeError, PyTimeoutError, PyValueError};
 use pyo3::prelude::*;
 use std::path::Path;
 use std::sync::Arc;
-use std::sync::mpsc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 create_exception!(
     _core,
@@ -71,10 +70,22 @@ impl From<exactlti::io::InputError> for Fail {
 impl From<Fail> for PyErr {
     fn from(f: Fail) -> PyErr {
         match f {
-            Fail::Input(m) => PyValueError::new_err(m),
-            Fail::Unsupported(m) => UnsupportedError::new_err(m),
-            Fail::Limit(m) => PyTimeoutError::new_err(m),
-            Fail::Verification(m) => VerificationError::new_err(m),
+            Fail::Input(m) => PyValueError::new_err(scrub(&m)),
+            Fail::Unsupported(m) => UnsupportedError::new_err(scrub(&m)),
+            Fail::Limit(m) => PyTimeoutError::new_err(scrub(&m)),
+            Fail::Verification(m) => VerificationError::new_err(scrub(&m)),
+        }
+    }
+}
+
+impl From<exactlti::api::Failure> for Fail {
+    /// A command's failure: exit status 1 is a failed exact check, 2 bad input or a request
+    /// that cannot be met (the message says why).
+    fn from(f: exactlti::api::Failure) -> Self {
+        if f.code == 1 {
+            Fail::Verification(f.message)
+        } else {
+            Fail::Input(f.message)
         }
     }
 }
@@ -83,70 +94,57 @@ type FResult<T> = Result<T, Fail>;
 
 // ---------------------------------------------------------------- the worker
 
-/// Runs `f` on a worker thread (the command line's 256 MiB stack) with the GIL released.
-/// Every 20 ms the caller's thread takes the GIL back to run Python's signal handlers
-/// (Ctrl-C raises `KeyboardInterrupt` here) and to check the deadline (`TimeoutError`).
-/// A panic in the library becomes `RuntimeError`, never a crash of the interpreter. On an
-/// interrupt or a timeout the worker is left to finish in the background and its result is
-/// dropped, as the command line does with `--max-seconds`.
+/// Runs `f` on the library's worker ([`exactlti::api::runner::Worker`]: the command line's
+/// 256 MiB stack, a panic caught) with the GIL released. Every 20 ms the caller's thread
+/// takes the GIL back to run Python's signal handlers (Ctrl-C raises `KeyboardInterrupt`
+/// here); past `max_seconds` it raises `TimeoutError`. A panic in the library becomes
+/// `RuntimeError`, never a crash of the interpreter. On an interrupt or a timeout the worker
+/// is left to finish in the background and its result is dropped, as the command line does
+/// with `--max-seconds`.
 fn run<T: Send + 'static>(
     py: Python<'_>,
     max_seconds: Option<f64>,
     f: impl FnOnce() -> FResult<T> + Send + 'static,
 ) -> PyResult<T> {
-    let (tx, rx) = mpsc::channel();
-    let rx = std::sync::Mutex::new(rx);
-    let spawned = std::thread::Builder::new()
-        .name("exactlti-worker".into())
-        .stack_size(256 << 20)
-        .spawn(move || {
-            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
-            let _ = tx.send(r);
-        });
-    if spawned.is_err() {
-        return Err(PyRuntimeError::new_err("could not start the worker thread"));
-    }
-    let start = Instant::now();
-    let limit = max_seconds
-        .filter(|s| s.is_finite() && *s > 0.0)
-        .map(|s| Duration::from_secs_f64(s.min(1e7)));
+    let deadline = Worker::<FResult<T>>::deadline_in(max_seconds);
+    let w = Worker::spawn("exactlti-worker", deadline, f).map_err(PyRuntimeError::new_err)?;
     loop {
-        let got = py.detach(|| {
-            rx.lock()
-                .map_err(|_| mpsc::RecvTimeoutError::Disconnected)
-                .and_then(|r| r.recv_timeout(Duration::from_millis(20)))
-        });
-        match got {
-            Ok(Ok(r)) => return r.map_err(PyErr::from),
-            Ok(Err(panic)) => {
-                let msg = panic
-                    .downcast_ref::<&str>()
-                    .map(|s| s.to_string())
-                    .or_else(|| panic.downcast_ref::<String>().cloned())
-                    .unwrap_or_default();
+        match py.detach(|| w.poll(Duration::from_millis(20))) {
+            Poll::Done(r) => return r.map_err(PyErr::from),
+            Poll::Panicked(msg) => {
                 return Err(PyRuntimeError::new_err(format!(
-                    "internal failure (the computation panicked): {msg}"
+                    "internal failure (the computation panicked): {}",
+                    scrub(&msg)
                 )));
             }
-            Err(mpsc::RecvTimeoutError::Disconnected) => {
-                return Err(PyRuntimeError::new_err(
-                    "internal failure (the worker thread stopped)",
-                ));
+            Poll::TimedOut => {
+                return Err(PyTimeoutError::new_err(format!(
+                    "stopped after max_seconds={}: the exact computation did not finish in time",
+                    max_seconds.unwrap_or_default()
+                )));
             }
-            Err(mpsc::RecvTimeoutError::Timeout) => {
-                // Ctrl-C (KeyboardInterrupt) or any other signal handler's exception
-                py.check_signals()?;
-                if let Some(l) = limit
-                    && start.elapsed() >= l
-                {
-                    return Err(PyTimeoutError::new_err(format!(
-                        "stopped after max_seconds={}: the exact computation did not finish in time",
-                        l.as_secs_f64()
-                    )));
-                }
-            }
+            // Ctrl-C (KeyboardInterrupt) or any other signal handler's exception
+            Poll::Pending => py.check_signals()?,
         }
     }
+}
+
+/// A message for Python users: a Rust path (`a::b::c`) is written as its last name.
+fn scrub(m: &str) -> String {
+    let mut out = String::with_capacity(m.len());
+    for (i, part) in m.split("::").enumerate() {
+        if i == 0 {
+            out.push_str(part);
+            continue;
+        }
+        // drop the identifier before `::` (the module) that was just written
+        let keep = out
+            .trim_end_matches(|c: char| c.is_ascii_alphanumeric() || c == '_')
+            .len();
+        out.truncate(keep);
+        out.push_str(part);
+    }
+    out
 }
 
 mod ops;
@@ -189,11 +187,15 @@ macro_rules! over_numeric {
 }
 
 impl Sys {
-    fn from_loaded(l: Loaded) -> Self {
-        match l {
-            Loaded::Q(g, t) => Sys::Q(g, t),
-            Loaded::Quadratic(g, t) => Sys::Quadratic(g, t),
-            Loaded::Sym(g, t) => Sys::Sym(g, t),
+    /// The typed system of a system read by the library's front door.
+    fn of(s: &exactlti::api::System) -> Self {
+        let g = s.ground().to_string();
+        match &s.loaded().system {
+            TypedAny::Rational(t) => Sys::Q(g, t.clone()),
+            TypedAny::Quadratic(t) => Sys::Quadratic(g, t.clone()),
+            TypedAny::RatFunc(t) => Sys::Sym(g, t.clone()),
+            #[allow(unreachable_patterns)]
+            _ => unreachable!("a ground field unknown to the Python layer"),
         }
     }
     fn rational(&self, what: &str) -> FResult<&Typed<Q>> {
@@ -211,6 +213,31 @@ impl Sys {
 #[pyclass(frozen, module = "exactlti._core")]
 pub struct System {
     pub(crate) inner: Arc<Sys>,
+    /// The system as the library's front door read it (every command runs on it).
+    pub(crate) api: Arc<exactlti::api::System>,
+}
+
+impl System {
+    fn new(s: exactlti::api::System) -> Self {
+        System {
+            inner: Arc::new(Sys::of(&s)),
+            api: Arc::new(s),
+        }
+    }
+    /// A system computed here (a minimal realization, ...), given to the front door by its
+    /// matrices.
+    pub(crate) fn of_sys(s: Arc<Sys>) -> Self {
+        let typed = match &*s {
+            Sys::Q(_, t) => TypedAny::Rational(t.clone()),
+            Sys::Quadratic(_, t) => TypedAny::Quadratic(t.clone()),
+            Sys::Sym(_, t) => TypedAny::RatFunc(t.clone()),
+        };
+        let api = exactlti::api::System::from_typed("system", typed);
+        System {
+            inner: s,
+            api: Arc::new(api),
+        }
+    }
 }
 
 impl From<(String, Typed<Q>)> for Sys {
@@ -490,6 +517,35 @@ impl System {
         .to_py(py)
     }
 
+    /// Runs one operation of the command line on this system: `args` as the command line
+    /// spells them after the program name, the file argument included (it names the system
+    /// in messages; the system is not read again). Returns the report as JSON text (every
+    /// exact value as a string, approximations as numbers) and whether its exact checks
+    /// passed.
+    #[pyo3(signature = (args, max_seconds=None))]
+    fn command(
+        &self,
+        py: Python<'_>,
+        args: Vec<String>,
+        max_seconds: Option<f64>,
+    ) -> PyResult<(String, bool, bool)> {
+        let s = self.api.clone();
+        run(py, max_seconds, move || {
+            let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
+            let ctx = exactlti::api::RunContext::default();
+            let out = exactlti::api::execute_on(&cmd, &s, &ctx)?;
+            let text = serde_json::to_string(&out.report.to_json())
+                .map_err(|e| Fail::Input(e.to_string()))?;
+            Ok((text, out.verified, !out.float_disagrees))
+        })
+    }
+
+    /// The path (or name) the system was read from, and whether it is a file.
+    #[getter]
+    fn source(&self) -> (String, bool) {
+        (self.api.path().display().to_string(), self.api.from_file())
+    }
+
     /// Frequency response `C (j w I - A)^{-1} B + D` in floating point, `omega` in rad/s.
     fn freqresp(&self, py: Python<'_>, omega: Vec<f64>) -> PyResult<Py<PyAny>> {
         let s = self.inner.clone();
@@ -501,48 +557,40 @@ impl System {
 }
 
 /// Reads a system from JSON text (the system-file format; `name` is used in messages).
-/// `symbolic`: parameters with value `null` and the `symbols` key stay symbols (the
-/// library's `load_symbolic_str`); a file without symbols is read as by `load_json`.
+/// Parameters with value `null` and those named in `symbols` stay symbols (the text
+/// decides; `symbolic`, kept for callers, says the same).
 #[pyfunction]
 #[pyo3(signature = (text, name, symbolic=false))]
 fn load_json(py: Python<'_>, text: String, name: String, symbolic: bool) -> PyResult<System> {
-    let l = run(py, None, move || {
+    let _ = symbolic;
+    let s = run(py, None, move || {
         let fmt = exactlti::io::SystemFormat::Json;
-        let l = if symbolic {
-            let opts = exactlti::io::symbolic::SymbolicOptions::default();
-            exactlti::io::symbolic::load_symbolic_str(&text, fmt, &name, &opts)?
-        } else {
-            exactlti::io::load_system_str(&text, fmt, &name)?
-        };
-        from_loaded(l).map_err(Fail::Unsupported)
+        let opts = exactlti::api::Options::default();
+        Ok(exactlti::api::System::from_text(&text, fmt, &name, &opts)?)
     })?;
-    Ok(System {
-        inner: Arc::new(Sys::from_loaded(l)),
-    })
+    Ok(System::new(s))
 }
 
 /// Reads a system file (JSON or TOML, chosen by extension) as the command line does:
 /// parameters with value `null` and those named in `symbols` stay symbols; `at` gives
-/// values first (the command line's `--at`).
+/// values first (the command line's `--at`), `symbolic` names parameters kept as symbols
+/// (the command line's `--symbolic`; an empty list: every parameter).
 #[pyfunction]
-#[pyo3(signature = (path, at=None))]
-fn load_file(py: Python<'_>, path: String, at: Option<Vec<(String, String)>>) -> PyResult<System> {
-    let l = run(py, None, move || {
-        let opts = exactlti::io::symbolic::SymbolicOptions {
-            symbolic: None,
+#[pyo3(signature = (path, at=None, symbolic=None))]
+fn load_file(
+    py: Python<'_>,
+    path: String,
+    at: Option<Vec<(String, String)>>,
+    symbolic: Option<Vec<String>>,
+) -> PyResult<System> {
+    let s = run(py, None, move || {
+        let opts = exactlti::api::Options {
+            symbolic,
             at: at.unwrap_or_default(),
         };
-        let l = match exactlti::io::symbolic::load_symbolic_path(Path::new(&path), &opts) {
-            Ok(l) => l,
-            // as the command line: without --at the ordinary reader reports its own errors
-            Err(_) if opts.at.is_empty() => exactlti::io::load_system_path(Path::new(&path))?,
-            Err(e) => return Err(e.into()),
-        };
-        from_loaded(l).map_err(Fail::Unsupported)
+        Ok(exactlti::api::System::open(Path::new(&path), &opts)?)
     })?;
-    Ok(System {
-        inner: Arc::new(Sys::from_loaded(l)),
-    })
+    Ok(System::new(s))
 }
 
 /// Test hook: a panic in the worker must become `RuntimeError`.

@@ -1,13 +1,12 @@
 //! The exact operations on a system over its (numeric) ground field, as plain output data.
 
-use crate::compat::Typed;
 use crate::out::*;
 use crate::{FResult, Fail, Sys};
 use exactlti::field::Field;
+use exactlti::io::TypedSystem as Typed;
 use exactlti::matrix::Matrix;
 use exactlti::realization::{self, MinrealMethod};
 use exactlti::system::StateSpace;
-use exactlti::system::transfer::TransferMatrix;
 use std::sync::Arc;
 
 pub(crate) fn typed_system<K: Field>(t: &Typed<K>) -> Out {

@@ -60,7 +60,7 @@ impl Out {
                 }
                 d.into_any().unbind()
             }
-            Out::Sys(s) => Py::new(py, System { inner: s.clone() })?.into_any(),
+            Out::Sys(s) => Py::new(py, System::of_sys(s.clone()))?.into_any(),
         })
     }
 }

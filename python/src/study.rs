@@ -43,11 +43,19 @@ fn sweep_out(sw: &SweepResult) -> Out {
         .collect();
     Out::Dict(vec![
         ("param", Out::Str(sw.param.clone())),
-        ("values", Out::List(sw.values.iter().map(|v| Out::Float(*v)).collect())),
+        (
+            "values",
+            Out::List(sw.values.iter().map(|v| Out::Float(*v)).collect()),
+        ),
         ("eigenvalues", Out::List(ev)),
         (
             "status",
-            Out::List(sw.status.iter().map(|s| Out::Str(status_name(s).into())).collect()),
+            Out::List(
+                sw.status
+                    .iter()
+                    .map(|s| Out::Str(status_name(s).into()))
+                    .collect(),
+            ),
         ),
         ("infinite_eigenvalues", Out::List(infinite)),
     ])

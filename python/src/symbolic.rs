@@ -7,17 +7,16 @@
 //! the result's identity checked as rational functions. Questions that need numbers
 //! (signs, the modal table, the float cross-check) are refused with one line.
 
-use crate::compat::Typed;
 use crate::ops::{mnf_out, scb_typed, tf_parts, zeros_typed};
 use crate::out::*;
 use crate::{FResult, Fail, Sys};
 use exactlti::field::Field;
+use exactlti::io::TypedSystem as Typed;
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization::{self, MinrealMethod};
 use exactlti::structure::factor_qp::factor_over_qp;
-use exactlti::system::{Descriptor, StateSpace};
 use std::sync::Arc;
 
 type T = Typed<RatFuncField>;

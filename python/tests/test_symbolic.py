@@ -185,12 +185,23 @@ def test_poles_zeros_mnf_over_qp():
 
 def test_numbers_only_operations_refuse_with_one_line():
     G = mass_spring()
-    for f in (G.modes, G.check, lambda: G.freqresp([1.0]), lambda: G.minreal(method="jordan")):
+    for f in (G.check, lambda: G.freqresp([1.0]), lambda: G.minreal(method="jordan")):
         with pytest.raises(ValueError, match="needs numbers") as e:
             f()
         assert "\n" not in str(e.value)
     with pytest.raises(NotImplementedError, match="real Jordan form"):
         G.jordan(real=True)
+
+
+def test_modes_over_qp_are_formulas():
+    # det(sI - A) factored over Q(p): m s^2 + c s + k gives omega_n^2 = k/m, 2 zeta omega_n = c/m
+    G = mass_spring()
+    r = G.modes()
+    assert r.verified
+    quad = [m for m in r["modes"] if "omega_n_squared" in m]
+    assert len(quad) == 1
+    assert sympy.simplify(sympy.sympify(quad[0]["omega_n_squared"]) - sympy.sympify("k/m")) == 0
+    assert sympy.simplify(sympy.sympify(quad[0]["two_zeta_omega_n"]) - sympy.sympify("c/m")) == 0
 
 
 def test_symbolic_reprs():

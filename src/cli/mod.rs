@@ -1,53 +1,25 @@
 //! The `exactlti` command line (contract: ../shared/CLI-CONTRACT.md).
 //!
-//! Thin: arguments → [`crate::io`] → library → [`crate::report::Report`] → text/JSON/LaTeX.
+//! Thin: arguments → a [`crate::api::Command`] → [`crate::api::execute_ctx`] (the library's
+//! front door) → [`crate::report::Report`] → text/JSON/LaTeX.
 //! Exit status 0 on success; 2 for bad input or a request that cannot be met (one line on
 //! stderr naming the file, key, row and column, or the violated condition); 1 for an
 //! internal failure (an exact verification that failed). Long exact work is bounded by
 //! `--max-seconds` (default 600).
 
-mod a_only;
-mod analyze;
-mod args;
-mod bifurcations;
-pub mod budget;
-mod commands;
-mod common;
-mod critical;
-mod dcgain;
-mod float_cmds;
-mod float_compare;
-mod interconnect;
 pub mod memory;
-mod pencil_cmds;
-pub mod plots;
 mod progress;
-mod steps;
-mod sweep;
-mod sweep_stream;
-mod symbolic;
-mod symbolic_jordan;
 
-pub use args::{LinalgOp, MethodArg, PolyCmd, TimeOpts};
-/// One command run in-process (no output, no time bound): the report and its status.
-pub use commands::execute;
+pub use crate::api::{
+    Command, Failure, Format, LinalgOp, MethodArg, Outcome, PolyCmd, TimeOpts, budget, execute,
+    plots,
+};
 
-use crate::error::Error;
+use crate::api::runner::{Poll, Worker};
 use crate::report::Report;
-use budget::Event;
-use clap::{Parser, Subcommand, ValueEnum};
-use std::path::PathBuf;
+use clap::Parser;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
-
-/// Output formats.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
-pub enum Format {
-    #[default]
-    Text,
-    Json,
-    Latex,
-}
 
 #[derive(Parser, Debug)]
 #[command(
@@ -72,7 +44,7 @@ pub struct Cli {
     #[arg(long, global = true)]
     pub standalone: bool,
     /// Upper bound on the wall time in seconds (a number > 0); exceeded: exit 2.
-    #[arg(long, global = true, default_value_t = 600.0, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
+    #[arg(long, global = true, default_value_t = 600.0, value_name = "SECONDS", value_parser = crate::api::parse_seconds, allow_hyphen_values = true)]
     pub max_seconds: f64,
     /// Memory budget in MiB (0: none). An allocation past it stops the command with one line
     /// on stderr and exit 2 instead of exhausting the machine (see `exactlti::cli::memory`).
@@ -93,319 +65,6 @@ pub struct Cli {
     /// sentence, exact objects, identity and its check; over Q(p) what it assumes).
     #[arg(long, global = true)]
     pub steps: bool,
-}
-
-#[derive(Subcommand, Debug)]
-pub enum Command {
-    /// Exact Jordan decomposition of A.
-    Jordan {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        /// Real Jordan form (2x2 blocks [[a, b], [-b, a]] for complex pairs).
-        #[arg(long)]
-        real: bool,
-        /// With --real: write every complex pair in an explicit real field (degree up to
-        /// d(d-1) for an eigenvalue of degree d) instead of the compact form.
-        #[arg(long)]
-        expand: bool,
-    },
-    /// Minimal realization.
-    Minreal {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        /// Algorithm: kalman (staircase), rosenbrock, ho-kalman, jordan (modal) are exact;
-        /// era is the float eigensystem realization, compared with the exact McMillan degree.
-        #[arg(long, value_enum, default_value_t = MethodArg::Kalman)]
-        method: MethodArg,
-        /// `--method era` only: K x K block Hankel matrices (default: grown until the
-        /// numerical rank is stable).
-        #[arg(long)]
-        hankel: Option<usize>,
-        /// Minimal DESCRIPTOR realization (improper systems accepted), with `irreducible_order`.
-        #[arg(long)]
-        descriptor: bool,
-    },
-    /// Descriptor system to standard state space.
-    Standard {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Special coordinate basis.
-    Scb {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Mechanical normal form (second-order form of a first-order system).
-    Mnf {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Invariant zeros (with `E`: finite zeros and infinite zero orders).
-    Zeros {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Kronecker structure of the pencil A - sE.
-    Pencil {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Controllability structure of (A, B) (with `E`: finite and infinite).
-    Ctrb {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Observability structure of (C, A) (with `E`: finite and infinite).
-    Obsv {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Transfer matrix in lowest terms, McMillan degree, poles and transmission zeros.
-    Tf {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Modal table: eigenvalue, frequency, damping ratio, time constant, period.
-    Modes {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Frequency response.
-    Freqresp {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        /// Lowest frequency in Hz (> 0).
-        #[arg(long, default_value_t = 0.01, value_name = "HZ")]
-        from: f64,
-        /// Highest frequency in Hz (> --from).
-        #[arg(long, default_value_t = 10.0, value_name = "HZ")]
-        to: f64,
-        /// Number of frequencies, logarithmically spaced from --from to --to (2 to 100000;
-        /// points x outputs x inputs at most 1000000).
-        #[arg(long, default_value_t = 200, value_name = "N")]
-        points: usize,
-        /// Also write a Bode plot as SVG: magnitude [dB] and unwrapped phase [deg] against Hz,
-        /// channels named from the file, the grid refined near lightly damped poles; for a
-        /// complex system over f < 0 (mirrored log axis) and f > 0 side by side.
-        #[arg(long, value_name = "OUT.svg")]
-        svg: Option<PathBuf>,
-        /// Also write the response as CSV (frequency in Hz, real and imaginary parts).
-        #[arg(long, value_name = "OUT.csv")]
-        csv: Option<PathBuf>,
-    },
-    /// Poles (eigenvalues of A) and invariant zeros, exact over Q; `--svg` draws the
-    /// pole-zero map (poles x, zeros o, equal axis scales, title from the file's `name`).
-    Pzmap {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        /// Write the pole-zero map as SVG.
-        #[arg(long, value_name = "OUT.svg")]
-        svg: Option<PathBuf>,
-    },
-    /// Step response of every input -> output channel: exact closed form from the Jordan form
-    /// of A over Q (evaluated in floats), float matrix exponential otherwise; with the exact
-    /// DC gain D - C A^-1 B (the final value of a stable system).
-    Step {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        #[command(flatten)]
-        opts: TimeOpts,
-    },
-    /// Impulse response C e^(At) B of every channel (D delta(t) left out), as `step`; the
-    /// exact value at t = 0 is C B.
-    Impulse {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        #[command(flatten)]
-        opts: TimeOpts,
-    },
-    /// Eigenvalues along one parameter (float, parallel), with plots.
-    Sweep {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        /// The parameter swept (its value in the file is overridden).
-        #[arg(long)]
-        param: String,
-        /// First value of the parameter (in the file's units).
-        #[arg(long, allow_hyphen_values = true)]
-        from: f64,
-        /// Last value of the parameter.
-        #[arg(long, allow_hyphen_values = true)]
-        to: f64,
-        /// Number of parameter values, evenly spaced.
-        #[arg(long, default_value_t = 200, value_name = "N")]
-        points: usize,
-        /// Real and imaginary parts against the parameter, written as SVG.
-        #[arg(long, value_name = "OUT.svg")]
-        svg: Option<PathBuf>,
-        /// Root locus in the complex plane, written as SVG.
-        #[arg(long, value_name = "OUT.svg")]
-        locus_svg: Option<PathBuf>,
-        /// The eigenvalues (real, imaginary parts) per parameter value, written as CSV.
-        #[arg(long, value_name = "OUT.csv")]
-        csv: Option<PathBuf>,
-    },
-    /// Exact critical values of one parameter and the intervals between them.
-    Critical {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        /// The parameter (a name from the file's `parameters`).
-        #[arg(long)]
-        param: String,
-        /// Lower end of the interval: an exact number (decimal or fraction).
-        #[arg(long, allow_hyphen_values = true)]
-        from: String,
-        /// Upper end of the interval: an exact number (decimal or fraction).
-        #[arg(long, allow_hyphen_values = true)]
-        to: String,
-        /// Correct digits of the displayed critical values (1 to 200).
-        #[arg(long, default_value_t = 20)]
-        digits: usize,
-    },
-    /// Run the float path beside the exact path and compare.
-    Check {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-    },
-    /// Polynomials over Q.
-    Poly {
-        #[command(subcommand)]
-        op: PolyCmd,
-    },
-    /// Exact linear algebra on the matrix A of a system file.
-    Linalg {
-        /// The operation; rank, rref and nullspace take any m x n matrix A.
-        #[arg(value_enum)]
-        op: LinalgOp,
-        /// A file with the key A (JSON or TOML; the other keys of a system may be present).
-        file: PathBuf,
-    },
-    /// Everything that applies, as one report (built-in sliding-mass example without FILE).
-    Analyze {
-        /// System file (JSON or TOML); without it, the built-in sliding-mass example.
-        file: Option<PathBuf>,
-        /// Time budget of each section in seconds (a section out of time is reported as
-        /// skipped, with the command that insists); `--max-seconds` bounds the whole.
-        #[arg(long, default_value_t = budget::DEFAULT_SECTION_SECONDS, value_name = "SECONDS", value_parser = parse_seconds, allow_hyphen_values = true)]
-        section_seconds: f64,
-    },
-    /// Exact DC gain G(0) = D - C A^-1 B per channel (`inf` where the channel has a pole at
-    /// s = 0), python-control's `dcgain`.
-    Dcgain {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`), or a file with only D.
-        file: PathBuf,
-    },
-    /// Interconnections: series, parallel, feedback, append (exact, python-control's
-    /// conventions), with `--minreal` and `--out`.
-    #[command(flatten)]
-    Interconnect(interconnect::InterconnectCmd),
-    /// Structural bifurcations of a symbolic system: the generic result, then the result
-    /// where each condition vanishes (solved for a parameter when linear in it).
-    Bifurcations {
-        /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
-        file: PathBuf,
-        /// The structure explored.
-        #[arg(long = "of", value_enum, default_value_t = bifurcations::Of::Scb)]
-        of: bifurcations::Of,
-        /// Substitutions along one path.
-        #[arg(long, default_value_t = 2)]
-        depth: usize,
-    },
-}
-
-/// A command's result: the report, and whether every exact check it made passed (read for
-/// the exit status; float-only results and answers that an object does not exist count as
-/// passed, as there is nothing exact to check).
-#[derive(Debug)]
-pub struct Outcome {
-    pub report: Report,
-    pub verified: bool,
-    /// The float path disagrees with the exact one (`check`, ERA): exit 3.
-    pub float_disagrees: bool,
-    /// The report is printed but `--max-seconds` cut part of it: exit 2 with this line.
-    pub stopped: Option<String>,
-    /// The report was already written to stdout as it was computed (long sweeps).
-    pub streamed: bool,
-}
-
-impl Outcome {
-    /// A report with its verification status.
-    pub fn new(report: Report, verified: bool) -> Self {
-        Outcome {
-            report,
-            verified,
-            float_disagrees: false,
-            stopped: None,
-            streamed: false,
-        }
-    }
-    /// A float-vs-exact report (`check`, ERA): `agree = false` exits 3.
-    pub fn float_vs_exact(report: Report, agree: bool) -> Self {
-        Outcome {
-            report,
-            verified: true,
-            float_disagrees: !agree,
-            stopped: None,
-            streamed: false,
-        }
-    }
-    /// A report without an exact check to fail (float results, tables, factorizations).
-    pub fn plain(report: Report) -> Self {
-        Outcome::new(report, true)
-    }
-}
-
-/// A command failure: exit code and the one-line message.
-#[derive(Debug)]
-pub struct Failure {
-    pub code: i32,
-    pub message: String,
-}
-
-impl std::fmt::Display for Failure {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.message)
-    }
-}
-
-impl std::error::Error for Failure {}
-
-impl From<Error> for Failure {
-    fn from(e: Error) -> Self {
-        let code = if matches!(e, Error::Verification(_)) {
-            1
-        } else {
-            2
-        };
-        Failure {
-            code,
-            message: e.to_string(),
-        }
-    }
-}
-
-impl From<crate::io::InputError> for Failure {
-    fn from(e: crate::io::InputError) -> Self {
-        Failure {
-            code: 2,
-            message: e.to_string(),
-        }
-    }
-}
-
-/// `--max-seconds`: a finite number of seconds greater than zero (at most 10^7).
-fn parse_seconds(text: &str) -> Result<f64, String> {
-    let x: f64 = text
-        .trim()
-        .parse()
-        .map_err(|_| format!("'{text}' is not a number of seconds"))?;
-    if x.is_finite() && x > 0.0 && x <= 1e7 {
-        Ok(x)
-    } else {
-        Err(format!(
-            "must be a number of seconds > 0 and <= 10000000 (got '{text}')"
-        ))
-    }
 }
 
 /// Renders a report in the chosen format (`--standalone` off, compact text).
@@ -439,16 +98,7 @@ fn say(msg: &str) {
     let _ = writeln!(std::io::stderr().lock(), "exactlti: {line}");
 }
 
-/// Writes the rendered output: `Ok` also when the reader went away (broken pipe: a quiet
-/// stop, as `exactlti analyze | head -1` expects); any other write error is returned.
-fn write_stdout(text: &str) -> std::io::Result<()> {
-    use std::io::Write;
-    let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-        other => other,
-    }
-}
+use crate::api::write_stdout;
 
 /// The one line (contract) for an option-parser error, and its exit status: `None` for
 /// `--help` / `--version`, which clap prints itself (exit 0).
@@ -522,71 +172,68 @@ pub fn run(cli: Cli) -> i32 {
     memory::set_max_memory_mib(cli.max_memory);
     let (tx, rx) = mpsc::channel();
     let streams = format == Format::Text && matches!(cli.command, Command::Analyze { .. });
-    let ctx = commands::RunContext {
+    let ctx = crate::api::RunContext {
         start,
         max_seconds: limit,
-        events: streams.then(|| tx.clone()),
+        events: streams.then_some(tx),
         full,
         stdout: Some(format),
     };
-    let handle = std::thread::Builder::new()
-        .stack_size(256 << 20)
-        .spawn(move || {
-            let (sym, at) = (cli.symbolic.as_deref(), cli.at.as_deref());
-            let r = if with_steps {
-                steps::execute(&cli.command, sym, at, format, standalone)
-            } else {
-                commands::execute_ctx(&cli.command, sym, at, &ctx)
-            };
-            let _ = tx.send(Event::Finished(Box::new(r)));
-        });
-    if handle.is_err() {
-        say("could not start the worker thread");
-        return 1;
-    }
-    let wait = if limit.is_finite() && limit > 0.0 {
-        Duration::from_secs_f64(limit.min(1e7))
-    } else {
-        Duration::from_secs(600)
-    };
-    let deadline = start + wait;
-    let mut printer = progress::Printer::new(full);
-    loop {
-        let now = Instant::now();
-        let Some(left) = deadline
-            .checked_duration_since(now)
-            .filter(|d| !d.is_zero())
-        else {
-            printer.clear();
-            say(&format!(
-                "stopped after --max-seconds {limit}: the exact computation did not finish in time"
-            ));
-            return 2;
-        };
-        let got = rx.recv_timeout(left.min(Duration::from_millis(100)));
-        if got.is_ok() && Instant::now() > deadline {
-            // what arrives after the bound (this thread was not scheduled in time) is not
-            // printed: --max-seconds holds however the threads are scheduled
-            printer.clear();
-            say(&format!(
-                "stopped after --max-seconds {limit}: the exact computation did not finish in time"
-            ));
-            return 2;
+    let deadline = start + Duration::from_secs_f64(limit.clamp(1e-3, 1e7));
+    let work = move || {
+        let (sym, at) = (cli.symbolic.as_deref(), cli.at.as_deref());
+        if with_steps {
+            crate::api::steps::execute(&cli.command, sym, at, format, standalone)
+        } else {
+            crate::api::execute_ctx(&cli.command, sym, at, &ctx)
         }
-        match got {
-            Ok(Event::Finished(r)) => {
+    };
+    let worker = match Worker::spawn("exactlti-worker", Some(deadline), work) {
+        Ok(w) => w,
+        Err(m) => {
+            say(&m);
+            return 1;
+        }
+    };
+    let mut printer = progress::Printer::new(full);
+    let tick = Duration::from_millis(if streams { 20 } else { 100 });
+    let stopped = |printer: &mut progress::Printer| {
+        printer.clear();
+        say(&format!(
+            "stopped after --max-seconds {limit}: the exact computation did not finish in time"
+        ));
+        2
+    };
+    loop {
+        // the streamed sections first (in order), then the result; what arrives after the
+        // bound (this thread was not scheduled in time) is not printed: --max-seconds holds
+        // however the threads are scheduled
+        while let Ok(ev) = rx.try_recv() {
+            if Instant::now() > deadline {
+                return stopped(&mut printer);
+            }
+            if let Err(e) = printer.event(ev) {
                 printer.clear();
-                return finish(*r, &mut printer, format, standalone);
+                say(&format!("cannot write the output: {e}"));
+                return 2;
             }
-            Ok(ev) => {
-                if let Err(e) = printer.event(ev) {
-                    printer.clear();
-                    say(&format!("cannot write the output: {e}"));
-                    return 2;
+        }
+        match worker.poll(tick) {
+            Poll::Pending => printer.tick(start.elapsed()),
+            Poll::Done(_) if Instant::now() > deadline => return stopped(&mut printer),
+            Poll::Done(r) => {
+                for ev in rx.try_iter() {
+                    if let Err(e) = printer.event(ev) {
+                        printer.clear();
+                        say(&format!("cannot write the output: {e}"));
+                        return 2;
+                    }
                 }
+                printer.clear();
+                return finish(r, &mut printer, format, standalone);
             }
-            Err(mpsc::RecvTimeoutError::Timeout) => printer.tick(start.elapsed()),
-            Err(mpsc::RecvTimeoutError::Disconnected) => {
+            Poll::TimedOut => return stopped(&mut printer),
+            Poll::Panicked(_) => {
                 printer.clear();
                 say("internal failure (the computation panicked)");
                 return 1;

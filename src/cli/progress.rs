@@ -48,7 +48,7 @@ impl Printer {
         escape_control_report(r).to_text_with(&TextOptions::cli(self.full))
     }
 
-    /// Handles one event (not `Finished`).
+    /// Handles one event.
     pub fn event(&mut self, ev: Event) -> std::io::Result<()> {
         match ev {
             Event::Title(t) => {
@@ -66,7 +66,6 @@ impl Printer {
                 self.items += 1;
                 self.write(&self.text(&single(k, v)))
             }
-            Event::Finished(_) => Ok(()),
         }
     }
 

@@ -4,32 +4,22 @@
 //! |---|---|
 //! | [`load_system_str`] | text (JSON or TOML, see [`SystemFormat`]) → [`LoadedSystem`] |
 //! | [`load_system_path`] | a file (format from the extension) → [`LoadedSystem`] |
-//! | [`LoadedSystem::run`] | **the one dispatch point**: calls a [`SystemVisitor`] with the system over its concrete field `K` |
 //!
 //! Code that works on a loaded system is written once, generic over `K: Field`, as a
-//! [`SystemVisitor`]; `run` is the only `match` over the ground fields outside this file's
-//! typing step ([`type_file`]). Adding a ground field (e.g. $\mathbb{Q}(p_1, \dots, p_k)$)
-//! means: a new [`Ground`] variant from the reader, a variant of [`TypedAny`], one arm in
-//! `type_file` and one in `run`.
+//! `crate::api::SystemVisitor`, and dispatched by `crate::api::System::run`, the one `match`
+//! over the ground fields outside this file's typing step ([`type_file`]). Adding a ground
+//! field means: a new [`Ground`] variant from the reader, a variant of [`TypedAny`], one arm
+//! in `type_file` and one in `api::System::run`.
 //!
 //! Every failure is an [`InputError`]: one line naming the file (and key, row, column when
 //! they apply); the command line prints it and exits with status 2.
 //!
 //! # Examples
 //! ```
-//! use exactlti::field::Field;
-//! use exactlti::io::{SystemFile, SystemFormat, SystemVisitor, TypedSystem, load_system_str};
+//! use exactlti::io::{SystemFormat, load_system_str};
 //!
-//! struct Order;
-//! impl SystemVisitor for Order {
-//!     type Output = (usize, String);
-//!     fn visit<K: Field + 'static>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
-//!         (t.ss.nstates(), t.ss.a.field().to_string())
-//!     }
-//! }
 //! let text = "A = [[0, 1], [-2, -0.5]]\nB = [[0], [1]]\nC = [[1, 0]]\nD = [[0]]\n";
 //! let sys = load_system_str(text, SystemFormat::Toml, "two.toml").unwrap();
-//! assert_eq!(sys.run(Order), (2, "QQ".to_string()));
 //! assert_eq!(sys.rational().unwrap().ss.a.get(1, 1).to_string(), "-1/2");
 //!
 //! let e = load_system_str(r#"{"A": [[1, "k"]]}"#, SystemFormat::Json, "x.json").unwrap_err();
@@ -113,26 +103,7 @@ pub struct LoadedSystem {
     pub system: TypedAny,
 }
 
-/// Work on a loaded system, written once for every ground field `K`.
-///
-/// Field-specific steps inside `visit` may ask for a concrete field with
-/// [`as_rational`] (`Some` exactly when `K` is [`Q`]).
-pub trait SystemVisitor {
-    type Output;
-    /// Runs on the system over its concrete field.
-    fn visit<K: Field + 'static>(self, file: &SystemFile, sys: &TypedSystem<K>) -> Self::Output;
-}
-
 impl LoadedSystem {
-    /// Runs `v` over the system's concrete ground field: the one dispatch point from a
-    /// file's field to generic code.
-    pub fn run<V: SystemVisitor>(&self, v: V) -> V::Output {
-        match &self.system {
-            TypedAny::Rational(t) => v.visit(&self.file, t),
-            TypedAny::Quadratic(t) => v.visit(&self.file, t),
-            TypedAny::RatFunc(t) => v.visit(&self.file, t),
-        }
-    }
     /// The system over $\mathbb{Q}$, or `None` when the file's field is larger.
     pub fn rational(&self) -> Option<&TypedSystem<Q>> {
         match &self.system {

@@ -49,8 +49,8 @@ pub mod write;
 pub use expr::{ExprError, eval_expr};
 pub use keys::SignalNames;
 pub use load::{
-    FromScalars, LoadedSystem, SystemFormat, SystemVisitor, TypedAny, TypedSystem, as_rational,
-    load_model_str, load_system_path, load_system_str,
+    FromScalars, LoadedSystem, SystemFormat, TypedAny, TypedSystem, as_rational, load_model_str,
+    load_system_path, load_system_str,
 };
 pub use matlab::{parse_matlab_matrix, split_matlab_matrix};
 pub use read::read_text;

@@ -28,7 +28,7 @@ use super::keys::{check_keys, keys_of};
 use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
 use super::raw::{Raw, from_json_text, from_toml_text};
 pub use super::refusal;
-use super::system_file::validate;
+use super::system_file::{reserved_symbol, validate};
 use super::{Ground, InputError, SignalNames, SystemFile, SystemFormat, split_matlab_matrix};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
@@ -234,17 +234,23 @@ pub fn load_symbolic_str(
     })
 }
 
-/// Refuses a reserved name (`i`, `sqrt`, `pi`) in the `symbols` key: as a symbol it would
-/// change what the entries mean (`i^2 + 1` a polynomial instead of 0).
-pub(crate) fn reserved_symbol(file: &str, s: &str) -> Result<(), InputError> {
-    match crate::field::scan::reserved_meaning(s) {
-        Some(m) => Err(InputError::key(
-            file,
-            "symbols",
-            format!("'{s}' is reserved ({m}) and cannot name a symbol"),
-        )),
-        None => Ok(()),
-    }
+/// Whether a file keeps parameters as symbols by itself: a `symbols` key, or a parameter
+/// whose value is `null` (read from the parsed table; text that does not parse is `false`,
+/// and the ordinary reader reports it).
+pub fn declares_symbols(text: &str, format: SystemFormat, name: &str) -> bool {
+    let raw = match format {
+        SystemFormat::Json => from_json_text(text, name),
+        SystemFormat::Toml => from_toml_text(text, name),
+    };
+    let Ok(Raw::Table(entries)) = raw else {
+        return false;
+    };
+    let null = |v: &Raw| matches!(v, Raw::Other { json, .. } if json.is_null());
+    entries.iter().any(|(k, v)| match (k.as_str(), v) {
+        ("symbols", _) => true,
+        ("parameters", Raw::Table(kv)) => kv.iter().any(|(_, x)| null(x)),
+        _ => false,
+    })
 }
 
 const MATRIX_KEYS: [&str; 9] = ["A", "B", "C", "D", "E", "M", "L", "K", "F"];

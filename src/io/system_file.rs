@@ -217,7 +217,7 @@ pub(crate) fn validate(raw: Raw, file: &str) -> Result<SystemFile, InputError> {
             if let (true, Raw::Array(xs)) = (key == "symbols", &v) {
                 for x in xs {
                     if let Raw::Str(s) = x {
-                        super::symbolic::reserved_symbol(file, s)?;
+                        reserved_symbol(file, s)?;
                     }
                 }
             }
@@ -662,4 +662,17 @@ pub(crate) fn matrices_of_table(
         });
     }
     Ok((out, scan.ground()))
+}
+
+/// Refuses a reserved name (`i`, `sqrt`, `pi`) in the `symbols` key: as a symbol it would
+/// change what the entries mean (`i^2 + 1` a polynomial instead of 0).
+pub(crate) fn reserved_symbol(file: &str, s: &str) -> Result<(), InputError> {
+    match crate::field::scan::reserved_meaning(s) {
+        Some(m) => Err(InputError::key(
+            file,
+            "symbols",
+            format!("'{s}' is reserved ({m}) and cannot name a symbol"),
+        )),
+        None => Ok(()),
+    }
 }

@@ -249,6 +249,16 @@ impl ParamFamily {
     /// `Invalid` naming the file and key for unreadable or malformed files, unknown names,
     /// cycles; `Unsupported` for `sqrt`/`i` entries or a transfer-matrix file.
     pub fn from_file(path: &Path, param: &str) -> Result<ParamFamily> {
+        Self::from_file_at(path, param, &[])
+    }
+
+    /// [`ParamFamily::from_file`] with values for other parameters first (`--at`: they
+    /// override the file's; exact text, decimals are exact).
+    ///
+    /// # Errors
+    /// As [`ParamFamily::from_file`]; a value for `param` itself (it is swept), or for a
+    /// name that is not a parameter of the file.
+    pub fn from_file_at(path: &Path, param: &str, at: &[(String, String)]) -> Result<ParamFamily> {
         let shown = path.display().to_string();
         let text = crate::io::read::read_text(path).map_err(|e| Error::Invalid(e.to_string()))?;
         let toml = path
@@ -262,7 +272,7 @@ impl ParamFamily {
             raw::from_json_text(&text, &shown)
         }
         .map_err(|e| Error::Invalid(e.to_string()))?;
-        Self::from_raw(&raw, &shown, param)
+        Self::from_raw(&with_values(raw, &shown, param, at)?, &shown, param)
     }
 
     fn from_raw(raw: &Raw, file: &str, param: &str) -> Result<ParamFamily> {
@@ -514,4 +524,36 @@ pub(crate) fn second_order_state_matrix(
         }
     }
     Ok(a)
+}
+
+/// The file's table with `--at` values written into its `parameters`.
+fn with_values(raw: Raw, file: &str, param: &str, at: &[(String, String)]) -> Result<Raw> {
+    if at.is_empty() {
+        return Ok(raw);
+    }
+    let Raw::Table(mut top) = raw else {
+        return Ok(raw);
+    };
+    let Some((_, Raw::Table(params))) = top.iter_mut().find(|(k, _)| k == "parameters") else {
+        let (n, _) = &at[0];
+        return Err(Error::Invalid(format!(
+            "{file}: --at: unknown parameter '{n}'"
+        )));
+    };
+    for (n, v) in at {
+        if n == param {
+            return Err(Error::Invalid(format!(
+                "{file}: --at gives a value to '{n}', the parameter studied"
+            )));
+        }
+        match params.iter_mut().find(|(p, _)| p == n) {
+            Some(slot) => slot.1 = Raw::Str(v.clone()),
+            None => {
+                return Err(Error::Invalid(format!(
+                    "{file}: --at: unknown parameter '{n}'"
+                )));
+            }
+        }
+    }
+    Ok(Raw::Table(top))
 }

@@ -12,8 +12,7 @@ use super::symbolic::system::factors;
 use super::{Failure, Outcome};
 use crate::error::Result;
 use crate::field::Field;
-use crate::io::TypedAny;
-use crate::io::symbolic::{SymbolicOptions, load_symbolic_path};
+use crate::io::TypedSystem;
 use crate::ratfunc::RatFuncField;
 use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, str_list};
@@ -217,27 +216,24 @@ fn node_report(k: &RatFuncField, n: &Node<Summary>) -> (Report, bool) {
     (r, ok)
 }
 
-/// Runs `bifurcations`.
+/// `bifurcations` on a numeric system: refused, saying what it needs.
+pub(super) fn needs_symbols(file: &Path) -> Failure {
+    Failure {
+        code: 2,
+        message: format!(
+            "{}: bifurcations needs symbolic parameters (null values, a `symbols` list, or --symbolic)",
+            file.display()
+        ),
+    }
+}
+
+/// Runs `bifurcations` on a system over $\mathbb{Q}(p)$.
 pub(super) fn run(
     file: &Path,
+    t: &TypedSystem<RatFuncField>,
     of: Of,
     depth: usize,
-    opts: &SymbolicOptions,
 ) -> std::result::Result<Outcome, Failure> {
-    let fail = |m: String| Failure {
-        code: 2,
-        message: format!("{}: {m}", file.display()),
-    };
-    let loaded = load_symbolic_path(file, opts).map_err(|e| Failure {
-        code: 2,
-        message: e.to_string(),
-    })?;
-    let TypedAny::RatFunc(t) = &loaded.system else {
-        return Err(fail(
-            "bifurcations needs symbolic parameters (null values, a `symbols` list, or --symbolic)"
-                .into(),
-        ));
-    };
     let k = t.a_raw.field().clone();
     let f = move |s: &StateSpace<RatFuncField>| summary(of, s);
     let limits = Limits {

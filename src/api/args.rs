@@ -27,7 +27,7 @@ pub enum LinalgOp {
 }
 
 /// Operations of `poly`.
-#[derive(Subcommand, Debug)]
+#[derive(Subcommand, Debug, Clone)]
 pub enum PolyCmd {
     /// Factorization over Q into irreducibles with multiplicities (uni- or multivariate).
     Factor {

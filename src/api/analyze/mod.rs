@@ -1,7 +1,7 @@
 //! `analyze`: every section that applies, as one report.
 //!
 //! Each section is computed under its own budget (`--section-seconds`, default 10 s, never
-//! more than what is left of `--max-seconds`; see [`crate::cli::budget`]) and, in text mode,
+//! more than what is left of `--max-seconds`; see [`crate::api::budget`]) and, in text mode,
 //! printed as soon as it is done. A section that runs out of time is reported in place
 //! (`skipped`, with the reason and the command that insists) and the report goes on; a section
 //! that cannot be computed says why (`error`, or `not_applicable` for a condition of the

@@ -10,11 +10,12 @@
 //! runs, which section is done), so that text output streams and a progress line can say
 //! what is being computed.
 
+use super::runner::Poll;
 use crate::report::Value;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-/// What a command reports while it works, then its result (read by [`crate::cli::run`]).
+/// What a command reports while it works (read by [`crate::cli::run`]).
 #[derive(Debug)]
 pub enum Event {
     /// The report's title (text mode prints it first).
@@ -23,8 +24,6 @@ pub enum Event {
     Working(String),
     /// A finished item of the report, in report order (text mode prints it at once).
     Item(String, Value),
-    /// The command's result (the items not streamed are printed from it).
-    Finished(Box<Result<super::Outcome, super::Failure>>),
 }
 
 /// Where events go (none: nothing streams).
@@ -114,30 +113,26 @@ impl Budget {
                 whole: true,
             };
         };
-        let (tx, rx) = mpsc::channel();
-        let spawned = std::thread::Builder::new()
-            .name("exactlti-section".into())
-            .stack_size(256 << 20)
-            .spawn(move || {
-                let _ = tx.send(work());
-            });
-        if spawned.is_err() {
-            return Ran::Panicked;
-        }
         let start = Instant::now();
-        match rx.recv_timeout(wait) {
+        let Ok(w) = super::runner::Worker::spawn("exactlti-section", Some(start + wait), work)
+        else {
+            return Ran::Panicked;
+        };
+        match w.wait() {
             // a result that arrives after the whole bound (this thread was not scheduled in
             // time) is not used: the bound holds however the threads are scheduled
-            Ok(_) if whole && self.deadline.is_some_and(|d| Instant::now() > d) => Ran::OutOfTime {
+            Poll::Done(_) if whole && self.deadline.is_some_and(|d| Instant::now() > d) => {
+                Ran::OutOfTime {
+                    seconds: start.elapsed().as_secs_f64(),
+                    whole,
+                }
+            }
+            Poll::Done(v) => Ran::Done(v),
+            Poll::TimedOut | Poll::Pending => Ran::OutOfTime {
                 seconds: start.elapsed().as_secs_f64(),
                 whole,
             },
-            Ok(v) => Ran::Done(v),
-            Err(mpsc::RecvTimeoutError::Timeout) => Ran::OutOfTime {
-                seconds: start.elapsed().as_secs_f64(),
-                whole,
-            },
-            Err(mpsc::RecvTimeoutError::Disconnected) => Ran::Panicked,
+            Poll::Panicked(_) => Ran::Panicked,
         }
     }
 }

@@ -13,6 +13,8 @@ use std::path::Path;
 pub struct CriticalArgs<'a> {
     pub file: &'a Path,
     pub param: &'a str,
+    /// `--at`: values of other parameters (overriding the file's).
+    pub at: &'a [(String, String)],
     pub from: &'a str,
     pub to: &'a str,
     pub digits: usize,
@@ -155,8 +157,9 @@ pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
             ),
         });
     }
-    let fam = ParamFamily::from_file(a.file, a.param)?;
-    super::common::check_study_file(a.file)?;
+    // the file was read as a system by the caller ([`crate::api::System::open`]; the
+    // parameter studied may be `null`: a symbol)
+    let fam = ParamFamily::from_file_at(a.file, a.param, a.at)?;
     let cv = critical_values(&fam, &from, &to)?;
     Ok(Outcome::new(report(&cv, a.digits), cv.verified))
 }

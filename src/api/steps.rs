@@ -28,7 +28,7 @@ fn refuse(message: String) -> Failure {
 }
 
 /// Runs `cmd` with `--steps`; LaTeX is written to stdout here (the outcome is `streamed`).
-pub(super) fn execute(
+pub fn execute(
     cmd: &Command,
     symbolic: Option<&str>,
     at: Option<&str>,

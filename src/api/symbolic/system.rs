@@ -6,9 +6,9 @@
 //! approximations) are made only where they hold for every parameter value (a zero at
 //! $s = 0$ is not minimum phase); otherwise `minimum_phase` says "depends on parameters".
 
-use crate::cli::common::exact_only;
-use crate::cli::common::with_path;
-use crate::cli::{Command, Failure, MethodArg, Outcome};
+use crate::api::common::exact_only;
+use crate::api::common::with_path;
+use crate::api::{Command, Failure, MethodArg, Outcome};
 use crate::field::Field;
 use crate::io::{SystemFile, TypedSystem};
 use crate::poly::Poly;
@@ -23,7 +23,7 @@ type T = TypedSystem<RatFuncField>;
 
 /// Runs `cmd` over $\mathbb{Q}(p)$; `Ok(None)`: the command does not work over
 /// $\mathbb{Q}(p)$ (the caller refuses it).
-pub(in crate::cli) fn run(
+pub(in crate::api) fn run(
     cmd: &Command,
     f: &SystemFile,
     t: &T,
@@ -90,11 +90,13 @@ pub(in crate::cli) fn run(
             (rep.with(key, factors(&cp).map_err(e)?), c.verified)
         }
         Command::Tf { .. } => {
-            // a model file's standard form comes from the index-1 elimination, which keeps G
-            if t.descriptor.is_some() && !f.extra.contains_key("descriptor_states") {
-                return Ok(None);
-            }
-            tf(s).map_err(e)?
+            // with E: G = C (sE - A)^-1 B + D of the pencil, and the standard form (the
+            // system the other commands see) checked against it by its Markov parameters
+            let g = match &t.descriptor {
+                Some(d) => realization::descriptor_transfer_matrix(d).map_err(e)?,
+                None => s.transfer_matrix().map_err(e)?,
+            };
+            tf(s, &g).map_err(e)?
         }
         Command::Standard { .. } => match &t.descriptor {
             Some(d) => {
@@ -104,7 +106,7 @@ pub(in crate::cli) fn run(
             None => (sections::already_standard(s), true),
         },
         Command::Analyze { .. } => {
-            let out = crate::cli::analyze::analyze(f, &t)?;
+            let out = crate::api::analyze::analyze(f, &t)?;
             let mut rep = depends(out.report, "minimum_phase");
             let mut ok = out.verified;
             // the eigenvalue structure over Q(p) (its conditions join this computation's)
@@ -158,7 +160,7 @@ pub(in crate::cli) fn run(
 }
 
 /// `r` with `key` set to `v` (replaced in place when present, else appended).
-pub(in crate::cli) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
+pub(in crate::api) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
     match r.items.iter_mut().find(|(k, _)| k == key) {
         Some(slot) => slot.1 = v,
         None => r.items.push((key.to_string(), v)),
@@ -205,7 +207,7 @@ fn depends(r: Report, key: &str) -> Report {
 
 /// The monic irreducible factors over $\mathbb{Q}(p)$ as `{factor, multiplicity}` items
 /// (with `root` for linear factors).
-pub(in crate::cli) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
+pub(in crate::api) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
     let k = p.field().clone();
     let fs = factor_over_qp(p)?;
     Ok(Value::List(
@@ -225,9 +227,12 @@ pub(in crate::cli) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
 
 /// `tf` over $\mathbb{Q}(p)$: the transfer matrix in lowest terms, its McMillan degree (the
 /// Kalman minimal order) and the poles' factors; verified: the expansion of every entry at
-/// $s = \infty$ equals $D, CB, CAB, \dots$ ($2n$ terms).
-fn tf(s: &StateSpace<RatFuncField>) -> crate::Result<(Report, bool)> {
-    let g = s.transfer_matrix()?;
+/// $s = \infty$ equals $D, CB, CAB, \dots$ ($2n$ terms) of `s`, the system whose transfer
+/// matrix `g` is (with `E`: `g` from the pencil, `s` the standard form).
+fn tf(
+    s: &StateSpace<RatFuncField>,
+    g: &crate::system::transfer::TransferMatrix<RatFuncField>,
+) -> crate::Result<(Report, bool)> {
     let min = realization::minimal(s, MinrealMethod::Kalman)?;
     let poles = min.system.a.charpoly()?;
     let ok = g.matches_markov(s);

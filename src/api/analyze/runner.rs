@@ -5,7 +5,7 @@
 //! command that insists, or `error` with the reason), never dropped, and the report goes on.
 //! [`Sections::push`] adds a finished section and streams it (text mode prints it at once).
 
-use crate::cli::budget::{Budget, Event, Events, Ran};
+use crate::api::budget::{Budget, Event, Events, Ran};
 use crate::report::{Report, Value};
 
 /// How a section is computed on its own, to insist when `analyze` skipped it.

@@ -6,6 +6,8 @@ use super::common::with_path;
 use super::{Command, Failure, Outcome};
 use crate::field::{Field, Q, QuadraticField};
 use crate::io::load_descriptor::{DescriptorVisitor, LoadedDescriptor, load_descriptor_path};
+use crate::io::{SystemFile, TypedSystem};
+use crate::matrix::Matrix;
 use crate::pencil::{kronecker_structure, pencil_structure};
 use crate::realization::{
     controllability_structure, descriptor_controllability, descriptor_transfer_matrix,
@@ -17,22 +19,43 @@ use crate::system::{Descriptor, StateSpace};
 use std::any::Any;
 use std::path::Path;
 
-/// The file of a command that goes through this module (`zeros` only for files with `E`
-/// or `G`, `minreal` only with `--descriptor`).
-pub fn handles(cmd: &Command) -> Option<&Path> {
+/// Whether a command goes through this module (`zeros` only for systems with `E` or `G`,
+/// `minreal` only with `--descriptor`); `file`: the system as read, `None` when the
+/// ordinary reader refused the file (then the top-level keys are looked at).
+pub fn handles(cmd: &Command, file: Option<&SystemFile>) -> bool {
     match cmd {
-        Command::Pencil { file }
-        | Command::Ctrb { file }
-        | Command::Obsv { file }
-        | Command::Tf { file } => Some(file),
-        Command::Minreal {
-            file, descriptor, ..
-        } => descriptor.then_some(file.as_path()),
-        Command::Zeros { file } => {
-            (file_has_key(file, "E") || file_has_key(file, "G")).then_some(file.as_path())
-        }
-        _ => None,
+        Command::Pencil { .. }
+        | Command::Ctrb { .. }
+        | Command::Obsv { .. }
+        | Command::Tf { .. } => true,
+        Command::Minreal { descriptor, .. } => *descriptor,
+        Command::Zeros { file: path } => match file {
+            Some(f) => f.e.is_some() || f.extra.contains_key("G"),
+            None => file_has_key(path, "E") || file_has_key(path, "G"),
+        },
+        _ => false,
     }
+}
+
+/// Runs a command of [`handles`] on a system already read (with `--at` values): the
+/// descriptor `E x' = A x + B u` as given, or `E = I`.
+pub fn execute_typed<K: Field + 'static>(
+    cmd: &Command,
+    path: &Path,
+    f: &SystemFile,
+    t: &TypedSystem<K>,
+) -> Result<Outcome, Failure> {
+    let (desc, has_e) = match &t.descriptor {
+        Some(d) => (d.clone(), true),
+        None => {
+            let s = &t.ss;
+            let i = Matrix::identity(s.a.field().clone(), s.nstates());
+            let d = Descriptor::new(i, s.a.clone(), s.b.clone(), s.c.clone(), s.d.clone())
+                .map_err(|err| with_path(path, err))?;
+            (d, false)
+        }
+    };
+    run_on(cmd, path, (has_e, &f.signals), None, &desc)
 }
 
 /// The rows and columns of a transfer matrix by name (`outputs`, `inputs`) when the file
@@ -80,6 +103,11 @@ pub fn execute(cmd: &Command, path: &Path) -> Result<Outcome, Failure> {
     l.run(Run { cmd, path })
 }
 
+type GivenTransfer = (
+    crate::system::transfer::TransferMatrix<Q>,
+    crate::realization::TransferRealization<Q>,
+);
+
 struct Run<'a> {
     cmd: &'a Command,
     path: &'a Path,
@@ -88,8 +116,28 @@ struct Run<'a> {
 impl DescriptorVisitor for Run<'_> {
     type Output = Result<Outcome, Failure>;
     fn visit<K: Field + 'static>(self, l: &LoadedDescriptor, s: &Descriptor<K>) -> Self::Output {
-        let e = |err| with_path(self.path, err);
-        match self.cmd {
+        run_on(
+            self.cmd,
+            self.path,
+            (l.has_e, &l.signals),
+            l.transfer.as_ref(),
+            s,
+        )
+    }
+}
+
+/// One command on a descriptor system; `has_e`: the file gave `E`; `signals`: the file's
+/// names of inputs and outputs; `transfer`: the file's `G` and its realization.
+fn run_on<K: Field + 'static>(
+    cmd: &Command,
+    path: &Path,
+    (has_e, signals): (bool, &crate::io::SignalNames),
+    transfer: Option<&GivenTransfer>,
+    s: &Descriptor<K>,
+) -> Result<Outcome, Failure> {
+    {
+        let e = |err| with_path(path, err);
+        match cmd {
             Command::Pencil { .. } => {
                 if let Some(sq) = (s as &dyn Any).downcast_ref::<Descriptor<Q>>() {
                     let ps = pencil_structure(&sq.a, &sq.e).map_err(e)?;
@@ -100,8 +148,8 @@ impl DescriptorVisitor for Run<'_> {
                 }
             }
             Command::Ctrb { .. } | Command::Obsv { .. } => {
-                let dual = matches!(self.cmd, Command::Obsv { .. });
-                if l.has_e {
+                let dual = matches!(cmd, Command::Obsv { .. });
+                if has_e {
                     let d = descriptor_controllability(s, dual).map_err(e)?;
                     let r = sections::descriptor_ctrb_report(&d, dual).map_err(e)?;
                     Ok(Outcome::new(r, d.verified()))
@@ -137,9 +185,9 @@ impl DescriptorVisitor for Run<'_> {
                 if let Some(sk) = (s as &dyn Any).downcast_ref::<Descriptor<QuadraticField>>() {
                     // exact over Q(i) / Q(sqrt d); a state-space input is also checked by
                     // its Markov parameters
-                    let (g, r, ss) = if l.has_e {
+                    let (g, r, ss) = if has_e {
                         let g = descriptor_transfer_matrix(sk).map_err(e)?;
-                        let r = realize_transfer(&g).map_err(e)?;
+                        let r = realize_g(sk, &g).map_err(e)?;
                         (g, sections::TfRealization::from_transfer(&r), None)
                     } else {
                         let ss =
@@ -163,14 +211,14 @@ impl DescriptorVisitor for Run<'_> {
                         code: 2,
                         message: format!(
                             "{}: tf: only rational and quadratic-field systems are supported",
-                            self.path.display()
+                            path.display()
                         ),
                     });
                 };
                 let mut markov = None;
-                let (g, r) = match &l.transfer {
+                let (g, r) = match transfer {
                     Some((g, r)) => (g.clone(), r.clone()),
-                    None if !l.has_e => {
+                    None if !has_e => {
                         // a state-space input: its own minimal realization, and G checked
                         // against its Markov parameters (as over Q(i) / Q(sqrt d))
                         let ss =
@@ -183,7 +231,7 @@ impl DescriptorVisitor for Run<'_> {
                     }
                     None => {
                         let g = descriptor_transfer_matrix(sq).map_err(e)?;
-                        let r = realize_transfer(&g).map_err(e)?;
+                        let r = realize_g(sq, &g).map_err(e)?;
                         (g, r)
                     }
                 };
@@ -193,7 +241,7 @@ impl DescriptorVisitor for Run<'_> {
                 }
                 channel_names(
                     &mut rep,
-                    &l.signals,
+                    signals,
                     g.entries.len(),
                     g.entries.first().map_or(0, Vec::len),
                 );
@@ -206,4 +254,21 @@ impl DescriptorVisitor for Run<'_> {
             }),
         }
     }
+}
+
+/// The minimal realization of `g`, the transfer matrix of the descriptor system `s`; without
+/// inputs or without outputs `g` is the empty `p x m` matrix (no entry to realize), realized
+/// by the order-0 system `D` (`p x m`).
+fn realize_g<K: Field>(
+    s: &Descriptor<K>,
+    g: &crate::system::transfer::TransferMatrix<K>,
+) -> crate::Result<crate::realization::TransferRealization<K>> {
+    let (p, m) = (s.c.nrows(), s.b.ncols());
+    if p > 0 && m > 0 {
+        return realize_transfer(g);
+    }
+    let k = s.a.field().clone();
+    let zero = |r, c| Matrix::zeros(k.clone(), r, c);
+    let s0 = StateSpace::new(zero(0, 0), zero(0, m), zero(p, 0), s.d.clone())?;
+    realize_state_space(&s0, g)
 }

@@ -1,19 +1,16 @@
 //! One function per command: load, compute, report.
 //!
 //! Commands on a system file are written once, generic over the file's field `K`, inside
-//! [`FileCommand::visit`]; the file's field is decided at one point,
-//! [`crate::io::LoadedSystem::run`].
+//! [`FileCommand::visit`] (over $\mathbb{Q}(p)$: [`super::symbolic::execute`]); the file's
+//! field is decided at one point, [`System::run`].
 
 use super::a_only::a_command;
 use super::common::with_path;
-use super::symbolic::Handled;
+use super::system::{System, SystemVisitor};
 use super::{Command, Failure, MethodArg, Outcome};
 use crate::field::{Field, Q};
 use crate::io::symbolic::SymbolicOptions;
-use crate::io::{
-    LoadedSystem, SystemFile, SystemFormat, SystemVisitor, TypedSystem, as_rational,
-    load_system_path, load_system_str,
-};
+use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::realization::{self, MinrealMethod};
 use crate::report::{Report, Value, sections};
 use std::path::Path;
@@ -55,6 +52,10 @@ pub fn execute_with(
 }
 
 /// Dispatches a command run by the command line (budgets of `analyze` from `ctx`).
+///
+/// The file is read once ([`System::open`], with `--symbolic` / `--at`) and the command
+/// runs on the system over its field ([`System::run`]); over $\mathbb{Q}(p)$ the command's
+/// symbolic form ([`super::symbolic`]).
 pub fn execute_ctx(
     cmd: &Command,
     symbolic: Option<&str>,
@@ -63,42 +64,75 @@ pub fn execute_ctx(
 ) -> Result<Outcome, Failure> {
     let opts =
         SymbolicOptions::from_args(symbolic, at).map_err(|message| Failure { code: 2, message })?;
-    if let Command::Bifurcations { file, of, depth } = cmd {
-        return super::bifurcations::run(file, *of, *depth, &opts);
+    if let Command::Poly { op } = cmd {
+        return poly(op).map(Outcome::plain);
     }
+    // commands on several files (or a file with only D): their own readers
     if let Command::Interconnect(c) = cmd {
         return super::interconnect::run(c, &opts);
     }
     if let Command::Dcgain { file } = cmd {
         return super::dcgain::run(file, &opts);
     }
-    match super::symbolic::execute(cmd, &opts)? {
-        Some(Handled::Done(out)) => return Ok(out),
-        Some(Handled::Valued(l, path)) => {
-            if let Command::Analyze {
-                section_seconds, ..
-            } = cmd
-            {
-                return l.run(Analyze(analyze_options(*section_seconds, ctx)));
+    let sys = match file_of(cmd) {
+        None => System::builtin(&opts)?,
+        Some(path) => match System::open(path, &opts) {
+            Ok(s) => s,
+            // files that are not systems in standard form: a pencil, `G`, an improper
+            // descriptor (the descriptor reader), a matrix A alone (`jordan`, `linalg`)
+            Err(err) if opts.is_empty() => {
+                if super::pencil_cmds::handles(cmd, None) {
+                    return super::pencil_cmds::execute(cmd, path);
+                }
+                if matches!(cmd, Command::Jordan { .. } | Command::Linalg { .. }) {
+                    return super::a_only::fallback(cmd, path, err);
+                }
+                // a parameter study of a file without that parameter: that is the answer; a
+                // file the study reads (an improper pencil) is studied
+                if let Command::Sweep { param, .. } | Command::Critical { param, .. } = cmd {
+                    crate::study::ParamFamily::from_file(path, param)?;
+                    if super::common::check_study_file(path).is_ok() {
+                        return study(cmd, path, &opts.at, ctx);
+                    }
+                }
+                return Err(err.into());
             }
-            return l.run(FileCommand { cmd, path: &path });
-        }
-        None => {}
+            Err(err) => return Err(err.into()),
+        },
+    };
+    sys.run(FileCommand {
+        cmd,
+        path: sys.path(),
+        opts: &opts,
+        from_file: sys.from_file(),
+        ctx,
+    })
+}
+
+/// Runs `cmd` on a system already read (the command's file argument is not read again;
+/// `--symbolic` / `--at` were applied when `sys` was read). The Python package's entry.
+pub fn execute_on(cmd: &Command, sys: &System, ctx: &RunContext) -> Result<Outcome, Failure> {
+    if let Command::Poly { op } = cmd {
+        return poly(op).map(Outcome::plain);
     }
-    if let Some(path) = super::pencil_cmds::handles(cmd) {
-        return super::pencil_cmds::execute(cmd, path);
-    }
+    sys.run(FileCommand {
+        cmd,
+        path: sys.path(),
+        opts: &SymbolicOptions::default(),
+        from_file: sys.from_file(),
+        ctx,
+    })
+}
+
+/// `sweep` / `critical` of the file at `path` (`at`: values of other parameters).
+fn study(
+    cmd: &Command,
+    path: &Path,
+    at: &[(String, String)],
+    ctx: &RunContext,
+) -> Result<Outcome, Failure> {
     match cmd {
-        Command::Pencil { file }
-        | Command::Ctrb { file }
-        | Command::Obsv { file }
-        | Command::Tf { file } => super::pencil_cmds::execute(cmd, file),
-        Command::Bifurcations { .. } | Command::Interconnect(_) | Command::Dcgain { .. } => {
-            unreachable!("dispatched above")
-        }
-        Command::Poly { op } => poly(op).map(Outcome::plain),
         Command::Sweep {
-            file,
             param,
             from,
             to,
@@ -106,9 +140,10 @@ pub fn execute_ctx(
             svg,
             locus_svg,
             csv,
+            ..
         } => super::sweep::run(
             &super::sweep::SweepArgs {
-                file,
+                file: path,
                 param,
                 from: *from,
                 to: *to,
@@ -116,50 +151,70 @@ pub fn execute_ctx(
                 svg: svg.as_deref(),
                 locus_svg: locus_svg.as_deref(),
                 csv: csv.as_deref(),
+                at,
             },
             ctx.stdout,
         ),
         Command::Critical {
-            file,
             param,
             from,
             to,
             digits,
+            ..
         } => super::critical::run(&super::critical::CriticalArgs {
-            file,
+            file: path,
             param,
             from,
             to,
             digits: *digits,
+            at,
         }),
-        Command::Analyze {
-            file,
-            section_seconds,
-        } => {
-            let l = load_or_builtin(file.as_deref())?;
-            l.run(Analyze(analyze_options(*section_seconds, ctx)))
+        _ => Err(Failure {
+            code: 1,
+            message: "internal: not a parameter study".into(),
+        }),
+    }
+}
+
+impl Default for RunContext {
+    /// Now, no bound (10^7 s), nothing streams, compact text.
+    fn default() -> Self {
+        RunContext {
+            start: std::time::Instant::now(),
+            max_seconds: 1e7,
+            events: None,
+            full: false,
+            stdout: None,
         }
-        // commands that need only A also take files that are not systems in standard form
-        Command::Jordan { file, .. } | Command::Linalg { file, .. } => {
-            match load_system_path(file) {
-                Ok(l) => l.run(FileCommand { cmd, path: file }),
-                Err(err) => super::a_only::fallback(cmd, file, err),
-            }
-        }
-        Command::Minreal { file, .. }
+    }
+}
+
+/// The system file a command reads (`None`: `analyze` on the built-in example).
+pub(super) fn file_of(cmd: &Command) -> Option<&Path> {
+    match cmd {
+        Command::Jordan { file, .. }
+        | Command::Minreal { file, .. }
         | Command::Standard { file }
         | Command::Scb { file }
         | Command::Mnf { file }
         | Command::Zeros { file }
+        | Command::Pencil { file }
+        | Command::Ctrb { file }
+        | Command::Obsv { file }
+        | Command::Tf { file }
         | Command::Modes { file }
         | Command::Freqresp { file, .. }
         | Command::Pzmap { file, .. }
         | Command::Step { file, .. }
         | Command::Impulse { file, .. }
-        | Command::Check { file } => {
-            let l = load_system_path(file)?;
-            l.run(FileCommand { cmd, path: file })
-        }
+        | Command::Check { file }
+        | Command::Sweep { file, .. }
+        | Command::Critical { file, .. }
+        | Command::Bifurcations { file, .. }
+        | Command::Linalg { file, .. } => Some(file),
+        Command::Dcgain { file } => Some(file),
+        Command::Analyze { file, .. } => file.as_deref(),
+        Command::Poly { .. } | Command::Interconnect(_) => None,
     }
 }
 
@@ -167,6 +222,10 @@ pub fn execute_ctx(
 struct FileCommand<'a> {
     cmd: &'a Command,
     path: &'a Path,
+    opts: &'a SymbolicOptions,
+    /// The system was read from `path` (the descriptor reader may read it again).
+    from_file: bool,
+    ctx: &'a RunContext,
 }
 
 impl SystemVisitor for FileCommand<'_> {
@@ -175,7 +234,28 @@ impl SystemVisitor for FileCommand<'_> {
         let path = self.path;
         let e = |err| with_path(path, err);
         let s = &t.ss;
+        if super::pencil_cmds::handles(self.cmd, Some(f)) {
+            return if self.opts.is_empty() && self.from_file {
+                super::pencil_cmds::execute(self.cmd, path)
+            } else {
+                super::pencil_cmds::execute_typed(self.cmd, path, f, t)
+            };
+        }
         match self.cmd {
+            Command::Bifurcations { .. } => Err(super::bifurcations::needs_symbols(path)),
+            Command::Analyze {
+                section_seconds, ..
+            } => super::analyze::analyze_with(f, t, &analyze_options(*section_seconds, self.ctx)),
+            Command::Sweep { .. } | Command::Critical { .. } if !self.from_file => Err(Failure {
+                code: 2,
+                message: format!(
+                    "{}: a parameter study reads its system file (give the file's path)",
+                    path.display()
+                ),
+            }),
+            Command::Sweep { .. } | Command::Critical { .. } => {
+                study(self.cmd, path, &self.opts.at, self.ctx)
+            }
             Command::Jordan { .. } if t.descriptor.is_some() => {
                 let d = t.descriptor.as_ref().expect("checked");
                 super::a_only::descriptor_jordan(self.cmd, d, path)
@@ -268,18 +348,54 @@ impl SystemVisitor for FileCommand<'_> {
             Command::Minreal { method, hankel, .. } => minreal(f, t, *method, *hankel, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
             Command::Poly { .. }
-            | Command::Analyze { .. }
-            | Command::Sweep { .. }
-            | Command::Critical { .. }
             | Command::Pencil { .. }
             | Command::Ctrb { .. }
             | Command::Obsv { .. }
             | Command::Tf { .. }
-            | Command::Bifurcations { .. }
             | Command::Interconnect(_)
-            | Command::Dcgain { .. } => {
-                unreachable!("dispatched in execute")
+            | Command::Dcgain { .. } => Err(Failure {
+                code: 1,
+                message: "internal: command dispatched elsewhere".into(),
+            }),
+        }
+    }
+    fn visit_symbolic(
+        self,
+        f: &SystemFile,
+        t: &TypedSystem<crate::ratfunc::RatFuncField>,
+    ) -> Self::Output {
+        match self.cmd {
+            Command::Bifurcations { of, depth, .. } => {
+                super::bifurcations::run(self.path, t, *of, *depth)
             }
+            // the swept parameter may be a symbol (the study gives it its values); every
+            // other symbol needs a number: a plot and a crossing are numbers
+            Command::Sweep { param, .. } | Command::Critical { param, .. } => {
+                let k = t.a_raw.field();
+                let other: Vec<&str> = k
+                    .vars()
+                    .iter()
+                    .filter(|v| *v != param)
+                    .map(String::as_str)
+                    .collect();
+                if other.is_empty() {
+                    return self.visit(f, t);
+                }
+                let name = if matches!(self.cmd, Command::Sweep { .. }) {
+                    "sweep"
+                } else {
+                    "critical"
+                };
+                Err(Failure {
+                    code: 2,
+                    message: format!(
+                        "{}: `{name}` along {param} needs numbers for every other parameter ({} without one); give them values with --at or in the file",
+                        self.path.display(),
+                        other.join(", ")
+                    ),
+                })
+            }
+            _ => super::symbolic::execute(self.cmd, f, t, self.path),
         }
     }
 }
@@ -428,32 +544,10 @@ fn parse_multi(texts: &[&String]) -> Result<(Vec<String>, Vec<crate::mpoly::QPol
 /// The built-in example of `analyze` without a file.
 pub const BUILTIN_EXAMPLE: &str = include_str!("../../data/sliding-masses.json");
 
-fn load_or_builtin(file: Option<&Path>) -> Result<LoadedSystem, Failure> {
-    Ok(match file {
-        Some(f) => load_system_path(f)?,
-        None => load_system_str(
-            BUILTIN_EXAMPLE,
-            SystemFormat::Json,
-            "built-in:sliding-masses.json",
-        )?,
-    })
-}
-
-/// `analyze`: every section that applies; a section that fails says why instead of
-/// disappearing.
-struct Analyze(super::analyze::AnalyzeOptions);
-
 fn analyze_options(section_seconds: f64, ctx: &RunContext) -> super::analyze::AnalyzeOptions {
     super::analyze::AnalyzeOptions {
         budget: super::budget::Budget::new(section_seconds, ctx.start, ctx.max_seconds),
         events: ctx.events.clone(),
         full: ctx.full,
-    }
-}
-
-impl SystemVisitor for Analyze {
-    type Output = Result<Outcome, Failure>;
-    fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
-        super::analyze::analyze_with(f, t, &self.0)
     }
 }

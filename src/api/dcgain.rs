@@ -1,18 +1,19 @@
 //! `dcgain FILE`: thin wrapper over [`crate::system::dcgain::dc_gain`] and its report.
 
+use super::SystemVisitor;
 use super::common::with_path;
 use super::{Failure, Outcome};
 use crate::field::Field;
 use crate::io::combine::load_system_or_gain;
 use crate::io::symbolic::SymbolicOptions;
-use crate::io::{SystemFile, SystemVisitor, TypedSystem};
+use crate::io::{SystemFile, TypedSystem};
 use crate::ratfunc::RatFuncField;
 use crate::system::dcgain::dc_gain;
 use std::path::Path;
 
 /// Runs `dcgain` on a system file (or a file with only `D`).
 pub fn run(path: &Path, sym: &SymbolicOptions) -> Result<Outcome, Failure> {
-    load_system_or_gain(path, sym)?.run(Dc { path })
+    super::System::from(load_system_or_gain(path, sym)?).run(Dc { path })
 }
 
 struct Dc<'a> {

@@ -29,7 +29,7 @@ pub struct InterconnectOpts {
 }
 
 /// The interconnection subcommands (python-control's conventions).
-#[derive(Subcommand, Debug)]
+#[derive(Subcommand, Debug, Clone)]
 pub enum InterconnectCmd {
     /// Series connection G then H (python-control `series(G, H)` = H * G): transfer
     /// matrix H G, states [x_G; x_H].

@@ -14,6 +14,8 @@ use std::path::Path;
 pub struct SweepArgs<'a> {
     pub file: &'a Path,
     pub param: &'a str,
+    /// `--at`: values of other parameters (overriding the file's).
+    pub at: &'a [(String, String)],
     pub from: f64,
     pub to: f64,
     pub points: usize,
@@ -73,8 +75,9 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
             ),
         });
     }
-    let fam = ParamFamily::from_file(a.file, a.param)?;
-    super::common::check_study_file(a.file)?;
+    // the file was read as a system by the caller ([`crate::api::System::open`]; the
+    // parameter swept may be `null`: a symbol)
+    let fam = ParamFamily::from_file_at(a.file, a.param, a.at)?;
     let values = sweep_values(a.from, a.to, a.points);
     let title = format!("sweep of {} over [{}, {}]", a.param, a.from, a.to);
     let mut sink = match stream {

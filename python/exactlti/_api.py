@@ -1,0 +1,155 @@
+"""Every operation of the command line as a method of :class:`StateSpace`, through the
+library's front door (``exactlti::api``): the same code, the same answers, over every
+field the command line accepts (Q, Q(i), Q(sqrt d), Q(p1, ..., pk)).
+
+Each method returns a :class:`Report`: the command line's JSON report as Python values
+(a ``dict``; exact numbers as exact strings, every ``<key>_approx`` as floats), with
+``verified`` (its exact checks passed), ``field`` and ``conditions`` over Q(p).
+"""
+
+import json
+
+from . import _core
+
+
+class Report(dict):
+    """The result of one operation: the report's keys and values (a ``dict``).
+
+    ``verified``: every exact check of the operation passed; ``agree``: the float path
+    agrees with the exact one (``check``, ERA). ``title`` is the report's title.
+    """
+
+    def __init__(self, data, verified, agree=True, op=None):
+        super().__init__(data)
+        self.verified = bool(verified)
+        self.agree = bool(agree)
+        self.op = op
+
+    @property
+    def field(self):
+        """The field of the computation (``QQ(k, m)``) over symbolic parameters, else None."""
+        return self.get("field")
+
+    @property
+    def conditions(self):
+        """Polynomials the symbolic result assumes nonzero (empty when numeric)."""
+        return list(self.get("conditions", []))
+
+    def to_sympy(self, key):
+        """The exact matrix (list of rows) or number under ``key`` as SymPy (the exact text
+        of the report is valid input by design: ``sqrt(2)``, ``i``, ``-3/4``)."""
+        import sympy
+
+        loc = {"i": sympy.I, "sqrt": sympy.sqrt}
+
+        def one(x):
+            return sympy.sympify(str(x).replace("^", "**"), locals=loc)
+
+        v = self[key]
+        if isinstance(v, list) and v and isinstance(v[0], list):
+            return sympy.Matrix([[one(x) for x in r] for r in v])
+        if isinstance(v, list):
+            return [one(x) for x in v]
+        return one(v)
+
+    def to_numpy(self, key):
+        """The approximation of the matrix or list under ``key`` (``<key>_approx``) as a
+        numpy array."""
+        import numpy as np
+
+        return np.asarray(self.get(key + "_approx", self[key]), dtype=float)
+
+    def __repr__(self):
+        return "Report(%s, verified=%s, keys=%s)" % (
+            self.op, self.verified, ", ".join(list(self.keys())[:8])
+        )
+
+
+def _arg(name, value):
+    if value is None or value is False:
+        return []
+    if value is True:
+        return ["--" + name]
+    return ["--" + name, str(value)]
+
+
+def run(system, op, *args, max_seconds=None):
+    """Runs the command line's operation ``op`` (``"jordan"``, ``"step"``, ...) with its
+    options ``args`` (as the command line spells them) on ``system``."""
+    args = [str(a) for a in args]
+    source, _ = system._core.source
+    if op == "linalg":
+        argv = [op, args[0], source] + args[1:]
+    else:
+        argv = [op, source] + args
+    text, verified, agree = system._core.command(argv, max_seconds)
+    return Report(json.loads(text), verified, agree, op=" ".join([op] + args))
+
+
+class Operations:
+    """Mixin of :class:`StateSpace`: one method per command of the command line."""
+
+    def run(self, op, *args, max_seconds=None):
+        """Any operation of the command line by name (``G.run("minreal", "--method",
+        "jordan")``): a :class:`Report`."""
+        return run(self, op, *args, max_seconds=max_seconds)
+
+    def step(self, to=None, points=None, float=False, max_seconds=None):
+        """Step response of every channel (exact closed form from the Jordan form over Q,
+        float matrix exponential otherwise) with the exact DC gain."""
+        a = _arg("to", to) + _arg("points", points) + _arg("float", float)
+        return run(self, "step", *a, max_seconds=max_seconds)
+
+    def impulse(self, to=None, points=None, float=False, max_seconds=None):
+        """Impulse response ``C e^(At) B`` of every channel (exact ``C B`` at t = 0)."""
+        a = _arg("to", to) + _arg("points", points) + _arg("float", float)
+        return run(self, "impulse", *a, max_seconds=max_seconds)
+
+    def pzmap(self, max_seconds=None):
+        """Poles (eigenvalues of ``A``) and invariant zeros."""
+        return run(self, "pzmap", max_seconds=max_seconds)
+
+    def pencil(self, max_seconds=None):
+        """Kronecker structure of the pencil ``A - sE``."""
+        return run(self, "pencil", max_seconds=max_seconds)
+
+    def standard(self, max_seconds=None):
+        """A descriptor system ``E x' = A x + B u`` in standard form (verified)."""
+        return run(self, "standard", max_seconds=max_seconds)
+
+    def analyze(self, section_seconds=None, max_seconds=None):
+        """Everything that applies, as one report."""
+        return run(self, "analyze", *_arg("section-seconds", section_seconds),
+                   max_seconds=max_seconds)
+
+    def bifurcations(self, of="scb", depth=2, max_seconds=None):
+        """Structural bifurcations of a symbolic system: the generic result, then the
+        result where each condition vanishes."""
+        return run(self, "bifurcations", "--of", of, "--depth", depth, max_seconds=max_seconds)
+
+    def era(self, hankel=None, max_seconds=None):
+        """The float eigensystem realization, compared with the exact McMillan degree."""
+        return run(self, "minreal", "--method", "era", *_arg("hankel", hankel),
+                   max_seconds=max_seconds)
+
+    def ctrb_structure(self, max_seconds=None):
+        """Controllability indices and staircase (with ``E``: finite and infinite)."""
+        return run(self, "ctrb", max_seconds=max_seconds)
+
+    def obsv_structure(self, max_seconds=None):
+        """Observability indices and staircase (with ``E``: finite and infinite)."""
+        return run(self, "obsv", max_seconds=max_seconds)
+
+    def pzmap_svg(self, path, max_seconds=None):
+        """Writes the pole-zero map as SVG to ``path``; the report as :meth:`pzmap`."""
+        return run(self, "pzmap", "--svg", path, max_seconds=max_seconds)
+
+    def sweep(self, param, lo, hi, points=200, max_seconds=None):
+        """Eigenvalues along the parameter ``param`` (float), a system read from a file."""
+        return run(self, "sweep", "--param", param, "--from", lo, "--to", hi,
+                   "--points", points, max_seconds=max_seconds)
+
+    def critical(self, param, lo, hi, digits=20, max_seconds=None):
+        """Exact critical values of ``param`` on ``[lo, hi]`` (a system read from a file)."""
+        return run(self, "critical", "--param", param, "--from", lo, "--to", hi,
+                   "--digits", digits, max_seconds=max_seconds)

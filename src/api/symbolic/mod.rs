@@ -1,0 +1,146 @@
+//! Commands on files with symbolic parameters (over $\mathbb{Q}(p_1, \dots, p_k)$) and with
+//! `--symbolic` / `--at` on the command line.
+//!
+//! What works over $\mathbb{Q}(p)$ (every result with `field` and `conditions`, the
+//! irreducible polynomials it assumes nonzero, and `verified` = its identity holds as
+//! rational functions): `linalg rank|det|charpoly|minpoly|rref|inverse|nullspace` on `A`,
+//! `jordan` and `mnf` ([`super::symbolic_jordan`]), `scb`, `minreal` (Kalman, Rosenbrock,
+//! Ho-Kalman), `tf` (with `E`: of the pencil), `zeros` (with the zero polynomial's factors
+//! over $\mathbb{Q}(p)$), `ctrb`, `obsv`, `standard`, `analyze`, `modes` (formulas,
+//! [`modes`]) ([`system`]); `pencil`, `minreal --descriptor` (generic); `bifurcations` in
+//! [`super::bifurcations`]; `sweep` / `critical` along the one symbol. Every other command
+//! refuses with one line and exit status 2 saying why (numbers asked of symbols: give them
+//! values with `--at`).
+//!
+//! [`execute`] is the $\mathbb{Q}(p)$ arm of [`crate::api::System::run`]; a file whose
+//! symbols all got values (`--at`) is typed over its numeric field and never comes here.
+
+mod modes;
+pub(super) mod system;
+
+use super::common::{exact_only, linalg_report, with_path};
+use super::{Command, Failure, MethodArg, Outcome};
+use crate::io::symbolic::refusal;
+use crate::io::{SystemFile, TypedSystem};
+use crate::ratfunc::RatFuncField;
+use crate::report::str_list;
+use std::path::Path;
+
+/// A descriptor-level command ([`super::pencil_cmds`]) over $\mathbb{Q}(p)$, on a fresh
+/// condition log, with `field` and `conditions`.
+fn descriptor(
+    cmd: &Command,
+    f: &SystemFile,
+    t: &TypedSystem<RatFuncField>,
+    path: &Path,
+) -> Result<Outcome, Failure> {
+    let k = t.a_raw.field().fresh();
+    let t = t.in_field(&k);
+    let out = super::pencil_cmds::execute_typed(cmd, path, f, &t)?;
+    let conds = k.conditions_strings().map_err(|e| with_path(path, e))?;
+    let r = exact_only(out.report)
+        .str("field", k.to_string())
+        .with("conditions", str_list(conds));
+    Ok(Outcome::new(r, out.verified))
+}
+
+/// The command's name as typed.
+fn name(cmd: &Command) -> &'static str {
+    match cmd {
+        Command::Jordan { .. } => "jordan",
+        Command::Minreal { .. } => "minreal",
+        Command::Standard { .. } => "standard",
+        Command::Scb { .. } => "scb",
+        Command::Mnf { .. } => "mnf",
+        Command::Zeros { .. } => "zeros",
+        Command::Pencil { .. } => "pencil",
+        Command::Ctrb { .. } => "ctrb",
+        Command::Obsv { .. } => "obsv",
+        Command::Tf { .. } => "tf",
+        Command::Modes { .. } => "modes",
+        Command::Freqresp { .. } => "freqresp",
+        Command::Pzmap { .. } => "pzmap",
+        Command::Step { .. } => "step",
+        Command::Impulse { .. } => "impulse",
+        Command::Check { .. } => "check",
+        Command::Poly { .. } => "poly",
+        Command::Linalg { .. } => "linalg",
+        Command::Analyze { .. } => "analyze",
+        Command::Sweep { .. } => "sweep",
+        Command::Critical { .. } => "critical",
+        Command::Bifurcations { .. } => "bifurcations",
+        Command::Interconnect(c) => c.name(),
+        Command::Dcgain { .. } => "dcgain",
+    }
+}
+
+/// Runs `cmd` on a system over $\mathbb{Q}(p)$ (the arm of [`crate::api::System::run`] for
+/// that field): its symbolic form, or one line saying why it needs numbers.
+pub(super) fn execute(
+    cmd: &Command,
+    f: &SystemFile,
+    t: &TypedSystem<RatFuncField>,
+    path: &Path,
+) -> Result<Outcome, Failure> {
+    let refuse = |what: String| Failure {
+        code: 2,
+        message: format!("{}: {what}", path.display()),
+    };
+    let k = t.a_raw.field();
+    match cmd {
+        Command::Linalg { op, .. } => {
+            let k = k.fresh();
+            let a = t.a_raw.map(&k, |x| x.clone());
+            let r = linalg_report(*op, &a, path)?;
+            let conds = k.conditions_strings().map_err(|e| with_path(path, e))?;
+            Ok(Outcome::plain(
+                exact_only(r)
+                    .str("field", k.to_string())
+                    .with("conditions", str_list(conds)),
+            ))
+        }
+        Command::Jordan { real: false, .. } => {
+            crate::api::symbolic_jordan::jordan_outcome(&t.a_raw).map_err(|e| with_path(path, e))
+        }
+        Command::Mnf { .. } => {
+            crate::api::symbolic_jordan::mnf_outcome(&t.ss.a, &t.ss.b, &t.ss.c, &t.ss.d)
+                .map_err(|e| with_path(path, e))
+        }
+        // numbers asked of symbols: not a question over Q(p)
+        Command::Freqresp { .. }
+        | Command::Pzmap { .. }
+        | Command::Step { .. }
+        | Command::Impulse { .. }
+        | Command::Check { .. }
+        | Command::Sweep { .. }
+        | Command::Critical { .. }
+        | Command::Minreal {
+            method: MethodArg::Era,
+            descriptor: false,
+            ..
+        } => Err(refuse(format!(
+            "`{}` needs numbers (a float computation), this system's entries lie in {k}; give every symbol a value with --at",
+            name(cmd)
+        ))),
+        Command::Jordan { real: true, .. }
+        | Command::Minreal {
+            method: MethodArg::Jordan,
+            descriptor: false,
+            ..
+        } => Err(refuse(format!(
+            "a real form needs numbers (whether an eigenvalue is real depends on the parameters), this system's entries lie in {k}; give every symbol a value with --at"
+        ))),
+        // the descriptor-level commands, generic over the field
+        Command::Pencil { .. }
+        | Command::Minreal {
+            descriptor: true, ..
+        } => descriptor(cmd, f, t, path),
+        Command::Ctrb { .. } | Command::Obsv { .. } if t.descriptor.is_some() => {
+            descriptor(cmd, f, t, path)
+        }
+        _ => match system::run(cmd, f, t, path)? {
+            Some(out) => Ok(out),
+            None => Err(refuse(refusal(&format!("`{}`", name(cmd)), k))),
+        },
+    }
+}

@@ -1,0 +1,173 @@
+//! [`System`]: a system over its exact field, loaded once, and the one `match` over the
+//! ground fields of the crate ([`System::run`]).
+//!
+//! The field of a system is decided when it is read, from what the file says, never by
+//! looking at its text: a file keeps parameters as symbols when it has a `symbols` key or a
+//! parameter whose value is `null`, or when [`Options`] name them (`--symbolic`); `--at`
+//! gives values first. Everything else is typed over $\mathbb{Q}$ or one quadratic field
+//! $\mathbb{Q}(\sqrt d)$ by the ordinary reader ([`crate::io::load_system_str`]).
+//!
+//! Code that works on a system is written once, generic over `K: Field`, as a
+//! [`SystemVisitor`]; a visitor that does something else over $\mathbb{Q}(p_1, \dots, p_k)$
+//! (a result with `field` and `conditions`) overrides [`SystemVisitor::visit_symbolic`].
+//!
+//! # Examples
+//! ```
+//! use exactlti::api::{Options, System, SystemVisitor};
+//! use exactlti::field::Field;
+//! use exactlti::io::{SystemFile, SystemFormat, TypedSystem};
+//!
+//! struct Order;
+//! impl SystemVisitor for Order {
+//!     type Output = (usize, String);
+//!     fn visit<K: Field + 'static>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+//!         (t.ss.nstates(), t.ss.a.field().to_string())
+//!     }
+//! }
+//! let text = r#"{"parameters": {"m": null}, "A": [[0, 1], ["-1/m", 0]], "B": [[0], [1]]}"#;
+//! let sys = System::from_text(text, SystemFormat::Json, "x.json", &Options::default()).unwrap();
+//! assert_eq!(sys.run(Order), (2, "QQ(m)".to_string()));
+//! let at = Options::from_args(None, Some("m=2")).unwrap();
+//! let sys = System::from_text(text, SystemFormat::Json, "x.json", &at).unwrap();
+//! assert_eq!(sys.run(Order), (2, "QQ".to_string()));
+//! ```
+
+use crate::field::Field;
+use crate::io::symbolic::{declares_symbols, load_symbolic_str};
+use crate::io::{
+    Ground, InputError, LoadedSystem, SystemFile, SystemFormat, TypedAny, TypedSystem,
+    load_system_str,
+};
+use crate::ratfunc::RatFuncField;
+use std::path::{Path, PathBuf};
+
+/// How a system is read: `--symbolic` (parameters kept as symbols) and `--at` (values given
+/// before the computation), typed once for both front ends.
+pub use crate::io::symbolic::SymbolicOptions as Options;
+
+/// A system over its exact ground field, with its file (name, parameters, signal names).
+#[derive(Clone, Debug)]
+pub struct System {
+    loaded: LoadedSystem,
+    path: PathBuf,
+    /// Read from the file at `path` (not from text or matrices).
+    from_file: bool,
+}
+
+/// Work on a system, written once for every ground field `K`.
+pub trait SystemVisitor: Sized {
+    type Output;
+    /// Runs on the system over its concrete field.
+    fn visit<K: Field + 'static>(self, file: &SystemFile, sys: &TypedSystem<K>) -> Self::Output;
+    /// Runs on a system over $\mathbb{Q}(p_1, \dots, p_k)$ (default: as [`Self::visit`]).
+    fn visit_symbolic(self, file: &SystemFile, sys: &TypedSystem<RatFuncField>) -> Self::Output {
+        self.visit(file, sys)
+    }
+}
+
+impl From<LoadedSystem> for System {
+    fn from(loaded: LoadedSystem) -> Self {
+        let path = PathBuf::from(&loaded.file.path);
+        System {
+            loaded,
+            path,
+            from_file: false,
+        }
+    }
+}
+
+impl System {
+    /// Reads the file at `path` once (JSON, or TOML by its extension) with `opts`.
+    ///
+    /// # Errors
+    /// An unreadable file and every error of [`System::from_text`], named by the path.
+    pub fn open(path: &Path, opts: &Options) -> Result<Self, InputError> {
+        let text = crate::io::read_text(path)?;
+        let format = SystemFormat::of(path, &text);
+        let mut s = Self::from_text(&text, format, &path.display().to_string(), opts)?;
+        s.path = path.to_path_buf();
+        s.from_file = true;
+        Ok(s)
+    }
+
+    /// Reads a system from text (`name` is used in messages).
+    ///
+    /// # Errors
+    /// Every error of the readers: a bad key, row, column or entry (named), an unknown name
+    /// in `--symbolic` / `--at`, a singular mass matrix, a descriptor that is not regular.
+    pub fn from_text(
+        text: &str,
+        format: SystemFormat,
+        name: &str,
+        opts: &Options,
+    ) -> Result<Self, InputError> {
+        let loaded = if opts.is_empty() && !declares_symbols(text, format, name) {
+            load_system_str(text, format, name)?
+        } else {
+            load_symbolic_str(text, format, name, opts)?
+        };
+        Ok(System {
+            loaded,
+            path: PathBuf::from(name),
+            from_file: false,
+        })
+    }
+
+    /// A system given by its matrices over their field (`name` is used in messages): no
+    /// parameters, no signal names.
+    pub fn from_typed(name: &str, system: TypedAny) -> Self {
+        let ground = match &system {
+            TypedAny::Rational(_) => Ground::Rational,
+            TypedAny::Quadratic(t) => Ground::Quadratic(t.ss.a.field().clone()),
+            TypedAny::RatFunc(t) => Ground::RatFunc(t.a_raw.field().clone()),
+        };
+        let file =
+            SystemFile::without_matrices(name, ground, Default::default(), Default::default());
+        System::from(LoadedSystem { file, system })
+    }
+
+    /// The built-in example of `analyze` without a file (sliding masses).
+    ///
+    /// # Errors
+    /// An unknown name in `opts`.
+    pub fn builtin(opts: &Options) -> Result<Self, InputError> {
+        Self::from_text(
+            super::BUILTIN_EXAMPLE,
+            SystemFormat::Json,
+            "built-in:sliding-masses.json",
+            opts,
+        )
+    }
+
+    /// Runs `v` over the system's concrete ground field: the one dispatch point from a
+    /// system's field to generic code.
+    pub fn run<V: SystemVisitor>(&self, v: V) -> V::Output {
+        let f = &self.loaded.file;
+        match &self.loaded.system {
+            TypedAny::Rational(t) => v.visit(f, t),
+            TypedAny::Quadratic(t) => v.visit(f, t),
+            TypedAny::RatFunc(t) => v.visit_symbolic(f, t),
+        }
+    }
+
+    /// The file as read (name, parameters, signal names, ground field).
+    pub fn file(&self) -> &SystemFile {
+        &self.loaded.file
+    }
+    /// The path (or name) the system was read from.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+    /// Whether the system was read from the file at [`System::path`].
+    pub fn from_file(&self) -> bool {
+        self.from_file
+    }
+    /// The ground field.
+    pub fn ground(&self) -> &Ground {
+        &self.loaded.file.ground
+    }
+    /// The loaded system (typed over its field).
+    pub fn loaded(&self) -> &LoadedSystem {
+        &self.loaded
+    }
+}
