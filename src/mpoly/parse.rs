@@ -98,8 +98,6 @@ pub fn identifiers(text: &str) -> Result<Vec<String>> {
     Ok(out)
 }
 
-pub(crate) use crate::field::scan::reserved_message;
-
 fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPoly, MPoly)> {
     if vars.len() > MAX_VARS {
         return Err(Error::Parse {
