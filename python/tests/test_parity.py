@@ -88,10 +88,11 @@ def _bin():
     env = os.environ.get("EXACTLTI_BIN")
     if env:
         return env
-    for p in ("target/release/exactlti", "target/debug/exactlti"):
-        q = os.path.join(ROOT, p)
-        if os.path.exists(q):
-            return q
+    # the newest build of this checkout (a stale release binary must not answer for the code)
+    built = [os.path.join(ROOT, p) for p in ("target/release/exactlti", "target/debug/exactlti")]
+    built = [q for q in built if os.path.exists(q)]
+    if built:
+        return max(built, key=os.path.getmtime)
     return shutil.which("exactlti")
 
 
