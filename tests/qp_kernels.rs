@@ -195,35 +195,6 @@ fn diag_system(n: usize) -> exactlti::system::StateSpace<RatFuncField> {
     exactlti::system::StateSpace::new(a, b, c, d).unwrap()
 }
 
-/// The n-mass chain between two walls (masses m, springs k, dampers c), force on mass 1,
-/// output the position of mass n.
-fn chain_system(n: usize) -> exactlti::system::StateSpace<RatFuncField> {
-    let k = RatFuncField::new(&["m", "k", "c"]).unwrap();
-    let e = |s: &str| k.parse(s).unwrap();
-    let a = Matrix::from_fn(k.clone(), 2 * n, 2 * n, |i, j| {
-        if i < n {
-            return if j == i + n { k.one() } else { k.zero() };
-        }
-        let (r, col) = (i - n, j % n);
-        let what = if j < n { "k" } else { "c" };
-        if r == col {
-            e(&format!("-2*{what}/m"))
-        } else if r.abs_diff(col) == 1 {
-            e(&format!("{what}/m"))
-        } else {
-            k.zero()
-        }
-    });
-    let b = Matrix::from_fn(k.clone(), 2 * n, 1, |i, _| {
-        if i == n { e("1/m") } else { k.zero() }
-    });
-    let c = Matrix::from_fn(k.clone(), 1, 2 * n, |_, j| {
-        if j == n - 1 { k.one() } else { k.zero() }
-    });
-    let d = Matrix::zeros(k, 1, 1);
-    exactlti::system::StateSpace::new(a, b, c, d).unwrap()
-}
-
 #[test]
 fn diag_p0_to_p9_transfer_function_and_minimal_order() {
     let s = diag_system(10);
@@ -242,7 +213,7 @@ fn diag_p0_to_p9_transfer_function_and_minimal_order() {
 fn mass_chains_transfer_functions_and_minimal_orders() {
     let mut rng = SplitMix64(3);
     for n in 2..=10 {
-        let s = chain_system(n);
+        let s = crate::common::systems::chain_qp(n);
         let g = s.transfer_matrix().unwrap();
         let (num, den) = (&g.entries[0][0].num, &g.entries[0][0].den);
         assert_eq!(den.degree(), Some(2 * n), "no cancellation, n = {n}");

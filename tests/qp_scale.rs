@@ -142,37 +142,10 @@ fn diag_jordan_is_diagonal_with_pairwise_conditions() {
     }
 }
 
-/// The n-mass chain (masses m, springs k, dampers c), force on mass 1, position of mass n.
-fn chain_system(n: usize) -> StateSpace<RatFuncField> {
-    let k = RatFuncField::new(&["m", "k", "c"]).unwrap();
-    let e = |s: &str| k.parse(s).unwrap();
-    let a = Matrix::from_fn(k.clone(), 2 * n, 2 * n, |i, j| {
-        if i < n {
-            return if j == i + n { k.one() } else { k.zero() };
-        }
-        let (r, col) = (i - n, j % n);
-        let what = if j < n { "k" } else { "c" };
-        if r == col {
-            e(&format!("-2*{what}/m"))
-        } else if r.abs_diff(col) == 1 {
-            e(&format!("{what}/m"))
-        } else {
-            k.zero()
-        }
-    });
-    let b = Matrix::from_fn(k.clone(), 2 * n, 1, |i, _| {
-        if i == n { e("1/m") } else { k.zero() }
-    });
-    let c = Matrix::from_fn(k.clone(), 1, 2 * n, |_, j| {
-        if j == n - 1 { k.one() } else { k.zero() }
-    });
-    StateSpace::new(a, b, c, Matrix::zeros(k, 1, 1)).unwrap()
-}
-
 #[test]
 fn chains_minreal_keeps_the_markov_parameters() {
     for n in 2..=5 {
-        let s = chain_system(n);
+        let s = crate::common::systems::chain_qp(n);
         let r = minimal(&s, MinrealMethod::Kalman).unwrap();
         assert_eq!(r.order, 2 * n, "n = {n}");
         assert!(r.verified);
@@ -185,7 +158,7 @@ fn chains_minreal_keeps_the_markov_parameters() {
 fn chains_transfer_function_commutes_with_substitution() {
     let mut rng = SplitMix64(2);
     for n in 2..=6 {
-        let s = chain_system(n);
+        let s = crate::common::systems::chain_qp(n);
         let k = s.a.field().clone();
         let g = s.transfer_matrix().unwrap();
         let (num, den) = (&g.entries[0][0].num, &g.entries[0][0].den);
@@ -219,7 +192,7 @@ fn chains_transfer_function_commutes_with_substitution() {
 #[test]
 fn chains_scb_identities() {
     for n in 2..=4 {
-        let s = chain_system(n);
+        let s = crate::common::systems::chain_qp(n);
         let g = s.transfer_matrix().unwrap();
         let nz = g.entries[0][0].num.degree().unwrap();
         // G = (c s + k)^(n-1) / (m^n det(...)): n - 1 zeros at -k/c

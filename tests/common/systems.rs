@@ -1,7 +1,7 @@
 //! Example systems from the papers, built exactly.
 #![allow(dead_code)]
 
-use exactlti::field::{Q, Rational};
+use exactlti::field::{Field, Q, Rational};
 use exactlti::matrix::Matrix;
 use exactlti::rng::SplitMix64;
 use exactlti::system::StateSpace;
@@ -191,4 +191,31 @@ pub fn planted_scaled(n: usize, seed: u64, hidden_scale: i64) -> Planted {
         t,
         tinv,
     }
+}
+
+/// The n-mass chain between two walls over Q(m, k, c) (masses m, springs k, dampers c), force on mass 1, position of mass n.
+pub fn chain_qp(n: usize) -> StateSpace<exactlti::ratfunc::RatFuncField> {
+    let k = exactlti::ratfunc::RatFuncField::new(&["m", "k", "c"]).unwrap();
+    let e = |s: &str| k.parse(s).unwrap();
+    let a = Matrix::from_fn(k.clone(), 2 * n, 2 * n, |i, j| {
+        if i < n {
+            return if j == i + n { k.one() } else { k.zero() };
+        }
+        let (r, col) = (i - n, j % n);
+        let what = if j < n { "k" } else { "c" };
+        if r == col {
+            e(&format!("-2*{what}/m"))
+        } else if r.abs_diff(col) == 1 {
+            e(&format!("{what}/m"))
+        } else {
+            k.zero()
+        }
+    });
+    let b = Matrix::from_fn(k.clone(), 2 * n, 1, |i, _| {
+        if i == n { e("1/m") } else { k.zero() }
+    });
+    let c = Matrix::from_fn(k.clone(), 1, 2 * n, |_, j| {
+        if j == n - 1 { k.one() } else { k.zero() }
+    });
+    StateSpace::new(a, b, c, Matrix::zeros(k, 1, 1)).unwrap()
 }
