@@ -67,12 +67,13 @@ pub fn execute_ctx(
     if let Command::Poly { op } = cmd {
         return poly(op).map(Outcome::plain);
     }
-    // commands on several files (or a file with only D): their own readers
+    // commands on several files, each read by the one reader
     if let Command::Interconnect(c) = cmd {
         return super::interconnect::run(c, &opts);
     }
+    // a file with only D is a static gain
     if let Command::Dcgain { file } = cmd {
-        return super::dcgain::run(file, &opts);
+        return super::dcgain::run(&System::open_or_gain(file, &opts)?);
     }
     let sys = match file_of(cmd) {
         None => System::builtin(&opts)?,
@@ -111,9 +112,42 @@ pub fn execute_ctx(
 
 /// Runs `cmd` on a system already read (the command's file argument is not read again;
 /// `--symbolic` / `--at` were applied when `sys` was read). The Python package's entry.
+///
+/// An interconnection's first system is `sys`; its other files are read by
+/// [`System::open_or_gain`] (with systems already read: [`execute_on_many`]).
 pub fn execute_on(cmd: &Command, sys: &System, ctx: &RunContext) -> Result<Outcome, Failure> {
+    if let Command::Interconnect(c) = cmd {
+        let rest = c.files().into_iter().skip(1);
+        let rest = rest
+            .map(|p| System::open_or_gain(p, &SymbolicOptions::default()))
+            .collect::<Result<Vec<_>, _>>()?;
+        let all: Vec<&System> = std::iter::once(sys).chain(&rest).collect();
+        return execute_on_many(cmd, &all, ctx);
+    }
+    execute_on_many(cmd, &[sys], ctx)
+}
+
+/// Runs `cmd` on systems already read: an interconnection on all of them (in the order of
+/// its files), every other command on the first.
+pub fn execute_on_many(
+    cmd: &Command,
+    systems: &[&System],
+    ctx: &RunContext,
+) -> Result<Outcome, Failure> {
     if let Command::Poly { op } = cmd {
         return poly(op).map(Outcome::plain);
+    }
+    if let Command::Interconnect(c) = cmd {
+        return super::interconnect::run_on(c, systems);
+    }
+    let Some(sys) = systems.first() else {
+        return Err(Failure {
+            code: 2,
+            message: "no system given".into(),
+        });
+    };
+    if let Command::Dcgain { .. } = cmd {
+        return super::dcgain::run(sys);
     }
     sys.run(FileCommand {
         cmd,

@@ -4,16 +4,15 @@ use super::SystemVisitor;
 use super::common::with_path;
 use super::{Failure, Outcome};
 use crate::field::Field;
-use crate::io::combine::load_system_or_gain;
-use crate::io::symbolic::SymbolicOptions;
 use crate::io::{SystemFile, TypedSystem};
 use crate::ratfunc::RatFuncField;
 use crate::system::dcgain::dc_gain;
 use std::path::Path;
 
-/// Runs `dcgain` on a system file (or a file with only `D`).
-pub fn run(path: &Path, sym: &SymbolicOptions) -> Result<Outcome, Failure> {
-    super::System::from(load_system_or_gain(path, sym)?).run(Dc { path })
+/// Runs `dcgain` on a system (read by [`super::System::open_or_gain`]: a file with only `D`
+/// is a static gain).
+pub fn run(sys: &super::System) -> Result<Outcome, Failure> {
+    sys.run(Dc { path: sys.path() })
 }
 
 struct Dc<'a> {

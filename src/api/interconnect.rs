@@ -7,7 +7,7 @@
 use super::common::with_path;
 use super::{Failure, Outcome};
 use crate::field::Field;
-use crate::io::combine::{SystemsVisitor, common_field, load_system_or_gain};
+use crate::io::combine::{SystemsVisitor, common_field};
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{InputError, TypedSystem};
 use crate::ratfunc::RatFuncField;
@@ -76,6 +76,10 @@ impl InterconnectCmd {
     pub fn name(&self) -> &'static str {
         self.parts().0.name()
     }
+    /// The files, in order.
+    pub fn files(&self) -> Vec<&Path> {
+        self.parts().1
+    }
     fn parts(&self) -> (Operation, Vec<&Path>, &InterconnectOpts) {
         match self {
             InterconnectCmd::Series { g, h, opts } => (Operation::Series, vec![g, h], opts),
@@ -102,14 +106,38 @@ impl InterconnectCmd {
     }
 }
 
-/// Runs an interconnection command.
+/// Runs an interconnection command on its files, each read once by the one reader
+/// ([`super::System::open_or_gain`]: a file with only `D` is a static gain).
 pub fn run(cmd: &InterconnectCmd, sym: &SymbolicOptions) -> Result<Outcome, Failure> {
-    let (op, paths, opts) = cmd.parts();
-    let loaded = paths
+    let (_, paths, _) = cmd.parts();
+    let systems = paths
         .iter()
-        .map(|p| load_system_or_gain(p, sym))
+        .map(|p| super::System::open_or_gain(p, sym))
         .collect::<Result<Vec<_>, InputError>>()?;
+    run_on(cmd, &systems.iter().collect::<Vec<_>>())
+}
+
+/// Runs an interconnection command on systems already read, in the order of the command's
+/// files (named by them in the report).
+///
+/// # Errors
+/// Systems over two different fields; a count other than the command's; the errors of
+/// the interconnection.
+pub fn run_on(cmd: &InterconnectCmd, systems: &[&super::System]) -> Result<Outcome, Failure> {
+    let (op, paths, opts) = cmd.parts();
+    if systems.len() != paths.len() {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{}: needs {} systems (got {})",
+                op.name(),
+                paths.len(),
+                systems.len()
+            ),
+        });
+    }
     let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
     let systems = common_field(&loaded)?;
     systems.run(Connect { op, names, opts })
 }

@@ -35,7 +35,9 @@ mod system;
 pub use args::{LinalgOp, MethodArg, PolyCmd, TimeOpts};
 pub use bifurcations::Of;
 /// One command run in-process (no output, no time bound): the report and its status.
-pub use commands::{BUILTIN_EXAMPLE, RunContext, execute, execute_ctx, execute_on, execute_with};
+pub use commands::{
+    BUILTIN_EXAMPLE, RunContext, execute, execute_ctx, execute_on, execute_on_many, execute_with,
+};
 pub use interconnect::InterconnectCmd;
 pub use system::{Options, System, SystemVisitor};
 

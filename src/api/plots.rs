@@ -6,9 +6,10 @@
 
 use super::Failure;
 use super::common::with_path;
-use crate::field::{Field, Q};
-use crate::float::{self, to_dmatrix};
+use crate::field::Field;
+use crate::float::{self, FloatScalar, to_cmatrix, to_dmatrix};
 use crate::io::{SystemFile, TypedSystem, as_rational};
+use crate::jordan::EigenField;
 use crate::report::plot::bode::{bode_svg, bode_svg_two_sided};
 use crate::report::plot::pzmap::{Point, pzmap_svg};
 use crate::report::plot::time::{TimePlot, time_response_svg};
@@ -53,6 +54,36 @@ fn abcd<K: Field>(t: &TypedSystem<K>, path: &Path) -> Result<[DMatrix<f64>; 4], 
     let s = &t.ss;
     let conv = |m| to_dmatrix(m).map_err(|e| with_path(path, e));
     Ok([conv(&s.a)?, conv(&s.b)?, conv(&s.c)?, conv(&s.d)?])
+}
+
+/// Whether an entry of `A`, `B`, `C`, `D` is not real (a system over $\mathbb{Q}(i)$).
+fn is_complex<K: Field>(t: &TypedSystem<K>) -> bool {
+    let s = &t.ss;
+    [&s.a, &s.b, &s.c, &s.d].iter().any(|m| {
+        let k = m.field();
+        (0..m.nrows())
+            .any(|i| (0..m.ncols()).any(|j| k.approx(m.get(i, j)).is_some_and(|z| z.1 != 0.0)))
+    })
+}
+
+/// The float time response of every channel, `[time][output][input]`.
+fn float_time<T: FloatScalar>(
+    [a, b, c, d]: &[DMatrix<T>; 4],
+    impulse: bool,
+    times: &[f64],
+) -> crate::Result<Vec<Vec<Vec<T>>>> {
+    let r = if impulse {
+        float::impulse_response(a, b, c, d, times)?
+    } else {
+        float::step_response(a, b, c, d, times)?
+    };
+    Ok(r.iter()
+        .map(|m| {
+            (0..m.nrows())
+                .map(|i| (0..m.ncols()).map(|j| m[(i, j)]).collect())
+                .collect()
+        })
+        .collect())
 }
 
 fn float_poles(a: &DMatrix<f64>, path: &Path) -> Result<Vec<(f64, f64)>, Failure> {
@@ -147,15 +178,36 @@ pub fn bode_file<K: Field>(
 /// A pole or zero: exact (or float) display, approximation, multiplicity.
 type Root = (String, (f64, f64), usize);
 
-/// Roots of a rational polynomial as `(value, approx, multiplicity)`, certified.
-fn exact_roots(p: &crate::poly::Poly<Q>) -> crate::Result<Vec<Root>> {
+/// Roots of a polynomial over an [`EigenField`] ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
+/// $\mathbb{Q}(i)$) as `(value, approx, multiplicity)`, certified: per irreducible factor
+/// over the field, its roots (those of the polynomial, not of its conjugate); real ones
+/// ascending, then complex ones by real and imaginary part.
+fn exact_roots_over<F: EigenField>(p: &crate::poly::Poly<F>) -> crate::Result<Vec<Root>> {
     if p.deg() == 0 {
         return Ok(vec![]);
     }
-    Ok(crate::algebraic::roots(p)?
-        .into_iter()
-        .map(|(z, mult)| (z.value_string(), z.approx(), mult))
-        .collect())
+    let mut out: Vec<Root> = vec![];
+    for (_, e, _, roots) in F::eigen_factors(&p.monic())? {
+        for (z, approx) in roots {
+            out.push((z.value_string(), approx, e));
+        }
+    }
+    let key = |r: &Root| (r.1.1 != 0.0, r.1.0, r.1.1);
+    out.sort_by(|x, y| {
+        key(x)
+            .partial_cmp(&key(y))
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    Ok(out)
+}
+
+/// Poles and invariant zeros of a system over an [`EigenField`], exact.
+fn exact_poles_zeros<F: EigenField>(
+    s: &crate::system::StateSpace<F>,
+) -> crate::Result<(Vec<Root>, Vec<Root>)> {
+    let chi = s.a.charpoly()?;
+    let z = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)?;
+    Ok((exact_roots_over(&chi)?, exact_roots_over(&z.polynomial)?))
 }
 
 /// Float values grouped into distinct points with multiplicities (by a relative distance).
@@ -191,8 +243,9 @@ fn point_items(xs: &[Root]) -> Vec<Value> {
         .collect()
 }
 
-/// `pzmap`: the poles (eigenvalues of `A`) and the invariant zeros, exact over Q (certified
-/// algebraic numbers), float otherwise; `--svg` draws the map.
+/// `pzmap`: the poles (eigenvalues of `A`) and the invariant zeros, exact over Q, Q(sqrt d)
+/// and Q(i) (certified algebraic numbers; over a non-real field the roots of `A`'s own
+/// factors, not of its conjugate's), float otherwise; `--svg` draws the map.
 pub fn pzmap<K: Field + 'static>(
     f: &SystemFile,
     t: &TypedSystem<K>,
@@ -201,17 +254,15 @@ pub fn pzmap<K: Field + 'static>(
 ) -> Result<Report, Failure> {
     let e = |err| with_path(path, err);
     let s = &t.ss;
-    let (poles, zeros, exact) = match as_rational(t) {
-        Some(q) => {
-            let chi = q.ss.a.charpoly().map_err(e)?;
-            let z = crate::structure::zeros::invariant_zeros(&q.ss.a, &q.ss.b, &q.ss.c, &q.ss.d)
-                .map_err(e)?;
-            (
-                exact_roots(&chi).map_err(e)?,
-                exact_roots(&z.polynomial).map_err(e)?,
-                true,
-            )
-        }
+    let quadratic = (s as &dyn std::any::Any)
+        .downcast_ref::<crate::system::StateSpace<crate::field::QuadraticField>>();
+    let exact = match (as_rational(t), quadratic) {
+        (Some(q), _) => Some(exact_poles_zeros(&q.ss).map_err(e)?),
+        (None, Some(k)) => Some(exact_poles_zeros(k).map_err(e)?),
+        (None, None) => None,
+    };
+    let (poles, zeros, exact) = match exact {
+        Some((p, z)) => (p, z, true),
         None => {
             let [a, b, c, d] = abcd(t, path)?;
             let z = if s.ninputs() > 0 && s.noutputs() > 0 {
@@ -259,14 +310,14 @@ pub struct TimeArgs<'a> {
     pub float_only: bool,
 }
 
+/// The float matrices of a system: real, or complex (over $\mathbb{Q}(i)$).
+enum Mats {
+    Real([DMatrix<f64>; 4]),
+    Complex([DMatrix<num_complex::Complex<f64>>; 4]),
+}
+
 /// Most values (points x outputs x inputs) of a time response.
 pub const MAX_TIME_VALUES: usize = 1_000_000;
-
-fn to_rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
-    (0..m.nrows())
-        .map(|i| (0..m.ncols()).map(|j| m[(i, j)]).collect())
-        .collect()
-}
 
 /// `step` / `impulse`: the response of every channel on an even time grid; from the exact
 /// closed form (Jordan form of `A`) over Q, with the float matrix-exponential recursion
@@ -305,8 +356,23 @@ pub fn time_response<K: Field + 'static>(
             ),
         });
     }
-    let [a, b, c, d] = abcd(t, path)?;
-    let poles = float_poles(&a, path)?;
+    let complex = is_complex(t);
+    let e = |err| with_path(path, err);
+    // a system with complex coefficients: complex matrices, a complex response (its poles
+    // through the real form, whose eigenvalues are those of A and their conjugates: the
+    // same real parts, so the same horizon and stability)
+    let mats = if complex {
+        let s = &t.ss;
+        let conv = |m| to_cmatrix(m).map_err(e);
+        Mats::Complex([conv(&s.a)?, conv(&s.b)?, conv(&s.c)?, conv(&s.d)?])
+    } else {
+        Mats::Real(abcd(t, path)?)
+    };
+    let a_real = match &mats {
+        Mats::Real(m) => m[0].clone(),
+        Mats::Complex(m) => FloatScalar::realify(&m[0]),
+    };
+    let poles = float_poles(&a_real, path)?;
     let t_end = args.to.unwrap_or_else(|| default_horizon(&poles));
     let points = args.points.unwrap_or_else(|| default_points(t_end, &poles));
     let values = points.saturating_mul(p).saturating_mul(m);
@@ -319,14 +385,18 @@ pub fn time_response<K: Field + 'static>(
         });
     }
     let times = time_grid(t_end, points);
-    let e = |err| with_path(path, err);
-    let fl = if args.impulse {
-        float::impulse_response(&a, &b, &c, &d, &times)
-    } else {
-        float::step_response(&a, &b, &c, &d, &times)
-    }
-    .map_err(e)?;
-    let fl: Vec<Vec<Vec<f64>>> = fl.iter().map(to_rows).collect();
+    let (fl, imag) = match &mats {
+        Mats::Complex(m) => {
+            let z = float_time(m, args.impulse, &times).map_err(e)?;
+            let part = |f: fn(&num_complex::Complex<f64>) -> f64| -> Vec<Vec<Vec<f64>>> {
+                z.iter()
+                    .map(|g| g.iter().map(|r| r.iter().map(f).collect()).collect())
+                    .collect()
+            };
+            (part(|x| x.re), Some(part(|x| x.im)))
+        }
+        Mats::Real(m) => (float_time(m, args.impulse, &times).map_err(e)?, None),
+    };
     let exact = match as_rational(t) {
         Some(q) if !args.float_only => Some(ClosedFormResponse::new(&q.ss).map_err(e)?),
         _ => None,
@@ -350,10 +420,16 @@ pub fn time_response<K: Field + 'static>(
         .str("name", title.clone())
         .str(
             "method",
-            if exact.is_some() {
-                "exact closed form from the Jordan form of A, evaluated in floating point"
-            } else {
-                "float: matrix exponential of [[A, B], [0, 0]] dt (zero-order hold)"
+            match (exact.is_some(), complex) {
+                (true, _) => {
+                    "exact closed form from the Jordan form of A, evaluated in floating point"
+                }
+                (false, false) => {
+                    "float: matrix exponential of [[A, B], [0, 0]] dt (zero-order hold)"
+                }
+                (false, true) => {
+                    "float, complex coefficients: complex matrix exponential of [[A, B], [0, 0]] dt (zero-order hold); response holds the real parts, response_imag the imaginary parts"
+                }
             },
         )
         .list(
@@ -400,54 +476,74 @@ pub fn time_response<K: Field + 'static>(
         rep = rep.float("float_max_difference", diff);
     }
     rep = rep.bool("stable", stable);
+    // a complex response: its real and imaginary parts as channels of their own
+    let (plot_vals, plot_outs) = match &imag {
+        None => (vals.clone(), outs.clone()),
+        Some(im) => {
+            rep = rep.list("response_imag", response_values(im));
+            let names = outs.iter().map(|o| format!("Re {o}"));
+            let names = names.chain(outs.iter().map(|o| format!("Im {o}")));
+            let rows = vals
+                .iter()
+                .zip(im)
+                .map(|(r, i)| r.iter().chain(i).cloned().collect());
+            (rows.collect(), names.collect())
+        }
+    };
+    let plot = TimePlot {
+        title: &format!("{title}: {what}"),
+        what,
+        times: &times,
+        values: &plot_vals,
+        inputs: &ins,
+        outputs: &plot_outs,
+        final_values: final_line.as_deref(),
+        final_label: "final value (exact DC gain)",
+    };
+    write_files(&plot, args)?;
+    Ok((
+        rep.list("times_s", times.iter().map(|x| Value::Float(*x)).collect())
+            .list("response", response_values(&vals)),
+        verified,
+    ))
+}
+
+/// `[time][output][input]` values as report lists.
+fn response_values(v: &[Vec<Vec<f64>>]) -> Vec<Value> {
+    v.iter()
+        .map(|g| {
+            Value::List(
+                g.iter()
+                    .map(|r| Value::List(r.iter().map(|x| Value::Float(*x)).collect()))
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+/// `--svg` and `--csv` of a time response (one column per channel `input -> output`).
+fn write_files(plot: &TimePlot<'_>, args: &TimeArgs<'_>) -> Result<(), Failure> {
     if let Some(out) = args.svg {
-        write(
-            out,
-            &time_response_svg(&TimePlot {
-                title: &format!("{title}: {what}"),
-                what,
-                times: &times,
-                values: &vals,
-                inputs: &ins,
-                outputs: &outs,
-                final_values: final_line.as_deref(),
-                final_label: "final value (exact DC gain)",
-            }),
-        )?;
+        write(out, &time_response_svg(plot))?;
     }
     if let Some(out) = args.csv {
         let mut text = String::from("time_s");
-        for o in &outs {
-            for i in &ins {
+        for o in plot.outputs {
+            for i in plot.inputs {
                 text.push_str(&format!(",{}", csv_field(&format!("{i} -> {o}"))));
             }
         }
         text.push('\n');
-        for (k, x) in times.iter().enumerate() {
+        for (k, x) in plot.times.iter().enumerate() {
             text.push_str(&format!("{x}"));
-            for v in vals[k].iter().flatten() {
+            for v in plot.values[k].iter().flatten() {
                 text.push_str(&format!(",{v}"));
             }
             text.push('\n');
         }
         write(out, &text)?;
     }
-    Ok((
-        rep.list("times_s", times.iter().map(|x| Value::Float(*x)).collect())
-            .list(
-                "response",
-                vals.iter()
-                    .map(|g| {
-                        Value::List(
-                            g.iter()
-                                .map(|r| Value::List(r.iter().map(|x| Value::Float(*x)).collect()))
-                                .collect(),
-                        )
-                    })
-                    .collect(),
-            ),
-        verified,
-    ))
+    Ok(())
 }
 
 /// A CSV field, quoted when it holds a comma, quote or line break.

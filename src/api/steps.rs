@@ -9,7 +9,7 @@
 use super::{Command, Failure, Format, MethodArg, Outcome};
 use crate::field::Field;
 use crate::io::TypedAny;
-use crate::io::symbolic::{SymbolicOptions, load_symbolic_path};
+use crate::io::symbolic::SymbolicOptions;
 use crate::jordan::derivation::{Derivation, ratfunc_log};
 use crate::report::steps::derivation_report;
 use crate::report::steps_latex::derivation_latex;
@@ -59,7 +59,8 @@ pub fn execute(
         }
     };
     let opts = SymbolicOptions::from_args(symbolic, at).map_err(refuse)?;
-    let loaded = load_symbolic_path(file, &opts).map_err(|e| refuse(e.to_string()))?;
+    let sys = super::System::open(file, &opts).map_err(|e| refuse(e.to_string()))?;
+    let loaded = sys.loaded();
     let e = |err: crate::error::Error| super::common::with_path(file, err);
     let out = Render { format, standalone };
     match (&loaded.system, what) {

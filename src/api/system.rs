@@ -40,6 +40,7 @@ use crate::io::{
 };
 use crate::ratfunc::RatFuncField;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// How a system is read: `--symbolic` (parameters kept as symbols) and `--at` (values given
 /// before the computation), typed once for both front ends.
@@ -52,6 +53,17 @@ pub struct System {
     path: PathBuf,
     /// Read from the file at `path` (not from text or matrices).
     from_file: bool,
+    /// The text it was read from, to read it again with other values ([`System::with_values`]).
+    source: Option<Arc<Source>>,
+}
+
+/// The text of a system and how it was read.
+#[derive(Debug)]
+struct Source {
+    text: String,
+    format: SystemFormat,
+    name: String,
+    opts: Options,
 }
 
 /// Work on a system, written once for every ground field `K`.
@@ -72,6 +84,7 @@ impl From<LoadedSystem> for System {
             loaded,
             path,
             from_file: false,
+            source: None,
         }
     }
 }
@@ -82,11 +95,56 @@ impl System {
     /// # Errors
     /// An unreadable file and every error of [`System::from_text`], named by the path.
     pub fn open(path: &Path, opts: &Options) -> Result<Self, InputError> {
+        Self::open_with(path, opts, false)
+    }
+
+    /// [`System::open`], where a file with only `D` is the static gain $y = D u$ (a system
+    /// without states; `dcgain`, interconnections).
+    ///
+    /// # Errors
+    /// As [`System::open`].
+    pub fn open_or_gain(path: &Path, opts: &Options) -> Result<Self, InputError> {
+        Self::open_with(path, opts, true)
+    }
+
+    fn open_with(path: &Path, opts: &Options, gain: bool) -> Result<Self, InputError> {
         let text = crate::io::read_text(path)?;
         let format = SystemFormat::of(path, &text);
-        let mut s = Self::from_text(&text, format, &path.display().to_string(), opts)?;
+        let name = path.display().to_string();
+        let text = match gain {
+            true => crate::io::combine::gain_text(&text, format, &name).unwrap_or(text),
+            false => text,
+        };
+        let mut s = Self::from_text(&text, format, &name, opts)?;
         s.path = path.to_path_buf();
         s.from_file = true;
+        Ok(s)
+    }
+
+    /// The same system read again from its text with values for parameters (`--at`, added
+    /// to those it was read with; a value makes a symbol a number).
+    ///
+    /// # Errors
+    /// A system given by its matrices (it has no text to read again); the readers' errors
+    /// (an unknown name, a value that is not a number).
+    pub fn with_values(&self, at: &[(String, String)]) -> Result<Self, InputError> {
+        let Some(src) = &self.source else {
+            return Err(InputError::file(
+                &self.loaded.file.path,
+                "a system given by its matrices has no parameters to give values",
+            ));
+        };
+        let mut opts = src.opts.clone();
+        for (n, v) in at {
+            opts.at.retain(|(m, _)| m != n);
+            opts.at.push((n.clone(), v.clone()));
+            if let Some(list) = opts.symbolic.as_mut() {
+                list.retain(|m| m != n);
+            }
+        }
+        let mut s = Self::from_text(&src.text, src.format, &src.name, &opts)?;
+        s.path = self.path.clone();
+        s.from_file = self.from_file;
         Ok(s)
     }
 
@@ -106,10 +164,17 @@ impl System {
         } else {
             load_symbolic_str(text, format, name, opts)?
         };
+        let source = Source {
+            text: text.to_string(),
+            format,
+            name: name.to_string(),
+            opts: opts.clone(),
+        };
         Ok(System {
             loaded,
             path: PathBuf::from(name),
             from_file: false,
+            source: Some(Arc::new(source)),
         })
     }
 

@@ -10,24 +10,30 @@
 //! |---|---|
 //! | [`step_response`] | $s(t_k)$, one $p \times m$ matrix per time |
 //! | [`impulse_response`] | $h(t_k) = C e^{A t_k} B$ |
+//!
+//! Both are written once for real and complex matrices ([`FloatScalar`]): a system with
+//! complex coefficients (over $\mathbb{Q}(i)$) has a complex response, as in python-control
+//! and MATLAB.
 
 use nalgebra::DMatrix;
 
-use super::check_system;
+use super::{FloatScalar, check_system};
 use crate::error::{Error, Result};
 
-fn propagators(
-    a: &DMatrix<f64>,
-    b: &DMatrix<f64>,
+fn propagators<T: FloatScalar>(
+    a: &DMatrix<T>,
+    b: &DMatrix<T>,
     dt: f64,
-) -> Result<(DMatrix<f64>, DMatrix<f64>)> {
+) -> Result<(DMatrix<T>, DMatrix<T>)> {
     if !(dt.is_finite() && dt > 0.0) {
         return Err(Error::Invalid("time response: need a time step > 0".into()));
     }
     let (n, m) = (a.nrows(), b.ncols());
     let mut big = DMatrix::zeros(n + m, n + m);
-    big.view_mut((0, 0), (n, n)).copy_from(&(a * dt));
-    big.view_mut((0, n), (n, m)).copy_from(&(b * dt));
+    big.view_mut((0, 0), (n, n))
+        .copy_from(&(a * T::from_real(dt)));
+    big.view_mut((0, n), (n, m))
+        .copy_from(&(b * T::from_real(dt)));
     let phi = big.exp();
     if phi.iter().any(|x| !x.is_finite()) {
         return Err(Error::Invalid(
@@ -59,13 +65,13 @@ fn step_of(times: &[f64]) -> Result<f64> {
 ///
 /// # Errors
 /// Shape errors as [`super::freqresp`]; a grid that is not even from 0; overflow.
-pub fn step_response(
-    a: &DMatrix<f64>,
-    b: &DMatrix<f64>,
-    c: &DMatrix<f64>,
-    d: &DMatrix<f64>,
+pub fn step_response<T: FloatScalar>(
+    a: &DMatrix<T>,
+    b: &DMatrix<T>,
+    c: &DMatrix<T>,
+    d: &DMatrix<T>,
     times: &[f64],
-) -> Result<Vec<DMatrix<f64>>> {
+) -> Result<Vec<DMatrix<T>>> {
     let (n, m, _) = check_system("step response", a, b, c, d)?;
     let dt = step_of(times)?;
     if n == 0 {
@@ -85,13 +91,13 @@ pub fn step_response(
 ///
 /// # Errors
 /// As [`step_response`].
-pub fn impulse_response(
-    a: &DMatrix<f64>,
-    b: &DMatrix<f64>,
-    c: &DMatrix<f64>,
-    d: &DMatrix<f64>,
+pub fn impulse_response<T: FloatScalar>(
+    a: &DMatrix<T>,
+    b: &DMatrix<T>,
+    c: &DMatrix<T>,
+    d: &DMatrix<T>,
     times: &[f64],
-) -> Result<Vec<DMatrix<f64>>> {
+) -> Result<Vec<DMatrix<T>>> {
     let (n, m, _) = check_system("impulse response", a, b, c, d)?;
     let dt = step_of(times)?;
     if n == 0 {
@@ -123,6 +129,24 @@ mod tests {
         for (k, t) in ts.iter().enumerate() {
             assert!((s[k][(0, 0)] - 0.5 * (1.0 - (-2.0 * t).exp())).abs() < 1e-12);
             assert!((h[k][(0, 0)] - (-2.0 * t).exp()).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn complex_rotation() {
+        // x' = (i - 1/2) x + u: impulse e^{(i - 1/2) t}, step (e^{(i - 1/2) t} - 1)/(i - 1/2)
+        use num_complex::Complex;
+        let lam = Complex::new(-0.5, 1.0);
+        let a = DMatrix::from_element(1, 1, lam);
+        let one = DMatrix::from_element(1, 1, Complex::new(1.0, 0.0));
+        let z = DMatrix::from_element(1, 1, Complex::new(0.0, 0.0));
+        let ts: Vec<f64> = (0..21).map(|k| k as f64 * 0.25).collect();
+        let s = step_response(&a, &one, &one, &z, &ts).unwrap();
+        let h = impulse_response(&a, &one, &one, &z, &ts).unwrap();
+        for (k, t) in ts.iter().enumerate() {
+            let e = (lam * t).exp();
+            assert!((h[k][(0, 0)] - e).norm() < 1e-12);
+            assert!((s[k][(0, 0)] - (e - 1.0) / lam).norm() < 1e-12);
         }
     }
 }

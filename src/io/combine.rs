@@ -9,13 +9,11 @@
 
 use super::load::{LoadedSystem, TypedAny, TypedSystem};
 use super::raw::{Raw, from_json_text, from_toml_text};
-use super::symbolic::{SymbolicOptions, load_symbolic_str};
 use super::{Ground, InputError, SystemFormat};
 use crate::field::{Field, Q, QuadraticField};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
 use crate::system::{Descriptor, StateSpace};
-use std::path::Path;
 
 /// Systems over one common field.
 #[derive(Clone, Debug)]
@@ -72,7 +70,7 @@ fn lift<K: Field, L: Field>(
 ///
 /// # Errors
 /// Files over two different non-rational fields (named by the second file).
-pub fn common_field(systems: &[LoadedSystem]) -> Result<CommonSystems, InputError> {
+pub fn common_field(systems: &[&LoadedSystem]) -> Result<CommonSystems, InputError> {
     let target = systems.iter().find(|s| s.file.ground != Ground::Rational);
     let Some(target) = target else {
         let all = systems
@@ -123,22 +121,13 @@ pub fn common_field(systems: &[LoadedSystem]) -> Result<CommonSystems, InputErro
     })
 }
 
-/// Loads a system file (with symbols when it has them or `opts` names them), or a static
-/// gain: a file whose only matrix key is `D` is read as the system without states
-/// $y = D u$ (as if it gave `A = []`).
-///
-/// # Errors
-/// An unreadable file; the reader's errors.
-pub fn load_system_or_gain(
-    path: &Path,
-    opts: &SymbolicOptions,
-) -> Result<LoadedSystem, InputError> {
-    let shown = path.display().to_string();
-    let text = super::read_text(path)?;
-    let format = SystemFormat::of(path, &text);
+/// A static gain: for a file whose only matrix key is `D`, its text with `A = []` first
+/// (the system without states $y = D u$); `None` for any other file (read as it is). The
+/// one reader ([`crate::api::System::open_or_gain`]) reads the text this returns.
+pub fn gain_text(text: &str, format: SystemFormat, name: &str) -> Option<String> {
     let raw = match format {
-        SystemFormat::Json => from_json_text(&text, &shown),
-        SystemFormat::Toml => from_toml_text(&text, &shown),
+        SystemFormat::Json => from_json_text(text, name),
+        SystemFormat::Toml => from_toml_text(text, name),
     };
     let gain_only = match &raw {
         Ok(Raw::Table(entries)) => {
@@ -147,15 +136,11 @@ pub fn load_system_or_gain(
         }
         _ => false,
     };
-    if !gain_only {
-        return load_symbolic_str(&text, format, &shown, opts);
-    }
     // `A = []` first: a top-level TOML key before any table, a JSON object's first member
-    let with_a = match format {
+    gain_only.then(|| match format {
         SystemFormat::Toml => format!("A = []\n{text}"),
         SystemFormat::Json => text.replacen('{', "{\"A\": [], ", 1),
-    };
-    load_symbolic_str(&with_a, format, &shown, opts)
+    })
 }
 
 /// Keys that make a file more than a gain.

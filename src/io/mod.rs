@@ -16,7 +16,7 @@
 //! | [`parse_matlab_matrix`] | `"[0 1; -2 -3]"`, `"[1, 2/3; 0.5 -1e-2]"`, `"[]"` |
 //! | [`split_matlab_matrix`] | the same, entries left as text (for evaluation over parameters) |
 //! | [`load_system_str`], [`load_system_path`] | a system file → [`LoadedSystem`] (typed over its field; [`LoadedSystem::run`] dispatches generic code) |
-//! | [`combine::common_field`], [`combine::load_system_or_gain`] | several files over one field (interconnection); a file with only `D` as a static gain |
+//! | [`combine::common_field`], [`combine::gain_text`] | several files over one field (interconnection); a file with only `D` as a static gain |
 //! | [`write::system_file_json`], [`write::system_file_text`] | a system back as a system file |
 //! | [`eval_expr`] | one exact expression, e.g. `"-(a*cf - b*cr)/(Izz*u)"`, `"1 - sqrt(2)/2"` |
 //!

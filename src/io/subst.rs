@@ -51,6 +51,58 @@ impl SymbolicOptions {
     pub fn is_empty(&self) -> bool {
         self.symbolic.is_none() && self.at.is_empty()
     }
+
+    /// Applies these options to a file's `params` (value text, `None` for `null`) and its
+    /// `symbols`, for every reader: `--symbolic` names become symbols (every parameter for an
+    /// empty list), parameters without a value are symbols, then `--at` values replace
+    /// values and symbols. A name the file does not declare is an error naming `file`.
+    pub(crate) fn apply_to(
+        &self,
+        file: &str,
+        params: &mut Vec<(String, Option<String>)>,
+        symbols: &mut std::collections::BTreeSet<String>,
+    ) -> Result<(), InputError> {
+        let known = |n: &str,
+                     params: &[(String, Option<String>)],
+                     symbols: &std::collections::BTreeSet<String>| {
+            params.iter().any(|(p, _)| p == n) || symbols.contains(n)
+        };
+        match &self.symbolic {
+            Some(list) if list.is_empty() => symbols.extend(params.iter().map(|(n, _)| n.clone())),
+            Some(list) => {
+                for n in list {
+                    if !known(n, params, symbols) {
+                        return Err(InputError::file(
+                            file,
+                            format!("--symbolic: unknown parameter '{n}'"),
+                        ));
+                    }
+                    symbols.insert(n.clone());
+                }
+            }
+            None => {}
+        }
+        symbols.extend(
+            params
+                .iter()
+                .filter(|(_, v)| v.is_none())
+                .map(|(n, _)| n.clone()),
+        );
+        for (n, v) in &self.at {
+            if !known(n, params, symbols) {
+                return Err(InputError::file(
+                    file,
+                    format!("--at: unknown parameter '{n}'"),
+                ));
+            }
+            symbols.remove(n);
+            match params.iter_mut().find(|(p, _)| p == n) {
+                Some(p) => p.1 = Some(v.clone()),
+                None => params.push((n.clone(), Some(v.clone()))),
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Valued parameters, substituted into entry text as `(value)` until no name is left.

@@ -121,43 +121,7 @@ pub fn load_symbolic_str(
             (_, v) => rest.push((key, v)),
         }
     }
-    let known = |n: &str, params: &[(String, Option<String>)], symbols: &BTreeSet<String>| {
-        params.iter().any(|(p, _)| p == n) || symbols.contains(n)
-    };
-    match &opts.symbolic {
-        Some(list) if list.is_empty() => symbols.extend(params.iter().map(|(n, _)| n.clone())),
-        Some(list) => {
-            for n in list {
-                if !known(n, &params, &symbols) {
-                    return Err(InputError::file(
-                        name,
-                        format!("--symbolic: unknown parameter '{n}'"),
-                    ));
-                }
-                symbols.insert(n.clone());
-            }
-        }
-        None => {}
-    }
-    symbols.extend(
-        params
-            .iter()
-            .filter(|(_, v)| v.is_none())
-            .map(|(n, _)| n.clone()),
-    );
-    for (n, v) in &opts.at {
-        if !known(n, &params, &symbols) {
-            return Err(InputError::file(
-                name,
-                format!("--at: unknown parameter '{n}'"),
-            ));
-        }
-        symbols.remove(n);
-        match params.iter_mut().find(|(p, _)| p == n) {
-            Some(p) => p.1 = Some(v.clone()),
-            None => params.push((n.clone(), Some(v.clone()))),
-        }
-    }
+    opts.apply_to(name, &mut params, &mut symbols)?;
     // a symbol is a symbol even when the file also gives it a value
     let valued: Vec<(String, String)> = params
         .iter()

@@ -160,41 +160,7 @@ fn parameters(
             _ => {}
         }
     }
-    let known = |n: &str, params: &[(String, Option<String>)]| params.iter().any(|(p, _)| p == n);
-    match &opts.symbolic {
-        Some(list) if list.is_empty() => symbols.extend(params.iter().map(|(n, _)| n.clone())),
-        Some(list) => {
-            for n in list {
-                if !known(n, &params) {
-                    return Err(InputError::file(
-                        file,
-                        format!("--symbolic: unknown parameter '{n}'"),
-                    ));
-                }
-                symbols.insert(n.clone());
-            }
-        }
-        None => {}
-    }
-    symbols.extend(
-        params
-            .iter()
-            .filter(|(_, v)| v.is_none())
-            .map(|(n, _)| n.clone()),
-    );
-    for (n, v) in &opts.at {
-        if !known(n, &params) && !symbols.contains(n) {
-            return Err(InputError::file(
-                file,
-                format!("--at: unknown parameter '{n}'"),
-            ));
-        }
-        symbols.remove(n);
-        match params.iter_mut().find(|(p, _)| p == n) {
-            Some(p) => p.1 = Some(v.clone()),
-            None => params.push((n.clone(), Some(v.clone()))),
-        }
-    }
+    opts.apply_to(file, &mut params, &mut symbols)?;
     let valued = params
         .into_iter()
         .filter(|(n, _)| !symbols.contains(n))
