@@ -11,6 +11,7 @@ mod jcommon;
 mod algebraic;
 #[path = "api.rs"]
 mod api;
+mod api_fields;
 #[path = "bicycle.rs"]
 mod bicycle;
 #[path = "cli.rs"]

@@ -86,6 +86,16 @@ def run(system, op, *args, max_seconds=None):
     return Report(json.loads(text), verified, agree, op=" ".join([op] + args))
 
 
+def connect(op, systems, *args, max_seconds=None):
+    """Runs the command line's interconnection ``op`` (``"series"``, ``"parallel"``,
+    ``"feedback"``, ``"append"``) on ``systems`` in order, with its options ``args``."""
+    first, rest = systems[0], systems[1:]
+    names = [s._core.source[0] for s in systems]
+    argv = [op] + names + [str(a) for a in args]
+    text, verified, agree = first._core.connect(argv, [s._core for s in rest], max_seconds)
+    return Report(json.loads(text), verified, agree, op=" ".join([op] + [str(a) for a in args]))
+
+
 class Operations:
     """Mixin of :class:`StateSpace`: one method per command of the command line."""
 
@@ -143,6 +153,32 @@ class Operations:
     def pzmap_svg(self, path, max_seconds=None):
         """Writes the pole-zero map as SVG to ``path``; the report as :meth:`pzmap`."""
         return run(self, "pzmap", "--svg", path, max_seconds=max_seconds)
+
+    def dcgain(self, max_seconds=None):
+        """Exact DC gain ``G(0) = D - C A^-1 B`` per channel (``inf`` at a pole at 0)."""
+        return run(self, "dcgain", max_seconds=max_seconds)
+
+    def series(self, other, minreal=False, max_seconds=None):
+        """``other`` after ``self`` (python-control's ``series(self, other)``: ``y = H G u``),
+        exact; ``minreal=True`` also reduces it."""
+        return connect("series", [self, other], *_arg("minreal", minreal),
+                       max_seconds=max_seconds)
+
+    def parallel(self, other, minreal=False, max_seconds=None):
+        """``self + other`` (same input, outputs added), exact."""
+        return connect("parallel", [self, other], *_arg("minreal", minreal),
+                       max_seconds=max_seconds)
+
+    def feedback(self, other, positive=False, minreal=False, max_seconds=None):
+        """``self`` with ``other`` in the feedback path (negative unless ``positive``),
+        exact, python-control's conventions."""
+        a = _arg("positive", positive) + _arg("minreal", minreal)
+        return connect("feedback", [self, other], *a, max_seconds=max_seconds)
+
+    def append(self, *others, minreal=False, max_seconds=None):
+        """The block-diagonal union of ``self`` and ``others`` (inputs and outputs stacked)."""
+        return connect("append", [self] + list(others), *_arg("minreal", minreal),
+                       max_seconds=max_seconds)
 
     def sweep(self, param, lo, hi, points=200, max_seconds=None):
         """Eigenvalues along the parameter ``param`` (float), a system read from a file."""

@@ -11,8 +11,8 @@
 use exactlti::Error;
 mod study;
 use exactlti::api::runner::{Poll, Worker};
-use exactlti::field::{Q, QuadraticField};
-use exactlti::io::{TypedAny, TypedSystem as Typed};
+use exactlti::field::Q;
+use exactlti::io::TypedSystem as Typed;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization;
 use pyo3::create_exception;
@@ -155,108 +155,78 @@ use out::*;
 
 // ---------------------------------------------------------------- systems
 
-/// A system over its ground field, as the library's reader typed it.
-#[allow(clippy::large_enum_variant)]
-pub enum Sys {
-    Q(String, Typed<Q>),
-    Quadratic(String, Typed<QuadraticField>),
-    /// Symbolic parameters: entries in $\mathbb{Q}(p_1, \dots, p_k)$.
-    Sym(String, Typed<RatFuncField>),
+/// Runs generic code on a system over its concrete ground field through the library's one
+/// dispatch ([`exactlti::api::System::run`]): `$num` for every field, `$sym` (when given)
+/// over $\mathbb{Q}(p_1, \dots, p_k)$. The names in `[...]` are moved into the visitor.
+macro_rules! visit {
+    ($s:expr => $out:ty, [$($v:ident : $ty:ty),*], |$f:ident, $t:ident| $num:expr) => {{
+        struct V { $($v: $ty),* }
+        impl exactlti::api::SystemVisitor for V {
+            type Output = $out;
+            #[allow(unused_variables)]
+            fn visit<K: exactlti::field::Field + 'static>(
+                self,
+                $f: &exactlti::io::SystemFile,
+                $t: &Typed<K>,
+            ) -> $out {
+                let V { $($v),* } = self;
+                $num
+            }
+        }
+        $s.run(V { $($v),* })
+    }};
+    ($s:expr => $out:ty, [$($v:ident : $ty:ty),*], |$f:ident, $t:ident| $num:expr,
+     sym |$f2:ident, $t2:ident| $sym:expr) => {{
+        struct V { $($v: $ty),* }
+        impl exactlti::api::SystemVisitor for V {
+            type Output = $out;
+            #[allow(unused_variables)]
+            fn visit<K: exactlti::field::Field + 'static>(
+                self,
+                $f: &exactlti::io::SystemFile,
+                $t: &Typed<K>,
+            ) -> $out {
+                let V { $($v),* } = self;
+                $num
+            }
+            #[allow(unused_variables)]
+            fn visit_symbolic(
+                self,
+                $f2: &exactlti::io::SystemFile,
+                $t2: &Typed<RatFuncField>,
+            ) -> $out {
+                let V { $($v),* } = self;
+                $sym
+            }
+        }
+        $s.run(V { $($v),* })
+    }};
 }
 
-/// `$body` over the system's concrete field (generic code that makes sense over every field).
-macro_rules! over {
-    ($s:expr, |$t:ident| $body:expr) => {
-        match &*$s {
-            Sys::Q(_, $t) => $body,
-            Sys::Quadratic(_, $t) => $body,
-            Sys::Sym(_, $t) => $body,
-        }
-    };
-}
-
-/// `$body` over a numeric field; a symbolic system is refused (`what` needs numbers).
-macro_rules! over_numeric {
-    ($s:expr, $what:expr, |$t:ident| $body:expr) => {
-        match &*$s {
-            Sys::Q(_, $t) => $body,
-            Sys::Quadratic(_, $t) => $body,
-            Sys::Sym(g, _) => Err(symbolic::needs_numbers($what, g)),
-        }
-    };
-}
-
-impl Sys {
-    /// The typed system of a system read by the library's front door.
-    fn of(s: &exactlti::api::System) -> Self {
-        let g = s.ground().to_string();
-        match &s.loaded().system {
-            TypedAny::Rational(t) => Sys::Q(g, t.clone()),
-            TypedAny::Quadratic(t) => Sys::Quadratic(g, t.clone()),
-            TypedAny::RatFunc(t) => Sys::Sym(g, t.clone()),
-            #[allow(unreachable_patterns)]
-            _ => unreachable!("a ground field unknown to the Python layer"),
-        }
-    }
-    fn rational(&self, what: &str) -> FResult<&Typed<Q>> {
-        match self {
-            Sys::Q(_, t) => Ok(t),
-            Sys::Quadratic(g, _) => Err(Fail::Unsupported(format!(
-                "{what} needs rational matrices; this system's entries lie in {g}"
-            ))),
-            Sys::Sym(g, _) => Err(symbolic::needs_numbers(what, g)),
-        }
-    }
+/// The system over Q, or `UnsupportedError` naming the field of its entries.
+fn rational<'t, K: exactlti::field::Field + 'static>(
+    f: &exactlti::io::SystemFile,
+    t: &'t Typed<K>,
+    what: &str,
+) -> FResult<&'t Typed<Q>> {
+    exactlti::io::as_rational(t).ok_or_else(|| {
+        Fail::Unsupported(format!(
+            "{what} needs rational matrices; this system's entries lie in {}",
+            f.ground
+        ))
+    })
 }
 
 /// An exact state-space system (standard form; a descriptor system is converted on input).
 #[pyclass(frozen, module = "exactlti._core")]
 pub struct System {
-    pub(crate) inner: Arc<Sys>,
-    /// The system as the library's front door read it (every command runs on it).
+    /// The system as the library's front door read it (every operation runs on it).
     pub(crate) api: Arc<exactlti::api::System>,
 }
 
 impl System {
     fn new(s: exactlti::api::System) -> Self {
-        System {
-            inner: Arc::new(Sys::of(&s)),
-            api: Arc::new(s),
-        }
-    }
-    /// A system computed here (a minimal realization, ...), given to the front door by its
-    /// matrices.
-    pub(crate) fn of_sys(s: Arc<Sys>) -> Self {
-        let typed = match &*s {
-            Sys::Q(_, t) => TypedAny::Rational(t.clone()),
-            Sys::Quadratic(_, t) => TypedAny::Quadratic(t.clone()),
-            Sys::Sym(_, t) => TypedAny::RatFunc(t.clone()),
-        };
-        let api = exactlti::api::System::from_typed("system", typed);
-        System {
-            inner: s,
-            api: Arc::new(api),
-        }
-    }
-}
-
-impl From<(String, Typed<Q>)> for Sys {
-    fn from((_, t): (String, Typed<Q>)) -> Self {
-        Sys::Q("QQ".into(), t)
-    }
-}
-
-impl From<(String, Typed<QuadraticField>)> for Sys {
-    fn from((_, t): (String, Typed<QuadraticField>)) -> Self {
-        let g = t.ss.a.field().to_string();
-        Sys::Quadratic(g, t)
-    }
-}
-
-impl From<(String, Typed<RatFuncField>)> for Sys {
-    fn from((_, t): (String, Typed<RatFuncField>)) -> Self {
-        let g = t.ss.a.field().to_string();
-        Sys::Sym(g, t)
+        System { api: Arc::new(s) }
     }
 }
 
@@ -264,29 +234,26 @@ impl From<(String, Typed<RatFuncField>)> for Sys {
 impl System {
     /// The exact matrices as a dict of plain data (see the Python layer).
     fn matrices(&self) -> PyResult<Py<PyAny>> {
-        Python::attach(|py| over!(self.inner, |t| typed_system(t)).to_py(py))
+        let out = visit!(self.api => Out, [], |f, t| typed_system(t));
+        Python::attach(|py| out.to_py(py))
     }
 
     /// Name of the ground field (`QQ`, `QQ(sqrt(2))`, ...).
     #[getter]
     fn ground(&self) -> String {
-        match &*self.inner {
-            Sys::Q(g, _) | Sys::Quadratic(g, _) | Sys::Sym(g, _) => g.clone(),
-        }
+        self.api.ground().to_string()
     }
 
     /// The symbolic parameters (empty for a numeric system).
     #[getter]
     fn params(&self) -> Vec<String> {
-        match &*self.inner {
-            Sys::Sym(_, t) => t.a_raw.field().vars().to_vec(),
-            _ => vec![],
-        }
+        visit!(self.api => Vec<String>, [], |f, t| vec![],
+               sym |f, t| t.a_raw.field().vars().to_vec())
     }
 
     #[getter]
     fn shape(&self) -> (usize, usize, usize) {
-        over!(self.inner, |t| (
+        visit!(self.api => (usize, usize, usize), [], |f, t| (
             t.ss.nstates(),
             t.ss.ninputs(),
             t.ss.noutputs()
@@ -300,50 +267,38 @@ impl System {
         method: String,
         max_seconds: Option<f64>,
     ) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         let out = run(py, max_seconds, move || {
-            if method == "jordan" {
-                let t = s.rational("the Jordan-form method")?;
-                let r = realization::minimal_jordan(&t.ss)?;
-                return Ok(Out::Dict(vec![
-                    ("system", Out::None),
-                    ("order", usize_out(r.mcmillan_degree)),
-                    ("original_order", usize_out(r.stages[0])),
-                    (
-                        "stages",
-                        Out::List(r.stages.iter().map(|&x| usize_out(x)).collect()),
-                    ),
-                    ("method", Out::Str("jordan".into())),
-                    ("T", Out::None),
-                    ("verified", Out::Bool(r.verified)),
-                    ("report", report(&r.report())),
-                ]));
-            }
-            let m = method_of(&method)?;
-            match &*s {
-                Sys::Sym(_, t) => symbolic::minreal(t, m),
-                _ => over!(s, |t| minreal_typed(t, m)),
-            }
+            visit!(s => FResult<Out>, [method: String], |f, t| {
+                if method == "jordan" {
+                    let t = rational(f, t, "the Jordan-form method")?;
+                    return minreal_jordan(t);
+                }
+                minreal_typed(t, method_of(&method)?)
+            }, sym |f, t| {
+                if method == "jordan" {
+                    return Err(symbolic::needs_numbers("the Jordan-form method", &f.ground.to_string()));
+                }
+                symbolic::minreal(t, method_of(&method)?)
+            })
         })?;
         out.to_py(py)
     }
 
     #[pyo3(signature = (max_seconds=None))]
     fn scb(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
-        run(py, max_seconds, move || match &*s {
-            Sys::Sym(_, t) => symbolic::scb(t),
-            _ => over!(s, |t| scb_typed(t)),
+        let s = self.api.clone();
+        run(py, max_seconds, move || {
+            visit!(s => FResult<Out>, [], |f, t| scb_typed(t), sym |f, t| symbolic::scb(t))
         })?
         .to_py(py)
     }
 
     #[pyo3(signature = (max_seconds=None))]
     fn zeros(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
-        run(py, max_seconds, move || match &*s {
-            Sys::Sym(_, t) => symbolic::zeros(t),
-            _ => over!(s, |t| zeros_typed(t)),
+        let s = self.api.clone();
+        run(py, max_seconds, move || {
+            visit!(s => FResult<Out>, [], |f, t| zeros_typed(t), sym |f, t| symbolic::zeros(t))
         })?
         .to_py(py)
     }
@@ -351,118 +306,76 @@ impl System {
     /// Roots of the characteristic polynomial of `A` with multiplicities.
     #[pyo3(signature = (max_seconds=None))]
     fn poles(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, max_seconds, move || {
-            if let Sys::Sym(_, t) = &*s {
-                return symbolic::poles(t);
-            }
-            let t = s.rational("exact poles")?;
-            let p = t.ss.a.charpoly()?;
-            if p.deg() == 0 {
-                return Ok(Out::List(vec![]));
-            }
-            Ok(Out::List(
-                exactlti::algebraic::roots(&p)?
-                    .iter()
-                    .map(|(n, m)| alg(n, *m))
-                    .collect(),
-            ))
+            visit!(s => FResult<Out>, [], |f, t| {
+                let t = rational(f, t, "exact poles")?;
+                let p = t.ss.a.charpoly()?;
+                if p.deg() == 0 {
+                    return Ok(Out::List(vec![]));
+                }
+                Ok(Out::List(
+                    exactlti::algebraic::roots(&p)?
+                        .iter()
+                        .map(|(n, m)| alg(n, *m))
+                        .collect(),
+                ))
+            }, sym |f, t| symbolic::poles(t))
         })?
         .to_py(py)
     }
 
     #[pyo3(signature = (real=false, max_seconds=None))]
     fn jordan(&self, py: Python<'_>, real: bool, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, max_seconds, move || {
-            let jf = match &*s {
-                Sys::Q(_, t) if t.descriptor.is_some() => {
-                    return ops::descriptor_jordan(t, real, exactlti::jordan::jordan);
+            visit!(s => FResult<Out>, [real: bool], |f, t| ops::jordan_typed(t, real),
+                   sym |f, t| {
+                if real {
+                    return Err(Fail::Unsupported(format!(
+                        "symbolic parameters: the real Jordan form is not yet supported over {}; \
+                         give values (subs)",
+                        f.ground
+                    )));
                 }
-                Sys::Quadratic(_, t) if t.descriptor.is_some() => {
-                    return ops::descriptor_jordan(t, real, exactlti::jordan::jordan_quadratic);
-                }
-                Sys::Q(_, t) => exactlti::jordan::jordan(&t.a_raw)?,
-                Sys::Quadratic(_, t) => exactlti::jordan::jordan_quadratic(&t.a_raw)?,
-                Sys::Sym(g, t) => {
-                    if real {
-                        return Err(Fail::Unsupported(format!(
-                            "symbolic parameters: the real Jordan form is not yet supported over {g}; \
-                             give values (subs)"
-                        )));
-                    }
-                    return symbolic::jordan(&t.a_raw);
-                }
-            };
-            jordan_out(&jf, real)
+                symbolic::jordan(&t.a_raw)
+            })
         })?
         .to_py(py)
     }
 
     #[pyo3(signature = (max_seconds=None))]
     fn mnf(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, max_seconds, move || {
-            if let Sys::Sym(_, t) = &*s {
-                return symbolic::mnf(t);
-            }
-            let t = s.rational("the mechanical normal form")?;
-            let ss = &t.ss;
-            let r = exactlti::structure::mechanical::mechanical_normal_form(
-                &ss.a, &ss.b, &ss.c, &ss.d,
-            )?;
-            let kv = mnf_out(&r);
-            Ok(Out::Dict(kv))
+            visit!(s => FResult<Out>, [], |f, t| {
+                let t = rational(f, t, "the mechanical normal form")?;
+                let ss = &t.ss;
+                let r = exactlti::structure::mechanical::mechanical_normal_form(
+                    &ss.a, &ss.b, &ss.c, &ss.d,
+                )?;
+                Ok(Out::Dict(mnf_out(&r)))
+            }, sym |f, t| symbolic::mnf(t))
         })?
         .to_py(py)
     }
 
     #[pyo3(signature = (max_seconds=None))]
     fn modes(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, max_seconds, move || {
-            let t = s.rational("the modal table")?;
-            let m = realization::modal_table(&t.ss.a)?;
-            let opt = |x: Option<f64>| x.map(Out::Float).unwrap_or(Out::None);
-            Ok(Out::Dict(vec![
-                (
-                    "modes",
-                    Out::List(
-                        m.modes
-                            .iter()
-                            .map(|md| {
-                                Out::Dict(vec![
-                                    ("eigenvalue", Out::Str(md.eigenvalue.clone())),
-                                    ("minpoly", Out::Str(md.minpoly.clone())),
-                                    (
-                                        "approx",
-                                        Out::Tuple(vec![
-                                            Out::Float(md.approx.0),
-                                            Out::Float(md.approx.1),
-                                        ]),
-                                    ),
-                                    ("multiplicity", usize_out(md.multiplicity)),
-                                    ("frequency_hz", Out::Float(md.frequency_hz)),
-                                    ("damping_ratio", opt(md.damping_ratio)),
-                                    ("time_constant_s", opt(md.time_constant_s)),
-                                    ("period_s", opt(md.period_s)),
-                                ])
-                            })
-                            .collect(),
-                    ),
-                ),
-                ("report", report(&m.report())),
-            ]))
+            visit!(s => FResult<Out>, [], |f, t| {
+                modes_out(&rational(f, t, "the modal table")?.ss.a)
+            }, sym |f, t| Err(symbolic::needs_numbers("the modal table", &f.ground.to_string())))
         })?
         .to_py(py)
     }
 
     #[pyo3(signature = (max_seconds=None))]
     fn tf(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
-        run(py, max_seconds, move || match &*s {
-            Sys::Sym(_, t) => symbolic::tf(t),
-            _ => over!(s, |t| tf_typed(t)),
+        let s = self.api.clone();
+        run(py, max_seconds, move || {
+            visit!(s => FResult<Out>, [], |f, t| tf_typed(t), sym |f, t| symbolic::tf(t))
         })?
         .to_py(py)
     }
@@ -475,9 +388,9 @@ impl System {
         count: usize,
         max_seconds: Option<f64>,
     ) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, max_seconds, move || {
-            Ok(over!(s, |t| Out::List(
+            visit!(s => FResult<Out>, [count: usize], |f, t| Ok(Out::List(
                 t.ss.markov(count).iter().map(mat).collect()
             )))
         })?
@@ -486,22 +399,22 @@ impl System {
 
     #[pyo3(signature = (max_seconds=None))]
     fn ctrb(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, max_seconds, move || {
-            Ok(over!(s, |t| mat(&realization::controllability_matrix(
-                &t.ss.a, &t.ss.b
-            ))))
+            visit!(s => FResult<Out>, [], |f, t| Ok(mat(
+                &realization::controllability_matrix(&t.ss.a, &t.ss.b)
+            )))
         })?
         .to_py(py)
     }
 
     #[pyo3(signature = (max_seconds=None))]
     fn obsv(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, max_seconds, move || {
-            Ok(over!(s, |t| mat(&realization::observability_matrix(
-                &t.ss.a, &t.ss.c
-            ))))
+            visit!(s => FResult<Out>, [], |f, t| Ok(mat(
+                &realization::observability_matrix(&t.ss.a, &t.ss.c)
+            )))
         })?
         .to_py(py)
     }
@@ -510,9 +423,10 @@ impl System {
     /// observability ranks, and eigenvalues, each exact and in floating point.
     #[pyo3(signature = (max_seconds=None))]
     fn check(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, max_seconds, move || {
-            over_numeric!(s, "the float cross-check", |t| check_typed(t))
+            visit!(s => FResult<Out>, [], |f, t| check_typed(t),
+                   sym |f, t| Err(symbolic::needs_numbers("the float cross-check", &f.ground.to_string())))
         })?
         .to_py(py)
     }
@@ -548,11 +462,36 @@ impl System {
 
     /// Frequency response `C (j w I - A)^{-1} B + D` in floating point, `omega` in rad/s.
     fn freqresp(&self, py: Python<'_>, omega: Vec<f64>) -> PyResult<Py<PyAny>> {
-        let s = self.inner.clone();
+        let s = self.api.clone();
         run(py, None, move || {
-            over_numeric!(s, "the frequency response", |t| freqresp_typed(t, &omega))
+            visit!(s => FResult<Out>, [omega: Vec<f64>], |f, t| freqresp_typed(t, &omega),
+                   sym |f, t| Err(symbolic::needs_numbers("the frequency response", &f.ground.to_string())))
         })?
         .to_py(py)
+    }
+
+    /// Runs an interconnection of the command line (`series`, `parallel`, `feedback`,
+    /// `append`: `args` as the command line spells them, one file name per system) on this
+    /// system and `others`, in that order, through the library's front door.
+    #[pyo3(signature = (args, others, max_seconds=None))]
+    fn connect(
+        &self,
+        py: Python<'_>,
+        args: Vec<String>,
+        others: Vec<PyRef<'_, System>>,
+        max_seconds: Option<f64>,
+    ) -> PyResult<(String, bool, bool)> {
+        let mut all = vec![self.api.clone()];
+        all.extend(others.iter().map(|o| o.api.clone()));
+        run(py, max_seconds, move || {
+            let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
+            let ctx = exactlti::api::RunContext::default();
+            let refs: Vec<&exactlti::api::System> = all.iter().map(|s| s.as_ref()).collect();
+            let out = exactlti::api::execute_on_many(&cmd, &refs, &ctx)?;
+            let text = serde_json::to_string(&out.report.to_json())
+                .map_err(|e| Fail::Input(e.to_string()))?;
+            Ok((text, out.verified, !out.float_disagrees))
+        })
     }
 }
 
@@ -571,7 +510,8 @@ fn load_json(py: Python<'_>, text: String, name: String, symbolic: bool) -> PyRe
     Ok(System::new(s))
 }
 
-/// Reads a system file (JSON or TOML, chosen by extension) as the command line does:
+/// Reads a system file (JSON or TOML, chosen by extension) as the command line does (a
+/// file with only `D` is the static gain `y = D u`):
 /// parameters with value `null` and those named in `symbols` stay symbols; `at` gives
 /// values first (the command line's `--at`), `symbolic` names parameters kept as symbols
 /// (the command line's `--symbolic`; an empty list: every parameter).
@@ -588,7 +528,7 @@ fn load_file(
             symbolic,
             at: at.unwrap_or_default(),
         };
-        Ok(exactlti::api::System::open(Path::new(&path), &opts)?)
+        Ok(exactlti::api::System::open_or_gain(Path::new(&path), &opts)?)
     })?;
     Ok(System::new(s))
 }

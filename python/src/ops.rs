@@ -1,13 +1,12 @@
 //! The exact operations on a system over its (numeric) ground field, as plain output data.
 
 use crate::out::*;
-use crate::{FResult, Fail, Sys};
+use crate::{FResult, Fail};
 use exactlti::field::Field;
 use exactlti::io::TypedSystem as Typed;
 use exactlti::matrix::Matrix;
 use exactlti::realization::{self, MinrealMethod};
 use exactlti::system::StateSpace;
-use std::sync::Arc;
 
 pub(crate) fn typed_system<K: Field>(t: &Typed<K>) -> Out {
     let s = &t.ss;
@@ -33,21 +32,15 @@ pub(crate) fn typed_system<K: Field>(t: &Typed<K>) -> Out {
     ])
 }
 
-pub(crate) fn minreal_typed<K: Field>(t: &Typed<K>, m: MinrealMethod) -> FResult<Out>
-where
-    Sys: From<(String, Typed<K>)>,
-{
+pub(crate) fn minreal_typed<K: Field + 'static>(t: &Typed<K>, m: MinrealMethod) -> FResult<Out> {
     let r = realization::minimal(&t.ss, m)?;
-    let sys = Sys::from((
-        String::new(),
-        Typed {
-            descriptor: None,
-            a_raw: r.system.a.clone(),
-            ss: r.system.clone(),
-        },
-    ));
+    let sys = system_out(Typed {
+        descriptor: None,
+        a_raw: r.system.a.clone(),
+        ss: r.system.clone(),
+    });
     Ok(Out::Dict(vec![
-        ("system", Out::Sys(Arc::new(sys))),
+        ("system", sys),
         ("order", usize_out(r.order)),
         ("original_order", usize_out(r.original_order)),
         ("method", Out::Str(r.method.name().to_string())),
@@ -430,4 +423,74 @@ pub(crate) fn mnf_out<K: Field>(
         kv.push(("B_tilde", mat(&f.b_tilde)));
     }
     kv
+}
+
+/// `minreal(method="jordan")` over Q: the modal form with its stages.
+pub(crate) fn minreal_jordan(t: &Typed<exactlti::field::Q>) -> FResult<Out> {
+    let r = realization::minimal_jordan(&t.ss)?;
+    Ok(Out::Dict(vec![
+        ("system", Out::None),
+        ("order", usize_out(r.mcmillan_degree)),
+        ("original_order", usize_out(r.stages[0])),
+        (
+            "stages",
+            Out::List(r.stages.iter().map(|&x| usize_out(x)).collect()),
+        ),
+        ("method", Out::Str("jordan".into())),
+        ("T", Out::None),
+        ("verified", Out::Bool(r.verified)),
+        ("report", report(&r.report())),
+    ]))
+}
+
+/// The Jordan form of `A` (of the finite part of a descriptor system) over Q or a quadratic
+/// field; `UnsupportedError` naming any other field.
+pub(crate) fn jordan_typed<K: Field + 'static>(t: &Typed<K>, real: bool) -> FResult<Out> {
+    use exactlti::field::{Q, QuadraticField};
+    let any = t as &dyn std::any::Any;
+    if let Some(t) = any.downcast_ref::<Typed<Q>>() {
+        if t.descriptor.is_some() {
+            return descriptor_jordan(t, real, exactlti::jordan::jordan);
+        }
+        return jordan_out(&exactlti::jordan::jordan(&t.a_raw)?, real);
+    }
+    if let Some(t) = any.downcast_ref::<Typed<QuadraticField>>() {
+        if t.descriptor.is_some() {
+            return descriptor_jordan(t, real, exactlti::jordan::jordan_quadratic);
+        }
+        return jordan_out(&exactlti::jordan::jordan_quadratic(&t.a_raw)?, real);
+    }
+    Err(Fail::Unsupported(format!(
+        "the Jordan form is not supported over {}",
+        t.a_raw.field()
+    )))
+}
+
+/// The modal table of `A` over Q as output data.
+pub(crate) fn modes_out(a: &Matrix<exactlti::field::Q>) -> FResult<Out> {
+    let m = realization::modal_table(a)?;
+    let opt = |x: Option<f64>| x.map(Out::Float).unwrap_or(Out::None);
+    let modes = m
+        .modes
+        .iter()
+        .map(|md| {
+            Out::Dict(vec![
+                ("eigenvalue", Out::Str(md.eigenvalue.clone())),
+                ("minpoly", Out::Str(md.minpoly.clone())),
+                (
+                    "approx",
+                    Out::Tuple(vec![Out::Float(md.approx.0), Out::Float(md.approx.1)]),
+                ),
+                ("multiplicity", usize_out(md.multiplicity)),
+                ("frequency_hz", Out::Float(md.frequency_hz)),
+                ("damping_ratio", opt(md.damping_ratio)),
+                ("time_constant_s", opt(md.time_constant_s)),
+                ("period_s", opt(md.period_s)),
+            ])
+        })
+        .collect();
+    Ok(Out::Dict(vec![
+        ("modes", Out::List(modes)),
+        ("report", report(&m.report())),
+    ]))
 }

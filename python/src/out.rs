@@ -11,7 +11,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use std::sync::Arc;
 
-use crate::{Sys, System};
+use crate::System;
 
 /// The items of an output dict.
 pub(crate) type Items = Vec<(&'static str, Out)>;
@@ -27,7 +27,8 @@ pub(crate) enum Out {
     List(Vec<Out>),
     Tuple(Vec<Out>),
     Dict(Vec<(&'static str, Out)>),
-    Sys(Arc<Sys>),
+    /// A system computed here (a minimal realization, ...), given to the front door.
+    Sys(Arc<exactlti::api::System>),
 }
 
 impl Out {
@@ -60,8 +61,16 @@ impl Out {
                 }
                 d.into_any().unbind()
             }
-            Out::Sys(s) => Py::new(py, System::of_sys(s.clone()))?.into_any(),
+            Out::Sys(s) => Py::new(py, System { api: s.clone() })?.into_any(),
         })
+    }
+}
+
+/// A system over any field as output (a result of a computation).
+pub(crate) fn system_out<K: Field + 'static>(t: exactlti::io::TypedSystem<K>) -> Out {
+    match exactlti::api::System::from_field("system", t) {
+        Some(s) => Out::Sys(Arc::new(s)),
+        None => Out::None,
     }
 }
 

@@ -9,7 +9,7 @@
 
 use crate::ops::{mnf_out, scb_typed, tf_parts, zeros_typed};
 use crate::out::*;
-use crate::{FResult, Fail, Sys};
+use crate::{FResult, Fail};
 use exactlti::field::Field;
 use exactlti::io::TypedSystem as Typed;
 use exactlti::matrix::Matrix;
@@ -17,7 +17,6 @@ use exactlti::poly::Poly;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization::{self, MinrealMethod};
 use exactlti::structure::factor_qp::factor_over_qp;
-use std::sync::Arc;
 
 type T = Typed<RatFuncField>;
 
@@ -122,16 +121,13 @@ pub(crate) fn poles(t: &T) -> FResult<Out> {
 pub(crate) fn minreal(t: &T, m: MinrealMethod) -> FResult<Out> {
     let (k, t) = refield(t);
     let r = realization::minimal(&t.ss, m)?;
-    let sys = Sys::Sym(
-        k.to_string(),
-        Typed {
-            descriptor: None,
-            a_raw: r.system.a.clone(),
-            ss: r.system.clone(),
-        },
-    );
+    let sys = system_out(Typed {
+        descriptor: None,
+        a_raw: r.system.a.clone(),
+        ss: r.system.clone(),
+    });
     let kv = vec![
-        ("system", Out::Sys(Arc::new(sys))),
+        ("system", sys),
         ("order", usize_out(r.order)),
         ("original_order", usize_out(r.original_order)),
         ("method", Out::Str(r.method.name().to_string())),

@@ -107,6 +107,7 @@ pub fn execute_ctx(
         opts: &opts,
         from_file: sys.from_file(),
         ctx,
+        sys: &sys,
     })
 }
 
@@ -155,6 +156,7 @@ pub fn execute_on_many(
         opts: &SymbolicOptions::default(),
         from_file: sys.from_file(),
         ctx,
+        sys,
     })
 }
 
@@ -260,6 +262,8 @@ struct FileCommand<'a> {
     /// The system was read from `path` (the descriptor reader may read it again).
     from_file: bool,
     ctx: &'a RunContext,
+    /// The system as read (a sweep over an extension field reads it again with values).
+    sys: &'a System,
 }
 
 impl SystemVisitor for FileCommand<'_> {
@@ -280,6 +284,31 @@ impl SystemVisitor for FileCommand<'_> {
             Command::Analyze {
                 section_seconds, ..
             } => super::analyze::analyze_with(f, t, &analyze_options(*section_seconds, self.ctx)),
+            // entries in Q(sqrt d) or Q(i): the system read again at each value
+            Command::Sweep {
+                param,
+                from,
+                to,
+                points,
+                svg,
+                locus_svg,
+                csv,
+                ..
+            } if matches!(f.ground, crate::io::Ground::Quadratic(_)) => super::sweep::run_field(
+                &super::sweep::SweepArgs {
+                    file: path,
+                    param,
+                    from: *from,
+                    to: *to,
+                    points: *points,
+                    svg: svg.as_deref(),
+                    locus_svg: locus_svg.as_deref(),
+                    csv: csv.as_deref(),
+                    at: &self.opts.at,
+                },
+                self.sys,
+                self.ctx.stdout,
+            ),
             Command::Sweep { .. } | Command::Critical { .. } if !self.from_file => Err(Failure {
                 code: 2,
                 message: format!(

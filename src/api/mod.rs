@@ -27,6 +27,7 @@ pub mod plots;
 pub mod runner;
 pub mod steps;
 mod sweep;
+mod sweep_field;
 mod sweep_stream;
 mod symbolic;
 mod symbolic_jordan;

@@ -2,6 +2,7 @@
 //! [--csv F]`: float eigenvalues of $A(v)$ along the parameter, in parallel, with a progress
 //! bar when stderr is a terminal.
 
+use super::sweep_field::FieldFamily;
 use super::sweep_stream::{CsvSink, Sink};
 use super::{Failure, Outcome};
 use crate::report::plot::sweep::{root_locus_svg, sweep_svg};
@@ -49,9 +50,58 @@ fn family_dim(fam: &ParamFamily) -> usize {
     }
 }
 
+/// The family swept: exact over $\mathbb{Q}(v)$ ([`ParamFamily`]), or read again over its
+/// extension field at each value ([`FieldFamily`]).
+enum Family<'a> {
+    Exact(ParamFamily),
+    Field(FieldFamily<'a>),
+}
+
+impl Family<'_> {
+    fn dim(&self) -> usize {
+        match self {
+            Family::Exact(f) => family_dim(f),
+            Family::Field(f) => f.dim(),
+        }
+    }
+    fn name(&self) -> Option<String> {
+        match self {
+            Family::Exact(f) => f.name.clone(),
+            Family::Field(f) => f.name(),
+        }
+    }
+    fn sweep(&self, batch: &[f64], tick: &(dyn Fn(usize) + Sync)) -> Result<SweepResult, Failure> {
+        match self {
+            Family::Exact(f) => Ok(sweep(f, batch, Some(tick))?),
+            Family::Field(f) => f.sweep(batch, tick),
+        }
+    }
+}
+
+/// Runs `sweep` of a system whose entries lie in an extension field (the system as read;
+/// see [`FieldFamily`]); as [`run`] otherwise.
+pub fn run_field(
+    a: &SweepArgs<'_>,
+    sys: &super::System,
+    stream: Option<super::Format>,
+) -> Result<Outcome, Failure> {
+    check_args(a)?;
+    let fam = Family::Field(FieldFamily::new(sys, a.param)?);
+    run_family(a, &fam, stream)
+}
+
 /// Runs `sweep`; `stream`: the output format when the report may be written to stdout row by
 /// row (the command line; `None` in process).
 pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, Failure> {
+    check_args(a)?;
+    // the file was read as a system by the caller ([`crate::api::System::open`]; the
+    // parameter swept may be `null`: a symbol)
+    let fam = Family::Exact(ParamFamily::from_file_at(a.file, a.param, a.at)?);
+    run_family(a, &fam, stream)
+}
+
+/// `--from`, `--to`, `--points` in range.
+fn check_args(a: &SweepArgs<'_>) -> Result<(), Failure> {
     if !(a.from.is_finite()
         && a.to.is_finite()
         && a.from <= a.to
@@ -65,6 +115,14 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
             ),
         });
     }
+    Ok(())
+}
+
+fn run_family(
+    a: &SweepArgs<'_>,
+    fam: &Family<'_>,
+    stream: Option<super::Format>,
+) -> Result<Outcome, Failure> {
     let stream = stream.filter(|_| a.points > STREAM_POINTS);
     if stream == Some(super::Format::Latex) {
         return Err(Failure {
@@ -75,9 +133,6 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
             ),
         });
     }
-    // the file was read as a system by the caller ([`crate::api::System::open`]; the
-    // parameter swept may be `null`: a symbol)
-    let fam = ParamFamily::from_file_at(a.file, a.param, a.at)?;
     let values = sweep_values(a.from, a.to, a.points);
     let title = format!("sweep of {} over [{}, {}]", a.param, a.from, a.to);
     let mut sink = match stream {
@@ -90,7 +145,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
         None => None,
     };
     let mut csv = match a.csv {
-        Some(p) => Some(CsvSink::start(p, a.param, family_dim(&fam))?),
+        Some(p) => Some(CsvSink::start(p, a.param, fam.dim())?),
         None => None,
     };
     let bar = std::io::stderr().is_terminal().then(|| {
@@ -124,7 +179,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
                 bar.set_position((offset + k) as u64);
             }
         };
-        let sw = sweep(&fam, batch, Some(&tick))?;
+        let sw = fam.sweep(batch, &tick)?;
         let rows = batch.iter().zip(sw.eigenvalues).zip(sw.status);
         for (k, ((v, ev), st)) in rows.enumerate() {
             let i = offset + k;
@@ -155,10 +210,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
     if let Some(c) = csv {
         c.finish()?;
     }
-    let name = fam
-        .name
-        .clone()
-        .unwrap_or_else(|| a.file.display().to_string());
+    let name = fam.name().unwrap_or_else(|| a.file.display().to_string());
     let xlabel = format!("{} (parameter)", a.param);
     let drawn = match (plots, sink.is_none() && values.len() > PLOT_ROWS) {
         (false, _) => SweepResult {
@@ -192,7 +244,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
         .filter_map(|(i, v, st)| note_value(*i, *v, st, a.param))
         .collect();
     if let Some(s) = sink {
-        let method = Value::Str(method_of(descriptor).into());
+        let method = Value::Str(method_of(descriptor, fam).into());
         s.finish(&[("method", method), ("notes", Value::List(notes))], stable)?;
         let mut out = Outcome::plain(Report::titled(title));
         out.streamed = true;
@@ -201,7 +253,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
     let mut r = Report::titled(title)
         .str("param", a.param)
         .int("points", values.len())
-        .str("method", method_of(descriptor));
+        .str("method", method_of(descriptor, fam));
     if descriptor {
         let inf = kept.status.iter().map(|s| match s {
             PointStatus::Descriptor { infinite } => Value::Int(*infinite as i64),
@@ -247,7 +299,10 @@ fn thin(sw: &SweepResult, step: usize) -> SweepResult {
 }
 
 /// How the eigenvalues were computed (`method`).
-fn method_of(descriptor: bool) -> &'static str {
+fn method_of(descriptor: bool, fam: &Family<'_>) -> &'static str {
+    if let Family::Field(_) = fam {
+        return "the system read over its field at each value, its eigenvalues in floating point (complex Schur where A(v) is not real; a descriptor system: the finite eigenvalues, those of its standard form)";
+    }
     if descriptor {
         "finite eigenvalues of the pencil det(sE - A) = 0: their number exact, their values by shift-and-invert in floating point; eigenvalues of A(v) where E(v) is invertible"
     } else {

@@ -191,6 +191,20 @@ impl System {
         System::from(LoadedSystem { file, system })
     }
 
+    /// A system given by its matrices over any ground field of the crate ($\mathbb{Q}$,
+    /// $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(p_1, \dots, p_k)$); `None` for another field.
+    pub fn from_field<K: Field + 'static>(name: &str, system: TypedSystem<K>) -> Option<Self> {
+        let b: Box<dyn std::any::Any> = Box::new(system);
+        let any = match b.downcast::<TypedSystem<crate::field::Q>>() {
+            Ok(t) => TypedAny::Rational(*t),
+            Err(b) => match b.downcast::<TypedSystem<crate::field::QuadraticField>>() {
+                Ok(t) => TypedAny::Quadratic(*t),
+                Err(b) => TypedAny::RatFunc(*b.downcast::<TypedSystem<RatFuncField>>().ok()?),
+            },
+        };
+        Some(Self::from_typed(name, any))
+    }
+
     /// The built-in example of `analyze` without a file (sliding masses).
     ///
     /// # Errors
