@@ -121,8 +121,8 @@ fn step_and_impulse_of_a_complex_system_are_complex() {
         let re = r["response"].as_array().unwrap();
         let im = r["response_imag"].as_array().unwrap();
         assert_eq!(ts.len(), 41);
-        for k in 0..ts.len() {
-            let t = ts[k].as_f64().unwrap();
+        for (k, t) in ts.iter().enumerate() {
+            let t = t.as_f64().unwrap();
             let y = Complex::new(re[k][0][0].as_f64().unwrap(), im[k][0][0].as_f64().unwrap());
             assert!((y - f(t)).norm() < 1e-10, "{what} at {t}: {y} vs {}", f(t));
         }

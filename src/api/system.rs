@@ -111,9 +111,10 @@ impl System {
         let text = crate::io::read_text(path)?;
         let format = SystemFormat::of(path, &text);
         let name = path.display().to_string();
-        let text = match gain {
-            true => crate::io::combine::gain_text(&text, format, &name).unwrap_or(text),
-            false => text,
+        let text = if gain {
+            crate::io::combine::gain_text(&text, format, &name).unwrap_or(text)
+        } else {
+            text
         };
         let mut s = Self::from_text(&text, format, &name, opts)?;
         s.path = path.to_path_buf();
