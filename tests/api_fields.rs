@@ -236,7 +236,7 @@ fn sweep_over_quadratic_fields_reads_the_system_at_each_value() {
 
 #[test]
 fn with_values_is_the_file_read_with_at() {
-    let text = r#"{"parameters": {"c": null}, "A": [[0, 1], [-2, "-c*sqrt(2)"]]}"#;
+    let text = r#"{"parameters": {"c": "3"}, "A": [[0, 1], [-2, "-c*sqrt(2)"]]}"#;
     let s = sys_of(text);
     let v = s.with_values(&[("c".into(), "1/2".into())]).unwrap();
     let at = Options::from_args(None, Some("c=1/2")).unwrap();

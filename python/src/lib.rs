@@ -288,9 +288,11 @@ impl System {
     #[pyo3(signature = (max_seconds=None))]
     fn scb(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
-        run(py, max_seconds, move || {
-            visit!(s => FResult<Out>, [], |f, t| scb_typed(t), sym |f, t| symbolic::scb(t))
-        })?
+        run(
+            py,
+            max_seconds,
+            move || visit!(s => FResult<Out>, [], |f, t| scb_typed(t), sym |f, t| symbolic::scb(t)),
+        )?
         .to_py(py)
     }
 
@@ -374,9 +376,11 @@ impl System {
     #[pyo3(signature = (max_seconds=None))]
     fn tf(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
-        run(py, max_seconds, move || {
-            visit!(s => FResult<Out>, [], |f, t| tf_typed(t), sym |f, t| symbolic::tf(t))
-        })?
+        run(
+            py,
+            max_seconds,
+            move || visit!(s => FResult<Out>, [], |f, t| tf_typed(t), sym |f, t| symbolic::tf(t)),
+        )?
         .to_py(py)
     }
 
@@ -528,7 +532,10 @@ fn load_file(
             symbolic,
             at: at.unwrap_or_default(),
         };
-        Ok(exactlti::api::System::open_or_gain(Path::new(&path), &opts)?)
+        Ok(exactlti::api::System::open_or_gain(
+            Path::new(&path),
+            &opts,
+        )?)
     })?;
     Ok(System::new(s))
 }
