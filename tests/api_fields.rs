@@ -170,9 +170,10 @@ fn sweep_over_quadratic_fields_reads_the_system_at_each_value() {
         let b = c * 2f64.sqrt();
         let d = Complex::new(b * b - 8.0, 0.0).sqrt();
         let want = [(-b - d) / 2.0, (-b + d) / 2.0];
+        // (c = 2 is a double root: float accuracy sqrt(eps))
         for w in want {
             assert!(
-                at(k).iter().any(|z| (z - w).norm() < 1e-9),
+                at(k).iter().any(|z| (z - w).norm() < 1e-6),
                 "c = {c}: {:?} vs {w}",
                 at(k)
             );
