@@ -11,6 +11,7 @@ mod jcommon;
 mod algebraic;
 #[path = "api.rs"]
 mod api;
+#[path = "api_fields.rs"]
 mod api_fields;
 #[path = "bicycle.rs"]
 mod bicycle;

@@ -124,11 +124,22 @@ fn commands_run_on_a_system_already_read() {
         assert!(ok, "{args:?} verified");
         assert_eq!(Ok(on), from_file, "{args:?}");
     }
-    // a parameter study needs the file
-    let c = Command::parse_args(&[
-        "sweep", "k.json", "--param", "c", "--from", "0", "--to", "1",
-    ]);
-    let e = execute_on(&c.unwrap(), &s, &RunContext::default()).unwrap_err();
+    // a sweep over Q(sqrt 2) reads the system's own text again at each value: the same
+    // report from text as from the file
+    let sweep = |f: &str| {
+        Command::parse_args(&[
+            "sweep", f, "--param", "c", "--from", "0", "--to", "1", "--points", "5",
+        ])
+        .unwrap()
+    };
+    let on = execute_on(&sweep("k.json"), &s, &RunContext::default()).unwrap();
+    assert_eq!(
+        Ok(on.report.to_json()),
+        json(&sweep(p.to_str().unwrap()), None)
+    );
+    // the exact study over Q(v) reads its file: a system from text is refused
+    let q = System::from_text(FAMILY, SystemFormat::Json, "q.json", &o).unwrap();
+    let e = execute_on(&sweep("q.json"), &q, &RunContext::default()).unwrap_err();
     assert!(e.message.contains("reads its system file"), "{}", e.message);
 }
 
