@@ -392,3 +392,45 @@ fn similarity_invariance() {
         assert_eq!(oq::det_q(n, &a), oq::det_q(n, &b), "{ctx}");
     }
 }
+
+/// The class of `rref-def` (issue 29): fractions p/q with |p|, q up to 10^6, rows that are
+/// combinations of others placed anywhere, zero rows and zero or repeated columns. The
+/// pivot-block path (`modular::pivot_solve`) must give the RREF of the naive elimination,
+/// and its certificate must refuse an unlucky prime (the reconstruction path answers).
+#[test]
+fn properties_rank_deficient_fractions() {
+    let mut g = Lcg(Lcg64(29));
+    for it in 0..4 * multiplier() {
+        let (m, n) = (9 + g.below(6), 9 + g.below(6));
+        let mut a: Vec<Rational> = (0..m * n)
+            .map(|_| qq(g.int(-1_000_000, 1_000_000), g.int(1, 1_000_000)))
+            .collect();
+        for _ in 0..1 + g.below(3) {
+            // row t = c0 row s0 + c1 row s1
+            let (t, s0, s1) = (g.below(m as u64), g.below(m as u64), g.below(m as u64));
+            let (c0, c1) = (g.rational(), g.rational());
+            for j in 0..n {
+                a[t * n + j] = &c0 * &a[s0 * n + j] + &c1 * &a[s1 * n + j];
+            }
+        }
+        match g.below(3) {
+            0 => (0..m).for_each(|i| a[i * n + g.below(n as u64)] = q(0)),
+            1 => {
+                let (c, d) = (g.below(n as u64), g.below(n as u64));
+                (0..m).for_each(|i| a[i * n + d] = a[i * n + c].clone());
+            }
+            _ => {}
+        }
+        let ctx = format!("it {it}: {m}x{n} A = {a:?}");
+        check_rect(m, n, &a, &ctx);
+        if let Some(res) = mm::pivot_solve::rref_pivot_solve(m, n, &a) {
+            assert_eq!(res.pivots, rref_naive(m, n, &a).1, "pivots {ctx}");
+        }
+    }
+    // pivot profile later modulo the first prime: [[1, 1, 0], [1, 1 + p, 1]] has pivots
+    // 0, 2 there and 0, 1 over Q; the certificate refuses the block solve
+    let p = Rational::from_integer(BigInt::from(qk::prime::nth_prime(0).p));
+    let a = vec![q(1), q(1), q(0), q(1), q(1) + &p, q(1)];
+    assert!(mm::pivot_solve::rref_pivot_solve(2, 3, &a).is_none());
+    check_rect(2, 3, &a, "unlucky pivots");
+}

@@ -80,7 +80,7 @@ impl Field for Q {
     }
     fn latex_elem(&self, a: &Rational) -> String {
         if a.is_integer() {
-            a.numer().to_string()
+            int_string(a.numer())
         } else {
             let s = if a.is_negative() { "-" } else { "" };
             format!("{s}\\frac{{{}}}{{{}}}", a.numer().abs(), a.denom())
@@ -103,9 +103,18 @@ impl Field for Q {
 /// `p/q` or `p` when the denominator is one.
 pub fn fmt_rational(a: &Rational) -> String {
     if a.is_integer() {
-        a.numer().to_string()
+        int_string(a.numer())
     } else {
         format!("{}/{}", a.numer(), a.denom())
+    }
+}
+
+/// The decimal text of `x`, through a machine word when it fits one (the entries of an
+/// identity or of a small-integer matrix: issue 29, 10^4 of them in one report).
+fn int_string(x: &num_bigint::BigInt) -> String {
+    match x.to_i64() {
+        Some(v) => v.to_string(),
+        None => x.to_string(),
     }
 }
 

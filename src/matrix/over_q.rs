@@ -14,7 +14,9 @@
 //! $n \le$ [`SMALL_N`] and RREF inputs with $mn \le$ [`SMALL_MN`] (thresholds measured with
 //! `benches/matrix.rs`). Larger inputs take the certified multi-modular path of
 //! [`crate::qkernels::modular`], whose cost is output-sensitive for RREF, null space and
-//! inverse. Products with inner dimension $\ge$ [`MUL_MIN_K`] use the integer kernel
+//! inverse; a rank-deficient RREF (and with it rank and null space) is first solved on one
+//! nonsingular pivot block ([`crate::qkernels::modular::pivot_solve`], no rational
+//! reconstruction; the other rows are checked exactly to lie in the span). Products with inner dimension $\ge$ [`MUL_MIN_K`] use the integer kernel
 //! [`crate::qkernels::intmul`].
 //!
 //! Each function computes the same canonical result as the generic algorithm of

@@ -196,8 +196,7 @@ fn blocks(rows: &[Vec<String>], indent: usize, width: usize) -> String {
             start + 1,
             end
         ));
-        let part: Vec<Vec<String>> = rows.iter().map(|r| r[start..end].to_vec()).collect();
-        out.push_str(&text_matrix(&part, indent));
+        out.push_str(&text_matrix_cols(rows, start..end, indent));
         start = end;
     }
     out
@@ -252,22 +251,37 @@ pub(super) fn inline_text(v: &Value) -> String {
 
 /// Column-aligned text of a matrix of strings.
 pub fn text_matrix(rows: &[Vec<String>], indent: usize) -> String {
+    let ncols = rows.first().map_or(0, Vec::len);
+    text_matrix_cols(rows, 0..ncols, indent)
+}
+
+/// [`text_matrix`] of the columns `cols` of `rows`, written cell by cell (issue 29: 10^4
+/// entries in one report).
+fn text_matrix_cols(rows: &[Vec<String>], cols: std::ops::Range<usize>, indent: usize) -> String {
     let pad = " ".repeat(indent);
-    if rows.is_empty() || rows[0].is_empty() {
+    if rows.is_empty() || cols.is_empty() {
         return format!("{pad}[]\n");
     }
-    let ncols = rows[0].len();
-    let w: Vec<usize> = (0..ncols)
+    let w: Vec<usize> = cols
+        .clone()
         .map(|j| rows.iter().map(|r| r[j].chars().count()).max().unwrap_or(1))
         .collect();
     let mut s = String::new();
     for r in rows {
-        let cells: Vec<String> = r
-            .iter()
-            .enumerate()
-            .map(|(j, c)| format!("{c:>w$}", w = w[j]))
-            .collect();
-        s.push_str(&format!("{pad}[ {} ]\n", cells.join("  ")));
+        s.push_str(&pad);
+        s.push_str("[ ");
+        for (t, j) in cols.clone().enumerate() {
+            if t > 0 {
+                s.push_str("  ");
+            }
+            let c = &r[j];
+            s.extend(std::iter::repeat_n(
+                ' ',
+                w[t].saturating_sub(c.chars().count()),
+            ));
+            s.push_str(c);
+        }
+        s.push_str(" ]\n");
     }
     s
 }

@@ -179,6 +179,21 @@ pub fn inverse_direct(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
 /// # Panics
 /// When `a.len() != n * n` or `b.len() != n * k`.
 pub fn solve_direct(n: usize, k: usize, a: &[Rational], b: &[Rational]) -> Option<Vec<Rational>> {
+    let (d, nums) = solve_direct_int(n, k, a, b)?;
+    Some(nums.into_iter().map(|x| gcd::fraction(x, &d)).collect())
+}
+
+/// [`solve_direct`] before the division: $(\delta, N)$ with $\delta \ne 0$ and $X = N /
+/// \delta$ (`N` row-major `n x k`, integral), certified as there.
+///
+/// # Panics
+/// When `a.len() != n * n` or `b.len() != n * k`.
+pub fn solve_direct_int(
+    n: usize,
+    k: usize,
+    a: &[Rational],
+    b: &[Rational],
+) -> Option<(BigInt, Vec<BigInt>)> {
     assert_eq!(a.len(), n * n, "solve_direct: A is not n x n");
     assert_eq!(b.len(), n * k, "solve_direct: B is not n x k");
     let w = n + k;
@@ -191,7 +206,7 @@ pub fn solve_direct(n: usize, k: usize, a: &[Rational], b: &[Rational]) -> Optio
     let total = n * k;
     if total == 0 {
         let singular = n > 0 && det_direct(n, a).is_zero();
-        return (!singular).then(Vec::new);
+        return (!singular).then(|| (BigInt::one(), Vec::new()));
     }
     let cert = SolveCertificate::new(&rm, n);
     let (big_delta, _) = delta(&rm);
@@ -233,9 +248,7 @@ pub fn solve_direct(n: usize, k: usize, a: &[Rational], b: &[Rational]) -> Optio
         }
         let nums: Vec<BigInt> = (0..total).map(|i| crt.lift(|t| imgs[t].1[i])).collect();
         match cert.needed_bits(&crt, &d, &nums) {
-            None => {
-                return Some(nums.into_iter().map(|x| gcd::fraction(x, &d)).collect());
-            }
+            None => return Some((d, nums)),
             // the candidate is (very likely) right: wait until the modulus can certify it
             Some(bits) => next_check = next_check.max(primes_for_bits(bits)),
         }

@@ -11,9 +11,10 @@
 //! | entry point | computes | certificate |
 //! |---|---|---|
 //! | [`rank_modular`] | $\operatorname{rank} A$ | that of [`rref_modular`] |
+//! | [`pivot_solve::rref_pivot_solve`] | RREF from a nonsingular block, no reconstruction | $A_{i,:} = A_{i,P} X$ for the other rows, exactly ([`pivot_solve`]) |
 //! | [`rank::rank_lower_bound`] | $\operatorname{rank}(A \bmod p) \le \operatorname{rank} A$ | none needed: a lower bound ([`rank`]) |
 //! | [`guess::rref_guess`] | RREF guessed from stable images | none: the caller checks an identity ([`guess`]) |
-//! | [`rref_modular`] | canonical RREF $R$ and pivot columns $P$ | $dB = B_{:,P} N$ checked modulo $M > 2\beta$ ([`rref`]) |
+//! | [`rref_modular`] | canonical RREF $R$ and pivot columns $P$ | [`pivot_solve`], else $dB = B_{:,P} N$ checked modulo $M > 2\beta$ ([`rref`]) |
 //! | [`nullspace_modular`] | basis of $\{x : Ax = 0\}$ from the RREF | that of [`rref_modular`] |
 //! | [`det_modular`] | $\det A$ | Hadamard bound ([`det`]) |
 //! | [`charpoly_modular`] | $\det(xI - A)$, low degree first | principal-minor Hadamard bound ([`charpoly`]) |
@@ -40,6 +41,7 @@ pub mod direct;
 pub mod guess;
 pub mod inverse;
 pub mod minpoly;
+pub mod pivot_solve;
 pub mod qimage;
 pub mod rank;
 pub mod rref;
@@ -83,6 +85,12 @@ impl rref::RrefSource for RatRows<'_> {
     }
 }
 
+/// The certified RREF: [`pivot_solve::rref_pivot_solve`] (no rational reconstruction), or,
+/// after an unlucky first prime, the reconstruction path [`rref::rref_int`].
+fn certified_rref(m: usize, n: usize, a: &[Rational]) -> rref::IntRref {
+    pivot_solve::rref_pivot_solve(m, n, a).unwrap_or_else(|| rref::rref_int(&RatRows::new(m, n, a)))
+}
+
 fn check_len(op: &str, len: usize, m: usize, n: usize) {
     assert_eq!(
         len,
@@ -97,8 +105,7 @@ fn check_len(op: &str, len: usize, m: usize, n: usize) {
 /// When `a.len() != m * n`.
 pub fn rank_modular(m: usize, n: usize, a: &[Rational]) -> usize {
     check_len("rank_modular", a.len(), m, n);
-    let b = RatRows::new(m, n, a);
-    rref::rref_int(&b).pivots.len()
+    certified_rref(m, n, a).pivots.len()
 }
 
 /// [`rref_q`] by the multi-modular path, whatever the size.
@@ -107,8 +114,7 @@ pub fn rank_modular(m: usize, n: usize, a: &[Rational]) -> usize {
 /// When `a.len() != m * n`.
 pub fn rref_modular(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<usize>) {
     check_len("rref_modular", a.len(), m, n);
-    let b = RatRows::new(m, n, a);
-    let res = rref::rref_int(&b);
+    let res = certified_rref(m, n, a);
     let mut out = vec![Rational::zero(); m * n];
     for (x, nu) in out.iter_mut().zip(res.num) {
         if !nu.is_zero() {
@@ -124,8 +130,7 @@ pub fn rref_modular(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<u
 /// When `a.len() != m * n`.
 pub fn nullspace_modular(m: usize, n: usize, a: &[Rational]) -> Vec<Vec<Rational>> {
     check_len("nullspace_modular", a.len(), m, n);
-    let b = RatRows::new(m, n, a);
-    let res = rref::rref_int(&b);
+    let res = certified_rref(m, n, a);
     nullspace_from_integer_rref(n, &res.num, &res.den, &res.pivots)
 }
 
