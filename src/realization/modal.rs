@@ -11,9 +11,9 @@
 //! gives exact closed forms: $\omega_n^2 = a_0$ and $\zeta = a_1/(2\sqrt{a_0})$ for
 //! $s^2 + a_1 s + a_0$, and $\tau = -1/\lambda$ for a rational $\lambda$.
 
-use crate::algebraic::roots;
 use crate::error::Result;
 use crate::field::{Q, QuadraticField, Rational, fmt_rational};
+use crate::jordan::EigenField;
 use crate::matrix::Matrix;
 use num_traits::{Signed, Zero};
 use std::f64::consts::PI;
@@ -52,33 +52,24 @@ fn sqrt_display(r: &Rational) -> String {
     }
 }
 
-/// Computes the modal table of `a`.
+/// Computes the modal table of a rational matrix ([`modal_table_over`]).
 ///
 /// # Errors
 /// `NotSquare`; failures of the root isolation (none expected).
 pub fn modal_table(a: &Matrix<Q>) -> Result<ModalTable> {
-    let cp = a.charpoly()?;
-    let mut modes = vec![];
-    for (lam, mult) in roots(&cp)? {
-        let (re, im) = lam.approx();
-        if im < 0.0 {
-            continue; // the conjugate is listed
-        }
-        modes.push(mode(&lam, (re, im), mult, im > 0.0));
-    }
-    Ok(ModalTable { modes })
+    modal_table_over(a)
 }
 
-/// The modal table of a matrix over a quadratic field $K$ (eigenvalues from
-/// [`crate::jordan::over_k::eigenvalues_over_k`]). Over a real $K$ ($A$ real) a complex pair
-/// is one mode, as over $\mathbb{Q}$; over $\mathbb{Q}(i)$ the eigenvalues of a non-real $A$
-/// do not come in conjugate pairs, so each is listed (its damping ratio and time constant
-/// from its real part, its period from $|\mathrm{Im}\,\lambda|$).
+/// The modal table of a matrix over any field with a Jordan decomposition (eigenvalues from
+/// [`crate::jordan::eigenvalues_over`]). Over a real field ($A$ real) a complex pair is one
+/// mode; over $\mathbb{Q}(i)$ the eigenvalues of a non-real $A$ do not come in conjugate
+/// pairs, so each is listed (its damping ratio and time constant from its real part, its
+/// period from $|\mathrm{Im}\,\lambda|$).
 ///
 /// # Errors
-/// `NotSquare`; those of the factorization over $K$ and of root isolation.
-pub fn modal_table_over_k(a: &Matrix<QuadraticField>) -> Result<ModalTable> {
-    let (_, factors) = crate::jordan::over_k::eigenvalues_over_k(a)?;
+/// `NotSquare`; those of the factorization and of root isolation.
+pub fn modal_table_over<F: EigenField>(a: &Matrix<F>) -> Result<ModalTable> {
+    let (_, factors) = crate::jordan::eigenvalues_over(a)?;
     let real = a.field().is_real() || crate::matrix::to_rational_matrix(a).is_some();
     let mut modes = vec![];
     for (_, mult, _, roots) in factors {

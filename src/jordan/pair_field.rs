@@ -1,9 +1,20 @@
-//! The real field of a complex pair of eigenvalues of a matrix over a real quadratic field
-//! $K = \mathbb{Q}(\sqrt d)$, $d > 0$: the field $F$ in which the real and imaginary parts
-//! of every element of $E = K(\theta)$ are exact (the rational machinery of
-//! [`crate::jordan::realfield`], applied to a primitive element of $E$).
+//! The real field of a complex pair of eigenvalues: the number field $F$ in which the real
+//! and imaginary parts of every element of $E = F_0\[t\]/(g)$ at the root $\theta$ are exact
+//! ([`PairField`], one type for every base field $F_0$; the base field builds it through
+//! [`super::EigenField::real_pair`]).
 //!
-//! # Construction
+//! An element $x = \sum_k c_k t^k$ ($c_k \in F_0$) maps to $\operatorname{Re} x + i
+//! \operatorname{Im} x = \sum_k \iota(c_k)\,\theta^k$ in $F(i)$, with $\iota: F_0 \to F$ the
+//! embedding of the base field ([`super::EigenField::into_real`]; over $\mathbb{Q}$ the
+//! identity, over $\mathbb{Q}(\sqrt d)$ given by the image of $\sqrt d$) and the table of
+//! $\theta^0, \dots, \theta^{\deg g - 1}$.
+//!
+//! # Over $\mathbb{Q}$
+//! See [`super::real`]: $\mathbb{Q}$ or $\mathbb{Q}(\sqrt{|f|})$ for a quadratic factor,
+//! $\mathbb{Q}(\beta)$ for a purely imaginary root $i\beta$, else
+//! $\mathbb{Q}(\operatorname{Re}\theta, \operatorname{Im}\theta)$ from a primitive element.
+//!
+//! # Over a real quadratic field $K = \mathbb{Q}(\sqrt d)$
 //! Let $g \in K\[x\]$ be the irreducible factor with root $\theta$ and $h(x) = g(x -
 //! k\sqrt d)$, $k = 0$ when $g \notin \mathbb{Q}\[x\]$, else $k = 1$. Then $h \notin
 //! \mathbb{Q}\[x\]$, so its roots have degree $2 \deg g = [E : \mathbb{Q}]$ over
@@ -22,30 +33,66 @@
 //! eigenvalue (the marked root of $F$ is checked by the rational construction), so the real
 //! blocks built from it are exact images of the verified complex ones.
 
-use super::RelElem;
-use crate::algebraic::{AlgebraicNumber, NfElem, NumberField};
+use super::primary::{named_field, rational_field};
+use super::realfield::{RealParts, identify_real_root, real_parts_field, simplify, theta_powers};
+use super::roots::{factor_q, quadratic_roots};
+use super::{EigenField, JordanForm, quadratic_field};
+use crate::algebraic::{AlgebraicNumber, ExtElem, NfElem, NumberField};
 use crate::error::{Error, Result};
-use crate::field::{ComplexField, ComplexPair, Field, Quadratic, QuadraticField, Rational};
+use crate::field::{ComplexField, ComplexPair, Field, Q, Quadratic, QuadraticField, Rational};
+use crate::matrix::Matrix;
 use crate::poly::Poly;
+use num_traits::{One, Zero};
 
 /// Largest degree over $\mathbb{Q}$ of $E = K(\theta)$ whose real field is built, even on
 /// request (`--expand`): the construction factors a polynomial of degree $[E:\mathbb{Q}]^2$
 /// (64 at the bound: about 6 s for a quartic factor over $K$; 100 did not finish in 100 s).
 pub const EXPAND_MAX_PRIMITIVE_DEGREE: usize = 8;
 
-/// $F$ with the images of $\sqrt d$ and of the eigenvalue $\theta$ (module docs).
-#[derive(Clone, Debug)]
+/// The real field $F$ of a complex pair with the image of the base field's generator and
+/// the powers of $\theta$ in $F(i)$ (module docs).
+#[derive(Clone, Debug, PartialEq)]
 pub struct PairField {
     /// The real field $F$.
     pub field: NumberField,
-    /// $\sqrt d \in F$.
-    pub sqrt_d: NfElem,
+    /// The image in $F$ of the base field's generator ($\sqrt d$ over $\mathbb{Q}(\sqrt d)$;
+    /// zero over $\mathbb{Q}$).
+    pub alpha: NfElem,
+    /// $\theta^0, \dots, \theta^{\deg g - 1}$ in $F(i)$, checked: $g(\theta) = 0$.
+    pub powers: Vec<ComplexPair<NfElem>>,
+}
+
+impl PairField {
+    /// $(\operatorname{Re} x, \operatorname{Im} x)$ in $F$ for $x \in E$ at $\theta$.
+    pub fn re_im<F: EigenField>(&self, k: &F, x: &ExtElem<F::Elem>) -> (NfElem, NfElem) {
+        let f = &self.field;
+        let (mut re, mut im) = (f.zero(), f.zero());
+        for (c, pw) in x.0.iter().zip(&self.powers) {
+            if k.is_zero(c) {
+                continue;
+            }
+            let c = k.into_real(c, f, &self.alpha);
+            re = f.add(&re, &f.mul(&c, &pw.re));
+            im = f.add(&im, &f.mul(&c, &pw.im));
+        }
+        (re, im)
+    }
     /// $\theta = \operatorname{Re}\theta + i \operatorname{Im}\theta$ in $F(i)$.
-    pub theta: ComplexPair<NfElem>,
+    pub fn theta(&self) -> ComplexPair<NfElem> {
+        self.powers.get(1).cloned().unwrap_or_else(|| ComplexPair {
+            re: self.field.zero(),
+            im: self.field.zero(),
+        })
+    }
+    /// A matrix over the base field as a matrix over $F$.
+    pub fn matrix<F: EigenField>(&self, a: &Matrix<F>) -> Matrix<NumberField> {
+        let k = a.field();
+        a.map(&self.field, |x| k.into_real(x, &self.field, &self.alpha))
+    }
 }
 
 /// Whether the real field of `z` may have degree at most
-/// [`crate::jordan::real::EXPAND_MAX_DEGREE`] (the test of the rational realization).
+/// [`crate::jordan::real::EXPAND_MAX_DEGREE`].
 pub(crate) fn small_real_field(z: &AlgebraicNumber) -> bool {
     use crate::jordan::real::{EXPAND_MAX_DEGREE, parts_affordable};
     if !parts_affordable(z.minpoly()) {
@@ -55,6 +102,70 @@ pub(crate) fn small_real_field(z: &AlgebraicNumber) -> bool {
         (Ok(a), Ok(b)) => a.degree() <= EXPAND_MAX_DEGREE && b.degree() <= EXPAND_MAX_DEGREE,
         _ => false,
     }
+}
+
+/// The real field of the pair of eigenvalue `ev` of a rational matrix (module docs of
+/// [`super::real`]).
+///
+/// # Errors
+/// `Limit` or `Unsupported` when the field is not found (the pair then stays compact).
+pub(crate) fn pair_field_q(jf: &JordanForm<Q>, ev: usize) -> Result<PairField> {
+    let e = &jf.eigenvalues[ev];
+    let p = &e.minpoly;
+    let done = |field: NumberField, powers| PairField {
+        alpha: field.zero(),
+        field,
+        powers,
+    };
+    if p.deg() == 2 {
+        // theta = a0 + s sqrt(d), d < 0: Im = s sqrt(-d) (s > 0 for the upper root)
+        let (a0, s, d) = quadratic_roots(p).expect("irreducible");
+        let g = -d;
+        let f = if g.is_one() {
+            rational_field()
+        } else {
+            quadratic_field(&g)
+        };
+        let re = f.from_rational(&a0);
+        let im = if g.is_one() {
+            f.from_rational(&s)
+        } else {
+            f.from_poly(&Poly::new(Q, vec![Rational::zero(), s]))
+        };
+        let powers = theta_powers(p, &f, &re, &im)?;
+        return Ok(done(f, powers));
+    }
+    if e.number.is_pure_imaginary() {
+        // theta = i beta: beta is a real root of r(x) = p(i x) = sum c_k (-1)^(k/2) x^k
+        let r = Poly::new(
+            Q,
+            p.coeffs()
+                .iter()
+                .enumerate()
+                .map(|(k, c)| if (k / 2) % 2 == 0 { c.clone() } else { -c })
+                .collect(),
+        );
+        let factors: Vec<Poly<Q>> = factor_q(&r)?.into_iter().map(|(g, _)| g).collect();
+        let (g, beta) =
+            identify_real_root(&factors, &e.number, &Rational::zero(), &Rational::one())?;
+        let f = named_field(&g, (beta.approx().0, 0.0), &format!("b{}", ev + 1));
+        let b = if g.deg() == 1 {
+            f.from_rational(&-g.coeff(0))
+        } else {
+            f.generator()
+        };
+        let parts = simplify(RealParts {
+            re: f.zero(),
+            im: b,
+            field: f,
+            primitive: None,
+            powers: vec![],
+        });
+        let powers = theta_powers(p, &parts.field, &parts.re, &parts.im)?;
+        return Ok(done(parts.field, powers));
+    }
+    let parts = real_parts_field(&e.number, &format!("c{}", ev + 1))?;
+    Ok(done(parts.field, parts.powers))
 }
 
 /// $p(x)$ for $p$ over $K$ at $x \in F(i)$, coefficients mapped by $\sqrt d \mapsto s$.
@@ -111,7 +222,7 @@ pub fn pair_field(
     } else {
         g.compose(&lin)
     };
-    let (_, roots) = super::eigen::roots_of_factor(&h)?;
+    let (_, roots) = super::decompose::roots_of_quadratic(&h)?;
     let want = (approx.0 + shift as f64 * sq, approx.1);
     let dist = |z: &(f64, f64)| (z.0 - want.0).hypot(z.1 - want.1);
     let gamma = roots
@@ -170,45 +281,14 @@ pub fn pair_field(
     if !cf.is_zero(&eval_k(&cf, &s, g.coeffs(), &theta)) || f.is_zero(&theta.im) {
         return Err(bad("g(theta) != 0"));
     }
+    let mut powers = vec![cf.one()];
+    while powers.len() < g.deg() {
+        let next = cf.mul(powers.last().expect("one"), &theta);
+        powers.push(next);
+    }
     Ok(Some(PairField {
         field: f,
-        sqrt_d: s,
-        theta,
+        alpha: s,
+        powers,
     }))
-}
-
-impl PairField {
-    /// The image in $F$ of an element of $K$.
-    pub fn base(&self, c: &Quadratic) -> NfElem {
-        let f = &self.field;
-        f.add(
-            &f.from_rational(&c.a),
-            &f.mul(&f.from_rational(&c.b), &self.sqrt_d),
-        )
-    }
-    /// $(\operatorname{Re} x, \operatorname{Im} x)$ in $F$ for $x \in E$ at $\theta$.
-    pub fn re_im(&self, x: &RelElem) -> (NfElem, NfElem) {
-        let cf = ComplexField::new(self.field.clone());
-        let z = eval_k(&cf, &self.sqrt_d, &x.0, &self.theta);
-        (z.re, z.im)
-    }
-    /// $A$ over $K$ as a matrix over $F$.
-    pub fn matrix(
-        &self,
-        a: &crate::matrix::Matrix<QuadraticField>,
-    ) -> crate::matrix::Matrix<NumberField> {
-        a.map(&self.field, |x| self.base(x))
-    }
-    /// The definition line of $F$'s generator when $[F : \mathbb{Q}] \ge 3$ (shown as a
-    /// symbol), else `None` ($\mathbb{Q}$ and $\mathbb{Q}(\sqrt f)$ show their radicals).
-    pub fn symbol(&self) -> Option<String> {
-        let f = &self.field;
-        (f.degree() >= 3).then(|| {
-            format!(
-                "{} = {}",
-                f.0.var,
-                crate::jordan::value_display(f.modulus(), f.root_approx())
-            )
-        })
-    }
 }
