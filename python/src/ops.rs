@@ -243,7 +243,7 @@ pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResu
         kv.push(("verified", Out::Bool(rf.verified)));
         kv.push((
             "notes",
-            Out::List(rf.notes.iter().map(|s| Out::Str(s.clone())).collect()),
+            Out::List(rf.note_lines().into_iter().map(Out::Str).collect()),
         ));
         kv.push(("report", report(&rf.report())));
     } else {

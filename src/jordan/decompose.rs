@@ -261,7 +261,9 @@ impl EigenField for QuadraticField {
         let c = |i: usize| x.0.get(i).cloned().unwrap_or_default();
         let m = f.modulus();
         match f.degree() {
-            1 => f.to_rational(x).map(|q| Quadratic::new(q, Rational::default())),
+            1 => f
+                .to_rational(x)
+                .map(|q| Quadratic::new(q, Rational::default())),
             2 if m.coeff(1) == Rational::default()
                 && -m.coeff(0) == Rational::from_integer(self.d().clone()) =>
             {

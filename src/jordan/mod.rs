@@ -98,6 +98,9 @@ pub struct Eigenvalue {
     pub blocks: Vec<usize>,
 }
 
+/// $J$ and $T$ over one extension of the base field ([`JordanForm::single_field`]).
+pub type JPair<F> = (Matrix<Ext<F>>, Matrix<Ext<F>>);
+
 /// The columns of one eigenvalue, exact in one field.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RootColumns<F: Field = Q> {
@@ -276,7 +279,7 @@ impl<F: EigenField> JordanForm<F> {
     /// $J$ and $T$ as exact matrices over one field, when every eigenvalue lies in one
     /// field: $F$ itself (all factors linear; then over $F$ as an extension of degree 1) or
     /// one quadratic field over $\mathbb{Q}$ ($\mathbb{Q}(i)$, $\mathbb{Q}(\sqrt f)$).
-    pub fn single_field(&self) -> Option<(Matrix<Ext<F>>, Matrix<Ext<F>>)> {
+    pub fn single_field(&self) -> Option<JPair<F>> {
         let cols = self.root_columns();
         let mut field: Option<Ext<F>> = None;
         for c in &cols {
@@ -287,9 +290,8 @@ impl<F: EigenField> JordanForm<F> {
                 field = Some(c.field.clone());
             }
         }
-        let field = field.unwrap_or_else(|| {
-            Ext::with_var(&Poly::x(self.base().clone()), (0.0, 0.0), "t")
-        });
+        let field =
+            field.unwrap_or_else(|| Ext::with_var(&Poly::x(self.base().clone()), (0.0, 0.0), "t"));
         let n = self.n();
         let mut t = Matrix::zeros(field.clone(), n, n);
         let mut j = Matrix::zeros(field.clone(), n, n);

@@ -169,7 +169,9 @@ impl<F: Field> RealBlock<F> {
 impl RealBlock<Q> {
     /// The block's field, `T` and `J` when it is written in one real number field (a real
     /// root, or an expanded pair).
-    pub fn exact_entries(&self) -> Option<(&NumberField, &Matrix<NumberField>, &Matrix<NumberField>)> {
+    pub fn exact_entries(
+        &self,
+    ) -> Option<(&NumberField, &Matrix<NumberField>, &Matrix<NumberField>)> {
         match &self.entries {
             RealEntries::Root { field, t, j } => Some((field, t, j)),
             RealEntries::Expanded { pair, t, j } => Some((&pair.field, t, j)),
@@ -263,7 +265,10 @@ impl<F: EigenField> JordanForm<F> {
                 Ok(p) => p,
                 Err(error) => {
                     if expand {
-                        notes.push(RealNote { eigenvalue: ev, error });
+                        notes.push(RealNote {
+                            eigenvalue: ev,
+                            error,
+                        });
                     }
                     None
                 }
@@ -289,7 +294,8 @@ impl<F: EigenField> JordanForm<F> {
                 }
                 None => {
                     let (re, im) = exact_parts(e);
-                    let (t_approx, j_approx) = pair_approx(&rc.field, &rc.v, e.approx, &comp.blocks);
+                    let (t_approx, j_approx) =
+                        pair_approx(&rc.field, &rc.v, e.approx, &comp.blocks);
                     let cp = CompactPair {
                         field: rc.field,
                         v: rc.v,

@@ -103,6 +103,18 @@ impl<F: Field> RealModalBlock<F> {
     }
 }
 
+impl RealModalBlock<Q> {
+    /// The block's field and $(A, B, C)$ when it is written in one real number field (a
+    /// real root, or an expanded pair).
+    pub fn exact_entries(&self) -> Option<(&NumberField, [&Matrix<NumberField>; 3])> {
+        match self {
+            RealModalBlock::Root(b) => Some((&b.field, [&b.a, &b.b, &b.c])),
+            RealModalBlock::Pair { pair, a, b, c, .. } => Some((&pair.field, [a, b, c])),
+            _ => None,
+        }
+    }
+}
+
 /// The Jordan-method minimal realization.
 #[derive(Clone, Debug)]
 pub struct JordanMinimal<F: Field = Q> {

@@ -153,7 +153,11 @@ pub(super) fn part_text<F: Field>(
         return "0".into();
     }
     if let Some(c) = f.to_base(x) {
-        return if imag { "0".into() } else { f.base().fmt_elem(&c) };
+        return if imag {
+            "0".into()
+        } else {
+            f.base().fmt_elem(&c)
+        };
     }
     if *x == f.generator() {
         return (if imag { theta.1 } else { theta.0 }).to_string();
@@ -181,16 +185,19 @@ pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue) -> (Str
 fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
     let (re, im) = theta_parts(cp, e);
     let k = &e.symbol[1..];
-    let define = |sym: String, what: &str, x: &Option<crate::algebraic::AlgebraicNumber>, v| {
-        match x {
-            Some(x) if x.degree() <= 2 => None,
-            Some(x) => Some(format!("{sym} = {what} {} = {}", e.symbol, x.value_string())),
-            None => Some(format!(
-                "{sym} = {what} {}, near {}",
-                e.symbol,
-                crate::algebraic::display::approx_text((v, 0.0))
-            )),
-        }
+    let define = |sym: String, what: &str, x: &Option<crate::algebraic::AlgebraicNumber>, v| match x
+    {
+        Some(x) if x.degree() <= 2 => None,
+        Some(x) => Some(format!(
+            "{sym} = {what} {} = {}",
+            e.symbol,
+            x.value_string()
+        )),
+        None => Some(format!(
+            "{sym} = {what} {}, near {}",
+            e.symbol,
+            crate::algebraic::display::approx_text((v, 0.0))
+        )),
     };
     let mut out = vec![format!("{} = {re} + {im}*i", e.symbol)];
     out.extend(define(format!("a{k}"), "Re", &cp.re, e.approx.0));

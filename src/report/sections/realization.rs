@@ -14,11 +14,7 @@ use crate::realization::{
 use crate::report::{Report, Value, str_list};
 
 /// Writes a block $(A, B, C)$ at offset `off`: block-diagonal `A`, stacked `B`, `C`.
-fn put_block<K: Field>(
-    [ba, bb, bc]: [&Matrix<K>; 3],
-    off: usize,
-    [a, b, c]: [&mut Cells; 3],
-) {
+fn put_block<K: Field>([ba, bb, bc]: [&Matrix<K>; 3], off: usize, [a, b, c]: [&mut Cells; 3]) {
     a.block((off, off), ba);
     b.block((off, 0), bb);
     c.block((0, off), bc);
@@ -85,7 +81,12 @@ impl<F: EigenField> JordanMinimal<F> {
         let named_root = |b: &ModalBlock<F>| named(&b.field, &jf.eigenvalues[b.eigenvalue]);
         let mut out = vec![];
         match &self.real {
-            None => out.extend(self.blocks.iter().filter(|b| named_root(b)).map(|b| line(b.eigenvalue))),
+            None => out.extend(
+                self.blocks
+                    .iter()
+                    .filter(|b| named_root(b))
+                    .map(|b| line(b.eigenvalue)),
+            ),
             Some(real) => {
                 for blk in real {
                     match blk {
