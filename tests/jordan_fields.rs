@@ -371,12 +371,20 @@ fn modal_table_over_lists_the_eigenvalues_of_a() {
     let k = QuadraticField::gaussian();
     let a = mat(&k, &[&[(0, 1), (3, 1)], &[(0, 0), (-1, 2)]]);
     let t = modal_table_over(&a).unwrap();
-    let mut v: Vec<&str> = t.modes.iter().map(|m| m.eigenvalue.as_str()).collect();
+    let mut v: Vec<String> = t
+        .modes
+        .iter()
+        .map(|m| m.eigenvalue.value_string())
+        .collect();
     v.sort();
     assert_eq!(v, ["-1 + 2*i", "i"]);
     assert!(t.modes.iter().all(|m| !m.paired));
     // -1 + 2i: omega_n = sqrt 5, zeta = 1/sqrt 5, tau = 1
-    let m = t.modes.iter().find(|m| m.eigenvalue == "-1 + 2*i").unwrap();
+    let m = t
+        .modes
+        .iter()
+        .find(|m| m.eigenvalue.value_string() == "-1 + 2*i")
+        .unwrap();
     assert!((m.damping_ratio.unwrap() - 1.0 / 5f64.sqrt()).abs() < 1e-12);
     assert!((m.time_constant_s.unwrap() - 1.0).abs() < 1e-12);
     // a real matrix over Q(sqrt 2) with a complex pair: one mode for the pair

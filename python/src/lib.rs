@@ -432,8 +432,8 @@ impl System {
                             .iter()
                             .map(|md| {
                                 Out::Dict(vec![
-                                    ("eigenvalue", Out::Str(md.eigenvalue.clone())),
-                                    ("minpoly", Out::Str(md.minpoly.clone())),
+                                    ("eigenvalue", Out::Str(md.eigenvalue.value_string())),
+                                    ("minpoly", Out::Str(md.eigenvalue.minpoly().to_string())),
                                     (
                                         "approx",
                                         Out::Tuple(vec![

@@ -11,18 +11,16 @@
 //! What differs between base fields is a method of [`EigenField`], never a copy of the
 //! algorithm: the factorization with certified roots, the exact field of one eigenvalue
 //! ([`EigenField::root_field`]) and, for the real forms, whether the field is real and the
-//! real field of a complex pair ([`EigenField::real_pair`]).
+//! real field of a complex pair ([`EigenField::real_pair`]); the implementations for
+//! $\mathbb{Q}$ and the quadratic fields are in `fields.rs`.
 
 use super::chains::{Chains, jordan_chains};
-use super::pair_field::{PairField, pair_field, pair_field_q};
+use super::pair_field::{PairField, RealEmbed};
 use super::primary::Component;
 use super::{Eigenvalue, Embedding, JordanForm, roots, simple};
-use crate::algebraic::{
-    AlgebraicNumber, Ext, NfElem, NumberField, factor_over_quadratic, rational_minpoly,
-    roots_of_quadratic_factor,
-};
-use crate::error::{Error, Result};
-use crate::field::{Field, Q, Quadratic, QuadraticField, Rational};
+use crate::algebraic::{AlgebraicNumber, Ext};
+use crate::error::Result;
+use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 
@@ -35,7 +33,7 @@ pub type FactorRoots<F> = (Poly<F>, usize, Poly<Q>, CertifiedRoots);
 
 /// A base field of the exact Jordan decomposition: it factors polynomials and certifies
 /// the roots of each factor; the component of a factor has a generic default.
-pub trait EigenField: Field + 'static {
+pub trait EigenField: RealEmbed + 'static {
     /// The irreducible factors of the monic `chi` over the field with their roots.
     ///
     /// # Errors
@@ -76,13 +74,6 @@ pub trait EigenField: Field + 'static {
             Box::new(|x| x.clone()),
         )
     }
-    /// Whether the field is real (its matrices have a real Jordan form).
-    fn is_real(&self) -> bool;
-    /// The image of `c` in the real number field `f`, given the image `alpha` of the field's
-    /// generator.
-    fn into_real(&self, c: &Self::Elem, f: &NumberField, alpha: &NfElem) -> NfElem;
-    /// `x` of the real field `f` as an element of this field, when it lies in it.
-    fn from_real(&self, f: &NumberField, x: &NfElem) -> Option<Self::Elem>;
     /// The real field of the complex pair of eigenvalue `ev` of `jf` (the upper root);
     /// `None` when it is not built (it may be large and `expand` is false, or the pair is
     /// written with its radical).
@@ -137,169 +128,6 @@ pub fn generic_component<F: Field + 'static>(
         chains: v,
         left_chains: w,
     })
-}
-
-impl EigenField for Q {
-    fn eigen_factors(chi: &Poly<Q>) -> Result<Vec<FactorRoots<Q>>> {
-        let mut out = vec![];
-        for (p, e) in roots::factor_q(chi)? {
-            let rts = roots::certified_roots(&p)?;
-            out.push((p.clone(), e, p, rts));
-        }
-        Ok(out)
-    }
-    /// Over $\mathbb{Q}$ a repeated factor goes through the rational restriction to its
-    /// generalized eigenspace ([`super::PrimaryComponent::compute`]).
-    fn component(
-        a: &Matrix<Q>,
-        chi: &Poly<Q>,
-        (g, e, minpoly): (&Poly<Q>, usize, Poly<Q>),
-        roots: Vec<(f64, f64)>,
-    ) -> Result<Component<Q>> {
-        if e == 1 && g.deg() >= 2 {
-            generic_component(a, chi, (g, e, minpoly), roots)
-        } else {
-            Component::compute(a, g, e, roots)
-        }
-    }
-    /// $\mathbb{Q}$ for a rational root, $\mathbb{Q}(\sqrt f)$ (displayed with its radical,
-    /// one field for both roots) for a quadratic factor, else the component field marked at
-    /// the root.
-    fn root_field(jf: &JordanForm<Q>, ev: usize) -> (NumberField, Embedding<'_, Q>) {
-        let e = &jf.eigenvalues[ev];
-        let c = &jf.components[e.component];
-        match c.degree() {
-            1 => {
-                let k = super::primary::rational_field();
-                let k2 = k.clone();
-                (
-                    k,
-                    Box::new(move |x: &NfElem| {
-                        k2.from_rational(&c.field.to_rational(x).expect("in Q"))
-                    }),
-                )
-            }
-            2 => {
-                let (a0, s, fd) = super::roots::quadratic_roots(&c.factor).expect("irreducible");
-                let positive = if num_traits::Signed::is_negative(&fd) {
-                    e.approx.1 > 0.0
-                } else {
-                    e.approx.0 > crate::field::rational_to_f64(&a0)
-                };
-                let s = if positive { s } else { -s };
-                (
-                    super::quadratic_field(&fd),
-                    Box::new(move |x: &NfElem| super::quadratic_image(x, &a0, &s)),
-                )
-            }
-            _ => (
-                c.embedding(e.root, &e.symbol),
-                Box::new(|x: &NfElem| x.clone()),
-            ),
-        }
-    }
-    fn is_real(&self) -> bool {
-        true
-    }
-    fn into_real(&self, c: &Rational, f: &NumberField, _: &NfElem) -> NfElem {
-        f.from_rational(c)
-    }
-    fn from_real(&self, f: &NumberField, x: &NfElem) -> Option<Rational> {
-        f.to_rational(x)
-    }
-    /// Built when it may be small ([`super::real::EXPAND_MAX_DEGREE`]) or on request, for
-    /// eigenvalues of degree at most [`super::real::EXPAND_MAX_EIGENVALUE_DEGREE`].
-    fn real_pair(jf: &JordanForm<Q>, ev: usize, expand: bool) -> Result<Option<PairField>> {
-        use super::real::{EXPAND_MAX_DEGREE, EXPAND_MAX_EIGENVALUE_DEGREE, exact_parts};
-        let e = &jf.eigenvalues[ev];
-        let small = matches!(exact_parts(e), (Some(a), Some(b))
-            if a.degree() <= EXPAND_MAX_DEGREE && b.degree() <= EXPAND_MAX_DEGREE);
-        if !expand && !small {
-            return Ok(None);
-        }
-        let degree = e.minpoly.deg();
-        if degree > EXPAND_MAX_EIGENVALUE_DEGREE {
-            return Err(Error::Limit(format!(
-                "eigenvalue {} has degree {degree}: its real field may have degree up to {} \
-                 (`--expand` writes out pairs of degree at most {EXPAND_MAX_EIGENVALUE_DEGREE})",
-                e.symbol,
-                degree * (degree - 1)
-            )));
-        }
-        match pair_field_q(jf, ev) {
-            Ok(pf) if expand || pf.field.degree() <= EXPAND_MAX_DEGREE => Ok(Some(pf)),
-            Ok(_) => Ok(None),
-            Err(err) if expand => Err(err),
-            Err(_) => Ok(None),
-        }
-    }
-}
-
-impl EigenField for QuadraticField {
-    fn eigen_factors(chi: &Poly<QuadraticField>) -> Result<Vec<FactorRoots<QuadraticField>>> {
-        let mut out = vec![];
-        if chi.deg() == 0 {
-            return Ok(out);
-        }
-        for (g, e) in factor_over_quadratic(chi)? {
-            let (m, roots) = roots_of_quadratic(&g)?;
-            out.push((g, e, m, roots));
-        }
-        Ok(out)
-    }
-    fn is_real(&self) -> bool {
-        QuadraticField::is_real(self)
-    }
-    fn into_real(&self, c: &Quadratic, f: &NumberField, alpha: &NfElem) -> NfElem {
-        f.add(
-            &f.from_rational(&c.a),
-            &f.mul(&f.from_rational(&c.b), alpha),
-        )
-    }
-    /// $\mathbb{Q}$ or $\mathbb{Q}(\sqrt d)$ itself (modulus $x^2 - d$).
-    fn from_real(&self, f: &NumberField, x: &NfElem) -> Option<Quadratic> {
-        let c = |i: usize| x.0.get(i).cloned().unwrap_or_default();
-        let m = f.modulus();
-        match f.degree() {
-            1 => f
-                .to_rational(x)
-                .map(|q| Quadratic::new(q, Rational::default())),
-            2 if m.coeff(1) == Rational::default()
-                && -m.coeff(0) == Rational::from_integer(self.d().clone()) =>
-            {
-                Some(Quadratic::new(c(0), c(1)))
-            }
-            _ => None,
-        }
-    }
-    /// A pair of a rational quadratic factor keeps its radical form (`None`); else the real
-    /// field of [`pair_field`].
-    fn real_pair(
-        jf: &JordanForm<QuadraticField>,
-        ev: usize,
-        expand: bool,
-    ) -> Result<Option<PairField>> {
-        let e = &jf.eigenvalues[ev];
-        let c = &jf.components[e.component];
-        if c.factor.deg() == 2 && c.minpoly.deg() == 2 {
-            return Ok(None);
-        }
-        pair_field(&c.factor, e.approx, &format!("c{}", &e.symbol[1..]), expand)
-    }
-}
-
-/// The roots of the monic irreducible `g` over $K$ (under the embedding fixing $\alpha$),
-/// as certified algebraic numbers with approximations, real part descending, with the
-/// minimal polynomial over $\mathbb{Q}$ they share
-/// ([`crate::algebraic::roots_of_quadratic_factor`]: the exact choice of the roots that
-/// belong to $A$, not to $\bar A$).
-///
-/// # Errors
-/// `Limit` from root isolation or from the exact choice of the roots of `g`.
-pub fn roots_of_quadratic(g: &Poly<QuadraticField>) -> Result<(Poly<Q>, CertifiedRoots)> {
-    let m = rational_minpoly(g);
-    let all = roots::certified_roots(&m)?;
-    Ok((m, roots_of_quadratic_factor(g, all)?))
 }
 
 /// The eigenvalues of $A$ without chains: $\chi_A$ and, per irreducible factor $g$ over

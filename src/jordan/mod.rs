@@ -40,6 +40,7 @@ pub mod chains;
 pub(crate) mod coeffs;
 pub mod decompose;
 pub mod derivation;
+pub mod fields;
 pub mod pair_field;
 pub mod params;
 pub mod primary;

@@ -33,16 +33,21 @@
 //! eigenvalue (the marked root of $F$ is checked by the rational construction), so the real
 //! blocks built from it are exact images of the verified complex ones.
 
-use super::primary::{named_field, rational_field};
-use super::realfield::{RealParts, identify_real_root, real_parts_field, simplify, theta_powers};
-use super::roots::{factor_q, quadratic_roots};
-use super::{EigenField, JordanForm, quadratic_field};
 use crate::algebraic::{AlgebraicNumber, ExtElem, NfElem, NumberField};
-use crate::error::{Error, Result};
-use crate::field::{ComplexField, ComplexPair, Field, Q, Quadratic, QuadraticField, Rational};
+use crate::field::{ComplexPair, Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use num_traits::{One, Zero};
+
+/// How a base field sits in the real number fields of the real forms.
+pub trait RealEmbed: Field {
+    /// Whether the field is real (its matrices have a real Jordan form).
+    fn is_real(&self) -> bool;
+    /// The image of `c` in the real number field `f`, given the image `alpha` of the field's
+    /// generator.
+    fn into_real(&self, c: &Self::Elem, f: &NumberField, alpha: &NfElem) -> NfElem;
+    /// `x` of the real field `f` as an element of this field, when it lies in it.
+    fn from_real(&self, f: &NumberField, x: &NfElem) -> Option<Self::Elem>;
+}
 
 /// Largest degree over $\mathbb{Q}$ of $E = K(\theta)$ whose real field is built, even on
 /// request (`--expand`): the construction factors a polynomial of degree $[E:\mathbb{Q}]^2$
@@ -64,7 +69,7 @@ pub struct PairField {
 
 impl PairField {
     /// $(\operatorname{Re} x, \operatorname{Im} x)$ in $F$ for $x \in E$ at $\theta$.
-    pub fn re_im<F: EigenField>(&self, k: &F, x: &ExtElem<F::Elem>) -> (NfElem, NfElem) {
+    pub fn re_im<F: RealEmbed>(&self, k: &F, x: &ExtElem<F::Elem>) -> (NfElem, NfElem) {
         let f = &self.field;
         let (mut re, mut im) = (f.zero(), f.zero());
         for (c, pw) in x.0.iter().zip(&self.powers) {
@@ -85,7 +90,7 @@ impl PairField {
         })
     }
     /// A matrix over the base field as a matrix over $F$.
-    pub fn matrix<F: EigenField>(&self, a: &Matrix<F>) -> Matrix<NumberField> {
+    pub fn matrix<F: RealEmbed>(&self, a: &Matrix<F>) -> Matrix<NumberField> {
         let k = a.field();
         a.map(&self.field, |x| k.into_real(x, &self.field, &self.alpha))
     }
@@ -94,7 +99,6 @@ impl PairField {
 /// Whether the real field of `z` may have degree at most
 /// [`crate::jordan::real::EXPAND_MAX_DEGREE`].
 pub(crate) fn small_real_field(z: &AlgebraicNumber) -> bool {
-    use crate::jordan::real::{EXPAND_MAX_DEGREE, parts_affordable};
     if !parts_affordable(z.minpoly()) {
         return false;
     }
@@ -104,191 +108,45 @@ pub(crate) fn small_real_field(z: &AlgebraicNumber) -> bool {
     }
 }
 
-/// The real field of the pair of eigenvalue `ev` of a rational matrix (module docs of
-/// [`super::real`]).
-///
-/// # Errors
-/// `Limit` or `Unsupported` when the field is not found (the pair then stays compact).
-pub(crate) fn pair_field_q(jf: &JordanForm<Q>, ev: usize) -> Result<PairField> {
-    let e = &jf.eigenvalues[ev];
-    let p = &e.minpoly;
-    let done = |field: NumberField, powers| PairField {
-        alpha: field.zero(),
-        field,
-        powers,
-    };
-    if p.deg() == 2 {
-        // theta = a0 + s sqrt(d), d < 0: Im = s sqrt(-d) (s > 0 for the upper root)
-        let (a0, s, d) = quadratic_roots(p).expect("irreducible");
-        let g = -d;
-        let f = if g.is_one() {
-            rational_field()
-        } else {
-            quadratic_field(&g)
-        };
-        let re = f.from_rational(&a0);
-        let im = if g.is_one() {
-            f.from_rational(&s)
-        } else {
-            f.from_poly(&Poly::new(Q, vec![Rational::zero(), s]))
-        };
-        let powers = theta_powers(p, &f, &re, &im)?;
-        return Ok(done(f, powers));
-    }
-    if e.number.is_pure_imaginary() {
-        // theta = i beta: beta is a real root of r(x) = p(i x) = sum c_k (-1)^(k/2) x^k
-        let r = Poly::new(
-            Q,
-            p.coeffs()
+/// Largest eigenvalue degree for which the minimal polynomials of $\operatorname{Re}\theta$
+/// (degree up to $d(d-1)/2$) and $\operatorname{Im}\theta$ (up to $d(d-1)$) are computed.
+pub const PARTS_MAX_DEGREE: usize = 4;
+
+/// Largest real-field degree that [`JordanForm::real_form`] expands into by default.
+pub const EXPAND_MAX_DEGREE: usize = 4;
+
+/// Largest eigenvalue degree whose pair is expanded into its real field even on request
+/// (`--expand`): the real field of a generic factor of degree $d$ has degree $d(d-1)$, found by
+/// factoring a polynomial of that degree (degree 5, field 20: 0.6 s; degree 6, field 30: 16 s
+/// for the companion matrix of $x^6 - x + 1$, and more than 60 s for a dense random 6x6).
+pub const EXPAND_MAX_EIGENVALUE_DEGREE: usize = 5;
+
+/// Bit size (numerator plus denominator) above which the parts of a root of degree 3 or 4
+/// are not computed: the composed polynomials of degree up to 12 and their factorization
+/// then cost seconds (a mutant with an entry `-1e-300` has 300-digit coefficients), and the
+/// compact form is exact anyway.
+pub const PARTS_MAX_BITS: u64 = 256;
+
+/// Whether [`exact_parts`] computes $\operatorname{Re}\theta$ and $\operatorname{Im}\theta$
+/// for a root of `p`: degree at most [`PARTS_MAX_DEGREE`], and for degree 3 or 4
+/// coefficients of at most [`PARTS_MAX_BITS`] bits.
+pub fn parts_affordable(p: &Poly<Q>) -> bool {
+    p.deg() <= 2
+        || (p.deg() <= PARTS_MAX_DEGREE
+            && p.coeffs()
                 .iter()
-                .enumerate()
-                .map(|(k, c)| if (k / 2) % 2 == 0 { c.clone() } else { -c })
-                .collect(),
-        );
-        let factors: Vec<Poly<Q>> = factor_q(&r)?.into_iter().map(|(g, _)| g).collect();
-        let (g, beta) =
-            identify_real_root(&factors, &e.number, &Rational::zero(), &Rational::one())?;
-        let f = named_field(&g, (beta.approx().0, 0.0), &format!("b{}", ev + 1));
-        let b = if g.deg() == 1 {
-            f.from_rational(&-g.coeff(0))
-        } else {
-            f.generator()
-        };
-        let parts = simplify(RealParts {
-            re: f.zero(),
-            im: b,
-            field: f,
-            primitive: None,
-            powers: vec![],
-        });
-        let powers = theta_powers(p, &parts.field, &parts.re, &parts.im)?;
-        return Ok(done(parts.field, powers));
-    }
-    let parts = real_parts_field(&e.number, &format!("c{}", ev + 1))?;
-    Ok(done(parts.field, parts.powers))
+                .all(|c| c.numer().bits() + c.denom().bits() <= PARTS_MAX_BITS))
 }
 
-/// $p(x)$ for $p$ over $K$ at $x \in F(i)$, coefficients mapped by $\sqrt d \mapsto s$.
-fn eval_k(
-    cf: &ComplexField<NumberField>,
-    s: &NfElem,
-    p: &[Quadratic],
-    x: &ComplexPair<NfElem>,
-) -> ComplexPair<NfElem> {
-    let f = &cf.base;
-    let mut acc = cf.zero();
-    for c in p.iter().rev() {
-        let c = f.add(&f.from_rational(&c.a), &f.mul(&f.from_rational(&c.b), s));
-        acc = cf.add(&cf.mul(&acc, x), &cf.from_base(&c));
-    }
-    acc
-}
-
-/// The real field of the pair of the root near `approx` of the irreducible `g` over a real
-/// $K$ (module docs); `None` when `expand` is false and the field may have degree above
-/// [`crate::jordan::real::EXPAND_MAX_DEGREE`]. `var` names a primitive element of degree
-/// $\ge 3$ in displays.
-///
-/// # Errors
-/// `Invalid` for a non-real $K$ or a real root; `Limit` when $[E : \mathbb{Q}] >$
-/// [`EXPAND_MAX_PRIMITIVE_DEGREE`]; those of root isolation and of
-/// [`crate::jordan::realfield`]; `Verification` if a check fails.
-pub fn pair_field(
-    g: &Poly<QuadraticField>,
-    approx: (f64, f64),
-    var: &str,
-    expand: bool,
-) -> Result<Option<PairField>> {
-    let k = g.field().clone();
-    if !k.is_real() || approx.1 == 0.0 {
-        return Err(Error::Invalid(format!(
-            "the real field of a pair needs a real K and a non-real root (K = {k})"
-        )));
-    }
-    let shift = if g.coeffs().iter().all(|c| k.to_rational(c).is_some()) {
-        1
+/// $\operatorname{Re}\theta$ and $\operatorname{Im}\theta$ as certified algebraic numbers
+/// when [`parts_affordable`] (composed polynomials of degree $d(d-1)/2$ and
+/// $d(d-1)$, factored), else `None`.
+pub(crate) fn exact_parts(
+    e: &super::Eigenvalue,
+) -> (Option<AlgebraicNumber>, Option<AlgebraicNumber>) {
+    if parts_affordable(&e.minpoly) {
+        (e.number.try_re().ok(), e.number.try_im().ok())
     } else {
-        0
-    };
-    let alpha = k.gen_elem();
-    let sq = crate::field::rational_to_f64(&Rational::from_integer(k.d().clone())).sqrt();
-    // h(x) = g(x - shift sqrt d)
-    let lin = Poly::new(
-        k.clone(),
-        vec![k.neg(&k.mul(&k.from_i64(shift), &alpha)), k.one()],
-    );
-    let h = if shift == 0 {
-        g.clone()
-    } else {
-        g.compose(&lin)
-    };
-    let (_, roots) = super::decompose::roots_of_quadratic(&h)?;
-    let want = (approx.0 + shift as f64 * sq, approx.1);
-    let dist = |z: &(f64, f64)| (z.0 - want.0).hypot(z.1 - want.1);
-    let gamma = roots
-        .into_iter()
-        .min_by(|x, y| dist(&x.1).total_cmp(&dist(&y.1)))
-        .map(|x| x.0)
-        .ok_or_else(|| Error::Verification(format!("no root of {h}")))?;
-    if !expand && !small_real_field(&gamma) {
-        return Ok(None);
+        (None, None)
     }
-    if gamma.degree() > EXPAND_MAX_PRIMITIVE_DEGREE {
-        return Err(Error::Limit(format!(
-            "K(theta) has degree {} over QQ (at most {EXPAND_MAX_PRIMITIVE_DEGREE} is expanded: \
-             its real field has degree up to {})",
-            gamma.degree(),
-            gamma.degree() * (gamma.degree() - 1)
-        )));
-    }
-    let parts = crate::jordan::realfield::real_parts_field(&gamma, var)?;
-    let f = parts.field;
-    if !expand && f.degree() > crate::jordan::real::EXPAND_MAX_DEGREE {
-        return Ok(None);
-    }
-    let cf = ComplexField::new(f.clone());
-    let gam = ComplexPair {
-        re: parts.re,
-        im: parts.im,
-    };
-    let part = |b: bool| -> Vec<Quadratic> {
-        h.coeffs()
-            .iter()
-            .map(|c| {
-                let q = if b { c.b.clone() } else { c.a.clone() };
-                Quadratic::new(q, Rational::default())
-            })
-            .collect()
-    };
-    let zero = f.zero();
-    let (h0, h1) = (
-        eval_k(&cf, &zero, &part(false), &gam),
-        eval_k(&cf, &zero, &part(true), &gam),
-    );
-    let bad = |what: &str| Error::Verification(format!("the real field of a root of {g}: {what}"));
-    let inv = cf.inv(&h1).ok_or_else(|| bad("h1(gamma) = 0"))?;
-    let s = cf.neg(&cf.mul(&h0, &inv));
-    let d = f.from_rational(&Rational::from_integer(k.d().clone()));
-    if !f.is_zero(&s.im) || f.mul(&s.re, &s.re) != d || f.approx(&s.re).0 <= 0.0 {
-        return Err(bad("no positive square root of d"));
-    }
-    let s = s.re;
-    let ks = f.mul(&f.from_i64(shift), &s);
-    let theta = ComplexPair {
-        re: f.sub(&gam.re, &ks),
-        im: gam.im,
-    };
-    if !cf.is_zero(&eval_k(&cf, &s, g.coeffs(), &theta)) || f.is_zero(&theta.im) {
-        return Err(bad("g(theta) != 0"));
-    }
-    let mut powers = vec![cf.one()];
-    while powers.len() < g.deg() {
-        let next = cf.mul(powers.last().expect("one"), &theta);
-        powers.push(next);
-    }
-    Ok(Some(PairField {
-        field: f,
-        alpha: s,
-        powers,
-    }))
 }

@@ -41,7 +41,11 @@
 //! The result holds values (matrices over the fields, algebraic numbers); its displays are
 //! made in `report/`.
 
-use super::pair_field::PairField;
+pub use super::pair_field::{
+    EXPAND_MAX_DEGREE, EXPAND_MAX_EIGENVALUE_DEGREE, PARTS_MAX_BITS, PARTS_MAX_DEGREE,
+    parts_affordable,
+};
+use super::pair_field::{PairField, exact_parts};
 use super::{EigenField, JordanForm};
 use crate::algebraic::{AlgebraicNumber, Ext, NumberField};
 use crate::error::{Error, Result};
@@ -119,19 +123,6 @@ pub struct RealNote {
     /// The reason (the error of [`super::EigenField::real_pair`]).
     pub error: Error,
 }
-
-/// Largest eigenvalue degree for which the minimal polynomials of $\operatorname{Re}\theta$
-/// (degree up to $d(d-1)/2$) and $\operatorname{Im}\theta$ (up to $d(d-1)$) are computed.
-pub const PARTS_MAX_DEGREE: usize = 4;
-
-/// Largest real-field degree that [`JordanForm::real_form`] expands into by default.
-pub const EXPAND_MAX_DEGREE: usize = 4;
-
-/// Largest eigenvalue degree whose pair is expanded into its real field even on request
-/// (`--expand`): the real field of a generic factor of degree $d$ has degree $d(d-1)$, found by
-/// factoring a polynomial of that degree (degree 5, field 20: 0.6 s; degree 6, field 30: 16 s
-/// for the companion matrix of $x^6 - x + 1$, and more than 60 s for a dense random 6x6).
-pub const EXPAND_MAX_EIGENVALUE_DEGREE: usize = 5;
 
 /// The real Jordan form $A = T J T^{-1}$ with real $T$, $J$.
 #[derive(Clone, Debug, PartialEq)]
@@ -389,36 +380,6 @@ fn pair_approx<F: Field>(
         off += bs;
     }
     (t, j)
-}
-
-/// Bit size (numerator plus denominator) above which the parts of a root of degree 3 or 4
-/// are not computed: the composed polynomials of degree up to 12 and their factorization
-/// then cost seconds (a mutant with an entry `-1e-300` has 300-digit coefficients), and the
-/// compact form is exact anyway.
-pub const PARTS_MAX_BITS: u64 = 256;
-
-/// Whether [`exact_parts`] computes $\operatorname{Re}\theta$ and $\operatorname{Im}\theta$
-/// for a root of `p`: degree at most [`PARTS_MAX_DEGREE`], and for degree 3 or 4
-/// coefficients of at most [`PARTS_MAX_BITS`] bits.
-pub fn parts_affordable(p: &Poly<Q>) -> bool {
-    p.deg() <= 2
-        || (p.deg() <= PARTS_MAX_DEGREE
-            && p.coeffs()
-                .iter()
-                .all(|c| c.numer().bits() + c.denom().bits() <= PARTS_MAX_BITS))
-}
-
-/// $\operatorname{Re}\theta$ and $\operatorname{Im}\theta$ as certified algebraic numbers
-/// when [`parts_affordable`] (composed polynomials of degree $d(d-1)/2$ and
-/// $d(d-1)$, factored), else `None`.
-pub(crate) fn exact_parts(
-    e: &super::Eigenvalue,
-) -> (Option<AlgebraicNumber>, Option<AlgebraicNumber>) {
-    if parts_affordable(&e.minpoly) {
-        (e.number.try_re().ok(), e.number.try_im().ok())
-    } else {
-        (None, None)
-    }
 }
 
 impl RealJordanForm<Q> {

@@ -58,7 +58,7 @@ pub use jordan_method::{
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
-pub use modal::{ModalTable, Mode, modal_table, modal_table_over};
+pub use modal::{ExactFigure, ModalTable, Mode, modal_table, modal_table_over};
 pub use rosenbrock::{controllable_staircase, minimal_rosenbrock};
 pub use weierstrass::{
     WeierstrassSplit, descriptor_transfer_matrix, eval_transfer, same_transfer, weierstrass_split,

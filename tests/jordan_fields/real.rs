@@ -6,8 +6,8 @@
 use super::{jordan_matrix, mat, planted, q, run, temp_file};
 use exactlti::field::{Field, QuadraticField};
 use exactlti::jordan::RealJordanForm;
+use exactlti::jordan::fields::pair_field;
 use exactlti::jordan::jordan_over as jordan_over_k;
-use exactlti::jordan::pair_field::pair_field;
 use exactlti::matrix::Matrix;
 use exactlti::realization::{MinrealMethod, RealModalBlock, minimal, minimal_jordan};
 use exactlti::system::StateSpace;

@@ -214,13 +214,13 @@ impl ModalTable {
             .iter()
             .map(|m| {
                 let mut ex = Report::new();
-                for (k, v) in &m.exact {
-                    ex.push(k.clone(), Value::Str(v.clone()));
+                for (k, v) in m.exact_texts() {
+                    ex.push(k, Value::Str(v));
                 }
                 Value::Obj(
                     Report::new()
-                        .str("eigenvalue", m.eigenvalue.clone())
-                        .str("minpoly", m.minpoly.clone())
+                        .str("eigenvalue", m.eigenvalue.value_string())
+                        .str("minpoly", m.eigenvalue.minpoly().to_string())
                         .with(
                             "approx",
                             Value::List(vec![Value::Float(m.approx.0), Value::Float(m.approx.1)]),
@@ -248,13 +248,44 @@ impl ModalTable {
     }
 }
 
+impl crate::realization::Mode {
+    /// The exact figures as `(name, display)`: rationals, `sqrt(r)` in the one display of
+    /// quadratic numbers, a negative root with a leading `-`.
+    pub fn exact_texts(&self) -> Vec<(String, String)> {
+        use crate::realization::ExactFigure;
+        self.exact
+            .iter()
+            .map(|(k, v)| {
+                let text = match v {
+                    ExactFigure::Rational(q) => crate::field::fmt_rational(q),
+                    ExactFigure::Sqrt { radicand, negative } => {
+                        let s = sqrt_display(radicand);
+                        if *negative { format!("-{s}") } else { s }
+                    }
+                };
+                (k.to_string(), text)
+            })
+            .collect()
+    }
+}
+
+/// `sqrt(r)` as an exact display.
+fn sqrt_display(r: &crate::field::Rational) -> String {
+    let (field, a, b) = crate::field::QuadraticField::sqrt_of_rational(r);
+    match field {
+        None => crate::field::fmt_rational(&a),
+        Some(k) => crate::field::quadratic_display(&num_traits::Zero::zero(), &b, k.d()),
+    }
+}
+
 /// One row of the modal table's text: the mode (exact when short, the pair as `a ± b i`,
 /// an unpaired eigenvalue of a non-real matrix as `a + b i`, otherwise), its multiplicity, frequency in Hz, damping ratio and time constant.
 fn mode_row(m: &crate::realization::Mode) -> Vec<String> {
     use crate::report::text::{MAX_EXACT_ENTRY, short};
     let (re, im) = m.approx;
-    let mode = if m.eigenvalue.chars().count() <= MAX_EXACT_ENTRY {
-        m.eigenvalue.clone()
+    let value = m.eigenvalue.value_string();
+    let mode = if value.chars().count() <= MAX_EXACT_ENTRY {
+        value
     } else if m.paired {
         format!("{} ± {}i (approx.)", short(re), short(im))
     } else if im != 0.0 {
