@@ -5,9 +5,11 @@
 //!
 //! An element $x = \sum_k c_k t^k$ ($c_k \in F_0$) maps to $\operatorname{Re} x + i
 //! \operatorname{Im} x = \sum_k \iota(c_k)\,\theta^k$ in $F(i)$, with $\iota: F_0 \to F$ the
-//! embedding of the base field ([`super::EigenField::into_real`]; over $\mathbb{Q}$ the
+//! embedding of the base field ([`RealEmbed::into_real`]; over $\mathbb{Q}$ the
 //! identity, over $\mathbb{Q}(\sqrt d)$ given by the image of $\sqrt d$) and the table of
 //! $\theta^0, \dots, \theta^{\deg g - 1}$.
+//!
+//! The constructions are methods of the base field (`super::fields`):
 //!
 //! # Over $\mathbb{Q}$
 //! See [`super::real`]: $\mathbb{Q}$ or $\mathbb{Q}(\sqrt{|f|})$ for a quadratic factor,
@@ -32,6 +34,9 @@
 //! \theta$, $\sqrt d \mapsto s$ is a field embedding $E \to F(i)$ sending $t$ to the
 //! eigenvalue (the marked root of $F$ is checked by the rational construction), so the real
 //! blocks built from it are exact images of the verified complex ones.
+//!
+//! The size bounds of the real forms (when a pair is expanded, when the parts of $\theta$ are
+//! computed) are here too.
 
 use crate::algebraic::{AlgebraicNumber, ExtElem, NfElem, NumberField};
 use crate::field::{ComplexPair, Field, Q};

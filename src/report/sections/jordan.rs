@@ -92,6 +92,21 @@ pub(super) fn neg_display(x: &str) -> String {
     {
         return rest.to_string();
     }
+    // `Re(...)`, `Im(...)`: one call, no parentheses needed
+    let call = (x.starts_with("Re(") || x.starts_with("Im(")) && x.ends_with(')') && {
+        let mut depth = 0i32;
+        x[2..].char_indices().all(|(i, ch)| {
+            depth += match ch {
+                '(' => 1,
+                ')' => -1,
+                _ => 0,
+            };
+            depth > 0 || i + 3 == x.len()
+        })
+    };
+    if call {
+        return format!("-{x}");
+    }
     if x.contains([' ', '+']) || x[1..].contains('-') {
         format!("-({x})")
     } else {
