@@ -220,21 +220,20 @@ fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
     out
 }
 
-/// $J$ and $T$ for output from the columns of each eigenvalue, $(E, \sigma_j(V),
-/// \sigma_j(J))$ exact in its field $E = F(\theta_j)$.
-fn j_t_cells<F: EigenField>(jf: &JordanForm<F>) -> (Value, Value) {
-    let n = jf.n();
-    let (mut j, mut t) = (Cells::zeros(n, n), Cells::zeros(n, n));
-    let mut off = 0;
-    for c in jf.root_columns() {
-        t.block((0, off), &c.v);
-        j.block((off, off), &c.j);
-        off += c.v.ncols();
-    }
-    (j.value(), t.value())
-}
-
 impl<F: EigenField> JordanForm<F> {
+    /// $J$ and $T$ for output: per eigenvalue, entries exact in its field (texts, LaTeX and
+    /// approximations).
+    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
+        let n = self.n();
+        let (mut j, mut t) = (Cells::zeros(n, n), Cells::zeros(n, n));
+        let mut off = 0;
+        for c in self.root_columns() {
+            t.block((0, off), &c.v);
+            j.block((off, off), &c.j);
+            off += c.v.ncols();
+        }
+        (j.0, t.0)
+    }
     /// The report with the CLI contract's keys: `eigenvalues[]` (`minpoly`, `value`,
     /// `approx`, `algebraic_multiplicity`, `geometric_multiplicity`, `blocks`), `J`, `T`
     /// (exact, with `_approx`), `verified`, plus `n`, `field`, `charpoly`, `presentation`,
@@ -262,7 +261,10 @@ impl<F: EigenField> JordanForm<F> {
                 Value::Matrix(Box::new(MatrixOut::from_matrix(&j))),
                 Value::Matrix(Box::new(MatrixOut::from_matrix(&t))),
             ),
-            None => j_t_cells(self),
+            None => {
+                let (j, t) = self.j_t_out();
+                (Value::Matrix(Box::new(j)), Value::Matrix(Box::new(t)))
+            }
         };
         let mut r = Report::titled("Jordan form")
             .int("n", self.n())
