@@ -11,9 +11,9 @@
 //! (best of 3) before this kernel work: jordan 3.95 s, minreal 4.25 s, tf 1.44 s.
 
 use exactlti::field::{Quadratic, QuadraticField, Rational};
-use exactlti::jordan::over_k::jordan_over_k;
+use exactlti::jordan::jordan_over as jordan_over_k;
 use exactlti::matrix::Matrix;
-use exactlti::realization::{minimal_jordan_over_k, minimal_kalman};
+use exactlti::realization::{minimal_jordan, minimal_kalman};
 use exactlti::report::sections::{TfRealization, tf_report_quadratic};
 use exactlti::system::StateSpace;
 use std::time::Instant;
@@ -69,7 +69,7 @@ fn main() {
     }
     if want("minreal jordan dense 10x10 QQ(i)") {
         time("minreal jordan dense 10x10 QQ(i)", 3, || {
-            minimal_jordan_over_k(&dense).expect("minreal").verified
+            minimal_jordan(&dense).expect("minreal").verified
         });
     }
     if want("tf 8-state 2x2 QQ(i)") {

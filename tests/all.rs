@@ -91,6 +91,8 @@ mod mpoly_gcd;
 mod multibody;
 #[path = "multibody_examples.rs"]
 mod multibody_examples;
+#[path = "over_fields.rs"]
+mod over_fields;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]

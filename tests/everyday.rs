@@ -48,7 +48,7 @@ fn check_case(name: &str) {
     let cols: usize = rf.blocks.iter().map(|b| b.t_approx[0].len()).sum();
     assert_eq!(cols, n);
     for b in &rf.blocks {
-        if let Some(cp) = &b.compact {
+        if let Some(cp) = b.compact() {
             let e = &jf.eigenvalues[b.eigenvalue];
             assert!(b.pair && e.approx.1 > 0.0);
             // the compact chains are the component's, verified A V = V J in QQ(theta)
@@ -91,10 +91,7 @@ fn quarter_car_compact_and_small() {
     // two complex pairs of an irreducible quartic: compact, parts as algebraic numbers
     assert_eq!(rf.blocks.len(), 2);
     for b in &rf.blocks {
-        let cp = b
-            .compact
-            .as_ref()
-            .expect("the real field has degree 12: compact");
+        let cp = b.compact().expect("the real field has degree 12: compact");
         assert_eq!(cp.re.as_ref().unwrap().degree(), 6);
         assert_eq!(cp.im.as_ref().unwrap().degree(), 12);
     }
@@ -111,7 +108,7 @@ fn quarter_car_compact_and_small() {
     assert!(
         ex.blocks
             .iter()
-            .all(|b| b.t.is_some() && b.compact.is_none())
+            .all(|b| b.exact_entries().is_some() && b.compact().is_none())
     );
 }
 
@@ -150,7 +147,7 @@ fn papers_quadratic_and_biquadratic_pairs_stay_expanded() {
     assert!(
         rf.blocks
             .iter()
-            .all(|b| b.compact.is_none() && b.t.is_some())
+            .all(|b| b.compact().is_none() && b.exact_entries().is_some())
     );
     assert!(rf.verified);
     // -1 +- i: over Q

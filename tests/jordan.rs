@@ -422,8 +422,7 @@ fn check_real_form_exact(a: &Matrix<Q>) -> exactlti::jordan::RealJordanForm {
     let n = a.nrows();
     let mut cols = 0;
     for b in &rf.blocks {
-        let (t, j) = (b.t.as_ref().unwrap(), b.j.as_ref().unwrap());
-        let f = b.field.as_ref().unwrap();
+        let (f, t, j) = b.exact_entries().unwrap();
         assert_eq!(f.root_approx().1, 0.0, "a real field");
         assert_eq!(&a.convert_to(f) * t, t * j, "A T = T J in {f}");
         let e = &jf.eigenvalues[b.eigenvalue];
@@ -475,7 +474,7 @@ fn real_form_exact_cube_root_of_two() {
     assert_eq!(up.number.minpoly().to_string(), "x^3 - 2");
     // Q(Re, Im) = Q(cbrt 2, sqrt 3) has degree 6
     let pair = rf.blocks.iter().find(|b| b.pair).unwrap();
-    assert_eq!(pair.field.as_ref().unwrap().degree(), 6);
+    assert_eq!(pair.exact_entries().unwrap().0.degree(), 6);
     let rep = rf.report().to_json();
     assert_eq!(rep["exact"], true);
     assert_eq!(rep["verified"], true);
@@ -495,9 +494,8 @@ fn real_form_exact_cube_root_chain_of_length_two() {
     }
     let rf = check_real_form_exact(&a);
     let pair = rf.blocks.iter().find(|b| b.pair).unwrap();
-    let j = pair.j.as_ref().unwrap();
+    let (f, _, j) = pair.exact_entries().unwrap();
     assert_eq!(j.nrows(), 4, "one 4x4 block: a 2x2 complex block pair");
-    let f = pair.field.as_ref().unwrap();
     assert!(f.is_one(j.get(0, 2)) && f.is_one(j.get(1, 3)) && f.is_zero(j.get(0, 3)));
 }
 
@@ -589,9 +587,14 @@ fn real_form_expand_stops_at_the_eigenvalue_degree_bound() {
     assert!(rf.verified, "{:?}", rf.notes);
     let pairs: Vec<_> = rf.blocks.iter().filter(|b| b.pair).collect();
     assert_eq!(pairs.len(), 3);
-    assert!(pairs.iter().all(|b| b.compact.is_some() && b.t.is_none()));
-    assert_eq!(rf.notes.len(), 3, "{:?}", rf.notes);
-    assert!(rf.notes[0].contains("degree 6") && rf.notes[0].contains("up to 30"));
+    assert!(
+        pairs
+            .iter()
+            .all(|b| b.compact().is_some() && b.exact_entries().is_none())
+    );
+    let notes = rf.note_lines();
+    assert_eq!(notes.len(), 3, "{notes:?}");
+    assert!(notes[0].contains("degree 6") && notes[0].contains("up to 30"));
     let quintic = jordan(&companion([1, 1], 5)).unwrap();
     let rf = quintic.real_form_expanded().unwrap();
     assert!(
@@ -599,7 +602,12 @@ fn real_form_expand_stops_at_the_eigenvalue_degree_bound() {
         "{:?}",
         rf.notes
     );
-    assert!(rf.blocks.iter().filter(|b| b.pair).all(|b| b.t.is_some()));
+    assert!(
+        rf.blocks
+            .iter()
+            .filter(|b| b.pair)
+            .all(|b| b.exact_entries().is_some())
+    );
 }
 
 /// The free response report carries its check (`verified`: A G_k = θ G_k + (k+1) G_{k+1}

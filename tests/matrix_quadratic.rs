@@ -5,7 +5,7 @@
 
 use exactlti::field::lehmer;
 use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
-use exactlti::jordan::over_k::jordan_over_k;
+use exactlti::jordan::jordan_over as jordan_over_k;
 use exactlti::matrix::Matrix;
 use exactlti::matrix::over_k::{inverse_k, mul_k, mul_k_integer, rank_k};
 use proptest::prelude::*;

@@ -298,12 +298,12 @@ fn modal_table_sliding_masses_matches_paper_tab1() {
     // a damped pair: s^2 + 2 s + 2 -> wn^2 = 2, zeta = sqrt(2)/2, tau = 1
     let t = modal_table(&qmat![[0, 1], [-2, -2]]).unwrap();
     assert_eq!(t.modes.len(), 1);
-    let ex: std::collections::HashMap<_, _> = t.modes[0].exact.iter().cloned().collect();
+    let ex: std::collections::HashMap<_, _> = t.modes[0].exact_texts().into_iter().collect();
     assert_eq!(ex["natural_frequency_squared"], "2");
     assert_eq!(ex["damping_ratio"], "sqrt(2)/2");
     assert_eq!(ex["time_constant_s"], "1");
     assert!((t.modes[0].damping_ratio.unwrap() - 0.5f64.sqrt()).abs() < 1e-15);
-    assert_eq!(t.modes[0].eigenvalue, "-1 + i");
+    assert_eq!(t.modes[0].eigenvalue.value_string(), "-1 + i");
 }
 
 #[test]
@@ -318,14 +318,15 @@ fn jordan_method_sliding_masses_20_16_8() {
     assert!(r.verified);
     assert_eq!(r.mcmillan_degree, 8);
     // sparse real Jordan pattern: 4 blocks [[0, w], [-w, 0]] with 4 distinct magnitudes
-    assert_eq!(r.blocks.len(), 4);
+    let real = r.real.as_ref().unwrap();
+    assert_eq!(real.len(), 4);
     let mut mags = vec![];
-    for b in &r.blocks {
-        assert_eq!(b.a.nrows(), 2);
-        let f = &b.field;
-        assert!(f.is_zero(b.a.get(0, 0)) && f.is_zero(b.a.get(1, 1)));
-        assert_eq!(f.neg(b.a.get(0, 1)), *b.a.get(1, 0));
-        mags.push(f.approx(b.a.get(0, 1)).0.abs());
+    for b in real {
+        let (f, [a, _, _]) = b.exact_entries().unwrap();
+        assert_eq!(a.nrows(), 2);
+        assert!(f.is_zero(a.get(0, 0)) && f.is_zero(a.get(1, 1)));
+        assert_eq!(f.neg(a.get(0, 1)), *a.get(1, 0));
+        mags.push(f.approx(a.get(0, 1)).0.abs());
     }
     mags.sort_by(|a, b| a.partial_cmp(b).unwrap());
     let want = [
@@ -361,7 +362,7 @@ fn jordan_method_agrees_with_kalman_on_rational_and_quadratic_modes() {
     assert!(r.verified);
     assert_eq!(r.order(), mcmillan_degree(&sys));
     let rs = r
-        .to_rational()
+        .real_to_base()
         .expect("all modes rational or Q(i) pairs with rational parts");
     assert!(rs.same_markov(&sys, 2 * 5));
     // a cubic factor with complex roots (x^3 - 2): exact real blocks over Q(Re, Im) on
@@ -375,15 +376,20 @@ fn jordan_method_agrees_with_kalman_on_rational_and_quadratic_modes() {
     let r = exactlti::realization::minimal_jordan_with(&cubic, true).unwrap();
     assert!(r.verified);
     assert_eq!(r.order(), 3);
+    let real = r.real.as_ref().unwrap();
     assert_eq!(
-        r.blocks.len(),
+        real.len(),
         2,
         "one real root block and one complex pair block"
     );
-    assert_eq!(r.blocks[1].a.nrows(), 2);
+    assert_eq!(real[1].exact_entries().unwrap().1[0].nrows(), 2);
     let c = minimal_jordan(&cubic).unwrap();
-    assert!(c.verified && c.order() == 3 && c.blocks[1].compact);
-    assert_eq!((c.blocks[1].order, c.blocks[1].a.nrows()), (2, 1));
+    let real = c.real.as_ref().unwrap();
+    assert!(c.verified && c.order() == 3);
+    let RealModalBlock::Compact(blk) = &real[1] else {
+        panic!("the cubic's pair is compact by default")
+    };
+    assert_eq!((real[1].order(), blk.a.nrows()), (2, 1));
 }
 
 #[test]

@@ -236,7 +236,7 @@ pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResu
         kv.push(("verified", Out::Bool(rf.verified)));
         kv.push((
             "notes",
-            Out::List(rf.notes.iter().map(|s| Out::Str(s.clone())).collect()),
+            Out::List(rf.note_lines().into_iter().map(Out::Str).collect()),
         ));
         kv.push(("report", report(&rf.report())));
     } else {
@@ -475,8 +475,8 @@ pub(crate) fn modes_out(a: &Matrix<exactlti::field::Q>) -> FResult<Out> {
         .iter()
         .map(|md| {
             Out::Dict(vec![
-                ("eigenvalue", Out::Str(md.eigenvalue.clone())),
-                ("minpoly", Out::Str(md.minpoly.clone())),
+                ("eigenvalue", Out::Str(md.eigenvalue.value_string())),
+                ("minpoly", Out::Str(md.eigenvalue.minpoly().to_string())),
                 (
                     "approx",
                     Out::Tuple(vec![Out::Float(md.approx.0), Out::Float(md.approx.1)]),

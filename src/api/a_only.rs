@@ -138,7 +138,7 @@ fn jordan_over_k_cmd(
             ),
         });
     }
-    let jf = crate::jordan::over_k::jordan_over_k(a).map_err(e)?;
+    let jf = crate::jordan::jordan_over(a).map_err(e)?;
     if real {
         let rf = jf.real_form_with(expand).map_err(e)?;
         return Ok(Outcome::new(rf.report(), rf.verified));

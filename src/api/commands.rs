@@ -330,7 +330,7 @@ impl SystemVisitor for FileCommand<'_> {
                 // exact over Q and the quadratic fields Q(i), Q(sqrt d)
                 if let Some(a) = quadratic(&s.a) {
                     return Ok(Outcome::plain(
-                        realization::modal_table_over_k(a).map_err(e)?.report(),
+                        realization::modal_table_over(a).map_err(e)?.report(),
                     ));
                 }
                 let q = needs_rational(f, t, "the modal table")?;
@@ -508,7 +508,7 @@ fn minreal<K: Field + 'static>(
             if let Some(s) = (&t.ss as &dyn std::any::Any)
                 .downcast_ref::<crate::system::StateSpace<crate::field::QuadraticField>>()
             {
-                let r = realization::minimal_jordan_over_k(s).map_err(|e| with_path(path, e))?;
+                let r = realization::minimal_jordan(s).map_err(|e| with_path(path, e))?;
                 return Ok(Outcome::new(r.report(), r.verified));
             }
             let q = needs_rational(f, t, "the Jordan-form method")?;

@@ -193,7 +193,7 @@ fn count_item(exact: usize, real_form: usize, truth: float::Truth) -> (bool, Rep
 /// whether $A$'s Jordan form over $K$ verified. The real form is similar over $\mathbb{C}$
 /// to $A \oplus \bar A$, so an eigenvalue $\mu$ has the blocks of $A$ at $\mu$ and at
 /// $\bar\mu$: from the components of the Jordan form of $A$ over $K$
-/// ([`crate::jordan::over_k::jordan_over_k`]), those of a factor $g$ and of $\bar g$
+/// ([`crate::jordan::jordan_over`]), those of a factor $g$ and of $\bar g$
 /// (coefficients conjugated in $K$, compared exactly).
 fn real_form_spectrum<K: Field + 'static>(
     a: &Matrix<K>,
@@ -206,7 +206,7 @@ fn real_form_spectrum<K: Field + 'static>(
     if !num_traits::Signed::is_negative(k.d()) {
         return Ok(None);
     }
-    let jf = crate::jordan::over_k::jordan_over_k(q).map_err(|e| fail(path, e))?;
+    let jf = crate::jordan::jordan_over(q).map_err(|e| fail(path, e))?;
     let conj_of = |g: &crate::poly::Poly<QuadraticField>| {
         let cs = g.coeffs().iter().map(|c| k.galois(c)).collect();
         crate::poly::Poly::new(k.clone(), cs)

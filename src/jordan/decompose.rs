@@ -7,16 +7,25 @@
 //! $W V = I$, checked exactly ([`Component::verify`]); the eigenvalues are the roots of the
 //! factors as certified algebraic numbers (minimal polynomial over $\mathbb{Q}$ and an
 //! isolating region), and the dimensions must add up to $n$.
+//!
+//! What differs between base fields is a method of [`EigenField`], never a copy of the
+//! algorithm: the factorization with certified roots, the exact field of one eigenvalue
+//! ([`EigenField::root_field`]) and, for the real forms, whether the field is real and the
+//! real field of a complex pair ([`EigenField::real_pair`]); the implementations for
+//! $\mathbb{Q}$ and the quadratic fields are in `fields.rs`.
 
 use super::chains::{Chains, jordan_chains};
-use super::over_k::eigen::{self, CertifiedRoots};
+use super::pair_field::{PairField, RealEmbed};
 use super::primary::Component;
-use super::{Eigenvalue, JordanForm, roots, simple};
-use crate::algebraic::Ext;
+use super::{Eigenvalue, Embedding, JordanForm, roots, simple};
+use crate::algebraic::{AlgebraicNumber, Ext};
 use crate::error::Result;
-use crate::field::{Field, Q, QuadraticField};
+use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
+
+/// Certified roots with their approximations.
+pub type CertifiedRoots = Vec<(AlgebraicNumber, (f64, f64))>;
 
 /// One irreducible factor $g$ over $F$, its multiplicity, the minimal polynomial over
 /// $\mathbb{Q}$ of its roots and the certified roots of $g$ (real part descending).
@@ -24,7 +33,7 @@ pub type FactorRoots<F> = (Poly<F>, usize, Poly<Q>, CertifiedRoots);
 
 /// A base field of the exact Jordan decomposition: it factors polynomials and certifies
 /// the roots of each factor; the component of a factor has a generic default.
-pub trait EigenField: Field + 'static {
+pub trait EigenField: RealEmbed + 'static {
     /// The irreducible factors of the monic `chi` over the field with their roots.
     ///
     /// # Errors
@@ -42,6 +51,36 @@ pub trait EigenField: Field + 'static {
     ) -> Result<Component<Self>> {
         generic_component(a, chi, (g, e, minpoly), roots)
     }
+    /// The exact field of eigenvalue `ev` of `jf` (marked at that root, displayed with the
+    /// eigenvalue's symbol or its radical) and the embedding $t \mapsto \theta_j$ of the
+    /// component field into it.
+    fn root_field(jf: &JordanForm<Self>, ev: usize) -> (Ext<Self>, Embedding<'_, Self>) {
+        let e = &jf.eigenvalues[ev];
+        let c = &jf.components[e.component];
+        let radical = if c.factor.deg() == 2 && c.minpoly.deg() == 2 {
+            super::roots::quadratic_roots(&c.minpoly).map(|(a0, s, f)| {
+                let positive = if num_traits::Signed::is_negative(&f) {
+                    e.approx.1 > 0.0
+                } else {
+                    e.approx.0 > crate::field::rational_to_f64(&a0)
+                };
+                (a0, if positive { s } else { -s }, f)
+            })
+        } else {
+            None
+        };
+        (
+            c.field.marked(e.approx, &e.symbol, radical),
+            Box::new(|x| x.clone()),
+        )
+    }
+    /// The real field of the complex pair of eigenvalue `ev` of `jf` (the upper root);
+    /// `None` when it is not built (it may be large and `expand` is false, or the pair is
+    /// written with its radical).
+    ///
+    /// # Errors
+    /// Why the field was not found (the pair then stays compact, with a note).
+    fn real_pair(jf: &JordanForm<Self>, ev: usize, expand: bool) -> Result<Option<PairField>>;
 }
 
 /// The chains of one factor in $E = F\[t\]/(g)$: Krylov vectors for a simple factor of
@@ -91,43 +130,17 @@ pub fn generic_component<F: Field + 'static>(
     })
 }
 
-impl EigenField for Q {
-    fn eigen_factors(chi: &Poly<Q>) -> Result<Vec<FactorRoots<Q>>> {
-        let mut out = vec![];
-        for (p, e) in roots::factor_q(chi)? {
-            let rts = roots::certified_roots(&p)?;
-            out.push((p.clone(), e, p, rts));
-        }
-        Ok(out)
-    }
-    /// Over $\mathbb{Q}$ a repeated factor goes through the rational restriction to its
-    /// generalized eigenspace ([`super::PrimaryComponent::compute`]).
-    fn component(
-        a: &Matrix<Q>,
-        chi: &Poly<Q>,
-        (g, e, minpoly): (&Poly<Q>, usize, Poly<Q>),
-        roots: Vec<(f64, f64)>,
-    ) -> Result<Component<Q>> {
-        if e == 1 && g.deg() >= 2 {
-            generic_component(a, chi, (g, e, minpoly), roots)
-        } else {
-            Component::compute(a, g, e, roots)
-        }
-    }
-}
-
-impl EigenField for QuadraticField {
-    fn eigen_factors(chi: &Poly<QuadraticField>) -> Result<Vec<FactorRoots<QuadraticField>>> {
-        let mut out = vec![];
-        if chi.deg() == 0 {
-            return Ok(out);
-        }
-        for (g, e) in eigen::factor_over_k(chi)? {
-            let (m, roots) = eigen::roots_of_factor(&g)?;
-            out.push((g, e, m, roots));
-        }
-        Ok(out)
-    }
+/// The eigenvalues of $A$ without chains: $\chi_A$ and, per irreducible factor $g$ over
+/// the field (multiplicity $e$), $g$, $e$, the minimal polynomial over $\mathbb{Q}$ and the
+/// certified roots of $g$.
+///
+/// # Errors
+/// `NotSquare`; those of the factorization and root isolation.
+pub fn eigenvalues_over<F: EigenField>(a: &Matrix<F>) -> Result<(Poly<F>, Vec<FactorRoots<F>>)> {
+    a.check_square("jordan")?;
+    let chi = a.charpoly()?;
+    let out = F::eigen_factors(&chi)?;
+    Ok((chi, out))
 }
 
 /// The exact Jordan decomposition of a square matrix over an [`EigenField`] (module docs).

@@ -40,7 +40,8 @@ pub mod chains;
 pub(crate) mod coeffs;
 pub mod decompose;
 pub mod derivation;
-pub mod over_k;
+pub mod fields;
+pub mod pair_field;
 pub mod params;
 pub mod primary;
 pub mod real;
@@ -51,26 +52,27 @@ mod simple;
 pub mod steps;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
-pub use decompose::{EigenField, jordan_over};
+pub use decompose::{EigenField, eigenvalues_over, jordan_over};
 pub use primary::{Component, PrimaryComponent};
-pub use real::{RealBlock, RealJordanForm};
+pub use real::{CompactPair, RealBlock, RealEntries, RealJordanForm, RealNote};
 pub use response::{FreeResponse, ResponseTerm};
 pub(crate) use roots::value_string as value_display;
 
 use crate::algebraic::AlgebraicNumber;
-use crate::algebraic::{NfElem, NumberField};
+use crate::algebraic::{Ext, ExtElem, NfElem, NumberField};
 use crate::error::Result;
 use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use primary::{named_field, rational_field};
+use primary::named_field;
 #[cfg(feature = "cli")]
-#[allow(unused_imports)] // the `near` text of root legends (the Jordan form over K uses it)
+#[allow(unused_imports)] // the `near` text of root legends
 pub(crate) use roots::fmt_approx;
-use roots::{quadratic_roots, radical_text};
+use roots::radical_text;
 
-/// An embedding of a component field into an eigenvalue's display field.
-pub type Embedding<'a> = Box<dyn Fn(&NfElem) -> NfElem + 'a>;
+/// An embedding of a component field $E = F\[t\]/(g)$ into an eigenvalue's display field.
+pub type Embedding<'a, F = Q> =
+    Box<dyn Fn(&ExtElem<<F as Field>::Elem>) -> ExtElem<<F as Field>::Elem> + 'a>;
 
 /// One eigenvalue (one root of one factor).
 #[derive(Clone, Debug, PartialEq)]
@@ -97,21 +99,24 @@ pub struct Eigenvalue {
     pub blocks: Vec<usize>,
 }
 
+/// $J$ and $T$ over one extension of the base field ([`JordanForm::single_field`]).
+pub type JPair<F> = (Matrix<Ext<F>>, Matrix<Ext<F>>);
+
 /// The columns of one eigenvalue, exact in one field.
 #[derive(Clone, Debug, PartialEq)]
-pub struct RootColumns {
+pub struct RootColumns<F: Field = Q> {
     /// Index into [`JordanForm::eigenvalues`].
     pub eigenvalue: usize,
     /// The field the entries lie in (marked at this root; displays with its symbol).
-    pub field: NumberField,
+    pub field: Ext<F>,
     /// $\sigma_j(V_p)$ ($n \times m$).
-    pub v: Matrix<NumberField>,
+    pub v: Matrix<Ext<F>>,
     /// $\sigma_j(J_p)$ ($m \times m$).
-    pub j: Matrix<NumberField>,
+    pub j: Matrix<Ext<F>>,
 }
 
-/// The exact Jordan decomposition of a matrix over $F$ (over $\mathbb{Q}$ by default; over
-/// $\mathbb{Q}(\sqrt d)$: [`over_k::JordanFormK`]).
+/// The exact Jordan decomposition of a matrix over $F$ ($\mathbb{Q}$ by default,
+/// $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$: [`jordan_over`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct JordanForm<F: Field = Q> {
     /// The input matrix.
@@ -149,10 +154,8 @@ pub fn jordan(a: &Matrix<Q>) -> Result<JordanForm> {
 /// $\mathbb{Q}(i)$).
 ///
 /// A matrix whose entries are all rational is decomposed exactly by [`jordan`]. A matrix
-/// with irrational entries is decomposed by [`over_k::jordan_over_k`] into an
-/// [`over_k::JordanFormK`] (components over the relative fields $K\[t\]/(g)$, which
-/// [`JordanForm`], a rational matrix and a rational characteristic polynomial, cannot
-/// carry); this function refuses it with a typed error pointing there.
+/// with irrational entries is decomposed over $K$ by [`jordan_over`] (components over the
+/// relative fields $K\[t\]/(g)$); this function refuses it with a typed error pointing there.
 ///
 /// # Errors
 /// `Unsupported` for an entry outside $\mathbb{Q}$; those of [`jordan`] otherwise.
@@ -177,7 +180,7 @@ pub fn jordan_quadratic(a: &Matrix<crate::field::QuadraticField>) -> Result<Jord
             let Some(q) = k.to_rational(a.get(i, j)) else {
                 return Err(crate::error::Error::Unsupported(format!(
                     "Jordan form over {k}: entry ({}, {}) = {} is not rational; the \
-                     decomposition over {k} is jordan::over_k::jordan_over_k",
+                     decomposition over {k} is jordan::jordan_over",
                     i + 1,
                     j + 1,
                     k.fmt_elem(a.get(i, j))
@@ -252,44 +255,15 @@ impl<F: Field> JordanForm<F> {
     }
 }
 
-impl JordanForm {
+impl<F: EigenField> JordanForm<F> {
     /// The exact field of eigenvalue `ev` (marked at that root, displayed as in the module
-    /// docs) and the embedding $\sigma_j$ of the component field into it.
-    pub fn root_map(&self, ev: usize) -> (NumberField, Embedding<'_>) {
-        let e = &self.eigenvalues[ev];
-        let c = &self.components[e.component];
-        match c.degree() {
-            1 => {
-                let k = rational_field();
-                let k2 = k.clone();
-                (
-                    k,
-                    Box::new(move |x: &NfElem| {
-                        k2.from_rational(&c.field.to_rational(x).expect("in Q"))
-                    }),
-                )
-            }
-            2 => {
-                let (a0, s, fd) = quadratic_roots(&c.factor).expect("irreducible");
-                let positive = if num_traits::Signed::is_negative(&fd) {
-                    e.approx.1 > 0.0
-                } else {
-                    e.approx.0 > crate::field::rational_to_f64(&a0)
-                };
-                let s = if positive { s } else { -s };
-                (
-                    quadratic_field(&fd),
-                    Box::new(move |x: &NfElem| quadratic_image(x, &a0, &s)),
-                )
-            }
-            _ => (
-                c.embedding(e.root, &e.symbol),
-                Box::new(|x: &NfElem| x.clone()),
-            ),
-        }
+    /// docs) and the embedding $\sigma_j$ of the component field into it
+    /// ([`EigenField::root_field`]).
+    pub fn root_map(&self, ev: usize) -> (Ext<F>, Embedding<'_, F>) {
+        F::root_field(self, ev)
     }
     /// The columns of each eigenvalue, exact in the field described in the module docs.
-    pub fn root_columns(&self) -> Vec<RootColumns> {
+    pub fn root_columns(&self) -> Vec<RootColumns<F>> {
         (0..self.eigenvalues.len())
             .map(|ev| {
                 let c = &self.components[self.eigenvalues[ev].component];
@@ -304,34 +278,33 @@ impl JordanForm {
             .collect()
     }
     /// $J$ and $T$ as exact matrices over one field, when every eigenvalue lies in one
-    /// field of degree at most 2 ($\mathbb{Q}$, $\mathbb{Q}(i)$, $\mathbb{Q}(\sqrt f)$).
-    pub fn single_field(&self) -> Option<(Matrix<NumberField>, Matrix<NumberField>)> {
+    /// field: $F$ itself (all factors linear; then over $F$ as an extension of degree 1) or
+    /// one quadratic field over $\mathbb{Q}$ ($\mathbb{Q}(i)$, $\mathbb{Q}(\sqrt f)$).
+    pub fn single_field(&self) -> Option<JPair<F>> {
         let cols = self.root_columns();
-        let mut field = rational_field();
+        let mut field: Option<Ext<F>> = None;
         for c in &cols {
             if c.field.degree() > 1 {
-                if field.degree() > 1 && field != c.field {
+                if field.as_ref().is_some_and(|f| *f != c.field) {
                     return None;
                 }
-                field = c.field.clone();
+                field = Some(c.field.clone());
             }
         }
+        let field =
+            field.unwrap_or_else(|| Ext::with_var(&Poly::x(self.base().clone()), (0.0, 0.0), "t"));
         let n = self.n();
         let mut t = Matrix::zeros(field.clone(), n, n);
         let mut j = Matrix::zeros(field.clone(), n, n);
         let mut off = 0;
         for c in &cols {
             let m = c.v.ncols();
-            for r in 0..n {
-                for q in 0..m {
-                    t.set(r, off + q, c.v.get(r, q).clone());
-                }
-            }
-            for r in 0..m {
-                for q in 0..m {
-                    j.set(off + r, off + q, c.j.get(r, q).clone());
-                }
-            }
+            let to = |x: &ExtElem<F::Elem>| match c.field.degree() {
+                1 => field.from_base(&c.field.to_base(x).expect("degree 1")),
+                _ => x.clone(),
+            };
+            t.set_block(0, off, &c.v.map(&field, to));
+            j.set_block(off, off, &c.j.map(&field, to));
             off += m;
         }
         Some((j, t))

@@ -20,7 +20,7 @@ use crate::poly::Poly;
 
 /// The data of one irreducible factor $p \in F\[x\]$ of $\chi_A$, in $E = F\[t\]/(p)$ (over
 /// $\mathbb{Q}$: [`PrimaryComponent`], over $\mathbb{Q}(\sqrt d)$:
-/// [`super::over_k::ComponentK`]).
+/// `Component<QuadraticField>`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Component<F: Field> {
     /// The monic irreducible factor $p$.

@@ -15,7 +15,7 @@
 //! $S_k = -2 \operatorname{Im} G_k$ (exact in the block's real field), as in eq. 36–37 of
 //! the vehicle-dynamics paper.
 
-use super::{JordanForm, RealJordanForm};
+use super::{EigenField, JordanForm, RealEntries, RealJordanForm};
 use crate::algebraic::{Ext, NumberField};
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
@@ -149,6 +149,20 @@ impl<F: Field> FreeResponse<Ext<F>> {
     }
 }
 
+impl<F: EigenField> FreeResponse<Ext<F>> {
+    /// $G_{\theta,k}$ of eigenvalue `ev` of `jf` in that eigenvalue's field
+    /// ([`JordanForm::root_map`]): `(power, G)` pairs.
+    pub fn terms_of(&self, jf: &JordanForm<F>, ev: usize) -> Vec<(usize, Matrix<Ext<F>>)> {
+        let e = &jf.eigenvalues[ev];
+        let (field, f) = jf.root_map(ev);
+        self.terms
+            .iter()
+            .filter(|t| t.component == e.component)
+            .map(|t| (t.power, t.coeff.map(&field, &f)))
+            .collect()
+    }
+}
+
 impl FreeResponse {
     /// The exact term vectors $G_{\theta,k} x_0$ for eigenvalue `ev` of `jf`, in that
     /// eigenvalue's field (see [`JordanForm::root_map`]): `(power, vector)` pairs.
@@ -191,43 +205,44 @@ impl FreeResponse {
     }
     /// The real-form terms: a real eigenvalue keeps $G_k$; a pair $a \pm bi$ gives
     /// $C_k = 2\operatorname{Re} G_k$, $S_k = -2\operatorname{Im} G_k$ in the block's real
-    /// field. Blocks that are not exact are skipped (see [`RealJordanForm::notes`]).
+    /// field. Blocks in the compact form are skipped.
     pub fn real_terms(&self, jf: &JordanForm, rf: &RealJordanForm) -> Vec<RealResponseTerm> {
         let mut out = vec![];
         for b in &rf.blocks {
-            let Some(field) = &b.field else { continue };
-            if b.t.is_none() {
-                continue;
-            }
             let e = &jf.eigenvalues[b.eigenvalue];
             for term in self.terms.iter().filter(|t| t.component == e.component) {
-                if !b.pair {
-                    let (_, f) = jf.root_map(b.eigenvalue);
-                    out.push(RealResponseTerm {
-                        eigenvalue: b.eigenvalue,
-                        power: term.power,
-                        cos: term.coeff.map(field, &f),
-                        sin: None,
-                    });
-                    continue;
-                }
-                let n = jf.n();
-                let two = field.from_i64(2);
-                let mut cm = Matrix::zeros(field.clone(), n, n);
-                let mut sm = Matrix::zeros(field.clone(), n, n);
-                for r in 0..n {
-                    for q in 0..n {
-                        let (re, im) = b.re_im(term.coeff.get(r, q)).expect("exact block");
-                        cm.set(r, q, field.mul(&two, &re));
-                        sm.set(r, q, field.neg(&field.mul(&two, &im)));
+                match &b.entries {
+                    RealEntries::Root { field, .. } => {
+                        let (_, f) = jf.root_map(b.eigenvalue);
+                        out.push(RealResponseTerm {
+                            eigenvalue: b.eigenvalue,
+                            power: term.power,
+                            cos: term.coeff.map(field, &f),
+                            sin: None,
+                        });
                     }
+                    RealEntries::Expanded { pair, .. } => {
+                        let field = &pair.field;
+                        let n = jf.n();
+                        let two = field.from_i64(2);
+                        let mut cm = Matrix::zeros(field.clone(), n, n);
+                        let mut sm = Matrix::zeros(field.clone(), n, n);
+                        for r in 0..n {
+                            for q in 0..n {
+                                let (re, im) = pair.re_im(&Q, term.coeff.get(r, q));
+                                cm.set(r, q, field.mul(&two, &re));
+                                sm.set(r, q, field.neg(&field.mul(&two, &im)));
+                            }
+                        }
+                        out.push(RealResponseTerm {
+                            eigenvalue: b.eigenvalue,
+                            power: term.power,
+                            cos: cm,
+                            sin: Some(sm),
+                        });
+                    }
+                    _ => {}
                 }
-                out.push(RealResponseTerm {
-                    eigenvalue: b.eigenvalue,
-                    power: term.power,
-                    cos: cm,
-                    sin: Some(sm),
-                });
             }
         }
         out

@@ -1,7 +1,6 @@
 //! The Jordan-method minimal realization written once over any field $F$ with a Jordan
 //! decomposition ([`crate::jordan::EigenField`]: $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
-//! $\mathbb{Q}(i)$); the presentations over $\mathbb{Q}$ ([`super::minimal_jordan`]) and over
-//! a quadratic field ([`super::minimal_jordan_over_k`]) only write its result.
+//! $\mathbb{Q}(i)$); [`super::minimal_jordan`] writes its result as modal blocks.
 //!
 //! For each irreducible factor $g$ of $\chi_A$ over $F$, in $E = F\[t\]/(g)$ (all roots of $g$
 //! at once, conjugates by embedding):

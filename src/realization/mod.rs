@@ -16,9 +16,8 @@
 //! | `MinrealMethod::Rosenbrock` | staircase of exact row compressions of $[A\ B; C\ 0]$, then of the dual (paper sec. 2.3) |
 //! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
 //! | [`minimal_jordan`] | Jordan-form method (sec. 3.3): drop non-contributing modes, compact repeated ones, real Jordan blocks |
-//! | [`minimal_jordan_over_k`] | the same over $\mathbb{Q}(i)$ / $\mathbb{Q}(\sqrt d)$: real modal blocks over a real $K$, complex modal blocks over $\mathbb{Q}(i)$ |
 //! | [`descriptor_to_standard`] | $E^{-1}A$, index-1 elimination, or a Weierstrass-type split |
-//! | [`modal_table`], [`modal_table_over_k`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
+//! | [`modal_table`], [`modal_table_over`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
 mod controllability;
@@ -31,7 +30,6 @@ mod gramian;
 mod ho_kalman;
 mod jordan_core;
 mod jordan_method;
-mod jordan_method_k;
 mod kalman;
 mod method;
 mod minimal;
@@ -54,13 +52,13 @@ pub use from_transfer::{TransferRealization, realize_state_space, realize_transf
 pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{
-    JordanMinimal, RealModalBlock, minimal_jordan, minimal_jordan_rational, minimal_jordan_with,
+    JordanMinimal, ModalBlock, RealModalBlock, minimal_jordan, minimal_jordan_rational,
+    minimal_jordan_with,
 };
-pub use jordan_method_k::{JordanMinimalK, ModalBlockK, RealModalBlockK, minimal_jordan_over_k};
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
-pub use modal::{ModalTable, Mode, modal_table, modal_table_over_k};
+pub use modal::{ExactFigure, ModalTable, Mode, modal_table, modal_table_over};
 pub use rosenbrock::{controllable_staircase, minimal_rosenbrock};
 pub use weierstrass::{
     WeierstrassSplit, descriptor_transfer_matrix, eval_transfer, same_transfer, weierstrass_split,

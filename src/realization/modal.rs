@@ -11,9 +11,10 @@
 //! gives exact closed forms: $\omega_n^2 = a_0$ and $\zeta = a_1/(2\sqrt{a_0})$ for
 //! $s^2 + a_1 s + a_0$, and $\tau = -1/\lambda$ for a rational $\lambda$.
 
-use crate::algebraic::roots;
+use crate::algebraic::AlgebraicNumber;
 use crate::error::Result;
-use crate::field::{Q, QuadraticField, Rational, fmt_rational};
+use crate::field::{Q, Rational};
+use crate::jordan::EigenField;
 use crate::matrix::Matrix;
 use num_traits::{Signed, Zero};
 use std::f64::consts::PI;
@@ -21,64 +22,52 @@ use std::f64::consts::PI;
 /// One row of the modal table.
 #[derive(Clone, Debug)]
 pub struct Mode {
-    /// Exact display of the eigenvalue (`-1 + i`, `sqrt(2)*i`, `root of ... near ...`).
-    pub eigenvalue: String,
-    pub minpoly: String,
+    /// The eigenvalue, a certified algebraic number (its minimal polynomial and region).
+    pub eigenvalue: AlgebraicNumber,
     pub approx: (f64, f64),
     pub multiplicity: usize,
     pub frequency_hz: f64,
     pub damping_ratio: Option<f64>,
     pub time_constant_s: Option<f64>,
     pub period_s: Option<f64>,
-    /// Exact closed forms where the minimal polynomial has degree <= 2.
-    pub exact: Vec<(String, String)>,
+    /// Exact closed forms where the minimal polynomial has degree <= 2, by figure name.
+    pub exact: Vec<(&'static str, ExactFigure)>,
     /// The row stands for a conjugate pair (a real matrix); `false` for a real eigenvalue and
     /// for each eigenvalue of a non-real matrix over $\mathbb{Q}(i)$ (listed one by one).
     pub paired: bool,
 }
 
-/// The modal table of a rational matrix.
+/// An exact figure of a mode: a rational number or $\pm\sqrt r$ for a rational $r \ge 0$.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExactFigure {
+    Rational(Rational),
+    Sqrt { radicand: Rational, negative: bool },
+}
+
+/// The modal table (one row per mode).
 #[derive(Clone, Debug)]
 pub struct ModalTable {
     pub modes: Vec<Mode>,
 }
 
-/// `sqrt(r)` as an exact display.
-fn sqrt_display(r: &Rational) -> String {
-    let (field, a, b) = QuadraticField::sqrt_of_rational(r);
-    match field {
-        None => fmt_rational(&a),
-        Some(k) => crate::field::quadratic_display(&Rational::zero(), &b, k.d()),
-    }
-}
-
-/// Computes the modal table of `a`.
+/// Computes the modal table of a rational matrix ([`modal_table_over`]).
 ///
 /// # Errors
 /// `NotSquare`; failures of the root isolation (none expected).
 pub fn modal_table(a: &Matrix<Q>) -> Result<ModalTable> {
-    let cp = a.charpoly()?;
-    let mut modes = vec![];
-    for (lam, mult) in roots(&cp)? {
-        let (re, im) = lam.approx();
-        if im < 0.0 {
-            continue; // the conjugate is listed
-        }
-        modes.push(mode(&lam, (re, im), mult, im > 0.0));
-    }
-    Ok(ModalTable { modes })
+    modal_table_over(a)
 }
 
-/// The modal table of a matrix over a quadratic field $K$ (eigenvalues from
-/// [`crate::jordan::over_k::eigenvalues_over_k`]). Over a real $K$ ($A$ real) a complex pair
-/// is one mode, as over $\mathbb{Q}$; over $\mathbb{Q}(i)$ the eigenvalues of a non-real $A$
-/// do not come in conjugate pairs, so each is listed (its damping ratio and time constant
-/// from its real part, its period from $|\mathrm{Im}\,\lambda|$).
+/// The modal table of a matrix over any field with a Jordan decomposition (eigenvalues from
+/// [`crate::jordan::eigenvalues_over`]). Over a real field ($A$ real) a complex pair is one
+/// mode; over $\mathbb{Q}(i)$ the eigenvalues of a non-real $A$ do not come in conjugate
+/// pairs, so each is listed (its damping ratio and time constant from its real part, its
+/// period from $|\mathrm{Im}\,\lambda|$).
 ///
 /// # Errors
-/// `NotSquare`; those of the factorization over $K$ and of root isolation.
-pub fn modal_table_over_k(a: &Matrix<QuadraticField>) -> Result<ModalTable> {
-    let (_, factors) = crate::jordan::over_k::eigenvalues_over_k(a)?;
+/// `NotSquare`; those of the factorization and of root isolation.
+pub fn modal_table_over<F: EigenField>(a: &Matrix<F>) -> Result<ModalTable> {
+    let (_, factors) = crate::jordan::eigenvalues_over(a)?;
     let real = a.field().is_real() || crate::matrix::to_rational_matrix(a).is_some();
     let mut modes = vec![];
     for (_, mult, _, roots) in factors {
@@ -94,43 +83,32 @@ pub fn modal_table_over_k(a: &Matrix<QuadraticField>) -> Result<ModalTable> {
 
 /// One row: the figures of `lam` (approximation `(re, im)`, algebraic multiplicity `mult`;
 /// `paired` when the row stands for `lam` and its conjugate).
-fn mode(
-    lam: &crate::algebraic::AlgebraicNumber,
-    (re, im): (f64, f64),
-    mult: usize,
-    paired: bool,
-) -> Mode {
+fn mode(lam: &AlgebraicNumber, (re, im): (f64, f64), mult: usize, paired: bool) -> Mode {
     let wn = re.hypot(im);
     let mut exact = vec![];
     let mp = lam.minpoly();
+    let q = ExactFigure::Rational;
     if mp.deg() == 1 {
         let l = -mp.coeff(0);
         if !l.is_zero() {
-            exact.push(("time_constant_s".into(), fmt_rational(&(-l.recip()))));
-            exact.push(("natural_frequency_rad_s".into(), fmt_rational(&l.abs())));
+            exact.push(("time_constant_s", q(-l.recip())));
+            exact.push(("natural_frequency_rad_s", q(l.abs())));
         }
     } else if mp.deg() == 2 && im != 0.0 {
         // mp = (x - lam)(x - conj lam): a0 = |lam|^2, a1 = -2 Re lam
         let (a0, a1) = (mp.coeff(0), mp.coeff(1));
-        exact.push(("natural_frequency_squared".into(), fmt_rational(&a0)));
-        exact.push(("natural_frequency_rad_s".into(), sqrt_display(&a0)));
+        exact.push(("natural_frequency_squared", q(a0.clone())));
+        let sqrt = |radicand: Rational, negative: bool| ExactFigure::Sqrt { radicand, negative };
+        exact.push(("natural_frequency_rad_s", sqrt(a0.clone(), false)));
         // zeta = a1 / (2 sqrt(a0)) = sqrt(a1^2 / (4 a0)) with the sign of a1
         let z2 = &a1 * &a1 / (Rational::from_integer(4.into()) * &a0);
-        let z = sqrt_display(&z2);
-        exact.push((
-            "damping_ratio".into(),
-            if a1.is_negative() { format!("-{z}") } else { z },
-        ));
+        exact.push(("damping_ratio", sqrt(z2, a1.is_negative())));
         if !a1.is_zero() {
-            exact.push((
-                "time_constant_s".into(),
-                fmt_rational(&(Rational::from_integer(2.into()) / &a1)),
-            ));
+            exact.push(("time_constant_s", q(Rational::from_integer(2.into()) / &a1)));
         }
     }
     Mode {
-        eigenvalue: lam.value_string(),
-        minpoly: mp.to_string(),
+        eigenvalue: lam.clone(),
         approx: (re, im),
         multiplicity: mult,
         frequency_hz: wn / (2.0 * PI),
@@ -141,5 +119,3 @@ fn mode(
         paired,
     }
 }
-
-impl ModalTable {}

@@ -8,7 +8,7 @@
 use super::{run, temp_file};
 use crate::common::{Rng, iters};
 use exactlti::field::{Field, QuadraticField};
-use exactlti::jordan::over_k::jordan_over_k;
+use exactlti::jordan::jordan_over as jordan_over_k;
 use exactlti::matrix::Matrix;
 use std::collections::BTreeSet;
 
@@ -236,7 +236,7 @@ fn real_jordan_form_over_k_defines_every_symbol_reproducer() {
     assert!(check_matrix(&a) > 0);
     let rf = jordan_over_k(&a).unwrap().real_form().unwrap();
     assert!(
-        rf.fields
+        super::real::legend(&rf, "fields")
             .iter()
             .any(|l| l.starts_with("r3 = root of x^6 - 2 near -1.12"))
     );

@@ -388,7 +388,7 @@ fn pbh_and_modes(
 }
 
 /// The Jordan form (with the real form over a real field), PBH tests and the modal table
-/// over a quadratic field $K$ ([`crate::jordan::over_k`]).
+/// over a quadratic field $K$ ([`crate::jordan::jordan_over`]).
 fn quadratic_sections(
     t: Arc<TypedSystem<QuadraticField>>,
     secs: &mut Sections,
@@ -397,7 +397,7 @@ fn quadratic_sections(
     let title = "eigenvalues and Jordan form";
     let tt = t.clone();
     let jf = match secs.run(title, Insist::Command("jordan"), move || {
-        crate::jordan::over_k::jordan_over_k(&tt.ss.a).map(|jf| {
+        crate::jordan::jordan_over(&tt.ss.a).map(|jf| {
             let rep = jf.report();
             (Arc::new(jf), rep)
         })
@@ -447,13 +447,13 @@ fn quadratic_sections(
     let tt = t.clone();
     let pbh = move || Ok(pbh_over_k(jf.as_deref(), &tt));
     let tt = t.clone();
-    let modes = move || realization::modal_table_over_k(&tt.ss.a).map(|m| m.report());
+    let modes = move || realization::modal_table_over(&tt.ss.a).map(|m| m.report());
     pbh_and_modes(secs, t.ss.ninputs() > 0, pbh, modes);
 }
 
 /// The free response over $K$ under its budget, or its size when too large (as over Q).
 fn free_response_k(
-    jf: &Arc<crate::jordan::over_k::JordanFormK>,
+    jf: &Arc<crate::jordan::JordanForm<QuadraticField>>,
     secs: &mut Sections,
     est: usize,
     (full, path): (bool, &str),
@@ -489,7 +489,7 @@ fn free_response_k(
 /// controllable at $t$ iff $W_{\text{ends}} B$ has full row rank (the number of blocks), and
 /// observable iff $C V_{\text{starts}}$ has full column rank (`None` without a Jordan form).
 fn pbh_over_k(
-    jf: Option<&crate::jordan::over_k::JordanFormK>,
+    jf: Option<&crate::jordan::JordanForm<QuadraticField>>,
     t: &TypedSystem<QuadraticField>,
 ) -> Option<(bool, bool)> {
     let s = &t.ss;

@@ -1,120 +1,276 @@
-//! Reports of Jordan forms, real Jordan forms and free responses.
+//! Reports of Jordan forms, real Jordan forms and free responses, written once for every base
+//! field ([`crate::jordan::EigenField`]: $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$).
 //!
-//! Presentation only: these `report` methods read finished results of [`crate::jordan`] and
-//! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
+//! Presentation only: these `report` methods read finished results of [`crate::jordan`]
+//! (matrices over the fields, algebraic numbers) and make every string of the CLI contract's
+//! keys here; the math modules do not depend on [`crate::report`].
 
-use crate::algebraic::Ext;
+use super::eigenvalue_items;
+use crate::algebraic::{Ext, ExtElem};
 use crate::field::Field;
-use crate::jordan::{FreeResponse, JordanForm, RealJordanForm};
+use crate::jordan::{
+    CompactPair, EigenField, Eigenvalue, FreeResponse, JordanForm, RealEntries, RealJordanForm,
+};
 use crate::matrix::Matrix;
+use crate::poly::Poly;
 use crate::report::{MatrixOut, Report, Value};
 
-/// $J$ and $T$ for output from the columns of each eigenvalue, $(E, \sigma_j(V),
-/// \sigma_j(J))$ exact in its field $E = F(\theta_j)$: one writer for every base field.
-pub(super) fn j_t_cells<F: Field>(
-    n: usize,
-    cols: impl IntoIterator<Item = (Ext<F>, Matrix<Ext<F>>, Matrix<Ext<F>>)>,
-) -> (MatrixOut, MatrixOut) {
-    let zero_s = || vec![vec!["0".to_string(); n]; n];
-    let zero_a = || vec![vec![(0.0, 0.0); n]; n];
-    let (mut je, mut ja, mut te, mut ta) = (zero_s(), zero_a(), zero_s(), zero_a());
-    let mut off = 0;
-    for (k, v, j) in cols {
-        let m = v.ncols();
-        for r in 0..n {
-            for q in 0..m {
-                te[r][off + q] = k.fmt_elem(v.get(r, q));
-                ta[r][off + q] = k.approx(v.get(r, q));
-            }
-        }
-        for r in 0..m {
-            for q in 0..m {
-                je[off + r][off + q] = k.fmt_elem(j.get(r, q));
-                ja[off + r][off + q] = k.approx(j.get(r, q));
-            }
-        }
-        off += m;
+/// A matrix of exact texts, LaTeX and approximations under construction (entries of
+/// several fields).
+pub(super) struct Cells(pub MatrixOut);
+
+impl Cells {
+    pub fn zeros(nrows: usize, ncols: usize) -> Self {
+        Cells(MatrixOut {
+            exact: vec![vec!["0".to_string(); ncols]; nrows],
+            latex: vec![vec!["0".to_string(); ncols]; nrows],
+            approx: vec![vec![(0.0, 0.0); ncols]; nrows],
+            nrows,
+            ncols,
+        })
     }
-    (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
+    /// Entry `(i, j)` from an element of `k` (its display, LaTeX and approximation).
+    pub fn put<K: Field>(&mut self, (i, j): (usize, usize), k: &K, x: &K::Elem) {
+        self.0.exact[i][j] = k.fmt_elem(x);
+        self.0.latex[i][j] = k.latex_elem(x);
+        self.0.approx[i][j] = k.approx(x).unwrap_or((f64::NAN, 0.0));
+    }
+    /// Entry `(i, j)` from a text (also its LaTeX) and a real approximation.
+    pub fn text(&mut self, (i, j): (usize, usize), text: String, approx: f64) {
+        self.0.latex[i][j] = text.clone();
+        self.0.exact[i][j] = text;
+        self.0.approx[i][j] = (approx, 0.0);
+    }
+    /// Writes `m` with its top left corner at `(r, c)`.
+    pub fn block<K: Field>(&mut self, (r, c): (usize, usize), m: &Matrix<K>) {
+        for i in 0..m.nrows() {
+            for j in 0..m.ncols() {
+                self.put((r + i, c + j), m.field(), m.get(i, j));
+            }
+        }
+    }
+    pub fn value(self) -> Value {
+        Value::Matrix(Box::new(self.0))
+    }
 }
 
-/// `J` and `T` as report values: one exact matrix each when every eigenvalue lies in one
-/// field (`single`), else the per-eigenvalue writer `per_root`.
-pub(super) fn j_t_values<K: Field>(
-    single: Option<(Matrix<K>, Matrix<K>)>,
-    per_root: impl FnOnce() -> (MatrixOut, MatrixOut),
-) -> (Value, Value) {
-    let (jo, to) = match single {
-        Some((j, t)) => (MatrixOut::from_matrix(&j), MatrixOut::from_matrix(&t)),
-        None => per_root(),
+/// `r<k> = <value>`, with `(over K: root of g)` when the factor over the base field is not
+/// the eigenvalue's minimal polynomial over $\mathbb{Q}$.
+pub(super) fn root_line<F: Field>(k: &F, e: &Eigenvalue, g: &Poly<F>) -> String {
+    let over = if g.deg() == e.minpoly.deg() {
+        String::new()
+    } else {
+        format!(" (over {k}: root of {g})")
     };
-    (Value::Matrix(Box::new(jo)), Value::Matrix(Box::new(to)))
+    format!("{} = {}{over}", e.symbol, e.value)
 }
 
-/// The tail shared by the real Jordan reports over every field: `presentation` and `symbols`
-/// for the compact form (`presentation` the field's wording), then `fields`, `parts` and
-/// `notes` (each when not empty).
-pub(super) fn real_form_tail(
-    mut r: Report,
-    compact: Option<&str>,
-    symbols: &[String],
-    fields: Vec<Value>,
-    [parts, notes]: [&[String]; 2],
-) -> Report {
-    let strs = |xs: &[String]| xs.iter().cloned().map(Value::Str).collect::<Vec<_>>();
-    if let Some(presentation) = compact {
-        r = r
-            .str("presentation", presentation)
-            .list("symbols", strs(symbols));
-    }
-    if !fields.is_empty() {
-        r = r.list("fields", fields);
-    }
-    if !parts.is_empty() {
-        r = r.list("parts", strs(parts));
-    }
-    if !notes.is_empty() {
-        r = r.list("notes", strs(notes));
-    }
-    r
+/// Whether the eigenvalue's field displays with its symbol (`r<k>`), so the symbol needs a
+/// definition.
+pub(super) fn named<F: Field>(f: &Ext<F>, e: &Eigenvalue) -> bool {
+    f.degree() >= 2 && f.var() == e.symbol
 }
 
-impl JordanForm {
-    /// $J$ and $T$ for output: exact strings (per-root fields) and approximations.
+/// `var = root of m near x` for a number field of degree $\ge 3$ shown with its generator.
+pub(super) fn field_line(f: &crate::algebraic::NumberField) -> Option<String> {
+    (f.degree() >= 3 || (f.degree() == 2 && f.radicand().is_none())).then(|| {
+        format!(
+            "{} = {}",
+            f.var(),
+            crate::jordan::value_display(f.modulus(), f.root_approx())
+        )
+    })
+}
+
+/// `-x` for a display string (`-b3`, `-(1 + sqrt(2))`).
+pub(super) fn neg_display(x: &str) -> String {
+    if x == "0" {
+        return x.to_string();
+    }
+    if let Some(rest) = x.strip_prefix('-')
+        && !rest.contains([' ', '+', '-'])
+    {
+        return rest.to_string();
+    }
+    // `Re(...)`, `Im(...)`: one call, no parentheses needed
+    let call = (x.starts_with("Re(") || x.starts_with("Im(")) && x.ends_with(')') && {
+        let mut depth = 0i32;
+        x[2..].char_indices().all(|(i, ch)| {
+            depth += match ch {
+                '(' => 1,
+                ')' => -1,
+                _ => 0,
+            };
+            depth > 0 || i + 3 == x.len()
+        })
+    };
+    if call {
+        return format!("-{x}");
+    }
+    if x.contains([' ', '+']) || x[1..].contains('-') {
+        format!("-({x})")
+    } else {
+        format!("-{x}")
+    }
+}
+
+/// $q\sqrt g$ for rational $q$ and square-free $g > 0$ (`q` itself when $g = 1$).
+fn im_radical(q: &crate::field::Rational, g: &num_bigint::BigInt) -> String {
+    if num_traits::One::is_one(g) {
+        crate::field::fmt_rational(q)
+    } else {
+        crate::field::quadratic::fmt_pair(&num_traits::Zero::zero(), q, &format!("sqrt({g})"))
+    }
+}
+
+/// `Re x` (`imag` false) or `Im x` of $x \in E$ at a root $\theta = a_0 + s\sqrt f$
+/// ($f < 0$) of a rational quadratic factor, exact: $x = c_0 + c_1\theta$ has
+/// $\operatorname{Re} x = c_0 + a_0 c_1 \in F$ and $\operatorname{Im} x = (s c_1)
+/// \sqrt{-f}$, written `u` and `w*sqrt(-f)` (`None` without the radical form).
+fn radical_part<F: Field>(f: &Ext<F>, x: &ExtElem<F::Elem>, imag: bool) -> Option<String> {
+    let (a0, s, fd) = f.0.radical.as_ref()?;
+    let kf = f.base();
+    let c0 = x.0.first().cloned().unwrap_or_else(|| kf.zero());
+    let c1 = x.0.get(1).cloned().unwrap_or_else(|| kf.zero());
+    if !imag {
+        return Some(kf.fmt_elem(&kf.add(&c0, &kf.mul(&kf.from_rational(a0), &c1))));
+    }
+    let w = kf.mul(&kf.from_rational(s), &c1);
+    let g = -fd;
+    let rad = format!("sqrt({g})");
+    Some(match kf.to_rational(&w) {
+        Some(q) => im_radical(&q, &g),
+        None if num_traits::One::is_one(&g) => kf.fmt_elem(&w),
+        None => {
+            let wt = kf.fmt_elem(&w);
+            if wt[1..].contains([' ', '+', '-']) {
+                format!("({wt})*{rad}")
+            } else {
+                format!("{wt}*{rad}")
+            }
+        }
+    })
+}
+
+/// `Re(x)` / `Im(x)` display of an element of $E$ at $\theta$: exact parts for the radical
+/// form, plain when it lies in the base field, `theta` (the displays of
+/// $\operatorname{Re}\theta$, $\operatorname{Im}\theta$) for $\pm\theta$ itself.
+pub(super) fn part_text<F: Field>(
+    f: &Ext<F>,
+    x: &ExtElem<F::Elem>,
+    imag: bool,
+    theta: (&str, &str),
+) -> String {
+    if let Some(t) = radical_part(f, x, imag) {
+        return t;
+    }
+    if f.is_zero(x) {
+        return "0".into();
+    }
+    if let Some(c) = f.to_base(x) {
+        return if imag {
+            "0".into()
+        } else {
+            f.base().fmt_elem(&c)
+        };
+    }
+    if *x == f.generator() {
+        return (if imag { theta.1 } else { theta.0 }).to_string();
+    }
+    if f.neg(x) == f.generator() {
+        return neg_display(if imag { theta.1 } else { theta.0 });
+    }
+    format!("{}({})", if imag { "Im" } else { "Re" }, f.fmt_elem(x))
+}
+
+/// The displays of $\operatorname{Re}\theta$, $\operatorname{Im}\theta$ of a pair: closed
+/// forms up to degree 2, else the symbols `a<k>`, `b<k>`.
+pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue) -> (String, String) {
+    let k = &e.symbol[1..];
+    let show = |x: &Option<crate::algebraic::AlgebraicNumber>, sym: String| match x {
+        Some(x) if x.degree() <= 2 => x.value_string(),
+        _ => sym,
+    };
+    (show(&cp.re, format!("a{k}")), show(&cp.im, format!("b{k}")))
+}
+
+/// The legend lines of a compact pair: `r<k> = a<k> + b<k>*i` and each part's definition
+/// (a closed form where there is one, else `root of P near X`; a part not computed exactly
+/// is `near X`).
+fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
+    let (re, im) = theta_parts(cp, e);
+    let k = &e.symbol[1..];
+    let define = |sym: String, what: &str, x: &Option<crate::algebraic::AlgebraicNumber>, v| match x
+    {
+        Some(x) if x.degree() <= 2 => None,
+        Some(x) => Some(format!(
+            "{sym} = {what} {} = {}",
+            e.symbol,
+            x.value_string()
+        )),
+        None => Some(format!(
+            "{sym} = {what} {}, near {}",
+            e.symbol,
+            crate::algebraic::display::approx_text((v, 0.0))
+        )),
+    };
+    let mut out = vec![format!("{} = {re} + {im}*i", e.symbol)];
+    out.extend(define(format!("a{k}"), "Re", &cp.re, e.approx.0));
+    out.extend(define(format!("b{k}"), "Im", &cp.im, e.approx.1));
+    out
+}
+
+impl<F: EigenField> JordanForm<F> {
+    /// $J$ and $T$ for output: per eigenvalue, entries exact in its field (texts, LaTeX and
+    /// approximations).
     pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
-        let cols = self.root_columns().into_iter().map(|c| (c.field, c.v, c.j));
-        j_t_cells(self.n(), cols)
+        let n = self.n();
+        let (mut j, mut t) = (Cells::zeros(n, n), Cells::zeros(n, n));
+        let mut off = 0;
+        for c in self.root_columns() {
+            t.block((0, off), &c.v);
+            j.block((off, off), &c.j);
+            off += c.v.ncols();
+        }
+        (j.0, t.0)
     }
     /// The report with the CLI contract's keys: `eigenvalues[]` (`minpoly`, `value`,
     /// `approx`, `algebraic_multiplicity`, `geometric_multiplicity`, `blocks`), `J`, `T`
-    /// (exact, with `_approx`), `verified`, plus `charpoly`, `presentation`, `symbols`.
+    /// (exact, with `_approx`), `verified`, plus `n`, `field`, `charpoly`, `presentation`,
+    /// `symbols`.
     pub fn report(&self) -> Report {
-        let evs = super::pencil::eigen_items(self);
+        let k = self.base();
         let single = self.single_field();
         let presentation = match &single {
-            Some((j, _)) if j.field().degree() == 1 => "single matrix over QQ".to_string(),
-            Some((j, _)) => format!("single matrix over QQ({})", j.field().0.var),
-            None => "per eigenvalue: the columns of eigenvalue r<k> are exact in QQ(r<k>) \
-                     (closed form for degree <= 2)"
-                .to_string(),
+            Some((j, _)) if j.field().degree() == 1 => format!("single matrix over {k}"),
+            Some((j, _)) => format!("single matrix over QQ({})", j.field().var()),
+            None => format!(
+                "per eigenvalue: the columns of eigenvalue r<k> are exact in {k}(r<k>), written \
+                 as polynomials in r<k> over {k} (closed form or radical for degree <= 2)"
+            ),
         };
-        let symbols: Vec<Value> = self
-            .eigenvalues
-            .iter()
-            .filter(|e| e.minpoly.deg() >= 3)
-            .map(|e| {
-                Value::Str(format!(
-                    "{} = {}",
-                    e.symbol,
-                    crate::jordan::value_display(&e.minpoly, e.approx)
-                ))
+        let symbols: Vec<Value> = (0..self.eigenvalues.len())
+            .filter(|&ev| named(&self.root_map(ev).0, &self.eigenvalues[ev]))
+            .map(|ev| {
+                let e = &self.eigenvalues[ev];
+                Value::Str(root_line(k, e, &self.components[e.component].factor))
             })
             .collect();
-        let (jo, to) = j_t_values(single, || self.j_t_out());
+        let (jo, to) = match single {
+            Some((j, t)) => (
+                Value::Matrix(Box::new(MatrixOut::from_matrix(&j))),
+                Value::Matrix(Box::new(MatrixOut::from_matrix(&t))),
+            ),
+            None => {
+                let (j, t) = self.j_t_out();
+                (Value::Matrix(Box::new(j)), Value::Matrix(Box::new(t)))
+            }
+        };
         let mut r = Report::titled("Jordan form")
             .int("n", self.n())
+            .str("field", k.to_string())
             .str("charpoly", self.charpoly.to_string())
-            .list("eigenvalues", evs)
+            .list("eigenvalues", eigenvalue_items(&self.eigenvalues))
             .with("J", jo)
             .with("T", to)
             .str("presentation", presentation);
@@ -125,95 +281,153 @@ impl JordanForm {
     }
 }
 
-impl RealJordanForm {
-    /// $J$, $T$ for output (exact strings in each block's field; `~x` marks an
-    /// approximate entry of a non-exact block).
-    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
+/// The legend of a real Jordan form: `symbols` (eigenvalues of compact pairs), `fields`
+/// (generators of the fields shown with a symbol), `parts` (the parts of $\theta$).
+#[derive(Default)]
+struct Legend {
+    symbols: Vec<String>,
+    fields: Vec<String>,
+    parts: Vec<String>,
+}
+
+impl<F: EigenField> RealJordanForm<F> {
+    /// `J`, `T` (exact texts, LaTeX and approximations) and the legend.
+    fn cells(&self) -> (Cells, Cells, Legend) {
         let n = self.n;
-        let mut je = vec![vec!["0".to_string(); n]; n];
-        let mut te = je.clone();
-        let mut ja = vec![vec![(0.0, 0.0); n]; n];
-        let mut ta = ja.clone();
+        let (mut jc, mut tc) = (Cells::zeros(n, n), Cells::zeros(n, n));
+        let mut legend = Legend::default();
         let mut off = 0;
         for b in &self.blocks {
-            let w = b.t_approx.first().map_or(b.j_approx.len(), |r| r.len());
-            for r in 0..n {
-                for q in 0..w {
-                    ta[r][off + q] = (b.t_approx[r][q], 0.0);
-                    te[r][off + q] = match (&b.field, &b.t, &b.compact) {
-                        (Some(f), Some(t), _) => f.fmt_elem(t.get(r, q)),
-                        (_, _, Some(cp)) => {
-                            let (re, im) = cp.part_strings(cp.v.get(r, q / 2));
-                            if q % 2 == 0 { re } else { im }
-                        }
-                        _ => format!("~{}", b.t_approx[r][q]),
-                    };
+            let e = &self.eigenvalues[b.eigenvalue];
+            let g = &self.factors[e.component];
+            let w = b.j_approx.len();
+            match &b.entries {
+                RealEntries::Root { field, t, j } => {
+                    if named(field, e) {
+                        legend.fields.push(root_line(&self.base, e, g));
+                    }
+                    tc.block((0, off), t);
+                    jc.block((off, off), j);
                 }
-            }
-            for r in 0..w {
-                for q in 0..w {
-                    ja[off + r][off + q] = (b.j_approx[r][q], 0.0);
-                    je[off + r][off + q] = match (&b.field, &b.j, &b.compact) {
-                        (Some(f), Some(j), _) => f.fmt_elem(j.get(r, q)),
-                        (_, _, Some(cp)) => cp.j_entry(r, q, b.j_approx[r][q] == 1.0),
-                        _ => format!("~{}", b.j_approx[r][q]),
-                    };
+                RealEntries::Expanded { pair, t, j } => {
+                    let f = &pair.field;
+                    if f.degree() >= 3 {
+                        legend.fields.extend(field_line(f));
+                        let th = pair.theta();
+                        legend.parts.push(format!(
+                            "{} = {} + ({})*i",
+                            e.symbol,
+                            f.fmt_elem(&th.re),
+                            f.fmt_elem(&th.im)
+                        ));
+                    }
+                    tc.block((0, off), t);
+                    jc.block((off, off), j);
+                }
+                RealEntries::Compact(cp) | RealEntries::Radical(cp) => {
+                    if b.is_compact() {
+                        legend.symbols.push(root_line(&self.base, e, g));
+                        legend.parts.extend(part_lines(e, cp));
+                    }
+                    let (a, bb) = theta_parts(cp, e);
+                    for r in 0..n {
+                        for q in 0..w {
+                            let x = cp.v.get(r, q / 2);
+                            let txt = part_text(&cp.field, x, q % 2 == 1, (&a, &bb));
+                            tc.text((r, off + q), txt, b.t_approx[r][q]);
+                        }
+                    }
+                    for r in 0..w {
+                        for q in 0..w {
+                            let txt = if r / 2 == q / 2 {
+                                match (r % 2, q % 2) {
+                                    (0, 0) | (1, 1) => a.clone(),
+                                    (0, 1) => bb.clone(),
+                                    _ => neg_display(&bb),
+                                }
+                            } else if b.j_approx[r][q] == 1.0 {
+                                "1".to_string()
+                            } else {
+                                "0".to_string()
+                            };
+                            jc.text((off + r, off + q), txt, b.j_approx[r][q]);
+                        }
+                    }
                 }
             }
             off += w;
         }
-        (MatrixOut::from_parts(je, ja), MatrixOut::from_parts(te, ta))
+        (jc, tc, legend)
     }
-    /// Report: `J`, `T` (exact strings and `_approx`), `exact`, `verified`, `fields`,
-    /// `parts`, `notes`.
-    pub fn report(&self) -> Report {
-        let (jo, to) = j_t_values(self.single_field(), || self.j_t_out());
-        let fields: Vec<Value> = self
-            .blocks
+    /// $J$, $T$ for output (exact texts in each block's field).
+    pub fn j_t_out(&self) -> (MatrixOut, MatrixOut) {
+        let (j, t, _) = self.cells();
+        (j.0, t.0)
+    }
+    /// The notes, one line per pair left compact although its real field was asked for.
+    pub fn note_lines(&self) -> Vec<String> {
+        self.notes
             .iter()
-            .filter_map(|b| b.field.as_ref())
-            .filter(|f| f.degree() >= 3)
-            .map(|f| {
-                Value::Str(format!(
-                    "{} = {}",
-                    f.0.var,
-                    crate::jordan::value_display(f.modulus(), f.root_approx())
-                ))
+            .map(|note| {
+                let e = &self.eigenvalues[note.eigenvalue];
+                format!(
+                    "eigenvalue {} (root of {}): exact real field not found ({}); compact exact \
+                     form given instead",
+                    e.symbol, e.minpoly, note.error
+                )
             })
-            .collect();
-        let compact = self.blocks.iter().any(|b| b.compact.is_some());
-        let r = Report::titled("Real Jordan form")
-            .with("J", jo)
-            .with("T", to)
+            .collect()
+    }
+    /// Report: `J`, `T` (exact texts and `_approx`), `exact`, `verified`, and for the compact
+    /// form `presentation` and `symbols`, then `fields`, `parts`, `notes` (each when not
+    /// empty).
+    pub fn report(&self) -> Report {
+        let (j, t, legend) = self.cells();
+        let mut r = Report::titled("Real Jordan form")
+            .with("J", j.value())
+            .with("T", t.value())
             .bool("exact", self.exact)
             .bool("verified", self.verified);
-        let presentation = "compact: each complex pair r<k> = a<k> + b<k>*i has the block \
-             [[a, b], [-b, a]] and the columns Re v, Im v of its complex chains v in QQ(r<k>) \
-             (T_R = T_C S); verified on the complex side (A T_C = T_C J_C in QQ(r<k>), which \
-             implies A T_R = T_R J_R); `--expand` writes the entries in a real field";
-        real_form_tail(
-            r,
-            compact.then_some(presentation),
-            &self.symbols,
-            fields,
-            [&self.parts, &self.notes],
-        )
+        let strs = |xs: Vec<String>| xs.into_iter().map(Value::Str).collect::<Vec<_>>();
+        if self.blocks.iter().any(|b| b.is_compact()) {
+            let k = &self.base;
+            let presentation = format!(
+                "compact: each complex pair r<k> = a<k> + b<k>*i has the block [[a, b], [-b, a]] \
+                 and the columns Re v, Im v of its complex chains v in {k}(r<k>) (T_R = T_C S); \
+                 verified on the complex side (A T_C = T_C J_C in {k}(r<k>), which implies \
+                 A T_R = T_R J_R); `--expand` writes the entries in a real field"
+            );
+            r = r
+                .str("presentation", presentation)
+                .list("symbols", strs(legend.symbols));
+        }
+        let notes = self.note_lines();
+        for (key, xs) in [
+            ("fields", legend.fields),
+            ("parts", legend.parts),
+            ("notes", notes),
+        ] {
+            if !xs.is_empty() {
+                r = r.list(key, strs(xs));
+            }
+        }
+        r
     }
 }
 
-impl FreeResponse {
-    /// Report: one entry per eigenvalue and power, `x(t) = sum t^k e^(s t) G x0`, and
-    /// `verified` ([`FreeResponse::verify`]: the derivative and the value at `t = 0`).
-    pub fn report(&self, jf: &JordanForm) -> Report {
+impl<F: EigenField> FreeResponse<Ext<F>> {
+    /// Report: one entry per eigenvalue and power, `x(t) = sum t^k e^(s t) G x0` (`G` exact
+    /// in the eigenvalue's field), and `verified` ([`FreeResponse::verify`]: the derivative
+    /// and the value at `t = 0`).
+    pub fn report(&self, jf: &JordanForm<F>) -> Report {
         let mut items = vec![];
         for (ev, e) in jf.eigenvalues.iter().enumerate() {
-            let (field, f) = jf.root_map(ev);
-            for t in self.terms.iter().filter(|t| t.component == e.component) {
+            for (power, g) in self.terms_of(jf, ev) {
                 items.push(Value::Obj(
                     Report::new()
                         .str("eigenvalue", e.value.clone())
-                        .int("power", t.power)
-                        .matrix("G", &t.coeff.map(&field, &f)),
+                        .int("power", power)
+                        .matrix("G", &g),
                 ));
             }
         }
@@ -223,14 +437,14 @@ impl FreeResponse {
     }
 }
 
-impl std::fmt::Display for JordanForm {
+impl<F: EigenField> std::fmt::Display for JordanForm<F> {
     /// The text report: eigenvalues with their blocks, `J`, `T`, `verified`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.report().to_text())
     }
 }
 
-impl std::fmt::Display for RealJordanForm {
+impl<F: EigenField> std::fmt::Display for RealJordanForm<F> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.report().to_text())
     }

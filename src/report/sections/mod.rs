@@ -10,7 +10,6 @@ mod algebraic;
 mod dcgain;
 mod interconnect;
 mod jordan;
-mod jordan_k;
 mod mpoly;
 mod pencil;
 mod realization;

@@ -3,157 +3,184 @@
 //! Presentation only: these `report` methods read finished results of [`crate::realization`] and
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
-use crate::algebraic::NfElem;
+use super::jordan::{Cells, field_line, named, neg_display, part_text, root_line};
+use crate::algebraic::ExtElem;
 use crate::field::Field;
+use crate::jordan::EigenField;
+use crate::matrix::Matrix;
 use crate::realization::{
-    JordanMinimal, MinimalRealization, ModalTable, RealModalBlock, StandardForm,
+    JordanMinimal, MinimalRealization, ModalBlock, ModalTable, RealModalBlock, StandardForm,
 };
-use crate::report::{MatrixOut, Report, Value, str_list};
+use crate::report::{Report, Value, str_list};
 
-/// Writes a compact pair block at offset `off`: state `2i` is $\mathrm{Re}\, z_i$, state
-/// `2i + 1` is $-\mathrm{Im}\, z_i$ (the module docs' convention), entries displayed as
-/// `Re(...)`, `Im(...)` of the $K$-entries and `a<k>`, `b<k>` for the parts of $\theta$.
-fn compact_outputs(
-    blk: &RealModalBlock,
-    off: usize,
-    (a, b, c): (&mut MatrixOut, &mut MatrixOut, &mut MatrixOut),
-) {
+/// Writes a block $(A, B, C)$ at offset `off`: block-diagonal `A`, stacked `B`, `C`.
+fn put_block<K: Field>([ba, bb, bc]: [&Matrix<K>; 3], off: usize, [a, b, c]: [&mut Cells; 3]) {
+    a.block((off, off), ba);
+    b.block((off, 0), bb);
+    c.block((0, off), bc);
+}
+
+/// Writes the compact real block of a pair (complex data `blk` of the upper root) at `off`:
+/// state `2i` is $\mathrm{Re}\, z_i$, state `2i + 1` is $-\mathrm{Im}\, z_i$, so
+/// $A_r = [[\mathrm{Re}, \mathrm{Im}], [-\mathrm{Im}, \mathrm{Re}]]$ of $J$,
+/// $B_r = [\mathrm{Re}; -\mathrm{Im}]$ of $WB$, $C_r = [\mathrm{Re}, \mathrm{Im}]$ of $2CV$;
+/// `a<k>`, `b<k>` stand for the parts of $\theta$ (exact parts in the radical form).
+fn put_compact<F: Field>(blk: &ModalBlock<F>, sym: &str, off: usize, [a, b, c]: [&mut Cells; 3]) {
     let f = &blk.field;
-    let k = f.0.var.trim_start_matches('r').to_string();
-    let theta = f.generator();
-    // display of Re x / Im x (scaled by `scale`, negated by `neg`) and its approximation
-    let part = |x: &NfElem, im: bool, scale: i64, neg: bool| -> (String, f64) {
-        let (ar, ai) = f.approx(x);
-        let v = scale as f64 * if im { ai } else { ar } * if neg { -1.0 } else { 1.0 };
-        let sign = if neg { "-" } else { "" };
-        let pre = if scale == 1 {
-            String::new()
-        } else {
-            format!("{scale}*")
-        };
-        let text = if let Some(q) = f.to_rational(x) {
-            if im {
-                "0".to_string()
-            } else {
-                let q = q * crate::field::Rational::from_integer(scale.into());
-                crate::field::fmt_rational(&if neg { -q } else { q })
-            }
-        } else if *x == theta {
-            format!("{sign}{pre}{}{k}", if im { "b" } else { "a" })
-        } else {
-            let s = f.fmt_elem(x);
-            format!("{sign}{pre}{}({s})", if im { "Im" } else { "Re" })
-        };
-        (text, v)
-    };
-    let put = |o: &mut MatrixOut, i: usize, j: usize, (text, v): (String, f64)| {
-        o.latex[i][j] = text.clone();
-        o.exact[i][j] = text;
-        o.approx[i][j] = (v, 0.0);
+    let k = &sym[1..];
+    let (ta, tb) = (format!("a{k}"), format!("b{k}"));
+    let two = f.from_i64(2);
+    let put = |o: &mut Cells, at: (usize, usize), x: &ExtElem<F::Elem>, imag: bool, neg: bool| {
+        let (re, im) = f.approx(x);
+        let v = if imag { im } else { re };
+        let t = part_text(f, x, imag, (&ta, &tb));
+        let (t, v) = if neg { (neg_display(&t), -v) } else { (t, v) };
+        o.text(at, t, v);
     };
     let s = blk.a.nrows();
     for i in 0..s {
         for j in 0..s {
             let x = blk.a.get(i, j);
-            // [[Re, Im], [-Im, Re]] per complex entry
-            put(a, off + 2 * i, off + 2 * j, part(x, false, 1, false));
-            put(a, off + 2 * i, off + 2 * j + 1, part(x, true, 1, false));
-            put(a, off + 2 * i + 1, off + 2 * j, part(x, true, 1, true));
-            put(
-                a,
-                off + 2 * i + 1,
-                off + 2 * j + 1,
-                part(x, false, 1, false),
-            );
+            let (o, q) = (off + 2 * i, off + 2 * j);
+            put(a, (o, q), x, false, false);
+            put(a, (o, q + 1), x, true, false);
+            put(a, (o + 1, q), x, true, true);
+            put(a, (o + 1, q + 1), x, false, false);
         }
-        for col in 0..blk.b.ncols() {
-            let x = blk.b.get(i, col);
-            put(b, off + 2 * i, col, part(x, false, 1, false));
-            put(b, off + 2 * i + 1, col, part(x, true, 1, true));
+        for j in 0..blk.b.ncols() {
+            let x = blk.b.get(i, j);
+            put(b, (off + 2 * i, j), x, false, false);
+            put(b, (off + 2 * i + 1, j), x, true, true);
         }
         for row in 0..blk.c.nrows() {
-            let x = blk.c.get(row, i);
-            put(c, row, off + 2 * i, part(x, false, 2, false));
-            put(c, row, off + 2 * i + 1, part(x, true, 2, false));
+            let x = f.mul(&two, blk.c.get(row, i));
+            put(c, (row, off + 2 * i), &x, false, false);
+            put(c, (row, off + 2 * i + 1), &x, true, false);
         }
     }
 }
 
-/// The symbols of a Jordan-method realization, `name = definition` each.
-pub(super) fn symbol_list(symbols: &[(String, String)]) -> Value {
-    Value::List(
-        symbols
-            .iter()
-            .map(|(k, v)| Value::Str(format!("{k} = {v}")))
-            .collect(),
-    )
-}
-
-impl JordanMinimal {
-    /// Assembles block-diagonal `A` and stacked `B`, `C` for output (entries exact in each
-    /// block's field, symbols defined in `symbols`).
-    fn outputs(&self) -> (MatrixOut, MatrixOut, MatrixOut) {
+impl<F: EigenField> JordanMinimal<F> {
+    /// The display of mode `blk` (a pair: `... (and its conjugate)`).
+    fn mode_text(&self, ev: usize, pair: bool) -> String {
+        let v = &self.jordan.eigenvalues[ev].value;
+        if pair {
+            format!("{v} (and its conjugate)")
+        } else {
+            v.clone()
+        }
+    }
+    /// `name = definition` of every symbol in the entries.
+    fn symbols(&self) -> Vec<String> {
+        let jf = &self.jordan;
+        let k = jf.base();
+        let line = |ev: usize| {
+            let e = &jf.eigenvalues[ev];
+            root_line(k, e, &jf.components[e.component].factor)
+        };
+        let named_root = |b: &ModalBlock<F>| named(&b.field, &jf.eigenvalues[b.eigenvalue]);
+        let mut out = vec![];
+        match &self.real {
+            None => out.extend(
+                self.blocks
+                    .iter()
+                    .filter(|b| named_root(b))
+                    .map(|b| line(b.eigenvalue)),
+            ),
+            Some(real) => {
+                for blk in real {
+                    match blk {
+                        RealModalBlock::Root(b) if named_root(b) => out.push(line(b.eigenvalue)),
+                        RealModalBlock::Pair { pair, .. } => out.extend(field_line(&pair.field)),
+                        RealModalBlock::Compact(b) => {
+                            let e = &jf.eigenvalues[b.eigenvalue];
+                            let kk = &e.symbol[1..];
+                            out.push(line(b.eigenvalue));
+                            out.push(format!("a{kk} = Re {}", e.symbol));
+                            out.push(format!("b{kk} = Im {}", e.symbol));
+                        }
+                        _ => {}
+                    }
+                }
+            }
+        }
+        out
+    }
+    /// The CLI report: `method`, `field`, `original_order`, `order`, `mcmillan_degree`,
+    /// `stages`, `A`..`D`, `modes`, `presentation`, `symbols`, `verified`.
+    pub fn report(&self) -> Report {
         let r = self.order();
         let (m, p) = (self.d.ncols(), self.d.nrows());
-        let empty = |rows: usize, cols: usize| MatrixOut {
-            exact: vec![vec!["0".to_string(); cols]; rows],
-            latex: vec![vec!["0".to_string(); cols]; rows],
-            approx: vec![vec![(0.0, 0.0); cols]; rows],
-            nrows: rows,
-            ncols: cols,
-        };
-        let (mut a, mut b, mut c) = (empty(r, r), empty(r, m), empty(p, r));
+        let (mut a, mut b, mut c) = (Cells::zeros(r, r), Cells::zeros(r, m), Cells::zeros(p, r));
         let mut off = 0;
-        for blk in &self.blocks {
-            if blk.compact {
-                compact_outputs(blk, off, (&mut a, &mut b, &mut c));
-                off += blk.order;
-                continue;
-            }
-            let f = &blk.field;
-            let put = |o: &mut MatrixOut, i: usize, j: usize, x: &NfElem| {
-                o.exact[i][j] = f.fmt_elem(x);
-                o.latex[i][j] = f.latex_elem(x);
-                o.approx[i][j] = f.approx(x);
-            };
-            let s = blk.a.nrows();
-            for i in 0..s {
-                for j in 0..s {
-                    put(&mut a, off + i, off + j, blk.a.get(i, j));
-                }
-                for j in 0..m {
-                    put(&mut b, off + i, j, blk.b.get(i, j));
-                }
-                for row in 0..p {
-                    put(&mut c, row, off + i, blk.c.get(row, i));
+        let mut modes = vec![];
+        match &self.real {
+            Some(real) => {
+                for blk in real {
+                    let cells = [&mut a, &mut b, &mut c];
+                    match blk {
+                        RealModalBlock::Root(bk) => put_block([&bk.a, &bk.b, &bk.c], off, cells),
+                        RealModalBlock::Pair { a, b, c, .. } => put_block([a, b, c], off, cells),
+                        RealModalBlock::Compact(bk) | RealModalBlock::Radical(bk) => {
+                            let sym = &self.jordan.eigenvalues[bk.eigenvalue].symbol;
+                            put_compact(bk, sym, off, cells)
+                        }
+                    }
+                    modes.push(self.mode_text(blk.eigenvalue(), blk.is_pair()));
+                    off += blk.order();
                 }
             }
-            off += s;
+            None => {
+                for bk in &self.blocks {
+                    put_block([&bk.a, &bk.b, &bk.c], off, [&mut a, &mut b, &mut c]);
+                    modes.push(self.mode_text(bk.eigenvalue, false));
+                    off += bk.a.nrows();
+                }
+            }
         }
-        (a, b, c)
-    }
-    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`, the stage orders and
-    /// the symbols used in the entries).
-    pub fn report(&self) -> Report {
-        let (a, b, c) = self.outputs();
+        let compact = self
+            .real
+            .iter()
+            .flatten()
+            .any(|b| matches!(b, RealModalBlock::Compact(_)));
+        let k = self.d.field();
+        let presentation = match (&self.real, compact) {
+            (None, _) => format!(
+                "complex modal form: one Jordan block group per eigenvalue r<k>, entries exact in \
+                 {k}(r<k>)"
+            ),
+            (Some(_), false) => "real modal form: real eigenvalues as they are, each complex pair \
+                                 a +- b*i as blocks [[a, b], [-b, a]] with I2 coupling, entries \
+                                 exact in a real field; verified on the complex side (Markov \
+                                 parameters through traces)"
+                .to_string(),
+            (Some(_), true) => format!(
+                "real modal form: real eigenvalues as they are, each complex pair a +- b*i as \
+                 blocks [[a, b], [-b, a]]; a pair r<k> = a<k> + b<k>*i with a large real field \
+                 is compact: entries Re(x), Im(x) of elements of {k}(r<k>); verified on the \
+                 complex side (Markov parameters through traces)"
+            ),
+        };
         Report::titled("minimal realization (jordan)")
             .str("method", "jordan")
+            .str("field", k.to_string())
             .int("original_order", self.stages[0])
-            .int("order", self.order())
+            .int("order", r)
             .int("mcmillan_degree", self.mcmillan_degree)
             .with(
                 "stages",
                 Value::List(self.stages.iter().map(|&s| Value::Int(s as i64)).collect()),
             )
-            .with("A", Value::Matrix(Box::new(a)))
-            .with("B", Value::Matrix(Box::new(b)))
-            .with("C", Value::Matrix(Box::new(c)))
+            .with("A", a.value())
+            .with("B", b.value())
+            .with("C", c.value())
             .matrix("D", &self.d)
+            .with("modes", str_list(modes))
+            .str("presentation", presentation)
             .with(
-                "modes",
-                str_list(self.blocks.iter().map(|b| b.eigenvalue.clone())),
+                "symbols",
+                Value::List(self.symbols().into_iter().map(Value::Str).collect()),
             )
-            .with("symbols", symbol_list(&self.symbols))
             .bool("verified", self.verified)
     }
 }
@@ -187,13 +214,13 @@ impl ModalTable {
             .iter()
             .map(|m| {
                 let mut ex = Report::new();
-                for (k, v) in &m.exact {
-                    ex.push(k.clone(), Value::Str(v.clone()));
+                for (k, v) in m.exact_texts() {
+                    ex.push(k, Value::Str(v));
                 }
                 Value::Obj(
                     Report::new()
-                        .str("eigenvalue", m.eigenvalue.clone())
-                        .str("minpoly", m.minpoly.clone())
+                        .str("eigenvalue", m.eigenvalue.value_string())
+                        .str("minpoly", m.eigenvalue.minpoly().to_string())
                         .with(
                             "approx",
                             Value::List(vec![Value::Float(m.approx.0), Value::Float(m.approx.1)]),
@@ -221,13 +248,44 @@ impl ModalTable {
     }
 }
 
+impl crate::realization::Mode {
+    /// The exact figures as `(name, display)`: rationals, `sqrt(r)` in the one display of
+    /// quadratic numbers, a negative root with a leading `-`.
+    pub fn exact_texts(&self) -> Vec<(String, String)> {
+        use crate::realization::ExactFigure;
+        self.exact
+            .iter()
+            .map(|(k, v)| {
+                let text = match v {
+                    ExactFigure::Rational(q) => crate::field::fmt_rational(q),
+                    ExactFigure::Sqrt { radicand, negative } => {
+                        let s = sqrt_display(radicand);
+                        if *negative { format!("-{s}") } else { s }
+                    }
+                };
+                (k.to_string(), text)
+            })
+            .collect()
+    }
+}
+
+/// `sqrt(r)` as an exact display.
+fn sqrt_display(r: &crate::field::Rational) -> String {
+    let (field, a, b) = crate::field::QuadraticField::sqrt_of_rational(r);
+    match field {
+        None => crate::field::fmt_rational(&a),
+        Some(k) => crate::field::quadratic_display(&num_traits::Zero::zero(), &b, k.d()),
+    }
+}
+
 /// One row of the modal table's text: the mode (exact when short, the pair as `a ± b i`,
 /// an unpaired eigenvalue of a non-real matrix as `a + b i`, otherwise), its multiplicity, frequency in Hz, damping ratio and time constant.
 fn mode_row(m: &crate::realization::Mode) -> Vec<String> {
     use crate::report::text::{MAX_EXACT_ENTRY, short};
     let (re, im) = m.approx;
-    let mode = if m.eigenvalue.chars().count() <= MAX_EXACT_ENTRY {
-        m.eigenvalue.clone()
+    let value = m.eigenvalue.value_string();
+    let mode = if value.chars().count() <= MAX_EXACT_ENTRY {
+        value
     } else if m.paired {
         format!("{} ± {}i (approx.)", short(re), short(im))
     } else if im != 0.0 {
@@ -272,7 +330,7 @@ impl<K: Field> std::fmt::Display for MinimalRealization<K> {
     }
 }
 
-impl std::fmt::Display for JordanMinimal {
+impl<F: EigenField> std::fmt::Display for JordanMinimal<F> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.report().to_text())
     }

@@ -1,0 +1,220 @@
+//! Every structural operation over Q, Q(sqrt 2), Q(i) and Q(p) from one generic function
+//! (issue 23, "Done when"): the same generator plants a system `A = P J P^-1` (Jordan blocks
+//! of eigenvalues `c + s g`, `g` the field's generator), `B`, `C` and `D` over each field,
+//! and [`check_all`] asserts the identities of each operation, recomputed here:
+//!
+//! * Jordan form: `A T = T J` per eigenvalue in its exact field (over Q(p): `A T = T J` as
+//!   rational functions), the planted block sizes, the free response;
+//! * minimal realization, Kalman: Markov parameters `C A^k B` (`k < 2n`) and `D` equal,
+//!   order = McMillan degree (Hankel rank);
+//! * minimal realization, Jordan method: the same Markov parameters through the traces,
+//!   the same order as Kalman, and the real modal system's own Markov parameters when it
+//!   lies over the base field (not over Q(p): no Jordan-method realization there);
+//! * transfer matrix: `G(s) = C (sI - A)^-1 B + D` reproduces every Markov parameter;
+//! * invariant zeros: the SCB route and the Smith-form oracle give the same polynomial;
+//! * special coordinate basis: every identity of its construction (`Scb::check`) and its
+//!   invariant zero polynomial equal to the zeros'.
+
+use crate::common::{self, Rng};
+use exactlti::field::{Field, Q, QuadraticField};
+use exactlti::jordan::{EigenField, jordan_over};
+use exactlti::matrix::Matrix;
+use exactlti::ratfunc::RatFuncField;
+use exactlti::realization::{mcmillan_degree, minimal_jordan, minimal_kalman};
+use exactlti::structure::scb::scb;
+use exactlti::structure::zeros::{invariant_zeros, invariant_zeros_smith};
+use exactlti::system::StateSpace;
+
+/// The operations whose algorithm depends on the field's Jordan decomposition.
+trait JordanOps: Field {
+    /// Asserts the Jordan form's identities and the planted linear blocks.
+    fn check_jordan(a: &Matrix<Self>, planted: &[(Self::Elem, usize)]);
+    /// Asserts the Jordan-method realization's identities (when the field has one).
+    fn check_minreal_jordan(sys: &StateSpace<Self>, order: usize);
+}
+
+/// The Jordan form over a field with certified eigenvalues: `A T = T J` per eigenvalue in
+/// its exact field, and the planted blocks.
+fn check_jordan_eigen<F: EigenField>(a: &Matrix<F>, planted: &[(F::Elem, usize)]) {
+    let k = a.field();
+    let jf = jordan_over(a).unwrap();
+    assert!(jf.verified);
+    let mut cols = 0;
+    for rc in jf.root_columns() {
+        let f = &rc.field;
+        let ae = a.map(f, |x| f.from_base(x));
+        assert_eq!(&ae * &rc.v, &rc.v * &rc.j, "A T = T J in {f}");
+        cols += rc.v.ncols();
+    }
+    assert_eq!(cols, a.nrows());
+    for (lam, _) in planted {
+        let want: usize = planted.iter().filter(|(l, _)| l == lam).map(|p| p.1).sum();
+        let c = jf
+            .components
+            .iter()
+            .find(|c| c.degree() == 1 && k.neg(&c.factor.coeff(0)) == *lam)
+            .unwrap_or_else(|| panic!("no component for {}", k.fmt_elem(lam)));
+        assert_eq!(c.multiplicity, want);
+    }
+    assert!(jf.free_response().verify(&jf));
+    if k.is_real() {
+        assert!(jf.real_form().unwrap().verified);
+    }
+}
+
+/// The Jordan-method realization over a field with a Jordan decomposition.
+fn check_minreal_jordan_eigen<F: EigenField>(sys: &StateSpace<F>, order: usize) {
+    let r = minimal_jordan(sys).unwrap();
+    assert!(r.verified);
+    assert_eq!(r.order(), order);
+    assert_eq!(r.mcmillan_degree, order);
+    if let Some(rs) = r.real_to_base() {
+        let n = sys.nstates();
+        assert!(rs.same_markov(sys, 2 * n + 2));
+        assert_eq!(rs.nstates(), order);
+    }
+}
+
+impl JordanOps for Q {
+    fn check_jordan(a: &Matrix<Q>, planted: &[(Self::Elem, usize)]) {
+        check_jordan_eigen(a, planted)
+    }
+    fn check_minreal_jordan(sys: &StateSpace<Q>, order: usize) {
+        check_minreal_jordan_eigen(sys, order)
+    }
+}
+
+impl JordanOps for QuadraticField {
+    fn check_jordan(a: &Matrix<Self>, planted: &[(Self::Elem, usize)]) {
+        check_jordan_eigen(a, planted)
+    }
+    fn check_minreal_jordan(sys: &StateSpace<Self>, order: usize) {
+        check_minreal_jordan_eigen(sys, order)
+    }
+}
+
+impl JordanOps for RatFuncField {
+    /// Over Q(p) the parametric Jordan form (`jordan::params`): `A T = T J` recomputed.
+    fn check_jordan(a: &Matrix<Self>, planted: &[(Self::Elem, usize)]) {
+        let jf = exactlti::jordan::params::jordan_params(a).unwrap();
+        assert!(jf.verified);
+        assert_eq!(&jf.a * &jf.t, &jf.t * &jf.j, "A T = T J over Q(p)");
+        assert!(jf.t.inverse().is_ok());
+        let dim: usize = jf
+            .eigenvalues
+            .iter()
+            .map(|e| e.degree * e.algebraic_multiplicity)
+            .sum();
+        assert_eq!(dim, a.nrows());
+        for (lam, _) in planted {
+            let want: usize = planted.iter().filter(|(l, _)| l == lam).map(|p| p.1).sum();
+            let e = jf
+                .eigenvalues
+                .iter()
+                .find(|e| e.value.as_ref() == Some(lam))
+                .expect("a planted eigenvalue in Q(p)");
+            assert_eq!(e.algebraic_multiplicity, want);
+        }
+    }
+    fn check_minreal_jordan(_: &StateSpace<Self>, _: usize) {}
+}
+
+/// `A = P J P^-1` (blocks of `c + s g`, `c` in -2..=2, `s` in {0, 1}), `B`, `C` with one
+/// column / row, `D` a constant; returns the system and the planted blocks.
+fn planted<F: Field>(
+    k: &F,
+    g: &Option<F::Elem>,
+    rng: &mut Rng,
+) -> (StateSpace<F>, Vec<(F::Elem, usize)>) {
+    let mut blocks = vec![];
+    let mut n = 0;
+    let want = rng.int(2, 4) as usize;
+    while n < want {
+        let m = [1, 1, 2][rng.int(0, 2) as usize].min(want - n);
+        let mut lam = k.from_i64(rng.int(-2, 2));
+        if let Some(g) = g
+            && rng.int(0, 1) == 1
+        {
+            lam = k.add(&lam, g);
+        }
+        blocks.push((lam, m));
+        n += m;
+    }
+    let mut j = Matrix::zeros(k.clone(), n, n);
+    let mut off = 0;
+    for (lam, m) in &blocks {
+        for i in 0..*m {
+            j.set(off + i, off + i, lam.clone());
+            if i + 1 < *m {
+                j.set(off + i, off + i + 1, k.one());
+            }
+        }
+        off += m;
+    }
+    let p = common::unimodular(k, n, rng);
+    let a = &(&p * &j) * &p.inverse().unwrap();
+    let nonzero = |rng: &mut Rng| {
+        let x = common::elem(k, g, rng);
+        if k.is_zero(&x) { k.one() } else { x }
+    };
+    let b = Matrix::from_fn(k.clone(), n, 1, |_, _| nonzero(rng));
+    let c = Matrix::from_fn(k.clone(), 1, n, |_, _| nonzero(rng));
+    let d = Matrix::from_fn(k.clone(), 1, 1, |_, _| k.from_i64(rng.int(0, 1)));
+    (StateSpace::new(a, b, c, d).unwrap(), blocks)
+}
+
+/// Every operation of the module docs on planted systems over `k`.
+fn check_all<F: JordanOps>(k: &F, g: &Option<F::Elem>, seed: u64, cases: usize) {
+    let mut rng = Rng(seed);
+    for _ in 0..cases {
+        let (sys, blocks) = planted(k, g, &mut rng);
+        let n = sys.nstates();
+        // Jordan form
+        F::check_jordan(&sys.a, &blocks);
+        // minimal realization (Kalman): Markov parameters, D and the McMillan degree
+        let mcm = mcmillan_degree(&sys);
+        let kal = minimal_kalman(&sys).unwrap();
+        assert!(kal.verified);
+        assert_eq!(kal.order, mcm);
+        assert!(kal.system.same_markov(&sys, 2 * n + 2));
+        assert_eq!(kal.system.d, sys.d);
+        // minimal realization (Jordan method)
+        F::check_minreal_jordan(&sys, mcm);
+        // transfer matrix
+        let tf = sys.transfer_matrix().unwrap();
+        assert!(tf.matches_markov(&sys));
+        // invariant zeros: the SCB route against the Smith-form oracle
+        let z = invariant_zeros(&sys.a, &sys.b, &sys.c, &sys.d).unwrap();
+        let zs = invariant_zeros_smith(&sys.a, &sys.b, &sys.c, &sys.d).unwrap();
+        assert_eq!(z.polynomial, zs.polynomial);
+        assert_eq!(z.normal_rank, zs.normal_rank);
+        // special coordinate basis
+        let s = scb(&sys.a, &sys.b, &sys.c, &sys.d).unwrap();
+        s.check().unwrap();
+        assert_eq!(s.invariant_zero_polynomial().monic(), z.polynomial);
+    }
+}
+
+#[test]
+fn every_operation_over_q() {
+    check_all(&common::q(), &None, 2301, common::iters(6));
+}
+
+#[test]
+fn every_operation_over_q_sqrt2() {
+    let (k, g) = common::qsqrt2();
+    check_all(&k, &g, 2302, common::iters(6));
+}
+
+#[test]
+fn every_operation_over_q_i() {
+    let (k, g) = common::qi();
+    check_all(&k, &g, 2303, common::iters(6));
+}
+
+#[test]
+fn every_operation_over_q_p() {
+    let k = RatFuncField::new(&["p"]).unwrap();
+    let g = Some(k.var(0));
+    check_all(&k, &g, 2304, common::iters(3));
+}
