@@ -25,8 +25,6 @@ pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
 pub mod expr;
 pub mod rational;
-/// The literal rules of the expression reader ([`expr::lex`]), under their older name.
-pub use expr::lex as scan;
 
 /// $x^e$ by repeated squaring from `one` ($x^0 = $ `one`), `mul` the product: at most
 /// $2 \log_2 e$ products. Serves scalars, polynomials and matrices alike.

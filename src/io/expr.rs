@@ -50,8 +50,8 @@ pub use crate::field::expr::{MAX_DEPTH, MAX_NUMBER_LEN};
 /// `G` entries and of symbolic entries.
 pub const MAX_EXPR_LEN: usize = 10_000;
 
-/// Names that are never parameters ([`crate::field::scan::RESERVED`]).
-pub const RESERVED: [&str; 3] = crate::field::scan::RESERVED;
+/// Names that are never parameters ([`crate::field::expr::RESERVED`]).
+pub const RESERVED: [&str; 3] = crate::field::expr::RESERVED;
 
 /// Is `s` usable as a parameter name: an identifier `[A-Za-z_][A-Za-z0-9_]*` that is not
 /// one of [`RESERVED`]?
@@ -187,10 +187,11 @@ impl Algebra for Exact<'_> {
             }),
         }
     }
-    fn call(&self, f: &str, v: Value, _: usize) -> Result<Value, ExprError> {
+    fn call(&self, f: &str, mut args: Vec<Value>, _: usize) -> Result<Value, ExprError> {
         match f {
             "pi" => err("pi is transcendental; give a rational approximation such as 355/113"),
-            "sqrt" => v.sqrt(),
+            "sqrt" if args.len() == 1 => args.pop().expect("one argument").sqrt(),
+            "sqrt" => err("sqrt takes one argument, e.g. sqrt(2)"),
             _ => err(format!("unknown function '{f}' (only sqrt is available)")),
         }
     }

@@ -102,7 +102,7 @@ impl Algebra for InS<'_> {
             )),
         }
     }
-    fn call(&self, f: &str, _: RF, pos: usize) -> Result<RF> {
+    fn call(&self, f: &str, _: Vec<RF>, pos: usize) -> Result<RF> {
         Err(at(pos, &format!("unknown function '{f}'")))
     }
     fn neg(&self, a: RF, _: usize) -> Result<RF> {

@@ -217,7 +217,7 @@ impl Algebra for Fractions<'_> {
         };
         Ok((MPoly::var(self.n(), i), MPoly::one(self.n())))
     }
-    fn call(&self, f: &str, _: Frac, pos: usize) -> Result<Frac> {
+    fn call(&self, f: &str, _: Vec<Frac>, pos: usize) -> Result<Frac> {
         self.name(f, pos)
     }
     fn neg(&self, a: Frac, _: usize) -> Result<Frac> {

@@ -72,7 +72,7 @@ impl Algebra for Univariate {
         }
         Ok(Poly::x(Q))
     }
-    fn call(&self, f: &str, _: Poly<Q>, pos: usize) -> Result<Poly<Q>> {
+    fn call(&self, f: &str, _: Vec<Poly<Q>>, pos: usize) -> Result<Poly<Q>> {
         self.name(f, pos)
     }
     fn neg(&self, a: Poly<Q>, _: usize) -> Result<Poly<Q>> {

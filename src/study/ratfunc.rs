@@ -189,7 +189,7 @@ impl Algebra for InQv<'_> {
             None => self.bad(&format!("unknown parameter '{n}'")),
         }
     }
-    fn call(&self, f: &str, _: RatFunc, at: usize) -> Result<RatFunc> {
+    fn call(&self, f: &str, _: Vec<RatFunc>, at: usize) -> Result<RatFunc> {
         self.name(f, at)
     }
     fn neg(&self, a: RatFunc, _: usize) -> Result<RatFunc> {

@@ -5,7 +5,7 @@
 //!   digits, taken only when a digit follows (`2e` is `2` followed by the name `e`); its
 //!   value is the exact rational the decimal spells ([`parse_number`]);
 //! * an identifier is `[A-Za-z_][A-Za-z0-9_]*`;
-//! * operators are `+ - * / ^ ( )`, and `**` is `^`;
+//! * operators are `+ - * / ^ ( )`, `,` between arguments, and `**` is `^`;
 //! * a number written directly before `i` (`2i`, `0.5i`) is followed by an implicit `*`
 //!   (a zero-width token), so it binds exactly like the written-out product.
 
@@ -116,7 +116,7 @@ pub enum Tok {
     Num(String),
     /// An identifier.
     Name(String),
-    /// One of `+ - * / ^ ( )` (`**` is `^`).
+    /// One of `+ - * / ^ ( ) ,` (`**` is `^`).
     Op(char),
 }
 
@@ -171,7 +171,7 @@ pub fn lex(text: &str) -> Result<Vec<Token>, SyntaxError> {
         } else if c == '*' && cs.get(i + 1) == Some(&'*') {
             i += 2;
             Tok::Op('^')
-        } else if "+-*/^()".contains(c) {
+        } else if "+-*/^(),".contains(c) {
             i += 1;
             Tok::Op(c)
         } else {

@@ -16,7 +16,7 @@
 //! term  := unary (('*' | '/') unary)*        juxtaposition multiplies in Dialect::POLY
 //! unary := ('-' | '+') unary | power
 //! power := atom ('^' unary)?                 `**` is `^`
-//! atom  := number | name | name '(' expr ')' | '(' expr ')'
+//! atom  := number | name | name '(' expr (',' expr)* ')' | '(' expr ')'
 //! ```
 //!
 //! A number written directly before `i` (`2i`, `0.5i`) is an implicit product bound exactly
@@ -104,8 +104,8 @@ pub enum Node {
     /// A number literal as written (exact value: [`parse_number`]).
     Num(String),
     Name(String),
-    /// `f(x)`.
-    Call(String, Box<Expr>),
+    /// `f(x, y, ...)`.
+    Call(String, Vec<Expr>),
     Neg(Box<Expr>),
     /// Terms with their sign (`true`: subtracted); the first is never subtracted.
     Sum(Vec<(bool, Expr)>),
@@ -125,8 +125,8 @@ pub trait Algebra {
     fn syntax(&self, e: SyntaxError) -> Self::Error;
     fn number(&self, text: &str, at: usize) -> Result<Self::Value, Self::Error>;
     fn name(&self, name: &str, at: usize) -> Result<Self::Value, Self::Error>;
-    /// `f(arg)`: only [`Dialect::EXACT`] has calls.
-    fn call(&self, f: &str, arg: Self::Value, at: usize) -> Result<Self::Value, Self::Error>;
+    /// `f(args)`: only [`Dialect::EXACT`] has calls.
+    fn call(&self, f: &str, args: Vec<Self::Value>, at: usize) -> Result<Self::Value, Self::Error>;
     fn neg(&self, a: Self::Value, at: usize) -> Result<Self::Value, Self::Error>;
     /// `a + b`, or `a - b` when `subtract`.
     fn add(
@@ -167,9 +167,9 @@ pub fn fold<A: Algebra>(alg: &A, e: &Expr) -> Result<A::Value, A::Error> {
     match &e.node {
         Node::Num(s) => alg.number(s, e.start),
         Node::Name(n) => alg.name(n, e.start),
-        Node::Call(f, x) => {
-            let v = fold(alg, x)?;
-            alg.call(f, v, e.start)
+        Node::Call(f, xs) => {
+            let vs = xs.iter().map(|x| fold(alg, x)).collect::<Result<_, _>>()?;
+            alg.call(f, vs, e.start)
         }
         Node::Neg(x) => {
             let v = fold(alg, x)?;

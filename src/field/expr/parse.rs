@@ -186,7 +186,7 @@ impl Parser<'_> {
             Some(_) => self.unexpected(),
         }
     }
-    /// `atom := number | name | name '(' expr ')' | '(' expr ')'` (no calls when the
+    /// `atom := number | name | name '(' expr (',' expr)* ')' | '(' expr ')'` (no calls when the
     /// dialect multiplies by juxtaposition: `a(b + 1)` is a product)
     fn atom(&mut self) -> Result<Expr, SyntaxError> {
         let Some(t) = self.toks.get(self.pos) else {
@@ -215,9 +215,12 @@ impl Parser<'_> {
                     return Ok(Expr::new(Node::Name(n), start, end));
                 }
                 self.pos += 1;
-                let arg = self.expr()?;
+                let mut args = vec![self.expr()?];
+                while self.eat(&[',']).is_some() {
+                    args.push(self.expr()?);
+                }
                 self.close()?;
-                Ok(Expr::new(Node::Call(n, boxed(arg)), start, self.last_end()))
+                Ok(Expr::new(Node::Call(n, args), start, self.last_end()))
             }
             Tok::Op('(') => {
                 self.pos += 1;

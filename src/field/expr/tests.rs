@@ -17,8 +17,8 @@ impl Algebra for Shape {
     fn name(&self, n: &str, _: usize) -> Result<String, String> {
         Ok(n.into())
     }
-    fn call(&self, f: &str, a: String, _: usize) -> Result<String, String> {
-        Ok(format!("{f}[{a}]"))
+    fn call(&self, f: &str, a: Vec<String>, _: usize) -> Result<String, String> {
+        Ok(format!("{f}[{}]", a.join(", ")))
     }
     fn neg(&self, a: String, _: usize) -> Result<String, String> {
         Ok(format!("(-{a})"))
@@ -49,7 +49,7 @@ impl Algebra for Q {
     fn name(&self, n: &str, _: usize) -> Result<Rational, String> {
         Err(format!("unknown '{n}'"))
     }
-    fn call(&self, f: &str, _: Rational, _: usize) -> Result<Rational, String> {
+    fn call(&self, f: &str, _: Vec<Rational>, _: usize) -> Result<Rational, String> {
         Err(format!("unknown function '{f}'"))
     }
     fn neg(&self, a: Rational, _: usize) -> Result<Rational, String> {
@@ -90,6 +90,7 @@ fn precedence_and_dialects() {
     assert_eq!(shape("x**2", e).unwrap(), "(x^2)");
     assert_eq!(shape("sqrt(2)/2", e).unwrap(), "(sqrt[2]/2)");
     assert_eq!(shape("a*-b", e).unwrap(), "(a*(-b))");
+    assert_eq!(shape("QQ(a, b+1)", e).unwrap(), "QQ[a, (b + 1)]");
     let p = Dialect::POLY;
     assert_eq!(shape("2x^2", p).unwrap(), "(2*(x^2))");
     assert_eq!(shape("3(x + 1)y", p).unwrap(), "((3*(x + 1))*y)");
