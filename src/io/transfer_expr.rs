@@ -16,7 +16,7 @@
 //! length $\le 10^4$ characters.
 
 use crate::error::{Error, Result};
-use crate::field::expr::{Algebra, Dialect, SyntaxError, evaluate, parse_number};
+use crate::field::expr::{Algebra, Dialect, SyntaxError, error_at as at, evaluate, parse_number};
 use crate::field::{Q, Rational};
 use crate::poly::Poly;
 use crate::system::transfer::RationalFunction;
@@ -64,14 +64,6 @@ type RF = RationalFunction<Q>;
 
 fn cst(q: Rational) -> RF {
     RationalFunction::new(Poly::constant(Q, q), Poly::one(Q))
-}
-
-fn at(pos: usize, msg: &str) -> Error {
-    Error::Parse {
-        line: 1,
-        col: pos + 1,
-        msg: msg.into(),
-    }
 }
 
 fn check(v: RF, pos: usize) -> Result<RF> {

@@ -10,8 +10,8 @@ use super::{MAX_VARS, MPoly, QPoly, max_exponent};
 use crate::error::{Error, Result};
 use crate::field::Rational;
 use crate::field::expr::{
-    Algebra, Dialect, SyntaxError, evaluate, identifier_end, number_end, parse_number,
-    reserved_message,
+    Algebra, Dialect, SyntaxError, error_at as at, evaluate, identifier_end, number_end,
+    parse_number, reserved_message,
 };
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -124,14 +124,6 @@ type Frac = (MPoly, MPoly);
 struct Fractions<'a> {
     vars: &'a [&'a str],
     allow_div: bool,
-}
-
-fn at(pos: usize, msg: &str) -> Error {
-    Error::Parse {
-        line: 1,
-        col: pos + 1,
-        msg: msg.into(),
-    }
 }
 
 impl Fractions<'_> {

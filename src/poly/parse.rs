@@ -3,7 +3,9 @@
 
 use super::Poly;
 use crate::error::{Error, Result};
-use crate::field::expr::{Algebra, Dialect, SyntaxError, evaluate, parse_number, reserved_message};
+use crate::field::expr::{
+    Algebra, Dialect, SyntaxError, error_at as at, evaluate, parse_number, reserved_message,
+};
 use crate::field::{Field, Q};
 use num_traits::{Signed, ToPrimitive};
 use std::cell::Cell;
@@ -30,14 +32,6 @@ pub fn parse_poly_q(text: &str) -> Result<Poly<Q>> {
 /// $\mathbb{Q}[x]$ with one single-letter variable, whichever letter the text uses first.
 struct Univariate {
     var: Cell<Option<char>>,
-}
-
-fn at(pos: usize, msg: &str) -> Error {
-    Error::Parse {
-        line: 1,
-        col: pos + 1,
-        msg: msg.into(),
-    }
 }
 
 fn check_deg(f: Poly<Q>, pos: usize) -> Result<Poly<Q>> {

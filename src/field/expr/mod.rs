@@ -69,11 +69,7 @@ impl SyntaxError {
     }
     /// As [`Error::Parse`] (line 1, the 1-based column, the short message).
     pub fn to_error(&self) -> Error {
-        Error::Parse {
-            line: 1,
-            col: self.pos + 1,
-            msg: self.short.clone(),
-        }
+        error_at(self.pos, &self.short)
     }
 }
 
@@ -84,6 +80,16 @@ impl fmt::Display for SyntaxError {
 }
 
 impl std::error::Error for SyntaxError {}
+
+/// [`Error::Parse`] at the 0-based character position `pos` of a one-line text (the error
+/// of the evaluators that report a column).
+pub fn error_at(pos: usize, msg: &str) -> Error {
+    Error::Parse {
+        line: 1,
+        col: pos + 1,
+        msg: msg.into(),
+    }
+}
 
 /// A node of the tree with its 0-based character span `[start, end)`.
 #[derive(Clone, Debug, PartialEq)]
