@@ -49,7 +49,7 @@
 //!
 //! 0. [`error`], [`rng`]: leaves;
 //! 1. [`field`]: the [`field::Field`] trait, Q, quadratic and complex fields, the one
-//!    tokenizer for exact literals ([`field::scan`]); beside it [`qkernels`]:
+//!    expression reader ([`field::expr`]: lexer, grammar, evaluators); beside it [`qkernels`]:
 //!    integer/rational matrix kernels on `BigRational` (modular, Bareiss, the integer
 //!    product), which [`matrix`] dispatches to;
 //! 2. [`poly`]: polynomials over a field, integer polynomials and their factorization;

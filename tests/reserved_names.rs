@@ -9,7 +9,7 @@
 
 use crate::common::Rng;
 use crate::common::cli::{run, temp_file};
-use exactlti::field::scan::RESERVED;
+use exactlti::field::expr::RESERVED;
 use exactlti::mpoly::parse_mpoly;
 use exactlti::ratfunc::RatFuncField;
 

@@ -23,8 +23,8 @@ pub use kernels::{KernelTable, Kernels};
 pub mod lehmer;
 pub mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
+pub mod expr;
 pub mod rational;
-pub mod scan;
 
 /// $x^e$ by repeated squaring from `one` ($x^0 = $ `one`), `mul` the product: at most
 /// $2 \log_2 e$ products. Serves scalars, polynomials and matrices alike.

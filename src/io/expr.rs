@@ -1,6 +1,6 @@
 //! Exact expressions: `"-(a*cf - b*cr)/(Izz*u)"`, `"1 - sqrt(2)/2"`, `"2 + i"`, `"2^-3"`.
 //!
-//! Grammar (recursive descent, `^` right-associative and binding tighter than unary minus,
+//! Grammar ([`crate::field::expr`], the one reader; `^` right-associative and binding tighter than unary minus,
 //! so `-2^2 = -4` and `2^3^2 = 2^9`):
 //!
 //! ```text
@@ -39,22 +39,19 @@
 pub use super::value::{ExprError, MAX_BITS, MAX_EXPONENT};
 pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
-use crate::field::scan::{identifier_end, number_end};
-use crate::field::{QuadraticField, Rational, parse_rational};
+use crate::field::expr::{Algebra, Dialect, SyntaxError, evaluate};
+use crate::field::{QuadraticField, Rational};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
-/// Longest accepted number literal (characters).
-pub const MAX_NUMBER_LEN: usize = 4_000;
+pub use crate::field::expr::{MAX_DEPTH, MAX_NUMBER_LEN};
 /// Longest accepted expression (characters), checked before it is read: a longer entry is
 /// refused at once (a 300 KB product took 20 s to reach the bit bound). Also the bound of
 /// `G` entries and of symbolic entries.
 pub const MAX_EXPR_LEN: usize = 10_000;
-/// Largest accepted nesting depth of parentheses and unary operators.
-pub const MAX_DEPTH: usize = 256;
 
-/// Names that are never parameters ([`crate::field::scan::RESERVED`]).
-pub const RESERVED: [&str; 3] = crate::field::scan::RESERVED;
+/// Names that are never parameters ([`crate::field::expr::RESERVED`]).
+pub const RESERVED: [&str; 3] = crate::field::expr::RESERVED;
 
 /// Is `s` usable as a parameter name: an identifier `[A-Za-z_][A-Za-z0-9_]*` that is not
 /// one of [`RESERVED`]?
@@ -113,95 +110,7 @@ pub fn eval_expr(
     Ok((ExactScalar { a: v.a, b: v.b }, g))
 }
 
-#[derive(Clone, Debug, PartialEq)]
-enum Tok {
-    Num(String),
-    Name(String),
-    Op(char),
-}
-
-/// A token with its 0-based character span `[start, end)`.
-struct Token {
-    tok: Tok,
-    start: usize,
-    end: usize,
-}
-
-fn lex(text: &str) -> Result<Vec<Token>, ExprError> {
-    let cs: Vec<char> = text.chars().collect();
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < cs.len() {
-        let c = cs[i];
-        let start = i;
-        if c.is_whitespace() {
-            i += 1;
-            continue;
-        }
-        let tok = if c.is_ascii_digit() || c == '.' {
-            // exponent only when digits follow: `2e` is 2 followed by the name e
-            i = number_end(&cs, i, usize::MAX);
-            let num = Tok::Num(cs[start..i].iter().collect());
-            // `2i`, `0.5i`: implicit multiplication by `i`, bound exactly as the written-out
-            // `2*i` (so `2i^2 = 2*i^2 = -2` and `1/2i = 1/2*i = i/2`)
-            if cs.get(i) == Some(&'i')
-                && !cs
-                    .get(i + 1)
-                    .is_some_and(|c| c.is_ascii_alphanumeric() || *c == '_')
-            {
-                out.push(Token {
-                    tok: num,
-                    start,
-                    end: i,
-                });
-                out.push(Token {
-                    tok: Tok::Op('*'),
-                    start: i,
-                    end: i,
-                });
-                continue;
-            }
-            num
-        } else if c.is_ascii_alphabetic() || c == '_' {
-            i = identifier_end(&cs, i);
-            Tok::Name(cs[start..i].iter().collect())
-        } else if "+-*/^()".contains(c) {
-            i += 1;
-            Tok::Op(c)
-        } else {
-            return err(format!(
-                "unexpected character '{c}' at position {} in '{text}'",
-                start + 1
-            ));
-        };
-        out.push(Token { tok, start, end: i });
-    }
-    Ok(out)
-}
-
-/// Parameter names `text` refers to (names not followed by `(`, reserved names excluded);
-/// empty when `text` does not even lex (evaluation then reports the error).
-pub(crate) fn referenced_names(text: &str) -> Vec<String> {
-    let Ok(toks) = lex(text) else {
-        return Vec::new();
-    };
-    let mut names = Vec::new();
-    for (t, next) in toks.iter().zip(toks.iter().skip(1).map(Some).chain([None])) {
-        if let Tok::Name(n) = &t.tok {
-            let call = matches!(
-                next,
-                Some(Token {
-                    tok: Tok::Op('('),
-                    ..
-                })
-            );
-            if !call && !RESERVED.contains(&n.as_str()) && !names.contains(n) {
-                names.push(n.clone());
-            }
-        }
-    }
-    names
-}
+pub(crate) use crate::field::expr::referenced_names;
 
 /// Refuses an expression longer than [`MAX_EXPR_LEN`] characters (before any parsing).
 ///
@@ -251,203 +160,58 @@ pub(crate) fn eval_with(
     if let Some(q) = plain_fraction(text) {
         return Ok(Value::rational(q));
     }
-    let toks = lex(text)?;
-    if toks.is_empty() {
-        return err("empty expression");
-    }
-    let mut p = Parser {
-        text,
-        toks,
-        pos: 0,
-        depth: 0,
-        lookup,
-    };
-    let v = p.expr()?;
-    if p.pos < p.toks.len() {
-        return p.unexpected();
-    }
-    Ok(v)
+    evaluate(&Exact { lookup }, text, Dialect::EXACT)
 }
 
-struct Parser<'a> {
-    text: &'a str,
-    toks: Vec<Token>,
-    pos: usize,
-    depth: usize,
+/// The algebra of values $a + b\sqrt d$ ([`Value`]) with parameters from `lookup`.
+struct Exact<'a> {
     lookup: &'a dyn Fn(&str) -> Option<Value>,
 }
 
-impl Parser<'_> {
-    fn peek(&self) -> Option<&Tok> {
-        self.toks.get(self.pos).map(|t| &t.tok)
+impl Algebra for Exact<'_> {
+    type Value = Value;
+    type Error = ExprError;
+    fn syntax(&self, e: SyntaxError) -> ExprError {
+        ExprError { msg: e.msg }
     }
-    fn unexpected<T>(&self) -> Result<T, ExprError> {
-        match self.toks.get(self.pos) {
-            None => err(format!("unexpected end of expression '{}'", self.text)),
-            Some(t) => {
-                let shown = match &t.tok {
-                    Tok::Num(s) | Tok::Name(s) => s.clone(),
-                    Tok::Op(c) => c.to_string(),
-                };
-                err(format!(
-                    "unexpected '{shown}' at position {} in '{}'",
-                    t.start + 1,
-                    self.text
-                ))
-            }
-        }
+    fn number(&self, s: &str, _: usize) -> Result<Value, ExprError> {
+        Value::rational(parse_number(s)?).checked()
     }
-    fn enter(&mut self) -> Result<(), ExprError> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            return err(format!(
-                "expression nested too deeply (more than {MAX_DEPTH} levels)"
-            ));
-        }
-        Ok(())
-    }
-    fn expr(&mut self) -> Result<Value, ExprError> {
-        self.enter()?;
-        let mut v = self.term()?;
-        while let Some(Tok::Op(c @ ('+' | '-'))) = self.peek() {
-            let c = *c;
-            self.pos += 1;
-            let w = self.term()?;
-            v = if c == '+' {
-                v.add(&w)?
-            } else {
-                v.add(&w.neg())?
-            };
-        }
-        self.depth -= 1;
-        Ok(v)
-    }
-    fn term(&mut self) -> Result<Value, ExprError> {
-        let mut v = self.unary()?;
-        while let Some(Tok::Op(c @ ('*' | '/'))) = self.peek() {
-            let c = *c;
-            self.pos += 1;
-            let w = self.unary()?;
-            v = if c == '*' {
-                v.mul(&w)?
-            } else {
-                v.mul(&w.inv()?)?
-            };
-        }
-        Ok(v)
-    }
-    fn unary(&mut self) -> Result<Value, ExprError> {
-        match self.peek() {
-            Some(Tok::Op(c @ ('+' | '-'))) => {
-                let neg = *c == '-';
-                self.pos += 1;
-                self.enter()?;
-                let v = self.unary()?;
-                self.depth -= 1;
-                Ok(if neg { v.neg() } else { v })
-            }
-            _ => self.power(),
-        }
-    }
-    fn power(&mut self) -> Result<Value, ExprError> {
-        let base = self.atom()?;
-        if let Some(Tok::Op('^')) = self.peek() {
-            self.pos += 1;
-            self.enter()?;
-            let e = self.unary()?;
-            self.depth -= 1;
-            return base.pow(&e);
-        }
-        Ok(base)
-    }
-    fn expect_close(&mut self) -> Result<(), ExprError> {
-        match self.peek() {
-            Some(Tok::Op(')')) => {
-                self.pos += 1;
-                Ok(())
-            }
-            None => err(format!("missing ')' at the end of '{}'", self.text)),
-            Some(_) => self.unexpected(),
-        }
-    }
-    fn atom(&mut self) -> Result<Value, ExprError> {
-        let Some(t) = self.toks.get(self.pos) else {
-            return self.unexpected();
-        };
-        let (tok, end) = (t.tok.clone(), t.end);
-        match tok {
-            Tok::Num(s) => {
-                self.pos += 1;
-                let q = parse_number(&s)?;
-                let v = Value::rational(q).checked()?;
-                // letters glued on are an error (`2i` was split into `2 * i` by the lexer)
-                if let Some(Token {
-                    tok: Tok::Name(n),
-                    start,
-                    ..
-                }) = self.toks.get(self.pos)
-                    && *start == end
-                {
-                    return err(format!("'{s}{n}' is not a number"));
-                }
-                Ok(v)
-            }
-            Tok::Name(n) => {
-                self.pos += 1;
-                self.name(&n)
-            }
-            Tok::Op('(') => {
-                self.pos += 1;
-                let v = self.expr()?;
-                self.expect_close()?;
-                Ok(v)
-            }
-            Tok::Op(_) => self.unexpected(),
-        }
-    }
-    fn name(&mut self, n: &str) -> Result<Value, ExprError> {
-        let call = matches!(self.peek(), Some(Tok::Op('(')));
+    fn name(&self, n: &str, _: usize) -> Result<Value, ExprError> {
         match n {
             "pi" => err("pi is transcendental; give a rational approximation such as 355/113"),
-            "i" if !call => Ok(imaginary_unit()),
-            "sqrt" if call => {
-                self.pos += 1;
-                let v = self.expr()?;
-                self.expect_close()?;
-                v.sqrt()
-            }
+            "i" => Ok(imaginary_unit()),
             "sqrt" => err("sqrt needs an argument in parentheses, e.g. sqrt(2)"),
-            _ if call => err(format!("unknown function '{n}' (only sqrt is available)")),
             _ => (self.lookup)(n).ok_or_else(|| ExprError {
                 msg: format!("unknown parameter '{n}'"),
             }),
         }
     }
-}
-
-/// A number literal, within the size limits (checked before any big-number work).
-pub(crate) fn parse_number(s: &str) -> Result<Rational, ExprError> {
-    // fast path: a plain integer that fits in i64 (most entries of most files)
-    let digits = s.strip_prefix(['-', '+']).unwrap_or(s);
-    if !digits.is_empty()
-        && digits.len() <= 18
-        && digits.bytes().all(|c| c.is_ascii_digit())
-        && let Ok(n) = s.parse::<i64>()
-    {
-        return Ok(Rational::from_integer(n.into()));
-    }
-    if s.len() > MAX_NUMBER_LEN {
-        return err(format!("number with more than {MAX_NUMBER_LEN} characters"));
-    }
-    if let Some(p) = s.find(['e', 'E']) {
-        let e = s[p + 1..].trim_start_matches(['+', '-']);
-        if e.len() > 5 || e.parse::<u32>().is_ok_and(|e| e > MAX_EXPONENT) {
-            return err(format!(
-                "exponent of '{s}' is too large (at most {MAX_EXPONENT} in absolute value)"
-            ));
+    fn call(&self, f: &str, mut args: Vec<Value>, _: usize) -> Result<Value, ExprError> {
+        match f {
+            "pi" => err("pi is transcendental; give a rational approximation such as 355/113"),
+            "sqrt" if args.len() == 1 => args.pop().expect("one argument").sqrt(),
+            "sqrt" => err("sqrt takes one argument, e.g. sqrt(2)"),
+            _ => err(format!("unknown function '{f}' (only sqrt is available)")),
         }
     }
-    parse_rational(s).map_err(|m| ExprError { msg: m })
+    fn neg(&self, a: Value, _: usize) -> Result<Value, ExprError> {
+        Ok(a.neg())
+    }
+    fn add(&self, a: Value, b: Value, subtract: bool, _: usize) -> Result<Value, ExprError> {
+        a.add(&if subtract { b.neg() } else { b })
+    }
+    fn mul(&self, a: Value, b: Value, divide: bool, _: usize) -> Result<Value, ExprError> {
+        a.mul(&if divide { b.inv()? } else { b })
+    }
+    fn pow(&self, a: Value, e: Value, _: usize) -> Result<Value, ExprError> {
+        a.pow(&e)
+    }
+}
+
+/// A number literal, within the size limits ([`crate::field::expr::parse_number`]).
+pub(crate) fn parse_number(s: &str) -> Result<Rational, ExprError> {
+    crate::field::expr::parse_number(s).map_err(|msg| ExprError { msg })
 }
 
 fn imaginary_unit() -> Value {
@@ -472,14 +236,9 @@ mod tests {
     #[test]
     fn plain_fractions_as_the_parser() {
         let parsed = |s: &str| {
-            let mut p = Parser {
-                text: s,
-                toks: lex(s).unwrap(),
-                pos: 0,
-                depth: 0,
-                lookup: &|_: &str| None,
-            };
-            p.expr().map(|v| v.a).map_err(|e| e.msg)
+            evaluate(&Exact { lookup: &|_| None }, s, Dialect::EXACT)
+                .map(|v| v.a)
+                .map_err(|e| e.msg)
         };
         let mut g = crate::rng::SplitMix64(29);
         for _ in 0..500 {

@@ -667,7 +667,7 @@ pub(crate) fn matrices_of_table(
 /// Refuses a reserved name (`i`, `sqrt`, `pi`) in the `symbols` key: as a symbol it would
 /// change what the entries mean (`i^2 + 1` a polynomial instead of 0).
 pub(crate) fn reserved_symbol(file: &str, s: &str) -> Result<(), InputError> {
-    match crate::field::scan::reserved_meaning(s) {
+    match crate::field::expr::reserved_meaning(s) {
         Some(m) => Err(InputError::key(
             file,
             "symbols",

@@ -8,8 +8,8 @@ use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::fmt;
 
-/// Largest accepted |exponent| in `x^n`.
-pub const MAX_EXPONENT: u32 = 10_000;
+/// Largest accepted |exponent| in `x^n` (and in literals such as `1e-3`).
+pub use crate::field::expr::MAX_EXPONENT;
 /// Largest accepted size (bits of a numerator or denominator) of any intermediate value.
 /// num-bigint's gcd (binary, quadratic) makes one operation on numbers of this size cost
 /// tens of milliseconds at most; beyond it an input could stall for seconds.

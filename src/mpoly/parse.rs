@@ -9,9 +9,12 @@
 use super::{MAX_VARS, MPoly, QPoly, max_exponent};
 use crate::error::{Error, Result};
 use crate::field::Rational;
-use crate::field::scan::{Cursor, identifier_end, number_end, reserved_message};
+use crate::field::expr::{
+    Algebra, Dialect, SyntaxError, error_at as at, evaluate, identifier_end, number_end,
+    parse_number, reserved_message,
+};
 use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// Largest degree in any variable of a parsed expression.
 const MAX_DEGREE: u32 = 10_000;
@@ -106,14 +109,7 @@ fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPol
             msg: format!("more than {MAX_VARS} variables"),
         });
     }
-    let mut p = P {
-        c: Cursor::new(text),
-        vars,
-        allow_div,
-    };
-    let f = p.expr()?;
-    p.c.finish()?;
-    let (mut num, mut den) = f;
+    let (mut num, mut den) = evaluate(&Fractions { vars, allow_div }, text, Dialect::POLY)?;
     if den.lc().is_negative() {
         num = num.neg();
         den = den.neg();
@@ -123,167 +119,139 @@ fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPol
 
 type Frac = (MPoly, MPoly);
 
-struct P<'a> {
-    c: Cursor<'a>,
+/// Fractions of integer polynomials in `vars` (division only by constants unless
+/// `allow_div`), every operation size-checked.
+struct Fractions<'a> {
     vars: &'a [&'a str],
     allow_div: bool,
 }
 
-impl P<'_> {
+impl Fractions<'_> {
     fn n(&self) -> usize {
         self.vars.len()
     }
-    fn err(&self, msg: &str) -> Error {
-        self.c.err(msg)
+    fn lim(&self) -> u32 {
+        MAX_DEGREE.min(max_exponent(self.n()) / 2)
     }
-    fn check(&self, f: &Frac) -> Result<()> {
-        let lim = MAX_DEGREE.min(max_exponent(self.n()) / 2);
+    fn check(&self, f: Frac, pos: usize) -> Result<Frac> {
+        let lim = self.lim();
         if f.0
             .degrees()
             .iter()
             .chain(f.1.degrees().iter())
             .any(|&d| d > lim)
         {
-            return Err(self.err("degree too large"));
+            return Err(at(pos, "degree too large"));
         }
-        Ok(())
+        Ok(f)
     }
-    fn add(&self, a: &Frac, b: &Frac, neg: bool) -> Result<Frac> {
-        let nb = if neg { b.0.neg() } else { b.0.clone() };
-        let r = if a.1 == b.1 {
-            (a.0.add(&nb), a.1.clone())
-        } else {
-            self.check_mul(&a.0, &b.1)?;
-            self.check_mul(&a.1, &b.1)?;
-            (a.0.mul(&b.1).add(&nb.mul(&a.1)), a.1.mul(&b.1))
-        };
-        self.check(&r)?;
-        Ok(r)
-    }
-    fn check_mul(&self, a: &MPoly, b: &MPoly) -> Result<()> {
-        let lim = MAX_DEGREE.min(max_exponent(self.n()) / 2);
+    fn check_mul(&self, a: &MPoly, b: &MPoly, pos: usize) -> Result<()> {
+        let lim = self.lim();
         let (da, db) = (a.degrees(), b.degrees());
         if da.iter().zip(&db).any(|(x, y)| x + y > lim) {
-            return Err(self.err("degree too large"));
+            return Err(at(pos, "degree too large"));
         }
         if (a.len() as u64).saturating_mul(b.len() as u64) > MAX_POWER_TERMS * 4 {
-            return Err(self.err("expression too large"));
+            return Err(at(pos, "expression too large"));
         }
         Ok(())
     }
-    fn mul(&self, a: &Frac, b: &Frac) -> Result<Frac> {
-        self.check_mul(&a.0, &b.0)?;
-        self.check_mul(&a.1, &b.1)?;
-        let r = (a.0.mul(&b.0), a.1.mul(&b.1));
-        self.check(&r)?;
-        Ok(r)
+    fn product(&self, a: &Frac, b: &Frac, pos: usize) -> Result<Frac> {
+        self.check_mul(&a.0, &b.0, pos)?;
+        self.check_mul(&a.1, &b.1, pos)?;
+        self.check((a.0.mul(&b.0), a.1.mul(&b.1)), pos)
     }
-    fn div(&self, a: &Frac, b: &Frac) -> Result<Frac> {
+    /// Rejects powers whose size estimate is too large.
+    fn check_power(&self, f: &MPoly, e: u32, pos: usize) -> Result<()> {
+        let lim = self.lim() as u64;
+        let degs = f.degrees();
+        if degs.iter().any(|&d| d as u64 * e as u64 > lim) || e as u64 > lim {
+            return Err(at(pos, "degree too large"));
+        }
+        // terms of f^e at most prod_i (e deg_i + 1); bits about e (log2 |f|_inf + log2 len)
+        let terms = degs
+            .iter()
+            .fold(1u64, |acc, &d| acc.saturating_mul(e as u64 * d as u64 + 1));
+        let bits = (e as u64)
+            .saturating_mul(f.max_norm().bits() + (f.len().max(1) as u64).ilog2() as u64 + 1);
+        if terms.min(binomial_bound(f.len() as u64, e as u64)) > MAX_POWER_TERMS
+            || bits > MAX_POWER_BITS
+        {
+            return Err(at(pos, "power too large"));
+        }
+        Ok(())
+    }
+}
+
+impl Algebra for Fractions<'_> {
+    type Value = Frac;
+    type Error = Error;
+    fn syntax(&self, e: SyntaxError) -> Error {
+        e.to_error()
+    }
+    fn number(&self, s: &str, pos: usize) -> Result<Frac> {
+        let n = self.n();
+        let q = parse_number(s).map_err(|m| at(pos, &m))?;
+        if q.is_zero() {
+            return Ok((MPoly::zero(n), MPoly::one(n)));
+        }
+        Ok((
+            MPoly::constant(n, q.numer().clone()),
+            MPoly::constant(n, q.denom().clone()),
+        ))
+    }
+    fn name(&self, name: &str, pos: usize) -> Result<Frac> {
+        if let Some(msg) = reserved_message(name) {
+            return Err(at(pos, &msg));
+        }
+        let Some(i) = self.vars.iter().position(|v| *v == name) else {
+            return Err(at(pos, &format!("unknown symbol '{name}'")));
+        };
+        Ok((MPoly::var(self.n(), i), MPoly::one(self.n())))
+    }
+    fn call(&self, f: &str, _: Vec<Frac>, pos: usize) -> Result<Frac> {
+        self.name(f, pos)
+    }
+    fn neg(&self, a: Frac, _: usize) -> Result<Frac> {
+        Ok((a.0.neg(), a.1))
+    }
+    fn add(&self, a: Frac, b: Frac, subtract: bool, pos: usize) -> Result<Frac> {
+        let nb = if subtract { b.0.neg() } else { b.0 };
+        if a.1 == b.1 {
+            return self.check((a.0.add(&nb), a.1), pos);
+        }
+        self.check_mul(&a.0, &b.1, pos)?;
+        self.check_mul(&a.1, &b.1, pos)?;
+        self.check((a.0.mul(&b.1).add(&nb.mul(&a.1)), a.1.mul(&b.1)), pos)
+    }
+    fn mul(&self, a: Frac, b: Frac, divide: bool, pos: usize) -> Result<Frac> {
+        if !divide {
+            return self.product(&a, &b, pos);
+        }
         if b.0.is_zero() {
-            return Err(self.err("division by zero"));
+            return Err(at(pos, "division by zero"));
         }
         if !self.allow_div && !b.0.is_constant() {
-            return Err(self.err("division only by a non-zero constant"));
+            return Err(at(pos, "division only by a non-zero constant"));
         }
-        self.mul(a, &(b.1.clone(), b.0.clone()))
+        self.product(&a, &(b.1, b.0), pos)
     }
-    fn expr(&mut self) -> Result<Frac> {
-        let mut acc = match self.c.eat_any(b"+-") {
-            Some(b'-') => {
-                let t = self.term()?;
-                (t.0.neg(), t.1)
-            }
-            _ => self.term()?,
+    fn pow(&self, base: Frac, e: Frac, pos: usize) -> Result<Frac> {
+        let exp = (e.0.is_constant() && e.1.is_constant())
+            .then(|| {
+                let num = e.0.to_constant().unwrap_or_default();
+                let den = e.1.to_constant().unwrap_or_else(BigInt::one);
+                (num.is_zero() || (&num % &den).is_zero()).then(|| &num / &den)
+            })
+            .flatten()
+            .filter(|n| !n.is_negative())
+            .and_then(|n| n.to_u32());
+        let Some(e) = exp else {
+            return Err(at(pos, "expected a non-negative integer exponent"));
         };
-        while let Some(op) = self.c.eat_any(b"+-") {
-            let t = self.term()?;
-            acc = self.add(&acc, &t, op == b'-')?;
-        }
-        Ok(acc)
-    }
-    fn term(&mut self) -> Result<Frac> {
-        let mut acc = self.power()?;
-        loop {
-            let op = self.c.eat_any(b"*/");
-            let implicit = matches!(self.c.peek(), Some(b'(' | b'a'..=b'z' | b'A'..=b'Z' | b'_'));
-            if op.is_none() && !implicit {
-                return Ok(acc);
-            }
-            let f = self.power()?;
-            acc = match op {
-                Some(b'/') => self.div(&acc, &f)?,
-                _ => self.mul(&acc, &f)?,
-            };
-        }
-    }
-    fn power(&mut self) -> Result<Frac> {
-        // unary sign inside a product or after an operator: `a + -2*b`, `a*-b`
-        let mut negate = false;
-        while let Some(c) = self.c.eat_any(b"+-") {
-            negate ^= c == b'-';
-        }
-        if negate {
-            let f = self.power()?;
-            return Ok((f.0.neg(), f.1));
-        }
-        let base = self.atom()?;
-        if let Some(e) = self.c.power_exponent::<u32>()? {
-            let lim = MAX_DEGREE.min(max_exponent(self.n()) / 2) as u64;
-            for f in [&base.0, &base.1] {
-                let degs = f.degrees();
-                if degs.iter().any(|&d| d as u64 * e as u64 > lim) || e as u64 > lim {
-                    return Err(self.err("degree too large"));
-                }
-                // terms of f^e at most prod_i (e deg_i + 1); bits about e (log2 |f|_inf + log2 len)
-                let terms = degs
-                    .iter()
-                    .fold(1u64, |acc, &d| acc.saturating_mul(e as u64 * d as u64 + 1));
-                let bits = (e as u64).saturating_mul(
-                    f.max_norm().bits() + (f.len().max(1) as u64).ilog2() as u64 + 1,
-                );
-                if terms.min(binomial_bound(f.len() as u64, e as u64)) > MAX_POWER_TERMS
-                    || bits > MAX_POWER_BITS
-                {
-                    return Err(self.err("power too large"));
-                }
-            }
-            return Ok((base.0.pow(e), base.1.pow(e)));
-        }
-        Ok(base)
-    }
-    fn atom(&mut self) -> Result<Frac> {
-        let n = self.n();
-        match self.c.peek() {
-            Some(b'(') => {
-                self.c.open(200)?;
-                let f = self.expr()?;
-                self.c.close().map(|()| f)
-            }
-            Some(c) if c.is_ascii_alphabetic() || c == b'_' => {
-                let start = self.c.pos;
-                let name = self.c.identifier();
-                if let Some(msg) = reserved_message(name) {
-                    self.c.pos = start;
-                    return Err(self.err(&msg));
-                }
-                let Some(i) = self.vars.iter().position(|v| *v == name) else {
-                    self.c.pos = start;
-                    return Err(self.err(&format!("unknown symbol '{name}'")));
-                };
-                Ok((MPoly::var(n, i), MPoly::one(n)))
-            }
-            Some(c) if c.is_ascii_digit() || c == b'.' => {
-                let q = self.c.number(usize::MAX).map_err(|m| self.err(&m))?;
-                if q.is_zero() {
-                    return Ok((MPoly::zero(n), MPoly::one(n)));
-                }
-                Ok((
-                    MPoly::constant(n, q.numer().clone()),
-                    MPoly::constant(n, q.denom().clone()),
-                ))
-            }
-            _ => Err(self.err("expected a number, a symbol or '('")),
-        }
+        self.check_power(&base.0, e, pos)?;
+        self.check_power(&base.1, e, pos)?;
+        Ok((base.0.pow(e), base.1.pow(e)))
     }
 }
 

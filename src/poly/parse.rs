@@ -3,141 +3,118 @@
 
 use super::Poly;
 use crate::error::{Error, Result};
-use crate::field::Q;
-use crate::field::scan::Cursor;
-
-struct P<'a> {
-    c: Cursor<'a>,
-    var: Option<u8>,
-}
+use crate::field::expr::{
+    Algebra, Dialect, SyntaxError, error_at as at, evaluate, parse_number, reserved_message,
+};
+use crate::field::{Field, Q};
+use num_traits::{Signed, ToPrimitive};
+use std::cell::Cell;
 
 const MAX_DEGREE: usize = 10_000;
 /// Bound on the total size in bits of a power $f^e$: keeps parsing fast.
 const MAX_POWER_BITS: u64 = 1 << 24;
 
-/// Parses a polynomial over $\mathbb{Q}$.
+/// Parses a polynomial over $\mathbb{Q}$ (the grammar of [`crate::field::expr`], read in
+/// [`Dialect::POLY`]: `2x`, `3(x + 1)`, `x**2`).
 ///
 /// # Errors
 /// `Parse` with the 1-based column of the first problem; never panics.
 pub fn parse_poly_q(text: &str) -> Result<Poly<Q>> {
-    let mut p = P {
-        c: Cursor::new(text),
-        var: None,
-    };
-    let f = p.expr()?;
-    p.c.finish()?;
+    evaluate(
+        &Univariate {
+            var: Cell::new(None),
+        },
+        text,
+        Dialect::POLY,
+    )
+}
+
+/// $\mathbb{Q}[x]$ with one single-letter variable, whichever letter the text uses first.
+struct Univariate {
+    var: Cell<Option<char>>,
+}
+
+fn check_deg(f: Poly<Q>, pos: usize) -> Result<Poly<Q>> {
+    if f.deg() > MAX_DEGREE {
+        return Err(at(pos, "degree too large"));
+    }
     Ok(f)
 }
 
-impl P<'_> {
-    fn err(&self, msg: &str) -> Error {
-        self.c.err(msg)
+impl Algebra for Univariate {
+    type Value = Poly<Q>;
+    type Error = Error;
+    fn syntax(&self, e: SyntaxError) -> Error {
+        e.to_error()
     }
-    fn expr(&mut self) -> Result<Poly<Q>> {
-        let mut acc = match self.c.eat_any(b"+-") {
-            Some(b'-') => self.term()?.neg(),
-            _ => self.term()?,
+    fn number(&self, s: &str, pos: usize) -> Result<Poly<Q>> {
+        let q = parse_number(s).map_err(|m| at(pos, &m))?;
+        Ok(Poly::constant(Q, q))
+    }
+    fn name(&self, n: &str, pos: usize) -> Result<Poly<Q>> {
+        if let Some(msg) = reserved_message(n) {
+            return Err(at(pos, &msg));
+        }
+        let mut cs = n.chars();
+        let (Some(c), None) = (cs.next(), cs.next()) else {
+            return Err(at(pos, "variable must be a single letter"));
         };
-        while let Some(op) = self.c.eat_any(b"+-") {
-            let t = self.term()?;
-            acc = if op == b'+' { acc.add(&t) } else { acc.sub(&t) };
+        match self.var.get() {
+            None => self.var.set(Some(c)),
+            Some(v) if v != c => return Err(at(pos, "only one variable is allowed")),
+            _ => {}
         }
-        Ok(acc)
+        Ok(Poly::x(Q))
     }
-    fn check_deg(&self, f: &Poly<Q>) -> Result<()> {
-        if f.deg() > MAX_DEGREE {
-            Err(self.err("degree too large"))
-        } else {
-            Ok(())
-        }
+    fn call(&self, f: &str, _: Vec<Poly<Q>>, pos: usize) -> Result<Poly<Q>> {
+        self.name(f, pos)
     }
-    fn term(&mut self) -> Result<Poly<Q>> {
-        let mut acc = self.power()?;
-        loop {
-            match self.c.eat_any(b"*/") {
-                Some(b'*') => {
-                    let f = self.power()?;
-                    if acc.deg() + f.deg() > MAX_DEGREE {
-                        return Err(self.err("degree too large"));
-                    }
-                    acc = acc.mul(&f);
-                }
-                Some(_) => {
-                    let f = self.power()?;
-                    if f.degree() != Some(0) {
-                        return Err(self.err("division only by a non-zero constant"));
-                    }
-                    acc = acc.scale(&f.lc().recip());
-                }
-                // implicit multiplication: 2x, 3(x+1)
-                None if matches!(self.c.peek(), Some(b'(' | b'a'..=b'z' | b'A'..=b'Z')) => {
-                    let f = self.power()?;
-                    acc = acc.mul(&f);
-                    self.check_deg(&acc)?;
-                }
-                None => return Ok(acc),
-            }
-        }
+    fn neg(&self, a: Poly<Q>, _: usize) -> Result<Poly<Q>> {
+        Ok(a.neg())
     }
-    fn power(&mut self) -> Result<Poly<Q>> {
-        let base = self.atom()?;
-        if let Some(e) = self.c.power_exponent::<usize>()? {
-            if e.saturating_mul(base.deg()) > MAX_DEGREE || e > MAX_DEGREE {
-                return Err(self.err("degree too large"));
-            }
-            // size of f^e: (e deg f + 1) coefficients of about e log2 |f|_1 bits each
-            let l1_bits: u64 = base
-                .coeffs()
-                .iter()
-                .map(|c| c.numer().bits() + c.denom().bits())
-                .max()
-                .unwrap_or(0)
-                + (base.coeffs().len().max(1) as u64).ilog2() as u64
-                + 1;
-            let e64 = e as u64;
-            let total = e64
-                .saturating_mul(l1_bits)
-                .saturating_mul(e64.saturating_mul(base.deg() as u64) + 1);
-            if total > MAX_POWER_BITS {
-                return Err(self.err("coefficients too large"));
-            }
-            return Ok(base.pow(e as u32));
-        }
-        Ok(base)
+    fn add(&self, a: Poly<Q>, b: Poly<Q>, subtract: bool, _: usize) -> Result<Poly<Q>> {
+        Ok(if subtract { a.sub(&b) } else { a.add(&b) })
     }
-    fn atom(&mut self) -> Result<Poly<Q>> {
-        match self.c.peek() {
-            Some(b'(') => {
-                self.c.open(200)?;
-                let f = self.expr()?;
-                self.c.close().map(|()| f)
+    fn mul(&self, a: Poly<Q>, b: Poly<Q>, divide: bool, pos: usize) -> Result<Poly<Q>> {
+        if !divide {
+            if a.deg() + b.deg() > MAX_DEGREE {
+                return Err(at(pos, "degree too large"));
             }
-            Some(c) if c.is_ascii_alphabetic() => {
-                if self
-                    .c
-                    .s
-                    .get(self.c.pos + 1)
-                    .is_some_and(|d| d.is_ascii_alphanumeric())
-                {
-                    return Err(self.err("variable must be a single letter"));
-                }
-                if let Some(msg) = crate::field::scan::reserved_message(&(c as char).to_string()) {
-                    return Err(self.err(&msg));
-                }
-                match self.var {
-                    None => self.var = Some(c),
-                    Some(v) if v != c => return Err(self.err("only one variable is allowed")),
-                    _ => {}
-                }
-                self.c.pos += 1;
-                Ok(Poly::x(Q))
-            }
-            Some(c) if c.is_ascii_digit() || c == b'.' => {
-                let q = self.c.number(usize::MAX).map_err(|m| self.err(&m))?;
-                Ok(Poly::constant(Q, q))
-            }
-            _ => Err(self.err("expected a number, a variable or '('")),
+            return check_deg(a.mul(&b), pos);
         }
+        if b.degree() != Some(0) {
+            return Err(at(pos, "division only by a non-zero constant"));
+        }
+        Ok(a.scale(&Q.inv(&b.lc()).expect("nonzero constant")))
+    }
+    fn pow(&self, base: Poly<Q>, e: Poly<Q>, pos: usize) -> Result<Poly<Q>> {
+        let c = (e.deg() == 0).then(|| e.coeff(0));
+        let Some(e) = c
+            .filter(|c| c.is_integer() && !c.is_negative())
+            .and_then(|c| c.to_integer().to_usize())
+        else {
+            return Err(at(pos, "expected a non-negative integer exponent"));
+        };
+        if e.saturating_mul(base.deg()) > MAX_DEGREE || e > MAX_DEGREE {
+            return Err(at(pos, "degree too large"));
+        }
+        // size of f^e: (e deg f + 1) coefficients of about e log2 |f|_1 bits each
+        let l1_bits: u64 = base
+            .coeffs()
+            .iter()
+            .map(|c| c.numer().bits() + c.denom().bits())
+            .max()
+            .unwrap_or(0)
+            + (base.coeffs().len().max(1) as u64).ilog2() as u64
+            + 1;
+        let e64 = e as u64;
+        let total = e64
+            .saturating_mul(l1_bits)
+            .saturating_mul(e64.saturating_mul(base.deg() as u64) + 1);
+        if total > MAX_POWER_BITS {
+            return Err(at(pos, "coefficients too large"));
+        }
+        Ok(base.pow(e as u32))
     }
 }
 

@@ -102,7 +102,7 @@ impl RatFuncField {
     ///
     /// # Errors
     /// `Invalid` for more than [`MAX_VARS`] names, duplicates, names that are not
-    /// identifiers, or reserved names (`i`, `sqrt`, `pi`: [`crate::field::scan::RESERVED`]).
+    /// identifiers, or reserved names (`i`, `sqrt`, `pi`: [`crate::field::expr::RESERVED`]).
     pub fn new<S: AsRef<str>>(vars: &[S]) -> Result<Self> {
         let vars: Vec<String> = vars.iter().map(|s| s.as_ref().to_string()).collect();
         if vars.len() > MAX_VARS {
@@ -119,7 +119,7 @@ impl RatFuncField {
             if !ok || vars[..i].contains(v) {
                 return Err(Error::Invalid(format!("bad or repeated symbol name '{v}'")));
             }
-            if let Some(m) = crate::field::scan::reserved_meaning(v) {
+            if let Some(m) = crate::field::expr::reserved_meaning(v) {
                 return Err(Error::Invalid(format!(
                     "'{v}' is reserved ({m}) and cannot name a symbol"
                 )));

@@ -319,24 +319,46 @@ pub fn hurwitz_delta_n1(p: &BiPoly) -> Result<Poly<Q>> {
     })
 }
 
-/// The resultant $\mathrm{Res}_x(P, \partial_x P)(v)$ (the discriminant times $\pm p_n$), as
-/// the Sylvester determinant (formal degrees $n$, $n - 1$).
+/// The resultant $\mathrm{Res}_x(P, \partial_x P)(v)$ (the discriminant times $\pm p_n$):
+/// the shared subresultant resultant ([`crate::mpoly::resultant::resultant`]) of $L P$ and
+/// $L \partial_x P$ in $\mathbb{Z}[v][x]$, divided by $L^{2n-1}$ ($L$ the common
+/// denominator of $P$'s coefficients). It equals the Sylvester determinant of formal degrees
+/// $n$, $n - 1$, since $p_n \ne 0$.
 ///
 /// # Errors
-/// From the resultants.
+/// None at present (the signature is that of the other locators).
 pub fn discriminant_v(p: &BiPoly) -> Result<Poly<Q>> {
+    use crate::mpoly::MPoly;
+    use num_bigint::BigInt;
     let n = p.deg_x();
     if n <= 1 {
         return Ok(Poly::zero(Q));
     }
-    let bound = (2 * n - 1) * p.deg_v();
-    interpolate_at_good_points(&Poly::one(Q), bound, |v| {
-        let f = p.at(v);
-        let fc: Vec<Rational> = (0..=n).map(|k| f.coeff(k)).collect();
-        let g = f.derivative();
-        let gc: Vec<Rational> = (0..n).map(|k| g.coeff(k)).collect();
-        subresultant_coeff(&fc, n, &gc, n - 1, 0, 0)
-    })
+    let l = p
+        .coeffs
+        .iter()
+        .flat_map(|c| c.coeffs())
+        .fold(BigInt::one(), |l, c| {
+            num_integer::Integer::lcm(&l, c.denom())
+        });
+    let lq = Rational::from_integer(l);
+    let in_v = |c: &Poly<Q>| {
+        let cs: Vec<MPoly> = c
+            .coeffs()
+            .iter()
+            .map(|q| MPoly::constant(2, (q * &lq).to_integer()))
+            .collect();
+        MPoly::from_univariate(2, 1, &cs)
+    };
+    let f = MPoly::from_univariate(2, 0, &p.coeffs.iter().map(in_v).collect::<Vec<_>>());
+    let r = crate::mpoly::resultant::resultant(&f, &f.derivative(0), 0);
+    let scale = num_traits::pow(lq, 2 * n - 1);
+    let cs = r
+        .to_univariate(1)
+        .iter()
+        .map(|c| Rational::from_integer(c.to_constant().unwrap_or_default()) / &scale)
+        .collect();
+    Ok(Poly::new(Q, cs))
 }
 
 /// Coefficient $s_{j,i}$ of the $j$-th subresultant of `f` (formal degree `n`) and `g`
@@ -381,41 +403,17 @@ pub fn subresultant_coeff(
     det_small(rows)
 }
 
-/// Determinant of a small rational matrix: fraction-free Bareiss elimination over the
-/// integers when every entry is an integer (no gcds), else [`Matrix::det`].
+/// Determinant of a small rational matrix (the shared fraction-free kernel
+/// [`crate::qkernels::fraction_free::det_bareiss`]).
 pub fn det_small(rows: Vec<Vec<Rational>>) -> Result<Rational> {
-    use num_bigint::BigInt;
     let n = rows.len();
-    if n == 0 {
-        return Ok(Rational::one());
+    if rows.iter().any(|r| r.len() != n) {
+        return Err(Error::Invalid(format!(
+            "det_small: a {n}-row matrix that is not square"
+        )));
     }
-    if !rows.iter().flatten().all(|x| x.is_integer()) {
-        return Matrix::from_rows(Q, rows)?.det();
-    }
-    let mut a: Vec<Vec<BigInt>> = rows
-        .into_iter()
-        .map(|r| r.into_iter().map(|x| x.to_integer()).collect())
-        .collect();
-    let mut prev = BigInt::one();
-    let mut sign = 1;
-    for k in 0..n - 1 {
-        if a[k][k].is_zero() {
-            let Some(i) = (k + 1..n).find(|&i| !a[i][k].is_zero()) else {
-                return Ok(Rational::zero());
-            };
-            a.swap(k, i);
-            sign = -sign;
-        }
-        for i in k + 1..n {
-            for j in k + 1..n {
-                let t = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
-                a[i][j] = t / &prev;
-            }
-        }
-        prev = a[k][k].clone();
-    }
-    let d = a[n - 1][n - 1].clone() * sign;
-    Ok(Rational::from_integer(d))
+    let flat: Vec<Rational> = rows.into_iter().flatten().collect();
+    Ok(crate::qkernels::fraction_free::det_bareiss(n, &flat))
 }
 
 /// The first subresultant $S_1(x, v) = s_{1,1}(v) x + s_{1,0}(v)$ of $P$ and
@@ -467,6 +465,44 @@ mod tests {
             subresultant_coeff(&hc, 2, &hd, 1, 0, 0).unwrap(),
             h.resultant(&h.derivative())
         );
+    }
+
+    /// The resultant of the shared kernel equals the Sylvester determinant of formal
+    /// degrees n, n - 1 at every point, on random P(x, v) with rational coefficients.
+    #[test]
+    fn discriminant_is_the_sylvester_determinant() {
+        let mut g = crate::rng::SplitMix64(0xd15c);
+        let mut small = |m: u64| (g.next_u64() % (2 * m + 1)) as i64 - m as i64;
+        for _ in 0..12 {
+            let n = 2 + (small(2).unsigned_abs() as usize);
+            let coeffs: Vec<Poly<Q>> = (0..=n)
+                .map(|k| {
+                    let cs: Vec<i64> = (0..3).map(|_| small(5)).collect();
+                    let c = Poly::<Q>::from_i64s(&cs);
+                    let c = if k == n && c.is_zero() {
+                        Poly::one(Q)
+                    } else {
+                        c
+                    };
+                    c.scale(&Rational::new(1.into(), (1 + small(3).abs()).into()))
+                })
+                .collect();
+            let p = BiPoly { coeffs };
+            let d = discriminant_v(&p).unwrap();
+            for v in -3i64..4 {
+                let v = Rational::from_integer(v.into());
+                let f = p.at(&v);
+                if f.deg() < n {
+                    continue;
+                }
+                let fc: Vec<Rational> = (0..=n).map(|k| f.coeff(k)).collect();
+                let fd = f.derivative();
+                let gc: Vec<Rational> = (0..n).map(|k| fd.coeff(k)).collect();
+                let sylvester = subresultant_coeff(&fc, n, &gc, n - 1, 0, 0).unwrap();
+                assert_eq!(d.eval(&v), sylvester, "{p:?} at {v}");
+                assert_eq!(sylvester, f.resultant(&fd), "{p:?} at {v}");
+            }
+        }
     }
 
     #[test]

@@ -7,45 +7,24 @@
 use super::family::{FamilyForm, ParamFamily, RatMatrix};
 use crate::field::{Q, Rational};
 use crate::poly::Poly;
-use num_bigint::BigInt;
-use num_traits::ToPrimitive;
+use crate::qkernels::modular::rank::{rank_mod_p, reduce_rational};
+use crate::qkernels::modular::rref::rref_mod_p;
+use crate::qkernels::prime::Prime;
 
 /// Primes tried, and the residues searched for a root of $f$ (all of $\mathbb{F}_p$).
 const PRIMES: [u64; 8] = [10007, 10009, 10037, 10039, 10061, 10067, 10069, 10079];
 
-fn pow_mod(mut b: u64, mut e: u64, p: u64) -> u64 {
-    let mut r = 1;
-    b %= p;
-    while e > 0 {
-        if e & 1 == 1 {
-            r = r * b % p;
-        }
-        b = b * b % p;
-        e >>= 1;
-    }
-    r
-}
-
-fn inv_mod(a: u64, p: u64) -> Option<u64> {
-    (!a.is_multiple_of(p)).then(|| pow_mod(a, p - 2, p))
-}
-
-fn int_mod(n: &BigInt, p: u64) -> u64 {
-    let r = n % BigInt::from(p);
-    let r = r.to_i64().unwrap_or(0);
-    r.rem_euclid(p as i64) as u64
-}
-
-/// $q \bmod p$, `None` when $p$ divides the denominator.
+/// $q \bmod p$, `None` when $p$ divides the denominator (the shared kernel's reduction).
 pub fn rational_mod(q: &Rational, p: u64) -> Option<u64> {
-    Some(int_mod(q.numer(), p) * inv_mod(int_mod(q.denom(), p), p)? % p)
+    reduce_rational(&Prime { p }, q)
 }
 
 /// $g(t_0) \bmod p$.
 pub fn poly_at(g: &Poly<Q>, t0: u64, p: u64) -> Option<u64> {
+    let pr = Prime { p };
     let mut acc = 0u64;
     for c in g.coeffs().iter().rev() {
-        acc = (acc * t0 + rational_mod(c, p)?) % p;
+        acc = pr.add(pr.mul(acc, t0), reduce_rational(&pr, c)?);
     }
     Some(acc)
 }
@@ -54,13 +33,17 @@ pub fn poly_at(g: &Poly<Q>, t0: u64, p: u64) -> Option<u64> {
 pub fn root_mod_p(f: &Poly<Q>, skip: usize) -> Option<(u64, u64)> {
     let mut found = 0;
     for &p in &PRIMES {
-        let cs: Option<Vec<u64>> = f.coeffs().iter().map(|c| rational_mod(c, p)).collect();
+        let pr = Prime { p };
+        let cs: Option<Vec<u64>> = f.coeffs().iter().map(|c| reduce_rational(&pr, c)).collect();
         let Some(cs) = cs else { continue };
         if cs.last() == Some(&0) {
             continue;
         }
         for t in 0..p {
-            let v = cs.iter().rev().fold(0u64, |acc, c| (acc * t + c) % p);
+            let v = cs
+                .iter()
+                .rev()
+                .fold(0u64, |acc, &c| pr.add(pr.mul(acc, t), c));
             if v == 0 {
                 if found == skip {
                     return Some((p, t));
@@ -73,71 +56,40 @@ pub fn root_mod_p(f: &Poly<Q>, skip: usize) -> Option<(u64, u64)> {
     None
 }
 
-/// Rank of a matrix over $\mathbb{F}_p$.
-pub fn rank_mod(mut m: Vec<Vec<u64>>, p: u64) -> usize {
+/// Rank of a matrix over $\mathbb{F}_p$ (the shared kernel [`rank_mod_p`]).
+pub fn rank_mod(m: Vec<Vec<u64>>, p: u64) -> usize {
     let (rows, cols) = (m.len(), m.first().map_or(0, Vec::len));
-    let mut r = 0;
-    for c in 0..cols {
-        let Some(piv) = (r..rows).find(|&i| m[i][c] != 0) else {
-            continue;
-        };
-        m.swap(r, piv);
-        let inv = inv_mod(m[r][c], p).expect("nonzero pivot");
-        for i in 0..rows {
-            if i != r && m[i][c] != 0 {
-                let f = m[i][c] * inv % p;
-                for j in c..cols {
-                    m[i][j] = (m[i][j] + p - f * m[r][j] % p) % p;
-                }
-            }
-        }
-        r += 1;
-        if r == rows {
-            break;
-        }
-    }
-    r
+    let mut flat: Vec<u64> = m.into_iter().flatten().collect();
+    rank_mod_p(&Prime { p }, rows, cols, &mut flat)
 }
 
 fn mat_at(m: &RatMatrix, t0: u64, p: u64) -> Option<Vec<Vec<u64>>> {
+    let pr = Prime { p };
     m.iter()
         .map(|r| {
             r.iter()
-                .map(|f| Some(poly_at(&f.num, t0, p)? * inv_mod(poly_at(&f.den, t0, p)?, p)? % p))
+                .map(|f| Some(pr.mul(poly_at(&f.num, t0, p)?, pr.inv(poly_at(&f.den, t0, p)?)?)))
                 .collect()
         })
         .collect()
 }
 
-/// $X^{-1} Y$ over $\mathbb{F}_p$ (Gauss–Jordan), `None` when $X$ is singular.
+/// $X^{-1} Y$ over $\mathbb{F}_p$ (the RREF of $[X \mid Y]$ by the shared kernel
+/// [`rref_mod_p`]), `None` when $X$ is singular.
 fn solve_mod(x: Vec<Vec<u64>>, y: Vec<Vec<u64>>, p: u64) -> Option<Vec<Vec<u64>>> {
     let n = x.len();
-    let mut a: Vec<Vec<u64>> = x
+    let k = y.first().map_or(0, Vec::len);
+    let w = n + k;
+    let mut a: Vec<u64> = x
         .into_iter()
         .zip(y)
-        .map(|(mut r, s)| {
-            r.extend(s);
-            r
-        })
+        .flat_map(|(r, s)| r.into_iter().chain(s))
         .collect();
-    let w = a.first().map_or(0, Vec::len);
-    for c in 0..n {
-        let piv = (c..n).find(|&i| a[i][c] != 0)?;
-        a.swap(c, piv);
-        let inv = inv_mod(a[c][c], p)?;
-        for j in 0..w {
-            a[c][j] = a[c][j] * inv % p;
-        }
-        for i in 0..n {
-            if i != c && a[i][c] != 0 {
-                let f = a[i][c];
-                for j in 0..w {
-                    a[i][j] = (a[i][j] + p - f * a[c][j] % p) % p;
-                }
-            }
-        }
+    let pivots = rref_mod_p(&Prime { p }, n, w, &mut a);
+    if pivots.len() < n || (n > 0 && pivots[n - 1] != n - 1) {
+        return None;
     }
-    Some(a.into_iter().map(|r| r[n..].to_vec()).collect())
+    Some((0..n).map(|i| a[i * w + n..(i + 1) * w].to_vec()).collect())
 }
 
 /// $A(t_0) \bmod p$, `None` when a denominator or $\det M$ / $\det E$ vanishes mod $p$.

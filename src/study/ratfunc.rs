@@ -8,10 +8,11 @@
 //! real rational family). This is a one-parameter stand-in for the multivariate
 //! $\mathbb{Q}(p_1, \dots, p_k)$ of the io layer; it can be replaced by it when that lands.
 //!
-//! Work is bounded: exponents $|n| \le 64$, degrees $\le 256$, nesting $\le 256$.
+//! Work is bounded: exponents $|n| \le 64$, degrees $\le 256$, nesting $\le 256$
+//! ([`crate::field::expr`], the one reader).
 
 use crate::error::{Error, Result};
-use crate::field::scan::{identifier_end, number_end};
+use crate::field::expr::{Algebra, Dialect, RESERVED, SyntaxError, evaluate, parse_number};
 use crate::field::{Field, Q, Rational};
 use crate::poly::Poly;
 use num_traits::{One, Zero};
@@ -21,7 +22,6 @@ use std::fmt;
 pub const MAX_EXP: u32 = 64;
 /// Largest degree of a numerator or denominator.
 pub const MAX_DEGREE: usize = 256;
-const MAX_DEPTH: usize = 256;
 
 /// A rational function $n(v)/d(v)$ over $\mathbb{Q}$ in lowest terms, `den` monic.
 #[derive(Clone, Debug, PartialEq)]
@@ -154,113 +154,60 @@ impl fmt::Display for RatFunc {
     }
 }
 
-#[derive(Clone, Debug, PartialEq)]
-enum Tok {
-    Num(String),
-    Name(String),
-    Op(char),
-}
-
-fn lex(text: &str) -> Result<Vec<Tok>> {
-    let cs: Vec<char> = text.chars().collect();
-    let mut out = vec![];
-    let mut i = 0;
-    while i < cs.len() {
-        let c = cs[i];
-        if c.is_whitespace() {
-            i += 1;
-        } else if c.is_ascii_digit() || c == '.' {
-            let s = i;
-            i = number_end(&cs, i, usize::MAX);
-            out.push(Tok::Num(cs[s..i].iter().collect()));
-        } else if c.is_ascii_alphabetic() || c == '_' {
-            let s = i;
-            i = identifier_end(&cs, i);
-            out.push(Tok::Name(cs[s..i].iter().collect()));
-        } else if "+-*/^()".contains(c) {
-            out.push(Tok::Op(c));
-            i += 1;
-        } else {
-            return Err(Error::Invalid(format!(
-                "unexpected character '{c}' in '{text}'"
-            )));
-        }
-    }
-    Ok(out)
-}
-
-struct Parser<'a> {
-    toks: Vec<Tok>,
-    pos: usize,
-    depth: usize,
+/// $\mathbb{Q}(v)$ with names resolved by `lookup`; errors name the text.
+struct InQv<'a> {
     text: &'a str,
     lookup: &'a dyn Fn(&str) -> Result<Option<RatFunc>>,
 }
 
-impl Parser<'_> {
+impl InQv<'_> {
     fn bad<T>(&self, what: &str) -> Result<T> {
         Err(Error::Invalid(format!("{what} in '{}'", self.text)))
     }
-    fn peek(&self) -> Option<&Tok> {
-        self.toks.get(self.pos)
+}
+
+impl Algebra for InQv<'_> {
+    type Value = RatFunc;
+    type Error = Error;
+    fn syntax(&self, e: SyntaxError) -> Error {
+        Error::Invalid(e.msg)
     }
-    fn eat(&mut self, c: char) -> bool {
-        if self.peek() == Some(&Tok::Op(c)) {
-            self.pos += 1;
-            true
-        } else {
-            false
+    fn number(&self, s: &str, _: usize) -> Result<RatFunc> {
+        parse_number(s)
+            .map(RatFunc::constant)
+            .map_err(|m| Error::Invalid(format!("{m} in '{}'", self.text)))
+    }
+    fn name(&self, n: &str, _: usize) -> Result<RatFunc> {
+        if RESERVED.contains(&n) {
+            return Err(Error::Unsupported(format!(
+                "'{n}' in '{}': a parameter study needs rational entries",
+                self.text
+            )));
+        }
+        match (self.lookup)(n)? {
+            Some(v) => Ok(v),
+            None => self.bad(&format!("unknown parameter '{n}'")),
         }
     }
-    fn expr(&mut self) -> Result<RatFunc> {
-        let mut a = self.term()?;
-        loop {
-            if self.eat('+') {
-                a = a.add(&self.term()?)?.size_ok()?;
-            } else if self.eat('-') {
-                a = a.sub(&self.term()?)?.size_ok()?;
-            } else {
-                return Ok(a);
-            }
-        }
+    fn call(&self, f: &str, _: Vec<RatFunc>, at: usize) -> Result<RatFunc> {
+        self.name(f, at)
     }
-    fn term(&mut self) -> Result<RatFunc> {
-        let mut a = self.unary()?;
-        loop {
-            if self.eat('*') {
-                a = a.mul(&self.unary()?)?.size_ok()?;
-            } else if self.eat('/') {
-                let b = self.unary()?;
-                if b.is_zero() {
-                    return self.bad("division by zero");
-                }
-                a = a.div(&b)?.size_ok()?;
-            } else {
-                return Ok(a);
-            }
-        }
+    fn neg(&self, a: RatFunc, _: usize) -> Result<RatFunc> {
+        Ok(a.neg())
     }
-    fn unary(&mut self) -> Result<RatFunc> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            return self.bad("nesting too deep");
-        }
-        let r = if self.eat('-') {
-            self.unary().map(|x| x.neg())
-        } else if self.eat('+') {
-            self.unary()
-        } else {
-            self.power()
-        };
-        self.depth -= 1;
-        r
+    fn add(&self, a: RatFunc, b: RatFunc, subtract: bool, _: usize) -> Result<RatFunc> {
+        if subtract { a.sub(&b) } else { a.add(&b) }?.size_ok()
     }
-    fn power(&mut self) -> Result<RatFunc> {
-        let base = self.atom()?;
-        if !self.eat('^') {
-            return Ok(base);
+    fn mul(&self, a: RatFunc, b: RatFunc, divide: bool, _: usize) -> Result<RatFunc> {
+        if !divide {
+            return a.mul(&b)?.size_ok();
         }
-        let e = self.unary()?;
+        if b.is_zero() {
+            return self.bad("division by zero");
+        }
+        a.div(&b)?.size_ok()
+    }
+    fn pow(&self, base: RatFunc, e: RatFunc, _: usize) -> Result<RatFunc> {
         let Some(n) = e
             .is_poly()
             .then(|| e.num.coeff(0))
@@ -286,38 +233,6 @@ impl Parser<'_> {
             p.inv()
         } else {
             Ok(p)
-        }
-    }
-    fn atom(&mut self) -> Result<RatFunc> {
-        match self.peek().cloned() {
-            Some(Tok::Num(s)) => {
-                self.pos += 1;
-                let q = crate::io::expr::parse_number(&s)
-                    .map_err(|e| Error::Invalid(format!("{} in '{}'", e.msg, self.text)))?;
-                Ok(RatFunc::constant(q))
-            }
-            Some(Tok::Name(n)) => {
-                self.pos += 1;
-                if n == "sqrt" || n == "i" || n == "pi" {
-                    return Err(Error::Unsupported(format!(
-                        "'{n}' in '{}': a parameter study needs rational entries",
-                        self.text
-                    )));
-                }
-                match (self.lookup)(&n)? {
-                    Some(v) => Ok(v),
-                    None => self.bad(&format!("unknown parameter '{n}'")),
-                }
-            }
-            Some(Tok::Op('(')) => {
-                self.pos += 1;
-                let v = self.expr()?;
-                if !self.eat(')') {
-                    return self.bad("missing ')'");
-                }
-                Ok(v)
-            }
-            _ => self.bad("expected a number, a name or '('"),
         }
     }
 }
@@ -350,25 +265,14 @@ pub fn eval_ratfunc(
     text: &str,
     lookup: &dyn Fn(&str) -> Result<Option<RatFunc>>,
 ) -> Result<RatFunc> {
-    let mut p = Parser {
-        toks: lex(text)?,
-        pos: 0,
-        depth: 0,
-        text,
-        lookup,
-    };
-    let v = p.expr()?;
-    if p.pos != p.toks.len() {
-        return p.bad("unexpected trailing input");
-    }
-    Ok(v)
+    evaluate(&InQv { text, lookup }, text, Dialect::EXACT)
 }
 
 /// A `RatFunc` from a plain number token (exact text).
 pub fn ratfunc_from_number(s: &str) -> Result<RatFunc> {
-    crate::io::expr::parse_number(s)
+    parse_number(s)
         .map(RatFunc::constant)
-        .map_err(|e| Error::Invalid(e.msg))
+        .map_err(Error::Invalid)
 }
 
 /// Exact value `1`.

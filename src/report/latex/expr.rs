@@ -1,70 +1,18 @@
 //! Exact display strings (`"-sqrt(2)/2"`, `"1/2 + sqrt(5)/2"`, `"0 + (b7)*i"`,
 //! `"root of x^4 - 4*x^2 + 1 near 1.93"`, `"-cr/(m*u)"`) as LaTeX math.
 //!
-//! A small bounded parser of the display grammar: numbers, identifiers, `+ - * / ^`,
-//! parentheses, function calls, one `=`, and the phrase `root of P near X`. A string
-//! outside the grammar (prose) is not math: [`to_math`] answers `None` and the caller
-//! typesets it as text.
+//! The display grammar is the crate's one expression grammar ([`crate::field::expr`]:
+//! numbers, identifiers, `+ - * / ^`, parentheses, function calls), one `=`, and the phrase
+//! `root of P near X`. A string outside the grammar (prose) is not math: [`to_math`]
+//! answers `None` and the caller typesets it as text.
+
+use crate::field::expr::{self, Dialect, Expr};
 
 /// Longest string parsed as math (longer ones are shown as text).
 const MAX_LEN: usize = 100_000;
-/// Deepest nesting of parentheses and operators parsed.
-const MAX_DEPTH: usize = 200;
 
-#[derive(Clone, Debug, PartialEq)]
-enum Tok {
-    Num(String),
-    Id(String),
-    Op(char),
-}
-
-fn tokenize(s: &str) -> Option<Vec<Tok>> {
-    let b = s.as_bytes();
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < b.len() {
-        let c = b[i] as char;
-        if c == ' ' {
-            i += 1;
-        } else if c.is_ascii_digit() || (c == '.' && b.get(i + 1).is_some_and(u8::is_ascii_digit)) {
-            let st = i;
-            while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
-                i += 1;
-            }
-            // exponent of a float: 1.5e-3
-            if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
-                let mut j = i + 1;
-                if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
-                    j += 1;
-                }
-                if j < b.len() && b[j].is_ascii_digit() {
-                    while j < b.len() && b[j].is_ascii_digit() {
-                        j += 1;
-                    }
-                    i = j;
-                }
-            }
-            let t = &s[st..i];
-            if t.matches('.').count() > 1 {
-                return None;
-            }
-            out.push(Tok::Num(t.to_string()));
-        } else if c.is_ascii_alphabetic() || c == '_' {
-            let st = i;
-            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                i += 1;
-            }
-            out.push(Tok::Id(s[st..i].to_string()));
-        } else if "+-*/^(),=".contains(c) {
-            out.push(Tok::Op(c));
-            i += 1;
-        } else {
-            return None;
-        }
-    }
-    Some(out)
-}
-
+/// The display tree: the shared reader's tree ([`crate::field::expr`]) with products as
+/// binary nodes and the sign of a sum's first term on the term (`-a*b` is `-(a b)`).
 #[derive(Clone, Debug)]
 enum Node {
     Num(String),
@@ -78,119 +26,76 @@ enum Node {
     Pow(Box<Node>, Box<Node>),
 }
 
-struct Parser {
-    t: Vec<Tok>,
-    i: usize,
-    depth: usize,
-}
-
-impl Parser {
-    fn peek(&self) -> Option<&Tok> {
-        self.t.get(self.i)
-    }
-    fn eat(&mut self, c: char) -> bool {
-        if self.peek() == Some(&Tok::Op(c)) {
-            self.i += 1;
-            true
-        } else {
-            false
-        }
-    }
-    fn enter(&mut self) -> Option<()> {
-        self.depth += 1;
-        (self.depth <= MAX_DEPTH).then_some(())
-    }
-    fn sum(&mut self) -> Option<Node> {
-        self.enter()?;
-        let mut terms = Vec::new();
-        let mut neg = if self.eat('-') {
-            true
-        } else {
-            self.eat('+');
-            false
-        };
-        loop {
-            terms.push((neg, self.product()?));
-            if self.eat('+') {
-                neg = false;
-            } else if self.eat('-') {
-                neg = true;
-            } else {
-                break;
-            }
-        }
-        self.depth -= 1;
-        Some(if terms.len() == 1 && !terms[0].0 {
-            terms.pop()?.1
-        } else {
-            Node::Sum(terms)
-        })
-    }
-    fn product(&mut self) -> Option<Node> {
-        let mut x = self.unary()?;
-        loop {
-            if self.eat('*') {
-                x = Node::Mul(Box::new(x), Box::new(self.unary()?));
-            } else if self.eat('/') {
-                x = Node::Div(Box::new(x), Box::new(self.unary()?));
-            } else {
-                return Some(x);
-            }
-        }
-    }
-    fn unary(&mut self) -> Option<Node> {
-        if self.eat('-') {
-            self.enter()?;
-            let x = self.unary()?;
-            self.depth -= 1;
-            return Some(Node::Neg(Box::new(x)));
-        }
-        let base = self.atom()?;
-        if self.eat('^') {
-            self.enter()?;
-            let e = self.unary()?;
-            self.depth -= 1;
-            return Some(Node::Pow(Box::new(base), Box::new(e)));
-        }
-        Some(base)
-    }
-    fn atom(&mut self) -> Option<Node> {
-        match self.peek()?.clone() {
-            Tok::Num(n) => {
-                self.i += 1;
-                Some(Node::Num(n))
-            }
-            Tok::Id(name) => {
-                self.i += 1;
-                if self.eat('(') {
-                    let mut args = vec![self.sum()?];
-                    while self.eat(',') {
-                        args.push(self.sum()?);
-                    }
-                    self.eat(')').then_some(Node::Call(name, args))
-                } else {
-                    Some(Node::Id(name))
-                }
-            }
-            Tok::Op('(') => {
-                self.i += 1;
-                let x = self.sum()?;
-                self.eat(')').then(|| Node::Paren(Box::new(x)))
-            }
-            Tok::Op(_) => None,
-        }
-    }
-}
-
-/// Parses one expression (no `=`).
+/// Parses one expression (no `=`) with the crate's one reader.
 fn parse(s: &str) -> Option<Node> {
-    let t = tokenize(s)?;
-    if t.is_empty() {
-        return None;
+    sum(&expr::parse(s, Dialect::EXACT).ok()?)
+}
+
+/// A negated leading factor (`-a*b`, `-2^2`): the factor without its sign.
+fn unsigned(e: &Expr) -> Option<Expr> {
+    match &e.node {
+        expr::Node::Neg(x) => Some((**x).clone()),
+        expr::Node::Product(fs) => {
+            let first = unsigned(&fs[0].1)?;
+            let mut fs = fs.clone();
+            fs[0].1 = first;
+            Some(Expr::new(expr::Node::Product(fs), e.start, e.end))
+        }
+        _ => None,
     }
-    let mut p = Parser { t, i: 0, depth: 0 };
-    let x = p.sum()?;
-    (p.i == p.t.len()).then_some(x)
+}
+
+/// An expression where a sum may stand (the whole text, parentheses, arguments): a sign
+/// in front of the first term belongs to the term.
+fn sum(e: &Expr) -> Option<Node> {
+    let terms: Vec<(bool, &Expr)> = match &e.node {
+        expr::Node::Sum(ts) => ts.iter().map(|(s, t)| (*s, t)).collect(),
+        _ => vec![(false, e)],
+    };
+    let mut out = Vec::with_capacity(terms.len());
+    for (k, (neg, t)) in terms.into_iter().enumerate() {
+        match unsigned(t).filter(|_| k == 0) {
+            Some(u) => out.push((true, node(&u)?)),
+            None => out.push((neg, node(t)?)),
+        }
+    }
+    Some(if out.len() == 1 && !out[0].0 {
+        out.pop()?.1
+    } else {
+        Node::Sum(out)
+    })
+}
+
+fn node(e: &Expr) -> Option<Node> {
+    let b = |x: &Expr| node(x).map(Box::new);
+    Some(match &e.node {
+        expr::Node::Num(n) => {
+            let digit_first = n.starts_with(|c: char| c.is_ascii_digit())
+                || n.chars().nth(1).is_some_and(|c| c.is_ascii_digit());
+            let ok = n.matches('.').count() <= 1 && digit_first;
+            ok.then(|| Node::Num(n.clone()))?
+        }
+        expr::Node::Name(n) => Node::Id(n.clone()),
+        expr::Node::Call(f, xs) => {
+            Node::Call(f.clone(), xs.iter().map(sum).collect::<Option<_>>()?)
+        }
+        expr::Node::Paren(x) => Node::Paren(Box::new(sum(x)?)),
+        expr::Node::Neg(x) => Node::Neg(b(x)?),
+        expr::Node::Sum(_) => sum(e)?,
+        expr::Node::Product(fs) => {
+            let mut acc = node(&fs[0].1)?;
+            for (div, f) in &fs[1..] {
+                let (l, r) = (Box::new(acc), b(f)?);
+                acc = if *div {
+                    Node::Div(l, r)
+                } else {
+                    Node::Mul(l, r)
+                };
+            }
+            acc
+        }
+        expr::Node::Pow(x, y) => Node::Pow(b(x)?, b(y)?),
+    })
 }
 
 const GREEK: [&str; 24] = [
