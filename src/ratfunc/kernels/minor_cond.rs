@@ -16,7 +16,7 @@
 
 use super::det_zp;
 use super::interp::{Bounds, MAX_GRID_POINTS, grid_points};
-use super::modp::{det_mod_p, eval_mod_p};
+use super::modp::{ReducedPoly, det_mod_p, eval_mod_p, powers};
 use crate::mpoly::{MPoly, factor};
 use crate::qkernels::prime::{Prime, nth_prime};
 use crate::ratfunc::RatFuncField;
@@ -193,8 +193,12 @@ fn peel_with(
     let dir = rand_pt(&mut rng);
     let on_line =
         |t: u64| -> Vec<u64> { (0..nv).map(|v| pr.add(a[v], pr.mul(t, dir[v]))).collect() };
+    // the entries reduced once (evaluated at dtot + 3 points)
+    let red: Vec<ReducedPoly> = c.iter().map(|f| ReducedPoly::new(&pr, f)).collect();
+    let maxe = red.iter().map(ReducedPoly::max_exp).max().unwrap_or(0);
     let det_at = |x: &[u64]| -> u64 {
-        let mut m: Vec<u64> = c.iter().map(|f| eval_mod_p(&pr, f, x)).collect();
+        let pw = powers(&pr, x, maxe);
+        let mut m: Vec<u64> = red.iter().map(|f| f.eval(&pr, &pw)).collect();
         det_mod_p(&pr, r, &mut m)
     };
     let restrict = |vals: &dyn Fn(&[u64]) -> u64, deg: usize| -> Vec<u64> {
