@@ -73,7 +73,8 @@ pub fn inverse_qp(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Option<Option<Ve
             if adj[t].is_zero() {
                 k.zero()
             } else {
-                k.frac(adj[t].mul(&ds[t % n]), det.clone()).expect("nonzero")
+                k.frac(adj[t].mul(&ds[t % n]), det.clone())
+                    .expect("nonzero")
             }
         })
         .collect();

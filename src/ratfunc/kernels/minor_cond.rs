@@ -80,13 +80,22 @@ pub fn record_minor(
 /// [`MAX_GRID_POINTS`] points (and [`UNFACTORED_WORK`] operations), the numerator of
 /// $\det C / \prod d_i$ recorded as **one** condition, unfactored
 /// ([`RatFuncField::record_condition_unfactored`]); `false` when the grid is larger.
-fn record_unfactored(k: &RatFuncField, r: usize, c: &[MPoly], bounds: &Bounds, den: &MPoly) -> bool {
+fn record_unfactored(
+    k: &RatFuncField,
+    r: usize,
+    c: &[MPoly],
+    bounds: &Bounds,
+    den: &MPoly,
+) -> bool {
     let per_point = r * r * r + c.iter().map(MPoly::len).sum::<usize>();
     let work = grid_points(bounds).saturating_mul(per_point);
     if grid_points(bounds) > MAX_GRID_POINTS || work > UNFACTORED_WORK {
         return false;
     }
-    match det_zp(k.nvars(), r, c).ok().and_then(|d| k.frac(d, den.clone())) {
+    match det_zp(k.nvars(), r, c)
+        .ok()
+        .and_then(|d| k.frac(d, den.clone()))
+    {
         Some(q) if !q.num().is_zero() => {
             k.record_condition_unfactored(q.num());
             true

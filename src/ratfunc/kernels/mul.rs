@@ -84,13 +84,27 @@ mod tests {
             k.clone(),
             2,
             3,
-            vec![e("1/(a-b)"), e("a/(a+b)"), e("0"), e("b"), e("1/a"), e("a^2/(b+1)")],
+            vec![
+                e("1/(a-b)"),
+                e("a/(a+b)"),
+                e("0"),
+                e("b"),
+                e("1/a"),
+                e("a^2/(b+1)"),
+            ],
         );
         let y = Matrix::from_vec(
             k.clone(),
             3,
             2,
-            vec![e("a-b"), e("1"), e("0"), e("(a+b)/a"), e("b+1"), e("7/(a*b)")],
+            vec![
+                e("a-b"),
+                e("1"),
+                e("0"),
+                e("(a+b)/a"),
+                e("b+1"),
+                e("7/(a*b)"),
+            ],
         );
         let got = mul_qp(&k, (2, 3, 2), x.as_slice(), y.as_slice()).unwrap();
         for i in 0..2 {
