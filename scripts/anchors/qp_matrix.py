@@ -2,7 +2,7 @@
 """Matrices over Q(p): exactlti (kernels registered on the field) vs SymPy's DomainMatrix and
 python-flint's fmpz_mpoly, and the symbolic scale commands of issue 25 (release CLI).
 
-Usage (from anywhere):  python3 scripts/anchors/qp_matrix.py
+Usage (from anywhere):  python3 scripts/anchors/qp_matrix.py [--cli-only]
 
 Creates the venv .venv-anchors at the repository root if missing (sympy, python-flint, ...)
 and re-runs itself inside it. One run prints:
@@ -18,7 +18,8 @@ and re-runs itself inside it. One run prints:
    `linalg charpoly|det|rref`, chain10 `tf`/`minreal`, diag10 every command) under
    /usr/bin/time: wall seconds and maximum resident set, the goal and its ratio (goal /
    time; >= 1 is met), and for dense8 linalg the ratio SymPy / CLI (the CLI time includes
-   process start and reading the file).
+   process start and reading the file). `--cli-only` skips the bench and the build (the
+   release binary as it is; the `cli dense8x3` row of table 1 then has no in-process time).
 """
 import json
 import os
@@ -154,8 +155,10 @@ def cli_cases():
     return rows
 
 
-def run_cli():
-    subprocess.run(["cargo", "build", "--release"], cwd=ROOT, check=True, capture_output=True)
+def run_cli(build=True):
+    if build:
+        subprocess.run(["cargo", "build", "--release"], cwd=ROOT, check=True,
+                       capture_output=True)
     exe = TARGET / "release" / "exactlti"
     paths = qp_scale.write(TARGET / "qp-scale")
     rows = []
@@ -175,7 +178,9 @@ def dense_cli_case():
 
 def main():
     ensure_venv()
-    ours, cases = run_ours()
+    # --cli-only: no `cargo bench` and no build (the release binary as it is)
+    cli_only = "--cli-only" in sys.argv
+    ours, cases = ({}, []) if cli_only else run_ours()
     all_cases = cases + [dense_cli_case()]
     sy = sympy_times(all_cases)
     fl = flint_times(all_cases)
@@ -184,7 +189,7 @@ def main():
           f"{'SymPy(python)':>14} {'ratio':>7} {'fmpz_mpoly':>11} {'ratio':>7}")
     print("-" * 96)
     fmt = lambda o, t: f"{t / o:6.1f}x" if (o and t) else f"{'-':>7}"
-    for c in cases:
+    for c in all_cases:
         for op in ("charpoly", "det", "rref"):
             name = f"{c[0]} {op}"
             o = ours.get(name)
@@ -197,13 +202,13 @@ def main():
     print("# release CLI under /usr/bin/time (files of scripts/qp_scale.py; `--format json`)")
     print(f"{'case':10} {'command':20} {'wall s':>7} {'max RSS MB':>11} {'goal s':>7} "
           f"{'goal/time':>9} {'SymPy/CLI':>9} {'exit':>5}")
-    for name, cmd, secs, mb, goal, rc in run_cli():
+    for name, cmd, secs, mb, goal, rc in run_cli(build=not cli_only):
         g = f"{goal:7.1f}" if goal else f"{'-':>7}"
         r = f"{goal / secs:8.1f}x" if goal and secs > 0 else f"{'-':>9}"
         op = cmd.removeprefix("linalg-")
         symp = sy["flint"].get(f"cli dense8x3 {op}") if name == "dense8x3" else None
         sr = f"{symp / (secs * 1e3):8.1f}x" if symp and secs > 0 else f"{'-':>9}"
-        print(f"{name:10} {cmd:20} {secs:7.2f} {mb:11.1f} {g} {r} {sr} {rc:5d}")
+        print(f"{name:10} {cmd:20} {secs:7.3f} {mb:11.1f} {g} {r} {sr} {rc:5d}")
 
 
 if __name__ == "__main__":
