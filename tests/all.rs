@@ -109,6 +109,8 @@ mod qp_conditions;
 mod qp_kernels;
 #[path = "qp_scale.rs"]
 mod qp_scale;
+#[path = "qp_scale_kernels.rs"]
+mod qp_scale_kernels;
 #[path = "realization.rs"]
 mod realization;
 #[path = "realization_planted.rs"]

@@ -16,7 +16,7 @@ use exactlti::realization::{MinrealMethod, minimal};
 use exactlti::rng::SplitMix64;
 use exactlti::system::StateSpace;
 
-fn at(a: &Matrix<RatFuncField>, point: &[Rational]) -> Matrix<Q> {
+pub(crate) fn at(a: &Matrix<RatFuncField>, point: &[Rational]) -> Matrix<Q> {
     let k = a.field();
     let data: Vec<Rational> = a
         .as_slice()
@@ -27,7 +27,7 @@ fn at(a: &Matrix<RatFuncField>, point: &[Rational]) -> Matrix<Q> {
 }
 
 /// A random small polynomial or ratio in the field's variables (never zero).
-fn entry(k: &RatFuncField, rng: &mut SplitMix64) -> RatFunc {
+pub(crate) fn entry(k: &RatFuncField, rng: &mut SplitMix64) -> RatFunc {
     let vars = k.vars().to_vec();
     let v = |rng: &mut SplitMix64| vars[rng.int(0, vars.len() as i64 - 1) as usize].clone();
     let s = match rng.int(0, 3) {
@@ -48,7 +48,7 @@ fn entry(k: &RatFuncField, rng: &mut SplitMix64) -> RatFunc {
 
 /// A block-diagonal matrix (blocks of rank up to full, some rank-deficient), rows and
 /// columns permuted, with a few zero rows and columns.
-fn blocky(k: &RatFuncField, rng: &mut SplitMix64) -> Matrix<RatFuncField> {
+pub(crate) fn blocky(k: &RatFuncField, rng: &mut SplitMix64) -> Matrix<RatFuncField> {
     let nb = rng.int(2, 4) as usize;
     let mut blocks = Vec::new();
     let (mut m, mut n) = (0, 0);
@@ -102,7 +102,7 @@ fn block_split_rref_equals_the_generic_rref() {
     }
 }
 
-fn diag_system(n: usize) -> StateSpace<RatFuncField> {
+pub(crate) fn diag_system(n: usize) -> StateSpace<RatFuncField> {
     let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
     let k = RatFuncField::new(&names).unwrap();
     let a = Matrix::diagonal(k.clone(), &(0..n).map(|i| k.var(i)).collect::<Vec<_>>());

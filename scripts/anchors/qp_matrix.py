@@ -1,18 +1,25 @@
 #!/usr/bin/env python3
-"""Matrices over Q(p): exactlti (kernels registered on the field) vs SymPy's DomainMatrix.
+"""Matrices over Q(p): exactlti (kernels registered on the field) vs SymPy's DomainMatrix and
+python-flint's fmpz_mpoly, and the symbolic scale commands of issue 25 (release CLI).
 
-Usage (from anywhere):  python3 scripts/anchors/qp_matrix.py
+Usage (from anywhere):  python3 scripts/anchors/qp_matrix.py [--cli-only]
 
 Creates the venv .venv-anchors at the repository root if missing (sympy, python-flint, ...)
-and re-runs itself inside it; runs `cargo bench --bench qp_matrix`, which prints
-`name: X ms` lines and writes the dense inputs to target/qp-matrix-cases.txt; times the same
-matrices with SymPy's DomainMatrix (the domain it picks from the entries, ZZ[a,b,c]):
-charpoly(), det(), and rref() over the fraction field QQ(a,b,c) (to_field()); prints one
-table with the ratios (goal: each >= 10x faster than SymPy). SymPy runs with its default
-ground types (python-flint installed: FLINT integers) and with SYMPY_GROUND_TYPES=python.
-Then runs the release CLI (`cargo build --release`) on diag(p0..p9) and the 10-mass chain
-files it writes to target/, under /usr/bin/time -v: wall time and maximum resident set
-(goals: diag10 tf, minreal, scb, zeros <= 1 s and <= 200 MB; chain10 tf, minreal <= 2 s).
+and re-runs itself inside it. One run prints:
+
+1. Dense N x N (N = 6, 7, 8), entries linear in a, b, c: `cargo bench --bench qp_matrix
+   dense` (in-process, `name: X ms` lines; the inputs go to target/qp-matrix-cases.txt)
+   beside SymPy's DomainMatrix on the same matrices (charpoly(), det() over ZZ[a,b,c] and
+   rref() over QQ(a,b,c), with FLINT and with pure-Python ground types) and python-flint's
+   fmpz_mpoly (Bareiss fraction-free elimination: det, det(xI - A) with x a fourth variable,
+   and the fraction-free Gauss-Jordan form), with ratios (goal: each >= 10x faster than
+   SymPy).
+2. The release CLI (`cargo build --release`) on the files of scripts/qp_scale.py (dense8x3
+   `linalg charpoly|det|rref`, chain10 `tf`/`minreal`, diag10 every command) under
+   /usr/bin/time: wall seconds and maximum resident set, the goal and its ratio (goal /
+   time; >= 1 is met), and for dense8 linalg the ratio SymPy / CLI (the CLI time includes
+   process start and reading the file). `--cli-only` skips the bench and the build (the
+   release binary as it is; the `cli dense8x3` row of table 1 then has no in-process time).
 """
 import json
 import os
@@ -24,6 +31,9 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from _common import ensure_venv  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+import qp_scale  # noqa: E402  (scripts/qp_scale.py: the scale input files)
 
 ROOT = Path(__file__).resolve().parents[2]
 TARGET = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
@@ -90,75 +100,115 @@ print(json.dumps(out))
     return res
 
 
-def write_systems():
-    files = {}
-    n = 10
-    p = [f"p{i}" for i in range(n)]
-    files["diag10"] = {"parameters": {x: None for x in p},
-                       "A": [[p[i] if i == j else 0 for j in range(n)] for i in range(n)],
-                       "B": [[1]] * n, "C": [[1] * n], "D": [[0]]}
-    A = [[0] * (2 * n) for _ in range(2 * n)]
-    for i in range(n):
-        A[i][i + n] = 1
-        for j in range(n):
-            if i == j:
-                A[n + i][j], A[n + i][n + j] = "-2*k/m", "-2*c/m"
-            elif abs(i - j) == 1:
-                A[n + i][j], A[n + i][n + j] = "k/m", "c/m"
-    B = [[0] for _ in range(2 * n)]
-    B[n] = ["1/m"]
-    C = [[0] * (2 * n)]
-    C[0][n - 1] = 1
-    files["chain10"] = {"parameters": {"m": None, "k": None, "c": None}, "A": A, "B": B,
-                        "C": C, "D": [[0]]}
-    paths = {}
-    for name, body in files.items():
-        path = TARGET / f"qp-{name}.json"
-        path.write_text(json.dumps(body))
-        paths[name] = path
-    return paths
+def flint_times(cases):
+    """python-flint fmpz_mpoly: Bareiss det, det(xI - A), fraction-free Gauss-Jordan."""
+    code = r'''
+import json, sys, time
+import flint
+def median_ms(fn, budget=1.5, min_runs=3, max_runs=200):
+    ts = []; start = time.perf_counter()
+    while len(ts) < min_runs or (time.perf_counter() - start < budget and len(ts) < max_runs):
+        t = time.perf_counter(); fn(); ts.append(time.perf_counter() - t)
+        if ts[-1] > 20: break
+    ts.sort(); return ts[len(ts) // 2] * 1e3
+ctx = flint.fmpz_mpoly_ctx.get(("a", "b", "c", "x"), "degrevlex")
+a, b, c, x = ctx.gens()
+env = {"a": a, "b": b, "c": c}
+def bareiss(m, full=False):
+    """Fraction-free elimination in place; returns the last pivot (det up to sign)."""
+    n = len(m); prev = ctx.from_dict({}) + 1; sign = 1
+    for k in range(n):
+        p = next((i for i in range(k, n) if m[i][k] != 0), None)
+        if p is None: return 0
+        if p != k: m[k], m[p] = m[p], m[k]; sign = -sign
+        for i in range(n) if full else range(k + 1, n):
+            if i == k: continue
+            for j in range(k + 1, len(m[i])):
+                m[i][j] = (m[k][k] * m[i][j] - m[i][k] * m[k][j]) / prev
+            m[i][k] = 0 * prev
+        prev = m[k][k]
+    return sign * prev
+out = {}
+for name, n, ents in json.load(sys.stdin):
+    A = [[eval(e.replace("^", "**"), {}, env) + 0 * x for e in ents.split(";")[i * n:(i + 1) * n]]
+         for i in range(n)]
+    out[name + " det"] = median_ms(lambda: bareiss([r[:] for r in A]))
+    xi = [[(x if i == j else 0) - A[i][j] for j in range(n)] for i in range(n)]
+    out[name + " charpoly"] = median_ms(lambda: bareiss([r[:] for r in xi]))
+    out[name + " rref"] = median_ms(lambda: bareiss([r[:] for r in A], full=True))
+out["version"] = flint.__version__
+print(json.dumps(out))
+'''
+    p = subprocess.run([sys.executable, "-c", code], input=json.dumps(
+        [(c[0], int(c[1]), c[2]) for c in cases]), capture_output=True, text=True)
+    if p.returncode != 0:
+        print("python-flint fmpz_mpoly: not available:", p.stderr.strip().splitlines()[-1:])
+        return {}
+    return json.loads(p.stdout)
 
 
-def run_cli(paths):
-    subprocess.run(["cargo", "build", "--release"], cwd=ROOT, check=True, capture_output=True)
-    exe = TARGET / "release" / "exactlti"
-    rows = []
-    for name, cmds, goal in (("diag10", ("tf", "minreal", "scb", "zeros"), 1.0),
-                             ("chain10", ("tf", "minreal"), 2.0)):
-        for cmd in cmds:
-            p = subprocess.run(["/usr/bin/time", "-v", str(exe), cmd, str(paths[name]),
-                                "--format", "json", "--max-seconds", "120"],
-                               capture_output=True, text=True)
-            wall = re.search(r"Elapsed \(wall clock\) time.*: (?:(\d+):)?(\d+):([\d.]+)", p.stderr)
-            secs = (int(wall.group(1) or 0) * 3600 + int(wall.group(2)) * 60
-                    + float(wall.group(3))) if wall else float("nan")
-            rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", p.stderr)
-            mb = int(rss.group(1)) / 1024 if rss else float("nan")
-            rows.append((f"{name} {cmd}", secs, mb, goal, p.returncode))
+def cli_cases():
+    """The scale files of scripts/qp_scale.py: (name, command, goal seconds)."""
+    rows = [("dense8x3", f"linalg-{op}", None) for op in ("charpoly", "det", "rref")]
+    rows += [("chain10", cmd, 2.0) for cmd in ("tf", "minreal")]
+    rows += [("diag10", cmd, 1.0) for cmd in qp_scale.SYSTEM_CMDS]
     return rows
+
+
+def run_cli(build=True):
+    if build:
+        subprocess.run(["cargo", "build", "--release"], cwd=ROOT, check=True,
+                       capture_output=True)
+    exe = TARGET / "release" / "exactlti"
+    paths = qp_scale.write(TARGET / "qp-scale")
+    rows = []
+    for name, cmd, goal in cli_cases():
+        argv = [str(exe)] + qp_scale.ALL_CMDS[cmd] + [str(paths[name]), "--format", "json",
+                                                      "--max-seconds", "60"]
+        secs, mb, rc = qp_scale.timed(argv, 60)
+        rows.append((name, cmd, secs, mb, goal, rc))
+    return rows
+
+
+def dense_cli_case():
+    """dense8x3 of scripts/qp_scale.py as a bench case line (name, n, entries)."""
+    body = qp_scale.dense(8, 3)
+    return ["cli dense8x3", "8", ";".join(e for row in body["A"] for e in row)]
 
 
 def main():
     ensure_venv()
-    ours, cases = run_ours()
-    sy = sympy_times(cases)
-    print("# Q(p) matrices: median wall times in ms (same matrices)")
-    print(f"{'case':24} {'exactlti':>10} {'SymPy(flint)':>13} {'ratio':>8} "
-          f"{'SymPy(python)':>14} {'ratio':>8}")
-    print("-" * 84)
-    for c in cases:
+    # --cli-only: no `cargo bench` and no build (the release binary as it is)
+    cli_only = "--cli-only" in sys.argv
+    ours, cases = ({}, []) if cli_only else run_ours()
+    all_cases = cases + [dense_cli_case()]
+    sy = sympy_times(all_cases)
+    fl = flint_times(all_cases)
+    print("# Q(p) matrices: median wall times in ms (same matrices; ratio = other / exactlti)")
+    print(f"{'case':20} {'exactlti':>9} {'SymPy(flint)':>13} {'ratio':>7} "
+          f"{'SymPy(python)':>14} {'ratio':>7} {'fmpz_mpoly':>11} {'ratio':>7}")
+    print("-" * 96)
+    fmt = lambda o, t: f"{t / o:6.1f}x" if (o and t) else f"{'-':>7}"
+    for c in all_cases:
         for op in ("charpoly", "det", "rref"):
             name = f"{c[0]} {op}"
-            o, f, p = ours.get(name), sy["flint"].get(name), sy["python"].get(name)
-            rf = f"{f / o:7.1f}x" if (o and f) else f"{'-':>8}"
-            rp = f"{p / o:7.1f}x" if (o and p) else f"{'-':>8}"
-            print(f"{name:24} {o:10.3f} {f:13.3f} {rf} {p:14.3f} {rp}")
-    print("SymPy", sy["python"]["version"], "DomainMatrix over", sy["python"]["domain"])
+            o = ours.get(name)
+            f, p, q = sy["flint"].get(name), sy["python"].get(name), fl.get(name)
+            print(f"{name:20} {o or float('nan'):9.3f} {f or float('nan'):13.3f} {fmt(o, f)} "
+                  f"{p or float('nan'):14.3f} {fmt(o, p)} {q or float('nan'):11.3f} {fmt(o, q)}")
+    print("SymPy", sy["python"]["version"], "DomainMatrix over", sy["python"]["domain"],
+          "| python-flint", fl.get("version", "-"))
     print()
-    print("# CLI (release) under /usr/bin/time -v")
-    print(f"{'case':24} {'wall s':>8} {'max RSS MB':>11} {'goal s':>7} {'exit':>5}")
-    for name, secs, mb, goal, rc in run_cli(write_systems()):
-        print(f"{name:24} {secs:8.2f} {mb:11.1f} {goal:7.1f} {rc:5d}")
+    print("# release CLI under /usr/bin/time (files of scripts/qp_scale.py; `--format json`)")
+    print(f"{'case':10} {'command':20} {'wall s':>7} {'max RSS MB':>11} {'goal s':>7} "
+          f"{'goal/time':>9} {'SymPy/CLI':>9} {'exit':>5}")
+    for name, cmd, secs, mb, goal, rc in run_cli(build=not cli_only):
+        g = f"{goal:7.1f}" if goal else f"{'-':>7}"
+        r = f"{goal / secs:8.1f}x" if goal and secs > 0 else f"{'-':>9}"
+        op = cmd.removeprefix("linalg-")
+        symp = sy["flint"].get(f"cli dense8x3 {op}") if name == "dense8x3" else None
+        sr = f"{symp / (secs * 1e3):8.1f}x" if symp and secs > 0 else f"{'-':>9}"
+        print(f"{name:10} {cmd:20} {secs:7.3f} {mb:11.1f} {g} {r} {sr} {rc:5d}")
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 //! Characteristic and minimal polynomials; evaluation of a polynomial at a matrix.
 //!
+//! * `companion_charpoly`: read off a companion matrix ($O(n^2)$ to recognize it).
 //! * `charpoly_hessenberg`: similarity reduction to upper Hessenberg form $H = S^{-1} A S$ by
 //!   elementary transformations, then the recurrence $p_{k}(x) = (x - h_{kk}) p_{k-1}(x) -
 //!   \sum_{i<k} h_{ik} \prod_{j=i+1}^{k} h_{j,j-1}\, p_{i-1}(x)$: $O(n^3)$ field operations.
@@ -19,10 +20,35 @@ impl<K: Field> Matrix<K> {
     /// `NotSquare`.
     pub fn charpoly(&self) -> Result<Poly<K>> {
         self.check_square("charpoly")?;
+        if let Some(c) = self.companion_charpoly() {
+            return Ok(c);
+        }
         if let Some(c) = super::kernels::charpoly(self) {
             return c;
         }
         self.charpoly_hessenberg()
+    }
+    /// $\det(xI - A) = x^n + \sum_i c_i x^i$ read off a companion matrix (ones on the
+    /// subdiagonal, $A_{i,n-1} = -c_i$, zeros elsewhere: the Krylov form of a controllable
+    /// single-input system, whose entries over $\mathbb{Q}(p)$ are the large coefficients
+    /// themselves); `None` for any other matrix.
+    pub fn companion_charpoly(&self) -> Option<Poly<K>> {
+        let (k, n) = (&self.field, self.nrows);
+        if n < 2 || self.ncols != n {
+            return None;
+        }
+        for i in 0..n {
+            for j in 0..n - 1 {
+                let want_one = i == j + 1;
+                let x = &self.data[i * n + j];
+                if (want_one && !k.is_one(x)) || (!want_one && !k.is_zero(x)) {
+                    return None;
+                }
+            }
+        }
+        let mut c: Vec<K::Elem> = (0..n).map(|i| k.neg(&self.data[i * n + n - 1])).collect();
+        c.push(k.one());
+        Some(Poly::new(k.clone(), c))
     }
     /// Characteristic polynomial through the Hessenberg form.
     ///

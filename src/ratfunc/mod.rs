@@ -213,6 +213,21 @@ impl RatFuncField {
             log.insert(q);
         }
     }
+    /// Records that `p` is assumed nonzero, **unfactored**: [`RatFuncField::conditions`]
+    /// lists it as one condition (a pivot minor whose factors were not found; factoring it
+    /// could cost more than the computation that needed it).
+    pub fn record_condition_unfactored(&self, p: &MPoly) {
+        if p.is_constant() {
+            return;
+        }
+        let q = p.primitive_part();
+        if let Ok(mut m) = self.ctx.factored.lock() {
+            m.insert(q.clone(), vec![q.clone()]);
+        }
+        if let Ok(mut log) = self.ctx.log.lock() {
+            log.insert(q);
+        }
+    }
     /// The raw recorded divisors (primitive, not factored), in no particular order.
     pub fn recorded(&self) -> Vec<MPoly> {
         self.ctx

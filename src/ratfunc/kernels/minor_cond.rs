@@ -7,14 +7,16 @@
 //! | size of $\det C$ | how its factors are found |
 //! |---|---|
 //! | interpolation grid $\le$ [`DENSE_GRID`] points | $\det C$ interpolated ([`super::det_zp`]), divided by $\prod d_i$; factored by the log |
-//! | larger (e.g. a Vandermonde minor: $10!$ terms) | **peeling**: candidates $f$ (irreducible factors of the entries of $C$ of total degree $\le 3$, of differences of two entries in one row or column, of the $d_i$, and the conditions recorded so far in this computation); on a random line $x = a + t b$ modulo a word prime, $g(t) = \det C(x)$ is interpolated ($\deg g \le D$, the total-degree bound) and divided by each $f(a + t b)$ as often as it goes; when the cofactor is a constant $c_0$, the identity $\det C = c_0 \prod f^{e_f}$ is checked at two further random points (Schwartz–Zippel: wrong with probability $\le 2D/q$, $q \approx 2^{62}$) |
+//! | larger (e.g. a Vandermonde minor: $10!$ terms) | **peeling**: candidates $f$ (the parameters, irreducible factors of the entries of $C$ of total degree $\le 3$, of differences of two entries in one row or column, of the $d_i$, and the conditions recorded so far in this computation); on a random line $x = a + t b$ modulo a word prime, $g(t) = \det C(x)$ is interpolated ($\deg g \le D$, the total-degree bound) and divided by each $f(a + t b)$ as often as it goes; when the cofactor is a constant $c_0$, the identity $\det C = c_0 \prod f^{e_f}$ is checked at two further random points (Schwartz–Zippel: wrong with probability $\le 2D/q$, $q \approx 2^{62}$) |
 //!
-//! When neither applies (a cofactor that is not a constant), nothing is recorded and the caller
-//! gives the shortcut up (the generic elimination then records its pivots itself).
+//! | peeling leaves a cofactor, grid $\le$ [`MAX_GRID_POINTS`] | $\det C$ interpolated and recorded as **one condition, unfactored** (an 8 x 8 minor linear in 10 parameters: 43758 points) |
+//!
+//! When none applies (a larger grid), nothing is recorded and the caller gives the shortcut
+//! up (the generic elimination then records its pivots itself).
 
 use super::det_zp;
-use super::interp::{Bounds, grid_points};
-use super::modp::{det_mod_p, eval_mod_p};
+use super::interp::{Bounds, MAX_GRID_POINTS, grid_points};
+use super::modp::{ReducedPoly, det_mod_p, eval_mod_p, powers};
 use crate::mpoly::{MPoly, factor};
 use crate::qkernels::prime::{Prime, nth_prime};
 use crate::ratfunc::RatFuncField;
@@ -23,6 +25,10 @@ use std::collections::HashSet;
 
 /// Largest grid on which $\det C$ is interpolated outright.
 pub const DENSE_GRID: usize = 1 << 14;
+
+/// Largest work (grid points times operations per point) spent on interpolating a minor
+/// that is recorded unfactored.
+pub const UNFACTORED_WORK: usize = 1 << 28;
 
 /// Largest number of distinct polynomials factored for candidates.
 const MAX_RAW: usize = 600;
@@ -61,14 +67,40 @@ pub fn record_minor(
         };
     }
     let known = k.conditions().unwrap_or_default();
-    match peel(r, &c, bounds.dtot as usize, &den, &known) {
-        Some(fs) => {
-            for f in &fs {
-                k.record_condition(f);
-            }
+    if let Some(fs) = peel(r, &c, bounds.dtot as usize, &den, &known) {
+        for f in &fs {
+            k.record_condition(f);
+        }
+        return true;
+    }
+    record_unfactored(k, r, &c, &bounds, &den)
+}
+
+/// The last resort of [`record_minor`]: $\det C$ interpolated on a grid of at most
+/// [`MAX_GRID_POINTS`] points (and [`UNFACTORED_WORK`] operations), the numerator of
+/// $\det C / \prod d_i$ recorded as **one** condition, unfactored
+/// ([`RatFuncField::record_condition_unfactored`]); `false` when the grid is larger.
+fn record_unfactored(
+    k: &RatFuncField,
+    r: usize,
+    c: &[MPoly],
+    bounds: &Bounds,
+    den: &MPoly,
+) -> bool {
+    let per_point = r * r * r + c.iter().map(MPoly::len).sum::<usize>();
+    let work = grid_points(bounds).saturating_mul(per_point);
+    if grid_points(bounds) > MAX_GRID_POINTS || work > UNFACTORED_WORK {
+        return false;
+    }
+    match det_zp(k.nvars(), r, c)
+        .ok()
+        .and_then(|d| k.frac(d, den.clone()))
+    {
+        Some(q) if !q.num().is_zero() => {
+            k.record_condition_unfactored(q.num());
             true
         }
-        None => false,
+        _ => false,
     }
 }
 
@@ -125,6 +157,14 @@ fn peel(r: usize, c: &[MPoly], dtot: usize, den: &MPoly, known: &[MPoly]) -> Opt
     // the conditions recorded so far and the factors of `den` first (cheap), the entries'
     // factors only when those leave a cofactor
     let mut first: Vec<MPoly> = known.to_vec();
+    // the parameters themselves (a Krylov matrix of a chain: det = k^90 / m^110, whose
+    // entries of small degree are all constants)
+    for v in 0..den.nvars() {
+        let x = MPoly::var(den.nvars(), v);
+        if !first.contains(&x) {
+            first.push(x);
+        }
+    }
     if !den.is_constant() {
         for (g, _) in factor(den).ok()?.factors {
             if !first.contains(&g) {
@@ -162,8 +202,12 @@ fn peel_with(
     let dir = rand_pt(&mut rng);
     let on_line =
         |t: u64| -> Vec<u64> { (0..nv).map(|v| pr.add(a[v], pr.mul(t, dir[v]))).collect() };
+    // the entries reduced once (evaluated at dtot + 3 points)
+    let red: Vec<ReducedPoly> = c.iter().map(|f| ReducedPoly::new(&pr, f)).collect();
+    let maxe = red.iter().map(ReducedPoly::max_exp).max().unwrap_or(0);
     let det_at = |x: &[u64]| -> u64 {
-        let mut m: Vec<u64> = c.iter().map(|f| eval_mod_p(&pr, f, x)).collect();
+        let pw = powers(&pr, x, maxe);
+        let mut m: Vec<u64> = red.iter().map(|f| f.eval(&pr, &pw)).collect();
         det_mod_p(&pr, r, &mut m)
     };
     let restrict = |vals: &dyn Fn(&[u64]) -> u64, deg: usize| -> Vec<u64> {

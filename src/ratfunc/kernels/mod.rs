@@ -7,7 +7,9 @@
 //! |---|---|---|
 //! | charpoly | $\det(xI - A)$, no conditions (a polynomial identity) | $A = B/D$ (common denominator), $\det(xI - B)$ by [`charpoly_zp`], $c_k = c'_k / D^{n-k}$ |
 //! | det | $\det A$, no conditions | rows cleared ($B_i = d_i A_i$), $\det B$ interpolated, divided by $\prod d_i$ |
-//! | rref, rank (null space and inverse through the RREF) | canonical RREF $R$ | below |
+//! | rref, rank (null space through the RREF) | canonical RREF $R$ | below |
+//! | inverse | $A^{-1} = \operatorname{adj}(B) D / \det B$ ($B = DA$ row-cleared) | [`inverse`]: $\det B$ and $\operatorname{adj} B$ interpolated together, checked, one division per entry |
+//! | product | $AB$ | [`mul`]: rows of $A$ and columns of $B$ cleared, one reduction per entry |
 //! | gcd in $\mathbb{Q}(p)\lbrack s\rbrack$ | monic gcd, no conditions | [`pgcd`]: coprimality at a point, else one gcd in $\mathbb{Z}\lbrack p, s\rbrack$ |
 //!
 //! **RREF.** Scaling row $i$ by the lcm $d_i$ of its denominators does not change the RREF.
@@ -30,8 +32,10 @@
 
 pub mod blocks;
 pub mod interp;
+pub mod inverse;
 pub mod minor_cond;
 pub mod modp;
+pub mod mul;
 pub mod pgcd;
 
 use super::{RatFunc, RatFuncField};
@@ -201,6 +205,24 @@ impl KernelTable<RatFuncField> for QpKernels {
             return None;
         }
         rref::pivots_qp(k, m, n, a)
+    }
+    fn inverse(&self, k: &RatFuncField, n: usize, a: &[RatFunc]) -> Option<Option<Vec<RatFunc>>> {
+        if n * n <= TINY || k.nvars() == 0 {
+            return None;
+        }
+        inverse::inverse_qp(k, n, a)
+    }
+    fn mul(
+        &self,
+        k: &RatFuncField,
+        dims: (usize, usize, usize),
+        a: &[RatFunc],
+        b: &[RatFunc],
+    ) -> Option<Vec<RatFunc>> {
+        if k.nvars() == 0 {
+            return None;
+        }
+        mul::mul_qp(k, dims, a, b)
     }
     fn poly_gcd(&self, k: &RatFuncField, f: &[RatFunc], g: &[RatFunc]) -> Option<Vec<RatFunc>> {
         if k.nvars() == 0 {

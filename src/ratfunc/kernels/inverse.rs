@@ -1,0 +1,136 @@
+//! The inverse kernel of $\mathbb{Q}(p)$: $A^{-1}$ by evaluation/interpolation of the
+//! adjugate, one division per entry at the end.
+//!
+//! With row $i$ of $A$ cleared ($B = DA$, $D = \operatorname{diag}(d_i)$, $B$ over
+//! $\mathbb{Z}\lbrack p\rbrack$),
+//! $$A^{-1} = B^{-1} D, \qquad (A^{-1})_{ij} = \frac{\operatorname{adj}(B)_{ij}\, d_j}{\det B}.$$
+//! $\det B$ and the $n^2$ entries of $\operatorname{adj} B$ (the $(n-1)$-minors, so the degree
+//! and coefficient bounds of $\det B$ by rows and by columns hold for them too,
+//! [`Bounds::of_square`]) are interpolated together ([`interpolate_zp`], shifted nodes: at a
+//! point where $B$ is singular modulo the prime the map is undefined and the grid is moved);
+//! $\operatorname{adj} B = \det B \cdot B^{-1}$ at each point. $\det B = 0$: $A$ is singular.
+//! The result is checked exactly, $B \operatorname{adj} B = \det B \cdot I$, before the
+//! entries are brought to lowest terms (the only gcds). Recorded: the numerator of
+//! $\det A$ (the inverse holds where it is nonzero). A matrix that splits into blocks is
+//! inverted block by block; a grid over [`MAX_VALUES`] residues gives way to the generic
+//! algorithm (`None`).
+
+use super::blocks::{Block, split, sub};
+use super::clear_rows;
+use super::interp::{Bounds, grid_points, interpolate_zp};
+use super::modp::det_mod_p;
+use crate::field::Field;
+use crate::mpoly::MPoly;
+use crate::qkernels::modular::inverse::inverse_mod_p;
+use crate::ratfunc::{RatFunc, RatFuncField};
+
+/// Largest number of residues (grid points times outputs) one prime may hold (64 MB).
+const MAX_VALUES: usize = 1 << 23;
+
+/// $A^{-1}$ of the `n x n` row-major `a`: `Some(Some(inv))`, `Some(None)` when singular,
+/// `None` when the generic algorithm should run (see the module docs).
+pub fn inverse_qp(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Option<Option<Vec<RatFunc>>> {
+    if let Some(blocks) = split(k, n, n, a) {
+        return by_blocks(k, n, a, &blocks);
+    }
+    let nv = k.nvars();
+    let (b, ds) = clear_rows(nv, n, n, a);
+    let bounds = Bounds::of_square(nv, n, &b);
+    if grid_points(&bounds).saturating_mul(n * n + 1 + b.len()) > MAX_VALUES {
+        return None;
+    }
+    let out = interpolate_zp(nv, &b, &bounds, n * n + 1, true, |pr, x| {
+        let det = det_mod_p(pr, n, &mut x.to_vec());
+        if det == 0 || !inverse_mod_p(pr, n, x) {
+            return None;
+        }
+        let mut v = Vec::with_capacity(n * n + 1);
+        v.push(det);
+        v.extend(x.iter().map(|&y| pr.mul(y, det)));
+        Some(v)
+    });
+    let out = match out {
+        Ok(Some(o)) => o,
+        // singular at every shifted grid point tried: decide singularity exactly
+        Ok(None) => return super::det_zp(nv, n, &b).ok()?.is_zero().then_some(None),
+        Err(_) => return None,
+    };
+    let det = &out[0];
+    if det.is_zero() {
+        return Some(None);
+    }
+    let adj = &out[1..];
+    if !check(n, &b, adj, det) {
+        return None;
+    }
+    // valid where det A = det B / prod d_i is nonzero (the generic elimination records it too)
+    let dprod = ds.iter().fold(MPoly::one(nv), |acc, d| acc.mul(d));
+    if let Some(q) = k.frac(det.clone(), dprod) {
+        k.record_condition(q.num());
+    }
+    let inv = (0..n * n)
+        .map(|t| {
+            if adj[t].is_zero() {
+                k.zero()
+            } else {
+                k.frac(adj[t].mul(&ds[t % n]), det.clone())
+                    .expect("nonzero")
+            }
+        })
+        .collect();
+    Some(Some(inv))
+}
+
+/// $B \operatorname{adj} B = \det B \cdot I$, exactly.
+fn check(n: usize, b: &[MPoly], adj: &[MPoly], det: &MPoly) -> bool {
+    let nv = det.nvars();
+    for i in 0..n {
+        for j in 0..n {
+            let mut s = MPoly::zero(nv);
+            for t in 0..n {
+                let (x, y) = (&b[i * n + t], &adj[t * n + j]);
+                if !x.is_zero() && !y.is_zero() {
+                    s = s.add(&x.mul(y));
+                }
+            }
+            let want = if i == j { det.clone() } else { MPoly::zero(nv) };
+            if s != want {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Block by block: a square block diagonal matrix (up to permutation) is invertible exactly
+/// when every block is square and invertible; $(A^{-1})_{c_j, r_i} = (A_c^{-1})_{ji}$.
+fn by_blocks(
+    k: &RatFuncField,
+    n: usize,
+    a: &[RatFunc],
+    blocks: &[Block],
+) -> Option<Option<Vec<RatFunc>>> {
+    let covered: usize = blocks.iter().map(|b| b.rows.len()).sum();
+    if covered < n || blocks.iter().any(|b| b.rows.len() != b.cols.len()) {
+        return Some(None);
+    }
+    let mut out = vec![k.zero(); n * n];
+    for blk in blocks {
+        let s = blk.rows.len();
+        let part = sub(a, n, blk);
+        let inv = if s == 1 {
+            Some(vec![k.inv(&part[0])?])
+        } else {
+            inverse_qp(k, s, &part)?
+        };
+        let Some(inv) = inv else {
+            return Some(None);
+        };
+        for (ii, &c) in blk.cols.iter().enumerate() {
+            for (jj, &r) in blk.rows.iter().enumerate() {
+                out[c * n + r] = inv[ii * s + jj].clone();
+            }
+        }
+    }
+    Some(Some(out))
+}
