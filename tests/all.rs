@@ -77,6 +77,8 @@ mod matrix_modular;
 mod matrix_quadratic;
 #[path = "matrix_rational.rs"]
 mod matrix_rational;
+#[path = "margins.rs"]
+mod margins;
 #[path = "mechanical.rs"]
 mod mechanical;
 #[path = "memory_budget.rs"]
@@ -131,6 +133,8 @@ mod symbolic;
 mod symbolic_scb;
 #[path = "symjordan.rs"]
 mod symjordan;
+#[path = "toolbox.rs"]
+mod toolbox;
 
 /// Every `tests/*.rs` file (other than this one) is mounted above: Cargo's automatic test
 /// discovery is off (`autotests = false`), so an unlisted file would silently not run.

@@ -17,6 +17,9 @@ use crate::system::time_response::{default_horizon, default_points, time_grid};
 use clap::Subcommand;
 use std::path::{Path, PathBuf};
 
+/// Default number of samples of `stepinfo` (at least; more for fast poles).
+const STEPINFO_POINTS: usize = 10_000;
+
 /// `gram --type`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum GramArg {
@@ -45,7 +48,7 @@ pub enum ToolboxCmd {
         /// Horizon in seconds (default: from the poles, as `step`).
         #[arg(long, value_name = "S")]
         to: Option<f64>,
-        /// Number of samples on [0, --to] (2 to 100000; default from the poles).
+        /// Number of samples on [0, --to] (2 to 100000; default at least 10000).
         #[arg(long, value_name = "N")]
         points: Option<usize>,
     },
@@ -180,7 +183,8 @@ fn stepinfo<K: Field + 'static>(
     };
     let a_stable = poles.iter().all(|z| z.0 < 0.0);
     let t_end = to.unwrap_or_else(|| default_horizon(&poles));
-    let n = points.unwrap_or_else(|| default_points(t_end, &poles));
+    // finer than `step`'s plot grid: the characteristics are read off the samples
+    let n = points.unwrap_or_else(|| default_points(t_end, &poles).max(STEPINFO_POINTS));
     let times = time_grid(t_end, n);
     let resp = float::step_response(&a, &b, &c, &d, &times).map_err(e)?;
     let dc = crate::system::dcgain::dc_gain(s).map_err(e)?;
