@@ -69,6 +69,8 @@ mod latex;
 mod layers;
 #[path = "library_api.rs"]
 mod library_api;
+#[path = "margins.rs"]
+mod margins;
 #[path = "matrix_generic.rs"]
 mod matrix_generic;
 #[path = "matrix_modular.rs"]
@@ -77,8 +79,6 @@ mod matrix_modular;
 mod matrix_quadratic;
 #[path = "matrix_rational.rs"]
 mod matrix_rational;
-#[path = "margins.rs"]
-mod margins;
 #[path = "mechanical.rs"]
 mod mechanical;
 #[path = "memory_budget.rs"]

@@ -60,7 +60,10 @@ fn third_order_with_irrational_phase_crossover() {
     // with gain 8: |G(0)| = 2, the gain margin is 1/4 (unstable closed loop), the phase
     // margin negative
     let m = margins_tf(&p(&[8]), &p(&[4, 3, 2, 1])).unwrap();
-    assert_eq!(m.gain_margin().unwrap().gain_margin.to_rational(), Some(rat(1, 4)));
+    assert_eq!(
+        m.gain_margin().unwrap().gain_margin.to_rational(),
+        Some(rat(1, 4))
+    );
     assert!(m.phase_margin().unwrap().phase_margin_deg < 0.0);
 }
 
@@ -92,10 +95,15 @@ fn edge_shapes() {
     assert_eq!(pm.w.value_string(), "sqrt(2)");
     assert_eq!(pm.cos_phase_margin.to_rational(), Some(rat(1, 1)));
     assert!(pm.phase_margin_deg.abs() < 1e-9);
-    // all-pass (1 - s)/(1 + s): |G| = 1 everywhere, phase crossing at w = 1 (G(j) = -1)
+    // all-pass (1 - s)/(1 + s): |G| = 1 everywhere, -180 degrees only as w -> inf
     let m = margins_tf(&p(&[1, -1]), &p(&[1, 1])).unwrap();
+    assert!(m.unit_gain_everywhere && m.phase_margin().is_none() && m.gain_margin().is_none());
+    // ((1 - s)/(1 + s))^2: G(j) = (-j)^2 = -1, a phase crossing at w = 1 with gain margin 1
+    let m = margins_tf(&p(&[1, -2, 1]), &p(&[1, 2, 1])).unwrap();
     assert!(m.unit_gain_everywhere && m.phase_margin().is_none());
-    assert_eq!(m.gain_margin().unwrap().gain_margin.to_rational(), Some(rat(1, 1)));
+    let gm = m.gain_margin().unwrap();
+    assert_eq!(gm.w.to_rational(), Some(rat(1, 1)));
+    assert_eq!(gm.gain_margin.to_rational(), Some(rat(1, 1)));
     // a zero on the axis is no crossing: s^2 + 1 over (s + 1)^3
     let m = margins_tf(&p(&[1, 0, 1]), &p(&[1, 3, 3, 1])).unwrap();
     assert!(m.verified);
@@ -125,8 +133,12 @@ fn identities(num: &Poly<Q>, den: &Poly<Q>, m: &Margins) {
             acc = k.add(&k.mul(&acc, &v), &k.from_base(c));
         }
         assert!(k.is_zero(&acc));
-        let approx = k.approx(&v).unwrap().0;
-        assert!(close(approx, x.approx().0, 1e-9), "{approx} vs {}", x.approx().0);
+        let approx = k.approx(&v).0;
+        assert!(
+            close(approx, x.approx().0, 1e-9),
+            "{approx} vs {}",
+            x.approx().0
+        );
     };
     for c in &m.phase_crossings {
         assert!(m.imag_poly.rem(c.w.minpoly()).is_zero());
@@ -173,7 +185,9 @@ fn random_loops_against_a_float_scan() {
         }
         // and no crossing is missed: a sign change of Im G (Re G < 0) or of |G| - 1 on a
         // dense grid lies within a reported one
-        let grid: Vec<f64> = (0..4000).map(|k| 10f64.powf(-3.0 + 6.0 * k as f64 / 3999.0)).collect();
+        let grid: Vec<f64> = (0..4000)
+            .map(|k| 10f64.powf(-3.0 + 6.0 * k as f64 / 3999.0))
+            .collect();
         for win in grid.windows(2) {
             let (a, b) = (eval_jw(&num, &den, win[0]), eval_jw(&num, &den, win[1]));
             if !(a.norm().is_finite() && b.norm().is_finite()) {
@@ -184,10 +198,16 @@ fn random_loops_against_a_float_scan() {
                 x >= win[0] * (1.0 - 1e-9) && x <= win[1] * (1.0 + 1e-9)
             };
             if a.im * b.im < 0.0 && a.re < 0.0 && b.re < 0.0 && !m.real_everywhere {
-                assert!(m.phase_crossings.iter().any(|c| inside(&c.w)), "{num} / {den}");
+                assert!(
+                    m.phase_crossings.iter().any(|c| inside(&c.w)),
+                    "{num} / {den}"
+                );
             }
             if (a.norm() - 1.0) * (b.norm() - 1.0) < 0.0 {
-                assert!(m.gain_crossings.iter().any(|c| inside(&c.w)), "{num} / {den}");
+                assert!(
+                    m.gain_crossings.iter().any(|c| inside(&c.w)),
+                    "{num} / {den}"
+                );
             }
         }
         with_pc += usize::from(!m.phase_crossings.is_empty());
@@ -209,7 +229,11 @@ fn command_line() {
     assert_eq!(j["gain_margin"], "2");
     assert_eq!(j["phase_crossover_frequency"], "1");
     assert_eq!(j["gain_crossover_frequency_minpoly"], "x^3 + x - 1");
-    assert!(close(j["phase_margin_deg"].as_f64().unwrap(), 21.386_389_751_875_04, 1e-9));
+    assert!(close(
+        j["phase_margin_deg"].as_f64().unwrap(),
+        21.386_389_751_875_04,
+        1e-9
+    ));
     assert_eq!(j["verified"], true);
     let (code, out, _) = run(&["margin", f.to_str().unwrap()]);
     assert_eq!(code, 0);
@@ -219,13 +243,24 @@ fn command_line() {
     let (code, out, _) = run(&["margin", f.to_str().unwrap(), "--format", "json"]);
     assert_eq!(code, 0);
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
-    assert_eq!((j["gain_margin"].as_str(), j["phase_margin_deg"].as_str()), (Some("inf"), Some("inf")));
+    assert_eq!(
+        (j["gain_margin"].as_str(), j["phase_margin_deg"].as_str()),
+        (Some("inf"), Some("inf"))
+    );
     // MIMO and a file over Q(sqrt 2) are refused with one line, exit 2
-    let f = temp_file("margins", "mimo.json", r#"{"A": [[-1]], "B": [[1, 1]], "C": [[1]]}"#);
+    let f = temp_file(
+        "margins",
+        "mimo.json",
+        r#"{"A": [[-1]], "B": [[1, 1]], "C": [[1]]}"#,
+    );
     let (code, _, err) = run(&["margin", f.to_str().unwrap()]);
     assert_eq!((code, err.trim_end().lines().count()), (2, 1), "{err}");
     assert!(err.contains("SISO"));
-    let f = temp_file("margins", "k.json", r#"{"A": [["-sqrt(2)"]], "B": [[1]], "C": [[1]]}"#);
+    let f = temp_file(
+        "margins",
+        "k.json",
+        r#"{"A": [["-sqrt(2)"]], "B": [[1]], "C": [[1]]}"#,
+    );
     let (code, _, err) = run(&["margin", f.to_str().unwrap()]);
     assert_eq!((code, err.trim_end().lines().count()), (2, 1), "{err}");
 }

@@ -45,16 +45,28 @@ fn damp_by_hand() {
         let r = find(-1.0, im);
         assert!(close(r.wn_rad_s, 2.0, 1e-14) && close(r.wn_hz, 1.0 / std::f64::consts::PI, 1e-14));
         assert!(close(r.zeta.unwrap(), 0.5, 1e-14));
-        assert_eq!((r.wn_squared.clone(), r.two_zeta_wn.clone()), (Some(rat(4, 1)), Some(rat(2, 1))));
+        assert_eq!(
+            (r.wn_squared.clone(), r.two_zeta_wn.clone()),
+            (Some(rat(4, 1)), Some(rat(2, 1)))
+        );
         assert_eq!(r.time_constant_exact, Some(rat(1, 1)));
     }
     let r = find(-3.0, 0.0);
-    assert_eq!((r.zeta, r.wn_squared.clone(), r.two_zeta_wn.clone()), (Some(1.0), Some(rat(9, 1)), Some(rat(6, 1))));
+    assert_eq!(
+        (r.zeta, r.wn_squared.clone(), r.two_zeta_wn.clone()),
+        (Some(1.0), Some(rat(9, 1)), Some(rat(6, 1)))
+    );
     assert_eq!(r.time_constant_exact, Some(rat(1, 3)));
     let r = find(2.0, 0.0);
-    assert_eq!((r.zeta, r.time_constant_exact.clone()), (Some(-1.0), Some(rat(-1, 2))));
+    assert_eq!(
+        (r.zeta, r.time_constant_exact.clone()),
+        (Some(-1.0), Some(rat(-1, 2)))
+    );
     let r = find(0.0, 0.0);
-    assert_eq!((r.zeta, r.time_constant_s, r.time_constant_exact.clone()), (None, None, None));
+    assert_eq!(
+        (r.zeta, r.time_constant_s, r.time_constant_exact.clone()),
+        (None, None, None)
+    );
     assert!(damp(&Matrix::zeros(Q, 0, 0)).unwrap().is_empty());
 }
 
@@ -63,7 +75,9 @@ fn damp_random_matrices_agree_with_their_poles() {
     let mut rng = SplitMix64(0xda_3b_2026);
     for _ in 0..crate::common::iters(20) {
         let n = rng.int(1, 4) as usize;
-        let v = (0..n * n).map(|_| Rational::from_integer(rng.int(-3, 3).into())).collect();
+        let v = (0..n * n)
+            .map(|_| Rational::from_integer(rng.int(-3, 3).into()))
+            .collect();
         let a = Matrix::from_vec(Q, n, n, v);
         let rows = damp(&a).unwrap();
         assert_eq!(rows.iter().map(|r| r.multiplicity).sum::<usize>(), n);
@@ -71,10 +85,18 @@ fn damp_random_matrices_agree_with_their_poles() {
             let (re, im) = r.approx;
             assert!(close(r.wn_rad_s, re.hypot(im), 1e-12));
             if let Some(w2) = &r.wn_squared {
-                assert!(close(exactlti::field::rational_to_f64(w2), re * re + im * im, 1e-9));
+                assert!(close(
+                    exactlti::field::rational_to_f64(w2),
+                    re * re + im * im,
+                    1e-9
+                ));
             }
             if let (Some(t), Some(z)) = (&r.two_zeta_wn, r.zeta) {
-                assert!(close(exactlti::field::rational_to_f64(t), 2.0 * z * r.wn_rad_s, 1e-9));
+                assert!(close(
+                    exactlti::field::rational_to_f64(t),
+                    2.0 * z * r.wn_rad_s,
+                    1e-9
+                ));
             }
         }
     }
@@ -88,8 +110,13 @@ fn gram_by_hand_and_unstable_refused() {
     assert!(g.verified);
     assert_eq!(g.w, q(&[&[1]]).scale(&rat(1, 2)));
     assert_eq!(gramian(&s, GramType::Observability).unwrap().w, q(&[&[2]]));
-    let s = StateSpace::new(q(&[&[0, 1], &[-2, -3]]), q(&[&[0], &[1]]), q(&[&[1, 0]]), q(&[&[0]]))
-        .unwrap();
+    let s = StateSpace::new(
+        q(&[&[0, 1], &[-2, -3]]),
+        q(&[&[0], &[1]]),
+        q(&[&[1, 0]]),
+        q(&[&[0]]),
+    )
+    .unwrap();
     let g = gramian(&s, GramType::Controllability).unwrap();
     assert!(g.verified);
     let w12 = Matrix::from_vec(Q, 2, 2, vec![rat(1, 12), rat(0, 1), rat(0, 1), rat(1, 6)]);
@@ -110,13 +137,31 @@ fn gram_random_stable_systems_satisfy_lyapunov() {
         let mut a = Matrix::zeros(Q, n, n);
         for i in 0..n {
             for j in i..n {
-                let x = if i == j { rng.int(-4, -1) } else { rng.int(-3, 3) };
+                let x = if i == j {
+                    rng.int(-4, -1)
+                } else {
+                    rng.int(-3, 3)
+                };
                 a.set(i, j, Rational::from_integer(x.into()));
             }
         }
         let m = rng.int(1, 2) as usize;
-        let b = Matrix::from_vec(Q, n, m, (0..n * m).map(|_| Rational::from_integer(rng.int(-2, 2).into())).collect());
-        let c = Matrix::from_vec(Q, 1, n, (0..n).map(|_| Rational::from_integer(rng.int(-2, 2).into())).collect());
+        let b = Matrix::from_vec(
+            Q,
+            n,
+            m,
+            (0..n * m)
+                .map(|_| Rational::from_integer(rng.int(-2, 2).into()))
+                .collect(),
+        );
+        let c = Matrix::from_vec(
+            Q,
+            1,
+            n,
+            (0..n)
+                .map(|_| Rational::from_integer(rng.int(-2, 2).into()))
+                .collect(),
+        );
         let s = StateSpace::new(a.clone(), b.clone(), c.clone(), Matrix::zeros(Q, 1, m)).unwrap();
         let wc = gramian(&s, GramType::Controllability).unwrap();
         let wo = gramian(&s, GramType::Observability).unwrap();
@@ -174,11 +219,16 @@ fn command_line() {
         r#"{"A": [[0, 1], [-1, -1]], "B": [[0], [1]], "C": [[1, 0]], "inputs": ["u"], "outputs": ["y"]}"#,
     );
     let path = f.to_str().unwrap();
-    let (code, out, err) = run(&["stepinfo", path, "--to", "20", "--points", "20001", "--format", "json"]);
+    let (code, out, err) = run(&[
+        "stepinfo", path, "--to", "20", "--points", "20001", "--format", "json",
+    ]);
     assert_eq!(code, 0, "{err}");
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     let ch = &j["channels"][0];
-    assert!((ch["Overshoot"].as_f64().unwrap() - 16.303_353_482_158_1).abs() < 1e-3, "{ch}");
+    assert!(
+        (ch["Overshoot"].as_f64().unwrap() - 16.303_353_482_158_1).abs() < 1e-3,
+        "{ch}"
+    );
     assert_eq!(ch["SteadyStateValue"].as_f64(), Some(1.0));
     let (code, out, _) = run(&["damp", path, "--format", "json"]);
     assert_eq!(code, 0);
@@ -195,18 +245,40 @@ fn command_line() {
     for cmd in ["stepinfo", "damp", "gram", "margin"] {
         let (code, out, _) = run(&[cmd, path]);
         assert_eq!(code, 0, "{cmd}");
-        assert!(out.lines().all(|l| l.chars().count() <= 200), "{cmd}: {out}");
+        assert!(
+            out.lines().all(|l| l.chars().count() <= 200),
+            "{cmd}: {out}"
+        );
     }
     // integrator and unstable channels: no step characteristics, with the reason
-    let f = temp_file("toolbox", "integ.json", r#"{"A": [[0, 0], [0, 1]], "B": [[1, 0], [0, 1]], "C": [[1, 0], [0, 1]]}"#);
+    let f = temp_file(
+        "toolbox",
+        "integ.json",
+        r#"{"A": [[0, 0], [0, 1]], "B": [[1, 0], [0, 1]], "C": [[1, 0], [0, 1]]}"#,
+    );
     let (code, out, _) = run(&["stepinfo", f.to_str().unwrap(), "--format", "json"]);
     assert_eq!(code, 0);
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     let chans = j["channels"].as_array().unwrap();
     assert_eq!(chans.len(), 4);
-    assert!(chans[0]["reason"].as_str().unwrap().contains("left half-plane"));
-    assert!(chans[3]["reason"].as_str().unwrap().contains("left half-plane"));
-    assert!(chans[1]["reason"].as_str().unwrap().contains("final value is 0"));
+    assert!(
+        chans[0]["reason"]
+            .as_str()
+            .unwrap()
+            .contains("left half-plane")
+    );
+    assert!(
+        chans[3]["reason"]
+            .as_str()
+            .unwrap()
+            .contains("left half-plane")
+    );
+    assert!(
+        chans[1]["reason"]
+            .as_str()
+            .unwrap()
+            .contains("final value is 0")
+    );
     // unstable A: gram refused with one line, exit 2
     let (code, _, err) = run(&["gram", f.to_str().unwrap()]);
     assert_eq!((code, err.trim_end().lines().count()), (2, 1), "{err}");

@@ -196,16 +196,23 @@ fn stepinfo<K: Field + 'static>(
         for j in 0..m {
             let y: Vec<f64> = resp.iter().map(|r| r[(i, j)]).collect();
             let stable = channel_stable(&g.entries[i][j].den).unwrap_or(a_stable);
-            let fin = dc.entries[i][j].as_ref().and_then(|x| k.approx(x)).map(|z| z.0);
+            let fin = dc.entries[i][j]
+                .as_ref()
+                .and_then(|x| k.approx(x))
+                .map(|z| z.0);
             let info = match (stable, fin) {
-                (false, _) | (_, None) => Err(
-                    "a pole of this channel is not in the open left half-plane: no final value",
-                ),
+                (false, _) | (_, None) => {
+                    Err("a pole of this channel is not in the open left half-plane: no final value")
+                }
                 (true, Some(y_inf)) => {
                     step_info(&times, &y, y_inf).map_err(sections::no_stepinfo_reason)
                 }
             };
-            channels.push(sections::stepinfo_channel(&outs[i], &ins[j], info.as_ref().map_err(|w| *w)));
+            channels.push(sections::stepinfo_channel(
+                &outs[i],
+                &ins[j],
+                info.as_ref().map_err(|w| *w),
+            ));
         }
     }
     let r = crate::report::Report::titled("step characteristics")

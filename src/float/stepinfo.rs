@@ -127,6 +127,9 @@ mod tests {
         assert!((s.peak - y[100_000]).abs() < 1e-15);
         assert_eq!(step_info(&t, &y, 0.0), Err(NoStepInfo::ZeroFinalValue));
         assert_eq!(step_info(&t, &y, 3.0), Err(NoStepInfo::NotReached));
-        assert_eq!(step_info(&t[..1], &y[..1], 1.0), Err(NoStepInfo::BadSamples));
+        assert_eq!(
+            step_info(&t[..1], &y[..1], 1.0),
+            Err(NoStepInfo::BadSamples)
+        );
     }
 }

@@ -22,8 +22,8 @@
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
 mod controllability;
-mod damp;
 mod ctrb_structure;
+mod damp;
 mod descriptor;
 mod descriptor_elim;
 mod descriptor_minimal;

@@ -32,10 +32,17 @@ pub fn margins_report(m: &Margins) -> Report {
     let mut r = Report::titled("gain and phase margins")
         .str(
             "transfer_function",
-            format!("({})/({})", m.num.to_string_var("s"), m.den.to_string_var("s")),
+            format!(
+                "({})/({})",
+                m.num.to_string_var("s"),
+                m.den.to_string_var("s")
+            ),
         )
         .str("phase_crossing_polynomial", m.imag_poly.to_string_var("w"))
-        .str("gain_crossing_polynomial", m.magnitude_poly.to_string_var("w"));
+        .str(
+            "gain_crossing_polynomial",
+            m.magnitude_poly.to_string_var("w"),
+        );
     match m.gain_margin() {
         Some(c) => {
             r = algebraic(r, "gain_margin", &c.gain_margin)
@@ -88,7 +95,8 @@ pub fn margins_report(m: &Margins) -> Report {
         .gain_crossings
         .iter()
         .map(|c| {
-            let o = algebraic(Report::new(), "w", &c.w).float("phase_margin_deg", c.phase_margin_deg);
+            let o =
+                algebraic(Report::new(), "w", &c.w).float("phase_margin_deg", c.phase_margin_deg);
             Value::Obj(algebraic(o, "cos_phase_margin", &c.cos_phase_margin))
         })
         .collect();
@@ -177,7 +185,9 @@ pub fn damp_report(rows: &[DampRow]) -> Report {
     ]
     .map(String::from)
     .to_vec();
-    let dash = |x: &Option<crate::field::Rational>| x.as_ref().map_or("-".into(), |q| clip(&fmt_rational(q)));
+    let dash = |x: &Option<crate::field::Rational>| {
+        x.as_ref().map_or("-".into(), |q| clip(&fmt_rational(q)))
+    };
     let text = rows
         .iter()
         .map(|d| {

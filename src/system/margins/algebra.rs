@@ -119,7 +119,9 @@ pub fn sign_at(p: &Poly<Q>, w: &AlgebraicNumber) -> Result<Ordering> {
         }
         w = w.refined(&((&hi - &lo) / Rational::from_integer(2.into())))?;
     }
-    Err(Error::Limit("sign of a polynomial at an algebraic number".into()))
+    Err(Error::Limit(
+        "sign of a polynomial at an algebraic number".into(),
+    ))
 }
 
 /// The value $a(w)/b(w)$ for a real algebraic `w` with $b(w) \ne 0$, as an algebraic number,
@@ -187,7 +189,9 @@ pub fn value_at(a: &Poly<Q>, b: &Poly<Q>, w: &AlgebraicNumber) -> Result<(Algebr
         w = w.refined(&((&hi - &lo) / Rational::from_integer(2.into())))?;
         cands = cands.iter().map(|r| bisect(&zf, r)).collect();
     }
-    Err(Error::Limit("telling apart the roots of a value's minimal polynomial".into()))
+    Err(Error::Limit(
+        "telling apart the roots of a value's minimal polynomial".into(),
+    ))
 }
 
 #[cfg(test)]
@@ -210,9 +214,25 @@ mod tests {
         assert!(ok && v.to_rational() == Some(Rational::from_integer((-2).into())));
         let (v, ok) = value_at(&Poly::one(Q), &Poly::from_i64s(&[0, 1, 1]), &r[0]).unwrap();
         assert!(ok);
-        assert_eq!(v.minpoly(), &Poly::new(Q, vec![Rational::new((-1).into(), 18.into()), Rational::new(1.into(), 3.into()), Rational::one()]));
+        assert_eq!(
+            v.minpoly(),
+            &Poly::new(
+                Q,
+                vec![
+                    Rational::new((-1).into(), 18.into()),
+                    Rational::new(1.into(), 3.into()),
+                    Rational::one()
+                ]
+            )
+        );
         assert!((v.approx().0 - (3f64.sqrt() - 1.0) / 6.0).abs() < 1e-12);
-        assert_eq!(sign_at(&Poly::from_i64s(&[-2, 0, 1]), &r[0]).unwrap(), Ordering::Greater);
-        assert_eq!(sign_at(&Poly::from_i64s(&[-3, 0, 1]), &r[0]).unwrap(), Ordering::Equal);
+        assert_eq!(
+            sign_at(&Poly::from_i64s(&[-2, 0, 1]), &r[0]).unwrap(),
+            Ordering::Greater
+        );
+        assert_eq!(
+            sign_at(&Poly::from_i64s(&[-3, 0, 1]), &r[0]).unwrap(),
+            Ordering::Equal
+        );
     }
 }

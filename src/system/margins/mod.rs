@@ -144,7 +144,11 @@ pub fn margins_tf(num: &Poly<Q>, den: &Poly<Q>) -> Result<Margins> {
             });
         }
     }
-    let gm_index = argmin(phase_crossings.iter().map(|c| c.gain_margin.approx().0.ln().abs()));
+    let gm_index = argmin(
+        phase_crossings
+            .iter()
+            .map(|c| c.gain_margin.approx().0.ln().abs()),
+    );
     let pm_index = argmin(gain_crossings.iter().map(|c| c.phase_margin_deg.abs()));
     Ok(Margins {
         num: num.clone(),
@@ -175,9 +179,12 @@ fn argmin(xs: impl Iterator<Item = f64>) -> Option<usize> {
 /// $G(j\omega)$ in floats.
 pub fn eval_jw(num: &Poly<Q>, den: &Poly<Q>, w: f64) -> Complex64 {
     let ev = |p: &Poly<Q>| {
-        p.coeffs().iter().rev().fold(Complex64::new(0.0, 0.0), |acc, c| {
-            acc * Complex64::new(0.0, w) + crate::field::rational_to_f64(c)
-        })
+        p.coeffs()
+            .iter()
+            .rev()
+            .fold(Complex64::new(0.0, 0.0), |acc, c| {
+                acc * Complex64::new(0.0, w) + crate::field::rational_to_f64(c)
+            })
     };
     ev(num) / ev(den)
 }
