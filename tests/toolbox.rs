@@ -72,7 +72,7 @@ fn damp_by_hand() {
 
 #[test]
 fn damp_random_matrices_agree_with_their_poles() {
-    let mut rng = SplitMix64(0xda_3b_2026);
+    let mut rng = SplitMix64(0xda3b_2026);
     for _ in 0..crate::common::iters(20) {
         let n = rng.int(1, 4) as usize;
         let v = (0..n * n)
@@ -130,7 +130,7 @@ fn gram_by_hand_and_unstable_refused() {
 
 #[test]
 fn gram_random_stable_systems_satisfy_lyapunov() {
-    let mut rng = SplitMix64(0x67_a3_2026);
+    let mut rng = SplitMix64(0x67a3_2026);
     for _ in 0..crate::common::iters(15) {
         let n = rng.int(1, 4) as usize;
         // upper triangular with a negative diagonal: stable
@@ -194,7 +194,7 @@ fn stepinfo_second_order_and_random_first_order() {
     assert!((s.peak - (1.0 + os / 100.0)).abs() < 1e-6);
     assert!(s.settling_min <= 1.0 && s.settling_max >= s.peak - 1e-12);
     // k / (s + a): rise ln 9 / a, settling ln 50 / a, final k / a, within one step
-    let mut rng = SplitMix64(0x57_e9_2026);
+    let mut rng = SplitMix64(0x57e9_2026);
     for _ in 0..crate::common::iters(20) {
         let (k, a) = (rng.int(-5, 5) as f64, rng.int(1, 8) as f64);
         if k == 0.0 {
