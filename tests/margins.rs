@@ -76,9 +76,12 @@ fn edge_shapes() {
     assert_eq!(pm.w.to_rational(), Some(rat(1, 1)));
     assert_eq!(pm.cos_phase_margin.to_rational(), Some(rat(0, 1)));
     assert!(close(pm.phase_margin_deg, 90.0, 1e-12));
-    // unstable 2/(s - 1): w_gc = sqrt(3), G = -1/2 - sqrt(3)/2 j, PM = 60, cos PM = 1/2
+    // unstable 2/(s - 1): G(0) = -2 counts as a phase crossing at w = 0 (python-control's
+    // convention), gain margin 1/2; w_gc = sqrt(3), G = -1/2 - sqrt(3)/2 j, PM = 60
     let m = margins_tf(&p(&[2]), &p(&[-1, 1])).unwrap();
-    assert!(m.gain_margin().is_none());
+    let gm = m.gain_margin().unwrap();
+    assert_eq!(gm.w.to_rational(), Some(rat(0, 1)));
+    assert_eq!(gm.gain_margin.to_rational(), Some(rat(1, 2)));
     let pm = m.phase_margin().unwrap();
     assert_eq!(pm.w.value_string(), "sqrt(3)");
     assert_eq!(pm.cos_phase_margin.to_rational(), Some(rat(1, 2)));

@@ -3,7 +3,8 @@
 `step_info` on the same loops (issue 28): every number side by side with its difference.
 
 Usage (from the repo root):  python3 scripts/anchors/margins.py [--bin PATH]
-Uses the venv .venv-anchors (see _common.py) and the exactlti binary (default
+Uses the venv .venv-anchors (see _common.py; with EXACTLTI_ANCHOR_PYTHON set, the running
+Python, which must have python-control) and the exactlti binary (default
 target/release/exactlti, else target/debug/exactlti). python-control's `step_info` is given
 exactlti's time grid, so the two differ only in the step response itself.
 """
@@ -59,7 +60,8 @@ def num(x):
 
 
 def main():
-    ensure_venv()
+    if os.environ.get("EXACTLTI_ANCHOR_PYTHON") is None:
+        ensure_venv()
     import control as ct
     import numpy as np
 
@@ -74,12 +76,10 @@ def main():
     for name, n, d in LOOPS:
         j = exactlti(binary, ["margin"], n, d)
         gm, pm, wpc, wgc = ct.margin(ct.tf(n, d))
-        ours = [num(j["gain_margin"]), num(j["phase_margin_deg"]),
+        ours = [num(j.get("gain_margin_approx", j["gain_margin"])), num(j["phase_margin_deg"]),
                 num(j.get("phase_crossover_frequency_approx")),
                 num(j.get("gain_crossover_frequency_approx"))]
         for q, a, b in zip(["gm", "pm (deg)", "w_pc", "w_gc"], ours, [gm, pm, wpc, wgc]):
-            if q == "gm" and j["gain_margin"] != "inf":
-                a = j["gain_margin_approx"]
             same = (math.isinf(a) and math.isinf(b)) or (math.isnan(a) and math.isnan(b))
             rel = 0.0 if same else abs(a - b) / max(1.0, abs(b))
             worst = max(worst, rel)

@@ -6,8 +6,9 @@
 //! $N \bar D = P + j I$ with $P = N_r D_r + N_i D_i$, $I = N_i D_r - N_r D_i$, and
 //! $|D|^2 = D_r^2 + D_i^2$.
 //!
-//! - Phase crossovers: the positive real roots $\omega_{pc}$ of $I$ (odd in $\omega$) with
-//!   $P(\omega_{pc}) < 0$, decided exactly; there $G(j\omega) = P/|D|^2$ is real negative and
+//! - Phase crossovers: the real roots $\omega_{pc} \ge 0$ of $I$ (odd in $\omega$, so $0$ is
+//!   one when $I \not\equiv 0$, as python-control counts it) with $P(\omega_{pc}) < 0$,
+//!   decided exactly; there $G(j\omega) = P/|D|^2$ is real negative and
 //!   the gain margin is $g = 1/|G| = -|D|^2/P$ at $\omega_{pc}$, an algebraic number.
 //! - Gain crossovers: the positive real roots $\omega_{gc}$ of $|N|^2 - |D|^2$ (even in
 //!   $\omega$); the phase margin is $\mathrm{PM} = (\arg G(j\omega_{gc}) \bmod 360^\circ) -
@@ -23,11 +24,12 @@ pub mod algebra;
 
 use crate::algebraic::AlgebraicNumber;
 use crate::error::{Error, Result};
-use crate::field::Q;
+use crate::field::{Q, Rational};
 use crate::poly::Poly;
 use crate::system::StateSpace;
 use algebra::{positive_roots, sign_at, split_imaginary_axis, value_at};
 use num_complex::Complex64;
+use num_traits::Zero;
 use std::cmp::Ordering;
 
 /// A phase crossover: $G(j\omega)$ real and negative, $G(j\omega) = -1/g$.
@@ -119,6 +121,16 @@ pub fn margins_tf(num: &Poly<Q>, den: &Poly<Q>) -> Result<Margins> {
     let mag = n2.sub(&d2);
     let mut verified = true;
     let mut phase_crossings = vec![];
+    // python-control counts w = 0 (a root of the odd I) when G(0) is finite and negative:
+    // the Nyquist curve starts on the negative real axis, gain margin 1/|G(0)|
+    let zero = Rational::zero();
+    if !im.is_zero() && p.eval(&zero) < zero {
+        let gm = -(d2.eval(&zero) / p.eval(&zero));
+        phase_crossings.push(PhaseCrossing {
+            w: AlgebraicNumber::from_rational(&zero),
+            gain_margin: AlgebraicNumber::from_rational(&gm),
+        });
+    }
     if !im.is_zero() {
         for w in positive_roots(&im)? {
             verified &= im.rem(w.minpoly()).is_zero();
