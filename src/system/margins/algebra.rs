@@ -209,7 +209,8 @@ mod tests {
         let r = positive_roots(&im).unwrap();
         assert_eq!(r.len(), 1);
         assert!((r[0].approx().0 - 3f64.sqrt()).abs() < 1e-12);
-        // (4 - 2 w^2) at sqrt(3) = -2, and 1/(w^2 + w) at sqrt(3) = (sqrt(3) - 1)/6 (degree 2)
+        // (4 - 2 w^2) at sqrt(3) = -2, and 1/(w^2 + w) at sqrt(3) = (3 - sqrt(3))/6, a root of
+        // x^2 - x + 1/6
         let (v, ok) = value_at(&re, &Poly::one(Q), &r[0]).unwrap();
         assert!(ok && v.to_rational() == Some(Rational::from_integer((-2).into())));
         let (v, ok) = value_at(&Poly::one(Q), &Poly::from_i64s(&[0, 1, 1]), &r[0]).unwrap();
@@ -219,13 +220,13 @@ mod tests {
             &Poly::new(
                 Q,
                 vec![
-                    Rational::new((-1).into(), 18.into()),
-                    Rational::new(1.into(), 3.into()),
+                    Rational::new(1.into(), 6.into()),
+                    -Rational::one(),
                     Rational::one()
                 ]
             )
         );
-        assert!((v.approx().0 - (3f64.sqrt() - 1.0) / 6.0).abs() < 1e-12);
+        assert!((v.approx().0 - (3.0 - 3f64.sqrt()) / 6.0).abs() < 1e-12);
         assert_eq!(
             sign_at(&Poly::from_i64s(&[-2, 0, 1]), &r[0]).unwrap(),
             Ordering::Greater
