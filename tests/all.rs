@@ -71,6 +71,8 @@ mod latex;
 mod layers;
 #[path = "library_api.rs"]
 mod library_api;
+#[path = "margins.rs"]
+mod margins;
 #[path = "matrix_generic.rs"]
 mod matrix_generic;
 #[path = "matrix_modular.rs"]
@@ -137,6 +139,8 @@ mod symbolic;
 mod symbolic_scb;
 #[path = "symjordan.rs"]
 mod symjordan;
+#[path = "toolbox.rs"]
+mod toolbox;
 
 /// Every `tests/*.rs` file (other than this one) is mounted above: Cargo's automatic test
 /// discovery is off (`autotests = false`), so an unlisted file would silently not run.

@@ -30,6 +30,7 @@ __all__ = [
 ]
 
 from ._api import Operations, run as _run
+from ._toolbox import ControlOps
 
 _METHODS = ("kalman", "rosenbrock", "ho-kalman", "jordan")
 
@@ -45,7 +46,7 @@ def _latex_section(title, items):
     return "$\\begin{gathered}" + " \\\\ ".join(parts) + "\\end{gathered}$"
 
 
-class StateSpace(Operations):
+class StateSpace(Operations, ControlOps):
     """An exact LTI system ``x' = A x + B u``, ``y = C x + D u`` (E given: ``E x' = ...``,
     converted to this standard form on input).
 

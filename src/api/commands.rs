@@ -249,6 +249,7 @@ pub(super) fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Bifurcations { file, .. }
         | Command::Linalg { file, .. } => Some(file),
         Command::Dcgain { file } => Some(file),
+        Command::Toolbox(c) => Some(c.file()),
         Command::Analyze { file, .. } => file.as_deref(),
         Command::Poly { .. } | Command::Interconnect(_) => None,
     }
@@ -409,6 +410,7 @@ impl SystemVisitor for FileCommand<'_> {
                 Ok(Outcome::float_vs_exact(r, agree))
             }
             Command::Minreal { method, hankel, .. } => minreal(f, t, *method, *hankel, path),
+            Command::Toolbox(c) => super::toolbox::run(c, f, t, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
             Command::Poly { .. }
             | Command::Pencil { .. }

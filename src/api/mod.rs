@@ -32,6 +32,7 @@ mod sweep_stream;
 mod symbolic;
 mod symbolic_jordan;
 mod system;
+mod toolbox;
 
 pub use args::{LinalgOp, MethodArg, PolyCmd, TimeOpts};
 pub use bifurcations::Of;
@@ -41,6 +42,7 @@ pub use commands::{
 };
 pub use interconnect::InterconnectCmd;
 pub use system::{Options, System, SystemVisitor};
+pub use toolbox::{GramArg, ToolboxCmd};
 
 use crate::error::Error;
 use crate::report::Report;
@@ -262,6 +264,10 @@ pub enum Command {
     /// conventions), with `--minreal` and `--out`.
     #[command(flatten)]
     Interconnect(interconnect::InterconnectCmd),
+    /// Margins, step characteristics, damping table, Gramians (python-control's `margin`,
+    /// `step_info`, `damp`, `gram`).
+    #[command(flatten)]
+    Toolbox(toolbox::ToolboxCmd),
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {

@@ -35,6 +35,7 @@ mod minreal;
 mod pencil_eig;
 pub mod random;
 mod staircase;
+pub mod stepinfo;
 mod svd;
 pub mod time_response;
 mod zeros;

@@ -76,6 +76,46 @@ pub fn lyapunov<K: Field>(a: &Matrix<K>, q: &Matrix<K>) -> Result<Matrix<K>> {
     }
 }
 
+/// Which Gramian (python-control's `gram(sys, 'c' | 'o')`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GramType {
+    /// $A W + W A^T + B B^T = 0$.
+    Controllability,
+    /// $A^T W + W A + C^T C = 0$.
+    Observability,
+}
+
+/// One Gramian with its exact check.
+#[derive(Clone, Debug)]
+pub struct Gramian {
+    pub kind: GramType,
+    pub w: Matrix<Q>,
+    /// The Lyapunov residual is exactly zero and $W = W^T$.
+    pub verified: bool,
+}
+
+/// The controllability or observability Gramian of a stable rational system, verified by
+/// substituting it back into its Lyapunov equation (exact arithmetic).
+///
+/// # Errors
+/// `Unstable` when $A$ is not Hurwitz (decided exactly, Routh–Hurwitz on $\det(sI - A)$).
+pub fn gramian(sys: &StateSpace<Q>, kind: GramType) -> Result<Gramian> {
+    if !is_hurwitz(&sys.a.charpoly()?) {
+        return Err(Error::Unstable(
+            "A has an eigenvalue with non-negative real part; the Gramian integral diverges".into(),
+        ));
+    }
+    let (a, q) = match kind {
+        GramType::Controllability => (sys.a.clone(), &sys.b * &sys.b.transpose()),
+        GramType::Observability => (sys.a.transpose(), &sys.c.transpose() * &sys.c),
+    };
+    let w = lyapunov(&a, &q)?;
+    let residual = &(&(&a * &w) + &(&w * &a.transpose())) + &q;
+    let zero = Matrix::zeros(Q, w.nrows(), w.ncols());
+    let verified = residual == zero && w == w.transpose();
+    Ok(Gramian { kind, w, verified })
+}
+
 /// Gramians of a stable rational system.
 ///
 /// # Errors

@@ -22,6 +22,7 @@
 
 mod controllability;
 mod ctrb_structure;
+mod damp;
 mod descriptor;
 mod descriptor_elim;
 mod descriptor_minimal;
@@ -46,10 +47,11 @@ pub use ctrb_structure::{
     ControllabilityStructure, DescriptorControllability, controllability_structure,
     descriptor_controllability, observability_structure,
 };
+pub use damp::{DampRow, damp, damp_over_k};
 pub use descriptor::{StandardForm, StandardMethod, descriptor_to_standard, finite_dynamics};
 pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
 pub use from_transfer::{TransferRealization, realize_state_space, realize_transfer};
-pub use gramian::{Gramians, gramians, is_hurwitz, lyapunov};
+pub use gramian::{GramType, Gramian, Gramians, gramian, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman;
 pub use jordan_method::{
     JordanMinimal, ModalBlock, RealModalBlock, minimal_jordan, minimal_jordan_rational,

@@ -11,10 +11,12 @@
 //! | [`transfer_algebra`] | sums, products, block diagonals of transfer matrices (exact) |
 //! | [`dcgain::dc_gain`] | $G(0) = D - C A^{-1} B$ per channel (infinite at a pole at 0) |
 //! | [`interconnect`] | series, parallel, feedback, append (python-control's conventions) |
+//! | [`margins::margins`] | gain and phase margins of a SISO system, exact crossover frequencies |
 
 pub mod dcgain;
 mod display;
 pub mod interconnect;
+pub mod margins;
 pub mod time_response;
 pub mod transfer;
 pub mod transfer_algebra;

@@ -71,6 +71,7 @@ fn name(cmd: &Command) -> &'static str {
         Command::Bifurcations { .. } => "bifurcations",
         Command::Interconnect(c) => c.name(),
         Command::Dcgain { .. } => "dcgain",
+        Command::Toolbox(c) => c.name(),
     }
 }
 
@@ -114,6 +115,7 @@ pub(super) fn execute(
         | Command::Check { .. }
         | Command::Sweep { .. }
         | Command::Critical { .. }
+        | Command::Toolbox(_)
         | Command::Minreal {
             method: MethodArg::Era,
             descriptor: false,

@@ -15,6 +15,7 @@ mod pencil;
 mod realization;
 mod structure;
 mod tf_field;
+mod toolbox;
 
 pub use algebraic::{factor_report, roots_report};
 pub use interconnect::{PartInfo, interconnection_report};
@@ -24,6 +25,9 @@ pub use pencil::{
     kronecker_report, minreal_descriptor_report, pencil_report, tf_report,
 };
 pub use tf_field::{TfRealization, tf_report_quadratic};
+pub use toolbox::{
+    damp_report, gram_report, margins_report, no_stepinfo_reason, stepinfo_channel, stepinfo_table,
+};
 
 use crate::field::Field;
 use crate::float::{Tol, jordan_guess, to_dmatrix};
