@@ -16,6 +16,7 @@ pub mod dcgain;
 mod display;
 pub mod interconnect;
 pub mod time_response;
+pub mod steps;
 pub mod transfer;
 pub mod transfer_algebra;
 
