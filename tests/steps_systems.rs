@@ -69,31 +69,56 @@ fn check_scb<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Result<[usiz
         *mat(pre, "A1") == a1 && *mat(pre, "B1") == b1 && *mat(pre, "C1") == c1,
         "A1 != A - B0 C0",
     )?;
-    let mut first = true;
-    for s in d.of_kind(StepKind::SilvermanS) {
-        let (ci, mm, sm) = (mat(s, "Ci"), mat(s, "M"), mat(s, "S"));
-        if first {
-            ensure(ci == &c1, "level 1: C_1 != the outputs")?;
-            first = false;
+    // the chain of custody between the levels: C_1 = the outputs, Dbar = Bottoms B,
+    // Bottoms_i = Bottoms_{i-1} + the ending rows of C_{i-1}, Cbar = (S_ib Bottoms + S_i2 C_i) A,
+    // C_{i+1} = the continuing rows of Cbar
+    let ss: Vec<_> = d.of_kind(StepKind::SilvermanS).collect();
+    let phis: Vec<_> = d.of_kind(StepKind::SilvermanPhi).collect();
+    for (lvl, s) in ss.iter().enumerate() {
+        let (ci, mm, sm, bot) = (mat(s, "Ci"), mat(s, "M"), mat(s, "S"), mat(s, "Bottoms"));
+        ensure(s.count("level") == Some(lvl + 1), "levels out of order")?;
+        let q = bot.nrows();
+        ensure(mm.nrows() == q + ci.nrows(), "M's shape")?;
+        ensure(*mm == (bot * &b1).vstack(&(ci * &b1)).unwrap(), "M != [Bottoms B; C_i B]")?;
+        if lvl == 0 {
+            ensure(ci == &c1 && q == 0, "level 1: C_1 != the outputs")?;
+        } else {
+            let (prev, pphi) = (ss[lvl - 1], phis.get(lvl - 1).ok_or("no phi step")?);
+            let ended = mat(prev, "Ci").select_rows(prev.counts("ending").unwrap());
+            ensure(*bot == mat(prev, "Bottoms").vstack(&ended).unwrap(), "Bottoms")?;
+            let cont = mat(pphi, "Cbar").select_rows(pphi.counts("going_on").unwrap());
+            ensure(*ci == cont, "C_i != the continuing rows of Cbar")?;
         }
-        let q = mm.nrows() - ci.nrows();
-        ensure(
-            mm.submatrix(q, mm.nrows(), 0, mm.ncols()) == ci * &b1,
-            "M's last rows != C_i B",
-        )?;
         left_null(sm, mm, "S_i")?;
         let s2 = sm.submatrix(0, sm.nrows(), q, sm.ncols());
         ensure(
             s.counts("ending") == Some(non_leading(&s2).as_slice()),
             "S_i1 != the deletion rule",
         )?;
-    }
-    for s in d.of_kind(StepKind::SilvermanPhi) {
-        let (rows, cbar, phi) = (mat(s, "Rows"), mat(s, "Cbar"), mat(s, "Phi"));
+        let Some(ph) = phis.get(lvl) else { continue };
+        let tops = &(&sm.submatrix(0, sm.nrows(), 0, q) * bot) + &(&s2 * ci);
+        let (rows, cbar, phi) = (mat(ph, "Rows"), mat(ph, "Cbar"), mat(ph, "Phi"));
+        ensure(*cbar == &tops * &a1, "Cbar != (S_ib Bottoms + S_i2 C_i) A")?;
+        // every row found is a combination of the output derivatives C_1 A_1^j, j < i
+        let mut kry = c1.clone();
+        let mut blk = c1.clone();
+        for _ in 1..=lvl {
+            blk = &blk * &a1;
+            kry = kry.vstack(&blk).unwrap();
+        }
+        ensure(
+            kry.vstack(rows).unwrap().rank() == kry.rank(),
+            "rows found outside the output derivatives",
+        )?;
+        let all = rows.vstack(&tops).unwrap().vstack(bot).unwrap();
+        ensure(
+            rows.rank() == rows.nrows() && all.rank() == rows.nrows(),
+            "rows found: dependent or missing the chains",
+        )?;
         left_null(phi, &rows.vstack(cbar).unwrap(), "Phi_i")?;
         let p2 = phi.submatrix(0, phi.nrows(), rows.nrows(), phi.ncols());
         ensure(
-            s.counts("going_on") == Some(non_leading(&p2).as_slice()),
+            ph.counts("going_on") == Some(non_leading(&p2).as_slice()),
             "continuing chains != the deletion rule",
         )?;
     }
@@ -151,6 +176,34 @@ fn check_scb<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Result<[usiz
     };
     check_pattern(sa, sb, sc, sd, &pat).map_err(|e| e.to_string())?;
     ensure(dims[0] == na, "n_a disagrees")?;
+    // T = Gamma1^-1 = [T_a; T_b; T_c; T_d]: [T_a; T_c] = P^-1 T_s, T_s - T_s^0 in row [T_b; T_d]
+    let t = g1.inverse().map_err(|_| "Gamma1 singular")?;
+    let [ra, rb, rc, rd] = [0, 1, 2, 3].map(|i| {
+        let s0: usize = dims[..i].iter().sum();
+        t.submatrix(s0, s0 + dims[i], 0, n)
+    });
+    ensure(
+        ra.vstack(&rc).unwrap() == &pinv * ts,
+        "[T_a; T_c] != P^-1 T_s",
+    )?;
+    let tbd = rb.vstack(&rd).unwrap();
+    let ts0 = mat(st, "Ts0");
+    ensure(
+        (0..ts0.nrows()).all(|i| {
+            let row = ts0.row(i);
+            row.iter().filter(|x| k.is_one(x)).count() == 1 && row.iter().filter(|x| !k.is_zero(x)).count() == 1
+        }) && ts0.vstack(&tbd).unwrap().rank() == n,
+        "T_s^0 is not unit rows completing [T_b; T_d]",
+    )?;
+    let diff = ts - ts0;
+    ensure(
+        tbd.vstack(&diff).unwrap().rank() == tbd.rank(),
+        "T_s - T_s^0 not in the row space of [T_b; T_d]",
+    )?;
+    ensure(
+        g3f.submatrix(m0, m, m0, m) == *g3,
+        "Gamma_3 != diag(I, G3)",
+    )?;
     let zd = d.of_kind(StepKind::ZeroDynamics).next().ok_or("no zero dynamics")?;
     let aaa = mat(zd, "Aaa");
     ensure(*aaa == sa.submatrix(0, na, 0, na), "A_aa is not the x_a block")?;
@@ -238,8 +291,10 @@ fn scb_and_zeros_steps_over_qp_with_conditions() {
     scb_recorded(&a, &b, &c, &d, Some(&mut rec)).unwrap();
     let der = rec.finish();
     assert!(der.verified());
-    // the force reaches the position of mass 2 through k/m: relative degree 4, no zeros
-    assert_eq!(check_scb(&der, [&a, &b, &c, &d]), Ok([0, 0, 0, 4]));
+    // force on mass 1, position of mass 2: G = (c s + k) / (...), relative degree 3, one zero
+    assert_eq!(check_scb(&der, [&a, &b, &c, &d]), Ok([1, 0, 0, 3]));
+    let z = der.of_kind(StepKind::ZeroDynamics).next().unwrap().poly("z").unwrap();
+    assert_eq!(z.to_string_var("s"), "s + k/c");
     let conds: Vec<String> = der.assumptions().iter().map(|x| k.fmt_elem(x)).collect();
     assert!(conds.iter().any(|c| c == "m" || c == "k"), "{conds:?}");
     let dz = recorded_zeros([&a, &b, &c, &d]);
@@ -248,10 +303,19 @@ fn scb_and_zeros_steps_over_qp_with_conditions() {
 
 #[test]
 fn tampered_scb_steps_are_rejected() {
-    let s = (0..40).find_map(|seed| {
-        random_system(&Q, &None, seed).filter(|s| s[0].nrows() >= 4 && s[2].nrows() >= 2)
-    });
-    let s = s.expect("a system");
+    // an unobservable mode (state 5), so that the output derivatives do not span the space
+    let s = [
+        exactlti::qmat![
+            [0, 1, 0, 0, 0],
+            [0, 0, 1, 0, 0],
+            [1, 2, 3, 1, 0],
+            [1, 0, 0, -1, 0],
+            [1, 1, 0, 0, -2]
+        ],
+        exactlti::qmat![[0, 0], [0, 1], [1, 0], [0, 0], [1, 1]],
+        exactlti::qmat![[1, 0, 0, 0, 0], [0, 0, 0, 1, 0]],
+        exactlti::qmat![[0, 0], [0, 0]],
+    ];
     let abcd = [&s[0], &s[1], &s[2], &s[3]];
     let d = recorded_scb(abcd);
     check_scb(&d, abcd).unwrap();
@@ -264,8 +328,25 @@ fn tampered_scb_steps_are_rejected() {
             }
             let mut bad = d.clone();
             let mut mm = m.clone();
-            let v = Q.add(mm.get(0, 0), &Rational::from_integer(1.into()));
-            mm.set(0, 0, v);
+            if *key == "Rows" {
+                // the rows found are checked through their span (in the output derivatives,
+                // containing the chains' tops and bottoms): move row 0 out of the output
+                // derivatives' span (the observability rows)
+                let n = m.ncols();
+                let obs = exactlti::realization::observability_matrix(&s[0], &s[2]);
+                let Some(e) = (0..n)
+                    .map(|j| Matrix::from_fn(Q, 1, n, |_, c| Q.from_i64(i64::from(c == j))))
+                    .find(|e| obs.vstack(e).unwrap().rank() > obs.rank())
+                else {
+                    continue;
+                };
+                for c in 0..n {
+                    mm.set(0, c, Q.add(mm.get(0, c), e.get(0, c)));
+                }
+            } else {
+                let v = Q.add(mm.get(0, 0), &Rational::from_integer(1.into()));
+                mm.set(0, 0, v);
+            }
             bad.steps[i].objects[j].1 = Object::Matrix(mm);
             assert!(check_scb(&bad, abcd).is_err(), "step {i} {:?} {key}", st.kind);
             tampered += 1;
@@ -361,7 +442,7 @@ fn tampered_zeros_steps_are_rejected() {
         let i = bad.steps.iter().position(|s| s.kind == StepKind::NormalRank).unwrap();
         let o = &mut bad.steps[i].objects.iter_mut().find(|(k, _)| *k == key).unwrap().1;
         *o = match o {
-            Object::Poly(_) => Object::Poly(Poly::from_i64(Q, &[3, 1])),
+            Object::Poly(_) => Object::Poly(Poly::new(Q, vec![Rational::from_integer(3.into()), Rational::from_integer(1.into())])),
             Object::Count(r) => Object::Count(*r - 1),
             _ => Object::Scalar(Rational::from_integer((-2).into())),
         };
@@ -545,8 +626,8 @@ fn cli_steps_for_scb_zeros_tf_minreal() {
             let steps = j["steps"].as_array().unwrap();
             assert_eq!(steps[0]["step"], first, "{a:?}");
             assert!(steps.iter().all(|s| s.get("holds").is_none_or(|h| h == true)));
-            if sym {
-                assert!(!j["conditions"].as_array().unwrap().is_empty(), "{a:?}");
+            if sym && matches!(args[0], "scb" | "zeros") {
+                assert_eq!(j["conditions"], serde_json::json!(["u != 0"]), "{a:?}");
             }
         }
     }

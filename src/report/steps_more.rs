@@ -261,6 +261,7 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
         (_, "B1") => "B_1",
         (_, "C1") => "C_1",
         (_, "Ci") => "C_i",
+        (_, "Bottoms") => r"\text{ended bottoms}",
         (_, "level") => "i",
         (_, "ending") => r"\text{rows of } S_{i1}",
         (_, "Rows") => r"\text{rows found}",

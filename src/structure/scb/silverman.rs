@@ -98,7 +98,7 @@ pub(crate) fn silverman<K: Field>(
         let s_i2 = nl.submatrix(0, nl.nrows(), qbar, qbar + active.len());
         let ending = leading_one_complement(&s_i2);
         if let Some(r) = rec.as_deref_mut() {
-            super::steps::silverman_s(r, i, &ci, &stacked, &nl, &ending);
+            super::steps::silverman_s(r, (i, &ended), &ci, &stacked, &nl, &ending);
         }
         let mut continuing = Vec::with_capacity(nl.nrows());
         for r in 0..nl.nrows() {

@@ -61,10 +61,11 @@ pub(crate) fn pre_transform<K: Field>(
     );
 }
 
-/// Step $\bar S_i$ (module docs).
+/// Step $\bar S_i$ (module docs); `Bottoms` are the bottom rows of the chains ended so far
+/// ($\bar D_{i-1} = \text{Bottoms}\,\hat B$).
 pub(crate) fn silverman_s<K: Field>(
     rec: &mut Recorder<'_, K>,
-    level: usize,
+    (level, ended): (usize, &[Matrix<K>]),
     ci: &Matrix<K>,
     m: &Matrix<K>,
     s: &Matrix<K>,
@@ -74,12 +75,19 @@ pub(crate) fn silverman_s<K: Field>(
     let s2 = s.submatrix(0, s.nrows(), qbar, s.ncols());
     let ok =
         is_left_null_basis(s, m) && ending == super::silverman::leading_one_complement(&s2);
+    let mut bottoms = Matrix::zeros(m.field().clone(), 0, ci.ncols());
+    for ch in ended {
+        bottoms = bottoms
+            .vstack(&ch.select_rows(&[ch.nrows() - 1]))
+            .unwrap_or(bottoms);
+    }
     rec.push(
         StepKind::SilvermanS,
         Some(level - 1),
         vec![
             ("level", Object::Count(level)),
             ("Ci", Object::Matrix(ci.clone())),
+            ("Bottoms", Object::Matrix(bottoms)),
             ("M", Object::Matrix(m.clone())),
             ("S", Object::Matrix(s.clone())),
             ("ending", Object::Counts(ending.to_vec())),
