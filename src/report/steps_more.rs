@@ -66,8 +66,8 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             r"\det P \ne 0,\ (P^{-1} X P)_{ac} = 0,\ (P^{-1} B_{sc})_{a} = 0",
         ),
         StepKind::ScbForm => (
-            "A = Gamma1^-1 (A^ - B0 C0) Gamma1, B = Gamma1^-1 B^ Gamma3, C = Gamma2^-1 C^ Gamma1, D = Gamma2^-1 D^ Gamma3, pattern of eq. (4)-(6)",
-            r"\Gamma_1 (A - B_0 C_0) \Gamma_1^{-1} = A_s,\ \text{pattern of eq. (4)--(6)}",
+            "A_s = Gamma1^-1 (A^ - B0 C0) Gamma1, B_s = Gamma1^-1 B^ Gamma3, C_s = Gamma2^-1 C^ Gamma1, D_s = Gamma2^-1 D^ Gamma3, pattern of eq. (4)-(6)",
+            r"\Gamma_1 A_s = (\hat A - B_0 C_0) \Gamma_1,\ \Gamma_1 B_s = \hat B \Gamma_3,\ \Gamma_2 C_s = \hat C \Gamma_1,\ \text{pattern of eq. (4)--(6)}",
         ),
         StepKind::ZeroDynamics => (
             "z(A_aa) = 0, deg z = n_a",
