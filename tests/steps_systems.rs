@@ -61,7 +61,10 @@ fn check_scb<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Result<[usiz
     for i in 0..m0 {
         want.set(i, i, k.one());
     }
-    ensure(dh == want && *mat(pre, "Dh") == dh, "Y^-1 D U != diag(I, 0)")?;
+    ensure(
+        dh == want && *mat(pre, "Dh") == dh,
+        "Y^-1 D U != diag(I, 0)",
+    )?;
     let (bh, ch) = (b * u, yinv * c);
     let a1 = a - &(&bh.submatrix(0, n, 0, m0) * &ch.submatrix(0, m0, 0, n));
     let (b1, c1) = (bh.submatrix(0, n, m0, m), ch.submatrix(m0, p, 0, n));
@@ -79,13 +82,19 @@ fn check_scb<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Result<[usiz
         ensure(s.count("level") == Some(lvl + 1), "levels out of order")?;
         let q = bot.nrows();
         ensure(mm.nrows() == q + ci.nrows(), "M's shape")?;
-        ensure(*mm == (bot * &b1).vstack(&(ci * &b1)).unwrap(), "M != [Bottoms B; C_i B]")?;
+        ensure(
+            *mm == (bot * &b1).vstack(&(ci * &b1)).unwrap(),
+            "M != [Bottoms B; C_i B]",
+        )?;
         if lvl == 0 {
             ensure(ci == &c1 && q == 0, "level 1: C_1 != the outputs")?;
         } else {
             let (prev, pphi) = (ss[lvl - 1], phis.get(lvl - 1).ok_or("no phi step")?);
             let ended = mat(prev, "Ci").select_rows(prev.counts("ending").unwrap());
-            ensure(*bot == mat(prev, "Bottoms").vstack(&ended).unwrap(), "Bottoms")?;
+            ensure(
+                *bot == mat(prev, "Bottoms").vstack(&ended).unwrap(),
+                "Bottoms",
+            )?;
             let cont = mat(pphi, "Cbar").select_rows(pphi.counts("going_on").unwrap());
             ensure(*ci == cont, "C_i != the continuing rows of Cbar")?;
         }
@@ -156,7 +165,8 @@ fn check_scb<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Result<[usiz
     let pinv = pp.inverse().map_err(|_| "P singular")?;
     let xt = &(&pinv * x) * pp;
     ensure(
-        xt.submatrix(0, na, na, ns).is_zero() && (&pinv * bsc).submatrix(0, na, 0, bsc.ncols()).is_zero(),
+        xt.submatrix(0, na, na, ns).is_zero()
+            && (&pinv * bsc).submatrix(0, na, 0, bsc.ncols()).is_zero(),
         "x_a reached by u_c",
     )?;
     ensure(ns - na == ctr.rank(), "n_c != rank C_ctr")?;
@@ -167,7 +177,10 @@ fn check_scb<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Result<[usiz
         g1 * sa == &a1 * g1 && g1 * sb == &bh * g3f,
         "Gamma1 A_s != A1 Gamma1",
     )?;
-    ensure(g2 * sc == &ch * g1 && g2 * sd == &dh * g3f, "Gamma2 C_s != C^ Gamma1")?;
+    ensure(
+        g2 * sc == &ch * g1 && g2 * sd == &dh * g3f,
+        "Gamma2 C_s != C^ Gamma1",
+    )?;
     let dims: [usize; 4] = f.counts("dims").ok_or("dims")?.try_into().unwrap();
     let pat = Pattern {
         dims,
@@ -191,7 +204,8 @@ fn check_scb<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Result<[usiz
     ensure(
         (0..ts0.nrows()).all(|i| {
             let row = ts0.row(i);
-            row.iter().filter(|x| k.is_one(x)).count() == 1 && row.iter().filter(|x| !k.is_zero(x)).count() == 1
+            row.iter().filter(|x| k.is_one(x)).count() == 1
+                && row.iter().filter(|x| !k.is_zero(x)).count() == 1
         }) && ts0.vstack(&tbd).unwrap().rank() == n,
         "T_s^0 is not unit rows completing [T_b; T_d]",
     )?;
@@ -200,13 +214,16 @@ fn check_scb<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Result<[usiz
         tbd.vstack(&diff).unwrap().rank() == tbd.rank(),
         "T_s - T_s^0 not in the row space of [T_b; T_d]",
     )?;
-    ensure(
-        g3f.submatrix(m0, m, m0, m) == *g3,
-        "Gamma_3 != diag(I, G3)",
-    )?;
-    let zd = d.of_kind(StepKind::ZeroDynamics).next().ok_or("no zero dynamics")?;
+    ensure(g3f.submatrix(m0, m, m0, m) == *g3, "Gamma_3 != diag(I, G3)")?;
+    let zd = d
+        .of_kind(StepKind::ZeroDynamics)
+        .next()
+        .ok_or("no zero dynamics")?;
     let aaa = mat(zd, "Aaa");
-    ensure(*aaa == sa.submatrix(0, na, 0, na), "A_aa is not the x_a block")?;
+    ensure(
+        *aaa == sa.submatrix(0, na, 0, na),
+        "A_aa is not the x_a block",
+    )?;
     ensure(
         zd.poly("z") == Some(&aaa.charpoly().unwrap()),
         "z != det(sI - A_aa)",
@@ -219,17 +236,19 @@ fn recorded_scb<K: Field>(abcd: [&Matrix<K>; 4]) -> Derivation<K> {
     let mut rec = Recorder::new(Method::Scb, a.field().clone());
     let s = scb_recorded(a, b, c, d, Some(&mut rec)).unwrap();
     let der = rec.finish();
-    assert_eq!(der.of_kind(StepKind::ScbForm).next().unwrap().counts("dims"), Some(&s.dims[..]));
+    assert_eq!(
+        der.of_kind(StepKind::ScbForm)
+            .next()
+            .unwrap()
+            .counts("dims"),
+        Some(&s.dims[..])
+    );
     der
 }
 
 /// A random system over `k` (generator element `g`) with `[B; D]` of full column rank and
 /// `[C, D]` of full row rank, or `None`.
-fn random_system<K: Field>(
-    k: &K,
-    g: &Option<K::Elem>,
-    seed: u64,
-) -> Option<[Matrix<K>; 4]> {
+fn random_system<K: Field>(k: &K, g: &Option<K::Elem>, seed: u64) -> Option<[Matrix<K>; 4]> {
     let mut rng = common::Rng(seed);
     let n = 2 + (seed as usize % 5);
     let m = 1 + (seed as usize / 5) % 3;
@@ -237,7 +256,7 @@ fn random_system<K: Field>(
     let a = common::random_matrix(k, g, n, n, &mut rng);
     let b = common::random_matrix(k, g, n, m, &mut rng);
     let c = common::random_matrix(k, g, p, n, &mut rng);
-    let d = if seed % 3 == 0 {
+    let d = if seed.is_multiple_of(3) {
         common::random_matrix(k, g, p, m, &mut rng)
     } else {
         Matrix::zeros(k.clone(), p, m)
@@ -258,7 +277,7 @@ fn scb_steps_identities_over_q_and_sqrt2() {
             check_scb(&d, abcd).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
             checked += 1;
         }
-        if seed % 4 == 0
+        if seed.is_multiple_of(4)
             && let Some(s) = random_system(&k2, &g2, seed)
         {
             let abcd = [&s[0], &s[1], &s[2], &s[3]];
@@ -272,7 +291,11 @@ fn scb_steps_identities_over_q_and_sqrt2() {
 fn scb_steps_double_integrator_chain() {
     // one chain of length 2: level 1 continues, level 2 ends
     let a = exactlti::qmat![[0, 1], [0, 0]];
-    let (b, c, d) = (exactlti::qmat![[0], [1]], exactlti::qmat![[1, 0]], exactlti::qmat![[0]]);
+    let (b, c, d) = (
+        exactlti::qmat![[0], [1]],
+        exactlti::qmat![[1, 0]],
+        exactlti::qmat![[0]],
+    );
     let der = recorded_scb([&a, &b, &c, &d]);
     let s: Vec<_> = der.of_kind(StepKind::SilvermanS).collect();
     assert_eq!(s.len(), 2);
@@ -285,7 +308,8 @@ fn scb_steps_double_integrator_chain() {
 fn scb_and_zeros_steps_over_qp_with_conditions() {
     let sys = common::systems::chain_qp(2);
     let k = sys.field().fresh();
-    let mv = |m: &Matrix<_>| Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec());
+    let mv =
+        |m: &Matrix<_>| Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec());
     let (a, b, c, d) = (mv(&sys.a), mv(&sys.b), mv(&sys.c), mv(&sys.d));
     let mut rec = Recorder::with_log(Method::Scb, k.clone(), ratfunc_log(&k));
     scb_recorded(&a, &b, &c, &d, Some(&mut rec)).unwrap();
@@ -293,7 +317,12 @@ fn scb_and_zeros_steps_over_qp_with_conditions() {
     assert!(der.verified());
     // force on mass 1, position of mass 2: G = (c s + k) / (...), relative degree 3, one zero
     assert_eq!(check_scb(&der, [&a, &b, &c, &d]), Ok([1, 0, 0, 3]));
-    let z = der.of_kind(StepKind::ZeroDynamics).next().unwrap().poly("z").unwrap();
+    let z = der
+        .of_kind(StepKind::ZeroDynamics)
+        .next()
+        .unwrap()
+        .poly("z")
+        .unwrap();
     assert_eq!(z.to_string_var("s"), "s + k/c");
     let conds: Vec<String> = der.assumptions().iter().map(|x| k.fmt_elem(x)).collect();
     assert!(conds.iter().any(|c| c == "m" || c == "k"), "{conds:?}");
@@ -348,7 +377,11 @@ fn tampered_scb_steps_are_rejected() {
                 mm.set(0, 0, v);
             }
             bad.steps[i].objects[j].1 = Object::Matrix(mm);
-            assert!(check_scb(&bad, abcd).is_err(), "step {i} {:?} {key}", st.kind);
+            assert!(
+                check_scb(&bad, abcd).is_err(),
+                "step {i} {:?} {key}",
+                st.kind
+            );
             tampered += 1;
         }
     }
@@ -368,14 +401,26 @@ fn check_zeros<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Check {
     let [a, b, c, dd] = abcd;
     let k = a.field().clone();
     let n = a.nrows();
-    let cp = d.of_kind(StepKind::ZerosCompress).next().ok_or("no compression")?;
+    let cp = d
+        .of_kind(StepKind::ZerosCompress)
+        .next()
+        .ok_or("no compression")?;
     let (cols, rows) = (cp.counts("cols").unwrap(), cp.counts("rows").unwrap());
     let bd = b.vstack(dd).unwrap();
     let cd = c.hstack(dd).unwrap();
     ensure(cols == bd.pivots().as_slice(), "cols != pivots of [B; D]")?;
-    ensure(rows == cd.transpose().pivots().as_slice(), "rows != pivots of [C, D]")?;
-    ensure(bd.select_cols(cols).rank() == bd.rank(), "kept columns lose rank")?;
-    let pe = d.of_kind(StepKind::SystemPencil).next().ok_or("no pencil")?;
+    ensure(
+        rows == cd.transpose().pivots().as_slice(),
+        "rows != pivots of [C, D]",
+    )?;
+    ensure(
+        bd.select_cols(cols).rank() == bd.rank(),
+        "kept columns lose rank",
+    )?;
+    let pe = d
+        .of_kind(StepKind::SystemPencil)
+        .next()
+        .ok_or("no pencil")?;
     let (p0, e) = (mat(pe, "P0"), mat(pe, "E"));
     let top = a.hstack(b).unwrap();
     ensure(*p0 == top.vstack(&cd).unwrap(), "P0 != [A B; C D]")?;
@@ -388,18 +433,33 @@ fn check_zeros<K: Field>(d: &Derivation<K>, abcd: [&Matrix<K>; 4]) -> Check {
     let (bc, dc) = (b.select_cols(cols), dd.select_cols(cols).select_rows(rows));
     let cc = c.select_rows(rows);
     check_scb(d, [a, &bc, &cc, &dc])?;
-    let nr = d.of_kind(StepKind::NormalRank).next().ok_or("no normal rank")?;
+    let nr = d
+        .of_kind(StepKind::NormalRank)
+        .next()
+        .ok_or("no normal rank")?;
     let s0 = nr.scalar("s0").ok_or("s0")?;
     let z = nr.poly("z").ok_or("z")?;
     let ps0 = p0.try_sub(&e.scale(s0)).unwrap();
     ensure(*mat(nr, "Ps0") == ps0, "P(s0) != P0 - s0 E")?;
     ensure(!k.is_zero(&z.eval(s0)), "z(s0) = 0")?;
-    ensure(nr.count("rank") == Some(ps0.rank()), "rank P(s0) recomputed differs")?;
-    let zd = d.of_kind(StepKind::ZeroDynamics).next().ok_or("no zero dynamics")?;
-    ensure(zd.poly("z").map(|p| p.monic()).as_ref() == Some(z), "z != monic det(sI - A_aa)")?;
+    ensure(
+        nr.count("rank") == Some(ps0.rank()),
+        "rank P(s0) recomputed differs",
+    )?;
+    let zd = d
+        .of_kind(StepKind::ZeroDynamics)
+        .next()
+        .ok_or("no zero dynamics")?;
+    ensure(
+        zd.poly("z").map(|p| p.monic()).as_ref() == Some(z),
+        "z != monic det(sI - A_aa)",
+    )?;
     let oracle = invariant_zeros_smith(a, b, c, dd).unwrap();
     ensure(oracle.polynomial == *z, "z != the Smith-form oracle")?;
-    ensure(Some(oracle.normal_rank) == nr.count("rank"), "normal rank != the oracle")
+    ensure(
+        Some(oracle.normal_rank) == nr.count("rank"),
+        "normal rank != the oracle",
+    )
 }
 
 #[test]
@@ -411,9 +471,11 @@ fn zeros_steps_identities_including_redundant_inputs() {
         let (m, p) = (1 + seed as usize % 3, 1 + (seed as usize / 3) % 3);
         let a = common::random_matrix(&Q, &None, n, n, &mut rng);
         let mut b = common::random_matrix(&Q, &None, n, m, &mut rng);
-        if seed % 2 == 0 {
+        if seed.is_multiple_of(2) {
             // a redundant input: the compression step removes it
-            b = b.hstack(&b.select_cols(&[0]).scale(&Rational::from_integer(2.into()))).unwrap();
+            b = b
+                .hstack(&b.select_cols(&[0]).scale(&Rational::from_integer(2.into())))
+                .unwrap();
         }
         let c = common::random_matrix(&Q, &None, p, n, &mut rng);
         let d = Matrix::zeros(Q, p, b.ncols());
@@ -439,10 +501,25 @@ fn tampered_zeros_steps_are_rejected() {
     assert_eq!(nr.count("rank"), Some(3));
     for key in ["z", "rank", "s0"] {
         let mut bad = der.clone();
-        let i = bad.steps.iter().position(|s| s.kind == StepKind::NormalRank).unwrap();
-        let o = &mut bad.steps[i].objects.iter_mut().find(|(k, _)| *k == key).unwrap().1;
+        let i = bad
+            .steps
+            .iter()
+            .position(|s| s.kind == StepKind::NormalRank)
+            .unwrap();
+        let o = &mut bad.steps[i]
+            .objects
+            .iter_mut()
+            .find(|(k, _)| *k == key)
+            .unwrap()
+            .1;
         *o = match o {
-            Object::Poly(_) => Object::Poly(Poly::new(Q, vec![Rational::from_integer(3.into()), Rational::from_integer(1.into())])),
+            Object::Poly(_) => Object::Poly(Poly::new(
+                Q,
+                vec![
+                    Rational::from_integer(3.into()),
+                    Rational::from_integer(1.into()),
+                ],
+            )),
             Object::Count(r) => Object::Count(*r - 1),
             _ => Object::Scalar(Rational::from_integer((-2).into())),
         };
@@ -463,10 +540,16 @@ fn check_tf<K: Field>(d: &Derivation<K>, s: &StateSpace<K>) -> Check {
     let h = mat(mk, "H");
     let mut ab = s.b.clone();
     for j in 0..n {
-        ensure(h.submatrix(0, p, j * m, (j + 1) * m) == &s.c * &ab, "h_j != C A^j B")?;
+        ensure(
+            h.submatrix(0, p, j * m, (j + 1) * m) == &s.c * &ab,
+            "h_j != C A^j B",
+        )?;
         ab = &s.a * &ab;
     }
-    let nu = d.of_kind(StepKind::Numerators).next().ok_or("no numerators")?;
+    let nu = d
+        .of_kind(StepKind::Numerators)
+        .next()
+        .ok_or("no numerators")?;
     let num = nu.polys("N").ok_or("N")?;
     let mut tried = 0;
     for x in -3..=3i64 {
@@ -474,22 +557,37 @@ fn check_tf<K: Field>(d: &Derivation<K>, s: &StateSpace<K>) -> Check {
         if k.is_zero(&chi.eval(&x)) || n == 0 {
             continue;
         }
-        let r = Matrix::identity(k.clone(), n).scale(&x).try_sub(&s.a).unwrap();
+        let r = Matrix::identity(k.clone(), n)
+            .scale(&x)
+            .try_sub(&s.a)
+            .unwrap();
         let (sol, _) = r.solve(&s.b).unwrap().ok_or("singular")?;
         let g = (&s.c * &sol).scale(&chi.eval(&x));
-        for i in 0..p * m {
-            ensure(num[i].eval(&x) == *g.get(i / m, i % m), "N(s0) != chi C (s0 I - A)^-1 B")?;
+        for (i, ni) in num.iter().enumerate().take(p * m) {
+            ensure(
+                ni.eval(&x) == *g.get(i / m, i % m),
+                "N(s0) != chi C (s0 I - A)^-1 B",
+            )?;
         }
         tried += 1;
     }
     ensure(n == 0 || tried > 0, "no point")?;
-    let en = d.of_kind(StepKind::TransferEntries).next().ok_or("no entries")?;
+    let en = d
+        .of_kind(StepKind::TransferEntries)
+        .next()
+        .ok_or("no entries")?;
     let (nums, dens) = (en.polys("num").ok_or("num")?, en.polys("den").ok_or("den")?);
     for i in 0..p * m {
         let full = num[i].add(&chi.scale(s.d.get(i / m, i % m)));
-        ensure(nums[i].mul(chi) == dens[i].mul(&full), "G_ij chi != N_ij + D_ij chi")?;
+        ensure(
+            nums[i].mul(chi) == dens[i].mul(&full),
+            "G_ij chi != N_ij + D_ij chi",
+        )?;
         ensure(k.is_one(&dens[i].lc()), "denominator not monic")?;
-        ensure(nums[i].gcd(&dens[i]).deg() == 0 || nums[i].is_zero(), "not in lowest terms")?;
+        ensure(
+            nums[i].gcd(&dens[i]).deg() == 0 || nums[i].is_zero(),
+            "not in lowest terms",
+        )?;
     }
     Ok(())
 }
@@ -511,7 +609,11 @@ fn tf_steps_identities_and_tampering() {
             check_tf(&der, &s).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
             // a tampered numerator coefficient or Markov parameter is rejected
             let mut bad = der.clone();
-            let i = bad.steps.iter().position(|s| s.kind == StepKind::Numerators).unwrap();
+            let i = bad
+                .steps
+                .iter()
+                .position(|s| s.kind == StepKind::Numerators)
+                .unwrap();
             if let Object::Polys(ps) = &mut bad.steps[i].objects[0].1 {
                 ps[0] = ps[0].add(&Poly::one(Q));
             }
@@ -531,7 +633,10 @@ fn tf_steps_identities_and_tampering() {
 /// Checks the Rosenbrock steps: each staircase's similarity and zero pattern, the minimal
 /// part's Markov parameters and order.
 fn check_minimal_part<K: Field>(d: &Derivation<K>, s: &StateSpace<K>) -> Check {
-    let mp = d.of_kind(StepKind::MinimalPart).next().ok_or("no minimal part")?;
+    let mp = d
+        .of_kind(StepKind::MinimalPart)
+        .next()
+        .ok_or("no minimal part")?;
     let min = StateSpace::new(
         mat(mp, "Am").clone(),
         mat(mp, "Bm").clone(),
@@ -541,16 +646,28 @@ fn check_minimal_part<K: Field>(d: &Derivation<K>, s: &StateSpace<K>) -> Check {
     .map_err(|e| e.to_string())?;
     let kk = 2 * s.nstates() + 2;
     ensure(s.markov(kk) == min.markov(kk), "Markov parameters differ")?;
-    ensure(min.nstates() == mcmillan_degree(s), "order != McMillan degree")
+    ensure(
+        min.nstates() == mcmillan_degree(s),
+        "order != McMillan degree",
+    )
 }
 
-fn check_staircase<K: Field>(st: &exactlti::jordan::derivation::Step<K>, s: &StateSpace<K>) -> Check {
+fn check_staircase<K: Field>(
+    st: &exactlti::jordan::derivation::Step<K>,
+    s: &StateSpace<K>,
+) -> Check {
     let (t, at, bt, ct) = (mat(st, "T"), mat(st, "At"), mat(st, "Bt"), mat(st, "Ct"));
     let n = s.nstates();
     let u = n - st.count("k").ok_or("k")?;
-    ensure(&s.a * t == t * at && s.b == t * bt && *ct == &s.c * t, "not a similarity")?;
+    ensure(
+        &s.a * t == t * at && s.b == t * bt && *ct == &s.c * t,
+        "not a similarity",
+    )?;
     ensure(t.rank() == n, "T singular")?;
-    ensure(at.submatrix(0, u, u, n).is_zero() && bt.submatrix(0, u, 0, bt.ncols()).is_zero(), "pattern")
+    ensure(
+        at.submatrix(0, u, u, n).is_zero() && bt.submatrix(0, u, 0, bt.ncols()).is_zero(),
+        "pattern",
+    )
 }
 
 #[test]
@@ -590,11 +707,19 @@ fn rosenbrock_and_ho_kalman_steps_on_planted_systems() {
         assert_eq!(h.count("rank"), Some(h0.rank()));
         let f = d.of_kind(StepKind::HankelFactor).next().unwrap();
         assert_eq!(mat(f, "L") * mat(f, "R"), h0);
-        assert_eq!(mat(f, "H1"), &exactlti::realization::hankel_matrix(s, n, n, 1));
+        assert_eq!(
+            mat(f, "H1"),
+            &exactlti::realization::hankel_matrix(s, n, n, 1)
+        );
         check_minimal_part(&d, s).unwrap();
         let mut bad = d.clone();
-        let i = bad.steps.iter().position(|s| s.kind == StepKind::MinimalPart).unwrap();
-        bad.steps[i].objects[0].1 = Object::Matrix(mat(f, "Am").scale(&Rational::from_integer(2.into())));
+        let i = bad
+            .steps
+            .iter()
+            .position(|s| s.kind == StepKind::MinimalPart)
+            .unwrap();
+        bad.steps[i].objects[0].1 =
+            Object::Matrix(mat(f, "Am").scale(&Rational::from_integer(2.into())));
         assert!(check_minimal_part(&bad, s).is_err() || mat(f, "Am").is_zero());
     }
 }
@@ -625,7 +750,11 @@ fn cli_steps_for_scb_zeros_tf_minreal() {
             assert_eq!(j["verified"], true, "{a:?}");
             let steps = j["steps"].as_array().unwrap();
             assert_eq!(steps[0]["step"], first, "{a:?}");
-            assert!(steps.iter().all(|s| s.get("holds").is_none_or(|h| h == true)));
+            assert!(
+                steps
+                    .iter()
+                    .all(|s| s.get("holds").is_none_or(|h| h == true))
+            );
             if sym && matches!(args[0], "scb" | "zeros") {
                 assert_eq!(j["conditions"], serde_json::json!(["u != 0"]), "{a:?}");
             }

@@ -13,9 +13,9 @@ use crate::io::TypedAny;
 use crate::io::symbolic::{SymbolicOptions, load_symbolic_path};
 use crate::jordan::derivation::{AssumptionLog, Derivation, Method, Recorder, ratfunc_log};
 use crate::matrix::Matrix;
-use crate::system::StateSpace;
 use crate::report::steps::derivation_report;
 use crate::report::steps_latex::derivation_latex;
+use crate::system::StateSpace;
 use std::path::Path;
 
 /// What `--steps` derives.

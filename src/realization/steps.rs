@@ -382,8 +382,8 @@ pub fn hankel_factor_identity<K: Field>(
     let n = l.ncols();
     let id = Matrix::identity(k, n);
     l * r == *h0
-        && &(li * l) == &id
-        && &(r * ri) == &id
+        && (li * l) == id
+        && (r * ri) == id
         && min.a == &(li * h1) * ri
         && min.b == r.submatrix(0, n, 0, min.b.ncols())
         && min.c == l.submatrix(0, min.c.nrows(), 0, n)

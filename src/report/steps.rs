@@ -326,7 +326,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
                 c("mcmillan")
             )
         }
-        _ => super::steps_more::sentence(d, s),
+        _ => super::steps_more::sentence(d, s, var),
     }
 }
 

@@ -288,7 +288,7 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
     let _ = writeln!(s, "{}\n", sentence_latex(d, st));
     let field = step_field(d, st);
     for (k, o) in &st.objects {
-        if super::steps_more::object_latex(s, st, k) {
+        if transfer_latex(s, st, k) {
             continue;
         }
         object_latex(s, st.kind, k, o, &field);
@@ -337,4 +337,36 @@ pub fn derivation_latex<K: Field>(d: &Derivation<K>, standalone: bool) -> String
          \\usepackage{{amsmath,amssymb}}\n\\setlength{{\\parindent}}{{0pt}}\n\\allowdisplaybreaks\n\
          \\begin{{document}}\n{body}\\end{{document}}\n"
     )
+}
+
+/// The transfer entries as one matrix of fractions; `true` when `key` was written here.
+fn transfer_latex<K: Field>(out: &mut String, st: &Step<K>, key: &str) -> bool {
+    if st.kind != StepKind::TransferEntries {
+        return false;
+    }
+    if key != "num" {
+        return true; // `den`, `p` are part of the fractions
+    }
+    let (Some(num), Some(den)) = (st.polys("num"), st.polys("den")) else {
+        return true;
+    };
+    let p = st.count("p").unwrap_or(1).max(1);
+    let m = num.len() / p;
+    out.push_str("\\[ G(s) = \\begin{bmatrix}\n");
+    for i in 0..p {
+        let row: Vec<String> = (0..m)
+            .map(|j| {
+                let (n, d) = (&num[i * m + j], &den[i * m + j]);
+                let nl = poly_latex(n, "s");
+                if d.deg() == 0 {
+                    nl
+                } else {
+                    format!("\\dfrac{{{nl}}}{{{}}}", poly_latex(d, "s"))
+                }
+            })
+            .collect();
+        let _ = writeln!(out, "{} \\\\", row.join(" & "));
+    }
+    out.push_str("\\end{bmatrix} \\]\n");
+    true
 }

@@ -69,10 +69,7 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             "A_s = Gamma1^-1 (A^ - B0 C0) Gamma1, B_s = Gamma1^-1 B^ Gamma3, C_s = Gamma2^-1 C^ Gamma1, D_s = Gamma2^-1 D^ Gamma3, pattern of eq. (4)-(6)",
             r"\Gamma_1 A_s = (\hat A - B_0 C_0) \Gamma_1,\ \Gamma_1 B_s = \hat B \Gamma_3,\ \Gamma_2 C_s = \hat C \Gamma_1,\ \text{pattern of eq. (4)--(6)}",
         ),
-        StepKind::ZeroDynamics => (
-            "z(A_aa) = 0, deg z = n_a",
-            r"z(A_{aa}) = 0,\ \deg z = n_a",
-        ),
+        StepKind::ZeroDynamics => ("z(A_aa) = 0, deg z = n_a", r"z(A_{aa}) = 0,\ \deg z = n_a"),
         StepKind::ZerosCompress => (
             "the kept columns (rows) are independent and span those of [B; D] ([C, D])",
             r"\operatorname{rank}[B; D]_{\text{kept}} = \operatorname{rank}[B; D]",
@@ -109,7 +106,16 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
 }
 
 fn one_based(xs: &[usize]) -> String {
-    super::steps::one_based(xs)
+    if xs.is_empty() {
+        return "none".into();
+    }
+    let v: Vec<String> = xs.iter().map(|x| (x + 1).to_string()).collect();
+    v.join(", ")
+}
+
+fn counts(xs: &[usize]) -> String {
+    let v: Vec<String> = xs.iter().map(|x| x.to_string()).collect();
+    v.join(", ")
 }
 
 fn rows_of<K: Field>(s: &Step<K>, key: &str) -> usize {
@@ -117,12 +123,15 @@ fn rows_of<K: Field>(s: &Step<K>, key: &str) -> usize {
 }
 
 /// The plain sentence of a step of this file.
-pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
+pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>, var: &str) -> String {
     let c = |key: &str| s.count(key).unwrap_or(0);
     let ob = |key: &str| s.counts(key).map(one_based).unwrap_or_default();
-    let cs = |key: &str| s.counts(key).map(super::steps::counts).unwrap_or_default();
-    let var = super::steps::poly_var(&d.field);
-    let poly = |key: &str| s.poly(key).map(|p| p.to_string_var(var)).unwrap_or_default();
+    let cs = |key: &str| s.counts(key).map(counts).unwrap_or_default();
+    let poly = |key: &str| {
+        s.poly(key)
+            .map(|p| p.to_string_var(var))
+            .unwrap_or_default()
+    };
     match s.kind {
         StepKind::ScbPreTransform => format!(
             "Pre-transformation (sec. II-D, III-C): Y^-1 = [Y_1; Y_2] with Y_2 the canonical left null space of D and Y_1 unit rows completing it, U^-1 = [Y_1 D; U_2]; so Y^-1 D U = diag(I_m0, 0) with m0 = rank D = {}. The strictly proper part is (A_1, B_1, C_1) = (A - B_0 C_0, the last inputs, the last outputs).",
@@ -301,41 +310,4 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
 /// Whether an object key lists indices (shown one-based).
 pub fn index_list(key: &str) -> bool {
     matches!(key, "ending" | "going_on" | "cols" | "rows")
-}
-
-/// The objects of a step written specially in LaTeX (the transfer entries as fractions);
-/// `true` when `key` was handled.
-pub fn object_latex<K: Field>(out: &mut String, st: &Step<K>, key: &str) -> bool {
-    use std::fmt::Write;
-    if st.kind != StepKind::TransferEntries {
-        return false;
-    }
-    if key != "num" {
-        return true; // `den`, `p` are part of the fractions
-    }
-    let (Some(num), Some(den)) = (st.polys("num"), st.polys("den")) else {
-        return true;
-    };
-    let p = st.count("p").unwrap_or(1).max(1);
-    let m = num.len() / p;
-    let _ = writeln!(out, "\\[ G(s) = \\begin{{bmatrix}}");
-    for i in 0..p {
-        let row: Vec<String> = (0..m)
-            .map(|j| {
-                let (n, d) = (&num[i * m + j], &den[i * m + j]);
-                let nl = super::steps_latex::poly_latex(n, "s");
-                if d.deg() == 0 {
-                    nl
-                } else {
-                    format!(
-                        "\\dfrac{{{nl}}}{{{}}}",
-                        super::steps_latex::poly_latex(d, "s")
-                    )
-                }
-            })
-            .collect();
-        let _ = writeln!(out, "{} \\\\", row.join(" & "));
-    }
-    out.push_str("\\end{bmatrix} \\]\n");
-    true
 }

@@ -15,8 +15,8 @@
 pub mod dcgain;
 mod display;
 pub mod interconnect;
-pub mod time_response;
 pub mod steps;
+pub mod time_response;
 pub mod transfer;
 pub mod transfer_algebra;
 

@@ -7,10 +7,9 @@
 //! * the numerators $N(s) = C \operatorname{adj}(sI - A) B$, checked at a point $s_0$ with
 //!   $\chi(s_0) \ne 0$: $N(s_0) = \chi(s_0)\, C (s_0 I - A)^{-1} B$ (an independent solve);
 //! * the entries in lowest terms, checked by their Laurent coefficients at infinity
-//!   ([`super::transfer::TransferMatrix::matches_markov`]).
+//!   (`TransferMatrix::matches_markov`, passed in by the caller).
 
 use super::StateSpace;
-use super::transfer::TransferMatrix;
 use crate::field::Field;
 use crate::jordan::derivation::{Object, Recorder, StepKind};
 use crate::matrix::Matrix;
@@ -41,10 +40,7 @@ pub(crate) fn markov<K: Field>(rec: &mut Recorder<'_, K>, s: &StateSpace<K>, h: 
     rec.push(
         StepKind::Markov,
         None,
-        vec![
-            ("H", Object::Matrix(hh)),
-            ("n", Object::Count(s.nstates())),
-        ],
+        vec![("H", Object::Matrix(hh)), ("n", Object::Count(s.nstates()))],
         None,
     );
 }
@@ -110,11 +106,12 @@ pub(crate) fn numerators<K: Field>(
     );
 }
 
-pub(crate) fn entries<K: Field>(rec: &mut Recorder<'_, K>, s: &StateSpace<K>, g: &TransferMatrix<K>) {
-    let all = || g.entries.iter().flat_map(|r| r.iter());
-    let num: Vec<Poly<K>> = all().map(|f| f.num.clone()).collect();
-    let den: Vec<Poly<K>> = all().map(|f| f.den.clone()).collect();
-    let ok = g.matches_markov(s);
+pub(crate) fn entries<K: Field>(
+    rec: &mut Recorder<'_, K>,
+    s: &StateSpace<K>,
+    (num, den): (Vec<Poly<K>>, Vec<Poly<K>>),
+    matches_markov: bool,
+) {
     rec.push(
         StepKind::TransferEntries,
         None,
@@ -123,6 +120,6 @@ pub(crate) fn entries<K: Field>(rec: &mut Recorder<'_, K>, s: &StateSpace<K>, g:
             ("den", Object::Polys(den)),
             ("p", Object::Count(s.noutputs())),
         ],
-        Some(ok),
+        Some(matches_markov),
     );
 }

@@ -188,7 +188,12 @@ impl<K: Field> StateSpace<K> {
             .collect();
         let g = TransferMatrix { entries };
         if let Some(r) = rec {
-            super::steps::entries(r, self, &g);
+            let all = || g.entries.iter().flat_map(|r| r.iter());
+            let nd = (
+                all().map(|f| f.num.clone()).collect(),
+                all().map(|f| f.den.clone()).collect(),
+            );
+            super::steps::entries(r, self, nd, g.matches_markov(self));
         }
         Ok(g)
     }

@@ -12,8 +12,8 @@
 //! (columns of $x_b$ chain tops are zero): the elimination the paper cites from [1], done
 //! as one triangular recursion.
 
-use super::steps::Rec;
 use super::silverman::{Chains, align_b, leading_one_complement, silverman, unit_rows, vstack_all};
+use super::steps::Rec;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;

@@ -19,6 +19,12 @@ use crate::field::Field;
 use crate::jordan::derivation::{Object, Recorder, StepKind};
 use crate::matrix::Matrix;
 
+/// The columns of `m` that are not pivots of its RREF (the paper's leading-one deletion rule).
+fn non_leading<K: Field>(m: &Matrix<K>) -> Vec<usize> {
+    let (_, piv) = m.rref();
+    (0..m.ncols()).filter(|c| !piv.contains(c)).collect()
+}
+
 /// An optional recorder (the algorithm runs the same with `None`).
 pub(crate) type Rec<'r, 'a, K> = Option<&'r mut Recorder<'a, K>>;
 
@@ -73,8 +79,7 @@ pub(crate) fn silverman_s<K: Field>(
 ) {
     let qbar = m.nrows() - ci.nrows();
     let s2 = s.submatrix(0, s.nrows(), qbar, s.ncols());
-    let ok =
-        is_left_null_basis(s, m) && ending == super::silverman::leading_one_complement(&s2);
+    let ok = is_left_null_basis(s, m) && ending == non_leading(&s2);
     let mut bottoms = Matrix::zeros(m.field().clone(), 0, ci.ncols());
     for ch in ended {
         bottoms = bottoms
@@ -105,16 +110,8 @@ pub(crate) fn silverman_phi<K: Field>(
     phi: &Matrix<K>,
     going_on: &[usize],
 ) {
-    let ok = rows
-        .vstack(cbar)
-        .is_ok_and(|m| is_left_null_basis(phi, &m))
-        && going_on
-            == super::silverman::leading_one_complement(&phi.submatrix(
-                0,
-                phi.nrows(),
-                rows.nrows(),
-                phi.ncols(),
-            ));
+    let ok = rows.vstack(cbar).is_ok_and(|m| is_left_null_basis(phi, &m))
+        && going_on == non_leading(&phi.submatrix(0, phi.nrows(), rows.nrows(), phi.ncols()));
     rec.push(
         StepKind::SilvermanPhi,
         Some(level - 1),
