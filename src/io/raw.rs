@@ -171,7 +171,43 @@ pub(crate) fn from_toml_text(text: &str, file: &str) -> Result<Raw, InputError> 
         InputError::file(file, format!("invalid TOML{at}: {}", e.message().trim()))
             .with_kind(InputErrorKind::Syntax)
     })?;
-    Ok(from_toml_table(doc.into_inner()))
+    let raw = from_toml_table(doc.into_inner());
+    toml_header_trap(&raw, file)?;
+    Ok(raw)
+}
+
+/// The keys of a system file that hold matrices (top level only).
+const MATRIX_KEYS: [&str; 10] = ["A", "B", "C", "D", "E", "M", "L", "K", "F", "G"];
+
+/// TOML's ordering trap: every key after a `[table]` header belongs to that table, so a
+/// matrix written below `[parameters]` becomes `parameters.A`. When a table holds a matrix
+/// key as an array and the top level lacks it, the error says so and how to fix it.
+fn toml_header_trap(raw: &Raw, file: &str) -> Result<(), InputError> {
+    let Raw::Table(top) = raw else { return Ok(()) };
+    let at_top = |k: &str| top.iter().any(|(t, _)| t == k);
+    for (table, value) in top {
+        let Raw::Table(inner) = value else { continue };
+        let trapped: Vec<&str> = inner
+            .iter()
+            .filter(|(k, v)| {
+                MATRIX_KEYS.contains(&k.as_str()) && matches!(v, Raw::Array(_)) && !at_top(k)
+            })
+            .map(|(k, _)| k.as_str())
+            .collect();
+        if let Some(first) = trapped.first() {
+            return Err(InputError::key(
+                file,
+                &format!("{table}.{first}"),
+                format!(
+                    "{} written after the [{table}] header belong to that table (in TOML every \
+                     key after a [table] header is part of it); move {} above [{table}]",
+                    trapped.join(", "),
+                    if trapped.len() == 1 { "it" } else { "them" }
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn from_toml_table(t: DeTable<'_>) -> Raw {
@@ -218,6 +254,24 @@ fn from_toml(v: DeValue<'_>) -> Raw {
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[test]
+    fn toml_matrix_below_a_table_header_gets_the_hint() {
+        let text =
+            "name = \"t\"\n[parameters]\nm = \"2\"\nA = [[0, 1], [\"-1/m\", 0]]\nB = [[0], [1]]\n";
+        let e = from_toml_text(text, "t.toml").unwrap_err().to_string();
+        assert!(e.contains("parameters.A"), "{e}");
+        assert!(
+            e.contains("A, B written after the [parameters] header"),
+            "{e}"
+        );
+        assert!(e.contains("move them above [parameters]"), "{e}");
+        // the same keys before the header are fine
+        let ok = "A = [[0, 1], [\"-1/m\", 0]]\nB = [[0], [1]]\n[parameters]\nm = \"2\"\n";
+        assert!(from_toml_text(ok, "t.toml").is_ok());
+        // a table holding a scalar A (a parameter named A) is not the trap
+        let param = "A = [[0, 1], [\"-1/A\", 0]]\n[parameters]\nA = \"2\"\n";
+        assert!(from_toml_text(param, "t.toml").is_ok());
+    }
     #[test]
     fn numbers_keep_their_text() {
         let j = from_json_text(

@@ -282,40 +282,59 @@ pub(super) fn transfer_lists<K: Field>(
     Ok((tm, zpk))
 }
 
-/// Zero-pole-gain display of one rational function over Q: `k (factors)/(factors)` with
-/// the monic irreducible factors over Q.
+/// Zero-pole-gain display of one rational function over Q: `k (factors) / (factors)` with
+/// the monic irreducible factors over Q, assembled by [`zpk_text`].
 fn zpk_string(num: &Poly<Q>, den: &Poly<Q>) -> Result<String> {
     if num.is_zero() {
         return Ok("0".into());
     }
     let gain = crate::field::fmt_rational(&(num.lc() / den.lc()));
-    let factors = |p: &Poly<Q>| -> Result<String> {
+    let factors = |p: &Poly<Q>| -> Result<Vec<(String, usize)>> {
         if p.deg() == 0 {
-            return Ok(String::new());
+            return Ok(Vec::new());
         }
         let (_, fs) = crate::algebraic::factor_q(p)?;
         Ok(fs
             .iter()
-            .map(|(f, e)| {
-                let f = f.monic().to_string_var("s");
-                if *e > 1 {
-                    format!("({f})^{e}")
-                } else {
-                    format!("({f})")
-                }
-            })
-            .collect::<Vec<_>>()
-            .join(" "))
+            .map(|(f, e)| (f.monic().to_string_var("s"), *e))
+            .collect())
     };
-    let (n, d) = (factors(num)?, factors(den)?);
-    let mut s = gain;
-    if !n.is_empty() {
-        s = format!("{s} {n}");
+    Ok(zpk_text(&gain, &factors(num)?, &factors(den)?))
+}
+
+/// One line of zero-pole-gain text that reads one way only: the gain (in parentheses when it
+/// is a fraction or a sum and factors follow), the numerator factors, and `/` followed by the
+/// denominator in parentheses when it has more than one factor: `(-1/1500) / (s (s + 8/3))`,
+/// `10 (s + 1) / (s (s^2 + 2*s + 10))`, `2 / (s + 1)^2`. A factor that is a single symbol
+/// (`s`) is written bare.
+pub(super) fn zpk_text(gain: &str, num: &[(String, usize)], den: &[(String, usize)]) -> String {
+    let factor = |(f, e): &(String, usize)| {
+        let f = if f.chars().all(|c| c.is_alphanumeric()) {
+            f.clone()
+        } else {
+            format!("({f})")
+        };
+        if *e > 1 { format!("{f}^{e}") } else { f }
+    };
+    let product = |fs: &[(String, usize)]| fs.iter().map(factor).collect::<Vec<_>>().join(" ");
+    let compound = gain.contains(['/', ' ', '+']) || gain.get(1..).unwrap_or("").contains('-');
+    let mut s = if compound && !(num.is_empty() && den.is_empty()) {
+        format!("({gain})")
+    } else {
+        gain.to_string()
+    };
+    if !num.is_empty() {
+        s = format!("{s} {}", product(num));
     }
-    if !d.is_empty() {
-        s = format!("{s} / {d}");
+    if !den.is_empty() {
+        let d = product(den);
+        s = if den.len() > 1 {
+            format!("{s} / ({d})")
+        } else {
+            format!("{s} / {d}")
+        };
     }
-    Ok(s)
+    s
 }
 
 /// `tf` over Q: transfer matrix in lowest terms, McMillan degree, poles, transmission zeros,
@@ -343,4 +362,30 @@ pub fn tf_report(g: &TransferMatrix<Q>, r: &TransferRealization<Q>) -> Result<Re
         .int("normal_rank", zeros.pencil.normal_rank - sys.nstates())
         .int("order", r.minimal.order)
         .bool("verified", r.verified && zeros.pencil.verified))
+}
+
+#[cfg(test)]
+mod zpk_tests {
+    use super::zpk_text;
+    fn f(s: &str, e: usize) -> (String, usize) {
+        (s.to_string(), e)
+    }
+    #[test]
+    fn zpk_text_reads_one_way() {
+        assert_eq!(
+            zpk_text("-1/1500", &[], &[f("s", 1), f("s + 8/3", 1)]),
+            "(-1/1500) / (s (s + 8/3))"
+        );
+        assert_eq!(
+            zpk_text("10", &[f("s + 1", 1)], &[f("s", 1), f("s^2 + 2*s + 10", 1)]),
+            "10 (s + 1) / (s (s^2 + 2*s + 10))"
+        );
+        assert_eq!(zpk_text("2", &[], &[f("s + 1", 2)]), "2 / (s + 1)^2");
+        assert_eq!(zpk_text("-3", &[f("s", 2)], &[]), "-3 s^2");
+        assert_eq!(zpk_text("1/2", &[], &[]), "1/2");
+        assert_eq!(
+            zpk_text("1 + sqrt(2)", &[f("s - 1", 1)], &[]),
+            "(1 + sqrt(2)) (s - 1)"
+        );
+    }
 }

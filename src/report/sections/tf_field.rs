@@ -93,33 +93,17 @@ fn zpk_string(num: &Poly<QuadraticField>, den: &Poly<QuadraticField>) -> Result<
     }
     let k = num.field().clone();
     let gain = k.fmt_elem(&k.div(&num.lc(), &den.lc()).expect("non-zero denominator"));
-    let factors = |p: &Poly<QuadraticField>| -> Result<String> {
+    let factors = |p: &Poly<QuadraticField>| -> Result<Vec<(String, usize)>> {
         Ok(factor_over_quadratic(p)?
             .iter()
-            .map(|(f, e)| {
-                let f = f.to_string_var("s");
-                if *e > 1 {
-                    format!("({f})^{e}")
-                } else {
-                    format!("({f})")
-                }
-            })
-            .collect::<Vec<_>>()
-            .join(" "))
+            .map(|(f, e)| (f.to_string_var("s"), *e))
+            .collect())
     };
-    let (n, d) = (factors(num)?, factors(den)?);
-    let mut s = if gain.contains(' ') {
-        format!("({gain})")
-    } else {
-        gain
-    };
-    if !n.is_empty() {
-        s = format!("{s} {n}");
-    }
-    if !d.is_empty() {
-        s = format!("{s} / {d}");
-    }
-    Ok(s)
+    Ok(super::pencil::zpk_text(
+        &gain,
+        &factors(num)?,
+        &factors(den)?,
+    ))
 }
 
 /// A minimal realization of a transfer matrix over $K$ as `tf` reports it: from
