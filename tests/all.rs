@@ -129,6 +129,8 @@ mod scb;
 mod slowpaths;
 #[path = "steps.rs"]
 mod steps;
+#[path = "steps_systems.rs"]
+mod steps_systems;
 #[path = "study.rs"]
 mod study;
 #[path = "study_classes.rs"]

@@ -550,9 +550,10 @@ fn cli_steps_json_text_latex() {
 fn cli_steps_refusals_are_one_line_exit_2() {
     let f = "data/yaw-plane-single-wheel.json";
     for args in [
-        vec!["scb", f, "--steps"],
+        vec!["standard", f, "--steps"],
+        vec!["mnf", f, "--steps"],
         vec!["jordan", f, "--real", "--steps"],
-        vec!["minreal", f, "--method", "rosenbrock", "--steps"],
+        vec!["minreal", f, "--method", "era", "--steps"],
         vec!["jordan", "tests/data/sqrt2.toml", "--steps"],
         vec!["jordan", "tests/data/no-such-file.json", "--steps"],
     ] {

@@ -1,4 +1,5 @@
-//! `--steps`: the derivation of `jordan` and of `minreal --method kalman|jordan`, step by step,
+//! `--steps`: the derivation of `jordan`, `scb`, `zeros`, `tf` and of `minreal --method
+//! kalman|jordan|rosenbrock|ho-kalman`, step by step,
 //! over $\mathbb{Q}$ and over $\mathbb{Q}(p)$ (files with symbols, `--symbolic`, `--at`).
 //!
 //! The steps are computed by [`crate::jordan::steps`] and [`crate::realization::steps`] and
@@ -10,9 +11,11 @@ use super::{Command, Failure, Format, MethodArg, Outcome};
 use crate::field::Field;
 use crate::io::TypedAny;
 use crate::io::symbolic::SymbolicOptions;
-use crate::jordan::derivation::{Derivation, ratfunc_log};
+use crate::jordan::derivation::{AssumptionLog, Derivation, Method, Recorder, ratfunc_log};
+use crate::matrix::Matrix;
 use crate::report::steps::derivation_report;
 use crate::report::steps_latex::derivation_latex;
+use crate::system::StateSpace;
 use std::path::Path;
 
 /// What `--steps` derives.
@@ -21,10 +24,84 @@ enum What {
     Jordan,
     Kalman,
     JordanMethod,
+    Scb,
+    Zeros,
+    Tf,
+    Rosenbrock,
+    HoKalman,
 }
 
 fn refuse(message: String) -> Failure {
     Failure { code: 2, message }
+}
+
+const AVAILABLE: &str = "--steps: available for `jordan` (without --real), `scb`, `zeros`, `tf` and `minreal --method kalman|jordan|rosenbrock|ho-kalman` (not yet for `standard`, `mnf`, `jordan --real`, descriptor systems)";
+
+/// The file and the derivation `cmd` asks for.
+fn what(cmd: &Command) -> Option<(&Path, What)> {
+    Some(match cmd {
+        Command::Jordan {
+            file, real: false, ..
+        } => (file, What::Jordan),
+        Command::Minreal {
+            file,
+            method,
+            descriptor: false,
+            ..
+        } => (
+            file,
+            match method {
+                MethodArg::Kalman => What::Kalman,
+                MethodArg::Jordan => What::JordanMethod,
+                MethodArg::Rosenbrock => What::Rosenbrock,
+                MethodArg::HoKalman => What::HoKalman,
+                MethodArg::Era => return None,
+            },
+        ),
+        Command::Scb { file } => (file, What::Scb),
+        Command::Zeros { file } => (file, What::Zeros),
+        Command::Tf { file } => (file, What::Tf),
+        _ => return None,
+    })
+}
+
+/// The derivation of a system command over any field (with the assumption log over
+/// $\mathbb{Q}(p)$).
+fn system_steps<'a, K: Field>(
+    ss: &StateSpace<K>,
+    what: What,
+    log: Option<AssumptionLog<'a, K>>,
+) -> crate::error::Result<Derivation<K>> {
+    let method = match what {
+        What::Kalman => return crate::realization::steps::kalman_steps(ss, log),
+        What::Scb => Method::Scb,
+        What::Zeros => Method::Zeros,
+        What::Tf => Method::Transfer,
+        What::Rosenbrock => Method::Rosenbrock,
+        What::HoKalman => Method::HoKalman,
+        What::Jordan | What::JordanMethod => {
+            return Err(crate::error::Error::Invalid(
+                "internal: not a system derivation".into(),
+            ));
+        }
+    };
+    let k = ss.field().clone();
+    let mut rec = match log {
+        Some(l) => Recorder::with_log(method, k, l),
+        None => Recorder::new(method, k),
+    };
+    let r = Some(&mut rec);
+    let (a, b, c, d) = (&ss.a, &ss.b, &ss.c, &ss.d);
+    match what {
+        What::Scb => drop(crate::structure::scb::scb_recorded(a, b, c, d, r)?),
+        What::Zeros => drop(crate::structure::zeros::invariant_zeros_recorded(
+            a, b, c, d, r,
+        )?),
+        What::Tf => drop(ss.transfer_matrix_recorded(r)?),
+        What::Rosenbrock => drop(crate::realization::minimal_rosenbrock_recorded(ss, r)?),
+        _ => drop(crate::realization::minimal_ho_kalman_recorded(ss, r)?),
+    }
+    Ok(rec.finish())
 }
 
 /// Runs `cmd` with `--steps`; LaTeX is written to stdout here (the outcome is `streamed`).
@@ -35,34 +112,25 @@ pub fn execute(
     format: Format,
     standalone: bool,
 ) -> Result<Outcome, Failure> {
-    let (file, what) = match cmd {
-        Command::Jordan {
-            file, real: false, ..
-        } => (file, What::Jordan),
-        Command::Minreal {
-            file,
-            method: MethodArg::Kalman,
-            descriptor: false,
-            ..
-        } => (file, What::Kalman),
-        Command::Minreal {
-            file,
-            method: MethodArg::Jordan,
-            descriptor: false,
-            ..
-        } => (file, What::JordanMethod),
-        _ => {
-            return Err(refuse(
-                "--steps: available for `jordan` (without --real) and `minreal --method kalman|jordan`"
-                    .into(),
-            ));
-        }
+    let Some((file, what)) = what(cmd) else {
+        return Err(refuse(AVAILABLE.into()));
     };
     let opts = SymbolicOptions::from_args(symbolic, at).map_err(refuse)?;
     let sys = super::System::open(file, &opts).map_err(|e| refuse(e.to_string()))?;
     let loaded = sys.loaded();
     let e = |err: crate::error::Error| super::common::with_path(file, err);
     let out = Render { format, standalone };
+    let descriptor = match &loaded.system {
+        TypedAny::Rational(t) => t.descriptor.is_some(),
+        TypedAny::Quadratic(t) => t.descriptor.is_some(),
+        TypedAny::RatFunc(t) => t.descriptor.is_some(),
+    };
+    if descriptor && !matches!(what, What::Jordan) {
+        return Err(refuse(format!(
+            "{}: --steps for a descriptor system (a file with E) is not available yet",
+            path_text(file)
+        )));
+    }
     match (&loaded.system, what) {
         (TypedAny::Rational(t), What::Jordan) => {
             out.show(&crate::jordan::steps::jordan_steps(&t.a_raw).map_err(e)?)
@@ -70,35 +138,26 @@ pub fn execute(
         (TypedAny::RatFunc(t), What::Jordan) => {
             out.show(&crate::jordan::steps::jordan_steps_params(&t.a_raw).map_err(e)?)
         }
-        (TypedAny::Rational(t), What::Kalman) => {
-            out.show(&crate::realization::steps::kalman_steps(&t.ss, None).map_err(e)?)
-        }
-        (TypedAny::Quadratic(t), What::Kalman) => {
-            out.show(&crate::realization::steps::kalman_steps(&t.ss, None).map_err(e)?)
-        }
-        (TypedAny::RatFunc(t), What::Kalman) => {
-            let k = t.ss.field().fresh();
-            let mv = |m: &crate::matrix::Matrix<_>| {
-                crate::matrix::Matrix::from_vec(
-                    k.clone(),
-                    m.nrows(),
-                    m.ncols(),
-                    m.as_slice().to_vec(),
-                )
-            };
-            let (s0, log) = (&t.ss, Some(ratfunc_log(&k)));
-            let ss = crate::system::StateSpace::new(mv(&s0.a), mv(&s0.b), mv(&s0.c), mv(&s0.d))
-                .map_err(e)?;
-            out.show(&crate::realization::steps::kalman_steps(&ss, log).map_err(e)?)
-        }
         (TypedAny::Rational(t), What::JordanMethod) => {
             out.show(&crate::realization::steps::jordan_method_steps(&t.ss).map_err(e)?)
         }
-        _ => Err(refuse(format!(
+        (_, What::Jordan | What::JordanMethod) => Err(refuse(format!(
             "{}: --steps for this command needs rational entries (this file's lie in {})",
             path_text(file),
             loaded.file.ground
         ))),
+        (TypedAny::Rational(t), w) => out.show(&system_steps(&t.ss, w, None).map_err(e)?),
+        (TypedAny::Quadratic(t), w) => out.show(&system_steps(&t.ss, w, None).map_err(e)?),
+        (TypedAny::RatFunc(t), w) => {
+            // a fresh field: its conditions are the ones this derivation assumes
+            let k = t.ss.field().fresh();
+            let mv = |m: &Matrix<_>| {
+                Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec())
+            };
+            let s0 = &t.ss;
+            let ss = StateSpace::new(mv(&s0.a), mv(&s0.b), mv(&s0.c), mv(&s0.d)).map_err(e)?;
+            out.show(&system_steps(&ss, w, Some(ratfunc_log(&k))).map_err(e)?)
+        }
     }
 }
 

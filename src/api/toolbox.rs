@@ -126,7 +126,7 @@ pub(super) fn run<K: Field + 'static>(
             } else if let Some(a) = (&t.ss.a as &dyn std::any::Any)
                 .downcast_ref::<crate::matrix::Matrix<QuadraticField>>()
             {
-                realization::damp_over_k(a).map_err(e)?
+                realization::damp_over(a).map_err(e)?
             } else {
                 return Err(needs_q("`damp`"));
             };

@@ -25,6 +25,16 @@ pub enum Method {
     Kalman,
     /// Minimal realization by the Jordan form (minimal-realization paper sec. 3.3).
     JordanMethod,
+    /// The special coordinate basis by the modified Silverman iterations (SCB paper sec. III).
+    Scb,
+    /// Invariant zeros of the system pencil.
+    Zeros,
+    /// The transfer matrix by Faddeev--LeVerrier.
+    Transfer,
+    /// Minimal realization by Rosenbrock's staircase.
+    Rosenbrock,
+    /// Minimal realization by Ho--Kalman (Hankel factorization).
+    HoKalman,
 }
 
 /// What a step computes; each kind has one sentence and one identity (see `report::steps`).
@@ -82,6 +92,61 @@ pub enum StepKind {
     /// check $\sum_p \operatorname{Tr}(C_p J_p^k B_p) = C A^k B$, order = McMillan degree.
     /// Objects: `stages`, `mcmillan`.
     Stages,
+    /// SCB pre-transformation (sec. II-D, III-C): $Y^{-1} D U = \operatorname{diag}(I_{m_0}, 0)$
+    /// and the strictly proper system $(A_1, B_1, C_1)$, $A_1 = A - B_0 C_0$. Objects: `U`,
+    /// `Yinv`, `Dh`, `m0`, `A1`, `B1`, `C1`.
+    ScbPreTransform,
+    /// Silverman step $\bar S_i$ at level $i$: the level rows $C_i$ ($y_{i0} = C_i \hat x$), the
+    /// input coefficients $[\bar D_{i-1}; C_i \hat B]$ and its canonical left null space
+    /// $[S_{ib}, S_{i2}]$; the rows of $I$ kept by $S_{i1}$ end $x_d$ chains of length $i$.
+    /// Objects: `level`, `Ci`, `M` ($= [\bar D_{i-1}; C_i \hat B]$), `S`, `ending`.
+    SilvermanS,
+    /// Silverman step $\bar\phi_i$: the candidates $\bar C_i = C_i \hat A$ of the continuing
+    /// chains against all rows found so far; the canonical left null space $\Phi$ gives $x_b$
+    /// chains, the rest continue as $y_{i+1,0}$. Objects: `level`, `Rows`, `Cbar`, `Phi`,
+    /// `going_on`.
+    SilvermanPhi,
+    /// The states $x_s$ (sec. III-B): $T_s = T_s^0 + K T_{bd}$ with $\dot x_s = X x_s +
+    /// (\text{outputs}) + B_{sc} u_c$. Objects: `Ts0`, `Ts`, `X`, `Bsc`, `md`.
+    ScbStates,
+    /// Kalman split of $x_s$ by RREF: $P = [T_2, T_1]$, $T_1$ the RREF basis of
+    /// $\operatorname{im}[B_{sc}, X B_{sc}, \dots]$, $T_2$ its left null space. Objects: `Ctr`,
+    /// `rank`, `P`, `na`.
+    ScbKalmanSplit,
+    /// The SCB $(\Gamma_1, \Gamma_2, \Gamma_3)$ and the system in the compact form of eq. (6).
+    /// Objects: `A`, `B`, `C`, `D`, `Gamma1`, `Gamma2`, `Gamma3`, `dims`, `chains`, `m0`.
+    ScbForm,
+    /// Zero dynamics: $z(s) = \det(sI - A_{aa})$. Objects: `Aaa`, `z`.
+    ZeroDynamics,
+    /// Redundant inputs/outputs removed: pivot columns of $[B; D]$, pivot rows of $[C, D]$.
+    /// Objects: `cols`, `rows`, `rank_in`, `rank_out`.
+    ZerosCompress,
+    /// The system pencil $P(s) = P_0 - s E$, $P_0 = [A, B; C, D]$, $E = \operatorname{diag}(I_n, 0)$.
+    /// Objects: `P0`, `E`.
+    SystemPencil,
+    /// The normal rank: $\operatorname{rank} P(s_0)$ at $s_0$ with $z(s_0) \ne 0$. Objects: `s0`,
+    /// `Ps0`, `z_s0`, `rank`, `z`.
+    NormalRank,
+    /// The Smith path: a diagonal form of $P(s)$ by unimodular operations over $K[s]$; the zero
+    /// polynomial is the monic product of the diagonal. Objects: `diag`, `z`.
+    SmithDiagonal,
+    /// Markov parameters $h_j = C A^j B$, $j < n$. Objects: `H` ($[h_0, h_1, \dots]$).
+    Markov,
+    /// Faddeev--LeVerrier numerators: $N(s) = \sum_k s^{n-1-k} C R_k B$, $C R_k B = \sum_{j \le
+    /// k} c_{n-k+j} h_j$; objects `N` (entries row by row), `chi`.
+    Numerators,
+    /// The entries $G_{ij} = (N_{ij} + D_{ij}\chi)/\chi$ in lowest terms. Objects: `num`, `den`,
+    /// `shape`.
+    TransferEntries,
+    /// Rosenbrock staircase: $T = [\text{units}, \text{Krylov pivots}]$, $k$ reached states, the
+    /// transformed $(T^{-1} A T, T^{-1} B, C T)$ with the eq. 17 zero pattern. Objects: `T`,
+    /// `k`, `At`, `Bt`, `Ct`, `dual` (0: controllability, 1: on the dual).
+    Staircase,
+    /// Hankel matrix of Markov parameters and its rank. Objects: `H`, `rank`.
+    Hankel,
+    /// Ho--Kalman factorization: $H = \mathcal O_r \mathcal C_r$ and $(A_r, B_r, C_r)$ from the
+    /// shifted Hankel matrix. Objects: `Am`, `Bm`, `Cm`, `order`.
+    HankelFactor,
 }
 
 /// An exact object a step computed.
@@ -95,6 +160,8 @@ pub enum Object<K: Field> {
     Count(usize),
     /// A sequence of counts (ranks, dimensions, block sizes).
     Counts(Vec<usize>),
+    /// A list of polynomials (a diagonal, the entries of a polynomial matrix row by row).
+    Polys(Vec<Poly<K>>),
 }
 
 /// One step (see the module docs).
@@ -133,6 +200,20 @@ impl<K: Field> Step<K> {
     pub fn count(&self, key: &str) -> Option<usize> {
         match self.get(key) {
             Some(Object::Count(c)) => Some(*c),
+            _ => None,
+        }
+    }
+    /// The polynomial named `key`.
+    pub fn poly(&self, key: &str) -> Option<&Poly<K>> {
+        match self.get(key) {
+            Some(Object::Poly(p)) => Some(p),
+            _ => None,
+        }
+    }
+    /// The polynomials named `key`.
+    pub fn polys(&self, key: &str) -> Option<&[Poly<K>]> {
+        match self.get(key) {
+            Some(Object::Polys(p)) => Some(p),
             _ => None,
         }
     }

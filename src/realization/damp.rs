@@ -9,7 +9,7 @@
 
 use crate::algebraic::{AlgebraicNumber, roots};
 use crate::error::Result;
-use crate::field::{Q, QuadraticField, Rational};
+use crate::field::{Q, Rational};
 use crate::matrix::Matrix;
 use num_traits::Zero;
 use std::f64::consts::PI;
@@ -47,12 +47,15 @@ pub fn damp(a: &Matrix<Q>) -> Result<Vec<DampRow>> {
         .collect())
 }
 
-/// The damping table of `a` over $\mathbb{Q}(i)$ or $\mathbb{Q}(\sqrt d)$.
+/// The damping table of `a` over any field with exact eigenvalues ($\mathbb{Q}(i)$,
+/// $\mathbb{Q}(\sqrt d)$, ...): the roots of each irreducible factor of det(sI - A) over the
+/// field, never those of the conjugate.
 ///
 /// # Errors
-/// As [`crate::jordan::over_k::eigenvalues_over_k`].
-pub fn damp_over_k(a: &Matrix<QuadraticField>) -> Result<Vec<DampRow>> {
-    let (_, factors) = crate::jordan::over_k::eigenvalues_over_k(a)?;
+/// `NotSquare`; as [`crate::jordan::EigenField::eigen_factors`].
+pub fn damp_over<F: crate::jordan::EigenField>(a: &Matrix<F>) -> Result<Vec<DampRow>> {
+    a.check_square("damp")?;
+    let factors = F::eigen_factors(&a.charpoly()?)?;
     let mut out = vec![];
     for (_, mult, _, rs) in factors {
         for (lam, z) in rs {

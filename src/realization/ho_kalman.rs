@@ -35,6 +35,18 @@ fn left_inverse<K: Field>(l: &Matrix<K>) -> Result<Matrix<K>> {
 /// # Errors
 /// Only internal failures.
 pub fn minimal_ho_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealization<K>> {
+    minimal_ho_kalman_recorded(sys, None)
+}
+
+/// [`minimal_ho_kalman`], recording the Hankel matrix, its factorization and the minimal part
+/// into `rec` (`minreal --method ho-kalman --steps`, see [`super::steps`]).
+///
+/// # Errors
+/// As [`minimal_ho_kalman`].
+pub fn minimal_ho_kalman_recorded<K: Field>(
+    sys: &StateSpace<K>,
+    mut rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,
+) -> Result<MinimalRealization<K>> {
     let n = sys.nstates();
     let (p, m) = (sys.noutputs(), sys.ninputs());
     let fld = sys.field().clone();
@@ -45,6 +57,9 @@ pub fn minimal_ho_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealiza
             Matrix::zeros(fld, p, 0),
             sys.d.clone(),
         )?;
+        if let Some(r) = rec {
+            super::steps::minimal_part(r, sys, &min);
+        }
         return Ok(MinimalRealization::new(
             sys,
             min,
@@ -56,6 +71,9 @@ pub fn minimal_ho_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealiza
     let h1 = hankel_matrix(sys, n, n, 1);
     let (rref, piv) = h0.rref();
     let r = piv.len();
+    if let Some(rc) = rec.as_deref_mut() {
+        super::steps::hankel(rc, &h0, r);
+    }
     let l = h0.select_cols(&piv);
     let rr = rref.submatrix(0, r, 0, h0.ncols());
     let linv = left_inverse(&l)?;
@@ -64,6 +82,10 @@ pub fn minimal_ho_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealiza
     let b = rr.submatrix(0, r, 0, m);
     let c = l.submatrix(0, p, 0, r);
     let min = StateSpace::new(a, b, c, sys.d.clone())?;
+    if let Some(rc) = rec {
+        super::steps::hankel_factor(rc, [&h0, &h1], [&l, &rr], [&linv, &rinv], &min);
+        super::steps::minimal_part(rc, sys, &min);
+    }
     Ok(MinimalRealization::new(
         sys,
         min,

@@ -77,9 +77,24 @@ pub fn controllable_staircase<K: Field>(
 /// # Errors
 /// Only internal failures (`Singular` from a transform that is invertible by construction).
 pub fn minimal_rosenbrock<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealization<K>> {
+    minimal_rosenbrock_recorded(sys, None)
+}
+
+/// [`minimal_rosenbrock`], recording both staircases and the minimal part into `rec`
+/// (`minreal --method rosenbrock --steps`, see [`super::steps`]).
+///
+/// # Errors
+/// As [`minimal_rosenbrock`].
+pub fn minimal_rosenbrock_recorded<K: Field>(
+    sys: &StateSpace<K>,
+    mut rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,
+) -> Result<MinimalRealization<K>> {
     let n = sys.nstates();
     let (t1, kc) = controllable_staircase(&sys.a, &sys.b)?;
     let s1 = sys.transform(&t1)?;
+    if let Some(r) = rec.as_deref_mut() {
+        super::steps::staircase(r, sys, &t1, &s1, kc, false);
+    }
     let cidx: Vec<usize> = (n - kc..n).collect();
     let ctrl = s1.select_states(&cidx);
     // observability staircase on the dual of the controllable part
@@ -90,6 +105,10 @@ pub fn minimal_rosenbrock<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealiz
     let s2 = ctrl.transform(&t2p)?;
     let oidx: Vec<usize> = (kc - ko..kc).collect();
     let min = s2.select_states(&oidx);
+    if let Some(r) = rec {
+        super::steps::staircase(r, &dual, &t2, &dual.transform(&t2)?, ko, true);
+        super::steps::minimal_part(r, sys, &min);
+    }
     Ok(MinimalRealization::new(
         sys,
         min,

@@ -12,6 +12,7 @@ pub mod plot;
 pub mod sections;
 pub mod steps;
 pub mod steps_latex;
+pub mod steps_more;
 pub mod text;
 
 pub use text::{TextOptions, text_matrix};

@@ -35,6 +35,7 @@ pub fn title(m: Method) -> &'static str {
         Method::Jordan => "Jordan decomposition, step by step",
         Method::Kalman => "minimal realization (Kalman decomposition), step by step",
         Method::JordanMethod => "minimal realization (Jordan-form method), step by step",
+        m => super::steps_more::title(m),
     }
 }
 
@@ -60,6 +61,7 @@ pub fn kind_name(k: StepKind) -> &'static str {
         StepKind::DropModes => "drop_modes",
         StepKind::Compaction => "compaction",
         StepKind::Stages => "stages",
+        k => super::steps_more::kind_name(k),
     }
 }
 
@@ -116,6 +118,7 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             "sum_p Tr(C_p J_p^k B_p) = C A^k B, order = McMillan degree",
             r"\textstyle\sum_p \operatorname{Tr}(C_p J_p^k B_p) = C A^k B,\ r = \delta_M",
         ),
+        k => super::steps_more::identity(k),
     }
 }
 
@@ -323,6 +326,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
                 c("mcmillan")
             )
         }
+        _ => super::steps_more::sentence(d, s, var),
     }
 }
 
@@ -344,6 +348,7 @@ fn object_value<K: Field>(o: &Object<K>, var: &str, field: &K) -> Value {
         Object::Scalar(x) => Value::Str(field.fmt_elem(x)),
         Object::Count(c) => Value::Int(*c as i64),
         Object::Counts(cs) => Value::List(cs.iter().map(|&c| Value::Int(c as i64)).collect()),
+        Object::Polys(ps) => str_list(ps.iter().map(|p| poly_text(p, var))),
     }
 }
 

@@ -29,6 +29,9 @@ fn symbol(kind: StepKind, key: &str) -> String {
         (StepKind::PrimaryBlock, "dims") => return r"\dim\ker f(A)^k".into(),
         _ => {}
     }
+    if let Some(sym) = super::steps_more::symbol(kind, key) {
+        return sym.into();
+    }
     match key {
         "chi" => r"\chi_A(s)".into(),
         "factors" => r"\chi_A(s)".into(),
@@ -188,7 +191,8 @@ fn counts_latex(xs: &[usize], one_based: bool) -> String {
 
 fn object_latex<K: Field>(s: &mut String, kind: StepKind, key: &str, o: &Object<K>, field: &K) {
     let name = symbol(kind, key);
-    let index_list = matches!(key, "kept" | "not_excited" | "not_observed" | "pivots");
+    let index_list = matches!(key, "kept" | "not_excited" | "not_observed" | "pivots")
+        || super::steps_more::index_list(key);
     match o {
         Object::Matrix(m) => matrix_latex(s, &name, m),
         Object::Poly(p) => {
@@ -212,6 +216,10 @@ fn object_latex<K: Field>(s: &mut String, kind: StepKind, key: &str, o: &Object<
         }
         Object::Counts(cs) => {
             let _ = writeln!(s, "\\[ {name} = {} \\]", counts_latex(cs, index_list));
+        }
+        Object::Polys(ps) => {
+            let parts: Vec<String> = ps.iter().map(|p| poly_latex(p, "s")).collect();
+            let _ = writeln!(s, "\\[ {name}:\\ {} \\]", parts.join(",\\; "));
         }
     }
 }
@@ -266,6 +274,7 @@ fn sentence_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
             "Repeated modes of $\\theta = {th}$ compacted{conj}: a minimal realization of $(N, WB, CV)$ over the field, back in Jordan form by its chains."
         ),
         StepKind::Stages => "The orders of the stages: original, after dropping, after compacting; the last is the McMillan degree $\\delta_M$.".into(),
+        _ => super::steps_more::sentence_latex(st),
     }
 }
 
@@ -279,6 +288,9 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
     let _ = writeln!(s, "{}\n", sentence_latex(d, st));
     let field = step_field(d, st);
     for (k, o) in &st.objects {
+        if transfer_latex(s, st, k) {
+            continue;
+        }
         object_latex(s, st.kind, k, o, &field);
     }
     let (_, id) = identity(st.kind);
@@ -325,4 +337,36 @@ pub fn derivation_latex<K: Field>(d: &Derivation<K>, standalone: bool) -> String
          \\usepackage{{amsmath,amssymb}}\n\\setlength{{\\parindent}}{{0pt}}\n\\allowdisplaybreaks\n\
          \\begin{{document}}\n{body}\\end{{document}}\n"
     )
+}
+
+/// The transfer entries as one matrix of fractions; `true` when `key` was written here.
+fn transfer_latex<K: Field>(out: &mut String, st: &Step<K>, key: &str) -> bool {
+    if st.kind != StepKind::TransferEntries {
+        return false;
+    }
+    if key != "num" {
+        return true; // `den`, `p` are part of the fractions
+    }
+    let (Some(num), Some(den)) = (st.polys("num"), st.polys("den")) else {
+        return true;
+    };
+    let p = st.count("p").unwrap_or(1).max(1);
+    let m = num.len() / p;
+    out.push_str("\\[ G(s) = \\begin{bmatrix}\n");
+    for i in 0..p {
+        let row: Vec<String> = (0..m)
+            .map(|j| {
+                let (n, d) = (&num[i * m + j], &den[i * m + j]);
+                let nl = poly_latex(n, "s");
+                if d.deg() == 0 {
+                    nl
+                } else {
+                    format!("\\dfrac{{{nl}}}{{{}}}", poly_latex(d, "s"))
+                }
+            })
+            .collect();
+        let _ = writeln!(out, "{} \\\\", row.join(" & "));
+    }
+    out.push_str("\\end{bmatrix} \\]\n");
+    true
 }

@@ -71,6 +71,22 @@ pub fn invariant_zeros<K: Field>(
     c: &Matrix<K>,
     d: &Matrix<K>,
 ) -> Result<InvariantZeros<K>> {
+    invariant_zeros_recorded(a, b, c, d, None)
+}
+
+/// [`invariant_zeros`], recording its steps into `rec` (`zeros --steps`, see
+/// [`crate::structure::steps`]): the compression, the pencil, the SCB's steps, the normal rank
+/// (or the diagonal form on the fallback path).
+///
+/// # Errors
+/// As [`invariant_zeros`].
+pub fn invariant_zeros_recorded<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+    mut rec: crate::structure::scb::steps::Rec<'_, '_, K>,
+) -> Result<InvariantZeros<K>> {
     let (n, m, p) = check(a, b, c, d)?;
     // 1. independent input columns of [B; D] and output rows of [C, D]
     let (_, cols) = b.vstack(d)?.rref();
@@ -80,12 +96,15 @@ pub fn invariant_zeros<K: Field>(
         d.select_cols(&cols).select_rows(&rows),
     );
     let cc = c.select_rows(&rows);
+    if let Some(r) = rec.as_deref_mut() {
+        super::steps::compress(r, [a, b, c, d], &cols, &rows);
+    }
     // 2. the SCB of the compressed system (verified at construction)
-    let Ok(s) = crate::structure::scb::scb(a, &bc, &cc, &dc) else {
-        return invariant_zeros_smith(a, b, c, d);
+    let Ok(s) = crate::structure::scb::scb_recorded(a, &bc, &cc, &dc, rec.as_deref_mut()) else {
+        return invariant_zeros_smith_recorded(a, b, c, d, rec);
     };
     if !s.verified {
-        return invariant_zeros_smith(a, b, c, d);
+        return invariant_zeros_smith_recorded(a, b, c, d, rec);
     }
     let polynomial = s.invariant_zero_polynomial().monic();
     // 3. normal rank at a point that is not a zero
@@ -96,7 +115,11 @@ pub fn invariant_zeros<K: Field>(
     }
     let shift = Matrix::identity(k.clone(), n).scale(&k.from_i64(s0));
     let top = a.try_sub(&shift)?.hstack(b)?;
-    let normal_rank = top.vstack(&c.hstack(d)?)?.rank();
+    let ps0 = top.vstack(&c.hstack(d)?)?;
+    let normal_rank = ps0.rank();
+    if let Some(r) = rec {
+        super::steps::normal_rank(r, &k.from_i64(s0), &ps0, normal_rank, &polynomial);
+    }
     Ok(InvariantZeros {
         polynomial,
         normal_rank,
@@ -136,6 +159,17 @@ pub fn invariant_zeros_smith<K: Field>(
     c: &Matrix<K>,
     d: &Matrix<K>,
 ) -> Result<InvariantZeros<K>> {
+    invariant_zeros_smith_recorded(a, b, c, d, None)
+}
+
+/// [`invariant_zeros_smith`], recording the diagonal into `rec`.
+fn invariant_zeros_smith_recorded<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+    rec: crate::structure::scb::steps::Rec<'_, '_, K>,
+) -> Result<InvariantZeros<K>> {
     let k = a.field().clone();
     let (n, m, p) = check(a, b, c, d)?;
     let cst = |x: &K::Elem| Poly::constant(k.clone(), x.clone());
@@ -162,6 +196,9 @@ pub fn invariant_zeros_smith<K: Field>(
     let mut poly = Poly::one(k.clone());
     for dgl in &diag {
         poly = poly.mul(dgl);
+    }
+    if let Some(r) = rec {
+        super::steps::smith(r, &diag, &poly.monic());
     }
     Ok(InvariantZeros {
         polynomial: poly.monic(),

@@ -17,6 +17,7 @@ pub mod dcgain;
 mod display;
 pub mod interconnect;
 pub mod margins;
+pub mod steps;
 pub mod time_response;
 pub mod transfer;
 pub mod transfer_algebra;

@@ -121,9 +121,24 @@ impl<K: Field> StateSpace<K> {
     /// # Errors
     /// Never for a valid system (shapes are checked at construction).
     pub fn transfer_matrix(&self) -> Result<TransferMatrix<K>> {
+        self.transfer_matrix_recorded(None)
+    }
+
+    /// [`StateSpace::transfer_matrix`], recording its steps into `rec` (`tf --steps`, see
+    /// [`super::steps`]).
+    ///
+    /// # Errors
+    /// As [`StateSpace::transfer_matrix`].
+    pub fn transfer_matrix_recorded(
+        &self,
+        mut rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,
+    ) -> Result<TransferMatrix<K>> {
         let k = self.field().clone();
         let n = self.nstates();
         let cp = self.a.charpoly()?;
+        if let Some(r) = rec.as_deref_mut() {
+            super::steps::charpoly(r, &self.a, &cp);
+        }
         // numerator polynomial matrix N(s) = sum_k s^{n-1-k} C R_k B, with
         // C R_k B = sum_{j <= k} c_{n-k+j} h_j from the Markov parameters h_j = C A^j B
         // (products of A with the n x m matrix A^j B, not with n x n matrices)
@@ -136,6 +151,9 @@ impl<K: Field> StateSpace<K> {
                 w = &self.a * &w;
             }
             markov.push(&self.c * &w);
+        }
+        if let Some(r) = rec.as_deref_mut() {
+            super::steps::markov(r, self, &markov);
         }
         for kk in 0..n {
             for (j, h) in markov.iter().enumerate().take(kk + 1) {
@@ -150,7 +168,10 @@ impl<K: Field> StateSpace<K> {
                 }
             }
         }
-        let entries = (0..p)
+        if let Some(r) = rec.as_deref_mut() {
+            super::steps::numerators(r, self, &num, &cp);
+        }
+        let entries: Vec<Vec<RationalFunction<K>>> = (0..p)
             .map(|i| {
                 (0..m)
                     .map(|j| {
@@ -165,6 +186,15 @@ impl<K: Field> StateSpace<K> {
                     .collect()
             })
             .collect();
-        Ok(TransferMatrix { entries })
+        let g = TransferMatrix { entries };
+        if let Some(r) = rec {
+            let all = || g.entries.iter().flat_map(|r| r.iter());
+            let nd = (
+                all().map(|f| f.num.clone()).collect(),
+                all().map(|f| f.den.clone()).collect(),
+            );
+            super::steps::entries(r, self, nd, g.matches_markov(self));
+        }
+        Ok(g)
     }
 }

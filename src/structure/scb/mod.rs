@@ -29,6 +29,7 @@ mod extension;
 mod nonstrict;
 mod silverman;
 mod split;
+pub mod steps;
 mod verify;
 
 pub use verify::{Pattern, check_pattern};
@@ -95,6 +96,22 @@ pub struct Scb<K: Field> {
 /// assert!(s.verified);
 /// ```
 pub fn scb<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>) -> Result<Scb<K>> {
+    scb_recorded(a, b, c, d, None)
+}
+
+/// [`scb`], recording its steps (SCB paper sec. III) into `rec` ([`steps`]): the
+/// pre-transformation, every $\bar S_i$ and $\bar\phi_i$, the states $x_s$, the Kalman split,
+/// the SCB and its zero dynamics.
+///
+/// # Errors
+/// As [`scb`].
+pub fn scb_recorded<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+    mut rec: steps::Rec<'_, '_, K>,
+) -> Result<Scb<K>> {
     check_shapes(a, b, c, d)?;
     let k = a.field().clone();
     let (n, m, p) = (a.nrows(), b.ncols(), c.nrows());
@@ -119,7 +136,10 @@ pub fn scb<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>)
     let a1 = a - &(&b0 * &c0);
     let b1 = bh.submatrix(0, n, m0, m);
     let c1 = ch.submatrix(m0, p, 0, n);
-    let sp = split::strictly_proper(&a1, &b1, &c1)?;
+    if let Some(r) = rec.as_deref_mut() {
+        steps::pre_transform(r, (&pre.u, &pre.yinv, m0), d, [&a1, &b1, &c1]);
+    }
+    let sp = split::strictly_proper(&a1, &b1, &c1, rec.as_deref_mut())?;
     let gamma1 = sp.t.inverse()?;
     let id0 = Matrix::identity(k.clone(), m0);
     let gamma2 = Matrix::block_diag(k.clone(), &[id0.clone(), sp.g2inv.inverse()?]);
@@ -147,6 +167,9 @@ pub fn scb<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, d: &Matrix<K>)
     };
     s.check()?;
     s.verified = true;
+    if let Some(r) = rec {
+        steps::form(r, &s);
+    }
     Ok(s)
 }
 

@@ -12,6 +12,7 @@
 //! Then $\bar\phi_i$ does the same with the candidate rows $\bar C_i = C_i \hat A$ against all
 //! rows found so far: dependent combinations end as $x_b$ chains of length $i$.
 
+use super::steps::Rec;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -72,7 +73,13 @@ fn add_scaled<K: Field>(acc: &mut Matrix<K>, c: &K::Elem, m: &Matrix<K>, row_off
 
 /// Runs the iterations on a strictly proper $(\hat A, \hat B, \hat C)$ with $\hat B$ of full
 /// column rank and $\hat C$ of full row rank.
-pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -> Chains<K> {
+/// With a recorder, each $\bar S_i$ and $\bar\phi_i$ is recorded as a step.
+pub(crate) fn silverman<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    mut rec: Rec<'_, '_, K>,
+) -> Chains<K> {
     let k = a.field().clone();
     let (n, m) = (a.nrows(), b.ncols());
     let mut active: Vec<Matrix<K>> = (0..c.nrows()).map(|i| c.select_rows(&[i])).collect();
@@ -85,10 +92,14 @@ pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -
         let ci = level_rows(&k, n, &active, i - 1);
         let cib = &ci * b;
         let qbar = dbar.nrows();
-        let nl = dbar.vstack(&cib).expect("same cols").left_nullspace();
+        let stacked = dbar.vstack(&cib).expect("same cols");
+        let nl = stacked.left_nullspace();
         let s_ib = nl.submatrix(0, nl.nrows(), 0, qbar);
         let s_i2 = nl.submatrix(0, nl.nrows(), qbar, qbar + active.len());
         let ending = leading_one_complement(&s_i2);
+        if let Some(r) = rec.as_deref_mut() {
+            super::steps::silverman_s(r, (i, &ended), &ci, &stacked, &nl, &ending);
+        }
         let mut continuing = Vec::with_capacity(nl.nrows());
         for r in 0..nl.nrows() {
             let mut ch = Matrix::zeros(k.clone(), i, n);
@@ -122,6 +133,9 @@ pub(crate) fn silverman<K: Field>(a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>) -
         let nl = existing.vstack(&cbar).expect("same cols").left_nullspace();
         let phi_2 = nl.submatrix(0, nl.nrows(), ne, ne + continuing.len());
         let going_on = leading_one_complement(&phi_2);
+        if let Some(r) = rec.as_deref_mut() {
+            super::steps::silverman_phi(r, i, &existing, &cbar, &nl, &going_on);
+        }
         for r in 0..nl.nrows() {
             let mut ch = Matrix::zeros(k.clone(), i, n);
             for (cidx, chain) in continuing.iter().enumerate() {

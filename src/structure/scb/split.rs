@@ -13,6 +13,7 @@
 //! as one triangular recursion.
 
 use super::silverman::{Chains, align_b, leading_one_complement, silverman, unit_rows, vstack_all};
+use super::steps::Rec;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -47,10 +48,11 @@ pub(crate) fn strictly_proper<K: Field>(
     a: &Matrix<K>,
     b: &Matrix<K>,
     c: &Matrix<K>,
+    mut rec: Rec<'_, '_, K>,
 ) -> Result<StrictScb<K>> {
     let k = a.field().clone();
     let n = a.nrows();
-    let Chains { d, b: braw, dbar } = silverman(a, b, c);
+    let Chains { d, b: braw, dbar } = silverman(a, b, c, rec.as_deref_mut());
     let md = d.len();
     let tb_raw = vstack_all(&k, n, &braw.iter().collect::<Vec<_>>());
     let tb = align_b(a, &tb_raw, &d)?;
@@ -107,7 +109,10 @@ pub(crate) fn strictly_proper<K: Field>(
     let ts = &ts0 + &(&ks * &tbd);
     // ---- x_a, x_c: Kalman controllable form of (X, B_sc) ----
     let bsc = (&(&ts * b) * &g3).submatrix(0, ns, md, b.ncols());
-    let (p, na) = controllable_split(&x, &bsc)?;
+    if let Some(r) = rec.as_deref_mut() {
+        super::steps::states(r, [a, b, c], [&ts0, &ts], &x, &g3, md);
+    }
+    let (p, na) = controllable_split(&x, &bsc, rec)?;
     let ac = &p.inverse()? * &ts;
     let t = vstack_all(
         &k,
@@ -147,6 +152,7 @@ pub(crate) fn strictly_proper<K: Field>(
 pub(crate) fn controllable_split<K: Field>(
     x: &Matrix<K>,
     bsc: &Matrix<K>,
+    rec: Rec<'_, '_, K>,
 ) -> Result<(Matrix<K>, usize)> {
     let ns = x.nrows();
     let mut ctr = bsc.clone();
@@ -161,6 +167,9 @@ pub(crate) fn controllable_split<K: Field>(
     if p.rank() < ns {
         t2 = t1.complete_basis();
         p = t2.hstack(&t1)?;
+    }
+    if let Some(r) = rec {
+        super::steps::kalman_split(r, x, bsc, &ctr, &p, t2.ncols());
     }
     Ok((p, t2.ncols()))
 }
