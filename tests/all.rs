@@ -105,6 +105,8 @@ mod qp_conditions;
 mod qp_kernels;
 #[path = "qp_scale.rs"]
 mod qp_scale;
+#[path = "readable_text.rs"]
+mod readable_text;
 #[path = "realization.rs"]
 mod realization;
 #[path = "realization_planted.rs"]
