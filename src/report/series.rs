@@ -104,7 +104,7 @@ fn fit_columns(rows: &mut [Vec<String>]) -> Option<String> {
     }
     rows.iter_mut().for_each(|r| r.truncate(keep));
     Some(format!(
-        "columns {}..{ncols} of the table are left out here (too wide)",
+        "columns {}..{ncols} of the table left out here: too wide",
         keep + 1
     ))
 }
@@ -306,9 +306,12 @@ fn freq_series(r: &Report, pad: &str) -> Option<String> {
             .collect();
         if let Some((hi, _)) = arg_extremes(&col) {
             extra.push(hi);
+            let name = header
+                .get(1 + 2 * c)
+                .map_or("G", |h| h.trim_end_matches(" (dB)"));
+            let name = if name == "magnitude" { "G" } else { name };
             s.push_str(&format!(
-                "{pad}  channel {}: peak |G| = {} ({} dB) at f = {} Hz; at f = {} Hz: {} dB\n",
-                c + 1,
+                "{pad}  {name}: peak |G| = {} ({} dB) at f = {} Hz; at f = {} Hz: {} dB\n",
                 sig(col[hi]),
                 sig(20.0 * col[hi].log10()),
                 sig(f[hi]),

@@ -84,7 +84,7 @@ fn system(r: &Report) -> Vec<String> {
     let name = s(r, "name");
     let mut out = vec![if name.is_empty() { s(r, "file") } else { name }];
     out.push(format!(
-        "field {}, order {} ({} inputs, {} outputs), {}",
+        "field {}, order {}, inputs {}, outputs {}, {}",
         s(r, "field"),
         s(r, "states"),
         s(r, "inputs"),
@@ -120,7 +120,7 @@ fn scb(r: &Report) -> Vec<String> {
         .map(mult)
         .sum();
     vec![format!(
-        "special coordinate basis: dims {}, chains {}, {zeros} invariant zeros (roots of z(s)), left/right invertible {}/{}",
+        "dims {}, chains {}, {zeros} invariant zeros (roots of z(s)), left/right invertible {}/{}",
         s(r, "dims"),
         s(r, "chains"),
         s(r, "left_invertible"),
@@ -132,7 +132,7 @@ fn zeros(r: &Report) -> Vec<String> {
     let zs = items(r, "invariant_zeros");
     let n: i64 = zs.iter().filter_map(obj).map(mult).sum();
     let mut out = vec![format!(
-        "invariant zeros: {n}, minimum phase {}, normal rank {}",
+        "{n}, minimum phase {}, normal rank {}",
         s(r, "minimum_phase"),
         s(r, "normal_rank")
     )];
@@ -177,7 +177,7 @@ fn jordan(r: &Report) -> Vec<String> {
     let n: i64 = eigs.iter().map(|e| mult(e)).sum();
     let mut out = vec![
         format!(
-            "eigenvalues: {n} (roots of chi(s)), {} distinct: {}",
+            "{n} eigenvalues (roots of chi(s)), {} distinct: {}",
             eigs.len(),
             values_line(items(r, "eigenvalues"))
         ),
@@ -209,7 +209,7 @@ fn modes(r: &Report) -> Vec<String> {
         })
         .collect();
     vec![format!(
-        "modes: {} (frequencies in Hz: {})",
+        "{} modes (frequencies in Hz: {})",
         ms.len(),
         f.join(", ")
     )]
