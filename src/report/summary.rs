@@ -75,7 +75,7 @@ fn values_line(xs: &[Value]) -> String {
     }
     let approx: Vec<String> = objs
         .iter()
-        .filter_map(|r| approx(r).map(|z| with_mult(short_complex(z), *r)))
+        .filter_map(|r| approx(r).map(|z| with_mult(short_complex(z), r)))
         .collect();
     format!("~ {}", approx.join(", "))
 }
