@@ -5,7 +5,11 @@
 //! digits per entry, under a line giving its shape and the length of its longest exact entry;
 //! a matrix wider than the terminal width is printed in column blocks. `--full` prints every
 //! exact entry; JSON and LaTeX are always complete. [`Value::Alt`] values show their own text
-//! (a table, or nothing) in place of their data.
+//! (a table, or nothing, or summary lines) in place of their data. Compact mode also shows
+//! a table of more than 25 rows by 21 evenly spaced rows and a list of more than
+//! [`LONG_LIST`] numbers by its first and last items; float series (`step`, `sweep`, ...)
+//! are shown by [`super::series`]. Floats are written to 6 significant digits ([`sig`]), and
+//! every line longer than [`MAX_LINE`] characters is wrapped ([`wrap_lines`]).
 
 use super::{Alt, AltText, MatrixOut, Report, Value};
 
@@ -78,7 +82,7 @@ fn item_text(s: &mut String, k: &str, v: &Value, indent: usize, o: &TextOptions)
             r.text_into(s, indent + 2, o);
         }
         Value::Alt(a) => alt_text(s, k, a, indent, o),
-        Value::List(xs) if xs.len() > LONG_LIST && xs.iter().all(is_scalar) => {
+        Value::List(xs) if !o.full && xs.len() > LONG_LIST && xs.iter().all(is_scalar) => {
             s.push_str(&format!("{pad}{k}: {}\n", long_list(xs)));
         }
         Value::List(xs)
@@ -108,7 +112,11 @@ fn alt_text(s: &mut String, k: &str, a: &Alt, indent: usize, o: &TextOptions) {
     match &a.text {
         AltText::Hidden => {}
         AltText::Table { header, rows } => {
-            let idx = super::series::sample_rows(rows.len(), &[]);
+            let idx = if o.full {
+                (0..rows.len()).collect()
+            } else {
+                super::series::sample_rows(rows.len(), &[])
+            };
             if idx.len() < rows.len() {
                 s.push_str(&format!(
                     "{pad}{k} ({} of {} rows, evenly spaced; all rows: --format json):\n",
