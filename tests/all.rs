@@ -113,6 +113,8 @@ mod qp_kernels;
 mod qp_scale;
 #[path = "qp_scale_kernels.rs"]
 mod qp_scale_kernels;
+#[path = "readable_text.rs"]
+mod readable_text;
 #[path = "realization.rs"]
 mod realization;
 #[path = "realization_planted.rs"]

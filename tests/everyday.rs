@@ -292,7 +292,9 @@ fn compact_text_by_default_full_on_request() {
 #[test]
 fn freqresp_and_modes_as_tables() {
     let f = "tests/data/everyday/quarter_car.json";
-    let (code, out, _) = cli(&["freqresp", f, "--points", "5"]);
+    let (code, out, _) = cli(&[
+        "freqresp", f, "--points", "5", "--from", "0.01", "--to", "10",
+    ]);
     assert_eq!(code, 0);
     assert!(
         out.contains("frequency (Hz)  magnitude (dB)  phase (deg)"),

@@ -223,8 +223,8 @@ fn commands(file: &Path) -> Vec<Command> {
         Command::Modes { file: f() },
         Command::Freqresp {
             file: f(),
-            from: 0.1,
-            to: 10.0,
+            from: Some(0.1),
+            to: Some(10.0),
             points: 5,
             svg: None,
             csv: None,

@@ -371,17 +371,11 @@ impl SystemVisitor for FileCommand<'_> {
             } => {
                 let (_, ins, outs) = super::plots::names(f, path, s.ninputs(), s.noutputs());
                 let names = (ins.as_slice(), outs.as_slice());
-                let r = super::float_cmds::freqresp(
-                    t,
-                    path,
-                    names,
-                    *from,
-                    *to,
-                    *points,
-                    csv.as_deref(),
-                )?;
+                let (from, to) = super::plots::bode_range(t, path, *from, *to)?;
+                let r =
+                    super::float_cmds::freqresp(t, path, names, from, to, *points, csv.as_deref())?;
                 if let Some(out) = svg {
-                    super::plots::bode_file(f, t, path, (*from, *to, *points), out)?;
+                    super::plots::bode_file(f, t, path, (from, to, *points), out)?;
                 }
                 Ok(Outcome::plain(r))
             }

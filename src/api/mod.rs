@@ -139,12 +139,14 @@ pub enum Command {
     Freqresp {
         /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
-        /// Lowest frequency in Hz (> 0).
-        #[arg(long, default_value_t = 0.01, value_name = "HZ")]
-        from: f64,
-        /// Highest frequency in Hz (> --from).
-        #[arg(long, default_value_t = 10.0, value_name = "HZ")]
-        to: f64,
+        /// Lowest frequency in Hz (> 0); default: a decade below the slowest pole or zero
+        /// (0.01 Hz when there is none besides 0).
+        #[arg(long, value_name = "HZ")]
+        from: Option<f64>,
+        /// Highest frequency in Hz (> --from); default: a decade above the fastest pole or
+        /// zero (10 Hz when there is none besides 0).
+        #[arg(long, value_name = "HZ")]
+        to: Option<f64>,
         /// Number of frequencies, logarithmically spaced from --from to --to (2 to 100000;
         /// points x outputs x inputs at most 1000000).
         #[arg(long, default_value_t = 200, value_name = "N")]

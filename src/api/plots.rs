@@ -134,6 +134,48 @@ pub fn bode_grid_two_sided(from: f64, to: f64, points: usize, poles: &[(f64, f64
     neg.iter().rev().map(|f| -f).chain(pos).collect()
 }
 
+/// The frequency range of `freqresp` (Hz): as given, else chosen from the poles and the
+/// invariant zeros ([`crate::report::plot::bode::default_range`]).
+pub fn bode_range<K: Field>(
+    t: &TypedSystem<K>,
+    path: &Path,
+    from: Option<f64>,
+    to: Option<f64>,
+) -> Result<(f64, f64), Failure> {
+    if let (Some(a), Some(b)) = (from, to) {
+        return Ok((a, b));
+    }
+    let mut pts = vec![];
+    let pairs = |v: Vec<nalgebra::Complex<f64>>| v.into_iter().map(|z| (z.re, z.im));
+    // the range only frames the plot: a float failure leaves those points out
+    match &super::float_cmds::float_abcd(t, path)? {
+        super::float_cmds::FloatAbcd::Real([a, b, c, d]) => {
+            if a.nrows() > 0 {
+                pts.extend(float::eigenvalues(a).map(pairs).into_iter().flatten());
+            }
+            if b.ncols() > 0 && c.nrows() > 0 {
+                let z = float::invariant_zeros(a, b, c, d, &float::Tol::default());
+                pts.extend(z.map(pairs).into_iter().flatten());
+            }
+        }
+        super::float_cmds::FloatAbcd::Complex([a, ..]) if a.nrows() > 0 => {
+            let n = a.nrows();
+            pts.extend(
+                nalgebra::Schur::try_new(a.clone(), f64::EPSILON, 200 * n.max(10))
+                    .and_then(|s| s.eigenvalues())
+                    .map_or_else(Vec::new, |v| v.iter().map(|z| (z.re, z.im)).collect()),
+            );
+        }
+        super::float_cmds::FloatAbcd::Complex(_) => {}
+    }
+    let (lo, hi) = crate::report::plot::bode::default_range(&pts);
+    Ok(match (from, to) {
+        (Some(a), None) => (a, if hi > a { hi } else { a * 1000.0 }),
+        (None, Some(b)) => (if lo < b { lo } else { b / 1000.0 }, b),
+        _ => (lo, hi),
+    })
+}
+
 /// Writes the Bode SVG of `freqresp --svg`: one-sided for a real system, over negative and
 /// positive frequencies for a complex one.
 pub fn bode_file<K: Field>(

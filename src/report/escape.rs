@@ -64,6 +64,9 @@ fn escape_control_value(v: &Value) -> Value {
         Value::Alt(a) => {
             let text = match &a.text {
                 AltText::Hidden => AltText::Hidden,
+                AltText::Summary(lines) => {
+                    AltText::Summary(lines.iter().map(|x| escape_control(x)).collect())
+                }
                 AltText::Table { header, rows } => AltText::Table {
                     header: header.iter().map(|x| escape_control(x)).collect(),
                     rows: rows

@@ -10,9 +10,11 @@ pub mod latex;
 pub mod numbers;
 pub mod plot;
 pub mod sections;
+pub mod series;
 pub mod steps;
 pub mod steps_latex;
 pub mod steps_more;
+pub mod summary;
 pub mod text;
 
 pub use text::{TextOptions, text_matrix};
@@ -97,6 +99,8 @@ pub enum AltText {
         header: Vec<String>,
         rows: Vec<Vec<String>>,
     },
+    /// Short lines in the command line's compact text; the data itself with `--full`.
+    Summary(Vec<String>),
 }
 
 impl Value {

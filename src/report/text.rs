@@ -5,7 +5,11 @@
 //! digits per entry, under a line giving its shape and the length of its longest exact entry;
 //! a matrix wider than the terminal width is printed in column blocks. `--full` prints every
 //! exact entry; JSON and LaTeX are always complete. [`Value::Alt`] values show their own text
-//! (a table, or nothing) in place of their data.
+//! (a table, or nothing, or summary lines) in place of their data. Compact mode also shows
+//! a table of more than 25 rows by 21 evenly spaced rows and a list of more than
+//! [`LONG_LIST`] numbers by its first and last items; float series (`step`, `sweep`, ...)
+//! are shown by [`super::series`]. Floats are written to 6 significant digits ([`sig`]), and
+//! every line longer than [`MAX_LINE`] characters is wrapped ([`wrap_lines`]).
 
 use super::{Alt, AltText, MatrixOut, Report, Value};
 
@@ -47,15 +51,23 @@ impl Report {
     pub fn to_text_with(&self, o: &TextOptions) -> String {
         let mut s = String::new();
         self.text_into(&mut s, 0, o);
-        s
+        wrap_lines(&s, MAX_LINE)
     }
     fn text_into(&self, s: &mut String, indent: usize, o: &TextOptions) {
         let pad = " ".repeat(indent);
         if let Some(t) = &self.title {
             s.push_str(&format!("{pad}== {t} ==\n"));
         }
+        let series = super::series::series_text(self, indent);
         for (k, v) in &self.items {
-            item_text(s, k, v, indent, o);
+            match &series {
+                Some((text, keys)) if keys.contains(&k.as_str()) => {
+                    if k == keys[0] {
+                        s.push_str(text);
+                    }
+                }
+                _ => item_text(s, k, v, indent, o),
+            }
         }
     }
 }
@@ -69,7 +81,10 @@ fn item_text(s: &mut String, k: &str, v: &Value, indent: usize, o: &TextOptions)
             s.push_str(&format!("{pad}{k}:\n"));
             r.text_into(s, indent + 2, o);
         }
-        Value::Alt(a) => alt_text(s, k, a, indent),
+        Value::Alt(a) => alt_text(s, k, a, indent, o),
+        Value::List(xs) if !o.full && xs.len() > LONG_LIST && xs.iter().all(is_scalar) => {
+            s.push_str(&format!("{pad}{k}: {}\n", long_list(xs)));
+        }
         Value::List(xs)
             if xs
                 .iter()
@@ -83,7 +98,7 @@ fn item_text(s: &mut String, k: &str, v: &Value, indent: usize, o: &TextOptions)
                         r.text_into(s, indent + 4, o);
                     }
                     Value::Matrix(mo) => matrix_text(s, &format!("{pad}  - "), mo, indent + 4, o),
-                    Value::Alt(a) => alt_text(s, "-", a, indent + 2),
+                    Value::Alt(a) => alt_text(s, "-", a, indent + 2, o),
                     other => s.push_str(&format!("{pad}  - {}\n", inline_text(other))),
                 }
             }
@@ -92,17 +107,110 @@ fn item_text(s: &mut String, k: &str, v: &Value, indent: usize, o: &TextOptions)
     }
 }
 
-fn alt_text(s: &mut String, k: &str, a: &Alt, indent: usize) {
+fn alt_text(s: &mut String, k: &str, a: &Alt, indent: usize, o: &TextOptions) {
     let pad = " ".repeat(indent);
     match &a.text {
         AltText::Hidden => {}
         AltText::Table { header, rows } => {
-            s.push_str(&format!("{pad}{k}:\n"));
+            let idx = if o.full {
+                (0..rows.len()).collect()
+            } else {
+                super::series::sample_rows(rows.len(), &[])
+            };
+            if idx.len() < rows.len() {
+                s.push_str(&format!(
+                    "{pad}{k} ({} of {} rows, evenly spaced; all rows: --format json):\n",
+                    idx.len(),
+                    rows.len()
+                ));
+            } else {
+                s.push_str(&format!("{pad}{k}:\n"));
+            }
             let mut all = vec![header.clone()];
-            all.extend(rows.iter().cloned());
+            all.extend(idx.into_iter().map(|i| rows[i].clone()));
             s.push_str(&text_table(&all, indent + 2));
         }
+        AltText::Summary(lines) if !o.full => {
+            for l in lines {
+                s.push_str(&format!("{pad}{l}\n"));
+            }
+        }
+        AltText::Summary(_) => item_text(s, k, &a.data, indent, o),
     }
+}
+
+/// Lists longer than this (of numbers or strings) show their first and last items in text.
+const LONG_LIST: usize = 24;
+
+fn is_scalar(v: &Value) -> bool {
+    matches!(
+        v,
+        Value::Null | Value::Bool(_) | Value::Int(_) | Value::Float(_) | Value::Str(_)
+    )
+}
+
+/// `[x1, ..., x8, ..., xn]` with the count: a long list in one line.
+fn long_list(xs: &[Value]) -> String {
+    let head: Vec<String> = xs[..8].iter().map(inline_text).collect();
+    let tail: Vec<String> = xs[xs.len() - 2..].iter().map(inline_text).collect();
+    format!(
+        "[{}, ..., {}] ({} items; all: --format json)",
+        head.join(", "),
+        tail.join(", "),
+        xs.len()
+    )
+}
+
+/// The longest line of any text output.
+pub const MAX_LINE: usize = 200;
+
+/// `text` with every line longer than `max` characters broken after a separator (`, `,
+/// ` + `, ` - `, a space) before the limit, continuation lines indented 4 more than the
+/// line's own indentation (a run without a separator is cut at the limit).
+pub fn wrap_lines(text: &str, max: usize) -> String {
+    if text.lines().all(|l| l.chars().count() <= max) {
+        return text.to_string();
+    }
+    let mut out = String::with_capacity(text.len() + text.len() / 50);
+    for line in text.split_inclusive('\n') {
+        let (body, nl) = match line.strip_suffix('\n') {
+            Some(b) => (b, "\n"),
+            None => (line, ""),
+        };
+        if body.chars().count() <= max {
+            out.push_str(line);
+            continue;
+        }
+        let indent = body.chars().take_while(|c| *c == ' ').count();
+        let cont = " ".repeat((indent + 4).min(max / 2));
+        let mut rest: Vec<char> = body.chars().collect();
+        let mut first = true;
+        loop {
+            let room = if first { max } else { max - cont.len() };
+            if !first {
+                out.push_str(&cont);
+            }
+            if rest.len() <= room {
+                out.extend(rest.iter());
+                break;
+            }
+            // the last separator in the room (keep it on this line)
+            let cut = (room / 2..room)
+                .rev()
+                .find(|&i| rest[i] == ' ')
+                .map_or(room, |i| i + 1);
+            let head: String = rest[..cut].iter().collect();
+            out.push_str(head.trim_end());
+            out.push('\n');
+            rest.drain(..cut);
+            while rest.first() == Some(&' ') {
+                rest.remove(0);
+            }
+            first = false;
+        }
+        out.push_str(nl);
+    }
+    out
 }
 
 /// A matrix under `head` (`"T "`): exact, or approximate when its entries are long.
@@ -156,6 +264,45 @@ pub fn short(x: f64) -> String {
         t
     };
     if t == "-0" { "0".into() } else { t }
+}
+
+/// `x` to 6 significant digits, in scientific notation below 1e-4 or from 1e6 on
+/// (`6.6e-16`, `1.00087`, `0.0625`, `-12345.7`, `2.5e+06` is written `2.5e6`): never
+/// `0.0000000000` for a nonzero number.
+pub fn sig(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return short(x);
+    }
+    let e_form = format!("{x:.5e}");
+    let (mant, exp) = e_form.split_once('e').unwrap_or((&e_form, "0"));
+    let exp: i32 = exp.parse().unwrap_or(0);
+    if (-4..6).contains(&exp) {
+        let dec = (5 - exp).max(0) as usize;
+        trim_zeros(&format!("{x:.dec$}"))
+    } else {
+        format!("{}e{exp}", trim_zeros(mant))
+    }
+}
+
+fn trim_zeros(t: &str) -> String {
+    if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t.to_string()
+    }
+}
+
+/// `re + im i` to 6 significant digits (`1.5-0.25i`, `2i`).
+pub fn sig_complex((re, im): (f64, f64)) -> String {
+    if im == 0.0 {
+        sig(re)
+    } else if re == 0.0 {
+        format!("{}i", sig(im))
+    } else if im < 0.0 {
+        format!("{}-{}i", sig(re), sig(-im))
+    } else {
+        format!("{}+{}i", sig(re), sig(im))
+    }
 }
 
 /// `re + im i` to 4 significant digits (`1.5-0.25i`, `2i`).
@@ -232,7 +379,7 @@ pub(super) fn inline_text(v: &Value) -> String {
         Value::Null => "-".into(),
         Value::Bool(b) => b.to_string(),
         Value::Int(n) => n.to_string(),
-        Value::Float(x) => format!("{x:.10}"),
+        Value::Float(x) => sig(*x),
         Value::Str(s) => s.clone(),
         Value::Matrix(mo) => format!("{:?}", mo.exact),
         Value::List(xs) => format!(
@@ -299,6 +446,48 @@ mod tests {
         assert_eq!(short(1.23456e-5), "1.235e-5");
         assert_eq!(short_complex((1.5, -0.25)), "1.5-0.25i");
         assert_eq!(short_complex((0.0, 2.0)), "2i");
+    }
+
+    #[test]
+    fn significant_digits() {
+        assert_eq!(sig(6.6e-16), "6.6e-16");
+        assert_eq!(sig(1e-7), "1e-7");
+        assert_eq!(sig(1.000870001), "1.00087");
+        assert_eq!(sig(0.0625), "0.0625");
+        assert_eq!(sig(-0.0048875855), "-0.00488759");
+        assert_eq!(sig(2.5), "2.5");
+        assert_eq!(sig(0.0), "0");
+        assert_eq!(sig(999999.7), "1e6");
+        assert_eq!(sig(-123456.7), "-123457");
+        assert_eq!(sig(3.2e21), "3.2e21");
+        // property: every nonzero finite number prints nonzero and reads back within 6 digits
+        let mut g = crate::rng::SplitMix64(28);
+        for _ in 0..2000 {
+            let m = g.int(-999_999, 999_999) as f64 / 1000.0;
+            let x = m * 10f64.powi(g.int(-20, 20) as i32);
+            let t = sig(x);
+            let back: f64 = t.parse().unwrap();
+            assert!(x == 0.0 || back != 0.0, "{x} -> {t}");
+            assert!((back - x).abs() <= 5e-6 * x.abs(), "{x} -> {t}");
+        }
+    }
+
+    #[test]
+    fn wrapped_lines_keep_every_character() {
+        let long = format!(
+            "  k: [{}]\nshort\n",
+            (0..300)
+                .map(|i| i.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+        let w = wrap_lines(&long, 80);
+        assert!(w.lines().all(|l| l.chars().count() <= 80), "{w}");
+        let squash = |t: &str| t.split_whitespace().collect::<String>();
+        assert_eq!(squash(&w), squash(&long));
+        let run = "x".repeat(500);
+        let w = wrap_lines(&run, 200);
+        assert!(w.lines().all(|l| l.len() <= 200) && squash(&w) == run);
     }
 
     #[test]

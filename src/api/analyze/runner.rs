@@ -56,7 +56,10 @@ impl<'a> Sections<'a> {
     /// Adds a finished section and streams what is ready: nothing before some work is done
     /// (a report cut by `--max-seconds` before any section finished is not printed).
     pub fn push(&mut self, key: &str, v: Value) {
-        self.report.push(key, crate::report::numbers::unify(v));
+        let v = crate::report::numbers::unify(v);
+        // compact text: a few lines per section (`--full`: all of it; JSON: unchanged)
+        self.report
+            .push(key, crate::report::summary::analyze_section(key, v));
         let Some(tx) = self.events else { return };
         if self.done == 0 {
             return;

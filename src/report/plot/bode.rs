@@ -289,3 +289,50 @@ mod tests {
         assert!((ph[199] + 270.0).abs() < 5.0 && ph[0].abs() < 5.0);
     }
 }
+
+/// The frequency range (Hz) a Bode plot shows for these poles and zeros (`[re, im]` in
+/// rad/s): from a decade below the slowest nonzero one to a decade above the fastest, both
+/// rounded out to whole decades; 0.01 .. 10 Hz when there is none.
+pub fn default_range(points: &[(f64, f64)]) -> (f64, f64) {
+    let hz: Vec<f64> = points
+        .iter()
+        .map(|z| z.0.hypot(z.1) / (2.0 * std::f64::consts::PI))
+        .filter(|f| f.is_finite() && *f > 1e-12)
+        .collect();
+    if hz.is_empty() {
+        return (0.01, 10.0);
+    }
+    let lo = hz.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = hz.iter().copied().fold(0.0, f64::max);
+    let lo = 10f64.powf(lo.log10().floor() - 1.0).max(1e-12);
+    let hi = 10f64.powf(hi.log10().ceil() + 1.0).min(1e12);
+    (lo, hi.max(lo * 100.0))
+}
+
+#[cfg(test)]
+mod range_tests {
+    use super::default_range;
+
+    #[test]
+    fn range_covers_every_pole_and_zero_with_a_decade_each_side() {
+        assert_eq!(default_range(&[]), (0.01, 10.0));
+        assert_eq!(default_range(&[(0.0, 0.0)]), (0.01, 10.0));
+        // property: every corner frequency lies at least a decade inside the range
+        let mut g = crate::rng::SplitMix64(5);
+        for _ in 0..500 {
+            let pts: Vec<(f64, f64)> = (0..g.int(1, 6))
+                .map(|_| {
+                    let r = 10f64.powf(g.int(-400, 400) as f64 / 100.0);
+                    let a = g.int(0, 314) as f64 / 100.0;
+                    (-r * a.cos(), r * a.sin())
+                })
+                .collect();
+            let (lo, hi) = default_range(&pts);
+            assert!(lo < hi);
+            for (re, im) in &pts {
+                let f = re.hypot(*im) / (2.0 * std::f64::consts::PI);
+                assert!(lo <= f / 10.0 * (1.0 + 1e-9) && f * 10.0 <= hi * (1.0 + 1e-9));
+            }
+        }
+    }
+}

@@ -1,6 +1,7 @@
 //! Pole-zero map: poles as crosses, zeros as open circles in the complex plane, equal scales
-//! on both axes (unless the points' spread is very uneven), the imaginary axis (the stability boundary) drawn, multiplicities written
-//! beside their marker.
+//! on both axes (one unit is as many pixels on the real axis as on the imaginary axis, as
+//! `axis equal` draws it), the imaginary axis (the stability boundary) drawn, multiplicities
+//! written beside their marker.
 
 use super::svg::{Panel, Svg, finite_range, nice_range};
 use std::fmt::Write;
@@ -18,12 +19,8 @@ fn square_ranges(pts: &[Point], w: f64, h: f64) -> ((f64, f64), (f64, f64)) {
     };
     let (xl, xh) = pad(xl, xh);
     let (yl, yh) = pad(yl, yh);
-    // equal scale: widen the range that is short for its side, unless that would leave
-    // most of the panel empty (then each axis keeps its own scale)
+    // equal scale: widen the range that is short for its side
     let (ux, uy) = ((xh - xl) / w, (yh - yl) / h);
-    if ux.max(uy) > 3.0 * ux.min(uy) {
-        return (nice_range(xl, xh), nice_range(yl, yh));
-    }
     let unit = ux.max(uy);
     let (cx, cy) = ((xl + xh) / 2.0, (yl + yh) / 2.0);
     let xr = nice_range(cx - unit * w / 2.0, cx + unit * w / 2.0);

@@ -46,23 +46,39 @@ pub fn nice_range(lo: f64, hi: f64) -> (f64, f64) {
     ((lo / step).floor() * step, (hi / step).ceil() * step)
 }
 
-/// A tick label: short, no trailing zeros, exponent form for very large/small numbers.
+/// Decimals that write every multiple of `step` exactly (0.25 -> 2, 2.5 -> 1, 5 -> 0).
+fn step_decimals(step: f64) -> usize {
+    let step = step.abs();
+    (0..=12)
+        .find(|&d| {
+            let scaled = step * 10f64.powi(d);
+            (scaled - scaled.round()).abs() <= 1e-6 * scaled.max(1.0)
+        })
+        .unwrap_or(12) as usize
+}
+
+/// A tick label: short, no trailing zeros, exponent form for very large/small numbers; as
+/// many digits as the step needs, so that 0.25, 2.5 and 7.5 print as such.
 pub fn fmt_tick(x: f64, step: f64) -> String {
-    if x == 0.0 {
+    if x == 0.0 || x.abs() < 1e-9 * step.abs() {
         return "0".into();
     }
+    let trim = |s: String| {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    };
     if x.abs() >= 1e5 || x.abs() < 1e-3 {
-        // as many mantissa digits as the step needs: 8e-5, 1.2e-4
-        let digits = (x.abs().log10().floor() - step.abs().log10().floor()).clamp(0.0, 6.0);
-        return format!("{x:.*e}", digits as usize);
+        // as many mantissa digits as the step needs: 8e-5, 1.2e-4, 2.5e5
+        let e = x.abs().log10().floor() as i32;
+        let digits = step_decimals(step / 10f64.powi(e)).min(6);
+        let t = format!("{x:.digits$e}");
+        let (m, ex) = t.split_once('e').unwrap_or((&t, "0"));
+        return format!("{}e{ex}", trim(m.to_string()));
     }
-    let dec = (-step.log10().floor()).max(0.0) as usize;
-    let s = format!("{x:.dec$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    }
+    trim(format!("{x:.*}", step_decimals(step)))
 }
 
 /// A plot panel: data ranges mapped to a pixel rectangle.
@@ -442,6 +458,45 @@ pub fn finite_range(xs: impl IntoIterator<Item = f64>) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn tick_labels_are_exact_at_every_step() {
+        for (step, xs, want) in [
+            (0.25, [0.25, 0.5, 0.75], ["0.25", "0.5", "0.75"]),
+            (2.5, [2.5, 5.0, 7.5], ["2.5", "5", "7.5"]),
+            (0.025, [0.025, 0.05, 0.075], ["0.025", "0.05", "0.075"]),
+            (
+                250000.0,
+                [250000.0, 500000.0, 750000.0],
+                ["2.5e5", "5e5", "7.5e5"],
+            ),
+            (2.5e-5, [2.5e-5, 5e-5, 7.5e-5], ["2.5e-5", "5e-5", "7.5e-5"]),
+        ] {
+            for (x, w) in xs.iter().zip(want) {
+                assert_eq!(fmt_tick(*x, step), w, "{x} step {step}");
+            }
+        }
+        // property: on any nice tick set, labels are distinct and read back to the tick
+        for (lo, hi) in [
+            (0.0, 1.0),
+            (-3.0, 17.0),
+            (0.001, 0.0042),
+            (1e5, 9e5),
+            (-0.6, 0.6),
+        ] {
+            for n in 3..9 {
+                let (ts, step) = nice_ticks(lo, hi, n);
+                let labels: Vec<String> = ts.iter().map(|t| fmt_tick(*t, step)).collect();
+                for (t, l) in ts.iter().zip(&labels) {
+                    let back: f64 = l.parse().unwrap();
+                    assert!((back - t).abs() <= 1e-9 * step, "{t} -> {l} (step {step})");
+                }
+                let mut u = labels.clone();
+                u.dedup();
+                assert_eq!(u.len(), labels.len(), "{labels:?}");
+            }
+        }
+    }
 
     #[test]
     fn ticks_are_nice() {

@@ -126,8 +126,9 @@ pub fn sweep_svg(sw: &SweepResult, title: &str, xlabel: &str, marks: &[(f64, Str
     svg.finish()
 }
 
-/// Root locus: each eigenvalue branch as a curve in the complex plane, a circle at the
-/// first parameter value and a cross at the last.
+/// Root locus: each eigenvalue branch as a curve in the complex plane, a cross at the
+/// first parameter value (the open-loop poles of a gain sweep from 0) and a circle at the
+/// last (where the branches approach the zeros), as root-locus plots mark them.
 pub fn root_locus_svg(sw: &SweepResult, title: &str) -> String {
     let (vals, tr) = subsample(sw);
     let n = tr.iter().map(Vec::len).max().unwrap_or(0);
@@ -160,10 +161,10 @@ pub fn root_locus_svg(sw: &SweepResult, title: &str) -> String {
             .collect();
         svg.polyline(&p, &pts, c, 1.8, false);
         if let Some(z) = tr.first().and_then(|e| e.get(k)).filter(|z| inside(z)) {
-            svg.marker(&p, z.re, z.im, 'o', c);
+            svg.marker(&p, z.re, z.im, 'x', c);
         }
         if let Some(z) = tr.last().and_then(|e| e.get(k)).filter(|z| inside(z)) {
-            svg.marker(&p, z.re, z.im, 'x', c);
+            svg.marker(&p, z.re, z.im, 'o', c);
         }
     }
     if let (Some(a), Some(b)) = (vals.first(), vals.last()) {
@@ -172,7 +173,12 @@ pub fn root_locus_svg(sw: &SweepResult, title: &str) -> String {
             h - 12.0,
             "middle",
             11.0,
-            &format!("{} from {a} (o) to {b} (x)", sw.param),
+            &format!(
+                "{} from {} (x) to {} (o)",
+                sw.param,
+                super::svg::fmt_tick(*a, (b - a).abs().max(f64::MIN_POSITIVE) / 1e4),
+                super::svg::fmt_tick(*b, (b - a).abs().max(f64::MIN_POSITIVE) / 1e4)
+            ),
         );
     }
     svg.finish()
