@@ -19,7 +19,7 @@ pub const MAX_EXACT_ENTRY: usize = 24;
 /// How text is rendered.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TextOptions {
-    /// Every matrix in full (exact entries, one block of columns).
+    /// Every matrix in full (exact entries, column blocks of at most [`MAX_LINE`] characters).
     pub full: bool,
     /// Width of a line in characters (column blocks in compact mode).
     pub width: usize,
@@ -224,8 +224,10 @@ fn matrix_text(s: &mut String, head: &str, mo: &MatrixOut, indent: usize, o: &Te
         .max()
         .unwrap_or(0);
     if o.full {
+        // every exact entry, in column blocks that keep lines within MAX_LINE (an entry is
+        // never split unless it alone is wider than that)
         s.push_str(&format!("{head}{shape} =\n"));
-        s.push_str(&text_matrix(&mo.exact, indent + 2));
+        s.push_str(&blocks(&mo.exact, indent + 2, MAX_LINE));
     } else if longest <= MAX_EXACT_ENTRY {
         s.push_str(&format!("{head}{shape} =\n"));
         s.push_str(&blocks(&mo.exact, indent + 2, o.width));

@@ -185,6 +185,19 @@ fn depends(r: Report, key: &str) -> Report {
         match v {
             Value::Obj(r) => Value::Obj(depends(r, key)),
             Value::List(xs) => Value::List(xs.into_iter().map(|x| value(x, key)).collect()),
+            // an analyze section with its compact summary: the data, and the summary's
+            // "minimum phase -" (an undecided value) said the same way
+            Value::Alt(mut a) => {
+                a.data = value(a.data, key);
+                if let crate::report::AltText::Summary(lines) = &mut a.text {
+                    let undecided = format!("{} -", key.replace('_', " "));
+                    let said = format!("{} depends on parameters", key.replace('_', " "));
+                    for l in lines.iter_mut() {
+                        *l = l.replace(&undecided, &said);
+                    }
+                }
+                Value::Alt(a)
+            }
             v => v,
         }
     }
