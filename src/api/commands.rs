@@ -168,29 +168,10 @@ fn study(
     ctx: &RunContext,
 ) -> Result<Outcome, Failure> {
     match cmd {
-        Command::Sweep {
-            param,
-            from,
-            to,
-            points,
-            svg,
-            locus_svg,
-            csv,
-            ..
-        } => super::sweep::run(
-            &super::sweep::SweepArgs {
-                file: path,
-                param,
-                from: *from,
-                to: *to,
-                points: *points,
-                svg: svg.as_deref(),
-                locus_svg: locus_svg.as_deref(),
-                csv: csv.as_deref(),
-                at,
-            },
-            ctx.stdout,
-        ),
+        Command::Sweep { .. } => match super::sweep::SweepArgs::of(cmd, path, at) {
+            Some(args) => super::sweep::run(&args, ctx.stdout),
+            None => Err(not_a_sweep()),
+        },
         Command::Critical {
             param,
             from,
@@ -226,6 +207,14 @@ impl Default for RunContext {
 }
 
 /// The system file a command reads (`None`: `analyze` on the built-in example).
+/// [`super::sweep::SweepArgs::of`] answers every `Command::Sweep`; this is never reached.
+fn not_a_sweep() -> Failure {
+    Failure {
+        code: 1,
+        message: "internal: sweep arguments of a command that is not a sweep".into(),
+    }
+}
+
 pub(super) fn file_of(cmd: &Command) -> Option<&Path> {
     match cmd {
         Command::Jordan { file, .. }
@@ -286,30 +275,12 @@ impl SystemVisitor for FileCommand<'_> {
                 section_seconds, ..
             } => super::analyze::analyze_with(f, t, &analyze_options(*section_seconds, self.ctx)),
             // entries in Q(sqrt d) or Q(i): the system read again at each value
-            Command::Sweep {
-                param,
-                from,
-                to,
-                points,
-                svg,
-                locus_svg,
-                csv,
-                ..
-            } if matches!(f.ground, crate::io::Ground::Quadratic(_)) => super::sweep::run_field(
-                &super::sweep::SweepArgs {
-                    file: path,
-                    param,
-                    from: *from,
-                    to: *to,
-                    points: *points,
-                    svg: svg.as_deref(),
-                    locus_svg: locus_svg.as_deref(),
-                    csv: csv.as_deref(),
-                    at: &self.opts.at,
-                },
-                self.sys,
-                self.ctx.stdout,
-            ),
+            Command::Sweep { .. } if matches!(f.ground, crate::io::Ground::Quadratic(_)) => {
+                match super::sweep::SweepArgs::of(self.cmd, path, &self.opts.at) {
+                    Some(args) => super::sweep::run_field(&args, self.sys, self.ctx.stdout),
+                    None => Err(not_a_sweep()),
+                }
+            }
             Command::Sweep { .. } | Command::Critical { .. } if !self.from_file => Err(Failure {
                 code: 2,
                 message: format!(

@@ -25,6 +25,36 @@ pub struct SweepArgs<'a> {
     pub csv: Option<&'a Path>,
 }
 
+impl<'a> SweepArgs<'a> {
+    /// The arguments of a `sweep` command on the system at `file` (`None` for other commands).
+    pub fn of(cmd: &'a super::Command, file: &'a Path, at: &'a [(String, String)]) -> Option<Self> {
+        let super::Command::Sweep {
+            param,
+            from,
+            to,
+            points,
+            svg,
+            locus_svg,
+            csv,
+            ..
+        } = cmd
+        else {
+            return None;
+        };
+        Some(SweepArgs {
+            file,
+            param,
+            at,
+            from: *from,
+            to: *to,
+            points: *points,
+            svg: svg.as_deref(),
+            locus_svg: locus_svg.as_deref(),
+            csv: csv.as_deref(),
+        })
+    }
+}
+
 fn write(p: &Path, text: &str) -> Result<(), Failure> {
     std::fs::write(p, text).map_err(|e| Failure {
         code: 2,
