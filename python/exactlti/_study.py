@@ -1,7 +1,11 @@
 """Parameter studies of a system file: ``sweep`` and ``critical`` (the command line's
-``exactlti sweep`` and ``exactlti critical``)."""
+``exactlti sweep`` and ``exactlti critical``). The file is read by the library's one loader
+(the api's ``System``), as for every other method: over Q, Q(sqrt d) and Q(i) alike."""
+
+import json
 
 from . import _core
+from ._api import Report
 
 
 def sweep(path, param, values):
@@ -28,7 +32,8 @@ def critical(path, param, lo, hi, max_seconds=None):
     """Exact critical values of the parameter ``param`` on ``[lo, hi]`` (bounds exact:
     ints, ``Fraction`` or text such as ``"1/3"``): zero eigenvalues, imaginary pairs,
     double eigenvalues, each ``certified``; the intervals between them with stability; the
-    points where the family is undefined (``singular_values`` with a ``reason``).
+    points where the family is undefined (``singular_values`` with a ``reason``). The
+    command line's report (a :class:`Report`; ``omega`` is ``None`` where no pair crosses).
 
     >>> import exactlti, json, os, tempfile
     >>> p = os.path.join(tempfile.mkdtemp(), "c.json")
@@ -37,4 +42,9 @@ def critical(path, param, lo, hi, max_seconds=None):
     >>> [(x["value"], x["kind"]) for x in r["critical_values"]], r["verified"]
     ([('0', 'imaginary_pair'), ('2', 'double_eigenvalue')], True)
     """
-    return _core.critical(str(path), str(param), str(lo), str(hi), max_seconds)
+    argv = ["critical", str(path), "--param", str(param), "--from", str(lo), "--to", str(hi)]
+    text, verified, agree = _core.execute(argv, max_seconds)
+    r = Report(json.loads(text), verified, agree, op=" ".join(argv[:1] + argv[2:]))
+    for c in r["critical_values"]:
+        c.setdefault("omega", None)
+    return r

@@ -562,7 +562,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(load_json, m)?)?;
     m.add_function(wrap_pyfunction!(load_file, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep, m)?)?;
-    m.add_function(wrap_pyfunction!(study::critical, m)?)?;
+    m.add_function(wrap_pyfunction!(study::execute, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_test, m)?)?;
     m.add_function(wrap_pyfunction!(_sleep_for_test, m)?)?;
     m.add("UnsupportedError", m.py().get_type::<UnsupportedError>())?;

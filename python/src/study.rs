@@ -1,13 +1,14 @@
-//! Parameter studies of a system file: `sweep` (float eigenvalues along one parameter,
-//! finite eigenvalues of the pencil where E(v) is singular) and `critical` (exact critical
-//! values), as the command line's `sweep` and `critical`. A parameter the file does not
-//! name is refused (`ValueError` naming the parameters it has).
+//! Parameter studies of a system file, read by the api's one loader as the command line
+//! reads it: `sweep` (float eigenvalues along one parameter at given values, finite
+//! eigenvalues of the pencil where E(v) is singular; [`exactlti::api::sweep_file`]) and
+//! `execute` (any command on its file, e.g. `critical`, through
+//! [`exactlti::api::execute`]). A parameter the file does not name is refused
+//! (`ValueError` naming the parameters it has).
 
 use crate::out::{Out, usize_out};
 use crate::{FResult, Fail, run};
-use exactlti::study::{
-    CriticalValues, ParamFamily, PointStatus, SweepResult, critical_values, sweep as sweep_at,
-};
+use exactlti::api::sweep_file;
+use exactlti::study::{PointStatus, SweepResult};
 use pyo3::prelude::*;
 use std::path::Path;
 
@@ -61,55 +62,6 @@ fn sweep_out(sw: &SweepResult) -> Out {
     ])
 }
 
-fn critical_out(cv: &CriticalValues) -> Out {
-    let num = |a: &exactlti::algebraic::AlgebraicNumber| {
-        vec![
-            ("value", Out::Str(a.value_string())),
-            ("approx", Out::Float(a.approx().0)),
-        ]
-    };
-    let crit = cv
-        .critical
-        .iter()
-        .map(|c| {
-            let mut d = num(&c.value);
-            d.push(("kind", Out::Str(c.kind.name().into())));
-            d.push(("certified", Out::Bool(c.certified)));
-            d.push(("omega", c.omega.map_or(Out::None, Out::Float)));
-            Out::Dict(d)
-        })
-        .collect();
-    let sing = cv
-        .singular
-        .iter()
-        .zip(&cv.singular_reasons)
-        .map(|(a, why)| {
-            let mut d = num(a);
-            d.push(("reason", Out::Str(why.name().into())));
-            Out::Dict(d)
-        })
-        .collect();
-    let ivs = cv
-        .intervals
-        .iter()
-        .map(|iv| {
-            Out::Dict(vec![
-                ("from", Out::Str(iv.from.value_string())),
-                ("to", Out::Str(iv.to.value_string())),
-                ("stable", Out::Bool(iv.stable)),
-                ("unstable_eigenvalues", usize_out(iv.counts.unstable())),
-            ])
-        })
-        .collect();
-    Out::Dict(vec![
-        ("param", Out::Str(cv.param.clone())),
-        ("critical_values", Out::List(crit)),
-        ("singular_values", Out::List(sing)),
-        ("intervals", Out::List(ivs)),
-        ("verified", Out::Bool(cv.verified)),
-    ])
-}
-
 /// Eigenvalues of the system file's family at each of `values` of the parameter `param`.
 #[pyfunction]
 #[pyo3(signature = (path, param, values))]
@@ -120,31 +72,28 @@ pub(crate) fn sweep(
     values: Vec<f64>,
 ) -> PyResult<Py<PyAny>> {
     run(py, None, move || -> FResult<Out> {
-        let fam = ParamFamily::from_file(Path::new(&path), &param)?;
-        Ok(sweep_out(&sweep_at(&fam, &values, None)?))
+        let opts = exactlti::api::Options::default();
+        Ok(sweep_out(&sweep_file(Path::new(&path), &param, &opts, &values)?))
     })?
     .to_py(py)
 }
 
-/// Exact critical values of the parameter `param` on `[lo, hi]` (exact numbers as text).
+/// Any command of the command line on its file, dispatched as the command line does (the
+/// file read once by the api's one loader; `critical` and `sweep` of a file the reader
+/// refuses at its nominal values are studied as there): the report as JSON text, whether
+/// its exact checks passed, and whether the float path agrees.
 #[pyfunction]
-#[pyo3(signature = (path, param, lo, hi, max_seconds=None))]
-pub(crate) fn critical(
+#[pyo3(signature = (args, max_seconds=None))]
+pub(crate) fn execute(
     py: Python<'_>,
-    path: String,
-    param: String,
-    lo: String,
-    hi: String,
+    args: Vec<String>,
     max_seconds: Option<f64>,
-) -> PyResult<Py<PyAny>> {
-    run(py, max_seconds, move || -> FResult<Out> {
-        let fam = ParamFamily::from_file(Path::new(&path), &param)?;
-        let bound = |s: &str| {
-            exactlti::field::parse_rational(s.trim())
-                .map_err(|e| Fail::Input(format!("critical: bound '{s}': {e}")))
-        };
-        let cv = critical_values(&fam, &bound(&lo)?, &bound(&hi)?)?;
-        Ok(critical_out(&cv))
-    })?
-    .to_py(py)
+) -> PyResult<(String, bool, bool)> {
+    run(py, max_seconds, move || {
+        let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
+        let out = exactlti::api::execute(&cmd, None, None)?;
+        let text = serde_json::to_string(&out.report.to_json())
+            .map_err(|e| Fail::Input(e.to_string()))?;
+        Ok((text, out.verified, !out.float_disagrees))
+    })
 }

@@ -281,6 +281,26 @@ impl SystemVisitor for FileCommand<'_> {
                     None => Err(not_a_sweep()),
                 }
             }
+            Command::Critical {
+                param,
+                from,
+                to,
+                digits,
+                ..
+            } if self.from_file => match &f.ground {
+                crate::io::Ground::Quadratic(k) => super::critical::run_field(
+                    &super::critical::CriticalArgs {
+                        file: path,
+                        param,
+                        from,
+                        to,
+                        digits: *digits,
+                        at: &self.opts.at,
+                    },
+                    k,
+                ),
+                _ => study(self.cmd, path, &self.opts.at, self.ctx),
+            },
             Command::Sweep { .. } | Command::Critical { .. } if !self.from_file => Err(Failure {
                 code: 2,
                 message: format!(

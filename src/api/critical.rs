@@ -4,8 +4,10 @@
 
 use super::{Failure, Outcome};
 use crate::algebraic::AlgebraicNumber;
+use crate::field::QuadraticField;
 use crate::field::{Rational, fmt_rational};
 use crate::report::{Report, Value};
+use crate::study::critical::over_k::critical_values_of_file;
 use crate::study::{CriticalValues, ParamFamily, critical_values};
 use std::path::Path;
 
@@ -48,11 +50,15 @@ fn number(a: &AlgebraicNumber, digits: usize) -> Report {
 
 /// The report of a [`CriticalValues`] (contract keys `critical_values[]`, `intervals[]`).
 pub fn report(cv: &CriticalValues, digits: usize) -> Report {
+    let doubled = cv.over_field.as_ref().is_some_and(|f| f.doubled);
     let crit: Vec<Value> = cv
         .critical
         .iter()
         .map(|c| {
             let mut r = number(&c.value, digits).str("kind", c.kind.name());
+            if let Some(h) = &c.minpoly_over_field {
+                r = r.str("minpoly_over_field", h.to_string());
+            }
             if let Some(w) = c.omega {
                 r = r.float("omega", w);
             }
@@ -92,7 +98,14 @@ pub fn report(cv: &CriticalValues, digits: usize) -> Report {
                     .float("to_approx", iv.to.approx().0)
                     .str("sample", fmt_rational(&iv.sample))
                     .bool("stable", iv.stable)
-                    .int("unstable_eigenvalues", c.unstable())
+                    .int(
+                        "unstable_eigenvalues",
+                        if doubled {
+                            c.unstable() / 2
+                        } else {
+                            c.unstable()
+                        },
+                    )
                     .int("real_negative", c.real_negative)
                     .int("zero", c.zero)
                     .int("real_positive", c.real_positive)
@@ -107,43 +120,60 @@ pub fn report(cv: &CriticalValues, digits: usize) -> Report {
         .iter()
         .map(|(a, why)| Value::Obj(number(a, digits).str("reason", why.clone())))
         .collect();
-    let p = &cv.charpoly;
-    let charpoly: Vec<Value> = p
-        .coeffs
-        .iter()
-        .map(|c| Value::Str(c.to_string_var(&cv.param)))
-        .collect();
-    Report::titled(format!(
+    let charpoly: Vec<Value> = match &cv.over_field {
+        Some(f) => f
+            .charpoly
+            .iter()
+            .map(|c| Value::Str(c.to_string_var(&cv.param)))
+            .collect(),
+        None => cv
+            .charpoly
+            .coeffs
+            .iter()
+            .map(|c| Value::Str(c.to_string_var(&cv.param)))
+            .collect(),
+    };
+    let out = Report::titled(format!(
         "critical values of {} on [{}, {}]",
         cv.param,
         fmt_rational(&cv.from),
         fmt_rational(&cv.to)
     ))
-    .str("param", cv.param.clone())
-    .list("critical_values", crit)
-    .list("intervals", ivs)
-    .list("rejected", rejected)
-    .list(
-        "singular_values",
-        cv.singular
-            .iter()
-            .zip(&cv.singular_reasons)
-            .map(|(a, why)| Value::Obj(number(a, digits).str("reason", why.name())))
-            .collect(),
-    )
-    .list(
-        "persistent",
-        cv.persistent
-            .iter()
-            .map(|k| Value::Str(k.name().into()))
-            .collect(),
-    )
-    .list("charpoly_coeffs", charpoly)
-    .bool("verified", cv.verified)
+    .str("param", cv.param.clone());
+    let out = match &cv.over_field {
+        Some(f) if f.doubled => out
+            .str("field", f.field.to_string())
+            .str(
+                "counts_of",
+                "A(v) and its complex conjugate (same real parts; unstable_eigenvalues is that of A(v))",
+            ),
+        Some(f) => out.str("field", f.field.to_string()),
+        None => out,
+    };
+    out.list("critical_values", crit)
+        .list("intervals", ivs)
+        .list("rejected", rejected)
+        .list(
+            "singular_values",
+            cv.singular
+                .iter()
+                .zip(&cv.singular_reasons)
+                .map(|(a, why)| Value::Obj(number(a, digits).str("reason", why.name())))
+                .collect(),
+        )
+        .list(
+            "persistent",
+            cv.persistent
+                .iter()
+                .map(|k| Value::Str(k.name().into()))
+                .collect(),
+        )
+        .list("charpoly_coeffs", charpoly)
+        .bool("verified", cv.verified)
 }
 
-/// Runs `critical`.
-pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
+/// The bounds and `--digits` of `critical`, checked.
+fn checked(a: &CriticalArgs<'_>) -> Result<(Rational, Rational), Failure> {
     let (from, to) = (bound(a.from, "from")?, bound(a.to, "to")?);
     if from > to || !(1..=super::args::MAX_DIGITS).contains(&a.digits) {
         return Err(Failure {
@@ -157,9 +187,23 @@ pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
             ),
         });
     }
+    Ok((from, to))
+}
+
+/// Runs `critical`.
+pub fn run(a: &CriticalArgs<'_>) -> Result<Outcome, Failure> {
+    let (from, to) = checked(a)?;
     // the file was read as a system by the caller ([`crate::api::System::open`]; the
     // parameter studied may be `null`: a symbol)
     let fam = ParamFamily::from_file_at(a.file, a.param, a.at)?;
     let cv = critical_values(&fam, &from, &to)?;
+    Ok(Outcome::new(report(&cv, a.digits), cv.verified))
+}
+
+/// Runs `critical` on a system whose entries lie in `k` ($\mathbb{Q}(\sqrt d)$,
+/// $\mathbb{Q}(i)$): the family read over $K(v)$ ([`critical_values_of_file`]).
+pub fn run_field(a: &CriticalArgs<'_>, k: &QuadraticField) -> Result<Outcome, Failure> {
+    let (from, to) = checked(a)?;
+    let cv = critical_values_of_file(a.file, a.param, a.at, k, &from, &to)?;
     Ok(Outcome::new(report(&cv, a.digits), cv.verified))
 }

@@ -41,6 +41,7 @@ pub use commands::{
     BUILTIN_EXAMPLE, RunContext, execute, execute_ctx, execute_on, execute_on_many, execute_with,
 };
 pub use interconnect::InterconnectCmd;
+pub use sweep::sweep_file;
 pub use system::{Options, System, SystemVisitor};
 pub use toolbox::{GramArg, ToolboxCmd};
 

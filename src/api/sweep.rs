@@ -130,6 +130,39 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
     run_family(a, &fam, stream)
 }
 
+/// The eigenvalues along `param` at each of `values`, the file at `path` read as the command
+/// line reads it for `sweep` (one loader, [`super::System::open`] with `opts`): a system
+/// over $\mathbb{Q}(\sqrt d)$ or $\mathbb{Q}(i)$ is read again at each value
+/// ([`FieldFamily`]), a system over $\mathbb{Q}$ (or with the swept parameter a symbol) is
+/// studied over $\mathbb{Q}(v)$ ([`ParamFamily`]); a file the reader refuses at its nominal
+/// values (a pole, an improper pencil) is studied when the study reads it, as on the command
+/// line.
+///
+/// # Errors
+/// The file's reading errors; a parameter the file does not name (the message lists those
+/// it has); a failure of the float eigenvalues other than at one point.
+pub fn sweep_file(
+    path: &Path,
+    param: &str,
+    opts: &super::Options,
+    values: &[f64],
+) -> Result<SweepResult, Failure> {
+    let opened = super::System::open(path, opts);
+    if let Ok(sys) = &opened
+        && matches!(sys.file().ground, crate::io::Ground::Quadratic(_))
+    {
+        return FieldFamily::new(sys, param)?.sweep(values, &|_| {});
+    }
+    // over Q(v): the study's family (it names the parameters of a file without `param`)
+    let fam = ParamFamily::from_file_at(path, param, &opts.at)?;
+    if let Err(err) = opened
+        && (!opts.is_empty() || super::common::check_study_file(path).is_err())
+    {
+        return Err(err.into());
+    }
+    Ok(sweep(&fam, values, None)?)
+}
+
 /// `--from`, `--to`, `--points` in range.
 fn check_args(a: &SweepArgs<'_>) -> Result<(), Failure> {
     if !(a.from.is_finite()

@@ -169,39 +169,8 @@ impl ParamFamily {
             Matrix::from_rows(k.clone(), rows)
         };
         match &self.form {
-            FamilyForm::First { a, e } => {
-                let a = ev(a)?;
-                match e {
-                    None => Ok(a),
-                    Some(e) => {
-                        let e = ev(e)?;
-                        match e.inverse() {
-                            Ok(ei) => ei.try_mul(&a),
-                            Err(Error::Singular) => finite_part(e, a),
-                            Err(err) => Err(err),
-                        }
-                    }
-                }
-            }
-            FamilyForm::Second { m, l, k: kk } => {
-                let n = m.len();
-                let mm = ev(m)?;
-                let minv = match mm.inverse() {
-                    Ok(x) => x,
-                    Err(Error::Singular) => {
-                        let (e, a) = linearize_second_order(&mm, &ev(l)?, &ev(kk)?);
-                        return finite_part(e, a);
-                    }
-                    Err(err) => return Err(err),
-                };
-                let mk = minv.try_mul(&ev(kk)?)?.scale(&k.neg(&k.one()));
-                let ml = minv.try_mul(&ev(l)?)?.scale(&k.neg(&k.one()));
-                let mut a = Matrix::zeros(k.clone(), 2 * n, 2 * n);
-                a.set_block(0, n, &Matrix::identity(k.clone(), n));
-                a.set_block(n, 0, &mk);
-                a.set_block(n, n, &ml);
-                Ok(a)
-            }
+            FamilyForm::First { a, e } => state_first(ev(a)?, e.as_ref().map(ev).transpose()?),
+            FamilyForm::Second { m, l, k: kk } => state_second(ev(m)?, ev(l)?, ev(kk)?),
         }
     }
 
@@ -259,90 +228,222 @@ impl ParamFamily {
     /// As [`ParamFamily::from_file`]; a value for `param` itself (it is swept), or for a
     /// name that is not a parameter of the file.
     pub fn from_file_at(path: &Path, param: &str, at: &[(String, String)]) -> Result<ParamFamily> {
-        let shown = path.display().to_string();
-        let text = crate::io::read::read_text(path).map_err(|e| Error::Invalid(e.to_string()))?;
-        let toml = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
-            || !text.trim_start().starts_with('{');
-        let raw = if toml {
-            raw::from_toml_text(&text, &shown)
-        } else {
-            raw::from_json_text(&text, &shown)
-        }
-        .map_err(|e| Error::Invalid(e.to_string()))?;
-        Self::from_raw(&with_values(raw, &shown, param, at)?, &shown, param)
-    }
-
-    fn from_raw(raw: &Raw, file: &str, param: &str) -> Result<ParamFamily> {
-        let Raw::Table(top) = raw else {
-            return Err(Error::Invalid(format!("{file}: expected a table of keys")));
-        };
-        let get = |k: &str| top.iter().find(|(n, _)| n == k).map(|(_, v)| v);
-        let params: Vec<(String, Raw)> = match get("parameters") {
-            Some(Raw::Table(kv)) => kv.clone(),
+        let m = read_file_matrices(&RatFuncReader, path, param, at)?;
+        let nominal = match m.nominal {
+            None => None,
+            Some(f) if f.is_poly() && f.num.deg() == 0 => Some(f.num.coeff(0)),
             Some(_) => {
                 return Err(Error::Invalid(format!(
-                    "{file}: key parameters: expected a table"
+                    "{}: key parameters.{param}: the swept parameter needs a number",
+                    m.file
                 )));
             }
-            None => vec![],
         };
-        if !crate::io::expr::is_parameter_name(param) {
-            return Err(Error::Invalid(format!("'{param}' cannot name a parameter")));
-        }
-        let resolver = Resolver {
-            file,
-            param,
-            params: &params,
-            memo: RefCell::new(HashMap::new()),
-            active: RefCell::new(vec![]),
-        };
-        check_param_named(file, param, &params, get("symbols"))?;
-        let nominal = match params.iter().find(|(n, _)| n == param) {
-            Some((_, Raw::Other { kind: "null", .. })) | None => None,
-            Some((_, r)) => {
-                let f = resolver.scalar(r, &format!("parameters.{param}"), false)?;
-                if !f.is_poly() || f.num.deg() > 0 {
-                    return Err(Error::Invalid(format!(
-                        "{file}: key parameters.{param}: the swept parameter needs a number"
-                    )));
-                }
-                Some(f.num.coeff(0))
-            }
-        };
-        let mat = |k: &str| -> Result<Option<RatMatrix>> {
-            get(k).map(|r| resolver.matrix(r, k)).transpose()
-        };
-        let name = match get("name") {
-            Some(Raw::Str(s)) => Some(s.clone()),
-            _ => None,
-        };
-        if get("G").is_some() {
-            return Err(Error::Unsupported(format!(
-                "{file}: a parameter study needs A or M, L, K (not a transfer matrix G)"
-            )));
-        }
-        let form = if let Some(m) = mat("M")? {
-            let n = m.len();
-            let l = mat("L")?.unwrap_or_else(|| zeros(n));
-            let k = mat("K")?.unwrap_or_else(|| zeros(n));
-            ParamFamily::second_order(param, m, l, k)?.form
-        } else if let Some(a) = mat("A")? {
-            ParamFamily::first_order(param, a, mat("E")?)?.form
+        let form = if let Some(mm) = m.m {
+            let n = mm.len();
+            let l = m.l.unwrap_or_else(|| zeros(n));
+            let k = m.k.unwrap_or_else(|| zeros(n));
+            ParamFamily::second_order(param, mm, l, k)?.form
+        } else if let Some(a) = m.a {
+            ParamFamily::first_order(param, a, m.e)?.form
         } else {
             return Err(Error::Invalid(format!(
-                "{file}: no system: give A (first-order form) or M (second-order form)"
+                "{}: no system: give A (first-order form) or M (second-order form)",
+                m.file
             )));
         };
         Ok(ParamFamily {
-            name,
+            name: m.name,
             param: param.into(),
             nominal,
             form,
         })
     }
+}
+
+/// $A = E^{-1} A$ of the evaluated first-order form (`e = None`: the identity), or where
+/// $E$ is singular the finite part of the pencil ([`finite_part`]).
+///
+/// # Errors
+/// `Singular` for a singular pencil; shape errors.
+pub fn state_first<K: Field>(a: Matrix<K>, e: Option<Matrix<K>>) -> Result<Matrix<K>> {
+    match e {
+        None => Ok(a),
+        Some(e) => match e.inverse() {
+            Ok(ei) => ei.try_mul(&a),
+            Err(Error::Singular) => finite_part(e, a),
+            Err(err) => Err(err),
+        },
+    }
+}
+
+/// The companion form of the evaluated $M q'' + L q' + K q$, or where $M$ is singular the
+/// finite part of its linearization.
+///
+/// # Errors
+/// `Singular` for a singular pencil; shape errors.
+pub fn state_second<K: Field>(mm: Matrix<K>, l: Matrix<K>, kk: Matrix<K>) -> Result<Matrix<K>> {
+    let k = mm.field().clone();
+    let n = mm.nrows();
+    let minv = match mm.inverse() {
+        Ok(x) => x,
+        Err(Error::Singular) => {
+            let (e, a) = linearize_second_order(&mm, &l, &kk);
+            return finite_part(e, a);
+        }
+        Err(err) => return Err(err),
+    };
+    let mk = minv.try_mul(&kk)?.scale(&k.neg(&k.one()));
+    let ml = minv.try_mul(&l)?.scale(&k.neg(&k.one()));
+    let mut a = Matrix::zeros(k.clone(), 2 * n, 2 * n);
+    a.set_block(0, n, &Matrix::identity(k.clone(), n));
+    a.set_block(n, 0, &mk);
+    a.set_block(n, n, &ml);
+    Ok(a)
+}
+
+/// How the entries of a family file are read: into $\mathbb{Q}(v)$ ([`RatFuncReader`]) or
+/// into a quadratic extension $K(v)$ of it (the critical values over $K$).
+pub trait ScalarReader {
+    type Value: Clone;
+    /// The swept parameter $v$.
+    fn var(&self) -> Self::Value;
+    /// A number token (exact).
+    ///
+    /// # Errors
+    /// A malformed number.
+    fn number(&self, s: &str) -> Result<Self::Value>;
+    /// The expression `text`, other names resolved by `lookup` (`Ok(None)`: unknown).
+    ///
+    /// # Errors
+    /// The reader's errors (syntax, unknown names, division by zero, sizes).
+    fn eval(
+        &self,
+        text: &str,
+        lookup: &dyn Fn(&str) -> Result<Option<Self::Value>>,
+    ) -> Result<Self::Value>;
+}
+
+/// Entries in $\mathbb{Q}(v)$; `sqrt` and `i` are refused.
+pub struct RatFuncReader;
+
+impl ScalarReader for RatFuncReader {
+    type Value = RatFunc;
+    fn var(&self) -> RatFunc {
+        RatFunc::var()
+    }
+    fn number(&self, s: &str) -> Result<RatFunc> {
+        ratfunc_from_number(s)
+    }
+    fn eval(
+        &self,
+        text: &str,
+        lookup: &dyn Fn(&str) -> Result<Option<RatFunc>>,
+    ) -> Result<RatFunc> {
+        eval_ratfunc(text, lookup)
+    }
+}
+
+/// The matrices of a family file, read by a [`ScalarReader`] (each key present or not).
+#[derive(Clone, Debug)]
+pub struct FileMatrices<V> {
+    /// The file's name as shown in messages.
+    pub file: String,
+    /// The system's `name`.
+    pub name: Option<String>,
+    /// The swept parameter's value in the file, when it has one.
+    pub nominal: Option<V>,
+    pub a: Option<Vec<Vec<V>>>,
+    pub e: Option<Vec<Vec<V>>>,
+    pub m: Option<Vec<Vec<V>>>,
+    pub l: Option<Vec<Vec<V>>>,
+    pub k: Option<Vec<Vec<V>>>,
+}
+
+/// Reads the family file at `path` with `param` symbolic and `at` values first (see
+/// [`ParamFamily::from_file_at`]), its entries by `reader`.
+///
+/// # Errors
+/// As [`ParamFamily::from_file_at`].
+pub fn read_file_matrices<R: ScalarReader>(
+    reader: &R,
+    path: &Path,
+    param: &str,
+    at: &[(String, String)],
+) -> Result<FileMatrices<R::Value>> {
+    let shown = path.display().to_string();
+    let text = crate::io::read::read_text(path).map_err(|e| Error::Invalid(e.to_string()))?;
+    let toml = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+        || !text.trim_start().starts_with('{');
+    let raw = if toml {
+        raw::from_toml_text(&text, &shown)
+    } else {
+        raw::from_json_text(&text, &shown)
+    }
+    .map_err(|e| Error::Invalid(e.to_string()))?;
+    read_matrices(reader, &with_values(raw, &shown, param, at)?, &shown, param)
+}
+
+fn read_matrices<R: ScalarReader>(
+    reader: &R,
+    raw: &Raw,
+    file: &str,
+    param: &str,
+) -> Result<FileMatrices<R::Value>> {
+    let Raw::Table(top) = raw else {
+        return Err(Error::Invalid(format!("{file}: expected a table of keys")));
+    };
+    let get = |k: &str| top.iter().find(|(n, _)| n == k).map(|(_, v)| v);
+    let params: Vec<(String, Raw)> = match get("parameters") {
+        Some(Raw::Table(kv)) => kv.clone(),
+        Some(_) => {
+            return Err(Error::Invalid(format!(
+                "{file}: key parameters: expected a table"
+            )));
+        }
+        None => vec![],
+    };
+    if !crate::io::expr::is_parameter_name(param) {
+        return Err(Error::Invalid(format!("'{param}' cannot name a parameter")));
+    }
+    let resolver = Resolver {
+        reader,
+        file,
+        param,
+        params: &params,
+        memo: RefCell::new(HashMap::new()),
+        active: RefCell::new(vec![]),
+    };
+    check_param_named(file, param, &params, get("symbols"))?;
+    let nominal = match params.iter().find(|(n, _)| n == param) {
+        Some((_, Raw::Other { kind: "null", .. })) | None => None,
+        Some((_, r)) => Some(resolver.scalar(r, &format!("parameters.{param}"))?),
+    };
+    let mat = |k: &str| -> Result<Option<Vec<Vec<R::Value>>>> {
+        get(k).map(|r| resolver.matrix(r, k)).transpose()
+    };
+    let name = match get("name") {
+        Some(Raw::Str(s)) => Some(s.clone()),
+        _ => None,
+    };
+    if get("G").is_some() {
+        return Err(Error::Unsupported(format!(
+            "{file}: a parameter study needs A or M, L, K (not a transfer matrix G)"
+        )));
+    }
+    Ok(FileMatrices {
+        file: file.to_string(),
+        name,
+        nominal,
+        m: mat("M")?,
+        l: mat("L")?,
+        k: mat("K")?,
+        a: mat("A")?,
+        e: mat("E")?,
+    })
 }
 
 /// The swept parameter must be one the file names (in `parameters` or `symbols`):
@@ -405,18 +506,19 @@ pub fn eval_in<K: Field>(k: &K, f: &RatFunc, v0: &K::Elem) -> Result<K::Elem> {
     Ok(k.mul(&h(&f.num), &d))
 }
 
-struct Resolver<'a> {
+struct Resolver<'a, R: ScalarReader> {
+    reader: &'a R,
     file: &'a str,
     param: &'a str,
     params: &'a [(String, Raw)],
-    memo: RefCell<HashMap<String, RatFunc>>,
+    memo: RefCell<HashMap<String, R::Value>>,
     active: RefCell<Vec<String>>,
 }
 
-impl Resolver<'_> {
-    fn lookup(&self, n: &str) -> Result<Option<RatFunc>> {
+impl<R: ScalarReader> Resolver<'_, R> {
+    fn lookup(&self, n: &str) -> Result<Option<R::Value>> {
         if n == self.param {
-            return Ok(Some(RatFunc::var()));
+            return Ok(Some(self.reader.var()));
         }
         if let Some(v) = self.memo.borrow().get(n) {
             return Ok(Some(v.clone()));
@@ -431,14 +533,14 @@ impl Resolver<'_> {
             )));
         }
         self.active.borrow_mut().push(n.into());
-        let v = self.scalar(r, &format!("parameters.{n}"), true);
+        let v = self.scalar(r, &format!("parameters.{n}"));
         self.active.borrow_mut().pop();
         let v = v?;
         self.memo.borrow_mut().insert(n.into(), v.clone());
         Ok(Some(v))
     }
 
-    fn scalar(&self, r: &Raw, at: &str, _symbolic: bool) -> Result<RatFunc> {
+    fn scalar(&self, r: &Raw, at: &str) -> Result<R::Value> {
         let wrap = |e: Error| match e {
             Error::Invalid(m) if !m.starts_with(self.file) => {
                 Error::Invalid(format!("{}: {at}: {m}", self.file))
@@ -447,8 +549,8 @@ impl Resolver<'_> {
             e => e,
         };
         match r {
-            Raw::Number(s) => ratfunc_from_number(s).map_err(wrap),
-            Raw::Str(s) => eval_ratfunc(s, &|n| self.lookup(n)).map_err(wrap),
+            Raw::Number(s) => self.reader.number(s).map_err(wrap),
+            Raw::Str(s) => self.reader.eval(s, &|n| self.lookup(n)).map_err(wrap),
             other => Err(Error::Invalid(format!(
                 "{}: {at}: expected a number or a string, found {}",
                 self.file,
@@ -457,7 +559,7 @@ impl Resolver<'_> {
         }
     }
 
-    fn matrix(&self, r: &Raw, key: &str) -> Result<RatMatrix> {
+    fn matrix(&self, r: &Raw, key: &str) -> Result<Vec<Vec<R::Value>>> {
         let cells: Vec<Vec<Raw>> = match r {
             Raw::Str(s) => crate::io::split_matlab_matrix(s)
                 .map_err(|e| Error::Invalid(format!("{}: key {key}: {}", self.file, e.msg)))?
@@ -489,11 +591,7 @@ impl Resolver<'_> {
                 row.iter()
                     .enumerate()
                     .map(|(j, x)| {
-                        self.scalar(
-                            x,
-                            &format!("key {key}, row {}, column {}", i + 1, j + 1),
-                            true,
-                        )
+                        self.scalar(x, &format!("key {key}, row {}, column {}", i + 1, j + 1))
                     })
                     .collect()
             })

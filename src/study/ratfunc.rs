@@ -121,7 +121,7 @@ impl RatFunc {
     pub fn eval_f64(&self, v: f64) -> f64 {
         horner_f64(&self.num, v) / horner_f64(&self.den, v)
     }
-    fn size_ok(self) -> Result<Self> {
+    pub(crate) fn size_ok(self) -> Result<Self> {
         if self.num.deg() > MAX_DEGREE || self.den.deg() > MAX_DEGREE {
             return Err(Error::Limit(format!(
                 "rational function of degree above {MAX_DEGREE}"

@@ -64,15 +64,28 @@ pub(super) fn imaginary_pair_at(
 }
 
 /// The number of distinct negative real roots of `g` ($g(0) \ne 0$) at the real embedding
-/// `r` of $\mathbb{Q}(v_0)$: $V(-\infty) - V(0)$ for the Sturm sequence $g, g', -\mathrm{rem},
-/// \dots$ (valid for $g$ not square-free too, as $-\infty$ and $0$ are not roots).
+/// `r` of $\mathbb{Q}(v_0)$ ([`real_roots_by_sign`] with [`sign_at_root`]).
 pub(super) fn negative_roots(
     k: &NumberField,
     g: &Poly<NumberField>,
     r: &AlgebraicNumber,
 ) -> Result<usize> {
+    Ok(real_roots_by_sign(g, &|e| sign_at_root(k, e, r))?.0)
+}
+
+/// The numbers of distinct negative and positive real roots of `g` ($g(0) \ne 0$) over an
+/// ordered field whose signs `sign` decides: $V(-\infty) - V(0)$ and $V(0) - V(+\infty)$
+/// for the Sturm sequence $g, g', -\mathrm{rem}, \dots$ (valid for $g$ not square-free too,
+/// as $\pm\infty$ and $0$ are not roots).
+///
+/// # Errors
+/// From `sign`.
+pub(crate) fn real_roots_by_sign<F: Field>(
+    g: &Poly<F>,
+    sign: &dyn Fn(&F::Elem) -> Result<Ordering>,
+) -> Result<(usize, usize)> {
     if g.degree().unwrap_or(0) == 0 {
-        return Ok(0);
+        return Ok((0, 0));
     }
     let mut seq = vec![g.clone(), g.derivative()];
     loop {
@@ -83,14 +96,19 @@ pub(super) fn negative_roots(
         }
         seq.push(rem.neg());
     }
-    let mut at_minus_inf = vec![];
-    let mut at_zero = vec![];
+    let (mut at_minus_inf, mut at_zero, mut at_inf) = (vec![], vec![], vec![]);
     for s in &seq {
-        let lc = sign_at_root(k, &s.lc(), r)?;
+        let lc = sign(&s.lc())?;
         at_minus_inf.push(if s.deg() % 2 == 1 { lc.reverse() } else { lc });
-        at_zero.push(sign_at_root(k, &s.coeff(0), r)?);
+        at_inf.push(lc);
+        at_zero.push(sign(&s.coeff(0))?);
     }
-    Ok(variations(&at_minus_inf).saturating_sub(variations(&at_zero)))
+    let (vm, v0, vp) = (
+        variations(&at_minus_inf),
+        variations(&at_zero),
+        variations(&at_inf),
+    );
+    Ok((vm.saturating_sub(v0), v0.saturating_sub(vp)))
 }
 
 /// Sign changes in a sequence, zeros skipped.

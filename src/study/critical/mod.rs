@@ -22,6 +22,7 @@ mod approx;
 mod double;
 mod imaginary;
 mod intervals;
+pub mod over_k;
 mod roots;
 mod structure;
 
@@ -33,7 +34,7 @@ use super::family::ParamFamily;
 use super::hurwitz::RootCounts;
 use crate::algebraic::AlgebraicNumber;
 use crate::error::{Error, Result};
-use crate::field::{Field, Q, Rational, rational_to_f64};
+use crate::field::{Field, Q, QuadraticField, Rational, rational_to_f64};
 use crate::poly::Poly;
 use imaginary::imaginary_pair_at;
 use intervals::intervals_between;
@@ -46,6 +47,9 @@ use structure::structure_at;
 pub enum CriticalKind {
     ZeroEigenvalue,
     ImaginaryPair,
+    /// Over a non-real field ($\mathbb{Q}(i)$): one eigenvalue on the imaginary axis
+    /// (the spectrum is not symmetric about the real axis).
+    ImaginaryEigenvalue,
     DoubleEigenvalue,
 }
 
@@ -55,6 +59,7 @@ impl CriticalKind {
         match self {
             CriticalKind::ZeroEigenvalue => "zero_eigenvalue",
             CriticalKind::ImaginaryPair => "imaginary_pair",
+            CriticalKind::ImaginaryEigenvalue => "imaginary_eigenvalue",
             CriticalKind::DoubleEigenvalue => "double_eigenvalue",
         }
     }
@@ -110,6 +115,23 @@ pub struct CriticalValue {
     /// The confirmation was decided in exact arithmetic (always, except for an imaginary
     /// pair whose $g$ has degree $\ge 2$, decided from approximations).
     pub certified: bool,
+    /// Over a field $K \ne \mathbb{Q}$: the minimal polynomial of the value over $K$ (a
+    /// factor of `value.minpoly()`; of degree 1 when the value lies in $K$).
+    pub minpoly_over_field: Option<Poly<QuadraticField>>,
+}
+
+/// The characteristic polynomial and the conditions of a family over $K(v)$,
+/// $K = \mathbb{Q}(\sqrt d)$ or $\mathbb{Q}(i)$ ([`over_k`]).
+#[derive(Clone, Debug)]
+pub struct FieldCharpoly {
+    pub field: QuadraticField,
+    /// $p_j(v) \in K[v]$, $P = \sum_j p_j x^j$ ($p_n$ monic).
+    pub charpoly: Vec<Poly<QuadraticField>>,
+    /// The polynomials in $v$ whose roots were examined, by kind.
+    pub conditions: Vec<(CriticalKind, Poly<QuadraticField>)>,
+    /// The interval counts are those of $A(v)$ and its complex conjugate together (a
+    /// non-real field: each count is twice that of $A(v)$ in the same half-plane).
+    pub doubled: bool,
 }
 
 /// An open interval between consecutive critical values.
@@ -150,6 +172,9 @@ pub struct CriticalValues {
     pub intervals: Vec<StudyInterval>,
     /// Every confirmation exact and consistent; interval counts agree with Routh–Hurwitz.
     pub verified: bool,
+    /// For a family over $K(v)$, $K \ne \mathbb{Q}$: its $P$ and conditions over $K$
+    /// (`charpoly` and `conditions` are then empty).
+    pub over_field: Option<FieldCharpoly>,
 }
 
 /// What is known about $P$ near the critical values: the discriminant and the first
@@ -205,13 +230,15 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
             let (ok, omega, certified) = match kind {
                 CriticalKind::ZeroEigenvalue => (pk.coeff(0) == k.zero(), None, true),
                 CriticalKind::DoubleEigenvalue => (repeated, None, true),
-                CriticalKind::ImaginaryPair => match imaginary_pair_at(&k, &pk, &r)? {
-                    Ok((w, cert)) => (true, Some(w), cert),
-                    Err(why) => {
-                        rejected.push((r.clone(), why));
-                        continue;
+                CriticalKind::ImaginaryPair | CriticalKind::ImaginaryEigenvalue => {
+                    match imaginary_pair_at(&k, &pk, &r)? {
+                        Ok((w, cert)) => (true, Some(w), cert),
+                        Err(why) => {
+                            rejected.push((r.clone(), why));
+                            continue;
+                        }
                     }
-                },
+                }
             };
             verified &= ok && certified;
             critical.push(CriticalValue {
@@ -220,6 +247,7 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
                 kind: *kind,
                 omega,
                 certified,
+                minpoly_over_field: None,
             });
         }
     }
@@ -243,6 +271,7 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
         persistent,
         intervals,
         verified,
+        over_field: None,
     })
 }
 

@@ -144,7 +144,7 @@ fn sort_eigs(out: &mut [EigenvalueAt]) {
 }
 
 /// $q(A)$ by Horner over the matrix field.
-fn poly_of_matrix<K: Field>(q: &Poly<K>, a: &Matrix<K>) -> Result<Matrix<K>> {
+pub(super) fn poly_of_matrix<K: Field>(q: &Poly<K>, a: &Matrix<K>) -> Result<Matrix<K>> {
     let k = a.field().clone();
     let n = a.nrows();
     let mut acc = Matrix::zeros(k.clone(), n, n);

@@ -1,0 +1,539 @@
+//! Exact critical values of a family whose entries lie in $K(v)$, $K = \mathbb{Q}(\sqrt d)$
+//! or $\mathbb{Q}(i)$, for a real parameter $v$ on $[a, b]$: the same questions as over
+//! $\mathbb{Q}$ ([`super::critical_values`]), computed over $K$.
+//!
+//! * $P(x, v) \in K[x, v]$ and the conditions (zero eigenvalue $p_0$, double eigenvalue
+//!   $\mathrm{Res}_x(P, P_x)$, an eigenvalue mirrored across the imaginary axis
+//!   $\mathrm{Res}_x(P(x), \bar P(-x))$) by evaluation and interpolation over $K$
+//!   ([`charpoly`], generic over the field).
+//! * Their real roots with minimal polynomials over $\mathbb{Q}$ *and* over $K$ (a critical
+//!   value may lie in $K$ and not in $\mathbb{Q}$, e.g. $3/\sqrt 2$): roots of the norm, the
+//!   factor over $K$ that vanishes decided exactly ([`roots_k`]).
+//! * At each root $r$: everything in $E = K(r) = K[t]/(h)$ ([`at_root`]): $A(r)$, $P(x, r)$,
+//!   square-free decomposition, Jordan blocks from ranks, the imaginary-axis confirmation by
+//!   Sturm sequences with exact signs.
+//! * Between critical values, at a rational sample $s$: over a real $K$ the Hurwitz minors of
+//!   $P(x, s)$ (exact signs in $K$) give the roots in the right half-plane, Sturm sequences
+//!   the real roots; over $\mathbb{Q}(i)$ the counts are those of $P \bar P \in
+//!   \mathbb{Q}[x]$, the spectrum of $A(s)$ and of its conjugate (the same real parts), and
+//!   `doubled` says so.
+//!
+//! Kinds: over a real $K$ as over $\mathbb{Q}$ (`imaginary_pair`); over $\mathbb{Q}(i)$ the
+//! spectrum is not symmetric, and a crossing is one eigenvalue on the imaginary axis
+//! (`imaginary_eigenvalue`).
+
+mod at_root;
+pub mod charpoly;
+pub mod roots_k;
+pub mod scalar;
+
+pub use scalar::{KRat, KReader};
+
+use super::{
+    CriticalKind, CriticalValue, CriticalValues, FieldCharpoly, SingularReason, StudyInterval,
+};
+use crate::algebraic::AlgebraicNumber;
+use crate::error::{Error, Result};
+use crate::field::{Field, Q, Quadratic, QuadraticField, Rational};
+use crate::matrix::Matrix;
+use crate::poly::Poly;
+use crate::study::bivar::BiPoly;
+use crate::study::family::{read_file_matrices, state_first, state_second};
+use crate::study::hurwitz::{RootCounts, hurwitz_matrix, hurwitz_stable, root_counts};
+use charpoly::{BiPolyOver, det_xv, discriminant_over, mirror_resultant};
+use num_traits::Zero;
+use roots_k::{real_roots_k, sign_k};
+use std::cmp::Ordering;
+use std::path::Path;
+
+/// A family $\sum_j x^j P_j(v)$ over $K(v)$: `[-A, E]` (first order, $E = I$ when not
+/// given) or `[K, L, M]` (second order).
+#[derive(Clone, Debug)]
+pub struct KFamily {
+    pub k: QuadraticField,
+    pub param: String,
+    pub name: Option<String>,
+    pub pencil: Vec<Vec<Vec<KRat>>>,
+    pub second_order: bool,
+}
+
+fn one() -> KRat {
+    KRat::real(crate::study::ratfunc::one())
+}
+
+fn zero() -> KRat {
+    KRat::real(crate::study::ratfunc::RatFunc::zero())
+}
+
+impl KFamily {
+    /// Reads the file at `path` over $K(v)$ (`param` symbolic, `at` values first), `k` the
+    /// field of the system file.
+    ///
+    /// # Errors
+    /// As [`crate::study::ParamFamily::from_file_at`] (with $\sqrt d$ / $i$ of `k` allowed).
+    pub fn from_file_at(
+        path: &Path,
+        param: &str,
+        at: &[(String, String)],
+        k: &QuadraticField,
+    ) -> Result<Self> {
+        let m = read_file_matrices(&KReader { k: k.clone() }, path, param, at)?;
+        let square = |x: &Vec<Vec<KRat>>, n: usize| -> Result<()> {
+            if x.len() != n || x.iter().any(|r| r.len() != n) {
+                return Err(Error::Shape {
+                    op: "parameter family",
+                    expected: (n, n),
+                    found: (x.len(), x.first().map_or(0, Vec::len)),
+                });
+            }
+            Ok(())
+        };
+        let eye = |n: usize| -> Vec<Vec<KRat>> {
+            (0..n)
+                .map(|i| {
+                    (0..n)
+                        .map(|j| if i == j { one() } else { zero() })
+                        .collect()
+                })
+                .collect()
+        };
+        let zeros = |n: usize| vec![vec![zero(); n]; n];
+        let (pencil, second_order) = if let Some(mm) = m.m {
+            let n = mm.len();
+            let l = m.l.unwrap_or_else(|| zeros(n));
+            let kk = m.k.unwrap_or_else(|| zeros(n));
+            for x in [&mm, &l, &kk] {
+                square(x, n)?;
+            }
+            (vec![kk, l, mm], true)
+        } else if let Some(a) = m.a {
+            let n = a.len();
+            let e = m.e.unwrap_or_else(|| eye(n));
+            square(&a, n)?;
+            square(&e, n)?;
+            let neg: Vec<Vec<KRat>> = a
+                .iter()
+                .map(|r| {
+                    r.iter()
+                        .map(|x| KRat {
+                            a: x.a.neg(),
+                            b: x.b.neg(),
+                        })
+                        .collect()
+                })
+                .collect();
+            (vec![neg, e], false)
+        } else {
+            return Err(Error::Invalid(format!(
+                "{}: no system: give A (first-order form) or M (second-order form)",
+                m.file
+            )));
+        };
+        Ok(KFamily {
+            k: k.clone(),
+            param: param.into(),
+            name: m.name,
+            pencil,
+            second_order,
+        })
+    }
+
+    /// $A(v_0)$ over a field `e` holding $\theta$ (`theta`) and $v_0$.
+    ///
+    /// # Errors
+    /// `DivisionByZero` at a pole; `Singular` for a singular pencil.
+    pub fn state_matrix_in<E: Field>(
+        &self,
+        e: &E,
+        theta: &E::Elem,
+        v0: &E::Elem,
+    ) -> Result<Matrix<E>> {
+        let ev = |m: &Vec<Vec<KRat>>| -> Result<Matrix<E>> {
+            let rows = m
+                .iter()
+                .map(|r| r.iter().map(|x| x.eval_in(e, theta, v0)).collect())
+                .collect::<Result<Vec<Vec<E::Elem>>>>()?;
+            if rows.is_empty() {
+                return Ok(Matrix::zeros(e.clone(), 0, 0));
+            }
+            Matrix::from_rows(e.clone(), rows)
+        };
+        if self.second_order {
+            state_second(
+                ev(&self.pencil[2])?,
+                ev(&self.pencil[1])?,
+                ev(&self.pencil[0])?,
+            )
+        } else {
+            let a = ev(&self.pencil[0])?.scale(&e.neg(&e.one()));
+            state_first(a, Some(ev(&self.pencil[1])?))
+        }
+    }
+
+    /// Every denominator of every entry (in $\mathbb{Q}[v]$, monic).
+    pub fn denominators(&self) -> Vec<Poly<Q>> {
+        let mut out: Vec<Poly<Q>> = vec![];
+        for x in self.pencil.iter().flatten().flatten() {
+            let d = x.den();
+            if !d.is_one() && !out.contains(&d) {
+                out.push(d);
+            }
+        }
+        out
+    }
+
+    /// The pencil's rows scaled by the lcm of their denominators: `rows[i][j][c]` in $K[v]$.
+    fn poly_rows(&self) -> Vec<Vec<Vec<Poly<QuadraticField>>>> {
+        let k = &self.k;
+        let n = self.pencil[0].len();
+        (0..n)
+            .map(|i| {
+                let l = self
+                    .pencil
+                    .iter()
+                    .flat_map(|p| p[i].iter())
+                    .fold(Poly::one(Q), |l, x| {
+                        let d = x.den();
+                        l.mul(&d).quo(&l.gcd(&d))
+                    });
+                self.pencil
+                    .iter()
+                    .map(|p| {
+                        p[i].iter()
+                            .map(|x| {
+                                let a = x.a.num.mul(&l.quo(&x.a.den));
+                                let b = x.b.num.mul(&l.quo(&x.b.den));
+                                let m = a.coeffs().len().max(b.coeffs().len());
+                                Poly::new(
+                                    k.clone(),
+                                    (0..m)
+                                        .map(|j| Quadratic::new(a.coeff(j), b.coeff(j)))
+                                        .collect(),
+                                )
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+/// Checks $P(x, v_0) = \chi_{A(v_0)}(x)$ (monic) at a rational $v_0$ where both are defined.
+fn check_charpoly(fam: &KFamily, p: &BiPolyOver<QuadraticField>) -> Result<()> {
+    let k = &fam.k;
+    let theta = Quadratic::new(Rational::zero(), Rational::from_integer(1.into()));
+    for t in 0..64i64 {
+        let v0 = k.from_rational(&Rational::new((7919 + 31 * t).into(), 1009.into()));
+        let pv = p.at(k, &v0, &|c| c.clone());
+        if k.is_zero(&p.lead().eval(&v0)) {
+            continue;
+        }
+        let Ok(a) = fam.state_matrix_in(k, &theta, &v0) else {
+            continue;
+        };
+        if a.charpoly()? != pv.monic() {
+            return Err(Error::Verification(format!(
+                "characteristic polynomial in (x, {}) over {k} disagrees with charpoly(A({v0:?}))",
+                fam.param
+            )));
+        }
+        return Ok(());
+    }
+    Err(Error::Verification(
+        "no rational check point for the characteristic polynomial".into(),
+    ))
+}
+
+/// Critical values of `fam`'s parameter on $[a, b]$ over its field (see the module docs).
+///
+/// # Errors
+/// `Invalid` for $a > b$; the errors of the steps.
+pub fn critical_values_over_k(fam: &KFamily, a: &Rational, b: &Rational) -> Result<CriticalValues> {
+    if a > b {
+        return Err(Error::Invalid(format!("empty range: from {a} > to {b}")));
+    }
+    let k = &fam.k;
+    let (p, content) = det_xv(k, &fam.poly_rows())?;
+    check_charpoly(fam, &p)?;
+    let (imag_kind, conj): (CriticalKind, Box<dyn Fn(&Quadratic) -> Quadratic>) = if k.is_real() {
+        (
+            CriticalKind::ImaginaryPair,
+            Box::new(|c: &Quadratic| c.clone()),
+        )
+    } else {
+        let kc = k.clone();
+        (
+            CriticalKind::ImaginaryEigenvalue,
+            Box::new(move |c: &Quadratic| kc.galois(c)),
+        )
+    };
+    let conditions = vec![
+        (CriticalKind::ZeroEigenvalue, p.coeffs[0].clone()),
+        (imag_kind, mirror_resultant(k, &p, &*conj)?),
+        (CriticalKind::DoubleEigenvalue, discriminant_over(k, &p)?),
+    ];
+    let (singular, singular_reasons) = singular_points(fam, &p, &content, a, b)?;
+    let mut out = Found::default();
+    for (kind, cond) in &conditions {
+        if cond.is_zero() {
+            if p.deg_x() > 1 || *kind == CriticalKind::ZeroEigenvalue {
+                out.persistent.push(*kind);
+            }
+            continue;
+        }
+        for (r, h) in real_roots_k(cond, a, b)? {
+            if !singular.contains(&r) {
+                confirm(fam, &p, *kind, r, h, &mut out)?;
+            }
+        }
+    }
+    let mut verified = out.verified;
+    let mut critical = out.critical;
+    critical.sort_by(|x, y| {
+        x.value
+            .partial_cmp(&y.value)
+            .unwrap_or(Ordering::Equal)
+            .then(x.kind.cmp(&y.kind))
+    });
+    let intervals = intervals_k(&p, a, b, &critical, &singular, &mut verified)?;
+    Ok(CriticalValues {
+        param: fam.param.clone(),
+        from: a.clone(),
+        to: b.clone(),
+        charpoly: BiPoly { coeffs: vec![] },
+        conditions: vec![],
+        critical,
+        rejected: out.rejected,
+        singular,
+        singular_reasons,
+        persistent: out.persistent,
+        intervals,
+        verified,
+        over_field: Some(FieldCharpoly {
+            field: k.clone(),
+            charpoly: p.coeffs.clone(),
+            conditions,
+            doubled: !k.is_real(),
+        }),
+    })
+}
+
+/// What the confirmations found.
+struct Found {
+    critical: Vec<CriticalValue>,
+    rejected: Vec<(AlgebraicNumber, String)>,
+    persistent: Vec<CriticalKind>,
+    verified: bool,
+}
+
+impl Default for Found {
+    fn default() -> Self {
+        Found {
+            critical: vec![],
+            rejected: vec![],
+            persistent: vec![],
+            verified: true,
+        }
+    }
+}
+
+/// Confirms the root `r` (minimal polynomial `h` over $K$) of the condition of `kind`.
+fn confirm(
+    fam: &KFamily,
+    p: &BiPolyOver<QuadraticField>,
+    kind: CriticalKind,
+    r: AlgebraicNumber,
+    h: Poly<QuadraticField>,
+    out: &mut Found,
+) -> Result<()> {
+    let k = &fam.k;
+    let at = at_root::at_root(fam, p, &r, &h)?;
+    let zero_here = at.e.is_zero(&at.p.coeff(0));
+    let (ok, omega) = match kind {
+        CriticalKind::ZeroEigenvalue => (zero_here, None),
+        CriticalKind::DoubleEigenvalue => (at.repeated, None),
+        CriticalKind::ImaginaryPair | CriticalKind::ImaginaryEigenvalue => {
+            let found = if k.is_real() {
+                at_root::imaginary_pair_k(&at, k, &r)?
+            } else {
+                at_root::imaginary_eigenvalue_i(&at, &r)?
+            };
+            match found {
+                Ok(w) => (true, Some(w)),
+                Err(why) => {
+                    // a root of the mirror resultant that is only a zero eigenvalue is
+                    // reported as that, not as a rejected crossing
+                    if !zero_here {
+                        out.rejected.push((r, why));
+                    }
+                    return Ok(());
+                }
+            }
+        }
+    };
+    out.verified &= ok;
+    out.critical.push(CriticalValue {
+        value: r,
+        kind,
+        eigenvalues_at: at.eigenvalues,
+        omega,
+        certified: true,
+        minpoly_over_field: Some(h),
+    });
+    Ok(())
+}
+
+/// Poles, singular pencils (roots of the content) and order drops (roots of $p_n$) in
+/// $[a, b]$, ascending, each with its first reason.
+fn singular_points(
+    fam: &KFamily,
+    p: &BiPolyOver<QuadraticField>,
+    content: &Poly<QuadraticField>,
+    a: &Rational,
+    b: &Rational,
+) -> Result<(Vec<AlgebraicNumber>, Vec<SingularReason>)> {
+    let mut out: Vec<(AlgebraicNumber, SingularReason)> = vec![];
+    let mut add = |r: AlgebraicNumber, why| {
+        if !out.iter().any(|(x, _)| *x == r) {
+            out.push((r, why));
+        }
+    };
+    for d in fam.denominators() {
+        for r in super::roots::real_roots_in(&d, a, b)? {
+            add(r, SingularReason::Pole);
+        }
+    }
+    for (c, why) in [
+        (content, SingularReason::SingularPencil),
+        (&p.lead(), SingularReason::OrderDrop),
+    ] {
+        for (r, _) in real_roots_k(c, a, b)? {
+            add(r, why);
+        }
+    }
+    out.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap_or(Ordering::Equal));
+    Ok(out.into_iter().unzip())
+}
+
+/// The intervals between consecutive critical and singular values with exact counts at a
+/// rational sample (see the module docs); `verified` is cleared on an inconsistency.
+fn intervals_k(
+    p: &BiPolyOver<QuadraticField>,
+    a: &Rational,
+    b: &Rational,
+    critical: &[CriticalValue],
+    singular: &[AlgebraicNumber],
+    verified: &mut bool,
+) -> Result<Vec<StudyInterval>> {
+    let k = p.lead().field().clone();
+    let mut pts: Vec<AlgebraicNumber> = vec![AlgebraicNumber::from_rational(a)];
+    let mut inner: Vec<AlgebraicNumber> = critical
+        .iter()
+        .map(|c| c.value.clone())
+        .chain(singular.iter().cloned())
+        .collect();
+    inner.sort_by(|x, y| x.partial_cmp(y).unwrap_or(Ordering::Equal));
+    inner.push(AlgebraicNumber::from_rational(b));
+    for x in inner {
+        if pts.last() != Some(&x) {
+            pts.push(x);
+        }
+    }
+    let mut out = vec![];
+    for w in pts.windows(2) {
+        let mut s = super::rational_between(&w[0], &w[1])?;
+        let mut found = None;
+        for _ in 0..16 {
+            let ps = p.at(&k, &k.from_rational(&s), &|c| c.clone());
+            if let Some(c) = counts_at(&k, &ps)? {
+                found = Some(c);
+                break;
+            }
+            // a degenerate sample (a Hurwitz minor vanishes): move towards the right end
+            s = super::rational_between(&AlgebraicNumber::from_rational(&s), &w[1])?;
+        }
+        let Some((counts, stable, consistent)) = found else {
+            return Err(Error::Limit(
+                "no sample point with nonzero Hurwitz minors between two critical values".into(),
+            ));
+        };
+        *verified &= consistent && stable == counts.is_stable();
+        out.push(StudyInterval {
+            from: w[0].clone(),
+            to: w[1].clone(),
+            sample: s,
+            counts,
+            stable,
+        });
+    }
+    Ok(out)
+}
+
+/// Root counts of $P(x, s)$ over $K$, Routh–Hurwitz stability, and whether the counts are
+/// consistent; `None` at a degenerate sample (a Hurwitz minor vanishes, over a real $K$).
+fn counts_at(
+    k: &QuadraticField,
+    ps: &Poly<QuadraticField>,
+) -> Result<Option<(RootCounts, bool, bool)>> {
+    if !k.is_real() {
+        // the spectrum of A(s) and of its conjugate: P times its conjugate, over Q
+        let n = crate::algebraic::norm_over_q(ps);
+        return Ok(Some((root_counts(&n)?, hurwitz_stable(&n)?, true)));
+    }
+    let ps = if sign_k(k, &ps.lc()) == Ordering::Less {
+        ps.neg()
+    } else {
+        ps.clone()
+    };
+    let n = ps.deg();
+    let h = hurwitz_matrix(k, ps.coeffs(), n);
+    let mut first_col = vec![Ordering::Greater];
+    let mut prev = Ordering::Greater;
+    for j in 1..=n {
+        let dj = sign_k(k, &h.submatrix(0, j, 0, j).det()?);
+        if dj == Ordering::Equal {
+            return Ok(None);
+        }
+        first_col.push(if dj == prev {
+            Ordering::Greater
+        } else {
+            Ordering::Less
+        });
+        prev = dj;
+    }
+    let rhp = first_col.windows(2).filter(|w| w[0] != w[1]).count();
+    let stable = rhp == 0;
+    let (mut neg, mut pos) = (0, 0);
+    for (s, m) in ps.squarefree() {
+        let (ns, np) = super::imaginary::real_roots_by_sign(&s, &|x| Ok(sign_k(k, x)))?;
+        neg += m * ns;
+        pos += m * np;
+    }
+    let consistent =
+        rhp >= pos && n >= rhp + neg && (n - rhp - neg) % 2 == 0 && (rhp - pos.min(rhp)) % 2 == 0;
+    let counts = RootCounts {
+        real_negative: neg,
+        zero: 0,
+        real_positive: pos,
+        complex_pairs_stable: n.saturating_sub(rhp + neg) / 2,
+        imaginary_pairs: 0,
+        complex_pairs_unstable: rhp.saturating_sub(pos) / 2,
+    };
+    Ok(Some((counts, stable, consistent)))
+}
+
+/// Reads `path` over its field `k` and computes [`critical_values_over_k`].
+///
+/// # Errors
+/// As [`KFamily::from_file_at`] and [`critical_values_over_k`].
+pub fn critical_values_of_file(
+    path: &Path,
+    param: &str,
+    at: &[(String, String)],
+    k: &QuadraticField,
+    a: &Rational,
+    b: &Rational,
+) -> Result<CriticalValues> {
+    critical_values_over_k(&KFamily::from_file_at(path, param, at, k)?, a, b)
+}
