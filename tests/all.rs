@@ -27,6 +27,8 @@ mod cli_mpoly;
 mod cli_options;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
+#[path = "critical_fields.rs"]
+mod critical_fields;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
 #[path = "dcgain.rs"]

@@ -91,7 +91,7 @@ pub(crate) fn execute(
 ) -> PyResult<(String, bool, bool)> {
     run(py, max_seconds, move || {
         let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
-        let out = exactlti::api::execute(&cmd, None, None)?;
+        let out = exactlti::api::execute(&cmd)?;
         let text = serde_json::to_string(&out.report.to_json())
             .map_err(|e| Fail::Input(e.to_string()))?;
         Ok((text, out.verified, !out.float_disagrees))

@@ -75,11 +75,8 @@ for _f in ("qi", "qi_descriptor"):
     NOT_QUESTIONS[("jordan --real", _f)] = "is not real"
 
 # (operation, file) -> questions this version does not answer yet, with the reason given
-# (the exact critical values of a family over Q(sqrt d)(v) or Q(i)(v) are roots of
-# polynomials over that field; the exact study works over Q(v) and Q(v0) = Q[t]/(f))
+# (none: `critical` over Q(i) and Q(sqrt 2) is computed over K(v), tests/critical_fields.rs)
 NOT_YET = {}
-for _f in ("qi", "qi_descriptor", "qsqrt2", "qsqrt2_descriptor"):
-    NOT_YET[("critical", _f)] = "a parameter study needs rational entries"
 
 
 def _bin():
@@ -200,8 +197,8 @@ def _legacy(G, op):
     if op in ("sweep", "critical"):
         path = G._core.source[0]
         if op == "sweep":
-            return _core.sweep(path, "c", [1.0, 2.0])
-        return _core.critical(path, "c", "0", "4", 120)
+            return exactlti.sweep(path, "c", [1.0, 2.0])
+        return exactlti.critical(path, "c", "0", "4", 120)
     raise exactlti.UnsupportedError("no such method")
 
 

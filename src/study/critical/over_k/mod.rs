@@ -256,21 +256,16 @@ pub fn critical_values_over_k(fam: &KFamily, a: &Rational, b: &Rational) -> Resu
     let k = &fam.k;
     let (p, content) = det_xv(k, &fam.poly_rows())?;
     check_charpoly(fam, &p)?;
-    let (imag_kind, conj): (CriticalKind, Box<dyn Fn(&Quadratic) -> Quadratic>) = if k.is_real() {
-        (
-            CriticalKind::ImaginaryPair,
-            Box::new(|c: &Quadratic| c.clone()),
-        )
+    let imag_kind = if k.is_real() {
+        CriticalKind::ImaginaryPair
     } else {
-        let kc = k.clone();
-        (
-            CriticalKind::ImaginaryEigenvalue,
-            Box::new(move |c: &Quadratic| kc.galois(c)),
-        )
+        CriticalKind::ImaginaryEigenvalue
     };
+    // complex conjugation of K (the identity on a real field)
+    let conj = |c: &Quadratic| if k.is_real() { c.clone() } else { k.galois(c) };
     let conditions = vec![
         (CriticalKind::ZeroEigenvalue, p.coeffs[0].clone()),
-        (imag_kind, mirror_resultant(k, &p, &*conj)?),
+        (imag_kind, mirror_resultant(k, &p, &conj)?),
         (CriticalKind::DoubleEigenvalue, discriminant_over(k, &p)?),
     ];
     let (singular, singular_reasons) = singular_points(fam, &p, &content, a, b)?;
