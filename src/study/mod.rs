@@ -6,6 +6,8 @@
 //! | [`ParamFamily::from_file`] | the family $A(v)$ of a system file, one parameter symbolic |
 //! | [`charpoly_xv`] | $P(x, v) = p_n(v) \chi_{A(v)}(x)$ exactly (evaluation/interpolation) |
 //! | [`critical_values`] | zero eigenvalues, imaginary pairs, double eigenvalues as algebraic numbers; stability per interval |
+//! | [`critical::over_k::critical_values_over_k`] | the same for a family over $K(v)$, $K = \mathbb{Q}(\sqrt d)$ or $\mathbb{Q}(i)$ (values with minimal polynomials over $\mathbb{Q}$ and $K$, structure in $K(v_0)$) |
+//! | [`family_read::read_file_matrices`] | a family file's matrices, entries read into $\mathbb{Q}(v)$ or $K(v)$ |
 //! | [`sweep`] | float eigenvalues at many parameter values, in parallel (finite eigenvalues of the pencil where $E(v)$ is singular, counted exactly by [`SweepPlan`]) |
 //!
 //! The exact path never uses floats: $P$, the Hurwitz determinant and the discriminant are
@@ -15,6 +17,7 @@
 pub mod bivar;
 pub mod critical;
 pub mod family;
+pub mod family_read;
 pub mod finite;
 pub mod hurwitz;
 pub mod modp;

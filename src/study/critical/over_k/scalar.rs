@@ -10,7 +10,7 @@
 use crate::error::{Error, Result};
 use crate::field::expr::{Algebra, Dialect, RESERVED, SyntaxError, evaluate, parse_number};
 use crate::field::{Field, Q, QuadraticField, Rational};
-use crate::study::family::ScalarReader;
+use crate::study::family_read::ScalarReader;
 use crate::study::ratfunc::{MAX_EXP, RatFunc, ratfunc_from_number};
 use num_traits::One;
 
