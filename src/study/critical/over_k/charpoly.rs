@@ -19,8 +19,12 @@ use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 
-/// Largest degree bound in $x$ or $v$ accepted.
-pub const MAX_BIDEGREE: usize = 512;
+/// Largest degree bound in $x$ or $v$ accepted (as over $\mathbb{Q}$).
+pub const MAX_BIDEGREE: usize = 400;
+
+/// Largest degree bound of a condition polynomial in $v$ (one resultant over $K$ per
+/// interpolation point): beyond it `Limit`, not hours of work.
+pub const MAX_CONDITION_DEGREE: usize = 20_000;
 
 /// $P(x, v)$: `coeffs[j]` is $p_j(v)$.
 #[derive(Clone, Debug, PartialEq)]
@@ -163,6 +167,11 @@ fn interpolate_where_defined<F: Field>(
     bound: usize,
     val: &dyn Fn(&F::Elem) -> Result<F::Elem>,
 ) -> Result<Poly<F>> {
+    if bound > MAX_CONDITION_DEGREE {
+        return Err(Error::Limit(format!(
+            "a condition polynomial of degree up to {bound} in the parameter (at most {MAX_CONDITION_DEGREE} over an extension field)"
+        )));
+    }
     let (mut xs, mut ys) = (vec![], vec![]);
     let mut i = 0usize;
     while xs.len() <= bound {
