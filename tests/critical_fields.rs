@@ -228,7 +228,7 @@ fn check_grid(text: &str, param: &str, cv: &CriticalValues, a: i64, b: i64, m: i
             iv.counts.unstable() / 2
         };
         assert_eq!(reported, f.unstable, "interval sample {}", iv.sample);
-        assert_eq!(iv.stable, f.unstable == 0 && !f.on_axis);
+        assert_eq!(iv.stable, f.unstable == 0 && !f.on_axis && f.min_abs > 1e-9);
     }
 }
 
@@ -316,6 +316,29 @@ fn descriptor_file_has_the_critical_values_of_its_finite_part() {
     let b = crit(desc, "desc.json", "c", "-4", "4");
     assert_eq!(summary(&a), summary(&b));
     assert!(b.verified);
+}
+
+#[test]
+fn persistent_zero_eigenvalue_over_sqrt2() {
+    // a rigid-body mode (0 for every c) beside x^2 + c sqrt2 x + 2
+    let text = r#"{"parameters": {"c": "1"}, "A": [[0, 0, 0], [0, 0, 1], [0, -2, "-c*sqrt(2)"]]}"#;
+    let cv = crit(text, "z.json", "c", "-3", "3");
+    assert!(cv.persistent.contains(&CriticalKind::ZeroEigenvalue));
+    assert_eq!(
+        summary(&cv),
+        [
+            ("-2".into(), "double_eigenvalue", "x + 2".into()),
+            ("0".into(), "imaginary_pair", "x".into()),
+            ("2".into(), "double_eigenvalue", "x - 2".into()),
+        ]
+    );
+    assert!(
+        cv.intervals
+            .iter()
+            .all(|iv| iv.counts.zero == 1 && !iv.stable)
+    );
+    check_values(text, "c", &cv);
+    check_grid(text, "c", &cv, -3, 3, 60, true);
 }
 
 /// A random entry `a + b*unit` with small integers.

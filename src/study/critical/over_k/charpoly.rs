@@ -213,7 +213,8 @@ pub fn discriminant_over<F: Field>(f: &F, p: &BiPolyOver<F>) -> Result<Poly<F>> 
 }
 
 /// $\mathrm{Res}_x(P(x, v), \bar P(-x, v))$ with `conj` the complex conjugation of $F$
-/// (the identity on a real field).
+/// (the identity on a real field), after dividing out $x^z$ when $p_0 = \dots = p_{z-1} = 0$
+/// identically (a persistent zero eigenvalue).
 ///
 /// # Errors
 /// As [`discriminant_over`].
@@ -222,6 +223,11 @@ pub fn mirror_resultant<F: Field>(
     p: &BiPolyOver<F>,
     conj: &dyn Fn(&F::Elem) -> F::Elem,
 ) -> Result<Poly<F>> {
+    // a zero eigenvalue for every v (p_0 = ... = p_{z-1} = 0) is no crossing: divide x^z out
+    let z = p.coeffs.iter().take_while(|c| c.is_zero()).count();
+    let p = &BiPolyOver {
+        coeffs: p.coeffs[z.min(p.deg_x())..].to_vec(),
+    };
     let dv = p
         .coeffs
         .iter()

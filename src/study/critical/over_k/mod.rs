@@ -477,10 +477,13 @@ fn counts_at(
         let n = crate::algebraic::norm_over_q(ps);
         return Ok(Some((root_counts(&n)?, hurwitz_stable(&n)?, true)));
     }
+    // zero eigenvalues (a persistent one: p_0 = 0 for every v) counted and divided out
+    let zero = ps.coeffs().iter().take_while(|c| k.is_zero(c)).count();
+    let ps = Poly::new(k.clone(), ps.coeffs()[zero..].to_vec());
     let ps = if sign_k(k, &ps.lc()) == Ordering::Less {
         ps.neg()
     } else {
-        ps.clone()
+        ps
     };
     let n = ps.deg();
     let h = hurwitz_matrix(k, ps.coeffs(), n);
@@ -499,7 +502,7 @@ fn counts_at(
         prev = dj;
     }
     let rhp = first_col.windows(2).filter(|w| w[0] != w[1]).count();
-    let stable = rhp == 0;
+    let stable = rhp == 0 && zero == 0;
     let (mut neg, mut pos) = (0, 0);
     for (s, m) in ps.squarefree() {
         let (ns, np) = super::imaginary::real_roots_by_sign(&s, &|x| Ok(sign_k(k, x)))?;
@@ -510,7 +513,7 @@ fn counts_at(
         rhp >= pos && n >= rhp + neg && (n - rhp - neg) % 2 == 0 && (rhp - pos.min(rhp)) % 2 == 0;
     let counts = RootCounts {
         real_negative: neg,
-        zero: 0,
+        zero,
         real_positive: pos,
         complex_pairs_stable: n.saturating_sub(rhp + neg) / 2,
         imaginary_pairs: 0,
