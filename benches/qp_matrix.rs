@@ -18,7 +18,6 @@ mod common;
 mod systems;
 
 use common::{bench, selected};
-use exactlti::field::Field;
 use exactlti::jordan::params::jordan_params;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
@@ -26,7 +25,6 @@ use exactlti::realization::{MinrealMethod, minimal};
 use exactlti::rng::SplitMix64;
 use exactlti::structure::scb::scb;
 use exactlti::structure::zeros::invariant_zeros;
-use exactlti::system::StateSpace;
 use std::fmt::Write as _;
 
 /// Entries `c0 + c1*a + c2*b + c3*c` with coefficients in -5..=5 (row-major text).
