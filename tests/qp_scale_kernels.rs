@@ -10,6 +10,9 @@
 //! - diag(p0..p{n-1}): Rosenbrock and Ho–Kalman keep the Markov parameters; Rosenbrock up
 //!   to n = 7 (its Krylov matrix is a Vandermonde matrix; the staircase's controllable part
 //!   is read off the Krylov RREF / characteristic polynomial, never through $T^{-1}$);
+//! - Ho–Kalman from the extended Hankel matrix's RREF (no one-sided inverses) up to n = 7;
+//! - the inverse-free Rosenbrock and Ho–Kalman results equal those of the recorded path
+//!   (`--steps`, which still forms $T^{-1}$, $L^+$, $R^+$) on planted MIMO and SISO systems;
 //! - the controllable part equals the last k states of $T^{-1}(A, B, C)T$ for the
 //!   staircase's $T$ (planted non-minimal MIMO systems over Q, random systems over Q(a, b)).
 
@@ -186,10 +189,40 @@ fn diag_rosenbrock_and_ho_kalman_keep_the_markov_parameters() {
 fn diag_rosenbrock_without_the_vandermonde_inverse() {
     for n in [5, 7] {
         let s = diag_system(n);
-        let r = minimal(&s, MinrealMethod::Rosenbrock).unwrap();
-        assert_eq!(r.order, n, "n = {n}");
-        assert!(r.verified, "n = {n}");
-        assert_eq!(s.markov(2 * n + 1), r.system.markov(2 * n + 1), "n = {n}");
+        for method in [MinrealMethod::Rosenbrock, MinrealMethod::HoKalman] {
+            let r = minimal(&s, method).unwrap();
+            assert_eq!(r.order, n, "n = {n}, {method:?}");
+            assert!(r.verified, "n = {n}, {method:?}");
+            assert_eq!(s.markov(2 * n + 1), r.system.markov(2 * n + 1), "n = {n}");
+        }
+    }
+}
+
+#[test]
+fn inverse_free_paths_equal_the_recorded_paths() {
+    use exactlti::field::Q;
+    use exactlti::jordan::derivation::{Method, Recorder};
+    use exactlti::realization::{minimal_ho_kalman_recorded, minimal_rosenbrock_recorded};
+    for seed in 0..8 {
+        let p = crate::common::systems::planted(4 + seed as usize % 4, seed);
+        let siso = StateSpace::new(
+            p.sys.a.clone(),
+            p.sys.b.select_cols(&[1]),
+            p.sys.c.select_rows(&[0]),
+            p.sys.d.submatrix(0, 1, 1, 2),
+        )
+        .unwrap();
+        for (s, tag) in [(&p.sys, "mimo"), (&siso, "siso")] {
+            let mut rec = Recorder::new(Method::Rosenbrock, Q);
+            let old = minimal_rosenbrock_recorded(s, Some(&mut rec)).unwrap();
+            let new = minimal(s, MinrealMethod::Rosenbrock).unwrap();
+            assert_eq!(new.system, old.system, "rosenbrock {tag}, seed {seed}");
+            let mut rec = Recorder::new(Method::HoKalman, Q);
+            let old = minimal_ho_kalman_recorded(s, Some(&mut rec)).unwrap();
+            let new = minimal(s, MinrealMethod::HoKalman).unwrap();
+            assert_eq!(new.system, old.system, "ho-kalman {tag}, seed {seed}");
+            assert!(new.verified, "{tag}, seed {seed}");
+        }
     }
 }
 
