@@ -165,7 +165,7 @@ pub fn controllable_part<K: Field>(sys: &StateSpace<K>) -> Result<(StateSpace<K>
     // coordinates of ext's column j, in the staircase order
     let coord = |row: usize, j: usize| kr.coords.get(order[row], j).clone();
     let a = Matrix::from_fn(fld.clone(), r, r, |i, q| coord(i, kr.piv[order[q]] + m));
-    let b = Matrix::from_fn(fld.clone(), r, m, |i, j| coord(i, j));
+    let b = Matrix::from_fn(fld.clone(), r, m, coord);
     let cols: Vec<usize> = order.iter().map(|&k| kr.piv[k]).collect();
     let c = sys.c.try_mul(&kr.ext.select_cols(&cols))?;
     Ok((StateSpace::new(a, b, c, sys.d.clone())?, r))
