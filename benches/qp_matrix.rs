@@ -5,7 +5,8 @@
 //! Cases:
 //! - `dense N charpoly|det|rref`: dense N x N (N = 6, 7, 8), entries linear in a, b, c
 //!   (goal: >= 10x faster than SymPy's DomainMatrix);
-//! - `diag10 tf|minreal|scb|zeros|jordan`: A = diag(p0..p9), B = ones, C = ones (goal <= 1 s);
+//! - `diag10 tf|minreal|scb|zeros|jordan|minreal rosenbrock|minreal ho-kalman`:
+//!   A = diag(p0..p9), B = ones, C = ones (goal <= 1 s);
 //! - `chain10 tf|minreal`: the 10-mass chain in symbolic m, k, c (goal <= 2 s).
 //!
 //! Output lines: `<label>: <best> ms (median <ms> ms, <reps> reps)`; the dense inputs are
@@ -74,6 +75,8 @@ fn main() {
         ("diag10 scb", 2),
         ("diag10 zeros", 3),
         ("diag10 jordan", 4),
+        ("diag10 minreal rosenbrock", 5),
+        ("diag10 minreal ho-kalman", 6),
     ] {
         if !selected(label) {
             continue;
@@ -83,6 +86,8 @@ fn main() {
             1 => minimal(&s, MinrealMethod::Kalman).unwrap().order,
             2 => scb(&s.a, &s.b, &s.c, &s.d).unwrap().dims[0],
             4 => jordan_params(&s.a).unwrap().eigenvalues.len(),
+            5 => minimal(&s, MinrealMethod::Rosenbrock).unwrap().order,
+            6 => minimal(&s, MinrealMethod::HoKalman).unwrap().order,
             _ => invariant_zeros(&s.a, &s.b, &s.c, &s.d)
                 .unwrap()
                 .polynomial

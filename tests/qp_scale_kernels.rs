@@ -7,7 +7,14 @@
 //!   parameter factors $k$, $m$ of its determinant $\pm k^{n(n-1)} / m^{n(n+1)}$;
 //! - a pivot minor without candidate factors (7 x 7, linear in 10 parameters) is recorded
 //!   as one unfactored condition, equal to the determinant's numerator;
-//! - diag(p0..p{n-1}): Rosenbrock and Ho–Kalman keep the Markov parameters.
+//! - diag(p0..p{n-1}): Rosenbrock and Ho–Kalman keep the Markov parameters; Rosenbrock up
+//!   to n = 7 (its Krylov matrix is a Vandermonde matrix; the staircase's controllable part
+//!   is read off the Krylov RREF / characteristic polynomial, never through $T^{-1}$);
+//! - Ho–Kalman from the extended Hankel matrix's RREF (no one-sided inverses) up to n = 7;
+//! - the inverse-free Rosenbrock and Ho–Kalman results equal those of the recorded path
+//!   (`--steps`, which still forms $T^{-1}$, $L^+$, $R^+$) on planted MIMO and SISO systems;
+//! - the controllable part equals the last k states of $T^{-1}(A, B, C)T$ for the
+//!   staircase's $T$ (planted non-minimal MIMO systems over Q, random systems over Q(a, b)).
 
 use crate::common::systems::diag_qp;
 use crate::qp_scale::entry;
@@ -15,9 +22,10 @@ use exactlti::error::Error;
 use exactlti::field::Field;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
-use exactlti::realization::controllability_matrix;
 use exactlti::realization::{MinrealMethod, minimal};
+use exactlti::realization::{controllability_matrix, controllable_part, controllable_staircase};
 use exactlti::rng::SplitMix64;
+use exactlti::system::StateSpace;
 
 /// The oracle: Gauss–Jordan on $[A, I]$ (no kernel).
 fn gauss_jordan_inverse(a: &Matrix<RatFuncField>) -> Option<Matrix<RatFuncField>> {
@@ -172,5 +180,101 @@ fn diag_rosenbrock_and_ho_kalman_keep_the_markov_parameters() {
             assert!(r.verified, "n = {n}, {method:?}");
             assert_eq!(s.markov(2 * n + 1), r.system.markov(2 * n + 1), "n = {n}");
         }
+    }
+}
+
+/// The regression of issue 25: diag(p0..p6) by Rosenbrock went through $T^{-1}$ of the
+/// Vandermonde Krylov matrix (minutes, gigabytes at n = 10). The minimal realization is the
+/// whole system and keeps the Markov parameters.
+#[test]
+fn diag_rosenbrock_without_the_vandermonde_inverse() {
+    for n in [5, 7] {
+        let s = diag_system(n);
+        for method in [MinrealMethod::Rosenbrock, MinrealMethod::HoKalman] {
+            let r = minimal(&s, method).unwrap();
+            assert_eq!(r.order, n, "n = {n}, {method:?}");
+            assert!(r.verified, "n = {n}, {method:?}");
+            assert_eq!(s.markov(2 * n + 1), r.system.markov(2 * n + 1), "n = {n}");
+        }
+    }
+}
+
+#[test]
+fn inverse_free_paths_equal_the_recorded_paths() {
+    use exactlti::field::Q;
+    use exactlti::jordan::derivation::{Method, Recorder};
+    use exactlti::realization::{minimal_ho_kalman_recorded, minimal_rosenbrock_recorded};
+    for seed in 0..8 {
+        let p = crate::common::systems::planted(4 + seed as usize % 4, seed);
+        let siso = StateSpace::new(
+            p.sys.a.clone(),
+            p.sys.b.select_cols(&[1]),
+            p.sys.c.select_rows(&[0]),
+            p.sys.d.submatrix(0, 1, 1, 2),
+        )
+        .unwrap();
+        for (s, tag) in [(&p.sys, "mimo"), (&siso, "siso")] {
+            let mut rec = Recorder::new(Method::Rosenbrock, Q);
+            let old = minimal_rosenbrock_recorded(s, Some(&mut rec)).unwrap();
+            let new = minimal(s, MinrealMethod::Rosenbrock).unwrap();
+            assert_eq!(new.system, old.system, "rosenbrock {tag}, seed {seed}");
+            let mut rec = Recorder::new(Method::HoKalman, Q);
+            let old = minimal_ho_kalman_recorded(s, Some(&mut rec)).unwrap();
+            let new = minimal(s, MinrealMethod::HoKalman).unwrap();
+            assert_eq!(new.system, old.system, "ho-kalman {tag}, seed {seed}");
+            assert!(new.verified, "{tag}, seed {seed}");
+        }
+    }
+}
+
+/// `controllable_part` = the last k states of `sys.transform(T)`, T from the staircase.
+fn assert_part_is_the_staircase_part<K: exactlti::field::Field>(s: &StateSpace<K>, tag: &str) {
+    let n = s.nstates();
+    let (t, k) = controllable_staircase(&s.a, &s.b).unwrap();
+    let want = s
+        .transform(&t)
+        .unwrap()
+        .select_states(&(n - k..n).collect::<Vec<_>>());
+    let (got, kk) = controllable_part(s).unwrap();
+    assert_eq!(kk, k, "{tag}");
+    assert_eq!(got.a, want.a, "{tag}: A22");
+    assert_eq!(got.b, want.b, "{tag}: B2");
+    assert_eq!(got.c, want.c, "{tag}: C2");
+    assert_eq!(got.d, want.d, "{tag}: D");
+}
+
+#[test]
+fn controllable_part_equals_the_transformed_staircase() {
+    for seed in 0..12 {
+        let n = 3 + (seed as usize % 6);
+        let p = crate::common::systems::planted(n, seed);
+        assert_part_is_the_staircase_part(&p.sys, &format!("planted n = {n}, seed {seed}"));
+        assert_part_is_the_staircase_part(&p.sys.dual(), &format!("dual, seed {seed}"));
+        // one input (the Cayley-Hamilton branch when controllable)
+        let one = StateSpace::new(
+            p.sys.a.clone(),
+            p.sys.b.select_cols(&[0]),
+            p.sys.c.clone(),
+            p.sys.d.select_cols(&[0]),
+        )
+        .unwrap();
+        assert_part_is_the_staircase_part(&one, &format!("one input, seed {seed}"));
+    }
+    let k = RatFuncField::new(&["a", "b"]).unwrap();
+    let mut rng = SplitMix64(31);
+    for case in 0..6 {
+        let (n, m) = (rng.int(2, 4) as usize, rng.int(1, 2) as usize);
+        let mut random = |r, c| {
+            Matrix::from_fn(k.clone(), r, c, |_, _| {
+                if rng.int(0, 2) == 0 {
+                    k.zero()
+                } else {
+                    entry(&k, &mut rng)
+                }
+            })
+        };
+        let (a, b, c) = (random(n, n), random(n, m), random(1, n));
+        let s = StateSpace::new_strictly_proper(a, b, c).unwrap();
+        assert_part_is_the_staircase_part(&s, &format!("Q(a, b) case {case}"));
     }
 }

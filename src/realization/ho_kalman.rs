@@ -30,6 +30,49 @@ fn left_inverse<K: Field>(l: &Matrix<K>) -> Result<Matrix<K>> {
     Ok(out)
 }
 
+/// The Ho–Kalman realization without one-sided inverses: the extended Hankel matrix
+/// $H_e = [H_0, h]$ ($n$ block rows, $n + 1$ block columns, so $H_1 = H_e$ without its first
+/// block column) has the rank and pivots of $H_0$, and $H_e = L R_e$ with $R_e$ the nonzero
+/// rows of its RREF. Then $L^+ H_1 R^+ = R_e[:, m + P]$ ($P$ the pivots, $R^+$ the unit
+/// columns at $P$): $A$ is read off the RREF, $B = R_e[:, 0..m]$, $C = H_0[0..p, P]$ — the
+/// matrices of the factorization in the module docs, exactly. With one input and one output
+/// at full rank $n$ (controllable and observable) the last column is $-c$ ($c$ the coefficients of $\det(sI - A)$: the
+/// Markov parameters obey that recurrence) and no RREF is needed. Over $\mathbb{Q}(p)$ this
+/// avoids the inverse of $H_0 = \mathcal O \mathcal C$, whose entries have the squared
+/// Vandermonde determinant as denominators for `diag(p0..p9)`.
+fn factor_extended<K: Field>(sys: &StateSpace<K>) -> Result<StateSpace<K>> {
+    let (n, p, m) = (sys.nstates(), sys.noutputs(), sys.ninputs());
+    let fld = sys.field().clone();
+    let he = hankel_matrix(sys, n, n + 1, 0);
+    // one input, one output: H_0 = O C is square, of rank n iff both factors are (their
+    // determinants' factors are those of det H_0, and recorded as its conditions)
+    let full = p == 1
+        && m == 1
+        && super::controllability::is_controllable(&sys.a, &sys.b)
+        && super::controllability::is_observable(&sys.a, &sys.c);
+    let (coords, piv) = if full {
+        let cp = sys.a.charpoly()?;
+        let coords = Matrix::from_fn(fld.clone(), n, n + 1, |i, j| {
+            if j == n {
+                fld.neg(&cp.coeff(i))
+            } else if i == j {
+                fld.one()
+            } else {
+                fld.zero()
+            }
+        });
+        (coords, (0..n).collect::<Vec<_>>())
+    } else {
+        let (r, piv) = he.rref();
+        (r.submatrix(0, piv.len(), 0, he.ncols()), piv)
+    };
+    let r = piv.len();
+    let a = Matrix::from_fn(fld.clone(), r, r, |i, j| coords.get(i, piv[j] + m).clone());
+    let b = coords.submatrix(0, r, 0, m);
+    let c = he.select_cols(&piv).submatrix(0, p, 0, r);
+    StateSpace::new(a, b, c, sys.d.clone())
+}
+
 /// Minimal realization from the Markov parameters by Ho–Kalman.
 ///
 /// # Errors
@@ -45,7 +88,7 @@ pub fn minimal_ho_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealiza
 /// As [`minimal_ho_kalman`].
 pub fn minimal_ho_kalman_recorded<K: Field>(
     sys: &StateSpace<K>,
-    mut rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,
+    rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,
 ) -> Result<MinimalRealization<K>> {
     let n = sys.nstates();
     let (p, m) = (sys.noutputs(), sys.ninputs());
@@ -67,13 +110,20 @@ pub fn minimal_ho_kalman_recorded<K: Field>(
             None,
         ));
     }
+    let Some(rc) = rec else {
+        let min = factor_extended(sys)?;
+        return Ok(MinimalRealization::new(
+            sys,
+            min,
+            MinrealMethod::HoKalman,
+            None,
+        ));
+    };
     let h0 = hankel_matrix(sys, n, n, 0);
     let h1 = hankel_matrix(sys, n, n, 1);
     let (rref, piv) = h0.rref();
     let r = piv.len();
-    if let Some(rc) = rec.as_deref_mut() {
-        super::steps::hankel(rc, &h0, r);
-    }
+    super::steps::hankel(rc, &h0, r);
     let l = h0.select_cols(&piv);
     let rr = rref.submatrix(0, r, 0, h0.ncols());
     let linv = left_inverse(&l)?;
@@ -82,10 +132,8 @@ pub fn minimal_ho_kalman_recorded<K: Field>(
     let b = rr.submatrix(0, r, 0, m);
     let c = l.submatrix(0, p, 0, r);
     let min = StateSpace::new(a, b, c, sys.d.clone())?;
-    if let Some(rc) = rec {
-        super::steps::hankel_factor(rc, [&h0, &h1], [&l, &rr], [&linv, &rinv], &min);
-        super::steps::minimal_part(rc, sys, &min);
-    }
+    super::steps::hankel_factor(rc, [&h0, &h1], [&l, &rr], [&linv, &rinv], &min);
+    super::steps::minimal_part(rc, sys, &min);
     Ok(MinimalRealization::new(
         sys,
         min,

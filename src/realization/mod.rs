@@ -61,7 +61,9 @@ pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
 pub use modal::{ExactFigure, ModalTable, Mode, modal_table, modal_table_over};
-pub use rosenbrock::{controllable_staircase, minimal_rosenbrock, minimal_rosenbrock_recorded};
+pub use rosenbrock::{
+    controllable_part, controllable_staircase, minimal_rosenbrock, minimal_rosenbrock_recorded,
+};
 pub use weierstrass::{
     WeierstrassSplit, descriptor_transfer_matrix, eval_transfer, same_transfer, weierstrass_split,
 };

@@ -14,6 +14,16 @@
 //! The reached states after each step are the nested Krylov spaces, so the staircase
 //! coordinates are formed from them directly (see [`controllable_staircase`]): one
 //! similarity $T^{-1} A T$ instead of one per step, whose entries grew with every step.
+//!
+//! The minimal realization needs no $T^{-1}$ at all ([`controllable_part`]): in the basis of
+//! the reached Krylov columns, $A$ maps column $A^j b_i$ to $A^{j+1} b_i$, whose coordinates
+//! are a column of the RREF of the Krylov matrix (extended by one block), and $B$'s columns
+//! are the block $j = 0$; so $(A_{22}, B_2, C_2)$ of eq. 17 are read off the RREF, and for
+//! one input at full rank off the characteristic polynomial ($A^n b = -\sum_k c_k A^k b$,
+//! Cayley–Hamilton). The dual staircase is the same on the dual of that part, and the
+//! minimal system is the dual of the dual's controllable part. Over $\mathbb{Q}(p)$ this
+//! avoids inverting a Vandermonde-like Krylov matrix (`diag(p0..p9)`: rows with
+//! denominators $\prod_{j \ne i} (p_i - p_j)$) and its squared Hankel counterpart.
 
 use super::minimal::MinimalRealization;
 use crate::error::Result;
@@ -72,6 +82,95 @@ pub fn controllable_staircase<K: Field>(
     Ok((t, rank))
 }
 
+/// The reached Krylov columns and the coordinates of every Krylov column in them.
+struct Krylov<K: Field> {
+    /// $[B, AB, \dots, A^J B]$: the blocks that raised the rank, then one more.
+    ext: Matrix<K>,
+    /// Pivot columns of `ext` (greedy left to right), ascending; all in the first $J$ blocks.
+    piv: Vec<usize>,
+    /// `rank x ext.ncols()`: column $j$ of `ext` is $\sum_k$ `coords[k, j]` `ext[:, piv[k]]`.
+    coords: Matrix<K>,
+}
+
+/// The Krylov matrix $[B, AB, \dots, A^{n-1}B]$, its pivot columns (one pivot computation:
+/// the ranks of the growing blocks would each be certified by a minor of their own, which
+/// for the dual of a companion form does not factor), the blocks that raised the rank and
+/// one more, and the coordinates of all their columns in the pivot columns (`None` when $B$
+/// reaches nothing).
+fn krylov<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Result<Option<Krylov<K>>> {
+    let n = a.nrows();
+    let m = b.ncols();
+    if n == 0 || m == 0 {
+        return Ok(None);
+    }
+    let mut blocks = vec![b.clone()];
+    for _ in 0..n {
+        let next = a * blocks.last().expect("one block");
+        blocks.push(next);
+    }
+    let hstack = |bs: &[Matrix<K>]| -> Result<Matrix<K>> {
+        let mut out = bs[0].clone();
+        for x in &bs[1..] {
+            out = out.hstack(x)?;
+        }
+        Ok(out)
+    };
+    let piv = hstack(&blocks[..n])?.pivots();
+    let Some(&lastpiv) = piv.last() else {
+        return Ok(None);
+    };
+    // blocks 0..=J: the J blocks that raised the rank and the one that did not (or A^n B)
+    let ext = hstack(&blocks[..lastpiv / m + 2])?;
+    let rank = piv.len();
+    if m == 1 && rank == n {
+        // pivots b, Ab, ..., A^{n-1} b; A^n b = -sum_k c_k A^k b (Cayley-Hamilton)
+        let fld = a.field().clone();
+        let cp = a.charpoly()?;
+        let coords = Matrix::from_fn(fld.clone(), n, n + 1, |i, j| {
+            if j == n {
+                fld.neg(&cp.coeff(i))
+            } else if i == j {
+                fld.one()
+            } else {
+                fld.zero()
+            }
+        });
+        return Ok(Some(Krylov {
+            ext,
+            piv: (0..n).collect(),
+            coords,
+        }));
+    }
+    let (r, piv) = ext.rref();
+    let coords = r.submatrix(0, piv.len(), 0, ext.ncols());
+    Ok(Some(Krylov { ext, piv, coords }))
+}
+
+/// The controllable part $(A_{22}, B_2, C_2, D)$ of eq. 17 and its order: equal to the last
+/// `k` states of `sys.transform(T)` for `(T, k)` from [`controllable_staircase`], computed
+/// without $T^{-1}$ (see the module docs).
+///
+/// # Errors
+/// Only internal failures.
+pub fn controllable_part<K: Field>(sys: &StateSpace<K>) -> Result<(StateSpace<K>, usize)> {
+    let Some(kr) = krylov(&sys.a, &sys.b)? else {
+        return Ok((sys.select_states(&[]), 0));
+    };
+    let fld = sys.field().clone();
+    let m = sys.ninputs();
+    let r = kr.piv.len();
+    // the staircase order of the reached columns: block 0 last
+    let mut order: Vec<usize> = (0..r).collect();
+    order.sort_by_key(|&k| (std::cmp::Reverse(kr.piv[k] / m), kr.piv[k]));
+    // coordinates of ext's column j, in the staircase order
+    let coord = |row: usize, j: usize| kr.coords.get(order[row], j).clone();
+    let a = Matrix::from_fn(fld.clone(), r, r, |i, q| coord(i, kr.piv[order[q]] + m));
+    let b = Matrix::from_fn(fld.clone(), r, m, coord);
+    let cols: Vec<usize> = order.iter().map(|&k| kr.piv[k]).collect();
+    let c = sys.c.try_mul(&kr.ext.select_cols(&cols))?;
+    Ok((StateSpace::new(a, b, c, sys.d.clone())?, r))
+}
+
 /// Minimal realization by Rosenbrock's method.
 ///
 /// # Errors
@@ -87,14 +186,24 @@ pub fn minimal_rosenbrock<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealiz
 /// As [`minimal_rosenbrock`].
 pub fn minimal_rosenbrock_recorded<K: Field>(
     sys: &StateSpace<K>,
-    mut rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,
+    rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,
 ) -> Result<MinimalRealization<K>> {
+    let Some(rec) = rec else {
+        // the staircase's controllable part, then that of its dual (eq. 19), dualized back
+        let (ctrl, _) = controllable_part(sys)?;
+        let (obs, _) = controllable_part(&ctrl.dual())?;
+        let min = obs.dual();
+        return Ok(MinimalRealization::new(
+            sys,
+            min,
+            super::MinrealMethod::Rosenbrock,
+            None,
+        ));
+    };
     let n = sys.nstates();
     let (t1, kc) = controllable_staircase(&sys.a, &sys.b)?;
     let s1 = sys.transform(&t1)?;
-    if let Some(r) = rec.as_deref_mut() {
-        super::steps::staircase(r, sys, &t1, &s1, kc, false);
-    }
+    super::steps::staircase(rec, sys, &t1, &s1, kc, false);
     let cidx: Vec<usize> = (n - kc..n).collect();
     let ctrl = s1.select_states(&cidx);
     // observability staircase on the dual of the controllable part
@@ -105,10 +214,8 @@ pub fn minimal_rosenbrock_recorded<K: Field>(
     let s2 = ctrl.transform(&t2p)?;
     let oidx: Vec<usize> = (kc - ko..kc).collect();
     let min = s2.select_states(&oidx);
-    if let Some(r) = rec {
-        super::steps::staircase(r, &dual, &t2, &dual.transform(&t2)?, ko, true);
-        super::steps::minimal_part(r, sys, &min);
-    }
+    super::steps::staircase(rec, &dual, &t2, &dual.transform(&t2)?, ko, true);
+    super::steps::minimal_part(rec, sys, &min);
     Ok(MinimalRealization::new(
         sys,
         min,

@@ -128,24 +128,27 @@ impl<K: Field> StateSpace<K> {
             d: self.d.clone(),
         })
     }
-    /// The first `k` Markov parameters $C A^i B$, $i = 0..k-1$: as $(C A^i) B$ when there are
-    /// no more outputs than inputs (the rows $C A^i$ of a controllable companion form with
-    /// $B = e_1$ are the Markov parameters themselves, while its columns $A^i e_1$ swell),
-    /// else as $C (A^i B)$.
+    /// The first `k` Markov parameters $C A^i B$, $i = 0..k-1$, as $(C A^{i-h})(A^h B)$ with
+    /// $h = \lfloor i/2 \rfloor$: both halves at most $\lceil k/2 \rceil$ powers deep. In a
+    /// controllable companion form the columns $A^i e_1$ swell past $i = n$ while the rows
+    /// $C A^i$ stay Markov parameters, in an observer form the other way round (over
+    /// $\mathbb{Q}(p_0..p_9)$: $10^5$ terms per entry at depth $2n$); at depth $\le n$ both
+    /// are still unit vectors or one coefficient row.
     pub fn markov(&self, k: usize) -> Vec<Matrix<K>> {
+        let mut left = vec![self.c.clone()]; // C A^j
+        let mut right = vec![self.b.clone()]; // A^j B
         let mut out = Vec::with_capacity(k);
-        if self.noutputs() <= self.ninputs() {
-            let mut ca = self.c.clone();
-            for _ in 0..k {
-                out.push(&ca * &self.b);
-                ca = &ca * &self.a;
+        for i in 0..k {
+            let h = i / 2;
+            if right.len() <= h {
+                let next = &self.a * right.last().expect("one");
+                right.push(next);
             }
-            return out;
-        }
-        let mut ab = self.b.clone();
-        for _ in 0..k {
-            out.push(&self.c * &ab);
-            ab = &self.a * &ab;
+            if left.len() <= i - h {
+                let next = left.last().expect("one") * &self.a;
+                left.push(next);
+            }
+            out.push(&left[i - h] * &right[h]);
         }
         out
     }
