@@ -19,6 +19,7 @@ mod commands;
 mod common;
 mod critical;
 mod dcgain;
+mod discrete;
 mod float_cmds;
 mod float_compare;
 mod interconnect;
@@ -40,6 +41,7 @@ pub use bifurcations::Of;
 pub use commands::{
     BUILTIN_EXAMPLE, RunContext, execute, execute_ctx, execute_on, execute_on_many, execute_with,
 };
+pub use discrete::{C2dMethod, DiscreteCmd};
 pub use interconnect::InterconnectCmd;
 pub use system::{Options, System, SystemVisitor};
 pub use toolbox::{GramArg, ToolboxCmd};
@@ -270,6 +272,9 @@ pub enum Command {
     /// `step_info`, `damp`, `gram`).
     #[command(flatten)]
     Toolbox(toolbox::ToolboxCmd),
+    /// Discrete time: exact stability, c2d, d2c.
+    #[command(flatten)]
+    Discrete(discrete::DiscreteCmd),
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {
