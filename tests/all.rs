@@ -31,6 +31,8 @@ mod cli_pencil;
 mod ctrb_structure;
 #[path = "dcgain.rs"]
 mod dcgain;
+#[path = "discrete.rs"]
+mod discrete;
 #[path = "descriptor_class.rs"]
 mod descriptor_class;
 #[path = "display.rs"]
