@@ -31,10 +31,10 @@ mod cli_pencil;
 mod ctrb_structure;
 #[path = "dcgain.rs"]
 mod dcgain;
-#[path = "discrete.rs"]
-mod discrete;
 #[path = "descriptor_class.rs"]
 mod descriptor_class;
+#[path = "discrete.rs"]
+mod discrete;
 #[path = "display.rs"]
 mod display;
 #[path = "everyday.rs"]

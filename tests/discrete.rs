@@ -52,9 +52,15 @@ fn factor_places() {
     // self-reciprocal with real roots 2.618, 0.382: one outside
     assert_eq!(classify_factor(&p("x^2 - 3*x + 1")), Place::Outside);
     // a Salem polynomial: one root outside, one inside, two on the circle
-    assert_eq!(classify_factor(&p("x^4 - x^3 - x^2 - x + 1")), Place::Outside);
+    assert_eq!(
+        classify_factor(&p("x^4 - x^3 - x^2 - x + 1")),
+        Place::Outside
+    );
     // Phi_5 (primitive 5th roots of unity)
-    assert_eq!(classify_factor(&p("x^4 + x^3 + x^2 + x + 1")), Place::Boundary);
+    assert_eq!(
+        classify_factor(&p("x^4 + x^3 + x^2 + x + 1")),
+        Place::Boundary
+    );
     assert_eq!(classify_factor(&p("x^2 - x + 1/2")), Place::Inside);
     assert_eq!(classify_factor(&p("x - 3")), Place::Outside);
 }
@@ -107,7 +113,10 @@ fn jury_decision_equals_float_moduli() {
             unstable += 1;
         }
     }
-    assert!(stable > 30 && unstable > 30, "{stable} stable, {unstable} unstable");
+    assert!(
+        stable > 30 && unstable > 30,
+        "{stable} stable, {unstable} unstable"
+    );
 }
 
 #[test]
@@ -207,26 +216,41 @@ fn cli_dt_key_commands_and_refusals() {
     );
     let (code, out, _) = run(&["stability", &d]);
     assert_eq!(code, 0);
-    assert!(out.contains("asymptotically stable (every eigenvalue in |z| < 1)"), "{out}");
+    assert!(
+        out.contains("asymptotically stable (every eigenvalue in |z| < 1)"),
+        "{out}"
+    );
     let (code, out, _) = run(&["dcgain", &d]);
     assert_eq!(code, 0);
-    assert!(out.contains("DC gain G(1)") && out.contains("[ 1 ]"), "{out}");
+    assert!(
+        out.contains("DC gain G(1)") && out.contains("[ 1 ]"),
+        "{out}"
+    );
     let (code, out, _) = run(&["step", &d, "--points", "4", "--format", "json"]);
     assert_eq!(code, 0);
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(j["exact"][3][0][0], "23/100", "{out}");
     let (code, _, err) = run(&["margin", &d]);
     assert_eq!(code, 2);
-    assert!(err.contains("continuous-time") && err.contains("dt = 1/10"), "{err}");
+    assert!(
+        err.contains("continuous-time") && err.contains("dt = 1/10"),
+        "{err}"
+    );
     // bad values of dt name the key
     for bad in [r#"-1"#, r#""abc""#, "true", "[1]"] {
-        let f = write("bad.json", &format!(r#"{{"dt": {bad}, "A": [[1]], "B": [[1]], "C": [[1]]}}"#));
+        let f = write(
+            "bad.json",
+            &format!(r#"{{"dt": {bad}, "A": [[1]], "B": [[1]], "C": [[1]]}}"#),
+        );
         let (code, _, err) = run(&["tf", &f]);
         assert_eq!(code, 2, "{bad}");
         assert!(err.contains("dt"), "{bad}: {err}");
     }
     // dt = 0 is continuous time
-    let f = write("zero.json", r#"{"dt": 0, "A": [[-1]], "B": [[1]], "C": [[1]]}"#);
+    let f = write(
+        "zero.json",
+        r#"{"dt": 0, "A": [[-1]], "B": [[1]], "C": [[1]]}"#,
+    );
     let (code, out, _) = run(&["stability", &f]);
     assert_eq!(code, 0);
     assert!(out.contains("Re s < 0"), "{out}");
@@ -234,7 +258,10 @@ fn cli_dt_key_commands_and_refusals() {
     let c = write("c.json", r#"{"A": [[-1]], "B": [[1]], "C": [[1]]}"#);
     let (code, _, err) = run(&["feedback", &c, &d]);
     assert_eq!(code, 2);
-    assert!(err.contains("continuous time") && err.contains("dt = 1/10"), "{err}");
+    assert!(
+        err.contains("continuous time") && err.contains("dt = 1/10"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -248,13 +275,19 @@ fn cli_c2d_d2c_round_trip_through_files() {
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("verified: true"), "{out}");
     let text = std::fs::read_to_string(&d).unwrap();
-    assert!(text.contains(r#""dt": "1/10""#) && text.contains(r#""inputs": ["u"]"#), "{text}");
+    assert!(
+        text.contains(r#""dt": "1/10""#) && text.contains(r#""inputs": ["u"]"#),
+        "{text}"
+    );
     let back = write("plant_c.json", "");
     let (code, _, err) = run(&["d2c", &d, "--out", &back]);
     assert_eq!(code, 0, "{err}");
     let (_, a, _) = run(&["tf", &c]);
     let (_, b, _) = run(&["tf", &back]);
-    assert_eq!(a.lines().skip(1).collect::<Vec<_>>(), b.lines().skip(1).collect::<Vec<_>>());
+    assert_eq!(
+        a.lines().skip(1).collect::<Vec<_>>(),
+        b.lines().skip(1).collect::<Vec<_>>()
+    );
     // zoh (float path) keeps the sample time and the DC gain to float accuracy
     let z = write("plant_z.json", "");
     let (code, _, err) = run(&["c2d", &c, "--dt", "0.1", "--method", "zoh", "--out", &z]);
@@ -262,7 +295,10 @@ fn cli_c2d_d2c_round_trip_through_files() {
     let (_, out, _) = run(&["dcgain", &z, "--format", "json"]);
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     let g = exactlti::field::parse_rational(j["dc_gain"][0][0].as_str().unwrap()).unwrap();
-    assert!((exactlti::field::rational_to_f64(&g) - 0.5).abs() < 1e-12, "{g}");
+    assert!(
+        (exactlti::field::rational_to_f64(&g) - 0.5).abs() < 1e-12,
+        "{g}"
+    );
     let (code, _, err) = run(&["c2d", &d, "--dt", "1"]);
     assert_eq!(code, 2);
     assert!(err.contains("already a discrete-time system"), "{err}");

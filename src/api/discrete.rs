@@ -282,7 +282,12 @@ pub fn on_sampled<K: Field + 'static>(
             Some(sequence(f, t, path, dt, impulse, opts))
         }
         C::Freqresp {
-            from, to, points, svg, csv, ..
+            from,
+            to,
+            points,
+            svg,
+            csv,
+            ..
         } => {
             if svg.is_some() {
                 return Some(Err(fail(
@@ -302,10 +307,10 @@ pub fn on_sampled<K: Field + 'static>(
                 Some(rational_to_f64(dt)),
             );
             Some(r.map(|r| {
-                Outcome::plain(
-                    r.str("dt", fmt_rational(dt))
-                        .str("note", "G(e^(j 2 pi f T)), up to the Nyquist frequency 1/(2 T) Hz"),
-                )
+                Outcome::plain(r.str("dt", fmt_rational(dt)).str(
+                    "note",
+                    "G(e^(j 2 pi f T)), up to the Nyquist frequency 1/(2 T) Hz",
+                ))
             }))
         }
         C::Analyze { .. } => refuse("analyze"),

@@ -199,7 +199,12 @@ fn result_signals(
     systems: &[&super::System],
     dt: Option<crate::field::Rational>,
 ) -> crate::io::SignalNames {
-    let sig = |i: usize| systems.get(i).map(|s| s.file().signals.clone()).unwrap_or_default();
+    let sig = |i: usize| {
+        systems
+            .get(i)
+            .map(|s| s.file().signals.clone())
+            .unwrap_or_default()
+    };
     let (inputs, outputs) = match op {
         Operation::Series => (sig(0).inputs, sig(systems.len().saturating_sub(1)).outputs),
         Operation::Parallel | Operation::Feedback(_) => (sig(0).inputs, sig(0).outputs),
@@ -286,5 +291,69 @@ impl SystemsVisitor for Connect<'_> {
         }
         let ok = verified && min.as_ref().is_none_or(|m| m.verified);
         Ok(Outcome::new(report, ok))
+    }
+}
+
+/// The interconnection of `systems` (in the order of the command's files) as a system of
+/// its own (the Python operators `G * H`, `G + H`, `-G`, `G.feedback(K)`): the exact result,
+/// its signal names and sample time by python-control's rules ([`result_signals`]).
+///
+/// # Errors
+/// As [`run_on`]: a wrong count, two fields, two time domains, the interconnection's own.
+pub fn system_of(
+    cmd: &InterconnectCmd,
+    systems: &[&super::System],
+) -> Result<super::System, Failure> {
+    let (op, paths, _) = cmd.parts();
+    if systems.len() != paths.len() {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{}: needs {} systems (got {})",
+                op.name(),
+                paths.len(),
+                systems.len()
+            ),
+        });
+    }
+    let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let dt = common_dt(op, &names, systems)?;
+    let signals = result_signals(op, systems, dt);
+    let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
+    let name = format!("{} of {}", op.name(), names.join(", "));
+    let sys = common_field(&loaded)?.run(Build { op, name: &name })?;
+    Ok(sys.with_signals(signals))
+}
+
+struct Build<'a> {
+    op: Operation,
+    name: &'a str,
+}
+
+impl SystemsVisitor for Build<'_> {
+    type Output = Result<super::System, Failure>;
+    fn visit<K: Field + 'static>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+        let e = |err| with_path(Path::new(self.name), err);
+        let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();
+        let conn = Interconnection::of(self.op, &parts).map_err(e)?;
+        let ss = conn.compute().map_err(e)?;
+        if !verify(&conn, &ss) {
+            return Err(Failure {
+                code: 1,
+                message: format!(
+                    "{}: the exact check of the interconnection failed",
+                    self.name
+                ),
+            });
+        }
+        let typed = TypedSystem {
+            descriptor: None,
+            a_raw: ss.a.clone(),
+            ss,
+        };
+        super::System::from_field(self.name, typed).ok_or_else(|| Failure {
+            code: 1,
+            message: format!("{}: internal: an unknown field", self.name),
+        })
     }
 }

@@ -42,7 +42,7 @@ pub use commands::{
     BUILTIN_EXAMPLE, RunContext, execute, execute_ctx, execute_on, execute_on_many, execute_with,
 };
 pub use discrete::{C2dMethod, DiscreteCmd};
-pub use interconnect::InterconnectCmd;
+pub use interconnect::{InterconnectCmd, system_of as interconnect_system};
 pub use system::{Options, System, SystemVisitor};
 pub use toolbox::{GramArg, ToolboxCmd};
 

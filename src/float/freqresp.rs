@@ -98,7 +98,9 @@ pub fn freqresp_sampled(
     dt: f64,
 ) -> Result<Vec<DMatrix<Complex<f64>>>> {
     if !(dt.is_finite() && dt > 0.0) {
-        return Err(Error::Invalid("freqresp: the sample time must be > 0".into()));
+        return Err(Error::Invalid(
+            "freqresp: the sample time must be > 0".into(),
+        ));
     }
     freqresp_pencil(None, a, b, c, d, freqs_hz, Some(dt))
 }

@@ -15,7 +15,9 @@ pub fn stability_report(s: &Stability, dt: Option<&Rational>) -> Report {
         Domain::Discrete => ("z", "|z| < 1", "unit circle"),
     };
     let verdict = match s.verdict {
-        Verdict::AsymptoticallyStable => format!("asymptotically stable (every eigenvalue in {region})"),
+        Verdict::AsymptoticallyStable => {
+            format!("asymptotically stable (every eigenvalue in {region})")
+        }
         Verdict::MarginallyStable => format!(
             "marginally stable (eigenvalues on the {boundary}, all semisimple; the others in {region})"
         ),
@@ -41,15 +43,16 @@ pub fn stability_report(s: &Stability, dt: Option<&Rational>) -> Report {
             .map(|r| Value::List(r.iter().map(|x| Value::Str(x.clone())).collect()))
             .collect(),
     );
-    let header = ["factor", "in det", "in minpoly", "roots"].map(String::from).to_vec();
-    let mut r = Report::titled("stability (exact)")
-        .str(
-            "time",
-            match s.domain {
-                Domain::Continuous => "continuous",
-                Domain::Discrete => "discrete",
-            },
-        );
+    let header = ["factor", "in det", "in minpoly", "roots"]
+        .map(String::from)
+        .to_vec();
+    let mut r = Report::titled("stability (exact)").str(
+        "time",
+        match s.domain {
+            Domain::Continuous => "continuous",
+            Domain::Discrete => "discrete",
+        },
+    );
     if let Some(dt) = dt {
         r = r.str("dt", fmt_rational(dt));
     }
@@ -122,8 +125,14 @@ pub fn sequence_report<K: Field>(
     Report::titled(format!("{what} (discrete time, exact)"))
         .str("dt", fmt_rational(dt))
         .int("samples", seq.len())
-        .list("inputs", inputs.iter().map(|x| Value::Str(x.clone())).collect())
-        .list("outputs", outputs.iter().map(|x| Value::Str(x.clone())).collect())
+        .list(
+            "inputs",
+            inputs.iter().map(|x| Value::Str(x.clone())).collect(),
+        )
+        .list(
+            "outputs",
+            outputs.iter().map(|x| Value::Str(x.clone())).collect(),
+        )
         .with("first_samples", shown)
         .with("exact", Value::hidden_in_text(Value::List(exact)))
 }

@@ -92,10 +92,6 @@ pub fn impulse_sequence<K: Field>(
         return out;
     }
     out.push(s.d.scale(&inv_t));
-    out.extend(
-        s.markov(samples - 1)
-            .into_iter()
-            .map(|m| m.scale(&inv_t)),
-    );
+    out.extend(s.markov(samples - 1).into_iter().map(|m| m.scale(&inv_t)));
     out
 }

@@ -126,7 +126,10 @@ fn palindromic_reduce(f: &Poly<Q>) -> Poly<Q> {
     let m = f.deg() / 2;
     let x = Poly::x(Q);
     let mut h = Poly::constant(Q, f.coeff(m));
-    let (mut prev, mut cur) = (Poly::constant(Q, Rational::from_integer(2.into())), x.clone());
+    let (mut prev, mut cur) = (
+        Poly::constant(Q, Rational::from_integer(2.into())),
+        x.clone(),
+    );
     for k in 1..=m {
         h = h.add(&cur.scale(&f.coeff(m + k)));
         let next = x.mul(&cur).sub(&prev);
@@ -167,8 +170,20 @@ pub fn classify_factor(f: &Poly<Q>) -> Place {
 /// at $s = 1$).
 fn to_disk(f: &Poly<Q>) -> Option<Poly<Q>> {
     let d = f.deg();
-    let zm = Poly::new(Q, vec![-Rational::from_integer(1.into()), Rational::from_integer(1.into())]);
-    let zp = Poly::new(Q, vec![Rational::from_integer(1.into()), Rational::from_integer(1.into())]);
+    let zm = Poly::new(
+        Q,
+        vec![
+            -Rational::from_integer(1.into()),
+            Rational::from_integer(1.into()),
+        ],
+    );
+    let zp = Poly::new(
+        Q,
+        vec![
+            Rational::from_integer(1.into()),
+            Rational::from_integer(1.into()),
+        ],
+    );
     let mut g = Poly::zero(Q);
     for (k, c) in f.coeffs().iter().enumerate() {
         g = g.add(&zm.pow(k as u32).mul(&zp.pow((d - k) as u32)).scale(c));

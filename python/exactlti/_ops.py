@@ -1,0 +1,140 @@
+"""Operators and python-control's system functions on exact systems.
+
+``G * H`` is the series connection H then G (transfer matrix ``G(s) H(s)``, as in
+python-control), ``G + H`` the parallel one, ``-G`` and ``G - H`` follow, and a number or a
+matrix stands for a static gain. ``series``, ``parallel``, ``feedback`` return systems
+(python-control's functions); the methods ``G.series(H)`` ... keep returning their reports.
+Every result is exact, checked against its parts, and keeps the signal names and the
+sample time ``dt`` by python-control's rules; a continuous and a discrete system, or two
+sample times, do not connect (``ValueError``).
+"""
+
+from fractions import Fraction
+
+from . import _core
+
+
+def _gain(value, like, rows=None, cols=None):
+    """A static gain ``y = K u`` as a system (``value``: a number or a matrix)."""
+    from ._system import StateSpace, ss
+
+    if isinstance(value, StateSpace):
+        return value
+    try:
+        rows_v = [list(r) for r in value]
+    except TypeError:
+        n = rows if rows is not None else 1
+        k = value
+        rows_v = [[k if i == j else 0 for j in range(n)] for i in range(n)]
+    p, m = len(rows_v), len(rows_v[0]) if rows_v else 0
+    return ss(_empty(0, 0), _empty(0, m), _empty(p, 0), rows_v, name="gain")
+
+
+def _empty(r, c):
+    import numpy as np
+
+    return np.zeros((r, c), dtype=int)
+
+
+def _connect(op, systems, *args):
+    first, rest = systems[0], systems[1:]
+    names = ["s%d" % i for i in range(len(systems))]
+    core = first._core.connect_system([op] + names + list(args), [s._core for s in rest])
+    from ._system import StateSpace
+
+    return StateSpace(core)
+
+
+def series(*systems):
+    """``series(G1, G2, ...)``: G1 first, then G2 (transfer matrix ``... G2 G1``), exact."""
+    out = systems[0]
+    for s in systems[1:]:
+        out = _connect("series", [out, s])
+    return out
+
+
+def parallel(*systems):
+    """``parallel(G1, G2, ...)``: the sum of the transfer matrices, exact."""
+    out = systems[0]
+    for s in systems[1:]:
+        out = _connect("parallel", [out, s])
+    return out
+
+
+def feedback(sys1, sys2=1, sign=-1):
+    """python-control's ``feedback(sys1, sys2, sign=-1)``: ``sys1`` with ``sys2`` (a system
+    or a gain) in the feedback path, negative feedback unless ``sign=1``; exact."""
+    k = _gain(sys2, sys1, rows=sys1.noutputs)
+    args = ["--positive"] if sign == 1 else []
+    if sign not in (1, -1):
+        raise ValueError("sign must be 1 or -1, found %r" % (sign,))
+    return _connect("feedback", [sys1, k], *args)
+
+
+class SystemOps:
+    """``*``, ``+``, ``-`` (binary and unary) on exact systems and gains."""
+
+    def __mul__(self, other):
+        h = _gain(other, self, rows=self.ninputs)
+        return _connect("series", [h, self])
+
+    def __rmul__(self, other):
+        k = _gain(other, self, rows=self.noutputs)
+        return _connect("series", [self, k])
+
+    def __add__(self, other):
+        return _connect("parallel", [self, _gain(other, self, rows=self.noutputs)])
+
+    def __radd__(self, other):
+        return _connect("parallel", [_gain(other, self, rows=self.noutputs), self])
+
+    def __neg__(self):
+        return _connect("series", [self, _gain(-1, self, rows=self.noutputs)])
+
+    def __sub__(self, other):
+        return self + (-_gain(other, self, rows=self.noutputs))
+
+    def __rsub__(self, other):
+        return _gain(other, self, rows=self.noutputs) + (-self)
+
+    @property
+    def dt(self):
+        """The sample time (a ``Fraction``) of a discrete-time system; ``0`` for continuous
+        time (python-control's convention)."""
+        t = self._core.dt
+        return Fraction(t) if t is not None else 0
+
+    def isdtime(self):
+        """True for a discrete-time system."""
+        return self._core.dt is not None
+
+    def isctime(self):
+        """True for a continuous-time system."""
+        return self._core.dt is None
+
+    @property
+    def input_labels(self):
+        """The input names (``u[0]``, ... when the system has none, as python-control)."""
+        ins, _ = self._core.signal_names
+        return list(ins) if ins else ["u[%d]" % i for i in range(self.ninputs)]
+
+    @property
+    def output_labels(self):
+        """The output names (``y[0]``, ... when the system has none)."""
+        _, outs = self._core.signal_names
+        return list(outs) if outs else ["y[%d]" % i for i in range(self.noutputs)]
+
+    def with_signals(self, inputs=None, outputs=None, dt=None):
+        """The same system with input/output names and a sample time (``dt``: a number,
+        exact; ``0`` or ``None``: continuous)."""
+        from ._system import StateSpace
+
+        t = None if dt is None else str(Fraction(str(dt)) if isinstance(dt, float) else Fraction(dt))
+        ins, outs = self._core.signal_names
+        return StateSpace(
+            self._core.with_signals(
+                list(inputs) if inputs is not None else ins,
+                list(outputs) if outputs is not None else outs,
+                t,
+            )
+        )
