@@ -18,7 +18,7 @@ from ._convert import ExactnessWarning
 from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
 from ._api import Report
 from ._study import critical, sweep
-from ._ops import feedback, parallel, series
+from ._ops import feedback, interconnect, parallel, series
 from ._system import (
     CheckResult,
     Factor,
@@ -63,6 +63,7 @@ __all__ = [
     "series",
     "parallel",
     "feedback",
+    "interconnect",
     "ScbResult",
     "MnfResult",
     "ModalTable",

@@ -54,6 +54,13 @@ class System:
         dt: Optional[str] = None,
     ) -> "System": ...
 
+def connect_names(
+    systems: Sequence[System],
+    connections: Sequence[Sequence[str]],
+    inputs: Sequence[str],
+    outputs: Sequence[str],
+    max_seconds: Optional[float] = None,
+) -> System: ...
 def load_json(text: str, name: str, symbolic: bool = False) -> System: ...
 def load_file(
     path: str,

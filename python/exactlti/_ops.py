@@ -124,6 +124,31 @@ class SystemOps:
         _, outs = self._core.signal_names
         return list(outs) if outs else ["y[%d]" % i for i in range(self.noutputs)]
 
+    def _from_report(self, r, dt):
+        from ._system import ss
+
+        ins, outs = self._core.signal_names
+        return ss(r["A"], r["B"], r["C"], r["D"], dt=dt, inputs=ins, outputs=outs)
+
+    def c2d(self, dt, method="tustin", max_seconds=None):
+        """python-control's ``c2d``: ``"tustin"`` exact (bilinear map, checked by
+        ``d2c(c2d(G)) == G``), ``"zoh"`` by the float matrix exponential (the entries are
+        the binary floats, exactly)."""
+        dt = Fraction(str(dt)) if isinstance(dt, float) else Fraction(dt)
+        r = self.run("c2d", "--dt", str(dt), "--method", method, max_seconds=max_seconds)
+        return self._from_report(r, dt)
+
+    def d2c(self, max_seconds=None):
+        """The continuous system whose Tustin discretization is this one (exact)."""
+        r = self.run("d2c", max_seconds=max_seconds)
+        return self._from_report(r, None)
+
+    def is_stable(self, max_seconds=None):
+        """Exact asymptotic stability over Q (``|z| < 1`` for a discrete-time system,
+        ``Re s < 0`` otherwise), decided without floats (Schur-Cohn / Jury)."""
+        r = self.run("stability", max_seconds=max_seconds)
+        return r["asymptotically_stable"]
+
     def with_signals(self, inputs=None, outputs=None, dt=None):
         """The same system with input/output names and a sample time (``dt``: a number,
         exact; ``0`` or ``None``: continuous)."""
@@ -138,3 +163,29 @@ class SystemOps:
                 t,
             )
         )
+
+
+def interconnect(syslist, connections=(), inplist=(), outlist=(), max_seconds=None):
+    """python-control's ``interconnect`` by signal names, exact: the systems side by side;
+    each connection ``[input, output, "-output", ...]`` feeds the sum of the named outputs
+    (a leading ``-`` subtracts) into every subsystem input of that name; ``inplist`` names
+    the external inputs (each drives the subsystem inputs of its name), ``outlist`` the
+    external outputs. Unknown or repeated names raise ``ValueError`` naming them.
+
+    >>> import exactlti
+    >>> P = exactlti.ss([[-1]], [[1]], [[1]], [[0]], inputs=["u"], outputs=["y"])
+    >>> C = exactlti.ss([[0]], [[1]], [[2]], [[3]], inputs=["e"], outputs=["u"])
+    >>> T = exactlti.interconnect([P, C], [["u", "u"], ["e", "-y"]], inplist=["e"], outlist=["y"])
+    >>> T.input_labels, T.output_labels, T.nstates
+    (['e'], ['y'], 2)
+    >>> T.dcgain()["dc_gain"]  # (2/s + 3)/(s + 1) closed by -1: 1 at s = 0
+    [['1']]
+    """
+    from ._system import StateSpace
+
+    conns = [[str(x) for x in c] for c in connections]
+    core = _core.connect_names(
+        [s._core for s in syslist], conns, [str(x) for x in inplist],
+        [str(x) for x in outlist], max_seconds,
+    )
+    return StateSpace(core)

@@ -468,7 +468,7 @@ impl System {
     fn freqresp(&self, py: Python<'_>, omega: Vec<f64>) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
         run(py, None, move || {
-            visit!(s => FResult<Out>, [omega: Vec<f64>], |f, t| freqresp_typed(t, &omega),
+            visit!(s => FResult<Out>, [omega: Vec<f64>], |f, t| freqresp_typed(t, &omega, f.signals.dt.as_ref().map(exactlti::field::rational_to_f64)),
                    sym |f, t| Err(symbolic::needs_numbers("the frequency response", &f.ground.to_string())))
         })?
         .to_py(py)
@@ -620,9 +620,35 @@ fn _sleep_for_test(py: Python<'_>, seconds: f64, max_seconds: Option<f64>) -> Py
     })
 }
 
+/// Connection by signal names (python-control's `interconnect`): `connections` as
+/// `[input, output, -output, ...]`, external `inputs` and `outputs` by name.
+#[pyfunction]
+#[pyo3(signature = (systems, connections, inputs, outputs, max_seconds=None))]
+fn connect_names(
+    py: Python<'_>,
+    systems: Vec<PyRef<'_, System>>,
+    connections: Vec<Vec<String>>,
+    inputs: Vec<String>,
+    outputs: Vec<String>,
+    max_seconds: Option<f64>,
+) -> PyResult<System> {
+    let all: Vec<_> = systems.iter().map(|s| s.api.clone()).collect();
+    let c = exactlti::api::NamedConnection {
+        connections,
+        inputs,
+        outputs,
+    };
+    let s = run(py, max_seconds, move || {
+        let refs: Vec<&exactlti::api::System> = all.iter().map(|s| s.as_ref()).collect();
+        Ok(exactlti::api::connect_named(&refs, &c)?)
+    })?;
+    Ok(System::new(s))
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<System>()?;
+    m.add_function(wrap_pyfunction!(connect_names, m)?)?;
     m.add_function(wrap_pyfunction!(load_json, m)?)?;
     m.add_function(wrap_pyfunction!(load_file, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep, m)?)?;

@@ -17,6 +17,7 @@ mod bifurcations;
 pub mod budget;
 mod commands;
 mod common;
+mod connect_names;
 mod critical;
 mod dcgain;
 mod discrete;
@@ -41,6 +42,7 @@ pub use bifurcations::Of;
 pub use commands::{
     BUILTIN_EXAMPLE, RunContext, execute, execute_ctx, execute_on, execute_on_many, execute_with,
 };
+pub use connect_names::{NamedConnection, connect_named};
 pub use discrete::{C2dMethod, DiscreteCmd};
 pub use interconnect::{InterconnectCmd, system_of as interconnect_system};
 pub use system::{Options, System, SystemVisitor};
