@@ -35,6 +35,8 @@ mod ctrb_structure;
 mod dcgain;
 #[path = "descriptor_class.rs"]
 mod descriptor_class;
+#[path = "discrete.rs"]
+mod discrete;
 #[path = "display.rs"]
 mod display;
 #[path = "everyday.rs"]

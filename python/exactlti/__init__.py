@@ -18,12 +18,14 @@ from ._convert import ExactnessWarning
 from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
 from ._api import Report
 from ._study import critical, sweep
+from ._ops import feedback, interconnect, parallel, series
 from ._system import (
     CheckResult,
     Factor,
     Factorization,
     JordanResult,
     MinrealResult,
+    MinrealSystem,
     MnfResult,
     ModalTable,
     Roots,
@@ -57,6 +59,11 @@ __all__ = [
     "RationalFunction",
     "JordanResult",
     "MinrealResult",
+    "MinrealSystem",
+    "series",
+    "parallel",
+    "feedback",
+    "interconnect",
     "ScbResult",
     "MnfResult",
     "ModalTable",

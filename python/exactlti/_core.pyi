@@ -37,7 +37,30 @@ class System:
         others: Sequence["System"],
         max_seconds: Optional[float] = None,
     ) -> Tuple[str, bool, bool]: ...
+    def connect_system(
+        self,
+        args: Sequence[str],
+        others: Sequence["System"],
+        max_seconds: Optional[float] = None,
+    ) -> "System": ...
+    @property
+    def dt(self) -> Optional[str]: ...
+    @property
+    def signal_names(self) -> Tuple[Optional[List[str]], Optional[List[str]]]: ...
+    def with_signals(
+        self,
+        inputs: Optional[Sequence[str]] = None,
+        outputs: Optional[Sequence[str]] = None,
+        dt: Optional[str] = None,
+    ) -> "System": ...
 
+def connect_names(
+    systems: Sequence[System],
+    connections: Sequence[Sequence[str]],
+    inputs: Sequence[str],
+    outputs: Sequence[str],
+    max_seconds: Optional[float] = None,
+) -> System: ...
 def load_json(text: str, name: str, symbolic: bool = False) -> System: ...
 def load_file(
     path: str,

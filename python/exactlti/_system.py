@@ -31,6 +31,7 @@ __all__ = [
 
 from ._api import Operations, run as _run
 from ._toolbox import ControlOps
+from ._ops import SystemOps
 
 _METHODS = ("kalman", "rosenbrock", "ho-kalman", "jordan")
 
@@ -46,7 +47,7 @@ def _latex_section(title, items):
     return "$\\begin{gathered}" + " \\\\ ".join(parts) + "\\end{gathered}$"
 
 
-class StateSpace(Operations, ControlOps):
+class StateSpace(Operations, ControlOps, SystemOps):
     """An exact LTI system ``x' = A x + B u``, ``y = C x + D u`` (E given: ``E x' = ...``,
     converted to this standard form on input).
 
@@ -195,7 +196,10 @@ class StateSpace(Operations, ControlOps):
             )
         if method == "jordan" and self._extension:
             return _run(self, "minreal", "--method", "jordan", max_seconds=max_seconds)
-        return MinrealResult(self._core.minreal(method, max_seconds), self)
+        res = MinrealResult(self._core.minreal(method, max_seconds), self)
+        if res.system is None:
+            return res
+        return MinrealSystem(res, self)
 
     def zeros(self, max_seconds=None):
         """Invariant zeros as exact algebraic numbers (repeated by multiplicity).
@@ -316,11 +320,18 @@ class StateSpace(Operations, ControlOps):
         return out
 
     def to_control(self):
-        """The system as a ``control.StateSpace`` (floating point)."""
+        """The system as a ``control.StateSpace`` (floating point), with its sample time
+        ``dt`` and signal names."""
         import control
 
+        kw = {"dt": float(self.dt)}
+        ins, outs = self._core.signal_names
+        if ins:
+            kw["inputs"] = list(ins)
+        if outs:
+            kw["outputs"] = list(outs)
         return control.ss(
-            self.A.to_numpy(), self.B.to_numpy(), self.C.to_numpy(), self.D.to_numpy()
+            self.A.to_numpy(), self.B.to_numpy(), self.C.to_numpy(), self.D.to_numpy(), **kw
         )
 
     def to_sympy(self):
@@ -357,7 +368,20 @@ def _params_arg(params, parameters):
     return params if params is not None else parameters
 
 
-def ss(A, B=None, C=None, D=None, E=None, params=None, name="ss", parameters=None, symbols=()):
+def ss(
+    A,
+    B=None,
+    C=None,
+    D=None,
+    E=None,
+    params=None,
+    name="ss",
+    parameters=None,
+    symbols=(),
+    dt=None,
+    inputs=None,
+    outputs=None,
+):
     """An exact state-space system ``E x' = A x + B u``, ``y = C x + D u``.
 
     Entries may be ints, ``Fraction``, ``Decimal``, decimal or fraction strings
@@ -372,6 +396,10 @@ def ss(A, B=None, C=None, D=None, E=None, params=None, name="ss", parameters=Non
     then rational functions of the symbols (field ``QQ(m, ...)``) and the results carry
     ``conditions``, the polynomials in the parameters they assume nonzero.
     ``parameters`` is another name for ``params``.
+
+    ``dt``: the sample time of a discrete-time system ``x[k+1] = A x[k] + B u[k]`` (an exact
+    number, ``0``/``None`` continuous time; python-control's ``ss(A, B, C, D, dt)``);
+    ``inputs``, ``outputs``: signal names.
 
     Bad input raises ``ValueError`` with the command line's one-line message:
 
@@ -399,7 +427,10 @@ def ss(A, B=None, C=None, D=None, E=None, params=None, name="ss", parameters=Non
     text, symbolic = system_json(
         name, {"A": A, "B": B, "C": C, "D": D, "E": E}, params, symbols
     )
-    return StateSpace(_core.load_json(text, name, symbolic))
+    G = StateSpace(_core.load_json(text, name, symbolic))
+    if dt or inputs is not None or outputs is not None:
+        G = G.with_signals(inputs, outputs, dt or None)
+    return G
 
 
 # -- transfer functions ---------------------------------------------------------------
@@ -636,12 +667,16 @@ def from_control(sys, name="from_control"):
         return _from_control_tf(sys, name)
     if not isinstance(sys, control.StateSpace):
         raise TypeError("from_control expects a control.StateSpace or TransferFunction")
-    if not sys.isctime():
-        raise ValueError("from_control: only continuous-time systems are supported")
+    if sys.dt is True:
+        raise ValueError(
+            "from_control: the sample time is unspecified (dt=True); give the number"
+        )
     text, _ = system_json(
         name, {"A": sys.A, "B": sys.B, "C": sys.C, "D": sys.D}, stacklevel=3
     )
-    return StateSpace(_core.load_json(text, name, False))
+    G = StateSpace(_core.load_json(text, name, False))
+    dt = sys.dt if sys.dt else None
+    return G.with_signals(list(sys.input_labels), list(sys.output_labels), dt)
 
 
 # -- results ------------------------------------------------------------------------
@@ -769,6 +804,45 @@ class _TextRoot:
         target = complex(sympy.sympify(near.replace("i", "I")))
         roots = [sympy.CRootOf(poly, k) for k in range(poly.degree())]
         return min(roots, key=lambda r: abs(complex(r.evalf(30)) - target))
+
+
+class MinrealSystem(StateSpace):
+    """The exact minimal realization as a system (``G.minreal()``): every
+    :class:`StateSpace` method, the input/output names and ``dt`` of the original, and the
+    realization's facts: ``original_order``, ``method``, ``T``, ``verified``, ``stages``,
+    ``conditions``, ``result`` (the :class:`MinrealResult`, the report stays reachable).
+
+    >>> import exactlti
+    >>> G = exactlti.ss([[-1, 0], [0, -2]], [[1], [0]], [[1, 1]], [[0]], dt="1/10")
+    >>> M = G.minreal()
+    >>> M.nstates, M.verified, M.dt
+    (1, True, Fraction(1, 10))
+    """
+
+    def __init__(self, res, original):
+        ins, outs = original._core.signal_names
+        StateSpace.__init__(self, res.system._core.with_signals(ins, outs, original._core.dt))
+        self.result = res
+        self.original_order = res.original_order
+        self.method = res.method
+        self.T = res.T
+        self.verified = res.verified
+        self.stages = res.stages
+        self.report = res.report
+        self.conditions = res.conditions
+        self.original = original
+        self.system = self
+
+    def __repr__(self):
+        return "MinrealSystem(method=%s, %d -> %d states, verified=%s)" % (
+            self.method,
+            self.original_order,
+            self.nstates,
+            self.verified,
+        )
+
+    def _repr_latex_(self):
+        return self.result._repr_latex_()
 
 
 class MinrealResult:

@@ -470,10 +470,74 @@ impl System {
     fn freqresp(&self, py: Python<'_>, omega: Vec<f64>) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
         run(py, None, move || {
-            visit!(s => FResult<Out>, [omega: Vec<f64>], |f, t| freqresp_typed(t, &omega),
+            visit!(s => FResult<Out>, [omega: Vec<f64>], |f, t| freqresp_typed(t, &omega, f.signals.dt.as_ref().map(exactlti::field::rational_to_f64)),
                    sym |f, t| Err(symbolic::needs_numbers("the frequency response", &f.ground.to_string())))
         })?
         .to_py(py)
+    }
+
+    /// The sample time of a discrete-time system as exact text (`None`: continuous).
+    #[getter]
+    fn dt(&self) -> Option<String> {
+        self.api.dt().map(exactlti::field::fmt_rational)
+    }
+
+    /// The input and output names the system carries (`None` where it has none).
+    #[getter]
+    fn signal_names(&self) -> (Option<Vec<String>>, Option<Vec<String>>) {
+        let s = &self.api.file().signals;
+        (s.inputs.clone(), s.outputs.clone())
+    }
+
+    /// The same system with input/output names and a sample time (`dt`: exact text, `None`
+    /// or `"0"`: continuous); names whose count does not fit are an error.
+    #[pyo3(signature = (inputs=None, outputs=None, dt=None))]
+    fn with_signals(
+        &self,
+        inputs: Option<Vec<String>>,
+        outputs: Option<Vec<String>>,
+        dt: Option<String>,
+    ) -> PyResult<System> {
+        let dt = match dt {
+            None => None,
+            Some(t) => {
+                let q = exactlti::field::parse_rational(&t)
+                    .map_err(|e| PyValueError::new_err(format!("dt '{t}': {e}")))?;
+                if q < exactlti::field::Rational::from_integer(0.into()) {
+                    return Err(PyValueError::new_err(format!("dt must be >= 0, found {t}")));
+                }
+                (q != exactlti::field::Rational::from_integer(0.into())).then_some(q)
+            }
+        };
+        let (n, m, p) = self.shape();
+        let signals = exactlti::io::SignalNames { inputs, outputs, states: None, dt };
+        signals
+            .check(&self.api.path().display().to_string(), n, m, p)
+            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        Ok(System::new(self.api.as_ref().clone().with_signals(signals)))
+    }
+
+    /// An interconnection (`args` as the command line spells it) of this system and
+    /// `others` as a new system (names and sample time by python-control's rules).
+    #[pyo3(signature = (args, others, max_seconds=None))]
+    fn connect_system(
+        &self,
+        py: Python<'_>,
+        args: Vec<String>,
+        others: Vec<PyRef<'_, System>>,
+        max_seconds: Option<f64>,
+    ) -> PyResult<System> {
+        let mut all = vec![self.api.clone()];
+        all.extend(others.iter().map(|o| o.api.clone()));
+        let s = run(py, max_seconds, move || {
+            let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
+            let exactlti::api::Command::Interconnect(c) = cmd else {
+                return Err(Fail::Input(format!("{}: not an interconnection", args.join(" "))));
+            };
+            let refs: Vec<&exactlti::api::System> = all.iter().map(|s| s.as_ref()).collect();
+            Ok(exactlti::api::interconnect_system(&c, &refs)?)
+        })?;
+        Ok(System::new(s))
     }
 
     /// Runs an interconnection of the command line (`series`, `parallel`, `feedback`,
@@ -558,9 +622,35 @@ fn _sleep_for_test(py: Python<'_>, seconds: f64, max_seconds: Option<f64>) -> Py
     })
 }
 
+/// Connection by signal names (python-control's `interconnect`): `connections` as
+/// `[input, output, -output, ...]`, external `inputs` and `outputs` by name.
+#[pyfunction]
+#[pyo3(signature = (systems, connections, inputs, outputs, max_seconds=None))]
+fn connect_names(
+    py: Python<'_>,
+    systems: Vec<PyRef<'_, System>>,
+    connections: Vec<Vec<String>>,
+    inputs: Vec<String>,
+    outputs: Vec<String>,
+    max_seconds: Option<f64>,
+) -> PyResult<System> {
+    let all: Vec<_> = systems.iter().map(|s| s.api.clone()).collect();
+    let c = exactlti::api::NamedConnection {
+        connections,
+        inputs,
+        outputs,
+    };
+    let s = run(py, max_seconds, move || {
+        let refs: Vec<&exactlti::api::System> = all.iter().map(|s| s.as_ref()).collect();
+        Ok(exactlti::api::connect_named(&refs, &c)?)
+    })?;
+    Ok(System::new(s))
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<System>()?;
+    m.add_function(wrap_pyfunction!(connect_names, m)?)?;
     m.add_function(wrap_pyfunction!(load_json, m)?)?;
     m.add_function(wrap_pyfunction!(load_file, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep, m)?)?;

@@ -151,7 +151,12 @@ pub(crate) fn to_dmatrix<K: Field>(m: &Matrix<K>) -> FResult<nalgebra::DMatrix<f
     }))
 }
 
-pub(crate) fn freqresp_typed<K: Field>(t: &Typed<K>, omega: &[f64]) -> FResult<Out> {
+/// `G(j w)`, or `G(e^{j w T})` on the unit circle for a sample time `dt`.
+pub(crate) fn freqresp_typed<K: Field>(
+    t: &Typed<K>,
+    omega: &[f64],
+    dt: Option<f64>,
+) -> FResult<Out> {
     let s = &t.ss;
     let hz: Vec<f64> = omega
         .iter()
@@ -166,7 +171,14 @@ pub(crate) fn freqresp_typed<K: Field>(t: &Typed<K>, omega: &[f64]) -> FResult<O
         }
         None => {
             let [a, b, c, d] = [&s.a, &s.b, &s.c, &s.d].map(to_dmatrix);
-            exactlti::float::freqresp(&a?, &b?, &c?, &d?, &hz)?
+            match dt {
+                None => exactlti::float::freqresp(&a?, &b?, &c?, &d?, &hz)?,
+                Some(dt) => {
+                    let z = |m: nalgebra::DMatrix<f64>| m.map(|x| nalgebra::Complex::new(x, 0.0));
+                    let (a, b, c, d) = (z(a?), z(b?), z(c?), z(d?));
+                    exactlti::float::freqresp_sampled(&a, &b, &c, &d, &hz, dt)?
+                }
+            }
         }
     };
     Ok(Out::List(

@@ -239,6 +239,7 @@ pub(super) fn file_of(cmd: &Command) -> Option<&Path> {
         | Command::Linalg { file, .. } => Some(file),
         Command::Dcgain { file } => Some(file),
         Command::Toolbox(c) => Some(c.file()),
+        Command::Discrete(c) => Some(c.file()),
         Command::Analyze { file, .. } => file.as_deref(),
         Command::Poly { .. } | Command::Interconnect(_) => None,
     }
@@ -262,6 +263,9 @@ impl SystemVisitor for FileCommand<'_> {
         let path = self.path;
         let e = |err| with_path(path, err);
         let s = &t.ss;
+        if let Some(r) = super::discrete::on_sampled(self.cmd, f, t, path) {
+            return r;
+        }
         if super::pencil_cmds::handles(self.cmd, Some(f)) {
             return if self.opts.is_empty() && self.from_file {
                 super::pencil_cmds::execute(self.cmd, path)
@@ -396,6 +400,7 @@ impl SystemVisitor for FileCommand<'_> {
             }
             Command::Minreal { method, hankel, .. } => minreal(f, t, *method, *hankel, path),
             Command::Toolbox(c) => super::toolbox::run(c, f, t, path),
+            Command::Discrete(c) => super::discrete::run(c, f, t, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
             Command::Poly { .. }
             | Command::Pencil { .. }
@@ -414,7 +419,11 @@ impl SystemVisitor for FileCommand<'_> {
         f: &SystemFile,
         t: &TypedSystem<crate::ratfunc::RatFuncField>,
     ) -> Self::Output {
+        if let Some(r) = super::discrete::on_sampled(self.cmd, f, t, self.path) {
+            return r;
+        }
         match self.cmd {
+            Command::Discrete(c) => super::discrete::run(c, f, t, self.path),
             Command::Bifurcations { of, depth, .. } => {
                 super::bifurcations::run(self.path, t, *of, *depth)
             }

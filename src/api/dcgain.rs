@@ -6,7 +6,7 @@ use super::{Failure, Outcome};
 use crate::field::Field;
 use crate::io::{SystemFile, TypedSystem};
 use crate::ratfunc::RatFuncField;
-use crate::system::dcgain::dc_gain;
+use crate::system::dcgain::{dc_gain, gain_at};
 use std::path::Path;
 
 /// Runs `dcgain` on a system (read by [`super::System::open_or_gain`]: a file with only `D`
@@ -21,9 +21,13 @@ struct Dc<'a> {
 
 impl SystemVisitor for Dc<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: Field + 'static>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+    fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
         let e = |err| with_path(self.path, err);
-        let g = dc_gain(&t.ss).map_err(e)?;
+        // discrete time: the DC gain is G(z = 1)
+        let g = match f.signals.dt {
+            Some(_) => gain_at(&t.ss, &t.ss.field().one()).map_err(e)?,
+            None => dc_gain(&t.ss).map_err(e)?,
+        };
         let mut r = g.report(t.ss.field());
         // over Q(p): what the gain assumes nonzero (A invertible, the denominators at 0)
         if let Some(k) = (t.ss.field() as &dyn std::any::Any).downcast_ref::<RatFuncField>() {

@@ -53,6 +53,27 @@ pub(crate) fn float_response<K: Field>(
     path: &Path,
     freqs: &[f64],
 ) -> Result<Vec<DMatrix<Complex<f64>>>, Failure> {
+    float_response_dt(t, sys, path, freqs, None)
+}
+
+/// [`float_response`], on the unit circle ($z = e^{j\omega T}$) for a sample time `dt`.
+fn float_response_dt<K: Field>(
+    t: &Typed<K>,
+    sys: &FloatAbcd,
+    path: &Path,
+    freqs: &[f64],
+    dt: Option<f64>,
+) -> Result<Vec<DMatrix<Complex<f64>>>, Failure> {
+    if let Some(dt) = dt {
+        let resp = match sys {
+            FloatAbcd::Real(m) => {
+                let [a, b, c, d] = m.clone().map(|x| x.map(|v| Complex::new(v, 0.0)));
+                float::freqresp_sampled(&a, &b, &c, &d, freqs, dt)
+            }
+            FloatAbcd::Complex([a, b, c, d]) => float::freqresp_sampled(a, b, c, d, freqs, dt),
+        };
+        return resp.map_err(|e| fail(path, e));
+    }
     let resp = match (&t.descriptor, sys) {
         (Some(ds), _) => {
             let conv = |m| to_cmatrix(m).map_err(|e| fail(path, e));
@@ -96,6 +117,18 @@ pub fn freqresp<K: Field>(
     points: usize,
     csv: Option<&Path>,
 ) -> Result<Report, Failure> {
+    freqresp_dt(t, path, names, (from, to, points), csv, None)
+}
+
+/// [`freqresp`] of a discrete-time system with sample time `dt` (`None`: continuous).
+pub fn freqresp_dt<K: Field>(
+    t: &Typed<K>,
+    path: &Path,
+    names: (&[String], &[String]),
+    (from, to, points): (f64, f64, usize),
+    csv: Option<&Path>,
+    dt: Option<f64>,
+) -> Result<Report, Failure> {
     if !(from > 0.0 && to > from && (2..=100_000).contains(&points)) {
         return Err(Failure {
             code: 2,
@@ -133,7 +166,7 @@ pub fn freqresp<K: Field>(
             .chain(freqs.iter().copied())
             .collect();
     }
-    let resp = float_response(t, &sys, path, &freqs)?;
+    let resp = float_response_dt(t, &sys, path, &freqs, dt)?;
     let table = response_table(&resp);
     if let Some(p) = csv {
         std::fs::write(p, response_csv(&freqs, &table)).map_err(|e| Failure {

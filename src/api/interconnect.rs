@@ -137,15 +137,101 @@ pub fn run_on(cmd: &InterconnectCmd, systems: &[&super::System]) -> Result<Outco
         });
     }
     let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let dt = common_dt(op, &names, systems)?;
     let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
+    let signals = result_signals(op, systems, dt);
     let systems = common_field(&loaded)?;
-    systems.run(Connect { op, names, opts })
+    systems.run(Connect {
+        op,
+        names,
+        opts,
+        signals,
+    })
+}
+
+/// The sample time shared by every system (`None`: all continuous). A static gain (no
+/// states) fits either.
+///
+/// # Errors
+/// A continuous and a discrete system, or two different sample times, named by file.
+pub(crate) fn common_dt(
+    op: Operation,
+    names: &[String],
+    systems: &[&super::System],
+) -> Result<Option<crate::field::Rational>, Failure> {
+    let mut seen: Option<(usize, Option<crate::field::Rational>)> = None;
+    for (i, s) in systems.iter().enumerate() {
+        if s.nstates() == 0 && s.dt().is_none() {
+            continue; // a static gain
+        }
+        let dt = s.file().signals.dt.clone();
+        match &seen {
+            None => seen = Some((i, dt)),
+            Some((j, d0)) if *d0 != dt => {
+                let show = |d: &Option<crate::field::Rational>| {
+                    d.as_ref().map_or("continuous time".to_string(), |d| {
+                        format!("dt = {}", crate::field::fmt_rational(d))
+                    })
+                };
+                return Err(Failure {
+                    code: 2,
+                    message: format!(
+                        "{}: cannot connect {} ({}) with {} ({}): every system needs the same time domain and sample time (convert with c2d or d2c)",
+                        op.name(),
+                        names[*j],
+                        show(d0),
+                        names[i],
+                        show(&dt)
+                    ),
+                });
+            }
+            Some(_) => {}
+        }
+    }
+    Ok(seen.and_then(|(_, d)| d))
+}
+
+/// The signal names and sample time of the result: python-control's rules for names (the
+/// inputs of the first system and the outputs of the last in a series, of the first in a
+/// parallel connection or a feedback loop), states left unnamed.
+fn result_signals(
+    op: Operation,
+    systems: &[&super::System],
+    dt: Option<crate::field::Rational>,
+) -> crate::io::SignalNames {
+    let sig = |i: usize| {
+        systems
+            .get(i)
+            .map(|s| s.file().signals.clone())
+            .unwrap_or_default()
+    };
+    let (inputs, outputs) = match op {
+        Operation::Series => (sig(0).inputs, sig(systems.len().saturating_sub(1)).outputs),
+        Operation::Parallel | Operation::Feedback(_) => (sig(0).inputs, sig(0).outputs),
+        Operation::Append => {
+            let cat = |f: fn(&crate::io::SignalNames) -> Option<Vec<String>>| {
+                systems
+                    .iter()
+                    .map(|s| f(&s.file().signals))
+                    .collect::<Option<Vec<_>>>()
+                    .map(|v| v.concat())
+            };
+            (cat(|s| s.inputs.clone()), cat(|s| s.outputs.clone()))
+        }
+    };
+    crate::io::SignalNames {
+        inputs,
+        outputs,
+        states: None,
+        dt,
+    }
 }
 
 struct Connect<'a> {
     op: Operation,
     names: Vec<String>,
     opts: &'a InterconnectOpts,
+    signals: crate::io::SignalNames,
 }
 
 impl SystemsVisitor for Connect<'_> {
@@ -195,7 +281,8 @@ impl SystemsVisitor for Connect<'_> {
             let written = min.as_ref().map_or(&sys, |m| &m.system);
             let vars = symbols.map(|s| s.0).unwrap_or_default();
             let name = format!("{} of {}", self.op.name(), self.names.join(", "));
-            let text = crate::io::write::system_file_text(Some(&name), written, &vars);
+            let text =
+                crate::io::write::system_file_text(Some(&name), written, &vars, &self.signals);
             std::fs::write(out, text).map_err(|err| Failure {
                 code: 2,
                 message: format!("{}: cannot write: {err}", out.display()),
@@ -204,5 +291,69 @@ impl SystemsVisitor for Connect<'_> {
         }
         let ok = verified && min.as_ref().is_none_or(|m| m.verified);
         Ok(Outcome::new(report, ok))
+    }
+}
+
+/// The interconnection of `systems` (in the order of the command's files) as a system of
+/// its own (the Python operators `G * H`, `G + H`, `-G`, `G.feedback(K)`): the exact result,
+/// its signal names and sample time by python-control's rules ([`result_signals`]).
+///
+/// # Errors
+/// As [`run_on`]: a wrong count, two fields, two time domains, the interconnection's own.
+pub fn system_of(
+    cmd: &InterconnectCmd,
+    systems: &[&super::System],
+) -> Result<super::System, Failure> {
+    let (op, paths, _) = cmd.parts();
+    if systems.len() != paths.len() {
+        return Err(Failure {
+            code: 2,
+            message: format!(
+                "{}: needs {} systems (got {})",
+                op.name(),
+                paths.len(),
+                systems.len()
+            ),
+        });
+    }
+    let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let dt = common_dt(op, &names, systems)?;
+    let signals = result_signals(op, systems, dt);
+    let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
+    let name = format!("{} of {}", op.name(), names.join(", "));
+    let sys = common_field(&loaded)?.run(Build { op, name: &name })?;
+    Ok(sys.with_signals(signals))
+}
+
+struct Build<'a> {
+    op: Operation,
+    name: &'a str,
+}
+
+impl SystemsVisitor for Build<'_> {
+    type Output = Result<super::System, Failure>;
+    fn visit<K: Field + 'static>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+        let e = |err| with_path(Path::new(self.name), err);
+        let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();
+        let conn = Interconnection::of(self.op, &parts).map_err(e)?;
+        let ss = conn.compute().map_err(e)?;
+        if !verify(&conn, &ss) {
+            return Err(Failure {
+                code: 1,
+                message: format!(
+                    "{}: the exact check of the interconnection failed",
+                    self.name
+                ),
+            });
+        }
+        let typed = TypedSystem {
+            descriptor: None,
+            a_raw: ss.a.clone(),
+            ss,
+        };
+        super::System::from_field(self.name, typed).ok_or_else(|| Failure {
+            code: 1,
+            message: format!("{}: internal: an unknown field", self.name),
+        })
     }
 }

@@ -17,8 +17,10 @@ mod bifurcations;
 pub mod budget;
 mod commands;
 mod common;
+mod connect_names;
 mod critical;
 mod dcgain;
+mod discrete;
 mod float_cmds;
 mod float_compare;
 mod interconnect;
@@ -40,7 +42,9 @@ pub use bifurcations::Of;
 pub use commands::{
     BUILTIN_EXAMPLE, RunContext, execute, execute_ctx, execute_on, execute_on_many, execute_with,
 };
-pub use interconnect::InterconnectCmd;
+pub use connect_names::{NamedConnection, connect_named};
+pub use discrete::{C2dMethod, DiscreteCmd};
+pub use interconnect::{InterconnectCmd, system_of as interconnect_system};
 pub use sweep::sweep_file;
 pub use system::{Options, System, SystemVisitor};
 pub use toolbox::{GramArg, ToolboxCmd};
@@ -271,6 +275,9 @@ pub enum Command {
     /// `step_info`, `damp`, `gram`).
     #[command(flatten)]
     Toolbox(toolbox::ToolboxCmd),
+    /// Discrete time: exact stability, c2d, d2c.
+    #[command(flatten)]
+    Discrete(discrete::DiscreteCmd),
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {

@@ -250,4 +250,22 @@ impl System {
     pub fn loaded(&self) -> &LoadedSystem {
         &self.loaded
     }
+    /// The sample time of a discrete-time system (file key `dt`); `None`: continuous.
+    pub fn dt(&self) -> Option<&crate::field::Rational> {
+        self.loaded.file.signals.dt.as_ref()
+    }
+    /// Number of states of the system as typed.
+    pub fn nstates(&self) -> usize {
+        match &self.loaded.system {
+            TypedAny::Rational(t) => t.ss.nstates(),
+            TypedAny::Quadratic(t) => t.ss.nstates(),
+            TypedAny::RatFunc(t) => t.ss.nstates(),
+        }
+    }
+    /// The same system with other signal names and sample time (`states` names are kept
+    /// only when their count fits).
+    pub fn with_signals(mut self, signals: crate::io::SignalNames) -> Self {
+        self.loaded.file.signals = signals;
+        self
+    }
 }

@@ -68,7 +68,41 @@ pub fn freqresp_complex(
     d: &DMatrix<Complex<f64>>,
     freqs_hz: &[f64],
 ) -> Result<Vec<DMatrix<Complex<f64>>>> {
-    freqresp_pencil(None, a, b, c, d, freqs_hz)
+    freqresp_pencil(None, a, b, c, d, freqs_hz, None)
+}
+
+/// The frequency response of a discrete-time system with sample time `dt` (seconds) on the
+/// unit circle: $G(e^{j 2 \pi f T}) = C (e^{j\omega T} I - A)^{-1} B + D$ at each `f` (Hz,
+/// up to the Nyquist frequency $1/(2T)$ for the distinct values).
+///
+/// # Examples
+/// ```
+/// use exactlti::float::freqresp_sampled;
+/// use nalgebra::DMatrix;
+/// use num_complex::Complex;
+/// // G(z) = 1 / (z - 1/2): G(1) = 2 at f = 0, G(-1) = -2/3 at the Nyquist frequency.
+/// let m = |x: f64| DMatrix::from_element(1, 1, Complex::new(x, 0.0));
+/// let g = freqresp_sampled(&m(0.5), &m(1.0), &m(1.0), &m(0.0), &[0.0, 5.0], 0.1).unwrap();
+/// assert!((g[0][(0, 0)] - Complex::new(2.0, 0.0)).norm() < 1e-15);
+/// assert!((g[1][(0, 0)] - Complex::new(-2.0 / 3.0, 0.0)).norm() < 1e-12);
+/// ```
+///
+/// # Errors
+/// As [`freqresp`]; `Invalid` for a sample time that is not finite and positive.
+pub fn freqresp_sampled(
+    a: &DMatrix<Complex<f64>>,
+    b: &DMatrix<Complex<f64>>,
+    c: &DMatrix<Complex<f64>>,
+    d: &DMatrix<Complex<f64>>,
+    freqs_hz: &[f64],
+    dt: f64,
+) -> Result<Vec<DMatrix<Complex<f64>>>> {
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(Error::Invalid(
+            "freqresp: the sample time must be > 0".into(),
+        ));
+    }
+    freqresp_pencil(None, a, b, c, d, freqs_hz, Some(dt))
 }
 
 /// The frequency response of a descriptor system $E\dot x = Ax + Bu$, $y = Cx + Du$,
@@ -108,10 +142,11 @@ pub fn freqresp_descriptor(
     if e.iter().any(|z| !z.re.is_finite() || !z.im.is_finite()) {
         return Err(Error::Invalid("freqresp: non-finite entry in E".into()));
     }
-    freqresp_pencil(Some(e), a, b, c, d, freqs_hz)
+    freqresp_pencil(Some(e), a, b, c, d, freqs_hz, None)
 }
 
-/// $C(j\omega E - A)^{-1}B + D$ with $E = I$ when `e` is `None`.
+/// $C(j\omega E - A)^{-1}B + D$ with $E = I$ when `e` is `None`; with a sample time `dt`
+/// the point is $e^{j\omega T}$ instead of $j\omega$.
 fn freqresp_pencil(
     e: Option<&DMatrix<Complex<f64>>>,
     a: &DMatrix<Complex<f64>>,
@@ -119,6 +154,7 @@ fn freqresp_pencil(
     c: &DMatrix<Complex<f64>>,
     d: &DMatrix<Complex<f64>>,
     freqs_hz: &[f64],
+    dt: Option<f64>,
 ) -> Result<Vec<DMatrix<Complex<f64>>>> {
     let (n, _, _) = check_system("freqresp", a, b, c, d)?;
     if freqs_hz.iter().any(|f| !f.is_finite()) {
@@ -131,7 +167,11 @@ fn freqresp_pencil(
         return Ok(out);
     }
     for &f in freqs_hz {
-        let jw = Complex::new(0.0, 2.0 * std::f64::consts::PI * f);
+        let w = 2.0 * std::f64::consts::PI * f;
+        let jw = match dt {
+            None => Complex::new(0.0, w),
+            Some(t) => Complex::new(0.0, w * t).exp(),
+        };
         let m = match e {
             Some(e) => e * jw - a,
             None => {

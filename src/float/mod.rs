@@ -46,7 +46,7 @@ pub use era::{
     FloatRealization, HANKEL_ENTRY_LIMIT, HANKEL_WORK_LIMIT, SystemEra, era, era_system,
     markov_parameters,
 };
-pub use freqresp::{freqresp, freqresp_complex, freqresp_descriptor};
+pub use freqresp::{freqresp, freqresp_complex, freqresp_descriptor, freqresp_sampled};
 pub use jordan_guess::{Cluster, FloatJordan, jordan_guess};
 pub use minreal::{FloatMinreal, minreal};
 pub use pencil_eig::pencil_finite_eigenvalues;

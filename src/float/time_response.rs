@@ -46,6 +46,16 @@ fn propagators<T: FloatScalar>(
     ))
 }
 
+/// Zero-order-hold discretization with sample time `dt`: $A_d = e^{A T}$,
+/// $B_d = \int_0^T e^{A \tau} d\tau\, B$, both read off $\exp([[A, B], [0, 0]]\, T)$
+/// (python-control's and scipy's `zoh`).
+///
+/// # Errors
+/// `Invalid` for `dt` not finite and positive, or an overflowing exponential.
+pub fn zoh(a: &DMatrix<f64>, b: &DMatrix<f64>, dt: f64) -> Result<(DMatrix<f64>, DMatrix<f64>)> {
+    propagators(a, b, dt)
+}
+
 fn step_of(times: &[f64]) -> Result<f64> {
     match times {
         [] | [_] => Ok(1.0),

@@ -8,15 +8,48 @@
 //! | `G` | transfer matrix (rational functions of `s`) |
 //! | `parameters`, `symbols` | named values; symbolic parameters |
 //! | `name`, `inputs`, `outputs`, `states` | descriptive: the system's and the signals' names |
+//! | `dt` | sample time of a discrete-time system (a positive exact number; absent or 0: continuous) |
 //!
 //! A file with the bicycle benchmark's raw matrices (`M`, `C1`, `K0`, `K2`) is recognised and
 //! refused with a pointer to the system form of the same data.
 
 use super::raw::Raw;
 use super::{InputError, InputErrorKind};
+use crate::field::Rational;
+use num_traits::{Signed, Zero};
+
+/// The key `dt`: a positive exact number (decimal or fraction, `0.1` is 1/10); `0` is
+/// continuous time (python-control's `dt = 0`).
+///
+/// # Errors
+/// A value that is not a number, or a negative one (`dt = True`, python-control's
+/// unspecified sample time, is refused: give the number).
+fn read_dt(file: &str, entries: &[(String, Raw)]) -> Result<Option<Rational>, InputError> {
+    let Some((_, v)) = entries.iter().find(|(k, _)| k == "dt") else {
+        return Ok(None);
+    };
+    let bad = |what: String| InputError::key(file, "dt", what);
+    let text = match v {
+        Raw::Number(s) | Raw::Str(s) => s,
+        other => {
+            return Err(bad(format!(
+                "expected the sample time (a positive number, or 0 for continuous time), \
+                 found {}",
+                other.kind()
+            )));
+        }
+    };
+    let dt = crate::field::parse_rational(text).map_err(|e| bad(format!("'{text}': {e}")))?;
+    if dt.is_negative() {
+        return Err(bad(format!(
+            "the sample time must be positive (or 0 for continuous time), found {text}"
+        )));
+    }
+    Ok((!dt.is_zero()).then_some(dt))
+}
 
 /// Every key a system file may have.
-pub const SYSTEM_KEYS: [&str; 16] = [
+pub const SYSTEM_KEYS: [&str; 17] = [
     "A",
     "B",
     "C",
@@ -33,6 +66,7 @@ pub const SYSTEM_KEYS: [&str; 16] = [
     "inputs",
     "outputs",
     "states",
+    "dt",
 ];
 
 /// The keys of a table in file order.
@@ -74,7 +108,7 @@ pub(crate) fn check_keys(file: &str, keys: &[&str]) -> Result<(), InputError> {
             .map(|s| format!("; did you mean '{s}'?"))
             .unwrap_or_else(|| {
                 "; a system file has the keys A, B, C, D, E (or M, L, K, F, or G), parameters, \
-                 symbols, name, inputs, outputs, states"
+                 symbols, name, inputs, outputs, states, dt"
                     .to_string()
             });
         return Err(InputError::file(file, format!("unknown key '{k}'{hint}"))
@@ -126,12 +160,16 @@ fn edit_distance(a: &str, b: &str) -> usize {
     prev[b.len()]
 }
 
-/// Signal names of a system file: `inputs`, `outputs`, `states` (each a list of strings).
+/// Signal names of a system file: `inputs`, `outputs`, `states` (each a list of strings),
+/// and the signals' sample time `dt` (python-control's and MATLAB's `Ts`).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct SignalNames {
     pub inputs: Option<Vec<String>>,
     pub outputs: Option<Vec<String>>,
     pub states: Option<Vec<String>>,
+    /// Sample time of a discrete-time system $x_{k+1} = A x_k + B u_k$ (exact, $> 0$);
+    /// `None`: continuous time ($\dot x = A x + B u$).
+    pub dt: Option<Rational>,
 }
 
 impl SignalNames {
@@ -166,6 +204,7 @@ impl SignalNames {
             inputs: list("inputs")?,
             outputs: list("outputs")?,
             states: list("states")?,
+            dt: read_dt(file, entries)?,
         })
     }
 

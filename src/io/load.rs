@@ -326,6 +326,7 @@ fn loaded<K: Field>(
         inputs: Some(a.input_names.clone()),
         outputs: Some(a.output_names.clone()),
         states,
+        dt: None,
     };
     let mut extra = serde_json::Map::new();
     extra.insert("descriptor_states".into(), a.state_names.clone().into());

@@ -237,6 +237,7 @@ pub fn model_descriptor(
                     inputs: Some(a.input_names),
                     outputs: Some(a.output_names),
                     states: Some(a.state_names),
+                    dt: None,
                 },
             })
         }

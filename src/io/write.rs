@@ -4,6 +4,7 @@
 //! parameters, a matrix with a zero dimension as `[]` (read as $n \times 0$ or
 //! $0 \times n$ by the shape rules).
 
+use super::SignalNames;
 use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::system::StateSpace;
@@ -29,15 +30,31 @@ fn matrix_json<K: Field>(m: &Matrix<K>) -> Value {
 }
 
 /// The system file of `ss`: keys `name` (when given), `parameters` (each of `symbols` as
-/// `null`, when there are symbols), `A`, `B`, `C`, `D`.
+/// `null`, when there are symbols), `A`, `B`, `C`, `D`, and from `signals` the names
+/// `inputs`, `outputs`, `states` whose counts fit and the sample time `dt`.
 pub fn system_file_json<K: Field>(
     name: Option<&str>,
     ss: &StateSpace<K>,
     symbols: &[String],
+    signals: &SignalNames,
 ) -> Value {
     let mut o = Map::new();
     if let Some(n) = name {
         o.insert("name".into(), Value::String(n.to_string()));
+    }
+    if let Some(dt) = &signals.dt {
+        o.insert("dt".into(), Value::String(crate::field::fmt_rational(dt)));
+    }
+    let lists = [
+        ("inputs", &signals.inputs, ss.ninputs()),
+        ("outputs", &signals.outputs, ss.noutputs()),
+        ("states", &signals.states, ss.nstates()),
+    ];
+    for (key, names, count) in lists {
+        if let Some(xs) = names.as_ref().filter(|xs| xs.len() == count) {
+            let xs = xs.iter().map(|x| Value::String(x.clone())).collect();
+            o.insert(key.into(), Value::Array(xs));
+        }
     }
     if !symbols.is_empty() {
         let p: Map<String, Value> = symbols.iter().map(|s| (s.clone(), Value::Null)).collect();
@@ -54,15 +71,16 @@ pub fn system_file_text<K: Field>(
     name: Option<&str>,
     ss: &StateSpace<K>,
     symbols: &[String],
+    signals: &SignalNames,
 ) -> String {
-    let Value::Object(o) = system_file_json(name, ss, symbols) else {
+    let Value::Object(o) = system_file_json(name, ss, symbols, signals) else {
         unreachable!("an object")
     };
     let mut lines = Vec::new();
     for (k, v) in &o {
         let key = Value::String(k.clone()).to_string();
         let val = match v {
-            Value::Array(rows) if !rows.is_empty() => {
+            Value::Array(rows) if rows.first().is_some_and(Value::is_array) => {
                 let rows: Vec<String> = rows.iter().map(row_text).collect();
                 format!("[\n    {}\n  ]", rows.join(",\n    "))
             }

@@ -11,9 +11,11 @@
 //! | [`transfer_algebra`] | sums, products, block diagonals of transfer matrices (exact) |
 //! | [`dcgain::dc_gain`] | $G(0) = D - C A^{-1} B$ per channel (infinite at a pole at 0) |
 //! | [`interconnect`] | series, parallel, feedback, append (python-control's conventions) |
+//! | [`discrete`] | sample time: Tustin c2d/d2c, step and impulse sequences, stability in $|z| < 1$ |
 //! | [`margins::margins`] | gain and phase margins of a SISO system, exact crossover frequencies |
 
 pub mod dcgain;
+pub mod discrete;
 mod display;
 pub mod interconnect;
 pub mod margins;

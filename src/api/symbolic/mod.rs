@@ -72,6 +72,7 @@ fn name(cmd: &Command) -> &'static str {
         Command::Interconnect(c) => c.name(),
         Command::Dcgain { .. } => "dcgain",
         Command::Toolbox(c) => c.name(),
+        Command::Discrete(c) => c.name(),
     }
 }
 

@@ -21,7 +21,8 @@ impl<K: Field> DcGain<K> {
             })
             .collect();
         let finite = self.entries.iter().flatten().all(Option::is_some);
-        let mut r = Report::titled("DC gain G(0)")
+        let title = format!("DC gain G({})", k.fmt_elem(&self.point));
+        let mut r = Report::titled(title)
             .list("dc_gain", rows)
             .bool("finite", finite);
         if let Some(m) = &self.matrix {

@@ -8,6 +8,7 @@
 
 mod algebraic;
 mod dcgain;
+mod discrete;
 mod interconnect;
 mod jordan;
 mod mpoly;
@@ -18,6 +19,7 @@ mod tf_field;
 mod toolbox;
 
 pub use algebraic::{factor_report, roots_report};
+pub use discrete::{conversion_report, sequence_report, stability_report};
 pub use interconnect::{PartInfo, interconnection_report};
 pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{

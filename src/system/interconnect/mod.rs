@@ -12,6 +12,7 @@
 //! | [`parallel`]`(g1, g2)` | same input, outputs added | $G_1 + G_2$ |
 //! | [`feedback`]`(g, k, sign)` | $u = r + \sigma K y$, $\sigma = -1$ (default) or $+1$ | $(I - \sigma G K)^{-1} G$ |
 //! | [`append`]`(systems)` | side by side | $\mathrm{diag}(G_1, G_2, \dots)$ |
+//! | [`connect::close`]`(g, routing)` | $u = K y + E r$, $z = F y$ (signal names, made into 0/1 matrices by the caller) | $F (I - G K)^{-1} G E$ |
 //! | [`static_gain`]`(K)` | no states, $y = K u$ | $K$ |
 //! | [`verify`] | exact check of the identity above | |
 //!
@@ -20,6 +21,7 @@
 
 mod append;
 mod check;
+pub mod connect;
 mod feedback;
 mod parallel;
 mod series;

@@ -1,0 +1,171 @@
+//! Reports of the discrete-time commands: exact stability (factors of $\det(zI - A)$ and
+//! where their roots lie), exact step/impulse sequences, and c2d/d2c results.
+
+use crate::field::{Field, Rational, fmt_rational};
+use crate::matrix::Matrix;
+use crate::report::{Report, Value};
+use crate::system::StateSpace;
+use crate::system::discrete::stability::{Domain, Place, Stability, Verdict};
+
+/// The `stability` report: verdict, region, and per irreducible factor of the
+/// characteristic polynomial its multiplicities and where its roots lie.
+pub fn stability_report(s: &Stability, dt: Option<&Rational>) -> Report {
+    let (var, region, boundary) = match s.domain {
+        Domain::Continuous => ("s", "Re s < 0", "imaginary axis"),
+        Domain::Discrete => ("z", "|z| < 1", "unit circle"),
+    };
+    let verdict = match s.verdict {
+        Verdict::AsymptoticallyStable => {
+            format!("asymptotically stable (every eigenvalue in {region})")
+        }
+        Verdict::MarginallyStable => format!(
+            "marginally stable (eigenvalues on the {boundary}, all semisimple; the others in {region})"
+        ),
+        Verdict::Unstable => format!("unstable (an eigenvalue outside the closed region {region})"),
+        Verdict::UnstableJordan => {
+            format!("unstable (a Jordan block larger than 1 on the {boundary})")
+        }
+    };
+    let rows: Vec<Vec<String>> = s
+        .factors
+        .iter()
+        .map(|(f, e, mu, place)| {
+            let at = match place {
+                Place::Inside => format!("inside ({region})"),
+                Place::Boundary => format!("on the {boundary}"),
+                Place::Outside => "a root outside".to_string(),
+            };
+            vec![f.to_string_var(var), e.to_string(), mu.to_string(), at]
+        })
+        .collect();
+    let data = Value::List(
+        rows.iter()
+            .map(|r| Value::List(r.iter().map(|x| Value::Str(x.clone())).collect()))
+            .collect(),
+    );
+    let header = ["factor", "in det", "in minpoly", "roots"]
+        .map(String::from)
+        .to_vec();
+    let mut r = Report::titled("stability (exact)").str(
+        "time",
+        match s.domain {
+            Domain::Continuous => "continuous",
+            Domain::Discrete => "discrete",
+        },
+    );
+    if let Some(dt) = dt {
+        r = r.str("dt", fmt_rational(dt));
+    }
+    r.str("verdict", verdict)
+        .bool(
+            "asymptotically_stable",
+            s.verdict == Verdict::AsymptoticallyStable,
+        )
+        .str("charpoly", s.charpoly.to_string_var(var))
+        .with("factors", Value::table(data, header, rows))
+        .str(
+            "method",
+            match s.domain {
+                Domain::Discrete => {
+                    "exact over Q: Schur-Cohn (Jury) reduction per irreducible factor; self-reciprocal factors counted on the circle by a Sturm sequence of h(z + 1/z)"
+                }
+                Domain::Continuous => {
+                    "exact over Q: each factor mapped by s = (z - 1)/(z + 1) onto the unit disk, then Schur-Cohn (Jury) and Sturm"
+                }
+            },
+        )
+        .bool("verified", true)
+}
+
+/// Samples shown exactly in text (JSON holds every sample).
+const SHOWN: usize = 12;
+
+/// An exact sequence report: per sample $k$ (time $k T$) the $p \times m$ matrix of
+/// values as exact strings; the text shows the first [`SHOWN`] samples as a table, one
+/// column per channel `input -> output`.
+pub fn sequence_report<K: Field>(
+    what: &str,
+    dt: &Rational,
+    seq: &[Matrix<K>],
+    (inputs, outputs): (&[String], &[String]),
+) -> Report {
+    let k = seq.first().map(|m| m.field().clone());
+    let show = |x: &K::Elem| k.as_ref().map_or(String::new(), |k| k.fmt_elem(x));
+    let exact: Vec<Value> = seq
+        .iter()
+        .map(|m| {
+            Value::List(
+                (0..m.nrows())
+                    .map(|i| Value::List(m.row(i).iter().map(|x| Value::Str(show(x))).collect()))
+                    .collect(),
+            )
+        })
+        .collect();
+    let mut header = vec!["k".to_string(), "t = k dt".to_string()];
+    for o in outputs {
+        for i in inputs {
+            header.push(format!("{i} -> {o}"));
+        }
+    }
+    let rows: Vec<Vec<String>> = seq
+        .iter()
+        .take(SHOWN)
+        .enumerate()
+        .map(|(n, m)| {
+            let t = dt * Rational::from_integer(n.into());
+            let mut row = vec![n.to_string(), fmt_rational(&t)];
+            for i in 0..m.nrows() {
+                row.extend(m.row(i).iter().map(|x| cell(k.as_ref(), x, show(x))));
+            }
+            row
+        })
+        .collect();
+    let first = Value::List(exact.iter().take(SHOWN).cloned().collect());
+    let shown = Value::table(first, header, rows);
+    Report::titled(format!("{what} (discrete time, exact)"))
+        .str("dt", fmt_rational(dt))
+        .int("samples", seq.len())
+        .list(
+            "inputs",
+            inputs.iter().map(|x| Value::Str(x.clone())).collect(),
+        )
+        .list(
+            "outputs",
+            outputs.iter().map(|x| Value::Str(x.clone())).collect(),
+        )
+        .with("first_samples", shown)
+        .with("exact", Value::hidden_in_text(Value::List(exact)))
+}
+
+/// A table cell: the exact value, or `~` and its approximation when the exact text is
+/// longer than 40 characters (JSON keeps it exact).
+fn cell<K: Field>(k: Option<&K>, x: &K::Elem, exact: String) -> String {
+    if exact.len() <= 40 {
+        return exact;
+    }
+    match k.and_then(|k| k.approx(x)) {
+        Some((re, _)) => format!("~{}", crate::report::text::short(re)),
+        None => format!("{}...", &exact[..37]),
+    }
+}
+
+/// The report of `c2d` / `d2c`: the method, the sample time, the system and its check.
+pub fn conversion_report<K: Field>(
+    title: &str,
+    method: &str,
+    dt: &Rational,
+    sys: &StateSpace<K>,
+    check: Option<(&str, bool)>,
+) -> Report {
+    let mut r = Report::titled(title.to_string())
+        .str("method", method)
+        .str("dt", fmt_rational(dt))
+        .matrix("A", &sys.a)
+        .matrix("B", &sys.b)
+        .matrix("C", &sys.c)
+        .matrix("D", &sys.d);
+    if let Some((what, ok)) = check {
+        r = r.str("check", what).bool("verified", ok);
+    }
+    r
+}
