@@ -46,7 +46,10 @@ fn load(path: &str, format: SystemFormat) -> exactlti::io::LoadedSystem {
 }
 
 fn main() {
-    let qc = load("data/models/quarter-car-a-arm-pushrod.toml", SystemFormat::Toml);
+    let qc = load(
+        "data/models/quarter-car-a-arm-pushrod.toml",
+        SystemFormat::Toml,
+    );
     let qc = qc.rational().expect("Q").clone();
     let desc = qc.descriptor.clone().expect("a descriptor model");
     let sm = load("data/sliding-masses.json", SystemFormat::Json);
@@ -62,9 +65,13 @@ fn main() {
         pair(&format!("{tag} scb"), Method::Scb, &q, 5, |r| {
             scb_recorded(&s.a, &s.b, &s.c, &s.d, r).expect("ok")
         });
-        pair(&format!("{tag} rosenbrock"), Method::Rosenbrock, &q, 5, |r| {
-            minimal_rosenbrock_recorded(s, r).expect("ok")
-        });
+        pair(
+            &format!("{tag} rosenbrock"),
+            Method::Rosenbrock,
+            &q,
+            5,
+            |r| minimal_rosenbrock_recorded(s, r).expect("ok"),
+        );
         pair(&format!("{tag} ho_kalman"), Method::HoKalman, &q, 3, |r| {
             minimal_ho_kalman_recorded(s, r).expect("ok")
         });

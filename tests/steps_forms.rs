@@ -100,7 +100,7 @@ fn check_mnf<K: Field>(d: &Derivation<K>, abc: [&Matrix<K>; 3]) -> Check {
     }
     let se = one(d, StepKind::MnfSearch)?;
     let t = mat(se, "T")?;
-    if se.count("identity") == Some(1) {
+    if se.count("t_equals_i") == Some(1) {
         ensure(
             t.is_identity() && sat(t, &target(&k, n, p)),
             "T = I solves eq. 15",
@@ -153,7 +153,7 @@ fn mnf_steps_scrambled_oscillator_over_q() {
     assert_eq!(fm.matrix("Kq").unwrap(), &qmat![[4]]);
     assert_eq!(fm.matrix("Dq").unwrap(), &qmat![[1]]);
     let se = one(&der, StepKind::MnfSearch).unwrap();
-    assert_eq!(se.count("identity"), Some(0));
+    assert_eq!(se.count("t_equals_i"), Some(0));
 }
 
 #[test]
@@ -197,7 +197,7 @@ fn mnf_steps_paper_appendix_b_in_symbols() {
     assert_eq!(ex.matrix("K").unwrap(), &m(&[&["0"], &["1"], &["0"]]));
     // the system is in normal form: T = I without search (issue 27 item 2), K = diag(w^2)
     let se = one(&der, StepKind::MnfSearch).unwrap();
-    assert_eq!(se.count("identity"), Some(1));
+    assert_eq!(se.count("t_equals_i"), Some(1));
     assert!(se.matrix("T").unwrap().is_identity());
     let fm = one(&der, StepKind::MnfForm).unwrap();
     assert_eq!(
@@ -489,7 +489,7 @@ fn check_real(d: &Derivation<NumberField>, a: &Matrix<Q>) -> Check {
         ensure(tc.rank() == tc.ncols(), "independent real columns")?;
     }
     let last = d.steps.last().ok_or("empty")?;
-    ensure(last.kind == StepKind::Similarity, "the real T last")?;
+    ensure(last.kind == StepKind::RealForm, "the real T last")?;
     if let (Some(t), Some(j)) = (last.matrix("T"), last.matrix("J")) {
         let f = t.field().clone();
         ensure(&a.map(&f, |x| f.from_rational(x)) * t == t * j, "A T = T J")?;
@@ -537,7 +537,7 @@ fn tampered_real_jordan_steps_are_rejected() {
     let der = exactlti::jordan::real_steps::real_jordan_steps(&a, false).unwrap();
     let mut rejected = 0;
     for (i, st) in der.steps.iter().enumerate() {
-        if !matches!(st.kind, StepKind::RealPair | StepKind::Similarity) {
+        if !matches!(st.kind, StepKind::RealPair | StepKind::RealForm) {
             continue;
         }
         for (j, (_, o)) in st.objects.iter().enumerate() {

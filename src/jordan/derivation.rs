@@ -188,8 +188,11 @@ pub enum StepKind {
     StandardForm,
     /// A complex pair $\theta, \bar\theta$ written in real coordinates: $T_c = [\operatorname{Re}
     /// v_1, \operatorname{Im} v_1, \dots]$ and the blocks $[[a, b], [-b, a]]$. Objects:
-    /// `theta`, `Tc`, `Jc`.
+    /// `Tc`, `Jc` (or `compact`).
     RealPair,
+    /// The real Jordan basis $T$ (real chains and the pairs' real columns) and the real $J$:
+    /// $A T = T J$, $T$ invertible, over one real field. Objects: `T`, `J`.
+    RealForm,
 }
 
 /// An exact object a step computed.

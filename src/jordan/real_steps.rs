@@ -61,7 +61,7 @@ pub fn real_jordan_steps(a: &Matrix<Q>, expand: bool) -> Result<Derivation<Numbe
         let af = a.map(&f, |x| f.from_rational(x));
         let ok = &af * &t == &t * &j && t.det().is_ok_and(|x| !f.is_zero(&x));
         d.steps.push(super::derivation::Step {
-            kind: StepKind::Similarity,
+            kind: StepKind::RealForm,
             part: None,
             objects: vec![("T", Object::Matrix(t)), ("J", Object::Matrix(j))],
             holds: Some(ok),

@@ -28,6 +28,7 @@ pub fn kind_name(k: StepKind) -> &'static str {
         StepKind::DescriptorFitting => "fitting_split",
         StepKind::StandardForm => "standard_form",
         StepKind::RealPair => "real_pair",
+        StepKind::RealForm => "real_form",
         _ => "step",
     }
 }
@@ -42,7 +43,7 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
         ),
         StepKind::MnfEquation => (
             "[I 0] T0 A = [0 I] T0 F, T0 B = [0; I_p]; [I 0] Tk A = [0 I] Tk F, Tk B = 0",
-            r"[I\ 0]\,T_0 A = [0\ I]\,T_0 F,\ T_0 B = \begin{bmatrix}0\\ I_p\end{bmatrix},\ [I\ 0]\,T_k A = [0\ I]\,T_k F,\ T_k B = 0",
+            r"[I\ 0]\,T_0 A = [0\ I]\,T_0 F,\ T_0 B = [0;\ I_p],\ [I\ 0]\,T_k A = [0\ I]\,T_k F,\ T_k B = 0",
         ),
         StepKind::MnfSearch => (
             "T = T0 + sum_k alpha_k Tk (or T = I solving eq. 15), det T != 0",
@@ -69,6 +70,10 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             r"C(sE - A)^{-1}B + D = C_s(sI - A_s)^{-1}B_s + D_s",
         ),
         StepKind::RealPair => ("A Tc = Tc Jc in the real field", r"A T_c = T_c J_c"),
+        StepKind::RealForm => (
+            "A T = T J, T invertible, T and J real",
+            r"A T = T J,\ \det T \ne 0,\ T, J\ \text{real}",
+        ),
         _ => ("", ""),
     }
 }
@@ -142,7 +147,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
             c("rank_L"),
             c("s")
         ),
-        StepKind::MnfSearch if c("identity") == 1 => "The system is already in mechanical normal form: T = I solves eq. 15 ([I 0] A = [0 I] F and B = [0; I_p]), so it is taken without a search.".into(),
+        StepKind::MnfSearch if c("t_equals_i") == 1 => "The system is already in mechanical normal form: T = I solves eq. 15 ([I 0] A = [0 I] F and B = [0; I_p]), so it is taken without a search.".into(),
         StepKind::MnfSearch => format!(
             "An invertible member: integer alpha (first alpha = 0, then a fixed pseudo-random sequence, then the grid {{0..n}}^s, which must contain a non-root of det T(alpha)); candidate {} has det T = {} != 0.",
             c("candidates"),
@@ -179,6 +184,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
             }
         ),
         StepKind::RealPair if c("compact") == 1 => "A complex pair whose real field K(Re theta, Im theta) is large: kept in the compact form (its complex chains above; T_R = [Re V, Im V]).".into(),
+        StepKind::RealForm => "The real Jordan form: T = [the real eigenvalues' chains, the pairs' real columns] and J = diag(their Jordan blocks, the real pair blocks), over one real field.".into(),
         StepKind::RealPair => "A complex pair theta = a + b i, conj(theta): the chain v_1..v_k of theta gives the real columns x_j = Re v_j, y_j = Im v_j, and A(x + i y) = (a + b i)(x + i y) gives A x = a x - b y, A y = b x + a y: the blocks [[a, b], [-b, a]] with I_2 above the diagonal.".into(),
         _ => String::new(),
     }
@@ -194,16 +200,17 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
             if c("descriptor") == 1 { ", on the pair $(F^{-1}A, F^{-1}B)$" } else { "" },
             if c("exists") == 1 { "exists" } else { "does not exist" }
         ),
-        StepKind::MnfEquation => "Eq.~15/16: $[I\\ 0]\\,T A = [0\\ I]\\,T F$ and $T B = [0; I_p]$ as $L\\,\\mathrm{vec}(T) = R$ with $L = \\begin{bmatrix} A^T \\otimes [I\\ 0] - F^T \\otimes [0\\ I] \\\\ B^T \\otimes I_n \\end{bmatrix}$; its solutions $T = T_0 + \\sum_k \\alpha_k T_k$ ($s$ directions, side by side below when $s \\le 4$).".into(),
-        StepKind::MnfSearch if c("identity") == 1 => "The system is already in mechanical normal form: $T = I$ solves eq.~15, so it is taken without a search.".into(),
+        StepKind::MnfEquation => "Eq.~15/16: $[I\\ 0]\\,T A = [0\\ I]\\,T F$ and $T B = [0; I_p]$ as $L\\,\\mathrm{vec}(T) = R$ with $L = [A^T \\otimes [I\\ 0] - F^T \\otimes [0\\ I];\\ B^T \\otimes I_n]$; its solutions $T = T_0 + \\sum_k \\alpha_k T_k$ ($s$ directions, side by side below when $s \\le 4$).".into(),
+        StepKind::MnfSearch if c("t_equals_i") == 1 => "The system is already in mechanical normal form: $T = I$ solves eq.~15, so it is taken without a search.".into(),
         StepKind::MnfSearch => "An invertible member $T(\\alpha)$ with integer $\\alpha$ (first $\\alpha = 0$, then a fixed pseudo-random sequence, then the grid $\\{0..n\\}^s$, which must contain a non-root of $\\det T(\\alpha)$), tested by its exact determinant.".into(),
-        StepKind::MnfForm => "The normal form $z = (TF)x$: $\\tilde A = TA(TF)^{-1} = \\begin{bmatrix} 0 & I \\\\ -K & -D_q\\end{bmatrix}$, $\\tilde B = TB = [0; W]$, $\\tilde C = C(TF)^{-1}$: the second-order model $M\\ddot q + D_q\\dot q + K q = W u$.".into(),
+        StepKind::MnfForm => "The normal form $z = (TF)x$: $\\tilde A = TA(TF)^{-1} = [0,\\ I;\\ -K,\\ -D_q]$, $\\tilde B = TB = [0; W]$, $\\tilde C = C(TF)^{-1}$: the second-order model $M\\ddot q + D_q\\dot q + K q = W u$.".into(),
         StepKind::DescriptorCompress => "Compress $E$: $U$ = unit rows at the pivot rows of $E$ over its left null space, $V$ = unit columns at its pivot columns beside its null space, so $UEV = \\operatorname{diag}(E_{11}, 0)$, $x = Vz$; $k$ is the rank of the algebraic block $\\hat A_{22}$ (index $\\le 1$ iff $k = n - r$).".into(),
         StepKind::DescriptorEliminate => "Eliminate the algebraic states $z_J$ with the equations $I$ ($X = \\hat A_{IJ}$ invertible, one-based indices below): $z_J = -X^{-1}(\\hat A_{IS} z_S + \\hat B_I u)$, leaving $E' \\dot z_S = A' z_S + B' u$, $y = C' z_S + D' u$.".into(),
         StepKind::DescriptorFitting => "Weierstrass split: $\\det(\\lambda_0 E - A) \\ne 0$, $\\hat E = (\\lambda_0 E - A)^{-1}E$ and its Fitting decomposition $x = V_1 z_1 + V_2 z_2$ give the finite part $\\dot z_1 = A_f z_1 + B_f u$ and the infinite part $(I + sGN) z_2 = G\\hat B_2 u$, $G = (I - \\lambda_0 N)^{-1}$.".into(),
         StepKind::StandardForm => "The standard form $\\dot z = A_s z + B_s u$, $y = C_s z + D_s u$.".into(),
         StepKind::RealPair if c("compact") == 1 => "A complex pair whose real field is large: kept in the compact form.".into(),
-        StepKind::RealPair => "A complex pair $\\theta = a + bi$, $\\bar\\theta$: the real columns $x_j = \\operatorname{Re} v_j$, $y_j = \\operatorname{Im} v_j$ of its chains; $A(x + iy) = (a + bi)(x + iy)$ gives $Ax = ax - by$, $Ay = bx + ay$, so the blocks are $\\begin{bmatrix} a & b \\\\ -b & a\\end{bmatrix}$.".into(),
+        StepKind::RealForm => "The real Jordan form: $T$ = the real eigenvalues' chains beside the pairs' real columns, $J$ = their Jordan blocks beside the real pair blocks, over one real field.".into(),
+        StepKind::RealPair => "A complex pair $\\theta = a + bi$, $\\bar\\theta$: the real columns $x_j = \\operatorname{Re} v_j$, $y_j = \\operatorname{Im} v_j$ of its chains; $A(x + iy) = (a + bi)(x + iy)$ gives $Ax = ax - by$, $Ay = bx + ay$, so the blocks are $[a,\\ b;\\ -b,\\ a]$ (with $I_2$ above the diagonal).".into(),
         _ => String::new(),
     }
 }
@@ -232,7 +239,7 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
         "rank_L" => r"\operatorname{rank} L",
         "T0" => "T_0",
         "Tk" => r"[T_1, \dots, T_s]",
-        "identity" if mnf => r"T = I",
+        "t_equals_i" => r"T = I",
         "alpha" => r"\alpha",
         "candidates" => r"\text{candidate}",
         "det" => r"\det T",
@@ -280,4 +287,12 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
 /// Whether an object key of this file lists indices (shown one-based).
 pub fn index_list(key: &str) -> bool {
     matches!(key, "eqs" | "states")
+}
+
+/// Whether an object key is a flag its sentence already states (not typeset in LaTeX).
+pub fn flag(key: &str) -> bool {
+    matches!(
+        key,
+        "descriptor" | "exists" | "route" | "t_equals_i" | "compact"
+    )
 }

@@ -288,7 +288,7 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
     let _ = writeln!(s, "{}\n", sentence_latex(d, st));
     let field = step_field(d, st);
     for (k, o) in &st.objects {
-        if transfer_latex(s, st, k) {
+        if transfer_latex(s, st, k) || super::steps_forms::flag(k) {
             continue;
         }
         object_latex(s, st.kind, k, o, &field);

@@ -163,7 +163,7 @@ pub(crate) fn search<K: Field>(
         StepKind::MnfSearch,
         None,
         vec![
-            ("identity", Object::Count(usize::from(taken_i))),
+            ("t_equals_i", Object::Count(usize::from(taken_i))),
             ("alpha", Object::Matrix(alpha)),
             ("candidates", Object::Count(found.candidates as usize)),
             ("T", Object::Matrix(found.t.clone())),
