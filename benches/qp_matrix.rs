@@ -14,9 +14,10 @@
 //! Run: `cargo bench --bench qp_matrix [FILTER]`.
 #[path = "common.rs"]
 mod common;
+#[path = "../tests/common/systems.rs"]
+mod systems;
 
 use common::{bench, selected};
-use exactlti::field::Field;
 use exactlti::jordan::params::jordan_params;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
@@ -24,7 +25,6 @@ use exactlti::realization::{MinrealMethod, minimal};
 use exactlti::rng::SplitMix64;
 use exactlti::structure::scb::scb;
 use exactlti::structure::zeros::invariant_zeros;
-use exactlti::system::StateSpace;
 use std::fmt::Write as _;
 
 /// Entries `c0 + c1*a + c2*b + c3*c` with coefficients in -5..=5 (row-major text).
@@ -36,46 +36,6 @@ fn dense_entries(n: usize, seed: u64) -> Vec<String> {
             format!("{} + {}*a + {}*b + {}*c", c[0], c[1], c[2], c[3])
         })
         .collect()
-}
-
-/// diag(p0..p{n-1}), B = C^T = ones.
-pub fn diag_system(n: usize) -> StateSpace<RatFuncField> {
-    let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
-    let k = RatFuncField::new(&names).unwrap();
-    let a = Matrix::diagonal(k.clone(), &(0..n).map(|i| k.var(i)).collect::<Vec<_>>());
-    let b = Matrix::from_fn(k.clone(), n, 1, |_, _| k.one());
-    let c = Matrix::from_fn(k.clone(), 1, n, |_, _| k.one());
-    let d = Matrix::zeros(k, 1, 1);
-    StateSpace::new(a, b, c, d).unwrap()
-}
-
-/// The n-mass chain between two walls: masses m, springs k, dampers c; force on mass 1,
-/// output the position of mass n. A = [[0, I], [-K/m, -L/m]].
-pub fn chain_system(n: usize) -> StateSpace<RatFuncField> {
-    let k = RatFuncField::new(&["m", "k", "c"]).unwrap();
-    let e = |s: &str| k.parse(s).unwrap();
-    let a = Matrix::from_fn(k.clone(), 2 * n, 2 * n, |i, j| {
-        if i < n {
-            return if j == i + n { k.one() } else { k.zero() };
-        }
-        let (r, col) = (i - n, j % n);
-        let what = if j < n { "k" } else { "c" };
-        if r == col {
-            e(&format!("-2*{what}/m"))
-        } else if r.abs_diff(col) == 1 {
-            e(&format!("{what}/m"))
-        } else {
-            k.zero()
-        }
-    });
-    let b = Matrix::from_fn(k.clone(), 2 * n, 1, |i, _| {
-        if i == n { e("1/m") } else { k.zero() }
-    });
-    let c = Matrix::from_fn(k.clone(), 1, 2 * n, |_, j| {
-        if j == n - 1 { k.one() } else { k.zero() }
-    });
-    let d = Matrix::zeros(k, 1, 1);
-    StateSpace::new(a, b, c, d).unwrap()
 }
 
 fn main() {
@@ -107,7 +67,7 @@ fn main() {
     std::fs::create_dir_all(&dir).ok();
     std::fs::write(dir.join("qp-matrix-cases.txt"), cases).expect("cases file");
 
-    let s = diag_system(10);
+    let s = systems::diag_qp(10);
     for (label, run) in [
         ("diag10 tf", 0),
         ("diag10 minreal", 1),
@@ -130,7 +90,7 @@ fn main() {
                 .unwrap_or(0),
         });
     }
-    let s = chain_system(10);
+    let s = systems::chain_qp(10);
     for (label, run) in [("chain10 tf", 0), ("chain10 minreal", 1)] {
         if !selected(label) {
             continue;

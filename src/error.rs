@@ -1,8 +1,10 @@
 //! The crate error: one enum, two families (see STYLE.md 7.4).
 //!
-//! *Input invalid or result undefined* (shape, field mismatch, singular, parse, ...) versus
-//! *we cannot* (`Unsupported`, `Limit`): only the second family may be retried with the float
-//! backend.
+//! *Input invalid or result undefined* (shape, field mismatch, singular, parse, a bad input
+//! file with its place: [`Error::Input`], ...) versus *we cannot* (`Unsupported`, `Limit`):
+//! only the second family may be retried with the float backend. [`Error::class`] is what
+//! the command line (exit status, [`Error::exit_code`]) and the Python package (the
+//! exception class) map; both map this one type.
 
 use std::fmt;
 
@@ -53,6 +55,22 @@ pub enum Error {
     Limit(String),
     /// An exact verification failed: an internal error.
     Verification(String),
+    /// A bad input file, with the place (file, key, row, column) and the kind.
+    Input(Box<InputError>),
+}
+
+/// What a caller does with an [`Error`]: the command line's exit status and the Python
+/// exception class follow it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ErrorClass {
+    /// Bad input or an undefined result (exit 2; `ValueError`).
+    Input,
+    /// A case this implementation does not handle (exit 2; `NotImplementedError`).
+    Unsupported,
+    /// A size or time bound of the library (exit 2; `TimeoutError`).
+    Limit,
+    /// An exact identity failed: an internal error (exit 1; `VerificationError`).
+    Verification,
 }
 
 /// The crate's result type.
@@ -62,6 +80,29 @@ impl Error {
     /// True for the "we cannot" family (a float retry may help).
     pub fn is_unable(&self) -> bool {
         matches!(self, Error::Unsupported(_) | Error::Limit(_))
+    }
+    /// The class of the error ([`ErrorClass`]).
+    pub fn class(&self) -> ErrorClass {
+        match self {
+            Error::Unsupported(_) => ErrorClass::Unsupported,
+            Error::Limit(_) => ErrorClass::Limit,
+            Error::Verification(_) => ErrorClass::Verification,
+            _ => ErrorClass::Input,
+        }
+    }
+    /// The command line's exit status: 1 for a failed exact check, 2 otherwise.
+    pub fn exit_code(&self) -> i32 {
+        if self.class() == ErrorClass::Verification {
+            1
+        } else {
+            2
+        }
+    }
+}
+
+impl From<InputError> for Error {
+    fn from(e: InputError) -> Self {
+        Error::Input(Box::new(e))
     }
 }
 
@@ -92,8 +133,150 @@ impl fmt::Display for Error {
             Error::Unsupported(m) => write!(f, "unsupported: {m}"),
             Error::Limit(m) => write!(f, "limit reached: {m}"),
             Error::Verification(m) => write!(f, "verification failed: {m}"),
+            Error::Input(e) => write!(f, "{e}"),
         }
     }
 }
 
 impl std::error::Error for Error {}
+
+/// A bad input file: where (file, key, 1-based row and column) and what.
+///
+/// `Display` is a single line such as
+/// `yaw.json: key A, row 2, column 3: unknown parameter 'cf'`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InputError {
+    pub file: String,
+    pub key: Option<String>,
+    pub row: Option<usize>,
+    pub col: Option<usize>,
+    pub msg: String,
+    /// What kind of failure, for callers that must tell cases apart (the message is for
+    /// people).
+    pub kind: InputErrorKind,
+}
+
+/// The kind of an [`InputError`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum InputErrorKind {
+    /// A bad value: an entry or parameter that does not evaluate, a wrong type, a cycle.
+    #[default]
+    Value,
+    /// Text that is not valid JSON/TOML/expression syntax.
+    Syntax,
+    /// The file cannot be read (missing, unreadable, not UTF-8).
+    Read,
+    /// The file is larger than `crate::io::read::MAX_FILE_BYTES`.
+    TooLarge,
+    /// A key this format does not know (with a suggestion when one is close).
+    UnknownKey,
+    /// A key given twice.
+    DuplicateKey,
+    /// Matrix shapes that do not agree, or a missing required matrix.
+    Shape,
+    /// Valid data that is not a system file (e.g. the bicycle benchmark's raw matrices).
+    NotASystem,
+    /// A feature or field the reader or the loader does not support here.
+    Unsupported,
+}
+
+impl InputError {
+    /// An error about the whole file.
+    pub fn file(file: &str, msg: impl Into<String>) -> Self {
+        InputError {
+            file: file.to_string(),
+            key: None,
+            row: None,
+            col: None,
+            msg: msg.into(),
+            kind: InputErrorKind::Value,
+        }
+    }
+    /// The same error with kind `kind`.
+    pub fn with_kind(self, kind: InputErrorKind) -> Self {
+        InputError { kind, ..self }
+    }
+    /// An error about one key of the file.
+    pub fn key(file: &str, key: &str, msg: impl Into<String>) -> Self {
+        InputError {
+            key: Some(key.to_string()),
+            ..Self::file(file, msg)
+        }
+    }
+    /// An error about one entry (1-based `row`, `col`) of a matrix key.
+    pub fn entry(file: &str, key: &str, row: usize, col: usize, msg: impl Into<String>) -> Self {
+        InputError {
+            row: Some(row),
+            col: Some(col),
+            ..Self::key(file, key, msg)
+        }
+    }
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: ", self.file)?;
+        let mut parts = Vec::new();
+        if let Some(k) = &self.key {
+            parts.push(format!("key {k}"));
+        }
+        if let Some(r) = self.row {
+            parts.push(format!("row {r}"));
+        }
+        if let Some(c) = self.col {
+            parts.push(format!("column {c}"));
+        }
+        if !parts.is_empty() {
+            write!(f, "{}: ", parts.join(", "))?;
+        }
+        // one line, always
+        write!(f, "{}", self.msg.replace(['\n', '\r'], " "))
+    }
+}
+
+impl std::error::Error for InputError {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every variant has the class the command line and Python map: exit 1 only for a failed
+    /// exact check; an input error keeps its place and says the one line of the file error.
+    #[test]
+    fn classes_and_exit_codes() {
+        let input = InputError::entry("f.json", "A", 2, 3, "unknown parameter 'cf'")
+            .with_kind(InputErrorKind::Value);
+        let cases = [
+            (Error::Singular, ErrorClass::Input),
+            (Error::Invalid("x".into()), ErrorClass::Input),
+            (Error::Input(Box::new(input.clone())), ErrorClass::Input),
+            (Error::Unsupported("x".into()), ErrorClass::Unsupported),
+            (Error::Limit("x".into()), ErrorClass::Limit),
+            (Error::Verification("x".into()), ErrorClass::Verification),
+        ];
+        for (e, class) in cases {
+            assert_eq!(e.class(), class, "{e}");
+            assert_eq!(
+                e.exit_code(),
+                if class == ErrorClass::Verification {
+                    1
+                } else {
+                    2
+                }
+            );
+            assert_eq!(
+                e.is_unable(),
+                matches!(class, ErrorClass::Unsupported | ErrorClass::Limit)
+            );
+        }
+        let e = Error::from(input.clone());
+        assert_eq!(
+            e.to_string(),
+            "f.json: key A, row 2, column 3: unknown parameter 'cf'"
+        );
+        assert_eq!(e, Error::Input(Box::new(input)));
+        let boxed: Box<dyn std::error::Error> = Box::new(e);
+        assert!(boxed.to_string().starts_with("f.json: "));
+    }
+}

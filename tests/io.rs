@@ -249,7 +249,11 @@ fn invalid_files_give_one_line() {
         let e = read_system_file(Path::new(&p)).expect_err(file);
         assert_eq!(e.to_string(), format!("{p}: {want}"));
         let crate_err: exactlti::Error = e.clone().into();
-        assert_eq!(crate_err, exactlti::Error::Invalid(e.to_string()));
+        // the crate error keeps the place and the kind, and says the same line
+        assert_eq!(crate_err, exactlti::Error::Input(Box::new(e.clone())));
+        assert_eq!(crate_err.to_string(), e.to_string());
+        assert_eq!(crate_err.class(), exactlti::error::ErrorClass::Input);
+        assert_eq!(crate_err.exit_code(), 2);
     }
     let e = read_system_file(Path::new("tests/data/no_such_file.json")).unwrap_err();
     assert!(

@@ -83,8 +83,8 @@ fn edge_cases_empty_small_and_singular() {
     assert_eq!(rank_k(&d, 0, 3, &[]), 0);
     assert_eq!(rank_k(&d, 3, 0, &[]), 0);
     assert_eq!(inverse_k(&d, 0, &[]), Some(vec![]));
-    assert!(mul_k_integer(&d, 0, 2, 3, &[], &vec![k.zero(); 6]).is_empty());
-    assert_eq!(mul_k_integer(&d, 2, 0, 2, &[], &[]), vec![k.zero(); 4]);
+    assert!(mul_k_integer(&d, (0, 2, 3), &[], &vec![k.zero(); 6]).is_empty());
+    assert_eq!(mul_k_integer(&d, (2, 0, 2), &[], &[]), vec![k.zero(); 4]);
     // below the size threshold the generic loop is chosen
     assert!(mul_k(&d, 2, 1, 2, &[k.one(), k.one()], &[k.one(), k.one()]).is_none());
     // a zero matrix and a singular one
@@ -159,7 +159,7 @@ proptest! {
         let b = Matrix::from_vec(k.clone(), kk, n, ys[..kk * n].to_vec());
         let d = k.d().clone();
         // product: integer kernel against the classical loop
-        let p = mul_k_integer(&d, m, kk, n, a.as_slice(), b.as_slice());
+        let p = mul_k_integer(&d, (m, kk, n), a.as_slice(), b.as_slice());
         let naive = mul_naive(&a, &b);
         prop_assert_eq!(p.as_slice(), naive.as_slice());
         // rank and inverse against Gauss-Jordan over K; a planted dependent row

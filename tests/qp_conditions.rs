@@ -6,25 +6,16 @@
 //! formulas; `sweep`/`critical` along a parameter written `null`.
 
 use crate::common::cli::{run, temp_file};
+use crate::common::systems::diag_qp;
 use exactlti::field::Field;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::rng::SplitMix64;
 
-fn diag_system(n: usize) -> exactlti::system::StateSpace<RatFuncField> {
-    let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
-    let k = RatFuncField::new(&names).unwrap();
-    let a = Matrix::diagonal(k.clone(), &(0..n).map(|i| k.var(i)).collect::<Vec<_>>());
-    let b = Matrix::from_fn(k.clone(), n, 1, |_, _| k.one());
-    let c = Matrix::from_fn(k.clone(), 1, n, |_, _| k.one());
-    let d = Matrix::zeros(k, 1, 1);
-    exactlti::system::StateSpace::new(a, b, c, d).unwrap()
-}
-
 #[test]
 fn diag_minreal_states_where_the_order_drops() {
     for n in [4, 6] {
-        let s = diag_system(n);
+        let s = diag_qp(n);
         let k = s.a.field().clone();
         k.clear_conditions();
         let r = exactlti::realization::minimal(&s, exactlti::realization::MinrealMethod::Kalman)

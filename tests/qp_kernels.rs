@@ -4,6 +4,7 @@
 //! random rational points, A N = 0 with rank + nullity = n; no conditions for charpoly and
 //! det; scale cases (diag(p0..p9), n-mass chains) with exact orders and transfer functions.
 
+use crate::common::systems::diag_qp;
 use exactlti::field::{Field, Q, Rational};
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::{RatFunc, RatFuncField};
@@ -184,20 +185,9 @@ fn dense_8x8_in_three_parameters() {
 
 // ---------------------------------------------------------------- scale cases
 
-/// diag(p0..p{n-1}), B = C^T = ones.
-fn diag_system(n: usize) -> exactlti::system::StateSpace<RatFuncField> {
-    let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
-    let k = RatFuncField::new(&names).unwrap();
-    let a = Matrix::diagonal(k.clone(), &(0..n).map(|i| k.var(i)).collect::<Vec<_>>());
-    let b = Matrix::from_fn(k.clone(), n, 1, |_, _| k.one());
-    let c = Matrix::from_fn(k.clone(), 1, n, |_, _| k.one());
-    let d = Matrix::zeros(k, 1, 1);
-    exactlti::system::StateSpace::new(a, b, c, d).unwrap()
-}
-
 #[test]
 fn diag_p0_to_p9_transfer_function_and_minimal_order() {
-    let s = diag_system(10);
+    let s = diag_qp(10);
     // G = sum 1/(s - p_i) = chi'(s) / chi(s), chi = prod (s - p_i), in lowest terms
     let g = s.transfer_matrix().unwrap();
     let chi = s.a.charpoly().unwrap();

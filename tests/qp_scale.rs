@@ -9,6 +9,7 @@
 //!   rational points (against C (s0 I - A)^-1 B over Q), the SCB is verified with dims
 //!   summing to 2n, x_a of the n - 1 zeros at -k/c and one chain of relative degree n + 1.
 
+use crate::common::systems::diag_qp;
 use exactlti::field::{Field, Q, Rational};
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::{RatFunc, RatFuncField};
@@ -102,19 +103,10 @@ fn block_split_rref_equals_the_generic_rref() {
     }
 }
 
-pub(crate) fn diag_system(n: usize) -> StateSpace<RatFuncField> {
-    let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
-    let k = RatFuncField::new(&names).unwrap();
-    let a = Matrix::diagonal(k.clone(), &(0..n).map(|i| k.var(i)).collect::<Vec<_>>());
-    let b = Matrix::from_fn(k.clone(), n, 1, |_, _| k.one());
-    let c = Matrix::from_fn(k.clone(), 1, n, |_, _| k.one());
-    StateSpace::new(a, b, c, Matrix::zeros(k, 1, 1)).unwrap()
-}
-
 #[test]
 fn diag_jordan_is_diagonal_with_pairwise_conditions() {
     let n = 6;
-    let s = diag_system(n);
+    let s = diag_qp(n);
     let k = s.a.field().clone();
     k.clear_conditions();
     let j = exactlti::jordan::params::jordan_params(&s.a).unwrap();

@@ -9,7 +9,8 @@
 //!   as one unfactored condition, equal to the determinant's numerator;
 //! - diag(p0..p{n-1}): Rosenbrock and Ho–Kalman keep the Markov parameters.
 
-use crate::qp_scale::{diag_system, entry};
+use crate::common::systems::diag_qp;
+use crate::qp_scale::entry;
 use exactlti::error::Error;
 use exactlti::field::Field;
 use exactlti::matrix::Matrix;
@@ -164,7 +165,7 @@ fn an_irreducible_pivot_minor_is_recorded_unfactored() {
 #[test]
 fn diag_rosenbrock_and_ho_kalman_keep_the_markov_parameters() {
     for n in 2..=4 {
-        let s = diag_system(n);
+        let s = diag_qp(n);
         for method in [MinrealMethod::Rosenbrock, MinrealMethod::HoKalman] {
             let r = minimal(&s, method).unwrap();
             assert_eq!(r.order, n, "n = {n}, {method:?}");

@@ -9,6 +9,7 @@
 #![allow(non_snake_case)]
 
 use exactlti::Error;
+use exactlti::error::ErrorClass;
 mod study;
 use exactlti::api::runner::{Poll, Worker};
 use exactlti::field::Q;
@@ -50,20 +51,21 @@ enum Fail {
 }
 
 impl From<Error> for Fail {
+    /// By the library's class of the error ([`Error::class`]), as the command line does.
     fn from(e: Error) -> Self {
         let m = e.to_string();
-        match e {
-            Error::Unsupported(_) => Fail::Unsupported(m),
-            Error::Limit(_) => Fail::Limit(m),
-            Error::Verification(_) => Fail::Verification(m),
-            _ => Fail::Input(m),
+        match e.class() {
+            ErrorClass::Unsupported => Fail::Unsupported(m),
+            ErrorClass::Limit => Fail::Limit(m),
+            ErrorClass::Verification => Fail::Verification(m),
+            ErrorClass::Input => Fail::Input(m),
         }
     }
 }
 
 impl From<exactlti::io::InputError> for Fail {
     fn from(e: exactlti::io::InputError) -> Self {
-        Fail::Input(e.to_string())
+        Error::from(e).into()
     }
 }
 

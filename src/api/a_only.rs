@@ -8,6 +8,7 @@ use crate::error::Error;
 use crate::field::{Field, Q};
 use crate::io::system_file::read_matrix_key;
 use crate::io::{FromScalars, Ground, InputError, read_system_file};
+use crate::jordan::EigenField;
 use crate::matrix::Matrix;
 use crate::report::Value;
 use std::path::Path;
@@ -69,59 +70,44 @@ pub(super) fn a_command<K: Field + 'static>(
     a: &Matrix<K>,
     path: &Path,
 ) -> Option<Result<Outcome, Failure>> {
-    let e = |err| with_path(path, err);
     Some(match cmd {
-        Command::Jordan { real, expand, .. } if irrational_quadratic(a).is_some() => {
-            let k = irrational_quadratic(a).expect("checked");
-            jordan_over_k_cmd(k, (*real, *expand), path)
-        }
-        Command::Jordan { real, expand, .. } => jordan_any(a).map_err(e).and_then(|jf| {
-            if *real {
-                let rf = jf.real_form_with(*expand).map_err(e)?;
-                // a real form left in complex coordinates (exact = false) is not checked
-                Ok(Outcome::new(rf.report(), !rf.exact || rf.verified))
-            } else {
-                Ok(Outcome::new(jf.report(), jf.verified))
-            }
-        }),
+        Command::Jordan { real, expand, .. } => jordan_any(a, (*real, *expand), path),
         Command::Linalg { op, .. } => linalg_report(*op, a, path).map(Outcome::plain),
         _ => return None,
     })
 }
 
-/// The exact Jordan form over the fields that have one (Q and quadratic fields).
-fn jordan_any<K: Field + 'static>(a: &Matrix<K>) -> crate::Result<crate::jordan::JordanForm> {
+/// `jordan [--real]` over the fields that have an exact Jordan form: Q, and a quadratic
+/// field (over Q when every entry is rational).
+fn jordan_any<K: Field + 'static>(
+    a: &Matrix<K>,
+    how: (bool, bool),
+    path: &Path,
+) -> Result<Outcome, Failure> {
     let any = a as &dyn std::any::Any;
     if let Some(q) = any.downcast_ref::<Matrix<Q>>() {
-        return crate::jordan::jordan(q);
+        return jordan_cmd(q, how, path);
     }
     if let Some(k) = any.downcast_ref::<Matrix<crate::field::QuadraticField>>() {
-        return crate::jordan::jordan_quadratic(k);
+        return match crate::matrix::to_rational_matrix(k) {
+            Some(q) => jordan_cmd(&q, how, path),
+            None => jordan_cmd(k, how, path),
+        };
     }
-    Err(Error::Unsupported(format!(
-        "Jordan form over {}",
-        a.field()
-    )))
+    let e = Error::Unsupported(format!("Jordan form over {}", a.field()));
+    Err(with_path(path, e))
 }
 
-/// `a` as a matrix over a quadratic field when some entry is not rational.
-fn irrational_quadratic<K: Field + 'static>(
-    a: &Matrix<K>,
-) -> Option<&Matrix<crate::field::QuadraticField>> {
-    let k = (a as &dyn std::any::Any).downcast_ref::<Matrix<crate::field::QuadraticField>>()?;
-    crate::matrix::to_rational_matrix(k).is_none().then_some(k)
-}
-
-/// `jordan [--real]` over K = Q(i) / Q(sqrt d) for a matrix with an irrational entry.
-fn jordan_over_k_cmd(
-    a: &Matrix<crate::field::QuadraticField>,
+/// `jordan [--real]` ([`crate::jordan::jordan_over`]); `--real` of a matrix over a field
+/// that is not real (Q(i)) is refused, naming its first entry outside Q.
+fn jordan_cmd<F: EigenField>(
+    a: &Matrix<F>,
     (real, expand): (bool, bool),
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let e = |err| with_path(path, err);
     let k = a.field();
     if real && !k.is_real() {
-        // the first entry with a nonzero imaginary part
         let (i, j) = (0..a.nrows())
             .flat_map(|i| (0..a.ncols()).map(move |j| (i, j)))
             .find(|&(i, j)| k.to_rational(a.get(i, j)).is_none())
@@ -141,7 +127,8 @@ fn jordan_over_k_cmd(
     let jf = crate::jordan::jordan_over(a).map_err(e)?;
     if real {
         let rf = jf.real_form_with(expand).map_err(e)?;
-        return Ok(Outcome::new(rf.report(), rf.verified));
+        // a real form left in complex coordinates (exact = false) is not checked
+        return Ok(Outcome::new(rf.report(), !rf.exact || rf.verified));
     }
     Ok(Outcome::new(jf.report(), jf.verified))
 }

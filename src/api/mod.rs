@@ -342,14 +342,10 @@ impl std::fmt::Display for Failure {
 impl std::error::Error for Failure {}
 
 impl From<Error> for Failure {
+    /// The exit status of the error's class ([`Error::exit_code`]) and its line.
     fn from(e: Error) -> Self {
-        let code = if matches!(e, Error::Verification(_)) {
-            1
-        } else {
-            2
-        };
         Failure {
-            code,
+            code: e.exit_code(),
             message: e.to_string(),
         }
     }
@@ -357,10 +353,7 @@ impl From<Error> for Failure {
 
 impl From<crate::io::InputError> for Failure {
     fn from(e: crate::io::InputError) -> Self {
-        Failure {
-            code: 2,
-            message: e.to_string(),
-        }
+        Error::from(e).into()
     }
 }
 

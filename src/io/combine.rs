@@ -11,9 +11,7 @@ use super::load::{LoadedSystem, TypedAny, TypedSystem};
 use super::raw::{Raw, from_json_text, from_toml_text};
 use super::{Ground, InputError, SystemFormat};
 use crate::field::{Field, Q, QuadraticField};
-use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
-use crate::system::{Descriptor, StateSpace};
 
 /// Systems over one common field.
 #[derive(Clone, Debug)]
@@ -38,31 +36,6 @@ impl CommonSystems {
             CommonSystems::Quadratic(s) => v.visit(s),
             CommonSystems::RatFunc(s) => v.visit(s),
         }
-    }
-}
-
-/// `t` with its matrices mapped into `k` entry by entry.
-fn lift<K: Field, L: Field>(
-    t: &TypedSystem<K>,
-    k: &L,
-    f: &dyn Fn(&K::Elem) -> L::Elem,
-) -> TypedSystem<L> {
-    let m = |x: &Matrix<K>| x.map(k, f);
-    TypedSystem {
-        descriptor: t.descriptor.as_ref().map(|d| Descriptor {
-            e: m(&d.e),
-            a: m(&d.a),
-            b: m(&d.b),
-            c: m(&d.c),
-            d: m(&d.d),
-        }),
-        a_raw: m(&t.a_raw),
-        ss: StateSpace {
-            a: m(&t.ss.a),
-            b: m(&t.ss.b),
-            c: m(&t.ss.c),
-            d: m(&t.ss.d),
-        },
     }
 }
 
@@ -98,7 +71,7 @@ pub fn common_field(systems: &[&LoadedSystem]) -> Result<CommonSystems, InputErr
                     .iter()
                     .map(|s| match &s.system {
                         TypedAny::Quadratic(t) => t.clone(),
-                        TypedAny::Rational(t) => lift(t, &k, &|x| k.from_rational(x)),
+                        TypedAny::Rational(t) => t.map(&k, &|x| k.from_rational(x)),
                         TypedAny::RatFunc(_) => unreachable!("checked: one field"),
                     })
                     .collect(),
@@ -111,7 +84,7 @@ pub fn common_field(systems: &[&LoadedSystem]) -> Result<CommonSystems, InputErr
                     .iter()
                     .map(|s| match &s.system {
                         TypedAny::RatFunc(t) => t.in_field(&k),
-                        TypedAny::Rational(t) => lift(t, &k, &|x| k.from_rational(x)),
+                        TypedAny::Rational(t) => t.map(&k, &|x| k.from_rational(x)),
                         TypedAny::Quadratic(_) => unreachable!("checked: one field"),
                     })
                     .collect(),

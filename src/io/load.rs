@@ -61,7 +61,12 @@ impl<K: Field> TypedSystem<K> {
     /// The same system with its matrices carried by the field value `k` (entries cloned):
     /// over Q(p), a field with a fresh condition log.
     pub fn in_field(&self, k: &K) -> Self {
-        let m = |x: &Matrix<K>| x.map(k, |e| e.clone());
+        self.map(k, &|e| e.clone())
+    }
+
+    /// The same system over the field `l`, every entry carried by `f`.
+    pub fn map<L: Field>(&self, l: &L, f: &dyn Fn(&K::Elem) -> L::Elem) -> TypedSystem<L> {
+        let m = |x: &Matrix<K>| x.map(l, f);
         TypedSystem {
             descriptor: self.descriptor.as_ref().map(|d| Descriptor {
                 e: m(&d.e),

@@ -294,14 +294,7 @@ mod tests {
         check(&a1, 0, 2, &[1, 1]);
         check(&a1, -1, 2, &[1, 1]);
         // nilpotent with blocks 3, 2, 1 shuffled by a similarity
-        let j = qmat![
-            [0, 1, 0, 0, 0, 0],
-            [0, 0, 1, 0, 0, 0],
-            [0, 0, 0, 0, 0, 0],
-            [0, 0, 0, 0, 1, 0],
-            [0, 0, 0, 0, 0, 0],
-            [0, 0, 0, 0, 0, 0]
-        ];
+        let j = jordan_block_matrix(&Q, &Rational::from_integer(0.into()), &[3, 2, 1]);
         let p = qmat![
             [1, 2, 0, 0, 1, 0],
             [0, 1, 0, 1, 0, 0],

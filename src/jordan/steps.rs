@@ -166,6 +166,26 @@ fn annihilates<K: Field>(a: &Matrix<K>, p: &Poly<K>, max_n: usize) -> Option<boo
     a.eval_poly(p).ok().map(|m| m.is_zero())
 }
 
+/// The step $\chi(s) = \det(sI - A)$, checked by $\chi(A) = 0$ (Cayley–Hamilton) for
+/// $n \le$ `max_n`.
+pub(crate) fn charpoly_step<K: Field>(
+    rec: &mut Recorder<'_, K>,
+    a: &Matrix<K>,
+    chi: &Poly<K>,
+    max_n: usize,
+) {
+    let objects = vec![
+        ("A", Object::Matrix(a.clone())),
+        ("chi", Object::Poly(chi.clone())),
+    ];
+    rec.push(
+        StepKind::CharPoly,
+        None,
+        objects,
+        annihilates(a, chi, max_n),
+    );
+}
+
 /// The product $\prod p_i^{e_i}$.
 fn product<K: Field>(k: &K, factors: &[(Poly<K>, usize)]) -> Poly<K> {
     factors.iter().fold(Poly::one(k.clone()), |acc, (p, e)| {
@@ -186,15 +206,7 @@ pub fn jordan_steps(a: &Matrix<Q>) -> Result<Derivation<NumberField>> {
     let mut rec = Recorder::new(Method::Jordan, q.clone());
     let chi = a.charpoly()?;
     let chi_k = lift_poly(&chi);
-    rec.push(
-        StepKind::CharPoly,
-        None,
-        vec![
-            ("A", Object::Matrix(lift(a, &q))),
-            ("chi", Object::Poly(chi_k.clone())),
-        ],
-        annihilates(&lift(a, &q), &chi_k, 40),
-    );
+    charpoly_step(&mut rec, &lift(a, &q), &chi_k, 40);
     let factors = super::roots::factor_q(&chi)?;
     let fk: Vec<(Poly<NumberField>, usize)> =
         factors.iter().map(|(p, e)| (lift_poly(p), *e)).collect();
@@ -254,15 +266,7 @@ pub fn jordan_steps_params(a_in: &Matrix<RatFuncField>) -> Result<Derivation<Rat
     let a = Matrix::from_vec(k.clone(), n, n, a_in.as_slice().to_vec());
     let mut rec = Recorder::with_log(Method::Jordan, k.clone(), ratfunc_log(&k));
     let chi = Poly::new(k.clone(), pj.charpoly.coeffs().to_vec());
-    rec.push(
-        StepKind::CharPoly,
-        None,
-        vec![
-            ("A", Object::Matrix(a.clone())),
-            ("chi", Object::Poly(chi.clone())),
-        ],
-        annihilates(&a, &chi, 8),
-    );
+    charpoly_step(&mut rec, &a, &chi, 8);
     let nv = k.nvars();
     let facs: Vec<(Poly<RatFuncField>, usize)> = pj
         .eigenvalues

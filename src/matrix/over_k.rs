@@ -73,21 +73,22 @@ pub fn mul_k(
 ) -> Option<Vec<Quadratic>> {
     check_len("mul_k", a.len(), m, k);
     check_len("mul_k", b.len(), k, n);
-    if k < MUL_MIN_K || m * n < 4 {
-        return None;
-    }
-    Some(mul_k_integer(d, m, k, n, a, b))
+    (k >= MUL_MIN_K && m * n >= 4).then(|| mul_k_integer(d, (m, k, n), a, b))
 }
 
-/// [`mul_k`] without the size dispatch (the integer kernel itself).
+/// [`mul_k`] without the size dispatch (the integer kernel itself) for the shape
+/// `(m, k, n)`.
+///
+/// # Panics
+/// When a slice length does not match its shape.
 pub fn mul_k_integer(
     d: &BigInt,
-    m: usize,
-    k: usize,
-    n: usize,
+    (m, k, n): (usize, usize, usize),
     a: &[Quadratic],
     b: &[Quadratic],
 ) -> Vec<Quadratic> {
+    check_len("mul_k", a.len(), m, k);
+    check_len("mul_k", b.len(), k, n);
     let rows: Vec<_> = (0..m)
         .map(|i| scale(a[i * k..(i + 1) * k].iter()))
         .collect();

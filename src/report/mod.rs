@@ -161,6 +161,18 @@ impl Report {
     pub fn matrix<K: Field>(self, key: &str, m: &Matrix<K>) -> Self {
         self.with(key, Value::Matrix(Box::new(MatrixOut::from_matrix(m))))
     }
+    /// One [`Report::int`] per `(key, n)`, in order.
+    pub fn ints(self, items: &[(&str, usize)]) -> Self {
+        items.iter().fold(self, |r, &(k, n)| r.int(k, n))
+    }
+    /// One [`Report::float`] per `(key, x)`, in order.
+    pub fn floats(self, items: &[(&str, f64)]) -> Self {
+        items.iter().fold(self, |r, &(k, x)| r.float(k, x))
+    }
+    /// One [`Report::matrix`] per `(key, m)`, in order.
+    pub fn matrices<K: Field>(self, items: &[(&str, &Matrix<K>)]) -> Self {
+        items.iter().fold(self, |r, &(k, m)| r.matrix(k, m))
+    }
     pub fn obj(self, key: &str, r: Report) -> Self {
         self.with(key, Value::Obj(r))
     }

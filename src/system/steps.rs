@@ -19,16 +19,7 @@ use crate::poly::Poly;
 const CAYLEY_MAX: usize = 40;
 
 pub(crate) fn charpoly<K: Field>(rec: &mut Recorder<'_, K>, a: &Matrix<K>, chi: &Poly<K>) {
-    let ok = (a.nrows() <= CAYLEY_MAX).then(|| a.eval_poly(chi).is_ok_and(|m| m.is_zero()));
-    rec.push(
-        StepKind::CharPoly,
-        None,
-        vec![
-            ("A", Object::Matrix(a.clone())),
-            ("chi", Object::Poly(chi.clone())),
-        ],
-        ok,
-    );
+    crate::jordan::steps::charpoly_step(rec, a, chi, CAYLEY_MAX);
 }
 
 pub(crate) fn markov<K: Field>(rec: &mut Recorder<'_, K>, s: &StateSpace<K>, h: &[Matrix<K>]) {

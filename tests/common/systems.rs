@@ -193,6 +193,16 @@ pub fn planted_scaled(n: usize, seed: u64, hidden_scale: i64) -> Planted {
     }
 }
 
+/// diag(p0..p{n-1}) over Q(p0, ..., p{n-1}), B = C^T = ones.
+pub fn diag_qp(n: usize) -> StateSpace<exactlti::ratfunc::RatFuncField> {
+    let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
+    let k = exactlti::ratfunc::RatFuncField::new(&names).unwrap();
+    let a = Matrix::diagonal(k.clone(), &(0..n).map(|i| k.var(i)).collect::<Vec<_>>());
+    let b = Matrix::from_fn(k.clone(), n, 1, |_, _| k.one());
+    let c = Matrix::from_fn(k.clone(), 1, n, |_, _| k.one());
+    StateSpace::new(a, b, c, Matrix::zeros(k, 1, 1)).unwrap()
+}
+
 /// The n-mass chain between two walls over Q(m, k, c) (masses m, springs k, dampers c), force on mass 1, position of mass n.
 pub fn chain_qp(n: usize) -> StateSpace<exactlti::ratfunc::RatFuncField> {
     let k = exactlti::ratfunc::RatFuncField::new(&["m", "k", "c"]).unwrap();

@@ -17,6 +17,28 @@ pub enum Insist {
     Analyze,
 }
 
+/// One section of the table: its title, the command that insists, and the checked work
+/// (whether its exact check held, and its report).
+pub struct Section {
+    pub title: &'static str,
+    pub insist: Insist,
+    pub work: Box<dyn FnOnce() -> crate::Result<(bool, Report)> + Send>,
+}
+
+impl Section {
+    pub fn new(
+        title: &'static str,
+        insist: Insist,
+        work: impl FnOnce() -> crate::Result<(bool, Report)> + Send + 'static,
+    ) -> Self {
+        Section {
+            title,
+            insist,
+            work: Box::new(work),
+        }
+    }
+}
+
 /// The report under construction.
 pub struct Sections<'a> {
     pub report: Report,
@@ -102,6 +124,34 @@ impl<'a> Sections<'a> {
                 "internal failure: the computation panicked (please report it)",
             )),
         }
+    }
+
+    /// Runs checked `work` within the budget: its report (its check joins
+    /// [`Sections::verified`]) or the section reported in its place; `Err` is the work's own
+    /// error, for the caller to word.
+    pub fn checked(
+        &mut self,
+        title: &str,
+        insist: Insist,
+        work: impl FnOnce() -> crate::Result<(bool, Report)> + Send + 'static,
+    ) -> crate::Result<Value> {
+        match self.run(title, insist, work) {
+            Ok(Ok((ok, rep))) => {
+                self.verified &= ok;
+                Ok(Value::Obj(rep))
+            }
+            Ok(Err(e)) => Err(e),
+            Err(v) => Ok(v),
+        }
+    }
+
+    /// [`Sections::checked`], a failure reported in place (`error`), the section pushed
+    /// under `key`.
+    pub fn section(&mut self, key: &str, s: Section) {
+        let v = self
+            .checked(s.title, s.insist, s.work)
+            .unwrap_or_else(|e| failed_msg(s.title, &e.to_string()));
+        self.push(key, v);
     }
 
     /// The report of a section that ran out of time.

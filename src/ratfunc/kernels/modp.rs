@@ -6,36 +6,9 @@ use crate::mpoly::MPoly;
 use crate::qkernels::prime::Prime;
 use num_bigint::Sign;
 
-/// $\det A$ of the `n x n` row-major `a` (destroyed) by Gaussian elimination.
-pub fn det_mod_p(pr: &Prime, n: usize, a: &mut [u64]) -> u64 {
-    let mut det = 1u64;
-    for c in 0..n {
-        let Some(p) = (c..n).find(|&i| a[i * n + c] != 0) else {
-            return 0;
-        };
-        if p != c {
-            for j in 0..n {
-                a.swap(p * n + j, c * n + j);
-            }
-            det = pr.neg(det);
-        }
-        let piv = a[c * n + c];
-        det = pr.mul(det, piv);
-        let inv = pr.inv(piv).expect("nonzero pivot");
-        for i in c + 1..n {
-            let f = a[i * n + c];
-            if f == 0 {
-                continue;
-            }
-            let f = pr.mul(f, inv);
-            for j in c..n {
-                let t = pr.mul(f, a[c * n + j]);
-                a[i * n + j] = pr.sub(a[i * n + j], t);
-            }
-        }
-    }
-    det
-}
+/// $\det A$ of the `n x n` row-major `a` (destroyed): the kernel of the multi-modular
+/// determinant over $\mathbb{Q}$.
+pub use crate::qkernels::modular::det::det_mod_p;
 
 /// Gauss–Jordan with the generic rule of `Matrix::rref` (the first row at or below the
 /// current one with a nonzero entry in the column, swapped up): the pivot columns and the

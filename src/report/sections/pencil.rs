@@ -218,17 +218,21 @@ pub fn descriptor_ctrb_report<K: Field>(
 pub fn minreal_descriptor_report<K: Field>(m: &DescriptorMinimal<K>) -> Report {
     let s = &m.system;
     Report::titled("minimal descriptor realization")
-        .int("order", m.order)
-        .int("irreducible_order", m.irreducible_order)
-        .int("original_order", m.original_order)
-        .int("finite_order", m.finite_order)
-        .int("infinite_order", m.infinite_order)
-        .int("polynomial_degree", m.polynomial_degree)
-        .matrix("E", &s.e)
-        .matrix("A", &s.a)
-        .matrix("B", &s.b)
-        .matrix("C", &s.c)
-        .matrix("D", &s.d)
+        .ints(&[
+            ("order", m.order),
+            ("irreducible_order", m.irreducible_order),
+            ("original_order", m.original_order),
+            ("finite_order", m.finite_order),
+            ("infinite_order", m.infinite_order),
+            ("polynomial_degree", m.polynomial_degree),
+        ])
+        .matrices(&[
+            ("E", &s.e),
+            ("A", &s.a),
+            ("B", &s.b),
+            ("C", &s.c),
+            ("D", &s.d),
+        ])
         .bool("verified", m.verified)
 }
 

@@ -39,18 +39,31 @@ impl<K: Field> Scb<K> {
                 "minimum_phase",
                 self.minimum_phase().map_or(Value::Null, Value::Bool),
             )
-            .matrix("A", &self.a)
-            .matrix("B", &self.b)
-            .matrix("C", &self.c)
-            .matrix("D", &self.d)
-            .matrix("G1", &self.gamma1)
-            .matrix("G2", &self.gamma2)
-            .matrix("G3", &self.gamma3)
-            .matrix("U", &self.u_pre)
-            .matrix("Y", &self.y_pre)
+            .matrices(&[
+                ("A", &self.a),
+                ("B", &self.b),
+                ("C", &self.c),
+                ("D", &self.d),
+                ("G1", &self.gamma1),
+                ("G2", &self.gamma2),
+                ("G3", &self.gamma3),
+                ("U", &self.u_pre),
+                ("Y", &self.y_pre),
+            ])
             .bool("verified", self.verified && self.verify())
     }
 }
+
+/// The matrices of the mechanical normal form, in the report's order.
+const MNF_KEYS: [&str; 7] = [
+    "mass",
+    "damping",
+    "stiffness",
+    "input",
+    "output",
+    "feedthrough",
+    "T",
+];
 
 impl<K: Field> MechanicalNormalForm<K> {
     /// The report with the CLI contract keys of `mnf`: `exists`, `reason`, `mass`, `damping`,
@@ -66,28 +79,22 @@ impl<K: Field> MechanicalNormalForm<K> {
             );
         match &self.form {
             Some(m) => {
-                r = r
-                    .matrix("mass", &m.mass)
-                    .matrix("damping", &m.damping)
-                    .matrix("stiffness", &m.stiffness)
-                    .matrix("input", &m.input)
-                    .matrix("output", &m.output)
-                    .matrix("feedthrough", &m.feedthrough)
-                    .matrix("T", &m.t);
+                let ms = [
+                    &m.mass,
+                    &m.damping,
+                    &m.stiffness,
+                    &m.input,
+                    &m.output,
+                    &m.feedthrough,
+                    &m.t,
+                ];
+                r = r.matrices(&MNF_KEYS.into_iter().zip(ms).collect::<Vec<_>>());
                 if let Some(l) = &m.left {
                     r = r.matrix("T_rows", l);
                 }
             }
             None => {
-                for key in [
-                    "mass",
-                    "damping",
-                    "stiffness",
-                    "input",
-                    "output",
-                    "feedthrough",
-                    "T",
-                ] {
+                for key in MNF_KEYS {
                     r = r.with(key, Value::Null);
                 }
             }

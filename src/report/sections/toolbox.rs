@@ -234,13 +234,15 @@ pub fn stepinfo_channel(output: &str, input: &str, info: Result<&StepInfo, &str>
                 "SettlingTime",
                 s.settling_time.map_or(Value::Null, Value::Float),
             )
-            .float("SettlingMin", s.settling_min)
-            .float("SettlingMax", s.settling_max)
-            .float("Overshoot", s.overshoot)
-            .float("Undershoot", s.undershoot)
-            .float("Peak", s.peak)
-            .float("PeakTime", s.peak_time)
-            .float("SteadyStateValue", s.steady_state_value),
+            .floats(&[
+                ("SettlingMin", s.settling_min),
+                ("SettlingMax", s.settling_max),
+                ("Overshoot", s.overshoot),
+                ("Undershoot", s.undershoot),
+                ("Peak", s.peak),
+                ("PeakTime", s.peak_time),
+                ("SteadyStateValue", s.steady_state_value),
+            ]),
         Err(why) => r.str("reason", why),
     }
 }
