@@ -135,6 +135,8 @@ mod scb;
 mod slowpaths;
 #[path = "steps.rs"]
 mod steps;
+#[path = "steps_forms.rs"]
+mod steps_forms;
 #[path = "steps_systems.rs"]
 mod steps_systems;
 #[path = "study.rs"]

@@ -1,6 +1,8 @@
-//! `--steps`: the derivation of `jordan`, `scb`, `zeros`, `tf` and of `minreal --method
-//! kalman|jordan|rosenbrock|ho-kalman`, step by step,
+//! `--steps`: the derivation of `jordan` (also `--real`), `scb`, `zeros`, `tf`, `standard`,
+//! `mnf` and of `minreal --method kalman|jordan|rosenbrock|ho-kalman`, step by step,
 //! over $\mathbb{Q}$ and over $\mathbb{Q}(p)$ (files with symbols, `--symbolic`, `--at`).
+//! A descriptor file (with `E`) is derived through its standard form: the steps of
+//! `standard` first, then the command's on the standard system (what the command computes).
 //!
 //! The steps are computed by [`crate::jordan::steps`] and [`crate::realization::steps`] and
 //! rendered by [`crate::report::steps`] (text, JSON) and [`crate::report::steps_latex`]
@@ -8,20 +10,25 @@
 //! Exit 1 when an identity of a step fails.
 
 use super::{Command, Failure, Format, MethodArg, Outcome};
+use crate::algebraic::NumberField;
 use crate::field::Field;
+use crate::field::Q;
 use crate::io::TypedAny;
+use crate::io::TypedSystem;
 use crate::io::symbolic::SymbolicOptions;
-use crate::jordan::derivation::{AssumptionLog, Derivation, Method, Recorder, ratfunc_log};
-use crate::matrix::Matrix;
+use crate::jordan::derivation::{
+    AssumptionLog, Derivation, Method, Object, Recorder, Step, ratfunc_log,
+};
 use crate::report::steps::derivation_report;
 use crate::report::steps_latex::derivation_latex;
-use crate::system::StateSpace;
+use crate::system::{Descriptor, StateSpace};
 use std::path::Path;
 
 /// What `--steps` derives.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, PartialEq)]
 enum What {
     Jordan,
+    RealJordan(bool),
     Kalman,
     JordanMethod,
     Scb,
@@ -29,13 +36,15 @@ enum What {
     Tf,
     Rosenbrock,
     HoKalman,
+    Standard,
+    Mnf,
 }
 
 fn refuse(message: String) -> Failure {
     Failure { code: 2, message }
 }
 
-const AVAILABLE: &str = "--steps: available for `jordan` (without --real), `scb`, `zeros`, `tf` and `minreal --method kalman|jordan|rosenbrock|ho-kalman` (not yet for `standard`, `mnf`, `jordan --real`, descriptor systems)";
+const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf` and `minreal --method kalman|jordan|rosenbrock|ho-kalman` (not for `minreal --method era` or `--descriptor`)";
 
 /// The file and the derivation `cmd` asks for.
 fn what(cmd: &Command) -> Option<(&Path, What)> {
@@ -43,6 +52,7 @@ fn what(cmd: &Command) -> Option<(&Path, What)> {
         Command::Jordan {
             file, real: false, ..
         } => (file, What::Jordan),
+        Command::Jordan { file, expand, .. } => (file, What::RealJordan(*expand)),
         Command::Minreal {
             file,
             method,
@@ -61,8 +71,22 @@ fn what(cmd: &Command) -> Option<(&Path, What)> {
         Command::Scb { file } => (file, What::Scb),
         Command::Zeros { file } => (file, What::Zeros),
         Command::Tf { file } => (file, What::Tf),
+        Command::Standard { file } => (file, What::Standard),
+        Command::Mnf { file } => (file, What::Mnf),
         _ => return None,
     })
+}
+
+/// A recorder for `method`, with the assumption log over $\mathbb{Q}(p)$.
+fn recorder<'a, K: Field>(
+    method: Method,
+    k: &K,
+    log: Option<AssumptionLog<'a, K>>,
+) -> Recorder<'a, K> {
+    match log {
+        Some(l) => Recorder::with_log(method, k.clone(), l),
+        None => Recorder::new(method, k.clone()),
+    }
 }
 
 /// The derivation of a system command over any field (with the assumption log over
@@ -79,17 +103,14 @@ fn system_steps<'a, K: Field>(
         What::Tf => Method::Transfer,
         What::Rosenbrock => Method::Rosenbrock,
         What::HoKalman => Method::HoKalman,
-        What::Jordan | What::JordanMethod => {
+        What::Mnf => Method::Mnf,
+        _ => {
             return Err(crate::error::Error::Invalid(
                 "internal: not a system derivation".into(),
             ));
         }
     };
-    let k = ss.field().clone();
-    let mut rec = match log {
-        Some(l) => Recorder::with_log(method, k, l),
-        None => Recorder::new(method, k),
-    };
+    let mut rec = recorder(method, ss.field(), log);
     let r = Some(&mut rec);
     let (a, b, c, d) = (&ss.a, &ss.b, &ss.c, &ss.d);
     match what {
@@ -99,9 +120,48 @@ fn system_steps<'a, K: Field>(
         )?),
         What::Tf => drop(ss.transfer_matrix_recorded(r)?),
         What::Rosenbrock => drop(crate::realization::minimal_rosenbrock_recorded(ss, r)?),
+        What::Mnf => drop(
+            crate::structure::mechanical::mechanical_normal_form_recorded(
+                None,
+                [a, b, c, d],
+                crate::structure::mechanical::DEFAULT_MAX_CANDIDATES,
+                r,
+            )?,
+        ),
         _ => drop(crate::realization::minimal_ho_kalman_recorded(ss, r)?),
     }
     Ok(rec.finish())
+}
+
+/// The standard form of a descriptor system, step by step, and the standard system.
+fn standard_steps<'a, K: Field>(
+    d: &Descriptor<K>,
+    log: Option<AssumptionLog<'a, K>>,
+) -> crate::error::Result<(Derivation<K>, StateSpace<K>)> {
+    let mut rec = recorder(Method::Standard, d.a.field(), log);
+    let f = crate::realization::descriptor_to_standard_recorded(d, Some(&mut rec))?;
+    Ok((rec.finish(), f.system))
+}
+
+/// The derivation of `what` for a system over any field, a descriptor system through its
+/// standard form first (its steps, then the command's on the standard system).
+fn any_steps<K: Field>(
+    ss: &StateSpace<K>,
+    descriptor: Option<&Descriptor<K>>,
+    what: What,
+    log: &dyn Fn() -> Option<AssumptionLog<'static, K>>,
+) -> crate::error::Result<Derivation<K>> {
+    let Some(d) = descriptor else {
+        return system_steps(ss, what, log());
+    };
+    let (mut first, ss) = standard_steps(d, log())?;
+    if what == What::Standard {
+        return Ok(first);
+    }
+    let then = system_steps(&ss, what, log())?;
+    first.method = then.method;
+    first.steps.extend(then.steps);
+    Ok(first)
 }
 
 /// Runs `cmd` with `--steps`; LaTeX is written to stdout here (the outcome is `streamed`).
@@ -125,39 +185,102 @@ pub fn execute(
         TypedAny::Quadratic(t) => t.descriptor.is_some(),
         TypedAny::RatFunc(t) => t.descriptor.is_some(),
     };
-    if descriptor && !matches!(what, What::Jordan) {
+    if descriptor && matches!(what, What::Zeros | What::RealJordan(_)) {
         return Err(refuse(format!(
-            "{}: --steps for a descriptor system (a file with E) is not available yet",
+            "{}: --steps for `zeros` and `jordan --real` of a descriptor system (a file with E) is not available yet (`standard --steps` derives its standard form)",
+            path_text(file)
+        )));
+    }
+    if !descriptor && what == What::Standard {
+        return Err(refuse(format!(
+            "{}: --steps for `standard` needs a descriptor system (a file with E); this one is already in standard form",
             path_text(file)
         )));
     }
     match (&loaded.system, what) {
-        (TypedAny::Rational(t), What::Jordan) => {
-            out.show(&crate::jordan::steps::jordan_steps(&t.a_raw).map_err(e)?)
+        (TypedAny::Rational(t), What::Jordan) => out.show(&jordan_q(t).map_err(e)?),
+        (TypedAny::Rational(t), What::RealJordan(expand)) => {
+            out.show(&crate::jordan::real_steps::real_jordan_steps(&t.a_raw, expand).map_err(e)?)
         }
         (TypedAny::RatFunc(t), What::Jordan) => {
-            out.show(&crate::jordan::steps::jordan_steps_params(&t.a_raw).map_err(e)?)
+            let Some(d) = &t.descriptor else {
+                return out.show(&crate::jordan::steps::jordan_steps_params(&t.a_raw).map_err(e)?);
+            };
+            let (mut first, ss) = standard_steps(d, None).map_err(e)?;
+            let then = crate::jordan::steps::jordan_steps_params(&ss.a).map_err(e)?;
+            first.method = then.method;
+            first.steps.extend(then.steps);
+            out.show(&first)
         }
-        (TypedAny::Rational(t), What::JordanMethod) => {
+        (TypedAny::Rational(t), What::JordanMethod) if t.descriptor.is_none() => {
             out.show(&crate::realization::steps::jordan_method_steps(&t.ss).map_err(e)?)
         }
-        (_, What::Jordan | What::JordanMethod) => Err(refuse(format!(
-            "{}: --steps for this command needs rational entries (this file's lie in {})",
+        (_, What::Jordan | What::JordanMethod | What::RealJordan(_)) => Err(refuse(format!(
+            "{}: --steps for this command needs rational entries (this file's lie in {}){}",
             path_text(file),
-            loaded.file.ground
+            loaded.file.ground,
+            if descriptor { " and no E" } else { "" }
         ))),
-        (TypedAny::Rational(t), w) => out.show(&system_steps(&t.ss, w, None).map_err(e)?),
-        (TypedAny::Quadratic(t), w) => out.show(&system_steps(&t.ss, w, None).map_err(e)?),
+        (TypedAny::Rational(t), w) => {
+            out.show(&any_steps(&t.ss, t.descriptor.as_ref(), w, &|| None).map_err(e)?)
+        }
+        (TypedAny::Quadratic(t), w) => {
+            out.show(&any_steps(&t.ss, t.descriptor.as_ref(), w, &|| None).map_err(e)?)
+        }
         (TypedAny::RatFunc(t), w) => {
             // a fresh field: its conditions are the ones this derivation assumes
             let k = t.ss.field().fresh();
-            let mv = |m: &Matrix<_>| {
-                Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec())
-            };
-            let s0 = &t.ss;
-            let ss = StateSpace::new(mv(&s0.a), mv(&s0.b), mv(&s0.c), mv(&s0.d)).map_err(e)?;
-            out.show(&system_steps(&ss, w, Some(ratfunc_log(&k))).map_err(e)?)
+            let t = t.in_field(&k);
+            let log = || Some(ratfunc_log(&k));
+            out.show(&any_steps(&t.ss, t.descriptor.as_ref(), w, &log).map_err(e)?)
         }
+    }
+}
+
+/// `jordan --steps` over $\mathbb{Q}$; for a descriptor system the steps of its standard
+/// form (lifted into the rationals as a number field of degree 1), then the Jordan steps of
+/// the standard form's $A$ (the finite dynamics `jordan` reports).
+fn jordan_q(t: &TypedSystem<Q>) -> crate::error::Result<Derivation<NumberField>> {
+    let Some(d) = &t.descriptor else {
+        return crate::jordan::steps::jordan_steps(&t.a_raw);
+    };
+    let (first, ss) = standard_steps(d, None)?;
+    let mut out = crate::jordan::steps::jordan_steps(&ss.a)?;
+    let q = out.field.clone();
+    let mut steps = lift_derivation(&first, &q).steps;
+    steps.append(&mut out.steps);
+    out.steps = steps;
+    Ok(out)
+}
+
+/// A derivation over $\mathbb{Q}$ as one over the rationals as a number field.
+fn lift_derivation(d: &Derivation<Q>, q: &NumberField) -> Derivation<NumberField> {
+    let lift = |x: &<Q as Field>::Elem| q.from_rational(x);
+    let obj = |o: &Object<Q>| match o {
+        Object::Matrix(m) => Object::Matrix(m.map(q, lift)),
+        Object::Poly(p) => Object::Poly(p.map(q, lift)),
+        Object::Factors(f) => {
+            Object::Factors(f.iter().map(|(p, e)| (p.map(q, lift), *e)).collect())
+        }
+        Object::Scalar(x) => Object::Scalar(lift(x)),
+        Object::Count(c) => Object::Count(*c),
+        Object::Counts(c) => Object::Counts(c.clone()),
+        Object::Polys(ps) => Object::Polys(ps.iter().map(|p| p.map(q, lift)).collect()),
+    };
+    Derivation {
+        method: d.method,
+        field: q.clone(),
+        steps: d
+            .steps
+            .iter()
+            .map(|s| Step {
+                kind: s.kind,
+                part: s.part,
+                objects: s.objects.iter().map(|(k, o)| (*k, obj(o))).collect(),
+                holds: s.holds,
+                assumes: s.assumes.iter().map(lift).collect(),
+            })
+            .collect(),
     }
 }
 

@@ -35,6 +35,12 @@ pub enum Method {
     Rosenbrock,
     /// Minimal realization by Ho--Kalman (Hankel factorization).
     HoKalman,
+    /// The mechanical normal form (Mayet & Kammermeier, sec. 2-3).
+    Mnf,
+    /// A descriptor system $E \dot x = A x + B u$ to standard form.
+    Standard,
+    /// The real Jordan form (complex pairs as real $2 \times 2$ blocks).
+    RealJordan,
 }
 
 /// What a step computes; each kind has one sentence and one identity (see `report::steps`).
@@ -147,6 +153,46 @@ pub enum StepKind {
     /// Ho--Kalman factorization: $H = \mathcal O_r \mathcal C_r$ and $(A_r, B_r, C_r)$ from the
     /// shifted Hankel matrix. Objects: `Am`, `Bm`, `Cm`, `order`.
     HankelFactor,
+    /// MNF input compression $B = B_1 R$ ($B_1$ the pivot columns of $B$, $R$ the nonzero rows
+    /// of its RREF). Objects: `B1`, `R`.
+    MnfCompression,
+    /// MNF existence (Theorem 2.1 and the similarity-invariant last condition): $U_{B,2}^T$
+    /// with $U_{B,2}^T B = 0$, $K = U_{B,2}^T A B$ and its rank, Theorem 2.1's $G$ and its rank
+    /// (diagnostic), the largest geometric multiplicity of the uncontrollable part. Objects:
+    /// `n`, `p`, `rank_b`, `UB2t`, `K`, `rank_k`, `G`, `rank_g`, `geo`, `exists`.
+    MnfExistence,
+    /// MNF eq. 15/16: $L\,\mathrm{vec}(T) = R$; its particular solution $T_0$ and the number
+    /// $s$ of null-space directions $T_k$. Objects: `L` (small systems), `rank_L`, `T0`, `s`.
+    MnfEquation,
+    /// MNF: an invertible member $T = T_0 + \sum_k \alpha_k T_k$ (exact determinant). Objects:
+    /// `alpha`, `candidates`, `T`, `det`.
+    MnfSearch,
+    /// MNF: $\tilde A = T A T^{-1}$, $\tilde B = T B$, $\tilde C = C T^{-1}$ and the
+    /// second-order model $M \ddot q + D_q \dot q + K q = W u$. Objects: `At`, `Bt`, `Ct`,
+    /// `Mq`, `Dq`, `Kq`, `W`.
+    MnfForm,
+    /// Descriptor: compression $U E V = \operatorname{diag}(E_{11}, 0)$, $r = \operatorname{rank}
+    /// E$, $x = V z$. Objects: `E`, `U`, `V`, `UEV`, `UAV`, `r`.
+    DescriptorCompress,
+    /// Descriptor: elimination of the algebraic states $z_J$ with the equations $I$ ($X =
+    /// \hat A_{IJ}$ invertible), $z_J = -X^{-1}(\hat A_{IS} z_S + \hat B_I u)$. Objects: `X`,
+    /// `rows`, `cols`, `Er`, `Ar`, `Br`, `Cr`, `Dr`.
+    DescriptorEliminate,
+    /// Descriptor (index $> 1$): $\lambda_0$ with $\det(\lambda_0 E - A) \ne 0$, $\hat E =
+    /// (\lambda_0 E - A)^{-1} E$ and its Fitting split $x = V_1 z_1 + V_2 z_2$. Objects:
+    /// `lambda0`, `Eh`, `V1`, `V2`, `GN`, `GB`.
+    DescriptorFitting,
+    /// The standard form $(A_s, B_s, C_s, D_s)$ and its certificate: $x = V_1 z + W u$ maps
+    /// solutions ($E W = 0$, $E V_1 A_s = A V_1$, ...) or equal transfer matrices. Objects:
+    /// `As`, `Bs`, `Cs`, `Ds`, `V1`, `removed`.
+    StandardForm,
+    /// A complex pair $\theta, \bar\theta$ written in real coordinates: $T_c = [\operatorname{Re}
+    /// v_1, \operatorname{Im} v_1, \dots]$ and the blocks $[[a, b], [-b, a]]$. Objects:
+    /// `Tc`, `Jc` (or `compact`).
+    RealPair,
+    /// The real Jordan basis $T$ (real chains and the pairs' real columns) and the real $J$:
+    /// $A T = T J$, $T$ invertible, over one real field. Objects: `T`, `J`.
+    RealForm,
 }
 
 /// An exact object a step computed.

@@ -45,6 +45,7 @@ pub mod pair_field;
 pub mod params;
 pub mod primary;
 pub mod real;
+pub mod real_steps;
 pub(crate) mod realfield;
 pub mod response;
 mod roots;

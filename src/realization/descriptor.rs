@@ -33,6 +33,7 @@
 use super::weierstrass::same_transfer;
 use crate::error::{Error, Result};
 use crate::field::Field;
+use crate::jordan::derivation::Recorder;
 use crate::matrix::Matrix;
 use crate::system::{Descriptor, StateSpace};
 
@@ -82,15 +83,26 @@ impl StandardMethod {
 
 /// The standard form of an index-0 or index-1 system by compression and elimination
 /// (module docs); `None` for a higher index.
-fn index_one_form<K: Field>(sys: &Descriptor<K>) -> Result<Option<StandardForm<K>>> {
+fn index_one_form<K: Field>(
+    sys: &Descriptor<K>,
+    mut rec: Option<&mut Recorder<'_, K>>,
+) -> Result<Option<StandardForm<K>>> {
     let n = sys.nstates();
     let c = super::descriptor_elim::compress_e(sys)?;
     let r = c.rank;
     let (rows, cols) = super::descriptor_elim::algebraic_block(&c);
+    if let Some(rec) = rec.as_deref_mut() {
+        super::standard_steps::compress(rec, sys, &c, rows.len());
+    }
     if rows.len() != n - r {
         return Ok(None);
     }
     let (red, xa, xb) = super::descriptor_elim::eliminate(&c.system, &rows, &cols)?;
+    if let Some(rec) = rec.as_deref_mut()
+        && !rows.is_empty()
+    {
+        super::standard_steps::eliminate(rec, &c, (&rows, &cols), &red);
+    }
     let e11i = red.e.inverse()?;
     let system = StateSpace::new(&e11i * &red.a, &e11i * &red.b, red.c, red.d)?;
     // x = V [z1; z2], z2 = -A22^-1 (A21 z1 + B2 u): x = V1 z1 + W u
@@ -103,6 +115,10 @@ fn index_one_form<K: Field>(sys: &Descriptor<K>) -> Result<Option<StandardForm<K
         StandardMethod::IndexOne
     };
     let verified = maps_solutions(sys, &system, &v1, &w);
+    if let Some(rec) = rec {
+        let route = usize::from(method == StandardMethod::IndexOne);
+        super::standard_steps::form(rec, &system, (&v1, Some(&w)), (n - r, route), verified);
+    }
     let states = own_states(&v1, &w);
     Ok(Some(StandardForm {
         system,
@@ -172,10 +188,25 @@ fn system_as_descriptor<K: Field>(s: &StateSpace<K>) -> Result<Descriptor<K>> {
 /// `Invalid` for a singular pencil; `ImproperTransfer` (naming the highest power of $s$)
 /// when the transfer matrix has a polynomial part.
 pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardForm<K>> {
-    if let Some(f) = index_one_form(sys)? {
+    descriptor_to_standard_recorded(sys, None)
+}
+
+/// [`descriptor_to_standard`], recording its steps (`standard --steps`,
+/// [`super::standard_steps`]) when `rec` is given.
+///
+/// # Errors
+/// As [`descriptor_to_standard`].
+pub fn descriptor_to_standard_recorded<K: Field>(
+    sys: &Descriptor<K>,
+    mut rec: Option<&mut Recorder<'_, K>>,
+) -> Result<StandardForm<K>> {
+    if let Some(f) = index_one_form(sys, rec.as_deref_mut())? {
         return Ok(f);
     }
     let split = super::weierstrass::fitting_split(sys)?;
+    if let Some(rec) = rec.as_deref_mut() {
+        super::standard_steps::fitting(rec, &split);
+    }
     let (gn, gb) = (&split.gn, &split.gb);
     let k2 = gn.nrows();
     let cv2 = &sys.c * &split.v2;
@@ -201,6 +232,9 @@ pub fn descriptor_to_standard<K: Field>(sys: &Descriptor<K>) -> Result<StandardF
     }
     let system = StateSpace::new(split.a_f, split.b_f, &sys.c * &split.v1, d_std)?;
     let verified = split.decoupled && same_transfer(sys, &system_as_descriptor(&system)?);
+    if let Some(rec) = rec {
+        super::standard_steps::form(rec, &system, (&split.v1, None), (k2, 2), verified);
+    }
     Ok(StandardForm {
         system,
         removed_infinite: k2,

@@ -34,6 +34,8 @@ pub(crate) struct CompressedE<K: Field> {
     pub rank: usize,
     /// $x = Vz$.
     pub v: Matrix<K>,
+    /// The row operations $U$.
+    pub u: Matrix<K>,
 }
 
 /// Unit vectors $e_i$, $i \in$ `idx`, as the columns of an $n \times |idx|$ matrix.
@@ -64,7 +66,12 @@ pub(crate) fn compress_e<K: Field>(sys: &Descriptor<K>) -> Result<CompressedE<K>
         c: &sys.c * &v,
         d: sys.d.clone(),
     };
-    Ok(CompressedE { system, rank: r, v })
+    Ok(CompressedE {
+        system,
+        rank: r,
+        v,
+        u,
+    })
 }
 
 /// The complement of `idx` in `0..n`, ascending.

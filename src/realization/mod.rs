@@ -36,6 +36,7 @@ mod method;
 mod minimal;
 mod modal;
 mod rosenbrock;
+pub mod standard_steps;
 pub mod steps;
 mod weierstrass;
 
@@ -48,7 +49,10 @@ pub use ctrb_structure::{
     descriptor_controllability, observability_structure,
 };
 pub use damp::{DampRow, damp, damp_over};
-pub use descriptor::{StandardForm, StandardMethod, descriptor_to_standard, finite_dynamics};
+pub use descriptor::{
+    StandardForm, StandardMethod, descriptor_to_standard, descriptor_to_standard_recorded,
+    finite_dynamics,
+};
 pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
 pub use from_transfer::{TransferRealization, realize_state_space, realize_transfer};
 pub use gramian::{GramType, Gramian, Gramians, gramian, gramians, is_hurwitz, lyapunov};

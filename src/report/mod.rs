@@ -12,6 +12,7 @@ pub mod plot;
 pub mod sections;
 pub mod series;
 pub mod steps;
+pub mod steps_forms;
 pub mod steps_latex;
 pub mod steps_more;
 pub mod summary;

@@ -162,7 +162,8 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
     }
     for &(c0, c1) in &blocks {
         let head = if blocks.len() > 1 {
-            format!("{name}_{{:,\\,{}..{}}}", c0 + 1, c1)
+            // braces: a name with its own subscript (A_s, A_{22}) takes the block's
+            format!("{{{name}}}_{{:,\\,{}..{}}}", c0 + 1, c1)
         } else {
             name.to_string()
         };
@@ -195,9 +196,7 @@ fn object_latex<K: Field>(s: &mut String, kind: StepKind, key: &str, o: &Object<
         || super::steps_more::index_list(key);
     match o {
         Object::Matrix(m) => matrix_latex(s, &name, m),
-        Object::Poly(p) => {
-            let _ = writeln!(s, "\\[ {name} = {} \\]", poly_latex(p, "s"));
-        }
+        Object::Poly(p) => display_wrapped(s, &name, &poly_latex(p, "s")),
         Object::Factors(fs) => {
             let parts: Vec<String> = fs
                 .iter()
@@ -222,6 +221,66 @@ fn object_latex<K: Field>(s: &mut String, kind: StepKind, key: &str, o: &Object<
             let _ = writeln!(s, "\\[ {name}:\\ {} \\]", parts.join(",\\; "));
         }
     }
+}
+
+/// Characters of a displayed line (a rough count of the typeset symbols) that fit A4.
+const LINE_CHARS: usize = 90;
+
+/// The typeset length of LaTeX math, roughly: its characters without control words.
+fn typeset_len(t: &str) -> usize {
+    let mut n = 0;
+    let mut chars = t.chars().peekable();
+    while let Some(c) = chars.next() {
+        if c == '\\' {
+            while chars.peek().is_some_and(|c| c.is_ascii_alphabetic()) {
+                chars.next();
+            }
+        } else if !matches!(c, '{' | '}' | '^' | '_' | ' ') {
+            n += 1;
+        }
+    }
+    n
+}
+
+/// `name = body` in display math; a long sum is broken at its top-level `+`/`-` signs
+/// into the lines of an `align*` (a polynomial of the 747 model is several lines wide).
+fn display_wrapped(s: &mut String, name: &str, body: &str) {
+    if typeset_len(body) <= LINE_CHARS {
+        let _ = writeln!(s, "\\[ {name} = {body} \\]");
+        return;
+    }
+    // split before " + " / " - " outside \left( ... \right)
+    let (mut parts, mut cur, mut depth) = (vec![], String::new(), 0i32);
+    let b = body.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        let rest = &body[i..];
+        if rest.starts_with("\\left") {
+            depth += 1;
+        } else if rest.starts_with("\\right") {
+            depth -= 1;
+        }
+        if depth == 0 && (rest.starts_with(" + ") || rest.starts_with(" - ")) && !cur.is_empty() {
+            parts.push(std::mem::take(&mut cur));
+        }
+        let ch = rest.chars().next().unwrap_or(' ');
+        cur.push(ch);
+        i += ch.len_utf8();
+    }
+    parts.push(cur);
+    let mut lines: Vec<String> = vec![];
+    for p in parts {
+        match lines.last_mut() {
+            Some(l) if typeset_len(l) + typeset_len(&p) <= LINE_CHARS => l.push_str(&p),
+            _ => lines.push(p),
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\\begin{{align*}}\n{name} &= {}",
+        lines.join(" \\\\\n&\\quad ")
+    );
+    s.push_str("\\end{align*}\n");
 }
 
 /// The sentence of a step in LaTeX (the objects follow it in display math).
@@ -288,7 +347,7 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
     let _ = writeln!(s, "{}\n", sentence_latex(d, st));
     let field = step_field(d, st);
     for (k, o) in &st.objects {
-        if transfer_latex(s, st, k) {
+        if transfer_latex(s, st, k) || super::steps_forms::flag(k) {
             continue;
         }
         object_latex(s, st.kind, k, o, &field);

@@ -14,7 +14,7 @@ pub fn title(m: Method) -> &'static str {
         Method::Transfer => "transfer matrix (Faddeev-LeVerrier), step by step",
         Method::Rosenbrock => "minimal realization (Rosenbrock staircase), step by step",
         Method::HoKalman => "minimal realization (Ho-Kalman), step by step",
-        _ => "derivation, step by step",
+        m => super::steps_forms::title(m),
     }
 }
 
@@ -38,7 +38,7 @@ pub fn kind_name(k: StepKind) -> &'static str {
         StepKind::Staircase => "staircase",
         StepKind::Hankel => "hankel",
         StepKind::HankelFactor => "hankel_factorization",
-        _ => "step",
+        k => super::steps_forms::kind_name(k),
     }
 }
 
@@ -101,7 +101,7 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             "L R = H_0, L^+ L = I, R R^+ = I, A_r = L^+ H_1 R^+",
             r"L R = H_0,\ A_r = L^{+} H_1 R^{+}",
         ),
-        _ => ("", ""),
+        k => super::steps_forms::identity(k),
     }
 }
 
@@ -211,7 +211,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>, var: &str) -> String {
             c("rank")
         ),
         StepKind::HankelFactor => "Rank factorization H_0 = L R (L the pivot columns of H_0, R the nonzero rows of its RREF); A_r = L^+ H_1 R^+ with the shifted Hankel matrix H_1, B_r = the first m columns of R, C_r = the first p rows of L.".into(),
-        _ => String::new(),
+        _ => super::steps_forms::sentence(d, s),
     }
 }
 
@@ -244,12 +244,15 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
         StepKind::Staircase => "Rosenbrock's staircase: the Krylov pivot columns of $[B, AB, \\dots]$ (block 0 last) completed by unit vectors give $T$; $(T^{-1}AT, T^{-1}B, CT)$ has the zero pattern of eq.~17 and $k$ reached states.".into(),
         StepKind::Hankel => "The block Hankel matrix $H_0 = [C A^{i+j} B]$ ($n$ block rows and columns) and its rank, the McMillan degree.".into(),
         StepKind::HankelFactor => "Rank factorization $H_0 = L R$ ($L$ the pivot columns, $R$ the nonzero rows of the RREF); $A_r = L^{+} H_1 R^{+}$ with the shifted Hankel matrix $H_1$, $B_r$ the first $m$ columns of $R$, $C_r$ the first $p$ rows of $L$.".into(),
-        _ => String::new(),
+        _ => super::steps_forms::sentence_latex(st),
     }
 }
 
 /// The LaTeX symbol of an object key of this file's steps (`None`: the common table).
 pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
+    if let Some(sym) = super::steps_forms::symbol(kind, key) {
+        return Some(sym);
+    }
     Some(match (kind, key) {
         (StepKind::ScbForm, "A") => r"A_s",
         (StepKind::ScbForm, "B") => r"B_s",
@@ -309,5 +312,5 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
 
 /// Whether an object key lists indices (shown one-based).
 pub fn index_list(key: &str) -> bool {
-    matches!(key, "ending" | "going_on" | "cols" | "rows")
+    matches!(key, "ending" | "going_on" | "cols" | "rows") || super::steps_forms::index_list(key)
 }

@@ -10,7 +10,7 @@
 //! |---|---|
 //! | [`mechanical_normal_form_descriptor`] | the normal form of $(F, A, B, C, D)$ over $\mathbb{Q}$ |
 
-use super::existence::{Existence, decide_existence};
+use super::existence::{Existence, ExistenceParts, decide_existence_parts};
 use super::{DEFAULT_MAX_CANDIDATES, MnfResult, mechanical_normal_form_in};
 use crate::error::{Error, Result};
 use crate::field::{Field, Q};
@@ -41,7 +41,7 @@ pub(crate) fn decide_existence_descriptor<K: Field>(
     f: &Matrix<K>,
     a: &Matrix<K>,
     b: &Matrix<K>,
-) -> Result<Existence> {
+) -> Result<(Existence, ExistenceParts<K>)> {
     let n = a.nrows();
     if f.shape() != (n, n) {
         return Err(Error::Shape {
@@ -55,7 +55,7 @@ pub(crate) fn decide_existence_descriptor<K: Field>(
         Some((x, null)) if null.ncols() == 0 => {
             let a_s = x.submatrix(0, n, 0, n);
             let b_s = x.submatrix(0, n, n, n + b.ncols());
-            Ok(decide_existence(&a_s, &b_s))
+            Ok(decide_existence_parts(&a_s, &b_s))
         }
         _ => Err(Error::Invalid(
             "the descriptor matrix F is singular; only invertible F is supported".into(),

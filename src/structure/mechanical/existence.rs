@@ -84,22 +84,57 @@ fn cond(name: &'static str, statement: String, holds: bool, meaning: &str) -> Co
     }
 }
 
+/// The matrices the existence decision computed (for `mnf --steps`): `None` where the
+/// decision stopped before them.
+#[derive(Clone, Debug)]
+pub struct ExistenceParts<K: Field> {
+    /// The input matrix of the pair decided on ($F^{-1} B$ for a descriptor system).
+    pub b: Matrix<K>,
+    /// $\operatorname{rank} B$.
+    pub rank_b: Option<usize>,
+    /// $U_{B,2}^T$: rows spanning $\{w : w B = 0\}$ (the canonical left null space).
+    pub ub2t: Option<Matrix<K>>,
+    /// $K = U_{B,2}^T A B$.
+    pub k: Option<Matrix<K>>,
+    /// Theorem 2.1's $G = (U_{B,2} U_{K,2})^T A (U_{B,2} U_{K,2})$ (diagnostic).
+    pub g: Option<Matrix<K>>,
+    /// The largest geometric multiplicity of an eigenvalue of the uncontrollable part.
+    pub geo: Option<usize>,
+}
+
 /// Decides whether $(A, B)$ has a mechanical normal form. Shapes must already agree
 /// (`a` is `n x n`, `b` is `n x p`); the caller checks them.
 pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
+    decide_existence_parts(a, b).0
+}
+
+/// [`decide_existence`] with the matrices it computed on the way.
+pub fn decide_existence_parts<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+) -> (Existence, ExistenceParts<K>) {
     let n = a.nrows();
     let p = b.ncols();
     let mut conds = vec![];
-    let done = |conds: Vec<Condition>| {
+    let mut parts = ExistenceParts {
+        b: b.clone(),
+        rank_b: None,
+        ub2t: None,
+        k: None,
+        g: None,
+        geo: None,
+    };
+    let done = |conds: Vec<Condition>, parts: ExistenceParts<K>| {
         let failed = conds.iter().find(|c| c.decisive && !c.holds);
         let reason = failed.map(|c| format!("{}: {}", c.statement, c.meaning));
-        Existence {
+        let e = Existence {
             n,
             p,
             exists: failed.is_none(),
             reason,
             conditions: conds,
-        }
+        };
+        (e, parts)
     };
     conds.push(cond(
         "n_even",
@@ -112,7 +147,7 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
          number of states",
     ));
     if !n.is_multiple_of(2) {
-        return done(conds);
+        return done(conds, parts);
     }
     let h = n / 2;
     conds.push(cond(
@@ -123,9 +158,10 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
          inputs than coordinates",
     ));
     if p > h {
-        return done(conds);
+        return done(conds, parts);
     }
     let rb = b.rank();
+    parts.rank_b = Some(rb);
     conds.push(cond(
         "rank_b",
         if rb == p {
@@ -137,7 +173,7 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
         "the input matrix must have full column rank (combine or remove redundant inputs)",
     ));
     if rb != p {
-        return done(conds);
+        return done(conds, parts);
     }
     // U_B2^T: rows spanning {w : w B = 0}; U_B1 = B spans the column space of B.
     let ub2t = b.left_nullspace();
@@ -156,7 +192,9 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
          here some input combination acts directly on the position-like states",
     ));
     if rk != p {
-        return done(conds);
+        parts.ub2t = Some(ub2t);
+        parts.k = Some(kmat);
+        return done(conds, parts);
     }
     // Theorem 2.1's rank(G) condition (diagnostic).
     let uk2t = kmat.left_nullspace();
@@ -177,7 +215,11 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
                   similarity invariant), so it is reported but does not decide"
             .to_string(),
     });
+    parts.ub2t = Some(ub2t);
+    parts.k = Some(kmat);
+    parts.g = Some(g);
     let (geo, witness) = uncontrollable_multiplicity(a, b);
+    parts.geo = Some(geo);
     let holds_u = geo <= h - p;
     let wit = witness.map_or(String::new(), |f| format!(" (eigenvalues: roots of {f})"));
     conds.push(cond(
@@ -192,7 +234,7 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
          independent uncontrollable modes of one eigenvalue, so an uncontrollable eigenvalue \
          with more independent eigenvectors cannot be represented",
     ));
-    done(conds)
+    done(conds, parts)
 }
 
 /// Maximal geometric multiplicity of the uncontrollable part of `(a, b)` and a square-free

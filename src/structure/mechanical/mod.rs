@@ -35,11 +35,14 @@
 
 pub mod descriptor;
 pub mod existence;
+pub mod steps;
 pub mod transform;
 pub mod unify;
 
 pub use descriptor::mechanical_normal_form_descriptor;
 pub use existence::{Condition, Existence, decide_existence};
+
+use crate::jordan::derivation::Recorder;
 
 use crate::error::{Error, Result};
 use crate::field::{Field, Q};
@@ -72,7 +75,7 @@ pub struct MechanicalForm<K: Field> {
     /// $\tilde B = [0; W]$.
     pub b_tilde: Matrix<K>,
     /// The integer coefficients $\alpha$ of $T$ in the eq. 15/16 family and the number of
-    /// candidates tested.
+    /// candidates tested (both empty/0 when the system is already in normal form: $T = I$).
     pub alpha: Vec<i64>,
     pub candidates: u64,
 }
@@ -178,14 +181,39 @@ pub fn mechanical_normal_form_in<K: Field>(
     d: &Matrix<K>,
     max_candidates: u64,
 ) -> Result<MechanicalNormalForm<K>> {
+    mechanical_normal_form_recorded(f, [a, b, c, d], max_candidates, None)
+}
+
+/// [`mechanical_normal_form_in`], recording its steps (`mnf --steps`, [`steps`]) when `rec`
+/// is given: the input compression, the existence conditions with their matrices, eq. 15/16
+/// and its solution family, the invertible member and the form. A system already in normal
+/// form gets $T = I$ (no search).
+///
+/// # Errors
+/// As [`mechanical_normal_form_in`].
+pub fn mechanical_normal_form_recorded<K: Field>(
+    f: Option<&Matrix<K>>,
+    abcd: [&Matrix<K>; 4],
+    max_candidates: u64,
+    mut rec: Option<&mut Recorder<'_, K>>,
+) -> Result<MechanicalNormalForm<K>> {
+    let [a, b, c, d] = abcd;
     check_system(a, b, c, d)?;
     // B = B1 R with B1 = the pivot columns of B (full column rank r) and R the non-zero rows
     // of rref(B): the form is sought for (A, B1) and then T B = [0; I_r] R = [0; R].
-    let (b1, _) = input_compression(b);
-    let mut existence = match f {
-        None => decide_existence(a, &b1),
+    let (b1, r_mat) = input_compression(b);
+    if let Some(r) = rec.as_deref_mut()
+        && b1.ncols() < b.ncols()
+    {
+        steps::compression(r, b, &b1, &r_mat);
+    }
+    let (mut existence, parts) = match f {
+        None => existence::decide_existence_parts(a, &b1),
         Some(f) => descriptor::decide_existence_descriptor(f, a, &b1)?,
     };
+    if let Some(r) = rec.as_deref_mut() {
+        steps::existence(r, &existence, parts, f.is_some());
+    }
     if b1.ncols() < b.ncols() {
         existence.conditions.insert(
             0,
@@ -223,12 +251,32 @@ pub fn mechanical_normal_form_in<K: Field>(
     if !out.exists {
         return Ok(out);
     }
-    let family = transform::transformation_family(f, a, &b1).ok_or_else(|| {
+    let (family, l) = transform::transformation_family_with_l(f, a, &b1);
+    let family = family.ok_or_else(|| {
         Error::Verification("the conditions hold but eq. 15 has no solution".into())
     })?;
-    let found = transform::find_invertible(&family, max_candidates)?;
+    if let Some(r) = rec.as_deref_mut() {
+        steps::equation(r, (f, a, &b1), l, &family);
+    }
+    let found = if transform::identity_solves(f, a, &b1) {
+        let k = a.field().clone();
+        transform::SearchOutcome {
+            t: Matrix::identity(k.clone(), a.nrows()),
+            det: k.one(),
+            alpha: vec![],
+            candidates: 0,
+        }
+    } else {
+        transform::find_invertible(&family, max_candidates)?
+    };
+    if let Some(r) = rec.as_deref_mut() {
+        steps::search(r, (f, a, &b1), &family, &found);
+    }
     out.form = Some(build_form(f, a, b, c, d, found)?);
     out.verified = out.verify();
+    if let (Some(r), Some(form)) = (rec, &out.form) {
+        steps::form(r, form, out.verified);
+    }
     if !out.verified {
         return Err(Error::Verification(
             "the mechanical normal form does not reproduce the system".into(),

@@ -73,6 +73,15 @@ pub fn transformation_family<K: Field>(
     a: &Matrix<K>,
     b: &Matrix<K>,
 ) -> Option<TransformationFamily<K>> {
+    transformation_family_with_l(f, a, b).0
+}
+
+/// [`transformation_family`] and the matrix $L$ of eq. 15/16 it solved with.
+pub fn transformation_family_with_l<K: Field>(
+    f: Option<&Matrix<K>>,
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+) -> (Option<TransformationFamily<K>>, Matrix<K>) {
     let k = a.field().clone();
     let n = a.nrows();
     let p = b.ncols();
@@ -92,7 +101,9 @@ pub fn transformation_family<K: Field>(
     let r = Matrix::zeros(k.clone(), h * n, 1)
         .vstack(&target.vec())
         .expect("one column");
-    let (x0, null) = l.solve(&r).expect("shapes agree")?;
+    let Some((x0, null)) = l.solve(&r).expect("shapes agree") else {
+        return (None, l);
+    };
     let particular = x0.unvec(n, n).expect("n^2 entries");
     let directions = (0..null.ncols())
         .map(|j| {
@@ -101,10 +112,31 @@ pub fn transformation_family<K: Field>(
                 .expect("n^2 entries")
         })
         .collect();
-    Some(TransformationFamily {
+    let family = TransformationFamily {
         particular,
         directions,
-    })
+    };
+    (Some(family), l)
+}
+
+/// Whether $T = I$ solves eq. 15/16 for `(f, a, b)`: the system is already in mechanical
+/// normal form ($[I\ 0] A = [0\ I] F$, $B = [0; I_p]$), so no search is needed.
+pub fn identity_solves<K: Field>(f: Option<&Matrix<K>>, a: &Matrix<K>, b: &Matrix<K>) -> bool {
+    let k = a.field().clone();
+    let (n, p) = (a.nrows(), b.ncols());
+    let h = n / 2;
+    if n % 2 == 1 || p > h {
+        return false;
+    }
+    let lower = match f {
+        None => Matrix::identity(k.clone(), n).submatrix(h, n, 0, n),
+        Some(f) => f.submatrix(h, n, 0, n),
+    };
+    let mut target = Matrix::zeros(k.clone(), n, p);
+    for j in 0..p {
+        target.set(n - p + j, j, k.one());
+    }
+    a.submatrix(0, h, 0, n) == lower && *b == target
 }
 
 /// An invertible member of a family and how it was found.
