@@ -22,6 +22,7 @@ mod dcgain;
 mod float_cmds;
 mod float_compare;
 mod interconnect;
+mod linalg;
 mod pencil_cmds;
 pub mod plots;
 pub mod runner;
