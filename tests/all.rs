@@ -105,6 +105,8 @@ mod pencil;
 mod pencil_descriptor;
 #[path = "pencil_published.rs"]
 mod pencil_published;
+#[path = "plain_matrix.rs"]
+mod plain_matrix;
 #[path = "plots.rs"]
 mod plots;
 #[path = "poly_factor.rs"]

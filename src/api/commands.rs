@@ -67,6 +67,10 @@ pub fn execute_ctx(
     if let Command::Poly { op } = cmd {
         return poly(op).map(Outcome::plain);
     }
+    // `linalg` on a file holding only a plain rational matrix: read in one pass
+    if let Some(out) = super::linalg::fast(cmd, &opts, ctx) {
+        return out;
+    }
     // commands on several files, each read by the one reader
     if let Command::Interconnect(c) = cmd {
         return super::interconnect::run(c, &opts);

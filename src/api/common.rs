@@ -4,7 +4,7 @@ use super::{Failure, LinalgOp};
 use crate::error::Error;
 use crate::field::Field;
 use crate::matrix::Matrix;
-use crate::report::{Report, Value};
+use crate::report::{Report, Target, Value};
 use std::path::Path;
 
 /// The error as a failure whose message starts with the file's path.
@@ -16,10 +16,21 @@ pub(super) fn with_path(path: &Path, e: Error) -> Failure {
     }
 }
 
+/// The report of `linalg OP` on `a`, with every rendering ([`Target::Every`]).
 pub(super) fn linalg_report<K: Field>(
     op: LinalgOp,
     a: &Matrix<K>,
     path: &Path,
+) -> Result<Report, Failure> {
+    linalg_report_for(op, a, path, Target::Every)
+}
+
+/// The report of `linalg OP` on `a`, its matrices built for `target` only.
+pub(super) fn linalg_report_for<K: Field>(
+    op: LinalgOp,
+    a: &Matrix<K>,
+    path: &Path,
+    target: Target,
 ) -> Result<Report, Failure> {
     let e = |err| with_path(path, err);
     let r = Report::titled(format!("linalg {op:?}").to_lowercase());
@@ -28,10 +39,10 @@ pub(super) fn linalg_report<K: Field>(
         LinalgOp::Det => r.str("det", a.field().fmt_elem(&a.det().map_err(e)?)),
         LinalgOp::Charpoly => r.str("charpoly", a.charpoly().map_err(e)?.to_string()),
         LinalgOp::Minpoly => r.str("minpoly", a.minpoly().map_err(e)?.to_string()),
-        LinalgOp::Inverse => r.matrix("matrix", &a.inverse().map_err(e)?),
+        LinalgOp::Inverse => r.matrix_for("matrix", &a.inverse().map_err(e)?, target),
         LinalgOp::Rref => {
             let (m, piv) = a.rref();
-            r.matrix("matrix", &m)
+            r.matrix_for("matrix", &m, target)
                 .with(
                     "pivots",
                     Value::List(piv.iter().map(|&p| Value::Int(p as i64 + 1)).collect()),

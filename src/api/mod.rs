@@ -24,6 +24,7 @@ mod discrete;
 mod float_cmds;
 mod float_compare;
 mod interconnect;
+mod linalg;
 mod pencil_cmds;
 pub mod plots;
 pub mod runner;

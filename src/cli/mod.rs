@@ -82,7 +82,7 @@ pub fn render_with(r: &Report, f: Format, standalone: bool) -> String {
 /// As [`render_with`]; `full` prints every matrix of the text output in full.
 pub fn render_full(r: &Report, f: Format, standalone: bool, full: bool) -> String {
     match f {
-        Format::Text => crate::report::escape::escape_control_report(r)
+        Format::Text => crate::report::escape::escaped_report(r)
             .to_text_with(&crate::report::TextOptions::cli(full)),
         Format::Json => serde_json::to_string_pretty(&r.to_json()).unwrap_or_default() + "\n",
         Format::Latex if standalone => crate::report::latex::standalone(r),

@@ -18,6 +18,7 @@
 //! | [`load_system_str`], [`load_system_path`] | a system file → [`LoadedSystem`] (typed over its field; [`LoadedSystem::run`] dispatches generic code) |
 //! | [`combine::common_field`], [`combine::gain_text`] | several files over one field (interconnection); a file with only `D` as a static gain |
 //! | [`write::system_file_json`], [`write::system_file_text`] | a system back as a system file |
+//! | [`plain_matrix::plain_square_matrix`] | a JSON file with only a plain rational square matrix, in one pass (the fast path of `linalg`; declines every other file) |
 //! | [`eval_expr`] | one exact expression, e.g. `"-(a*cf - b*cr)/(Izz*u)"`, `"1 - sqrt(2)/2"` |
 //!
 //! Every failure is an [`InputError`] whose `Display` is one line naming the file, key, row
@@ -35,6 +36,7 @@ pub mod load;
 pub mod load_descriptor;
 pub mod matlab;
 pub mod model_file;
+pub mod plain_matrix;
 pub mod qmat;
 pub(crate) mod raw;
 pub mod read;

@@ -35,6 +35,44 @@ fn is_control(c: char) -> bool {
     c.is_control() || c == '\u{2028}' || c == '\u{2029}'
 }
 
+/// [`escape_control_report`], without a copy when no string needs escaping (the common
+/// case: a report with 10^4 matrix entries is printed as it is, issue 29).
+pub fn escaped_report(r: &Report) -> std::borrow::Cow<'_, Report> {
+    if report_has_control(r) {
+        std::borrow::Cow::Owned(escape_control_report(r))
+    } else {
+        std::borrow::Cow::Borrowed(r)
+    }
+}
+
+/// Some title, key or string of `r` that [`escape_control_report`] changes.
+fn report_has_control(r: &Report) -> bool {
+    let has = |s: &str| s.chars().any(is_control);
+    r.title.as_deref().is_some_and(has)
+        || r.items.iter().any(|(k, v)| has(k) || value_has_control(v))
+}
+
+fn value_has_control(v: &Value) -> bool {
+    let has = |s: &str| s.chars().any(is_control);
+    match v {
+        Value::Str(s) => has(s),
+        Value::List(xs) => xs.iter().any(value_has_control),
+        Value::Obj(r) => report_has_control(r),
+        Value::Matrix(m) => m.exact.iter().flatten().any(|x| has(x)),
+        Value::Alt(a) => {
+            value_has_control(&a.data)
+                || match &a.text {
+                    AltText::Hidden => false,
+                    AltText::Summary(lines) => lines.iter().any(|x| has(x)),
+                    AltText::Table { header, rows } => {
+                        header.iter().chain(rows.iter().flatten()).any(|x| has(x))
+                    }
+                }
+        }
+        _ => false,
+    }
+}
+
 /// The report with [`escape_control`] applied to every title, key and string.
 pub fn escape_control_report(r: &Report) -> Report {
     Report {
@@ -124,4 +162,56 @@ pub fn latex_comment(s: &str) -> String {
         .chars()
         .map(|c| if c.is_ascii() { c } else { '?' })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::Report;
+
+    /// [`escaped_report`] is [`escape_control_report`], borrowing exactly when nothing
+    /// changes: a control character in any one place (title, key, string, matrix entry,
+    /// table cell, summary line) makes it a copy with that place escaped.
+    #[test]
+    fn escaped_report_is_the_escape_and_copies_only_when_needed() {
+        let build = |bad: Option<usize>| {
+            let s = |i: usize| if bad == Some(i) { "a\nb" } else { "ab" }.to_string();
+            let m = matrix_value(s(3));
+            let alt = Value::table(Value::Null, vec![s(4)], vec![vec![s(5)]]);
+            let summary = Value::Alt(Box::new(Alt {
+                data: Value::Str(s(6)),
+                text: AltText::Summary(vec![s(7)]),
+            }));
+            let mut r = Report::titled(s(0));
+            r.push(s(1), Value::Str("x".into()));
+            r.push("k", Value::List(vec![Value::Str(s(2)), Value::Int(1)]));
+            r.push("m", m);
+            r.push("t", alt);
+            r.push("s", summary);
+            r
+        };
+        let clean = build(None);
+        assert!(matches!(
+            escaped_report(&clean),
+            std::borrow::Cow::Borrowed(_)
+        ));
+        assert_eq!(
+            escaped_report(&clean).as_ref(),
+            &escape_control_report(&clean)
+        );
+        for bad in 0..8 {
+            let r = build(Some(bad));
+            let e = escaped_report(&r);
+            assert!(matches!(e, std::borrow::Cow::Owned(_)), "place {bad}");
+            assert_eq!(e.as_ref(), &escape_control_report(&r));
+            assert_ne!(e.as_ref(), &r, "place {bad}");
+        }
+    }
+
+    fn matrix_value(entry: String) -> Value {
+        Value::Matrix(Box::new(crate::report::MatrixOut::from_parts(
+            vec![vec![entry]],
+            vec![vec![(1.0, 0.0)]],
+        )))
+    }
 }

@@ -47,6 +47,41 @@ impl MatrixOut {
             ncols: m.ncols(),
         }
     }
+    /// The matrix prepared for one output only ([`Target`]): the exact strings (every format
+    /// shows them), the approximations only where that output shows them (JSON's
+    /// `_approx`; compact text when an entry is longer than [`text::MAX_EXACT_ENTRY`]); the
+    /// LaTeX strings only for [`Target::Every`] (no renderer of [`Report`] reads them: the
+    /// LaTeX output writes the exact strings in math mode; the Python package reads them).
+    /// A rendering not built is left empty. Issue 29: the command line's `linalg rref` of a
+    /// 100x100 matrix built 2 x 10^4 strings it never printed.
+    pub fn for_target<K: Field>(m: &Matrix<K>, target: Target) -> Self {
+        if target == Target::Every {
+            return Self::from_matrix(m);
+        }
+        let exact = m.to_rows_strings();
+        let approx = match target {
+            Target::Every | Target::Json => true,
+            Target::Text { full } => {
+                !full
+                    && exact
+                        .iter()
+                        .flatten()
+                        .any(|e| e.chars().count() > text::MAX_EXACT_ENTRY)
+            }
+            Target::Latex => false,
+        };
+        MatrixOut {
+            exact,
+            latex: vec![],
+            approx: if approx {
+                m.to_approx_complex()
+            } else {
+                vec![]
+            },
+            nrows: m.nrows(),
+            ncols: m.ncols(),
+        }
+    }
     /// From exact entry strings (also used as LaTeX) and their approximations, for matrices
     /// whose entries live in different fields.
     pub fn from_parts(exact: Vec<Vec<String>>, approx: Vec<Vec<(f64, f64)>>) -> Self {
@@ -63,6 +98,21 @@ impl MatrixOut {
     fn is_complex(&self) -> bool {
         self.approx.iter().flatten().any(|(_, im)| *im != 0.0)
     }
+}
+
+/// The output a report is built for ([`MatrixOut::for_target`]): the command line knows its
+/// `--format` (and `--full`) before it computes, and builds only what it prints.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Target {
+    /// Every rendering (the library, the Python package).
+    #[default]
+    Every,
+    Json,
+    /// Text; `full`: every exact entry (`--full`), else long entries approximately.
+    Text {
+        full: bool,
+    },
+    Latex,
 }
 
 /// A value in a report.
@@ -172,6 +222,13 @@ impl Report {
     /// One [`Report::matrix`] per `(key, m)`, in order.
     pub fn matrices<K: Field>(self, items: &[(&str, &Matrix<K>)]) -> Self {
         items.iter().fold(self, |r, &(k, m)| r.matrix(k, m))
+    }
+    /// [`Report::matrix`] built for one output only ([`MatrixOut::for_target`]).
+    pub fn matrix_for<K: Field>(self, key: &str, m: &Matrix<K>, target: Target) -> Self {
+        self.with(
+            key,
+            Value::Matrix(Box::new(MatrixOut::for_target(m, target))),
+        )
     }
     pub fn obj(self, key: &str, r: Report) -> Self {
         self.with(key, Value::Obj(r))
