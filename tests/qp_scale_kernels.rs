@@ -189,7 +189,7 @@ fn diag_rosenbrock_and_ho_kalman_keep_the_markov_parameters() {
 #[test]
 fn diag_rosenbrock_without_the_vandermonde_inverse() {
     for n in [5, 7] {
-        let s = diag_system(n);
+        let s = diag_qp(n);
         for method in [MinrealMethod::Rosenbrock, MinrealMethod::HoKalman] {
             let r = minimal(&s, method).unwrap();
             assert_eq!(r.order, n, "n = {n}, {method:?}");
