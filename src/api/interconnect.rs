@@ -124,7 +124,25 @@ pub fn run(cmd: &InterconnectCmd, sym: &SymbolicOptions) -> Result<Outcome, Fail
 /// Systems over two different fields; a count other than the command's; the errors of
 /// the interconnection.
 pub fn run_on(cmd: &InterconnectCmd, systems: &[&super::System]) -> Result<Outcome, Failure> {
-    let (op, paths, opts) = cmd.parts();
+    let (op, _, opts) = cmd.parts();
+    let (names, signals) = checked_parts(cmd, systems)?;
+    let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
+    let systems = common_field(&loaded)?;
+    systems.run(Connect {
+        op,
+        names,
+        opts,
+        signals,
+    })
+}
+
+/// The checks both entry points share: one system per file of the command, one time domain.
+/// Returns the files' names and the result's signal names (with the common sample time).
+fn checked_parts(
+    cmd: &InterconnectCmd,
+    systems: &[&super::System],
+) -> Result<(Vec<String>, crate::io::SignalNames), Failure> {
+    let (op, paths, _) = cmd.parts();
     if systems.len() != paths.len() {
         return Err(Failure {
             code: 2,
@@ -138,15 +156,7 @@ pub fn run_on(cmd: &InterconnectCmd, systems: &[&super::System]) -> Result<Outco
     }
     let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
     let dt = common_dt(op, &names, systems)?;
-    let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
-    let signals = result_signals(op, systems, dt);
-    let systems = common_field(&loaded)?;
-    systems.run(Connect {
-        op,
-        names,
-        opts,
-        signals,
-    })
+    Ok((names, result_signals(op, systems, dt)))
 }
 
 /// The sample time shared by every system (`None`: all continuous). A static gain (no
@@ -304,21 +314,8 @@ pub fn system_of(
     cmd: &InterconnectCmd,
     systems: &[&super::System],
 ) -> Result<super::System, Failure> {
-    let (op, paths, _) = cmd.parts();
-    if systems.len() != paths.len() {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{}: needs {} systems (got {})",
-                op.name(),
-                paths.len(),
-                systems.len()
-            ),
-        });
-    }
-    let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
-    let dt = common_dt(op, &names, systems)?;
-    let signals = result_signals(op, systems, dt);
+    let (op, _, _) = cmd.parts();
+    let (names, signals) = checked_parts(cmd, systems)?;
     let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
     let name = format!("{} of {}", op.name(), names.join(", "));
     let sys = common_field(&loaded)?.run(Build { op, name: &name })?;
