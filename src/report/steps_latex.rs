@@ -117,8 +117,9 @@ pub fn poly_latex<K: Field>(p: &Poly<K>, var: &str) -> String {
     if out.is_empty() { "0".into() } else { out }
 }
 
-/// A matrix in display math: `bmatrix`, small beyond 10 columns, column blocks beyond 20.
-fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
+/// A matrix in display math: `bmatrix`, small beyond 10 columns, column blocks beyond 20
+/// (`a4`: for a printed page; else one block at full size, as a notebook scrolls).
+fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>, a4: bool) {
     let k = m.field();
     if m.nrows() == 0 || m.ncols() == 0 {
         let _ = writeln!(
@@ -145,7 +146,7 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
         let (ch, gap) = if small { (1.3, 3.6) } else { (2.0, 5.0) };
         c.iter().map(|&w| w as f64 * ch + gap).sum::<f64>() + 20.0
     };
-    let small = m.ncols() > 10 || width(false, &plain) > TEXT_MM;
+    let small = a4 && (m.ncols() > 10 || width(false, &plain) > TEXT_MM);
     if small {
         s.push_str("{\\scriptsize\n");
     }
@@ -154,7 +155,9 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
     let mut c0 = 0;
     while c0 < m.ncols() {
         let mut c1 = c0 + 1;
-        while c1 < m.ncols() && c1 - c0 < BLOCK_COLS && width(small, &plain[c0..=c1]) <= TEXT_MM {
+        while c1 < m.ncols()
+            && (!a4 || (c1 - c0 < BLOCK_COLS && width(small, &plain[c0..=c1]) <= TEXT_MM))
+        {
             c1 += 1;
         }
         blocks.push((c0, c1));
@@ -190,12 +193,20 @@ fn counts_latex(xs: &[usize], one_based: bool) -> String {
     format!("({})", v.join(",\\ "))
 }
 
-fn object_latex<K: Field>(s: &mut String, kind: StepKind, key: &str, o: &Object<K>, field: &K) {
+/// An object of a step in display math (`a4`: see [`matrix_latex`]).
+pub(crate) fn object_latex<K: Field>(
+    s: &mut String,
+    kind: StepKind,
+    key: &str,
+    o: &Object<K>,
+    field: &K,
+    a4: bool,
+) {
     let name = symbol(kind, key);
     let index_list = matches!(key, "kept" | "not_excited" | "not_observed" | "pivots")
         || super::steps_more::index_list(key);
     match o {
-        Object::Matrix(m) => matrix_latex(s, &name, m),
+        Object::Matrix(m) => matrix_latex(s, &name, m, a4),
         Object::Poly(p) => display_wrapped(s, &name, &poly_latex(p, "s")),
         Object::Factors(fs) => {
             let parts: Vec<String> = fs
@@ -284,7 +295,7 @@ fn display_wrapped(s: &mut String, name: &str, body: &str) {
 }
 
 /// The sentence of a step in LaTeX (the objects follow it in display math).
-fn sentence_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
+pub(crate) fn sentence_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
     let th = theta_step(d, st.part)
         .and_then(|s| s.scalar("theta").map(|t| entry(&step_field(d, s), t)))
         .unwrap_or_default();
@@ -350,7 +361,7 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
         if transfer_latex(s, st, k) || super::steps_forms::flag(k) {
             continue;
         }
-        object_latex(s, st.kind, k, o, &field);
+        object_latex(s, st.kind, k, o, &field, true);
     }
     let (_, id) = identity(st.kind);
     if let Some(h) = st.holds {
@@ -399,7 +410,7 @@ pub fn derivation_latex<K: Field>(d: &Derivation<K>, standalone: bool) -> String
 }
 
 /// The transfer entries as one matrix of fractions; `true` when `key` was written here.
-fn transfer_latex<K: Field>(out: &mut String, st: &Step<K>, key: &str) -> bool {
+pub(crate) fn transfer_latex<K: Field>(out: &mut String, st: &Step<K>, key: &str) -> bool {
     if st.kind != StepKind::TransferEntries {
         return false;
     }

@@ -1,0 +1,138 @@
+//! `--steps` of `zeros` and `jordan --real` on descriptor files (through the standard form),
+//! the reasons given for what has no derivation, and the derivation as data with its LaTeX
+//! and HTML for notebooks (`api::steps::steps_on`, what the Python package shows).
+
+use crate::common;
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let (code, out, err) = common::cli::run(args);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    serde_json::from_str(&out).expect("json")
+}
+
+fn step_names(j: &serde_json::Value) -> Vec<String> {
+    j["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["step"].as_str().unwrap().to_string())
+        .collect()
+}
+
+/// The invariant zeros of a descriptor file: the steps (standard form first) end with the
+/// zero polynomial of the standard system, which is the descriptor pencil's (`zeros`
+/// without `--steps` computes it on the pencil itself).
+#[test]
+fn zeros_steps_of_a_descriptor_file_match_the_pencil() {
+    for model in [
+        "data/models/quarter-car-2mass.toml",
+        "data/models/spring-mass-damper.toml",
+    ] {
+        let j = json(&["zeros", model, "--steps", "--format", "json"]);
+        assert_eq!(j["verified"], true, "{model}");
+        let names = step_names(&j);
+        assert_eq!(names[0], "compress_e", "{model}");
+        let std_at = names.iter().position(|n| n == "standard_form").unwrap();
+        assert!(names[std_at + 1..].contains(&"smith_diagonal".to_string()));
+        let smith = j["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .rfind(|s| s["step"] == "smith_diagonal")
+            .unwrap();
+        let z = json(&["zeros", model, "--format", "json"]);
+        let want = z["zero_polynomial"].as_str().or(z["polynomial"].as_str());
+        let got = smith["z"].as_str();
+        assert_eq!(got, want, "{model}: {smith}\n{z}");
+    }
+}
+
+#[test]
+fn real_jordan_steps_of_a_descriptor_file() {
+    let model = "data/models/spring-mass-damper.toml";
+    let j = json(&["jordan", model, "--real", "--steps", "--format", "json"]);
+    assert_eq!(j["verified"], true);
+    let names = step_names(&j);
+    assert_eq!(names[0], "compress_e");
+    assert!(names.contains(&"standard_form".to_string()));
+    assert!(names.contains(&"real_pair".to_string()), "{names:?}");
+    // the real Jordan form is that of the standard form's A (what `jordan --real` reports)
+    let r = json(&["jordan", model, "--real", "--format", "json"]);
+    let last = j["steps"].as_array().unwrap().last().unwrap();
+    assert_eq!(last["J"], r["J"], "{last}\n{r}");
+}
+
+#[test]
+fn refusals_say_why() {
+    let f = "data/sliding-masses.json";
+    for (args, why) in [
+        (
+            vec!["minreal", f, "--method", "era", "--steps"],
+            "float path",
+        ),
+        (
+            vec![
+                "minreal",
+                "data/models/spring-mass-damper.toml",
+                "--descriptor",
+                "--steps",
+            ],
+            "infinite (impulsive) part",
+        ),
+    ] {
+        let (code, out, err) = common::cli::run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty());
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains(why), "{err}");
+    }
+}
+
+/// The derivation for notebooks: the same steps as `--steps --format json`, the LaTeX of
+/// `--format latex`, and HTML whose steps are the JSON's in order.
+#[test]
+fn steps_on_renders_every_format() {
+    let path = std::path::Path::new("data/yaw-plane-single-wheel.json");
+    let sys = exactlti::api::System::open(path, &Default::default()).unwrap();
+    let cmd = exactlti::api::Command::parse_args(&["jordan", "data/yaw-plane-single-wheel.json"])
+        .unwrap();
+    let s = exactlti::api::steps::steps_on(&cmd, &sys).unwrap();
+    assert!(s.verified);
+    let cli = json(&[
+        "jordan",
+        "data/yaw-plane-single-wheel.json",
+        "--steps",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(s.report.to_json(), cli);
+    let (code, latex, _) = common::cli::run(&[
+        "jordan",
+        "data/yaw-plane-single-wheel.json",
+        "--steps",
+        "--format",
+        "latex",
+    ]);
+    assert_eq!(code, 0);
+    assert_eq!(s.latex, latex);
+    // every step in order, with its identity's verdict
+    let mut at = 0;
+    for name in step_names(&cli) {
+        let tag = format!("<code>{name}</code>");
+        let found = s.html[at..].find(&tag).unwrap_or_else(|| panic!("{tag}"));
+        at += found + tag.len();
+    }
+    assert_eq!(
+        s.html.matches("holds exactly").count(),
+        cli["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|st| st["holds"] == true)
+            .count()
+    );
+    assert!(!s.html.contains("\\texttt") && !s.html.contains("\\subsection"));
+    let open = s.html.matches("<li>").count();
+    assert_eq!(open, s.html.matches("</li>").count());
+    assert_eq!(open, step_names(&cli).len());
+}
