@@ -1,8 +1,15 @@
 //! `--steps` of `zeros` and `jordan --real` on descriptor files (through the standard form),
 //! the reasons given for what has no derivation, and the derivation as data with its LaTeX
-//! and HTML for notebooks (`api::steps::steps_on`, what the Python package shows).
+//! and HTML for notebooks (`api::steps::steps_on`, what the Python package shows), and the
+//! free constants of generalized eigenvectors on the chain steps (the vehicle paper's eq. 30,
+//! 32: `v_j + K c` solves `N x = v_(j-1)` for every `c`).
 
 use crate::common;
+use crate::jcommon;
+use exactlti::field::Field;
+use exactlti::jordan::derivation::StepKind;
+use exactlti::jordan::steps::jordan_steps;
+use exactlti::matrix::Matrix;
 
 fn json(args: &[&str]) -> serde_json::Value {
     let (code, out, err) = common::cli::run(args);
@@ -135,4 +142,50 @@ fn steps_on_renders_every_format() {
     let open = s.html.matches("<li>").count();
     assert_eq!(open, s.html.matches("</li>").count());
     assert_eq!(open, step_names(&cli).len());
+}
+
+/// Every chain of length >= 2 carries K, a basis of ker N: N K = 0, as many columns as
+/// eigenvectors, and each member v_j + K c of the family (c from a fixed-seed generator)
+/// still solves N x = v_(j-1). Planted Jordan structures of sizes 3..7, and the yaw plane
+/// (one free constant for the triple zero root, where eq. 30 prints two: x2 is fixed by the
+/// equation, +-1/u).
+#[test]
+fn chain_steps_carry_the_family_of_generalized_eigenvectors() {
+    let mut families = 0;
+    for seed in 0..common::iters(12) as u64 {
+        let (a, _) = jcommon::planted(3 + (seed as usize % 5), seed);
+        let d = jordan_steps(&a).unwrap();
+        for ks in d.of_kind(StepKind::KernelSequence) {
+            let nm = ks.matrix("N").unwrap();
+            let k = nm.field().clone();
+            let eigvecs = ks.counts("dims").unwrap()[0];
+            for ch in d.of_kind(StepKind::Chain).filter(|s| s.part == ks.part) {
+                let v = ch.matrix("V").unwrap();
+                let Some(kb) = ch.matrix("K") else {
+                    assert_eq!(v.ncols(), 1, "a chain of length >= 2 has its family");
+                    continue;
+                };
+                assert!((nm * kb).is_zero(), "N K = 0");
+                assert_eq!((kb.ncols(), kb.rank()), (eigvecs, eigvecs));
+                let n = v.nrows();
+                for j in 1..v.ncols() {
+                    let c = Matrix::from_fn(k.clone(), kb.ncols(), 1, |i, _| {
+                        k.from_i64(((seed as i64 * 7 + i as i64 * 3 + j as i64) % 11) - 5)
+                    });
+                    let member = &v.submatrix(0, n, j, j + 1) + &(kb * &c);
+                    assert_eq!(nm * &member, v.submatrix(0, n, j - 1, j), "N (v_j + K c)");
+                }
+                families += 1;
+            }
+        }
+    }
+    assert!(families > 0);
+    let j = json(&["jordan", "data/yaw-plane-single-wheel.json", "--steps", "--format", "json"]);
+    let top3 = j["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["step"] == "chain" && s["top"] == 3)
+        .unwrap();
+    assert_eq!(top3["K"], serde_json::json!([["1"], ["0"], ["0"], ["0"]]));
 }

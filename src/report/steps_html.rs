@@ -99,7 +99,7 @@ fn step_html<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K>
     let field = step_field(d, st);
     let mut tex = String::new();
     for (k, o) in &st.objects {
-        if transfer_latex(&mut tex, st, k) || super::steps_forms::flag(k) {
+        if transfer_latex(&mut tex, st, k, false) || super::steps_forms::flag(k) {
             continue;
         }
         object_latex(&mut tex, st.kind, k, o, &field, false);
