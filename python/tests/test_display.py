@@ -33,7 +33,7 @@ def two_states():
 def test_every_numeric_result_renders():
     G = two_states()
     h, t = shown(G)
-    assert "\\begin{bmatrix}" in h and "\\begin{bmatrix}" in t
+    assert "\\begin{bmatrix}" in h and "\\begin{array}" in t
     results = [
         G.jordan(),
         G.jordan(real=True),
@@ -62,9 +62,10 @@ def test_symbolic_results_render_with_conditions():
                     params={"m": None, "c": None, "k": None})
     for r in (G.tf(), G.scb(), G.minreal(), G.jordan(), G.poles(), G.zeros()):
         h, _ = shown(r)
-    # the symbolic transfer function's report names its field
-    h, _ = shown(G.tf())
-    assert "QQ(c, k, m)" in h
+    # the symbolic transfer function's report names its field and its conditions
+    h, t = shown(G.tf())
+    assert "\\mathbf{Q}\\left(c, k, m\\right)" in h and "conditions" in h
+    assert t.startswith("$") and "\\frac{c}{m}" in t
 
 
 def test_html_escapes_user_names():
