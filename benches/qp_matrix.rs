@@ -4,7 +4,8 @@
 //!
 //! Cases:
 //! - `dense N charpoly|det|rref`: dense N x N (N = 6, 7, 8), entries linear in a, b, c
-//!   (goal: >= 10x faster than SymPy's DomainMatrix);
+//!   (goal: >= 10x faster than SymPy's DomainMatrix); `dense N charpoly display`: the
+//!   characteristic polynomial's text (what `linalg charpoly` prints);
 //! - `diag10 tf|minreal|scb|zeros|jordan|minreal rosenbrock|minreal ho-kalman`:
 //!   A = diag(p0..p9), B = ones, C = ones (goal <= 1 s);
 //! - `chain10 tf|minreal`: the 10-mass chain in symbolic m, k, c (goal <= 2 s);
@@ -64,13 +65,6 @@ fn main() {
         if selected(&label) {
             let c = m.charpoly().unwrap();
             bench(&label, 3, 1000.0, || c.to_string());
-            let vars = k.vars().to_vec();
-            bench("TMP factor", 3, 1000.0, || {
-                c.coeffs().iter().filter(|x| x.num().len() <= 64 && !x.num().is_constant()).map(|x| exactlti::mpoly::factor(x.num()).unwrap().factors.len()).sum::<usize>()
-            });
-            bench("TMP render", 3, 1000.0, || {
-                c.coeffs().iter().map(|x| x.num().to_string_vars(&vars).len()).sum::<usize>()
-            });
         }
         let label = format!("dense {n} det");
         if selected(&label) {

@@ -71,9 +71,22 @@ impl Prime {
     }
 
     /// Shoup's quotient $\lfloor f 2^{64} / p \rfloor$ for a reduced constant `f`.
+    ///
+    /// With Barrett's $m$: $\hat q = \lfloor f m / 2^{61} \rfloor$ is within 2 below the
+    /// quotient ($f 2^{64}/p - f m / 2^{61} < f / 2^{61} < 2$), corrected by at most two
+    /// comparisons (no division).
     #[inline(always)]
     pub fn shoup(&self, f: u64) -> u64 {
-        (((f as u128) << 64) / self.p as u128) as u64
+        if self.barrett == 0 || f >= self.p {
+            return (((f as u128) << 64) / self.p as u128) as u64;
+        }
+        let mut q = ((f as u128 * self.barrett as u128) >> 61) as u64;
+        let mut r = ((f as u128) << 64) - q as u128 * self.p as u128;
+        while r >= self.p as u128 {
+            r -= self.p as u128;
+            q += 1;
+        }
+        q
     }
 
     /// `f * x mod p` given `fs = shoup(f)`; any `x < 2^64`.
@@ -280,9 +293,13 @@ mod tests {
     #[test]
     fn products_and_inverses_match_u128() {
         let mut rng = crate::rng::SplitMix64(0x9e37);
-        let moduli = (0..8)
-            .map(|i| nth_prime(i).p)
-            .chain([10007, 65537, (1 << 61) - 1, (1 << 63) + 29, u64::MAX - 58]);
+        let moduli = (0..8).map(|i| nth_prime(i).p).chain([
+            10007,
+            65537,
+            (1 << 61) - 1,
+            (1 << 63) + 29,
+            u64::MAX - 58,
+        ]);
         for p in moduli {
             let pr = Prime::new(p);
             let mut xs = vec![0, 1, p - 1, p / 2];
@@ -290,8 +307,12 @@ mod tests {
             for (i, &x) in xs.iter().enumerate() {
                 let y = xs[(i * 7 + 3) % xs.len()];
                 assert_eq!(pr.mul(x, y), ((x as u128 * y as u128) % p as u128) as u64);
+                assert_eq!(pr.shoup(x), (((x as u128) << 64) / p as u128) as u64);
                 let (ux, uy) = (rng.next_u64(), rng.next_u64());
-                assert_eq!(pr.mul(ux, uy), ((ux as u128 * uy as u128) % p as u128) as u64);
+                assert_eq!(
+                    pr.mul(ux, uy),
+                    ((ux as u128 * uy as u128) % p as u128) as u64
+                );
                 if x != 0 {
                     let v = pr.inv(x).expect("nonzero");
                     assert!(v < p);
