@@ -4,10 +4,15 @@
 //!
 //! Cases:
 //! - `dense N charpoly|det|rref`: dense N x N (N = 6, 7, 8), entries linear in a, b, c
-//!   (goal: >= 10x faster than SymPy's DomainMatrix);
+//!   (goal: >= 10x faster than SymPy's DomainMatrix); `dense N charpoly display`: the
+//!   characteristic polynomial's text (what `linalg charpoly` prints);
 //! - `diag10 tf|minreal|scb|zeros|jordan|minreal rosenbrock|minreal ho-kalman`:
 //!   A = diag(p0..p9), B = ones, C = ones (goal <= 1 s);
-//! - `chain10 tf|minreal`: the 10-mass chain in symbolic m, k, c (goal <= 2 s).
+//! - `chain10 tf|minreal`: the 10-mass chain in symbolic m, k, c (goal <= 2 s);
+//! - `file dense 8 charpoly|det|rref load|execute|render`: the command line's phases on the
+//!   dense 8 x 8 file (`{"parameters": {"a": null, ...}, "A": ...}`): reading and typing the
+//!   file, the whole command in process (`execute_ctx`: read, kernel, report) and rendering
+//!   the report as JSON.
 //!
 //! Output lines: `<label>: <best> ms (median <ms> ms, <reps> reps)`; the dense inputs are
 //! written to `target/qp-matrix-cases.txt` (`name<TAB>n<TAB>entries;...`) for the anchor.
@@ -19,6 +24,7 @@ mod common;
 mod systems;
 
 use common::{bench, selected};
+use exactlti::api::{Command, Format, LinalgOp, RunContext, execute_ctx};
 use exactlti::jordan::params::jordan_params;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
@@ -55,6 +61,11 @@ fn main() {
         if selected(&label) {
             bench(&label, 3, 1500.0, || m.charpoly().unwrap());
         }
+        let label = format!("dense {n} charpoly display");
+        if selected(&label) {
+            let c = m.charpoly().unwrap();
+            bench(&label, 3, 1000.0, || c.to_string());
+        }
         let label = format!("dense {n} det");
         if selected(&label) {
             bench(&label, 3, 1500.0, || m.det().unwrap());
@@ -67,6 +78,7 @@ fn main() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target");
     std::fs::create_dir_all(&dir).ok();
     std::fs::write(dir.join("qp-matrix-cases.txt"), cases).expect("cases file");
+    file_phases(&dir);
 
     let s = systems::diag_qp(10);
     for (label, run) in [
@@ -103,6 +115,59 @@ fn main() {
         bench(label, 1, 2000.0, || match run {
             0 => s.transfer_matrix().map(|t| t.entries.len()).unwrap(),
             _ => minimal(&s, MinrealMethod::Kalman).unwrap().order,
+        });
+    }
+}
+
+/// The command line's phases on the dense 8 x 8 file (see the module docs).
+fn file_phases(dir: &std::path::Path) {
+    let ents = dense_entries(8, 1008);
+    let rows: Vec<String> = ents
+        .chunks(8)
+        .map(|r| {
+            format!(
+                "[{}]",
+                r.iter()
+                    .map(|e| format!("\"{e}\""))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        })
+        .collect();
+    let text = format!(
+        "{{\"parameters\": {{\"a\": null, \"b\": null, \"c\": null}}, \"A\": [{}]}}",
+        rows.join(", ")
+    );
+    let path = dir.join("qp-matrix-dense8.json");
+    std::fs::write(&path, &text).expect("dense file");
+    if selected("file dense 8 load") {
+        bench("file dense 8 load", 3, 1000.0, || {
+            exactlti::api::System::open(&path, &Default::default()).expect("loads")
+        });
+    }
+    for (name, op) in [
+        ("charpoly", LinalgOp::Charpoly),
+        ("det", LinalgOp::Det),
+        ("rref", LinalgOp::Rref),
+    ] {
+        let label = format!("file dense 8 {name}");
+        if !selected(&label) {
+            continue;
+        }
+        let cmd = Command::Linalg {
+            op,
+            file: path.clone(),
+        };
+        let ctx = RunContext {
+            stdout: Some(Format::Json),
+            ..RunContext::default()
+        };
+        let out = execute_ctx(&cmd, None, None, &ctx).expect("runs");
+        bench(&format!("{label} execute"), 3, 1000.0, || {
+            execute_ctx(&cmd, None, None, &ctx).expect("runs")
+        });
+        bench(&format!("{label} render"), 3, 1000.0, || {
+            exactlti::cli::render_full(&out.report, Format::Json, false, false)
         });
     }
 }

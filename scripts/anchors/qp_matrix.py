@@ -20,6 +20,12 @@ and re-runs itself inside it. One run prints:
    time; >= 1 is met), and for dense8 linalg the ratio SymPy / CLI (the CLI time includes
    process start and reading the file). `--cli-only` skips the bench and the build (the
    release binary as it is; the `cli dense8x3` row of table 1 then has no in-process time).
+   The dense8x3 `linalg` rows are timed as a user runs them: the command started and waited
+   for (a blocking `wait4`, no polling, no /usr/bin/time in between), CLI_REPS runs, the
+   median (and the best) wall time beside SymPy's median; the load average is printed.
+3. `--dense-table`: `linalg charpoly|det|rref` on dense n x n, n = 4..10, entries linear in
+   q = 2, 3 parameters (files of scripts/qp_scale.py), release CLI (median of CLI_REPS
+   blocking runs) against SymPy's DomainMatrix (flint ground types) on the same matrices.
 """
 import json
 import os
@@ -52,6 +58,31 @@ def median_ms(fn, budget=1.5, min_runs=3, max_runs=200):
     return times[len(times) // 2] * 1e3
 
 
+CLI_REPS = 15
+
+
+def cli_wall(argv, reps=CLI_REPS, limit=60.0):
+    """(median ms, best ms, max RSS MB, exit code) of `argv` run `reps` times, each timed
+    around a blocking wait4 (a watchdog kills it past `limit` s)."""
+    import threading
+    times, rss, rc = [], 0.0, 0
+    for _ in range(reps):
+        t = time.perf_counter()
+        p = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        killer = threading.Timer(limit, p.kill)
+        killer.start()
+        _, status, ru = os.wait4(p.pid, 0)
+        times.append(time.perf_counter() - t)
+        killer.cancel()
+        p.returncode = os.waitstatus_to_exitcode(status)
+        rss = max(rss, ru.ru_maxrss / 1024)
+        rc = p.returncode or rc
+        if times[-1] > 5:
+            break
+    times.sort()
+    return times[len(times) // 2] * 1e3, times[0] * 1e3, rss, rc
+
+
 def run_ours():
     env = dict(os.environ, CARGO_BUILD_JOBS=os.environ.get("CARGO_BUILD_JOBS", "1"))
     out = subprocess.run(["cargo", "bench", "--bench", "qp_matrix", "dense"], cwd=ROOT, env=env,
@@ -65,7 +96,7 @@ def run_ours():
     return ours, cases
 
 
-def sympy_times(cases):
+def sympy_times(cases, ground_types=("flint", "python")):
     """One child process per ground-types setting (SymPy reads it at import)."""
     code = r'''
 import json, sys, time
@@ -91,7 +122,7 @@ out["version"] = sympy.__version__
 print(json.dumps(out))
 '''
     res = {}
-    for gt in ("flint", "python"):
+    for gt in ground_types:
         env = dict(os.environ, SYMPY_GROUND_TYPES=gt)
         p = subprocess.run([sys.executable, "-c", code], input=json.dumps(
             [(c[0], int(c[1]), c[2]) for c in cases]), env=env, capture_output=True, text=True,
@@ -155,19 +186,52 @@ def cli_cases():
     return rows
 
 
+def exe_path():
+    return Path(os.environ.get("EXACTLTI_EXE", TARGET / "release" / "exactlti"))
+
+
 def run_cli(build=True):
-    if build:
+    if build and not os.environ.get("EXACTLTI_EXE"):
         subprocess.run(["cargo", "build", "--release"], cwd=ROOT, check=True,
                        capture_output=True)
-    exe = TARGET / "release" / "exactlti"
+    exe = exe_path()
     paths = qp_scale.write(TARGET / "qp-scale")
     rows = []
     for name, cmd, goal in cli_cases():
         argv = [str(exe)] + qp_scale.ALL_CMDS[cmd] + [str(paths[name]), "--format", "json",
                                                       "--max-seconds", "60"]
+        if name == "dense8x3":
+            med, best, mb, rc = cli_wall(argv)
+            rows.append((name, cmd, med / 1e3, mb, goal, rc, best / 1e3))
+            continue
         secs, mb, rc = qp_scale.timed(argv, 60)
-        rows.append((name, cmd, secs, mb, goal, rc))
+        rows.append((name, cmd, secs, mb, goal, rc, None))
     return rows
+
+
+def dense_table(exe):
+    """issue 25 item 4: dense n x n, n = 4..10, q = 2, 3 (CLI median vs SymPy median)."""
+    paths = qp_scale.write(TARGET / "qp-scale")
+    cases = []
+    for n in range(4, 11):
+        for q in (2, 3):
+            body = qp_scale.dense(n, q)
+            cases.append([f"dense{n}x{q}", str(n), ";".join(e for r in body["A"] for e in r)])
+    sy = sympy_times(cases, ground_types=("flint",))["flint"]
+    print("# dense n x n over Q(a, b[, c]): release CLI (median of", CLI_REPS,
+          "blocking runs, ms) vs SymPy DomainMatrix (flint, median ms); ratio = SymPy / CLI")
+    print(f"{'case':10} " + " ".join(f"{op + ' CLI':>13} {'SymPy':>9} {'ratio':>7}"
+                                      for op in ("charpoly", "det", "rref")))
+    for c in cases:
+        cells = []
+        for op in ("charpoly", "det", "rref"):
+            argv = [str(exe), "linalg", op, str(paths[c[0]]), "--format", "json",
+                    "--max-seconds", "60"]
+            med, _, _, rc = cli_wall(argv, reps=7)
+            s = sy.get(f"{c[0]} {op}")
+            r = f"{s / med:6.1f}x" if s and rc == 0 else f"{'-':>7}"
+            cells.append(f"{med:13.2f} {s or float('nan'):9.2f} {r}")
+        print(f"{c[0]:10} " + " ".join(cells), flush=True)
 
 
 def dense_cli_case():
@@ -178,6 +242,10 @@ def dense_cli_case():
 
 def main():
     ensure_venv()
+    if "--dense-table" in sys.argv:
+        print("load average:", " ".join(f"{x:.2f}" for x in os.getloadavg()))
+        dense_table(exe_path())
+        return
     # --cli-only: no `cargo bench` and no build (the release binary as it is)
     cli_only = "--cli-only" in sys.argv
     ours, cases = ({}, []) if cli_only else run_ours()
@@ -199,16 +267,20 @@ def main():
     print("SymPy", sy["python"]["version"], "DomainMatrix over", sy["python"]["domain"],
           "| python-flint", fl.get("version", "-"))
     print()
-    print("# release CLI under /usr/bin/time (files of scripts/qp_scale.py; `--format json`)")
+    print("# release CLI (files of scripts/qp_scale.py; `--format json`): dense8x3 linalg the",
+          f"median (best) of {CLI_REPS} runs timed around a blocking wait, SymPy/CLI = SymPy's",
+          "median / the CLI's median; the other rows one run under /usr/bin/time")
+    print("load average:", " ".join(f"{x:.2f}" for x in os.getloadavg()), "| exe:", exe_path())
     print(f"{'case':10} {'command':20} {'wall s':>7} {'max RSS MB':>11} {'goal s':>7} "
           f"{'goal/time':>9} {'SymPy/CLI':>9} {'exit':>5}")
-    for name, cmd, secs, mb, goal, rc in run_cli(build=not cli_only):
+    for name, cmd, secs, mb, goal, rc, best in run_cli(build=not cli_only):
         g = f"{goal:7.1f}" if goal else f"{'-':>7}"
         r = f"{goal / secs:8.1f}x" if goal and secs > 0 else f"{'-':>9}"
         op = cmd.removeprefix("linalg-")
         symp = sy["flint"].get(f"cli dense8x3 {op}") if name == "dense8x3" else None
         sr = f"{symp / (secs * 1e3):8.1f}x" if symp and secs > 0 else f"{'-':>9}"
-        print(f"{name:10} {cmd:20} {secs:7.3f} {mb:11.1f} {g} {r} {sr} {rc:5d}")
+        extra = f"  (best {best * 1e3:.2f} ms)" if best else ""
+        print(f"{name:10} {cmd:20} {secs:7.4f} {mb:11.1f} {g} {r} {sr} {rc:5d}{extra}")
 
 
 if __name__ == "__main__":

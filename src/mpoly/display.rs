@@ -3,9 +3,8 @@
 //! order, so univariate polynomials print as [`crate::poly::zpoly::ZPoly`] does.
 
 use super::MPoly;
-use num_bigint::BigInt;
-use num_traits::{One, Signed};
-use std::fmt;
+use num_traits::{Signed, ToPrimitive};
+use std::fmt::{self, Write as _};
 
 const GREEK: [&str; 24] = [
     "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
@@ -43,35 +42,51 @@ pub fn latex_name(name: &str) -> String {
 impl MPoly {
     /// Term indices in display order (total degree descending, then lex descending).
     fn display_order(&self) -> Vec<usize> {
-        let mut idx: Vec<usize> = (0..self.len()).collect();
         let tdeg = |m: u128| (0..self.nvars).map(|i| self.exp(m, i)).sum::<u32>();
-        idx.sort_by(|&a, &b| {
-            let (ma, mb) = (self.terms[a].0, self.terms[b].0);
-            tdeg(mb).cmp(&tdeg(ma)).then(mb.cmp(&ma))
-        });
-        idx
+        let mut idx: Vec<(u32, u128, usize)> = self
+            .terms
+            .iter()
+            .enumerate()
+            .map(|(i, t)| (tdeg(t.0), t.0, i))
+            .collect();
+        idx.sort_unstable_by(|a, b| b.0.cmp(&a.0).then(b.1.cmp(&a.1)));
+        idx.into_iter().map(|t| t.2).collect()
     }
 
-    fn fmt_monomial(&self, m: u128, vars: &[String], latex: bool) -> String {
-        let mut parts = Vec::new();
+    /// Appends the monomial `m` (`a*b^2`, `a b^{2}`) to `s`.
+    fn push_monomial(&self, s: &mut String, m: u128, vars: &[String], latex: bool) {
+        let mut first = true;
         for (i, v) in vars.iter().enumerate().take(self.nvars) {
             let e = self.exp(m, i);
-            let name = if latex { latex_name(v) } else { v.clone() };
+            if e == 0 {
+                continue;
+            }
+            if !first {
+                s.push_str(if latex { " " } else { "*" });
+            }
+            first = false;
+            if latex {
+                s.push_str(&latex_name(v));
+            } else {
+                s.push_str(v);
+            }
             match (e, latex) {
-                (0, _) => {}
-                (1, _) => parts.push(name),
-                (_, false) => parts.push(format!("{name}^{e}")),
-                (_, true) => parts.push(format!("{name}^{{{e}}}")),
+                (1, _) => {}
+                (_, false) => {
+                    let _ = write!(s, "^{e}");
+                }
+                (_, true) => {
+                    let _ = write!(s, "^{{{e}}}");
+                }
             }
         }
-        parts.join(if latex { " " } else { "*" })
     }
 
     fn render(&self, vars: &[String], latex: bool) -> String {
         if self.is_zero() {
             return "0".into();
         }
-        let mut s = String::new();
+        let mut s = String::with_capacity(16 * self.len());
         for (k, &t) in self.display_order().iter().enumerate() {
             let (m, c) = &self.terms[t];
             let neg = c.is_negative();
@@ -81,16 +96,24 @@ impl MPoly {
                 (false, true) => " - ",
                 (false, false) => " + ",
             });
-            let a: BigInt = c.abs();
-            if *m == 0 {
-                s.push_str(&a.to_string());
-                continue;
-            }
-            if !a.is_one() {
-                s.push_str(&a.to_string());
+            // |c|: machine words print without a big-integer conversion
+            let small = c.magnitude().to_u64();
+            let one = small == Some(1);
+            if *m == 0 || !one {
+                match small {
+                    Some(v) => {
+                        let _ = write!(s, "{v}");
+                    }
+                    None => {
+                        let _ = write!(s, "{}", c.magnitude());
+                    }
+                }
+                if *m == 0 {
+                    continue;
+                }
                 s.push_str(if latex { " " } else { "*" });
             }
-            s.push_str(&self.fmt_monomial(*m, vars, latex));
+            self.push_monomial(&mut s, *m, vars, latex);
         }
         s
     }

@@ -14,11 +14,24 @@ use std::sync::{Mutex, OnceLock};
 /// A prime modulus with its precomputed helpers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Prime {
-    /// The modulus, $2^{61} < p < 2^{62}$.
+    /// The modulus; $2^{61} < p < 2^{62}$ for the primes of [`nth_prime`] (other moduli
+    /// work too, without the Barrett products).
     pub p: u64,
+    /// Barrett's constant $\lfloor 2^{125} / p \rfloor$ when $2^{61} < p < 2^{62}$, else 0.
+    barrett: u64,
 }
 
 impl Prime {
+    /// The modulus `p` (at least 2) with its precomputed constants.
+    pub const fn new(p: u64) -> Self {
+        let barrett = if p > 1 << 61 && p < 1 << 62 {
+            ((1u128 << 125) / p as u128) as u64
+        } else {
+            0
+        };
+        Prime { p, barrett }
+    }
+
     /// `a + b mod p` for reduced `a`, `b`.
     #[inline(always)]
     pub fn add(&self, a: u64, b: u64) -> u64 {
@@ -40,15 +53,40 @@ impl Prime {
     }
 
     /// `a * b mod p` (any `a`, `b < 2^64`).
+    ///
+    /// For $x = ab < 2^{125}$ and $2^{61} < p < 2^{62}$ (Barrett): with $m = \lfloor 2^{125}/p
+    /// \rfloor < 2^{64}$, $\hat q = \lfloor \lfloor x / 2^{61} \rfloor m / 2^{64} \rfloor$
+    /// satisfies $q - 2 \le \hat q \le q = \lfloor x/p \rfloor$, so $x - \hat q p < 3p <
+    /// 2^{64}$ and two conditional subtractions give the residue (no division).
     #[inline(always)]
     pub fn mul(&self, a: u64, b: u64) -> u64 {
-        ((a as u128 * b as u128) % self.p as u128) as u64
+        let x = a as u128 * b as u128;
+        if self.barrett == 0 || x >> 125 != 0 {
+            return (x % self.p as u128) as u64;
+        }
+        let q = (((x >> 61) as u64 as u128 * self.barrett as u128) >> 64) as u64;
+        let r = (x as u64).wrapping_sub(q.wrapping_mul(self.p));
+        let r = r.min(r.wrapping_sub(self.p));
+        r.min(r.wrapping_sub(self.p))
     }
 
     /// Shoup's quotient $\lfloor f 2^{64} / p \rfloor$ for a reduced constant `f`.
+    ///
+    /// With Barrett's $m$: $\hat q = \lfloor f m / 2^{61} \rfloor$ is within 2 below the
+    /// quotient ($f 2^{64}/p - f m / 2^{61} < f / 2^{61} < 2$), corrected by at most two
+    /// comparisons (no division).
     #[inline(always)]
     pub fn shoup(&self, f: u64) -> u64 {
-        (((f as u128) << 64) / self.p as u128) as u64
+        if self.barrett == 0 || f >= self.p {
+            return (((f as u128) << 64) / self.p as u128) as u64;
+        }
+        let mut q = ((f as u128 * self.barrett as u128) >> 61) as u64;
+        let mut r = ((f as u128) << 64) - q as u128 * self.p as u128;
+        while r >= self.p as u128 {
+            r -= self.p as u128;
+            q += 1;
+        }
+        q
     }
 
     /// `f * x mod p` given `fs = shoup(f)`; any `x < 2^64`.
@@ -110,7 +148,28 @@ impl Prime {
         if a == 0 {
             return None;
         }
-        // Extended Euclid on signed 128-bit values.
+        if self.p >= 1 << 63 {
+            return Some(self.inv_wide(a));
+        }
+        // Extended Euclid on machine words: remainders below p, Bezout coefficients at
+        // most p in absolute value (p < 2^63 fits i64).
+        let (mut r0, mut r1) = (self.p, a);
+        let (mut t0, mut t1) = (0i64, 1i64);
+        while r1 != 0 {
+            let q = r0 / r1;
+            (r0, r1) = (r1, r0 - q * r1);
+            (t0, t1) = (t1, t0 - (q as i64) * t1);
+        }
+        debug_assert_eq!(r0, 1);
+        Some(if t0 < 0 {
+            self.p - t0.unsigned_abs()
+        } else {
+            t0 as u64
+        })
+    }
+
+    /// [`Prime::inv`] of a reduced nonzero `a` on 128-bit values (moduli of 63 and 64 bits).
+    fn inv_wide(&self, a: u64) -> u64 {
         let (mut r0, mut r1) = (self.p as i128, a as i128);
         let (mut t0, mut t1) = (0i128, 1i128);
         while r1 != 0 {
@@ -118,8 +177,7 @@ impl Prime {
             (r0, r1) = (r1, r0 - q * r1);
             (t0, t1) = (t1, t0 - q * t1);
         }
-        debug_assert_eq!(r0, 1);
-        Some(t0.rem_euclid(self.p as i128) as u64)
+        t0.rem_euclid(self.p as i128) as u64
     }
 
     /// The residue of a signed machine integer.
@@ -159,7 +217,7 @@ pub fn is_prime_u64(n: u64) -> bool {
             return n == q;
         }
     }
-    let pr = Prime { p: n };
+    let pr = Prime::new(n);
     let (mut d, mut s) = (n - 1, 0);
     while d % 2 == 0 {
         d /= 2;
@@ -198,7 +256,7 @@ pub fn nth_prime(i: usize) -> Prime {
             v.push(c);
         }
     }
-    Prime { p: v[i] }
+    Prime::new(v[i])
 }
 
 /// An endless iterator over the primes of [`nth_prime`], starting at index `start`.
@@ -222,11 +280,48 @@ mod tests {
         for &p in &ps {
             assert!(p > 1 << 61 && p < 1 << 62);
             // a non-trivial Fermat check with a base outside the Miller-Rabin set
-            assert_eq!(Prime { p }.pow(3, p - 1), 1);
+            assert_eq!(Prime::new(p).pow(3, p - 1), 1);
         }
         assert!(is_prime_u64(2_305_843_009_213_693_951)); // 2^61 - 1
         assert!(!is_prime_u64(3_215_031_751)); // strong pseudoprime to bases 2, 3, 5, 7
         assert!(!is_prime_u64(1 << 62));
+    }
+
+    /// Barrett products and word-size inverses against `u128` remainders: every prime of
+    /// the sequence, small and 63/64-bit moduli (the `%` and wide paths), reduced and
+    /// unreduced operands, the extremes `0, 1, p - 1`.
+    #[test]
+    fn products_and_inverses_match_u128() {
+        let mut rng = crate::rng::SplitMix64(0x9e37);
+        let moduli = (0..8).map(|i| nth_prime(i).p).chain([
+            10007,
+            65537,
+            (1 << 61) - 1,
+            (1 << 63) + 29,
+            u64::MAX - 58,
+        ]);
+        for p in moduli {
+            let pr = Prime::new(p);
+            let mut xs = vec![0, 1, p - 1, p / 2];
+            xs.extend((0..300).map(|_| rng.next_u64() % p));
+            for (i, &x) in xs.iter().enumerate() {
+                let y = xs[(i * 7 + 3) % xs.len()];
+                assert_eq!(pr.mul(x, y), ((x as u128 * y as u128) % p as u128) as u64);
+                assert_eq!(pr.shoup(x), (((x as u128) << 64) / p as u128) as u64);
+                let (ux, uy) = (rng.next_u64(), rng.next_u64());
+                assert_eq!(
+                    pr.mul(ux, uy),
+                    ((ux as u128 * uy as u128) % p as u128) as u64
+                );
+                if x != 0 {
+                    let v = pr.inv(x).expect("nonzero");
+                    assert!(v < p);
+                    assert_eq!((x as u128 * v as u128) % p as u128, 1);
+                }
+            }
+            assert_eq!(pr.inv(0), None);
+            assert_eq!(pr.inv(p), None);
+        }
     }
 
     #[test]

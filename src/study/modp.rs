@@ -16,12 +16,12 @@ const PRIMES: [u64; 8] = [10007, 10009, 10037, 10039, 10061, 10067, 10069, 10079
 
 /// $q \bmod p$, `None` when $p$ divides the denominator (the shared kernel's reduction).
 pub fn rational_mod(q: &Rational, p: u64) -> Option<u64> {
-    reduce_rational(&Prime { p }, q)
+    reduce_rational(&Prime::new(p), q)
 }
 
 /// $g(t_0) \bmod p$.
 pub fn poly_at(g: &Poly<Q>, t0: u64, p: u64) -> Option<u64> {
-    let pr = Prime { p };
+    let pr = Prime::new(p);
     let mut acc = 0u64;
     for c in g.coeffs().iter().rev() {
         acc = pr.add(pr.mul(acc, t0), reduce_rational(&pr, c)?);
@@ -33,7 +33,7 @@ pub fn poly_at(g: &Poly<Q>, t0: u64, p: u64) -> Option<u64> {
 pub fn root_mod_p(f: &Poly<Q>, skip: usize) -> Option<(u64, u64)> {
     let mut found = 0;
     for &p in &PRIMES {
-        let pr = Prime { p };
+        let pr = Prime::new(p);
         let cs: Option<Vec<u64>> = f.coeffs().iter().map(|c| reduce_rational(&pr, c)).collect();
         let Some(cs) = cs else { continue };
         if cs.last() == Some(&0) {
@@ -60,11 +60,11 @@ pub fn root_mod_p(f: &Poly<Q>, skip: usize) -> Option<(u64, u64)> {
 pub fn rank_mod(m: Vec<Vec<u64>>, p: u64) -> usize {
     let (rows, cols) = (m.len(), m.first().map_or(0, Vec::len));
     let mut flat: Vec<u64> = m.into_iter().flatten().collect();
-    rank_mod_p(&Prime { p }, rows, cols, &mut flat)
+    rank_mod_p(&Prime::new(p), rows, cols, &mut flat)
 }
 
 fn mat_at(m: &RatMatrix, t0: u64, p: u64) -> Option<Vec<Vec<u64>>> {
-    let pr = Prime { p };
+    let pr = Prime::new(p);
     m.iter()
         .map(|r| {
             r.iter()
@@ -85,7 +85,7 @@ fn solve_mod(x: Vec<Vec<u64>>, y: Vec<Vec<u64>>, p: u64) -> Option<Vec<Vec<u64>>
         .zip(y)
         .flat_map(|(r, s)| r.into_iter().chain(s))
         .collect();
-    let pivots = rref_mod_p(&Prime { p }, n, w, &mut a);
+    let pivots = rref_mod_p(&Prime::new(p), n, w, &mut a);
     if pivots.len() < n || (n > 0 && pivots[n - 1] != n - 1) {
         return None;
     }

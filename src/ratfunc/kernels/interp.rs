@@ -178,10 +178,7 @@ where
     let g = grid(bounds)?;
     let nprimes = ((bounds.coef.bits() + 2) / 61 + 1) as usize;
     let primes: Vec<Prime> = (0..nprimes).map(nth_prime).collect();
-    let entries: Vec<Vec<(Vec<u32>, &BigInt)>> = b
-        .iter()
-        .map(|e| e.terms().iter().map(|(m, c)| (e.exps(*m), c)).collect())
-        .collect();
+    let ev = Evaluator::new(b);
     let mut rng = SplitMix64(0x5eed ^ (nvars as u64));
     let mut images: Vec<Vec<Vec<u64>>> = Vec::with_capacity(nprimes);
     // the lines of the simplex, once for every prime
@@ -202,7 +199,7 @@ where
                     }
                 })
                 .collect();
-            if let Some(v) = images_mod_p(pr, (&g, &lines), &entries, &shifts, nout, &f) {
+            if let Some(v) = images_mod_p(pr, (&g, &lines), &ev, &shifts, nout, &f) {
                 done = Some(v);
                 break;
             }
@@ -212,14 +209,22 @@ where
         };
         images.push(v);
     }
-    let crt = Crt::new(&primes);
+    let packed: Vec<u128> = g
+        .points
+        .iter()
+        .map(|e| crate::mpoly::pack(nvars, e))
+        .collect();
+    let crt = (nprimes > 1).then(|| Crt::new(&primes));
     let mut out = Vec::with_capacity(nout);
     for k in 0..nout {
         let mut terms = Vec::new();
-        for (idx, e) in g.points.iter().enumerate() {
-            let c = crt.lift(|j| images[j][k][idx]);
+        for (idx, &m) in packed.iter().enumerate() {
+            let c = match &crt {
+                Some(crt) => crt.lift(|j| images[j][k][idx]),
+                None => symmetric(primes[0].p, images[0][k][idx]),
+            };
             if !c.is_zero() {
-                terms.push((crate::mpoly::pack(nvars, e), c));
+                terms.push((m, c));
             }
         }
         out.push(MPoly::from_terms(nvars, terms));
@@ -227,11 +232,58 @@ where
     Ok(Some(out))
 }
 
+/// The symmetric representative in $(-p/2, p/2\rbrack$ of a residue (one prime: the CRT
+/// lift without big-integer arithmetic).
+fn symmetric(p: u64, r: u64) -> BigInt {
+    if r > p / 2 {
+        BigInt::from(-((p - r) as i64))
+    } else {
+        BigInt::from(r)
+    }
+}
+
+/// The entries of `B` as sums of coefficients times shared monomials: at a point every
+/// distinct monomial is evaluated once, every entry is one dot product.
+struct Evaluator<'a> {
+    /// Distinct exponent vectors of all entries.
+    monos: Vec<Vec<u32>>,
+    /// Per entry: (monomial index, integer coefficient).
+    terms: Vec<Vec<(usize, &'a BigInt)>>,
+    /// Largest exponent of any variable.
+    maxd: usize,
+}
+
+impl<'a> Evaluator<'a> {
+    fn new(b: &'a [MPoly]) -> Self {
+        let mut index: HashMap<u128, usize> = HashMap::new();
+        let mut monos = Vec::new();
+        let mut maxd = 0usize;
+        let terms = b
+            .iter()
+            .map(|e| {
+                e.terms()
+                    .iter()
+                    .map(|(m, c)| {
+                        let j = *index.entry(*m).or_insert_with(|| {
+                            let x = e.exps(*m);
+                            maxd = maxd.max(x.iter().copied().max().unwrap_or(0) as usize);
+                            monos.push(x);
+                            monos.len() - 1
+                        });
+                        (j, c)
+                    })
+                    .collect()
+            })
+            .collect();
+        Evaluator { monos, terms, maxd }
+    }
+}
+
 /// Per prime: the coefficients (indexed like the grid points) of every output.
 fn images_mod_p<F>(
     pr: &Prime,
     (g, lines): (&Grid, &[Vec<Vec<usize>>]),
-    entries: &[Vec<(Vec<u32>, &BigInt)>],
+    ev: &Evaluator,
     shifts: &[u64],
     nout: usize,
     f: &F,
@@ -239,21 +291,11 @@ fn images_mod_p<F>(
 where
     F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
 {
-    let nvars = shifts.len();
-    let red: Vec<Vec<(&[u32], u64)>> = entries
+    let red: Vec<Vec<(usize, u64)>> = ev
+        .terms
         .iter()
-        .map(|e| {
-            e.iter()
-                .map(|(x, c)| (x.as_slice(), reduce(pr, c)))
-                .collect()
-        })
+        .map(|e| e.iter().map(|&(j, c)| (j, reduce(pr, c))).collect())
         .collect();
-    let maxd = entries
-        .iter()
-        .flatten()
-        .flat_map(|(x, _)| x.iter().copied())
-        .max()
-        .unwrap_or(0) as usize;
     let maxs = (g.dtot as usize + 1).max(g.sizes.iter().copied().max().unwrap_or(1));
     // pw[v][t][e] = (shift_v + t)^e
     let pw: Vec<Vec<Vec<u64>>> = shifts
@@ -262,8 +304,8 @@ where
             (0..maxs)
                 .map(|t| {
                     let x = pr.add(c, t as u64 % pr.p);
-                    let mut v = vec![1u64; maxd + 1];
-                    for e in 1..=maxd {
+                    let mut v = vec![1u64; ev.maxd + 1];
+                    for e in 1..=ev.maxd {
                         v[e] = pr.mul(v[e - 1], x);
                     }
                     v
@@ -273,20 +315,23 @@ where
         .collect();
     let npts = g.points.len();
     let mut vals = vec![vec![0u64; npts]; nout];
-    let mut a = vec![0u64; entries.len()];
+    let mut a = vec![0u64; red.len()];
+    let mut mv = vec![0u64; ev.monos.len()];
     for (idx, point) in g.points.iter().enumerate() {
-        for (slot, e) in a.iter_mut().zip(&red) {
-            let mut s = 0u64;
-            for (x, c) in e {
-                let mut t = *c;
-                for v in 0..nvars {
-                    if x[v] > 0 {
-                        t = pr.mul(t, pw[v][point[v] as usize][x[v] as usize]);
-                    }
+        for (slot, x) in mv.iter_mut().zip(&ev.monos) {
+            let mut t = 1u64;
+            for (v, &e) in x.iter().enumerate() {
+                if e > 0 {
+                    let y = pw[v][point[v] as usize][e as usize];
+                    t = if t == 1 { y } else { pr.mul(t, y) };
                 }
-                s = pr.add(s, t);
             }
-            *slot = s;
+            *slot = t;
+        }
+        for (slot, e) in a.iter_mut().zip(&red) {
+            *slot = e
+                .iter()
+                .fold(0u64, |s, &(j, c)| pr.add(s, pr.mul(c, mv[j])));
         }
         let out = f(pr, &mut a)?;
         for (k, c) in out.into_iter().enumerate() {
