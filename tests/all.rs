@@ -119,6 +119,8 @@ mod qp_kernels;
 mod qp_scale;
 #[path = "qp_scale_kernels.rs"]
 mod qp_scale_kernels;
+#[path = "mnf_scale.rs"]
+mod mnf_scale;
 #[path = "readable_text.rs"]
 mod readable_text;
 #[path = "realization.rs"]
