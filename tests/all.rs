@@ -89,6 +89,8 @@ mod matrix_rational;
 mod mechanical;
 #[path = "memory_budget.rs"]
 mod memory_budget;
+#[path = "mnf_scale.rs"]
+mod mnf_scale;
 #[path = "mpoly.rs"]
 mod mpoly;
 #[path = "mpoly_gcd.rs"]
@@ -119,8 +121,6 @@ mod qp_kernels;
 mod qp_scale;
 #[path = "qp_scale_kernels.rs"]
 mod qp_scale_kernels;
-#[path = "mnf_scale.rs"]
-mod mnf_scale;
 #[path = "readable_text.rs"]
 mod readable_text;
 #[path = "realization.rs"]

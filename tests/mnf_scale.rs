@@ -20,8 +20,8 @@ use exactlti::structure::mechanical::{
 use exactlti::system::StateSpace;
 
 fn form_of<K: Field>(s: &StateSpace<K>) -> MechanicalForm<K> {
-    let r = mechanical_normal_form_in(None, &s.a, &s.b, &s.c, &s.d, DEFAULT_MAX_CANDIDATES)
-        .unwrap();
+    let r =
+        mechanical_normal_form_in(None, &s.a, &s.b, &s.c, &s.d, DEFAULT_MAX_CANDIDATES).unwrap();
     assert!(r.exists && r.verified);
     r.form.unwrap()
 }
@@ -33,7 +33,11 @@ fn assert_interleaved<K: Field>(s: &StateSpace<K>, markov: bool, tag: &str) {
     let n = s.a.nrows();
     let h = n / 2;
     assert!((&f.t_inv * &f.t).is_identity(), "t^-1 t = I, {tag}");
-    assert_eq!(&f.t_inv * &f.a_tilde, &s.a * &f.t_inv, "t^-1 A~ = A t^-1, {tag}");
+    assert_eq!(
+        &f.t_inv * &f.a_tilde,
+        &s.a * &f.t_inv,
+        "t^-1 A~ = A t^-1, {tag}"
+    );
     let mut e_n = Matrix::zeros(k.clone(), n, 1);
     e_n.set(n - 1, 0, k.one());
     assert_eq!(f.b_tilde, e_n, "B~ = e_n, {tag}");

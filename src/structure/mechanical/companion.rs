@@ -68,7 +68,10 @@ pub fn interleaved_controller_form<K: Field>(
     }
     let h = n / 2;
     // state r of the form is w A^{order[r]}
-    let order: Vec<usize> = (0..h).map(|i| 2 * i).chain((0..h).map(|i| 2 * i + 1)).collect();
+    let order: Vec<usize> = (0..h)
+        .map(|i| 2 * i)
+        .chain((0..h).map(|i| 2 * i + 1))
+        .collect();
     let mut pos = vec![0; n];
     for (r, &j) in order.iter().enumerate() {
         pos[j] = r;
@@ -117,21 +120,13 @@ mod tests {
     /// half of $\tilde A$ is $[0\ I]$.
     #[test]
     fn interleaved_form_identities() {
-        let a = qmat![
-            [1, 2, 0, -1],
-            [0, -3, 1, 2],
-            [4, 0, 2, 1],
-            [-1, 1, 0, 5]
-        ];
+        let a = qmat![[1, 2, 0, -1], [0, -3, 1, 2], [4, 0, 2, 1], [-1, 1, 0, 5]];
         let b = qmat![[1], [0], [2], [-1]];
         let (t, t_inv, at) = interleaved_controller_form(&a, &b).unwrap().unwrap();
         assert!((&t * &t_inv).is_identity());
         assert_eq!(&at * &t, &t * &a);
         assert_eq!(&t * &b, qmat![[0], [0], [0], [1]]);
-        assert_eq!(
-            at.submatrix(0, 2, 0, 4),
-            qmat![[0, 0, 1, 0], [0, 0, 0, 1]]
-        );
+        assert_eq!(at.submatrix(0, 2, 0, 4), qmat![[0, 0, 1, 0], [0, 0, 0, 1]]);
         // an uncontrollable pair does not qualify
         let a = qmat![[1, 0], [0, 1]];
         assert!(

@@ -264,11 +264,7 @@ pub fn mechanical_normal_form_recorded<K: Field>(
         && !transform::identity_solves(f, a, &b1)
         && let Some((t, t_inv, a_tilde)) = companion::interleaved_controller_form(a, &b1)?
     {
-        out.form = Some(form_from_parts(
-            [a, b, c, d],
-            &r_mat,
-            (t, t_inv, a_tilde),
-        )?);
+        out.form = Some(form_from_parts([a, b, c, d], &r_mat, (t, t_inv, a_tilde))?);
         return finish(out);
     }
     let (family, l) = transform::transformation_family_with_l(f, a, &b1);
