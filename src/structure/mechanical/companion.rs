@@ -30,6 +30,9 @@ use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::realization::controllability_matrix;
 
+/// $(T, T^{-1}, \tilde A)$.
+pub type Interleaved<K> = (Matrix<K>, Matrix<K>, Matrix<K>);
+
 /// $(T, T^{-1}, \tilde A)$ of the interleaved controller form for a controllable pair with one
 /// input and an even number of states (see the module docs); `None` when the pair does not
 /// qualify (more inputs, odd `n`, `n = 0`) or the Krylov matrix is singular.
@@ -39,7 +42,7 @@ use crate::realization::controllability_matrix;
 pub fn interleaved_controller_form<K: Field>(
     a: &Matrix<K>,
     b: &Matrix<K>,
-) -> Result<Option<(Matrix<K>, Matrix<K>, Matrix<K>)>> {
+) -> Result<Option<Interleaved<K>>> {
     let n = a.nrows();
     if b.ncols() != 1 || n == 0 || !n.is_multiple_of(2) {
         return Ok(None);
