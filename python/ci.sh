@@ -2,7 +2,9 @@
 # Builds and tests the Python package: a venv (.venv-python at the repository root, or
 # $EXACTLTI_PY_VENV), `pip install ./python` (maturin from PyPI builds the PyO3 extension,
 # release profile, target dir python/target), pytest with SymPy, numpy and python-control.
-# Prints pytest's summary line; exits with pytest's status.
+# Prints pytest's summary line, then executes the paper notebooks (python/examples/notebooks,
+# a plain runner: every cell in order, each displayed result rendered, no Jupyter needed)
+# with the time each took; fails when pytest or a notebook fails.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 VENV="${EXACTLTI_PY_VENV:-$ROOT/.venv-python}"
@@ -18,4 +20,9 @@ echo "python package built and installed in $(( $(date +%s) - start )) s"
 # run from the repository root so that `import exactlti` finds the installed package,
 # not the source folder python/exactlti (which has no compiled _core)
 cd "$ROOT"
-"$VENV/bin/python" -m pytest -q -p no:cacheprovider python/tests
+status=0
+"$VENV/bin/python" -m pytest -q -p no:cacheprovider python/tests || status=$?
+nb_start=$(date +%s)
+"$VENV/bin/python" python/examples/notebooks/run.py || status=1
+echo "notebooks executed in $(( $(date +%s) - nb_start )) s"
+exit $status

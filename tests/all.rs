@@ -139,6 +139,8 @@ mod scb;
 mod slowpaths;
 #[path = "steps.rs"]
 mod steps;
+#[path = "steps_descriptor.rs"]
+mod steps_descriptor;
 #[path = "steps_forms.rs"]
 mod steps_forms;
 #[path = "steps_systems.rs"]

@@ -655,13 +655,8 @@ fn cli_steps_for_mnf_standard_real_and_descriptor_files() {
 fn cli_steps_refusals_for_forms_are_one_line_exit_2() {
     for args in [
         vec!["standard", "data/yaw-plane-single-wheel.json", "--steps"],
-        vec!["zeros", "data/models/spring-mass-damper.toml", "--steps"],
-        vec![
-            "jordan",
-            "data/models/spring-mass-damper.toml",
-            "--real",
-            "--steps",
-        ],
+        // `zeros` and `jordan --real` of a descriptor file have steps now
+        // (tests/steps_descriptor.rs)
         vec![
             "jordan",
             "tests/data/mnf_appendix_b.json",

@@ -17,6 +17,7 @@ from ._core import UnsupportedError, VerificationError
 from ._convert import ExactnessWarning
 from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
 from ._api import Report
+from ._steps import Derivation, Step, steps
 from ._study import critical, sweep
 from ._ops import feedback, interconnect, parallel, series
 from ._system import (
@@ -53,6 +54,9 @@ __all__ = [
     "critical",
     "StateSpace",
     "Report",
+    "steps",
+    "Derivation",
+    "Step",
     "Matrix",
     "AlgebraicNumber",
     "Polynomial",

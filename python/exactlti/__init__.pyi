@@ -110,7 +110,35 @@ class CheckResult:
 class Factor: ...
 class Factorization: ...
 
+class Step:
+    kind: str
+    sentence: str
+    part: Optional[int]
+    identity: Optional[str]
+    holds: Optional[bool]
+    assumes: List[str]
+    objects: Dict[str, Any]
+    def __getitem__(self, key: str) -> Any: ...
+
+class Derivation(List[Step]):
+    report: Dict[str, Any]
+    verified: bool
+    field: Optional[str]
+    conditions: List[str]
+    def kinds(self) -> List[str]: ...
+    def find(self, kind: str) -> List[Step]: ...
+    def _repr_latex_(self) -> str: ...
+    def _repr_html_(self) -> str: ...
+
 class StateSpace:
+    def steps(
+        self,
+        command: str,
+        method: Optional[str] = None,
+        real: bool = False,
+        expand: bool = False,
+        max_seconds: Optional[float] = None,
+    ) -> Derivation: ...
     @property
     def A(self) -> Matrix: ...
     @property
@@ -261,6 +289,14 @@ def jordan(
     A: Rows, real: bool = False, max_seconds: Optional[float] = None,
     params: Optional[Mapping[str, Any]] = None,
 ) -> Union[JordanResult, SymbolicJordanResult]: ...
+def steps(
+    system: StateSpace,
+    command: str,
+    method: Optional[str] = None,
+    real: bool = False,
+    expand: bool = False,
+    max_seconds: Optional[float] = None,
+) -> Derivation: ...
 def from_control(sys: Any, name: str = "from_control") -> StateSpace: ...
 def sweep(path: Path, param: str, values: Iterable[float]) -> Dict[str, Any]: ...
 def critical(

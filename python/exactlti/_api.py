@@ -10,17 +10,19 @@ Each method returns a :class:`Report`: the command line's JSON report as Python 
 import json
 
 from . import _core
+from ._display import Rendered
 
 
-class Report(dict):
+class Report(dict, Rendered):
     """The result of one operation: the report's keys and values (a ``dict``).
 
     ``verified``: every exact check of the operation passed; ``agree``: the float path
     agrees with the exact one (``check``, ERA). ``title`` is the report's title.
     """
 
-    def __init__(self, data, verified, agree=True, op=None):
+    def __init__(self, data, verified, agree=True, op=None, rendered=None):
         super().__init__(data)
+        self._rendered = rendered
         self.verified = bool(verified)
         self.agree = bool(agree)
         self.op = op
@@ -82,8 +84,9 @@ def run(system, op, *args, max_seconds=None):
         argv = [op, args[0], source] + args[1:]
     else:
         argv = [op, source] + args
-    text, verified, agree = system._core.command(argv, max_seconds)
-    return Report(json.loads(text), verified, agree, op=" ".join([op] + args))
+    text, verified, agree, latex, html = system._core.command(argv, max_seconds)
+    rendered = {"latex": latex, "html": html}
+    return Report(json.loads(text), verified, agree, op=" ".join([op] + args), rendered=rendered)
 
 
 def connect(op, systems, *args, max_seconds=None):
@@ -92,8 +95,16 @@ def connect(op, systems, *args, max_seconds=None):
     first, rest = systems[0], systems[1:]
     names = [s._core.source[0] for s in systems]
     argv = [op] + names + [str(a) for a in args]
-    text, verified, agree = first._core.connect(argv, [s._core for s in rest], max_seconds)
-    return Report(json.loads(text), verified, agree, op=" ".join([op] + [str(a) for a in args]))
+    text, verified, agree, latex, html = first._core.connect(
+        argv, [s._core for s in rest], max_seconds
+    )
+    return Report(
+        json.loads(text),
+        verified,
+        agree,
+        op=" ".join([op] + [str(a) for a in args]),
+        rendered={"latex": latex, "html": html},
+    )
 
 
 class Operations:

@@ -30,24 +30,14 @@ __all__ = [
 ]
 
 from ._api import Operations, run as _run
+from ._display import Rendered, report_parts
 from ._toolbox import ControlOps
 from ._ops import SystemOps
 
 _METHODS = ("kalman", "rosenbrock", "ho-kalman", "jordan")
 
 
-def _latex_section(title, items):
-    """A small LaTeX block (``\\text`` lines and matrices) for Jupyter."""
-    parts = ["\\text{%s}" % title]
-    for name, value in items:
-        if isinstance(value, Matrix):
-            parts.append("%s = %s" % (name, value.latex()))
-        else:
-            parts.append("\\text{%s: %s}" % (name, str(value).replace("_", "\\_")))
-    return "$\\begin{gathered}" + " \\\\ ".join(parts) + "\\end{gathered}$"
-
-
-class StateSpace(Operations, ControlOps, SystemOps):
+class StateSpace(Operations, ControlOps, SystemOps, Rendered):
     """An exact LTI system ``x' = A x + B u``, ``y = C x + D u`` (E given: ``E x' = ...``,
     converted to this standard form on input).
 
@@ -197,6 +187,8 @@ class StateSpace(Operations, ControlOps, SystemOps):
         if method == "jordan" and self._extension:
             return _run(self, "minreal", "--method", "jordan", max_seconds=max_seconds)
         res = MinrealResult(self._core.minreal(method, max_seconds), self)
+        if res._rendered is None:
+            res._source = (self, "minreal", "--method", method)
         if res.system is None:
             return res
         return MinrealSystem(res, self)
@@ -214,13 +206,16 @@ class StateSpace(Operations, ControlOps, SystemOps):
             return _run(self, "zeros", max_seconds=max_seconds)
         d = self._core.zeros(max_seconds)
         if self.is_symbolic:
-            return Factorization(d)
+            f = Factorization(d)
+            f._source = (self, "zeros")
+            return f
         if d["roots"] is None:
             raise _core.UnsupportedError(
                 "the invariant-zero polynomial %s is not rational: roots over this field "
                 "are not supported yet" % d["polynomial"]["text"]
             )
         r = Roots(d["roots"])
+        r.report, r._rendered = report_parts(d)
         r.polynomial = Polynomial(d["polynomial"])
         r.normal_rank = d["normal_rank"]
         return r
@@ -230,9 +225,9 @@ class StateSpace(Operations, ControlOps, SystemOps):
         real ones ascending, then complex ones by real and imaginary part. With symbolic
         parameters: the :class:`Factorization` of ``det(sI - A)`` over ``Q(params)``."""
         d = self._core.poles(max_seconds)
-        if self.is_symbolic:
-            return Factorization(d)
-        return Roots(d)
+        r = Factorization(d) if self.is_symbolic else Roots(d)
+        r._source = (self, "modes")  # shown as the modal table of the poles
+        return r
 
     def charpoly(self):
         """``det(sI - A)`` (exact)."""
@@ -251,14 +246,19 @@ class StateSpace(Operations, ControlOps, SystemOps):
             return _run(self, "jordan", *a, max_seconds=max_seconds)
         d = self._core.jordan(real, max_seconds)
         if self.is_symbolic:
-            return SymbolicJordanResult(d)
+            r = SymbolicJordanResult(d)
+            r._source = (self, "jordan")
+            return r
         return JordanResult(d)
 
     def scb(self, max_seconds=None):
         """Special coordinate basis (Sannuti–Saberi / Chen): the SCB system with the
         transformations ``x^ = Gamma1 x``, ``y^ = Gamma2 y``, ``u^ = Gamma3 u``; ``dims`` are
         ``(n_a, n_b, n_c, n_d)``; exact identities checked (``verified``)."""
-        return ScbResult(self._core.scb(max_seconds))
+        r = ScbResult(self._core.scb(max_seconds))
+        if r._rendered is None:
+            r._source = (self, "scb")
+        return r
 
     def mnf(self, max_seconds=None):
         """Mechanical normal form: ``M q'' + L q' + K q = F u`` with ``T A = A~ T``,
@@ -266,7 +266,10 @@ class StateSpace(Operations, ControlOps, SystemOps):
         the reason."""
         if self._extension:
             return _run(self, "mnf", max_seconds=max_seconds)
-        return MnfResult(self._core.mnf(max_seconds))
+        r = MnfResult(self._core.mnf(max_seconds))
+        if r._rendered is None:
+            r._source = (self, "mnf")
+        return r
 
     def modes(self, max_seconds=None):
         """The modal table: eigenvalue, frequency, damping ratio, time constant, period.
@@ -279,7 +282,18 @@ class StateSpace(Operations, ControlOps, SystemOps):
 
     def tf(self, max_seconds=None):
         """Exact transfer matrix ``G(s) = C (sI - A)^-1 B + D`` (entries in lowest terms)."""
-        return TransferMatrix(self._core.tf(max_seconds))
+        r = TransferMatrix(self._core.tf(max_seconds))
+        r._source = (self, "tf")
+        return r
+
+    def steps(self, command, method=None, real=False, expand=False, max_seconds=None):
+        """The derivation of ``command`` (``"jordan"``, ``"minreal"``, ``"scb"``,
+        ``"zeros"``, ``"tf"``, ``"standard"``, ``"mnf"``) step by step: a
+        :class:`Derivation` (see :func:`exactlti.steps`)."""
+        from ._steps import steps
+
+        return steps(self, command, method=method, real=real, expand=expand,
+                     max_seconds=max_seconds)
 
     def markov(self, count, max_seconds=None):
         """Markov parameters ``C A^k B`` for ``k = 0 .. count-1``."""
@@ -302,7 +316,9 @@ class StateSpace(Operations, ControlOps, SystemOps):
         >>> c.agree
         True
         """
-        return CheckResult(self._core.check(max_seconds))
+        r = CheckResult(self._core.check(max_seconds))
+        r._source = (self, "check")
+        return r
 
     def freqresp(self, omega):
         """Frequency response ``G(j w)`` in floating point at the angular frequencies
@@ -346,11 +362,10 @@ class StateSpace(Operations, ControlOps, SystemOps):
             self.field,
         )
 
-    def _repr_latex_(self):
-        return _latex_section(
-            "StateSpace over %s" % self.field,
-            [("A", self.A), ("B", self.B), ("C", self.C), ("D", self.D)],
-        )
+    def _render(self):
+        if self._rendered is None:
+            self._rendered = self._core.render()
+        return self._rendered
 
 
 def _exact_rows(m):
@@ -653,8 +668,13 @@ def jordan(A, real=False, max_seconds=None, params=None):
     [0, a]]), [('a', 2)], True)
     """
     text, symbolic = system_json("jordan", {"A": A}, params)
-    d = _core.load_json(text, "jordan", symbolic).jordan(real, max_seconds)
-    return SymbolicJordanResult(d) if symbolic else JordanResult(d)
+    core = _core.load_json(text, "jordan", symbolic)
+    d = core.jordan(real, max_seconds)
+    if not symbolic:
+        return JordanResult(d)
+    r = SymbolicJordanResult(d)
+    r._source = (StateSpace(core), "jordan")
+    return r
 
 
 def from_control(sys, name="from_control"):
@@ -682,7 +702,7 @@ def from_control(sys, name="from_control"):
 # -- results ------------------------------------------------------------------------
 
 
-class Roots(list):
+class Roots(list, Rendered):
     """A list of :class:`AlgebraicNumber` (each repeated by its multiplicity)."""
 
     def __init__(self, items):
@@ -700,10 +720,6 @@ class Roots(list):
 
         return np.array([complex(a) for a in self], dtype=complex)
 
-    def _repr_latex_(self):
-        import sympy
-
-        return "$%s$" % sympy.latex(self.to_sympy())
 
 
 class Eigenvalue(AlgebraicNumber):
@@ -717,7 +733,7 @@ class Eigenvalue(AlgebraicNumber):
         self.blocks = list(d["blocks"])
 
 
-class JordanResult:
+class JordanResult(Rendered):
     """``A T = T J``: ``J``, ``T`` exact, ``eigenvalues`` (:class:`Eigenvalue`),
     ``blocks`` as ``(eigenvalue, size)`` pairs, ``verified`` (the identities held
     exactly), ``exact`` (False only when a real-form block had to be approximated)."""
@@ -732,7 +748,7 @@ class JordanResult:
         self.verified = d["verified"]
         self.exact = d["exact"]
         self.notes = list(d["notes"])
-        self.report = json.loads(d["report"])
+        self.report, self._rendered = report_parts(d)
         # a descriptor system: sizes of the Jordan blocks at s = infinity (J, T, A are the
         # finite part's)
         self.infinite_blocks = list(d.get("infinite_blocks", []))
@@ -780,11 +796,6 @@ class JordanResult:
             self.verified,
         )
 
-    def _repr_latex_(self):
-        return _latex_section(
-            "Jordan form A T = T J (verified: %s)" % self.verified,
-            [("J", self.J), ("T", self.T)],
-        )
 
 
 class _TextRoot:
@@ -841,11 +852,11 @@ class MinrealSystem(StateSpace):
             self.verified,
         )
 
-    def _repr_latex_(self):
-        return self.result._repr_latex_()
+    def _render(self):
+        return self.result._render()
 
 
-class MinrealResult:
+class MinrealResult(Rendered):
     """A minimal realization: ``system`` (a :class:`StateSpace`), ``nstates`` (the McMillan
     degree), ``original_order``, ``method``, ``T`` (the state map when the method gives
     one), ``verified`` (controllable, observable, equal Markov parameters, exactly) and,
@@ -872,7 +883,7 @@ class MinrealResult:
         self.T = Matrix(d["T"], params=self.params) if d["T"] is not None else None
         self.verified = d["verified"]
         self.stages = tuple(d["stages"]) if "stages" in d else None
-        self.report = json.loads(d["report"]) if "report" in d else None
+        self.report, self._rendered = report_parts(d)
         self.conditions = Conditions(d.get("conditions", ()), self.params)
         self.original = original
 
@@ -917,15 +928,9 @@ class MinrealResult:
             self.verified,
         )
 
-    def _repr_latex_(self):
-        return _latex_section(
-            "minimal realization (%s): %d -> %d states, verified: %s"
-            % (self.method, self.original_order, self.nstates, self.verified),
-            [("A", self.A), ("B", self.B), ("C", self.C), ("D", self.D)],
-        )
 
 
-class ScbResult:
+class ScbResult(Rendered):
     """Special coordinate basis: ``A``..``D`` (SCB form), ``Gamma1``..``Gamma3``, ``U``,
     ``Y``, ``dims = (n_a, n_b, n_c, n_d)``, ``chains``, ``m0``, ``left_invertible``,
     ``right_invertible``, ``zero_polynomial``, ``minimum_phase``, ``verified``: the
@@ -950,7 +955,7 @@ class ScbResult:
         #: True/False; None when it depends on the parameters (or there is no answer)
         self.minimum_phase = d.get("minimum_phase")
         self.verified = d["verified"]
-        self.report = json.loads(d["report"]) if "report" in d else None
+        self.report, self._rendered = report_parts(d)
         self.conditions = Conditions(d.get("conditions", ()), self.params)
         #: symbolic: the invariant-zero polynomial's factors over Q(params)
         self.zero_factors = (
@@ -968,15 +973,9 @@ class ScbResult:
             self.verified,
         )
 
-    def _repr_latex_(self):
-        return _latex_section(
-            "special coordinate basis, (n_a, n_b, n_c, n_d) = %s, verified: %s"
-            % (self.dims, self.verified),
-            [("A", self.A), ("B", self.B), ("C", self.C), ("D", self.D)],
-        )
 
 
-class MnfResult:
+class MnfResult(Rendered):
     """Mechanical normal form: ``exists`` (and ``reason`` when not), ``M``, ``L``, ``K``,
     ``F``, ``C``, ``D``, the state map ``T`` with ``A_tilde``, ``B_tilde``, ``verified``."""
 
@@ -986,7 +985,7 @@ class MnfResult:
         self.exists = d["exists"]
         self.reason = d["reason"]
         self.verified = d["verified"]
-        self.report = json.loads(d["report"]) if "report" in d else None
+        self.report, self._rendered = report_parts(d)
         self.params = tuple(d.get("params", ()))
         self.conditions = Conditions(d.get("conditions", ()), self.params)
         for k in self._MATS:
@@ -1001,13 +1000,6 @@ class MnfResult:
             return "MnfResult(exists=False, reason=%r)" % self.reason
         return "MnfResult(exists=True, n2=%d, verified=%s)" % (self.M.nrows, self.verified)
 
-    def _repr_latex_(self):
-        if not self.exists:
-            return _latex_section("no mechanical normal form", [("reason", self.reason)])
-        return _latex_section(
-            "mechanical normal form M q'' + L q' + K q = F u (verified: %s)" % self.verified,
-            [("M", self.M), ("L", self.L), ("K", self.K), ("F", self.F), ("C", self.C)],
-        )
 
 
 class Mode:
@@ -1031,15 +1023,15 @@ class Mode:
         )
 
 
-class ModalTable(list):
+class ModalTable(list, Rendered):
     """The modal table: a list of :class:`Mode`."""
 
     def __init__(self, d):
         super().__init__(Mode(m) for m in d["modes"])
-        self.report = json.loads(d["report"])
+        self.report, self._rendered = report_parts(d)
 
 
-class TransferMatrix:
+class TransferMatrix(Rendered):
     """Exact transfer matrix in lowest terms: ``G[i, j]`` is a :class:`RationalFunction`;
     ``mcmillan_degree`` (the order of a verified minimal realization); ``verified`` (every
     entry's expansion at infinity equals ``D, CB, CAB, ...``). With symbolic parameters:
@@ -1099,10 +1091,6 @@ class TransferMatrix:
     def __repr__(self):
         return "TransferMatrix(%s)" % [[str(h) for h in row] for row in self.entries]
 
-    def _repr_latex_(self):
-        import sympy
-
-        return "$%s$" % sympy.latex(self.to_sympy())
 
 
 class Factor:
@@ -1138,7 +1126,7 @@ class Factor:
         return "Factor((%s)%s)" % (self.factor, m)
 
 
-class Factorization:
+class Factorization(Rendered):
     """A polynomial in ``s`` over ``Q(params)`` (symbolic poles or zeros): ``polynomial``,
     its irreducible ``factors`` (:class:`Factor`), ``roots`` (those in ``Q(params)``, from
     the linear factors, repeated by multiplicity) and ``conditions``.
@@ -1222,7 +1210,7 @@ class SymbolicEigenvalue:
         return "SymbolicEigenvalue(%s)" % self
 
 
-class SymbolicJordanResult:
+class SymbolicJordanResult(Rendered):
     """The Jordan structure of a matrix over ``Q(params)``: ``A T = T J`` with ``J``, ``T``
     exact rational functions (``to_sympy()``); ``eigenvalues``
     (:class:`SymbolicEigenvalue`); ``blocks`` as ``(eigenvalue, size)`` pairs;
@@ -1275,14 +1263,9 @@ class SymbolicJordanResult:
             self.verified,
         )
 
-    def _repr_latex_(self):
-        return _latex_section(
-            "Jordan form over %s, A T = T J (verified: %s)" % (self.field, self.verified),
-            [("J", self.J), ("T", self.T), ("conditions", ", ".join(self.conditions) or "none")],
-        )
 
 
-class CheckResult(list):
+class CheckResult(list, Rendered):
     """Items ``{what, exact, float, float_truth, agree}``; ``agree`` is True when the
     float path agrees with the exact one on every item."""
 

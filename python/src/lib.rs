@@ -240,6 +240,30 @@ impl System {
         Python::attach(|py| out.to_py(py))
     }
 
+    /// The system as a report of the library (`A`, `B`, `C`, `D`; `E` and the descriptor's
+    /// `A` for a descriptor system), rendered by its report layer: `{latex, html}`.
+    fn render(&self) -> PyResult<Py<PyAny>> {
+        let ground = self.api.ground().to_string();
+        let r = visit!(self.api => exactlti::report::Report, [ground: String], |f, t| {
+            let s = &t.ss;
+            let title = match &t.descriptor {
+                None => format!("state space over {ground}"),
+                Some(_) => format!("descriptor system over {ground}, with its standard form (A, B, C, D)"),
+            };
+            let mut r = exactlti::report::Report::titled(title)
+                .matrices(&[("A", &s.a), ("B", &s.b), ("C", &s.c), ("D", &s.d)]);
+            if let Some(d) = &t.descriptor {
+                r = r.matrices(&[("E", &d.e), ("A_E", &d.a)]);
+            }
+            r
+        });
+        let out = Out::Dict(vec![
+            ("latex", Out::Str(r.to_latex_math())),
+            ("html", Out::Str(r.to_html())),
+        ]);
+        Python::attach(|py| out.to_py(py))
+    }
+
     /// Name of the ground field (`QQ`, `QQ(sqrt(2))`, ...).
     #[getter]
     fn ground(&self) -> String {
@@ -448,15 +472,35 @@ impl System {
         py: Python<'_>,
         args: Vec<String>,
         max_seconds: Option<f64>,
-    ) -> PyResult<(String, bool, bool)> {
+    ) -> PyResult<(String, bool, bool, String, String)> {
         let s = self.api.clone();
         run(py, max_seconds, move || {
             let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
             let ctx = exactlti::api::RunContext::default();
             let out = exactlti::api::execute_on(&cmd, &s, &ctx)?;
+            command_out(&out)
+        })
+    }
+
+    /// The derivation of one command step by step (`args` as the command line spells them
+    /// after the program name, without `--steps`; what `--steps` accepts): the steps as
+    /// JSON text (`steps: [{step, sentence, <objects>, identity, holds, assumes}]`), whether
+    /// every identity held, and the derivation as LaTeX and as HTML, both made by the
+    /// library's report layer.
+    #[pyo3(signature = (args, max_seconds=None))]
+    fn steps(
+        &self,
+        py: Python<'_>,
+        args: Vec<String>,
+        max_seconds: Option<f64>,
+    ) -> PyResult<(String, bool, String, String)> {
+        let s = self.api.clone();
+        run(py, max_seconds, move || {
+            let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
+            let out = exactlti::api::steps::steps_on(&cmd, &s)?;
             let text = serde_json::to_string(&out.report.to_json())
                 .map_err(|e| Fail::Input(e.to_string()))?;
-            Ok((text, out.verified, !out.float_disagrees))
+            Ok((text, out.verified, out.latex, out.html))
         })
     }
 
@@ -550,7 +594,7 @@ impl System {
         args: Vec<String>,
         others: Vec<PyRef<'_, System>>,
         max_seconds: Option<f64>,
-    ) -> PyResult<(String, bool, bool)> {
+    ) -> PyResult<(String, bool, bool, String, String)> {
         let mut all = vec![self.api.clone()];
         all.extend(others.iter().map(|o| o.api.clone()));
         run(py, max_seconds, move || {
@@ -558,11 +602,24 @@ impl System {
             let ctx = exactlti::api::RunContext::default();
             let refs: Vec<&exactlti::api::System> = all.iter().map(|s| s.as_ref()).collect();
             let out = exactlti::api::execute_on_many(&cmd, &refs, &ctx)?;
-            let text = serde_json::to_string(&out.report.to_json())
-                .map_err(|e| Fail::Input(e.to_string()))?;
-            Ok((text, out.verified, !out.float_disagrees))
+            command_out(&out)
         })
     }
+}
+
+/// A command's outcome for Python: the report as JSON text, whether its exact checks
+/// passed, whether the float path agrees, and the report as LaTeX (one math formula) and HTML (the library's
+/// report layer renders both from the report's values).
+fn command_out(out: &exactlti::api::Outcome) -> FResult<(String, bool, bool, String, String)> {
+    let text =
+        serde_json::to_string(&out.report.to_json()).map_err(|e| Fail::Input(e.to_string()))?;
+    Ok((
+        text,
+        out.verified,
+        !out.float_disagrees,
+        out.report.to_latex_math(),
+        out.report.to_html(),
+    ))
 }
 
 /// Reads a system from JSON text (the system-file format; `name` is used in messages).

@@ -190,8 +190,14 @@ pub(crate) fn poly_q<K: Field>(p: &Poly<K>) -> Option<Poly<Q>> {
     c.map(|c| Poly::new(Q, c))
 }
 
+/// A report: its JSON text, and its LaTeX and HTML (for `_repr_latex_`, `_repr_html_`),
+/// all three made by the library's report layer from the report's values.
 pub(crate) fn report(r: &Report) -> Out {
-    Out::Str(r.to_json().to_string())
+    Out::Dict(vec![
+        ("json", Out::Str(r.to_json().to_string())),
+        ("latex", Out::Str(r.to_latex_math())),
+        ("html", Out::Str(r.to_html())),
+    ])
 }
 
 pub(crate) fn alg(n: &exactlti::algebraic::AlgebraicNumber, mult: usize) -> Out {

@@ -3,6 +3,11 @@
 //! over $\mathbb{Q}$ and over $\mathbb{Q}(p)$ (files with symbols, `--symbolic`, `--at`).
 //! A descriptor file (with `E`) is derived through its standard form: the steps of
 //! `standard` first, then the command's on the standard system (what the command computes).
+//! For `zeros` this is exact, not an approximation: the standard form comes from constant
+//! invertible maps of the pencil and the elimination of its infinite part $I - sN$, which
+//! is unimodular, so the Smith form of the system pencil and with it the finite invariant
+//! zeros are unchanged; `jordan --real` is the real Jordan form of the finite dynamics, as
+//! `jordan` is.
 //!
 //! The steps are computed by [`crate::jordan::steps`] and [`crate::realization::steps`] and
 //! rendered by [`crate::report::steps`] (text, JSON) and [`crate::report::steps_latex`]
@@ -172,25 +177,79 @@ pub fn execute(
     format: Format,
     standalone: bool,
 ) -> Result<Outcome, Failure> {
-    let Some((file, what)) = what(cmd) else {
-        return Err(refuse(AVAILABLE.into()));
+    let Some((file, _)) = what(cmd) else {
+        return Err(refuse(refusal(cmd)));
     };
     let opts = SymbolicOptions::from_args(symbolic, at).map_err(refuse)?;
     let sys = super::System::open(file, &opts).map_err(|e| refuse(e.to_string()))?;
+    derive(cmd, &sys, &Render { format, standalone })
+}
+
+/// A derivation with every rendering built (the library's callers, the Python package):
+/// the report (JSON data: `steps: [{step, sentence, <objects>, identity, holds, assumes}]`),
+/// whether every identity held, the LaTeX fragment (a worked example) and HTML (math for
+/// MathJax, as notebooks show it).
+pub struct Steps {
+    pub report: crate::report::Report,
+    pub verified: bool,
+    pub latex: String,
+    pub html: String,
+}
+
+/// The derivation `cmd` asks for (`jordan`, `scb`, `minreal --method kalman`, ...: what
+/// `--steps` accepts) of a system already read, every rendering built ([`Steps`]).
+pub fn steps_on(cmd: &Command, sys: &super::System) -> Result<Steps, Failure> {
+    derive(cmd, sys, &Strings)
+}
+
+/// What a derivation becomes: the command line's output, or [`Steps`].
+trait Sink {
+    type Out;
+    fn show<K: Field>(&self, d: &Derivation<K>) -> Result<Self::Out, Failure>;
+}
+
+/// Every rendering as strings.
+struct Strings;
+
+impl Sink for Strings {
+    type Out = Steps;
+    fn show<K: Field>(&self, d: &Derivation<K>) -> Result<Steps, Failure> {
+        Ok(Steps {
+            report: derivation_report(d),
+            verified: d.verified(),
+            latex: derivation_latex(d, false),
+            html: crate::report::steps_html::derivation_html(d),
+        })
+    }
+}
+
+/// Why `--steps` refuses `cmd` (`None`: the general list of what it derives).
+fn refusal(cmd: &Command) -> String {
+    match cmd {
+        Command::Minreal {
+            method: MethodArg::Era,
+            ..
+        } => "--steps: `minreal --method era` is the float path (an SVD of the Hankel matrix, identities only up to round-off), so it has no exact derivation; `minreal --method ho-kalman --steps` derives the exact rank factorization of the same Hankel matrix".into(),
+        Command::Minreal {
+            descriptor: true, ..
+        } => "--steps: `minreal --descriptor` keeps the infinite (impulsive) part of the pencil, which the standard form removes; its derivation is not written yet: `standard --steps` derives the standard form and `minreal --steps` its minimal realization (the same transfer matrix when the file's is proper)".into(),
+        _ => AVAILABLE.into(),
+    }
+}
+
+/// The derivation of `cmd` on `sys`, given to `out`.
+fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out, Failure> {
+    let Some((_, what)) = what(cmd) else {
+        return Err(refuse(refusal(cmd)));
+    };
+    let file = sys.path();
     let loaded = sys.loaded();
     let e = |err: crate::error::Error| super::common::with_path(file, err);
-    let out = Render { format, standalone };
     let descriptor = match &loaded.system {
         TypedAny::Rational(t) => t.descriptor.is_some(),
         TypedAny::Quadratic(t) => t.descriptor.is_some(),
         TypedAny::RatFunc(t) => t.descriptor.is_some(),
     };
-    if descriptor && matches!(what, What::Zeros | What::RealJordan(_)) {
-        return Err(refuse(format!(
-            "{}: --steps for `zeros` and `jordan --real` of a descriptor system (a file with E) is not available yet (`standard --steps` derives its standard form)",
-            path_text(file)
-        )));
-    }
     if !descriptor && what == What::Standard {
         return Err(refuse(format!(
             "{}: --steps for `standard` needs a descriptor system (a file with E); this one is already in standard form",
@@ -200,7 +259,7 @@ pub fn execute(
     match (&loaded.system, what) {
         (TypedAny::Rational(t), What::Jordan) => out.show(&jordan_q(t).map_err(e)?),
         (TypedAny::Rational(t), What::RealJordan(expand)) => {
-            out.show(&crate::jordan::real_steps::real_jordan_steps(&t.a_raw, expand).map_err(e)?)
+            out.show(&real_jordan_q(t, expand).map_err(e)?)
         }
         (TypedAny::RatFunc(t), What::Jordan) => {
             let Some(d) = &t.descriptor else {
@@ -253,6 +312,24 @@ fn jordan_q(t: &TypedSystem<Q>) -> crate::error::Result<Derivation<NumberField>>
     Ok(out)
 }
 
+/// `jordan --real --steps` over $\mathbb{Q}$; a descriptor system through its standard form
+/// as in [`jordan_q`] (the real Jordan form of the finite dynamics).
+fn real_jordan_q(
+    t: &TypedSystem<Q>,
+    expand: bool,
+) -> crate::error::Result<Derivation<NumberField>> {
+    let Some(d) = &t.descriptor else {
+        return crate::jordan::real_steps::real_jordan_steps(&t.a_raw, expand);
+    };
+    let (first, ss) = standard_steps(d, None)?;
+    let mut out = crate::jordan::real_steps::real_jordan_steps(&ss.a, expand)?;
+    let q = out.field.clone();
+    let mut steps = lift_derivation(&first, &q).steps;
+    steps.append(&mut out.steps);
+    out.steps = steps;
+    Ok(out)
+}
+
 /// A derivation over $\mathbb{Q}$ as one over the rationals as a number field.
 fn lift_derivation(d: &Derivation<Q>, q: &NumberField) -> Derivation<NumberField> {
     let lift = |x: &<Q as Field>::Elem| q.from_rational(x);
@@ -294,7 +371,8 @@ struct Render {
     standalone: bool,
 }
 
-impl Render {
+impl Sink for Render {
+    type Out = Outcome;
     fn show<K: Field>(&self, d: &Derivation<K>) -> Result<Outcome, Failure> {
         let verified = d.verified();
         if self.format != Format::Latex {

@@ -132,16 +132,20 @@ pub fn eigenvalue_steps<K: Field + 'static>(
         ],
         Some(ok),
     );
+    // the free constants of a generalized eigenvector (the vehicle paper's eq. 30, 32):
+    // N v_j = v_(j-1) holds for v_j + K c with K a basis of ker N and any c
+    let ker = nm.nullspace();
+    let ker_ok = (&nm * &ker).is_zero() && ker.ncols() == dims.first().copied().unwrap_or(0);
     let mut off = 0;
     for &s in &ch.blocks {
         let v = ch.v.submatrix(0, n, off, off + s);
-        let ok = is_chain(&nm, &v);
-        rec.push(
-            StepKind::Chain,
-            Some(part),
-            vec![("V", Object::Matrix(v)), ("top", Object::Count(s))],
-            Some(ok),
-        );
+        let mut objects = vec![("V", Object::Matrix(v.clone())), ("top", Object::Count(s))];
+        let mut ok = is_chain(&nm, &v);
+        if s > 1 {
+            objects.push(("K", Object::Matrix(ker.clone())));
+            ok = ok && ker_ok;
+        }
+        rec.push(StepKind::Chain, Some(part), objects, Some(ok));
         off += s;
     }
     let j = jordan_block_matrix(&k, theta, &ch.blocks);

@@ -6,6 +6,7 @@
 //! contract requires.
 
 pub mod escape;
+pub mod html;
 pub mod latex;
 pub mod numbers;
 pub mod plot;
@@ -13,6 +14,7 @@ pub mod sections;
 pub mod series;
 pub mod steps;
 pub mod steps_forms;
+pub mod steps_html;
 pub mod steps_latex;
 pub mod steps_more;
 pub mod summary;
@@ -267,6 +269,16 @@ impl Report {
     /// LaTeX rendering: a fragment for an `amsmath` document (see [`latex`]).
     pub fn to_latex(&self) -> String {
         latex::fragment(self)
+    }
+
+    /// LaTeX as one math-mode formula, for notebooks (see [`latex::math`]).
+    pub fn to_latex_math(&self) -> String {
+        latex::math(self)
+    }
+
+    /// HTML rendering for notebooks, math for MathJax (see [`html`]).
+    pub fn to_html(&self) -> String {
+        html::fragment(self)
     }
 }
 

@@ -243,7 +243,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
             theta()
         ),
         StepKind::Chain => format!(
-            "Chain of length {top} for theta = {}, built top-down: v_{top} in ker N^{top} but not in ker N^{below}, then v_(j-1) = N v_j (the columns v_1..v_{top}).",
+            "Chain of length {top} for theta = {}, built top-down: v_{top} in ker N^{top} but not in ker N^{below}, then v_(j-1) = N v_j (the columns v_1..v_{top}). The family (the free constants of the vehicle paper's eq. 30, 32): with K a basis of ker N (N K = 0, checked), v_j + K c solves N x = v_(j-1) for every c; the chain takes c = 0.",
             theta(),
             top = c("top"),
             below = c("top") - 1

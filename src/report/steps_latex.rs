@@ -117,8 +117,9 @@ pub fn poly_latex<K: Field>(p: &Poly<K>, var: &str) -> String {
     if out.is_empty() { "0".into() } else { out }
 }
 
-/// A matrix in display math: `bmatrix`, small beyond 10 columns, column blocks beyond 20.
-fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
+/// A matrix in display math: `bmatrix`, small beyond 10 columns, column blocks beyond 20
+/// (`a4`: for a printed page; else one block at full size, as a notebook scrolls).
+fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>, a4: bool) {
     let k = m.field();
     if m.nrows() == 0 || m.ncols() == 0 {
         let _ = writeln!(
@@ -145,7 +146,11 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
         let (ch, gap) = if small { (1.3, 3.6) } else { (2.0, 5.0) };
         c.iter().map(|&w| w as f64 * ch + gap).sum::<f64>() + 20.0
     };
-    let small = m.ncols() > 10 || width(false, &plain) > TEXT_MM;
+    let widest = plain.iter().copied().max().unwrap_or(0);
+    if a4 && width(true, &[widest]) > TEXT_MM {
+        return entries_latex(s, name, &cells);
+    }
+    let small = a4 && (m.ncols() > 10 || width(false, &plain) > TEXT_MM);
     if small {
         s.push_str("{\\scriptsize\n");
     }
@@ -154,7 +159,9 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
     let mut c0 = 0;
     while c0 < m.ncols() {
         let mut c1 = c0 + 1;
-        while c1 < m.ncols() && c1 - c0 < BLOCK_COLS && width(small, &plain[c0..=c1]) <= TEXT_MM {
+        while c1 < m.ncols()
+            && (!a4 || (c1 - c0 < BLOCK_COLS && width(small, &plain[c0..=c1]) <= TEXT_MM))
+        {
             c1 += 1;
         }
         blocks.push((c0, c1));
@@ -182,6 +189,65 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>) {
     }
 }
 
+/// Digits of an integer set on one line; longer integers are stacked in lines of this many.
+const DIGITS_PER_LINE: usize = 64;
+
+/// `t` with every run of more than [`DIGITS_PER_LINE`] digits stacked in lines (a one-column
+/// `array`: TeX does not break a number, and a Markov parameter of the A-arm quarter car
+/// has 170 digits).
+fn break_digits(t: &str) -> String {
+    fn flush(out: &mut String, run: &mut String) {
+        if run.len() > DIGITS_PER_LINE {
+            let lines: Vec<&str> = run
+                .as_bytes()
+                .chunks(DIGITS_PER_LINE)
+                .map(|c| std::str::from_utf8(c).unwrap_or(""))
+                .collect();
+            let _ = write!(
+                out,
+                r"\begin{{array}}{{@{{}}l@{{}}}}{}\end{{array}}",
+                lines.join(r" \\ ")
+            );
+        } else {
+            out.push_str(run);
+        }
+        run.clear();
+    }
+    let (mut out, mut run) = (String::new(), String::new());
+    for c in t.chars() {
+        if c.is_ascii_digit() {
+            run.push(c);
+        } else {
+            flush(&mut out, &mut run);
+            out.push(c);
+        }
+    }
+    flush(&mut out, &mut run);
+    out
+}
+
+/// A matrix whose widest column alone is wider than the page: one display per entry
+/// (`name_{(i,j)} = ...`), long integers stacked.
+fn entries_latex(s: &mut String, name: &str, cells: &[Vec<String>]) {
+    let _ = writeln!(
+        s,
+        r"\[ {name}\ ({} \times {}),\ \text{{entries one by one (wider than the page)}} \]",
+        cells.len(),
+        cells.first().map_or(0, |r| r.len())
+    );
+    for (i, row) in cells.iter().enumerate() {
+        for (j, c) in row.iter().enumerate() {
+            let _ = writeln!(
+                s,
+                r"\[ {{{name}}}_{{({},{})}} = {} \]",
+                i + 1,
+                j + 1,
+                break_digits(c)
+            );
+        }
+    }
+}
+
 fn counts_latex(xs: &[usize], one_based: bool) -> String {
     let v: Vec<String> = xs
         .iter()
@@ -190,12 +256,20 @@ fn counts_latex(xs: &[usize], one_based: bool) -> String {
     format!("({})", v.join(",\\ "))
 }
 
-fn object_latex<K: Field>(s: &mut String, kind: StepKind, key: &str, o: &Object<K>, field: &K) {
+/// An object of a step in display math (`a4`: see [`matrix_latex`]).
+pub(crate) fn object_latex<K: Field>(
+    s: &mut String,
+    kind: StepKind,
+    key: &str,
+    o: &Object<K>,
+    field: &K,
+    a4: bool,
+) {
     let name = symbol(kind, key);
     let index_list = matches!(key, "kept" | "not_excited" | "not_observed" | "pivots")
         || super::steps_more::index_list(key);
     match o {
-        Object::Matrix(m) => matrix_latex(s, &name, m),
+        Object::Matrix(m) => matrix_latex(s, &name, m, a4),
         Object::Poly(p) => display_wrapped(s, &name, &poly_latex(p, "s")),
         Object::Factors(fs) => {
             let parts: Vec<String> = fs
@@ -218,7 +292,18 @@ fn object_latex<K: Field>(s: &mut String, kind: StepKind, key: &str, o: &Object<
         }
         Object::Polys(ps) => {
             let parts: Vec<String> = ps.iter().map(|p| poly_latex(p, "s")).collect();
-            let _ = writeln!(s, "\\[ {name}:\\ {} \\]", parts.join(",\\; "));
+            let one_line = parts.iter().map(|p| typeset_len(p) + 2).sum::<usize>() <= LINE_CHARS;
+            if !a4 || one_line {
+                let _ = writeln!(s, "\\[ {name}:\\ {} \\]", parts.join(",\\; "));
+            } else {
+                for (i, p) in parts.iter().enumerate() {
+                    display_wrapped(
+                        s,
+                        &format!("\\text{{({})}}\\ {name}", i + 1),
+                        &break_digits(p),
+                    );
+                }
+            }
         }
     }
 }
@@ -284,7 +369,7 @@ fn display_wrapped(s: &mut String, name: &str, body: &str) {
 }
 
 /// The sentence of a step in LaTeX (the objects follow it in display math).
-fn sentence_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
+pub(crate) fn sentence_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
     let th = theta_step(d, st.part)
         .and_then(|s| s.scalar("theta").map(|t| entry(&step_field(d, s), t)))
         .unwrap_or_default();
@@ -311,7 +396,7 @@ fn sentence_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
         StepKind::WeyrSegre => "The Weyr characteristic $w_k = \\dim\\ker N^k - \\dim\\ker N^{k-1}$ counts the Jordan blocks of size $\\ge k$; its conjugate partition (the Segre characteristic) lists the block sizes.".into(),
         StepKind::Chain if c("top") == 1 => format!("An eigenvector of $\\theta = {th}$: $v_1 \\in \\ker N$."),
         StepKind::Chain => format!(
-            "A chain of length {top} for $\\theta = {th}$, built top-down: $v_{top} \\in \\ker N^{top} \\setminus \\ker N^{below}$, then $v_{{j-1}} = N v_j$; the columns of $V$ are $v_1, \\dots, v_{top}$.",
+            "A chain of length {top} for $\\theta = {th}$, built top-down: $v_{top} \\in \\ker N^{top} \\setminus \\ker N^{below}$, then $v_{{j-1}} = N v_j$; the columns of $V$ are $v_1, \\dots, v_{top}$. The family (the free constants of the vehicle paper's eq.~30, 32): with the columns of $K$ a basis of $\\ker N$ ($N K = 0$, checked), $v_j + K c$ solves $N x = v_{{j-1}}$ for every $c$; the chain takes $c = 0$.",
             top = c("top"),
             below = c("top") - 1
         ),
@@ -347,10 +432,10 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
     let _ = writeln!(s, "{}\n", sentence_latex(d, st));
     let field = step_field(d, st);
     for (k, o) in &st.objects {
-        if transfer_latex(s, st, k) || super::steps_forms::flag(k) {
+        if transfer_latex(s, st, k, true) || super::steps_forms::flag(k) {
             continue;
         }
-        object_latex(s, st.kind, k, o, &field);
+        object_latex(s, st.kind, k, o, &field, true);
     }
     let (_, id) = identity(st.kind);
     if let Some(h) = st.holds {
@@ -399,7 +484,12 @@ pub fn derivation_latex<K: Field>(d: &Derivation<K>, standalone: bool) -> String
 }
 
 /// The transfer entries as one matrix of fractions; `true` when `key` was written here.
-fn transfer_latex<K: Field>(out: &mut String, st: &Step<K>, key: &str) -> bool {
+pub(crate) fn transfer_latex<K: Field>(
+    out: &mut String,
+    st: &Step<K>,
+    key: &str,
+    a4: bool,
+) -> bool {
     if st.kind != StepKind::TransferEntries {
         return false;
     }
@@ -411,6 +501,31 @@ fn transfer_latex<K: Field>(out: &mut String, st: &Step<K>, key: &str) -> bool {
     };
     let p = st.count("p").unwrap_or(1).max(1);
     let m = num.len() / p;
+    let row_len = |i: usize| -> usize {
+        (0..m)
+            .map(|j| {
+                let (n, d) = (&num[i * m + j], &den[i * m + j]);
+                typeset_len(&poly_latex(n, "s")).max(typeset_len(&poly_latex(d, "s"))) + 2
+            })
+            .sum()
+    };
+    if a4 && (0..p).any(|i| row_len(i) > LINE_CHARS) {
+        // one entry at a time, numerator and denominator each wrapped over lines
+        for i in 0..p {
+            for j in 0..m {
+                let (n, d) = (&num[i * m + j], &den[i * m + j]);
+                let ij = format!("{{{},{}}}", i + 1, j + 1);
+                if d.deg() == 0 {
+                    display_wrapped(out, &format!("G_{ij}(s)"), &poly_latex(n, "s"));
+                    continue;
+                }
+                let _ = writeln!(out, "\\[ G_{ij}(s) = \\frac{{n_{ij}(s)}}{{d_{ij}(s)}} \\]");
+                display_wrapped(out, &format!("n_{ij}(s)"), &poly_latex(n, "s"));
+                display_wrapped(out, &format!("d_{ij}(s)"), &poly_latex(d, "s"));
+            }
+        }
+        return true;
+    }
     out.push_str("\\[ G(s) = \\begin{bmatrix}\n");
     for i in 0..p {
         let row: Vec<String> = (0..m)

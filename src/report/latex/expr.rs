@@ -106,7 +106,7 @@ const GREEK: [&str; 24] = [
 
 /// An identifier: `i` as the imaginary unit, Greek names as letters, a trailing number or
 /// `_part` as a subscript (`b7` → `b_{7}`), other multi-letter names in italic.
-pub(super) fn ident(name: &str) -> String {
+pub fn ident(name: &str) -> String {
     if name == "i" {
         return "\\mathrm{i}".into();
     }

@@ -9,8 +9,10 @@
 //! names) are escaped ([`super::escape`]), so none can end a `%` comment or a math group.
 
 mod expr;
+mod math;
 
-pub use expr::to_math;
+pub use expr::{ident, to_math};
+pub use math::math;
 
 use super::escape::{latex_comment, latex_text};
 use super::{MatrixOut, Report, Value};
