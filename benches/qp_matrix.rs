@@ -6,7 +6,7 @@
 //! - `dense N charpoly|det|rref`: dense N x N (N = 6, 7, 8), entries linear in a, b, c
 //!   (goal: >= 10x faster than SymPy's DomainMatrix); `dense N charpoly display`: the
 //!   characteristic polynomial's text (what `linalg charpoly` prints);
-//! - `diag10 tf|minreal|scb|zeros|jordan|minreal rosenbrock|minreal ho-kalman`:
+//! - `diag10 tf|minreal|scb|zeros|jordan|minreal rosenbrock|minreal ho-kalman|mnf`:
 //!   A = diag(p0..p9), B = ones, C = ones (goal <= 1 s);
 //! - `chain10 tf|minreal`: the 10-mass chain in symbolic m, k, c (goal <= 2 s);
 //! - `file dense 8 charpoly|det|rref load|execute|render`: the command line's phases on the
@@ -30,6 +30,7 @@ use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization::{MinrealMethod, minimal};
 use exactlti::rng::SplitMix64;
+use exactlti::structure::mechanical::{DEFAULT_MAX_CANDIDATES, mechanical_normal_form_in};
 use exactlti::structure::scb::scb;
 use exactlti::structure::zeros::invariant_zeros;
 use std::fmt::Write as _;
@@ -89,6 +90,7 @@ fn main() {
         ("diag10 jordan", 4),
         ("diag10 minreal rosenbrock", 5),
         ("diag10 minreal ho-kalman", 6),
+        ("diag10 mnf", 7),
     ] {
         if !selected(label) {
             continue;
@@ -100,6 +102,10 @@ fn main() {
             4 => jordan_params(&s.a).unwrap().eigenvalues.len(),
             5 => minimal(&s, MinrealMethod::Rosenbrock).unwrap().order,
             6 => minimal(&s, MinrealMethod::HoKalman).unwrap().order,
+            7 => mechanical_normal_form_in(None, &s.a, &s.b, &s.c, &s.d, DEFAULT_MAX_CANDIDATES)
+                .unwrap()
+                .form
+                .map_or(0, |f| f.t.nrows()),
             _ => invariant_zeros(&s.a, &s.b, &s.c, &s.d)
                 .unwrap()
                 .polynomial

@@ -89,6 +89,8 @@ mod matrix_rational;
 mod mechanical;
 #[path = "memory_budget.rs"]
 mod memory_budget;
+#[path = "mnf_scale.rs"]
+mod mnf_scale;
 #[path = "mpoly.rs"]
 mod mpoly;
 #[path = "mpoly_gcd.rs"]

@@ -126,7 +126,7 @@ pub fn jordan_outcome(a: &Matrix<RatFuncField>) -> Result<Outcome> {
 /// `mnf FILE` over $\mathbb{Q}(p)$: [`crate::structure::mechanical::mechanical_normal_form_in`]
 /// on $(A, B, C, D)$ in a fresh field. The report is the rational one with the theorem's
 /// checks under `existence_checks` and `conditions` the polynomials in the parameters the
-/// result assumes nonzero (pivots and divisions, $\det T$); `verified`: the exact check of
+/// result assumes nonzero (pivots and divisions, the denominators of $T$ and $T^{-1}$); `verified`: the exact check of
 /// the form (similarity, Markov parameters) as rational functions.
 ///
 /// # Errors
@@ -150,8 +150,11 @@ pub fn mnf_outcome(
         &d,
         crate::structure::mechanical::DEFAULT_MAX_CANDIDATES,
     )?;
+    // t is invertible where t and t^-1 (checked: t^-1 t = I) are both defined
     if let Some(f) = &m.form {
-        k.record_condition(f.t.det()?.num());
+        for x in f.t.as_slice().iter().chain(f.t_inv.as_slice()) {
+            k.record_condition(x.den());
+        }
     }
     let conds = k.conditions_strings()?;
     let mut r = exact_only(m.report());

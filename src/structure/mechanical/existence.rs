@@ -244,24 +244,15 @@ pub fn uncontrollable_multiplicity<K: Field>(
     b: &Matrix<K>,
 ) -> (usize, Option<Poly<K>>) {
     let n = a.nrows();
-    // Krylov basis of the reachable subspace R.
-    let mut basis = b.column_space();
-    let mut block = basis.clone();
-    while block.ncols() > 0 && basis.ncols() < n {
-        let next = a * &block;
-        let joined = basis.hstack(&next).expect("same rows");
-        let (_, piv) = joined.rref();
-        let new: Vec<usize> = piv.into_iter().filter(|&c| c >= basis.ncols()).collect();
-        block = joined.select_cols(&new);
-        basis = joined.select_cols(
-            &(0..basis.ncols())
-                .chain(new.iter().copied())
-                .collect::<Vec<_>>(),
-        );
-    }
-    if basis.ncols() == n {
+    // Krylov basis of the reachable subspace R: the pivot columns of [B, AB, ..., A^(n-1) B]
+    // (one pivot computation; no reduced form of the growing Krylov matrices, whose entries
+    // are large for a diagonal A in symbols)
+    let krylov = crate::realization::controllability_matrix(a, b);
+    let piv = krylov.pivots();
+    if piv.len() == n {
         return (0, None);
     }
+    let basis = krylov.select_cols(&piv);
     // R^perp as rows Wl (u x n) is A^T-invariant: Wl A = M Wl.
     let wl = basis.left_nullspace();
     let rhs = (&wl * a).transpose();

@@ -33,6 +33,7 @@
 //! | [`transform::transformation_from_x`] | $X$ | $T = [X^T; X^T A]$ (eq. 7) |
 //! | [`unify::unifying_transformation`] | $\hat T$ | $W$ of sec. 2.2 |
 
+pub mod companion;
 pub mod descriptor;
 pub mod existence;
 pub mod steps;
@@ -68,6 +69,9 @@ pub struct MechanicalForm<K: Field> {
     pub feedthrough: Matrix<K>,
     /// The state map: `z = t x` (for a descriptor system `t` $= T F$).
     pub t: Matrix<K>,
+    /// $t^{-1}$ (the exact checks are products with it: $t^{-1} t = I$, $t^{-1} \tilde A =
+    /// A t^{-1}$, ...).
+    pub t_inv: Matrix<K>,
     /// Descriptor systems only: the row transformation $T$ of eq. 16 ($\tilde A\,t = T A$).
     pub left: Option<Matrix<K>>,
     /// $\tilde A = \begin{bmatrix} 0 & I \\ -K & -D_q \end{bmatrix}$.
@@ -211,6 +215,8 @@ pub fn mechanical_normal_form_recorded<K: Field>(
         None => existence::decide_existence_parts(a, &b1),
         Some(f) => descriptor::decide_existence_descriptor(f, a, &b1)?,
     };
+    // (A, B1) controllable: no uncontrollable part (geometric multiplicity 0)
+    let controllable = parts.geo == Some(0);
     if let Some(r) = rec.as_deref_mut() {
         steps::existence(r, &existence, parts, f.is_some());
     }
@@ -251,6 +257,16 @@ pub fn mechanical_normal_form_recorded<K: Field>(
     if !out.exists {
         return Ok(out);
     }
+    // one controllable input, no steps asked: the interleaved controller form (no search)
+    if f.is_none()
+        && rec.is_none()
+        && controllable
+        && !transform::identity_solves(f, a, &b1)
+        && let Some((t, t_inv, a_tilde)) = companion::interleaved_controller_form(a, &b1)?
+    {
+        out.form = Some(form_from_parts([a, b, c, d], &r_mat, (t, t_inv, a_tilde))?);
+        return finish(out);
+    }
     let (family, l) = transform::transformation_family_with_l(f, a, &b1);
     let family = family.ok_or_else(|| {
         Error::Verification("the conditions hold but eq. 15 has no solution".into())
@@ -283,6 +299,48 @@ pub fn mechanical_normal_form_recorded<K: Field>(
         ));
     }
     Ok(out)
+}
+
+/// Checks the form just built ([`MechanicalNormalForm::verify`]).
+fn finish<K: Field>(mut out: MechanicalNormalForm<K>) -> Result<MechanicalNormalForm<K>> {
+    out.verified = out.verify();
+    if !out.verified {
+        return Err(Error::Verification(
+            "the mechanical normal form does not reproduce the system".into(),
+        ));
+    }
+    Ok(out)
+}
+
+/// The form from a known $T$, $T^{-1}$ and $\tilde A = T A T^{-1}$ with $T B_1 = e_n$
+/// ([`companion`]): $\tilde B = [0; R]$ for $B = B_1 R$, $\tilde C = C T^{-1}$ (no inverse,
+/// no product with $T$ on the left).
+fn form_from_parts<K: Field>(
+    [a, b, c, d]: [&Matrix<K>; 4],
+    r_mat: &Matrix<K>,
+    (t, t_inv, a_tilde): (Matrix<K>, Matrix<K>, Matrix<K>),
+) -> Result<MechanicalForm<K>> {
+    let n = a.nrows();
+    let h = n / 2;
+    let p = b.ncols();
+    let k = a.field().clone();
+    let mut b_tilde = Matrix::zeros(k.clone(), n, p);
+    b_tilde.set_block(n - r_mat.nrows(), 0, r_mat);
+    Ok(MechanicalForm {
+        mass: Matrix::identity(k, h),
+        damping: -&a_tilde.submatrix(h, n, h, n),
+        stiffness: -&a_tilde.submatrix(h, n, 0, h),
+        input: b_tilde.submatrix(h, n, 0, p),
+        output: c.try_mul(&t_inv)?,
+        feedthrough: d.clone(),
+        t,
+        t_inv,
+        left: None,
+        a_tilde,
+        b_tilde,
+        alpha: vec![],
+        candidates: 0,
+    })
 }
 
 /// `(B1, R)` with `B = B1 R`: `B1` the pivot columns of `B` (full column rank `r`), `R` the
@@ -323,6 +381,7 @@ fn build_form<K: Field>(
         output,
         feedthrough: d.clone(),
         t: state_map,
+        t_inv: s_inv,
         left,
         a_tilde,
         b_tilde,
@@ -332,12 +391,17 @@ fn build_form<K: Field>(
 }
 
 impl<K: Field> MechanicalNormalForm<K> {
-    /// Exact check of the result: `t` invertible; $\tilde A = [[0, I], [-K, -D_q]]$ with
-    /// $M = I$; $\tilde B = [0; W]$, $W = [0; R]$ with $B = B_1 R$ ([`input_compression`]; $R = I_p$ for full column rank); $\tilde A\,t = T A$, $\tilde B = T B$,
-    /// $\tilde C\,t = C$ (with $T = t$, or the row transformation and $T F = t$ for a descriptor
-    /// system); and equal Markov parameters $\tilde C \tilde A^j \tilde B = C (F^{-1}A)^j F^{-1} B$
-    /// for $j < 2n$ (computed with solves, not $F^{-1}$) and $\tilde D = D$.
-    /// `false` when no form exists.
+    /// Exact check of the result: $t^{-1} t = I$ (so `t` is invertible and `t_inv` its
+    /// inverse); $\tilde A = [[0, I], [-K, -D_q]]$ with $M = I$; $\tilde B = [0; W]$,
+    /// $W = [0; R]$ with $B = B_1 R$ ([`input_compression`]; $R = I_p$ for full column rank);
+    /// $t^{-1} \tilde A = A t^{-1}$, $t^{-1} \tilde B = B$, $\tilde C = C t^{-1}$ (a
+    /// descriptor system: $\tilde A\,t = T A$, $\tilde B = T B$, $\tilde C\,t = C$ with the row
+    /// transformation $T$, $T F = t$, and then equal Markov parameters
+    /// $\tilde C \tilde A^j \tilde B = C (F^{-1}A)^j F^{-1} B$ for $j < 2n$, computed with
+    /// solves, not $F^{-1}$; for a standard system they follow from the similarity) and
+    /// $\tilde D = D$. Products with $t^{-1}$ rather than with $t$
+    /// on the left: the columns of $t$ may carry different denominators whose common multiple
+    /// is large (a diagonal $A$ in symbols), its columns one each. `false` when no form exists.
     pub fn verify(&self) -> bool {
         let Some(m) = &self.form else { return false };
         let o = &self.original;
@@ -345,7 +409,8 @@ impl<K: Field> MechanicalNormalForm<K> {
         let n = o.a.nrows();
         let h = n / 2;
         let p = o.b.ncols();
-        if k.is_zero(&m.t.det().expect("square")) || !m.mass.is_identity() {
+        // t^-1 t = I: t is invertible and t_inv its inverse (square matrices)
+        if !(&m.t_inv * &m.t).is_identity() || !m.mass.is_identity() {
             return false;
         }
         let id = Matrix::identity(k.clone(), h);
@@ -369,16 +434,22 @@ impl<K: Field> MechanicalNormalForm<K> {
         if m.a_tilde != expected_a || m.b_tilde != expected_b || m.input != w {
             return false;
         }
-        let row_t = m.left.as_ref().unwrap_or(&m.t);
-        if let Some(f) = &o.f
-            && row_t * f != m.t
-        {
+        if m.feedthrough != o.d {
             return false;
         }
-        if &m.a_tilde * &m.t != row_t * &o.a
+        let Some(f) = &o.f else {
+            // t^-1 t = I, t^-1 A~ = A t^-1, t^-1 B~ = B, C~ = C t^-1: a similarity, so
+            // C~ A~^j B~ = C A^j B for every j (the Markov parameters agree by the identity;
+            // forming the powers would only grow the entries)
+            return &m.t_inv * &m.a_tilde == &o.a * &m.t_inv
+                && &m.t_inv * &m.b_tilde == o.b
+                && m.output == &o.c * &m.t_inv;
+        };
+        let row_t = m.left.as_ref().unwrap_or(&m.t);
+        if row_t * f != m.t
+            || &m.a_tilde * &m.t != row_t * &o.a
             || m.b_tilde != row_t * &o.b
             || &m.output * &m.t != o.c
-            || m.feedthrough != o.d
         {
             return false;
         }
