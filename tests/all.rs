@@ -27,6 +27,8 @@ mod cli_mpoly;
 mod cli_options;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
+#[path = "connect_file.rs"]
+mod connect_file;
 #[path = "critical_fields.rs"]
 mod critical_fields;
 #[path = "ctrb_structure.rs"]
@@ -37,6 +39,8 @@ mod dcgain;
 mod descriptor_class;
 #[path = "discrete.rs"]
 mod discrete;
+#[path = "discrete_text.rs"]
+mod discrete_text;
 #[path = "display.rs"]
 mod display;
 #[path = "everyday.rs"]

@@ -278,8 +278,9 @@ class StateSpace(Operations, ControlOps, SystemOps):
         return ModalTable(self._core.modes(max_seconds))
 
     def tf(self, max_seconds=None):
-        """Exact transfer matrix ``G(s) = C (sI - A)^-1 B + D`` (entries in lowest terms)."""
-        return TransferMatrix(self._core.tf(max_seconds))
+        """Exact transfer matrix ``G(s) = C (sI - A)^-1 B + D`` (entries in lowest terms);
+        ``G(z)``, written in ``z``, for a discrete-time system."""
+        return TransferMatrix(self._core.tf(max_seconds), self.dt)
 
     def markov(self, count, max_seconds=None):
         """Markov parameters ``C A^k B`` for ``k = 0 .. count-1``."""
@@ -1055,8 +1056,11 @@ class TransferMatrix:
     (2, True, Conditions(m != 0))
     """
 
-    def __init__(self, d):
+    def __init__(self, d, dt=None):
         self.params = tuple(d.get("params", ()))
+        #: ``s``, or ``z`` for a discrete-time system (sample time ``dt``)
+        self.variable = d.get("variable", "s")
+        self.dt = dt or 0
         self.entries = [
             [RationalFunction(n, den, self.params) for (n, den) in row] for row in d["entries"]
         ]
@@ -1078,7 +1082,7 @@ class TransferMatrix:
         i, j = ij
         return self.entries[i][j]
 
-    def to_sympy(self, var="s"):
+    def to_sympy(self, var=None):
         import sympy
 
         return sympy.Matrix([[h.to_sympy(var) for h in row] for row in self.entries])
@@ -1094,6 +1098,8 @@ class TransferMatrix:
 
         num = [[coeffs(h.num) for h in row] for row in self.entries]
         den = [[coeffs(h.den) for h in row] for row in self.entries]
+        if self.dt:
+            return control.tf(num, den, float(self.dt))
         return control.tf(num, den)
 
     def __repr__(self):
