@@ -13,6 +13,8 @@ mod algebraic;
 mod api;
 #[path = "api_fields.rs"]
 mod api_fields;
+#[path = "balred.rs"]
+mod balred;
 #[path = "bicycle.rs"]
 mod bicycle;
 #[path = "cli.rs"]

@@ -320,6 +320,26 @@ class StateSpace(Operations, ControlOps, SystemOps):
                     out[i, j, k] = complex(re, im)
         return out
 
+    def balred(self, order):
+        """Balanced truncation to ``order`` states on the float path (python-control's
+        ``balred(sys, order)``, square-root method): a dict with numpy ``A``, ``B``,
+        ``C``, ``D``, the ``hankel_singular_values`` (decreasing) and ``error_bound``
+        (``2 sum`` of the discarded ones, a bound on the H-infinity error). Needs a
+        stable continuous-time system."""
+        import numpy as np
+
+        if self.isdtime():
+            raise ValueError("balred: a continuous-time system is needed (this one has dt)")
+        d = self._core.balred(int(order))
+        out = {k: np.array(d[k], dtype=float).reshape(len(d[k]), -1) for k in "ABCD"}
+        n = int(order)
+        out["A"] = out["A"].reshape(n, n)
+        out["B"] = out["B"].reshape(n, self.ninputs)
+        out["C"] = out["C"].reshape(self.noutputs, n)
+        out["hankel_singular_values"] = list(d["hankel_singular_values"])
+        out["error_bound"] = d["error_bound"]
+        return out
+
     def to_control(self):
         """The system as a ``control.StateSpace`` (floating point), with its sample time
         ``dt`` and signal names."""

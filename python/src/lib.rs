@@ -482,6 +482,17 @@ impl System {
         .to_py(py)
     }
 
+    /// Balanced truncation of order `order` on the float path (square-root method):
+    /// `A`, `B`, `C`, `D` (float rows), `hankel_singular_values`, `error_bound`.
+    fn balred(&self, py: Python<'_>, order: usize) -> PyResult<Py<PyAny>> {
+        let s = self.api.clone();
+        run(py, None, move || {
+            visit!(s => FResult<Out>, [order: usize], |f, t| balred_typed(t, order),
+                   sym |f, t| Err(symbolic::needs_numbers("balanced truncation", &f.ground.to_string())))
+        })?
+        .to_py(py)
+    }
+
     /// The sample time of a discrete-time system as exact text (`None`: continuous).
     #[getter]
     fn dt(&self) -> Option<String> {

@@ -145,6 +145,36 @@ pub(crate) fn tf_parts<K: Field>(
     Ok((kv, min.system.a))
 }
 
+/// Balanced truncation of order `order` (float path, [`exactlti::float::balred`]).
+pub(crate) fn balred_typed<K: Field>(t: &Typed<K>, order: usize) -> FResult<Out> {
+    let s = &t.ss;
+    let m = [
+        to_dmatrix(&s.a)?,
+        to_dmatrix(&s.b)?,
+        to_dmatrix(&s.c)?,
+        to_dmatrix(&s.d)?,
+    ];
+    let r = exactlti::float::balred([&m[0], &m[1], &m[2], &m[3]], order)?;
+    let rows = |x: &nalgebra::DMatrix<f64>| {
+        Out::List(
+            (0..x.nrows())
+                .map(|i| Out::List((0..x.ncols()).map(|j| Out::Float(x[(i, j)])).collect()))
+                .collect(),
+        )
+    };
+    Ok(Out::Dict(vec![
+        ("A", rows(&r.a)),
+        ("B", rows(&r.b)),
+        ("C", rows(&r.c)),
+        ("D", rows(&r.d)),
+        (
+            "hankel_singular_values",
+            Out::List(r.hankel_singular_values.iter().map(|x| Out::Float(*x)).collect()),
+        ),
+        ("error_bound", Out::Float(r.error_bound)),
+    ]))
+}
+
 pub(crate) fn to_dmatrix<K: Field>(m: &Matrix<K>) -> FResult<nalgebra::DMatrix<f64>> {
     let a = m.to_approx_complex();
     if a.iter().flatten().any(|(_, im)| *im != 0.0) {

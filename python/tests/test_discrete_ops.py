@@ -195,3 +195,24 @@ def test_discrete_tf_to_control_keeps_dt():
     ref = control.ss2tf(G.to_control())
     w = np.array([0.3, 1.0, 10.0])
     np.testing.assert_allclose(T(np.exp(1j * w * 0.1)), ref(np.exp(1j * w * 0.1)), rtol=1e-12)
+
+
+def test_balred_against_python_control():
+    control = pytest.importorskip("control")
+    pytest.importorskip("slycot")
+    A = [[-1, 1, 0, 0], [0, -2, 1, 0], [0, 0, -3, 1], [0, 0, 0, -4]]
+    G = exactlti.ss(A, [[0], [1], [0], [1]], [[1, 1, 0, 0]], [[0]])
+    r = G.balred(2)
+    ref = control.balred(G.to_control(), 2)
+    np.testing.assert_allclose(
+        r["hankel_singular_values"], control.hsvd(G.to_control()), rtol=1e-8
+    )
+    mine = control.ss(r["A"], r["B"], r["C"], r["D"])
+    w = np.logspace(-2, 2, 40)
+    np.testing.assert_allclose(mine(1j * w), ref(1j * w), rtol=1e-7, atol=1e-12)
+    # the H-infinity error is within the bound 2 * (sigma_3 + sigma_4)
+    full = G.to_control()
+    err = np.max(np.abs(full(1j * w) - mine(1j * w)))
+    assert err <= r["error_bound"] * (1 + 1e-9)
+    with pytest.raises(ValueError):
+        exactlti.ss([[1]], [[1]], [[1]], [[0]]).balred(1)
