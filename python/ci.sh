@@ -14,7 +14,7 @@ if [ ! -x "$VENV/bin/python" ]; then
     "$PY" -m venv "$VENV"
 fi
 "$VENV/bin/python" -m pip install -q --upgrade pip >/dev/null 2>&1 || true
-"$VENV/bin/python" -m pip install -q pytest sympy numpy control
+"$VENV/bin/python" -m pip install -q pytest sympy numpy control slycot
 "$VENV/bin/python" -m pip install -q --force-reinstall --no-deps "$ROOT/python"
 echo "python package built and installed in $(( $(date +%s) - start )) s"
 # run from the repository root so that `import exactlti` finds the installed package,

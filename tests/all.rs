@@ -13,6 +13,8 @@ mod algebraic;
 mod api;
 #[path = "api_fields.rs"]
 mod api_fields;
+#[path = "balred.rs"]
+mod balred;
 #[path = "bicycle.rs"]
 mod bicycle;
 #[path = "cli.rs"]
@@ -27,6 +29,8 @@ mod cli_mpoly;
 mod cli_options;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
+#[path = "connect_file.rs"]
+mod connect_file;
 #[path = "critical_fields.rs"]
 mod critical_fields;
 #[path = "ctrb_structure.rs"]
@@ -37,6 +41,8 @@ mod dcgain;
 mod descriptor_class;
 #[path = "discrete.rs"]
 mod discrete;
+#[path = "discrete_text.rs"]
+mod discrete_text;
 #[path = "display.rs"]
 mod display;
 #[path = "everyday.rs"]

@@ -190,7 +190,7 @@ fn analyze_is_a_summary_first_and_full_has_everything() {
         "field QQ, order 20",
         "McMillan degree 8",
         "chi(s) = s^20 + 20*s^18",
-        "stability: marginally stable",
+        "stability (exact): marginally stable",
         "Jordan structure: diagonalizable",
         "zero polynomial z(s) = s^14 + 14*s^12",
         "--full",

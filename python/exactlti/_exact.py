@@ -116,6 +116,8 @@ class Polynomial:
         #: exact text of each coefficient (low degree first) when they are not rational
         self.exact_coeffs = data.get("coeffs")
         self.params = tuple(params)
+        #: the variable of the text: ``s``, or ``z`` for a discrete-time system
+        self.var = data.get("var", "s")
 
     @property
     def degree(self):
@@ -125,9 +127,11 @@ class Polynomial:
             return len(self.exact_coeffs) - 1
         raise ValueError("the coefficients are not rational: %s" % self.text)
 
-    def to_sympy(self, var="s"):
-        """The polynomial as a SymPy expression in ``var`` (a name or a Symbol)."""
+    def to_sympy(self, var=None):
+        """The polynomial as a SymPy expression in ``var`` (a name or a Symbol; by default
+        its own variable ``s``, or ``z`` in discrete time)."""
         sympy = _sympy()
+        var = self.var if var is None else var
         s = sympy.Symbol(var) if isinstance(var, str) else var
         if self.coeffs is None:
             names = _sympy_names(sympy, self.params)
@@ -135,7 +139,7 @@ class Polynomial:
                 return sympy.Add(
                     *[_sympify(sympy, c, names) * s**k for k, c in enumerate(self.exact_coeffs)]
                 )
-            names["s"] = s
+            names[self.var] = s
             return _sympify(sympy, self.text, names)
         return sum(
             (_sympy_rational(sympy, c.numerator, c.denominator) * s**k for k, c in enumerate(self.coeffs)),
@@ -433,15 +437,17 @@ class Matrix:
 
 
 class RationalFunction:
-    """One entry ``num(s)/den(s)`` of a transfer matrix (exact coefficients)."""
+    """One entry ``num(s)/den(s)`` of a transfer matrix (exact coefficients; ``z`` in
+    place of ``s`` for a discrete-time system)."""
 
     def __init__(self, num, den, params=()):
         self.num = Polynomial(num, params)
         self.den = Polynomial(den, params)
 
-    def to_sympy(self, var="s"):
+    def to_sympy(self, var=None):
         """``num/den`` in SymPy (with symbolic parameters: cancelled to one fraction of
-        polynomials in ``var`` and the parameters)."""
+        polynomials in ``var`` and the parameters); ``var`` defaults to ``s`` (``z`` in
+        discrete time)."""
         h = self.num.to_sympy(var) / self.den.to_sympy(var)
         if self.num.params:
             h = _sympy().cancel(h)

@@ -281,8 +281,9 @@ class StateSpace(Operations, ControlOps, SystemOps, Rendered):
         return ModalTable(self._core.modes(max_seconds))
 
     def tf(self, max_seconds=None):
-        """Exact transfer matrix ``G(s) = C (sI - A)^-1 B + D`` (entries in lowest terms)."""
-        r = TransferMatrix(self._core.tf(max_seconds))
+        """Exact transfer matrix ``G(s) = C (sI - A)^-1 B + D`` (entries in lowest terms);
+        ``G(z)``, written in ``z``, for a discrete-time system."""
+        r = TransferMatrix(self._core.tf(max_seconds), self.dt)
         r._source = (self, "tf")
         return r
 
@@ -333,6 +334,26 @@ class StateSpace(Operations, ControlOps, SystemOps, Rendered):
             for i, row in enumerate(m):
                 for j, (re, im) in enumerate(row):
                     out[i, j, k] = complex(re, im)
+        return out
+
+    def balred(self, order):
+        """Balanced truncation to ``order`` states on the float path (python-control's
+        ``balred(sys, order)``, square-root method): a dict with numpy ``A``, ``B``,
+        ``C``, ``D``, the ``hankel_singular_values`` (decreasing) and ``error_bound``
+        (``2 sum`` of the discarded ones, a bound on the H-infinity error). Needs a
+        stable continuous-time system."""
+        import numpy as np
+
+        if self.isdtime():
+            raise ValueError("balred: a continuous-time system is needed (this one has dt)")
+        d = self._core.balred(int(order))
+        out = {k: np.array(d[k], dtype=float).reshape(len(d[k]), -1) for k in "ABCD"}
+        n = int(order)
+        out["A"] = out["A"].reshape(n, n)
+        out["B"] = out["B"].reshape(n, self.ninputs)
+        out["C"] = out["C"].reshape(self.noutputs, n)
+        out["hankel_singular_values"] = list(d["hankel_singular_values"])
+        out["error_bound"] = d["error_bound"]
         return out
 
     def to_control(self):
@@ -1047,8 +1068,11 @@ class TransferMatrix(Rendered):
     (2, True, Conditions(m != 0))
     """
 
-    def __init__(self, d):
+    def __init__(self, d, dt=None):
         self.params = tuple(d.get("params", ()))
+        #: ``s``, or ``z`` for a discrete-time system (sample time ``dt``)
+        self.variable = d.get("variable", "s")
+        self.dt = dt or 0
         self.entries = [
             [RationalFunction(n, den, self.params) for (n, den) in row] for row in d["entries"]
         ]
@@ -1070,7 +1094,7 @@ class TransferMatrix(Rendered):
         i, j = ij
         return self.entries[i][j]
 
-    def to_sympy(self, var="s"):
+    def to_sympy(self, var=None):
         import sympy
 
         return sympy.Matrix([[h.to_sympy(var) for h in row] for row in self.entries])
@@ -1086,6 +1110,8 @@ class TransferMatrix(Rendered):
 
         num = [[coeffs(h.num) for h in row] for row in self.entries]
         den = [[coeffs(h.den) for h in row] for row in self.entries]
+        if self.dt:
+            return control.tf(num, den, float(self.dt))
         return control.tf(num, den)
 
     def __repr__(self):

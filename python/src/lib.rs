@@ -16,6 +16,7 @@ use exactlti::field::Q;
 use exactlti::io::TypedSystem as Typed;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization;
+use exactlti::system::discrete::stability::Domain;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyTimeoutError, PyValueError};
 use pyo3::prelude::*;
@@ -160,6 +161,11 @@ use out::*;
 /// Runs generic code on a system over its concrete ground field through the library's one
 /// dispatch ([`exactlti::api::System::run`]): `$num` for every field, `$sym` (when given)
 /// over $\mathbb{Q}(p_1, \dots, p_k)$. The names in `[...]` are moved into the visitor.
+/// The time domain of a system file (discrete when it has a sample time `dt`).
+fn domain_of(f: &exactlti::io::SystemFile) -> Domain {
+    Domain::of(f.signals.dt.as_ref())
+}
+
 macro_rules! visit {
     ($s:expr => $out:ty, [$($v:ident : $ty:ty),*], |$f:ident, $t:ident| $num:expr) => {{
         struct V { $($v: $ty),* }
@@ -326,7 +332,7 @@ impl System {
     fn zeros(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
         run(py, max_seconds, move || {
-            visit!(s => FResult<Out>, [], |f, t| zeros_typed(t), sym |f, t| symbolic::zeros(t))
+            visit!(s => FResult<Out>, [], |f, t| zeros_typed(t, domain_of(f)), sym |f, t| symbolic::zeros(t, domain_of(f)))
         })?
         .to_py(py)
     }
@@ -405,7 +411,7 @@ impl System {
         run(
             py,
             max_seconds,
-            move || visit!(s => FResult<Out>, [], |f, t| tf_typed(t), sym |f, t| symbolic::tf(t)),
+            move || visit!(s => FResult<Out>, [], |f, t| tf_typed(t, domain_of(f)), sym |f, t| symbolic::tf(t, domain_of(f))),
         )?
         .to_py(py)
     }
@@ -516,6 +522,17 @@ impl System {
         run(py, None, move || {
             visit!(s => FResult<Out>, [omega: Vec<f64>], |f, t| freqresp_typed(t, &omega, f.signals.dt.as_ref().map(exactlti::field::rational_to_f64)),
                    sym |f, t| Err(symbolic::needs_numbers("the frequency response", &f.ground.to_string())))
+        })?
+        .to_py(py)
+    }
+
+    /// Balanced truncation of order `order` on the float path (square-root method):
+    /// `A`, `B`, `C`, `D` (float rows), `hankel_singular_values`, `error_bound`.
+    fn balred(&self, py: Python<'_>, order: usize) -> PyResult<Py<PyAny>> {
+        let s = self.api.clone();
+        run(py, None, move || {
+            visit!(s => FResult<Out>, [order: usize], |f, t| balred_typed(t, order),
+                   sym |f, t| Err(symbolic::needs_numbers("balanced truncation", &f.ground.to_string())))
         })?
         .to_py(py)
     }

@@ -7,6 +7,7 @@ use exactlti::io::TypedSystem as Typed;
 use exactlti::matrix::Matrix;
 use exactlti::realization::{self, MinrealMethod};
 use exactlti::system::StateSpace;
+use exactlti::system::discrete::stability::Domain;
 
 pub(crate) fn typed_system<K: Field>(t: &Typed<K>) -> Out {
     let s = &t.ss;
@@ -82,7 +83,7 @@ pub(crate) fn scb_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
     ]))
 }
 
-pub(crate) fn zeros_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
+pub(crate) fn zeros_typed<K: Field>(t: &Typed<K>, domain: Domain) -> FResult<Out> {
     let s = &t.ss;
     let z = exactlti::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)?;
     let rat = poly_q(&z.polynomial);
@@ -97,11 +98,11 @@ pub(crate) fn zeros_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
         None => Out::None,
     };
     Ok(Out::Dict(vec![
-        ("polynomial", poly(&z.polynomial)),
+        ("polynomial", poly_var(&z.polynomial, domain.var())),
         ("normal_rank", usize_out(z.normal_rank)),
         ("count", usize_out(z.count())),
         ("roots", roots),
-        ("report", report(&z.report())),
+        ("report", report(&z.report_in(domain))),
     ]))
 }
 
@@ -109,13 +110,17 @@ pub(crate) fn zeros_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
 /// degree (the order of a verified minimal realization) and `verified`: every entry's
 /// expansion at infinity equals `D, CB, CAB, ...` ($2n + 1$ terms) and the minimal
 /// realization's checks held.
-pub(crate) fn tf_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
-    let (kv, _) = tf_parts(&t.ss)?;
+pub(crate) fn tf_typed<K: Field>(t: &Typed<K>, domain: Domain) -> FResult<Out> {
+    let (kv, _) = tf_parts(&t.ss, domain)?;
     Ok(Out::Dict(kv))
 }
 
 /// [`tf_typed`]'s items and the minimal realization's `A` (for the pole polynomial).
-pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>) -> FResult<(Items, Matrix<K>)> {
+pub(crate) fn tf_parts<K: Field>(
+    s: &StateSpace<K>,
+    domain: Domain,
+) -> FResult<(Items, Matrix<K>)> {
+    let var = domain.var();
     let g = s.transfer_matrix()?;
     let min = realization::minimal(s, MinrealMethod::Kalman)?;
     let verified = min.verified && g.matches_markov(s);
@@ -125,7 +130,7 @@ pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>) -> FResult<(Items, Matrix<K>
             .map(|row| {
                 Out::List(
                     row.iter()
-                        .map(|h| Out::Tuple(vec![poly(&h.num), poly(&h.den)]))
+                        .map(|h| Out::Tuple(vec![poly_var(&h.num, var), poly_var(&h.den, var)]))
                         .collect(),
                 )
             })
@@ -133,10 +138,41 @@ pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>) -> FResult<(Items, Matrix<K>
     );
     let kv = vec![
         ("entries", entries),
+        ("variable", Out::Str(var.to_string())),
         ("mcmillan_degree", usize_out(min.order)),
         ("verified", Out::Bool(verified)),
     ];
     Ok((kv, min.system.a))
+}
+
+/// Balanced truncation of order `order` (float path, [`exactlti::float::balred`]).
+pub(crate) fn balred_typed<K: Field>(t: &Typed<K>, order: usize) -> FResult<Out> {
+    let s = &t.ss;
+    let m = [
+        to_dmatrix(&s.a)?,
+        to_dmatrix(&s.b)?,
+        to_dmatrix(&s.c)?,
+        to_dmatrix(&s.d)?,
+    ];
+    let r = exactlti::float::balred([&m[0], &m[1], &m[2], &m[3]], order)?;
+    let rows = |x: &nalgebra::DMatrix<f64>| {
+        Out::List(
+            (0..x.nrows())
+                .map(|i| Out::List((0..x.ncols()).map(|j| Out::Float(x[(i, j)])).collect()))
+                .collect(),
+        )
+    };
+    Ok(Out::Dict(vec![
+        ("A", rows(&r.a)),
+        ("B", rows(&r.b)),
+        ("C", rows(&r.c)),
+        ("D", rows(&r.d)),
+        (
+            "hankel_singular_values",
+            Out::List(r.hankel_singular_values.iter().map(|x| Out::Float(*x)).collect()),
+        ),
+        ("error_bound", Out::Float(r.error_bound)),
+    ]))
 }
 
 pub(crate) fn to_dmatrix<K: Field>(m: &Matrix<K>) -> FResult<nalgebra::DMatrix<f64>> {

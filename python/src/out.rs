@@ -163,13 +163,22 @@ pub(crate) fn matout(mo: &MatrixOut) -> Out {
 /// Polynomial: `q` coefficients low degree first when rational (else `coeffs`, their exact
 /// text), and its text in `s`.
 pub(crate) fn poly<K: Field>(p: &Poly<K>) -> Out {
+    poly_var(p, "s")
+}
+
+/// A polynomial as output with its text in the variable `var` (`z` for a discrete-time
+/// system), which the dict names (`var`).
+pub(crate) fn poly_var<K: Field>(p: &Poly<K>, var: &str) -> Out {
     let k = p.field();
     let rat: Option<Vec<Out>> = p
         .coeffs()
         .iter()
         .map(|c| k.to_rational(c).map(|r| q(&r)))
         .collect();
-    let mut kv = vec![("text", Out::Str(p.to_string_var("s")))];
+    let mut kv = vec![
+        ("text", Out::Str(p.to_string_var(var))),
+        ("var", Out::Str(var.to_string())),
+    ];
     match rat {
         Some(c) => kv.push(("q", Out::List(c))),
         None => {

@@ -17,6 +17,7 @@ use exactlti::poly::Poly;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization::{self, MinrealMethod};
 use exactlti::structure::factor_qp::factor_over_qp;
+use exactlti::system::discrete::stability::Domain;
 
 type T = Typed<RatFuncField>;
 
@@ -98,12 +99,12 @@ pub(crate) fn scb(t: &T) -> FResult<Out> {
     with_context(Out::Dict(kv), &k)
 }
 
-pub(crate) fn zeros(t: &T) -> FResult<Out> {
+pub(crate) fn zeros(t: &T, domain: Domain) -> FResult<Out> {
     let (k, t) = refield(t);
     let s = &t.ss;
     let z = exactlti::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d)?;
     let zf = factors(&z.polynomial)?;
-    let Out::Dict(mut kv) = zeros_typed(&t)? else {
+    let Out::Dict(mut kv) = zeros_typed(&t, domain)? else {
         unreachable!("zeros output is a dict")
     };
     kv.push(("factors", zf));
@@ -137,7 +138,7 @@ pub(crate) fn minreal(t: &T, m: MinrealMethod) -> FResult<Out> {
     with_context(Out::Dict(kv), &k)
 }
 
-pub(crate) fn tf(t: &T) -> FResult<Out> {
+pub(crate) fn tf(t: &T, domain: Domain) -> FResult<Out> {
     if t.descriptor.is_some() {
         return Err(Fail::Unsupported(format!(
             "symbolic parameters: the transfer matrix of a descriptor system is not yet \
@@ -146,9 +147,9 @@ pub(crate) fn tf(t: &T) -> FResult<Out> {
         )));
     }
     let (k, t) = refield(t);
-    let (mut kv, a_min) = tf_parts(&t.ss)?;
+    let (mut kv, a_min) = tf_parts(&t.ss, domain)?;
     let poles = a_min.charpoly()?;
-    kv.push(("pole_polynomial", poly(&poles)));
+    kv.push(("pole_polynomial", poly_var(&poles, domain.var())));
     kv.push(("pole_factors", factors(&poles)?));
     with_context(Out::Dict(kv), &k)
 }

@@ -163,3 +163,56 @@ def test_exact_stability_against_numpy_moduli():
         assert G.is_stable() == want
         seen.add(want)
     assert seen == {True, False}
+
+
+def test_discrete_tf_and_zeros_are_written_in_z():
+    A, B, C, D = [[0.5, 0.1], [0, 0.8]], [[0], [1]], [[1, 2]], [[1]]
+    Gc = exactlti.ss(A, B, C, D)
+    Gd = exactlti.ss(A, B, C, D, dt="1/10")
+    tc, td = Gc.tf(), Gd.tf()
+    assert tc.variable == "s" and td.variable == "z"
+    # the same rational function, the variable renamed
+    assert str(td[0, 0]) == str(tc[0, 0]).replace("s", "z")
+    assert "s" not in str(td[0, 0]) and "z" in str(td[0, 0])
+    assert td[0, 0].num.var == "z"
+    zc, zd = Gc.zeros(), Gd.zeros()
+    assert str(zd.polynomial) == str(zc.polynomial).replace("s", "z")
+    sympy = pytest.importorskip("sympy")
+    z = sympy.Symbol("z")
+    assert td[0, 0].to_sympy().free_symbols == {z}
+    # G(z) at a point equals C (zI - A)^-1 B + D
+    val = td[0, 0].to_sympy().subs(z, 3)
+    Am = sympy.Matrix([[sympy.Rational(1, 2), sympy.Rational(1, 10)], [0, sympy.Rational(4, 5)]])
+    want = (sympy.Matrix(C) * (3 * sympy.eye(2) - Am).inv() * sympy.Matrix(B))[0, 0] + 1
+    assert sympy.simplify(val - want) == 0
+
+
+def test_discrete_tf_to_control_keeps_dt():
+    control = pytest.importorskip("control")
+    G = exactlti.ss([[0.5, 0.1], [0, 0.8]], [[0], [1]], [[1, 0]], [[0]], dt="1/10")
+    T = G.tf().to_control()
+    assert T.dt == pytest.approx(0.1)
+    ref = control.ss2tf(G.to_control())
+    w = np.array([0.3, 1.0, 10.0])
+    np.testing.assert_allclose(T(np.exp(1j * w * 0.1)), ref(np.exp(1j * w * 0.1)), rtol=1e-12)
+
+
+def test_balred_against_python_control():
+    control = pytest.importorskip("control")
+    pytest.importorskip("slycot")
+    A = [[-1, 1, 0, 0], [0, -2, 1, 0], [0, 0, -3, 1], [0, 0, 0, -4]]
+    G = exactlti.ss(A, [[0], [1], [0], [1]], [[1, 1, 0, 0]], [[0]])
+    r = G.balred(2)
+    ref = control.balred(G.to_control(), 2)
+    np.testing.assert_allclose(
+        r["hankel_singular_values"], control.hsvd(G.to_control()), rtol=1e-8
+    )
+    mine = control.ss(r["A"], r["B"], r["C"], r["D"])
+    w = np.logspace(-2, 2, 40)
+    np.testing.assert_allclose(mine(1j * w), ref(1j * w), rtol=1e-7, atol=1e-12)
+    # the H-infinity error is within the bound 2 * (sigma_3 + sigma_4)
+    full = G.to_control()
+    err = np.max(np.abs(full(1j * w) - mine(1j * w)))
+    assert err <= r["error_bound"] * (1 + 1e-9)
+    with pytest.raises(ValueError):
+        exactlti.ss([[1]], [[1]], [[1]], [[0]]).balred(1)

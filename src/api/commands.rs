@@ -358,7 +358,8 @@ impl SystemVisitor for FileCommand<'_> {
             Command::Zeros { .. } => {
                 let z =
                     crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
-                Ok(Outcome::plain(z.report()))
+                let domain = crate::system::discrete::stability::Domain::of(f.signals.dt.as_ref());
+                Ok(Outcome::plain(z.report_in(domain)))
             }
             Command::Freqresp {
                 from,

@@ -13,7 +13,7 @@ use crate::report::Value;
 use crate::report::sections::{conversion_report, sequence_report, stability_report};
 use crate::system::StateSpace;
 use crate::system::discrete::stability::{Domain, stability_of};
-use crate::system::discrete::{impulse_sequence, step_sequence, tustin, tustin_inverse};
+use crate::system::discrete::{impulse_sequence, step_sequence, tustin, tustin_inverse, zoh_exact};
 use clap::Subcommand;
 use std::path::{Path, PathBuf};
 
@@ -154,15 +154,33 @@ pub fn run<K: Field + 'static>(
                     (written(f, &d, &step), (rep, ok))
                 }
                 C2dMethod::Zoh => {
-                    let d = zoh_of(t, path, &step)?;
-                    let rep = conversion_report(
-                        "c2d (zero-order hold, float)",
-                        "zoh: A_d = e^(A T), B_d = int_0^T e^(A tau) dtau B from the float matrix exponential of [[A, B], [0, 0]] T; the entries are binary floats written exactly",
-                        &step,
-                        &d,
-                        None,
-                    );
-                    (written(f, &d, &step), (rep, true))
+                    if let Some(z) = zoh_exact(&t.ss, &step).map_err(e)? {
+                        let rep = conversion_report(
+                            "c2d (zero-order hold, exact)",
+                            "zoh with A nilpotent: A_d = e^(A T) = sum_{k<n} A^k T^k / k!, B_d = sum_{k<n} A^k T^(k+1) / (k+1)! B (the series stop)",
+                            &step,
+                            &z.system,
+                            Some((
+                                "log(A_d) = A T and A_d - I = A Gamma, B_d = Gamma B, exactly",
+                                z.verified,
+                            )),
+                        );
+                        (written(f, &z.system, &step), (rep, z.verified))
+                    } else {
+                        let d = zoh_of(t, path, &step)?;
+                        let rep = conversion_report(
+                            "c2d (zero-order hold, float)",
+                            "zoh: A_d = e^(A T), B_d = int_0^T e^(A tau) dtau B from the float matrix exponential of [[A, B], [0, 0]] T; the entries are binary floats written exactly",
+                            &step,
+                            &d,
+                            None,
+                        )
+                        .str(
+                            "why_float",
+                            "A has an eigenvalue lambda != 0: e^(A T) holds e^(lambda T), transcendental (Lindemann-Weierstrass), so no exact result over a number field; exact only for nilpotent A (integrator chains)",
+                        );
+                        (written(f, &d, &step), (rep, true))
+                    }
                 }
             };
             finish(rep, out.as_deref(), &sys_text)
@@ -289,12 +307,6 @@ pub fn on_sampled<K: Field + 'static>(
             csv,
             ..
         } => {
-            if svg.is_some() {
-                return Some(Err(fail(
-                    path,
-                    "--svg: the Bode plot of a discrete-time system is not drawn yet (use --csv)",
-                )));
-            }
             let nyquist = 0.5 / rational_to_f64(dt);
             let (lo, hi) = (from.unwrap_or(nyquist / 1000.0), to.unwrap_or(nyquist));
             let (_, ins, outs) = super::plots::names(f, path, t.ss.ninputs(), t.ss.noutputs());
@@ -306,6 +318,13 @@ pub fn on_sampled<K: Field + 'static>(
                 csv.as_deref(),
                 Some(rational_to_f64(dt)),
             );
+            let r = r.and_then(|r| match svg {
+                Some(out) => {
+                    super::discrete_plots::bode_file_dt(f, t, path, dt, (lo, hi, *points), out)?;
+                    Ok(r.str("svg", out.display().to_string()))
+                }
+                None => Ok(r),
+            });
             Some(r.map(|r| {
                 Outcome::plain(r.str("dt", fmt_rational(dt)).str(
                     "note",
@@ -332,12 +351,6 @@ fn sequence<K: Field + 'static>(
     impulse: bool,
     opts: &super::TimeOpts,
 ) -> Result<Outcome, Failure> {
-    if opts.svg.is_some() {
-        return Err(fail(
-            path,
-            "--svg: the step plot of a discrete-time system is not drawn yet (use --csv)",
-        ));
-    }
     let samples = match (opts.points, opts.to) {
         (Some(n), _) => n,
         (None, Some(to)) => (to / rational_to_f64(dt)).floor() as usize + 1,
@@ -412,6 +425,24 @@ fn sequence<K: Field + 'static>(
             }
             std::fs::write(out, text).map_err(|err| fail(out, format!("cannot write: {err}")))?;
         }
+        if let Some(out) = &opts.svg {
+            let (title, ..) = super::plots::names(f, path, t.ss.ninputs(), t.ss.noutputs());
+            let plot = super::discrete_plots::Stairs {
+                title: &title,
+                impulse,
+                times: &times,
+                values: vals,
+                inputs: &ins,
+                outputs: &outs,
+            };
+            super::discrete_plots::stairs_file(t, &plot, out)?;
+            rep = rep.str("svg", out.display().to_string());
+        }
+    } else if opts.svg.is_some() {
+        return Err(fail(
+            path,
+            "--svg: the samples have no float values over this field (use --format json)",
+        ));
     }
     Ok(Outcome::new(rep.bool("verified", true), true))
 }

@@ -57,7 +57,7 @@ pub(crate) fn float_response<K: Field>(
 }
 
 /// [`float_response`], on the unit circle ($z = e^{j\omega T}$) for a sample time `dt`.
-fn float_response_dt<K: Field>(
+pub(crate) fn float_response_dt<K: Field>(
     t: &Typed<K>,
     sys: &FloatAbcd,
     path: &Path,

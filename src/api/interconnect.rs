@@ -69,19 +69,38 @@ pub enum InterconnectCmd {
         #[command(flatten)]
         opts: InterconnectOpts,
     },
+    /// Connect systems by signal names (python-control's `interconnect`), from a connection
+    /// file: {"systems": ["plant.json", "ctrl.json"], "connections": [["u", "v"], ["e",
+    /// "-y"]], "inputs": ["e"], "outputs": ["y"]} (paths relative to the file; each
+    /// connection: an input, then the outputs summed into it, `-y` subtracts; an external
+    /// input drives the subsystem inputs of its name: here e = r - y with r external).
+    Connect {
+        /// The connection file (JSON, or TOML by its extension).
+        file: PathBuf,
+        #[command(flatten)]
+        opts: InterconnectOpts,
+    },
 }
 
 impl InterconnectCmd {
     /// The command's name as typed.
     pub fn name(&self) -> &'static str {
-        self.parts().0.name()
+        match self.parts() {
+            Some((op, ..)) => op.name(),
+            None => "connect",
+        }
     }
-    /// The files, in order.
+    /// The files, in order (`connect`: its connection file).
     pub fn files(&self) -> Vec<&Path> {
-        self.parts().1
+        match (self, self.parts()) {
+            (InterconnectCmd::Connect { file, .. }, _) => vec![file.as_path()],
+            (_, Some((_, files, _))) => files,
+            (_, None) => vec![],
+        }
     }
-    fn parts(&self) -> (Operation, Vec<&Path>, &InterconnectOpts) {
-        match self {
+    /// The operation, its files and options; `None` for `connect` (a connection file).
+    fn parts(&self) -> Option<(Operation, Vec<&Path>, &InterconnectOpts)> {
+        Some(match self {
             InterconnectCmd::Series { g, h, opts } => (Operation::Series, vec![g, h], opts),
             InterconnectCmd::Parallel { g, h, opts } => (Operation::Parallel, vec![g, h], opts),
             InterconnectCmd::Feedback {
@@ -102,14 +121,27 @@ impl InterconnectCmd {
                 files.iter().map(PathBuf::as_path).collect(),
                 opts,
             ),
-        }
+            InterconnectCmd::Connect { .. } => return None,
+        })
+    }
+    /// [`Self::parts`], or the error that `connect` reads its connection file.
+    fn parts_or_fail(&self) -> Result<(Operation, Vec<&Path>, &InterconnectOpts), Failure> {
+        self.parts().ok_or_else(|| Failure {
+            code: 2,
+            message: "connect: reads its connection file (exactlti connect FILE; in Python \
+                      exactlti.interconnect)"
+                .into(),
+        })
     }
 }
 
 /// Runs an interconnection command on its files, each read once by the one reader
 /// ([`super::System::open_or_gain`]: a file with only `D` is a static gain).
 pub fn run(cmd: &InterconnectCmd, sym: &SymbolicOptions) -> Result<Outcome, Failure> {
-    let (_, paths, _) = cmd.parts();
+    if let InterconnectCmd::Connect { file, opts } = cmd {
+        return super::connect_file::run(file, opts, sym);
+    }
+    let (_, paths, _) = cmd.parts_or_fail()?;
     let systems = paths
         .iter()
         .map(|p| super::System::open_or_gain(p, sym))
@@ -124,7 +156,7 @@ pub fn run(cmd: &InterconnectCmd, sym: &SymbolicOptions) -> Result<Outcome, Fail
 /// Systems over two different fields; a count other than the command's; the errors of
 /// the interconnection.
 pub fn run_on(cmd: &InterconnectCmd, systems: &[&super::System]) -> Result<Outcome, Failure> {
-    let (op, _, opts) = cmd.parts();
+    let (op, _, opts) = cmd.parts_or_fail()?;
     let (names, signals) = checked_parts(cmd, systems)?;
     let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
     let systems = common_field(&loaded)?;
@@ -142,7 +174,7 @@ fn checked_parts(
     cmd: &InterconnectCmd,
     systems: &[&super::System],
 ) -> Result<(Vec<String>, crate::io::SignalNames), Failure> {
-    let (op, paths, _) = cmd.parts();
+    let (op, paths, _) = cmd.parts_or_fail()?;
     if systems.len() != paths.len() {
         return Err(Failure {
             code: 2,
@@ -314,7 +346,7 @@ pub fn system_of(
     cmd: &InterconnectCmd,
     systems: &[&super::System],
 ) -> Result<super::System, Failure> {
-    let (op, _, _) = cmd.parts();
+    let (op, _, _) = cmd.parts_or_fail()?;
     let (names, signals) = checked_parts(cmd, systems)?;
     let loaded: Vec<_> = systems.iter().map(|s| s.loaded()).collect();
     let name = format!("{} of {}", op.name(), names.join(", "));

@@ -15,6 +15,7 @@ use crate::realization::{
 };
 use crate::report::sections;
 use crate::structure::descriptor_zeros::descriptor_zeros;
+use crate::system::discrete::stability::Domain;
 use crate::system::{Descriptor, StateSpace};
 use std::any::Any;
 use std::path::Path;
@@ -69,6 +70,30 @@ fn channel_names(rep: &mut crate::report::Report, s: &crate::io::SignalNames, p:
     }
     if let Some(i) = s.inputs.as_ref().filter(|i| i.len() == m) {
         rep.push("inputs", strs(i));
+    }
+}
+
+/// The report with the file's sample time `dt` after its `variable` (discrete time only).
+fn with_dt(rep: crate::report::Report, s: &crate::io::SignalNames) -> crate::report::Report {
+    match &s.dt {
+        Some(dt) => {
+            let mut items = Vec::with_capacity(rep.items.len() + 1);
+            for (k, v) in rep.items {
+                let after = k == "variable";
+                items.push((k, v));
+                if after {
+                    items.push((
+                        "dt".to_string(),
+                        crate::report::Value::Str(crate::field::fmt_rational(dt)),
+                    ));
+                }
+            }
+            crate::report::Report {
+                title: rep.title,
+                items,
+            }
+        }
+        None => rep,
     }
 }
 
@@ -137,6 +162,7 @@ fn run_on<K: Field + 'static>(
 ) -> Result<Outcome, Failure> {
     {
         let e = |err| with_path(path, err);
+        let domain = Domain::of(signals.dt.as_ref());
         match cmd {
             Command::Pencil { .. } => {
                 if let Some(sq) = (s as &dyn Any).downcast_ref::<Descriptor<Q>>() {
@@ -177,7 +203,7 @@ fn run_on<K: Field + 'static>(
                 let z = descriptor_zeros(s).map_err(e)?;
                 let v = z.pencil.verified;
                 Ok(Outcome::new(
-                    sections::descriptor_zeros_report(&z).map_err(e)?,
+                    sections::descriptor_zeros_report(&z, domain).map_err(e)?,
                     v,
                 ))
             }
@@ -202,7 +228,9 @@ fn run_on<K: Field + 'static>(
                             sections::TfRealization::from_state_space(&m.system, ok).map_err(e)?;
                         (g, r, Some(ss))
                     };
-                    let rep = sections::tf_report_quadratic(&g, &r, ss.as_ref()).map_err(e)?;
+                    let rep =
+                        sections::tf_report_quadratic(&g, &r, ss.as_ref(), domain).map_err(e)?;
+                    let rep = with_dt(rep, signals);
                     let ok = matches!(rep.get("verified"), Some(crate::report::Value::Bool(true)));
                     return Ok(Outcome::new(rep, ok));
                 }
@@ -235,7 +263,7 @@ fn run_on<K: Field + 'static>(
                         (g, r)
                     }
                 };
-                let mut rep = sections::tf_report(&g, &r).map_err(e)?;
+                let mut rep = with_dt(sections::tf_report(&g, &r, domain).map_err(e)?, signals);
                 if let Some(mv) = markov {
                     rep.push("markov_verified", crate::report::Value::Bool(mv));
                 }

@@ -211,7 +211,14 @@ pub fn bode_file<K: Field>(
             let poles = float_poles(a, path)?;
             let freqs = bode_grid(from, to, points, &poles);
             let resp = super::float_cmds::float_response(t, &sys, path, &freqs)?;
-            bode_svg(&freqs, &response_table(&resp), &title, &labels)
+            let table = response_table(&resp);
+            if ins.len() * outs.len() > 1 {
+                // MIMO: an output x input grid of magnitude and phase panels
+                let g = crate::report::plot::bode_grid::bode_grid_svg;
+                g(&freqs, &table, &title, (&ins, &outs), &[])
+            } else {
+                bode_svg(&freqs, &table, &title, &labels)
+            }
         }
     };
     write(out, &text)
@@ -541,6 +548,7 @@ pub fn time_response<K: Field + 'static>(
         outputs: &plot_outs,
         final_values: final_line.as_deref(),
         final_label: "final value (exact DC gain)",
+        stairs: false,
     };
     write_files(&plot, args)?;
     Ok((

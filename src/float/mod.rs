@@ -25,6 +25,7 @@ use nalgebra::DMatrix;
 
 use crate::error::{Error, Result};
 
+mod balred;
 pub mod convert;
 mod eigen;
 mod era;
@@ -40,6 +41,7 @@ mod svd;
 pub mod time_response;
 mod zeros;
 
+pub use balred::{Balred, MAX_BALRED_ORDER, balred};
 pub use convert::{to_cmatrix, to_dmatrix};
 pub use eigen::{EigenPairs, eigenvalues, eigenvectors};
 pub use era::{

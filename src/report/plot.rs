@@ -6,6 +6,7 @@
 //! CI build small.
 
 pub mod bode;
+pub mod bode_grid;
 pub mod pzmap;
 pub mod svg;
 pub mod sweep;

@@ -146,8 +146,18 @@ fn zeros(r: &Report) -> Vec<String> {
     out
 }
 
-/// Stability from the eigenvalues' real parts and their Jordan blocks.
-fn stability(eigs: &[&Report]) -> String {
+/// Stability: the exact verdict of the section's `stability` (decided over $\mathbb{Q}$
+/// without floats) when there is one, else read off the eigenvalues' approximate real parts
+/// and their Jordan blocks, and said to be so.
+fn stability(eigs: &[&Report], exact: Option<&Report>) -> String {
+    if let Some(Value::Str(v)) = exact.and_then(|r| r.get("verdict")) {
+        return format!("stability (exact): {v}");
+    }
+    format!("{} (from the approximations)", stability_approx(eigs))
+}
+
+/// Stability from the eigenvalues' approximate real parts and their Jordan blocks.
+fn stability_approx(eigs: &[&Report]) -> String {
     fn re(r: &Report) -> f64 {
         approx(r).map_or(f64::NAN, |z| z.0)
     }
@@ -181,7 +191,7 @@ fn jordan(r: &Report) -> Vec<String> {
             eigs.len(),
             values_line(items(r, "eigenvalues"))
         ),
-        stability(&eigs),
+        stability(&eigs, r.get("stability").and_then(obj)),
     ];
     let nontrivial: Vec<String> = eigs
         .iter()

@@ -108,9 +108,14 @@ impl<K: Field> TransferMatrix<K> {
 
     /// Entries as strings in the variable `s`.
     pub fn to_strings(&self) -> Vec<Vec<String>> {
+        self.to_strings_var("s")
+    }
+
+    /// Entries as strings in the variable `var` (`z` for a discrete-time system).
+    pub fn to_strings_var(&self, var: &str) -> Vec<Vec<String>> {
         self.entries
             .iter()
-            .map(|r| r.iter().map(|f| f.to_string_var("s")).collect())
+            .map(|r| r.iter().map(|f| f.to_string_var(var)).collect())
             .collect()
     }
 }

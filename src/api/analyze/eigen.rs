@@ -122,9 +122,30 @@ fn jordan_section<F: EigenField>(
         not_applicable(title, why)
     };
     sec.push("real_form", real);
+    if let Some(q) =
+        (t.as_ref() as &dyn std::any::Any).downcast_ref::<TypedSystem<crate::field::Q>>()
+    {
+        sec.push("stability", exact_stability(q, secs));
+    }
     let est = free_response_estimate(&sec, jf.n());
     sec.push("free_response", free_response(&jf, secs, est, (full, path)));
     (Value::Obj(sec), Some(jf))
+}
+
+/// Stability decided exactly over $\mathbb{Q}$ (no floats: Routh-Hurwitz through the
+/// Cayley map and Schur-Cohn per irreducible factor of $\det(sI - A)$, the minimal
+/// polynomial for the blocks on the imaginary axis), under its budget.
+fn exact_stability(t: &TypedSystem<crate::field::Q>, secs: &mut Sections) -> Value {
+    use crate::system::discrete::stability::{Domain, stability_of};
+    let a = t.ss.a.clone();
+    let title = "stability (exact)";
+    match secs.run(title, Insist::Command("stability"), move || {
+        stability_of(&a, Domain::Continuous)
+    }) {
+        Ok(Ok(s)) => Value::Obj(sections::stability_report(&s, None)),
+        Ok(Err(e)) => failed_msg(title, &e.to_string()),
+        Err(v) => v,
+    }
 }
 
 /// The free response under its budget, or its size when too large.

@@ -75,6 +75,18 @@ fn curves(resp: &Response, labels: &[Vec<String>]) -> Curves {
 
 /// The Bode plot of `resp` at `freqs` [Hz]; `labels[i][j]` names channel (i, j).
 pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<String>]) -> String {
+    bode_svg_marked(freqs, resp, title, labels, &[])
+}
+
+/// [`bode_svg`] with labelled vertical lines at the frequencies of `marks` [Hz] on both
+/// panels (the Nyquist frequency $1/(2T)$ of a discrete-time system).
+pub fn bode_svg_marked(
+    freqs: &[f64],
+    resp: &Response,
+    title: &str,
+    labels: &[Vec<String>],
+    marks: &[(f64, &str)],
+) -> String {
     let (mags, phases, names) = curves(resp, labels);
     let channels = names.len();
     let cols = if channels > 1 { 2 } else { 1 };
@@ -113,6 +125,12 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
         true,
         Some(&phase_ticks(bot.yr)),
     );
+    for &(f, label) in marks {
+        if f > 0.0 {
+            svg.vline(&top, f, "#555", Some(label));
+            svg.vline(&bot, f, "#555", None);
+        }
+    }
     let mut legend = vec![];
     for (c, ((mg, ph), name)) in mags.iter().zip(&phases).zip(names).enumerate() {
         let col = COLORS[c % COLORS.len()];

@@ -1,6 +1,7 @@
 //! Step and impulse response plots: one panel per input -> output channel (rows: outputs,
 //! columns: inputs), named from the system file, with the exact final value of a step
-//! response drawn as a dashed line.
+//! response drawn as a dashed line. A discrete-time response (samples $y_k$ at $t = kT$)
+//! is drawn as stairs: $y_k$ held on $[kT, (k+1)T)$, a dot at each sample.
 
 use super::svg::{COLORS, Panel, Svg, finite_range, nice_range};
 
@@ -18,6 +19,24 @@ pub struct TimePlot<'a> {
     pub final_values: Option<&'a [Vec<f64>]>,
     /// The label of the dashed lines.
     pub final_label: &'a str,
+    /// Sampled values (discrete time): drawn as stairs held over each sample period.
+    pub stairs: bool,
+}
+
+/// The stairs through samples `(t_k, y_k)`: $y_k$ held until $t_{k+1}$ (the last sample
+/// held for one more period).
+fn stairs(pts: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(2 * pts.len());
+    for (k, &(t, y)) in pts.iter().enumerate() {
+        let next = match (pts.get(k + 1), k) {
+            (Some(&(tn, _)), _) => tn,
+            (None, 0) => t + 1.0,
+            (None, _) => t + (t - pts[k - 1].0),
+        };
+        out.push((t, y));
+        out.push((next, y));
+    }
+    out
 }
 
 /// The SVG of a time-response plot.
@@ -32,7 +51,11 @@ pub fn time_response_svg(tp: &TimePlot<'_>) -> String {
     let w = left + right + pw * m.max(1) as f64 + gap_x * (m.max(1) - 1) as f64;
     let h = top + (ph + gap_y) * p.max(1) as f64 + 10.0;
     let mut svg = Svg::new(w, h, tp.title);
-    let t_end = tp.times.last().copied().unwrap_or(1.0);
+    let mut t_end = tp.times.last().copied().unwrap_or(1.0);
+    if tp.stairs && tp.times.len() > 1 {
+        // the last sample is held for one period
+        t_end += t_end - tp.times[tp.times.len() - 2];
+    }
     let xr = if t_end > 0.0 {
         (0.0, t_end)
     } else {
@@ -54,7 +77,12 @@ pub fn time_response_svg(tp: &TimePlot<'_>) -> String {
                 mirror: false,
             };
             let show_x = true;
-            svg.axes(&panel, "time [s]", &tp.outputs[i], show_x);
+            let xlabel = if tp.stairs {
+                "time [s] (samples t = k dt)"
+            } else {
+                "time [s]"
+            };
+            svg.axes(&panel, xlabel, &tp.outputs[i], show_x);
             svg.text(
                 panel.x0 + panel.w / 2.0,
                 panel.y0 - 6.0,
@@ -63,7 +91,14 @@ pub fn time_response_svg(tp: &TimePlot<'_>) -> String {
                 &format!("{} \u{2192} {}", tp.inputs[j], tp.outputs[i]),
             );
             let pts: Vec<(f64, f64)> = tp.times.iter().copied().zip(ys).collect();
-            svg.polyline(&panel, &pts, COLORS[0], 1.8, false);
+            if tp.stairs {
+                svg.polyline(&panel, &stairs(&pts), COLORS[0], 1.8, false);
+                if pts.len() <= 200 {
+                    svg.dots(&panel, &pts, COLORS[0], 2.5);
+                }
+            } else {
+                svg.polyline(&panel, &pts, COLORS[0], 1.8, false);
+            }
             if let Some(f) = fin {
                 svg.polyline(&panel, &[(xr.0, f), (xr.1, f)], COLORS[1], 1.2, true);
                 if i == 0 && j == m - 1 {
@@ -79,4 +114,27 @@ pub fn time_response_svg(tp: &TimePlot<'_>) -> String {
         }
     }
     svg.finish()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::stairs;
+
+    #[test]
+    fn stairs_hold_each_sample_for_one_period() {
+        let s = stairs(&[(0.0, 1.0), (0.5, 2.0), (1.0, -1.0)]);
+        assert_eq!(
+            s,
+            vec![
+                (0.0, 1.0),
+                (0.5, 1.0),
+                (0.5, 2.0),
+                (1.0, 2.0),
+                (1.0, -1.0),
+                (1.5, -1.0)
+            ]
+        );
+        assert_eq!(stairs(&[(0.0, 3.0)]), vec![(0.0, 3.0), (1.0, 3.0)]);
+        assert!(stairs(&[]).is_empty());
+    }
 }

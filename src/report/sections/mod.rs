@@ -37,6 +37,16 @@ use crate::matrix::Matrix;
 use crate::report::{Report, Value};
 use crate::system::StateSpace;
 
+/// The `variable` item of a report in the transform variable of `domain`: `z` shown in
+/// discrete time; `s` in JSON only (continuous time is the default a reader assumes).
+pub(crate) fn variable(domain: crate::system::discrete::stability::Domain) -> Value {
+    let v = Value::Str(domain.var().to_string());
+    match domain {
+        crate::system::discrete::stability::Domain::Discrete => v,
+        crate::system::discrete::stability::Domain::Continuous => Value::hidden_in_text(v),
+    }
+}
+
 /// The `standard` report of a file without `E`: the system is already in standard form.
 pub fn already_standard<K: Field>(ss: &StateSpace<K>) -> Report {
     Report::titled("descriptor to standard form")

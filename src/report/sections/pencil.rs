@@ -13,6 +13,7 @@ use crate::realization::{
 };
 use crate::report::{Report, Value};
 use crate::structure::descriptor_zeros::DescriptorZeros;
+use crate::system::discrete::stability::Domain;
 use crate::system::transfer::TransferMatrix;
 
 fn ints(v: &[usize]) -> Value {
@@ -236,36 +237,39 @@ pub fn minreal_descriptor_report<K: Field>(m: &DescriptorMinimal<K>) -> Report {
         .bool("verified", m.verified)
 }
 
-/// `zeros` of a descriptor system.
+/// `zeros` of a descriptor system (polynomials in the variable of `domain`).
 ///
 /// # Errors
 /// From root isolation.
-pub fn descriptor_zeros_report<K: Field>(z: &DescriptorZeros<K>) -> Result<Report> {
+pub fn descriptor_zeros_report<K: Field>(z: &DescriptorZeros<K>, domain: Domain) -> Result<Report> {
     let k = &z.pencil;
     let mut r = Report::titled("zeros of the descriptor system");
     r = match z.polynomial.to_rational_poly() {
         Some(zq) => r.list("invariant_zeros", root_items(&zq)?),
         None => r.list(
             "invariant_zeros",
-            super::structure::zero_items(&z.polynomial),
+            super::structure::zero_items_in(&z.polynomial, domain.var()),
         ),
     };
-    Ok(r.str("zero_polynomial", z.polynomial.to_string_var("s"))
-        .with("infinite_zero_orders", ints(&z.infinite_zero_orders))
-        .int("normal_rank", k.normal_rank)
-        .with("right_kronecker_indices", ints(&k.right_indices))
-        .with("left_kronecker_indices", ints(&k.left_indices))
-        .bool("verified", k.verified))
+    Ok(
+        r.str("zero_polynomial", z.polynomial.to_string_var(domain.var()))
+            .with("infinite_zero_orders", ints(&z.infinite_zero_orders))
+            .int("normal_rank", k.normal_rank)
+            .with("right_kronecker_indices", ints(&k.right_indices))
+            .with("left_kronecker_indices", ints(&k.left_indices))
+            .bool("verified", k.verified),
+    )
 }
 
-/// The `transfer_matrix` and `zpk` lists of a `tf` report (rows of entries), the latter
-/// with the field's zero-pole-gain display `zpk`.
+/// The `transfer_matrix` and `zpk` lists of a `tf` report (rows of entries) in the
+/// variable `var`, the latter with the field's zero-pole-gain display `zpk`.
 ///
 /// # Errors
 /// From `zpk` (a factorization).
 pub(super) fn transfer_lists<K: Field>(
     g: &TransferMatrix<K>,
-    zpk: impl Fn(&Poly<K>, &Poly<K>) -> Result<String>,
+    var: &str,
+    zpk: impl Fn(&Poly<K>, &Poly<K>, &str) -> Result<String>,
 ) -> Result<(Vec<Value>, Vec<Value>)> {
     let zpk = g
         .entries
@@ -273,22 +277,23 @@ pub(super) fn transfer_lists<K: Field>(
         .map(|row| {
             Ok(Value::List(
                 row.iter()
-                    .map(|f| zpk(&f.num, &f.den).map(Value::Str))
+                    .map(|f| zpk(&f.num, &f.den, var).map(Value::Str))
                     .collect::<Result<Vec<_>>>()?,
             ))
         })
         .collect::<Result<Vec<_>>>()?;
     let tm = g
-        .to_strings()
+        .to_strings_var(var)
         .into_iter()
         .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
         .collect();
     Ok((tm, zpk))
 }
 
-/// Zero-pole-gain display of one rational function over Q: `k (factors) / (factors)` with
-/// the monic irreducible factors over Q, assembled by [`zpk_text`].
-fn zpk_string(num: &Poly<Q>, den: &Poly<Q>) -> Result<String> {
+/// Zero-pole-gain display of one rational function over Q in the variable `var`:
+/// `k (factors) / (factors)` with the monic irreducible factors over Q, assembled by
+/// [`zpk_text`].
+fn zpk_string(num: &Poly<Q>, den: &Poly<Q>, var: &str) -> Result<String> {
     if num.is_zero() {
         return Ok("0".into());
     }
@@ -300,7 +305,7 @@ fn zpk_string(num: &Poly<Q>, den: &Poly<Q>) -> Result<String> {
         let (_, fs) = crate::algebraic::factor_q(p)?;
         Ok(fs
             .iter()
-            .map(|(f, e)| (f.monic().to_string_var("s"), *e))
+            .map(|(f, e)| (f.monic().to_string_var(var), *e))
             .collect())
     };
     Ok(zpk_text(&gain, &factors(num)?, &factors(den)?))
@@ -342,11 +347,15 @@ pub(super) fn zpk_text(gain: &str, num: &[(String, usize)], den: &[(String, usiz
 }
 
 /// `tf` over Q: transfer matrix in lowest terms, McMillan degree, poles, transmission zeros,
-/// zero-pole-gain display.
+/// zero-pole-gain display, in the variable of `domain` (`s`, or `z` in discrete time).
 ///
 /// # Errors
 /// From factorization and root isolation.
-pub fn tf_report(g: &TransferMatrix<Q>, r: &TransferRealization<Q>) -> Result<Report> {
+pub fn tf_report(
+    g: &TransferMatrix<Q>,
+    r: &TransferRealization<Q>,
+    domain: Domain,
+) -> Result<Report> {
     let sys = &r.minimal.system;
     let nf = r.minimal.finite_order;
     // finite poles: eigenvalues of the finite block of the minimal realization (E = diag(I, N))
@@ -354,8 +363,9 @@ pub fn tf_report(g: &TransferMatrix<Q>, r: &TransferRealization<Q>) -> Result<Re
     let poles = eigen_items_of(&a_f)?.unwrap_or_default();
     let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
     let zero_poly = zeros.polynomial.clone();
-    let (tm, zpk) = transfer_lists(g, zpk_string)?;
+    let (tm, zpk) = transfer_lists(g, domain.var(), zpk_string)?;
     Ok(Report::titled("transfer matrix")
+        .with("variable", super::variable(domain))
         .list("transfer_matrix", tm)
         .list("zpk", zpk)
         .int("mcmillan_degree", r.mcmillan_degree)

@@ -9,6 +9,7 @@ use crate::report::{Report, Value};
 use crate::structure::mechanical::MechanicalNormalForm;
 use crate::structure::scb::Scb;
 use crate::structure::zeros::InvariantZeros;
+use crate::system::discrete::stability::{Domain, schur_stable};
 
 impl<K: Field> Scb<K> {
     /// Report with the CLI contract's keys for `scb`.
@@ -131,14 +132,31 @@ impl<K: Field> InvariantZeros<K> {
     /// Report with the CLI contract's key `invariant_zeros[]` (square-free factors with
     /// multiplicities; the value for linear factors), plus `zero_polynomial`, `normal_rank`.
     pub fn report(&self) -> Report {
+        self.report_in(Domain::Continuous)
+    }
+
+    /// [`Self::report`] of a system in `domain`: the zero polynomial in `s` or `z`, and
+    /// `minimum_phase` for every zero in $\mathrm{Re}\, s < 0$ (Hurwitz) or, in discrete
+    /// time, in $|z| < 1$ (Schur-Cohn over $\mathbb{Q}$; `null` over other fields).
+    pub fn report_in(&self, domain: Domain) -> Report {
+        let p = &self.polynomial;
+        let minimum_phase = match domain {
+            Domain::Continuous => crate::structure::scb::hurwitz(p),
+            Domain::Discrete => {
+                let k = p.field();
+                let q: Option<Vec<crate::field::Rational>> =
+                    p.coeffs().iter().map(|c| k.to_rational(c)).collect();
+                q.map(|c| schur_stable(&Poly::new(crate::field::Q, c)))
+            }
+        };
         Report::titled("invariant zeros")
-            .list("invariant_zeros", zero_items(&self.polynomial))
-            .str("zero_polynomial", self.polynomial.to_string_var("s"))
+            .with("variable", super::variable(domain))
+            .list("invariant_zeros", zero_items_in(p, domain.var()))
+            .str("zero_polynomial", p.to_string_var(domain.var()))
             .int("normal_rank", self.normal_rank)
             .with(
                 "minimum_phase",
-                crate::structure::scb::hurwitz(&self.polynomial)
-                    .map_or(crate::report::Value::Null, crate::report::Value::Bool),
+                minimum_phase.map_or(crate::report::Value::Null, crate::report::Value::Bool),
             )
     }
 }
@@ -146,6 +164,11 @@ impl<K: Field> InvariantZeros<K> {
 /// The zero polynomial's square-free factors as report items `{factor, multiplicity}`, with
 /// `root` for linear factors.
 pub(crate) fn zero_items<K: Field>(p: &Poly<K>) -> Vec<Value> {
+    zero_items_in(p, "s")
+}
+
+/// [`zero_items`] with the factors written in the variable `var`.
+pub(crate) fn zero_items_in<K: Field>(p: &Poly<K>, var: &str) -> Vec<Value> {
     if p.deg() == 0 {
         return vec![];
     }
@@ -178,7 +201,7 @@ pub(crate) fn zero_items<K: Field>(p: &Poly<K>) -> Vec<Value> {
         .filter(|(f, _)| f.deg() > 0)
         .map(|(f, mult)| {
             let mut r = Report::new()
-                .str("factor", f.to_string_var("s"))
+                .str("factor", f.to_string_var(var))
                 .int("multiplicity", mult);
             if f.deg() == 1 {
                 let root = k.neg(&k.div(&f.coeff(0), &f.coeff(1)).expect("non-zero lc"));

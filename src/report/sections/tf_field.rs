@@ -17,6 +17,7 @@ use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::realization::TransferRealization;
 use crate::report::{Report, Value};
+use crate::system::discrete::stability::Domain;
 use crate::system::transfer::TransferMatrix;
 use crate::system::{Descriptor, StateSpace};
 
@@ -26,9 +27,10 @@ fn ints(v: &[usize]) -> Value {
 
 /// One report item per irreducible factor over $K$ of `p`: `factor`, `degree`, `minpoly`
 /// (over $\mathbb{Q}$, of the factor's roots), `algebraic_multiplicity` (under `mult_key`),
-/// and for a linear factor the exact `value` and `approx`. Returns the items and whether
-/// the product of the factors is `p` up to its leading coefficient.
-fn factor_items(p: &Poly<QuadraticField>, mult_key: &str) -> Result<(Vec<Value>, bool)> {
+/// and for a linear factor the exact `value` and `approx`; factors are written in `var`.
+/// Returns the items and whether the product of the factors is `p` up to its leading
+/// coefficient.
+fn factor_items(p: &Poly<QuadraticField>, mult_key: &str, var: &str) -> Result<(Vec<Value>, bool)> {
     if p.is_zero() || p.deg() == 0 {
         return Ok((vec![], true));
     }
@@ -43,7 +45,7 @@ fn factor_items(p: &Poly<QuadraticField>, mult_key: &str) -> Result<(Vec<Value>,
         // the minimal polynomial over Q of the roots of f (f irreducible over K)
         let minpoly = rational_minpoly(f);
         let mut r = Report::new()
-            .str("factor", f.to_string_var("s"))
+            .str("factor", f.to_string_var(var))
             .int("degree", f.deg())
             .str("minpoly", minpoly.to_string());
         if f.deg() == 1 {
@@ -54,7 +56,7 @@ fn factor_items(p: &Poly<QuadraticField>, mult_key: &str) -> Result<(Vec<Value>,
                 Value::List(vec![Value::Float(re), Value::Float(im)]),
             );
         } else {
-            r = r.str("value", format!("a root of {}", f.to_string_var("s")));
+            r = r.str("value", format!("a root of {}", f.to_string_var(var)));
             r = r.list("roots", roots_of_factor(f, &minpoly)?);
         }
         items.push(Value::Obj(r.int(mult_key, *e)));
@@ -86,8 +88,8 @@ fn roots_of_factor(
         .collect())
 }
 
-/// Zero-pole-gain display over $K$: `k (factors) / (factors)`.
-fn zpk_string(num: &Poly<QuadraticField>, den: &Poly<QuadraticField>) -> Result<String> {
+/// Zero-pole-gain display over $K$ in the variable `var`: `k (factors) / (factors)`.
+fn zpk_string(num: &Poly<QuadraticField>, den: &Poly<QuadraticField>, var: &str) -> Result<String> {
     if num.is_zero() {
         return Ok("0".into());
     }
@@ -96,7 +98,7 @@ fn zpk_string(num: &Poly<QuadraticField>, den: &Poly<QuadraticField>) -> Result<
     let factors = |p: &Poly<QuadraticField>| -> Result<Vec<(String, usize)>> {
         Ok(factor_over_quadratic(p)?
             .iter()
-            .map(|(f, e)| (f.to_string_var("s"), *e))
+            .map(|(f, e)| (f.to_string_var(var), *e))
             .collect())
     };
     Ok(super::pencil::zpk_text(
@@ -154,7 +156,7 @@ impl TfRealization {
 }
 
 /// `tf` over a quadratic field: the rational report's keys plus `field` and
-/// `pole_polynomial`; `ss` is the input state-space system when there is one (its Markov
+/// `pole_polynomial`, in the variable of `domain`; `ss` is the input state-space system when there is one (its Markov
 /// parameters are compared with the transfer matrix's).
 ///
 /// # Errors
@@ -163,23 +165,26 @@ pub fn tf_report_quadratic(
     g: &TransferMatrix<QuadraticField>,
     r: &TfRealization,
     ss: Option<&StateSpace<QuadraticField>>,
+    domain: Domain,
 ) -> Result<Report> {
+    let var = domain.var();
     let sys = &r.system;
     let nf = r.finite_order;
     let k = sys.a.field().clone();
     let pole_poly = sys.a.submatrix(0, nf, 0, nf).charpoly()?;
-    let (poles, poles_ok) = factor_items(&pole_poly, "algebraic_multiplicity")?;
+    let (poles, poles_ok) = factor_items(&pole_poly, "algebraic_multiplicity", var)?;
     let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
-    let (tzeros, zeros_ok) = factor_items(&zeros.polynomial, "algebraic_multiplicity")?;
+    let (tzeros, zeros_ok) = factor_items(&zeros.polynomial, "algebraic_multiplicity", var)?;
     let markov_ok = ss.is_none_or(|s| g.matches_markov(s));
-    let (tm, zpk) = super::pencil::transfer_lists(g, zpk_string)?;
+    let (tm, zpk) = super::pencil::transfer_lists(g, var, zpk_string)?;
     let mut rep = Report::titled(format!("transfer matrix over {k}"))
         .str("field", k.to_string())
+        .with("variable", super::variable(domain))
         .list("transfer_matrix", tm)
         .list("zpk", zpk)
         .int("mcmillan_degree", r.mcmillan_degree)
         .int("infinite_pole_degree", r.mcmillan_degree - nf)
-        .str("pole_polynomial", pole_poly.to_string_var("s"))
+        .str("pole_polynomial", pole_poly.to_string_var(var))
         .list("poles", poles)
         .list("transmission_zeros", tzeros)
         .with("infinite_zero_orders", ints(&zeros.infinite_zero_orders))

@@ -7,9 +7,13 @@
 //! | [`tustin_inverse`] | d2c, its exact inverse: $N = (A_d + I)^{-1}$, $A = \frac{2}{T}(A_d - I) N$, $B = \frac{2}{T} N B_d$, $C = 2 C_d N$, $D = D_d - C_d N B_d$ |
 //! | [`step_sequence`] | $y_k = D + \sum_{i<k} C A^i B$ (unit step on each input, $x_0 = 0$) |
 //! | [`impulse_sequence`] | the response to a unit-area pulse $u_0 = 1/T$: $y_0 = D/T$, $y_k = C A^{k-1} B / T$ (python-control, MATLAB) |
+//! | [`zoh_exact`] | zero-order hold where $e^{AT}$ is exact ($A$ nilpotent: the series stop), checked by $\log A_d = A T$ |
 //! | [`stability`] | $|z| < 1$ decided exactly over $\mathbb{Q}$ (Schur-Cohn, Sturm on the circle) |
 
 pub mod stability;
+mod zoh;
+
+pub use zoh::{ZohExact, zoh_exact};
 
 use super::StateSpace;
 use crate::error::{Error, Result};

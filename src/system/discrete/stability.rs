@@ -34,6 +34,26 @@ pub enum Domain {
     Discrete,
 }
 
+impl Domain {
+    /// The time domain of a system with sample time `dt` (`None`: continuous time).
+    pub fn of(dt: Option<&crate::field::Rational>) -> Self {
+        if dt.is_some() {
+            Domain::Discrete
+        } else {
+            Domain::Continuous
+        }
+    }
+
+    /// The transform variable of transfer functions and characteristic polynomials:
+    /// `s` (Laplace) in continuous time, `z` in discrete time.
+    pub fn var(self) -> &'static str {
+        match self {
+            Domain::Continuous => "s",
+            Domain::Discrete => "z",
+        }
+    }
+}
+
 /// Where the roots of an irreducible factor lie.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Place {
