@@ -41,6 +41,8 @@ mod discrete;
 mod display;
 #[path = "everyday.rs"]
 mod everyday;
+#[path = "failure_class.rs"]
+mod failure_class;
 #[path = "field_axioms.rs"]
 mod field_axioms;
 #[path = "fields_float.rs"]

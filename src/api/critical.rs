@@ -23,10 +23,8 @@ pub struct CriticalArgs<'a> {
 }
 
 fn bound(s: &str, what: &str) -> Result<Rational, Failure> {
-    crate::io::expr::parse_number(s.trim()).map_err(|e| Failure {
-        code: 2,
-        message: format!("critical: --{what} '{s}': {}", e.msg),
-    })
+    crate::io::expr::parse_number(s.trim())
+        .map_err(|e| Failure::input(format!("critical: --{what} '{s}': {}", e.msg)))
 }
 
 fn number(a: &AlgebraicNumber, digits: usize) -> Report {
@@ -176,16 +174,13 @@ pub fn report(cv: &CriticalValues, digits: usize) -> Report {
 fn checked(a: &CriticalArgs<'_>) -> Result<(Rational, Rational), Failure> {
     let (from, to) = (bound(a.from, "from")?, bound(a.to, "to")?);
     if from > to || !(1..=super::args::MAX_DIGITS).contains(&a.digits) {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "critical: need --from <= --to and 1 <= --digits <= {} (got {}, {}, {})",
-                super::args::MAX_DIGITS,
-                a.from,
-                a.to,
-                a.digits
-            ),
-        });
+        return Err(Failure::input(format!(
+            "critical: need --from <= --to and 1 <= --digits <= {} (got {}, {}, {})",
+            super::args::MAX_DIGITS,
+            a.from,
+            a.to,
+            a.digits
+        )));
     }
     Ok((from, to))
 }

@@ -40,8 +40,9 @@ enum What {
     Mnf,
 }
 
+/// `--steps` for a case it does not cover (exit 2; Python's `UnsupportedError`).
 fn refuse(message: String) -> Failure {
-    Failure { code: 2, message }
+    Failure::unsupported(message)
 }
 
 const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf` and `minreal --method kalman|jordan|rosenbrock|ho-kalman` (not for `minreal --method era` or `--descriptor`)";
@@ -175,8 +176,8 @@ pub fn execute(
     let Some((file, what)) = what(cmd) else {
         return Err(refuse(AVAILABLE.into()));
     };
-    let opts = SymbolicOptions::from_args(symbolic, at).map_err(refuse)?;
-    let sys = super::System::open(file, &opts).map_err(|e| refuse(e.to_string()))?;
+    let opts = SymbolicOptions::from_args(symbolic, at).map_err(Failure::input)?;
+    let sys = super::System::open(file, &opts).map_err(Failure::from)?;
     let loaded = sys.loaded();
     let e = |err: crate::error::Error| super::common::with_path(file, err);
     let out = Render { format, standalone };
@@ -302,7 +303,7 @@ impl Render {
         }
         let text = derivation_latex(d, self.standalone);
         super::write_stdout(&text)
-            .map_err(|err| refuse(format!("cannot write the output: {err}")))?;
+            .map_err(|err| Failure::input(format!("cannot write the output: {err}")))?;
         let mut o = Outcome::new(derivation_report(d), verified);
         o.streamed = true;
         Ok(o)
