@@ -78,7 +78,7 @@ fn family_dim(fam: &ParamFamily) -> usize {
 /// The family swept: exact over $\mathbb{Q}(v)$ ([`ParamFamily`]), or read again over its
 /// extension field at each value ([`FieldFamily`]).
 enum Family<'a> {
-    Exact(ParamFamily),
+    Exact(Box<ParamFamily>),
     Field(FieldFamily<'a>),
 }
 
@@ -121,7 +121,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
     check_args(a)?;
     // the file was read as a system by the caller ([`crate::api::System::open`]; the
     // parameter swept may be `null`: a symbol)
-    let fam = Family::Exact(ParamFamily::from_file_at(a.file, a.param, a.at)?);
+    let fam = Family::Exact(Box::new(ParamFamily::from_file_at(a.file, a.param, a.at)?));
     run_family(a, &fam, stream)
 }
 
