@@ -172,20 +172,10 @@ fn study(
             Some(args) => super::sweep::run(&args, ctx.stdout),
             None => Err(not_a_sweep()),
         },
-        Command::Critical {
-            param,
-            from,
-            to,
-            digits,
-            ..
-        } => super::critical::run(&super::critical::CriticalArgs {
-            file: path,
-            param,
-            from,
-            to,
-            digits: *digits,
-            at,
-        }),
+        Command::Critical { .. } => match super::critical::CriticalArgs::of(cmd, path, at) {
+            Some(args) => super::critical::run(&args),
+            None => Err(not_a_sweep()),
+        },
         _ => Err(Failure::verification(
             "internal: not a parameter study".into(),
         )),
@@ -208,7 +198,7 @@ impl Default for RunContext {
 /// The system file a command reads (`None`: `analyze` on the built-in example).
 /// [`super::sweep::SweepArgs::of`] answers every `Command::Sweep`; this is never reached.
 fn not_a_sweep() -> Failure {
-    Failure::verification("internal: sweep arguments of a command that is not a sweep".into())
+    Failure::verification("internal: parameter-study arguments of another command".into())
 }
 
 pub(super) fn file_of(cmd: &Command) -> Option<&Path> {
@@ -281,26 +271,17 @@ impl SystemVisitor for FileCommand<'_> {
                     None => Err(not_a_sweep()),
                 }
             }
-            Command::Critical {
-                param,
-                from,
-                to,
-                digits,
-                ..
-            } if self.from_file => match &f.ground {
-                crate::io::Ground::Quadratic(k) => super::critical::run_field(
-                    &super::critical::CriticalArgs {
-                        file: path,
-                        param,
-                        from,
-                        to,
-                        digits: *digits,
-                        at: &self.opts.at,
-                    },
-                    k,
-                ),
-                _ => study(self.cmd, path, &self.opts.at, self.ctx),
-            },
+            Command::Critical { .. } if self.from_file => {
+                match (
+                    &f.ground,
+                    super::critical::CriticalArgs::of(self.cmd, path, &self.opts.at),
+                ) {
+                    (crate::io::Ground::Quadratic(k), Some(args)) => {
+                        super::critical::run_field(&args, k)
+                    }
+                    _ => study(self.cmd, path, &self.opts.at, self.ctx),
+                }
+            }
             Command::Sweep { .. } | Command::Critical { .. } if !self.from_file => {
                 Err(Failure::input(format!(
                     "{}: a parameter study reads its system file (give the file's path)",

@@ -22,6 +22,31 @@ pub struct CriticalArgs<'a> {
     pub digits: usize,
 }
 
+impl<'a> CriticalArgs<'a> {
+    /// The arguments of a `critical` command on the system at `file` (`None` for other
+    /// commands).
+    pub fn of(cmd: &'a super::Command, file: &'a Path, at: &'a [(String, String)]) -> Option<Self> {
+        let super::Command::Critical {
+            param,
+            from,
+            to,
+            digits,
+            ..
+        } = cmd
+        else {
+            return None;
+        };
+        Some(CriticalArgs {
+            file,
+            param,
+            at,
+            from,
+            to,
+            digits: *digits,
+        })
+    }
+}
+
 fn bound(s: &str, what: &str) -> Result<Rational, Failure> {
     crate::io::expr::parse_number(s.trim())
         .map_err(|e| Failure::input(format!("critical: --{what} '{s}': {}", e.msg)))
