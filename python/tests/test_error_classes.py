@@ -25,10 +25,11 @@ def _diag(n, d):
 
 
 def test_unsupported_command_raises_unsupported_error():
-    p = _file("s2.json", {"A": [["sqrt(2)", 1], [0, 1]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]})
+    # a real Jordan form of a symbolic system: refused by the front door (not bad input)
+    p = _file("k.json", {"symbols": ["k"], "A": [["-k", 1], [0, -1]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]})
     G = exactlti.load(p)
-    with pytest.raises(exactlti.UnsupportedError, match="needs rational entries") as e:
-        G.run("jordan", "--steps")
+    with pytest.raises(exactlti.UnsupportedError, match="needs numbers") as e:
+        G.run("jordan", "--real")
     assert isinstance(e.value, NotImplementedError)
     assert not isinstance(e.value, ValueError)
 
