@@ -102,18 +102,19 @@ fn unsupported_and_limit_commands_carry_their_class() {
         r#"{"A": [["sqrt(2)", 1], [0, 1]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]}"#,
     );
     let s2 = s2.to_str().unwrap();
-    let f = failure(&["jordan", s2, "--steps"]);
+    // a real Jordan form of a symbolic system: refused by the front door (Unsupported)
+    let k = write(
+        "k.json",
+        r#"{"symbols": ["k"], "A": [["-k", 1], [0, -1]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]}"#,
+    );
+    let f = failure(&["jordan", k.to_str().unwrap(), "--real"]);
     assert_eq!(
         (f.class, f.code),
         (ErrorClass::Unsupported, 2),
         "{}",
         f.message
     );
-    assert!(
-        f.message.contains("needs rational entries"),
-        "{}",
-        f.message
-    );
+    assert!(f.message.contains("needs numbers"), "{}", f.message);
     let (code, _, err) = run(&["jordan", s2, "--steps"]);
     assert_eq!(code, 2);
     assert!(err.contains("needs rational entries"), "{err}");
