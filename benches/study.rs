@@ -6,8 +6,9 @@
 //! numpy eigenvalue loop over the same points and prints ratios. Output lines:
 //! `case <name> <best ms>`.
 
-use exactlti::field::Rational;
-use exactlti::study::ratfunc::{RatFunc, eval_ratfunc};
+use exactlti::field::{Field, Rational};
+use exactlti::matrix::Matrix;
+use exactlti::ratfunc::{RatFunc, RatFuncField};
 use exactlti::study::{ParamFamily, critical_values, sweep, sweep_values};
 use std::path::Path;
 use std::time::Instant;
@@ -22,8 +23,12 @@ fn best_ms(reps: usize, mut f: impl FnMut()) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
+fn qs() -> RatFuncField {
+    RatFuncField::new(&["s"]).expect("a symbol")
+}
+
 fn rf(s: &str) -> RatFunc {
-    eval_ratfunc(s, &|n| Ok((n == "s").then(RatFunc::var))).expect("valid")
+    qs().parse(s).expect("valid")
 }
 
 /// Ten masses in a chain, wall at the left: m_i = 1 + i/10, springs s (1 + i), dampers
@@ -39,7 +44,7 @@ pub fn chain(n: usize) -> ParamFamily {
         // spring/damper i joins mass i to mass i-1 (or the wall)
         let (ks, cs) = (format!("s*{}", i + 1), format!("{}/10", i + 1));
         let add = |x: &mut Vec<Vec<RatFunc>>, a: usize, b: usize, e: &str, sign: &str| {
-            x[a][b] = x[a][b].add(&rf(&format!("{sign}({e})"))).expect("sum");
+            x[a][b] = qs().add(&x[a][b], &rf(&format!("{sign}({e})")));
         };
         add(&mut k, i, i, &ks, "");
         add(&mut l, i, i, &cs, "");
@@ -52,7 +57,8 @@ pub fn chain(n: usize) -> ParamFamily {
             add(&mut l, i - 1, i, &cs, "-");
         }
     }
-    ParamFamily::second_order("s", m, l, k).expect("square")
+    let mat = |rows| Matrix::from_rows(qs(), rows).expect("rectangular");
+    ParamFamily::second_order("s", mat(m), mat(l), mat(k)).expect("square")
 }
 
 fn main() {

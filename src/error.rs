@@ -92,7 +92,14 @@ impl Error {
     }
     /// The command line's exit status: 1 for a failed exact check, 2 otherwise.
     pub fn exit_code(&self) -> i32 {
-        if self.class() == ErrorClass::Verification {
+        self.class().exit_code()
+    }
+}
+
+impl ErrorClass {
+    /// The command line's exit status of the class: 1 for `Verification`, 2 otherwise.
+    pub fn exit_code(self) -> i32 {
+        if self == ErrorClass::Verification {
             1
         } else {
             2

@@ -47,6 +47,8 @@ mod discrete_text;
 mod display;
 #[path = "everyday.rs"]
 mod everyday;
+#[path = "failure_class.rs"]
+mod failure_class;
 #[path = "field_axioms.rs"]
 mod field_axioms;
 #[path = "fields_float.rs"]

@@ -4,9 +4,10 @@
 
 use exactlti::algebraic::AlgebraicNumber;
 use exactlti::field::{Q, Rational};
+use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;
+use exactlti::ratfunc::{RatFunc, RatFuncField};
 use exactlti::study::hurwitz::hurwitz_matrix;
-use exactlti::study::ratfunc::{RatFunc, eval_ratfunc};
 use exactlti::study::{
     CriticalKind, ParamFamily, charpoly_xv, critical_values, discriminant_v, hurwitz_delta_n1,
     sweep, sweep_values,
@@ -19,7 +20,15 @@ fn q(s: &str) -> Rational {
 }
 
 fn rf(s: &str, var: &str) -> RatFunc {
-    eval_ratfunc(s, &|n| Ok((n == var).then(RatFunc::var))).expect("valid expression")
+    RatFuncField::new(&[var])
+        .unwrap()
+        .parse(s)
+        .expect("valid expression")
+}
+
+/// A matrix over Q(var).
+fn mat(rows: Vec<Vec<RatFunc>>, var: &str) -> Matrix<RatFuncField> {
+    Matrix::from_rows(RatFuncField::new(&[var]).unwrap(), rows).expect("rectangular")
 }
 
 fn bicycle() -> ParamFamily {
@@ -126,9 +135,9 @@ fn damped_oscillator_textbook() {
     // c = 2, stable for c > 0
     let fam = ParamFamily::second_order(
         "c",
-        vec![vec![rf("1", "c")]],
-        vec![vec![rf("c", "c")]],
-        vec![vec![rf("1", "c")]],
+        mat(vec![vec![rf("1", "c")]], "c"),
+        mat(vec![vec![rf("c", "c")]], "c"),
+        mat(vec![vec![rf("1", "c")]], "c"),
     )
     .unwrap();
     let cv = critical_values(&fam, &q("-1"), &q("3")).unwrap();
@@ -160,10 +169,13 @@ fn damped_oscillator_textbook() {
 #[test]
 fn derogatory_double_eigenvalue_has_two_blocks() {
     // A(v) = diag(v, 1) - [[0, 0], [0, 0]]: at v = 1 the identity, blocks [1, 1]; zero at v = 0
-    let a = vec![
-        vec![rf("v", "v"), rf("0", "v")],
-        vec![rf("0", "v"), rf("1", "v")],
-    ];
+    let a = mat(
+        vec![
+            vec![rf("v", "v"), rf("0", "v")],
+            vec![rf("0", "v"), rf("1", "v")],
+        ],
+        "v",
+    );
     let fam = ParamFamily::first_order("v", a, None).unwrap();
     let cv = critical_values(&fam, &q("-2"), &q("2")).unwrap();
     let got: Vec<(String, CriticalKind)> = cv
@@ -180,7 +192,8 @@ fn derogatory_double_eigenvalue_has_two_blocks() {
     );
     assert_eq!(cv.critical[1].eigenvalues_at[0].blocks, [1, 1]);
     // a pole: A(v) = [[1/(v - 1)]] is undefined at v = 1
-    let fam = ParamFamily::first_order("v", vec![vec![rf("1/(v - 1)", "v")]], None).unwrap();
+    let fam =
+        ParamFamily::first_order("v", mat(vec![vec![rf("1/(v - 1)", "v")]], "v"), None).unwrap();
     let cv = critical_values(&fam, &q("0"), &q("2")).unwrap();
     assert_eq!(cv.singular.len(), 1);
     assert_eq!(cv.intervals.len(), 2);

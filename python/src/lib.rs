@@ -51,16 +51,22 @@ enum Fail {
     Verification(String),
 }
 
-impl From<Error> for Fail {
-    /// By the library's class of the error ([`Error::class`]), as the command line does.
-    fn from(e: Error) -> Self {
-        let m = e.to_string();
-        match e.class() {
+impl Fail {
+    /// The failure of class `class` with message `m`.
+    fn of_class(class: ErrorClass, m: String) -> Self {
+        match class {
             ErrorClass::Unsupported => Fail::Unsupported(m),
             ErrorClass::Limit => Fail::Limit(m),
             ErrorClass::Verification => Fail::Verification(m),
             ErrorClass::Input => Fail::Input(m),
         }
+    }
+}
+
+impl From<Error> for Fail {
+    /// By the library's class of the error ([`Error::class`]), as the command line does.
+    fn from(e: Error) -> Self {
+        Fail::of_class(e.class(), e.to_string())
     }
 }
 
@@ -82,14 +88,11 @@ impl From<Fail> for PyErr {
 }
 
 impl From<exactlti::api::Failure> for Fail {
-    /// A command's failure: exit status 1 is a failed exact check, 2 bad input or a request
-    /// that cannot be met (the message says why).
+    /// A command's failure, by its class ([`exactlti::api::Failure::class`]): an
+    /// unsupported case or a size bound of an api command raises the same exception type as
+    /// the library's error would.
     fn from(f: exactlti::api::Failure) -> Self {
-        if f.code == 1 {
-            Fail::Verification(f.message)
-        } else {
-            Fail::Input(f.message)
-        }
+        Fail::of_class(f.class, f.message)
     }
 }
 

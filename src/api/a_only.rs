@@ -45,10 +45,7 @@ pub(super) fn fallback(cmd: &Command, path: &Path, err: InputError) -> Result<Ou
         return Err(err.into());
     };
     let run = |out: Option<Result<Outcome, Failure>>| -> Result<Outcome, Failure> {
-        let mut out = out.ok_or_else(|| Failure {
-            code: 2,
-            message: format!("{shown}: {reason}"),
-        })??;
+        let mut out = out.ok_or_else(|| Failure::input(format!("{shown}: {reason}")))??;
         out.report.push("note", Value::Str(note.clone()));
         Ok(out)
     };
@@ -112,17 +109,14 @@ fn jordan_cmd<F: EigenField>(
             .flat_map(|i| (0..a.ncols()).map(move |j| (i, j)))
             .find(|&(i, j)| k.to_rational(a.get(i, j)).is_none())
             .unwrap_or((0, 0));
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{}: A is not real (entry ({}, {}) = {}), so it has no real Jordan form; \
+        return Err(Failure::input(format!(
+            "{}: A is not real (entry ({}, {}) = {}), so it has no real Jordan form; \
                  `jordan` gives its Jordan form over {k}",
-                path.display(),
-                i + 1,
-                j + 1,
-                k.fmt_elem(a.get(i, j))
-            ),
-        });
+            path.display(),
+            i + 1,
+            j + 1,
+            k.fmt_elem(a.get(i, j))
+        )));
     }
     let jf = crate::jordan::jordan_over(a).map_err(e)?;
     if real {
@@ -145,15 +139,12 @@ pub(super) fn descriptor_jordan<K: Field + 'static>(
     let e = |err| with_path(path, err);
     let ks = crate::pencil::kronecker_structure(&d.a, &d.e).map_err(e)?;
     if !ks.is_regular() {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{}: the pencil sE - A is singular (det(sE - A) = 0 for every s, normal rank {} < {}): it has no Jordan structure; `exactlti pencil` gives its Kronecker structure",
-                path.display(),
-                ks.normal_rank,
-                ks.shape.0
-            ),
-        });
+        return Err(Failure::input(format!(
+            "{}: the pencil sE - A is singular (det(sE - A) = 0 for every s, normal rank {} < {}): it has no Jordan structure; `exactlti pencil` gives its Kronecker structure",
+            path.display(),
+            ks.normal_rank,
+            ks.shape.0
+        )));
     }
     let (af, method) = crate::realization::finite_dynamics(d).map_err(e)?;
     let mut out = a_command(cmd, &af, path).expect("jordan is an A-only command")?;

@@ -218,13 +218,10 @@ fn node_report(k: &RatFuncField, n: &Node<Summary>) -> (Report, bool) {
 
 /// `bifurcations` on a numeric system: refused, saying what it needs.
 pub(super) fn needs_symbols(file: &Path) -> Failure {
-    Failure {
-        code: 2,
-        message: format!(
-            "{}: bifurcations needs symbolic parameters (null values, a `symbols` list, or --symbolic)",
-            file.display()
-        ),
-    }
+    Failure::input(format!(
+        "{}: bifurcations needs symbolic parameters (null values, a `symbols` list, or --symbolic)",
+        file.display()
+    ))
 }
 
 /// Runs `bifurcations` on a system over $\mathbb{Q}(p)$.

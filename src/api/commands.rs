@@ -62,8 +62,7 @@ pub fn execute_ctx(
     at: Option<&str>,
     ctx: &RunContext,
 ) -> Result<Outcome, Failure> {
-    let opts =
-        SymbolicOptions::from_args(symbolic, at).map_err(|message| Failure { code: 2, message })?;
+    let opts = SymbolicOptions::from_args(symbolic, at).map_err(Failure::input)?;
     if let Command::Poly { op } = cmd {
         return poly(op).map(Outcome::plain);
     }
@@ -146,10 +145,7 @@ pub fn execute_on_many(
         return super::interconnect::run_on(c, systems);
     }
     let Some(sys) = systems.first() else {
-        return Err(Failure {
-            code: 2,
-            message: "no system given".into(),
-        });
+        return Err(Failure::input("no system given".into()));
     };
     if let Command::Dcgain { .. } = cmd {
         return super::dcgain::run(sys);
@@ -176,24 +172,13 @@ fn study(
             Some(args) => super::sweep::run(&args, ctx.stdout),
             None => Err(not_a_sweep()),
         },
-        Command::Critical {
-            param,
-            from,
-            to,
-            digits,
-            ..
-        } => super::critical::run(&super::critical::CriticalArgs {
-            file: path,
-            param,
-            from,
-            to,
-            digits: *digits,
-            at,
-        }),
-        _ => Err(Failure {
-            code: 1,
-            message: "internal: not a parameter study".into(),
-        }),
+        Command::Critical { .. } => match super::critical::CriticalArgs::of(cmd, path, at) {
+            Some(args) => super::critical::run(&args),
+            None => Err(not_a_sweep()),
+        },
+        _ => Err(Failure::verification(
+            "internal: not a parameter study".into(),
+        )),
     }
 }
 
@@ -213,10 +198,7 @@ impl Default for RunContext {
 /// The system file a command reads (`None`: `analyze` on the built-in example).
 /// [`super::sweep::SweepArgs::of`] answers every `Command::Sweep`; this is never reached.
 fn not_a_sweep() -> Failure {
-    Failure {
-        code: 1,
-        message: "internal: sweep arguments of a command that is not a sweep".into(),
-    }
+    Failure::verification("internal: parameter-study arguments of another command".into())
 }
 
 pub(super) fn file_of(cmd: &Command) -> Option<&Path> {
@@ -289,33 +271,23 @@ impl SystemVisitor for FileCommand<'_> {
                     None => Err(not_a_sweep()),
                 }
             }
-            Command::Critical {
-                param,
-                from,
-                to,
-                digits,
-                ..
-            } if self.from_file => match &f.ground {
-                crate::io::Ground::Quadratic(k) => super::critical::run_field(
-                    &super::critical::CriticalArgs {
-                        file: path,
-                        param,
-                        from,
-                        to,
-                        digits: *digits,
-                        at: &self.opts.at,
-                    },
-                    k,
-                ),
-                _ => study(self.cmd, path, &self.opts.at, self.ctx),
-            },
-            Command::Sweep { .. } | Command::Critical { .. } if !self.from_file => Err(Failure {
-                code: 2,
-                message: format!(
+            Command::Critical { .. } if self.from_file => {
+                match (
+                    &f.ground,
+                    super::critical::CriticalArgs::of(self.cmd, path, &self.opts.at),
+                ) {
+                    (crate::io::Ground::Quadratic(k), Some(args)) => {
+                        super::critical::run_field(&args, k)
+                    }
+                    _ => study(self.cmd, path, &self.opts.at, self.ctx),
+                }
+            }
+            Command::Sweep { .. } | Command::Critical { .. } if !self.from_file => {
+                Err(Failure::input(format!(
                     "{}: a parameter study reads its system file (give the file's path)",
                     path.display()
-                ),
-            }),
+                )))
+            }
             Command::Sweep { .. } | Command::Critical { .. } => {
                 study(self.cmd, path, &self.opts.at, self.ctx)
             }
@@ -413,10 +385,9 @@ impl SystemVisitor for FileCommand<'_> {
             | Command::Obsv { .. }
             | Command::Tf { .. }
             | Command::Interconnect(_)
-            | Command::Dcgain { .. } => Err(Failure {
-                code: 1,
-                message: "internal: command dispatched elsewhere".into(),
-            }),
+            | Command::Dcgain { .. } => Err(Failure::verification(
+                "internal: command dispatched elsewhere".into(),
+            )),
         }
     }
     fn visit_symbolic(
@@ -450,14 +421,11 @@ impl SystemVisitor for FileCommand<'_> {
                 } else {
                     "critical"
                 };
-                Err(Failure {
-                    code: 2,
-                    message: format!(
-                        "{}: `{name}` along {param} needs numbers for every other parameter ({} without one); give them values with --at or in the file",
-                        self.path.display(),
-                        other.join(", ")
-                    ),
-                })
+                Err(Failure::input(format!(
+                    "{}: `{name}` along {param} needs numbers for every other parameter ({} without one); give them values with --at or in the file",
+                    self.path.display(),
+                    other.join(", ")
+                )))
             }
             _ => super::symbolic::execute(self.cmd, f, t, self.path),
         }
@@ -487,12 +455,11 @@ fn needs_rational<'t, K: Field + 'static>(
     t: &'t TypedSystem<K>,
     what: &str,
 ) -> Result<&'t TypedSystem<Q>, Failure> {
-    as_rational(t).ok_or_else(|| Failure {
-        code: 2,
-        message: format!(
+    as_rational(t).ok_or_else(|| {
+        Failure::input(format!(
             "{}: {what} needs rational matrices; this file's entries lie in {}",
             f.path, f.ground
-        ),
+        ))
     })
 }
 
@@ -541,17 +508,13 @@ fn standard<K: Field>(t: &TypedSystem<K>, path: &Path) -> Result<Outcome, Failur
 
 fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
     let parse = |e: &str| {
-        crate::poly::parse_poly_q(e).map_err(|err| Failure {
-            code: 2,
-            message: format!("polynomial \"{e}\": {err}"),
-        })
+        crate::poly::parse_poly_q(e)
+            .map_err(|err| Failure::input(format!("polynomial \"{e}\": {err}")))
     };
     match op {
         super::PolyCmd::Factor { expr } => {
-            let ids = crate::mpoly::parse::identifiers(expr).map_err(|err| Failure {
-                code: 2,
-                message: format!("polynomial \"{expr}\": {err}"),
-            })?;
+            let ids = crate::mpoly::parse::identifiers(expr)
+                .map_err(|err| Failure::input(format!("polynomial \"{expr}\": {err}")))?;
             if ids.len() <= 1 && ids.iter().all(|v| v.len() == 1) {
                 let p = parse(expr)?;
                 return Ok(sections::factor_report(&p)?);
@@ -566,13 +529,10 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
         super::PolyCmd::Roots { expr, digits } => {
             let p = parse(expr)?;
             if *digits == 0 || *digits > super::args::MAX_DIGITS {
-                return Err(Failure {
-                    code: 2,
-                    message: format!(
-                        "--digits must be between 1 and {} (got {digits})",
-                        super::args::MAX_DIGITS
-                    ),
-                });
+                return Err(Failure::input(format!(
+                    "--digits must be between 1 and {} (got {digits})",
+                    super::args::MAX_DIGITS
+                )));
             }
             Ok(sections::roots_report(&p, *digits)?)
         }
@@ -581,10 +541,8 @@ fn poly(op: &super::PolyCmd) -> Result<Report, Failure> {
 
 /// Parses several polynomials in the union of their variables (sorted).
 fn parse_multi(texts: &[&String]) -> Result<(Vec<String>, Vec<crate::mpoly::QPoly>), Failure> {
-    let fail = |e: &str, err: crate::error::Error| Failure {
-        code: 2,
-        message: format!("polynomial \"{e}\": {err}"),
-    };
+    let fail =
+        |e: &str, err: crate::error::Error| Failure::input(format!("polynomial \"{e}\": {err}"));
     let mut vars: Vec<String> = Vec::new();
     for t in texts {
         vars.extend(crate::mpoly::parse::identifiers(t).map_err(|err| fail(t, err))?);
@@ -592,10 +550,10 @@ fn parse_multi(texts: &[&String]) -> Result<(Vec<String>, Vec<crate::mpoly::QPol
     vars.sort();
     vars.dedup();
     if vars.len() > crate::mpoly::MAX_VARS {
-        return Err(Failure {
-            code: 2,
-            message: format!("at most {} variables", crate::mpoly::MAX_VARS),
-        });
+        return Err(Failure::limit(format!(
+            "at most {} variables",
+            crate::mpoly::MAX_VARS
+        )));
     }
     let refs: Vec<&str> = vars.iter().map(|s| s.as_str()).collect();
     let polys = texts

@@ -9,11 +9,7 @@ use std::path::Path;
 
 /// The error as a failure whose message starts with the file's path.
 pub(super) fn with_path(path: &Path, e: Error) -> Failure {
-    let f: Failure = e.into();
-    Failure {
-        code: f.code,
-        message: format!("{}: {}", path.display(), f.message),
-    }
+    Failure::from(e).in_file(path)
 }
 
 /// The report of `linalg OP` on `a`, with every rendering ([`Target::Every`]).

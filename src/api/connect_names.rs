@@ -27,10 +27,7 @@ pub struct NamedConnection {
 }
 
 fn bad(message: String) -> Failure {
-    Failure {
-        code: 2,
-        message: format!("interconnect: {message}"),
-    }
+    Failure::input(format!("interconnect: {message}"))
 }
 
 /// The names of every input and output of the systems side by side (`u[i]`, `y[i]` where a
@@ -187,19 +184,16 @@ impl SystemsVisitor for Close {
             })
             .collect();
         if !routing_holds(&all, &routing, &closed, &points) {
-            return Err(Failure {
-                code: 1,
-                message: "interconnect: the exact check F (I - G K)^-1 G E failed".into(),
-            });
+            return Err(Failure::verification(
+                "interconnect: the exact check F (I - G K)^-1 G E failed".into(),
+            ));
         }
         let typed = TypedSystem {
             descriptor: None,
             a_raw: closed.a.clone(),
             ss: closed,
         };
-        System::from_field("interconnect", typed).ok_or_else(|| Failure {
-            code: 1,
-            message: "interconnect: internal: an unknown field".into(),
-        })
+        System::from_field("interconnect", typed)
+            .ok_or_else(|| Failure::verification("interconnect: internal: an unknown field".into()))
     }
 }

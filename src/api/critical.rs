@@ -22,11 +22,34 @@ pub struct CriticalArgs<'a> {
     pub digits: usize,
 }
 
+impl<'a> CriticalArgs<'a> {
+    /// The arguments of a `critical` command on the system at `file` (`None` for other
+    /// commands).
+    pub fn of(cmd: &'a super::Command, file: &'a Path, at: &'a [(String, String)]) -> Option<Self> {
+        let super::Command::Critical {
+            param,
+            from,
+            to,
+            digits,
+            ..
+        } = cmd
+        else {
+            return None;
+        };
+        Some(CriticalArgs {
+            file,
+            param,
+            at,
+            from,
+            to,
+            digits: *digits,
+        })
+    }
+}
+
 fn bound(s: &str, what: &str) -> Result<Rational, Failure> {
-    crate::io::expr::parse_number(s.trim()).map_err(|e| Failure {
-        code: 2,
-        message: format!("critical: --{what} '{s}': {}", e.msg),
-    })
+    crate::io::expr::parse_number(s.trim())
+        .map_err(|e| Failure::input(format!("critical: --{what} '{s}': {}", e.msg)))
 }
 
 fn number(a: &AlgebraicNumber, digits: usize) -> Report {
@@ -176,16 +199,13 @@ pub fn report(cv: &CriticalValues, digits: usize) -> Report {
 fn checked(a: &CriticalArgs<'_>) -> Result<(Rational, Rational), Failure> {
     let (from, to) = (bound(a.from, "from")?, bound(a.to, "to")?);
     if from > to || !(1..=super::args::MAX_DIGITS).contains(&a.digits) {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "critical: need --from <= --to and 1 <= --digits <= {} (got {}, {}, {})",
-                super::args::MAX_DIGITS,
-                a.from,
-                a.to,
-                a.digits
-            ),
-        });
+        return Err(Failure::input(format!(
+            "critical: need --from <= --to and 1 <= --digits <= {} (got {}, {}, {})",
+            super::args::MAX_DIGITS,
+            a.from,
+            a.to,
+            a.digits
+        )));
     }
     Ok((from, to))
 }

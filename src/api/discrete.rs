@@ -82,10 +82,7 @@ impl DiscreteCmd {
 }
 
 fn fail(path: &Path, message: impl Into<String>) -> Failure {
-    Failure {
-        code: 2,
-        message: format!("{}: {}", path.display(), message.into()),
-    }
+    Failure::input(format!("{}: {}", path.display(), message.into()))
 }
 
 /// Runs a discrete-time subcommand on a system over its field.
@@ -263,10 +260,8 @@ fn finish(
 ) -> Result<Outcome, Failure> {
     let mut rep = rep;
     if let Some(out) = out {
-        std::fs::write(out, text).map_err(|err| Failure {
-            code: 2,
-            message: format!("{}: cannot write: {err}", out.display()),
-        })?;
+        std::fs::write(out, text)
+            .map_err(|err| Failure::input(format!("{}: cannot write: {err}", out.display())))?;
         rep = rep.str("written", out.display().to_string());
     }
     Ok(Outcome::new(rep, ok))

@@ -13,11 +13,7 @@ use num_complex::Complex;
 use std::path::Path;
 
 fn fail(path: &Path, e: crate::error::Error) -> Failure {
-    let f: Failure = e.into();
-    Failure {
-        code: f.code,
-        message: format!("{}: {}", path.display(), f.message),
-    }
+    Failure::from(e).in_file(path)
 }
 
 /// The float image of a system: real when every entry is real under the field's
@@ -130,12 +126,9 @@ pub fn freqresp_dt<K: Field>(
     dt: Option<f64>,
 ) -> Result<Report, Failure> {
     if !(from > 0.0 && to > from && (2..=100_000).contains(&points)) {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "freqresp: need 0 < --from < --to and 2 <= --points <= 100000 (got {from}, {to}, {points})"
-            ),
-        });
+        return Err(Failure::input(format!(
+            "freqresp: need 0 < --from < --to and 2 <= --points <= 100000 (got {from}, {to}, {points})"
+        )));
     }
     // bounded output: the report holds every value (JSON ~50 bytes each), so a 20x20
     // system at 100000 points (40 million values, GBs) is refused with the reason
@@ -147,15 +140,12 @@ pub fn freqresp_dt<K: Field>(
         .saturating_mul(t.ss.noutputs())
         .saturating_mul(t.ss.ninputs());
     if values > MAX_RESPONSE_VALUES {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "freqresp: {points} points x {} outputs x {} inputs = {values} complex values; at most {MAX_RESPONSE_VALUES} (lower --points to {} or fewer)",
-                t.ss.noutputs(),
-                t.ss.ninputs(),
-                (MAX_RESPONSE_VALUES / (t.ss.noutputs() * t.ss.ninputs()).max(1)).max(2)
-            ),
-        });
+        return Err(Failure::limit(format!(
+            "freqresp: {points} points x {} outputs x {} inputs = {values} complex values; at most {MAX_RESPONSE_VALUES} (lower --points to {} or fewer)",
+            t.ss.noutputs(),
+            t.ss.ninputs(),
+            (MAX_RESPONSE_VALUES / (t.ss.noutputs() * t.ss.ninputs()).max(1)).max(2)
+        )));
     }
     let mut freqs = logspace(from, to, points);
     if two_sided {
@@ -169,10 +159,8 @@ pub fn freqresp_dt<K: Field>(
     let resp = float_response_dt(t, &sys, path, &freqs, dt)?;
     let table = response_table(&resp);
     if let Some(p) = csv {
-        std::fs::write(p, response_csv(&freqs, &table)).map_err(|e| Failure {
-            code: 2,
-            message: format!("{}: cannot write: {e}", p.display()),
-        })?;
+        std::fs::write(p, response_csv(&freqs, &table))
+            .map_err(|e| Failure::input(format!("{}: cannot write: {e}", p.display())))?;
     }
     let resp_json = table
         .iter()

@@ -38,11 +38,7 @@ pub(crate) type Item = (String, bool, Report);
 pub(crate) type Items = (Vec<Item>, Vec<(&'static str, String)>);
 
 fn fail(path: &Path, e: crate::error::Error) -> Failure {
-    let f: Failure = e.into();
-    Failure {
-        code: f.code,
-        message: format!("{}: {}", path.display(), f.message),
-    }
+    Failure::from(e).in_file(path)
 }
 
 /// The label of a float claim beside the exact answer: a claim the exact path refutes is

@@ -176,15 +176,12 @@ fn checked_parts(
 ) -> Result<(Vec<String>, crate::io::SignalNames), Failure> {
     let (op, paths, _) = cmd.parts_or_fail()?;
     if systems.len() != paths.len() {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{}: needs {} systems (got {})",
-                op.name(),
-                paths.len(),
-                systems.len()
-            ),
-        });
+        return Err(Failure::input(format!(
+            "{}: needs {} systems (got {})",
+            op.name(),
+            paths.len(),
+            systems.len()
+        )));
     }
     let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
     let dt = common_dt(op, &names, systems)?;
@@ -215,17 +212,14 @@ pub(crate) fn common_dt(
                         format!("dt = {}", crate::field::fmt_rational(d))
                     })
                 };
-                return Err(Failure {
-                    code: 2,
-                    message: format!(
-                        "{}: cannot connect {} ({}) with {} ({}): every system needs the same time domain and sample time (convert with c2d or d2c)",
-                        op.name(),
-                        names[*j],
-                        show(d0),
-                        names[i],
-                        show(&dt)
-                    ),
-                });
+                return Err(Failure::input(format!(
+                    "{}: cannot connect {} ({}) with {} ({}): every system needs the same time domain and sample time (convert with c2d or d2c)",
+                    op.name(),
+                    names[*j],
+                    show(d0),
+                    names[i],
+                    show(&dt)
+                )));
             }
             Some(_) => {}
         }
@@ -315,20 +309,18 @@ impl SystemsVisitor for Connect<'_> {
                 .extension()
                 .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
             {
-                return Err(Failure {
-                    code: 2,
-                    message: format!("{}: --out writes JSON; name the file .json", out.display()),
-                });
+                return Err(Failure::input(format!(
+                    "{}: --out writes JSON; name the file .json",
+                    out.display()
+                )));
             }
             let written = min.as_ref().map_or(&sys, |m| &m.system);
             let vars = symbols.map(|s| s.0).unwrap_or_default();
             let name = format!("{} of {}", self.op.name(), self.names.join(", "));
             let text =
                 crate::io::write::system_file_text(Some(&name), written, &vars, &self.signals);
-            std::fs::write(out, text).map_err(|err| Failure {
-                code: 2,
-                message: format!("{}: cannot write: {err}", out.display()),
-            })?;
+            std::fs::write(out, text)
+                .map_err(|err| Failure::input(format!("{}: cannot write: {err}", out.display())))?;
             report = report.str("written", out.display().to_string());
         }
         let ok = verified && min.as_ref().is_none_or(|m| m.verified);
@@ -367,22 +359,18 @@ impl SystemsVisitor for Build<'_> {
         let conn = Interconnection::of(self.op, &parts).map_err(e)?;
         let ss = conn.compute().map_err(e)?;
         if !verify(&conn, &ss) {
-            return Err(Failure {
-                code: 1,
-                message: format!(
-                    "{}: the exact check of the interconnection failed",
-                    self.name
-                ),
-            });
+            return Err(Failure::verification(format!(
+                "{}: the exact check of the interconnection failed",
+                self.name
+            )));
         }
         let typed = TypedSystem {
             descriptor: None,
             a_raw: ss.a.clone(),
             ss,
         };
-        super::System::from_field(self.name, typed).ok_or_else(|| Failure {
-            code: 1,
-            message: format!("{}: internal: an unknown field", self.name),
+        super::System::from_field(self.name, typed).ok_or_else(|| {
+            Failure::verification(format!("{}: internal: an unknown field", self.name))
         })
     }
 }

@@ -52,7 +52,7 @@ pub use sweep::sweep_file;
 pub use system::{Options, System, SystemVisitor};
 pub use toolbox::{GramArg, ToolboxCmd};
 
-use crate::error::Error;
+use crate::error::{Error, ErrorClass};
 use crate::report::Report;
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -337,11 +337,47 @@ impl Outcome {
     }
 }
 
-/// A command failure: exit code and the one-line message.
+/// A command failure: exit code, the class of the error ([`ErrorClass`]: the command
+/// line's exit status and Python's exception type follow it) and the one-line message.
 #[derive(Debug)]
 pub struct Failure {
     pub code: i32,
+    pub class: ErrorClass,
     pub message: String,
+}
+
+impl Failure {
+    /// A failure of class `class`, its exit status ([`ErrorClass::exit_code`]).
+    pub fn new(class: ErrorClass, message: String) -> Self {
+        Failure {
+            code: class.exit_code(),
+            class,
+            message,
+        }
+    }
+    /// Bad input or an undefined result (exit 2).
+    pub fn input(message: String) -> Self {
+        Self::new(ErrorClass::Input, message)
+    }
+    /// A case this implementation does not handle (exit 2).
+    pub fn unsupported(message: String) -> Self {
+        Self::new(ErrorClass::Unsupported, message)
+    }
+    /// A size or time bound of the library (exit 2).
+    pub fn limit(message: String) -> Self {
+        Self::new(ErrorClass::Limit, message)
+    }
+    /// A failed exact check or an internal inconsistency (exit 1).
+    pub fn verification(message: String) -> Self {
+        Self::new(ErrorClass::Verification, message)
+    }
+    /// The same failure with the file's name in front of its message.
+    pub fn in_file(self, path: &std::path::Path) -> Self {
+        Failure {
+            message: format!("{}: {}", path.display(), self.message),
+            ..self
+        }
+    }
 }
 
 impl std::fmt::Display for Failure {
@@ -355,10 +391,7 @@ impl std::error::Error for Failure {}
 impl From<Error> for Failure {
     /// The exit status of the error's class ([`Error::exit_code`]) and its line.
     fn from(e: Error) -> Self {
-        Failure {
-            code: e.exit_code(),
-            message: e.to_string(),
-        }
+        Failure::new(e.class(), e.to_string())
     }
 }
 

@@ -114,13 +114,10 @@ pub fn execute(cmd: &Command, path: &Path) -> Result<Outcome, Failure> {
     let l = load_descriptor_path(path)?;
     if let Some((a, e)) = &l.pencil {
         if !matches!(cmd, Command::Pencil { .. }) {
-            return Err(Failure {
-                code: 2,
-                message: format!(
-                    "{}: key A: must be square (a rectangular A is a pencil: use `exactlti pencil`)",
-                    path.display()
-                ),
-            });
+            return Err(Failure::input(format!(
+                "{}: key A: must be square (a rectangular A is a pencil: use `exactlti pencil`)",
+                path.display()
+            )));
         }
         let ps = pencil_structure(a, e).map_err(|err| with_path(path, err))?;
         return Ok(Outcome::new(sections::pencil_report(&ps), ps.verified));
@@ -235,13 +232,10 @@ fn run_on<K: Field + 'static>(
                     return Ok(Outcome::new(rep, ok));
                 }
                 let Some(sq) = (s as &dyn Any).downcast_ref::<Descriptor<Q>>() else {
-                    return Err(Failure {
-                        code: 2,
-                        message: format!(
-                            "{}: tf: only rational and quadratic-field systems are supported",
-                            path.display()
-                        ),
-                    });
+                    return Err(Failure::unsupported(format!(
+                        "{}: tf: only rational and quadratic-field systems are supported",
+                        path.display()
+                    )));
                 };
                 let mut markov = None;
                 let (g, r) = match transfer {
@@ -276,10 +270,9 @@ fn run_on<K: Field + 'static>(
                 let ok = r.verified;
                 Ok(Outcome::new(rep, ok))
             }
-            _ => Err(Failure {
-                code: 1,
-                message: "internal: command not handled by the descriptor commands".into(),
-            }),
+            _ => Err(Failure::verification(
+                "internal: command not handled by the descriptor commands".into(),
+            )),
         }
     }
 }

@@ -44,10 +44,8 @@ pub fn names(
 }
 
 fn write(p: &Path, text: &str) -> Result<(), Failure> {
-    std::fs::write(p, text).map_err(|e| Failure {
-        code: 2,
-        message: format!("{}: cannot write: {e}", p.display()),
-    })
+    std::fs::write(p, text)
+        .map_err(|e| Failure::input(format!("{}: cannot write: {e}", p.display())))
 }
 
 fn abcd<K: Field>(t: &TypedSystem<K>, path: &Path) -> Result<[DMatrix<f64>; 4], Failure> {
@@ -387,23 +385,17 @@ pub fn time_response<K: Field + 'static>(
     if args.points.is_some_and(|n| !(2..=100_000).contains(&n))
         || args.to.is_some_and(|x| !(x.is_finite() && x > 0.0))
     {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{what}: need 2 <= --points <= 100000 and --to > 0 seconds (got --points {}, --to {})",
-                args.points.map_or("default".into(), |n| n.to_string()),
-                args.to.map_or("default".into(), |x| x.to_string())
-            ),
-        });
+        return Err(Failure::input(format!(
+            "{what}: need 2 <= --points <= 100000 and --to > 0 seconds (got --points {}, --to {})",
+            args.points.map_or("default".into(), |n| n.to_string()),
+            args.to.map_or("default".into(), |x| x.to_string())
+        )));
     }
     if p == 0 || m == 0 {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{}: a {what} needs at least one input and one output (B and C)",
-                path.display()
-            ),
-        });
+        return Err(Failure::input(format!(
+            "{}: a {what} needs at least one input and one output (B and C)",
+            path.display()
+        )));
     }
     let complex = is_complex(t);
     let e = |err| with_path(path, err);
@@ -426,12 +418,9 @@ pub fn time_response<K: Field + 'static>(
     let points = args.points.unwrap_or_else(|| default_points(t_end, &poles));
     let values = points.saturating_mul(p).saturating_mul(m);
     if values > MAX_TIME_VALUES {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{what}: {points} points x {p} outputs x {m} inputs = {values} values; at most {MAX_TIME_VALUES} (lower --points)"
-            ),
-        });
+        return Err(Failure::limit(format!(
+            "{what}: {points} points x {p} outputs x {m} inputs = {values} values; at most {MAX_TIME_VALUES} (lower --points)"
+        )));
     }
     let times = time_grid(t_end, points);
     let (fl, imag) = match &mats {

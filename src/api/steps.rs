@@ -45,8 +45,9 @@ enum What {
     Mnf,
 }
 
+/// `--steps` for a case it does not cover (exit 2; Python's `UnsupportedError`).
 fn refuse(message: String) -> Failure {
-    Failure { code: 2, message }
+    Failure::unsupported(message)
 }
 
 const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf` and `minreal --method kalman|jordan|rosenbrock|ho-kalman` (not for `minreal --method era` or `--descriptor`)";
@@ -180,8 +181,8 @@ pub fn execute(
     let Some((file, _)) = what(cmd) else {
         return Err(refuse(refusal(cmd)));
     };
-    let opts = SymbolicOptions::from_args(symbolic, at).map_err(refuse)?;
-    let sys = super::System::open(file, &opts).map_err(|e| refuse(e.to_string()))?;
+    let opts = SymbolicOptions::from_args(symbolic, at).map_err(Failure::input)?;
+    let sys = super::System::open(file, &opts).map_err(Failure::from)?;
     derive(cmd, &sys, &Render { format, standalone })
 }
 
@@ -380,7 +381,7 @@ impl Sink for Render {
         }
         let text = derivation_latex(d, self.standalone);
         super::write_stdout(&text)
-            .map_err(|err| refuse(format!("cannot write the output: {err}")))?;
+            .map_err(|err| Failure::input(format!("cannot write the output: {err}")))?;
         let mut o = Outcome::new(derivation_report(d), verified);
         o.streamed = true;
         Ok(o)

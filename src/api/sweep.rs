@@ -7,7 +7,7 @@ use super::sweep_stream::{CsvSink, Sink};
 use super::{Failure, Outcome};
 use crate::report::plot::sweep::{root_locus_svg, sweep_svg};
 use crate::report::{Report, Value};
-use crate::study::{FamilyForm, ParamFamily, PointStatus, SweepResult, sweep, sweep_values};
+use crate::study::{ParamFamily, PointStatus, SweepResult, sweep, sweep_values};
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -56,10 +56,8 @@ impl<'a> SweepArgs<'a> {
 }
 
 fn write(p: &Path, text: &str) -> Result<(), Failure> {
-    std::fs::write(p, text).map_err(|e| Failure {
-        code: 2,
-        message: format!("{}: cannot write: {e}", p.display()),
-    })
+    std::fs::write(p, text)
+        .map_err(|e| Failure::input(format!("{}: cannot write: {e}", p.display())))
 }
 
 /// Parameter values computed per batch (each batch in parallel, then written out).
@@ -74,16 +72,13 @@ const PLOT_ROWS: usize = 15_000;
 
 /// The number of eigenvalues of the family (columns of the CSV).
 fn family_dim(fam: &ParamFamily) -> usize {
-    match &fam.form {
-        FamilyForm::First { a, .. } => a.len(),
-        FamilyForm::Second { m, .. } => 2 * m.len(),
-    }
+    fam.nstates()
 }
 
 /// The family swept: exact over $\mathbb{Q}(v)$ ([`ParamFamily`]), or read again over its
 /// extension field at each value ([`FieldFamily`]).
 enum Family<'a> {
-    Exact(ParamFamily),
+    Exact(Box<ParamFamily>),
     Field(FieldFamily<'a>),
 }
 
@@ -126,7 +121,7 @@ pub fn run(a: &SweepArgs<'_>, stream: Option<super::Format>) -> Result<Outcome, 
     check_args(a)?;
     // the file was read as a system by the caller ([`crate::api::System::open`]; the
     // parameter swept may be `null`: a symbol)
-    let fam = Family::Exact(ParamFamily::from_file_at(a.file, a.param, a.at)?);
+    let fam = Family::Exact(Box::new(ParamFamily::from_file_at(a.file, a.param, a.at)?));
     run_family(a, &fam, stream)
 }
 
@@ -170,13 +165,10 @@ fn check_args(a: &SweepArgs<'_>) -> Result<(), Failure> {
         && a.from <= a.to
         && (1..=1_000_000).contains(&a.points))
     {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "sweep: need finite --from <= --to and 1 <= --points <= 1000000 (got {}, {}, {})",
-                a.from, a.to, a.points
-            ),
-        });
+        return Err(Failure::input(format!(
+            "sweep: need finite --from <= --to and 1 <= --points <= 1000000 (got {}, {}, {})",
+            a.from, a.to, a.points
+        )));
     }
     Ok(())
 }
@@ -188,13 +180,10 @@ fn run_family(
 ) -> Result<Outcome, Failure> {
     let stream = stream.filter(|_| a.points > STREAM_POINTS);
     if stream == Some(super::Format::Latex) {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "sweep: --format latex takes at most {STREAM_POINTS} points (got {}; use --format json or --csv)",
-                a.points
-            ),
-        });
+        return Err(Failure::limit(format!(
+            "sweep: --format latex takes at most {STREAM_POINTS} points (got {}; use --format json or --csv)",
+            a.points
+        )));
     }
     let values = sweep_values(a.from, a.to, a.points);
     let title = format!("sweep of {} over [{}, {}]", a.param, a.from, a.to);

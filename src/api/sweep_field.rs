@@ -36,13 +36,10 @@ impl<'a> FieldFamily<'a> {
             } else {
                 format!("the file has: {}", names.join(", "))
             };
-            return Err(Failure {
-                code: 2,
-                message: format!(
-                    "{}: key parameters: no parameter '{param}' to vary ({has})",
-                    f.path
-                ),
-            });
+            return Err(Failure::input(format!(
+                "{}: key parameters: no parameter '{param}' to vary ({has})",
+                f.path
+            )));
         }
         Ok(FieldFamily { sys, param })
     }

@@ -13,10 +13,7 @@ use std::io::{BufWriter, Write};
 use std::path::Path;
 
 fn failure(what: &str, e: &std::io::Error) -> Failure {
-    Failure {
-        code: 2,
-        message: format!("{what}: cannot write: {e}"),
-    }
+    Failure::input(format!("{what}: cannot write: {e}"))
 }
 
 fn json_num(x: f64) -> String {

@@ -91,10 +91,7 @@ impl ToolboxCmd {
 }
 
 fn bad(path: &Path, what: String) -> Failure {
-    Failure {
-        code: 2,
-        message: format!("{}: {what}", path.display()),
-    }
+    Failure::input(format!("{}: {what}", path.display()))
 }
 
 /// Runs a toolbox command on a system over its exact field.

@@ -1,24 +1,32 @@
-//! The characteristic polynomial $P(x, v) = \sum_k p_k(v) x^k \in \mathbb{Q}[v][x]$ of a
-//! [`ParamFamily`], and the polynomials in $v$ that locate its critical values:
-//! $p_0(v)$ (zero eigenvalue), the Hurwitz determinant $\Delta_{n-1}(v)$ (a pair
-//! $\lambda_i + \lambda_j = 0$, which includes every imaginary pair) and the discriminant
-//! $\mathrm{Res}_x(P, \partial_x P)(v)$ (a repeated eigenvalue).
+//! The characteristic polynomial $P(x, v) = \sum_k p_k(v) x^k$ of a family over $F(v)$ and
+//! the polynomials in $v$ that locate its critical values, by evaluation at integers and
+//! interpolation over any field $F$ (written once: $F = \mathbb{Q}$ for [`ParamFamily`],
+//! $F = K$ a quadratic field for [`super::critical::over_k`]).
 //!
 //! # Algorithm
-//! Evaluation and interpolation: every entry of the pencil $\sum_j x^j P_j(v)$ is made
-//! polynomial by scaling each row with the lcm of its denominators; the determinant is then
-//! a polynomial whose degrees in $x$ and $v$ are bounded by row sums of entry degrees, so
-//! $\det$ over $\mathbb{Q}$ at a grid of integer points followed by Newton interpolation
-//! (first in $x$, then in $v$) gives $P$ exactly. The same holds for $\Delta_{n-1}$
-//! (degree $\le (n-1) d_v$) and the discriminant (degree $\le (2n-1) d_v$), evaluated at
-//! points where $p_n \ne 0$. The result is checked: $P(x, v_0)/p_n(v_0) = \chi_{A(v_0)}$ at
-//! a rational $v_0$, computed independently.
+//! With the rows of the pencil $\sum_j x^j P_j(v)$ scaled to polynomials in $v$ (each row
+//! by the lcm of its denominators), $\det = c(v) P(x, v)$ has degree at most $d_x = \sum_i
+//! \max\{j : \text{row } i \text{ of } P_j \ne 0\}$ in $x$ and $d_v = \sum_i \max
+//! \deg_v(\text{row } i)$ in $v$; it is interpolated from the determinants at $(x_a, v_b) =
+//! (a, b)$, $0 \le a \le d_x$, $0 \le b \le d_v$ ([`det_xv`]; each determinant by the
+//! field's kernel). The conditions, at points $v_b$ where $p_n(v_b) \ne 0$:
+//! * zero eigenvalue: $p_0(v)$;
+//! * double eigenvalue: $\mathrm{Res}_x(P, \partial_x P)$, degree $\le (2 d_x - 1) d_v$
+//!   ([`discriminant_over`]; over $\mathbb{Q}$ the shared subresultant resultant of
+//!   $\mathbb{Z}[v][x]$, [`discriminant_v`]);
+//! * over $\mathbb{Q}$ a pair $\lambda_i + \lambda_j = 0$ (which includes every imaginary
+//!   pair): the Hurwitz determinant $\Delta_{n-1}(v)$ ([`hurwitz_delta_n1`]); over any $F$ an
+//!   eigenvalue mirrored across the imaginary axis, $\lambda_i + \bar\lambda_j = 0$:
+//!   $\mathrm{Res}_x(P(x, v), \bar P(-x, v))$, degree $\le 2 d_x d_v$ ([`mirror_resultant`]).
+//!
+//! The result over $\mathbb{Q}$ is checked: $P(x, v_0)/p_n(v_0) = \chi_{A(v_0)}$ at a
+//! rational $v_0$, computed independently.
 
 use super::family::ParamFamily;
 use super::hurwitz::hurwitz_matrix;
 use crate::algebraic::NumberField;
 use crate::error::{Error, Result};
-use crate::field::{Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use num_traits::{One, Zero};
@@ -26,14 +34,17 @@ use num_traits::{One, Zero};
 /// Largest accepted degree bound of $P$ in $v$ or in $x$ (bounds the grid).
 pub const MAX_BIDEGREE: usize = 400;
 
-/// $P(x, v)$: `coeffs[k]` $= p_k(v)$, the coefficient of $x^k$.
+/// Largest degree bound of a condition polynomial in $v$ (one resultant over $K$ per
+/// interpolation point): beyond it `Limit`, not hours of work.
+pub const MAX_CONDITION_DEGREE: usize = 20_000;
+
+/// $P(x, v)$: `coeffs[j]` is $p_j(v)$.
 #[derive(Clone, Debug, PartialEq)]
-pub struct BiPoly {
-    pub coeffs: Vec<Poly<Q>>,
+pub struct BiPolyOver<F: Field> {
+    pub coeffs: Vec<Poly<F>>,
 }
 
-impl BiPoly {
-    /// Degree in $x$.
+impl<F: Field> BiPolyOver<F> {
     pub fn deg_x(&self) -> usize {
         self.coeffs.len().saturating_sub(1)
     }
@@ -45,10 +56,40 @@ impl BiPoly {
             .max()
             .unwrap_or(0)
     }
-    /// $P(x, v_0) \in \mathbb{Q}[x]$.
-    pub fn at(&self, v0: &Rational) -> Poly<Q> {
-        Poly::new(Q, self.coeffs.iter().map(|c| c.eval(v0)).collect())
+    /// $p_n(v)$.
+    pub fn lead(&self) -> Poly<F> {
+        self.coeffs.last().cloned().expect("nonzero")
     }
+    /// $P(x, v_0) \in F[x]$.
+    pub fn at(&self, v0: &F::Elem) -> Poly<F> {
+        let f = self.lead().field().clone();
+        Poly::new(f, self.coeffs.iter().map(|c| c.eval(v0)).collect())
+    }
+    /// $P(x, v_0)$ for $v_0$ in a field `e` that the coefficients map into by `lift`.
+    pub fn at_in<E: Field>(
+        &self,
+        e: &E,
+        v0: &E::Elem,
+        lift: &dyn Fn(&F::Elem) -> E::Elem,
+    ) -> Poly<E> {
+        let c = self
+            .coeffs
+            .iter()
+            .map(|p| {
+                p.coeffs()
+                    .iter()
+                    .rev()
+                    .fold(e.zero(), |acc, c| e.add(&e.mul(&acc, v0), &lift(c)))
+            })
+            .collect();
+        Poly::new(e.clone(), c)
+    }
+}
+
+/// $P(x, v)$ over $\mathbb{Q}$.
+pub type BiPoly = BiPolyOver<Q>;
+
+impl BiPolyOver<Q> {
     /// $P(x, v_0)$ over $\mathbb{Q}(v_0) = \mathbb{Q}[t]/(f)$, $v_0 = t$.
     pub fn at_nf(&self, k: &NumberField) -> Poly<NumberField> {
         Poly::new(
@@ -56,86 +97,185 @@ impl BiPoly {
             self.coeffs.iter().map(|c| k.from_poly(c)).collect(),
         )
     }
-    /// The leading coefficient $p_n(v)$.
-    pub fn lead(&self) -> Poly<Q> {
-        self.coeffs.last().cloned().unwrap_or_else(|| Poly::zero(Q))
-    }
 }
 
-/// Interpolation at the points $0, 1, \dots, m$ through integer values: forward
-/// differences $\Delta^j y_0$ (integers) and $p(x) = \sum_j \Delta^j y_0 \binom{x}{j}$,
-/// accumulated as $m!\,p(x)$ in integer arithmetic (no gcds) and divided once. Falls back to
-/// [`interpolate`] for non-integer values.
-pub fn interpolate_consecutive(ys: &[Rational]) -> Poly<Q> {
-    use num_bigint::BigInt;
-    let m1 = ys.len();
-    if m1 == 0 {
-        return Poly::zero(Q);
-    }
-    if !ys.iter().all(|y| y.is_integer()) {
-        let xs: Vec<Rational> = (0..m1).map(int).collect();
-        return interpolate(&xs, ys);
-    }
-    let mut d: Vec<BigInt> = ys.iter().map(|y| y.to_integer()).collect();
-    let mut diffs = Vec::with_capacity(m1);
-    for j in 0..m1 {
-        diffs.push(d[0].clone());
-        for i in 0..m1 - 1 - j {
-            d[i] = &d[i + 1] - &d[i];
-        }
-    }
-    let m = m1 - 1;
-    // falling factorial x(x-1)...(x-j+1) and the weights m!/j!
-    let mut ff: Vec<BigInt> = vec![BigInt::one()];
-    let mut weight: Vec<BigInt> = vec![BigInt::one(); m1];
-    for j in (0..m).rev() {
-        weight[j] = &weight[j + 1] * BigInt::from(j as u64 + 1);
-    }
-    let mut acc: Vec<BigInt> = vec![BigInt::zero(); m1];
-    for (j, dj) in diffs.iter().enumerate() {
-        if !dj.is_zero() {
-            let w = dj * &weight[j];
-            for (k, c) in ff.iter().enumerate() {
-                acc[k] += &w * c;
-            }
-        }
-        // ff *= (x - j)
-        let mut next = vec![BigInt::zero(); ff.len() + 1];
-        for (k, c) in ff.iter().enumerate() {
-            next[k + 1] += c;
-            next[k] -= c * BigInt::from(j as u64);
-        }
-        ff = next;
-    }
-    let fact = weight[0].clone();
-    Poly::new(
-        Q,
-        acc.into_iter()
-            .map(|c| Rational::new(c, fact.clone()))
-            .collect(),
-    )
+fn int<F: Field>(f: &F, i: usize) -> F::Elem {
+    f.from_i64(i as i64)
 }
 
-/// Newton interpolation: the polynomial of degree $< $ `xs.len()` through `(xs, ys)`.
-pub fn interpolate(xs: &[Rational], ys: &[Rational]) -> Poly<Q> {
+/// Newton's divided differences: the polynomial of degree $< n$ through the $n$ points
+/// $(x_i, y_i)$ (distinct $x_i$).
+pub fn interpolate<F: Field>(f: &F, xs: &[F::Elem], ys: &[F::Elem]) -> Result<Poly<F>> {
     let n = xs.len();
-    let mut dd: Vec<Rational> = ys.to_vec();
+    let mut c: Vec<F::Elem> = ys.to_vec();
     for j in 1..n {
         for i in (j..n).rev() {
-            dd[i] = (&dd[i] - &dd[i - 1]) / (&xs[i] - &xs[i - j]);
+            let den = f.sub(&xs[i], &xs[i - j]);
+            let inv = f.inv(&den).ok_or(Error::DivisionByZero)?;
+            c[i] = f.mul(&f.sub(&c[i], &c[i - 1]), &inv);
         }
     }
-    let mut p = Poly::zero(Q);
+    let mut p = Poly::zero(f.clone());
     for i in (0..n).rev() {
-        p = p
-            .mul(&Poly::new(Q, vec![-xs[i].clone(), Rational::one()]))
-            .add(&Poly::constant(Q, dd[i].clone()));
+        // p = p (x - x_i) + c_i
+        let lin = Poly::new(f.clone(), vec![f.neg(&xs[i]), f.one()]);
+        p = p.mul(&lin).add(&Poly::constant(f.clone(), c[i].clone()));
     }
-    p
+    Ok(p)
 }
 
-fn int(i: usize) -> Rational {
-    Rational::from_integer((i as i64).into())
+/// $P(x, v)$ (lead $p_n$ monic in $v$) and the content $c(v)$ divided out (monic), from
+/// the pencil's rows made polynomial: `rows[i][j][c]` is entry $(i, c)$ of $P_j$.
+///
+/// # Errors
+/// `Singular` when the determinant vanishes identically; `Limit` beyond
+/// [`MAX_BIDEGREE`].
+pub fn det_xv<F: Field>(f: &F, rows: &[Vec<Vec<Poly<F>>>]) -> Result<(BiPolyOver<F>, Poly<F>)> {
+    let n2 = rows.len();
+    let (mut dx, mut dv) = (0usize, 0usize);
+    for r in rows {
+        let Some(jmax) = r.iter().rposition(|row| row.iter().any(|x| !x.is_zero())) else {
+            return Err(Error::Singular);
+        };
+        dx += jmax;
+        dv += r
+            .iter()
+            .flatten()
+            .map(|x| x.degree().unwrap_or(0))
+            .max()
+            .unwrap_or(0);
+    }
+    if dx > MAX_BIDEGREE || dv > MAX_BIDEGREE {
+        return Err(Error::Limit(format!(
+            "characteristic polynomial of degree {dx} in x and {dv} in the parameter"
+        )));
+    }
+    let xs: Vec<F::Elem> = (0..=dx).map(|i| int(f, i)).collect();
+    let vs: Vec<F::Elem> = (0..=dv).map(|i| int(f, i)).collect();
+    let mut table: Vec<Vec<F::Elem>> = vec![vec![]; dx + 1];
+    for vb in &vs {
+        let at_v: Vec<Vec<Vec<F::Elem>>> = rows
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .map(|row| row.iter().map(|p| p.eval(vb)).collect())
+                    .collect()
+            })
+            .collect();
+        let mut dets = Vec::with_capacity(dx + 1);
+        for xa in &xs {
+            let m = Matrix::from_fn(f.clone(), n2, n2, |i, k| {
+                let mut s = f.zero();
+                let mut pw = f.one();
+                for row in &at_v[i] {
+                    s = f.add(&s, &f.mul(&row[k], &pw));
+                    pw = f.mul(&pw, xa);
+                }
+                s
+            });
+            dets.push(if n2 == 0 { f.one() } else { m.det()? });
+        }
+        let px = interpolate(f, &xs, &dets)?;
+        for (k, col) in table.iter_mut().enumerate() {
+            col.push(px.coeff(k));
+        }
+    }
+    let mut coeffs = table
+        .iter()
+        .map(|ys| interpolate(f, &vs, ys))
+        .collect::<Result<Vec<_>>>()?;
+    while coeffs.len() > 1 && coeffs.last().is_some_and(|c| c.is_zero()) {
+        coeffs.pop();
+    }
+    if coeffs.iter().all(|c| c.is_zero()) {
+        return Err(Error::Singular);
+    }
+    let content = coeffs
+        .iter()
+        .fold(Poly::zero(f.clone()), |g, c| {
+            if c.is_zero() { g } else { g.gcd(c) }
+        })
+        .monic();
+    let lc = coeffs.last().expect("nonzero").quo(&content).lc();
+    let inv = f.inv(&lc).ok_or(Error::DivisionByZero)?;
+    let coeffs = coeffs.iter().map(|c| c.quo(&content).scale(&inv)).collect();
+    Ok((BiPolyOver { coeffs }, content))
+}
+
+/// A polynomial in $v$ of degree $\le$ `bound` from its values at integers where
+/// $p_n(v) \ne 0$.
+pub(crate) fn interpolate_where_defined<F: Field>(
+    f: &F,
+    lead: &Poly<F>,
+    bound: usize,
+    val: &dyn Fn(&F::Elem) -> Result<F::Elem>,
+) -> Result<Poly<F>> {
+    if bound > MAX_CONDITION_DEGREE {
+        return Err(Error::Limit(format!(
+            "a condition polynomial of degree up to {bound} in the parameter (at most {MAX_CONDITION_DEGREE} over an extension field)"
+        )));
+    }
+    let (mut xs, mut ys) = (vec![], vec![]);
+    let mut i = 0usize;
+    while xs.len() <= bound {
+        let v = int(f, i);
+        i += 1;
+        if f.is_zero(&lead.eval(&v)) {
+            continue;
+        }
+        ys.push(val(&v)?);
+        xs.push(v);
+    }
+    interpolate(f, &xs, &ys)
+}
+
+/// $\mathrm{Res}_x(P, \partial_x P)(v)$.
+///
+/// # Errors
+/// `Limit` beyond [`MAX_BIDEGREE`] squared.
+pub fn discriminant_over<F: Field>(f: &F, p: &BiPolyOver<F>) -> Result<Poly<F>> {
+    let dv = p.deg_v();
+    let n = p.deg_x();
+    if n < 2 {
+        return Ok(Poly::one(f.clone()));
+    }
+    interpolate_where_defined(f, &p.lead(), (2 * n - 1) * dv, &|v| {
+        let q = p.at(v);
+        Ok(q.resultant(&q.derivative()))
+    })
+}
+
+/// $\mathrm{Res}_x(P(x, v), \bar P(-x, v))$ with `conj` the complex conjugation of $F$
+/// (the identity on a real field), after dividing out $x^z$ when $p_0 = \dots = p_{z-1} = 0$
+/// identically (a persistent zero eigenvalue).
+///
+/// # Errors
+/// As [`discriminant_over`].
+pub fn mirror_resultant<F: Field>(
+    f: &F,
+    p: &BiPolyOver<F>,
+    conj: &dyn Fn(&F::Elem) -> F::Elem,
+) -> Result<Poly<F>> {
+    // a zero eigenvalue for every v (p_0 = ... = p_{z-1} = 0) is no crossing: divide x^z out
+    let z = p.coeffs.iter().take_while(|c| c.is_zero()).count();
+    let p = &BiPolyOver {
+        coeffs: p.coeffs[z.min(p.deg_x())..].to_vec(),
+    };
+    let dv = p.deg_v();
+    let n = p.deg_x();
+    interpolate_where_defined(f, &p.lead(), 2 * n * dv, &|v| {
+        let q = p.at(v);
+        let m: Vec<F::Elem> = q
+            .coeffs()
+            .iter()
+            .enumerate()
+            .map(|(j, c)| {
+                let c = conj(c);
+                if j % 2 == 1 { f.neg(&c) } else { c }
+            })
+            .collect();
+        Ok(q.resultant(&Poly::new(f.clone(), m)))
+    })
 }
 
 /// The characteristic polynomial $P(x, v)$ of the family, primitive over $\mathbb{Q}[v]$
@@ -156,116 +296,49 @@ pub fn charpoly_xv(fam: &ParamFamily) -> Result<BiPoly> {
 /// # Errors
 /// As [`charpoly_xv`].
 pub fn charpoly_xv_content(fam: &ParamFamily) -> Result<(BiPoly, Poly<Q>)> {
-    let pencil = fam.pencil();
-    let n2 = pencil[0].len();
-    // scale each row by the lcm of its denominators: entries in Q[v]
-    let mut rows: Vec<Vec<Vec<Poly<Q>>>> = vec![]; // rows[i][j][k]
-    let (mut dx, mut dv) = (0usize, 0usize);
-    for i in 0..n2 {
-        let mut l = Poly::one(Q);
-        for p in &pencil {
-            for f in &p[i] {
-                l = l.mul(&f.den).quo(&l.gcd(&f.den));
-            }
-        }
-        let r: Vec<Vec<Poly<Q>>> = pencil
-            .iter()
-            .map(|p| p[i].iter().map(|f| f.num.mul(&l.quo(&f.den))).collect())
-            .collect();
-        let jmax = r.iter().rposition(|row| row.iter().any(|x| !x.is_zero()));
-        let Some(jmax) = jmax else {
-            return Err(Error::Singular);
-        };
-        dx += jmax;
-        dv += r
-            .iter()
-            .flatten()
-            .map(|x| x.degree().unwrap_or(0))
-            .max()
-            .unwrap_or(0);
-        rows.push(r);
-    }
-    if dx > MAX_BIDEGREE || dv > MAX_BIDEGREE {
-        return Err(Error::Limit(format!(
-            "characteristic polynomial of degree {dx} in x and {dv} in the parameter"
-        )));
-    }
-    let xs: Vec<Rational> = (0..=dx).map(int).collect();
-    let vs: Vec<Rational> = (0..=dv).map(int).collect();
-    // per v point: the polynomial in x
-    let mut table: Vec<Vec<Rational>> = vec![vec![]; dx + 1]; // table[k][b]
-    for vb in &vs {
-        let at_v: Vec<Vec<Vec<Rational>>> = rows
-            .iter()
-            .map(|r| {
-                r.iter()
-                    .map(|row| row.iter().map(|p| p.eval(vb)).collect())
-                    .collect()
-            })
-            .collect();
-        let mut dets = Vec::with_capacity(dx + 1);
-        for xa in &xs {
-            let m = Matrix::from_fn(Q, n2, n2, |i, k| {
-                let mut s = Rational::zero();
-                let mut pw = Rational::one();
-                for row in &at_v[i] {
-                    s += &row[k] * &pw;
-                    pw *= xa;
-                }
-                s
-            });
-            dets.push(if n2 == 0 { Rational::one() } else { m.det()? });
-        }
-        let px = interpolate_consecutive(&dets);
-        for (k, col) in table.iter_mut().enumerate() {
-            col.push(px.coeff(k));
-        }
-    }
-    let mut coeffs: Vec<Poly<Q>> = table.iter().map(|ys| interpolate_consecutive(ys)).collect();
-    while coeffs.len() > 1 && coeffs.last().is_some_and(|c| c.is_zero()) {
-        coeffs.pop();
-    }
-    if coeffs.iter().all(|c| c.is_zero()) {
-        return Err(Error::Singular);
-    }
-    let content = coeffs
-        .iter()
-        .fold(Poly::zero(Q), |g, c| if c.is_zero() { g } else { g.gcd(c) });
-    let mut coeffs: Vec<Poly<Q>> = coeffs.iter().map(|c| c.quo(&content)).collect();
+    let (p, content) = det_xv(&Q, &fam.poly_rows())?;
     // integer coefficients without common factor, leading coefficient of p_n positive
     let mut den = num_bigint::BigInt::one();
     let mut num_gcd = num_bigint::BigInt::zero();
-    for c in coeffs.iter().flat_map(|c| c.coeffs().iter()) {
+    for c in p.coeffs.iter().flat_map(|c| c.coeffs().iter()) {
         den = num_integer::Integer::lcm(&den, c.denom());
         num_gcd = num_integer::Integer::gcd(&num_gcd, c.numer());
     }
     let mut scale = Rational::new(den, num_gcd.max(num_bigint::BigInt::one()));
-    if coeffs.last().is_some_and(|c| c.lc() < Rational::zero()) {
+    if p.lead().lc() < Rational::zero() {
         scale = -scale;
     }
-    coeffs = coeffs.iter().map(|c| c.scale(&scale)).collect();
-    let p = BiPoly { coeffs };
-    check_charpoly(fam, &p)?;
-    Ok((p, content.monic()))
+    let p = BiPoly {
+        coeffs: p.coeffs.iter().map(|c| c.scale(&scale)).collect(),
+    };
+    check_charpoly(&Q, &p, &fam.param, &|v0| fam.state_matrix_q(v0))?;
+    Ok((p, content))
 }
 
-/// Checks $P(x, v_0) = p_n(v_0) \chi_{A(v_0)}(x)$ at a rational $v_0$ where both sides
-/// are defined.
-fn check_charpoly(fam: &ParamFamily, p: &BiPoly) -> Result<()> {
+/// Checks $P(x, v_0) = p_n(v_0) \chi_{A(v_0)}(x)$ at a rational $v_0$ (in `f`) where both
+/// sides are defined, `state` giving $A(v_0)$.
+///
+/// # Errors
+/// `Verification` when they differ or no point is found.
+pub fn check_charpoly<F: Field>(
+    f: &F,
+    p: &BiPolyOver<F>,
+    param: &str,
+    state: &dyn Fn(&F::Elem) -> Result<Matrix<F>>,
+) -> Result<()> {
     for t in 0..64i64 {
-        let v0 = Rational::new((7919 + 31 * t).into(), 1009.into());
-        if p.lead().eval(&v0).is_zero() {
+        let v0 = f.from_rational(&Rational::new((7919 + 31 * t).into(), 1009.into()));
+        if f.is_zero(&p.lead().eval(&v0)) {
             continue;
         }
-        let Ok(a) = fam.state_matrix_q(&v0) else {
+        let Ok(a) = state(&v0) else {
             continue;
         };
-        let chi = a.charpoly()?;
         let lhs = p.at(&v0);
-        if lhs.monic() != chi || lhs.deg() != a.nrows() {
+        if lhs.deg() != a.nrows() || lhs.monic() != a.charpoly()? {
             return Err(Error::Verification(format!(
-                "characteristic polynomial in (x, {}) disagrees with charpoly(A({v0}))",
-                fam.param
+                "characteristic polynomial in (x, {param}) over {f} disagrees with charpoly(A({}))",
+                f.fmt_elem(&v0)
             )));
         }
         return Ok(());
@@ -273,31 +346,6 @@ fn check_charpoly(fam: &ParamFamily, p: &BiPoly) -> Result<()> {
     Err(Error::Verification(
         "no rational check point for the characteristic polynomial".into(),
     ))
-}
-
-/// Interpolates `f(v)` (a polynomial of degree $\le$ `bound`) from its values at integer
-/// points where `p_n` does not vanish.
-fn interpolate_at_good_points(
-    lead: &Poly<Q>,
-    bound: usize,
-    f: impl Fn(&Rational) -> Result<Rational>,
-) -> Result<Poly<Q>> {
-    let mut xs = vec![];
-    let mut ys = vec![];
-    let mut i = 0usize;
-    while xs.len() <= bound {
-        let v = int(i);
-        i += 1;
-        if lead.eval(&v).is_zero() {
-            continue;
-        }
-        ys.push(f(&v)?);
-        xs.push(v);
-    }
-    if i == xs.len() {
-        return Ok(interpolate_consecutive(&ys));
-    }
-    Ok(interpolate(&xs, &ys))
 }
 
 /// The Hurwitz determinant $\Delta_{n-1}(v)$ of $P(\cdot, v)$ (zero polynomial for $n \le 1$).
@@ -313,7 +361,7 @@ pub fn hurwitz_delta_n1(p: &BiPoly) -> Result<Poly<Q>> {
         return Ok(Poly::zero(Q));
     }
     let bound = (n - 1) * p.deg_v();
-    interpolate_at_good_points(&Poly::one(Q), bound, |v| {
+    interpolate_where_defined(&Q, &Poly::one(Q), bound, &|v| {
         let h = hurwitz_matrix(&Q, p.at(v).coeffs(), n);
         det_small(h.submatrix(0, n - 1, 0, n - 1).rows())
     })
@@ -430,7 +478,7 @@ pub fn first_subresultant(p: &BiPoly) -> Result<(Poly<Q>, Poly<Q>)> {
     }
     let bound = (2 * n - 3) * p.deg_v();
     let at = |i: usize| {
-        interpolate_at_good_points(&Poly::one(Q), bound, |v| {
+        interpolate_where_defined(&Q, &Poly::one(Q), bound, &|v| {
             let f = p.at(v);
             let fc: Vec<Rational> = (0..=n).map(|k| f.coeff(k)).collect();
             let g = f.derivative();
@@ -455,12 +503,12 @@ mod tests {
         let s11 = subresultant_coeff(&fc, 3, &gc, 2, 1, 1).unwrap();
         let s10 = subresultant_coeff(&fc, 3, &gc, 2, 1, 0).unwrap();
         assert!(!s11.is_zero());
-        assert_eq!(-s10 / s11, int(2));
+        assert_eq!(-s10 / s11, int(&Q, 2));
         // j = 0 is the resultant (zero here)
         assert!(subresultant_coeff(&fc, 3, &gc, 2, 0, 0).unwrap().is_zero());
         let h = Poly::<Q>::from_i64s(&[-1, 0, 1]);
         let hc: Vec<Rational> = (0..3).map(|k| h.coeff(k)).collect();
-        let hd: Vec<Rational> = vec![int(0), int(2)];
+        let hd: Vec<Rational> = vec![int(&Q, 0), int(&Q, 2)];
         assert_eq!(
             subresultant_coeff(&hc, 2, &hd, 1, 0, 0).unwrap(),
             h.resultant(&h.derivative())
@@ -507,13 +555,37 @@ mod tests {
 
     #[test]
     fn interpolation_reproduces() {
+        let int = |i: usize| int(&Q, i);
         let f = Poly::<Q>::from_i64s(&[3, -1, 0, 2]);
         let xs: Vec<Rational> = (0..4).map(int).collect();
         let ys: Vec<Rational> = xs.iter().map(|x| f.eval(x)).collect();
-        assert_eq!(interpolate(&xs, &ys), f);
-        assert_eq!(interpolate_consecutive(&ys), f);
+        assert_eq!(interpolate(&Q, &xs, &ys).unwrap(), f);
         let g = Poly::<Q>::from_i64s(&[0, 1, 1]).scale(&Rational::new(1.into(), 2.into()));
-        let ys: Vec<Rational> = (0..5).map(|i| g.eval(&int(i))).collect();
-        assert_eq!(interpolate_consecutive(&ys), g);
+        let xs: Vec<Rational> = (0..5).map(int).collect();
+        let ys: Vec<Rational> = xs.iter().map(|x| g.eval(x)).collect();
+        assert_eq!(interpolate(&Q, &xs, &ys).unwrap(), g);
+        let xs: Vec<_> = [0, 2, 5, 7].iter().map(|&i| Q.from_i64(i)).collect();
+        let ys: Vec<_> = xs.iter().map(|x| f.eval(x)).collect();
+        assert_eq!(interpolate(&Q, &xs, &ys).unwrap(), f);
+    }
+
+    #[test]
+    fn determinant_of_a_companion_family() {
+        // A(v) = [[0, 1], [-v, -1]]: det(xI - A) = x^2 + x + v; pencil [-A, I]
+        let c = |i: i64| Poly::<Q>::from_i64s(&[i]);
+        let v = Poly::<Q>::from_i64s(&[0, 1]);
+        let rows = vec![
+            vec![vec![c(0), c(-1)], vec![c(1), c(0)]],
+            vec![vec![v.clone(), c(1)], vec![c(0), c(1)]],
+        ];
+        let (p, content) = det_xv(&Q, &rows).unwrap();
+        assert!(content.is_one());
+        assert_eq!(p.coeffs, vec![v.clone(), c(1), c(1)]);
+        // disc = 1 - 4v up to sign
+        let d = discriminant_over(&Q, &p).unwrap();
+        assert_eq!(d.monic(), Poly::<Q>::from_i64s(&[-1, 4]).monic());
+        // Res(P(x), P(-x)) = prod P(-l) = prod (-2 l) = 4 v: a zero eigenvalue at v = 0 only
+        let r = mirror_resultant(&Q, &p, &|c| c.clone()).unwrap();
+        assert_eq!(r.monic(), Poly::<Q>::from_i64s(&[0, 1]));
     }
 }

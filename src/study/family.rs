@@ -16,16 +16,19 @@
 
 use super::family_read::{RatFuncReader, read_file_matrices};
 use super::finite::{finite_part, linearize_second_order};
-use super::ratfunc::RatFunc;
+use super::qv::{coeffs_f64, den_q, eval_in, upoly};
 use crate::algebraic::NumberField;
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
+use crate::poly::Poly;
+use crate::ratfunc::kernels::clear_rows;
+use crate::ratfunc::{RatFunc, RatFuncField};
 use nalgebra::DMatrix;
 use std::path::Path;
 
-/// A square matrix of rational functions, row-major rows.
-pub type RatMatrix = Vec<Vec<RatFunc>>;
+/// A square matrix over $\mathbb{Q}(v)$ (the tower's [`RatFuncField`], one symbol).
+pub type RatMatrix = Matrix<RatFuncField>;
 
 /// The matrices that define $A(v)$.
 #[derive(Clone, Debug, PartialEq)]
@@ -52,8 +55,8 @@ pub struct ParamFamily {
     pub form: FamilyForm,
 }
 
-fn zeros(n: usize) -> RatMatrix {
-    vec![vec![RatFunc::zero(); n]; n]
+fn zeros(k: &RatFuncField, n: usize) -> RatMatrix {
+    Matrix::zeros(k.clone(), n, n)
 }
 
 impl ParamFamily {
@@ -67,7 +70,7 @@ impl ParamFamily {
         l: RatMatrix,
         k: RatMatrix,
     ) -> Result<ParamFamily> {
-        let n = m.len();
+        let n = m.nrows();
         for x in [&m, &l, &k] {
             check_square(x, n)?;
         }
@@ -84,7 +87,7 @@ impl ParamFamily {
     /// # Errors
     /// `Shape` unless `a` (and `e`) are square of one size.
     pub fn first_order(param: &str, a: RatMatrix, e: Option<RatMatrix>) -> Result<ParamFamily> {
-        let n = a.len();
+        let n = a.nrows();
         check_square(&a, n)?;
         if let Some(e) = &e {
             check_square(e, n)?;
@@ -100,8 +103,8 @@ impl ParamFamily {
     /// Number of states $n$.
     pub fn nstates(&self) -> usize {
         match &self.form {
-            FamilyForm::First { a, .. } => a.len(),
-            FamilyForm::Second { m, .. } => 2 * m.len(),
+            FamilyForm::First { a, .. } => a.nrows(),
+            FamilyForm::Second { m, .. } => 2 * m.nrows(),
         }
     }
 
@@ -110,32 +113,45 @@ impl ParamFamily {
     pub fn pencil(&self) -> Vec<RatMatrix> {
         match &self.form {
             FamilyForm::First { a, e } => {
-                let n = a.len();
-                let neg: RatMatrix = a
-                    .iter()
-                    .map(|r| r.iter().map(RatFunc::neg).collect())
-                    .collect();
-                let e = e.clone().unwrap_or_else(|| {
-                    let mut i = zeros(n);
-                    for (j, row) in i.iter_mut().enumerate() {
-                        row[j] = super::ratfunc::one();
-                    }
-                    i
-                });
+                let k = a.field();
+                let neg = a.scale(&k.from_i64(-1));
+                let e = e
+                    .clone()
+                    .unwrap_or_else(|| Matrix::identity(k.clone(), a.nrows()));
                 vec![neg, e]
             }
             FamilyForm::Second { m, l, k } => vec![k.clone(), l.clone(), m.clone()],
         }
     }
 
+    /// The pencil's rows, each multiplied by the lcm of its denominators over all $P_j$
+    /// (the tower's [`clear_rows`]): `rows[i][j][c]` is $d_i$ times entry $(i, c)$ of
+    /// $P_j$, in $\mathbb{Q}[v]$.
+    pub fn poly_rows(&self) -> Vec<Vec<Vec<Poly<Q>>>> {
+        let pencil = self.pencil();
+        let (n, nj) = (pencil[0].nrows(), pencil.len());
+        let wide: Vec<RatFunc> = (0..n)
+            .flat_map(|i| pencil.iter().flat_map(move |p| p.row(i).to_vec()))
+            .collect();
+        let (b, _) = clear_rows(1, n, nj * n, &wide);
+        (0..n)
+            .map(|i| {
+                (0..nj)
+                    .map(|j| (0..n).map(|c| upoly(&b[(i * nj + j) * n + c])).collect())
+                    .collect()
+            })
+            .collect()
+    }
+
     /// Every denominator of every entry (the family is undefined at their roots).
-    pub fn denominators(&self) -> Vec<crate::poly::Poly<Q>> {
+    pub fn denominators(&self) -> Vec<Poly<Q>> {
         let mut out = vec![];
         for p in self.pencil() {
-            for r in p {
-                for x in r {
-                    if !x.den.is_one() && !out.contains(&x.den) {
-                        out.push(x.den);
+            for x in p.as_slice() {
+                if !x.den().is_one() {
+                    let d = den_q(x);
+                    if !out.contains(&d) {
+                        out.push(d);
                     }
                 }
             }
@@ -153,18 +169,12 @@ impl ParamFamily {
     /// ($\det(xE(v_0) - A(v_0)) = 0$ for every $x$).
     pub fn state_matrix_in<K: Field>(&self, k: &K, v0: &K::Elem) -> Result<Matrix<K>> {
         let ev = |m: &RatMatrix| -> Result<Matrix<K>> {
-            let rows = m
+            let data = m
+                .as_slice()
                 .iter()
-                .map(|r| {
-                    r.iter()
-                        .map(|f| eval_in(k, f, v0))
-                        .collect::<Result<Vec<_>>>()
-                })
+                .map(|f| eval_in(k, f, v0))
                 .collect::<Result<Vec<_>>>()?;
-            if rows.is_empty() {
-                return Ok(Matrix::zeros(k.clone(), 0, 0));
-            }
-            Matrix::from_rows(k.clone(), rows)
+            Ok(Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), data))
         };
         match &self.form {
             FamilyForm::First { a, e } => state_first(ev(a)?, e.as_ref().map(ev).transpose()?),
@@ -194,8 +204,12 @@ impl ParamFamily {
     /// `Singular` where $E(v)$ or $M(v)$ is numerically singular.
     pub fn state_matrix_f64(&self, v: f64) -> Result<DMatrix<f64>> {
         let ev = |m: &RatMatrix| {
-            let n = m.len();
-            DMatrix::from_fn(n, n, |i, j| m[i][j].eval_f64(v))
+            let h = |c: &[f64]| c.iter().rev().fold(0.0, |acc, x| acc * v + x);
+            let n = m.nrows();
+            DMatrix::from_fn(n, n, |i, j| {
+                let f = m.get(i, j);
+                h(&coeffs_f64(f.num())) / h(&coeffs_f64(f.den()))
+            })
         };
         match &self.form {
             FamilyForm::First { a, e } => {
@@ -226,10 +240,14 @@ impl ParamFamily {
     /// As [`ParamFamily::from_file`]; a value for `param` itself (it is swept), or for a
     /// name that is not a parameter of the file.
     pub fn from_file_at(path: &Path, param: &str, at: &[(String, String)]) -> Result<ParamFamily> {
-        let m = read_file_matrices(&RatFuncReader, path, param, at)?;
+        if !crate::io::expr::is_parameter_name(param) {
+            return Err(Error::Invalid(format!("'{param}' cannot name a parameter")));
+        }
+        let k = super::qv::field(param)?;
+        let m = read_file_matrices(&RatFuncReader { k: k.clone() }, path, param, at)?;
         let nominal = match m.nominal {
             None => None,
-            Some(f) if f.is_poly() && f.num.deg() == 0 => Some(f.num.coeff(0)),
+            Some(f) if f.to_rational().is_some() => f.to_rational(),
             Some(_) => {
                 return Err(Error::Invalid(format!(
                     "{}: key parameters.{param}: the swept parameter needs a number",
@@ -237,13 +255,25 @@ impl ParamFamily {
                 )));
             }
         };
+        let mat = |rows: Vec<Vec<RatFunc>>| -> Result<RatMatrix> {
+            let n = rows.len();
+            if rows.iter().any(|r| r.len() != n) {
+                return Err(Error::Shape {
+                    op: "parameter family",
+                    expected: (n, n),
+                    found: (n, rows.first().map_or(0, Vec::len)),
+                });
+            }
+            Ok(Matrix::from_vec(k.clone(), n, n, rows.concat()))
+        };
         let form = if let Some(mm) = m.m {
-            let n = mm.len();
-            let l = m.l.unwrap_or_else(|| zeros(n));
-            let k = m.k.unwrap_or_else(|| zeros(n));
-            ParamFamily::second_order(param, mm, l, k)?.form
+            let mm = mat(mm)?;
+            let n = mm.nrows();
+            let l = m.l.map(mat).transpose()?.unwrap_or_else(|| zeros(&k, n));
+            let kk = m.k.map(mat).transpose()?.unwrap_or_else(|| zeros(&k, n));
+            ParamFamily::second_order(param, mm, l, kk)?.form
         } else if let Some(a) = m.a {
-            ParamFamily::first_order(param, a, m.e)?.form
+            ParamFamily::first_order(param, mat(a)?, m.e.map(mat).transpose()?)?.form
         } else {
             return Err(Error::Invalid(format!(
                 "{}: no system: give A (first-order form) or M (second-order form)",
@@ -301,29 +331,14 @@ pub fn state_second<K: Field>(mm: Matrix<K>, l: Matrix<K>, kk: Matrix<K>) -> Res
 }
 
 fn check_square(m: &RatMatrix, n: usize) -> Result<()> {
-    if m.len() != n || m.iter().any(|r| r.len() != n) {
-        let c = m.first().map_or(0, Vec::len);
+    if m.shape() != (n, n) {
         return Err(Error::Shape {
             op: "parameter family",
             expected: (n, n),
-            found: (m.len(), c),
+            found: m.shape(),
         });
     }
     Ok(())
-}
-
-/// $f(v_0)$ in `k`.
-///
-/// # Errors
-/// `DivisionByZero` when the denominator vanishes at `v0`.
-pub fn eval_in<K: Field>(k: &K, f: &RatFunc, v0: &K::Elem) -> Result<K::Elem> {
-    let h = |p: &crate::poly::Poly<Q>| {
-        p.coeffs().iter().rev().fold(k.zero(), |acc, c| {
-            k.add(&k.mul(&acc, v0), &k.from_rational(c))
-        })
-    };
-    let d = k.inv(&h(&f.den)).ok_or(Error::DivisionByZero)?;
-    Ok(k.mul(&h(&f.num), &d))
 }
 
 /// $A = \begin{pmatrix} 0 & I \\ -M^{-1}K & -M^{-1}L \end{pmatrix}$ of $M\ddot q + L\dot q + K q$

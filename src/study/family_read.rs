@@ -5,9 +5,12 @@
 //! ([`super::critical::over_k`]). One resolver of parameter names (memoized, cycles
 //! refused) for both.
 
-use super::ratfunc::{RatFunc, eval_ratfunc, ratfunc_from_number};
+use super::qv::eval_qv;
 use crate::error::{Error, Result};
+use crate::field::Field;
+use crate::field::expr::parse_number;
 use crate::io::raw::{self, Raw};
+use crate::ratfunc::{RatFunc, RatFuncField};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::Path;
@@ -34,23 +37,27 @@ pub trait ScalarReader {
     ) -> Result<Self::Value>;
 }
 
-/// Entries in $\mathbb{Q}(v)$; `sqrt` and `i` are refused.
-pub struct RatFuncReader;
+/// Entries in $\mathbb{Q}(v)$ = `k` (one symbol); `sqrt` and `i` are refused.
+pub struct RatFuncReader {
+    pub k: RatFuncField,
+}
 
 impl ScalarReader for RatFuncReader {
     type Value = RatFunc;
     fn var(&self) -> RatFunc {
-        RatFunc::var()
+        self.k.var(0)
     }
     fn number(&self, s: &str) -> Result<RatFunc> {
-        ratfunc_from_number(s)
+        parse_number(s)
+            .map(|q| self.k.from_rational(&q))
+            .map_err(Error::Invalid)
     }
     fn eval(
         &self,
         text: &str,
         lookup: &dyn Fn(&str) -> Result<Option<RatFunc>>,
     ) -> Result<RatFunc> {
-        eval_ratfunc(text, lookup)
+        eval_qv(&self.k, text, lookup)
     }
 }
 

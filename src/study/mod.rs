@@ -3,11 +3,11 @@
 //!
 //! | entry point | computes |
 //! |---|---|
-//! | [`ParamFamily::from_file`] | the family $A(v)$ of a system file, one parameter symbolic |
+//! | [`ParamFamily::from_file`] | the family $A(v)$ of a system file, one parameter symbolic, entries in $\mathbb{Q}(v)$ (the tower's `RatFuncField`, [`qv`]) |
 //! | [`charpoly_xv`] | $P(x, v) = p_n(v) \chi_{A(v)}(x)$ exactly (evaluation/interpolation) |
 //! | [`critical_values`] | zero eigenvalues, imaginary pairs, double eigenvalues as algebraic numbers; stability per interval |
 //! | [`critical::over_k::critical_values_over_k`] | the same for a family over $K(v)$, $K = \mathbb{Q}(\sqrt d)$ or $\mathbb{Q}(i)$ (values with minimal polynomials over $\mathbb{Q}$ and $K$, structure in $K(v_0)$) |
-//! | [`family_read::read_file_matrices`] | a family file's matrices, entries read into $\mathbb{Q}(v)$ or $K(v)$ |
+//! | `family_read::read_file_matrices` (crate-internal) | a family file's matrices, entries read into $\mathbb{Q}(v)$ or $K(v)$ |
 //! | [`sweep`] | float eigenvalues at many parameter values, in parallel (finite eigenvalues of the pencil where $E(v)$ is singular, counted exactly by [`SweepPlan`]) |
 //!
 //! The exact path never uses floats: $P$, the Hurwitz determinant and the discriminant are
@@ -17,13 +17,13 @@
 pub mod bivar;
 pub mod critical;
 pub mod family;
-pub mod family_read;
-pub mod finite;
+pub(crate) mod family_read;
+pub(crate) mod finite;
 pub mod hurwitz;
-pub mod modp;
-pub mod ratfunc;
+pub(crate) mod modp;
+pub mod qv;
 pub mod sweep;
-pub mod sweep_plan;
+pub(crate) mod sweep_plan;
 
 pub use bivar::{BiPoly, charpoly_xv, charpoly_xv_content, discriminant_v, hurwitz_delta_n1};
 pub use critical::{
@@ -31,6 +31,5 @@ pub use critical::{
 };
 pub use family::{FamilyForm, ParamFamily};
 pub use hurwitz::{RootCounts, hurwitz_stable, root_counts};
-pub use ratfunc::RatFunc;
 pub use sweep::{SweepResult, sweep, sweep_values};
 pub use sweep_plan::{PointStatus, SweepPlan};

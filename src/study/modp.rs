@@ -10,6 +10,7 @@ use crate::poly::Poly;
 use crate::qkernels::modular::rank::{rank_mod_p, reduce_rational};
 use crate::qkernels::modular::rref::rref_mod_p;
 use crate::qkernels::prime::Prime;
+use crate::ratfunc::kernels::modp::eval_mod_p;
 
 /// Primes tried, and the residues searched for a root of $f$ (all of $\mathbb{F}_p$).
 const PRIMES: [u64; 8] = [10007, 10009, 10037, 10039, 10061, 10067, 10069, 10079];
@@ -63,12 +64,18 @@ pub fn rank_mod(m: Vec<Vec<u64>>, p: u64) -> usize {
     rank_mod_p(&Prime::new(p), rows, cols, &mut flat)
 }
 
+/// $m(t_0) \bmod p$ (the shared kernel [`eval_mod_p`] on numerators and denominators),
+/// `None` at a pole modulo $p$.
 fn mat_at(m: &RatMatrix, t0: u64, p: u64) -> Option<Vec<Vec<u64>>> {
     let pr = Prime::new(p);
-    m.iter()
+    m.rows()
+        .iter()
         .map(|r| {
             r.iter()
-                .map(|f| Some(pr.mul(poly_at(&f.num, t0, p)?, pr.inv(poly_at(&f.den, t0, p)?)?)))
+                .map(|f| {
+                    let d = eval_mod_p(&pr, f.den(), &[t0]);
+                    Some(pr.mul(eval_mod_p(&pr, f.num(), &[t0]), pr.inv(d)?))
+                })
                 .collect()
         })
         .collect()
@@ -103,7 +110,7 @@ pub fn state_matrix_mod(fam: &ParamFamily, t0: u64, p: u64) -> Option<Vec<Vec<u6
             }
         }
         FamilyForm::Second { m, l, k } => {
-            let n = m.len();
+            let n = m.nrows();
             let mm = mat_at(m, t0, p)?;
             let mk = solve_mod(mm.clone(), mat_at(k, t0, p)?, p)?;
             let ml = solve_mod(mm, mat_at(l, t0, p)?, p)?;

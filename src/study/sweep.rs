@@ -7,9 +7,9 @@
 //! previous value by [`SweepResult::tracks`] for plotting continuous branches.
 
 use super::family::{FamilyForm, ParamFamily, RatMatrix, second_order_state_matrix};
+use super::qv::coeffs_f64;
 use super::sweep_plan::{PointStatus, SweepPlan};
 use crate::error::{Error, Result};
-use crate::field::rational_to_f64;
 use nalgebra::DMatrix;
 use num_complex::Complex;
 use rayon::prelude::*;
@@ -58,12 +58,13 @@ impl FloatEntry {
 type FloatMatrix = Vec<Vec<FloatEntry>>;
 
 fn compile(m: &RatMatrix) -> FloatMatrix {
-    m.iter()
+    m.rows()
+        .iter()
         .map(|r| {
             r.iter()
                 .map(|f| FloatEntry {
-                    num: f.num.coeffs().iter().map(rational_to_f64).collect(),
-                    den: f.den.coeffs().iter().map(rational_to_f64).collect(),
+                    num: coeffs_f64(f.num()),
+                    den: coeffs_f64(f.den()),
                 })
                 .collect()
         })
@@ -244,19 +245,15 @@ impl SweepResult {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::study::ratfunc::{RatFunc, eval_ratfunc};
+    use crate::matrix::Matrix;
 
     #[test]
     fn damped_oscillator_sweep() {
         // q'' + c q' + q = 0: eigenvalues (-c +- sqrt(c^2 - 4))/2
-        let rf = |s: &str| eval_ratfunc(s, &|n| Ok((n == "c").then(RatFunc::var))).expect("valid");
-        let fam = ParamFamily::second_order(
-            "c",
-            vec![vec![rf("1")]],
-            vec![vec![rf("c")]],
-            vec![vec![rf("1")]],
-        )
-        .unwrap();
+        let k = crate::study::qv::field("c").unwrap();
+        let rf =
+            |s: &str| Matrix::from_rows(k.clone(), vec![vec![k.parse(s).expect("valid")]]).unwrap();
+        let fam = ParamFamily::second_order("c", rf("1"), rf("c"), rf("1")).unwrap();
         let vals = sweep_values(0.0, 4.0, 5);
         let r = sweep(&fam, &vals, None).unwrap();
         for (c, ev) in vals.iter().zip(&r.eigenvalues) {

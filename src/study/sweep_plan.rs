@@ -11,14 +11,14 @@
 //! Everywhere else the count is the generic one: $n$ when $\det E \not\equiv 0$, else
 //! $r = \deg_x P$.
 
-use super::bivar::{charpoly_xv_content, interpolate_consecutive};
+use super::bivar::charpoly_xv_content;
 use super::family::{FamilyForm, ParamFamily, RatMatrix};
+use super::qv::upoly;
 use crate::algebraic::factor_q;
 use crate::error::{Error, Result};
 use crate::field::{Q, Rational};
-use crate::matrix::Matrix;
 use crate::poly::Poly;
-use num_traits::Zero;
+use crate::ratfunc::kernels::{clear_rows, det_zp};
 
 /// What a sweep found at one parameter value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -154,40 +154,22 @@ fn rational_roots(p: &Poly<Q>) -> Result<Vec<Rational>> {
 }
 
 /// $\det$ of the matrix of rational functions `m` with each row multiplied by the lcm of
-/// its denominators: a polynomial in $v$ with the same zeros away from the poles
-/// (evaluation at $0, 1, \dots$ and interpolation; degree bounded by the row degrees).
+/// its denominators: a polynomial in $v$ with the same zeros away from the poles (the
+/// tower's row clearing and evaluation/interpolation kernel
+/// [`crate::ratfunc::kernels::det_zp`]).
 fn row_scaled_det(m: &RatMatrix) -> Result<Poly<Q>> {
-    let n = m.len();
-    let mut rows: Vec<Vec<Poly<Q>>> = vec![];
-    let mut bound = 0usize;
-    for row in m {
-        let mut l = Poly::one(Q);
-        for f in row {
-            l = l.mul(&f.den).quo(&l.gcd(&f.den));
-        }
-        let r: Vec<Poly<Q>> = row.iter().map(|f| f.num.mul(&l.quo(&f.den))).collect();
-        bound += r.iter().map(|x| x.degree().unwrap_or(0)).max().unwrap_or(0);
-        rows.push(r);
+    let n = m.nrows();
+    if n == 0 {
+        return Ok(Poly::one(Q));
     }
-    if bound > super::bivar::MAX_BIDEGREE {
+    let (b, _) = clear_rows(1, n, n, m.as_slice());
+    let bound: u32 = (0..n)
+        .map(|i| (0..n).map(|j| b[i * n + j].deg(0)).max().unwrap_or(0))
+        .sum();
+    if bound as usize > super::bivar::MAX_BIDEGREE {
         return Err(Error::Limit(format!(
             "det E(v) of degree up to {bound} in the parameter"
         )));
     }
-    let mut ys = Vec::with_capacity(bound + 1);
-    for t in 0..=bound {
-        let v = Rational::from_integer((t as i64).into());
-        let mat = Matrix::from_fn(Q, n, n, |i, j| rows[i][j].eval(&v));
-        ys.push(if n == 0 {
-            Rational::from_integer(1.into())
-        } else {
-            mat.det()?
-        });
-    }
-    let p = interpolate_consecutive(&ys);
-    Ok(if p.coeffs().iter().all(Zero::is_zero) {
-        Poly::zero(Q)
-    } else {
-        p
-    })
+    Ok(upoly(&det_zp(1, n, &b)?))
 }

@@ -159,13 +159,10 @@ pub fn analyze_with<K: Field + 'static>(
     }
     mechanical_section(&fa, &ta, &mut secs);
     if secs.done == 0 && !secs.cut.is_empty() {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "stopped after --max-seconds {}: the exact computation did not finish in time",
-                opts.budget.max_seconds.unwrap_or(0.0)
-            ),
-        });
+        return Err(Failure::input(format!(
+            "stopped after --max-seconds {}: the exact computation did not finish in time",
+            opts.budget.max_seconds.unwrap_or(0.0)
+        )));
     }
     let mut out = Outcome::new(secs.report, secs.verified);
     if !secs.cut.is_empty() {

@@ -84,10 +84,7 @@ pub(super) fn execute(
     t: &TypedSystem<RatFuncField>,
     path: &Path,
 ) -> Result<Outcome, Failure> {
-    let refuse = |what: String| Failure {
-        code: 2,
-        message: format!("{}: {what}", path.display()),
-    };
+    let refuse = |what: String| Failure::unsupported(format!("{}: {what}", path.display()));
     let k = t.a_raw.field();
     match cmd {
         Command::Linalg { op, .. } => {

@@ -31,7 +31,7 @@ pub use structure::block_sizes;
 
 use super::bivar::{BiPoly, charpoly_xv_content, discriminant_v, hurwitz_delta_n1};
 use super::family::ParamFamily;
-use super::hurwitz::RootCounts;
+use super::hurwitz::{RootCounts, hurwitz_stable, root_counts};
 use crate::algebraic::AlgebraicNumber;
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, QuadraticField, Rational, rational_to_f64};
@@ -257,7 +257,11 @@ pub fn critical_values(fam: &ParamFamily, a: &Rational, b: &Rational) -> Result<
             .unwrap_or(Ordering::Equal)
             .then(x.kind.cmp(&y.kind))
     });
-    let intervals = intervals_between(&p, a, b, &critical, &singular, &mut verified)?;
+    let count = |s: &Rational| -> Result<intervals::Counts> {
+        let ps = p.at(s);
+        Ok(Some((root_counts(&ps)?, hurwitz_stable(&ps)?, true)))
+    };
+    let intervals = intervals_between(a, b, &critical, &singular, &mut verified, &count)?;
     Ok(CriticalValues {
         param: fam.param.clone(),
         from: a.clone(),
@@ -299,13 +303,10 @@ fn singular_points(
         .collect::<Vec<_>>();
     for (poly, why) in parts {
         for r in real_roots_in(poly, a, b)? {
-            if !out.iter().any(|(x, _)| *x == r) {
-                out.push((r, why));
-            }
+            out.push((r, why));
         }
     }
-    out.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap_or(Ordering::Equal));
-    Ok(out.into_iter().unzip())
+    Ok(intervals::singular_sorted(out))
 }
 
 /// `f64` of a rational (re-export for reports).

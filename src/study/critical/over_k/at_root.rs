@@ -21,13 +21,13 @@ use super::super::imaginary::real_roots_by_sign;
 use super::super::roots::{rational_near, sign_at_root};
 use super::super::structure::{block_sizes, poly_of_matrix};
 use super::KFamily;
-use super::charpoly::BiPolyOver;
 use super::roots_k::{sign_at_real_root, split_parts};
 use crate::algebraic::{AlgebraicNumber, Ext, NumberField};
 use crate::error::{Error, Result};
 use crate::field::{Field, Quadratic, QuadraticField, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
+use crate::study::bivar::BiPolyOver;
 use num_complex::Complex;
 use num_traits::{One, Zero};
 
@@ -58,7 +58,7 @@ pub fn at_root(
     let e = Ext::with_var(h, (r.approx().0, 0.0), "t");
     let t = e.generator();
     let theta = e.from_base(&Quadratic::new(Rational::zero(), Rational::one()));
-    let pe = p.at(&e, &t, &|c| e.from_base(c));
+    let pe = p.at_in(&e, &t, &|c| e.from_base(c));
     if pe.is_zero() {
         return Err(Error::Singular);
     }

@@ -5,7 +5,7 @@
 //! * $P(x, v) \in K[x, v]$ and the conditions (zero eigenvalue $p_0$, double eigenvalue
 //!   $\mathrm{Res}_x(P, P_x)$, an eigenvalue mirrored across the imaginary axis
 //!   $\mathrm{Res}_x(P(x), \bar P(-x))$) by evaluation and interpolation over $K$
-//!   ([`charpoly`], generic over the field).
+//!   ([`crate::study::bivar`], generic over the field).
 //! * Their real roots with minimal polynomials over $\mathbb{Q}$ *and* over $K$ (a critical
 //!   value may lie in $K$ and not in $\mathbb{Q}$, e.g. $3/\sqrt 2$): roots of the norm, the
 //!   factor over $K$ that vanishes decided exactly ([`roots_k`]).
@@ -23,25 +23,26 @@
 //! (`imaginary_eigenvalue`).
 
 mod at_root;
-pub mod charpoly;
 pub mod roots_k;
 pub mod scalar;
 
 pub use scalar::{KRat, KReader};
 
-use super::{
-    CriticalKind, CriticalValue, CriticalValues, FieldCharpoly, SingularReason, StudyInterval,
-};
+use super::intervals::intervals_between;
+use super::{CriticalKind, CriticalValue, CriticalValues, FieldCharpoly, SingularReason};
 use crate::algebraic::AlgebraicNumber;
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, Quadratic, QuadraticField, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::study::bivar::BiPoly;
+use crate::ratfunc::RatFuncField;
+use crate::study::bivar::{
+    BiPoly, BiPolyOver, check_charpoly, det_xv, discriminant_over, mirror_resultant,
+};
 use crate::study::family::{state_first, state_second};
 use crate::study::family_read::read_file_matrices;
 use crate::study::hurwitz::{RootCounts, hurwitz_matrix, hurwitz_stable, root_counts};
-use charpoly::{BiPolyOver, det_xv, discriminant_over, mirror_resultant};
+use crate::study::qv::parts_q;
 use num_traits::Zero;
 use roots_k::{real_roots_k, sign_k};
 use std::cmp::Ordering;
@@ -52,18 +53,12 @@ use std::path::Path;
 #[derive(Clone, Debug)]
 pub struct KFamily {
     pub k: QuadraticField,
+    /// $\mathbb{Q}(v)$, the field of the parts of the entries.
+    pub q: RatFuncField,
     pub param: String,
     pub name: Option<String>,
     pub pencil: Vec<Vec<Vec<KRat>>>,
     pub second_order: bool,
-}
-
-fn one() -> KRat {
-    KRat::real(crate::study::ratfunc::one())
-}
-
-fn zero() -> KRat {
-    KRat::real(crate::study::ratfunc::RatFunc::zero())
 }
 
 impl KFamily {
@@ -78,7 +73,21 @@ impl KFamily {
         at: &[(String, String)],
         k: &QuadraticField,
     ) -> Result<Self> {
-        let m = read_file_matrices(&KReader { k: k.clone() }, path, param, at)?;
+        if !crate::io::expr::is_parameter_name(param) {
+            return Err(Error::Invalid(format!("'{param}' cannot name a parameter")));
+        }
+        let q = crate::study::qv::field(param)?;
+        let m = read_file_matrices(
+            &KReader {
+                k: k.clone(),
+                q: q.clone(),
+            },
+            path,
+            param,
+            at,
+        )?;
+        let one = || KRat::real(&q, q.one());
+        let zero = || KRat::real(&q, q.zero());
         let square = |x: &Vec<Vec<KRat>>, n: usize| -> Result<()> {
             if x.len() != n || x.iter().any(|r| r.len() != n) {
                 return Err(Error::Shape {
@@ -114,14 +123,7 @@ impl KFamily {
             square(&e, n)?;
             let neg: Vec<Vec<KRat>> = a
                 .iter()
-                .map(|r| {
-                    r.iter()
-                        .map(|x| KRat {
-                            a: x.a.neg(),
-                            b: x.b.neg(),
-                        })
-                        .collect()
-                })
+                .map(|r| r.iter().map(|x| x.neg(&q)).collect())
                 .collect();
             (vec![neg, e], false)
         } else {
@@ -132,6 +134,7 @@ impl KFamily {
         };
         Ok(KFamily {
             k: k.clone(),
+            q,
             param: param.into(),
             name: m.name,
             pencil,
@@ -202,8 +205,9 @@ impl KFamily {
                     .map(|p| {
                         p[i].iter()
                             .map(|x| {
-                                let a = x.a.num.mul(&l.quo(&x.a.den));
-                                let b = x.b.num.mul(&l.quo(&x.b.den));
+                                let ((an, ad), (bn, bd)) = (parts_q(&x.a), parts_q(&x.b));
+                                let a = an.mul(&l.quo(&ad));
+                                let b = bn.mul(&l.quo(&bd));
                                 let m = a.coeffs().len().max(b.coeffs().len());
                                 Poly::new(
                                     k.clone(),
@@ -220,32 +224,6 @@ impl KFamily {
     }
 }
 
-/// Checks $P(x, v_0) = \chi_{A(v_0)}(x)$ (monic) at a rational $v_0$ where both are defined.
-fn check_charpoly(fam: &KFamily, p: &BiPolyOver<QuadraticField>) -> Result<()> {
-    let k = &fam.k;
-    let theta = Quadratic::new(Rational::zero(), Rational::from_integer(1.into()));
-    for t in 0..64i64 {
-        let v0 = k.from_rational(&Rational::new((7919 + 31 * t).into(), 1009.into()));
-        let pv = p.at(k, &v0, &|c| c.clone());
-        if k.is_zero(&p.lead().eval(&v0)) {
-            continue;
-        }
-        let Ok(a) = fam.state_matrix_in(k, &theta, &v0) else {
-            continue;
-        };
-        if a.charpoly()? != pv.monic() {
-            return Err(Error::Verification(format!(
-                "characteristic polynomial in (x, {}) over {k} disagrees with charpoly(A({v0:?}))",
-                fam.param
-            )));
-        }
-        return Ok(());
-    }
-    Err(Error::Verification(
-        "no rational check point for the characteristic polynomial".into(),
-    ))
-}
-
 /// Critical values of `fam`'s parameter on $[a, b]$ over its field (see the module docs).
 ///
 /// # Errors
@@ -256,7 +234,8 @@ pub fn critical_values_over_k(fam: &KFamily, a: &Rational, b: &Rational) -> Resu
     }
     let k = &fam.k;
     let (p, content) = det_xv(k, &fam.poly_rows())?;
-    check_charpoly(fam, &p)?;
+    let theta = Quadratic::new(Rational::zero(), Rational::from_integer(1.into()));
+    check_charpoly(k, &p, &fam.param, &|v0| fam.state_matrix_in(k, &theta, v0))?;
     let imag_kind = if k.is_real() {
         CriticalKind::ImaginaryPair
     } else {
@@ -292,7 +271,8 @@ pub fn critical_values_over_k(fam: &KFamily, a: &Rational, b: &Rational) -> Resu
             .unwrap_or(Ordering::Equal)
             .then(x.kind.cmp(&y.kind))
     });
-    let intervals = intervals_k(&p, a, b, &critical, &singular, &mut verified)?;
+    let count = |s: &Rational| counts_at(k, &p.at(&k.from_rational(s)));
+    let intervals = intervals_between(a, b, &critical, &singular, &mut verified, &count)?;
     Ok(CriticalValues {
         param: fam.param.clone(),
         from: a.clone(),
@@ -390,14 +370,9 @@ fn singular_points(
     b: &Rational,
 ) -> Result<(Vec<AlgebraicNumber>, Vec<SingularReason>)> {
     let mut out: Vec<(AlgebraicNumber, SingularReason)> = vec![];
-    let mut add = |r: AlgebraicNumber, why| {
-        if !out.iter().any(|(x, _)| *x == r) {
-            out.push((r, why));
-        }
-    };
     for d in fam.denominators() {
         for r in super::roots::real_roots_in(&d, a, b)? {
-            add(r, SingularReason::Pole);
+            out.push((r, SingularReason::Pole));
         }
     }
     for (c, why) in [
@@ -405,65 +380,10 @@ fn singular_points(
         (&p.lead(), SingularReason::OrderDrop),
     ] {
         for (r, _) in real_roots_k(c, a, b)? {
-            add(r, why);
+            out.push((r, why));
         }
     }
-    out.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap_or(Ordering::Equal));
-    Ok(out.into_iter().unzip())
-}
-
-/// The intervals between consecutive critical and singular values with exact counts at a
-/// rational sample (see the module docs); `verified` is cleared on an inconsistency.
-fn intervals_k(
-    p: &BiPolyOver<QuadraticField>,
-    a: &Rational,
-    b: &Rational,
-    critical: &[CriticalValue],
-    singular: &[AlgebraicNumber],
-    verified: &mut bool,
-) -> Result<Vec<StudyInterval>> {
-    let k = p.lead().field().clone();
-    let mut pts: Vec<AlgebraicNumber> = vec![AlgebraicNumber::from_rational(a)];
-    let mut inner: Vec<AlgebraicNumber> = critical
-        .iter()
-        .map(|c| c.value.clone())
-        .chain(singular.iter().cloned())
-        .collect();
-    inner.sort_by(|x, y| x.partial_cmp(y).unwrap_or(Ordering::Equal));
-    inner.push(AlgebraicNumber::from_rational(b));
-    for x in inner {
-        if pts.last() != Some(&x) {
-            pts.push(x);
-        }
-    }
-    let mut out = vec![];
-    for w in pts.windows(2) {
-        let mut s = super::rational_between(&w[0], &w[1])?;
-        let mut found = None;
-        for _ in 0..16 {
-            let ps = p.at(&k, &k.from_rational(&s), &|c| c.clone());
-            if let Some(c) = counts_at(&k, &ps)? {
-                found = Some(c);
-                break;
-            }
-            // a degenerate sample (a Hurwitz minor vanishes): move towards the right end
-            s = super::rational_between(&AlgebraicNumber::from_rational(&s), &w[1])?;
-        }
-        let Some((counts, stable, consistent)) = found else {
-            return Err(Error::Limit(
-                "no sample point with nonzero Hurwitz minors between two critical values".into(),
-            ));
-        };
-        *verified &= consistent && stable == counts.is_stable();
-        out.push(StudyInterval {
-            from: w[0].clone(),
-            to: w[1].clone(),
-            sample: s,
-            counts,
-            stable,
-        });
-    }
-    Ok(out)
+    Ok(super::intervals::singular_sorted(out))
 }
 
 /// Root counts of $P(x, s)$ over $K$, Routh–Hurwitz stability, and whether the counts are

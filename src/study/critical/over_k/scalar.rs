@@ -10,9 +10,9 @@
 use crate::error::{Error, Result};
 use crate::field::expr::{Algebra, Dialect, RESERVED, SyntaxError, evaluate, parse_number};
 use crate::field::{Field, Q, QuadraticField, Rational};
+use crate::ratfunc::{RatFunc, RatFuncField};
 use crate::study::family_read::ScalarReader;
-use crate::study::ratfunc::{MAX_EXP, RatFunc, ratfunc_from_number};
-use num_traits::One;
+use crate::study::qv::{MAX_EXP, den_q, eval_in, size_ok};
 
 /// $a + \theta b$ with $a, b \in \mathbb{Q}(v)$.
 #[derive(Clone, Debug, PartialEq)]
@@ -22,15 +22,19 @@ pub struct KRat {
 }
 
 impl KRat {
-    /// The element $a$ of $\mathbb{Q}(v)$.
-    pub fn real(a: RatFunc) -> Self {
-        KRat {
-            a,
-            b: RatFunc::zero(),
-        }
+    /// The element $a$ of $\mathbb{Q}(v)$ = `q`.
+    pub fn real(q: &RatFuncField, a: RatFunc) -> Self {
+        KRat { a, b: q.zero() }
     }
     pub fn is_zero(&self) -> bool {
-        self.a.is_zero() && self.b.is_zero()
+        self.a.num().is_zero() && self.b.num().is_zero()
+    }
+    /// $-x$.
+    pub fn neg(&self, q: &RatFuncField) -> Self {
+        KRat {
+            a: q.neg(&self.a),
+            b: q.neg(&self.b),
+        }
     }
     /// Its value at `v0` in a field `e` holding $\theta$ as `theta` (`DivisionByZero` at a
     /// pole).
@@ -38,53 +42,60 @@ impl KRat {
     /// # Errors
     /// `DivisionByZero` when a denominator vanishes at `v0`.
     pub fn eval_in<E: Field>(&self, e: &E, theta: &E::Elem, v0: &E::Elem) -> Result<E::Elem> {
-        let a = crate::study::family::eval_in(e, &self.a, v0)?;
-        let b = crate::study::family::eval_in(e, &self.b, v0)?;
+        let a = eval_in(e, &self.a, v0)?;
+        let b = eval_in(e, &self.b, v0)?;
         Ok(e.add(&a, &e.mul(theta, &b)))
     }
     /// The common denominator $\operatorname{lcm}$ of both parts (monic, in $\mathbb{Q}[v]$).
     pub fn den(&self) -> crate::poly::Poly<Q> {
-        let (x, y) = (&self.a.den, &self.b.den);
-        x.mul(y).quo(&x.gcd(y)).monic()
+        let (x, y) = (den_q(&self.a), den_q(&self.b));
+        x.mul(&y).quo(&x.gcd(&y)).monic()
     }
 }
 
-/// Reads entries into $K(v)$ for the field `k` of the system file.
+/// Reads entries into $K(v)$ for the field `k` of the system file, $\mathbb{Q}(v)$ = `q`.
 pub struct KReader {
     pub k: QuadraticField,
+    pub q: RatFuncField,
 }
 
 impl KReader {
     fn d(&self) -> RatFunc {
-        RatFunc::constant(Rational::from_integer(self.k.d().clone()))
+        self.q
+            .from_rational(&Rational::from_integer(self.k.d().clone()))
     }
     fn mul(&self, x: &KRat, y: &KRat) -> Result<KRat> {
-        let a = x.a.mul(&y.a)?.add(&self.d().mul(&x.b.mul(&y.b)?)?)?;
-        let b = x.a.mul(&y.b)?.add(&x.b.mul(&y.a)?)?;
+        let q = &self.q;
+        let a = q.add(&q.mul(&x.a, &y.a), &q.mul(&self.d(), &q.mul(&x.b, &y.b)));
+        let b = q.add(&q.mul(&x.a, &y.b), &q.mul(&x.b, &y.a));
         Ok(KRat {
-            a: a.size_ok()?,
-            b: b.size_ok()?,
+            a: size_ok(a)?,
+            b: size_ok(b)?,
         })
     }
     fn inv(&self, x: &KRat) -> Result<KRat> {
-        let n = x.a.mul(&x.a)?.sub(&self.d().mul(&x.b.mul(&x.b)?)?)?;
-        if n.is_zero() {
-            return Err(Error::DivisionByZero);
-        }
+        let q = &self.q;
+        let n = q.sub(&q.mul(&x.a, &x.a), &q.mul(&self.d(), &q.mul(&x.b, &x.b)));
+        let div = |y: &RatFunc| q.div_unrecorded(y, &n).ok_or(Error::DivisionByZero);
         Ok(KRat {
-            a: x.a.div(&n)?.size_ok()?,
-            b: x.b.neg().div(&n)?.size_ok()?,
+            a: size_ok(div(&x.a)?)?,
+            b: size_ok(div(&q.neg(&x.b))?)?,
         })
+    }
+    fn constant(&self, c: Rational) -> KRat {
+        KRat::real(&self.q, self.q.from_rational(&c))
     }
 }
 
 impl ScalarReader for KReader {
     type Value = KRat;
     fn var(&self) -> KRat {
-        KRat::real(RatFunc::var())
+        KRat::real(&self.q, self.q.var(0))
     }
     fn number(&self, s: &str) -> Result<KRat> {
-        ratfunc_from_number(s).map(KRat::real)
+        parse_number(s)
+            .map(|c| self.constant(c))
+            .map_err(Error::Invalid)
     }
     fn eval(&self, text: &str, lookup: &dyn Fn(&str) -> Result<Option<KRat>>) -> Result<KRat> {
         evaluate(
@@ -111,7 +122,7 @@ impl InKv<'_> {
     }
     /// The rational constant `x` is, if it is one.
     fn constant(x: &KRat) -> Option<Rational> {
-        (x.b.is_zero() && x.a.is_poly() && x.a.num.deg() == 0).then(|| x.a.num.coeff(0))
+        x.b.num().is_zero().then(|| x.a.to_rational()).flatten()
     }
     fn not_in_field<T>(&self, what: &str) -> Result<T> {
         Err(Error::Invalid(format!(
@@ -129,7 +140,7 @@ impl Algebra for InKv<'_> {
     }
     fn number(&self, s: &str, _: usize) -> Result<KRat> {
         parse_number(s)
-            .map(|q| KRat::real(RatFunc::constant(q)))
+            .map(|q| self.r.constant(q))
             .map_err(|m| Error::Invalid(format!("{m} in '{}'", self.text)))
     }
     fn name(&self, n: &str, _: usize) -> Result<KRat> {
@@ -138,8 +149,8 @@ impl Algebra for InKv<'_> {
                 return self.not_in_field("i");
             }
             return Ok(KRat {
-                a: RatFunc::zero(),
-                b: RatFunc::constant(Rational::one()),
+                a: self.r.q.zero(),
+                b: self.r.q.one(),
             });
         }
         if RESERVED.contains(&n) {
@@ -159,25 +170,23 @@ impl Algebra for InKv<'_> {
         };
         let (field, a, b) = QuadraticField::sqrt_of_rational(&q);
         match field {
-            None => Ok(KRat::real(RatFunc::constant(a))),
+            None => Ok(self.r.constant(a)),
             Some(f) if f.d() == self.r.k.d() => Ok(KRat {
-                a: RatFunc::zero(),
-                b: RatFunc::constant(b),
+                a: self.r.q.zero(),
+                b: self.r.q.from_rational(&b),
             }),
             Some(_) => self.not_in_field(&format!("sqrt({q})")),
         }
     }
     fn neg(&self, a: KRat, _: usize) -> Result<KRat> {
-        Ok(KRat {
-            a: a.a.neg(),
-            b: a.b.neg(),
-        })
+        Ok(a.neg(&self.r.q))
     }
     fn add(&self, a: KRat, b: KRat, subtract: bool, _: usize) -> Result<KRat> {
-        let b = if subtract { self.neg(b, 0)? } else { b };
+        let q = &self.r.q;
+        let b = if subtract { b.neg(q) } else { b };
         Ok(KRat {
-            a: a.a.add(&b.a)?.size_ok()?,
-            b: a.b.add(&b.b)?.size_ok()?,
+            a: size_ok(q.add(&a.a, &b.a))?,
+            b: size_ok(q.add(&a.b, &b.b))?,
         })
     }
     fn mul(&self, a: KRat, b: KRat, divide: bool, _: usize) -> Result<KRat> {
@@ -199,7 +208,7 @@ impl Algebra for InKv<'_> {
             ));
         }
         let k: i64 = n.to_integer().try_into().unwrap_or(0);
-        let mut acc = KRat::real(RatFunc::constant(Rational::one()));
+        let mut acc = KRat::real(&self.r.q, self.r.q.one());
         let mut sq = base;
         let mut m = k.unsigned_abs();
         while m > 0 {
@@ -226,27 +235,30 @@ mod tests {
     use super::*;
 
     fn ev(d: i64, s: &str) -> Result<KRat> {
+        let q = crate::study::qv::field("v").unwrap();
         let r = KReader {
             k: QuadraticField::new(d).unwrap(),
+            q: q.clone(),
         };
-        r.eval(s, &|n| Ok((n == "v").then(|| KRat::real(RatFunc::var()))))
+        r.eval(s, &|n| Ok((n == "v").then(|| KRat::real(&q, q.var(0)))))
+    }
+
+    fn qv(s: &str) -> RatFunc {
+        crate::study::qv::field("v").unwrap().parse(s).unwrap()
     }
 
     #[test]
     fn reads_quadratic_rational_functions() {
         // (sqrt 2 v)^2 = 2 v^2; 1/(1 + sqrt 2) = sqrt 2 - 1
         let x = ev(2, "(sqrt(2)*v)^2").unwrap();
-        assert_eq!(x.a.to_string(), "2*v^2");
-        assert!(x.b.is_zero());
+        assert_eq!(x.a, qv("2*v^2"));
+        assert!(x.b.num().is_zero());
         let y = ev(2, "1/(1 + sqrt(8)/2)").unwrap();
-        assert_eq!(
-            (y.a.to_string(), y.b.to_string()),
-            ("-1".into(), "1".into())
-        );
+        assert_eq!((y.a, y.b), (qv("-1"), qv("1")));
         let z = ev(-1, "(v + i)^-1").unwrap();
         // (v - i)/(v^2 + 1)
-        assert_eq!(z.a.to_string(), "(v)/(v^2 + 1)");
-        assert_eq!(z.b.to_string(), "(-1)/(v^2 + 1)");
+        assert_eq!(z.a, qv("(v)/(v^2 + 1)"));
+        assert_eq!(z.b, qv("(-1)/(v^2 + 1)"));
         assert!(ev(2, "i").is_err());
         assert!(ev(2, "sqrt(3)").is_err());
         assert!(ev(-1, "sqrt(v)").is_err());
