@@ -16,6 +16,7 @@ use exactlti::matrix::Matrix;
 use exactlti::realization::{minimal_jordan, minimal_kalman};
 use exactlti::report::sections::{TfRealization, tf_report_quadratic};
 use exactlti::system::StateSpace;
+use exactlti::system::discrete::stability::Domain;
 use std::time::Instant;
 
 struct Rng(u64);
@@ -79,7 +80,7 @@ fn main() {
             let m = minimal_kalman(&s).expect("kalman");
             let ok = m.verified && g.matches_markov(&m.system);
             let r = TfRealization::from_state_space(&m.system, ok).expect("realization");
-            let rep = tf_report_quadratic(&g, &r, Some(&s)).expect("report");
+            let rep = tf_report_quadratic(&g, &r, Some(&s), Domain::Continuous).expect("report");
             ok && matches!(
                 rep.get("verified"),
                 Some(exactlti::report::Value::Bool(true))

@@ -25,10 +25,7 @@ use serde_json::Value as J;
 use std::path::Path;
 
 fn bad(path: &Path, message: String) -> Failure {
-    Failure {
-        code: 2,
-        message: format!("{}: {message}", path.display()),
-    }
+    Failure::input(format!("{}: {message}", path.display()))
 }
 
 /// The connection file as JSON (TOML converted).
@@ -159,10 +156,8 @@ pub fn run(
         .map(|p| System::open_or_gain(&dir.join(p), sym).map_err(Failure::from))
         .collect::<Result<Vec<_>, _>>()?;
     let refs: Vec<&System> = systems.iter().collect();
-    let closed = connect_named(&refs, &conn).map_err(|f| Failure {
-        code: f.code,
-        message: format!("{}: {}", file.display(), f.message),
-    })?;
+    let closed = connect_named(&refs, &conn)
+        .map_err(|f| Failure::new(f.class, format!("{}: {}", file.display(), f.message)))?;
     let parts: Vec<Value> = paths
         .iter()
         .zip(&systems)
@@ -254,19 +249,17 @@ impl SystemVisitor for Finish<'_> {
                 .extension()
                 .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
             {
-                return Err(Failure {
-                    code: 2,
-                    message: format!("{}: --out writes JSON; name the file .json", out.display()),
-                });
+                return Err(Failure::input(format!(
+                    "{}: --out writes JSON; name the file .json",
+                    out.display()
+                )));
             }
             let written = min.as_ref().map_or(sys, |m| &m.system);
             let name = format!("connect {}", self.name);
             let text =
                 crate::io::write::system_file_text(Some(&name), written, &symbols, &f.signals);
-            std::fs::write(out, text).map_err(|err| Failure {
-                code: 2,
-                message: format!("{}: cannot write: {err}", out.display()),
-            })?;
+            std::fs::write(out, text)
+                .map_err(|err| Failure::input(format!("{}: cannot write: {err}", out.display())))?;
             r = r.str("written", out.display().to_string());
         }
         let ok = min.as_ref().is_none_or(|m| m.verified);

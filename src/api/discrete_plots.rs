@@ -15,10 +15,8 @@ use crate::system::discrete::stability::{Domain, Verdict, stability_of};
 use std::path::Path;
 
 fn write(out: &Path, text: &str) -> Result<(), Failure> {
-    std::fs::write(out, text).map_err(|err| Failure {
-        code: 2,
-        message: format!("{}: cannot write: {err}", out.display()),
-    })
+    std::fs::write(out, text)
+        .map_err(|err| Failure::input(format!("{}: cannot write: {err}", out.display())))
 }
 
 /// Writes the Bode SVG of a sampled system over `[from, to]` Hz (`to` at most the Nyquist
@@ -34,13 +32,10 @@ pub fn bode_file_dt<K: Field>(
     let (title, ins, outs) = super::plots::names(f, path, t.ss.ninputs(), t.ss.noutputs());
     let sys = float_abcd(t, path)?;
     if matches!(sys, FloatAbcd::Complex(_)) {
-        return Err(Failure {
-            code: 2,
-            message: format!(
-                "{}: --svg: the Bode plot of a discrete-time system with complex coefficients is not drawn (use --csv)",
-                path.display()
-            ),
-        });
+        return Err(Failure::unsupported(format!(
+            "{}: --svg: the Bode plot of a discrete-time system with complex coefficients is not drawn (use --csv)",
+            path.display()
+        )));
     }
     let labels: Vec<Vec<String>> = outs
         .iter()

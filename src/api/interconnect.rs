@@ -126,11 +126,12 @@ impl InterconnectCmd {
     }
     /// [`Self::parts`], or the error that `connect` reads its connection file.
     fn parts_or_fail(&self) -> Result<(Operation, Vec<&Path>, &InterconnectOpts), Failure> {
-        self.parts().ok_or_else(|| Failure {
-            code: 2,
-            message: "connect: reads its connection file (exactlti connect FILE; in Python \
-                      exactlti.interconnect)"
-                .into(),
+        self.parts().ok_or_else(|| {
+            Failure::input(
+                "connect: reads its connection file (exactlti connect FILE; in Python \
+                 exactlti.interconnect)"
+                    .into(),
+            )
         })
     }
 }
