@@ -92,6 +92,18 @@ fn main() {
     time("inverse 100x100", reps, || oq::inverse_q(100, &sq));
 
     sweep();
+    // inverse of the rational sweep matrices: CRT solve against Dixon's lifting (A X = I)
+    for n in [10usize, 25] {
+        let a = sweep_matrix(true, n, false);
+        let mut id = vec![Rational::from_integer(0.into()); n * n];
+        (0..n).for_each(|i| id[i * n + i] = Rational::from_integer(1.into()));
+        time(&format!("inverse_direct rat {n}"), 3, || {
+            mm::direct::inverse_direct(n, &a)
+        });
+        time(&format!("inverse_dixon rat {n}"), 3, || {
+            mm::dixon::solve_dixon(n, n, &a, &id)
+        });
+    }
     // algorithm against algorithm on small sizes (dispatch thresholds)
     for n in [4usize, 8, 12, 16, 24] {
         let a = to_q(&g.matrix(n, n));
@@ -134,6 +146,7 @@ const SWEEP: &[(&str, &[usize], &[usize])] = &[
     ),
     ("det", &[10, 25, 50, 100, 200], &[10, 25, 50, 100]),
     ("solve", &[10, 25, 50, 100, 200], &[10, 25, 50, 100]),
+    ("solve-rand", &[10, 25, 50, 100], &[10, 25, 50]),
     ("inverse", &[10, 25, 50, 100], &[10, 25, 50]),
     ("charpoly", &[10, 25, 50, 100], &[10, 25, 50]),
     ("minpoly", &[10, 25, 50, 100], &[10, 25, 50]),
@@ -165,6 +178,25 @@ fn sweep_matrix(rat: bool, n: usize, deficient: bool) -> Vec<Rational> {
     a
 }
 
+/// The right-hand side of `solve-rand`: `n` entries drawn as those of [`sweep_matrix`]
+/// from `Lcg64(seed + 700)` (`solve` takes column 0 of the matrix, whose solution is
+/// `e_1`; this one has a solution of ~`n^2 log2(10^6)` bits for rational entries).
+fn sweep_rhs(rat: bool, n: usize) -> Vec<Rational> {
+    let seed = if rat { 1000 } else { 2000 } + n as u64 + 700;
+    let mut g = Lcg64(seed);
+    (0..n)
+        .map(|_| {
+            let p = (g.next_u31() % 2_000_001) as i64 - 1_000_000;
+            let q = if rat {
+                (g.next_u31() % 1_000_000) as i64 + 1
+            } else {
+                1
+            };
+            Rational::new(p.into(), q.into())
+        })
+        .collect()
+}
+
 /// One line per case: `sweep KIND OP N: X ms`.
 fn sweep() {
     for rat in [false, true] {
@@ -182,6 +214,10 @@ fn sweep() {
                     "nullspace" => time(&name, reps, || oq::nullspace_q(n, n, &sq)),
                     "det" => time(&name, reps, || oq::det_q(n, &sq)),
                     "solve" => time(&name, reps, || oq::solve_q(n, n, 1, &sq, &b)),
+                    "solve-rand" => {
+                        let r = sweep_rhs(rat, n);
+                        time(&name, reps, || oq::solve_q(n, n, 1, &sq, &r))
+                    }
                     "inverse" => time(&name, reps, || oq::inverse_q(n, &sq)),
                     "charpoly" => time(&name, reps, || oq::charpoly_q(n, &sq)),
                     _ => time(&name, reps, || mq(n, &sq).minpoly()),

@@ -85,6 +85,8 @@ mod layers;
 mod library_api;
 #[path = "margins.rs"]
 mod margins;
+#[path = "matrix_dixon.rs"]
+mod matrix_dixon;
 #[path = "matrix_generic.rs"]
 mod matrix_generic;
 #[path = "matrix_modular.rs"]

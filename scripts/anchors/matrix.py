@@ -20,10 +20,14 @@ LCG, see `benches/matrix.rs`):
    exponent (least-squares slope of log t over log n for n >= 25) per operation.
 
 `--repeat K`: every timing is the best of at least K runs (for a loaded machine);
-`--sizes`: only these n.
+`--sizes`: only these n. `-h`/`--help`: this text. Environment, passed on to the bench:
+`SWEEP_ONLY=1` (only the sweep), `BENCH_FILTER=TEXT` (only bench cases whose name contains
+TEXT, e.g. "sweep rat"); `EXACTLTI_EXE=PATH` times that CLI binary instead of building one.
 Every operation runs on a full random n x n matrix (as issue 29 measured); `rref-def` is the
 RREF of a rank-deficient one (last row = row 0 + row 1), whose free column has entries of
-~n^2 log2(10^6) bits (output-heavy); `solve` has the right-hand side column 0.
+~n^2 log2(10^6) bits (output-heavy); `solve` has the right-hand side column 0 (solution
+e_1), `solve-rand` a random one (`sweep_rhs`; a solution of ~n^2 log2(10^6) bits for rational
+entries). `linalg` has no solve operation: solve rows have no CLI column.
 FLINT's null space over Q is its RREF (fmpq_mat has no nullspace; the basis is read off).
 Times are the best of a few repetitions, in milliseconds.
 
@@ -79,6 +83,7 @@ SWEEP = [
     ("nullspace", [10, 25, 50, 100, 200], [10, 25, 50, 100, 200]),
     ("det", [10, 25, 50, 100, 200], [10, 25, 50, 100]),
     ("solve", [10, 25, 50, 100, 200], [10, 25, 50, 100]),
+    ("solve-rand", [10, 25, 50, 100], [10, 25, 50]),
     ("inverse", [10, 25, 50, 100], [10, 25, 50]),
     ("charpoly", [10, 25, 50, 100], [10, 25, 50]),
     ("minpoly", [10, 25, 50, 100], [10, 25, 50]),
@@ -116,6 +121,17 @@ def sweep_matrix(rat, n, deficient):
     if deficient and n >= 2:
         a[n - 1] = [x + y for x, y in zip(a[0], a[1])]
     return a
+
+
+def sweep_rhs(rat, n):
+    """The right-hand side of `solve-rand` (`sweep_rhs` of benches/matrix.rs), Fractions."""
+    g = Lcg((1000 if rat else 2000) + n + 700)
+    out = []
+    for _ in range(n):
+        p = g.u31() % 2000001 - 1000000
+        q = g.u31() % 1000000 + 1 if rat else 1
+        out.append(Fraction(p, q))
+    return out
 
 
 def matmul(a, b):
@@ -230,12 +246,13 @@ def flint_sweep_case(rat, op, a, reps):
 
     n = len(a)
     flat = [x for row in a for x in row]
+    rhs = sweep_rhs(rat, n) if op == "solve-rand" else [row[0] for row in a]
     if rat:
         M = flint.fmpq_mat(n, n, [flint.fmpq(x.numerator, x.denominator) for x in flat])
-        b = flint.fmpq_mat(n, 1, [flint.fmpq(row[0].numerator, row[0].denominator) for row in a])
+        b = flint.fmpq_mat(n, 1, [flint.fmpq(x.numerator, x.denominator) for x in rhs])
     else:
         M = flint.fmpz_mat(n, n, [int(x) for x in flat])
-        b = flint.fmpz_mat(n, 1, [int(row[0]) for row in a])
+        b = flint.fmpz_mat(n, 1, [int(x) for x in rhs])
     f = {
         "rank": lambda: M.rank(),
         "rref": lambda: M.rref(),
@@ -243,6 +260,7 @@ def flint_sweep_case(rat, op, a, reps):
         "nullspace": (lambda: M.rref()) if rat else (lambda: M.nullspace()),
         "det": lambda: M.det(),
         "solve": lambda: M.solve(b),
+        "solve-rand": lambda: M.solve(b),
         "inverse": lambda: M.inv(),
         "charpoly": lambda: M.charpoly(),
         "minpoly": lambda: M.minpoly(),
@@ -263,6 +281,13 @@ def flint_read_case(rat, op, path, n, reps):
             M = flint.fmpz_mat([[int(x) for x in row] for row in rows])
         if op == "solve":
             b = M.__class__(n, 1, [M[i, 0] for i in range(n)])
+            return M.solve(b)
+        if op == "solve-rand":
+            rhs = sweep_rhs(rat, n)
+            if rat:
+                b = flint.fmpq_mat(n, 1, [flint.fmpq(x.numerator, x.denominator) for x in rhs])
+            else:
+                b = flint.fmpz_mat(n, 1, [int(x) for x in rhs])
             return M.solve(b)
         f = {
             "rank": M.rank,
@@ -285,7 +310,8 @@ def sympy_sweep_case(op, a):
 
     n = len(a)
     M = DomainMatrix([[QQ(x.numerator, x.denominator) for x in row] for row in a], (n, n), QQ)
-    b = DomainMatrix([[QQ(row[0].numerator, row[0].denominator)] for row in a], (n, 1), QQ)
+    rhs = sweep_rhs(True, n) if op == "solve-rand" else [row[0] for row in a]
+    b = DomainMatrix([[QQ(x.numerator, x.denominator)] for x in rhs], (n, 1), QQ)
     f = {
         "rank": lambda: M.rank(),
         "rref": lambda: M.rref(),
@@ -293,6 +319,7 @@ def sympy_sweep_case(op, a):
         "nullspace": lambda: M.nullspace(),
         "det": lambda: M.det(),
         "solve": lambda: M.lu_solve(b),
+        "solve-rand": lambda: M.lu_solve(b),
         "inverse": lambda: M.inv(),
         "charpoly": lambda: M.charpoly(),
         "minpoly": lambda: M.to_Matrix().minimal_polynomial(),
@@ -331,7 +358,7 @@ def cli_case(exe, path, op, n, reps):
     watchdog timer kills the process past CLI_TIMEOUT): `subprocess.run(timeout=...)` polls
     with sleeps of 0.5, 1, 2, 4, ... ms, which added up to 3.5 ms to a 4 ms command (measured
     2026-11-26: 7.5 ms polled against 4.1 ms blocking on the same file)."""
-    if op == "solve":
+    if op.startswith("solve"):
         return None
     t = cpu = float("inf")
     for _ in range(reps):
@@ -446,6 +473,9 @@ def parse_args():
 
 
 def main():
+    if "-h" in sys.argv[1:] or "--help" in sys.argv[1:]:
+        print(__doc__)
+        return
     ensure_venv()
     # SymPy's own (pure Python) domain arithmetic: with python-flint installed SymPy would
     # otherwise hand DomainMatrix work to FLINT and time FLINT twice

@@ -3,7 +3,7 @@
 //!
 //! | field entry | kernels |
 //! |---|---|
-//! | `Rational` ($\mathbb{Q}$) | [`super::over_q`]: charpoly, det, RREF, rank, null space, inverse, product |
+//! | `Rational` ($\mathbb{Q}$) | [`super::over_q`]: charpoly, det, RREF, rank, null space, inverse, solve, product |
 //! | `Quadratic` ($\mathbb{Q}(\sqrt d)$) | [`super::over_k`]: rank, inverse, product |
 //! | `Table` (e.g. $\mathbb{Q}(p)$) | the field's [`crate::field::KernelTable`] |
 //! | `Generic` | none |
@@ -99,6 +99,23 @@ pub(super) fn inverse<K: Field>(a: &Matrix<K>) -> Option<Result<Matrix<K>>> {
         inv.map(|d| Matrix::from_vec(k.clone(), n, n, d))
             .ok_or(Error::Singular),
     )
+}
+
+/// $X = A^{-1} B$ when the field's kernel proves $A$ (square) nonsingular; `None` otherwise
+/// (the caller's RREF of $[A \mid B]$ then decides).
+pub(super) fn solve_square<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Option<Matrix<K>> {
+    let k = &a.field;
+    let (n, c) = (a.nrows, b.ncols);
+    let x = match k.kernels() {
+        Kernels::Rational(w) => w.back(over_q::solve_square_q(
+            n,
+            c,
+            w.view(&a.data),
+            w.view(&b.data),
+        )?),
+        Kernels::Quadratic(..) | Kernels::Table(_) | Kernels::Generic => return None,
+    };
+    Some(Matrix::from_vec(k.clone(), n, c, x))
 }
 
 /// $AB$ (shapes already checked).

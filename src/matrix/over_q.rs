@@ -153,9 +153,22 @@ pub fn mul_q(
     (k >= MUL_MIN_K && m * n >= 4).then(|| intmul::mul_q(m, k, n, a, b))
 }
 
+/// $X = A^{-1} B$ for a square `a` (`n x n`, `b` is `n x k`) when $A$ is nonsingular and
+/// the size calls for a kernel ($n >$ [`SMALL_N`]): Dixon's $p$-adic lifting
+/// ([`modular::dixon`]); `None` otherwise (singular $A$, or small: the caller takes the
+/// RREF of $[A \mid B]$). The solve kernel of the field hooks ([`crate::matrix::Matrix::solve`]).
+///
+/// # Panics
+/// When `a.len() != n * n` or `b.len() != n * k`.
+pub fn solve_square_q(n: usize, k: usize, a: &[Rational], b: &[Rational]) -> Option<Vec<Rational>> {
+    check_len("solve_square_q", a.len(), n, n);
+    check_len("solve_square_q", b.len(), n, k);
+    (n > SMALL_N).then(|| modular::dixon::solve_dixon(n, k, a, b))?
+}
+
 /// Solution of $AX = B$ (`a` is `m x n`, `b` is `m x k`): one particular solution `n x k`
 /// (free variables zero), or `None` when the system is inconsistent. A nonsingular square
-/// $A$ takes [`direct::solve_direct`]; the others the RREF of $[A \mid B]$.
+/// $A$ takes [`solve_square_q`]; the others the RREF of $[A \mid B]$.
 ///
 /// # Panics
 /// When `a.len() != m * n` or `b.len() != m * k`.
@@ -169,8 +182,7 @@ pub fn solve_q(
     check_len("solve_q", a.len(), m, n);
     check_len("solve_q", b.len(), m, k);
     if m == n
-        && n > SMALL_N
-        && let Some(x) = direct::solve_direct(n, k, a, b)
+        && let Some(x) = solve_square_q(n, k, a, b)
     {
         return Some(x);
     }

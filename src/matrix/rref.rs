@@ -216,6 +216,12 @@ impl<K: Field> Matrix<K> {
             });
         }
         let n = self.ncols;
+        if self.nrows == n
+            && let Some(x) = kernels::solve_square(self, b)
+        {
+            // A nonsingular: X is the only solution, the null space is {0}
+            return Ok(Some((x, Matrix::zeros(self.field.clone(), n, 0))));
+        }
         let aug = self.hstack(b)?;
         let (r, piv) = aug.rref();
         if piv.last().is_some_and(|&p| p >= n) {

@@ -175,15 +175,25 @@ impl CommonDenominator {
     /// Reconstructs $u_i \equiv n_i / d$ for the lifted residues `us` (any representative).
     /// `None` when some entry has no reconstruction within the bounds of `crt`.
     pub fn reconstruct(crt: &Crt, us: impl Iterator<Item = BigInt>) -> Option<Self> {
-        let m = crt.modulus();
-        let bound = crt.rr_bound();
+        Self::reconstruct_mod(crt.modulus(), us)
+    }
+
+    /// [`CommonDenominator::reconstruct`] modulo any $M \ge 2$ (bounds
+    /// $N = D = \lfloor \sqrt{(M-1)/2} \rfloor$, as [`Crt::rr_bound`]).
+    pub fn reconstruct_mod(m: &BigInt, us: impl Iterator<Item = BigInt>) -> Option<Self> {
+        let bound = ((m - 1u32) >> 1u32).sqrt();
+        let half = m >> 1u32;
+        let symmetric = |x: &BigInt| {
+            let r = x.mod_floor(m);
+            if r > half { r - m } else { r }
+        };
         let mut den = BigInt::one();
         let mut nums: Vec<BigInt> = Vec::new();
         for u in us {
             let v = if den.is_one() {
-                crt.symmetric(&u)
+                symmetric(&u)
             } else {
-                crt.symmetric(&(u * &den))
+                symmetric(&(u * &den))
             };
             if v.abs() <= bound {
                 nums.push(v);

@@ -38,6 +38,7 @@ pub mod charpoly;
 pub mod crt;
 pub mod det;
 pub mod direct;
+pub mod dixon;
 pub mod guess;
 pub mod inverse;
 pub mod minpoly;

@@ -1,10 +1,11 @@
-//! The RREF of a rank-deficient rational matrix from one nonsingular block (issue 29): no
-//! rational reconstruction, only the certified CRT solve of [`super::direct`].
+//! The RREF of a rank-deficient rational matrix from one nonsingular block (issue 29): one
+//! certified solve, by Dixon's lifting ([`super::dixon`], output-sensitive), or the CRT
+//! solve of [`super::direct`] should that find no invertible image.
 //!
 //! One image $\bar A = A \bmod p$ ([`super::qimage`]) gives pivot columns $P$ (its RREF) and
 //! rows $S$ ($|S| = |P| = r$, the first independent rows of $\bar A_{:,P}$), so the block
 //! $B = A_{S,P}$ is nonsingular modulo $p$, hence over $\mathbb{Q}$. With the free columns
-//! $F$, [`super::direct::solve_direct_int`] gives $N, \delta \ne 0$ with
+//! $F$, [`super::dixon::solve_dixon_int`] gives $N, \delta \ne 0$ with
 //! $B N = \delta A_{S,F}$, certified there. The candidate $X$ ($r \times n$) has
 //! $X_{:,P} = I$ and $X_{:,F} = N / \delta$, so $A_{S,:} = B X$.
 //!
@@ -16,10 +17,11 @@
 //! RREF of $A$. A failed check (an unlucky prime: later pivots than over $\mathbb{Q}$)
 //! returns `None` and the caller takes the reconstruction path of [`super::rref`].
 //!
-//! The modulus grows with the output ($\log_2 |\delta N|$ bits, about half of what rational
-//! reconstruction needs), and the solve has only $|F|$ right-hand sides.
+//! The lifting runs as long as the output needs (twice $\log_2 \max(|N|, \delta)$ bits),
+//! not to the determinant bound of the block, and the solve has only $|F|$ right-hand sides.
 
 use super::direct::solve_direct_int;
+use super::dixon::solve_dixon_int;
 use super::qimage::RatMat;
 use super::rref::{IntRref, rref_mod_p};
 use crate::field::Rational;
@@ -62,7 +64,8 @@ pub fn rref_pivot_solve(m: usize, n: usize, a: &[Rational]) -> Option<IntRref> {
         .iter()
         .flat_map(|&i| free.iter().map(move |&c| a[i * n + c].clone()))
         .collect();
-    let (mut den, mut x) = solve_direct_int(r, free.len(), &block, &rhs)?;
+    let (mut den, mut x) = solve_dixon_int(r, free.len(), &block, &rhs)
+        .or_else(|| solve_direct_int(r, free.len(), &block, &rhs))?;
     if den.is_negative() {
         den = -den;
         x.iter_mut().for_each(|v| *v = -std::mem::take(v));

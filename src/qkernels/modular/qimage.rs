@@ -156,7 +156,7 @@ impl<'a> RatMat<'a> {
 /// $\operatorname{lcm}(l, d)$ for $d > 0$, with the gcd taken on $(d, l \bmod d)$ (words
 /// when $d$ fits one): a row lcm grows to $n \log_2 q$ bits while each $d \le q$ is small,
 /// and a binary gcd on the long operand would shift it bit by bit.
-fn lcm_small(l: BigInt, d: &BigInt) -> BigInt {
+pub(crate) fn lcm_small(l: BigInt, d: &BigInt) -> BigInt {
     if d.is_one() {
         return l;
     }
