@@ -142,7 +142,7 @@ def test_steps_refusals():
     G = two_states()
     with pytest.raises(ValueError):
         G.steps("pencil")
-    with pytest.raises(ValueError):
-        G.steps("standard")  # not a descriptor system: the library says why
+    with pytest.raises(exactlti.UnsupportedError):
+        G.steps("standard")  # not a descriptor system: the library says why (a refusal)
     with pytest.raises(ValueError):
         G.steps("scb", method="jordan")
