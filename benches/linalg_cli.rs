@@ -60,7 +60,7 @@ fn anchor_file(n: usize, deficient: bool) -> String {
 }
 
 fn main() {
-    let dir = std::env::temp_dir().join(format!("exactlti-bench-linalg-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-bench-linalg");
     std::fs::create_dir_all(&dir).expect("temp dir");
     for n in [50, 100, 200] {
         let text = anchor_file(n, false);

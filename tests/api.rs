@@ -12,7 +12,7 @@ const FAMILY: &str = r#"{"parameters": {"c": "3"},
  "A": [[0, 1, 0], [-2, "-c", 0], [0, 0, -1]], "B": [[0], [1], [1]], "C": [[1, 0, 0]], "D": [[0]]}"#;
 
 fn temp_file(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("exactlti-api-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-api");
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join(name);
     std::fs::write(&p, text).unwrap();

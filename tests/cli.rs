@@ -151,7 +151,7 @@ fn float_commands() {
     let e = json(&["minreal", "data/sliding-masses.json", "--method", "era"]);
     assert_eq!(e["mcmillan_degree"], 8);
     assert_eq!(e["exact"], false);
-    let dir = std::env::temp_dir();
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"));
     let svg = dir.join("exactlti-test.svg");
     let csv = dir.join("exactlti-test.csv");
     let f = json(&[

@@ -79,7 +79,7 @@ fn cli_tf_from_g() {
     assert_eq!(poles, ["-1", "-2", "-3"]);
     assert_eq!(v["verified"], true);
     // a bad entry names key, row and column
-    let dir = std::env::temp_dir().join("exactlti_cli_pencil");
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti_cli_pencil");
     std::fs::create_dir_all(&dir).unwrap();
     let bad = dir.join("bad_g.json");
     std::fs::write(&bad, r#"{"G": [["1/(s+1)", "1/(s - s)"]]}"#).unwrap();
@@ -133,7 +133,7 @@ fn cli_bicycle_descriptor() {
         js(&d.c),
         js(&d.d)
     );
-    let dir = std::env::temp_dir().join("exactlti_cli_pencil");
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti_cli_pencil");
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("bicycle_descriptor_2.json");
     std::fs::write(&path, text).unwrap();

@@ -7,7 +7,8 @@ use crate::common::cli::run;
 
 /// A directory of its own per test (the tests run in parallel).
 fn dir(tag: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("exactlti-connect-{}-{tag}", std::process::id()));
+    let d =
+        std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("exactlti-connect-{tag}"));
     std::fs::create_dir_all(&d).unwrap();
     d
 }

@@ -463,7 +463,7 @@ fn root_of_displays_agree() {
 /// parts not computed (a sextic's roots).
 #[test]
 fn real_jordan_legends_show_each_number_one_way() {
-    let dir = std::env::temp_dir().join(format!("exactlti-display-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-display");
     std::fs::create_dir_all(&dir).expect("temp dir");
     let write = |name: &str, text: &str| {
         let p = dir.join(name);

@@ -318,7 +318,7 @@ fn mutation_fuzz_loader_and_every_command() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(17);
     let corpus = corpus();
-    let dir = std::env::temp_dir().join(format!("exactlti-fuzz-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-fuzz");
     std::fs::create_dir_all(&dir).unwrap();
     let mut g = Rng(seed);
     let mut failures = vec![];

@@ -124,7 +124,7 @@ fn the_seeds_examples_compile_with_pdflatex() {
         );
         return;
     }
-    let dir = std::env::temp_dir().join(format!("exactlti-latex-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-latex");
     std::fs::create_dir_all(&dir).unwrap();
     // every fragment \input into one plain amsmath document
     let mut doc =

@@ -27,7 +27,7 @@ fn src_has_no_layer_cycle_and_no_arrow_up_a_floor() {
 #[test]
 fn a_planted_arrow_up_a_floor_and_a_cycle_are_reported() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let dir = std::env::temp_dir().join(format!("exactlti-layers-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-layers");
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(dir.join("scripts")).unwrap();
     std::fs::create_dir_all(dir.join("src/field")).unwrap();

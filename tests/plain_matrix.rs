@@ -269,7 +269,7 @@ fn report_for_one_output_renders_as_the_full_report() {
 #[test]
 fn cli_fast_path_prints_what_the_general_path_prints() {
     use crate::common::cli::run;
-    let dir = std::env::temp_dir().join(format!("exactlti-plain-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-plain");
     std::fs::create_dir_all(&dir).unwrap();
     let mut g = SplitMix64(5);
     let n = 5;

@@ -30,7 +30,7 @@ fn float_freqresp_with_no_states() {
 /// B = 0: an answer (exit 0) or a one-line refusal (exit 2); never a panic or exit 1.
 #[test]
 fn every_command_on_degenerate_shapes() {
-    let dir = std::env::temp_dir().join(format!("exactlti-robust-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-robust");
     std::fs::create_dir_all(&dir).unwrap();
     let files = [
         ("e0", r#"{"E": [[0]], "A": [[1]], "B": [[1]], "C": [[1]]}"#),

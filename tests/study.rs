@@ -250,7 +250,7 @@ fn cli_critical_and_sweep() {
     assert_eq!(cvs[1]["digits"], "4.2923825363411");
     assert_eq!(j["intervals"].as_array().unwrap().len(), 4);
     assert_eq!(j["verified"], true);
-    let dir = std::env::temp_dir().join(format!("exactlti-study-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-study");
     std::fs::create_dir_all(&dir).unwrap();
     let svg = dir.join("sweep.svg");
     let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))

@@ -61,10 +61,11 @@ fn outputs(out: &std::process::Output) -> (i32, String, String) {
     )
 }
 
-/// Writes `text` to `name` in a directory of its own per test module (`tag`) and process,
-/// so that modules running in parallel never share a file.
+/// Writes `text` to `name` in a directory of its own per test module (`tag`) under cargo's
+/// `target/tmp` (so modules running in parallel never share a file, and a test run leaves
+/// nothing in the system's temporary directory: the files are overwritten by the next run).
 pub fn temp_file(tag: &str, name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("exactlti-{tag}-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("exactlti-{tag}"));
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join(name);
     std::fs::write(&p, text).unwrap();
