@@ -20,12 +20,20 @@ class ExactnessWarning(UserWarning):
 
 
 class _FloatNote:
-    """What the conversion noticed: floats read as decimals, SymPy symbols met."""
+    """What the conversion noticed: floats read as decimals, SymPy symbols met.
 
-    def __init__(self):
+    With ``tol`` (a number >= 0) a float ``x`` is read instead as the simplest rational
+    (smallest denominator) in ``[x - tol, x + tol]`` (continued fractions), and every such
+    choice is kept in ``chosen`` as ``(x, Fraction)``."""
+
+    def __init__(self, tol=None):
         self.examples = []
         self.symbols = set()
         self._objects = {}
+        if tol is not None and not (isinstance(tol, numbers.Real) and tol >= 0):
+            raise ValueError("tol: expected a number >= 0, got %r" % (tol,))
+        self.tol = None if tol is None else Fraction(tol)
+        self.chosen = []
 
     def symbol(self, sym, where):
         """Records a SymPy symbol; two different symbols with one name are refused (the
@@ -46,9 +54,40 @@ class _FloatNote:
             self.examples.append("%r -> %s" % (x, text))
 
 
+def simplest_rational(lo, hi):
+    """The rational with the smallest denominator (then the smallest absolute value) in
+    the closed interval ``[lo, hi]`` of Fractions, by the continued fraction of the
+    interval's ends (Stern-Brocot descent; the recursion depth is the length of that
+    continued fraction).
+
+    >>> from fractions import Fraction as F
+    >>> simplest_rational(F(3, 10) - F(1, 10**9), F(3, 10) + F(1, 10**9))
+    Fraction(3, 10)
+    >>> simplest_rational(F(-7, 2), F(-3, 1))
+    Fraction(-3, 1)
+    """
+    if lo > hi:
+        lo, hi = hi, lo
+    if lo <= 0 <= hi:
+        return Fraction(0)
+    if hi < 0:
+        return -simplest_rational(-hi, -lo)
+    fl = math.floor(lo)
+    if fl == lo or fl + 1 <= hi:
+        return Fraction(fl if fl == lo else fl + 1)
+    # lo and hi both lie in (fl, fl + 1): descend on the reciprocals of the fractional parts
+    return fl + 1 / simplest_rational(1 / (hi - fl), 1 / (lo - fl))
+
+
 def _float_text(x, where, note):
     if not math.isfinite(x):
         raise ValueError("%s: %r is not a finite number" % (where, x))
+    if note.tol is not None:
+        exact = Fraction(float(x))
+        r = simplest_rational(exact - note.tol, exact + note.tol)
+        if r != exact:
+            note.chosen.append((float(x), r))
+        return "%d/%d" % (r.numerator, r.denominator)
     text = repr(float(x))
     note.add(x, text)
     return text

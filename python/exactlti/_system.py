@@ -5,7 +5,7 @@ import re
 import warnings
 
 from . import _core
-from ._convert import ExactnessWarning, entry_text, _FloatNote, system_doc, system_json
+from ._convert import ExactnessWarning, entry_text, matrix_text, _FloatNote, system_doc, system_json
 from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
 
 __all__ = [
@@ -620,10 +620,10 @@ def _warn_floats(note, stacklevel):
         )
 
 
-def _from_control_tf(sys, name):
+def _from_control_tf(sys, name, tol=None):
     if not sys.isctime():
         raise ValueError("from_control: only continuous-time systems are supported")
-    note = _FloatNote()
+    note = _FloatNote(tol)
     rows = [
         [
             _ratio_text(
@@ -634,8 +634,11 @@ def _from_control_tf(sys, name):
         for i in range(sys.noutputs)
     ]
     _warn_floats(note, 4)
+    _warn_chosen(note.chosen, tol, 4)
     doc = {"name": name, "G": rows}
-    return StateSpace(_core.load_json(json.dumps(doc), name, False))
+    G = StateSpace(_core.load_json(json.dumps(doc), name, False))
+    G.rationalized = note.chosen
+    return G
 
 
 def load(path, at=None, symbolic=None):
@@ -698,26 +701,73 @@ def jordan(A, real=False, max_seconds=None, params=None):
     return r
 
 
-def from_control(sys, name="from_control"):
+def from_control(sys, name="from_control", tol=None):
     """An exact system from a python-control ``StateSpace`` or ``TransferFunction`` (read
     through :func:`tf`: its exact minimal realization). Floats are read as the shortest
-    decimals they print as (``0.1`` is 1/10), with an :class:`ExactnessWarning`."""
+    decimals they print as (``0.1`` is 1/10), with an :class:`ExactnessWarning`.
+
+    ``tol`` (an absolute tolerance >= 0): rationalise instead: each float ``x`` becomes the simplest
+    rational (smallest denominator, by continued fractions) within ``[x - tol, x + tol]``,
+    so round-off such as ``0.30000000000000004`` or ``1/3`` computed in floats comes back
+    as ``3/10`` and ``1/3``. The choices are reported: the result's ``rationalized`` is the
+    list of ``(float, Fraction)`` pairs that differ from the float's exact value (empty
+    when every float was already exact), and an :class:`ExactnessWarning` shows the first
+    three.
+
+    >>> import control, exactlti, warnings
+    >>> P = control.ss([[0, 1], [-1/3, -0.1 - 0.2]], [[0], [1]], [[1, 0]], [[0]])
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")
+    ...     G = exactlti.from_control(P, tol=1e-9)
+    >>> G.A[1, 0], G.A[1, 1], G.rationalized[0][1]
+    (Fraction(-1, 3), Fraction(-3, 10), Fraction(-1, 3))
+    """
     import control
 
     if isinstance(sys, control.TransferFunction):
-        return _from_control_tf(sys, name)
+        return _from_control_tf(sys, name, tol)
     if not isinstance(sys, control.StateSpace):
         raise TypeError("from_control expects a control.StateSpace or TransferFunction")
     if sys.dt is True:
         raise ValueError(
             "from_control: the sample time is unspecified (dt=True); give the number"
         )
-    text, _ = system_json(
-        name, {"A": sys.A, "B": sys.B, "C": sys.C, "D": sys.D}, stacklevel=3
-    )
+    if tol is None:
+        text, _ = system_json(
+            name, {"A": sys.A, "B": sys.B, "C": sys.C, "D": sys.D}, stacklevel=3
+        )
+        chosen = []
+    else:
+        note = _FloatNote(tol)
+        doc = {"name": name}
+        for key, m in (("A", sys.A), ("B", sys.B), ("C", sys.C), ("D", sys.D)):
+            rows = matrix_text(m, key, note)
+            if rows is not None:
+                doc[key] = rows
+        chosen = note.chosen
+        _warn_chosen(chosen, tol, 3)
+        text = json.dumps(doc)
     G = StateSpace(_core.load_json(text, name, False))
     dt = sys.dt if sys.dt else None
-    return G.with_signals(list(sys.input_labels), list(sys.output_labels), dt)
+    G = G.with_signals(list(sys.input_labels), list(sys.output_labels), dt)
+    G.rationalized = chosen
+    return G
+
+
+def _warn_chosen(chosen, tol, stacklevel):
+    """The :class:`ExactnessWarning` of ``from_control(..., tol=)``: the rationals chosen."""
+    if chosen:
+        warnings.warn(
+            "floats rationalised within tol=%g (%d entries; %s); the result's "
+            "`rationalized` lists them all"
+            % (
+                float(tol),
+                len(chosen),
+                ", ".join("%r -> %s" % (x, r) for x, r in chosen[:3]),
+            ),
+            ExactnessWarning,
+            stacklevel=stacklevel + 1,
+        )
 
 
 # -- results ------------------------------------------------------------------------
