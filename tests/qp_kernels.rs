@@ -237,3 +237,30 @@ fn mass_chains_transfer_functions_and_minimal_orders() {
         }
     }
 }
+
+/// `generic_rank_at_least` over Q(p): `true` only when the generic rank (the rank the
+/// recording kernel proves) reaches `r`, and it records no condition; rank-deficient
+/// products (rank <= l) never pass at r = l + 1.
+#[test]
+fn generic_rank_at_least_is_the_rank_and_records_nothing() {
+    let k = RatFuncField::new(&["a", "b", "c"]).unwrap();
+    let mut rng = SplitMix64(20261126);
+    for case in 0..8 {
+        let (n, l) = (4 + case % 2, 1 + case % 3);
+        let low = &random_matrix(&k, &mut rng, n, l) * &random_matrix(&k, &mut rng, l, n);
+        let full = random_matrix(&k, &mut rng, n, n);
+        for a in [low, full] {
+            let k2 = k.fresh();
+            let a = a.map(&k2, |x| x.clone());
+            let probe = a.generic_rank_at_least(a.nrows());
+            let fast: Vec<bool> = (0..=n + 1).map(|r| a.generic_rank_at_least(r)).collect();
+            assert!(k2.conditions().unwrap().is_empty(), "{a}");
+            let rank = a.rank();
+            assert_eq!(probe, rank == n, "{a}");
+            for (r, &f) in fast.iter().enumerate() {
+                // true proves rank >= r; at this point and prime it is never short here
+                assert_eq!(f, r <= rank, "r = {r}, rank = {rank}: {a}");
+            }
+        }
+    }
+}

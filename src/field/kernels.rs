@@ -61,6 +61,13 @@ pub trait KernelTable<K: Field>: Sync {
         let _ = (k, m, n, a);
         None
     }
+    /// A proved lower bound of $\operatorname{rank} A$ that records nothing (no conditions):
+    /// the rank of an image (at a point, modulo a prime) in which every nonzero minor is the
+    /// image of a nonzero minor of $A$. `None`: no cheap bound.
+    fn rank_lower_bound(&self, k: &K, m: usize, n: usize, a: &[K::Elem]) -> Option<usize> {
+        let _ = (k, m, n, a);
+        None
+    }
     /// The canonical null-space basis, one vector per non-pivot column of the RREF.
     fn nullspace(&self, k: &K, m: usize, n: usize, a: &[K::Elem]) -> Option<Vec<Vec<K::Elem>>> {
         let _ = (k, m, n, a);

@@ -107,6 +107,26 @@ impl<K: Field> Matrix<K> {
                 .is_some_and(|rp| rp >= r)
         })
     }
+    /// Is the generic rank at least `r`, proved cheaply and recording nothing? Over
+    /// $\mathbb{Q}$ as [`Matrix::rank_at_least_mod_p`]; over a field with a cheap bound
+    /// ([`crate::field::KernelTable::rank_lower_bound`]; $\mathbb{Q}(p)$: the rank at a
+    /// point modulo a prime) `true` proves the rank for generic parameter values but says
+    /// nothing of where it drops, so only a result that does not depend on those values
+    /// (a diagnostic) may use it. `false` decides nothing.
+    pub fn generic_rank_at_least(&self, r: usize) -> bool {
+        if self.rank_at_least_mod_p(r) {
+            return true;
+        }
+        if r > self.nrows.min(self.ncols) {
+            return false;
+        }
+        match self.field.kernels() {
+            crate::field::Kernels::Table(t) => t
+                .rank_lower_bound(&self.field, self.nrows, self.ncols, &self.data)
+                .is_some_and(|rp| rp >= r),
+            _ => false,
+        }
+    }
     /// Canonical basis of the right null space $\{v : A v = 0\}$, as the columns of an
     /// `ncols x nullity` matrix.
     pub fn nullspace(&self) -> Matrix<K> {

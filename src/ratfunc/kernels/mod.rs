@@ -200,6 +200,15 @@ impl KernelTable<RatFuncField> for QpKernels {
         }
         rank_qp(k, m, n, a)
     }
+    fn rank_lower_bound(
+        &self,
+        k: &RatFuncField,
+        m: usize,
+        n: usize,
+        a: &[RatFunc],
+    ) -> Option<usize> {
+        (k.nvars() > 0).then(|| rref::rank_at_point(k, m, n, a))
+    }
     fn pivots(&self, k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Vec<usize>> {
         if m * n <= TINY || k.nvars() == 0 {
             return None;

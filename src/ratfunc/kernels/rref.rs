@@ -207,6 +207,17 @@ pub fn pivots_qp(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<
     (ok && record_minor(k, &b, n, &rows, &piv, &ds)).then_some(piv)
 }
 
+/// The rank of $A$ at a random point modulo a word prime, after clearing each row's
+/// denominator: a lower bound of the generic rank over $\mathbb{Q}(p)$ (a minor that is
+/// nonzero there is a nonzero polynomial), recording no condition.
+pub fn rank_at_point(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> usize {
+    let (b, _) = clear_rows(k.nvars(), m, n, a);
+    let pr = profile_prime(0);
+    let x = point(&pr, k.nvars(), 0xa11);
+    let mut at: Vec<u64> = b.iter().map(|f| eval_mod_p(&pr, f, &x)).collect();
+    profile_mod_p(&pr, m, n, &mut at).0.len()
+}
+
 /// $\operatorname{rank} A$ over $\mathbb{Q}(p)$ (the conditions as for [`rref_qp`]).
 pub fn rank_qp(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<usize> {
     if let Some(blocks) = split(k, m, n, a) {
