@@ -75,7 +75,18 @@ fn entry<K: Field>(k: &K, x: &K::Elem) -> String {
     }
 }
 
-/// A polynomial in `var` with the field's LaTeX coefficients (compound ones in parentheses).
+/// A polynomial in `var` with the field's LaTeX coefficients (compound ones in parentheses,
+/// a coefficient of $\pm 1$ not written).
+///
+/// ```
+/// use exactlti::field::{Field, Q};
+/// use exactlti::poly::Poly;
+/// use exactlti::report::steps_latex::poly_latex;
+/// let c = |n: i64| Q.from_i64(n);
+/// // -s^3 + s^2 - 2 s - 1
+/// let p = Poly::new(Q, vec![c(-1), c(-2), c(1), c(-1)]);
+/// assert_eq!(poly_latex(&p, "s"), "-s^{3} + s^{2} - 2\\,s - 1");
+/// ```
 pub fn poly_latex<K: Field>(p: &Poly<K>, var: &str) -> String {
     let k = p.field();
     let mut out = String::new();
@@ -89,7 +100,8 @@ pub fn poly_latex<K: Field>(p: &Poly<K>, var: &str) -> String {
             t = t[1..].to_string();
         }
         let compound = t.contains(['+', '-']) || t.contains(' ');
-        let coef = if i > 0 && k.is_one(c) {
+        // a unit coefficient (+1 or -1, its sign taken off above) is not written
+        let coef = if i > 0 && (k.is_one(c) || (neg && t == "1")) {
             String::new()
         } else if i > 0 && compound {
             format!("\\left({t}\\right)")
