@@ -245,21 +245,9 @@ impl SystemVisitor for Finish<'_> {
             r = r.obj("minimal", m.report());
         }
         if let Some(out) = &self.opts.out {
-            if out
-                .extension()
-                .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
-            {
-                return Err(Failure::input(format!(
-                    "{}: --out writes JSON; name the file .json",
-                    out.display()
-                )));
-            }
             let written = min.as_ref().map_or(sys, |m| &m.system);
             let name = format!("connect {}", self.name);
-            let text =
-                crate::io::write::system_file_text(Some(&name), written, &symbols, &f.signals);
-            std::fs::write(out, text)
-                .map_err(|err| Failure::input(format!("{}: cannot write: {err}", out.display())))?;
+            super::interconnect::write_system_file(out, &name, written, &symbols, &f.signals)?;
             r = r.str("written", out.display().to_string());
         }
         let ok = min.as_ref().is_none_or(|m| m.verified);

@@ -306,27 +306,38 @@ impl SystemsVisitor for Connect<'_> {
             report = report.with("conditions", crate::report::str_list(conds));
         }
         if let Some(out) = &self.opts.out {
-            if out
-                .extension()
-                .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
-            {
-                return Err(Failure::input(format!(
-                    "{}: --out writes JSON; name the file .json",
-                    out.display()
-                )));
-            }
             let written = min.as_ref().map_or(&sys, |m| &m.system);
             let vars = symbols.map(|s| s.0).unwrap_or_default();
             let name = format!("{} of {}", self.op.name(), self.names.join(", "));
-            let text =
-                crate::io::write::system_file_text(Some(&name), written, &vars, &self.signals);
-            std::fs::write(out, text)
-                .map_err(|err| Failure::input(format!("{}: cannot write: {err}", out.display())))?;
+            write_system_file(out, &name, written, &vars, &self.signals)?;
             report = report.str("written", out.display().to_string());
         }
         let ok = verified && min.as_ref().is_none_or(|m| m.verified);
         Ok(Outcome::new(report, ok))
     }
+}
+
+/// Writes `sys` as a JSON system file to `out` (`--out` of the interconnection commands);
+/// a `.toml` name is an input error (only JSON is written).
+pub(crate) fn write_system_file<K: Field>(
+    out: &Path,
+    name: &str,
+    sys: &crate::system::StateSpace<K>,
+    vars: &[String],
+    signals: &crate::io::keys::SignalNames,
+) -> Result<(), Failure> {
+    if out
+        .extension()
+        .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
+    {
+        return Err(Failure::input(format!(
+            "{}: --out writes JSON; name the file .json",
+            out.display()
+        )));
+    }
+    let text = crate::io::write::system_file_text(Some(name), sys, vars, signals);
+    std::fs::write(out, text)
+        .map_err(|err| Failure::input(format!("{}: cannot write: {err}", out.display())))
 }
 
 /// The interconnection of `systems` (in the order of the command's files) as a system of
