@@ -220,7 +220,7 @@ fn freqresp_on_the_pencil_matches_exact_complex_evaluation() {
             .map(|&(n, d)| n as f64 / d as f64 / (2.0 * std::f64::consts::PI))
             .collect();
         let [e, a, b, c, d] = [&s.e, &s.a, &s.b, &s.c, &s.d].map(to_c);
-        let Ok(fr) = exactlti::float::freqresp_descriptor(&e, &a, &b, &c, &d, &hz) else {
+        let Ok(fr) = exactlti::float::freqresp_descriptor(&e, [&a, &b, &c, &d], &hz) else {
             continue;
         };
         for (w, g) in ws.iter().zip(&fr) {

@@ -3,7 +3,7 @@
 use crate::common::cli::{self, run};
 use exactlti::algebraic::{factor_over_quadratic, norm_over_q};
 use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
-use exactlti::float::{Tol, Truth, era_system, freqresp_complex, markov_parameters, to_cmatrix};
+use exactlti::float::{Tol, Truth, era_system, freqresp, markov_parameters, to_cmatrix};
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;
 use exactlti::realization::realize_transfer;
@@ -206,7 +206,7 @@ fn complex_freqresp_matches_the_exact_transfer_function() {
     let g = s.transfer_matrix().unwrap();
     let [a, b, c, d] = [&s.a, &s.b, &s.c, &s.d].map(|m| to_cmatrix(m).unwrap());
     let freqs = [-2.0, -0.3, -0.05, 0.05, 0.3, 2.0];
-    let resp = freqresp_complex(&a, &b, &c, &d, &freqs).unwrap();
+    let resp = freqresp([&a, &b, &c, &d], &freqs, None).unwrap();
     let f = &g.entries[0][0];
     for (hz, r) in freqs.iter().zip(&resp) {
         let jw = Complex::new(0.0, 2.0 * std::f64::consts::PI * hz);
@@ -365,7 +365,7 @@ mod cross_check {
             let [fa, fb, fc, fd] = [&s.a, &s.b, &s.c, &s.d].map(|x| to_cmatrix(x).unwrap());
             let freqs = [-1.7, -0.37, 0.013, 0.29, 1.3];
             // a frequency within reach of a pole is singular for the float solve: skip it
-            let Ok(resp) = freqresp_complex(&fa, &fb, &fc, &fd, &freqs) else { return Ok(()) };
+            let Ok(resp) = freqresp([&fa, &fb, &fc, &fd], &freqs, None) else { return Ok(()) };
             for (hz, r) in freqs.iter().zip(&resp) {
                 let jw = Complex::new(0.0, 2.0 * std::f64::consts::PI * hz);
                 for i in 0..p {

@@ -385,8 +385,8 @@ fn minreal_properties() {
         assert_eq!(is_controllable(&a, &b, &tol).unwrap(), Truth::False);
         // Frequency response preserved.
         let f = [0.0, 0.1, 1.3];
-        let g0 = freqresp(&a, &b, &c, &d, &f);
-        let g1 = freqresp(&r.a, &r.b, &r.c, &r.d, &f);
+        let g0 = freqresp([&a, &b, &c, &d], &f, None);
+        let g1 = freqresp([&r.a, &r.b, &r.c, &r.d], &f, None);
         if let (Ok(g0), Ok(g1)) = (g0, g1) {
             for (x, y) in g0.iter().zip(&g1) {
                 assert!((x - y).norm() <= 1e-7 * (1.0 + x.norm()), "n={n}");
@@ -591,7 +591,7 @@ fn freqresp_examples() {
     // G(s) = 1/(s+1): G(j 2 pi f).
     let one = mat(1, 1, &[1.0]);
     let f = [0.0, 1.0 / (2.0 * std::f64::consts::PI), 10.0];
-    let g = freqresp(&(-&one), &one, &one, &mat(1, 1, &[0.0]), &f).unwrap();
+    let g = freqresp([&(-&one), &one, &one, &mat(1, 1, &[0.0])], &f, None).unwrap();
     assert!(close(g[0][(0, 0)], 1.0, 0.0, 1e-15));
     assert!(close(g[1][(0, 0)], 0.5, -0.5, 1e-15), "{}", g[1]);
     let w = 20.0 * std::f64::consts::PI;
@@ -599,17 +599,17 @@ fn freqresp_examples() {
     assert!((g[2][(0, 0)] - want).norm() < 1e-15);
     // Empty frequency list; singular at an eigenvalue on the axis; bad frequency.
     assert!(
-        freqresp(&(-&one), &one, &one, &mat(1, 1, &[0.0]), &[])
+        freqresp([&(-&one), &one, &one, &mat(1, 1, &[0.0])], &[], None)
             .unwrap()
             .is_empty()
     );
     let z = mat(1, 1, &[0.0]);
     assert!(matches!(
-        freqresp(&z, &one, &one, &z, &[0.0]),
+        freqresp([&z, &one, &one, &z], &[0.0], None),
         Err(Error::Singular)
     ));
     assert!(matches!(
-        freqresp(&(-&one), &one, &one, &z, &[f64::NAN]),
+        freqresp([&(-&one), &one, &one, &z], &[f64::NAN], None),
         Err(Error::Invalid(_))
     ));
 }
@@ -625,7 +625,7 @@ fn freqresp_properties() {
         let c = g.matrix(2, n, 1.0);
         let d = g.matrix(2, 2, 1.0);
         let f = 1e3;
-        let gr = freqresp(&a, &b, &c, &d, &[f]).unwrap();
+        let gr = freqresp([&a, &b, &c, &d], &[f], None).unwrap();
         let h = markov_parameters(&a, &b, &c, &d, 8).unwrap();
         let s = Complex::new(0.0, 2.0 * std::f64::consts::PI * f);
         let mut series = h[0].map(|x| Complex::new(x, 0.0));
@@ -634,8 +634,13 @@ fn freqresp_properties() {
         }
         assert!((&gr[0] - series).norm() < 1e-12, "n={n}");
         let (t, ti) = random_similarity(&mut g, n);
-        let g2 = freqresp(&(&ti * &a * &t), &(&ti * &b), &(&c * &t), &d, &[0.3, 2.0]).unwrap();
-        let g1 = freqresp(&a, &b, &c, &d, &[0.3, 2.0]).unwrap();
+        let g2 = freqresp(
+            [&(&ti * &a * &t), &(&ti * &b), &(&c * &t), &d],
+            &[0.3, 2.0],
+            None,
+        )
+        .unwrap();
+        let g1 = freqresp([&a, &b, &c, &d], &[0.3, 2.0], None).unwrap();
         for (x, y) in g1.iter().zip(&g2) {
             assert!((x - y).norm() < 1e-9 * (1.0 + x.norm()));
         }

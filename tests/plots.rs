@@ -147,8 +147,10 @@ fn closed_form_agrees_with_the_matrix_exponential() {
     let f = |m: &Matrix<Q>| exactlti::float::to_dmatrix(m).expect("finite");
     let (a, b, c, d) = (f(&ss.a), f(&ss.b), f(&ss.c), f(&ss.d));
     let ts = time_grid(12.0, 400);
-    let st = exactlti::float::step_response(&a, &b, &c, &d, &ts).expect("step");
-    let im = exactlti::float::impulse_response(&a, &b, &c, &d, &ts).expect("impulse");
+    let st = exactlti::float::time_response(exactlti::float::Input::Step, [&a, &b, &c, &d], &ts)
+        .expect("step");
+    let im = exactlti::float::time_response(exactlti::float::Input::Impulse, [&a, &b, &c, &d], &ts)
+        .expect("impulse");
     for (k, &t) in ts.iter().enumerate() {
         let (se, ie) = (cf.step_at(t), cf.impulse_at(t));
         for i in 0..2 {

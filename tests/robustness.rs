@@ -11,16 +11,19 @@ fn float_freqresp_with_no_states() {
     let b = DMatrix::<f64>::zeros(0, 1);
     let c = DMatrix::<f64>::zeros(1, 0);
     let d = DMatrix::from_element(1, 1, 2.0);
-    let g = float::freqresp(&a, &b, &c, &d, &[0.1, 1.0]).unwrap();
+    let g = float::freqresp([&a, &b, &c, &d], &[0.1, 1.0], None).unwrap();
     assert_eq!(g.len(), 2);
     assert_eq!(g[1][(0, 0)].re, 2.0);
     // no inputs, no outputs
     let g = float::freqresp(
-        &DMatrix::from_element(1, 1, -1.0),
-        &DMatrix::zeros(1, 0),
-        &DMatrix::zeros(0, 1),
-        &DMatrix::zeros(0, 0),
+        [
+            &DMatrix::from_element(1, 1, -1.0),
+            &DMatrix::zeros(1, 0),
+            &DMatrix::zeros(0, 1),
+            &DMatrix::zeros(0, 0),
+        ],
         &[1.0],
+        None,
     )
     .unwrap();
     assert_eq!(g[0].shape(), (0, 0));

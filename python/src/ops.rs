@@ -203,18 +203,11 @@ pub(crate) fn freqresp_typed<K: Field>(
         Some(ds) => {
             let z = |m| to_dmatrix(m).map(|m| m.map(|x| nalgebra::Complex::new(x, 0.0)));
             let [e, a, b, c, d] = [&ds.e, &ds.a, &ds.b, &ds.c, &ds.d].map(z);
-            exactlti::float::freqresp_descriptor(&e?, &a?, &b?, &c?, &d?, &hz)?
+            exactlti::float::freqresp_descriptor(&e?, [&a?, &b?, &c?, &d?], &hz)?
         }
         None => {
             let [a, b, c, d] = [&s.a, &s.b, &s.c, &s.d].map(to_dmatrix);
-            match dt {
-                None => exactlti::float::freqresp(&a?, &b?, &c?, &d?, &hz)?,
-                Some(dt) => {
-                    let z = |m: nalgebra::DMatrix<f64>| m.map(|x| nalgebra::Complex::new(x, 0.0));
-                    let (a, b, c, d) = (z(a?), z(b?), z(c?), z(d?));
-                    exactlti::float::freqresp_sampled(&a, &b, &c, &d, &hz, dt)?
-                }
-            }
+            exactlti::float::freqresp([&a?, &b?, &c?, &d?], &hz, dt)?
         }
     };
     Ok(Out::List(

@@ -333,24 +333,7 @@ impl SystemVisitor for FileCommand<'_> {
                 let domain = crate::system::discrete::stability::Domain::of(f.signals.dt.as_ref());
                 Ok(Outcome::plain(z.report_in(domain)))
             }
-            Command::Freqresp {
-                from,
-                to,
-                points,
-                svg,
-                csv,
-                ..
-            } => {
-                let (_, ins, outs) = super::plots::names(f, path, s.ninputs(), s.noutputs());
-                let names = (ins.as_slice(), outs.as_slice());
-                let (from, to) = super::plots::bode_range(t, path, *from, *to)?;
-                let r =
-                    super::float_cmds::freqresp(t, path, names, from, to, *points, csv.as_deref())?;
-                if let Some(out) = svg {
-                    super::plots::bode_file(f, t, path, (from, to, *points), out)?;
-                }
-                Ok(Outcome::plain(r))
-            }
+            Command::Freqresp { .. } => super::float_cmds::freqresp_command(self.cmd, f, t, path),
             Command::Pzmap { svg, .. } => {
                 super::plots::pzmap(f, t, path, svg.as_deref()).map(Outcome::plain)
             }

@@ -294,39 +294,7 @@ pub fn on_sampled<K: Field + 'static>(
             let impulse = matches!(cmd, C::Impulse { .. });
             Some(sequence(f, t, path, dt, impulse, opts))
         }
-        C::Freqresp {
-            from,
-            to,
-            points,
-            svg,
-            csv,
-            ..
-        } => {
-            let nyquist = 0.5 / rational_to_f64(dt);
-            let (lo, hi) = (from.unwrap_or(nyquist / 1000.0), to.unwrap_or(nyquist));
-            let (_, ins, outs) = super::plots::names(f, path, t.ss.ninputs(), t.ss.noutputs());
-            let r = super::float_cmds::freqresp_dt(
-                t,
-                path,
-                (&ins, &outs),
-                (lo, hi, *points),
-                csv.as_deref(),
-                Some(rational_to_f64(dt)),
-            );
-            let r = r.and_then(|r| match svg {
-                Some(out) => {
-                    super::discrete_plots::bode_file_dt(f, t, path, dt, (lo, hi, *points), out)?;
-                    Ok(r.str("svg", out.display().to_string()))
-                }
-                None => Ok(r),
-            });
-            Some(r.map(|r| {
-                Outcome::plain(r.str("dt", fmt_rational(dt)).str(
-                    "note",
-                    "G(e^(j 2 pi f T)), up to the Nyquist frequency 1/(2 T) Hz",
-                ))
-            }))
-        }
+        C::Freqresp { .. } => Some(super::float_cmds::freqresp_command(cmd, f, t, path)),
         C::Analyze { .. } => refuse("analyze"),
         C::Modes { .. } => refuse("modes"),
         C::Mnf { .. } => refuse("mnf"),

@@ -60,24 +60,15 @@ pub(crate) fn float_response_dt<K: Field>(
     freqs: &[f64],
     dt: Option<f64>,
 ) -> Result<Vec<DMatrix<Complex<f64>>>, Failure> {
-    if let Some(dt) = dt {
-        let resp = match sys {
-            FloatAbcd::Real(m) => {
-                let [a, b, c, d] = m.clone().map(|x| x.map(|v| Complex::new(v, 0.0)));
-                float::freqresp_sampled(&a, &b, &c, &d, freqs, dt)
-            }
-            FloatAbcd::Complex([a, b, c, d]) => float::freqresp_sampled(a, b, c, d, freqs, dt),
-        };
-        return resp.map_err(|e| fail(path, e));
-    }
+    // a sampled system on the unit circle; a continuous descriptor system on its pencil
     let resp = match (&t.descriptor, sys) {
-        (Some(ds), _) => {
+        (Some(ds), _) if dt.is_none() => {
             let conv = |m| to_cmatrix(m).map_err(|e| fail(path, e));
             let [e, a, b, c, d] = [&ds.e, &ds.a, &ds.b, &ds.c, &ds.d].map(conv);
-            float::freqresp_descriptor(&e?, &a?, &b?, &c?, &d?, freqs)
+            float::freqresp_descriptor(&e?, [&a?, &b?, &c?, &d?], freqs)
         }
-        (None, FloatAbcd::Real([a, b, c, d])) => float::freqresp(a, b, c, d, freqs),
-        (None, FloatAbcd::Complex([a, b, c, d])) => float::freqresp_complex(a, b, c, d, freqs),
+        (_, FloatAbcd::Real([a, b, c, d])) => float::freqresp([a, b, c, d], freqs, dt),
+        (_, FloatAbcd::Complex([a, b, c, d])) => float::freqresp([a, b, c, d], freqs, dt),
     };
     resp.map_err(|e| fail(path, e))
 }
@@ -102,22 +93,62 @@ fn dm_report<T: FloatScalar>(r: Report, name: &str, m: &DMatrix<T>) -> Report {
 /// 50 MB of JSON, a few hundred MB while the report is built.
 pub const MAX_RESPONSE_VALUES: usize = 1_000_000;
 
-/// Frequency response (float, from the exact system's embedding); `names`: the input and
-/// output names of the channels (`u1`, `y1`, ... when the file gives none).
-pub fn freqresp<K: Field>(
+/// `freqresp FILE`: on $j\omega$ for a continuous-time system (the range frames its poles and
+/// zeros unless `--from`/`--to` are given), on the unit circle up to the Nyquist frequency
+/// $1/(2T)$ for a sampled one (`dt` in the file); `--csv` and `--svg` as asked. One path for
+/// both: only the range, the evaluation point and the plot differ.
+pub(crate) fn freqresp_command<K: Field>(
+    cmd: &super::Command,
+    f: &crate::io::SystemFile,
     t: &Typed<K>,
     path: &Path,
-    names: (&[String], &[String]),
-    from: f64,
-    to: f64,
-    points: usize,
-    csv: Option<&Path>,
-) -> Result<Report, Failure> {
-    freqresp_dt(t, path, names, (from, to, points), csv, None)
+) -> Result<super::Outcome, Failure> {
+    let super::Command::Freqresp {
+        from,
+        to,
+        points,
+        svg,
+        csv,
+        ..
+    } = cmd
+    else {
+        return Err(Failure::verification("internal: not freqresp".into()));
+    };
+    let (_, ins, outs) = super::plots::names(f, path, t.ss.ninputs(), t.ss.noutputs());
+    let names = (ins.as_slice(), outs.as_slice());
+    let csv = csv.as_deref();
+    let Some(dt) = f.signals.dt.as_ref() else {
+        let (from, to) = super::plots::bode_range(t, path, *from, *to)?;
+        let r = freqresp(t, path, names, (from, to, *points), csv, None)?;
+        if let Some(out) = svg {
+            super::plots::bode_file(f, t, path, (from, to, *points), out)?;
+        }
+        return Ok(super::Outcome::plain(r));
+    };
+    let seconds = crate::field::rational_to_f64(dt);
+    let nyquist = 0.5 / seconds;
+    let range = (
+        from.unwrap_or(nyquist / 1000.0),
+        to.unwrap_or(nyquist),
+        *points,
+    );
+    let mut r = freqresp(t, path, names, range, csv, Some(seconds))?;
+    if let Some(out) = svg {
+        super::discrete_plots::bode_file_dt(f, t, path, dt, range, out)?;
+        r = r.str("svg", out.display().to_string());
+    }
+    Ok(super::Outcome::plain(
+        r.str("dt", crate::field::fmt_rational(dt)).str(
+            "note",
+            "G(e^(j 2 pi f T)), up to the Nyquist frequency 1/(2 T) Hz",
+        ),
+    ))
 }
 
-/// [`freqresp`] of a discrete-time system with sample time `dt` (`None`: continuous).
-pub fn freqresp_dt<K: Field>(
+/// The frequency response (float, from the exact system's embedding) at `points` frequencies
+/// from `from` to `to` Hz; `names`: the input and output names of the channels (`u1`, `y1`,
+/// ... when the file gives none); with a sample time `dt` (seconds) on the unit circle.
+pub fn freqresp<K: Field>(
     t: &Typed<K>,
     path: &Path,
     names: (&[String], &[String]),

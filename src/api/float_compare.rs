@@ -382,7 +382,7 @@ fn response_item<K: Field + 'static>(
         let g = &(&(&s.c * &inv) * &s.b) + &s.d;
         let omega = crate::field::rational_to_f64(&r) * root;
         let hz = omega / (2.0 * std::f64::consts::PI);
-        let Ok(fr) = float::freqresp_complex(a, b, c, d, &[hz]) else {
+        let Ok(fr) = float::freqresp([a, b, c, d], &[hz], None) else {
             continue;
         };
         for i in 0..g.nrows() {

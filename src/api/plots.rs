@@ -70,11 +70,12 @@ fn float_time<T: FloatScalar>(
     impulse: bool,
     times: &[f64],
 ) -> crate::Result<Vec<Vec<Vec<T>>>> {
-    let r = if impulse {
-        float::impulse_response(a, b, c, d, times)?
+    let input = if impulse {
+        float::Input::Impulse
     } else {
-        float::step_response(a, b, c, d, times)?
+        float::Input::Step
     };
+    let r = float::time_response(input, [a, b, c, d], times)?;
     Ok(r.iter()
         .map(|m| {
             (0..m.nrows())

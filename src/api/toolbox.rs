@@ -183,7 +183,7 @@ fn stepinfo<K: Field + 'static>(
     // finer than `step`'s plot grid: the characteristics are read off the samples
     let n = points.unwrap_or_else(|| default_points(t_end, &poles).max(STEPINFO_POINTS));
     let times = time_grid(t_end, n);
-    let resp = float::step_response(&a, &b, &c, &d, &times).map_err(e)?;
+    let resp = float::time_response(float::Input::Step, [&a, &b, &c, &d], &times).map_err(e)?;
     let dc = crate::system::dcgain::dc_gain(s).map_err(e)?;
     let g = s.transfer_matrix().map_err(e)?;
     let (_, ins, outs) = super::plots::names(f, path, m, p);

@@ -48,14 +48,14 @@ pub use era::{
     FloatRealization, HANKEL_ENTRY_LIMIT, HANKEL_WORK_LIMIT, SystemEra, era, era_system,
     markov_parameters,
 };
-pub use freqresp::{freqresp, freqresp_complex, freqresp_descriptor, freqresp_sampled};
+pub use freqresp::{freqresp, freqresp_descriptor};
 pub use jordan_guess::{Cluster, FloatJordan, jordan_guess};
 pub use minreal::{FloatMinreal, minreal};
 pub use pencil_eig::pencil_finite_eigenvalues;
 pub use staircase::{
     FloatRank, controllability_rank, is_controllable, is_observable, observability_rank,
 };
-pub use time_response::{impulse_response, step_response};
+pub use time_response::{Input, time_response};
 pub use zeros::{FloatZeros, invariant_zeros, invariant_zeros_report};
 
 /// A float answer to a yes/no question: `Unknown` when the numbers do not decide it.

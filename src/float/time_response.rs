@@ -8,8 +8,8 @@
 //!
 //! | entry point | returns |
 //! |---|---|
-//! | [`step_response`] | $s(t_k)$, one $p \times m$ matrix per time |
-//! | [`impulse_response`] | $h(t_k) = C e^{A t_k} B$ |
+//! | [`time_response`] with [`Input::Step`] | $s(t_k)$, one $p \times m$ matrix per time |
+//! | [`time_response`] with [`Input::Impulse`] | $h(t_k) = C e^{A t_k} B$ |
 //!
 //! Both are written once for real and complex matrices ([`FloatScalar`]): a system with
 //! complex coefficients (over $\mathbb{Q}(i)$) has a complex response, as in python-control
@@ -70,55 +70,55 @@ fn step_of(times: &[f64]) -> Result<f64> {
     }
 }
 
-/// The step response (every input a unit step at $t = 0$) at the even grid `times`
-/// (starting at 0).
+/// The input of [`time_response`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Input {
+    /// Every input a unit step at $t = 0$: the step response $s(t_k)$.
+    Step,
+    /// Every input a unit impulse at $t = 0$: $h(t_k) = C e^{A t_k} B$ (the $D\,\delta(t)$
+    /// part left out).
+    Impulse,
+}
+
+/// The step or impulse response of $(A, B, C, D)$ at the even grid `times` (starting at 0),
+/// one $p \times m$ matrix per time, by one recursion
+/// $x_{k+1} = \Phi_{11} x_k + \Phi_{12} u$, $y_k = C x_k + D u$: the step has $x_0 = 0$,
+/// $u = 1$; the impulse $x_0 = B$, $u = 0$.
 ///
 /// # Errors
 /// Shape errors as [`super::freqresp`]; a grid that is not even from 0; overflow.
-pub fn step_response<T: FloatScalar>(
-    a: &DMatrix<T>,
-    b: &DMatrix<T>,
-    c: &DMatrix<T>,
-    d: &DMatrix<T>,
+pub fn time_response<T: FloatScalar>(
+    input: Input,
+    [a, b, c, d]: [&DMatrix<T>; 4],
     times: &[f64],
 ) -> Result<Vec<DMatrix<T>>> {
-    let (n, m, _) = check_system("step response", a, b, c, d)?;
+    let (what, step) = match input {
+        Input::Step => ("step response", true),
+        Input::Impulse => ("impulse response", false),
+    };
+    let (n, m, _) = check_system(what, a, b, c, d)?;
     let dt = step_of(times)?;
+    let feed = if step {
+        d.clone()
+    } else {
+        DMatrix::zeros(d.nrows(), m)
+    };
     if n == 0 {
-        return Ok(vec![d.clone(); times.len()]);
+        return Ok(vec![feed; times.len()]);
     }
     let (p11, p12) = propagators(a, b, dt)?;
-    let mut x = DMatrix::zeros(n, m);
+    let mut x = if step {
+        DMatrix::zeros(n, m)
+    } else {
+        b.clone()
+    };
     let mut out = Vec::with_capacity(times.len());
     for _ in times {
-        out.push(c * &x + d);
-        x = &p11 * &x + &p12;
-    }
-    Ok(out)
-}
-
-/// The impulse response $C e^{A t} B$ at the even grid `times` (starting at 0).
-///
-/// # Errors
-/// As [`step_response`].
-pub fn impulse_response<T: FloatScalar>(
-    a: &DMatrix<T>,
-    b: &DMatrix<T>,
-    c: &DMatrix<T>,
-    d: &DMatrix<T>,
-    times: &[f64],
-) -> Result<Vec<DMatrix<T>>> {
-    let (n, m, _) = check_system("impulse response", a, b, c, d)?;
-    let dt = step_of(times)?;
-    if n == 0 {
-        return Ok(vec![DMatrix::zeros(c.nrows(), m); times.len()]);
-    }
-    let (p11, _) = propagators(a, b, dt)?;
-    let mut x = b.clone();
-    let mut out = Vec::with_capacity(times.len());
-    for _ in times {
-        out.push(c * &x);
+        out.push(c * &x + &feed);
         x = &p11 * &x;
+        if step {
+            x += &p12;
+        }
     }
     Ok(out)
 }
@@ -134,8 +134,8 @@ mod tests {
         let one = DMatrix::from_element(1, 1, 1.0);
         let z = DMatrix::zeros(1, 1);
         let ts: Vec<f64> = (0..11).map(|k| k as f64 * 0.3).collect();
-        let s = step_response(&a, &one, &one, &z, &ts).unwrap();
-        let h = impulse_response(&a, &one, &one, &z, &ts).unwrap();
+        let s = time_response(Input::Step, [&a, &one, &one, &z], &ts).unwrap();
+        let h = time_response(Input::Impulse, [&a, &one, &one, &z], &ts).unwrap();
         for (k, t) in ts.iter().enumerate() {
             assert!((s[k][(0, 0)] - 0.5 * (1.0 - (-2.0 * t).exp())).abs() < 1e-12);
             assert!((h[k][(0, 0)] - (-2.0 * t).exp()).abs() < 1e-12);
@@ -151,8 +151,8 @@ mod tests {
         let one = DMatrix::from_element(1, 1, Complex::new(1.0, 0.0));
         let z = DMatrix::from_element(1, 1, Complex::new(0.0, 0.0));
         let ts: Vec<f64> = (0..21).map(|k| k as f64 * 0.25).collect();
-        let s = step_response(&a, &one, &one, &z, &ts).unwrap();
-        let h = impulse_response(&a, &one, &one, &z, &ts).unwrap();
+        let s = time_response(Input::Step, [&a, &one, &one, &z], &ts).unwrap();
+        let h = time_response(Input::Impulse, [&a, &one, &one, &z], &ts).unwrap();
         for (k, t) in ts.iter().enumerate() {
             let e = (lam * t).exp();
             assert!((h[k][(0, 0)] - e).norm() < 1e-12);

@@ -30,6 +30,24 @@ fn left_inverse<K: Field>(l: &Matrix<K>) -> Result<Matrix<K>> {
     Ok(out)
 }
 
+/// $[I_n \mid -c]$, $c$ the coefficients $c_0..c_{n-1}$ of $\det(tI - A)$: the coordinates of
+/// $v, Av, \dots, A^n v$ in the basis $v, \dots, A^{n-1} v$ of a cyclic vector $v$ (by
+/// Cayley–Hamilton $A^n v = -\sum_k c_k A^k v$). Shared by Ho–Kalman's single-channel
+/// factorization and Rosenbrock's Krylov staircase.
+pub(super) fn cayley_hamilton_coords<K: Field>(a: &Matrix<K>) -> Result<Matrix<K>> {
+    let (fld, n) = (a.field().clone(), a.nrows());
+    let cp = a.charpoly()?;
+    Ok(Matrix::from_fn(fld.clone(), n, n + 1, |i, j| {
+        if j == n {
+            fld.neg(&cp.coeff(i))
+        } else if i == j {
+            fld.one()
+        } else {
+            fld.zero()
+        }
+    }))
+}
+
 /// The Ho–Kalman realization without one-sided inverses: the extended Hankel matrix
 /// $H_e = [H_0, h]$ ($n$ block rows, $n + 1$ block columns, so $H_1 = H_e$ without its first
 /// block column) has the rank and pivots of $H_0$, and $H_e = L R_e$ with $R_e$ the nonzero
@@ -51,17 +69,7 @@ fn factor_extended<K: Field>(sys: &StateSpace<K>) -> Result<StateSpace<K>> {
         && super::controllability::is_controllable(&sys.a, &sys.b)
         && super::controllability::is_observable(&sys.a, &sys.c);
     let (coords, piv) = if full {
-        let cp = sys.a.charpoly()?;
-        let coords = Matrix::from_fn(fld.clone(), n, n + 1, |i, j| {
-            if j == n {
-                fld.neg(&cp.coeff(i))
-            } else if i == j {
-                fld.one()
-            } else {
-                fld.zero()
-            }
-        });
-        (coords, (0..n).collect::<Vec<_>>())
+        (cayley_hamilton_coords(&sys.a)?, (0..n).collect::<Vec<_>>())
     } else {
         let (r, piv) = he.rref();
         (r.submatrix(0, piv.len(), 0, he.ncols()), piv)
@@ -73,19 +81,12 @@ fn factor_extended<K: Field>(sys: &StateSpace<K>) -> Result<StateSpace<K>> {
     StateSpace::new(a, b, c, sys.d.clone())
 }
 
-/// Minimal realization from the Markov parameters by Ho–Kalman.
+/// Minimal realization from the Markov parameters by Ho–Kalman (the dispatcher
+/// [`super::minimal`] passes no recorder). With `rec`, the Hankel matrix, its factorization and
+/// the minimal part are recorded (`minreal --method ho-kalman --steps`, see [`super::steps`]).
 ///
 /// # Errors
 /// Only internal failures.
-pub fn minimal_ho_kalman<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealization<K>> {
-    minimal_ho_kalman_recorded(sys, None)
-}
-
-/// [`minimal_ho_kalman`], recording the Hankel matrix, its factorization and the minimal part
-/// into `rec` (`minreal --method ho-kalman --steps`, see [`super::steps`]).
-///
-/// # Errors
-/// As [`minimal_ho_kalman`].
 pub fn minimal_ho_kalman_recorded<K: Field>(
     sys: &StateSpace<K>,
     rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,

@@ -21,8 +21,8 @@ pub fn minimal<K: Field>(
 ) -> Result<MinimalRealization<K>> {
     match method {
         MinrealMethod::Kalman => minimal_kalman(sys),
-        MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock(sys),
-        MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman(sys),
+        MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock_recorded(sys, None),
+        MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman_recorded(sys, None),
         MinrealMethod::Jordan => {
             // the Jordan method works over Q: systems with rational entries are taken down
             // to Q, realized there, lifted back and verified over K

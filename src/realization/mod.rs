@@ -56,7 +56,7 @@ pub use descriptor::{
 pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
 pub use from_transfer::{TransferRealization, realize_state_space, realize_transfer};
 pub use gramian::{GramType, Gramian, Gramians, gramian, gramians, is_hurwitz, lyapunov};
-pub use ho_kalman::{minimal_ho_kalman, minimal_ho_kalman_recorded};
+pub use ho_kalman::minimal_ho_kalman_recorded;
 pub use jordan_method::{
     JordanMinimal, ModalBlock, RealModalBlock, minimal_jordan, minimal_jordan_rational,
     minimal_jordan_with,
@@ -65,9 +65,7 @@ pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
 pub use modal::{ExactFigure, ModalTable, Mode, modal_table, modal_table_over};
-pub use rosenbrock::{
-    controllable_part, controllable_staircase, minimal_rosenbrock, minimal_rosenbrock_recorded,
-};
+pub use rosenbrock::{controllable_part, controllable_staircase, minimal_rosenbrock_recorded};
 pub use weierstrass::{
     WeierstrassSplit, descriptor_transfer_matrix, eval_transfer, same_transfer, weierstrass_split,
 };

@@ -124,21 +124,10 @@ fn krylov<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Result<Option<Krylov<K>>> {
     let rank = piv.len();
     if m == 1 && rank == n {
         // pivots b, Ab, ..., A^{n-1} b; A^n b = -sum_k c_k A^k b (Cayley-Hamilton)
-        let fld = a.field().clone();
-        let cp = a.charpoly()?;
-        let coords = Matrix::from_fn(fld.clone(), n, n + 1, |i, j| {
-            if j == n {
-                fld.neg(&cp.coeff(i))
-            } else if i == j {
-                fld.one()
-            } else {
-                fld.zero()
-            }
-        });
         return Ok(Some(Krylov {
             ext,
             piv: (0..n).collect(),
-            coords,
+            coords: super::ho_kalman::cayley_hamilton_coords(a)?,
         }));
     }
     let (r, piv) = ext.rref();
@@ -171,19 +160,12 @@ pub fn controllable_part<K: Field>(sys: &StateSpace<K>) -> Result<(StateSpace<K>
     Ok((StateSpace::new(a, b, c, sys.d.clone())?, r))
 }
 
-/// Minimal realization by Rosenbrock's method.
-///
-/// # Errors
-/// Only internal failures (`Singular` from a transform that is invertible by construction).
-pub fn minimal_rosenbrock<K: Field>(sys: &StateSpace<K>) -> Result<MinimalRealization<K>> {
-    minimal_rosenbrock_recorded(sys, None)
-}
-
-/// [`minimal_rosenbrock`], recording both staircases and the minimal part into `rec`
+/// Minimal realization by Rosenbrock's method (the dispatcher [`super::minimal`] passes no
+/// recorder); with `rec`, both staircases and the minimal part are recorded
 /// (`minreal --method rosenbrock --steps`, see [`super::steps`]).
 ///
 /// # Errors
-/// As [`minimal_rosenbrock`].
+/// Only internal failures (`Singular` from a transform that is invertible by construction).
 pub fn minimal_rosenbrock_recorded<K: Field>(
     sys: &StateSpace<K>,
     rec: Option<&mut crate::jordan::derivation::Recorder<'_, K>>,

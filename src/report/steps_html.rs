@@ -5,7 +5,7 @@
 
 use super::html::{escape, inline_math};
 use super::steps::{identity, kind_name, step_field, title};
-use super::steps_latex::{object_latex, sentence_latex, transfer_latex};
+use super::steps_latex::{assumes_latex, object_latex, sentence_latex, transfer_latex};
 use crate::field::Field;
 use crate::jordan::derivation::{Derivation, Step};
 use std::fmt::Write;
@@ -116,13 +116,8 @@ fn step_html<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K>
         };
         let _ = write!(s, "<p>Identity: {} &mdash; {verdict}.</p>", inline_math(id));
     }
-    if !st.assumes.is_empty() {
-        let conds: Vec<String> = st
-            .assumes
-            .iter()
-            .map(|x| format!("{} \\ne 0", d.field.latex_elem(x)))
-            .collect();
-        let _ = write!(s, "<p>Assumes: {}.</p>", inline_math(&conds.join(",\\ ")));
+    if let Some(conds) = assumes_latex(d, st) {
+        let _ = write!(s, "<p>Assumes: {}.</p>", inline_math(&conds));
     }
     s.push_str("</li>");
 }

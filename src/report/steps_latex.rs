@@ -454,14 +454,23 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
         let verdict = if h { "holds exactly" } else { "FAILS" };
         let _ = writeln!(s, "\\noindent Identity: $ {id} $ --- {verdict}.\n");
     }
-    if !st.assumes.is_empty() {
-        let conds: Vec<String> = st
-            .assumes
-            .iter()
-            .map(|x| format!("{} \\ne 0", d.field.latex_elem(x)))
-            .collect();
-        let _ = writeln!(s, "\\noindent Assumes: ${}$.\n", conds.join(",\\ "));
+    if let Some(conds) = assumes_latex(d, st) {
+        let _ = writeln!(s, "\\noindent Assumes: ${conds}$.\n");
     }
+}
+
+/// The step's assumptions as LaTeX math, `x \ne 0, ...` (`None` when it assumes nothing):
+/// one text for the LaTeX and the HTML derivation.
+pub(crate) fn assumes_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> Option<String> {
+    if st.assumes.is_empty() {
+        return None;
+    }
+    let conds: Vec<String> = st
+        .assumes
+        .iter()
+        .map(|x| format!("{} \\ne 0", d.field.latex_elem(x)))
+        .collect();
+    Some(conds.join(",\\ "))
 }
 
 /// The derivation as LaTeX: a fragment, or with `standalone` a complete A4 document.
