@@ -5,6 +5,12 @@
 //! only the second family may be retried with the float backend. [`Error::class`] is what
 //! the command line (exit status, [`Error::exit_code`]) and the Python package (the
 //! exception class) map; both map this one type.
+//!
+//! [`Error`] is the one error type of the library: every exact operation, loader and parser
+//! returns it (the expression and matrix-text parsers' own messages are wrapped into it with
+//! their place). [`InputError`] is the payload of [`Error::Input`], reached by
+//! `std::error::Error::source`; the command layer's `api::Failure` wraps an [`Error`] the same
+//! way (its `source()` is the library error it came from).
 
 use std::fmt;
 
@@ -145,7 +151,15 @@ impl fmt::Display for Error {
     }
 }
 
-impl std::error::Error for Error {}
+impl std::error::Error for Error {
+    /// The bad input file's error for [`Error::Input`] (its place and kind); `None` otherwise.
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::Input(e) => Some(e.as_ref()),
+            _ => None,
+        }
+    }
+}
 
 /// A bad input file: where (file, key, 1-based row and column) and what.
 ///
@@ -282,8 +296,14 @@ mod tests {
             e.to_string(),
             "f.json: key A, row 2, column 3: unknown parameter 'cf'"
         );
-        assert_eq!(e, Error::Input(Box::new(input)));
+        assert_eq!(e, Error::Input(Box::new(input.clone())));
         let boxed: Box<dyn std::error::Error> = Box::new(e);
         assert!(boxed.to_string().starts_with("f.json: "));
+        // the place is reachable as the source; other variants have none
+        let src = boxed
+            .source()
+            .expect("an input error has its file error as source");
+        assert_eq!(src.to_string(), input.to_string());
+        assert!(std::error::Error::source(&Error::Singular).is_none());
     }
 }

@@ -339,11 +339,14 @@ impl Outcome {
 
 /// A command failure: exit code, the class of the error ([`ErrorClass`]: the command
 /// line's exit status and Python's exception type follow it) and the one-line message.
+/// A failure made from a library [`Error`] keeps it as its `source()`.
 #[derive(Debug)]
 pub struct Failure {
     pub code: i32,
     pub class: ErrorClass,
     pub message: String,
+    /// The library error this failure reports, if it came from one.
+    cause: Option<Box<Error>>,
 }
 
 impl Failure {
@@ -353,6 +356,7 @@ impl Failure {
             code: class.exit_code(),
             class,
             message,
+            cause: None,
         }
     }
     /// Bad input or an undefined result (exit 2).
@@ -386,12 +390,24 @@ impl std::fmt::Display for Failure {
     }
 }
 
-impl std::error::Error for Failure {}
+impl std::error::Error for Failure {
+    /// The library [`Error`] the failure was made from (`None` for a command-line refusal).
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        self.cause
+            .as_deref()
+            .map(|e| e as &(dyn std::error::Error + 'static))
+    }
+}
 
 impl From<Error> for Failure {
-    /// The exit status of the error's class ([`Error::exit_code`]) and its line.
+    /// The exit status of the error's class ([`Error::exit_code`]) and its line; the error
+    /// is kept as the source.
     fn from(e: Error) -> Self {
-        Failure::new(e.class(), e.to_string())
+        let f = Failure::new(e.class(), e.to_string());
+        Failure {
+            cause: Some(Box::new(e)),
+            ..f
+        }
     }
 }
 
