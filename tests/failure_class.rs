@@ -68,15 +68,19 @@ fn a_failure_keeps_the_class_of_its_error() {
     for m in ["x", "a longer message: with a colon", ""] {
         for e in errors(m) {
             let (class, code, text) = (e.class(), e.exit_code(), e.to_string());
-            let f = Failure::from(e);
+            let f = Failure::from(e.clone());
             assert_eq!((f.class, f.code, f.message.clone()), (class, code, text));
             let g = f.in_file(Path::new("sys.json"));
             assert_eq!((g.class, g.code), (class, code));
             assert!(g.message.starts_with("sys.json: "), "{}", g.message);
+            // the library error stays reachable as the source, also with the file's name
+            let src = std::error::Error::source(&g).expect("a failure from an Error has it");
+            assert_eq!(src.downcast_ref::<Error>(), Some(&e));
         }
     }
     for class in CLASSES {
         let f = Failure::new(class, "m".into());
+        assert!(std::error::Error::source(&f).is_none(), "a refusal has no cause");
         assert_eq!((f.class, f.code), (class, class.exit_code()));
         let want = if class == ErrorClass::Verification {
             1
