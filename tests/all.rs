@@ -83,6 +83,8 @@ mod latex;
 mod layers;
 #[path = "library_api.rs"]
 mod library_api;
+#[path = "linalg_fields.rs"]
+mod linalg_fields;
 #[path = "margins.rs"]
 mod margins;
 #[path = "matrix_dixon.rs"]
