@@ -68,7 +68,11 @@ pub enum Format {
 }
 
 /// Every operation on a system, with its options (the command line's subcommands).
+///
+/// `defer`: a subcommand's arguments are defined only when it is the one parsed (or its help
+/// is shown), so a start builds one subcommand's definition, not all of them.
 #[derive(Subcommand, Debug, Clone)]
+#[command(defer = true)]
 pub enum Command {
     /// Exact Jordan decomposition of A.
     Jordan {
