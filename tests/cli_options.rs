@@ -185,6 +185,26 @@ fn help_states_units_and_what_file_and_options_mean() {
     let (_, out, _) = run(&["--help"]);
     assert!(out.contains("FILE is a system file"), "{out}");
     assert!(out.contains("Exit status"), "{out}");
+    // the program's own summary first (not a subcommand enum's doc), every subcommand listed
+    // although their arguments are defined only when one is chosen (clap `defer`)
+    assert!(
+        out.starts_with("Exact structure of linear time-invariant systems"),
+        "{out}"
+    );
+    for cmd in [
+        "jordan",
+        "minreal",
+        "freqresp",
+        "series",
+        "c2d",
+        "stepinfo",
+        "bifurcations",
+    ] {
+        assert!(
+            out.lines().any(|l| l.trim_start().starts_with(cmd)),
+            "{cmd}:\n{out}"
+        );
+    }
     for cmd in ["jordan", "minreal", "linalg", "sweep", "critical", "poly"] {
         let (code, out, _) = run(&[cmd, "--help"]);
         assert_eq!(code, 0, "{cmd}");

@@ -80,7 +80,10 @@ fn a_failure_keeps_the_class_of_its_error() {
     }
     for class in CLASSES {
         let f = Failure::new(class, "m".into());
-        assert!(std::error::Error::source(&f).is_none(), "a refusal has no cause");
+        assert!(
+            std::error::Error::source(&f).is_none(),
+            "a refusal has no cause"
+        );
         assert_eq!((f.class, f.code), (class, class.exit_code()));
         let want = if class == ErrorClass::Verification {
             1

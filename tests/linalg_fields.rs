@@ -84,7 +84,11 @@ fn check_det_inverse<K: Field>(k: &K, g: &Option<K::Elem>, n: usize, rng: &mut R
     assert!(k.is_one(&k.mul(&inv.det().unwrap(), &prod)));
     // chi_A(0) = (-1)^n det A
     let c0 = a.charpoly().unwrap().coeff(0);
-    let sign = if n.is_multiple_of(2) { k.one() } else { k.neg(&k.one()) };
+    let sign = if n.is_multiple_of(2) {
+        k.one()
+    } else {
+        k.neg(&k.one())
+    };
     assert_eq!(c0, k.mul(&sign, &prod), "chi_A(0) = (-1)^n det A");
     if n > 0 {
         let mut d0 = d.clone();

@@ -68,9 +68,9 @@ pub enum Format {
 }
 
 /// Every operation on a system, with its options (the command line's subcommands).
-///
-/// `defer`: a subcommand's arguments are defined only when it is the one parsed (or its help
-/// is shown), so a start builds one subcommand's definition, not all of them.
+// `defer`: a subcommand's arguments are defined only when it is the one parsed (or its help
+// is shown), so a start builds one subcommand's definition, not all of them. (A plain
+// comment: a second doc paragraph here would become the program's `long_about`.)
 #[derive(Subcommand, Debug, Clone)]
 #[command(defer = true)]
 pub enum Command {
