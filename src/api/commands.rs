@@ -333,7 +333,7 @@ impl SystemVisitor for FileCommand<'_> {
                 let domain = crate::system::discrete::stability::Domain::of(f.signals.dt.as_ref());
                 Ok(Outcome::plain(z.report_in(domain)))
             }
-            Command::Freqresp { .. } => super::float_cmds::freqresp_command(self.cmd, f, t, path),
+            Command::Freqresp { .. } => super::freqresp_cmd::freqresp_command(self.cmd, f, t, path),
             Command::Pzmap { svg, .. } => {
                 super::plots::pzmap(f, t, path, svg.as_deref()).map(Outcome::plain)
             }

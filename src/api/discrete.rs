@@ -294,7 +294,7 @@ pub fn on_sampled<K: Field + 'static>(
             let impulse = matches!(cmd, C::Impulse { .. });
             Some(sequence(f, t, path, dt, impulse, opts))
         }
-        C::Freqresp { .. } => Some(super::float_cmds::freqresp_command(cmd, f, t, path)),
+        C::Freqresp { .. } => Some(super::freqresp_cmd::freqresp_command(cmd, f, t, path)),
         C::Analyze { .. } => refuse("analyze"),
         C::Modes { .. } => refuse("modes"),
         C::Mnf { .. } => refuse("mnf"),

@@ -25,6 +25,7 @@ mod discrete;
 mod discrete_plots;
 mod float_cmds;
 mod float_compare;
+mod freqresp_cmd;
 mod interconnect;
 mod linalg;
 mod pencil_cmds;
