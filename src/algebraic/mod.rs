@@ -22,16 +22,16 @@
 //! | [`composed_half_sum`], [`composed_half_diff_imag`] | $\prod (x - \frac{r_i + r_j}{2})$, $\prod (x - \frac{r_i - r_j}{2i})$ |
 //! | [`crate::report::sections::factor_report`], [`crate::report::sections::roots_report`] | the CLI's `poly factor` / `poly roots` reports |
 
-pub mod display;
-pub mod ext;
+pub(crate) mod display;
+pub(crate) mod ext;
 mod ext_q;
 pub mod isolate_complex;
-pub mod isolate_real;
+pub(crate) mod isolate_real;
 pub mod nf_factor;
-pub mod number;
-pub mod number_field;
-pub mod quadratic_factor;
-pub mod quadratic_roots;
+pub(crate) mod number;
+pub(crate) mod number_field;
+pub(crate) mod quadratic_factor;
+pub(crate) mod quadratic_roots;
 pub(crate) mod zp; // re-export shim, see its docs
 
 pub use ext::{Ext, ExtCtx, ExtElem};

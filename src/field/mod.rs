@@ -17,14 +17,14 @@
 
 use std::fmt;
 
-pub mod complex;
-pub mod kernels;
+pub(crate) mod complex;
+pub(crate) mod kernels;
 pub use kernels::{KernelTable, Kernels};
 pub mod lehmer;
-pub mod quadratic;
+pub(crate) mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
 pub mod expr;
-pub mod rational;
+pub(crate) mod rational;
 
 /// $x^e$ by repeated squaring from `one` ($x^0 = $ `one`), `mul` the product: at most
 /// $2 \log_2 e$ products. Serves scalars, polynomials and matrices alike.

@@ -26,7 +26,7 @@ use nalgebra::DMatrix;
 use crate::error::{Error, Result};
 
 mod balred;
-pub mod convert;
+pub(crate) mod convert;
 mod eigen;
 mod era;
 mod freqresp;

@@ -36,7 +36,7 @@
 //! | [`eval_expr`] | the exact value of one expression over given parameters |
 //! | [`is_parameter_name`] | whether a string may name a parameter |
 
-pub use super::value::{ExprError, MAX_BITS, MAX_EXPONENT};
+pub use super::value::ExprError;
 pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
 use crate::field::expr::{Algebra, Dialect, SyntaxError, evaluate};
@@ -44,7 +44,6 @@ use crate::field::{QuadraticField, Rational};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
-pub use crate::field::expr::{MAX_DEPTH, MAX_NUMBER_LEN};
 /// Longest accepted expression (characters), checked before it is read: a longer entry is
 /// refused at once (a 300 KB product took 20 s to reach the bit bound). Also the bound of
 /// `G` entries and of symbolic entries.

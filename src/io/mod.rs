@@ -29,12 +29,12 @@
 //! → validation (`system_file.rs`: parameters in dependency order, entries, ground field,
 //! shapes) → [`SystemFile`]. There is no unchecked path from text to a system.
 
-pub mod combine;
-pub mod expr;
-pub mod keys;
-pub mod load;
+pub(crate) mod combine;
+pub(crate) mod expr;
+pub(crate) mod keys;
+pub(crate) mod load;
 pub mod load_descriptor;
-pub mod matlab;
+pub(crate) mod matlab;
 pub mod model_file;
 pub mod plain_matrix;
 pub mod qmat;
@@ -42,11 +42,11 @@ pub(crate) mod raw;
 pub mod read;
 mod subst;
 pub mod symbolic;
-pub mod system_file;
+pub(crate) mod system_file;
 pub mod transfer_expr;
 mod transfer_key;
 mod value;
-pub mod write;
+pub(crate) mod write;
 
 pub use expr::{ExprError, eval_expr};
 pub use keys::SignalNames;

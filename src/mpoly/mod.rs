@@ -29,13 +29,13 @@
 //! `fmpz_mpoly_gcd` / SymPy's `euclidtools`: cheap heuristic first, exact fallback; Wang-style
 //! evaluation, univariate Zassenhaus ([`crate::poly::factor`]) and Hensel lifting).
 
-pub mod arith;
+pub(crate) mod arith;
 pub mod brown;
-pub mod display;
+pub(crate) mod display;
 pub mod factor;
 pub mod gcd;
 mod hensel;
-pub mod parse;
+pub(crate) mod parse;
 pub mod resultant;
 
 pub use factor::{Factorization, factor};

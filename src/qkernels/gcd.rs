@@ -2,4 +2,4 @@
 //! ([`crate::field::lehmer`]), where the quadratic field's arithmetic also uses them; the
 //! $\mathbb{Q}$ kernels reach them here.
 
-pub use crate::field::lehmer::{fraction, gcd, gcd_biguint};
+pub use crate::field::lehmer::{fraction, gcd};

@@ -14,8 +14,8 @@
 //! | [`gcd`] | Lehmer gcd on big integers, canonical fractions |
 
 pub mod fraction_free;
-pub mod gcd;
+pub(crate) mod gcd;
 pub mod intmat;
-pub mod intmul;
+pub(crate) mod intmul;
 pub mod modular;
 pub mod prime;

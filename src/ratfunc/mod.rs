@@ -22,7 +22,7 @@
 //! (`(a + b)^2/c`); LaTeX uses `\frac{}{}`.
 
 mod display;
-pub mod kernels;
+pub(crate) mod kernels;
 
 use crate::error::{Error, Result};
 use crate::field::{Field, Kernels, Rational};

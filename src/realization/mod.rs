@@ -36,7 +36,7 @@ mod method;
 mod minimal;
 mod modal;
 mod rosenbrock;
-pub mod standard_steps;
+pub(crate) mod standard_steps;
 pub mod steps;
 mod weierstrass;
 

@@ -11,14 +11,14 @@ pub mod latex;
 pub mod numbers;
 pub mod plot;
 pub mod sections;
-pub mod series;
-pub mod steps;
-pub mod steps_forms;
+pub(crate) mod series;
+pub(crate) mod steps;
+pub(crate) mod steps_forms;
 pub mod steps_html;
 pub mod steps_latex;
-pub mod steps_more;
-pub mod summary;
-pub mod text;
+pub(crate) mod steps_more;
+pub(crate) mod summary;
+pub(crate) mod text;
 
 pub use text::{TextOptions, text_matrix};
 

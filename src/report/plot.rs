@@ -5,12 +5,12 @@
 //! Hand-written SVG ([`svg`]) instead of a plotting crate: this keeps the dependency tree and
 //! CI build small.
 
-pub mod bode;
-pub mod bode_grid;
-pub mod pzmap;
+pub(crate) mod bode;
+pub(crate) mod bode_grid;
+pub(crate) mod pzmap;
 pub mod svg;
 pub mod sweep;
-pub mod time;
+pub(crate) mod time;
 
 use std::fmt::Write;
 

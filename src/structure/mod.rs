@@ -15,5 +15,5 @@ pub mod descriptor_zeros;
 pub mod factor_qp;
 pub mod mechanical;
 pub mod scb;
-pub mod steps;
+pub(crate) mod steps;
 pub mod zeros;

@@ -14,9 +14,9 @@
 //! polynomials over $\mathbb{Q}$, their roots are certified, and the confirmations and
 //! Jordan structures are computed in $\mathbb{Q}(v_0) = \mathbb{Q}[t]/(f)$.
 
-pub mod bivar;
+pub(crate) mod bivar;
 pub mod critical;
-pub mod family;
+pub(crate) mod family;
 pub(crate) mod family_read;
 pub(crate) mod finite;
 pub mod hurwitz;

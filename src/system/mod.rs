@@ -19,10 +19,10 @@ pub mod discrete;
 mod display;
 pub mod interconnect;
 pub mod margins;
-pub mod steps;
+pub(crate) mod steps;
 pub mod time_response;
 pub mod transfer;
-pub mod transfer_algebra;
+pub(crate) mod transfer_algebra;
 
 use crate::error::{Error, Result};
 use crate::field::Field;

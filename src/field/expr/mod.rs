@@ -25,8 +25,8 @@
 //! its fold have bounded depth; sums and products are flat lists, so long texts do not
 //! deepen the tree.
 
-pub mod lex;
-pub mod parse;
+pub(crate) mod lex;
+pub(crate) mod parse;
 
 pub(crate) use lex::reserved_message;
 pub use lex::{

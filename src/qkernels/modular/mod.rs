@@ -39,12 +39,12 @@ pub mod crt;
 pub mod det;
 pub mod direct;
 pub mod dixon;
-pub mod guess;
+pub(crate) mod guess;
 pub mod inverse;
-pub mod minpoly;
+pub(crate) mod minpoly;
 pub mod pivot_solve;
 pub mod qimage;
-pub mod rank;
+pub(crate) mod rank;
 pub mod rref;
 
 use crate::field::Rational;

@@ -30,13 +30,13 @@
 //! and columns split into independent blocks (a diagonal $A - \lambda I$) is reduced block by
 //! block ([`blocks`]).
 
-pub mod blocks;
-pub mod interp;
-pub mod inverse;
-pub mod minor_cond;
-pub mod modp;
-pub mod mul;
-pub mod pgcd;
+pub(crate) mod blocks;
+pub(crate) mod interp;
+pub(crate) mod inverse;
+pub(crate) mod minor_cond;
+pub(crate) mod modp;
+pub(crate) mod mul;
+pub(crate) mod pgcd;
 
 use super::{RatFunc, RatFuncField};
 use crate::error::Result;

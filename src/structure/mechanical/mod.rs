@@ -34,9 +34,9 @@
 //! | [`unify::unifying_transformation`] | $\hat T$ | $W$ of sec. 2.2 |
 
 pub mod companion;
-pub mod descriptor;
-pub mod existence;
-pub mod steps;
+pub(crate) mod descriptor;
+pub(crate) mod existence;
+pub(crate) mod steps;
 pub mod transform;
 pub mod unify;
 

@@ -29,7 +29,7 @@ mod extension;
 mod nonstrict;
 mod silverman;
 mod split;
-pub mod steps;
+pub(crate) mod steps;
 mod verify;
 
 pub use verify::{Pattern, check_pattern};

@@ -21,7 +21,7 @@
 
 mod append;
 mod check;
-pub mod connect;
+pub(crate) mod connect;
 mod feedback;
 mod parallel;
 mod series;

@@ -23,8 +23,8 @@
 //! (`imaginary_eigenvalue`).
 
 mod at_root;
-pub mod roots_k;
-pub mod scalar;
+pub(crate) mod roots_k;
+pub(crate) mod scalar;
 
 pub use scalar::{KRat, KReader};
 
