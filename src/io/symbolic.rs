@@ -141,16 +141,19 @@ pub fn load_symbolic_str(
         table.extend(rest);
         return validate(Raw::Table(table), name).and_then(type_file);
     }
-    if rest.iter().any(|(k, _)| k == "G") {
-        let k = field_of(name, &symbols)?;
-        return Err(InputError::file(name, refusal("a transfer matrix `G`", &k)));
-    }
     let k = field_of(name, &symbols)?;
     let subst = Substitution::new(name, &valued)?;
     let mut mats: Vec<(&'static str, Matrix<RatFuncField>)> = vec![];
+    if rest.iter().any(|(k, _)| k == "G") {
+        // a transfer matrix in s over Q(p): its minimal realization stands in for A..D
+        mats = super::transfer_symbolic::realize_g_symbolic(name, &rest, &k, &subst)?;
+    }
     let mut extra = serde_json::Map::new();
     let mut sys_name = None;
     for (key, v) in rest {
+        if key == "G" {
+            continue;
+        }
         if let Some(mk) = MATRIX_KEYS.iter().find(|m| **m == key) {
             mats.push((mk, read_matrix(name, mk, &v, &k, &subst)?));
         } else if key == "name" {
@@ -224,7 +227,7 @@ fn field_of(name: &str, symbols: &BTreeSet<String>) -> Result<RatFuncField, Inpu
     RatFuncField::new(&vars).map_err(|e| InputError::key(name, "symbols", e.to_string()))
 }
 
-fn read_matrix(
+pub(super) fn read_matrix(
     file: &str,
     key: &str,
     v: &Raw,

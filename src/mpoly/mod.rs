@@ -35,7 +35,10 @@ pub mod display;
 pub mod factor;
 pub mod gcd;
 mod hensel;
+pub mod interp;
+pub mod modp;
 pub mod parse;
+pub mod probe;
 pub mod resultant;
 
 pub use factor::{Factorization, factor};
