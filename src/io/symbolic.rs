@@ -146,7 +146,8 @@ pub fn load_symbolic_str(
     let mut mats: Vec<(&'static str, Matrix<RatFuncField>)> = vec![];
     if rest.iter().any(|(k, _)| k == "G") {
         // a transfer matrix in s over Q(p): its minimal realization stands in for A..D
-        mats = super::transfer_symbolic::realize_g_symbolic(name, &rest, &k, &subst)?;
+        let read = |key: &str, v: &Raw, f: &RatFuncField| read_matrix(name, key, v, f, &subst);
+        mats = super::transfer_symbolic::realize_g_symbolic(name, &rest, &k, read)?;
     }
     let mut extra = serde_json::Map::new();
     let mut sys_name = None;
@@ -227,7 +228,7 @@ fn field_of(name: &str, symbols: &BTreeSet<String>) -> Result<RatFuncField, Inpu
     RatFuncField::new(&vars).map_err(|e| InputError::key(name, "symbols", e.to_string()))
 }
 
-pub(super) fn read_matrix(
+fn read_matrix(
     file: &str,
     key: &str,
     v: &Raw,

@@ -12,7 +12,6 @@
 use super::InputError;
 use super::InputErrorKind;
 use super::raw::Raw;
-use super::subst::Substitution;
 use crate::matrix::Matrix;
 use crate::mpoly::MPoly;
 use crate::poly::Poly;
@@ -23,7 +22,8 @@ use crate::system::transfer::{RationalFunction, TransferMatrix};
 /// The state-space keys a `G` cannot be combined with.
 const STATE_KEYS: [&str; 9] = ["A", "B", "C", "D", "E", "M", "L", "K", "F"];
 
-/// `(A, B, C, D)` over `k` of a minimal realization of the file's `G` (keys `rest`).
+/// `(A, B, C, D)` over `k` of a minimal realization of the file's `G` (keys `rest`);
+/// `read(key, value, field)` reads a matrix key over a field (the symbolic reader's).
 ///
 /// # Errors
 /// `G` beside a state-space key; an entry that is not a rational function of `s` and the
@@ -32,7 +32,7 @@ pub(super) fn realize_g_symbolic(
     file: &str,
     rest: &[(String, Raw)],
     k: &RatFuncField,
-    subst: &Substitution,
+    read: impl Fn(&str, &Raw, &RatFuncField) -> Result<Matrix<RatFuncField>, InputError>,
 ) -> Result<Vec<(&'static str, Matrix<RatFuncField>)>, InputError> {
     if let Some(key) = STATE_KEYS
         .into_iter()
@@ -61,7 +61,7 @@ pub(super) fn realize_g_symbolic(
     let mut vars: Vec<String> = k.vars().to_vec();
     vars.push("s".into());
     let ks = RatFuncField::new(&vars).map_err(|e| InputError::key(file, "G", e.to_string()))?;
-    let gm = super::symbolic::read_matrix(file, "G", g, &ks, subst)?;
+    let gm = read("G", g, &ks)?;
     if gm.nrows() == 0 || gm.ncols() == 0 {
         return Err(InputError::key(
             file,

@@ -30,6 +30,7 @@
 //! evaluation, univariate Zassenhaus ([`crate::poly::factor`]) and Hensel lifting).
 
 pub mod arith;
+pub mod bounds;
 pub mod brown;
 pub mod display;
 pub mod factor;

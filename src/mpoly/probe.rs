@@ -23,7 +23,7 @@
 //! Grids up to [`PROBE_MIN`] points stay certified without a probe.
 
 use super::MPoly;
-use super::interp::{Bounds, grid_points, small_inverses};
+use super::bounds::{Bounds, grid_points, small_inverses};
 use super::modp::{ReducedPoly, eval_mod_p, powers};
 use crate::qkernels::prime::{Prime, is_prime_u64};
 use crate::rng::SplitMix64;
@@ -112,7 +112,7 @@ impl Bounds {
     /// These bounds with the degrees probed on random lines (see the module docs) when the
     /// certified grid exceeds [`PROBE_MIN`] points and the probe lowers it; the certified
     /// bounds are kept in [`Bounds::certified`]. `f` is the per-point map of
-    /// [`super::interp::interpolate_zp`] on the matrix `b`.
+    /// `interpolate_zp` ([`super::interp`]) on the matrix `b`.
     #[must_use]
     pub fn probe<F>(self, b: &[MPoly], f: &F) -> Bounds
     where
