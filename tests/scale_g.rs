@@ -126,7 +126,7 @@ fn random_g_with_planted_poles_is_minimal() {
         // a 1 x 2 or 2 x 1 G: the order is at most that of one column's (row's) common
         // denominator, 1 + 2e, times the number of columns; at least the denominator degree
         assert!(
-            s.nstates() >= 1 + 2 * e && s.nstates() <= 2 * (1 + 2 * e),
+            (1 + 2 * e..=2 * (1 + 2 * e)).contains(&s.nstates()),
             "case {case}"
         );
         // minimal: controllable and observable (full-rank Kalman matrices at a point)
