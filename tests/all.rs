@@ -145,6 +145,14 @@ mod reserved_names;
 mod rest22;
 #[path = "robustness.rs"]
 mod robustness;
+#[path = "scale_chain.rs"]
+mod scale_chain;
+#[path = "scale_dense.rs"]
+mod scale_dense;
+#[path = "scale_g.rs"]
+mod scale_g;
+#[path = "scale_kernels.rs"]
+mod scale_kernels;
 #[path = "scb.rs"]
 mod scb;
 #[path = "slowpaths.rs"]

@@ -112,6 +112,20 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
     }
     if let super::raw::Raw::Table(entries) = &raw {
         if let Some((_, g)) = entries.iter().find(|(k, _)| k == "G") {
+            let format = super::read::SystemFormat::of(path, &text);
+            if super::symbolic::declares_symbols(&text, format, &name) {
+                // G over Q(p) is the symbolic reader's: its error names the entry
+                let opts = super::symbolic::SymbolicOptions::default();
+                return Err(
+                    match super::symbolic::load_symbolic_str(&text, format, &name, &opts) {
+                        Err(e) => e,
+                        Ok(_) => InputError::file(
+                            &name,
+                            "this command reads G over Q only: give the symbols values (--at)",
+                        ),
+                    },
+                );
+            }
             let params = entries.iter().find(|(k, _)| k == "parameters");
             return load_g(
                 &name,

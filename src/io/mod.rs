@@ -45,6 +45,7 @@ pub mod symbolic;
 pub(crate) mod system_file;
 pub mod transfer_expr;
 mod transfer_key;
+mod transfer_symbolic;
 mod value;
 pub(crate) mod write;
 

@@ -141,16 +141,20 @@ pub fn load_symbolic_str(
         table.extend(rest);
         return validate(Raw::Table(table), name).and_then(type_file);
     }
-    if rest.iter().any(|(k, _)| k == "G") {
-        let k = field_of(name, &symbols)?;
-        return Err(InputError::file(name, refusal("a transfer matrix `G`", &k)));
-    }
     let k = field_of(name, &symbols)?;
     let subst = Substitution::new(name, &valued)?;
     let mut mats: Vec<(&'static str, Matrix<RatFuncField>)> = vec![];
+    if rest.iter().any(|(k, _)| k == "G") {
+        // a transfer matrix in s over Q(p): its minimal realization stands in for A..D
+        let read = |key: &str, v: &Raw, f: &RatFuncField| read_matrix(name, key, v, f, &subst);
+        mats = super::transfer_symbolic::realize_g_symbolic(name, &rest, &k, read)?;
+    }
     let mut extra = serde_json::Map::new();
     let mut sys_name = None;
     for (key, v) in rest {
+        if key == "G" {
+            continue;
+        }
         if let Some(mk) = MATRIX_KEYS.iter().find(|m| **m == key) {
             mats.push((mk, read_matrix(name, mk, &v, &k, &subst)?));
         } else if key == "name" {

@@ -30,12 +30,16 @@
 //! evaluation, univariate Zassenhaus ([`crate::poly::factor`]) and Hensel lifting).
 
 pub(crate) mod arith;
+pub(crate) mod bounds;
 pub mod brown;
 pub(crate) mod display;
 pub mod factor;
 pub mod gcd;
 mod hensel;
+pub mod interp;
+pub(crate) mod modp;
 pub(crate) mod parse;
+pub mod probe;
 pub mod resultant;
 
 pub use factor::{Factorization, factor};

@@ -6,9 +6,57 @@
 //! Algebraic Number Theory*, Alg. 3.3.7, without the content shortcut); all divisions are
 //! exact. $\operatorname{Disc}_x(f) = (-1)^{n(n-1)/2} \operatorname{Res}_x(f, f') /
 //! \operatorname{lc}(f)$ with $n = \deg_x f$. Both are polynomials free of $x$.
+//!
+//! With other variables present and $\deg f + \deg g \ge$ [`SYLVESTER_MIN`], the
+//! subresultant remainders swell (the discriminant of the characteristic polynomial of a
+//! dense 8 x 8 matrix in three parameters: > 40 s); there
+//! $\operatorname{Res}_x(f, g) = \det \operatorname{Syl}(f, g)$ (the Sylvester matrix, free
+//! of $x$) is interpolated modulo word primes ([`super::interp`], degrees probed and the
+//! result checked at random points: [`super::probe`]).
 
 use super::MPoly;
 use super::gcd::{prem, trim};
+use super::interp::{Bounds, interpolate_zp};
+use crate::qkernels::modular::det::det_mod_p;
+use crate::qkernels::prime::Prime;
+
+/// Sylvester matrices of at least this size (with other variables present) are
+/// interpolated.
+pub const SYLVESTER_MIN: usize = 6;
+
+/// $\det \operatorname{Syl}(a, b)$ for coefficient lists `a`, `b` in $x_i$ (low degree first,
+/// leading coefficients nonzero, degrees at least 1), by interpolation in the variables other
+/// than $x_i$; `None` when the grid is too large (the caller runs the subresultants).
+fn sylvester_det(a: &[MPoly], b: &[MPoly], i: usize) -> Option<MPoly> {
+    let nv = a[0].nvars();
+    let (da, db) = (a.len() - 1, b.len() - 1);
+    let n = da + db;
+    // the entries without x_i (of degree 0 in it): one variable fewer on the grid
+    let down: Vec<usize> = (0..nv)
+        .map(|j| match j.cmp(&i) {
+            std::cmp::Ordering::Less => j,
+            std::cmp::Ordering::Equal => 0,
+            std::cmp::Ordering::Greater => j - 1,
+        })
+        .collect();
+    let up: Vec<usize> = (0..nv - 1)
+        .map(|j| if j >= i { j + 1 } else { j })
+        .collect();
+    let mut syl = vec![MPoly::zero(nv - 1); n * n];
+    for (r, row_len, cs) in [(0, db, a), (db, da, b)] {
+        for t in 0..row_len {
+            for (k, c) in cs.iter().rev().enumerate() {
+                syl[(r + t) * n + t + k] = c.remap(nv - 1, &down);
+            }
+        }
+    }
+    let map = |pr: &Prime, x: &mut [u64]| Some(vec![det_mod_p(pr, n, x)]);
+    let bounds = Bounds::of_square(nv - 1, n, &syl).probe(&syl, &map);
+    let det = interpolate_zp(nv - 1, &syl, &bounds, 1, false, map)
+        .ok()??
+        .pop()?;
+    Some(det.remap(nv, &up))
+}
 
 /// $\operatorname{Res}_{x_i}(f, g)$ (zero when either is zero; $f^{0}$ conventions: the
 /// resultant with a nonzero polynomial constant in $x_i$ is that constant to the other
@@ -24,6 +72,20 @@ use super::gcd::{prem, trim};
 /// assert_eq!(resultant(&f, &g, 0).display(&vs).to_string(), "2*y^2 - 1");
 /// ```
 pub fn resultant(f: &MPoly, g: &MPoly, i: usize) -> MPoly {
+    let (da, db) = (f.deg(i) as usize, g.deg(i) as usize);
+    if f.nvars() >= 2
+        && da >= 1
+        && db >= 1
+        && da + db >= SYLVESTER_MIN
+        && let Some(r) = sylvester_det(&f.to_univariate(i), &g.to_univariate(i), i)
+    {
+        return r;
+    }
+    resultant_prs(f, g, i)
+}
+
+/// [`resultant`] by the subresultant algorithm alone (the oracle of the interpolated path).
+pub fn resultant_prs(f: &MPoly, g: &MPoly, i: usize) -> MPoly {
     let n = f.nvars();
     if f.is_zero() || g.is_zero() {
         return MPoly::zero(n);

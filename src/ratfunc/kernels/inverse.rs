@@ -35,11 +35,7 @@ pub fn inverse_qp(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Option<Option<Ve
     }
     let nv = k.nvars();
     let (b, ds) = clear_rows(nv, n, n, a);
-    let bounds = Bounds::of_square(nv, n, &b);
-    if grid_points(&bounds).saturating_mul(n * n + 1 + b.len()) > MAX_VALUES {
-        return None;
-    }
-    let out = interpolate_zp(nv, &b, &bounds, n * n + 1, true, |pr, x| {
+    let map = |pr: &crate::qkernels::prime::Prime, x: &mut [u64]| {
         let det = det_mod_p(pr, n, &mut x.to_vec());
         if det == 0 || !inverse_mod_p(pr, n, x) {
             return None;
@@ -48,7 +44,12 @@ pub fn inverse_qp(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Option<Option<Ve
         v.push(det);
         v.extend(x.iter().map(|&y| pr.mul(y, det)));
         Some(v)
-    });
+    };
+    let bounds = Bounds::of_square(nv, n, &b).probe(&b, &map);
+    if grid_points(&bounds).saturating_mul(n * n + 1 + b.len()) > MAX_VALUES {
+        return None;
+    }
+    let out = interpolate_zp(nv, &b, &bounds, n * n + 1, true, map);
     let out = match out {
         Ok(Some(o)) => o,
         // singular at every shifted grid point tried: decide singularity exactly

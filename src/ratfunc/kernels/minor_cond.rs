@@ -54,7 +54,8 @@ pub fn record_minor(
         .flat_map(|&i| cols.iter().map(move |&j| b[i * n + j].clone()))
         .collect();
     let den = rows.iter().fold(MPoly::one(nv), |acc, &i| acc.mul(&ds[i]));
-    let bounds = Bounds::of_square(nv, r, &c);
+    let det_map = |pr: &Prime, x: &mut [u64]| Some(vec![det_mod_p(pr, r, x)]);
+    let bounds = Bounds::of_square(nv, r, &c).probe(&c, &det_map);
     if grid_points(&bounds) <= DENSE_GRID
         && let Ok(d) = det_zp(nv, r, &c)
     {

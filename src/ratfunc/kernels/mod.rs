@@ -31,12 +31,14 @@
 //! block ([`blocks`]).
 
 pub(crate) mod blocks;
-pub(crate) mod interp;
+/// The evaluation/interpolation engine (in [`crate::mpoly`], where resultants use it too).
+pub use crate::mpoly::interp;
 pub(crate) mod inverse;
 pub(crate) mod minor_cond;
 pub(crate) mod modp;
 pub(crate) mod mul;
 pub(crate) mod pgcd;
+pub use crate::mpoly::probe;
 
 use super::{RatFunc, RatFuncField};
 use crate::error::Result;
@@ -44,7 +46,6 @@ use crate::field::KernelTable;
 use crate::mpoly::MPoly;
 use crate::mpoly::gcd::lcm;
 use crate::qkernels::modular::charpoly::charpoly_mod_p;
-use crate::qkernels::prime::nth_prime;
 use interp::{Bounds, interpolate_zp};
 
 /// The kernel table of $\mathbb{Q}(p)$.
@@ -63,10 +64,9 @@ const TINY: usize = 1;
 /// `Limit` when the grid exceeds [`interp::MAX_GRID_POINTS`].
 pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
     assert_eq!(b.len(), n * n);
-    let bounds = Bounds::of_square(nvars, n, b);
-    let out = interpolate_zp(nvars, b, &bounds, n + 1, false, |pr, a| {
-        Some(charpoly_mod_p(pr, n, a))
-    })?;
+    let map = |pr: &crate::qkernels::prime::Prime, a: &mut [u64]| Some(charpoly_mod_p(pr, n, a));
+    let bounds = Bounds::of_square(nvars, n, b).probe(b, &map);
+    let out = interpolate_zp(nvars, b, &bounds, n + 1, false, map)?;
     Ok(out.expect("the charpoly map is defined at every point"))
 }
 
@@ -76,10 +76,10 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
 /// `Limit` when the grid exceeds [`interp::MAX_GRID_POINTS`].
 pub fn det_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<MPoly> {
     assert_eq!(b.len(), n * n);
-    let bounds = Bounds::of_square(nvars, n, b);
-    let out = interpolate_zp(nvars, b, &bounds, 1, false, |pr, a| {
-        Some(vec![modp::det_mod_p(pr, n, a)])
-    })?;
+    let map =
+        |pr: &crate::qkernels::prime::Prime, a: &mut [u64]| Some(vec![modp::det_mod_p(pr, n, a)]);
+    let bounds = Bounds::of_square(nvars, n, b).probe(b, &map);
+    let out = interpolate_zp(nvars, b, &bounds, 1, false, map)?;
     Ok(out
         .expect("the det map is defined at every point")
         .pop()
@@ -241,7 +241,8 @@ impl KernelTable<RatFuncField> for QpKernels {
     }
 }
 
-/// A fixed word prime for the profile points (distinct from the interpolation primes).
+/// A fixed word prime for the profile points (distinct from the interpolation primes; no
+/// list of 41 primes at a cold start).
 fn profile_prime(attempt: usize) -> crate::qkernels::prime::Prime {
-    nth_prime(40 + attempt)
+    probe::side_prime(attempt)
 }

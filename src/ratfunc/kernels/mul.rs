@@ -9,11 +9,22 @@
 //! $\prod_{j \ne i} (p_i - p_j)$, times a Krylov matrix: the companion matrix, whose
 //! entries are polynomials). The kernel runs when some entry of $A$ or $B$ has a
 //! non-constant denominator and the inner dimension is at least 2.
+//!
+//! A row of $A$ whose denominators are many different polynomials has an lcm far larger
+//! than any of them (the rows of that inverse Vandermonde matrix: every difference
+//! $p_i - p_j$); when the lcm of a row has more than [`LCM_GROWTH`] times the terms of its
+//! largest denominator, that row's entries are summed fraction by fraction instead (the
+//! reduced sums stay small there).
 
 use super::clear_rows;
 use crate::field::Field;
 use crate::mpoly::MPoly;
+use crate::mpoly::gcd::lcm;
 use crate::ratfunc::{RatFunc, RatFuncField};
+
+/// Largest ratio of a row's lcm to its largest denominator (in terms) for which the row is
+/// cleared to one denominator.
+const LCM_GROWTH: usize = 8;
 
 /// $AB$ for row-major `a` (`m x l`) and `b` (`l x n`); `None` when the generic loop is as
 /// good (all denominators constant, or `l < 2`).
@@ -28,12 +39,24 @@ pub fn mul_qp(
         return None;
     }
     let nv = k.nvars();
-    let (pa, da) = clear_rows(nv, m, l, a);
     let bt: Vec<RatFunc> = (0..n * l).map(|t| b[(t % l) * n + t / l].clone()).collect();
     let (qb, eb) = clear_rows(nv, n, l, &bt);
     let mut out = Vec::with_capacity(m * n);
     for i in 0..m {
-        let row = &pa[i * l..(i + 1) * l];
+        let Some((row, di)) = clear_row_bounded(nv, &a[i * l..(i + 1) * l]) else {
+            // fraction by fraction (see the module docs)
+            for j in 0..n {
+                let mut acc = k.zero();
+                for t in 0..l {
+                    let (x, y) = (&a[i * l + t], &b[t * n + j]);
+                    if !k.is_zero(x) && !k.is_zero(y) {
+                        k.mul_add_assign(&mut acc, x, y);
+                    }
+                }
+                out.push(acc);
+            }
+            continue;
+        };
         for j in 0..n {
             let col = &qb[j * l..(j + 1) * l];
             let mut acc = MPoly::zero(nv);
@@ -45,11 +68,37 @@ pub fn mul_qp(
             out.push(if acc.is_zero() {
                 k.zero()
             } else {
-                reduce(k, acc, &da[i], &eb[j])
+                reduce(k, acc, &di, &eb[j])
             });
         }
     }
     Some(out)
+}
+
+/// The row times the lcm of its denominators, and that lcm; `None` when the lcm grows
+/// past [`LCM_GROWTH`] times the terms of the row's largest denominator.
+fn clear_row_bounded(nv: usize, row: &[RatFunc]) -> Option<(Vec<MPoly>, MPoly)> {
+    let largest = row.iter().map(|e| e.den().len()).max().unwrap_or(1);
+    let mut d = MPoly::one(nv);
+    for e in row {
+        if !e.den().is_one() && !e.num().is_zero() {
+            d = lcm(&d, e.den());
+            if d.len() > LCM_GROWTH * largest {
+                return None;
+            }
+        }
+    }
+    let cleared = row
+        .iter()
+        .map(|e| {
+            if e.num().is_zero() {
+                MPoly::zero(nv)
+            } else {
+                e.num().mul(&d.div_exact(e.den()).expect("lcm"))
+            }
+        })
+        .collect();
+    Some((cleared, d))
 }
 
 /// `num / (d e)` in lowest terms: the two denominators divided out one at a time (exact

@@ -117,14 +117,13 @@ fn echelon(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Echelo
             .flat_map(|&i| b[i * n..(i + 1) * n].iter().cloned())
             .collect();
         let all: Vec<usize> = (0..r).collect();
-        let bounds = Bounds::of_rows(nv, n, &c, &all);
+        let map = |pr: &Prime, x: &mut [u64]| minors_and_solve_mod_p(pr, n, x, &piv, &free);
+        let bounds = Bounds::of_rows(nv, n, &c, &all).probe(&c, &map);
         let nout = r + r * free.len();
         if grid_points(&bounds).saturating_mul(nout + c.len()) > MAX_VALUES {
             return None;
         }
-        let out = match interpolate_zp(nv, &c, &bounds, nout, true, |pr, x| {
-            minors_and_solve_mod_p(pr, n, x, &piv, &free)
-        }) {
+        let out = match interpolate_zp(nv, &c, &bounds, nout, true, map) {
             Ok(Some(o)) => o,
             Ok(None) => continue,
             Err(_) => return None,

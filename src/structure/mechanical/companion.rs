@@ -60,9 +60,10 @@ pub fn interleaved_controller_form<K: Field>(
     let coeff = |l: usize| -> K::Elem { chi.coeff(l) };
     // rows w A^j, j < n
     let mut powers = vec![w.row(0).to_vec()];
-    for j in 1..n {
-        let next = row_times(&powers[j - 1], a);
-        powers.push(next);
+    let mut wa = w.clone();
+    for _ in 1..n {
+        wa = wa.try_mul(a)?;
+        powers.push(wa.row(0).to_vec());
     }
     // columns S_{:,k}: S_{:,n-1} = b, S_{:,k} = A S_{:,k+1} + a_{k+1} b
     let mut s_cols = vec![b.clone(); n];
@@ -94,24 +95,6 @@ pub fn interleaved_controller_form<K: Field>(
         }
     }
     Ok(Some((t, t_inv, a_tilde)))
-}
-
-/// The row `v A`, entry by entry with the field's own sums (no common denominator of `v`:
-/// the entries of $w$ carry different ones, whose common multiple can be large).
-fn row_times<K: Field>(v: &[K::Elem], a: &Matrix<K>) -> Vec<K::Elem> {
-    let k = a.field();
-    (0..a.ncols())
-        .map(|c| {
-            let mut acc = k.zero();
-            for (i, x) in v.iter().enumerate() {
-                let y = a.get(i, c);
-                if !k.is_zero(x) && !k.is_zero(y) {
-                    k.mul_add_assign(&mut acc, x, y);
-                }
-            }
-            acc
-        })
-        .collect()
 }
 
 #[cfg(test)]

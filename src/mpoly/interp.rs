@@ -9,91 +9,31 @@
 //! **Certificate.** A polynomial taking one entry from each row $i \in I$ of $B$ (a minor on
 //! the rows $I$, a coefficient of $\det(xI - B_{II})$) has degree in $p_v$ at most
 //! $\sum_{i \in I} \max_j \deg_{p_v} B_{ij}$ and total degree at most
-//! $D = \sum_{i \in I} \max_j \operatorname{tdeg} B_{ij}$, so the box grid of that many plus
-//! one points per parameter, or the simplex grid $\{e : |e| \le D\}$ (unisolvent for total
-//! degree $D$, with any distinct nodes per axis), determines it; the smaller grid is used.
+//! $D = \sum_{i \in I} \max_j \operatorname{tdeg} B_{ij}$, so the lower set
+//! $\{e : e_v \le d_v, |e| \le D\}$ of node indices (the box of $d_v + 1$ points per
+//! parameter cut by the simplex of total degree $D$; unisolvent for the polynomials
+//! supported on it, with any distinct nodes per axis) determines it. Degrees may be probed
+//! first ([`super::probe`]).
 //! With $r_i = \sum_j \lVert B_{ij} \rVert_1$ (1-norms are submultiplicative) every integer
 //! coefficient is at most $\prod_{i \in I} (1 + r_i)$ in absolute value, and enough primes are
 //! taken for twice that bound: the symmetric CRT lift is exact. The nodes of axis $v$ are
 //! $c_v, c_v + 1, \dots$ with a shift $c_v$ (zero, or random when the per-point map may meet
 //! a point where it is undefined: it returns `None` and the prime is retried with new shifts).
 
+use super::MPoly;
 use crate::error::{Error, Result};
-use crate::mpoly::MPoly;
 use crate::qkernels::modular::crt::Crt;
 use crate::qkernels::prime::{Prime, nth_prime};
 use crate::rng::SplitMix64;
 use num_bigint::{BigInt, Sign};
-use num_traits::{One, Signed, Zero};
+use num_traits::Zero;
 use std::collections::HashMap;
 
 /// Largest interpolation grid (points per prime) accepted by [`interpolate_zp`].
 pub const MAX_GRID_POINTS: usize = 1 << 20;
 
-/// Degree and coefficient bounds of the outputs (see the module docs).
-#[derive(Clone, Debug)]
-pub struct Bounds {
-    /// Degree bound per parameter.
-    pub dv: Vec<u32>,
-    /// Total-degree bound.
-    pub dtot: u32,
-    /// Bound on the absolute value of every integer coefficient.
-    pub coef: BigInt,
-}
-
-impl Bounds {
-    /// Bounds for polynomials taking one entry from each row in `rows` of the row-major
-    /// `B` with `ncols` columns (and possibly the 1 of $xI$).
-    pub fn of_rows(nvars: usize, ncols: usize, b: &[MPoly], rows: &[usize]) -> Self {
-        let mut dv = vec![0u32; nvars];
-        let mut dtot = 0u32;
-        let mut coef = BigInt::one();
-        for &i in rows {
-            let mut rowmax = vec![0u32; nvars];
-            let mut rowtot = 0u32;
-            let mut r = BigInt::zero();
-            for e in &b[i * ncols..(i + 1) * ncols] {
-                for (v, d) in e.degrees().into_iter().enumerate() {
-                    rowmax[v] = rowmax[v].max(d);
-                }
-                rowtot = rowtot.max(e.total_degree());
-                r += norm1(e);
-            }
-            for v in 0..nvars {
-                dv[v] += rowmax[v];
-            }
-            dtot += rowtot;
-            coef *= r + 1u32;
-        }
-        Bounds { dv, dtot, coef }
-    }
-    /// Bounds for $\det B$ and the coefficients of $\det(xI - B)$, `B` square `n x n`: every
-    /// term takes one entry from each row AND each column, so the row bounds of
-    /// [`Bounds::of_rows`] and the same bounds over the columns (those of $B^T$) both hold;
-    /// the smaller of each is kept (diag-like matrices whose every row holds every parameter
-    /// but each column few of them: a grid $2^9 \cdot 10$ instead of the simplex of degree 9).
-    pub fn of_square(nvars: usize, n: usize, b: &[MPoly]) -> Self {
-        let rows: Vec<usize> = (0..n).collect();
-        let by_rows = Bounds::of_rows(nvars, n, b, &rows);
-        let bt: Vec<MPoly> = (0..n * n).map(|k| b[(k % n) * n + k / n].clone()).collect();
-        let by_cols = Bounds::of_rows(nvars, n, &bt, &rows);
-        Bounds {
-            dv: by_rows
-                .dv
-                .iter()
-                .zip(&by_cols.dv)
-                .map(|(x, y)| *x.min(y))
-                .collect(),
-            dtot: by_rows.dtot.min(by_cols.dtot),
-            coef: by_rows.coef.min(by_cols.coef),
-        }
-    }
-}
-
-/// 1-norm of a polynomial's coefficient vector.
-fn norm1(f: &MPoly) -> BigInt {
-    f.terms().iter().map(|t| t.1.abs()).sum()
-}
+pub use super::bounds::{Bounds, grid_points};
+use super::bounds::{box_inside, small_inverses};
 
 fn reduce(pr: &Prime, c: &BigInt) -> u64 {
     let (s, digits) = c.to_u64_digits();
@@ -108,38 +48,20 @@ struct Grid {
     dtot: u32,
 }
 
-/// Number of points of the grid [`interpolate_zp`] would use (the box or the simplex,
-/// whichever is smaller; `usize::MAX` on overflow).
-pub fn grid_points(bounds: &Bounds) -> usize {
-    let nbox = bounds
-        .dv
-        .iter()
-        .try_fold(1usize, |acc, &d| acc.checked_mul(d as usize + 1))
-        .unwrap_or(usize::MAX);
-    nbox.min(binomial(
-        bounds.dtot as usize + bounds.dv.len(),
-        bounds.dv.len(),
-    ))
-}
-
 fn grid(bounds: &Bounds) -> Result<Grid> {
     let nvars = bounds.dv.len();
     let sizes: Vec<usize> = bounds.dv.iter().map(|&d| d as usize + 1).collect();
-    let nbox = sizes
-        .iter()
-        .try_fold(1usize, |acc, &s| acc.checked_mul(s))
-        .unwrap_or(usize::MAX);
-    let nsimplex = binomial(bounds.dtot as usize + nvars, nvars);
-    let simplex = nsimplex < nbox;
-    if nbox.min(nsimplex) > MAX_GRID_POINTS {
+    let npoints = grid_points(bounds);
+    if npoints > MAX_GRID_POINTS {
         return Err(Error::Limit(
             "matrix over Q(p): interpolation grid too large".into(),
         ));
     }
+    let simplex = !box_inside(bounds);
     let points = if simplex {
-        simplex_points(nvars, bounds.dtot)
+        lower_points(&bounds.dv, bounds.dtot)
     } else {
-        (0..nbox)
+        (0..npoints)
             .map(|idx| {
                 let mut r = idx;
                 let mut e = vec![0u32; nvars];
@@ -161,9 +83,11 @@ fn grid(bounds: &Bounds) -> Result<Grid> {
 
 /// The `nout` polynomials whose values at each point are `f(prime, B(point))` (see the
 /// module docs); `Ok(None)` when `f` kept failing (`None`) on three shifted grids of a prime.
+/// With probed bounds ([`Bounds::probe`]) the result is accepted after
+/// [`super::probe::verify`], else the certified bounds run.
 ///
 /// # Errors
-/// `Limit` when the grid exceeds [`MAX_GRID_POINTS`].
+/// `Limit` when the grid exceeds [`MAX_GRID_POINTS`] points or [`MAX_VALUES`] residues.
 pub fn interpolate_zp<F>(
     nvars: usize,
     b: &[MPoly],
@@ -175,6 +99,37 @@ pub fn interpolate_zp<F>(
 where
     F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
 {
+    if let Some(cert) = &bounds.certified {
+        if let Ok(Some(out)) = interpolate_on(nvars, b, bounds, nout, shifted, &f)
+            && super::probe::verify(b, &out, &f)
+        {
+            return Ok(Some(out));
+        }
+        return interpolate_on(nvars, b, cert, nout, shifted, &f);
+    }
+    interpolate_on(nvars, b, bounds, nout, shifted, &f)
+}
+
+/// Largest number of residues (grid points times outputs) one prime may hold (64 MB).
+pub const MAX_VALUES: usize = 1 << 23;
+
+/// [`interpolate_zp`] on the grid of `bounds` as they are.
+fn interpolate_on<F>(
+    nvars: usize,
+    b: &[MPoly],
+    bounds: &Bounds,
+    nout: usize,
+    shifted: bool,
+    f: &F,
+) -> Result<Option<Vec<MPoly>>>
+where
+    F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
+{
+    if grid_points(bounds).saturating_mul(nout.max(1)) > MAX_VALUES {
+        return Err(Error::Limit(
+            "matrix over Q(p): interpolation needs more than 64 MB per prime".into(),
+        ));
+    }
     let g = grid(bounds)?;
     let nprimes = ((bounds.coef.bits() + 2) / 61 + 1) as usize;
     let primes: Vec<Prime> = (0..nprimes).map(nth_prime).collect();
@@ -199,7 +154,7 @@ where
                     }
                 })
                 .collect();
-            if let Some(v) = images_mod_p(pr, (&g, &lines), &ev, &shifts, nout, &f) {
+            if let Some(v) = images_mod_p(pr, (&g, &lines), &ev, &shifts, nout, f) {
                 done = Some(v);
                 break;
             }
@@ -352,44 +307,21 @@ where
     Some(vals)
 }
 
-fn binomial(n: usize, k: usize) -> usize {
-    let mut r: usize = 1;
-    for i in 0..k {
-        r = match r.checked_mul(n - i) {
-            Some(x) => x / (i + 1),
-            None => return usize::MAX,
-        };
-    }
-    r
-}
-
-/// All exponent vectors of `k` entries with sum at most `d`.
-fn simplex_points(k: usize, d: u32) -> Vec<Vec<u32>> {
-    if k == 0 {
+/// All exponent vectors $e$ with $e_v \le d_v$ and $|e| \le D$ (a lower set).
+fn lower_points(dv: &[u32], d: u32) -> Vec<Vec<u32>> {
+    let Some((&last, head)) = dv.split_last() else {
         return vec![Vec::new()];
-    }
+    };
     let mut out = Vec::new();
-    for head in simplex_points(k - 1, d) {
-        let used: u32 = head.iter().sum();
-        for last in 0..=d - used {
-            let mut e = head.clone();
-            e.push(last);
-            out.push(e);
+    for h in lower_points(head, d) {
+        let used: u32 = h.iter().sum();
+        for e in 0..=last.min(d - used) {
+            let mut x = h.clone();
+            x.push(e);
+            out.push(x);
         }
     }
     out
-}
-
-fn small_inverses(pr: &Prime, m: usize) -> Vec<u64> {
-    (0..=m)
-        .map(|j| {
-            if j == 0 {
-                0
-            } else {
-                pr.inv(j as u64).expect("small")
-            }
-        })
-        .collect()
 }
 
 /// For each axis $v$, the lines of a lower set of exponent vectors along $v$: the point
@@ -426,7 +358,7 @@ fn lower_set_lines(points: &[Vec<u32>], nvars: usize) -> Vec<Vec<Vec<usize>>> {
         .collect()
 }
 
-/// Interpolation on a lower set of exponent vectors (here the simplex $\{e : |e| \le D\}$,
+/// Interpolation on a lower set of exponent vectors (here $\{e : e_v \le d_v, |e| \le D\}$,
 /// node $e_v$ of axis $v$ at $c_v + e_v$): the Newton coefficients by divided differences
 /// along every axis in turn (on a lower set the Newton basis $\prod_v \prod_{t < e_v}
 /// (x_v - c_v - t)$ is triangular axis by axis), then the change to monomials along every
