@@ -155,6 +155,8 @@ mod steps_descriptor;
 mod steps_forms;
 #[path = "steps_systems.rs"]
 mod steps_systems;
+#[path = "response_free.rs"]
+mod response_free;
 #[path = "response_modal.rs"]
 mod response_modal;
 #[path = "study.rs"]

@@ -17,7 +17,7 @@ fn q(n: i64) -> Rational {
 /// $A = T J T^{-1}$ with $J$ block diagonal: Jordan blocks of sizes 1-3 at eigenvalues from
 /// $\{-1, -2, -1/2\}$ (so they repeat across blocks) and companion blocks of complex pairs;
 /// $T$ a product of unit triangular integer matrices (det 1).
-fn random_system(rng: &mut SplitMix64, n: usize) -> (Matrix<Q>, Matrix<Q>, Matrix<Q>) {
+pub fn random_system(rng: &mut SplitMix64, n: usize) -> (Matrix<Q>, Matrix<Q>, Matrix<Q>) {
     let mut j = Matrix::zeros(Q, n, n);
     let mut i = 0;
     while i < n {
