@@ -48,7 +48,10 @@ fn system(n: usize) -> (ModalSystem, DMatrix<f64>) {
             i += 2;
         } else if i + 2 <= n {
             // [[a, b], [-b, a]]: eigenvectors (1, +-i) at a +- ib
-            let (a, b) = (-0.05 - 0.3 * rng.uniform().abs(), 1.0 + 20.0 * rng.uniform().abs());
+            let (a, b) = (
+                -0.05 - 0.3 * rng.uniform().abs(),
+                1.0 + 20.0 * rng.uniform().abs(),
+            );
             j[(i, i)] = a;
             j[(i + 1, i + 1)] = a;
             j[(i, i + 1)] = b;

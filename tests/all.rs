@@ -139,6 +139,10 @@ mod realization;
 mod realization_planted;
 #[path = "reserved_names.rs"]
 mod reserved_names;
+#[path = "response_free.rs"]
+mod response_free;
+#[path = "response_modal.rs"]
+mod response_modal;
 #[path = "rest22.rs"]
 mod rest22;
 #[path = "robustness.rs"]
@@ -155,10 +159,6 @@ mod steps_descriptor;
 mod steps_forms;
 #[path = "steps_systems.rs"]
 mod steps_systems;
-#[path = "response_free.rs"]
-mod response_free;
-#[path = "response_modal.rs"]
-mod response_modal;
 #[path = "study.rs"]
 mod study;
 #[path = "study_classes.rs"]

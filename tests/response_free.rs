@@ -74,7 +74,9 @@ fn response_on_the_command_line_over_q() {
         r#"{"A": [[0, 1], [-2, -3]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]}"#,
     );
     let p = f.to_str().unwrap();
-    let r = json(&["response", p, "--x0", "1, 0.5", "--times", "0,1", "--format", "json"]);
+    let r = json(&[
+        "response", p, "--x0", "1, 0.5", "--times", "0,1", "--format", "json",
+    ]);
     assert_eq!(r["verified"], true);
     assert_eq!(r["terms"].as_array().unwrap().len(), 2);
     // x(t) = (5/2 e^-t - 3/2 e^-2t, -5/2 e^-t + 3 e^-2t): x(0) = (1, 1/2)
@@ -121,8 +123,7 @@ fn yaw_plane_response_in_symbols_shows_the_eq36_sign_slip() {
             .unwrap()
             .iter()
             .find(|t| {
-                k.parse(t["eigenvalue"].as_str().unwrap()).unwrap() == p(ev)
-                    && t["power"] == power
+                k.parse(t["eigenvalue"].as_str().unwrap()).unwrap() == p(ev) && t["power"] == power
             })
             .unwrap_or_else(|| panic!("term {ev} t^{power}"))["g"]
             .as_array()
@@ -170,7 +171,10 @@ fn contributions_rank_by_exact_h2_and_truncate_with_exact_error() {
         .collect();
     assert_eq!(ev, ["-1", "-2", "-3"]);
     // r^2 / (2 a) for r/(s + a)
-    let h2: Vec<&str> = modes.iter().map(|m| m["h2_squared"].as_str().unwrap()).collect();
+    let h2: Vec<&str> = modes
+        .iter()
+        .map(|m| m["h2_squared"].as_str().unwrap())
+        .collect();
     assert_eq!(h2, ["1/2", "1/400", "0"]);
     let t = &r["truncation"];
     assert_eq!(t["order"], 1);
@@ -208,7 +212,11 @@ fn truncation_properties_on_random_stable_systems() {
         }
         let all = cs.truncate(cs.modes.len()).unwrap();
         assert_eq!(all.error_h2_squared, Some(Rational::from_integer(0.into())));
-        assert_eq!(markov(&all.system, 2 * n), markov(&ss, 2 * n), "case {case}");
+        assert_eq!(
+            markov(&all.system, 2 * n),
+            markov(&ss, 2 * n),
+            "case {case}"
+        );
         // keeping nothing: the error is the whole system, its H2^2 by one Lyapunov solve
         let none = cs.truncate(0).unwrap();
         let bbt = &ss.b * &ss.b.transpose();

@@ -32,8 +32,8 @@ pub fn random_system(rng: &mut SplitMix64, n: usize) -> (Matrix<Q>, Matrix<Q>, M
             i += 2;
             continue;
         }
-        let theta = [q(-1), q(-2), Rational::new((-1).into(), 2.into())][rng.int(0, 2) as usize]
-            .clone();
+        let theta =
+            [q(-1), q(-2), Rational::new((-1).into(), 2.into())][rng.int(0, 2) as usize].clone();
         let size = (rng.int(1, 3) as usize).min(n - i);
         for k in 0..size {
             j.set(i + k, i + k, theta.clone());
@@ -71,7 +71,11 @@ fn block_frequency_response_equals_the_dense_lu() {
         let d = Matrix::from_fn(Q, 2, 2, |r, s| q((r + 2 * s) as i64));
         let jf = jordan(&a).unwrap();
         assert!(jf.verified);
-        if jf.eigenvalues.iter().any(|e| e.blocks.iter().any(|&s| s > 1)) {
+        if jf
+            .eigenvalues
+            .iter()
+            .any(|e| e.blocks.iter().any(|&s| s > 1))
+        {
             repeated += 1;
         }
         let sys = ModalSystem::from_jordan(&jf, &b, &c, &d).unwrap();
@@ -81,10 +85,16 @@ fn block_frequency_response_equals_the_dense_lu() {
         for (g, h) in dense.iter().zip(&modal) {
             let scale = g.iter().map(|z| z.norm()).fold(1.0, f64::max);
             let err = (g - h).iter().map(|z| z.norm()).fold(0.0, f64::max);
-            assert!(err <= 1e-9 * scale, "case {case}: error {err} (scale {scale})");
+            assert!(
+                err <= 1e-9 * scale,
+                "case {case}: error {err} (scale {scale})"
+            );
         }
     }
-    assert!(repeated >= 10, "only {repeated} systems with a Jordan block > 1");
+    assert!(
+        repeated >= 10,
+        "only {repeated} systems with a Jordan block > 1"
+    );
 }
 
 #[test]

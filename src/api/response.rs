@@ -138,9 +138,7 @@ pub(super) fn run<K: Field + 'static>(
             let ok = c.verified && tr.as_ref().is_none_or(|t| t.verified);
             Ok(Outcome::new(r, ok))
         }
-        ResponseCmd::Response {
-            x0, times: ts, ..
-        } => {
+        ResponseCmd::Response { x0, times: ts, .. } => {
             let n = q.ss.a.nrows();
             let xs = entries(x0, n, path)?;
             if !symbols(&xs)?.is_empty() {
@@ -150,7 +148,8 @@ pub(super) fn run<K: Field + 'static>(
             let vals: Result<Vec<_>, _> = xs
                 .iter()
                 .map(|x| {
-                    parse_rational(x).map_err(|m| Failure::input(format!("--x0 entry \"{x}\": {m}")))
+                    parse_rational(x)
+                        .map_err(|m| Failure::input(format!("--x0 entry \"{x}\": {m}")))
                 })
                 .collect();
             let x0m = Matrix::column(Q, vals?);

@@ -235,12 +235,7 @@ impl ModalSystem {
     /// $y = \operatorname{Re}(C V z)$.
     pub fn output(&self, z: &[C]) -> Vec<f64> {
         (0..self.cm.nrows())
-            .map(|o| {
-                (0..self.n())
-                    .map(|j| self.cm[(o, j)] * z[j])
-                    .sum::<C>()
-                    .re
-            })
+            .map(|o| (0..self.n()).map(|j| self.cm[(o, j)] * z[j]).sum::<C>().re)
             .collect()
     }
 }
@@ -323,8 +318,8 @@ mod tests {
         // A = [[-1, 1], [0, -1]], B = [0; 1], C = [1, 0]: G(s) = 1/(s+1)^2
         let a = qmat![[-1, 1], [0, -1]];
         let jf = crate::jordan::jordan(&a).unwrap();
-        let sys = ModalSystem::from_jordan(&jf, &qmat![[0], [1]], &qmat![[1, 0]], &qmat![[0]])
-            .unwrap();
+        let sys =
+            ModalSystem::from_jordan(&jf, &qmat![[0], [1]], &qmat![[1, 0]], &qmat![[0]]).unwrap();
         let s = C::new(0.3, 2.0);
         let want = ((s + 1.0) * (s + 1.0)).inv();
         assert!((sys.at(s).unwrap()[(0, 0)] - want).norm() < 1e-14);

@@ -161,7 +161,12 @@ pub fn contributions(ss: &StateSpace<Q>) -> Result<Contributions> {
         let r = rr.submatrix(0, piv.len(), 0, n);
         let a_p = &(&r * &ss.a) * &v;
         verified &= (&r * &v).is_identity() && &ss.a * &v == &v * &a_p;
-        let part = StateSpace::new(a_p, &r * &ss.b, &ss.c * &v, Matrix::zeros(Q, ss.c.nrows(), ss.b.ncols()))?;
+        let part = StateSpace::new(
+            a_p,
+            &r * &ss.b,
+            &ss.c * &v,
+            Matrix::zeros(Q, ss.c.nrows(), ss.b.ncols()),
+        )?;
         let (cb, bb) = (ss.c.convert_to(e), ss.b.convert_to(e));
         let residues = terms.iter().map(|t| &(&cb * &t.coeff) * &bb).collect();
         let weight = if markov_zero(&part) {

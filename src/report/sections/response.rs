@@ -28,11 +28,10 @@ fn values(times: &[(f64, Vec<f64>)]) -> Value {
         times
             .iter()
             .map(|(t, x)| {
-                Value::Obj(
-                    Report::new()
-                        .float("t", *t)
-                        .with("x", Value::List(x.iter().map(|v| Value::Float(*v)).collect())),
-                )
+                Value::Obj(Report::new().float("t", *t).with(
+                    "x",
+                    Value::List(x.iter().map(|v| Value::Float(*v)).collect()),
+                ))
             })
             .collect(),
     )
@@ -135,7 +134,11 @@ pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Re
                 .int("rank", rank + 1)
                 .with(
                     "eigenvalues",
-                    str_list(m.eigenvalues.iter().map(|&i| jf.eigenvalues[i].value.clone())),
+                    str_list(
+                        m.eigenvalues
+                            .iter()
+                            .map(|&i| jf.eigenvalues[i].value.clone()),
+                    ),
                 )
                 .int("order", m.part.a.nrows())
                 .str("h2_squared", w);
