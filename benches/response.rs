@@ -134,16 +134,17 @@ fn main() {
             let x0: Vec<f64> = (0..n).map(|i| ((i % 7) as f64) - 3.0).collect();
             let z0 = sys.to_modal(&x0);
             let steps = 1000;
+            let xv0 = nalgebra::DVector::from_vec(x0.clone());
+            let c0 = creal.row(0).transpose();
             let dense = common::bench(&format!("stepping dense n={n}"), 3, 300.0, || {
-                let mut x = x0.clone();
-                let mut next = vec![0.0; n];
+                // x <- e^(Ah) x by nalgebra's gemv, y = C x
+                let mut x = xv0.clone();
+                let mut next = nalgebra::DVector::zeros(n);
                 let mut y = 0.0;
                 for _ in 0..steps {
-                    for (r, v) in next.iter_mut().enumerate() {
-                        *v = (0..n).map(|k| phi[(r, k)] * x[k]).sum();
-                    }
+                    next.gemv(1.0, &phi, &x, 0.0);
                     std::mem::swap(&mut x, &mut next);
-                    y += (0..n).map(|k| creal[(0, k)] * x[k]).sum::<f64>();
+                    y += c0.dot(&x);
                 }
                 y
             });
