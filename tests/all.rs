@@ -141,6 +141,10 @@ mod realization;
 mod realization_planted;
 #[path = "reserved_names.rs"]
 mod reserved_names;
+#[path = "response_free.rs"]
+mod response_free;
+#[path = "response_modal.rs"]
+mod response_modal;
 #[path = "rest22.rs"]
 mod rest22;
 #[path = "robustness.rs"]

@@ -32,12 +32,13 @@ __all__ = [
 from ._api import Operations, run as _run
 from ._display import Rendered, report_parts
 from ._toolbox import ControlOps
+from ._response import ResponseOps
 from ._ops import SystemOps
 
 _METHODS = ("kalman", "rosenbrock", "ho-kalman", "jordan")
 
 
-class StateSpace(Operations, ControlOps, SystemOps, Rendered):
+class StateSpace(Operations, ControlOps, ResponseOps, SystemOps, Rendered):
     """An exact LTI system ``x' = A x + B u``, ``y = C x + D u`` (E given: ``E x' = ...``,
     converted to this standard form on input).
 

@@ -226,6 +226,7 @@ pub(super) fn file_of(cmd: &Command) -> Option<&Path> {
         Command::Dcgain { file } => Some(file),
         Command::Toolbox(c) => Some(c.file()),
         Command::Discrete(c) => Some(c.file()),
+        Command::Response(c) => Some(c.file()),
         Command::Analyze { file, .. } => file.as_deref(),
         Command::Poly { .. } | Command::Interconnect(_) => None,
     }
@@ -361,6 +362,7 @@ impl SystemVisitor for FileCommand<'_> {
             Command::Minreal { method, hankel, .. } => minreal(f, t, *method, *hankel, path),
             Command::Toolbox(c) => super::toolbox::run(c, f, t, path),
             Command::Discrete(c) => super::discrete::run(c, f, t, path),
+            Command::Response(c) => super::response::run(c, f, t, path),
             Command::Standard { .. } => Ok(standard(t, path)?),
             Command::Poly { .. }
             | Command::Pencil { .. }
@@ -383,6 +385,7 @@ impl SystemVisitor for FileCommand<'_> {
         }
         match self.cmd {
             Command::Discrete(c) => super::discrete::run(c, f, t, self.path),
+            Command::Response(c) => super::response::run_symbolic(c, t, self.path),
             Command::Bifurcations { of, depth, .. } => {
                 super::bifurcations::run(self.path, t, *of, *depth)
             }

@@ -30,6 +30,7 @@ mod interconnect;
 mod linalg;
 mod pencil_cmds;
 pub mod plots;
+mod response;
 pub mod runner;
 pub mod steps;
 mod sweep;
@@ -49,6 +50,7 @@ pub use commands::{
 pub use connect_names::{NamedConnection, connect_named};
 pub use discrete::{C2dMethod, DiscreteCmd};
 pub use interconnect::{InterconnectCmd, system_of as interconnect_system};
+pub use response::ResponseCmd;
 pub use sweep::sweep_file;
 pub use system::{Options, System, SystemVisitor};
 pub use toolbox::{GramArg, ToolboxCmd};
@@ -286,6 +288,9 @@ pub enum Command {
     /// Discrete time: exact stability, c2d, d2c.
     #[command(flatten)]
     Discrete(discrete::DiscreteCmd),
+    /// Free response from x0 in closed form; modes ranked by contribution and truncation.
+    #[command(flatten)]
+    Response(response::ResponseCmd),
     /// Structural bifurcations of a symbolic system: the generic result, then the result
     /// where each condition vanishes (solved for a parameter when linear in it).
     Bifurcations {

@@ -20,6 +20,7 @@
 //! | [`invariant_zeros`]                  | $s$ where $\operatorname{rank}[A-sI, B; C, D]$ drops    | Emami-Naeini and Van Dooren reduction   |
 //! | [`pencil_finite_eigenvalues`]        | the $r$ finite $\lambda$ with $\det(\lambda E - A) = 0$, $r$ given exactly | shift and invert, no QZ |
 //! | [`freqresp`]                         | $G(j\omega) = C(j\omega I - A)^{-1}B + D$               | complex LU solves                       |
+//! | [`modal::ModalSystem`]               | the same and $e^{Jh}$ stepping through the Jordan blocks | closed-form block inverse (eq. 56)      |
 
 use nalgebra::DMatrix;
 
@@ -33,6 +34,7 @@ mod freqresp;
 mod hqr;
 mod jordan_guess;
 mod minreal;
+pub mod modal;
 mod pencil_eig;
 pub mod random;
 mod staircase;

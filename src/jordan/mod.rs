@@ -56,7 +56,7 @@ pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use decompose::{EigenField, eigenvalues_over, jordan_over};
 pub use primary::{Component, PrimaryComponent};
 pub use real::{CompactPair, RealBlock, RealEntries, RealJordanForm, RealNote};
-pub use response::{FreeResponse, ResponseTerm};
+pub use response::{FreeResponse, ResponseTerm, StateResponse};
 pub(crate) use roots::value_string as value_display;
 
 use crate::algebraic::AlgebraicNumber;

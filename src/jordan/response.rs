@@ -124,17 +124,90 @@ impl<F: Field> FreeResponse<Ext<F>> {
                 return false;
             }
             if term.power == 0 {
-                let ps = newton_power_sums(p, p.deg().saturating_sub(1));
-                let tr = term.coeff.map(k, |x| {
-                    x.0.iter().zip(&ps).fold(k.zero(), |mut acc, (a, b)| {
-                        k.mul_add_assign(&mut acc, a, b);
-                        acc
-                    })
-                });
-                sum0 = &sum0 + &tr;
+                sum0 = &sum0 + &trace_down(&term.coeff, p, k);
             }
         }
         sum0.is_identity()
+    }
+}
+
+/// The free response from one initial state: $x(t) = e^{At} x_0 = \sum_\theta \sum_k t^k
+/// e^{\theta t} g_{\theta,k}$ with $g_{\theta,k} = G_{\theta,k} x_0$ exact in the component
+/// field (conjugate roots by embedding).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StateResponse<E: Field = NumberField> {
+    /// `(component, power k, g)` with `g` an $n \times 1$ column over the component field.
+    pub terms: Vec<(usize, usize, Matrix<E>)>,
+}
+
+impl<F: Field> FreeResponse<Ext<F>> {
+    /// $g_{\theta,k} = G_{\theta,k} x_0$ for an initial state `x0` ($n \times 1$ over $F$).
+    pub fn from_state(&self, x0: &Matrix<F>) -> StateResponse<Ext<F>> {
+        let terms = self
+            .terms
+            .iter()
+            .map(|t| {
+                let e = t.coeff.field();
+                let x = x0.map(e, |v| e.from_base(v));
+                (t.component, t.power, &t.coeff * &x)
+            })
+            .collect();
+        StateResponse { terms }
+    }
+}
+
+/// $\operatorname{Tr}_{E/F}$ of each entry, $E = F\[t\]/(p)$, from the Newton power sums of $p$.
+fn trace_down<F: Field>(m: &Matrix<Ext<F>>, p: &Poly<F>, k: &F) -> Matrix<F> {
+    let ps = newton_power_sums(p, p.deg().saturating_sub(1));
+    m.map(k, |x| {
+        x.0.iter().zip(&ps).fold(k.zero(), |mut acc, (a, b)| {
+            k.mul_add_assign(&mut acc, a, b);
+            acc
+        })
+    })
+}
+
+impl<F: Field> StateResponse<Ext<F>> {
+    /// The closed form checked exactly, on the vectors themselves: $\dot x = A x$ term by term,
+    /// $A g_k = \theta g_k + (k+1) g_{k+1}$ in each component field (the derivative of
+    /// $t^k e^{\theta t}$ is $\theta t^k e^{\theta t} + k t^{k-1} e^{\theta t}$), and $x(0) = x_0$:
+    /// $\sum_p \operatorname{Tr}_{E_p/F} g_{p,0} = x_0$. `component(i)` gives the field and the
+    /// factor $p$ of component `i`.
+    pub fn verify_over<'a>(
+        &self,
+        a: &Matrix<F>,
+        x0: &Matrix<F>,
+        component: impl Fn(usize) -> (&'a Ext<F>, &'a Poly<F>),
+    ) -> bool
+    where
+        F: 'a,
+    {
+        let k = a.field();
+        let mut sum0 = Matrix::zeros(k.clone(), a.nrows(), 1);
+        for (ci, power, g) in &self.terms {
+            let (e, p) = component(*ci);
+            let ae = a.map(e, |x| e.from_base(x));
+            let next = self
+                .terms
+                .iter()
+                .find(|(c, q, _)| c == ci && *q == power + 1)
+                .map(|(_, _, h)| h.scale(&e.from_i64(*power as i64 + 1)))
+                .unwrap_or_else(|| Matrix::zeros(e.clone(), a.nrows(), 1));
+            if &ae * g != &g.scale(&e.generator()) + &next {
+                return false;
+            }
+            if *power == 0 {
+                sum0 = &sum0 + &trace_down(g, p, k);
+            }
+        }
+        &sum0 == x0
+    }
+    /// [`StateResponse::verify_over`] with the components of `jf`.
+    pub fn verify(&self, jf: &JordanForm<F>, x0: &Matrix<F>) -> bool {
+        self.verify_over(&jf.a, x0, |i| {
+            let c = &jf.components[i];
+            (&c.field, &c.factor)
+        })
     }
 }
 
@@ -160,6 +233,40 @@ impl<F: EigenField> FreeResponse<Ext<F>> {
             .filter(|t| t.component == e.component)
             .map(|t| (t.power, t.coeff.map(&field, &f)))
             .collect()
+    }
+}
+
+impl<F: EigenField> StateResponse<Ext<F>> {
+    /// $g_{\theta,k}$ of eigenvalue `ev` of `jf` in that eigenvalue's field
+    /// ([`JordanForm::root_map`]): `(power, g)` pairs.
+    pub fn terms_of(&self, jf: &JordanForm<F>, ev: usize) -> Vec<(usize, Matrix<Ext<F>>)> {
+        let e = &jf.eigenvalues[ev];
+        let (field, f) = jf.root_map(ev);
+        self.terms
+            .iter()
+            .filter(|(c, _, _)| *c == e.component)
+            .map(|(_, k, g)| (*k, g.map(&field, &f)))
+            .collect()
+    }
+}
+
+impl StateResponse {
+    /// Floating-point value of $x(t)$ (the sum over every root of every component).
+    pub fn evaluate(&self, jf: &JordanForm, t: f64) -> Vec<f64> {
+        let n = jf.n();
+        let mut x = vec![Complex64::zero(); n];
+        for (ci, power, g) in &self.terms {
+            let c = &jf.components[*ci];
+            for (j, &(re, im)) in c.roots.iter().enumerate() {
+                let emb = c.embedding(j, "t");
+                let scal = (Complex64::new(re, im) * t).exp() * t.powi(*power as i32);
+                for (r, xr) in x.iter_mut().enumerate() {
+                    let (gr, gi) = emb.approx(g.get(r, 0));
+                    *xr += scal * Complex64::new(gr, gi);
+                }
+            }
+        }
+        x.into_iter().map(|z| z.re).collect()
     }
 }
 

@@ -20,6 +20,7 @@
 //! | [`modal_table`], [`modal_table_over`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
+pub mod contribution;
 mod controllability;
 mod ctrb_structure;
 mod damp;

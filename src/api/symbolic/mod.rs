@@ -73,6 +73,7 @@ fn name(cmd: &Command) -> &'static str {
         Command::Dcgain { .. } => "dcgain",
         Command::Toolbox(c) => c.name(),
         Command::Discrete(c) => c.name(),
+        Command::Response(c) => c.name(),
     }
 }
 

@@ -14,6 +14,7 @@ mod jordan;
 mod mpoly;
 mod pencil;
 mod realization;
+pub mod response;
 mod structure;
 mod tf_field;
 mod toolbox;

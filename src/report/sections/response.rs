@@ -1,0 +1,200 @@
+//! Reports of the free response $x(t) = e^{At} x_0$ in closed form
+//! ([`crate::jordan::StateResponse`] over $\mathbb{Q}$ and the number fields,
+//! [`crate::jordan::params::ParamResponse`] over $\mathbb{Q}(p)$) and of the mode
+//! contributions ([`crate::realization::contribution`]).
+
+use crate::algebraic::Ext;
+use crate::field::Field;
+use crate::jordan::params::ParamResponse;
+use crate::jordan::{EigenField, JordanForm, StateResponse};
+use crate::matrix::Matrix;
+use crate::ratfunc::{RatFunc, RatFuncField};
+use crate::realization::contribution::{Contributions, Truncation, Weight};
+use crate::report::{Report, Value, str_list};
+
+/// The identities every closed form here is checked by.
+pub fn response_identities() -> Value {
+    str_list([
+        "x'(t) = A x(t): A g_k = s g_k + (k+1) g_(k+1) for every eigenvalue s and power k \
+         (the derivative of t^k e^(s t) is s t^k e^(s t) + k t^(k-1) e^(s t))"
+            .to_string(),
+        "x(0) = x0: the g_0 of all eigenvalues add up to x0".to_string(),
+    ])
+}
+
+/// `x(t)` at the requested times (float evaluation of the exact closed form).
+fn values(times: &[(f64, Vec<f64>)]) -> Value {
+    Value::List(
+        times
+            .iter()
+            .map(|(t, x)| {
+                Value::Obj(Report::new().float("t", *t).with(
+                    "x",
+                    Value::List(x.iter().map(|v| Value::Float(*v)).collect()),
+                ))
+            })
+            .collect(),
+    )
+}
+
+/// The free response over an exact field with a Jordan form: one term per eigenvalue and
+/// power (`g` exact in the eigenvalue's field), the identities, `verified`, and the float
+/// values at `times`.
+pub fn state_response_report<F: EigenField>(
+    jf: &JordanForm<F>,
+    sr: &StateResponse<Ext<F>>,
+    x0: &Matrix<F>,
+    times: &[(f64, Vec<f64>)],
+    verified: bool,
+) -> Report {
+    let mut items = vec![];
+    for (ev, e) in jf.eigenvalues.iter().enumerate() {
+        for (power, g) in sr.terms_of(jf, ev) {
+            items.push(Value::Obj(
+                Report::new()
+                    .str("eigenvalue", e.value.clone())
+                    .int("power", power)
+                    .matrix("g", &g),
+            ));
+        }
+    }
+    let mut r = Report::titled("Free response x(t) = e^(At) x0 = sum_k t^k e^(s t) g")
+        .matrix("x0", x0)
+        .list("terms", items)
+        .with("identities", response_identities());
+    if !times.is_empty() {
+        r = r.with("values", values(times));
+    }
+    r.str(
+        "exact",
+        "the g are exact (in the eigenvalue's field; conjugate eigenvalues have conjugate g); \
+         the values at given times are floats",
+    )
+    .bool("verified", verified)
+}
+
+/// The free response over $\mathbb{Q}(p)$ (every eigenvalue in $\mathbb{Q}(p)$).
+pub fn param_response_report(
+    k: &RatFuncField,
+    fr: &ParamResponse,
+    x0: &[RatFunc],
+    conditions: Vec<String>,
+) -> Report {
+    let mut items = vec![];
+    for (theta, gs) in &fr.terms {
+        for (power, g) in gs.iter().enumerate() {
+            items.push(Value::Obj(
+                Report::new()
+                    .str("eigenvalue", k.fmt_elem(theta))
+                    .int("power", power)
+                    .with("g", str_list(g.iter().map(|x| k.fmt_elem(x)))),
+            ));
+        }
+    }
+    Report::titled("Free response x(t) = e^(At) x0 = sum_k t^k e^(s t) g")
+        .str("field", k.to_string())
+        .with("x0", str_list(x0.iter().map(|x| k.fmt_elem(x))))
+        .list("terms", items)
+        .with("identities", response_identities())
+        .with("conditions", str_list(conditions))
+        .bool("verified", fr.verified)
+}
+
+fn weight_values(w: &Weight) -> (String, Option<f64>) {
+    use num_traits::ToPrimitive;
+    match w {
+        Weight::Zero => ("0".into(), Some(0.0)),
+        Weight::Infinite => ("inf".into(), None),
+        Weight::H2Squared(r) => (r.to_string(), r.to_f64()),
+    }
+}
+
+/// The ranked modes (heaviest first) and, with `--keep`, the truncation with its exact error.
+pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Report {
+    let jf = &c.jordan;
+    let modes: Vec<Value> = c
+        .modes
+        .iter()
+        .enumerate()
+        .map(|(rank, m)| {
+            let (w, approx) = weight_values(&m.weight);
+            let mut residues = vec![];
+            for &ev in &m.eigenvalues {
+                let (field, f) = jf.root_map(ev);
+                for (power, h) in m.residues.iter().enumerate() {
+                    residues.push(Value::Obj(
+                        Report::new()
+                            .str("eigenvalue", jf.eigenvalues[ev].value.clone())
+                            .int("power", power)
+                            .matrix("H", &h.map(&field, &f)),
+                    ));
+                }
+            }
+            let mut r = Report::new()
+                .int("rank", rank + 1)
+                .with(
+                    "eigenvalues",
+                    str_list(
+                        m.eigenvalues
+                            .iter()
+                            .map(|&i| jf.eigenvalues[i].value.clone()),
+                    ),
+                )
+                .int("order", m.part.a.nrows())
+                .str("h2_squared", w);
+            if let Some(x) = approx {
+                r = r.float("h2_squared_approx", x);
+            }
+            Value::Obj(r.list("residues", residues))
+        })
+        .collect();
+    let mut r = Report::titled("Mode contributions (minimal-realizations paper eq. 33), heaviest first")
+        .str(
+            "weight",
+            "h2_squared = ||C_p (sI - A_p)^-1 B_p||_2^2 of the mode's part (exact, Lyapunov over Q); \
+             0: every Markov parameter of the part vanishes (eq. 33: b c = 0); inf: the part \
+             contributes and is not asymptotically stable. A mode is one irreducible factor of \
+             the characteristic polynomial (a real eigenvalue, a complex pair, or all conjugates), \
+             so every truncation stays over Q. H = C G_k B are the residues (eq. 33's products b c): \
+             G(s) = D + sum k! H / (s - eigenvalue)^(k+1)",
+        )
+        .list("modes", modes);
+    if let Some(t) = trunc {
+        let mut tr = Report::new()
+            .with(
+                "kept_ranks",
+                Value::List(t.kept.iter().map(|&i| Value::Int(i as i64 + 1)).collect()),
+            )
+            .int("order", t.system.a.nrows())
+            .matrices(&[
+                ("A", &t.system.a),
+                ("B", &t.system.b),
+                ("C", &t.system.c),
+                ("D", &t.system.d),
+            ]);
+        tr = match &t.error_h2_squared {
+            Some(h) => {
+                use num_traits::ToPrimitive;
+                tr.str("error_h2_squared", h.to_string())
+                    .float("error_h2_approx", h.to_f64().unwrap_or(f64::NAN).sqrt())
+            }
+            None => tr.str(
+                "error_h2_squared",
+                "inf (a dropped mode is not asymptotically stable)",
+            ),
+        };
+        tr = match &t.error_dc {
+            Some(m) => tr.matrix("error_dc_gain", m),
+            None => tr.str("error_dc_gain", "inf (a dropped mode has the eigenvalue 0)"),
+        };
+        tr = tr
+            .matrix("error_markov0", &t.error_markov0)
+            .str(
+                "exact",
+                "A, B, C, D and the errors are exact rationals; only *_approx are floats",
+            )
+            .bool("verified", t.verified);
+        r = r.obj("truncation", tr);
+    }
+    r.bool("verified", c.verified && trunc.is_none_or(|t| t.verified))
+}
