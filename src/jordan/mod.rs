@@ -43,6 +43,7 @@ pub mod derivation;
 pub mod fields;
 pub mod pair_field;
 pub mod params;
+pub mod normalize;
 pub mod primary;
 pub mod real;
 pub mod real_steps;

@@ -17,6 +17,7 @@ pub mod steps_forms;
 pub mod steps_html;
 pub mod steps_latex;
 pub mod steps_more;
+pub mod steps_norm;
 pub mod summary;
 pub mod text;
 
