@@ -100,7 +100,9 @@ fn paper_eq_32_orthogonal_unit_chains() {
         let k = w.field().clone();
         let q = |x: &_| k.to_rational(x).unwrap();
         let col = |j: usize| w.col(j).iter().map(q).collect::<Vec<_>>();
-        let ks = d.of_kind(StepKind::KernelSequence).find(|s| s.part == st.part);
+        let ks = d
+            .of_kind(StepKind::KernelSequence)
+            .find(|s| s.part == st.part);
         let theta = q(ks.unwrap().scalar("theta").unwrap());
         let r = |n: i64, dd: i64| exactlti::field::Rational::new(n.into(), dd.into());
         if theta == r(-1, 1) {
@@ -236,7 +238,15 @@ fn cli_normalize() {
         r#"{"A": [[0, 0, 1, 0], [0, 0, 0, 1], [-1, 0, -2, 0], [0, 0, 0, 0]]}"#,
     );
     let p = f.to_str().unwrap();
-    let j = json(&["jordan", p, "--steps", "--normalize", "paper", "--format", "json"]);
+    let j = json(&[
+        "jordan",
+        p,
+        "--steps",
+        "--normalize",
+        "paper",
+        "--format",
+        "json",
+    ]);
     assert_eq!(j["verified"], true);
     let norm: Vec<_> = j["steps"]
         .as_array()
@@ -246,15 +256,30 @@ fn cli_normalize() {
         .collect();
     assert_eq!(norm.len(), 2);
     for (args, want) in [
-        (vec!["jordan", p, "--steps", "--normalize", "bogus"], "bogus"),
+        (
+            vec!["jordan", p, "--steps", "--normalize", "bogus"],
+            "bogus",
+        ),
         (vec!["jordan", p, "--normalize", "unit"], "add --steps"),
-        (vec!["jordan", p, "--real", "--steps", "--normalize", "unit"], "--real"),
+        (
+            vec!["jordan", p, "--real", "--steps", "--normalize", "unit"],
+            "--real",
+        ),
     ] {
         let (code, _, err) = common::cli::run(&args);
         assert_eq!(code, 2, "{args:?}");
         assert!(err.contains(want), "{err}");
     }
-    let (code, out, _) = common::cli::run(&["jordan", p, "--steps", "--normalize", "orth,entry", "--format", "latex", "--standalone"]);
+    let (code, out, _) = common::cli::run(&[
+        "jordan",
+        p,
+        "--steps",
+        "--normalize",
+        "orth,entry",
+        "--format",
+        "latex",
+        "--standalone",
+    ]);
     assert_eq!(code, 0);
     assert!(out.contains("V'"), "{out}");
 }
@@ -265,7 +290,14 @@ fn cli_normalize() {
 #[test]
 fn descriptor_minimal_steps() {
     for (file, order) in [("tests/data/improper_s.json", 2)] {
-        let j = json(&["minreal", file, "--descriptor", "--steps", "--format", "json"]);
+        let j = json(&[
+            "minreal",
+            file,
+            "--descriptor",
+            "--steps",
+            "--format",
+            "json",
+        ]);
         assert_eq!(j["verified"], true, "{file}");
         let names: Vec<_> = j["steps"]
             .as_array()
@@ -302,7 +334,8 @@ fn descriptor_minimal_steps_identities_over_q_and_qp() {
         assert!(d.verified());
         let fin = d.of_kind(StepKind::DescriptorFinite).next().unwrap();
         let m = |s: &exactlti::jordan::derivation::Step<K>, k: &str| s.matrix(k).unwrap().clone();
-        let markov = |a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, j: u32| c * &(&a.pow(j).unwrap() * b);
+        let markov =
+            |a: &Matrix<K>, b: &Matrix<K>, c: &Matrix<K>, j: u32| c * &(&a.pow(j).unwrap() * b);
         for j in 0..6 {
             assert_eq!(
                 markov(&m(fin, "Af"), &m(fin, "Bf"), &m(fin, "Cf"), j),
@@ -317,7 +350,14 @@ fn descriptor_minimal_steps_identities_over_q_and_qp() {
             );
         }
         let last = d.of_kind(StepKind::DescriptorMinimalForm).next().unwrap();
-        let out = Descriptor::new(m(last, "E"), m(last, "A"), m(last, "B"), m(last, "C"), m(last, "D")).unwrap();
+        let out = Descriptor::new(
+            m(last, "E"),
+            m(last, "A"),
+            m(last, "B"),
+            m(last, "C"),
+            m(last, "D"),
+        )
+        .unwrap();
         let k = sys.a.field().clone();
         for t in 2..6 {
             let s0 = k.from_i64(t * 3 + 1);
@@ -339,7 +379,13 @@ fn descriptor_minimal_steps_identities_over_q_and_qp() {
     let k = RatFuncField::new(&["k"]).unwrap();
     let p = |s: &str| k.parse(s).unwrap();
     let mk = |rows: &[&[&str]]| {
-        Matrix::from_rows(k.clone(), rows.iter().map(|r| r.iter().map(|s| p(s)).collect()).collect()).unwrap()
+        Matrix::from_rows(
+            k.clone(),
+            rows.iter()
+                .map(|r| r.iter().map(|s| p(s)).collect())
+                .collect(),
+        )
+        .unwrap()
     };
     let sys = Descriptor::new(
         mk(&[&["0", "1", "0"], &["0", "0", "0"], &["0", "0", "1"]]),
@@ -352,4 +398,120 @@ fn descriptor_minimal_steps_identities_over_q_and_qp() {
     let mut rec = Recorder::with_log(Method::DescriptorMinimal, k.clone(), ratfunc_log(&k));
     minimal_descriptor_recorded(&sys, Some(&mut rec)).unwrap();
     check(&rec.finish(), &sys);
+}
+
+/// The audit of issue 27's Done-when: `minreal --method rosenbrock|ho-kalman --steps` over
+/// Q(p) (the chain of masses with symbols m, k, c): every step holds, the minimal part's
+/// Markov parameters are the system's (recomputed), its order is the McMillan degree, and
+/// the conditions assumed are recorded.
+#[test]
+fn rosenbrock_and_ho_kalman_steps_over_qp() {
+    use exactlti::jordan::derivation::{Method, Recorder, ratfunc_log};
+    use exactlti::realization::{
+        mcmillan_degree, minimal_ho_kalman_recorded, minimal_rosenbrock_recorded,
+    };
+    use exactlti::system::StateSpace;
+    let sys = common::systems::chain_qp(2);
+    let k = sys.field().fresh();
+    let mv =
+        |m: &Matrix<_>| Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec());
+    let s = StateSpace::new(mv(&sys.a), mv(&sys.b), mv(&sys.c), mv(&sys.d)).unwrap();
+    for method in [Method::Rosenbrock, Method::HoKalman] {
+        let mut rec = Recorder::with_log(method, k.clone(), ratfunc_log(&k));
+        if method == Method::Rosenbrock {
+            minimal_rosenbrock_recorded(&s, Some(&mut rec)).unwrap();
+        } else {
+            minimal_ho_kalman_recorded(&s, Some(&mut rec)).unwrap();
+        }
+        let d = rec.finish();
+        assert!(d.verified(), "{method:?}");
+        let mp = d
+            .of_kind(StepKind::MinimalPart)
+            .next()
+            .or_else(|| d.of_kind(StepKind::HankelFactor).next())
+            .unwrap();
+        let m = |key: &str| mp.matrix(key).unwrap().clone();
+        let min = StateSpace::new(m("Am"), m("Bm"), m("Cm"), s.d.clone()).unwrap();
+        let n = s.nstates() + min.nstates();
+        assert_eq!(s.markov(n), min.markov(n), "{method:?}");
+        assert_eq!(min.nstates(), mcmillan_degree(&s), "{method:?}");
+        if method == Method::Rosenbrock {
+            let st = d.of_kind(StepKind::Staircase).next().unwrap();
+            let t = st.matrix("T").unwrap();
+            assert_eq!(&s.a * t, t * st.matrix("At").unwrap(), "A T = T At");
+        }
+    }
+}
+
+/// |B| = |Bt| (the minimal-realization paper after eq. 36) on a repeated real mode: two
+/// copies of -1 (SISO) compact to one; the step scales Bt, Ct with a^2 = |B|^2 / |Bt|^2,
+/// exact when a is rational (B = (3, 4): |B| = 5) and in closed form otherwise (B = (1, 2)).
+#[test]
+fn compaction_matches_the_input_norm() {
+    use exactlti::realization::steps::jordan_method_steps;
+    use exactlti::system::StateSpace;
+    let mut exact_seen = [false, false];
+    for (b1, b2) in [(3, 4), (1, 2)] {
+        let a = qmat![[-1, 0], [0, -1]];
+        let s = StateSpace::new(a, qmat![[b1], [b2]], qmat![[5, 7]], qmat![[0]]).unwrap();
+        let d = jordan_method_steps(&s).unwrap();
+        assert!(d.verified());
+        let nm = d.of_kind(StepKind::NormMatch).next().expect("a norm step");
+        let k = nm.matrix("Bt").unwrap().field().clone();
+        let dropped = d.of_kind(StepKind::DropModes).next().unwrap();
+        let (bk, ck) = (dropped.matrix("Bk").unwrap(), dropped.matrix("Ck").unwrap());
+        let (bt, ct) = (nm.matrix("Bt").unwrap(), nm.matrix("Ct").unwrap());
+        let sq = |m: &Matrix<_>| dot(&k, m.as_slice(), m.as_slice());
+        // C B is the only Markov parameter shape here (J = -1 I): Ct Bt = C B
+        assert_eq!(ct * bt, ck * bk);
+        assert_eq!(nm.scalar("nB"), Some(&sq(bk)));
+        assert_eq!(
+            k.mul(nm.scalar("a2").unwrap(), nm.scalar("nBt").unwrap()),
+            sq(bk)
+        );
+        let exact = nm.scalar("a").is_some();
+        if exact {
+            assert_eq!(sq(bt), sq(bk), "|Bt| = |B|");
+        }
+        exact_seen[usize::from(exact)] = true;
+    }
+    assert_eq!(exact_seen, [true, true], "both cases met");
+}
+
+/// T = I when the system is already in mechanical normal form, over Q (the Q(p) case is
+/// the paper's App. B in `tests/steps_forms.rs`): A = [0, I; -K, -D], B = [0; I]; the search
+/// step takes T = I, which solves eq. 15, and the form's K and D are read back.
+#[test]
+fn mnf_of_a_normal_form_is_the_identity_over_q() {
+    use exactlti::jordan::derivation::{Method, Recorder};
+    use exactlti::structure::mechanical::{
+        DEFAULT_MAX_CANDIDATES, mechanical_normal_form_recorded,
+    };
+    let a = qmat![[0, 0, 1, 0], [0, 0, 0, 1], [-2, 1, -3, 0], [1, -2, 0, -1]];
+    let b = qmat![[0], [0], [1], [0]];
+    let b = b.hstack(&qmat![[0], [0], [0], [1]]).unwrap();
+    let c = qmat![[1, 0, 0, 0]];
+    let d = qmat![[0, 0]];
+    let mut rec = Recorder::new(Method::Mnf, Q);
+    mechanical_normal_form_recorded(
+        None,
+        [&a, &b, &c, &d],
+        DEFAULT_MAX_CANDIDATES,
+        Some(&mut rec),
+    )
+    .unwrap();
+    let der = rec.finish();
+    assert!(der.verified());
+    let se = der.of_kind(StepKind::MnfSearch).next().unwrap();
+    assert_eq!(se.count("t_equals_i"), Some(1));
+    let t = se.matrix("T").unwrap();
+    assert!(t.is_identity());
+    // T = I solves eq. 15: T A = A has the normal form's rows [0 I] on top, T B = B = [0; I]
+    assert_eq!(
+        &(t * &a).submatrix(0, 2, 0, 4),
+        &qmat![[0, 0, 1, 0], [0, 0, 0, 1]]
+    );
+    let fm = der.of_kind(StepKind::MnfForm).next().unwrap();
+    assert_eq!(fm.matrix("Kq").unwrap(), &qmat![[2, -1], [-1, 2]]);
+    assert_eq!(fm.matrix("Dq").unwrap(), &qmat![[3, 0], [0, 1]]);
 }

@@ -69,8 +69,7 @@ pub(super) fn a_command<K: Field + 'static>(
 ) -> Option<Result<Outcome, Failure>> {
     Some(match cmd {
         Command::Jordan {
-            normalize: Some(_),
-            ..
+            normalize: Some(_), ..
         } => Err(Failure::input(format!(
             "{}: --normalize shows the normalised chains in the derivation: add --steps",
             path.display()

@@ -21,10 +21,10 @@ use crate::field::Q;
 use crate::io::TypedAny;
 use crate::io::TypedSystem;
 use crate::io::symbolic::SymbolicOptions;
-use crate::jordan::normalize::Normalization;
 use crate::jordan::derivation::{
     AssumptionLog, Derivation, Method, Object, Recorder, Step, ratfunc_log,
 };
+use crate::jordan::normalize::Normalization;
 use crate::report::steps::derivation_report;
 use crate::report::steps_latex::derivation_latex;
 use crate::system::{Descriptor, StateSpace};
@@ -272,7 +272,9 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
     }
     if what == What::DescriptorMinimal {
         return match &loaded.system {
-            TypedAny::Rational(t) => out.show(&desc_min(&t.ss, t.descriptor.as_ref(), None).map_err(e)?),
+            TypedAny::Rational(t) => {
+                out.show(&desc_min(&t.ss, t.descriptor.as_ref(), None).map_err(e)?)
+            }
             TypedAny::Quadratic(t) => {
                 out.show(&desc_min(&t.ss, t.descriptor.as_ref(), None).map_err(e)?)
             }
@@ -383,7 +385,12 @@ fn descriptor_file(file: &Path, out: &Render) -> Option<Result<Outcome, Failure>
                 // a fresh field: its conditions are the ones this derivation assumes
                 let k = r.a.field().fresh();
                 let m = |x: &crate::matrix::Matrix<_>| {
-                    crate::matrix::Matrix::from_vec(k.clone(), x.nrows(), x.ncols(), x.as_slice().to_vec())
+                    crate::matrix::Matrix::from_vec(
+                        k.clone(),
+                        x.nrows(),
+                        x.ncols(),
+                        x.as_slice().to_vec(),
+                    )
                 };
                 let d = Descriptor::new(m(&r.e), m(&r.a), m(&r.b), m(&r.c), m(&r.d)).map_err(e)?;
                 return self.1.show(&der(&d, Some(ratfunc_log(&k))).map_err(e)?);

@@ -77,9 +77,14 @@ impl std::str::FromStr for Normalization {
                     scale(&mut out, Scale::Unit)?;
                 }
                 p if p.starts_with("entry:") => {
-                    let r: usize = p["entry:".len()..].parse().ok().filter(|&r| r >= 1).ok_or(
-                        format!("--normalize `{p}`: the row after `entry:` is a number >= 1"),
-                    )?;
+                    let r: usize =
+                        p["entry:".len()..]
+                            .parse()
+                            .ok()
+                            .filter(|&r| r >= 1)
+                            .ok_or(format!(
+                                "--normalize `{p}`: the row after `entry:` is a number >= 1"
+                            ))?;
                     scale(&mut out, Scale::Entry(Some(r - 1)))?;
                 }
                 _ => {

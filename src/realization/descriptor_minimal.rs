@@ -29,13 +29,13 @@
 //! has minimal order 3, that gave 4.)
 
 use super::controllability::{is_controllable, is_observable};
-use super::descriptor_minimal_steps as steps;
-use crate::jordan::derivation::Recorder;
 use super::descriptor_elim::remove_nondynamic;
+use super::descriptor_minimal_steps as steps;
 use super::minimal::minimal_kalman;
 use super::weierstrass::same_transfer;
 use crate::error::Result;
 use crate::field::Field;
+use crate::jordan::derivation::Recorder;
 use crate::matrix::Matrix;
 use crate::system::{Descriptor, StateSpace};
 

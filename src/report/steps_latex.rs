@@ -182,7 +182,9 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>, a4: bool) {
     for &(c0, c1) in &blocks {
         let head = if blocks.len() > 1 {
             // braces: a name with its own subscript (A_s, A_{22}) takes the block's
-            format!("{{{name}}}_{{:,\\,{}..{}}}", c0 + 1, c1)
+            // and `{}` inside: TeX unwraps a group of one accent atom (\bar C_i), whose
+            // subscript would then be a double one
+            format!("{{{name}{{}}}}_{{:,\\,{}..{}}}", c0 + 1, c1)
         } else {
             name.to_string()
         };
@@ -346,15 +348,17 @@ fn display_wrapped(s: &mut String, name: &str, body: &str) {
         let _ = writeln!(s, "\\[ {name} = {body} \\]");
         return;
     }
-    // split before " + " / " - " outside \left( ... \right)
+    // split before " + " / " - " outside \left( ... \right) and outside braces (the
+    // numerator of a \frac is one term)
     let (mut parts, mut cur, mut depth) = (vec![], String::new(), 0i32);
     let b = body.as_bytes();
     let mut i = 0;
     while i < b.len() {
         let rest = &body[i..];
-        if rest.starts_with("\\left") {
+        let escaped = i > 0 && b[i - 1] == b'\\';
+        if rest.starts_with("\\left") || (rest.starts_with('{') && !escaped) {
             depth += 1;
-        } else if rest.starts_with("\\right") {
+        } else if rest.starts_with("\\right") || (rest.starts_with('}') && !escaped) {
             depth -= 1;
         }
         if depth == 0 && (rest.starts_with(" + ") || rest.starts_with(" - ")) && !cur.is_empty() {

@@ -73,7 +73,9 @@ fn scaled_text<K: Field>(d: &Derivation<K>, s: &Step<K>, latex: bool) -> String 
         }
     };
     if let Some(r) = s.count("row") {
-        return format!(" The whole chain is divided by entry {r} of the eigenvector, which becomes 1 (exact).");
+        return format!(
+            " The whole chain is divided by entry {r} of the eigenvector, which becomes 1 (exact)."
+        );
     }
     if cnt(s, "refused") == 1 {
         return " Unit length refused: the eigenvalue is not real, and v . v is not a length (v^H v needs complex conjugation, which is not a map of this field); the chain keeps its other normalisations.".into();
@@ -119,7 +121,9 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
                     ", a = {} exact (shown: the scaled Bt, Ct)",
                     super::steps::step_field(d, s).fmt_elem(a)
                 ),
-                None => ", a = sqrt(a^2) not in the field: closed form (shown: Bt, Ct before scaling)".into(),
+                None =>
+                    ", a = sqrt(a^2) not in the field: closed form (shown: Bt, Ct before scaling)"
+                        .into(),
             }
         ),
         StepKind::DescriptorFinite => format!(
@@ -162,10 +166,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
 /// `" of theta = ..."` for a step of an eigenvalue part.
 fn theta_text<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
     match super::steps::theta_step(d, s.part).and_then(|t| t.scalar("theta").map(|x| (t, x))) {
-        Some((t, x)) => format!(
-            " of theta = {}",
-            super::steps::step_field(d, t).fmt_elem(x)
-        ),
+        Some((t, x)) => format!(" of theta = {}", super::steps::step_field(d, t).fmt_elem(x)),
         None => String::new(),
     }
 }
