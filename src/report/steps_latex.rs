@@ -253,7 +253,7 @@ fn entries_latex(s: &mut String, name: &str, cells: &[Vec<String>]) {
         for (j, c) in row.iter().enumerate() {
             let _ = writeln!(
                 s,
-                r"\[ {{{name}}}_{{({},{})}} = {} \]",
+                r"\[ {{{name}{{}}}}_{{({},{})}} = {} \]",
                 i + 1,
                 j + 1,
                 break_digits(c)
@@ -293,7 +293,24 @@ pub(crate) fn object_latex<K: Field>(
                     if *e > 1 { format!("{b}^{{{e}}}") } else { b }
                 })
                 .collect();
-            let _ = writeln!(s, "\\[ {name} = {} \\]", parts.join(""));
+            let all = parts.join("");
+            if !a4 || typeset_len(&all) <= LINE_CHARS {
+                let _ = writeln!(s, "\\[ {name} = {all} \\]");
+                return;
+            }
+            // too wide for the page: the product by names, then each factor on its own
+            let names: Vec<String> = fs
+                .iter()
+                .enumerate()
+                .map(|(i, (_, e))| {
+                    let b = format!("p_{{{}}}", i + 1);
+                    if *e > 1 { format!("{b}^{{{e}}}") } else { b }
+                })
+                .collect();
+            let _ = writeln!(s, "\\[ {name} = {} \\]", names.join("\\,"));
+            for (i, (p, _)) in fs.iter().enumerate() {
+                display_wrapped(s, &format!("p_{{{}}}", i + 1), &poly_latex(p, "s"));
+            }
         }
         Object::Scalar(x) => {
             let _ = writeln!(s, "\\[ {name} = {} \\]", entry(field, x));
@@ -464,7 +481,11 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
             .iter()
             .map(|x| format!("{} \\ne 0", d.field.latex_elem(x)))
             .collect();
-        let _ = writeln!(s, "\\noindent Assumes: ${}$.\n", conds.join(",\\ "));
+        let _ = writeln!(
+            s,
+            "{{\\sloppy\\noindent Assumes: ${}$.\\par}}\n",
+            conds.join(",\\ ")
+        );
     }
 }
 
