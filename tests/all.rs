@@ -167,6 +167,8 @@ mod steps;
 mod steps_descriptor;
 #[path = "steps_forms.rs"]
 mod steps_forms;
+#[path = "steps_normalize.rs"]
+mod steps_normalize;
 #[path = "steps_systems.rs"]
 mod steps_systems;
 #[path = "study.rs"]

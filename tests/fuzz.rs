@@ -215,6 +215,7 @@ fn commands(file: &Path) -> Vec<Command> {
             file: f(),
             real: false,
             expand: false,
+            normalize: None,
         },
         Command::Standard { file: f() },
         Command::Scb { file: f() },
@@ -244,6 +245,7 @@ fn commands(file: &Path) -> Vec<Command> {
         file: f(),
         real: true,
         expand: false,
+        normalize: None,
     });
     for method in [
         MethodArg::Kalman,

@@ -238,6 +238,7 @@ fn real_jordan_form_is_exact_for_sextic_and_septic_factors() {
             file: data(f),
             real: true,
             expand: false,
+            normalize: None,
         })
         .unwrap();
         assert!(out.verified, "{f}");

@@ -75,11 +75,15 @@ class Derivation(list, Rendered):
         return "Derivation(%d steps over %s, verified=%s)" % (len(self), self.field, self.verified)
 
 
-def steps(system, command, method=None, real=False, expand=False, max_seconds=None):
+def steps(system, command, method=None, real=False, expand=False, max_seconds=None,
+          normalize=None, descriptor=False):
     """The derivation of ``command`` on ``system`` step by step (the command line's
     ``exactlti COMMAND FILE --steps``): ``command`` is one of :data:`COMMANDS`;
     ``method`` for ``minreal`` (``"kalman"``, ``"rosenbrock"``, ``"ho-kalman"``,
-    ``"jordan"``), ``real`` (and ``expand``) for ``jordan``.
+    ``"jordan"``), ``descriptor=True`` for ``minreal --descriptor``, ``real`` (and
+    ``expand``) for ``jordan``, ``normalize`` for ``jordan`` (``"orth"``: generalized
+    eigenvectors orthogonal to the eigenvector, eq. 31; ``"entry"``, ``"entry:<row>"``,
+    ``"unit"``; ``"paper"`` = ``"orth,unit"``).
 
     >>> import exactlti
     >>> G = exactlti.ss([[1, 1], [0, 1]], [[0], [1]], [[1, 0]])
@@ -97,6 +101,14 @@ def steps(system, command, method=None, real=False, expand=False, max_seconds=No
         if command != "minreal":
             raise ValueError("steps: method is an option of minreal")
         argv += ["--method", str(method)]
+    if descriptor:
+        if command != "minreal":
+            raise ValueError("steps: descriptor is an option of minreal")
+        argv.append("--descriptor")
+    if normalize is not None:
+        if command != "jordan":
+            raise ValueError("steps: normalize is an option of jordan")
+        argv += ["--normalize", str(normalize)]
     if real:
         argv.append("--real")
     if expand:

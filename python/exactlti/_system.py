@@ -288,14 +288,16 @@ class StateSpace(Operations, ControlOps, ResponseOps, SystemOps, Rendered):
         r._source = (self, "tf")
         return r
 
-    def steps(self, command, method=None, real=False, expand=False, max_seconds=None):
+    def steps(self, command, method=None, real=False, expand=False, max_seconds=None,
+              normalize=None, descriptor=False):
         """The derivation of ``command`` (``"jordan"``, ``"minreal"``, ``"scb"``,
         ``"zeros"``, ``"tf"``, ``"standard"``, ``"mnf"``) step by step: a
-        :class:`Derivation` (see :func:`exactlti.steps`)."""
+        :class:`Derivation` (see :func:`exactlti.steps`; ``normalize`` for ``jordan``,
+        ``descriptor`` for ``minreal``)."""
         from ._steps import steps
 
         return steps(self, command, method=method, real=real, expand=expand,
-                     max_seconds=max_seconds)
+                     max_seconds=max_seconds, normalize=normalize, descriptor=descriptor)
 
     def markov(self, count, max_seconds=None):
         """Markov parameters ``C A^k B`` for ``k = 0 .. count-1``."""

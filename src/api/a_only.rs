@@ -68,6 +68,12 @@ pub(super) fn a_command<K: Field + 'static>(
     path: &Path,
 ) -> Option<Result<Outcome, Failure>> {
     Some(match cmd {
+        Command::Jordan {
+            normalize: Some(_), ..
+        } => Err(Failure::input(format!(
+            "{}: --normalize shows the normalised chains in the derivation: add --steps",
+            path.display()
+        ))),
         Command::Jordan { real, expand, .. } => jordan_any(a, (*real, *expand), path),
         Command::Linalg { op, .. } => linalg_report(*op, a, path).map(Outcome::plain),
         _ => return None,

@@ -88,6 +88,12 @@ pub enum Command {
         /// d(d-1) for an eigenvalue of degree d) instead of the compact form.
         #[arg(long)]
         expand: bool,
+        /// With --steps: normalise the chains, a comma list of `orth` (generalized
+        /// eigenvectors orthogonal to the eigenvector, minimal-realization paper eq. 31),
+        /// `entry` or `entry:<row>` (that entry of the eigenvector = 1), `unit` (unit-length
+        /// eigenvectors, exact or in closed form); `paper` = `orth,unit` (eq. 32).
+        #[arg(long, value_name = "LIST")]
+        normalize: Option<String>,
     },
     /// Minimal realization.
     Minreal {

@@ -24,6 +24,7 @@ use crate::io::symbolic::SymbolicOptions;
 use crate::jordan::derivation::{
     AssumptionLog, Derivation, Method, Object, Recorder, Step, ratfunc_log,
 };
+use crate::jordan::normalize::Normalization;
 use crate::report::steps::derivation_report;
 use crate::report::steps_latex::derivation_latex;
 use crate::system::{Descriptor, StateSpace};
@@ -43,6 +44,8 @@ enum What {
     HoKalman,
     Standard,
     Mnf,
+    /// `minreal --descriptor`.
+    DescriptorMinimal,
 }
 
 /// `--steps` for a case it does not cover (exit 2; Python's `UnsupportedError`).
@@ -50,7 +53,7 @@ fn refuse(message: String) -> Failure {
     Failure::unsupported(message)
 }
 
-const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf` and `minreal --method kalman|jordan|rosenbrock|ho-kalman` (not for `minreal --method era` or `--descriptor`)";
+const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf`, `minreal --method kalman|jordan|rosenbrock|ho-kalman` and `minreal --descriptor` (not for `minreal --method era`)";
 
 /// The file and the derivation `cmd` asks for.
 fn what(cmd: &Command) -> Option<(&Path, What)> {
@@ -61,10 +64,10 @@ fn what(cmd: &Command) -> Option<(&Path, What)> {
         Command::Jordan { file, expand, .. } => (file, What::RealJordan(*expand)),
         Command::Minreal {
             file,
-            method,
-            descriptor: false,
+            descriptor: true,
             ..
-        } => (
+        } => (file, What::DescriptorMinimal),
+        Command::Minreal { file, method, .. } => (
             file,
             match method {
                 MethodArg::Kalman => What::Kalman,
@@ -182,8 +185,20 @@ pub fn execute(
         return Err(refuse(refusal(cmd)));
     };
     let opts = SymbolicOptions::from_args(symbolic, at).map_err(Failure::input)?;
-    let sys = super::System::open(file, &opts).map_err(Failure::from)?;
-    derive(cmd, &sys, &Render { format, standalone })
+    let render = Render { format, standalone };
+    let sys = match super::System::open(file, &opts) {
+        Ok(sys) => sys,
+        Err(err) => {
+            // an improper descriptor system: read as a descriptor system only
+            return match what(cmd) {
+                Some((_, What::DescriptorMinimal)) => {
+                    descriptor_file(file, &render).unwrap_or_else(|| Err(Failure::from(err)))
+                }
+                _ => Err(Failure::from(err)),
+            };
+        }
+    };
+    derive(cmd, &sys, &render)
 }
 
 /// A derivation with every rendering built (the library's callers, the Python package):
@@ -231,9 +246,6 @@ fn refusal(cmd: &Command) -> String {
             method: MethodArg::Era,
             ..
         } => "--steps: `minreal --method era` is the float path (an SVD of the Hankel matrix, identities only up to round-off), so it has no exact derivation; `minreal --method ho-kalman --steps` derives the exact rank factorization of the same Hankel matrix".into(),
-        Command::Minreal {
-            descriptor: true, ..
-        } => "--steps: `minreal --descriptor` keeps the infinite (impulsive) part of the pencil, which the standard form removes; its derivation is not written yet: `standard --steps` derives the standard form and `minreal --steps` its minimal realization (the same transfer matrix when the file's is proper)".into(),
         _ => AVAILABLE.into(),
     }
 }
@@ -244,6 +256,7 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
         return Err(refuse(refusal(cmd)));
     };
     let file = sys.path();
+    let norm = normalization(cmd)?;
     let loaded = sys.loaded();
     let e = |err: crate::error::Error| super::common::with_path(file, err);
     let descriptor = match &loaded.system {
@@ -257,17 +270,34 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             path_text(file)
         )));
     }
+    if what == What::DescriptorMinimal {
+        return match &loaded.system {
+            TypedAny::Rational(t) => {
+                out.show(&desc_min(&t.ss, t.descriptor.as_ref(), None).map_err(e)?)
+            }
+            TypedAny::Quadratic(t) => {
+                out.show(&desc_min(&t.ss, t.descriptor.as_ref(), None).map_err(e)?)
+            }
+            TypedAny::RatFunc(t) => {
+                let k = t.ss.field().fresh();
+                let t = t.in_field(&k);
+                let log = Some(ratfunc_log(&k));
+                out.show(&desc_min(&t.ss, t.descriptor.as_ref(), log).map_err(e)?)
+            }
+        };
+    }
     match (&loaded.system, what) {
-        (TypedAny::Rational(t), What::Jordan) => out.show(&jordan_q(t).map_err(e)?),
+        (TypedAny::Rational(t), What::Jordan) => out.show(&jordan_q(t, &norm).map_err(e)?),
         (TypedAny::Rational(t), What::RealJordan(expand)) => {
             out.show(&real_jordan_q(t, expand).map_err(e)?)
         }
         (TypedAny::RatFunc(t), What::Jordan) => {
             let Some(d) = &t.descriptor else {
-                return out.show(&crate::jordan::steps::jordan_steps_params(&t.a_raw).map_err(e)?);
+                let d = crate::jordan::steps::jordan_steps_params_with(&t.a_raw, &norm);
+                return out.show(&d.map_err(e)?);
             };
             let (mut first, ss) = standard_steps(d, None).map_err(e)?;
-            let then = crate::jordan::steps::jordan_steps_params(&ss.a).map_err(e)?;
+            let then = crate::jordan::steps::jordan_steps_params_with(&ss.a, &norm).map_err(e)?;
             first.method = then.method;
             first.steps.extend(then.steps);
             out.show(&first)
@@ -297,15 +327,101 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
     }
 }
 
+/// The chains' normalisation `jordan --normalize` asks for (none for the other commands).
+fn normalization(cmd: &Command) -> Result<Normalization, Failure> {
+    match cmd {
+        Command::Jordan {
+            normalize: Some(n),
+            real,
+            ..
+        } => {
+            if *real {
+                return Err(Failure::input(
+                    "--normalize: applies to the chains of `jordan`, not to the real form of `jordan --real`".to_string(),
+                ));
+            }
+            n.parse().map_err(Failure::input)
+        }
+        _ => Ok(Normalization::default()),
+    }
+}
+
+/// `minreal --descriptor --steps`: the minimal descriptor realization step by step
+/// ([`crate::realization::minimal_descriptor_recorded`]); a file without `E` is the
+/// descriptor system with $E = I$ (as `minreal --descriptor` reads it).
+fn desc_min<'a, K: Field>(
+    ss: &StateSpace<K>,
+    d: Option<&Descriptor<K>>,
+    log: Option<AssumptionLog<'a, K>>,
+) -> crate::error::Result<Derivation<K>> {
+    let with_e;
+    let d = match d {
+        Some(d) => d,
+        None => {
+            let e = crate::matrix::Matrix::identity(ss.field().clone(), ss.nstates());
+            with_e = Descriptor::new(e, ss.a.clone(), ss.b.clone(), ss.c.clone(), ss.d.clone())?;
+            &with_e
+        }
+    };
+    let mut rec = recorder(Method::DescriptorMinimal, d.a.field(), log);
+    crate::realization::minimal_descriptor_recorded(d, Some(&mut rec))?;
+    Ok(rec.finish())
+}
+
+/// `minreal --descriptor --steps` of a file the ordinary loader refuses (an improper
+/// descriptor system), read as a descriptor system; `None` when it is not one.
+fn descriptor_file(file: &Path, out: &Render) -> Option<Result<Outcome, Failure>> {
+    struct Visit<'a>(&'a Path, &'a Render);
+    impl crate::io::load_descriptor::DescriptorVisitor for Visit<'_> {
+        type Output = Result<Outcome, Failure>;
+        fn visit<K: Field + 'static>(
+            self,
+            _: &crate::io::load_descriptor::LoadedDescriptor,
+            s: &Descriptor<K>,
+        ) -> Self::Output {
+            let e = |err| super::common::with_path(self.0, err);
+            let any = s as &dyn std::any::Any;
+            if let Some(r) = any.downcast_ref::<Descriptor<crate::ratfunc::RatFuncField>>() {
+                // a fresh field: its conditions are the ones this derivation assumes
+                let k = r.a.field().fresh();
+                let m = |x: &crate::matrix::Matrix<_>| {
+                    crate::matrix::Matrix::from_vec(
+                        k.clone(),
+                        x.nrows(),
+                        x.ncols(),
+                        x.as_slice().to_vec(),
+                    )
+                };
+                let d = Descriptor::new(m(&r.e), m(&r.a), m(&r.b), m(&r.c), m(&r.d)).map_err(e)?;
+                return self.1.show(&der(&d, Some(ratfunc_log(&k))).map_err(e)?);
+            }
+            self.1.show(&der(s, None).map_err(e)?)
+        }
+    }
+    fn der<K: Field>(
+        d: &Descriptor<K>,
+        log: Option<AssumptionLog<'static, K>>,
+    ) -> crate::error::Result<Derivation<K>> {
+        let mut rec = recorder(Method::DescriptorMinimal, d.a.field(), log);
+        crate::realization::minimal_descriptor_recorded(d, Some(&mut rec))?;
+        Ok(rec.finish())
+    }
+    let l = crate::io::load_descriptor::load_descriptor_path(file).ok()?;
+    (l.has_e && l.pencil.is_none() && l.transfer.is_none()).then(|| l.run(Visit(file, out)))
+}
+
 /// `jordan --steps` over $\mathbb{Q}$; for a descriptor system the steps of its standard
 /// form (lifted into the rationals as a number field of degree 1), then the Jordan steps of
 /// the standard form's $A$ (the finite dynamics `jordan` reports).
-fn jordan_q(t: &TypedSystem<Q>) -> crate::error::Result<Derivation<NumberField>> {
+fn jordan_q(
+    t: &TypedSystem<Q>,
+    norm: &Normalization,
+) -> crate::error::Result<Derivation<NumberField>> {
     let Some(d) = &t.descriptor else {
-        return crate::jordan::steps::jordan_steps(&t.a_raw);
+        return crate::jordan::steps::jordan_steps_with(&t.a_raw, norm);
     };
     let (first, ss) = standard_steps(d, None)?;
-    let mut out = crate::jordan::steps::jordan_steps(&ss.a)?;
+    let mut out = crate::jordan::steps::jordan_steps_with(&ss.a, norm)?;
     let q = out.field.clone();
     let mut steps = lift_derivation(&first, &q).steps;
     steps.append(&mut out.steps);

@@ -41,6 +41,9 @@ pub enum Method {
     Standard,
     /// The real Jordan form (complex pairs as real $2 \times 2$ blocks).
     RealJordan,
+    /// A minimal descriptor realization (`minreal --descriptor`): Weierstrass split, finite
+    /// and infinite parts reduced, non-dynamic modes removed.
+    DescriptorMinimal,
 }
 
 /// What a step computes; each kind has one sentence and one identity (see `report::steps`).
@@ -66,6 +69,29 @@ pub enum StepKind {
     /// block sizes, a basis $B$ of $\ker f(A)^e$ and the restriction $M$ with $A B = B M$.
     /// Objects: `f`, `dims`, `segre`, `B`, `M`.
     PrimaryBlock,
+    /// One chain normalised (`jordan --normalize`, [`super::normalize`]): `V` before, `Vn`
+    /// after, `top`, `orth` (1: eq. 31, $v_j \cdot v_1 = 0$), `b` (eq. 31's constants),
+    /// `row` (1-based, the entry made 1), `n2` ($n = v_1 \cdot v_1$; the columns are $V_n /
+    /// \sqrt n$ unless `root` $= \sqrt n$ was exact and applied), `refused` (unit length of a
+    /// non-real eigenvector).
+    Normalization,
+    /// The Jordan method's compacted block scaled so that $|\tilde B| = |B|$ (eq. 36): $a^2 =
+    /// |B|^2 / |\tilde B|^2$, with `a` when $a$ lies in the field. Objects: `nB`, `nBt`,
+    /// `a2`, `a`, `Bt`, `Ct`.
+    NormMatch,
+    /// Descriptor minimal: the finite part $(A_f, B_f, C_f)$ and its minimal part $(A_m, B_m,
+    /// C_m)$. Objects: `Af`, `Bf`, `Cf`, `Am`, `Bm`, `Cm`, `order`.
+    DescriptorFinite,
+    /// Descriptor minimal: the infinite part $(N, B_\infty, C_\infty)$ and a minimal
+    /// realization $(N_r, B_r, C_r)$ of $C_\infty N^k B_\infty$. Objects: `N`, `Binf`, `Cinf`,
+    /// `Nr`, `Br`, `Cr`, `order`, `q`.
+    DescriptorInfinite,
+    /// Descriptor minimal: non-dynamic modes removed. Objects: `removed`, `order`, `shifted`,
+    /// `E`, `A`, `B`, `C`, `D` (the infinite part).
+    DescriptorNondynamic,
+    /// Descriptor minimal: the assembled realization. Objects: `E`, `A`, `B`, `C`, `D`,
+    /// `orders` (original, irreducible, minimal, finite, infinite).
+    DescriptorMinimalForm,
     /// $A T = T J$ with $T$ invertible. Objects: `T`, `J` (over $\mathbb{Q}(p)$) or `n`, `dims`.
     Similarity,
     /// $\mathcal C = [B, AB, \dots, A^{n-1}B]$, its rank. Objects: `Ctrb`, `rank`.

@@ -41,6 +41,7 @@ pub(crate) mod coeffs;
 pub mod decompose;
 pub mod derivation;
 pub mod fields;
+pub mod normalize;
 pub mod pair_field;
 pub mod params;
 pub mod primary;

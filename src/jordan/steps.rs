@@ -21,6 +21,7 @@
 
 use super::chains::{jordan_block_matrix, jordan_chains};
 use super::derivation::{Derivation, Method, Object, Recorder, StepKind, ratfunc_log};
+use super::normalize::{Normalization, UnitLength, normalize_chain, normalized_holds};
 use super::primary::{named_field, rational_field};
 use crate::algebraic::NumberField;
 use crate::error::Result;
@@ -162,6 +163,63 @@ pub fn eigenvalue_steps<K: Field + 'static>(
     Ok((ch.v, ch.blocks))
 }
 
+/// One step per chain of `theta` normalised as `how` asks (nothing when it asks nothing):
+/// the chain before and after, eq. 31's constants, the row made 1 or $n = v_1 \cdot v_1$
+/// with $\sqrt n$ when it lies in the field; returns the normalised columns (divided by
+/// $\sqrt n$ only when exact). The identity: a chain of $N$ spanning the same space ($A V' =
+/// V' J_\theta$ follows), orthogonal, entry 1 or $v_1' \cdot v_1' = 1$ (or $= n$ in closed form).
+///
+/// # Errors
+/// As [`normalize_chain`].
+pub fn normalization_steps<K: Field + 'static>(
+    rec: &mut Recorder<'_, K>,
+    part: usize,
+    a: &Matrix<K>,
+    theta: &K::Elem,
+    (v, blocks): (&Matrix<K>, &[usize]),
+    how: &Normalization,
+    real: bool,
+) -> Result<Matrix<K>> {
+    if how.is_none() {
+        return Ok(v.clone());
+    }
+    let k = a.field().clone();
+    let (n, nm) = (a.nrows(), shift(a, theta));
+    let mut out = v.clone();
+    let mut off = 0;
+    for &s in blocks {
+        let chain = v.submatrix(0, n, off, off + s);
+        let c = normalize_chain(&chain, how, real)?;
+        let ok = normalized_holds(&nm, &chain, &c, how);
+        out.set_block(0, off, &c.v);
+        let mut objects = vec![
+            ("V", Object::Matrix(chain)),
+            ("Vn", Object::Matrix(c.v.clone())),
+            ("top", Object::Count(s)),
+            ("orth", Object::Count(usize::from(how.orthogonal))),
+        ];
+        if !c.constants.is_empty() {
+            let b = Matrix::from_vec(k.clone(), 1, s - 1, c.constants.clone());
+            objects.push(("b", Object::Matrix(b)));
+        }
+        if let Some(r) = c.entry_row {
+            objects.push(("row", Object::Count(r + 1)));
+        }
+        match c.unit {
+            UnitLength::NotAsked => {}
+            UnitLength::Exact { n, root } => {
+                objects.push(("n2", Object::Scalar(n)));
+                objects.push(("root", Object::Scalar(root)));
+            }
+            UnitLength::ClosedForm { n } => objects.push(("n2", Object::Scalar(n))),
+            UnitLength::Refused => objects.push(("refused", Object::Count(1))),
+        }
+        rec.push(StepKind::Normalization, Some(part), objects, Some(ok));
+        off += s;
+    }
+    Ok(out)
+}
+
 /// $p(A)$ is zero (Cayley–Hamilton for $p = \chi_A$), checked for $n \le$ `max_n`.
 fn annihilates<K: Field>(a: &Matrix<K>, p: &Poly<K>, max_n: usize) -> Option<bool> {
     if a.nrows() > max_n {
@@ -202,6 +260,15 @@ fn product<K: Field>(k: &K, factors: &[(Poly<K>, usize)]) -> Poly<K> {
 /// # Errors
 /// As [`super::jordan`].
 pub fn jordan_steps(a: &Matrix<Q>) -> Result<Derivation<NumberField>> {
+    jordan_steps_with(a, &Normalization::default())
+}
+
+/// [`jordan_steps`] with the chains normalised as `how` asks ([`super::normalize`]): one
+/// step per chain with the new chain and its identities.
+///
+/// # Errors
+/// As [`super::jordan`]; as [`super::normalize::normalize_chain`].
+pub fn jordan_steps_with(a: &Matrix<Q>, how: &Normalization) -> Result<Derivation<NumberField>> {
     a.check_square("jordan")?;
     let n = a.nrows();
     let q = rational_field();
@@ -223,17 +290,19 @@ pub fn jordan_steps(a: &Matrix<Q>) -> Result<Derivation<NumberField>> {
     );
     let mut dims = vec![];
     for (part, (p, e)) in factors.iter().enumerate() {
-        let (field, theta) = if p.deg() == 1 {
-            (q.clone(), q.from_rational(&-p.coeff(0)))
+        let (field, theta, real) = if p.deg() == 1 {
+            (q.clone(), q.from_rational(&-p.coeff(0)), true)
         } else {
-            let root = super::roots::certified_roots(p)?
-                .first()
-                .map_or((0.0, 0.0), |z| z.1);
+            let roots = super::roots::certified_roots(p)?;
+            let real = roots.first().is_some_and(|z| z.0.is_real());
+            let root = roots.first().map_or((0.0, 0.0), |z| z.1);
             let f = named_field(p, root, "t");
             let t = f.generator();
-            (f, t)
+            (f, t, real)
         };
-        eigenvalue_steps(&mut rec, part, &lift(a, &field), &theta, *e)?;
+        let af = lift(a, &field);
+        let (v, blocks) = eigenvalue_steps(&mut rec, part, &af, &theta, *e)?;
+        normalization_steps(&mut rec, part, &af, &theta, (&v, &blocks), how, real)?;
         dims.push(p.deg() * e);
     }
     // every part's A V = V J (W V = I: independent columns) and the dimensions fill K^n
@@ -264,6 +333,18 @@ fn drop_last(f: &MPoly) -> MPoly {
 /// # Errors
 /// As [`super::params::jordan_params`].
 pub fn jordan_steps_params(a_in: &Matrix<RatFuncField>) -> Result<Derivation<RatFuncField>> {
+    jordan_steps_params_with(a_in, &Normalization::default())
+}
+
+/// [`jordan_steps_params`] with the chains of the eigenvalues in $\mathbb{Q}(p)$ normalised as
+/// `how` asks (the parameters taken real; a factor of degree $\ge 2$ keeps its primary block).
+///
+/// # Errors
+/// As [`super::params::jordan_params`]; as [`super::normalize::normalize_chain`].
+pub fn jordan_steps_params_with(
+    a_in: &Matrix<RatFuncField>,
+    how: &Normalization,
+) -> Result<Derivation<RatFuncField>> {
     let pj = super::params::jordan_params(a_in)?;
     let n = pj.n();
     let k = a_in.field().fresh();
@@ -301,6 +382,7 @@ pub fn jordan_steps_params(a_in: &Matrix<RatFuncField>) -> Result<Derivation<Rat
         match &e.value {
             Some(theta) => {
                 let (v, blocks) = eigenvalue_steps(&mut rec, part, &a, theta, *m)?;
+                let v = normalization_steps(&mut rec, part, &a, theta, (&v, &blocks), how, true)?;
                 j_blocks.push(jordan_block_matrix(&k, theta, &blocks));
                 t_cols.push(v);
             }

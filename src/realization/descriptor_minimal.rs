@@ -30,10 +30,12 @@
 
 use super::controllability::{is_controllable, is_observable};
 use super::descriptor_elim::remove_nondynamic;
+use super::descriptor_minimal_steps as steps;
 use super::minimal::minimal_kalman;
-use super::weierstrass::{same_transfer, weierstrass_split};
+use super::weierstrass::same_transfer;
 use crate::error::Result;
 use crate::field::Field;
+use crate::jordan::derivation::Recorder;
 use crate::matrix::Matrix;
 use crate::system::{Descriptor, StateSpace};
 
@@ -109,7 +111,25 @@ fn shifted_sequence<K: Field>(
 /// # Errors
 /// `Invalid` for a singular pencil.
 pub fn minimal_descriptor<K: Field>(sys: &Descriptor<K>) -> Result<DescriptorMinimal<K>> {
-    let split = weierstrass_split(sys)?;
+    minimal_descriptor_recorded(sys, None)
+}
+
+/// [`minimal_descriptor`], recording its steps (`minreal --descriptor --steps`,
+/// [`super::descriptor_minimal_steps`]) when `rec` is given: the Weierstrass split, the
+/// finite part's minimal part, the infinite part's minimal realization, the non-dynamic
+/// modes removed, the assembled realization, each with its identity.
+///
+/// # Errors
+/// As [`minimal_descriptor`].
+pub fn minimal_descriptor_recorded<K: Field>(
+    sys: &Descriptor<K>,
+    mut rec: Option<&mut Recorder<'_, K>>,
+) -> Result<DescriptorMinimal<K>> {
+    let fitting = super::weierstrass::fitting_split(sys)?;
+    if let Some(r) = rec.as_deref_mut() {
+        super::standard_steps::fitting(r, &fitting);
+    }
+    let split = super::weierstrass::from_fitting(sys, fitting)?;
     let fld = sys.a.field().clone();
     let fin = minimal_kalman(&split.finite)?.system;
     let poly = split.polynomial_part();
@@ -117,6 +137,10 @@ pub fn minimal_descriptor<K: Field>(sys: &Descriptor<K>) -> Result<DescriptorMin
     let tri =
         StateSpace::new_strictly_proper(split.n.clone(), split.b_inf.clone(), split.c_inf.clone())?;
     let red = minimal_kalman(&tri)?.system;
+    if let Some(r) = rec.as_deref_mut() {
+        steps::finite(r, &split.finite, &fin);
+        steps::infinite(r, &tri, &red, q);
+    }
     let nr = red.nstates();
     let irreducible = Descriptor::new(
         -&red.a,
@@ -128,15 +152,19 @@ pub fn minimal_descriptor<K: Field>(sys: &Descriptor<K>) -> Result<DescriptorMin
     let (mut inf, _) = remove_nondynamic(&irreducible)?;
     // the same order with D = P_0 (the constant of the polynomial part) when it exists
     let shifted = shifted_sequence(&split.n, &split.b_inf, &split.c_inf, &poly[0])?;
-    if shifted.nstates() == inf.nstates() {
+    let took_shifted = shifted.nstates() == inf.nstates();
+    if took_shifted {
         inf = shifted;
+    }
+    if let Some(r) = rec.as_deref_mut() {
+        steps::nondynamic(r, &irreducible, &inf, took_shifted);
     }
     let system = assemble(&fin, &inf)?;
     let verified = same_transfer(sys, &system)
         && is_controllable(&fin.a, &fin.b)
         && is_observable(&fin.a, &fin.c)
         && is_minimal_at_infinity(&system);
-    Ok(DescriptorMinimal {
+    let out = DescriptorMinimal {
         order: system.nstates(),
         finite_order: fin.nstates(),
         infinite_order: inf.nstates(),
@@ -145,7 +173,11 @@ pub fn minimal_descriptor<K: Field>(sys: &Descriptor<K>) -> Result<DescriptorMin
         polynomial_degree: q,
         system,
         verified,
-    })
+    };
+    if let Some(r) = rec {
+        steps::assembled(r, &out);
+    }
+    Ok(out)
 }
 
 /// $\mathrm{rank}[E, B] = n$, $\mathrm{rank}[E; C] = n$, $A\ker E \subseteq \mathrm{im}\,E$.

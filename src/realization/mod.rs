@@ -27,6 +27,7 @@ mod damp;
 mod descriptor;
 mod descriptor_elim;
 mod descriptor_minimal;
+mod descriptor_minimal_steps;
 mod from_transfer;
 mod gramian;
 mod ho_kalman;
@@ -54,7 +55,9 @@ pub use descriptor::{
     StandardForm, StandardMethod, descriptor_to_standard, descriptor_to_standard_recorded,
     finite_dynamics,
 };
-pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor};
+pub use descriptor_minimal::{
+    DescriptorMinimal, is_minimal_at_infinity, minimal_descriptor, minimal_descriptor_recorded,
+};
 pub use from_transfer::{TransferRealization, realize_state_space, realize_transfer};
 pub use gramian::{GramType, Gramian, Gramians, gramian, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman_recorded;

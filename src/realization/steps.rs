@@ -263,6 +263,8 @@ pub fn jordan_method_steps(sys: &StateSpace<Q>) -> Result<Derivation<NumberField
         let compact = StateSpace::new_strictly_proper(jn.clone(), bn.clone(), cn.clone())?;
         let ok = kept.same_markov(&compact, 2 * m + 1);
         stage2 += r * d;
+        let real = k.approx(&theta).1 == 0.0;
+        let norm_step = (r > 0 && r < keep.len() && real).then(|| (kept.clone(), compact.clone()));
         rec.push(
             StepKind::Compaction,
             Some(part),
@@ -275,6 +277,9 @@ pub fn jordan_method_steps(sys: &StateSpace<Q>) -> Result<Derivation<NumberField
             ],
             Some(ok),
         );
+        if let Some((kept, compact)) = norm_step {
+            norm_match(&mut rec, part, &kept, &compact);
+        }
     }
     let jm = super::minimal_jordan(sys)?;
     let ok = jm.verified && jm.stages == [sys.nstates(), stage1, stage2];
@@ -288,6 +293,54 @@ pub fn jordan_method_steps(sys: &StateSpace<Q>) -> Result<Derivation<NumberField
         Some(ok),
     );
     Ok(rec.finish())
+}
+
+/// The minimal-realization paper's choice after eq. 36: the compacted block $(J, \tilde B,
+/// \tilde C)$ scaled to $(J, a\tilde B, \tilde C/a)$ (Markov parameters unchanged) with $|a
+/// \tilde B| = |B|$, $B$ the block's input matrix before compaction (Frobenius norms, a real
+/// eigenvalue). $a^2 = |B|^2/|\tilde B|^2$; $a$ is applied when it is rational, else the
+/// step keeps $a^2$ (closed form $a = \sqrt{a^2}$).
+fn norm_match<K: Field>(
+    rec: &mut Recorder<'_, K>,
+    part: usize,
+    kept: &StateSpace<K>,
+    compact: &StateSpace<K>,
+) {
+    let k = kept.a.field().clone();
+    let sq = |m: &Matrix<K>| crate::jordan::normalize::dot(&k, m.as_slice(), m.as_slice());
+    let (nb, nbt) = (sq(&kept.b), sq(&compact.b));
+    let Some(a2) = k.div(&nb, &nbt) else {
+        return;
+    };
+    let a = k
+        .to_rational(&a2)
+        .and_then(|q| crate::jordan::normalize::rational_sqrt(&q))
+        .map(|q| k.from_rational(&q));
+    let (bt, ct) = match &a {
+        Some(a) => (
+            compact.b.scale(a),
+            compact.c.scale(&k.inv(a).expect("a != 0")),
+        ),
+        None => (compact.b.clone(), compact.c.clone()),
+    };
+    let ok = match &a {
+        Some(_) => {
+            let scaled = StateSpace::new_strictly_proper(compact.a.clone(), bt.clone(), ct.clone());
+            sq(&bt) == nb && scaled.is_ok_and(|s| s.same_markov(kept, 2 * kept.nstates() + 1))
+        }
+        None => k.mul(&a2, &nbt) == nb,
+    };
+    let mut objects = vec![
+        ("nB", Object::Scalar(nb)),
+        ("nBt", Object::Scalar(nbt)),
+        ("a2", Object::Scalar(a2)),
+    ];
+    if let Some(a) = a {
+        objects.push(("a", Object::Scalar(a)));
+    }
+    objects.push(("Bt", Object::Matrix(bt)));
+    objects.push(("Ct", Object::Matrix(ct)));
+    rec.push(StepKind::NormMatch, Some(part), objects, Some(ok));
 }
 
 /// The identity of a staircase step: $A T = T \tilde A$, $B = T \tilde B$, $\tilde C = C T$,

@@ -116,7 +116,17 @@ pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSpli
 /// # Errors
 /// `Invalid` when $\det(sE - A) \equiv 0$ (singular pencil).
 pub fn weierstrass_split<K: Field>(sys: &Descriptor<K>) -> Result<WeierstrassSplit<K>> {
-    let f = fitting_split(sys)?;
+    from_fitting(sys, fitting_split(sys)?)
+}
+
+/// The split of `sys` from its Fitting split `f` ([`weierstrass_split`]).
+///
+/// # Errors
+/// As [`weierstrass_split`].
+pub(crate) fn from_fitting<K: Field>(
+    sys: &Descriptor<K>,
+    f: FittingSplit<K>,
+) -> Result<WeierstrassSplit<K>> {
     Ok(WeierstrassSplit {
         finite: StateSpace::new_strictly_proper(f.a_f, f.b_f, &sys.c * &f.v1)?,
         n: f.gn,

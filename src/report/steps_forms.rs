@@ -11,7 +11,7 @@ pub fn title(m: Method) -> &'static str {
         Method::Mnf => "mechanical normal form (Mayet & Kammermeier), step by step",
         Method::Standard => "descriptor system to standard form, step by step",
         Method::RealJordan => "real Jordan form, step by step",
-        _ => "derivation, step by step",
+        m => super::steps_norm::title(m),
     }
 }
 
@@ -29,7 +29,7 @@ pub fn kind_name(k: StepKind) -> &'static str {
         StepKind::StandardForm => "standard_form",
         StepKind::RealPair => "real_pair",
         StepKind::RealForm => "real_form",
-        _ => "step",
+        k => super::steps_norm::kind_name(k),
     }
 }
 
@@ -74,7 +74,7 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             "A T = T J, T invertible, T and J real",
             r"A T = T J,\ \det T \ne 0,\ T, J\ \text{real}",
         ),
-        _ => ("", ""),
+        k => super::steps_norm::identity(k),
     }
 }
 
@@ -186,7 +186,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
         StepKind::RealPair if c("compact") == 1 => "A complex pair whose real field K(Re theta, Im theta) is large: kept in the compact form (its complex chains above; T_R = [Re V, Im V]).".into(),
         StepKind::RealForm => "The real Jordan form: T = [the real eigenvalues' chains, the pairs' real columns] and J = diag(their Jordan blocks, the real pair blocks), over one real field.".into(),
         StepKind::RealPair => "A complex pair theta = a + b i, conj(theta): the chain v_1..v_k of theta gives the real columns x_j = Re v_j, y_j = Im v_j, and A(x + i y) = (a + b i)(x + i y) gives A x = a x - b y, A y = b x + a y: the blocks [[a, b], [-b, a]] with I_2 above the diagonal.".into(),
-        _ => String::new(),
+        _ => super::steps_norm::sentence(d, s),
     }
 }
 
@@ -211,7 +211,7 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
         StepKind::RealPair if c("compact") == 1 => "A complex pair whose real field is large: kept in the compact form.".into(),
         StepKind::RealForm => "The real Jordan form: $T$ = the real eigenvalues' chains beside the pairs' real columns, $J$ = their Jordan blocks beside the real pair blocks, over one real field.".into(),
         StepKind::RealPair => "A complex pair $\\theta = a + bi$, $\\bar\\theta$: the real columns $x_j = \\operatorname{Re} v_j$, $y_j = \\operatorname{Im} v_j$ of its chains; $A(x + iy) = (a + bi)(x + iy)$ gives $Ax = ax - by$, $Ay = bx + ay$, so the blocks are $[a,\\ b;\\ -b,\\ a]$ (with $I_2$ above the diagonal).".into(),
-        _ => String::new(),
+        _ => super::steps_norm::sentence_latex(st),
     }
 }
 
@@ -261,8 +261,8 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
         "states" => r"J\ \text{(states)}",
         "Er" => "E'",
         "Ar" => "A'",
-        "Br" => "B'",
-        "Cr" => "C'",
+        "Br" if desc => "B'",
+        "Cr" if desc => "C'",
         "Dr" => "D'",
         "lambda0" => r"\lambda_0",
         "V1" => "V_1",
@@ -275,12 +275,12 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
         "Bs" => "B_s",
         "Cs" => "C_s",
         "Ds" => "D_s",
-        "removed" => r"n_\infty",
+        "removed" if desc => r"n_\infty",
         "route" => r"\text{route}",
         "Tc" => "T_c",
         "Jc" => "J_c",
         "compact" => r"\text{compact}",
-        _ => return None,
+        _ => return super::steps_norm::symbol(kind, key),
     })
 }
 
@@ -294,5 +294,5 @@ pub fn flag(key: &str) -> bool {
     matches!(
         key,
         "descriptor" | "exists" | "route" | "t_equals_i" | "compact"
-    )
+    ) || super::steps_norm::flag(key)
 }

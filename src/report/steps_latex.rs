@@ -182,7 +182,9 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>, a4: bool) {
     for &(c0, c1) in &blocks {
         let head = if blocks.len() > 1 {
             // braces: a name with its own subscript (A_s, A_{22}) takes the block's
-            format!("{{{name}}}_{{:,\\,{}..{}}}", c0 + 1, c1)
+            // and `{}` inside: TeX unwraps a group of one accent atom (\bar C_i), whose
+            // subscript would then be a double one
+            format!("{{{name}{{}}}}_{{:,\\,{}..{}}}", c0 + 1, c1)
         } else {
             name.to_string()
         };
@@ -251,7 +253,7 @@ fn entries_latex(s: &mut String, name: &str, cells: &[Vec<String>]) {
         for (j, c) in row.iter().enumerate() {
             let _ = writeln!(
                 s,
-                r"\[ {{{name}}}_{{({},{})}} = {} \]",
+                r"\[ {{{name}{{}}}}_{{({},{})}} = {} \]",
                 i + 1,
                 j + 1,
                 break_digits(c)
@@ -291,7 +293,24 @@ pub(crate) fn object_latex<K: Field>(
                     if *e > 1 { format!("{b}^{{{e}}}") } else { b }
                 })
                 .collect();
-            let _ = writeln!(s, "\\[ {name} = {} \\]", parts.join(""));
+            let all = parts.join("");
+            if !a4 || typeset_len(&all) <= LINE_CHARS {
+                let _ = writeln!(s, "\\[ {name} = {all} \\]");
+                return;
+            }
+            // too wide for the page: the product by names, then each factor on its own
+            let names: Vec<String> = fs
+                .iter()
+                .enumerate()
+                .map(|(i, (_, e))| {
+                    let b = format!("p_{{{}}}", i + 1);
+                    if *e > 1 { format!("{b}^{{{e}}}") } else { b }
+                })
+                .collect();
+            let _ = writeln!(s, "\\[ {name} = {} \\]", names.join("\\,"));
+            for (i, (p, _)) in fs.iter().enumerate() {
+                display_wrapped(s, &format!("p_{{{}}}", i + 1), &poly_latex(p, "s"));
+            }
         }
         Object::Scalar(x) => {
             let _ = writeln!(s, "\\[ {name} = {} \\]", entry(field, x));
@@ -346,15 +365,17 @@ fn display_wrapped(s: &mut String, name: &str, body: &str) {
         let _ = writeln!(s, "\\[ {name} = {body} \\]");
         return;
     }
-    // split before " + " / " - " outside \left( ... \right)
+    // split before " + " / " - " outside \left( ... \right) and outside braces (the
+    // numerator of a \frac is one term)
     let (mut parts, mut cur, mut depth) = (vec![], String::new(), 0i32);
     let b = body.as_bytes();
     let mut i = 0;
     while i < b.len() {
         let rest = &body[i..];
-        if rest.starts_with("\\left") {
+        let escaped = i > 0 && b[i - 1] == b'\\';
+        if rest.starts_with("\\left") || (rest.starts_with('{') && !escaped) {
             depth += 1;
-        } else if rest.starts_with("\\right") {
+        } else if rest.starts_with("\\right") || (rest.starts_with('}') && !escaped) {
             depth -= 1;
         }
         if depth == 0 && (rest.starts_with(" + ") || rest.starts_with(" - ")) && !cur.is_empty() {
@@ -455,7 +476,7 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
         let _ = writeln!(s, "\\noindent Identity: $ {id} $ --- {verdict}.\n");
     }
     if let Some(conds) = assumes_latex(d, st) {
-        let _ = writeln!(s, "\\noindent Assumes: ${conds}$.\n");
+        let _ = writeln!(s, "{{\\sloppy\\noindent Assumes: ${conds}$.\\par}}\n");
     }
 }
 
