@@ -13,6 +13,8 @@ mod algebraic;
 mod api;
 #[path = "api_fields.rs"]
 mod api_fields;
+#[path = "as_written.rs"]
+mod as_written;
 #[path = "balred.rs"]
 mod balred;
 #[path = "bicycle.rs"]
@@ -85,6 +87,8 @@ mod layers;
 mod library_api;
 #[path = "margins.rs"]
 mod margins;
+#[path = "margins_fields.rs"]
+mod margins_fields;
 #[path = "matrix_dixon.rs"]
 mod matrix_dixon;
 #[path = "matrix_generic.rs"]
@@ -151,6 +155,8 @@ mod slowpaths;
 mod steps;
 #[path = "steps_descriptor.rs"]
 mod steps_descriptor;
+#[path = "steps_discrete.rs"]
+mod steps_discrete;
 #[path = "steps_forms.rs"]
 mod steps_forms;
 #[path = "steps_systems.rs"]

@@ -45,6 +45,7 @@ pub mod symbolic;
 pub mod system_file;
 pub mod transfer_expr;
 mod transfer_key;
+pub mod transfer_written;
 mod value;
 pub mod write;
 
