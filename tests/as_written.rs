@@ -165,7 +165,7 @@ fn random_entry(rng: &mut SplitMix64) -> String {
 
 #[test]
 fn random_written_matrices_keep_every_denominator() {
-    let mut rng = SplitMix64(0x28_a5_2026);
+    let mut rng = SplitMix64(0x28a5_2026);
     for _ in 0..60 {
         let (p, m) = (rng.int(1, 3) as usize, rng.int(1, 3) as usize);
         let texts: Vec<Vec<String>> = (0..p)
