@@ -13,6 +13,8 @@ mod algebraic;
 mod api;
 #[path = "api_fields.rs"]
 mod api_fields;
+#[path = "as_written.rs"]
+mod as_written;
 #[path = "balred.rs"]
 mod balred;
 #[path = "bicycle.rs"]
@@ -87,6 +89,8 @@ mod library_api;
 mod linalg_fields;
 #[path = "margins.rs"]
 mod margins;
+#[path = "margins_fields.rs"]
+mod margins_fields;
 #[path = "matrix_dixon.rs"]
 mod matrix_dixon;
 #[path = "matrix_generic.rs"]
@@ -165,6 +169,8 @@ mod slowpaths;
 mod steps;
 #[path = "steps_descriptor.rs"]
 mod steps_descriptor;
+#[path = "steps_discrete.rs"]
+mod steps_discrete;
 #[path = "steps_forms.rs"]
 mod steps_forms;
 #[path = "steps_normalize.rs"]

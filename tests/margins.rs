@@ -250,7 +250,8 @@ fn command_line() {
         (j["gain_margin"].as_str(), j["phase_margin_deg"].as_str()),
         (Some("inf"), Some("inf"))
     );
-    // MIMO and a file over Q(sqrt 2) are refused with one line, exit 2
+    // MIMO is refused with one line, exit 2; a file over Q(sqrt 2) has its margins (issue 28:
+    // it was refused; tests/margins_fields.rs has the crossings over Q(sqrt d) and Q(i))
     let f = temp_file(
         "margins",
         "mimo.json",
@@ -264,6 +265,13 @@ fn command_line() {
         "k.json",
         r#"{"A": [["-sqrt(2)"]], "B": [[1]], "C": [[1]]}"#,
     );
-    let (code, _, err) = run(&["margin", f.to_str().unwrap()]);
-    assert_eq!((code, err.trim_end().lines().count()), (2, 1), "{err}");
+    let (code, out, err) = run(&["margin", f.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    // 1/(s + sqrt 2): |G(jw)| = 1/sqrt(w^2 + 2) < 1 and the phase stays above -90: no crossing
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        (j["gain_margin"].as_str(), j["phase_margin_deg"].as_str()),
+        (Some("inf"), Some("inf"))
+    );
+    assert_eq!(j["verified"], true);
 }

@@ -61,6 +61,16 @@ fn no_text_line_over_200_columns_on_the_examples() {
         &["freqresp"],
         &["dcgain"],
         &["check"],
+        // the toolbox and the derivations (issue 28 item 5 audit)
+        &["margin"],
+        &["stepinfo"],
+        &["damp"],
+        &["gram"],
+        &["stability"],
+        &["obsv"],
+        &["pencil"],
+        &["tf", "--steps"],
+        &["jordan", "--steps"],
     ];
     let jobs: Vec<(Vec<&str>, &str)> = files
         .iter()

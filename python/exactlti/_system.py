@@ -562,9 +562,18 @@ def _is_pair(x):
     return isinstance(x, tuple) and len(x) == 2
 
 
-def tf(num, den=None, params=None, name="tf"):
-    """An exact system from a transfer function or matrix ``G(s)``: its exact minimal
-    realization (a :class:`StateSpace`, order = McMillan degree, checked against ``G``).
+def tf(num, den=None, params=None, name="tf", realize="as_written"):
+    """An exact system from a transfer function or matrix ``G(s)``, realized as written
+    (python-control's and MATLAB's ``tf``: nothing cancelled, ``poles()`` lists every
+    written denominator's roots; ``.minreal()`` cancels) or, with ``realize="minimal"``,
+    its exact minimal realization (order = McMillan degree). Both are checked against ``G``.
+
+    As written: each input column gets the common denominator of its entries (their least
+    common multiple, python-control's per-input common denominator) in controllable
+    companion form, so ``det(sI - A)`` is the product of the column denominators and the
+    Markov parameters are those of ``G`` exactly. Text is evaluated without cancelling
+    (``(s+1)/((s+1)*(s+2))`` keeps the pole -1); a SymPy expression arrives as SymPy
+    simplified it.
 
     * ``tf(num, den)``: coefficient lists, highest power first (python-control's idiom);
       MIMO: ``num[i][j]``, ``den[i][j]`` coefficient lists.
@@ -580,12 +589,17 @@ def tf(num, den=None, params=None, name="tf"):
     >>> import exactlti
     >>> G = exactlti.tf([1, 1], [1, 3, 2])
     >>> G.nstates, [str(p) for p in G.poles()]
-    (1, ['-2'])
+    (2, ['-2', '-1'])
     >>> print(G.tf()[0, 0])
     (1)/(s + 2)
-    >>> H = exactlti.tf("(s+1)/(s^2+3s+2)")
-    >>> H.tf().mcmillan_degree, H.tf().verified
-    (1, True)
+    >>> Gm = G.minreal()
+    >>> Gm.nstates, [str(p) for p in Gm.poles()]
+    (1, ['-2'])
+    >>> exactlti.tf([1, 1], [1, 3, 2], realize="minimal").nstates
+    1
+    >>> H = exactlti.tf("(s+1)/((s+1)*(s+2))")
+    >>> H.nstates, H.tf().mcmillan_degree, H.tf().verified
+    (2, 1, True)
     >>> M = exactlti.tf([["1/(s+1)", "1/(s+2)"], [([1], [1, 1]), 0]])
     >>> M.ninputs, M.noutputs, M.tf().mcmillan_degree
     (2, 2, 2)
@@ -594,11 +608,16 @@ def tf(num, den=None, params=None, name="tf"):
         import control
     except ImportError:  # pragma: no cover - python-control is optional
         control = None
+    if realize not in ("as_written", "minimal"):
+        raise ValueError(
+            'tf: realize must be "as_written" (keep every written denominator, the '
+            'default) or "minimal" (cancel common factors), not %r' % (realize,)
+        )
     if control is not None and isinstance(num, control.TransferFunction):
-        return _from_control_tf(num, name)
+        return _from_control_tf(num, name, realize=realize)
     note = _FloatNote()
     rows = _tf_rows(num, den, note)
-    doc = {"name": name, "G": rows}
+    doc = {"name": name, "G": rows, "realize": realize}
     if params:
         doc["parameters"] = {str(k): entry_text(v, "parameter %s" % k, note) for k, v in params.items()}
     note.symbols.discard("s")
@@ -623,7 +642,7 @@ def _warn_floats(note, stacklevel):
         )
 
 
-def _from_control_tf(sys, name, tol=None):
+def _from_control_tf(sys, name, tol=None, realize="as_written"):
     if not sys.isctime():
         raise ValueError("from_control: only continuous-time systems are supported")
     note = _FloatNote(tol)
@@ -638,7 +657,7 @@ def _from_control_tf(sys, name, tol=None):
     ]
     _warn_floats(note, 4)
     _warn_chosen(note.chosen, tol, 4)
-    doc = {"name": name, "G": rows}
+    doc = {"name": name, "G": rows, "realize": realize}
     G = StateSpace(_core.load_json(json.dumps(doc), name, False))
     G.rationalized = note.chosen
     return G

@@ -224,6 +224,24 @@ trait Sink {
     fn show<K: Field>(&self, d: &Derivation<K>) -> Result<Self::Out, Failure>;
 }
 
+/// A sink that shows a derivation in the system's variable (`z` in discrete time).
+struct InVariable<'a, S> {
+    inner: &'a S,
+    var: &'static str,
+}
+
+impl<S: Sink> Sink for InVariable<'_, S> {
+    type Out = S::Out;
+    fn show<K: Field>(&self, d: &Derivation<K>) -> Result<S::Out, Failure> {
+        if d.variable == self.var {
+            return self.inner.show(d);
+        }
+        let mut d = d.clone();
+        d.variable = self.var;
+        self.inner.show(&d)
+    }
+}
+
 /// Every rendering as strings.
 struct Strings;
 
@@ -252,6 +270,8 @@ fn refusal(cmd: &Command) -> String {
 
 /// The derivation of `cmd` on `sys`, given to `out`.
 fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out, Failure> {
+    let var = if sys.dt().is_some() { "z" } else { "s" };
+    let out = &InVariable { inner: out, var };
     let Some((_, what)) = what(cmd) else {
         return Err(refuse(refusal(cmd)));
     };
@@ -464,6 +484,7 @@ fn lift_derivation(d: &Derivation<Q>, q: &NumberField) -> Derivation<NumberField
     Derivation {
         method: d.method,
         field: q.clone(),
+        variable: d.variable,
         steps: d
             .steps
             .iter()

@@ -1,5 +1,6 @@
 //! `margin`, `stepinfo`, `damp`, `gram`: thin wrappers over
-//! [`crate::system::margins`] (exact margins over $\mathbb{Q}$),
+//! [`crate::system::margins`] (exact margins over $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
+//! $\mathbb{Q}(i)$),
 //! [`crate::float::stepinfo`] (step characteristics on the float step response, final
 //! value the exact DC gain), [`crate::realization::damp`] and
 //! [`crate::realization::gramian`] (exact Lyapunov solve, verified), with their reports in
@@ -32,7 +33,7 @@ pub enum GramArg {
 /// The toolbox subcommands (python-control's `margin`, `step_info`, `damp`, `gram`).
 #[derive(Subcommand, Debug, Clone)]
 pub enum ToolboxCmd {
-    /// Gain and phase margins of a SISO loop (exact over Q: crossover frequencies and the
+    /// Gain and phase margins of a SISO loop (exact over Q, Q(sqrt d), Q(i): crossover frequencies and the
     /// gain margin as algebraic numbers, cos of the phase margin exact), python-control's
     /// choice of the reported margins; `inf` when there is no crossover.
     Margin {
@@ -113,9 +114,19 @@ pub(super) fn run<K: Field + 'static>(
     };
     match cmd {
         ToolboxCmd::Margin { .. } => {
-            let q = as_rational(t).ok_or_else(|| needs_q("`margin`"))?;
-            let m = crate::system::margins::margins(&q.ss).map_err(e)?;
-            Ok(Outcome::new(sections::margins_report(&m), m.verified))
+            use crate::system::margins::margins;
+            let (report, verified) = if let Some(q) = as_rational(t) {
+                let m = margins(&q.ss).map_err(e)?;
+                (sections::margins_report(&m), m.verified)
+            } else if let Some(s) = (&t.ss as &dyn std::any::Any)
+                .downcast_ref::<crate::system::StateSpace<QuadraticField>>()
+            {
+                let m = margins(s).map_err(e)?;
+                (sections::margins_report(&m), m.verified)
+            } else {
+                return Err(needs_q("`margin`"));
+            };
+            Ok(Outcome::new(report, verified))
         }
         ToolboxCmd::Damp { .. } => {
             let rows = if let Some(q) = as_rational(t) {

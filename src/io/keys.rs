@@ -49,7 +49,7 @@ fn read_dt(file: &str, entries: &[(String, Raw)]) -> Result<Option<Rational>, In
 }
 
 /// Every key a system file may have.
-pub const SYSTEM_KEYS: [&str; 17] = [
+pub const SYSTEM_KEYS: [&str; 18] = [
     "A",
     "B",
     "C",
@@ -67,6 +67,7 @@ pub const SYSTEM_KEYS: [&str; 17] = [
     "outputs",
     "states",
     "dt",
+    "realize",
 ];
 
 /// The keys of a table in file order.

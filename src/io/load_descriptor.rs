@@ -13,7 +13,7 @@ use super::transfer_key::realize_g;
 use super::{FromScalars, Ground, InputError, SystemFile};
 use crate::field::{Field, Q, QuadraticField};
 use crate::matrix::Matrix;
-use crate::realization::TransferRealization;
+use crate::realization::{Realize, TransferRealization};
 use crate::system::Descriptor;
 use crate::system::transfer::TransferMatrix;
 use std::path::Path;
@@ -127,11 +127,11 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
                 );
             }
             let params = entries.iter().find(|(k, _)| k == "parameters");
-            return load_g(
-                &name,
-                &g.to_json(),
-                params.map(|(_, p)| p.to_json()).as_ref(),
-            );
+            let params = params.map(|(_, p)| p.to_json());
+            if super::transfer_key::realize_mode(&name, entries)? == Realize::AsWritten {
+                return load_g_as_written(&name, &g.to_json(), params.as_ref());
+            }
+            return load_g(&name, &g.to_json(), params.as_ref());
         }
         if let Some(l) = rectangular_pencil(&name, entries)? {
             return Ok(l);
@@ -222,6 +222,27 @@ fn load_g(
         system: DescriptorAny::Rational(r.minimal.system.clone()),
         has_e,
         transfer: Some((tm, r)),
+        pencil: None,
+        signals: Default::default(),
+    })
+}
+
+/// A `G` file with `realize = "as_written"`: the realization keeping every written
+/// denominator, as a standard system ($E = I$).
+fn load_g_as_written(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+) -> Result<LoadedDescriptor, InputError> {
+    let ss = super::transfer_key::realize_g_as_written(name, g, params)?;
+    let n = ss.nstates();
+    let system = Descriptor::new(Matrix::identity(Q, n), ss.a, ss.b, ss.c, ss.d)
+        .map_err(|e| InputError::file(name, e.to_string()))?;
+    Ok(LoadedDescriptor {
+        path: name.to_string(),
+        system: DescriptorAny::Rational(system),
+        has_e: false,
+        transfer: None,
         pencil: None,
         signals: Default::default(),
     })

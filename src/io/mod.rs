@@ -46,6 +46,7 @@ pub(crate) mod system_file;
 pub mod transfer_expr;
 mod transfer_key;
 mod transfer_symbolic;
+pub mod transfer_written;
 mod value;
 pub(crate) mod write;
 

@@ -23,7 +23,7 @@ use crate::system::transfer::RationalFunction;
 use num_traits::{Signed, ToPrimitive};
 
 const MAX_EXP: i64 = 64;
-const MAX_DEG: usize = 512;
+pub(super) const MAX_DEG: usize = 512;
 const MAX_LEN: usize = super::expr::MAX_EXPR_LEN;
 
 /// Parses a rational function in `s`; `params` gives the values of other names.
@@ -42,6 +42,12 @@ pub fn parse_rational_function(
     text: &str,
     params: &[(String, Rational)],
 ) -> Result<RationalFunction<Q>> {
+    check_length(text)?;
+    evaluate(&InS { params }, text, Dialect::EXACT)
+}
+
+/// Refuses a text longer than the bound before reading it.
+pub(super) fn check_length(text: &str) -> Result<()> {
     if text.len() > MAX_LEN {
         return Err(Error::Parse {
             line: 1,
@@ -52,12 +58,12 @@ pub fn parse_rational_function(
             ),
         });
     }
-    evaluate(&InS { params }, text, Dialect::EXACT)
+    Ok(())
 }
 
 /// $\mathbb{Q}(s)$ with parameters of rational value.
-struct InS<'a> {
-    params: &'a [(String, Rational)],
+pub(super) struct InS<'a> {
+    pub(super) params: &'a [(String, Rational)],
 }
 
 type RF = RationalFunction<Q>;
@@ -113,16 +119,7 @@ impl Algebra for InS<'_> {
         check(mul(&a, &RationalFunction::new(b.den, b.num)), pos)
     }
     fn pow(&self, base: RF, e: RF, pos: usize) -> Result<RF> {
-        let exp = (e.den.is_one() && e.num.deg() == 0)
-            .then(|| e.num.coeff(0))
-            .filter(|q| q.is_integer() && q.abs() <= Rational::from_integer(MAX_EXP.into()))
-            .and_then(|q| q.to_integer().to_i64());
-        let Some(k) = exp else {
-            return Err(at(
-                pos,
-                "exponent must be an integer constant with |e| <= 64",
-            ));
-        };
+        let k = int_exponent(&e, pos)?;
         let (b, k) = if k < 0 {
             if base.num.is_zero() {
                 return Err(at(pos, "division by zero"));
@@ -133,6 +130,15 @@ impl Algebra for InS<'_> {
         };
         check(RationalFunction::new(b.num.pow(k), b.den.pow(k)), pos)
     }
+}
+
+/// The exponent `e` as an integer: a constant with $|e| \le 64$.
+pub(super) fn int_exponent(e: &RF, pos: usize) -> Result<i64> {
+    (e.den.is_one() && e.num.deg() == 0)
+        .then(|| e.num.coeff(0))
+        .filter(|q| q.is_integer() && q.abs() <= Rational::from_integer(MAX_EXP.into()))
+        .and_then(|q| q.to_integer().to_i64())
+        .ok_or_else(|| at(pos, "exponent must be an integer constant with |e| <= 64"))
 }
 
 fn neg(a: &RF) -> RF {

@@ -9,8 +9,12 @@ use super::raw::Raw;
 use super::{ExactScalar, InputError, InputErrorKind, MatrixEntries};
 use crate::field::{Q, Rational};
 use crate::io::transfer_expr::parse_rational_function;
+use crate::io::transfer_written::parse_written_fraction;
 use crate::matrix::Matrix;
-use crate::realization::{TransferRealization, realize_transfer};
+use crate::realization::{
+    Realize, TransferRealization, WrittenTransfer, realize_as_written, realize_transfer,
+};
+use crate::system::StateSpace;
 use crate::system::transfer::TransferMatrix;
 
 fn entries(m: &Matrix<Q>) -> MatrixEntries {
@@ -34,6 +38,13 @@ pub(crate) fn realize_g_key(
 ) -> Result<Vec<(&'static str, MatrixEntries)>, InputError> {
     let get = |k: &str| entries_raw.iter().find(|(n, _)| n == k).map(|(_, v)| v);
     let Some(g) = get("G") else {
+        if get("realize").is_some() {
+            return Err(InputError::key(
+                file,
+                "realize",
+                "only a transfer matrix G is realized: give G, or drop realize",
+            ));
+        }
         return Ok(vec![]);
     };
     if let Some(k) = ["A", "B", "C", "D", "E", "M", "L", "K", "F"]
@@ -48,6 +59,15 @@ pub(crate) fn realize_g_key(
         .with_kind(InputErrorKind::Shape));
     }
     let params = get("parameters").map(Raw::to_json);
+    if realize_mode(file, entries_raw)? == Realize::AsWritten {
+        let ss = realize_g_as_written(file, &g.to_json(), params.as_ref())?;
+        return Ok(vec![
+            ("A", entries(&ss.a)),
+            ("B", entries(&ss.b)),
+            ("C", entries(&ss.c)),
+            ("D", entries(&ss.d)),
+        ]);
+    }
     let (_, r) = realize_g(file, &g.to_json(), params.as_ref())?;
     let Some(ss) = r.state_space else {
         return Err(InputError::key(
@@ -145,6 +165,71 @@ pub(crate) fn realize_g(
     let tm = TransferMatrix { entries };
     let r = realize_transfer(&tm).map_err(|e| InputError::key(name, "G", e.to_string()))?;
     Ok((tm, r))
+}
+
+/// The file key `realize`: `"minimal"` (the default) or `"as_written"`.
+///
+/// # Errors
+/// Any other value, named.
+pub(crate) fn realize_mode(
+    file: &str,
+    entries_raw: &[(String, Raw)],
+) -> Result<Realize, InputError> {
+    let Some((_, v)) = entries_raw.iter().find(|(k, _)| k == "realize") else {
+        return Ok(Realize::Minimal);
+    };
+    let text = match v {
+        Raw::Str(s) => s.as_str(),
+        _ => "",
+    };
+    Realize::parse(text).ok_or_else(|| {
+        InputError::key(
+            file,
+            "realize",
+            "expected \"minimal\" (cancel common factors, the default) or \"as_written\" \
+             (keep every written denominator)",
+        )
+    })
+}
+
+/// The realization of key `G` as written ([`realize_as_written`]: every written denominator
+/// kept, nothing cancelled), checked (`det(sI - A)` = the column denominators' product,
+/// Markov parameters = those of `G`).
+///
+/// # Errors
+/// An entry that does not parse (named by row and column), ragged or empty rows, an improper
+/// entry, a failed check.
+pub(crate) fn realize_g_as_written(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+) -> Result<StateSpace<Q>, InputError> {
+    let values = eval_params(name, params)?;
+    let texts = g_texts(name, g)?;
+    let mut rows = Vec::new();
+    for (i, row) in texts.iter().enumerate() {
+        let mut out = Vec::new();
+        for (j, text) in row.iter().enumerate() {
+            out.push(
+                parse_written_fraction(text, &values)
+                    .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
+            );
+        }
+        rows.push(out);
+    }
+    let w = WrittenTransfer { entries: rows };
+    let r = realize_as_written(&w).map_err(|e| {
+        InputError::key(name, "G", format!("realize = \"as_written\": {e}"))
+            .with_kind(InputErrorKind::Unsupported)
+    })?;
+    if !r.verified {
+        return Err(InputError::key(
+            name,
+            "G",
+            "realize = \"as_written\": the realization failed its exact check",
+        ));
+    }
+    Ok(r.system)
 }
 
 /// The entries of `G` as text, row by row: from an array of rows or a MATLAB-style string

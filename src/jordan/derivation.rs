@@ -305,6 +305,9 @@ pub struct Derivation<K: Field> {
     /// The field of the input (the assumptions' field).
     pub field: K,
     pub steps: Vec<Step<K>>,
+    /// The variable of the transfer function and of characteristic polynomials in displays:
+    /// `s`, or `z` for a discrete-time system.
+    pub variable: &'static str,
 }
 
 impl<K: Field> Derivation<K> {
@@ -340,6 +343,7 @@ impl<'a, K: Field> Recorder<'a, K> {
                 method,
                 field,
                 steps: vec![],
+                variable: "s",
             },
             log: None,
             seen: vec![],

@@ -12,6 +12,7 @@
 //! |---|---|
 //! | [`controllability_matrix`], [`observability_matrix`], [`hankel_matrix`], [`mcmillan_degree`] | Krylov matrices, rank over the field |
 //! | [`kalman_decomposition`] | controllable subspace $\mathcal R$, unobservable $\mathcal N$, four parts |
+//! | [`realize_as_written`] | a transfer matrix as written: column companion blocks, nothing cancelled |
 //! | [`minimal`] (`MinrealMethod::Kalman`, default) | the $co$ block of the Kalman decomposition |
 //! | `MinrealMethod::Rosenbrock` | staircase of exact row compressions of $[A\ B; C\ 0]$, then of the dual (paper sec. 2.3) |
 //! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
@@ -20,6 +21,7 @@
 //! | [`modal_table`], [`modal_table_over`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
 
+mod as_written;
 pub mod contribution;
 mod controllability;
 mod ctrb_structure;
@@ -42,6 +44,7 @@ pub(crate) mod standard_steps;
 pub mod steps;
 mod weierstrass;
 
+pub use as_written::{Realize, WrittenRealization, WrittenTransfer, realize_as_written};
 pub use controllability::{
     controllability_matrix, hankel_matrix, is_controllable, is_observable, mcmillan_degree,
     observability_matrix, pbh_controllable, pbh_observable, row_compression,

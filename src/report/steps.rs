@@ -9,18 +9,65 @@ use crate::jordan::derivation::{Derivation, Method, Object, Step, StepKind};
 use crate::poly::Poly;
 use crate::report::{MatrixOut, Report, Value, str_list};
 
-/// The variable of characteristic polynomials in displays: `s` unless a parameter is so named.
-pub(crate) fn poly_var<K: Field>(k: &K) -> &'static str {
-    let shown = k.to_string();
-    if shown.contains("(s,")
-        || shown.contains(", s)")
-        || shown.contains(", s,")
-        || shown.contains("(s)")
-    {
+/// The variable of characteristic polynomials and transfer functions in displays: the
+/// derivation's (`s`, or `z` in discrete time) unless a parameter is so named (then `x`).
+pub(crate) fn poly_var<K: Field>(d: &Derivation<K>) -> &'static str {
+    let shown = d.field.to_string();
+    let v = d.variable;
+    let named = [
+        format!("({v},"),
+        format!(", {v})"),
+        format!(", {v},"),
+        format!("({v})"),
+    ];
+    if named.iter().any(|n| shown.contains(n.as_str())) {
         "x"
     } else {
-        "s"
+        v
     }
+}
+
+/// `text` with the Laplace variable `s` written as `var` (`z` in discrete time): every `s`
+/// standing as a symbol of its own (`(s)`, `sI`, `s_0`, `s0`, `s^{k}`), not a letter of a
+/// word, a subscript (`A_s`, `x_s`) or a LaTeX command. The identity for `var = "s"`.
+pub(crate) fn in_variable(text: &str, var: &str) -> String {
+    if var == "s" {
+        return text.to_string();
+    }
+    let cs: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    for (i, &c) in cs.iter().enumerate() {
+        let prev = i.checked_sub(1).map(|j| cs[j]);
+        let next = cs.get(i + 1).copied();
+        let alone = c == 's'
+            && !prev.is_some_and(|p| p.is_alphanumeric() || matches!(p, '_' | '\\' | '\'' | '{'))
+            && !next.is_some_and(|n| n.is_ascii_lowercase() || n == '\'' || n == '}');
+        if alone {
+            out.push_str(var);
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// [`in_variable`] inside the math of a LaTeX sentence only (between `$` signs): the words
+/// around it (`chain(s)`) stay.
+pub(crate) fn in_variable_math(text: &str, var: &str) -> String {
+    if var == "s" {
+        return text.to_string();
+    }
+    text.split('$')
+        .enumerate()
+        .map(|(i, part)| {
+            if i % 2 == 1 {
+                in_variable(part, var)
+            } else {
+                part.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("$")
 }
 
 /// The name of a derivation's field (the rationals as a number field of degree 1: `QQ`).
@@ -205,7 +252,7 @@ fn conjugates(d: usize) -> String {
 
 /// The sentence of a step (plain text).
 pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
-    let var = poly_var(&d.field);
+    let var = poly_var(d);
     let c = |key: &str| s.count(key).unwrap_or(0);
     let cs = |key: &str| s.counts(key).map(counts).unwrap_or_default();
     let ob = |key: &str| s.counts(key).map(one_based).unwrap_or_default();
@@ -354,7 +401,7 @@ fn object_value<K: Field>(o: &Object<K>, var: &str, field: &K) -> Value {
 
 /// One step as a report.
 fn step_report<K: Field>(d: &Derivation<K>, i: usize, s: &Step<K>) -> Report {
-    let var = poly_var(&d.field);
+    let var = poly_var(d);
     let text = sentence(d, s);
     let mut r = Report::titled(format!("step {}. {}", i + 1, text))
         .str("step", kind_name(s.kind))
@@ -368,7 +415,7 @@ fn step_report<K: Field>(d: &Derivation<K>, i: usize, s: &Step<K>) -> Report {
     }
     let (id, _) = identity(s.kind);
     if let Some(h) = s.holds {
-        r = r.str("identity", id).bool("holds", h);
+        r = r.str("identity", in_variable(id, var)).bool("holds", h);
     }
     if !s.assumes.is_empty() {
         r = r.with(

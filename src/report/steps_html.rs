@@ -97,12 +97,13 @@ fn step_html<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K>
         sentence_html(&sentence_latex(d, st))
     );
     let field = step_field(d, st);
+    let var = super::steps::poly_var(d);
     let mut tex = String::new();
     for (k, o) in &st.objects {
-        if transfer_latex(&mut tex, st, k, false) || super::steps_forms::flag(k) {
+        if transfer_latex(&mut tex, st, k, false, var) || super::steps_forms::flag(k) {
             continue;
         }
-        object_latex(&mut tex, st.kind, k, o, &field, false);
+        object_latex(&mut tex, st.kind, k, o, &field, false, var);
     }
     if !tex.is_empty() {
         let _ = write!(s, "<div style=\"overflow-x:auto\">{}</div>", escape(&tex));
@@ -114,7 +115,12 @@ fn step_html<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K>
         } else {
             "<strong>FAILS</strong>"
         };
-        let _ = write!(s, "<p>Identity: {} &mdash; {verdict}.</p>", inline_math(id));
+        let id = super::steps::in_variable(id, var);
+        let _ = write!(
+            s,
+            "<p>Identity: {} &mdash; {verdict}.</p>",
+            inline_math(&id)
+        );
     }
     if let Some(conds) = assumes_latex(d, st) {
         let _ = write!(s, "<p>Assumes: {}.</p>", inline_math(&conds));

@@ -18,8 +18,12 @@ const BLOCK_COLS: usize = 20;
 /// The A4 text width with 2 cm margins, in mm (a little less, for the brackets).
 const TEXT_MM: f64 = 145.0;
 
-/// The math symbol of an object key.
-fn symbol(kind: StepKind, key: &str) -> String {
+/// The math symbol of an object key, in the variable `var`.
+fn symbol(kind: StepKind, key: &str, var: &str) -> String {
+    super::steps::in_variable(&symbol_in_s(kind, key), var)
+}
+
+fn symbol_in_s(kind: StepKind, key: &str) -> String {
     match (kind, key) {
         (StepKind::KalmanBasis, "dims") => {
             return r"\dim X_{c\bar o},\,\dim X_{co},\,\dim X_{\bar c\bar o},\,\dim X_{\bar co}"
@@ -278,18 +282,19 @@ pub(crate) fn object_latex<K: Field>(
     o: &Object<K>,
     field: &K,
     a4: bool,
+    var: &str,
 ) {
-    let name = symbol(kind, key);
+    let name = symbol(kind, key, var);
     let index_list = matches!(key, "kept" | "not_excited" | "not_observed" | "pivots")
         || super::steps_more::index_list(key);
     match o {
         Object::Matrix(m) => matrix_latex(s, &name, m, a4),
-        Object::Poly(p) => display_wrapped(s, &name, &poly_latex(p, "s")),
+        Object::Poly(p) => display_wrapped(s, &name, &poly_latex(p, var)),
         Object::Factors(fs) => {
             let parts: Vec<String> = fs
                 .iter()
                 .map(|(p, e)| {
-                    let b = format!("\\left({}\\right)", poly_latex(p, "s"));
+                    let b = format!("\\left({}\\right)", poly_latex(p, var));
                     if *e > 1 { format!("{b}^{{{e}}}") } else { b }
                 })
                 .collect();
@@ -322,7 +327,7 @@ pub(crate) fn object_latex<K: Field>(
             let _ = writeln!(s, "\\[ {name} = {} \\]", counts_latex(cs, index_list));
         }
         Object::Polys(ps) => {
-            let parts: Vec<String> = ps.iter().map(|p| poly_latex(p, "s")).collect();
+            let parts: Vec<String> = ps.iter().map(|p| poly_latex(p, var)).collect();
             let one_line = parts.iter().map(|p| typeset_len(p) + 2).sum::<usize>() <= LINE_CHARS;
             if !a4 || one_line {
                 let _ = writeln!(s, "\\[ {name}:\\ {} \\]", parts.join(",\\; "));
@@ -403,6 +408,10 @@ fn display_wrapped(s: &mut String, name: &str, body: &str) {
 
 /// The sentence of a step in LaTeX (the objects follow it in display math).
 pub(crate) fn sentence_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
+    super::steps::in_variable_math(&sentence_latex_in_s(d, st), super::steps::poly_var(d))
+}
+
+fn sentence_latex_in_s<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
     let th = theta_step(d, st.part)
         .and_then(|s| s.scalar("theta").map(|t| entry(&step_field(d, s), t)))
         .unwrap_or_default();
@@ -464,13 +473,15 @@ fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K
     );
     let _ = writeln!(s, "{}\n", sentence_latex(d, st));
     let field = step_field(d, st);
+    let var = super::steps::poly_var(d);
     for (k, o) in &st.objects {
-        if transfer_latex(s, st, k, true) || super::steps_forms::flag(k) {
+        if transfer_latex(s, st, k, true, var) || super::steps_forms::flag(k) {
             continue;
         }
-        object_latex(s, st.kind, k, o, &field, true);
+        object_latex(s, st.kind, k, o, &field, true, var);
     }
     let (_, id) = identity(st.kind);
+    let id = super::steps::in_variable(id, var);
     if let Some(h) = st.holds {
         let verdict = if h { "holds exactly" } else { "FAILS" };
         let _ = writeln!(s, "\\noindent Identity: $ {id} $ --- {verdict}.\n");
@@ -531,6 +542,7 @@ pub(crate) fn transfer_latex<K: Field>(
     st: &Step<K>,
     key: &str,
     a4: bool,
+    var: &str,
 ) -> bool {
     if st.kind != StepKind::TransferEntries {
         return false;
@@ -547,7 +559,7 @@ pub(crate) fn transfer_latex<K: Field>(
         (0..m)
             .map(|j| {
                 let (n, d) = (&num[i * m + j], &den[i * m + j]);
-                typeset_len(&poly_latex(n, "s")).max(typeset_len(&poly_latex(d, "s"))) + 2
+                typeset_len(&poly_latex(n, var)).max(typeset_len(&poly_latex(d, var))) + 2
             })
             .sum()
     };
@@ -558,26 +570,29 @@ pub(crate) fn transfer_latex<K: Field>(
                 let (n, d) = (&num[i * m + j], &den[i * m + j]);
                 let ij = format!("{{{},{}}}", i + 1, j + 1);
                 if d.deg() == 0 {
-                    display_wrapped(out, &format!("G_{ij}(s)"), &poly_latex(n, "s"));
+                    display_wrapped(out, &format!("G_{ij}({var})"), &poly_latex(n, var));
                     continue;
                 }
-                let _ = writeln!(out, "\\[ G_{ij}(s) = \\frac{{n_{ij}(s)}}{{d_{ij}(s)}} \\]");
-                display_wrapped(out, &format!("n_{ij}(s)"), &poly_latex(n, "s"));
-                display_wrapped(out, &format!("d_{ij}(s)"), &poly_latex(d, "s"));
+                let _ = writeln!(
+                    out,
+                    "\\[ G_{ij}({var}) = \\frac{{n_{ij}({var})}}{{d_{ij}({var})}} \\]"
+                );
+                display_wrapped(out, &format!("n_{ij}({var})"), &poly_latex(n, var));
+                display_wrapped(out, &format!("d_{ij}({var})"), &poly_latex(d, var));
             }
         }
         return true;
     }
-    out.push_str("\\[ G(s) = \\begin{bmatrix}\n");
+    let _ = writeln!(out, "\\[ G({var}) = \\begin{{bmatrix}}");
     for i in 0..p {
         let row: Vec<String> = (0..m)
             .map(|j| {
                 let (n, d) = (&num[i * m + j], &den[i * m + j]);
-                let nl = poly_latex(n, "s");
+                let nl = poly_latex(n, var);
                 if d.deg() == 0 {
                     nl
                 } else {
-                    format!("\\dfrac{{{nl}}}{{{}}}", poly_latex(d, "s"))
+                    format!("\\dfrac{{{nl}}}{{{}}}", poly_latex(d, var))
                 }
             })
             .collect();

@@ -170,7 +170,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>, var: &str) -> String {
             poly("z")
         ),
         StepKind::ZerosCompress => format!(
-            "Independent inputs and outputs: the pivot columns ({}) of [B; D] (rank {}) and the pivot rows ({}) of [C, D] (rank {}); a constant unimodular operation zeroes the others, so the Smith form of P(s) is unchanged.",
+            "Independent inputs and outputs: the pivot columns ({}) of [B; D] (rank {}) and the pivot rows ({}) of [C, D] (rank {}); a constant unimodular operation zeroes the others, so the Smith form of P({var}) is unchanged.",
             ob("cols"),
             c("rank_in"),
             ob("rows"),
@@ -182,7 +182,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>, var: &str) -> String {
             s.matrix("P0").map_or(0, |m| m.ncols())
         ),
         StepKind::NormalRank => format!(
-            "Normal rank: at s_0 = {}, z(s_0) = {} != 0, so rank P(s_0) = {} is the normal rank (P({var}) loses rank exactly at the roots of z).",
+            "Normal rank: at {var}_0 = {}, z({var}_0) = {} != 0, so rank P({var}_0) = {} is the normal rank (P({var}) loses rank exactly at the roots of z).",
             s.scalar("s0").map(|x| d.field.fmt_elem(x)).unwrap_or_default(),
             s.scalar("z_s0").map(|x| d.field.fmt_elem(x)).unwrap_or_default(),
             c("rank")

@@ -28,7 +28,7 @@ fn inf() -> Value {
 /// The `margin` report: python-control's four numbers (`gain_margin`, `phase_margin_deg`,
 /// `phase_crossover_frequency`, `gain_crossover_frequency`; `inf` / `null` when there is no
 /// crossover), exact where exact, and every crossing.
-pub fn margins_report(m: &Margins) -> Report {
+pub fn margins_report<K: crate::field::Field>(m: &Margins<K>) -> Report {
     let mut r = Report::titled("gain and phase margins")
         .str(
             "transfer_function",

@@ -142,31 +142,36 @@ pub fn value_at(a: &Poly<Q>, b: &Poly<Q>, w: &AlgebraicNumber) -> Result<(Algebr
     let k = NumberField::new_unchecked(m, w.approx());
     let bk = k.from_poly(b);
     let h = k.mul(&k.from_poly(a), &k.inv(&bk).ok_or(Error::DivisionByZero)?);
-    let hp = k.to_poly(&h);
-    let d = m.deg();
-    // multiplication by h on the basis 1, t, ..., t^(d-1)
-    let mut mat = Matrix::zeros(Q, d, d);
-    let mut col = h.clone();
-    for j in 0..d {
-        let cs = k.coeffs(&col);
-        for i in 0..d {
-            mat.set(i, j, cs.get(i).cloned().unwrap_or_default());
-        }
-        col = k.mul(&col, &k.generator());
-    }
-    let (_, factors) = factor_q(&mat.charpoly()?)?;
+    let check = k.mul(&bk, &h) == k.from_poly(a);
+    value_in_field(&k, &h, w, check)
+}
+
+/// The element `h` of $k = \mathbb{Q}(w)$ (`k`'s generator is `w`) as an algebraic number:
+/// its minimal polynomial is the factor of the characteristic polynomial of multiplication
+/// by `h` that vanishes at `h`, the root the one meeting the interval image of `h`; `check`
+/// is passed through, and-ed with nothing else.
+///
+/// # Errors
+/// `Limit` when the roots are not told apart in bound.
+pub fn value_in_field(
+    k: &NumberField,
+    h: &<NumberField as Field>::Elem,
+    w: &AlgebraicNumber,
+    check: bool,
+) -> Result<(AlgebraicNumber, bool)> {
+    let hp = k.to_poly(h);
+    let (_, factors) = factor_q(&mult_matrix(k, h).charpoly()?)?;
     let f = factors
         .into_iter()
         .map(|(f, _)| f)
         .find(|f| {
             let mut acc = k.zero();
             for c in f.coeffs().iter().rev() {
-                acc = k.add(&k.mul(&acc, &h), &k.from_base(c));
+                acc = k.add(&k.mul(&acc, h), &k.from_base(c));
             }
             k.is_zero(&acc)
         })
         .ok_or_else(|| Error::Verification("no factor of the norm vanishes at h".into()))?;
-    let check = k.mul(&bk, &h) == k.from_poly(a);
     if f.deg() == 1 {
         return Ok((AlgebraicNumber::from_rational(&-f.coeff(0)), check));
     }
@@ -192,6 +197,22 @@ pub fn value_at(a: &Poly<Q>, b: &Poly<Q>, w: &AlgebraicNumber) -> Result<(Algebr
     Err(Error::Limit(
         "telling apart the roots of a value's minimal polynomial".into(),
     ))
+}
+
+/// The matrix over $\mathbb{Q}$ of multiplication by `h` on the basis $1, t, \dots, t^{d-1}$
+/// of $k = \mathbb{Q}(t)$.
+pub(super) fn mult_matrix(k: &NumberField, h: &<NumberField as Field>::Elem) -> Matrix<Q> {
+    let d = k.degree();
+    let mut mat = Matrix::zeros(Q, d, d);
+    let mut col = h.clone();
+    for j in 0..d {
+        let cs = k.coeffs(&col);
+        for i in 0..d {
+            mat.set(i, j, cs.get(i).cloned().unwrap_or_default());
+        }
+        col = k.mul(&col, &k.generator());
+    }
+    mat
 }
 
 #[cfg(test)]

@@ -1,5 +1,12 @@
-//! Gain and phase margins of a SISO system over $\mathbb{Q}$, exactly (python-control's
-//! `margin` / `stability_margins`, its definitions and choices).
+//! Gain and phase margins of a SISO system over $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$ and
+//! $\mathbb{Q}(i)$, exactly (python-control's `margin` / `stability_margins`, its definitions
+//! and choices). One computation for every field: the parts on the imaginary axis are
+//! polynomials in $\omega$ over $\mathbb{Q}(\sqrt e)$ ([`axis`]; $\mathbb{Q}$ for
+//! $\mathbb{Q}$ and $\mathbb{Q}(i)$), their real roots and signs decided exactly through
+//! rational polynomials. For a system with complex coefficients ($\mathbb{Q}(i)$) the
+//! frequencies are $\omega \ge 0$ as for a real one (its Nyquist curve is not symmetric, so
+//! crossings at $\omega < 0$ are not reported), and $\omega = 0$ counts only where
+//! $G(0)$ is real.
 //!
 //! With $G = N/D$ in lowest terms and $N(j\omega) = N_r + j N_i$, $D(j\omega) = D_r + j D_i$
 //! (real polynomials in $\omega$, [`algebra::split_imaginary_axis`]):
@@ -17,17 +24,19 @@
 //!   the phase margin whose $|\mathrm{PM}|$ is least; none of a kind means infinite.
 //!
 //! `verified`: every crossing's minimal polynomial divides its defining polynomial ($I$ or
-//! $|N|^2 - |D|^2$), and every margin value's minimal polynomial vanishes at the class of its
-//! rational expression in $\mathbb{Q}(\omega)$ (exact arithmetic in that field).
+//! $|N|^2 - |D|^2$; over $\mathbb{Q}(\sqrt e)$ their norms), and every margin value's minimal
+//! polynomial vanishes at the class of its rational expression in $\mathbb{Q}(\omega)$
+//! (exact arithmetic in that field; over $\mathbb{Q}(\sqrt e)$: shares a root with it).
 
 pub mod algebra;
+pub mod axis;
 
 use crate::algebraic::AlgebraicNumber;
 use crate::error::{Error, Result};
-use crate::field::{Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::poly::Poly;
 use crate::system::StateSpace;
-use algebra::{positive_roots, sign_at, split_imaginary_axis, value_at};
+use axis::{AxisField, AxisPoly, axis_sign_at, axis_value_at, positive_roots};
 use num_complex::Complex64;
 use num_traits::Zero;
 use std::cmp::Ordering;
@@ -50,14 +59,15 @@ pub struct GainCrossing {
     pub phase_margin_deg: f64,
 }
 
-/// Margins of a SISO loop transfer function.
+/// Margins of a SISO loop transfer function over `K`.
 #[derive(Clone, Debug)]
-pub struct Margins {
-    pub num: Poly<Q>,
-    pub den: Poly<Q>,
-    /// $I(\omega) = \mathrm{Im}(N \bar D)$ at $s = j\omega$.
+pub struct Margins<K: Field = Q> {
+    pub num: Poly<K>,
+    pub den: Poly<K>,
+    /// $I(\omega) = \mathrm{Im}(N \bar D)$ at $s = j\omega$ (rational: over
+    /// $\mathbb{Q}(\sqrt e)$ its norm $I \bar I$, whose real roots hold $I$'s).
     pub imag_poly: Poly<Q>,
-    /// $|N(j\omega)|^2 - |D(j\omega)|^2$.
+    /// $|N(j\omega)|^2 - |D(j\omega)|^2$ (rational as `imag_poly`).
     pub magnitude_poly: Poly<Q>,
     /// Ascending in $\omega$.
     pub phase_crossings: Vec<PhaseCrossing>,
@@ -74,7 +84,7 @@ pub struct Margins {
     pub verified: bool,
 }
 
-impl Margins {
+impl<K: Field> Margins<K> {
     /// The reported gain margin, `None` when infinite.
     pub fn gain_margin(&self) -> Option<&PhaseCrossing> {
         self.gm_index.map(|i| &self.phase_crossings[i])
@@ -85,12 +95,12 @@ impl Margins {
     }
 }
 
-/// The margins of a SISO state-space system over $\mathbb{Q}$ (from its transfer function in
-/// lowest terms).
+/// The margins of a SISO state-space system over $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$ or
+/// $\mathbb{Q}(i)$ (from its transfer function in lowest terms).
 ///
 /// # Errors
 /// `Invalid` when the system is not SISO; `Limit` from root separation.
-pub fn margins(s: &StateSpace<Q>) -> Result<Margins> {
+pub fn margins<K: AxisField>(s: &StateSpace<K>) -> Result<Margins<K>> {
     if s.ninputs() != 1 || s.noutputs() != 1 {
         return Err(Error::Invalid(format!(
             "margins need a SISO system (this one has {} outputs and {} inputs)",
@@ -103,41 +113,56 @@ pub fn margins(s: &StateSpace<Q>) -> Result<Margins> {
     margins_tf(&f.num, &f.den)
 }
 
+/// A rational polynomial holding the real roots of `p`: `p` itself over $\mathbb{Q}$, else
+/// its norm.
+fn rational_hull(p: &AxisPoly) -> Poly<Q> {
+    if p.is_rational() {
+        p.q.clone()
+    } else {
+        p.norm()
+    }
+}
+
 /// The margins of $G = N/D$ (`den` nonzero; the fraction need not be reduced, but a factor
 /// common to both that vanishes on the imaginary axis hides a crossing there).
 ///
 /// # Errors
 /// `DivisionByZero` for a zero `den`; `Limit` from root separation.
-pub fn margins_tf(num: &Poly<Q>, den: &Poly<Q>) -> Result<Margins> {
+pub fn margins_tf<K: AxisField>(num: &Poly<K>, den: &Poly<K>) -> Result<Margins<K>> {
     if den.is_zero() {
         return Err(Error::DivisionByZero);
     }
-    let (nr, ni) = split_imaginary_axis(num);
-    let (dr, di) = split_imaginary_axis(den);
+    let k = den.field().clone();
+    let (nr, ni) = k.split_axis(num);
+    let (dr, di) = k.split_axis(den);
     let p = nr.mul(&dr).add(&ni.mul(&di));
     let im = ni.mul(&dr).sub(&nr.mul(&di));
     let d2 = dr.mul(&dr).add(&di.mul(&di));
     let n2 = nr.mul(&nr).add(&ni.mul(&ni));
     let mag = n2.sub(&d2);
+    let (im_q, mag_q) = (rational_hull(&im), rational_hull(&mag));
     let mut verified = true;
     let mut phase_crossings = vec![];
     // python-control counts w = 0 (a root of the odd I) when G(0) is finite and negative:
     // the Nyquist curve starts on the negative real axis, gain margin 1/|G(0)|
-    let zero = Rational::zero();
-    if !im.is_zero() && p.eval(&zero) < zero {
-        let gm = -(d2.eval(&zero) / p.eval(&zero));
+    let zero = AlgebraicNumber::from_rational(&Rational::zero());
+    let real_at_0 =
+        im.q.eval(&Rational::zero()).is_zero() && im.r.eval(&Rational::zero()).is_zero();
+    if !im.is_zero() && real_at_0 && axis_sign_at(&p, &zero)? == Ordering::Less {
+        let (gm, ok) = axis_value_at(&d2.neg(), &p, &zero)?;
+        verified &= ok;
         phase_crossings.push(PhaseCrossing {
-            w: AlgebraicNumber::from_rational(&zero),
-            gain_margin: AlgebraicNumber::from_rational(&gm),
+            w: zero,
+            gain_margin: gm,
         });
     }
     if !im.is_zero() {
         for w in positive_roots(&im)? {
-            verified &= im.rem(w.minpoly()).is_zero();
-            if sign_at(&p, &w)? != Ordering::Less {
+            verified &= im_q.rem(w.minpoly()).is_zero();
+            if axis_sign_at(&p, &w)? != Ordering::Less {
                 continue; // the positive real axis, a zero or a pole on the axis
             }
-            let (gm, ok) = value_at(&d2.neg(), &p, &w)?;
+            let (gm, ok) = axis_value_at(&d2.neg(), &p, &w)?;
             verified &= ok;
             phase_crossings.push(PhaseCrossing { w, gain_margin: gm });
         }
@@ -145,10 +170,10 @@ pub fn margins_tf(num: &Poly<Q>, den: &Poly<Q>) -> Result<Margins> {
     let mut gain_crossings = vec![];
     if !mag.is_zero() {
         for w in positive_roots(&mag)? {
-            verified &= mag.rem(w.minpoly()).is_zero();
-            let (c, ok) = value_at(&p.neg(), &d2, &w)?;
+            verified &= mag_q.rem(w.minpoly()).is_zero();
+            let (c, ok) = axis_value_at(&p.neg(), &d2, &w)?;
             verified &= ok;
-            let pm = phase_margin_deg(num, den, w.approx().0);
+            let pm = phase_margin_deg(&[&nr, &ni, &dr, &di], w.approx().0);
             gain_crossings.push(GainCrossing {
                 w,
                 cos_phase_margin: c,
@@ -165,8 +190,8 @@ pub fn margins_tf(num: &Poly<Q>, den: &Poly<Q>) -> Result<Margins> {
     Ok(Margins {
         num: num.clone(),
         den: den.clone(),
-        imag_poly: im.clone(),
-        magnitude_poly: mag.clone(),
+        imag_poly: im_q,
+        magnitude_poly: mag_q,
         phase_crossings,
         gain_crossings,
         real_everywhere: im.is_zero(),
@@ -201,9 +226,11 @@ pub fn eval_jw(num: &Poly<Q>, den: &Poly<Q>, w: f64) -> Complex64 {
     ev(num) / ev(den)
 }
 
-/// python-control's phase margin at a gain crossover: `remainder(angle(G, deg), 360) - 180`.
-fn phase_margin_deg(num: &Poly<Q>, den: &Poly<Q>, w: f64) -> f64 {
-    let g = eval_jw(num, den, w);
+/// python-control's phase margin at a gain crossover: `remainder(angle(G, deg), 360) - 180`,
+/// from the axis parts `[Nr, Ni, Dr, Di]` in floats.
+fn phase_margin_deg(parts: &[&AxisPoly; 4], w: f64) -> f64 {
+    let v: Vec<f64> = parts.iter().map(|p| p.eval_f64(w)).collect();
+    let g = Complex64::new(v[0], v[1]) / Complex64::new(v[2], v[3]);
     g.arg().to_degrees().rem_euclid(360.0) - 180.0
 }
 
