@@ -77,6 +77,8 @@ mod jordan;
 mod jordan_fields;
 #[path = "jordan_generic.rs"]
 mod jordan_generic;
+#[path = "jordan_primary.rs"]
+mod jordan_primary;
 #[path = "latex.rs"]
 mod latex;
 #[path = "layers.rs"]

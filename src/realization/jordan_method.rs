@@ -207,7 +207,9 @@ fn real_pair<F: EigenField>(
     let k = jf.base();
     let comp = &jf.components[c.comp];
     let radical =
-        comp.factor.deg() == 2 && comp.minpoly.deg() == 2 && blk.field.0.radical.is_some();
+        comp.factor.deg() == 2
+        && comp.minpoly.as_ref().is_some_and(|m| m.deg() == 2)
+        && blk.field.0.radical.is_some();
     match F::real_pair(jf, ev, expand) {
         Ok(Some(pf)) => {
             let f = pf.field.clone();
