@@ -78,7 +78,11 @@ fn planted_qp(rng: &mut Rng) -> StateSpace<RatFuncField> {
     ];
     let j = Matrix::from_fn(k.clone(), 7, 7, |r, c| e(rows[r][c]));
     let u = unimodular(&k, 7, rng);
-    let a = u.try_mul(&j).unwrap().try_mul(&u.inverse().unwrap()).unwrap();
+    let a = u
+        .try_mul(&j)
+        .unwrap()
+        .try_mul(&u.inverse().unwrap())
+        .unwrap();
     let pick = |rng: &mut Rng| match rng.int(0, 3) {
         0 => k.zero(),
         1 => k.var(0),

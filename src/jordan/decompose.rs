@@ -57,7 +57,11 @@ pub trait EigenField: RealEmbed + 'static {
     fn root_field(jf: &JordanForm<Self>, ev: usize) -> (Ext<Self>, Embedding<'_, Self>) {
         let e = &jf.eigenvalues[ev];
         let c = &jf.components[e.component];
-        let radical = match c.minpoly.as_ref().filter(|m| c.factor.deg() == 2 && m.deg() == 2) {
+        let radical = match c
+            .minpoly
+            .as_ref()
+            .filter(|m| c.factor.deg() == 2 && m.deg() == 2)
+        {
             Some(m) => super::roots::quadratic_roots(m).map(|(a0, s, f)| {
                 let positive = if num_traits::Signed::is_negative(&f) {
                     e.approx.1 > 0.0

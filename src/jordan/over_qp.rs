@@ -211,8 +211,9 @@ pub fn real_form_qp(a_in: &Matrix<RatFuncField>) -> Result<QpRealForm> {
             1 => pairs.push(None),
             2 => {
                 let var = format!("w{}", pairs.iter().flatten().count() + 1);
-                let r = super::real_quadratic::quadratic_real(&a, c, &var)
-                    .ok_or_else(|| Error::Verification("a quadratic factor without a real form".into()))?;
+                let r = super::real_quadratic::quadratic_real(&a, c, &var).ok_or_else(|| {
+                    Error::Verification("a quadratic factor without a real form".into())
+                })?;
                 verified &= r.verified;
                 pairs.push(Some(r));
             }

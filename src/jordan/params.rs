@@ -14,10 +14,10 @@
 //!   ($A B_f = B_f M_f$) as the diagonal block of $J$ (a primary block, not a Jordan block:
 //!   [`ParamJordanForm::complete`] is `false` then).
 //!
-//! **Characteristic polynomial.** $\chi_A$ by [`crate::matrix::params::charpoly_ratfunc`]
-//! (evaluation/interpolation over $\mathbb{Z}\lbrack p\rbrack$), denominators cleared, then
-//! factored in $\mathbb{Z}\lbrack p, x\rbrack$ by [`crate::mpoly::factor()`] (irreducible over
-//! $\mathbb{Q}(p)$ by Gauss's lemma); factors free of $x$ are dropped.
+//! **Characteristic polynomial and its factors** over $\mathbb{Q}(p)$, with their conditions:
+//! [`super::over_qp::charpoly_factors`] (shared with the generic components over
+//! $\mathbb{Q}(p)$, [`super::over_qp::components_qp`], which `jordan --real` and the Jordan-method
+//! realization use).
 //!
 //! **Conditions** (irreducible polynomials in $p$ assumed nonzero; [`ParamJordanForm::conditions`]):
 //! every pivot the eliminations divided by (recorded by [`RatFuncField`]); the leading
@@ -29,10 +29,10 @@
 //! sizes) is the generic one and $T$, $J$ are valid after substitution.
 
 use super::chains::{jordan_block_matrix, jordan_chains};
+use super::over_qp::{QpCharpoly, QpFactor, charpoly_factors, drop_last};
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
-use super::over_qp::{QpCharpoly, QpFactor, charpoly_factors, drop_last};
 use crate::matrix::params::rref_params;
 use crate::mpoly::MPoly;
 use crate::poly::Poly;

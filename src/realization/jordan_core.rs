@@ -154,7 +154,12 @@ fn compact_component<F: Field + 'static>(
 }
 
 /// $\mathrm{Tr}_{E/F}(t^e x) = \sum_c x_c s_{e+c}$.
-pub(super) fn trace_shifted<F: Field>(k: &F, x: &ExtElem<F::Elem>, e: usize, s: &[F::Elem]) -> F::Elem {
+pub(super) fn trace_shifted<F: Field>(
+    k: &F,
+    x: &ExtElem<F::Elem>,
+    e: usize,
+    s: &[F::Elem],
+) -> F::Elem {
     x.0.iter()
         .enumerate()
         .fold(k.zero(), |acc, (c, xc)| k.add(&acc, &k.mul(xc, &s[e + c])))

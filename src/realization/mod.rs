@@ -58,12 +58,12 @@ pub use descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity, minimal_
 pub use from_transfer::{TransferRealization, realize_state_space, realize_transfer};
 pub use gramian::{GramType, Gramian, Gramians, gramian, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::{minimal_ho_kalman, minimal_ho_kalman_recorded};
-pub use jordan_method_primary::{
-    PrimaryBlock, PrimaryJordanMinimal, minimal_jordan_primary, minimal_jordan_qp,
-};
 pub use jordan_method::{
     JordanMinimal, ModalBlock, RealModalBlock, minimal_jordan, minimal_jordan_rational,
     minimal_jordan_with,
+};
+pub use jordan_method_primary::{
+    PrimaryBlock, PrimaryJordanMinimal, minimal_jordan_primary, minimal_jordan_qp,
 };
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;

@@ -96,7 +96,9 @@ impl crate::jordan::over_qp::QpRealForm {
                     None => {
                         let theta = k.neg(&c.factor.monic().coeff(0));
                         let e = &c.field;
-                        let t = c.chains.map(k, |x| e.to_base(x).unwrap_or_else(|| k.zero()));
+                        let t = c
+                            .chains
+                            .map(k, |x| e.to_base(x).unwrap_or_else(|| k.zero()));
                         Report::new()
                             .str("eigenvalue", k.fmt_elem(&theta))
                             .with("blocks", blocks)
