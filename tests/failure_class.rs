@@ -114,7 +114,7 @@ fn unsupported_and_limit_commands_carry_their_class() {
         "{}",
         f.message
     );
-    assert!(f.message.contains("needs numbers"), "{}", f.message);
+    assert!(f.message.contains("degree 3"), "{}", f.message);
     let (code, _, err) = run(&["jordan", s2, "--steps"]);
     assert_eq!(code, 2);
     assert!(err.contains("needs rational entries"), "{err}");
