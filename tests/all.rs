@@ -79,6 +79,10 @@ mod jordan;
 mod jordan_fields;
 #[path = "jordan_generic.rs"]
 mod jordan_generic;
+#[path = "jordan_primary.rs"]
+mod jordan_primary;
+#[path = "jordan_real_qp.rs"]
+mod jordan_real_qp;
 #[path = "latex.rs"]
 mod latex;
 #[path = "layers.rs"]

@@ -284,7 +284,7 @@ fn fields_each_command_accepts() {
         ("minreal", [0, 0, 0, 0]),
         ("minreal --method rosenbrock", [0, 0, 0, 0]),
         ("minreal --method ho-kalman", [0, 0, 0, 0]),
-        ("minreal --method jordan", [0, 0, 0, 2]),
+        ("minreal --method jordan", [0, 0, 0, 0]),
         ("minreal --method era", [0, 0, 0, 2]),
         ("standard", [0, 0, 0, 0]),
         ("scb", [0, 0, 0, 0]),

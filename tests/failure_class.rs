@@ -109,10 +109,10 @@ fn unsupported_and_limit_commands_carry_their_class() {
         r#"{"A": [["sqrt(2)", 1], [0, 1]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]}"#,
     );
     let s2 = s2.to_str().unwrap();
-    // a real Jordan form of a symbolic system: refused by the front door (Unsupported)
+    // a real Jordan form over QQ(k) of a cubic factor (x^3 - k): refused, Unsupported
     let k = write(
         "k.json",
-        r#"{"symbols": ["k"], "A": [["-k", 1], [0, -1]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]}"#,
+        r#"{"symbols": ["k"], "A": [[0, 0, "k"], [1, 0, 0], [0, 1, 0]], "B": [[0], [0], [1]], "C": [[1, 0, 0]], "D": [[0]]}"#,
     );
     let f = failure(&["jordan", k.to_str().unwrap(), "--real"]);
     assert_eq!(
@@ -121,7 +121,7 @@ fn unsupported_and_limit_commands_carry_their_class() {
         "{}",
         f.message
     );
-    assert!(f.message.contains("needs numbers"), "{}", f.message);
+    assert!(f.message.contains("degree 3"), "{}", f.message);
     let (code, _, err) = run(&["jordan", s2, "--steps"]);
     assert_eq!(code, 2);
     assert!(err.contains("needs rational entries"), "{err}");

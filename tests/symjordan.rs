@@ -290,10 +290,18 @@ fn cli_jordan_over_qp_and_at() {
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(j["verified"], true);
     assert!(out.contains("-8/3"));
-    // --real over QQ(p) is refused with one line
-    let (code, _, err) = run(&["jordan", yaw, "--symbolic", "--real"]);
+    // --real over QQ(p): every eigenvalue of the yaw plane lies in QQ(p), so the real form is
+    // the Jordan form (verified); a factor of degree 4 (sliding masses) is refused with its
+    // reason in one line
+    let (code, out, _) = run(&["jordan", yaw, "--symbolic", "--real", "--format", "json"]);
+    assert_eq!(code, 0);
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["verified"], true);
+    let sliding = "data/sliding-masses-symbolic.json";
+    let (code, _, err) = run(&["jordan", sliding, "--real"]);
     assert_eq!(code, 2);
     assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("degree 4"), "{err}");
 }
 
 /// The mechanical-normal-form paper, App. B (eq. 18-19) over QQ(w1, w2).

@@ -123,6 +123,18 @@ pub fn jordan_outcome(a: &Matrix<RatFuncField>) -> Result<Outcome> {
     Ok(Outcome::new(report(&jf), jf.verified))
 }
 
+/// `jordan --real FILE` on a symbolic `A` ([`crate::jordan::over_qp::real_form_qp`]); the
+/// conditions recorded in its fresh field join the report.
+///
+/// # Errors
+/// Those of the real form over $\mathbb{Q}(p)$.
+pub fn real_outcome(a: &Matrix<RatFuncField>) -> Result<Outcome> {
+    let r = crate::jordan::over_qp::real_form_qp(a)?;
+    let conds = r.a.field().conditions_strings()?;
+    let rep = exact_only(r.report()).with("conditions", str_list(conds));
+    Ok(Outcome::new(rep, r.verified))
+}
+
 /// `mnf FILE` over $\mathbb{Q}(p)$: [`crate::structure::mechanical::mechanical_normal_form_in`]
 /// on $(A, B, C, D)$ in a fresh field. The report is the rational one with the theorem's
 /// checks under `existence_checks` and `conditions` the polynomials in the parameters the

@@ -57,17 +57,20 @@ pub trait EigenField: RealEmbed + 'static {
     fn root_field(jf: &JordanForm<Self>, ev: usize) -> (Ext<Self>, Embedding<'_, Self>) {
         let e = &jf.eigenvalues[ev];
         let c = &jf.components[e.component];
-        let radical = if c.factor.deg() == 2 && c.minpoly.deg() == 2 {
-            super::roots::quadratic_roots(&c.minpoly).map(|(a0, s, f)| {
+        let radical = match c
+            .minpoly
+            .as_ref()
+            .filter(|m| c.factor.deg() == 2 && m.deg() == 2)
+        {
+            Some(m) => super::roots::quadratic_roots(m).map(|(a0, s, f)| {
                 let positive = if num_traits::Signed::is_negative(&f) {
                     e.approx.1 > 0.0
                 } else {
                     e.approx.0 > crate::field::rational_to_f64(&a0)
                 };
                 (a0, if positive { s } else { -s }, f)
-            })
-        } else {
-            None
+            }),
+            None => None,
         };
         (
             c.field.marked(e.approx, &e.symbol, radical),
@@ -119,7 +122,7 @@ pub fn generic_component<F: Field + 'static>(
     };
     Ok(Component {
         factor: g.clone(),
-        minpoly,
+        minpoly: Some(minpoly),
         multiplicity: e,
         field,
         roots,

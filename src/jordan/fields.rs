@@ -60,7 +60,7 @@ impl EigenField for Q {
         if e == 1 && g.deg() >= 2 {
             generic_component(a, chi, (g, e, minpoly), roots)
         } else {
-            Component::compute(a, g, e, roots)
+            Component::compute(a, g, e, Some(minpoly), roots, false)
         }
     }
     /// $\mathbb{Q}$ for a rational root, $\mathbb{Q}(\sqrt f)$ (displayed with its radical,
@@ -175,7 +175,7 @@ impl EigenField for QuadraticField {
     ) -> Result<Option<PairField>> {
         let e = &jf.eigenvalues[ev];
         let c = &jf.components[e.component];
-        if c.factor.deg() == 2 && c.minpoly.deg() == 2 {
+        if c.factor.deg() == 2 && c.minpoly.as_ref().is_some_and(|m| m.deg() == 2) {
             return Ok(None);
         }
         pair_field(&c.factor, e.approx, &format!("c{}", &e.symbol[1..]), expand)

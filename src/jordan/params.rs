@@ -14,10 +14,10 @@
 //!   ($A B_f = B_f M_f$) as the diagonal block of $J$ (a primary block, not a Jordan block:
 //!   [`ParamJordanForm::complete`] is `false` then).
 //!
-//! **Characteristic polynomial.** $\chi_A$ by [`crate::matrix::params::charpoly_ratfunc`]
-//! (evaluation/interpolation over $\mathbb{Z}\lbrack p\rbrack$), denominators cleared, then
-//! factored in $\mathbb{Z}\lbrack p, x\rbrack$ by [`crate::mpoly::factor()`] (irreducible over
-//! $\mathbb{Q}(p)$ by Gauss's lemma); factors free of $x$ are dropped.
+//! **Characteristic polynomial and its factors** over $\mathbb{Q}(p)$, with their conditions:
+//! [`super::over_qp::charpoly_factors`] (shared with the generic components over
+//! $\mathbb{Q}(p)$, [`super::over_qp::components_qp`], which `jordan --real` and the Jordan-method
+//! realization use).
 //!
 //! **Conditions** (irreducible polynomials in $p$ assumed nonzero; [`ParamJordanForm::conditions`]):
 //! every pivot the eliminations divided by (recorded by [`RatFuncField`]); the leading
@@ -29,19 +29,16 @@
 //! sizes) is the generic one and $T$, $J$ are valid after substitution.
 
 use super::chains::{jordan_block_matrix, jordan_chains};
+use super::over_qp::{QpCharpoly, QpFactor, charpoly_factors, drop_last};
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::matrix::Matrix;
-use crate::matrix::params::{charpoly_ratfunc, rref_params};
-use crate::mpoly::factor::cmp_poly;
-use crate::mpoly::gcd::lcm;
-use crate::mpoly::resultant::{discriminant, resultant};
-use crate::mpoly::{MAX_VARS, MPoly, factor};
+use crate::matrix::params::rref_params;
+use crate::mpoly::MPoly;
 use crate::poly::Poly;
 use crate::ratfunc::{RatFunc, RatFuncField};
 
-/// Largest matrix [`jordan_params`] accepts (expression swell grows fast with `n`).
-pub const MAX_N: usize = 24;
+pub use super::over_qp::MAX_N;
 
 /// One irreducible factor of $\chi_A$ over $\mathbb{Q}(p)$ and its eigenvalues.
 #[derive(Clone, Debug, PartialEq)]
@@ -139,18 +136,6 @@ fn var_name(vars: &[String]) -> String {
     "lambda__".to_string()
 }
 
-/// Drops the last variable (which must not occur).
-fn drop_last(f: &MPoly) -> MPoly {
-    let n = f.nvars() - 1;
-    let map: Vec<usize> = (0..n).collect();
-    f.remap(n, &map)
-}
-
-/// `c` in the field, for a polynomial of `nv + 1` variables free of the last one.
-fn coeff_to_field(k: &RatFuncField, c: &MPoly) -> RatFunc {
-    k.from_mpoly(drop_last(c))
-}
-
 /// The Jordan decomposition of a square matrix over $\mathbb{Q}(p)$ (module docs).
 ///
 /// The computation runs in a fresh copy of the field (an empty condition log); the result's
@@ -182,81 +167,26 @@ fn coeff_to_field(k: &RatFuncField, c: &MPoly) -> RatFunc {
 pub fn jordan_params(a_in: &Matrix<RatFuncField>) -> Result<ParamJordanForm> {
     a_in.check_square("jordan")?;
     let n = a_in.nrows();
-    if n > MAX_N {
-        return Err(Error::Limit(format!(
-            "jordan over QQ(p): at most {MAX_N} states (this matrix has {n})"
-        )));
-    }
     let k = a_in.field().fresh();
-    let nv = k.nvars();
-    if nv + 1 > MAX_VARS {
-        return Err(Error::Limit(format!(
-            "jordan over QQ(p): at most {} parameters",
-            MAX_VARS - 1
-        )));
-    }
     let a = Matrix::from_vec(k.clone(), n, n, a_in.as_slice().to_vec());
-    let chi = charpoly_ratfunc(&a)?;
-    // clear denominators: F = L chi in Z[p][x], x = variable nv
-    let mut l = MPoly::one(nv);
-    for c in chi.coeffs() {
-        if !c.den().is_one() {
-            l = lcm(&l, c.den());
-        }
-    }
-    let cs: Vec<MPoly> = chi
-        .coeffs()
-        .iter()
-        .map(|c| {
-            let s = if c.den() == &l {
-                c.num().clone()
-            } else {
-                c.num().mul(&l.div_exact(c.den()).expect("lcm"))
-            };
-            s.extend_vars(nv + 1)
-        })
-        .collect();
-    let big_f = MPoly::from_univariate(nv + 1, nv, &cs).primitive_part();
-    let fz = if n == 0 {
-        vec![]
-    } else {
-        factor(&big_f)?.factors
-    };
-    let mut facs: Vec<(MPoly, usize)> = fz.into_iter().filter(|(g, _)| g.deg(nv) > 0).collect();
-    facs.sort_by(|(f, e), (g, d)| {
-        f.deg(nv)
-            .cmp(&g.deg(nv))
-            .then(d.cmp(e))
-            .then_with(|| cmp_poly(f, g))
-    });
-    // conditions on the parameters: leading coefficients, discriminants, resultants
-    for (i, (f, _)) in facs.iter().enumerate() {
-        let lc = f.lc_in(nv);
-        k.record_condition(&drop_last(&lc));
-        if f.deg(nv) >= 2 {
-            k.record_condition(&drop_last(&discriminant(f, nv)));
-        }
-        for (g, _) in &facs[i + 1..] {
-            k.record_condition(&drop_last(&resultant(f, g, nv)));
-        }
-    }
+    let QpCharpoly {
+        charpoly: chi,
+        integral: big_f,
+        factors: facs,
+    } = charpoly_factors(&a)?;
     let mut eigenvalues = Vec::with_capacity(facs.len());
     let mut t_cols: Vec<Matrix<RatFuncField>> = vec![];
     let mut j_blocks: Vec<Matrix<RatFuncField>> = vec![];
     let mut complete = true;
     let mut offset = 0;
-    for (f, e) in &facs {
-        let d = f.deg(nv) as usize;
-        let coeffs = f.to_univariate(nv);
-        let lc = coeff_to_field(&k, &coeffs[d]);
-        let monic_cs: Vec<RatFunc> = coeffs
-            .iter()
-            .map(|c| {
-                k.div_unrecorded(&coeff_to_field(&k, c), &lc)
-                    .expect("nonzero leading coefficient")
-            })
-            .collect();
-        let monic = Poly::new(k.clone(), monic_cs);
+    for QpFactor {
+        factor: f,
+        monic,
+        multiplicity: e,
+    } in facs
+    {
+        let e = &e;
+        let d = monic.deg();
         if d == 1 {
             let theta = k.neg(monic.coeffs().first().expect("degree 1"));
             let mut nm = a.clone();

@@ -14,7 +14,7 @@
 use super::chains::{Chains, jordan_block_matrix, jordan_chains, mul};
 use crate::algebraic::{Ext, ExtElem, NumberField};
 use crate::error::Result;
-use crate::field::{Field, Q, Rational};
+use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 
@@ -25,14 +25,16 @@ use crate::poly::Poly;
 pub struct Component<F: Field> {
     /// The monic irreducible factor $p$.
     pub factor: Poly<F>,
-    /// The minimal polynomial over $\mathbb{Q}$ of its roots ($p$ itself over $\mathbb{Q}$).
-    pub minpoly: Poly<Q>,
+    /// The minimal polynomial over $\mathbb{Q}$ of its roots ($p$ itself over $\mathbb{Q}$);
+    /// `None` over $\mathbb{Q}(p)$, whose roots are functions of the parameters.
+    pub minpoly: Option<Poly<Q>>,
     /// Multiplicity of $p$ in $\chi_A$ = algebraic multiplicity of each root.
     pub multiplicity: usize,
     /// $E = F\[t\]/(p)$, marked at `roots[0]`.
     pub field: Ext<F>,
     /// Approximations of the roots $\theta_j$ (real part descending); the embedding
-    /// $t \mapsto \theta_j$ carries the chains to the root $\theta_j$.
+    /// $t \mapsto \theta_j$ carries the chains to the root $\theta_j$ (empty over
+    /// $\mathbb{Q}(p)$).
     pub roots: Vec<(f64, f64)>,
     /// Jordan block sizes of each root, largest first.
     pub blocks: Vec<usize>,
@@ -121,40 +123,49 @@ pub(crate) fn rational_field() -> NumberField {
     named_field(&Poly::x(Q), (0.0, 0.0), "t")
 }
 
-/// The rational generalized eigenspace of a factor: `u` ($n \times dm$) spans
-/// $\ker p(A)^m$ over $\mathbb{Q}$, $A u = u\,A_p$, and `proj` $= (L^T u)^{-1} L^T$ with
-/// $L$ spanning the left space $\ker (p(A)^m)^T$ (so `proj u = I` and `proj A = A_p proj`).
-struct Restriction {
-    u: Matrix<Q>,
-    ap: Matrix<Q>,
-    proj: Matrix<Q>,
+/// The generalized eigenspace of a factor over $F$: `u` ($n \times dm$) spans
+/// $\ker p(A)^m$, $A u = u\,A_p$, and `proj` $= (L^T u)^{-1} L^T$ with $L$ spanning the
+/// left space $\ker (p(A)^m)^T$ (so `proj u = I` and `proj A = A_p proj`). Over
+/// $\mathbb{Q}(p)$, $A_p$ is the primary block of the factor (the presentation of a factor
+/// of degree $\ge 2$).
+pub(crate) struct Restriction<F: Field> {
+    pub u: Matrix<F>,
+    pub ap: Matrix<F>,
+    pub proj: Matrix<F>,
 }
 
-/// [`Restriction`] of `a` to the factor `p` of multiplicity `m`, when it is smaller than `a`.
+/// [`Restriction`] of `a` to the factor `p` of multiplicity `m` (always computed when `always`,
+/// else only when it is smaller than `a` and $n \ge 8$).
 ///
-/// Chains of $A_p$ over $K$ give those of $A$: $A (u V_p) = (u V_p) J$ and
+/// Chains of $A_p$ over $E$ give those of $A$: $A (u V_p) = (u V_p) J$ and
 /// $(W_p\,\mathrm{proj}) A = J\,(W_p\,\mathrm{proj})$, $(W_p \mathrm{proj})(u V_p) = W_p V_p = I$.
-/// Every elimination here is over $\mathbb{Q}$ (the multi-modular kernels), so the number
-/// field work is on a $dm \times dm$ matrix whose entries are those of a canonical basis, not
-/// on $A$'s (possibly huge) entries.
+/// Every elimination here is over $F$ (over $\mathbb{Q}$ the multi-modular kernels), so the
+/// extension field work is on a $dm \times dm$ matrix whose entries are those of a canonical
+/// basis, not on $A$'s (possibly huge) entries.
 ///
 /// # Errors
 /// `Verification` when the kernel dimension is not $dm$.
-fn restrict(a: &Matrix<Q>, p: &Poly<Q>, m: usize) -> Result<Option<Restriction>> {
+pub(crate) fn restrict<F: Field>(
+    a: &Matrix<F>,
+    p: &Poly<F>,
+    m: usize,
+    always: bool,
+) -> Result<Option<Restriction<F>>> {
     let n = a.nrows();
+    let k = a.field();
     let dm = p.deg() * m;
-    if dm >= n || n < 8 {
+    if dm >= n || (!always && n < 8) {
         return Ok(None);
     }
     // p(A) by Horner, then its m-th power
     let p = p.monic();
-    let mut pa = Matrix::identity(Q, n);
-    for k in (0..p.deg()).rev() {
-        pa = &(a * &pa) + &Matrix::identity(Q, n).scale(&p.coeff(k));
+    let mut pa = Matrix::identity(k.clone(), n);
+    for i in (0..p.deg()).rev() {
+        pa = mul(a, &pa).try_add(&Matrix::identity(k.clone(), n).scale(&p.coeff(i)))?;
     }
     let mut pm = pa.clone();
     for _ in 1..m {
-        pm = &pm * &pa;
+        pm = mul(&pm, &pa);
     }
     let u = pm.nullspace();
     let l = pm.transpose().nullspace();
@@ -164,37 +175,48 @@ fn restrict(a: &Matrix<Q>, p: &Poly<Q>, m: usize) -> Result<Option<Restriction>>
             u.ncols()
         )));
     }
-    let Some((ap, _)) = u.solve(&(a * &u))? else {
+    let Some((ap, _)) = u.solve(&mul(a, &u))? else {
         return Err(crate::error::Error::Verification(
             "the generalized eigenspace is not invariant".into(),
         ));
     };
     let lt = l.transpose();
-    let proj = &(&lt * &u).inverse()? * &lt;
+    let proj = mul(&mul(&lt, &u).inverse()?, &lt);
     Ok(Some(Restriction { u, ap, proj }))
 }
 
-impl PrimaryComponent {
-    /// Computes the component of the irreducible monic `factor` (multiplicity `mult`).
+impl<F: Field + 'static> Component<F> {
+    /// Computes the component of the irreducible monic `factor` (multiplicity `mult`) over
+    /// $F$: for a linear factor the chains of $A - \theta I$ over $F$, else those of the
+    /// restriction $A_p$ ([`restrict`]; of $A$ itself when it is not smaller) over
+    /// $E = F\[t\]/(p)$. `minpoly` and `roots` as in the fields of [`Component`] (`None` and
+    /// none over $\mathbb{Q}(p)$, where the roots are not numbers; $E$ is then marked at
+    /// `(0, 0)`, a mark no display reads). `always_restrict`: restrict whenever the
+    /// generalized eigenspace is smaller than $A$ (over $\mathbb{Q}(p)$, where the
+    /// arithmetic of $E$ is the cost), else from $n \ge 8$ on.
     ///
     /// # Errors
     /// `Verification` when the multiplicity does not match the generalized eigenspace.
     pub(crate) fn compute(
-        a: &Matrix<Q>,
-        factor: &Poly<Q>,
+        a: &Matrix<F>,
+        factor: &Poly<F>,
         mult: usize,
+        minpoly: Option<Poly<Q>>,
         roots: Vec<(f64, f64)>,
+        always_restrict: bool,
     ) -> Result<Self> {
         let n = a.nrows();
+        let k = a.field();
+        let mark = roots.first().copied().unwrap_or((0.0, 0.0));
+        let field = Ext::with_var(factor, mark, "t");
+        let lift = |m: &Matrix<F>| m.map(&field, |x| field.from_base(x));
         if factor.deg() == 1 {
-            let theta: Rational = -factor.coeff(0);
-            let nm = a.try_sub(&Matrix::identity(Q, n).scale(&theta))?;
+            let theta = k.neg(&factor.monic().coeff(0));
+            let nm = a.try_sub(&Matrix::identity(k.clone(), n).scale(&theta))?;
             let ch = jordan_chains(&nm, mult)?;
-            let field = named_field(factor, roots[0], "t");
-            let lift = |m: &Matrix<Q>| m.map(&field, |x| field.from_rational(x));
-            return Ok(PrimaryComponent {
+            return Ok(Component {
                 factor: factor.clone(),
-                minpoly: factor.monic(),
+                minpoly,
                 multiplicity: mult,
                 roots,
                 blocks: ch.blocks,
@@ -204,11 +226,9 @@ impl PrimaryComponent {
                 field,
             });
         }
-        let field = named_field(factor, roots[0], "t");
         let t = field.generator();
-        let lift = |m: &Matrix<Q>| m.convert_to(&field);
-        let (blocks, kernel_dims, v, w) = match restrict(a, factor, mult)? {
-            // chains of the restriction A_p (dm x dm) instead of the n x n matrix over K
+        let (blocks, kernel_dims, v, w) = match restrict(a, factor, mult, always_restrict)? {
+            // chains of the restriction A_p (dm x dm) instead of the n x n matrix over E
             Some(r) => {
                 let nm = lift(&r.ap)
                     .try_sub(&Matrix::identity(field.clone(), r.ap.nrows()).scale(&t))?;
@@ -216,8 +236,8 @@ impl PrimaryComponent {
                 (
                     ch.blocks,
                     ch.kernel_dims,
-                    &lift(&r.u) * &ch.v,
-                    &ch.w * &lift(&r.proj),
+                    mul(&lift(&r.u), &ch.v),
+                    mul(&ch.w, &lift(&r.proj)),
                 )
             }
             None => {
@@ -231,9 +251,9 @@ impl PrimaryComponent {
                 (blocks, kernel_dims, v, w)
             }
         };
-        Ok(PrimaryComponent {
+        Ok(Component {
             factor: factor.clone(),
-            minpoly: factor.monic(),
+            minpoly,
             multiplicity: mult,
             roots,
             blocks,

@@ -154,7 +154,12 @@ fn compact_component<F: Field + 'static>(
 }
 
 /// $\mathrm{Tr}_{E/F}(t^e x) = \sum_c x_c s_{e+c}$.
-fn trace_shifted<F: Field>(k: &F, x: &ExtElem<F::Elem>, e: usize, s: &[F::Elem]) -> F::Elem {
+pub(super) fn trace_shifted<F: Field>(
+    k: &F,
+    x: &ExtElem<F::Elem>,
+    e: usize,
+    s: &[F::Elem],
+) -> F::Elem {
     x.0.iter()
         .enumerate()
         .fold(k.zero(), |acc, (c, xc)| k.add(&acc, &k.mul(xc, &s[e + c])))
@@ -214,23 +219,35 @@ fn add_traces<F: Field>(c: &Compact<F>, comp: &Component<F>, sum: &mut [Matrix<F
     }
 }
 
-/// The Jordan method over $F$ (module docs): decomposition, compaction and the exact check.
+/// The compaction of given components and the exact check (the method without the
+/// decomposition): compacted components, orders, McMillan degree, Markov parameters.
+pub(super) struct Compacted<F: Field> {
+    pub comps: Vec<Compact<F>>,
+    pub stages: [usize; 3],
+    pub mcmillan_degree: usize,
+    pub markov: Vec<Matrix<F>>,
+    pub verified: bool,
+}
+
+/// Steps 1-3 of the module docs on the components of $A$ over any field, and the exact check.
 ///
 /// # Errors
-/// Those of [`jordan_over`] and of the Kalman decomposition.
-pub(super) fn jordan_core<F: EigenField>(sys: &StateSpace<F>) -> Result<Core<F>> {
+/// Those of the Kalman decomposition.
+pub(super) fn compact_components<F: Field + 'static>(
+    sys: &StateSpace<F>,
+    components: &[Component<F>],
+) -> Result<Compacted<F>> {
     let n = sys.nstates();
-    let jf = jordan_over(&sys.a)?;
     let mut stage1 = 0;
     let mut comps = vec![];
-    for (ci, comp) in jf.components.iter().enumerate() {
+    for (ci, comp) in components.iter().enumerate() {
         if let Some(c) = compact_component(sys, ci, comp, &mut stage1)? {
             comps.push(c);
         }
     }
     let r: usize = comps
         .iter()
-        .map(|c| c.a.nrows() * jf.components[c.comp].degree())
+        .map(|c| c.a.nrows() * components[c.comp].degree())
         .sum();
     let kmax = n + r;
     let markov = sys.markov(kmax);
@@ -239,15 +256,37 @@ pub(super) fn jordan_core<F: EigenField>(sys: &StateSpace<F>) -> Result<Core<F>>
         .map(|_| Matrix::zeros(k.clone(), sys.noutputs(), sys.ninputs()))
         .collect();
     for c in &comps {
-        add_traces(c, &jf.components[c.comp], &mut sum);
+        add_traces(c, &components[c.comp], &mut sum);
     }
     let mcm = mcmillan_degree(sys);
     let verified = sum == markov && r == mcm;
-    Ok(Core {
-        jf,
+    Ok(Compacted {
         comps,
         stages: [n, stage1, r],
         mcmillan_degree: mcm,
+        markov,
+        verified,
+    })
+}
+
+/// The Jordan method over $F$ (module docs): decomposition, compaction and the exact check.
+///
+/// # Errors
+/// Those of [`jordan_over`] and of the Kalman decomposition.
+pub(super) fn jordan_core<F: EigenField>(sys: &StateSpace<F>) -> Result<Core<F>> {
+    let jf = jordan_over(&sys.a)?;
+    let Compacted {
+        comps,
+        stages,
+        mcmillan_degree,
+        markov,
+        verified,
+    } = compact_components(sys, &jf.components)?;
+    Ok(Core {
+        jf,
+        comps,
+        stages,
+        mcmillan_degree,
         markov,
         verified,
     })

@@ -206,8 +206,9 @@ fn real_pair<F: EigenField>(
 ) -> RealModalBlock<F> {
     let k = jf.base();
     let comp = &jf.components[c.comp];
-    let radical =
-        comp.factor.deg() == 2 && comp.minpoly.deg() == 2 && blk.field.0.radical.is_some();
+    let radical = comp.factor.deg() == 2
+        && comp.minpoly.as_ref().is_some_and(|m| m.deg() == 2)
+        && blk.field.0.radical.is_some();
     match F::real_pair(jf, ev, expand) {
         Ok(Some(pf)) => {
             let f = pf.field.clone();

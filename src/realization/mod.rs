@@ -35,6 +35,7 @@ mod gramian;
 mod ho_kalman;
 mod jordan_core;
 mod jordan_method;
+mod jordan_method_primary;
 mod kalman;
 mod method;
 mod minimal;
@@ -67,6 +68,9 @@ pub use ho_kalman::minimal_ho_kalman_recorded;
 pub use jordan_method::{
     JordanMinimal, ModalBlock, RealModalBlock, minimal_jordan, minimal_jordan_rational,
     minimal_jordan_with,
+};
+pub use jordan_method_primary::{
+    PrimaryBlock, PrimaryJordanMinimal, minimal_jordan_primary, minimal_jordan_qp,
 };
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
 pub use method::minimal;

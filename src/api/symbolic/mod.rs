@@ -123,14 +123,9 @@ pub(super) fn execute(
             "`{}` needs numbers (a float computation), this system's entries lie in {k}; give every symbol a value with --at",
             name(cmd)
         ))),
-        Command::Jordan { real: true, .. }
-        | Command::Minreal {
-            method: MethodArg::Jordan,
-            descriptor: false,
-            ..
-        } => Err(refuse(format!(
-            "a real form needs numbers (whether an eigenvalue is real depends on the parameters), this system's entries lie in {k}; give every symbol a value with --at"
-        ))),
+        Command::Jordan { real: true, .. } => {
+            crate::api::symbolic_jordan::real_outcome(&t.a_raw).map_err(|e| with_path(path, e))
+        }
         // the descriptor-level commands, generic over the field
         Command::Pencil { .. }
         | Command::Minreal {

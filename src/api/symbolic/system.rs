@@ -59,7 +59,11 @@ pub(in crate::api) fn run(
                 MethodArg::Kalman => MinrealMethod::Kalman,
                 MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
                 MethodArg::HoKalman => MinrealMethod::HoKalman,
-                MethodArg::Jordan | MethodArg::Era => return Ok(None),
+                MethodArg::Jordan => {
+                    let r = realization::minimal_jordan_qp(s).map_err(e)?;
+                    return finish(&k, r.report(), r.verified).map(Some).map_err(e);
+                }
+                MethodArg::Era => return Ok(None),
             };
             let r = realization::minimal(s, m).map_err(e)?;
             (r.report(), r.verified)
@@ -149,14 +153,17 @@ pub(in crate::api) fn run(
         Command::Modes { .. } => (super::modes::modes_report(&s.a).map_err(e)?, true),
         _ => return Ok(None),
     };
-    let conds = k.conditions_strings().map_err(e)?;
+    finish(&k, r, ok).map(Some).map_err(e)
+}
+
+/// The outcome of a report over $\mathbb{Q}(p)$: exact only, the field and the conditions
+/// recorded in `k` during the computation, `verified` set to `ok`.
+fn finish(k: &RatFuncField, r: Report, ok: bool) -> crate::Result<Outcome> {
+    let conds = k.conditions_strings()?;
     let r = exact_only(r)
         .str("field", k.to_string())
         .with("conditions", str_list(conds));
-    Ok(Some(Outcome::new(
-        set_key(r, "verified", Value::Bool(ok)),
-        ok,
-    )))
+    Ok(Outcome::new(set_key(r, "verified", Value::Bool(ok)), ok))
 }
 
 /// `r` with `key` set to `v` (replaced in place when present, else appended).

@@ -11,6 +11,7 @@ mod dcgain;
 mod discrete;
 mod interconnect;
 mod jordan;
+mod jordan_qp;
 mod mpoly;
 mod pencil;
 mod realization;

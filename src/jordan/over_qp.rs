@@ -1,0 +1,237 @@
+//! $\mathbb{Q}(p_1, \dots, p_k)$ as a base field of the generic Jordan components: the
+//! irreducible factors of $\chi_A$ over $\mathbb{Q}(p)$ with the conditions under which the
+//! structure is the generic one, and one [`Component`] per factor in
+//! $E = \mathbb{Q}(p)\[t\]/(g)$ ([`Component::compute`], the code $\mathbb{Q}$ uses).
+//!
+//! **Characteristic polynomial.** $\chi_A$ by [`crate::matrix::params::charpoly_ratfunc`]
+//! (evaluation/interpolation over $\mathbb{Z}\lbrack p\rbrack$), denominators cleared, then
+//! factored in $\mathbb{Z}\lbrack p, x\rbrack$ by [`crate::mpoly::factor()`] (irreducible over
+//! $\mathbb{Q}(p)$ by Gauss's lemma); factors free of $x$ are dropped.
+//!
+//! **Conditions** recorded in the field's log (irreducible polynomials in $p$ assumed
+//! nonzero): the leading coefficient in $x$ of every factor (the denominators of the
+//! eigenvalues); the discriminant in $x$ of every factor of degree $\ge 2$ (its roots stay
+//! distinct); the resultant in $x$ of every pair of factors (distinct eigenvalues stay
+//! distinct). The eliminations of the components add their pivots.
+
+use super::primary::Component;
+use crate::error::{Error, Result};
+use crate::matrix::Matrix;
+use crate::matrix::params::charpoly_ratfunc;
+use crate::mpoly::factor::cmp_poly;
+use crate::mpoly::gcd::lcm;
+use crate::mpoly::resultant::{discriminant, resultant};
+use crate::mpoly::{MAX_VARS, MPoly, factor};
+use crate::poly::Poly;
+use crate::ratfunc::{RatFunc, RatFuncField};
+
+/// Largest matrix the decomposition over $\mathbb{Q}(p)$ accepts (expression swell grows
+/// fast with `n`).
+pub const MAX_N: usize = 24;
+
+/// One irreducible factor of $\chi_A$ over $\mathbb{Q}(p)$.
+#[derive(Clone, Debug, PartialEq)]
+pub struct QpFactor {
+    /// In $\mathbb{Z}\lbrack p, x\rbrack$ ($x$ is the last variable): primitive, irreducible,
+    /// positive leading coefficient.
+    pub factor: MPoly,
+    /// The factor made monic over $\mathbb{Q}(p)$ (low degree first).
+    pub monic: Poly<RatFuncField>,
+    /// Multiplicity in $\chi_A$.
+    pub multiplicity: usize,
+}
+
+/// $\chi_A$ over $\mathbb{Q}(p)$ and its irreducible factors (module docs).
+#[derive(Clone, Debug)]
+pub struct QpCharpoly {
+    /// $\chi_A(x) = \det(xI - A)$, monic, low degree first.
+    pub charpoly: Poly<RatFuncField>,
+    /// $\chi_A$ with cleared denominators in $\mathbb{Z}\lbrack p, x\rbrack$ (`x` last).
+    pub integral: MPoly,
+    /// Sorted by degree, then multiplicity (descending), then the factor.
+    pub factors: Vec<QpFactor>,
+}
+
+/// Drops the last variable (which must not occur).
+pub(crate) fn drop_last(f: &MPoly) -> MPoly {
+    let n = f.nvars() - 1;
+    let map: Vec<usize> = (0..n).collect();
+    f.remap(n, &map)
+}
+
+/// `c` in the field, for a polynomial of `nv + 1` variables free of the last one.
+fn coeff_to_field(k: &RatFuncField, c: &MPoly) -> RatFunc {
+    k.from_mpoly(drop_last(c))
+}
+
+/// The factorization of $\chi_A$ over $\mathbb{Q}(p)$ with its conditions recorded in
+/// `a`'s field (module docs).
+///
+/// # Errors
+/// `NotSquare`; `Limit` for more than [`MAX_N`] rows, more than `MAX_VARS - 1` parameters,
+/// or from the interpolation and factorization budgets.
+pub fn charpoly_factors(a: &Matrix<RatFuncField>) -> Result<QpCharpoly> {
+    a.check_square("jordan")?;
+    let n = a.nrows();
+    if n > MAX_N {
+        return Err(Error::Limit(format!(
+            "jordan over QQ(p): at most {MAX_N} states (this matrix has {n})"
+        )));
+    }
+    let k = a.field();
+    let nv = k.nvars();
+    if nv + 1 > MAX_VARS {
+        return Err(Error::Limit(format!(
+            "jordan over QQ(p): at most {} parameters",
+            MAX_VARS - 1
+        )));
+    }
+    let chi = charpoly_ratfunc(a)?;
+    // clear denominators: F = L chi in Z[p][x], x = variable nv
+    let mut l = MPoly::one(nv);
+    for c in chi.coeffs() {
+        if !c.den().is_one() {
+            l = lcm(&l, c.den());
+        }
+    }
+    let cs: Vec<MPoly> = chi
+        .coeffs()
+        .iter()
+        .map(|c| {
+            let s = if c.den() == &l {
+                c.num().clone()
+            } else {
+                c.num().mul(&l.div_exact(c.den()).expect("lcm"))
+            };
+            s.extend_vars(nv + 1)
+        })
+        .collect();
+    let integral = MPoly::from_univariate(nv + 1, nv, &cs).primitive_part();
+    let fz = if n == 0 {
+        vec![]
+    } else {
+        factor(&integral)?.factors
+    };
+    let mut facs: Vec<(MPoly, usize)> = fz.into_iter().filter(|(g, _)| g.deg(nv) > 0).collect();
+    facs.sort_by(|(f, e), (g, d)| {
+        f.deg(nv)
+            .cmp(&g.deg(nv))
+            .then(d.cmp(e))
+            .then_with(|| cmp_poly(f, g))
+    });
+    for (i, (f, _)) in facs.iter().enumerate() {
+        k.record_condition(&drop_last(&f.lc_in(nv)));
+        if f.deg(nv) >= 2 {
+            k.record_condition(&drop_last(&discriminant(f, nv)));
+        }
+        for (g, _) in &facs[i + 1..] {
+            k.record_condition(&drop_last(&resultant(f, g, nv)));
+        }
+    }
+    let factors = facs
+        .into_iter()
+        .map(|(f, e)| {
+            let d = f.deg(nv) as usize;
+            let coeffs = f.to_univariate(nv);
+            let lc = coeff_to_field(k, &coeffs[d]);
+            let monic = coeffs
+                .iter()
+                .map(|c| {
+                    k.div_unrecorded(&coeff_to_field(k, c), &lc)
+                        .expect("nonzero leading coefficient")
+                })
+                .collect();
+            QpFactor {
+                factor: f,
+                monic: Poly::new(k.clone(), monic),
+                multiplicity: e,
+            }
+        })
+        .collect();
+    Ok(QpCharpoly {
+        charpoly: chi,
+        integral,
+        factors,
+    })
+}
+
+/// One [`Component`] per factor of $\chi_A$ over $\mathbb{Q}(p)$: chains of $A - \theta I$
+/// over $\mathbb{Q}(p)$ for an eigenvalue $\theta \in \mathbb{Q}(p)$, else chains of the
+/// primary block (the restriction of $A$ to $\ker g(A)^e$) over $E = \mathbb{Q}(p)\[t\]/(g)$.
+/// Conditions (factor data and pivots) go to `a`'s field.
+///
+/// # Errors
+/// Those of [`charpoly_factors`]; `Verification` when a kernel contradicts the
+/// multiplicities.
+pub fn components_qp(
+    a: &Matrix<RatFuncField>,
+) -> Result<(QpCharpoly, Vec<Component<RatFuncField>>)> {
+    let cp = charpoly_factors(a)?;
+    let comps = cp
+        .factors
+        .iter()
+        .map(|f| Component::compute(a, &f.monic, f.multiplicity, None, vec![], true))
+        .collect::<Result<Vec<_>>>()?;
+    Ok((cp, comps))
+}
+
+/// The real Jordan form over $\mathbb{Q}(p)$: eigenvalues in $\mathbb{Q}(p)$ with their
+/// chains, the pair of each quadratic factor in its real form
+/// ([`super::real_quadratic::quadratic_real`], `w<k>` for the $k$-th pair) with the sign
+/// condition that makes it a complex pair.
+#[derive(Clone, Debug)]
+pub struct QpRealForm {
+    /// The input matrix (in the fresh field holding this computation's conditions).
+    pub a: Matrix<RatFuncField>,
+    pub charpoly: QpCharpoly,
+    pub components: Vec<Component<RatFuncField>>,
+    /// Per component: the real form of a quadratic factor, `None` for a linear one.
+    pub pairs: Vec<Option<super::real_quadratic::QuadraticReal<RatFuncField>>>,
+    /// Every component's identities and every pair's $A T = T J_{\mathbb R}$ held exactly.
+    pub verified: bool,
+}
+
+/// [`QpRealForm`] of a square matrix over $\mathbb{Q}(p)$.
+///
+/// # Errors
+/// Those of [`components_qp`]; `Unsupported` for an irreducible factor of degree $\ge 3$:
+/// its roots are not $\alpha \pm i\omega$ with $\alpha \in \mathbb{Q}(p)$ and $\omega^2 \in
+/// \mathbb{Q}(p)$, so no real form with entries in $\mathbb{Q}(p)$ adjoined one square root
+/// exists for them.
+pub fn real_form_qp(a_in: &Matrix<RatFuncField>) -> Result<QpRealForm> {
+    let k = a_in.field().fresh();
+    let n = a_in.nrows();
+    let a = Matrix::from_vec(k, n, a_in.ncols(), a_in.as_slice().to_vec());
+    let (charpoly, components) = components_qp(&a)?;
+    let mut pairs = vec![];
+    let mut verified = true;
+    for c in &components {
+        verified &= c.verify(&a);
+        match c.degree() {
+            1 => pairs.push(None),
+            2 => {
+                let var = format!("w{}", pairs.iter().flatten().count() + 1);
+                let r = super::real_quadratic::quadratic_real(&a, c, &var).ok_or_else(|| {
+                    Error::Verification("a quadratic factor without a real form".into())
+                })?;
+                verified &= r.verified;
+                pairs.push(Some(r));
+            }
+            d => {
+                return Err(Error::Unsupported(format!(
+                    "jordan --real over QQ(p): the factor {} has degree {d}; its roots are not \
+                     a +- i w with a and w^2 in the parameters' field, so the real form is \
+                     written for eigenvalues in QQ(p) and quadratic factors only",
+                    c.factor.to_string_var("s")
+                )));
+            }
+        }
+    }
+    Ok(QpRealForm {
+        a,
+        charpoly,
+        components,
+        pairs,
+        verified,
+    })
+}
