@@ -108,7 +108,7 @@ fn main() {
         let d = DMatrix::zeros(2, 2);
         if common::selected("freqresp") {
             // the two paths agree before they are timed
-            let g1 = freqresp(&a, &breal, &creal, &d, &freqs[..5]).unwrap();
+            let g1 = freqresp([&a, &breal, &creal, &d], &freqs[..5], None).unwrap();
             let g2 = sys.freqresp(&freqs[..5]).unwrap();
             let err = g1
                 .iter()
@@ -117,7 +117,7 @@ fn main() {
                 .fold(0.0, f64::max);
             assert!(err < 1e-8, "n={n}: paths differ by {err}");
             let dense = common::bench(&format!("freqresp dense LU n={n}"), 3, 300.0, || {
-                freqresp(&a, &breal, &creal, &d, &freqs).unwrap()
+                freqresp([&a, &breal, &creal, &d], &freqs, None).unwrap()
             });
             let modal = common::bench(&format!("freqresp jordan n={n}"), 3, 300.0, || {
                 sys.freqresp(&freqs).unwrap()

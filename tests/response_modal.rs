@@ -80,7 +80,7 @@ fn block_frequency_response_equals_the_dense_lu() {
         }
         let sys = ModalSystem::from_jordan(&jf, &b, &c, &d).unwrap();
         let f = |m: &Matrix<Q>| to_dmatrix(m).unwrap();
-        let dense = freqresp(&f(&a), &f(&b), &f(&c), &f(&d), &freqs).unwrap();
+        let dense = freqresp([&f(&a), &f(&b), &f(&c), &f(&d)], &freqs, None).unwrap();
         let modal = sys.freqresp(&freqs).unwrap();
         for (g, h) in dense.iter().zip(&modal) {
             let scale = g.iter().map(|z| z.norm()).fold(1.0, f64::max);

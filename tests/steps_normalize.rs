@@ -118,7 +118,7 @@ fn paper_eq_32_orthogonal_unit_chains() {
         }
     }
     // the text says which case it is
-    let text = exactlti::report::steps::derivation_report(&d).to_text();
+    let text = exactlti::report::derivation_report(&d).to_text();
     assert!(text.contains("closed form"), "{text}");
     assert!(text.contains("Unit length, exact"), "{text}");
 }

@@ -24,6 +24,9 @@
 mod display;
 pub(crate) mod kernels;
 
+/// $\det B$ of a matrix over $\mathbb{Z}\lbrack p\rbrack$ by evaluation/interpolation (the kernel behind every Q(p) determinant).
+pub use kernels::det_zp;
+
 use crate::error::{Error, Result};
 use crate::field::{Field, Kernels, Rational};
 use crate::mpoly::factor::cmp_poly;

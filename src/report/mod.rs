@@ -21,6 +21,7 @@ pub(crate) mod steps_norm;
 pub(crate) mod summary;
 pub(crate) mod text;
 
+pub use steps::derivation_report;
 pub use text::{TextOptions, text_matrix};
 
 use crate::field::Field;
