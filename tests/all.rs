@@ -67,6 +67,7 @@ mod float_honesty;
 mod from_transfer;
 #[path = "fuzz.rs"]
 mod fuzz;
+mod g_in_z;
 #[path = "inputs.rs"]
 mod inputs;
 #[path = "interconnect.rs"]
@@ -157,6 +158,7 @@ mod response_modal;
 mod rest22;
 #[path = "robustness.rs"]
 mod robustness;
+mod root_locus;
 #[path = "scale_chain.rs"]
 mod scale_chain;
 #[path = "scale_dense.rs"]

@@ -496,7 +496,7 @@ def _coeffs(x):
     return [x]
 
 
-def _poly_text(cs, where, note):
+def _poly_text(cs, where, note, var="s"):
     cs = _coeffs(cs)
     if not cs:
         raise ValueError("%s: an empty list of coefficients" % where)
@@ -505,12 +505,12 @@ def _poly_text(cs, where, note):
     for k, c in enumerate(cs):
         t = entry_text(c, where, note)
         p = n - k
-        terms.append("(%s)" % t + ("" if p == 0 else "*s" if p == 1 else "*s^%d" % p))
+        terms.append("(%s)" % t + ("" if p == 0 else "*" + var if p == 1 else "*%s^%d" % (var, p)))
     return " + ".join(terms)
 
 
-def _ratio_text(num, den, where, note):
-    return "(%s)/(%s)" % (_poly_text(num, where, note), _poly_text(den, where, note))
+def _ratio_text(num, den, where, note, var="s"):
+    return "(%s)/(%s)" % (_poly_text(num, where, note, var), _poly_text(den, where, note, var))
 
 
 def _depth(x):
@@ -524,8 +524,9 @@ def _depth(x):
     return d
 
 
-def _tf_rows(num, den, note):
-    """Rows of entry text of the transfer matrix ``G``."""
+def _tf_rows(num, den, note, var="s"):
+    """Rows of entry text of the transfer matrix ``G`` (in ``var``: ``s``, or ``z`` with a
+    sample time)."""
     if den is not None:
         # python-control's idiom: coefficient lists, highest power first; MIMO as lists
         # of lists of coefficient lists
@@ -535,12 +536,12 @@ def _tf_rows(num, den, note):
                 raise ValueError("tf: num and den must have the same shape")
             return [
                 [
-                    _ratio_text(n, d, "G row %d, column %d" % (i + 1, j + 1), note)
+                    _ratio_text(n, d, "G row %d, column %d" % (i + 1, j + 1), note, var)
                     for j, (n, d) in enumerate(zip(rn, rd))
                 ]
                 for i, (rn, rd) in enumerate(zip(num, den))
             ]
-        return [[_ratio_text(num, den, "G", note)]]
+        return [[_ratio_text(num, den, "G", note, var)]]
     if isinstance(num, (list, tuple)):
         rows = num if num and isinstance(num[0], (list, tuple)) and not _is_pair(num[0]) else [num]
         out = []
@@ -549,7 +550,7 @@ def _tf_rows(num, den, note):
             for j, x in enumerate(row):
                 where = "G row %d, column %d" % (i + 1, j + 1)
                 if _is_pair(x):
-                    r.append(_ratio_text(x[0], x[1], where, note))
+                    r.append(_ratio_text(x[0], x[1], where, note, var))
                 else:
                     r.append(_expr_text(x, where, note))
             out.append(r)
@@ -562,7 +563,7 @@ def _is_pair(x):
     return isinstance(x, tuple) and len(x) == 2
 
 
-def tf(num, den=None, params=None, name="tf", realize="as_written"):
+def tf(num, den=None, params=None, name="tf", realize="as_written", dt=None):
     """An exact system from a transfer function or matrix ``G(s)``, realized as written
     (python-control's and MATLAB's ``tf``: nothing cancelled, ``poles()`` lists every
     written denominator's roots; ``.minreal()`` cancels) or, with ``realize="minimal"``,
@@ -582,6 +583,9 @@ def tf(num, den=None, params=None, name="tf", realize="as_written"):
     * ``tf([[g11, g12], [g21, g22]])``: MIMO, each entry text, SymPy, or a
       ``(num, den)`` pair of coefficient lists.
     * a python-control ``TransferFunction`` (floats read as the decimals they print as).
+
+    ``dt``: the sample time of a discrete-time ``G(z)`` (python-control's ``tf(num, den,
+    dt)``): coefficient lists are then in powers of ``z`` and text is written in ``z``.
 
     Coefficients are exact as in :func:`ss`; other names in the text take ``params``.
     ``G`` must be proper (an improper ``G`` has no state-space realization).
@@ -616,11 +620,14 @@ def tf(num, den=None, params=None, name="tf", realize="as_written"):
     if control is not None and isinstance(num, control.TransferFunction):
         return _from_control_tf(num, name, realize=realize)
     note = _FloatNote()
-    rows = _tf_rows(num, den, note)
+    var = "z" if dt else "s"
+    rows = _tf_rows(num, den, note, var)
     doc = {"name": name, "G": rows, "realize": realize}
+    if dt:
+        doc["dt"] = entry_text(dt, "dt", note)
     if params:
         doc["parameters"] = {str(k): entry_text(v, "parameter %s" % k, note) for k, v in params.items()}
-    note.symbols.discard("s")
+    note.symbols.discard(var)
     if note.symbols:
         raise _core.UnsupportedError(
             "tf: symbolic parameters (%s) in a transfer matrix are not supported yet; "
@@ -643,13 +650,16 @@ def _warn_floats(note, stacklevel):
 
 
 def _from_control_tf(sys, name, tol=None, realize="as_written"):
-    if not sys.isctime():
-        raise ValueError("from_control: only continuous-time systems are supported")
+    if sys.dt is True:
+        raise ValueError(
+            "from_control: the sample time is unspecified (dt=True); give the number"
+        )
     note = _FloatNote(tol)
+    var = "z" if sys.dt else "s"
     rows = [
         [
             _ratio_text(
-                sys.num[i][j], sys.den[i][j], "G row %d, column %d" % (i + 1, j + 1), note
+                sys.num[i][j], sys.den[i][j], "G row %d, column %d" % (i + 1, j + 1), note, var
             )
             for j in range(sys.ninputs)
         ]
@@ -658,6 +668,8 @@ def _from_control_tf(sys, name, tol=None, realize="as_written"):
     _warn_floats(note, 4)
     _warn_chosen(note.chosen, tol, 4)
     doc = {"name": name, "G": rows, "realize": realize}
+    if sys.dt:
+        doc["dt"] = entry_text(sys.dt, "dt", note)
     G = StateSpace(_core.load_json(json.dumps(doc), name, False))
     G.rationalized = note.chosen
     return G

@@ -221,3 +221,31 @@ def test_balred_against_python_control():
     assert err <= r["error_bound"] * (1 + 1e-9)
     with pytest.raises(ValueError):
         exactlti.ss([[1]], [[1]], [[1]], [[0]]).balred(1)
+
+
+def test_tf_in_z_keeps_dt_and_matches_python_control():
+    """``tf(num, den, dt=)`` and ``from_control`` of a discrete TransferFunction: G(z) as
+    written, dt kept, poles as python-control's, and the Markov parameters of G(z) (the
+    impulse response: the coefficients of G expanded in 1/z)."""
+    control = pytest.importorskip("control")
+    G = exactlti.tf([1, Fraction(1, 2)], [1, Fraction(-13, 10), Fraction(2, 5)], dt="1/10")
+    assert Fraction(G.dt) == Fraction(1, 10)
+    assert G.tf().variable == "z"
+    assert sorted(complex(p).real for p in G.poles()) == pytest.approx([0.5, 0.8])
+    # (z + 1/2)/(z^2 - 13/10 z + 2/5) = z^-1 + (1/2 + 13/10) z^-2 + ...
+    m = _markov(G, 3)
+    assert m[0] == 0 and m[1] == 1 and m[2] == Fraction(1, 2) + Fraction(13, 10)
+    H = exactlti.tf("(z+1/2)/((z-4/5)*(z-1/2))", dt="1/10")
+    assert _markov(H, 3) == m
+    # a python-control discrete TF: same system, dt kept, poles as python-control's
+    S = control.tf([1, 0.5], [1, -1.3, 0.4], 0.1)
+    with pytest.warns(exactlti.ExactnessWarning):
+        E = exactlti.from_control(S)
+    assert Fraction(E.dt) == Fraction(1, 10)
+    assert _markov(E, 3) == m
+    assert sorted(complex(p).real for p in E.poles()) == pytest.approx(
+        sorted(np.real(S.poles()))
+    )
+    # the continuous variable is refused in a sampled system's text, naming it
+    with pytest.raises(Exception, match="the variable is z"):
+        exactlti.tf("1/(s+1)", dt="1/10")

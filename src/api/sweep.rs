@@ -8,6 +8,7 @@ use super::{Failure, Outcome};
 use crate::report::plot::sweep::{root_locus_svg, sweep_svg};
 use crate::report::{Report, Value};
 use crate::study::{ParamFamily, PointStatus, SweepResult, sweep, sweep_values};
+use num_complex::Complex;
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -94,6 +95,33 @@ impl Family<'_> {
             Family::Exact(f) => f.name.clone(),
             Family::Field(f) => f.name(),
         }
+    }
+    /// The finite limits of the eigenvalue branches as the parameter grows without bound:
+    /// the roots of [`crate::study::bivar::BiPolyOver::lead_in_v`] of $\det(xE(v) - A(v))$
+    /// (exact polynomial, roots approximated from their certified regions). Empty for an
+    /// extension-field family, or when the polynomial cannot be formed within its limits
+    /// (the plot then marks only the sweep's ends).
+    fn limits(&self) -> Vec<Complex<f64>> {
+        let Family::Exact(f) = self else {
+            return vec![];
+        };
+        let Ok(p) = crate::study::bivar::charpoly_xv(f) else {
+            return vec![];
+        };
+        let lead = p.lead_in_v();
+        if lead.degree().unwrap_or(0) == 0 {
+            return vec![];
+        }
+        crate::algebraic::roots(&lead)
+            .map(|rs| {
+                rs.iter()
+                    .map(|(r, _)| {
+                        let (re, im) = r.approx();
+                        Complex::new(re, im)
+                    })
+                    .collect()
+            })
+            .unwrap_or_default()
     }
     fn sweep(&self, batch: &[f64], tick: &(dyn Fn(usize) + Sync)) -> Result<SweepResult, Failure> {
         match self {
@@ -288,7 +316,11 @@ fn run_family(
     if let Some(p) = a.locus_svg {
         write(
             p,
-            &root_locus_svg(&drawn, &format!("{name}: root locus in {}", a.param)),
+            &root_locus_svg(
+                &drawn,
+                &format!("{name}: root locus in {}", a.param),
+                &fam.limits(),
+            ),
         )?;
     }
     let notes: Vec<Value> = notes

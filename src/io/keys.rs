@@ -24,7 +24,10 @@ use num_traits::{Signed, Zero};
 /// # Errors
 /// A value that is not a number, or a negative one (`dt = True`, python-control's
 /// unspecified sample time, is refused: give the number).
-fn read_dt(file: &str, entries: &[(String, Raw)]) -> Result<Option<Rational>, InputError> {
+pub(crate) fn read_dt(
+    file: &str,
+    entries: &[(String, Raw)],
+) -> Result<Option<Rational>, InputError> {
     let Some((_, v)) = entries.iter().find(|(k, _)| k == "dt") else {
         return Ok(None);
     };

@@ -128,10 +128,20 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
             }
             let params = entries.iter().find(|(k, _)| k == "parameters");
             let params = params.map(|(_, p)| p.to_json());
-            if super::transfer_key::realize_mode(&name, entries)? == Realize::AsWritten {
-                return load_g_as_written(&name, &g.to_json(), params.as_ref());
-            }
-            return load_g(&name, &g.to_json(), params.as_ref());
+            let var = super::transfer_key::g_variable(&name, entries)?;
+            // inputs, outputs and the sample time of G (a G file names no states)
+            let signals = super::keys::SignalNames {
+                states: None,
+                ..super::keys::SignalNames::read(&name, entries)?
+            };
+            let mut loaded =
+                if super::transfer_key::realize_mode(&name, entries)? == Realize::AsWritten {
+                    load_g_as_written(&name, &g.to_json(), params.as_ref(), var)?
+                } else {
+                    load_g(&name, &g.to_json(), params.as_ref(), var)?
+                };
+            loaded.signals = signals;
+            return Ok(loaded);
         }
         if let Some(l) = rectangular_pencil(&name, entries)? {
             return Ok(l);
@@ -214,8 +224,9 @@ fn load_g(
     name: &str,
     g: &serde_json::Value,
     params: Option<&serde_json::Value>,
+    var: &str,
 ) -> Result<LoadedDescriptor, InputError> {
-    let (tm, r) = realize_g(name, g, params)?;
+    let (tm, r) = realize_g(name, g, params, var)?;
     let has_e = r.minimal.infinite_order > 0;
     Ok(LoadedDescriptor {
         path: name.to_string(),
@@ -233,8 +244,9 @@ fn load_g_as_written(
     name: &str,
     g: &serde_json::Value,
     params: Option<&serde_json::Value>,
+    var: &str,
 ) -> Result<LoadedDescriptor, InputError> {
-    let ss = super::transfer_key::realize_g_as_written(name, g, params)?;
+    let ss = super::transfer_key::realize_g_as_written(name, g, params, var)?;
     let n = ss.nstates();
     let system = Descriptor::new(Matrix::identity(Q, n), ss.a, ss.b, ss.c, ss.d)
         .map_err(|e| InputError::file(name, e.to_string()))?;

@@ -42,8 +42,20 @@ pub fn parse_rational_function(
     text: &str,
     params: &[(String, Rational)],
 ) -> Result<RationalFunction<Q>> {
+    parse_rational_function_in(text, params, "s")
+}
+
+/// [`parse_rational_function`] in the variable `var` (`z` for a sampled system).
+///
+/// # Errors
+/// As [`parse_rational_function`]; the other variable's name is an unknown name.
+pub fn parse_rational_function_in(
+    text: &str,
+    params: &[(String, Rational)],
+    var: &str,
+) -> Result<RationalFunction<Q>> {
     check_length(text)?;
-    evaluate(&InS { params }, text, Dialect::EXACT)
+    evaluate(&InS { params, var }, text, Dialect::EXACT)
 }
 
 /// Refuses a text longer than the bound before reading it.
@@ -64,6 +76,8 @@ pub(super) fn check_length(text: &str) -> Result<()> {
 /// $\mathbb{Q}(s)$ with parameters of rational value.
 pub(super) struct InS<'a> {
     pub(super) params: &'a [(String, Rational)],
+    /// The variable's name: `s`, or `z` for a sampled system (a file with `dt`).
+    pub(super) var: &'a str,
 }
 
 type RF = RationalFunction<Q>;
@@ -89,14 +103,14 @@ impl Algebra for InS<'_> {
         parse_number(s).map(cst).map_err(|m| at(pos, &m))
     }
     fn name(&self, name: &str, pos: usize) -> Result<RF> {
-        if name == "s" {
+        if name == self.var {
             return Ok(RationalFunction::new(Poly::x(Q), Poly::one(Q)));
         }
         match self.params.iter().find(|(n, _)| n == name) {
             Some((_, v)) => Ok(cst(v.clone())),
             None => Err(at(
                 pos,
-                &format!("unknown name '{name}' (the variable is s)"),
+                &format!("unknown name '{name}' (the variable is {})", self.var),
             )),
         }
     }

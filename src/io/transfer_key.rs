@@ -8,8 +8,8 @@
 use super::raw::Raw;
 use super::{ExactScalar, InputError, InputErrorKind, MatrixEntries};
 use crate::field::{Q, Rational};
-use crate::io::transfer_expr::parse_rational_function;
-use crate::io::transfer_written::parse_written_fraction;
+use crate::io::transfer_expr::{parse_rational_function, parse_rational_function_in};
+use crate::io::transfer_written::parse_written_fraction_in;
 use crate::matrix::Matrix;
 use crate::realization::{
     Realize, TransferRealization, WrittenTransfer, realize_as_written, realize_transfer,
@@ -59,8 +59,9 @@ pub(crate) fn realize_g_key(
         .with_kind(InputErrorKind::Shape));
     }
     let params = get("parameters").map(Raw::to_json);
+    let var = g_variable(file, entries_raw)?;
     if realize_mode(file, entries_raw)? == Realize::AsWritten {
-        let ss = realize_g_as_written(file, &g.to_json(), params.as_ref())?;
+        let ss = realize_g_as_written(file, &g.to_json(), params.as_ref(), var)?;
         return Ok(vec![
             ("A", entries(&ss.a)),
             ("B", entries(&ss.b)),
@@ -68,7 +69,7 @@ pub(crate) fn realize_g_key(
             ("D", entries(&ss.d)),
         ]);
     }
-    let (_, r) = realize_g(file, &g.to_json(), params.as_ref())?;
+    let (_, r) = realize_g(file, &g.to_json(), params.as_ref(), var)?;
     let Some(ss) = r.state_space else {
         return Err(InputError::key(
             file,
@@ -89,6 +90,22 @@ pub(crate) fn realize_g_key(
         ("C", entries(&ss.c)),
         ("D", entries(&ss.d)),
     ])
+}
+
+/// The variable a file's `G` is written in: `z` when the file has a sample time `dt`
+/// (a sampled system), else `s`.
+///
+/// # Errors
+/// A bad `dt` (as the system reader says).
+pub(crate) fn g_variable(
+    file: &str,
+    entries: &[(String, Raw)],
+) -> Result<&'static str, InputError> {
+    Ok(if super::keys::read_dt(file, entries)?.is_some() {
+        "z"
+    } else {
+        "s"
+    })
 }
 
 /// Parameters of a `G` or pencil file, evaluated in order as rational constants.
@@ -140,6 +157,7 @@ pub(crate) fn realize_g(
     name: &str,
     g: &serde_json::Value,
     params: Option<&serde_json::Value>,
+    var: &str,
 ) -> Result<(TransferMatrix<Q>, TransferRealization<Q>), InputError> {
     let values = eval_params(name, params)?;
     let texts = g_texts(name, g)?;
@@ -148,7 +166,7 @@ pub(crate) fn realize_g(
         let mut out = Vec::new();
         for (j, text) in row.iter().enumerate() {
             out.push(
-                parse_rational_function(text, &values)
+                parse_rational_function_in(text, &values, var)
                     .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
             );
         }
@@ -203,6 +221,7 @@ pub(crate) fn realize_g_as_written(
     name: &str,
     g: &serde_json::Value,
     params: Option<&serde_json::Value>,
+    var: &str,
 ) -> Result<StateSpace<Q>, InputError> {
     let values = eval_params(name, params)?;
     let texts = g_texts(name, g)?;
@@ -211,7 +230,7 @@ pub(crate) fn realize_g_as_written(
         let mut out = Vec::new();
         for (j, text) in row.iter().enumerate() {
             out.push(
-                parse_written_fraction(text, &values)
+                parse_written_fraction_in(text, &values, var)
                     .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
             );
         }

@@ -28,8 +28,20 @@ type Pair = (Poly<Q>, Poly<Q>);
 /// assert_eq!((n.to_string_var("s"), d.to_string_var("s")), ("s + 1".into(), "s^2 + 3*s + 2".into()));
 /// ```
 pub fn parse_written_fraction(text: &str, params: &[(String, Rational)]) -> Result<Pair> {
+    parse_written_fraction_in(text, params, "s")
+}
+
+/// [`parse_written_fraction`] in the variable `var` (`z` for a sampled system).
+///
+/// # Errors
+/// As [`parse_written_fraction`].
+pub fn parse_written_fraction_in(
+    text: &str,
+    params: &[(String, Rational)],
+    var: &str,
+) -> Result<Pair> {
     check_length(text)?;
-    let (n, d) = evaluate(&Written(InS { params }), text, Dialect::EXACT)?;
+    let (n, d) = evaluate(&Written(InS { params, var }), text, Dialect::EXACT)?;
     let li = Q.inv(&d.lc()).expect("non-zero denominator");
     Ok((n.scale(&li), d.scale(&li)))
 }

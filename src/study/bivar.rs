@@ -60,6 +60,26 @@ impl<F: Field> BiPolyOver<F> {
     pub fn lead(&self) -> Poly<F> {
         self.coeffs.last().cloned().expect("nonzero")
     }
+    /// The coefficient of the highest power of $v$ as a polynomial in $x$:
+    /// $P(x, v) = v^{d} L(x) + O(v^{d-1})$, $d$ = [`Self::deg_v`]. As $|v| \to \infty$ the
+    /// roots of $P(\cdot, v)$ that stay finite tend to the roots of $L$ (Hurwitz's theorem
+    /// on $v^{-d} P$); for a gain sweep $\det(xI - A + vBC)$ they are the open-loop zeros.
+    pub fn lead_in_v(&self) -> Poly<F> {
+        let d = self.deg_v();
+        let f = self.lead().field().clone();
+        let cs = self
+            .coeffs
+            .iter()
+            .map(|c| {
+                if c.degree() == Some(d) {
+                    c.coeffs()[d].clone()
+                } else {
+                    f.zero()
+                }
+            })
+            .collect();
+        Poly::new(f, cs)
+    }
     /// $P(x, v_0) \in F[x]$.
     pub fn at(&self, v0: &F::Elem) -> Poly<F> {
         let f = self.lead().field().clone();

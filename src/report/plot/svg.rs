@@ -296,6 +296,7 @@ impl Svg {
     }
 
     /// Crosses (poles) or open circles (zeros).
+    /// A marker at data `(x, y)`: `'x'` a cross, `'s'` a filled square, anything else a circle.
     pub fn marker(&mut self, p: &Panel, x: f64, y: f64, kind: char, color: &str) {
         let (cx, cy) = (p.px(x), p.py(y));
         let _ = match kind {
@@ -310,6 +311,12 @@ impl Svg {
                 cy + 5.0,
                 cx + 5.0,
                 cy - 5.0
+            ),
+            's' => writeln!(
+                self.s,
+                r#"<rect x="{:.2}" y="{:.2}" width="8" height="8" fill="{color}" stroke="{color}"/>"#,
+                cx - 4.0,
+                cy - 4.0
             ),
             _ => writeln!(
                 self.s,

@@ -127,15 +127,17 @@ pub fn sweep_svg(sw: &SweepResult, title: &str, xlabel: &str, marks: &[(f64, Str
 }
 
 /// Root locus: each eigenvalue branch as a curve in the complex plane, a cross at the
-/// first parameter value (the open-loop poles of a gain sweep from 0) and a circle at the
-/// last (where the branches approach the zeros), as root-locus plots mark them.
-pub fn root_locus_svg(sw: &SweepResult, title: &str) -> String {
+/// first parameter value (the open-loop poles of a gain sweep from 0), a small square at the
+/// last, and a black circle at each `zeros` entry: the finite limits of the branches as the
+/// parameter grows without bound (for a gain sweep $A - kBC$ the open-loop zeros), as
+/// root-locus plots mark them.
+pub fn root_locus_svg(sw: &SweepResult, title: &str, zeros: &[Complex<f64>]) -> String {
     let (vals, tr) = subsample(sw);
     let n = tr.iter().map(Vec::len).max().unwrap_or(0);
     let (w, h) = (760.0, 620.0);
     let mut svg = Svg::new(w, h, title);
-    let res: Vec<f64> = tr.iter().flatten().map(|z| z.re).collect();
-    let ims: Vec<f64> = tr.iter().flatten().map(|z| z.im).collect();
+    let res: Vec<f64> = tr.iter().flatten().chain(zeros).map(|z| z.re).collect();
+    let ims: Vec<f64> = tr.iter().flatten().chain(zeros).map(|z| z.im).collect();
     let p = Panel {
         x0: 80.0,
         y0: 40.0,
@@ -164,7 +166,12 @@ pub fn root_locus_svg(sw: &SweepResult, title: &str) -> String {
             svg.marker(&p, z.re, z.im, 'x', c);
         }
         if let Some(z) = tr.last().and_then(|e| e.get(k)).filter(|z| inside(z)) {
-            svg.marker(&p, z.re, z.im, 'o', c);
+            svg.marker(&p, z.re, z.im, 's', c);
+        }
+    }
+    for z in zeros {
+        if z.re >= p.xr.0 && z.re <= p.xr.1 && z.im >= p.yr.0 && z.im <= p.yr.1 {
+            svg.marker(&p, z.re, z.im, 'o', "#000");
         }
     }
     if let (Some(a), Some(b)) = (vals.first(), vals.last()) {
@@ -174,10 +181,11 @@ pub fn root_locus_svg(sw: &SweepResult, title: &str) -> String {
             "middle",
             11.0,
             &format!(
-                "{} from {} (x) to {} (o)",
+                "{} from {} (x) to {} (square); o: limits as {} grows without bound",
                 sw.param,
                 super::svg::fmt_tick(*a, (b - a).abs().max(f64::MIN_POSITIVE) / 1e4),
-                super::svg::fmt_tick(*b, (b - a).abs().max(f64::MIN_POSITIVE) / 1e4)
+                super::svg::fmt_tick(*b, (b - a).abs().max(f64::MIN_POSITIVE) / 1e4),
+                sw.param
             ),
         );
     }
