@@ -67,6 +67,7 @@ mod float_honesty;
 mod from_transfer;
 #[path = "fuzz.rs"]
 mod fuzz;
+#[path = "g_in_z.rs"]
 mod g_in_z;
 #[path = "inputs.rs"]
 mod inputs;
@@ -158,6 +159,7 @@ mod response_modal;
 mod rest22;
 #[path = "robustness.rs"]
 mod robustness;
+#[path = "root_locus.rs"]
 mod root_locus;
 #[path = "scale_chain.rs"]
 mod scale_chain;
