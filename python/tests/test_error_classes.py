@@ -25,10 +25,12 @@ def _diag(n, d):
 
 
 def test_unsupported_command_raises_unsupported_error():
-    # a real Jordan form of a symbolic system: refused by the front door (not bad input)
-    p = _file("k.json", {"symbols": ["k"], "A": [["-k", 1], [0, -1]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]})
+    # the real Jordan form of a symbolic system whose chi_A = x^3 - k is irreducible over Q(k):
+    # its roots are not a +- i w with a, w^2 in Q(k), refused by the front door (not bad input)
+    p = _file("k.json", {"symbols": ["k"], "A": [[0, 1, 0], [0, 0, 1], ["k", 0, 0]],
+                         "B": [[0], [0], [1]], "C": [[1, 0, 0]], "D": [[0]]})
     G = exactlti.load(p)
-    with pytest.raises(exactlti.UnsupportedError, match="needs numbers") as e:
+    with pytest.raises(exactlti.UnsupportedError, match="degree 3") as e:
         G.run("jordan", "--real")
     assert isinstance(e.value, NotImplementedError)
     assert not isinstance(e.value, ValueError)

@@ -66,8 +66,6 @@ for _f in ("qp", "qp_descriptor"):
     for _op in ("minreal era", "freqresp", "pzmap", "step", "impulse", "check", "sweep",
                 "critical"):
         NOT_QUESTIONS[(_op, _f)] = NUMBERS
-    for _op in ("jordan --real", "minreal jordan"):
-        NOT_QUESTIONS[(_op, _f)] = "a real form needs numbers"
 for _f in FILES:
     if not _f.startswith("qp"):
         NOT_QUESTIONS[("bifurcations", _f)] = "needs symbolic parameters"
