@@ -3,7 +3,7 @@
 //! against the one computed by hand (and by `feedback`), bad connection files refused with
 //! one line naming the key.
 
-use crate::common::cli::run;
+use crate::common::cli::{run, run_json, temp_file};
 
 /// A directory of its own per test (the tests run in parallel).
 fn dir(tag: &str) -> std::path::PathBuf {
@@ -14,17 +14,13 @@ fn dir(tag: &str) -> std::path::PathBuf {
 }
 
 fn write(tag: &str, name: &str, text: &str) -> String {
-    let path = dir(tag).join(name);
-    std::fs::write(&path, text).unwrap();
-    path.display().to_string()
+    temp_file(&format!("connect-{tag}"), name, text)
+        .display()
+        .to_string()
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let mut a = args.to_vec();
-    a.extend(["--format", "json"]);
-    let (code, out, err) = run(&a);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
+    run_json(args)
 }
 
 fn plant_and_controller(tag: &str) -> (String, String) {

@@ -4,22 +4,14 @@
 //! |z| < 1, and `freqresp --svg` / `step --svg` draw the sampled system (Nyquist line,
 //! stairs).
 
-use crate::common::cli::run;
+use crate::common::cli::{run, run_json, temp_file};
 
 fn write(name: &str, text: &str) -> String {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-dtext");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, text).unwrap();
-    path.display().to_string()
+    temp_file("dtext", name, text).display().to_string()
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let mut a = args.to_vec();
-    a.extend(["--format", "json"]);
-    let (code, out, err) = run(&a);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
+    run_json(args)
 }
 
 /// Every string of a JSON value (keys excluded).

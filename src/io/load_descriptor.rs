@@ -128,12 +128,13 @@ pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError>
             }
             let params = entries.iter().find(|(k, _)| k == "parameters");
             let params = params.map(|(_, p)| p.to_json());
-            let var = super::transfer_key::g_variable(&name, entries)?;
-            // inputs, outputs and the sample time of G (a G file names no states)
+            // inputs, outputs and the sample time of G (a G file names no states); with a
+            // sample time G is written in z
             let signals = super::keys::SignalNames {
                 states: None,
                 ..super::keys::SignalNames::read(&name, entries)?
             };
+            let var = if signals.dt.is_some() { "z" } else { "s" };
             let mut loaded =
                 if super::transfer_key::realize_mode(&name, entries)? == Realize::AsWritten {
                     load_g_as_written(&name, &g.to_json(), params.as_ref(), var)?
