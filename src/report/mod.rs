@@ -21,6 +21,7 @@ pub(crate) mod steps_norm;
 pub(crate) mod summary;
 pub(crate) mod text;
 
+pub use sections::critical_report;
 pub use steps::derivation_report;
 pub use text::{TextOptions, text_matrix};
 
@@ -133,6 +134,28 @@ pub enum Value {
     Obj(Report),
     /// Data with its own text display (a table, or nothing): JSON and LaTeX show the data.
     Alt(Box<Alt>),
+    /// An exact value with its LaTeX made from the elements: text and JSON show `text`,
+    /// LaTeX and HTML show `latex` (never re-parsed from `text`).
+    Math(Box<MathOut>),
+}
+
+/// The two displays of an exact value: [`Value::Math`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct MathOut {
+    /// The plain display (`x + 101*sqrt(610)/1830`).
+    pub text: String,
+    /// LaTeX math without delimiters, made from the same value.
+    pub latex: String,
+}
+
+impl Value {
+    /// An exact value shown as `text`, typeset as `latex` (made from the value).
+    pub fn math(text: impl Into<String>, latex: impl Into<String>) -> Value {
+        Value::Math(Box::new(MathOut {
+            text: text.into(),
+            latex: latex.into(),
+        }))
+    }
 }
 
 /// A value shown differently in text: [`Value::Alt`].
@@ -202,6 +225,10 @@ impl Report {
     }
     pub fn str(self, key: &str, s: impl Into<String>) -> Self {
         self.with(key, Value::Str(s.into()))
+    }
+    /// An exact value shown as `text` and typeset as `latex` ([`Value::Math`]).
+    pub fn math(self, key: &str, text: impl Into<String>, latex: impl Into<String>) -> Self {
+        self.with(key, Value::math(text, latex))
     }
     pub fn int(self, key: &str, n: usize) -> Self {
         self.with(key, Value::Int(n as i64))
@@ -326,6 +353,7 @@ fn value_json(v: &Value) -> Json {
         Value::List(xs) => Json::Array(xs.iter().map(value_json).collect()),
         Value::Obj(r) => r.to_json(),
         Value::Alt(a) => value_json(&a.data),
+        Value::Math(m) => Json::String(m.text.clone()),
     }
 }
 

@@ -65,6 +65,7 @@ fn scalar(v: &Value) -> Option<String> {
         Value::Int(n) => n.to_string(),
         Value::Float(x) => float_math(*x),
         Value::Str(s) => to_math(s).unwrap_or_else(|| text(s)),
+        Value::Math(m) => m.latex.clone(),
         _ => return None,
     })
 }
