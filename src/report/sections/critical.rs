@@ -7,10 +7,10 @@ use crate::algebraic::AlgebraicNumber;
 use crate::field::{Rational, fmt_rational};
 use crate::report::latex::{algebraic_latex, poly_over_ext_latex};
 use crate::report::{Report, Value};
-use crate::study::critical::{EigenvalueAt, FactorAt};
 use crate::study::CriticalValues;
+use crate::study::critical::{EigenvalueAt, FactorAt};
 
-/// Longest factor shown (a factor over a field of high degree is a wall of digits; its
+/// Longest factor or eigenvalue shown (a factor over a field of high degree is a wall of digits; its
 /// eigenvalue and blocks are still reported).
 const MAX_FACTOR_LEN: usize = 400;
 
@@ -32,7 +32,10 @@ fn eigenvalue_at(mut o: Report, e: &EigenvalueAt) -> Report {
         }
     }
     if let Some(v) = &e.value {
-        o = o.math("eigenvalue", v.value_string(), algebraic_latex(v));
+        let text = v.value_string();
+        if text.len() <= MAX_FACTOR_LEN {
+            o = o.math("eigenvalue", text, algebraic_latex(v));
+        }
     }
     o
 }
@@ -176,4 +179,3 @@ pub fn critical_report(cv: &CriticalValues, digits: usize) -> Report {
         .list("charpoly_coeffs", charpoly)
         .bool("verified", cv.verified)
 }
-
