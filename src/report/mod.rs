@@ -75,9 +75,14 @@ impl MatrixOut {
             }
             Target::Latex => false,
         };
+        let latex = if target == Target::Latex {
+            latex_of_elements(m, &exact)
+        } else {
+            vec![]
+        };
         MatrixOut {
             exact,
-            latex: vec![],
+            latex,
             approx: if approx {
                 m.to_approx_complex()
             } else {
@@ -87,7 +92,7 @@ impl MatrixOut {
             ncols: m.ncols(),
         }
     }
-    /// From exact entry strings (also used as LaTeX) and their approximations, for matrices
+    /// From exact entry strings (typeset from the text) and their approximations, for matrices
     /// whose entries live in different fields.
     pub fn from_parts(exact: Vec<Vec<String>>, approx: Vec<Vec<(f64, f64)>>) -> Self {
         let nrows = exact.len();
@@ -100,9 +105,34 @@ impl MatrixOut {
             ncols,
         }
     }
+    /// The LaTeX of entry `(i, j)` made from its element, when the field made one of its
+    /// own (`None`: none, or the same as the exact string: typeset from that string).
+    pub fn latex_at(&self, i: usize, j: usize) -> Option<&str> {
+        let l = self.latex.get(i)?.get(j)?;
+        (!l.is_empty() && self.exact.get(i)?.get(j)? != l).then_some(l.as_str())
+    }
     fn is_complex(&self) -> bool {
         self.approx.iter().flatten().any(|(_, im)| *im != 0.0)
     }
+}
+
+/// The LaTeX of each entry made from the element by its field (`latex_elem`: fractions,
+/// radicals, rational functions with `\\mathit` names), empty where the field has no LaTeX
+/// of its own for it (it equals the text: the renderer typesets the text).
+fn latex_of_elements<K: Field>(m: &Matrix<K>, exact: &[Vec<String>]) -> Vec<Vec<String>> {
+    let k = m.field();
+    (0..m.nrows())
+        .map(|i| {
+            m.row(i)
+                .iter()
+                .zip(&exact[i])
+                .map(|(x, e)| {
+                    let l = k.latex_elem(x);
+                    if l == *e { String::new() } else { l }
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// The output a report is built for ([`MatrixOut::for_target`]): the command line knows its

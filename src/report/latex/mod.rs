@@ -13,8 +13,8 @@ mod math;
 mod values;
 
 pub use expr::{ident, to_math};
-pub use values::{algebraic_latex, ext_latex, poly_latex, poly_over_ext_latex};
 pub use math::math;
+pub use values::{algebraic_latex, ext_latex, poly_latex, poly_over_ext_latex};
 
 use super::escape::{latex_comment, latex_text};
 use super::{MatrixOut, Report, Value};
@@ -345,8 +345,13 @@ fn matrix(s: &mut String, m: &MatrixOut) {
             )
         };
         let _ = writeln!(s, "\n\\[\n{open}");
-        for row in &m.exact {
-            let cells: Vec<String> = row[c0..c1].iter().map(|x| scalar_in_math(x)).collect();
+        for (i, row) in m.exact.iter().enumerate() {
+            let cells: Vec<String> = (c0..c1)
+                .map(|j| {
+                    m.latex_at(i, j)
+                        .map_or_else(|| scalar_in_math(&row[j]), String::from)
+                })
+                .collect();
             let _ = writeln!(s, "  {} \\\\", cells.join(" & "));
         }
         let _ = write!(s, "{close}\n\\]");

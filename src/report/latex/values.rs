@@ -76,7 +76,8 @@ pub fn algebraic_latex(a: &AlgebraicNumber) -> String {
         return super::to_math(&text).unwrap_or_else(|| format!("\\text{{{text}}}"));
     }
     let (re, im) = a.digits(10);
-    let near = crate::algebraic::display::near_text(&re, &im, a.is_real()).replace("*i", "\\,\\mathrm{i}");
+    let near =
+        crate::algebraic::display::near_text(&re, &im, a.is_real()).replace("*i", "\\,\\mathrm{i}");
     format!(
         "\\text{{root of }} {} \\text{{ near }} {near}",
         poly_latex(&Q, a.minpoly().coeffs(), "x", &|c| Q.latex_elem(c))
@@ -112,7 +113,9 @@ mod tests {
         let r = AlgebraicNumber::roots_of_irreducible(&two).unwrap();
         assert_eq!(algebraic_latex(&r[0]), "-\\sqrt{2}");
         let cubic = Poly::new(Q, vec![q(-2, 1), q(0, 1), q(0, 1), q(1, 1)]);
-        let c = AlgebraicNumber::roots_of_irreducible(&cubic).unwrap().remove(0);
+        let c = AlgebraicNumber::roots_of_irreducible(&cubic)
+            .unwrap()
+            .remove(0);
         assert_eq!(
             algebraic_latex(&c),
             "\\text{root of } x^{3} - 2 \\text{ near } 1.259921050"

@@ -72,7 +72,10 @@ pub(super) fn structure_at(
     }
     let mut out: Vec<EigenvalueAt> = ev.into_iter().map(simple).collect();
     // lambda = -s10(v0)/s11(v0) in Q(v0): the factor x - lambda and its exact value
-    let lambda = k.neg(&k.div(&k.from_poly(&kn.s1.1), &s11).ok_or(Error::DivisionByZero)?);
+    let lambda = k.neg(
+        &k.div(&k.from_poly(&kn.s1.1), &s11)
+            .ok_or(Error::DivisionByZero)?,
+    );
     let factor = Poly::new(k.clone(), vec![k.neg(&lambda), k.one()]);
     out.push(EigenvalueAt {
         approx: (l, 0.0),

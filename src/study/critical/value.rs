@@ -109,9 +109,15 @@ fn identify(
     )))
 }
 
-/// $\sqrt{|d|}$ as the positive root of $x^2 - |d|$ ($|d| > 1$ square-free).
+/// $\sqrt{|d|}$ as the positive root of $x^2 - |d|$ ($d$ square-free; $1$ for $d = -1$).
 fn sqrt_of(d: &Rational) -> Result<AlgebraicNumber> {
-    let p = Poly::new(Q, vec![-d.abs(), Rational::zero(), Rational::from_integer(1.into())]);
+    if d.abs() == Rational::from_integer(1.into()) {
+        return Ok(AlgebraicNumber::from_rational(&d.abs()));
+    }
+    let p = Poly::new(
+        Q,
+        vec![-d.abs(), Rational::zero(), Rational::from_integer(1.into())],
+    );
     AlgebraicNumber::roots_of_irreducible(&p)?
         .pop()
         .ok_or_else(|| Error::Verification("sqrt of the field's radicand".into()))
@@ -174,7 +180,10 @@ mod tests {
     fn an_element_of_a_quadratic_field_is_its_closed_form() {
         // r = sqrt(2) (root of t^2 - 2 near 1.41); lambda = 3 - r/2 = 3 - sqrt(2)/2
         let f = Poly::new(Q, vec![q(-2, 1), q(0, 1), q(1, 1)]);
-        let r = AlgebraicNumber::roots_of_irreducible(&f).unwrap().pop().unwrap();
+        let r = AlgebraicNumber::roots_of_irreducible(&f)
+            .unwrap()
+            .pop()
+            .unwrap();
         let e = r.to_number_field();
         let lambda = e.from_poly(&Poly::new(Q, vec![q(3, 1), q(-1, 2)]));
         let v = value_over_q(&e, &lambda, &r).unwrap();
@@ -192,7 +201,10 @@ mod tests {
         let e = r.to_number_field();
         let l2 = e.from_poly(&Poly::new(Q, vec![q(0, 1), q(0, 1), q(1, 1)]));
         let v = value_over_q(&e, &l2, &r).unwrap();
-        assert_eq!(v.minpoly(), &Poly::new(Q, vec![q(-4, 1), q(0, 1), q(0, 1), q(1, 1)]));
+        assert_eq!(
+            v.minpoly(),
+            &Poly::new(Q, vec![q(-4, 1), q(0, 1), q(0, 1), q(1, 1)])
+        );
         assert!((v.approx().0 - 4f64.cbrt()).abs() < 1e-12);
         let c = e.from_rational(&q(-7, 3));
         assert_eq!(value_over_q(&e, &c, &r).unwrap().value_string(), "-7/3");
@@ -202,9 +214,15 @@ mod tests {
     fn an_element_over_q_sqrt_3_and_over_q_i() {
         // K = Q(sqrt 3), r = sqrt(2): lambda = sqrt(3) + r = sqrt 3 + sqrt 2
         let h = Poly::new(Q, vec![q(-2, 1), q(0, 1), q(1, 1)]);
-        let r = AlgebraicNumber::roots_of_irreducible(&h).unwrap().pop().unwrap();
-        for (d, want) in [(3, (3f64.sqrt() + 2f64.sqrt(), 0.0)), (-1, (2f64.sqrt(), 1.0))] {
-            let k = QuadraticField::new(d.into()).unwrap();
+        let r = AlgebraicNumber::roots_of_irreducible(&h)
+            .unwrap()
+            .pop()
+            .unwrap();
+        for (d, want) in [
+            (3, (3f64.sqrt() + 2f64.sqrt(), 0.0)),
+            (-1, (2f64.sqrt(), 1.0)),
+        ] {
+            let k = QuadraticField::new(d).unwrap();
             let hk = h.map(&k, |c| k.from_rational(c));
             let e = Ext::with_var(&hk, r.approx(), "t");
             let theta = e.from_base(&Quadratic::new(q(0, 1), q(1, 1)));

@@ -15,12 +15,12 @@
 //! $U, V \in L[y]$, and an eigenvalue $iy$ on the axis ($y \ne 0$ real) is a nonzero real root
 //! of $\gcd(U, V)$, counted by Sturm's theorem with the signs of $L$.
 
-use super::super::value::value_over_k;
-use super::super::{EigenvalueAt, FactorAt};
 use super::super::approx::approx_roots;
 use super::super::imaginary::real_roots_by_sign;
 use super::super::roots::{rational_near, sign_at_root};
 use super::super::structure::{block_sizes, poly_of_matrix};
+use super::super::value::value_over_k;
+use super::super::{EigenvalueAt, FactorAt};
 use super::KFamily;
 use super::roots_k::{sign_at_real_root, split_parts};
 use crate::algebraic::{AlgebraicNumber, Ext, NumberField};
