@@ -122,3 +122,39 @@ mod tests {
         );
     }
 }
+
+#[cfg(test)]
+mod matrix_tests {
+    use crate::field::{Field, QuadraticField, Rational};
+    use crate::matrix::Matrix;
+    use crate::ratfunc::RatFuncField;
+    use crate::report::{MatrixOut, Target};
+
+    #[test]
+    fn latex_matrices_are_typeset_from_their_elements() {
+        // Q(cr, m, u): the field's LaTeX (\mathit names), not the text re-parsed
+        let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();
+        let x = k.parse("-cr/(m*u)").unwrap();
+        let m = Matrix::from_vec(k.clone(), 1, 2, vec![x.clone(), k.one()]);
+        let out = MatrixOut::for_target(&m, Target::Latex);
+        assert_eq!(out.latex_at(0, 0), Some(k.latex_elem(&x).as_str()));
+        assert!(out.latex_at(0, 0).unwrap().contains("\\mathit{cr}"));
+        assert_eq!(out.latex_at(0, 1), None, "1: the same as its text");
+        // Q(sqrt 2): a + b sqrt(2) from its parts
+        let q2 = QuadraticField::new(2).unwrap();
+        let half = Rational::new(1.into(), 2.into());
+        let y = crate::field::Quadratic::new(half.clone(), -half);
+        let m2 = Matrix::from_vec(q2.clone(), 1, 1, vec![y]);
+        let out2 = MatrixOut::for_target(&m2, Target::Latex);
+        assert_eq!(
+            out2.latex_at(0, 0),
+            Some("\\frac{1}{2} - \\frac{\\sqrt{2}}{2}")
+        );
+        // other targets build no LaTeX
+        assert!(
+            MatrixOut::for_target(&m2, Target::Json)
+                .latex_at(0, 0)
+                .is_none()
+        );
+    }
+}
