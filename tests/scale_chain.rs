@@ -5,13 +5,18 @@
 //!   (c s + k)^(n-1) / m^n up to the constant of the denominator's normalisation;
 //! - `zeros`: the invariant-zero polynomial is (s + k/c)^(n-1);
 //! - `minreal` (Kalman, Rosenbrock, Ho–Kalman): order 2n, the Markov parameters of the chain;
-//! - `scb`: verified, block dimensions summing to 2n, x_a of dimension n - 1.
+//! - `scb`: verified, block dimensions summing to 2n, x_a of dimension n - 1;
+//! - `jordan` (the components over Q(m, k, c)): A T = T J per component, the factors' degrees
+//!   times multiplicities sum to 2n, one block per eigenvalue (distinct modes), and the monic
+//!   factors multiply back to the characteristic polynomial.
 //!
-//! Debug builds run n = 2..5 for every command; the larger n of each command run where they
-//! are fast in a debug build (see each test).
+//! Every command runs n = 2..10 (`cargo test`, test profile) except the heaviest, which are
+//! `#[ignore]`d with their reason and run by
+//! `cargo test --release --test all scale_chain:: -- --include-ignored`.
 
 use crate::common::systems::chain_qp;
 use exactlti::field::Field;
+use exactlti::jordan::over_qp::components_qp;
 use exactlti::poly::Poly;
 use exactlti::realization::{MinrealMethod, minimal};
 use exactlti::structure::zeros::invariant_zeros;
@@ -85,5 +90,42 @@ fn chain_scb_blocks() {
         assert_eq!(r.dims.iter().sum::<usize>(), 2 * n, "n = {n}");
         assert_eq!(r.dims[0], n - 1, "n = {n}");
         assert_eq!(r.chains, vec![n + 1], "n = {n}");
+    }
+}
+
+/// The Jordan components of the n-mass chain over Q(m, k, c) (see the module docs).
+fn check_chain_jordan(n: usize) {
+    let s = chain_qp(n);
+    let (cp, comps) = components_qp(&s.a).unwrap();
+    let total: usize = comps.iter().map(|c| c.degree() * c.multiplicity).sum();
+    assert_eq!(total, 2 * n, "n = {n}");
+    for c in &comps {
+        assert!(c.verify(&s.a), "n = {n}: A T = T J");
+        assert_eq!(c.blocks, vec![1; c.multiplicity], "n = {n}: distinct modes");
+    }
+    let k = s.a.field().clone();
+    let mut prod = Poly::new(k.clone(), vec![k.one()]);
+    for f in &cp.factors {
+        for _ in 0..f.multiplicity {
+            prod = prod.mul(&f.monic);
+        }
+    }
+    assert_eq!(prod, cp.charpoly, "n = {n}");
+}
+
+#[test]
+fn chain_jordan_components() {
+    for n in 2..=6 {
+        check_chain_jordan(n);
+    }
+}
+
+/// n = 7..10: 4-5 s each in a release build (factoring the discriminants recorded as
+/// conditions), minutes in the test profile.
+#[test]
+#[ignore = "slow in the test profile: run with --release -- --include-ignored"]
+fn chain_jordan_components_up_to_ten() {
+    for n in 7..=10 {
+        check_chain_jordan(n);
     }
 }
