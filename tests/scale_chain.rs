@@ -23,7 +23,7 @@ use exactlti::structure::zeros::invariant_zeros;
 
 #[test]
 fn chain_tf_matches_the_markov_parameters() {
-    for n in 2..=7 {
+    for n in 2..=10 {
         let s = chain_qp(n);
         let g = s.transfer_matrix().unwrap();
         assert!(g.matches_markov(&s), "n = {n}");
@@ -43,7 +43,7 @@ fn chain_tf_matches_the_markov_parameters() {
 
 #[test]
 fn chain_zeros_are_minus_k_over_c() {
-    for n in 2..=7 {
+    for n in 2..=10 {
         let s = chain_qp(n);
         let z = invariant_zeros(&s.a, &s.b, &s.c, &s.d).unwrap();
         let k = s.a.field().clone();
@@ -63,9 +63,9 @@ fn chain_zeros_are_minus_k_over_c() {
 #[test]
 fn chain_minreal_keeps_the_markov_parameters() {
     for (method, nmax) in [
-        (MinrealMethod::Kalman, 6),
-        (MinrealMethod::Rosenbrock, 5),
-        (MinrealMethod::HoKalman, 5),
+        (MinrealMethod::Kalman, 10),
+        (MinrealMethod::Rosenbrock, 10),
+        (MinrealMethod::HoKalman, 10),
     ] {
         for n in 2..=nmax {
             let s = chain_qp(n);
@@ -83,7 +83,7 @@ fn chain_minreal_keeps_the_markov_parameters() {
 
 #[test]
 fn chain_scb_blocks() {
-    for n in 2..=6 {
+    for n in 2..=10 {
         let s = chain_qp(n);
         let r = exactlti::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).unwrap();
         assert!(r.verified, "n = {n}");

@@ -1,7 +1,8 @@
 //! Degrees probed on random lines, and the check that accepts a polynomial interpolated with
 //! them ([`super::interp`]).
 //!
-//! The certified bounds of [`Bounds::of_rows`] add up row maxima, so a matrix whose entries
+//! The certified bounds of [`Bounds::of_rows`] (row maxima, the assignment bound) see no
+//! cancellation, so a matrix whose entries
 //! are large rational functions (the dual Krylov matrix of a companion form, $f(A)$ for a
 //! factor $f$ of the characteristic polynomial) gets a grid of millions of points for
 //! polynomials of modest degree. When the certified grid exceeds [`PROBE_MIN`] points:
