@@ -4,7 +4,7 @@ use super::{MPoly, exp, max_exponent, shift, width};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 
 impl MPoly {
     /// `f + g`.
@@ -92,7 +92,8 @@ impl MPoly {
                 .iter()
                 .map(|(m, c)| (*m, c.to_i128().unwrap()))
                 .collect();
-            let mut acc: HashMap<u128, i128> = HashMap::with_capacity(a.len() * b.len() / 2 + 1);
+            let mut acc: super::monomap::MonoMap<i128> =
+                super::monomap::with_capacity(a.len() * b.len() / 2 + 1);
             for (m, c) in &ai {
                 for (n, d) in &bi {
                     *acc.entry(m + n).or_insert(0) += c * d;
@@ -106,7 +107,8 @@ impl MPoly {
             t.sort_unstable_by_key(|x| std::cmp::Reverse(x.0));
             return MPoly::from_sorted(self.nvars, t);
         }
-        let mut acc: HashMap<u128, BigInt> = HashMap::with_capacity(a.len() * b.len() / 2 + 1);
+        let mut acc: super::monomap::MonoMap<BigInt> =
+            super::monomap::with_capacity(a.len() * b.len() / 2 + 1);
         for (m, c) in &a.terms {
             for (n, d) in &b.terms {
                 let e = acc.entry(m + n).or_default();

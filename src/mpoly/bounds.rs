@@ -45,6 +45,22 @@ impl Bounds {
             dtot += rowtot;
             coef *= r + 1u32;
         }
+        // the assignment bound: every term takes entries at distinct rows and columns
+        let deg_at = |i: usize, j: usize, v: Option<usize>| -> i64 {
+            let e = &b[rows[i] * ncols + j];
+            i64::from(match v {
+                Some(v) => e.deg(v),
+                None => e.total_degree(),
+            })
+        };
+        if !rows.is_empty() && ncols > 0 {
+            for (v, d) in dv.iter_mut().enumerate() {
+                *d = (*d).min(max_assignment(rows.len(), ncols, |i, j| {
+                    deg_at(i, j, Some(v))
+                }));
+            }
+            dtot = dtot.min(max_assignment(rows.len(), ncols, |i, j| deg_at(i, j, None)));
+        }
         Bounds {
             dv,
             dtot,
@@ -74,6 +90,75 @@ impl Bounds {
             certified: None,
         }
     }
+}
+
+/// The largest $\sum_i w(i, \sigma(i))$ over injective maps $\sigma$ from the `r` rows to
+/// the `c` columns (or from the columns to the rows when $r > c$), for weights $w \ge 0$, as
+/// `u32` (saturating): the Hungarian algorithm on the costs $-w$, $O(r^2 c)$.
+///
+/// With $w(i, j) = \deg B_{ij}$ (0 for a zero entry) it bounds the degree of every minor of
+/// $B$ and of every coefficient of $\det(xI - B)$ (a term of either takes entries at distinct
+/// rows and columns; a smaller minor extends to a full map by entries of weight $\ge 0$): the
+/// degree of the transposed Hankel or Krylov matrix $\deg B_{ij} = i + j$ is $\sum_i 2i$, where
+/// the row maxima add up to $\sum_i (i + c - 1)$.
+pub(super) fn max_assignment(r: usize, c: usize, w: impl Fn(usize, usize) -> i64) -> u32 {
+    let (n, m, tr) = if r <= c { (r, c, false) } else { (c, r, true) };
+    let cost = |i: usize, j: usize| -> i64 { if tr { -w(j, i) } else { -w(i, j) } };
+    const INF: i64 = i64::MAX / 4;
+    // potentials u (rows), v (columns); p[j] = row matched to column j (1-based, 0 = none)
+    let mut u = vec![0i64; n + 1];
+    let mut v = vec![0i64; m + 1];
+    let mut p = vec![0usize; m + 1];
+    let mut way = vec![0usize; m + 1];
+    for i in 1..=n {
+        p[0] = i;
+        let mut j0 = 0usize;
+        let mut minv = vec![INF; m + 1];
+        let mut used = vec![false; m + 1];
+        loop {
+            used[j0] = true;
+            let i0 = p[j0];
+            let (mut delta, mut j1) = (INF, 0usize);
+            for j in 1..=m {
+                if !used[j] {
+                    let cur = cost(i0 - 1, j - 1) - u[i0] - v[j];
+                    if cur < minv[j] {
+                        minv[j] = cur;
+                        way[j] = j0;
+                    }
+                    if minv[j] < delta {
+                        delta = minv[j];
+                        j1 = j;
+                    }
+                }
+            }
+            for j in 0..=m {
+                if used[j] {
+                    u[p[j]] += delta;
+                    v[j] -= delta;
+                } else {
+                    minv[j] -= delta;
+                }
+            }
+            j0 = j1;
+            if p[j0] == 0 {
+                break;
+            }
+        }
+        loop {
+            let j1 = way[j0];
+            p[j0] = p[j1];
+            j0 = j1;
+            if j0 == 0 {
+                break;
+            }
+        }
+    }
+    let total: i64 = (1..=m)
+        .filter(|&j| p[j] != 0)
+        .map(|j| -cost(p[j] - 1, j - 1))
+        .sum();
+    u32::try_from(total).unwrap_or(u32::MAX)
 }
 
 /// 1-norm of a polynomial's coefficient vector.
@@ -145,4 +230,45 @@ pub(super) fn small_inverses(pr: &Prime, m: usize) -> Vec<u64> {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::max_assignment;
+    use crate::rng::SplitMix64;
+
+    /// The largest sum over injective maps, by trying every map (rows into columns).
+    fn brute(r: usize, c: usize, w: &[i64], used: &mut Vec<bool>, i: usize) -> i64 {
+        if i == r {
+            return 0;
+        }
+        let mut best = i64::MIN;
+        for j in 0..c {
+            if !used[j] {
+                used[j] = true;
+                best = best.max(w[i * c + j] + brute(r, c, w, used, i + 1));
+                used[j] = false;
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn assignment_is_the_best_injective_map() {
+        let mut rng = SplitMix64(0xa551);
+        for case in 0..60 {
+            let (r, c) = (1 + case % 5, 1 + (case / 5) % 6);
+            let w: Vec<i64> = (0..r * c).map(|_| rng.int(0, 9)).collect();
+            let want = if r <= c {
+                brute(r, c, &w, &mut vec![false; c], 0)
+            } else {
+                let wt: Vec<i64> = (0..r * c).map(|k| w[(k % r) * c + k / r]).collect();
+                brute(c, r, &wt, &mut vec![false; r], 0)
+            };
+            let got = max_assignment(r, c, |i, j| w[i * c + j]);
+            assert_eq!(i64::from(got), want, "case {case}: {r} x {c}");
+        }
+        // a Hankel pattern deg = i + j: sum 2i, not the row maxima's sum
+        assert_eq!(max_assignment(8, 8, |i, j| (i + j) as i64), 56);
+    }
 }

@@ -24,7 +24,7 @@ use crate::poly::zpoly::ZPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::Zero;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 
 /// Degree of a monomial in all variables but `x`.
 fn ydeg(n: usize, m: u128, x: usize) -> u32 {
@@ -34,23 +34,45 @@ fn ydeg(n: usize, m: u128, x: usize) -> u32 {
         .sum()
 }
 
-/// `a * b` keeping only terms of degree at most `d` in the variables other than `x`.
-fn mul_trunc(a: &MPoly, b: &MPoly, x: usize, d: u32) -> MPoly {
-    let n = a.nvars();
-    let bd: Vec<u32> = b.terms().iter().map(|(m, _)| ydeg(n, *m, x)).collect();
-    let mut acc: HashMap<u128, BigInt> = HashMap::new();
-    for (ma, ca) in a.terms() {
-        let da = ydeg(n, *ma, x);
-        if da > d {
-            continue;
-        }
-        for ((mb, cb), &db) in b.terms().iter().zip(&bd) {
-            if da + db <= d {
-                *acc.entry(ma + mb).or_default() += ca * cb;
-            }
+/// The parts of `f` homogeneous in the variables other than `x`: `out[j]` holds the terms of
+/// degree `j` there (`j <= top`; higher terms are dropped).
+fn homogeneous_parts(f: &MPoly, x: usize, top: u32) -> Vec<MPoly> {
+    let n = f.nvars();
+    let mut parts: Vec<Vec<(u128, BigInt)>> = vec![Vec::new(); top as usize + 1];
+    for (m, c) in f.terms() {
+        let d = ydeg(n, *m, x);
+        if d <= top {
+            parts[d as usize].push((*m, c.clone()));
         }
     }
-    MPoly::from_terms(n, acc.into_iter().filter(|(_, c)| !c.is_zero()).collect())
+    parts.into_iter().map(|t| MPoly::from_terms(n, t)).collect()
+}
+
+/// The degree-`d` parts of the partial products $P_k = g_0 \cdots g_k$ ($k \ge 1$), from
+/// the parts of degree $< d$ of the $P_{k-1}$ (fixed once the lift passed them) and the
+/// current parts of the $g_k$: `prods[k][d]` $= \sum_{i \le d} \lbrack P_{k-1}\rbrack_i
+/// \lbrack g_k\rbrack_{d-i}$, with $P_0 = g_0$.
+fn product_level(gparts: &[Vec<MPoly>], prods: &mut [Vec<MPoly>], d: usize) {
+    let n = gparts[0][0].nvars();
+    for k in 1..gparts.len() {
+        let mut acc = MPoly::zero(n);
+        for i in 0..=d {
+            let left = if k == 1 {
+                &gparts[0][i]
+            } else {
+                &prods[k - 1][i]
+            };
+            let right = &gparts[k][d - i];
+            if !left.is_zero() && !right.is_zero() {
+                acc = acc.add(&left.mul(right));
+            }
+        }
+        if prods[k].len() > d {
+            prods[k][d] = acc;
+        } else {
+            prods[k].push(acc);
+        }
+    }
 }
 
 /// Shifts every variable but `x` by `a_j` (`back`: by `-a_j`).
@@ -131,18 +153,25 @@ pub(crate) fn lift(f: &MPoly, x: usize, a: &[BigInt], us: &[ZPoly]) -> Option<Ve
         .max()
         .unwrap_or(0);
     let xmask = !(((1u128 << super::width(n)) - 1) << sh);
-    for d in 1..=dmax {
-        let mut prod = gs[0].clone();
-        for g in &gs[1..] {
-            prod = mul_trunc(&prod, g, x, d);
-        }
+    // the products degree by degree: the parts of degree < d of every g_i (and so of every
+    // partial product) are final once step d - 1 is done, so each pair of parts is
+    // multiplied once (twice with the corrections) instead of once per later degree
+    let top = gs
+        .iter()
+        .flat_map(|g| g.terms().iter().map(|(m, _)| ydeg(n, *m, x)))
+        .chain([dmax])
+        .max()
+        .unwrap_or(0);
+    let fparts = homogeneous_parts(&big_f, x, top);
+    let mut gparts: Vec<Vec<MPoly>> = gs.iter().map(|g| homogeneous_parts(g, x, top)).collect();
+    let mut prods: Vec<Vec<MPoly>> = vec![Vec::new(); r];
+    product_level(&gparts, &mut prods, 0);
+    for d in 1..=dmax as usize {
+        product_level(&gparts, &mut prods, d);
         // degree-d part of the error, grouped by monomials in the other variables
-        let err = big_f.sub(&prod);
+        let err = fparts[d].sub(&prods[r - 1][d]);
         let mut by_m: BTreeMap<u128, Vec<Rational>> = BTreeMap::new();
         for (m, c) in err.terms() {
-            if ydeg(n, *m, x) != d {
-                continue;
-            }
             let e = super::exp(n, *m, x) as usize;
             let v = by_m.entry(m & xmask).or_default();
             if v.len() <= e {
@@ -150,6 +179,7 @@ pub(crate) fn lift(f: &MPoly, x: usize, a: &[BigInt], us: &[ZPoly]) -> Option<Ve
             }
             v[e] = Rational::from_integer(c.clone());
         }
+        let corrected = !by_m.is_empty();
         for (m, v) in by_m {
             let e = Poly::new(Q, v);
             if e.deg() >= total {
@@ -170,10 +200,17 @@ pub(crate) fn lift(f: &MPoly, x: usize, a: &[BigInt], us: &[ZPoly]) -> Option<Ve
                     }
                     terms.push((m + ((k as u128) << sh), c.to_integer()));
                 }
-                gs[i] = gs[i].add(&MPoly::from_terms(n, terms));
+                gparts[i][d] = gparts[i][d].add(&MPoly::from_terms(n, terms));
             }
         }
+        if corrected {
+            product_level(&gparts, &mut prods, d);
+        }
     }
+    let gs: Vec<MPoly> = gparts
+        .iter()
+        .map(|ps| ps.iter().fold(MPoly::zero(n), |acc, p| acc.add(p)))
+        .collect();
     // back to the original variables
     let mut hs = Vec::with_capacity(r);
     for g in &gs {

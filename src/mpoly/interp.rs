@@ -12,8 +12,10 @@
 //! $D = \sum_{i \in I} \max_j \operatorname{tdeg} B_{ij}$, so the lower set
 //! $\{e : e_v \le d_v, |e| \le D\}$ of node indices (the box of $d_v + 1$ points per
 //! parameter cut by the simplex of total degree $D$; unisolvent for the polynomials
-//! supported on it, with any distinct nodes per axis) determines it. Degrees may be probed
-//! first ([`super::probe`]).
+//! supported on it, with any distinct nodes per axis) determines it. Both degree bounds are
+//! lowered to the largest $\sum_i \deg B_{i\sigma(i)}$ over injective maps $\sigma$ of rows
+//! to columns (the assignment bound of [`super::bounds`]: a term takes its entries at distinct
+//! rows and columns), still a certificate. Degrees may be probed first ([`super::probe`]).
 //! With $r_i = \sum_j \lVert B_{ij} \rVert_1$ (1-norms are submultiplicative) every integer
 //! coefficient is at most $\prod_{i \in I} (1 + r_i)$ in absolute value, and enough primes are
 //! taken for twice that bound: the symmetric CRT lift is exact. The nodes of axis $v$ are

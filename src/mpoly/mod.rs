@@ -38,6 +38,7 @@ pub mod gcd;
 mod hensel;
 pub mod interp;
 pub(crate) mod modp;
+pub(crate) mod monomap;
 pub(crate) mod parse;
 pub mod probe;
 pub mod resultant;

@@ -1,7 +1,8 @@
 //! Degrees probed on random lines, and the check that accepts a polynomial interpolated with
 //! them ([`super::interp`]).
 //!
-//! The certified bounds of [`Bounds::of_rows`] add up row maxima, so a matrix whose entries
+//! The certified bounds of [`Bounds::of_rows`] (row maxima, the assignment bound) see no
+//! cancellation, so a matrix whose entries
 //! are large rational functions (the dual Krylov matrix of a companion form, $f(A)$ for a
 //! factor $f$ of the characteristic polynomial) gets a grid of millions of points for
 //! polynomials of modest degree. When the certified grid exceeds [`PROBE_MIN`] points:
@@ -21,12 +22,23 @@
 //!   [`crate::ratfunc::kernels::minor_cond`]); when the check fails the certified grid runs.
 //!
 //! Grids up to [`PROBE_MIN`] points stay certified without a probe.
+//!
+//! **Decision (issue 25): a documented Monte Carlo step, with a switch.** A deterministic
+//! certificate of the probed degrees would need the values at the certified grid's extra
+//! points (as costly as the certified grid) or a structural degree bound that sees the
+//! cancellations the probe measures (none is known for $f(A)$ or a dual Krylov matrix). So a
+//! probed result is accepted with error probability below $(D/q)^2$ per call; where the caller
+//! has an exact check of its own (the RREF's $\Delta B_{i,F} = B_{i,P} N$ of
+//! [`crate::ratfunc::kernels`]) the result stays certified. To run every grid certified (no
+//! probe), set the environment variable `EXACTLTI_CERTIFIED_GRID=1` (the whole process) or
+//! call [`with_certified_grid`] (this thread; tests compare both).
 
 use super::MPoly;
 use super::bounds::{Bounds, grid_points, small_inverses};
 use super::modp::{ReducedPoly, eval_mod_p, powers};
 use crate::qkernels::prime::{Prime, is_prime_u64};
 use crate::rng::SplitMix64;
+use std::cell::Cell;
 use std::sync::{Mutex, OnceLock};
 
 /// Certified grids up to this many points are used without a probe.
@@ -37,6 +49,33 @@ pub const PROBE_MIN: usize = 1 << 12;
 const MAX_LINE: u32 = 1 << 16;
 
 static SIDE: OnceLock<Mutex<Vec<u64>>> = OnceLock::new();
+
+thread_local! {
+    static CERTIFIED_ONLY: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Are probes off (the certified grids only)? On with `EXACTLTI_CERTIFIED_GRID` set to
+/// anything but `0` or empty, or inside [`with_certified_grid`].
+pub fn certified_only() -> bool {
+    static ENV: OnceLock<bool> = OnceLock::new();
+    CERTIFIED_ONLY.with(Cell::get)
+        || *ENV.get_or_init(|| {
+            std::env::var("EXACTLTI_CERTIFIED_GRID").is_ok_and(|v| !v.is_empty() && v != "0")
+        })
+}
+
+/// Runs `f` with probes off on this thread (every interpolation on its certified grid),
+/// restoring the previous setting afterwards (also when `f` panics).
+pub fn with_certified_grid<T>(f: impl FnOnce() -> T) -> T {
+    struct Restore(bool);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            CERTIFIED_ONLY.with(|c| c.set(self.0));
+        }
+    }
+    let _restore = Restore(CERTIFIED_ONLY.with(|c| c.replace(true)));
+    f()
+}
 
 /// The `i`-th prime below $2^{62} - 2^{32}$ (decreasing, cached): word primes with Barrett
 /// products that are none of the interpolation primes of
@@ -119,7 +158,7 @@ impl Bounds {
         F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
     {
         let nv = self.dv.len();
-        if grid_points(&self) <= PROBE_MIN || nv == 0 || self.dtot >= MAX_LINE {
+        if grid_points(&self) <= PROBE_MIN || nv == 0 || self.dtot >= MAX_LINE || certified_only() {
             return self;
         }
         let pr = side_prime(0);

@@ -25,7 +25,7 @@ mod display;
 pub(crate) mod kernels;
 
 /// $\det B$ of a matrix over $\mathbb{Z}\lbrack p\rbrack$ by evaluation/interpolation (the kernel behind every Q(p) determinant).
-pub use kernels::det_zp;
+pub use kernels::{charpoly_zp, det_zp};
 
 use crate::error::{Error, Result};
 use crate::field::{Field, Kernels, Rational};

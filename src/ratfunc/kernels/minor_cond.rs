@@ -6,15 +6,16 @@
 //!
 //! | size of $\det C$ | how its factors are found |
 //! |---|---|
-//! | interpolation grid $\le$ [`DENSE_GRID`] points | $\det C$ interpolated ([`super::det_zp`]), divided by $\prod d_i$; factored by the log |
+//! | certified interpolation grid $\le$ [`DENSE_GRID`] points | $\det C$ interpolated ([`super::det_zp_with`], no probe), divided by $\prod d_i$; factored by the log |
 //! | larger (e.g. a Vandermonde minor: $10!$ terms) | **peeling**: candidates $f$ (the parameters, irreducible factors of the entries of $C$ of total degree $\le 3$, of differences of two entries in one row or column, of the $d_i$, and the conditions recorded so far in this computation); on a random line $x = a + t b$ modulo a word prime, $g(t) = \det C(x)$ is interpolated ($\deg g \le D$, the total-degree bound) and divided by each $f(a + t b)$ as often as it goes; when the cofactor is a constant $c_0$, the identity $\det C = c_0 \prod f^{e_f}$ is checked at two further random points (Schwartz–Zippel: wrong with probability $\le 2D/q$, $q \approx 2^{62}$) |
-//!
+//! | peeling leaves a non-constant cofactor $Q$ whose grid (degrees minus the peeled ones) is $\le$ [`DENSE_GRID`] | $Q = \det C / \prod f^{e_f}$ interpolated ([`record_cofactor`]), checked at two points; the peeled factors and $Q$ recorded (a dual Krylov minor $\det(OK)$ with $\det K$ known) |
+//! | peeling leaves a cofactor, probed grid ([`Bounds::probe`]) $\le$ [`DENSE_GRID`] | $\det C$ interpolated there, factored by the log |
 //! | peeling leaves a cofactor, grid $\le$ [`MAX_GRID_POINTS`] | $\det C$ interpolated and recorded as **one condition, unfactored** (an 8 x 8 minor linear in 10 parameters: 43758 points) |
 //!
 //! When none applies (a larger grid), nothing is recorded and the caller gives the shortcut
 //! up (the generic elimination then records its pivots itself).
 
-use super::det_zp;
+use super::det_zp_with;
 use super::interp::{Bounds, MAX_GRID_POINTS, grid_points};
 use super::modp::{ReducedPoly, det_mod_p, eval_mod_p, powers};
 use crate::mpoly::{MPoly, factor};
@@ -54,27 +55,46 @@ pub fn record_minor(
         .flat_map(|&i| cols.iter().map(move |&j| b[i * n + j].clone()))
         .collect();
     let den = rows.iter().fold(MPoly::one(nv), |acc, &i| acc.mul(&ds[i]));
-    let det_map = |pr: &Prime, x: &mut [u64]| Some(vec![det_mod_p(pr, r, x)]);
-    let bounds = Bounds::of_square(nv, r, &c).probe(&c, &det_map);
-    if grid_points(&bounds) <= DENSE_GRID
-        && let Ok(d) = det_zp(nv, r, &c)
-    {
-        return match k.frac(d, den) {
-            Some(q) if !q.num().is_zero() => {
-                k.record_condition(q.num());
-                true
-            }
-            _ => false,
-        };
+    // a small certified grid: det C outright (no probe); else peeling first (a line of
+    // D + 1 points: cheaper than a grid the probe made small), then the probed grid
+    let cert = Bounds::of_square(nv, r, &c);
+    if grid_points(&cert) <= DENSE_GRID {
+        return record_det(k, r, &c, &cert, den);
     }
     let known = k.conditions().unwrap_or_default();
-    if let Some(fs) = peel(r, &c, bounds.dtot as usize, &den, &known) {
-        for f in &fs {
-            k.record_condition(f);
+    match peel(r, &c, cert.dtot as usize, &den, &known) {
+        Some(p) if p.complete => {
+            for f in &p.out {
+                k.record_condition(f);
+            }
+            return true;
         }
-        return true;
+        Some(p) if !p.exps.is_empty() && record_cofactor(k, r, &c, &cert, &den, &p) => {
+            return true;
+        }
+        _ => {}
+    }
+    let det_map = |pr: &Prime, x: &mut [u64]| Some(vec![det_mod_p(pr, r, x)]);
+    let bounds = cert.probe(&c, &det_map);
+    if grid_points(&bounds) <= DENSE_GRID {
+        return record_det(k, r, &c, &bounds, den);
     }
     record_unfactored(k, r, &c, &bounds, &den)
+}
+
+/// $\det C$ interpolated on the grid of `bounds`, the numerator of $\det C / \prod d_i$
+/// recorded (factored by the log); `false` when it is zero or the grid is refused.
+fn record_det(k: &RatFuncField, r: usize, c: &[MPoly], bounds: &Bounds, den: MPoly) -> bool {
+    match det_zp_with(k.nvars(), r, c, bounds)
+        .ok()
+        .and_then(|d| k.frac(d, den))
+    {
+        Some(q) if !q.num().is_zero() => {
+            k.record_condition(q.num());
+            true
+        }
+        _ => false,
+    }
 }
 
 /// The last resort of [`record_minor`]: $\det C$ interpolated on a grid of at most
@@ -93,7 +113,7 @@ fn record_unfactored(
     if grid_points(bounds) > MAX_GRID_POINTS || work > UNFACTORED_WORK {
         return false;
     }
-    match det_zp(k.nvars(), r, c)
+    match det_zp_with(k.nvars(), r, c, bounds)
         .ok()
         .and_then(|d| k.frac(d, den.clone()))
     {
@@ -152,9 +172,100 @@ fn candidates(r: usize, c: &[MPoly], den: &MPoly) -> Option<Vec<MPoly>> {
     Some(v)
 }
 
-/// The peeling of the module docs: the candidates whose multiplicity in $\det C$ exceeds
-/// that in `den`; `None` when the cofactor is not a constant or the check fails.
-fn peel(r: usize, c: &[MPoly], dtot: usize, den: &MPoly, known: &[MPoly]) -> Option<Vec<MPoly>> {
+/// What peeling found on its line.
+struct Peeled {
+    /// The candidates dividing $\det C$ on the line, with their multiplicities there.
+    exps: Vec<(MPoly, usize)>,
+    /// Those whose multiplicity exceeds that in `den` (the conditions).
+    out: Vec<MPoly>,
+    /// The cofactor is a constant and $\det C = c_0 \prod f^{e_f}$ held at two points.
+    complete: bool,
+}
+
+/// The cofactor $Q = \det C / \prod f^{e_f}$ left by peeling, interpolated on its own grid:
+/// degrees those of `cert` minus the peeled ones (a dual Krylov minor $\det(O K) = \det O
+/// \det K$ with $\det K$ recorded before: half the degree, an eighth of the grid), coefficients
+/// bounded by Gelfond's inequality ($\lVert Q \rVert_\infty \le 2^{\sum_v d_v}
+/// \prod_v (d_v + 1) \lVert \det C \rVert_\infty$ for a factor of a polynomial of partial
+/// degrees $d_v$); the values at a grid point are $\det C(x) / \prod f(x)^{e_f}$. Checked:
+/// $\det C = Q \prod f^{e_f}$ at two random points modulo a side prime (the multiplicities
+/// came from one line: Monte Carlo as the peeling). Recorded: the peeled conditions and the
+/// numerator of $Q / \prod d_i$ (factored by the log). `false` when the grid exceeds
+/// [`DENSE_GRID`] or the check fails: nothing recorded.
+fn record_cofactor(
+    k: &RatFuncField,
+    r: usize,
+    c: &[MPoly],
+    cert: &Bounds,
+    den: &MPoly,
+    p: &Peeled,
+) -> bool {
+    let nv = k.nvars();
+    let mut dv = cert.dv.clone();
+    let mut dtot = cert.dtot;
+    for (f, e) in &p.exps {
+        let e = *e as u32;
+        for (v, d) in dv.iter_mut().enumerate() {
+            *d = d.saturating_sub(f.deg(v) * e);
+        }
+        dtot = dtot.saturating_sub(f.total_degree() * e);
+    }
+    let growth: u64 = cert.dv.iter().map(|&d| u64::from(d)).sum();
+    let coef = cert
+        .dv
+        .iter()
+        .fold(&cert.coef << growth, |acc, &d| acc * (d + 1));
+    let bounds = Bounds {
+        dv,
+        dtot,
+        coef,
+        certified: None,
+    };
+    if grid_points(&bounds) > DENSE_GRID {
+        return false;
+    }
+    let es: Vec<u64> = p.exps.iter().map(|(_, e)| *e as u64).collect();
+    let mut b = c.to_vec();
+    b.extend(p.exps.iter().map(|(f, _)| f.clone()));
+    let map = |pr: &Prime, x: &mut [u64]| -> Option<Vec<u64>> {
+        let (m, fs) = x.split_at_mut(r * r);
+        let prod = fs
+            .iter()
+            .zip(&es)
+            .fold(1u64, |acc, (&y, &e)| pr.mul(acc, pr.pow(y, e)));
+        Some(vec![pr.mul(det_mod_p(pr, r, m), pr.inv(prod)?)])
+    };
+    let Ok(Some(mut out)) = super::interp::interpolate_zp(nv, &b, &bounds, 1, true, map) else {
+        return false;
+    };
+    let q = out.pop().expect("one output");
+    let pr = super::probe::side_prime(2);
+    let mut rng = SplitMix64(0xc0fa_c702);
+    for _ in 0..2 {
+        let x: Vec<u64> = (0..nv).map(|_| rng.next_u64() % pr.p).collect();
+        let mut m: Vec<u64> = c.iter().map(|f| eval_mod_p(&pr, f, &x)).collect();
+        let rhs = p.exps.iter().fold(eval_mod_p(&pr, &q, &x), |acc, (f, e)| {
+            pr.mul(acc, pr.pow(eval_mod_p(&pr, f, &x), *e as u64))
+        });
+        if det_mod_p(&pr, r, &mut m) != rhs {
+            return false;
+        }
+    }
+    let Some(qd) = k.frac(q, den.clone()) else {
+        return false;
+    };
+    for f in &p.out {
+        k.record_condition(f);
+    }
+    if !qd.num().is_constant() {
+        k.record_condition(qd.num());
+    }
+    true
+}
+
+/// The peeling of the module docs: the candidates dividing $\det C$ and whether they leave a
+/// constant cofactor (checked); `None` on an unlucky line or a failed check.
+fn peel(r: usize, c: &[MPoly], dtot: usize, den: &MPoly, known: &[MPoly]) -> Option<Peeled> {
     // the conditions recorded so far and the factors of `den` first (cheap), the entries'
     // factors only when those leave a cofactor
     let mut first: Vec<MPoly> = known.to_vec();
@@ -173,26 +284,23 @@ fn peel(r: usize, c: &[MPoly], dtot: usize, den: &MPoly, known: &[MPoly]) -> Opt
             }
         }
     }
-    if let Some(out) = peel_with(r, c, dtot, den, &first) {
-        return Some(out);
+    let with_first = peel_with(r, c, dtot, den, &first);
+    if with_first.as_ref().is_some_and(|p| p.complete) {
+        return with_first;
     }
-    let mut cands = candidates(r, c, den)?;
+    let Some(mut cands) = candidates(r, c, den) else {
+        return with_first;
+    };
     for f in first {
         if !cands.contains(&f) {
             cands.push(f);
         }
     }
-    peel_with(r, c, dtot, den, &cands)
+    peel_with(r, c, dtot, den, &cands).or(with_first)
 }
 
 /// [`peel`] with the candidates `cands`.
-fn peel_with(
-    r: usize,
-    c: &[MPoly],
-    dtot: usize,
-    den: &MPoly,
-    cands: &[MPoly],
-) -> Option<Vec<MPoly>> {
+fn peel_with(r: usize, c: &[MPoly], dtot: usize, den: &MPoly, cands: &[MPoly]) -> Option<Peeled> {
     let nv = den.nvars();
     let pr = nth_prime(60);
     let mut rng = SplitMix64(0x9ee1_c0d5);
@@ -251,7 +359,11 @@ fn peel_with(
         }
     }
     if g.len() != 1 {
-        return None;
+        return Some(Peeled {
+            exps: exps.into_iter().map(|(f, e)| (f.clone(), e)).collect(),
+            out,
+            complete: false,
+        });
     }
     for _ in 0..2 {
         let x = rand_pt(&mut rng);
@@ -262,7 +374,11 @@ fn peel_with(
             return None;
         }
     }
-    Some(out)
+    Some(Peeled {
+        exps: exps.into_iter().map(|(f, e)| (f.clone(), e)).collect(),
+        out,
+        complete: true,
+    })
 }
 
 /// Drops trailing zero coefficients.
@@ -362,11 +478,28 @@ mod tests {
         let conds = k.conditions_strings().unwrap();
         assert_eq!(conds.len(), n * (n - 1) / 2);
         assert!(conds.contains(&"p0 - p1".to_string()), "{conds:?}");
-        // a minor with a factor that is no candidate: not found, nothing recorded
+        // a minor with a factor that is no candidate: the cofactor left by peeling is
+        // interpolated on its own grid ([`record_cofactor`]) and recorded; the conditions
+        // multiply back to det C up to a constant (at two points modulo a prime)
         let k2 = k.fresh();
         let mut b2 = b.clone();
         b2[0] = k.parse("p0^3 + p1*p2 + 7").unwrap().num().clone();
-        assert!(!record_minor(&k2, &b2, n, &all, &all, &ds));
-        assert!(k2.conditions().unwrap().is_empty());
+        assert!(record_minor(&k2, &b2, n, &all, &all, &ds));
+        let conds = k2.conditions().unwrap();
+        assert!(conds.len() > (n - 1) * (n - 2) / 2, "{conds:?}");
+        let pr = nth_prime(3);
+        let mut rng = SplitMix64(0x7e57);
+        let ratios: Vec<u64> = (0..2)
+            .map(|_| {
+                let x: Vec<u64> = (0..n).map(|_| rng.next_u64() % pr.p).collect();
+                let mut m: Vec<u64> = b2.iter().map(|f| eval_mod_p(&pr, f, &x)).collect();
+                let d = det_mod_p(&pr, n, &mut m);
+                let prod = conds
+                    .iter()
+                    .fold(1u64, |acc, f| pr.mul(acc, eval_mod_p(&pr, f, &x)));
+                pr.mul(d, pr.inv(prod).unwrap())
+            })
+            .collect();
+        assert_eq!(ratios[0], ratios[1], "{:?}", k2.conditions_strings());
     }
 }

@@ -75,11 +75,21 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
 /// # Errors
 /// `Limit` when the grid exceeds [`interp::MAX_GRID_POINTS`].
 pub fn det_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<MPoly> {
+    let map =
+        |pr: &crate::qkernels::prime::Prime, a: &mut [u64]| Some(vec![modp::det_mod_p(pr, n, a)]);
+    det_zp_with(nvars, n, b, &Bounds::of_square(nvars, n, b).probe(b, &map))
+}
+
+/// [`det_zp`] on the grid of `bounds` (the caller's certified or probed bounds of
+/// [`Bounds::of_square`]; no second probe).
+///
+/// # Errors
+/// As [`det_zp`].
+pub fn det_zp_with(nvars: usize, n: usize, b: &[MPoly], bounds: &Bounds) -> Result<MPoly> {
     assert_eq!(b.len(), n * n);
     let map =
         |pr: &crate::qkernels::prime::Prime, a: &mut [u64]| Some(vec![modp::det_mod_p(pr, n, a)]);
-    let bounds = Bounds::of_square(nvars, n, b).probe(b, &map);
-    let out = interpolate_zp(nvars, b, &bounds, 1, false, map)?;
+    let out = interpolate_zp(nvars, b, bounds, 1, false, map)?;
     Ok(out
         .expect("the det map is defined at every point")
         .pop()
