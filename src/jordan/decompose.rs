@@ -130,6 +130,7 @@ pub fn generic_component<F: Field + 'static>(
         kernel_dims,
         chains: v,
         left_chains: w,
+        restriction: None,
     })
 }
 
@@ -185,6 +186,7 @@ pub fn jordan_over<F: EigenField>(a: &Matrix<F>) -> Result<JordanForm<F>> {
         charpoly: chi,
         components,
         eigenvalues,
+        conditions: vec![],
         verified,
     })
 }

@@ -44,8 +44,8 @@ pub mod fields;
 pub mod normalize;
 pub mod over_qp;
 pub mod pair_field;
-pub mod params;
 pub mod primary;
+pub mod qp_form;
 pub mod real;
 pub mod real_quadratic;
 pub mod real_steps;
@@ -57,7 +57,8 @@ pub mod steps;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use decompose::{EigenField, eigenvalues_over, jordan_over};
-pub use primary::{Component, PrimaryComponent};
+pub use primary::{Component, PrimaryComponent, Restriction};
+pub use qp_form::jordan_qp;
 pub use real::{CompactPair, RealBlock, RealEntries, RealJordanForm, RealNote};
 pub use response::{FreeResponse, ResponseTerm, StateResponse};
 pub(crate) use roots::value_string as value_display;
@@ -129,9 +130,16 @@ pub struct JordanForm<F: Field = Q> {
     pub charpoly: Poly<F>,
     /// One component per irreducible factor of $\chi_A$ over $F$.
     pub components: Vec<Component<F>>,
-    /// All eigenvalues, component by component.
+    /// All eigenvalues as certified algebraic numbers, component by component (empty over
+    /// $\mathbb{Q}(p)$, whose eigenvalues are the roots of the components' factors:
+    /// functions of the parameters, not numbers).
     pub eigenvalues: Vec<Eigenvalue>,
-    /// Every component's identities held exactly and the dimensions add up to $n$.
+    /// Elements of $F$ the result assumes nonzero (over $\mathbb{Q}(p)$: irreducible
+    /// polynomials in the parameters, sorted: [`qp_form::jordan_qp`]); empty over a number
+    /// field, where nothing is assumed.
+    pub conditions: Vec<F::Elem>,
+    /// Every component's identities held exactly and the dimensions add up to $n$ (over
+    /// $\mathbb{Q}(p)$ also $A T = T J$ for the primary form and $\det T \ne 0$).
     pub verified: bool,
 }
 

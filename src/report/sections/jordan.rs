@@ -1,5 +1,7 @@
 //! Reports of Jordan forms, real Jordan forms and free responses, written once for every base
-//! field ([`crate::jordan::EigenField`]: $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$).
+//! field ([`crate::jordan::EigenField`]: $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$);
+//! over $\mathbb{Q}(p)$, whose eigenvalues are functions of the parameters, the primary form
+//! with its conditions ([`crate::jordan::jordan_qp`], [`crate::jordan::over_qp::real_form_qp`]).
 //!
 //! Presentation only: these `report` methods read finished results of [`crate::jordan`]
 //! (matrices over the fields, algebraic numbers) and make every string of the CLI contract's
@@ -13,7 +15,9 @@ use crate::jordan::{
 };
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{MatrixOut, Report, Value};
+use crate::jordan::qp_form::integral;
+use crate::ratfunc::RatFuncField;
+use crate::report::{MatrixOut, Report, Value, str_list};
 
 /// A matrix of exact texts, LaTeX and approximations under construction (entries of
 /// several fields).
@@ -434,6 +438,184 @@ impl<F: EigenField> FreeResponse<Ext<F>> {
         Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0")
             .list("terms", items)
             .bool("verified", self.verify(jf))
+    }
+}
+
+/// A matrix over any field as rows of exact strings.
+fn rows<K: Field>(m: &crate::matrix::Matrix<K>) -> Value {
+    let k = m.field();
+    Value::List(
+        (0..m.nrows())
+            .map(|i| str_list(m.row(i).iter().map(|x| k.fmt_elem(x))))
+            .collect(),
+    )
+}
+
+
+/// The name of the eigenvalue variable in displays over $\mathbb{Q}(p)$: `s` unless a
+/// parameter is called so (then `x`, then `lambda_`).
+pub fn qp_var_name(vars: &[String]) -> String {
+    for c in ["s", "x", "lambda_"] {
+        if !vars.iter().any(|v| v == c) {
+            return c.to_string();
+        }
+    }
+    "lambda__".to_string()
+}
+
+/// $\chi_A$ over $\mathbb{Q}(p)$ as `s^4 + (cr/(m*u))*s^3` (coefficients in parentheses).
+fn charpoly_qp(k: &RatFuncField, p: &Poly<RatFuncField>, s: &str) -> String {
+    let mut parts = vec![];
+    for (i, c) in p.coeffs().iter().enumerate().rev() {
+        if k.is_zero(c) {
+            continue;
+        }
+        let mono = match i {
+            0 => String::new(),
+            1 => s.to_string(),
+            _ => format!("{s}^{i}"),
+        };
+        let cf = k.fmt_elem(c);
+        parts.push(match (mono.is_empty(), k.is_one(c)) {
+            (true, _) => format!("({cf})"),
+            (false, true) => mono,
+            (false, false) => format!("({cf})*{mono}"),
+        });
+    }
+    if parts.is_empty() {
+        "0".to_string()
+    } else {
+        parts.join(" + ")
+    }
+}
+
+/// The conditions of a result over $\mathbb{Q}(p)$ as display strings.
+pub fn conditions_qp(jf: &JordanForm<RatFuncField>) -> Vec<String> {
+    let vars = jf.base().vars();
+    jf.conditions
+        .iter()
+        .map(|c| c.num().display_normalized().to_string_vars(vars))
+        .collect()
+}
+
+impl JordanForm<RatFuncField> {
+    /// The report over $\mathbb{Q}(p)$ ([`crate::jordan::jordan_qp`]): `field`, `n`,
+    /// `charpoly`, `charpoly_factored` (in $\mathbb{Z}\lbrack p, s\rbrack$), `eigenvalues[]`
+    /// (`value` in $\mathbb{Q}(p)$ or `roots_of` the factor, `factor`, `degree`, the
+    /// multiplicities, `blocks`, `kernel_dims` of $g(A)^k$ over $\mathbb{Q}(p)$), `J`, `T` (the
+    /// primary form), `presentation`, `conditions`, `verified`.
+    pub fn report(&self) -> Report {
+        let k = self.base();
+        let s = qp_var_name(k.vars());
+        let mut vars = k.vars().to_vec();
+        vars.push(s.clone());
+        let ints = |xs: &[usize]| Value::List(xs.iter().map(|&b| Value::Int(b as i64)).collect());
+        let (mut evs, mut factors) = (vec![], vec![]);
+        for (c, value) in self.components.iter().zip(self.values()) {
+            let big = integral(&c.factor);
+            let f = big.to_string_vars(&vars);
+            let r = match &value {
+                Some(v) => Report::new().str("value", k.fmt_elem(v)),
+                None => Report::new().str("roots_of", format!("{f} = 0")),
+            };
+            let dims: Vec<usize> = c.kernel_dims.iter().map(|x| x * c.degree()).collect();
+            evs.push(Value::Obj(
+                r.str("factor", f.clone())
+                    .int("degree", c.degree())
+                    .int("algebraic_multiplicity", c.multiplicity)
+                    .int("geometric_multiplicity", c.geometric_multiplicity())
+                    .with("blocks", ints(&c.blocks))
+                    .with("kernel_dims", ints(&dims)),
+            ));
+            let f = if big.len() > 1 { format!("({f})") } else { f };
+            factors.push(match c.multiplicity {
+                1 => f,
+                e => format!("{f}^{e}"),
+            });
+        }
+        let presentation = if self.complete() {
+            "every eigenvalue in the field: J is the Jordan matrix, T its chains"
+        } else {
+            "eigenvalues of irreducible factors of degree >= 2 are roots of that factor: their \
+             diagonal block of J is the restriction of A to ker f(A)^e (T: a basis of it); \
+             their Jordan blocks are listed under eigenvalues[].blocks"
+        };
+        let mut r = Report::titled("Jordan form over QQ(p)")
+            .str("field", k.to_string())
+            .int("n", self.n())
+            .str("charpoly", charpoly_qp(k, &self.charpoly, &s))
+            .str("charpoly_factored", factors.join("*"))
+            .list("eigenvalues", evs);
+        r = match self.primary_form() {
+            Ok((t, j)) => r.with("J", rows(&j)).with("T", rows(&t)),
+            Err(err) => r.str("error", err.to_string()),
+        };
+        r.str("presentation", presentation)
+            .with("conditions", str_list(conditions_qp(self)))
+            .bool("verified", self.verified)
+    }
+}
+
+impl crate::jordan::over_qp::QpRealForm {
+    /// The CLI report of `jordan --real` over $\mathbb{Q}(p)$: `field`, `n`, `charpoly`,
+    /// `components[]` (an eigenvalue in $\mathbb{Q}(p)$ with `blocks` and its chains `T`, or
+    /// a pair with `factor`, `real_part`, `imaginary_part`, `complex_where`, `blocks`,
+    /// `J_real`, `T_real` over $\mathbb{Q}(p)(w)$), `conditions`, `verified`.
+    pub fn report(&self) -> Report {
+        let k = self.a.field();
+        let comps = self
+            .components
+            .iter()
+            .zip(&self.pairs)
+            .map(|(c, pair)| {
+                let blocks = Value::List(c.blocks.iter().map(|&b| Value::Int(b as i64)).collect());
+                let r = match pair {
+                    None => {
+                        let theta = k.neg(&c.factor.monic().coeff(0));
+                        let e = &c.field;
+                        let t = c
+                            .chains
+                            .map(k, |x| e.to_base(x).unwrap_or_else(|| k.zero()));
+                        Report::new()
+                            .str("eigenvalue", k.fmt_elem(&theta))
+                            .with("blocks", blocks)
+                            .with("T", rows(&t))
+                    }
+                    Some(p) => {
+                        let w = p.field.var();
+                        Report::new()
+                            .str("factor", c.factor.to_string_var("s"))
+                            .str("real_part", k.fmt_elem(&p.re))
+                            .str(
+                                "imaginary_part",
+                                format!("{w} = sqrt({})", k.fmt_elem(&p.im_squared)),
+                            )
+                            .str(
+                                "complex_where",
+                                format!("{} < 0", k.fmt_elem(&p.discriminant)),
+                            )
+                            .with("blocks", blocks)
+                            .with("J_real", rows(&p.j))
+                            .with("T_real", rows(&p.t))
+                            .bool("verified", p.verified)
+                    }
+                };
+                Value::Obj(r)
+            })
+            .collect();
+        Report::titled("real Jordan form over QQ(p)")
+            .str("field", k.to_string())
+            .int("n", self.a.nrows())
+            .str("charpoly", self.charpoly.charpoly.to_string_var("s"))
+            .list("components", comps)
+            .str(
+                "presentation",
+                "eigenvalues in QQ(p) with their Jordan chains; each quadratic factor s^2 + b s + c \
+                 as blocks [[a, w], [-w, a]] (I2 coupling), a = -b/2, w = sqrt(c - b^2/4), a \
+                 complex pair exactly where b^2 - 4c < 0; A T = T J checked exactly with w a \
+                 symbol (w^2 = c - b^2/4)",
+            )
+            .bool("verified", self.verified)
     }
 }
 

@@ -11,7 +11,7 @@ mod dcgain;
 mod discrete;
 mod interconnect;
 mod jordan;
-mod jordan_qp;
+pub use jordan::{conditions_qp, qp_var_name};
 mod mpoly;
 mod pencil;
 mod realization;

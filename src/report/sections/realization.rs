@@ -9,7 +9,8 @@ use crate::field::Field;
 use crate::jordan::EigenField;
 use crate::matrix::Matrix;
 use crate::realization::{
-    JordanMinimal, MinimalRealization, ModalBlock, ModalTable, RealModalBlock, StandardForm,
+    JordanMinimal, MinimalRealization, ModalBlock, ModalTable, PrimaryJordanMinimal,
+    RealModalBlock, StandardForm,
 };
 use crate::report::{Report, Value, str_list};
 
@@ -333,5 +334,67 @@ impl<K: Field> std::fmt::Display for MinimalRealization<K> {
 impl<F: EigenField> std::fmt::Display for JordanMinimal<F> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.report().to_text())
+    }
+}
+
+impl<F: Field> PrimaryJordanMinimal<F> {
+    /// One line per retained component: its eigenvalue (a factor of degree 1) or the factor
+    /// whose roots its primary block carries, with the Jordan block sizes and its states.
+    pub fn mode_lines(&self) -> Vec<String> {
+        let k = self.system.a.field();
+        self.blocks
+            .iter()
+            .map(|b| {
+                let comp = &self.components[b.component];
+                let g = &comp.factor;
+                let sizes: Vec<String> = b.blocks.iter().map(|s| s.to_string()).collect();
+                let states = format!("states {}..{}", b.offset + 1, b.offset + b.order);
+                if g.deg() == 1 {
+                    let theta = k.neg(&g.monic().coeff(0));
+                    format!(
+                        "eigenvalue {} (Jordan blocks {}): {states}",
+                        k.fmt_elem(&theta),
+                        sizes.join(", ")
+                    )
+                } else {
+                    format!(
+                        "roots of {} (Jordan blocks {} per root; primary block, regular \
+                         representation of the factor's field in the basis 1, t, .., t^{}): \
+                         {states}",
+                        g.to_string_var("s"),
+                        sizes.join(", "),
+                        g.deg() - 1
+                    )
+                }
+            })
+            .collect()
+    }
+    /// The CLI report: `method`, `field`, `original_order`, `order`, `mcmillan_degree`,
+    /// `stages`, `A`..`D`, `modes`, `presentation`, `verified`.
+    pub fn report(&self) -> Report {
+        let s = &self.system;
+        Report::titled("minimal realization (jordan)")
+            .str("method", "jordan")
+            .str("field", s.a.field().to_string())
+            .int("original_order", self.stages[0])
+            .int("order", s.nstates())
+            .int("mcmillan_degree", self.mcmillan_degree)
+            .with(
+                "stages",
+                Value::List(self.stages.iter().map(|&x| Value::Int(x as i64)).collect()),
+            )
+            .matrix("A", &s.a)
+            .matrix("B", &s.b)
+            .matrix("C", &s.c)
+            .matrix("D", &s.d)
+            .with("modes", str_list(self.mode_lines()))
+            .str(
+                "presentation",
+                "modal form over the base field: an eigenvalue in the field as its Jordan \
+                 blocks, the roots of an irreducible factor of degree d >= 2 as one primary \
+                 block (d states per Jordan state); verified by C A^k B equal for k < n + r and \
+                 the order equal to the McMillan degree",
+            )
+            .bool("verified", self.verified)
     }
 }
