@@ -257,12 +257,29 @@ impl<F: Field> JordanForm<F> {
     pub fn base(&self) -> &F {
         self.a.field()
     }
-    /// The exact terms $G_{\theta,k}$ of $e^{At}$, one set per component.
-    pub fn free_response(&self) -> FreeResponse<crate::algebraic::Ext<F>> {
-        let comps = self
+    /// The exact terms $G_{\theta,k}$ of $e^{At}$, one set per component. A component
+    /// without chains (a factor of degree $\ge 2$ of [`jordan_qp`]) gets them here
+    /// ([`Component::compute`]); should that fail its terms are missing and
+    /// [`FreeResponse::verify`] says so.
+    pub fn free_response(&self) -> FreeResponse<crate::algebraic::Ext<F>>
+    where
+        F: 'static,
+    {
+        let made: Vec<Option<Component<F>>> = self
             .components
             .iter()
-            .map(|c| (&c.field, &c.blocks[..], &c.chains, &c.left_chains));
+            .map(|c| {
+                let (g, m, r) = (&c.factor, c.multiplicity, c.roots.clone());
+                let compute = || Component::compute(&self.a, g, m, c.minpoly.clone(), r, true);
+                (!c.has_chains()).then(compute).and_then(|x| x.ok())
+            })
+            .collect();
+        let comps = self.components.iter().zip(&made).map(|(c, m)| {
+            let c = m.as_ref().unwrap_or(c);
+            // still without chains: no terms (the verification then fails)
+            let blocks: &[usize] = if c.has_chains() { &c.blocks } else { &[] };
+            (&c.field, blocks, &c.chains, &c.left_chains)
+        });
         FreeResponse::from_chains(self.n(), comps)
     }
 }

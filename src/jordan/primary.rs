@@ -40,7 +40,9 @@ pub struct Component<F: Field> {
     pub blocks: Vec<usize>,
     /// $\dim \ker (A - t I)^k$, $k = 1, \dots$ (over $E$).
     pub kernel_dims: Vec<usize>,
-    /// Right chains $V$ ($n \times m$) over $E$: $A V = V J_t$.
+    /// Right chains $V$ ($n \times m$) over $E$: $A V = V J_t$ ($n \times 0$ for a factor
+    /// of degree $\ge 2$ of [`super::jordan_qp`], which keeps its primary block:
+    /// [`Component::has_chains`]).
     pub chains: Matrix<Ext<F>>,
     /// Left chains $W$ ($m \times n$) over $E$: $W A = J_t W$, $W V = I$.
     pub left_chains: Matrix<Ext<F>>,
@@ -53,6 +55,11 @@ pub struct Component<F: Field> {
 pub type PrimaryComponent = Component<Q>;
 
 impl<F: Field> Component<F> {
+    /// The chains over $E$ were computed (always but for a factor of degree $\ge 2$ of the
+    /// primary form over $\mathbb{Q}(p)$, [`super::jordan_qp`]).
+    pub fn has_chains(&self) -> bool {
+        self.chains.ncols() == self.multiplicity
+    }
     /// Degree of the factor (number of conjugate eigenvalues over $F$).
     pub fn degree(&self) -> usize {
         self.factor.deg()
@@ -233,6 +240,30 @@ impl<F: Field + 'static> Component<F> {
         }
         let t = field.generator();
         let restriction = restrict(a, factor, mult, always_restrict)?;
+        if mult == 1 {
+            // a simple factor: Krylov chains of A_p (or of A = A_p), no elimination over E
+            let (ap, chi) = match &restriction {
+                Some(r) => (&r.ap, factor.monic()),
+                None => (a, a.charpoly()?),
+            };
+            let (v, w) = super::simple::simple_chains(ap, &chi, &field)?;
+            let (v, w) = match &restriction {
+                Some(r) => (mul(&lift(&r.u), &v), mul(&w, &lift(&r.proj))),
+                None => (v, w),
+            };
+            return Ok(Component {
+                factor: factor.clone(),
+                minpoly,
+                multiplicity: 1,
+                roots,
+                blocks: vec![1],
+                kernel_dims: vec![1],
+                chains: v,
+                left_chains: w,
+                field,
+                restriction,
+            });
+        }
         let (blocks, kernel_dims, v, w) = match &restriction {
             // chains of the restriction A_p (dm x dm) instead of the n x n matrix over E
             Some(r) => {

@@ -34,7 +34,9 @@
 use super::JordanForm;
 use super::over_qp::charpoly_factors;
 use super::primary::Component;
-use crate::error::Result;
+use crate::algebraic::Ext;
+use crate::error::{Error, Result};
+use crate::matrix::params::rref_params;
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::mpoly::MPoly;
@@ -78,17 +80,12 @@ pub fn jordan_qp(a_in: &Matrix<RatFuncField>) -> Result<JordanForm<RatFuncField>
     let k = a_in.field().fresh();
     let a = Matrix::from_vec(k.clone(), n, n, a_in.as_slice().to_vec());
     let cp = charpoly_factors(&a)?;
-    // a factor of degree >= 2: its chains over E = Q(p)[t]/(g) divide by elements of E that
-    // the primary form (T, J) never uses; they go to a separate log (the component field's)
     let components = cp
         .factors
         .iter()
-        .map(|f| {
-            let g = match f.monic.deg() {
-                1 => f.monic.clone(),
-                _ => Poly::new(k.fresh(), f.monic.coeffs().to_vec()),
-            };
-            Component::compute(&a, &g, f.multiplicity, None, vec![], true)
+        .map(|f| match f.monic.deg() {
+            1 => Component::compute(&a, &f.monic, f.multiplicity, None, vec![], true),
+            _ => primary_component(&a, &f.monic, f.multiplicity),
         })
         .collect::<Result<Vec<_>>>()?;
     let mut jf = JordanForm {
@@ -104,7 +101,12 @@ pub fn jordan_qp(a_in: &Matrix<RatFuncField>) -> Result<JordanForm<RatFuncField>
         .iter()
         .map(|c| c.degree() * c.multiplicity)
         .sum();
-    let mut verified = dim == n && jf.components.iter().all(|c| c.verify(&jf.a));
+    // the chains of the linear factors, then A T = T J for the whole primary form
+    let mut verified = dim == n
+        && jf
+            .components
+            .iter()
+            .all(|c| !c.has_chains() || c.verify(&jf.a));
     if verified {
         let (t, j) = jf.primary_form()?;
         verified = jf.a.try_mul(&t)? == t.try_mul(&j)?;
@@ -122,6 +124,75 @@ pub fn jordan_qp(a_in: &Matrix<RatFuncField>) -> Result<JordanForm<RatFuncField>
         .collect();
     jf.verified = verified;
     Ok(jf)
+}
+
+/// The component of an irreducible factor `g` of degree $d \ge 2$ and multiplicity `e` in its
+/// primary-block presentation: the restriction of $A$ to $\ker g(A)^e$ over $\mathbb{Q}(p)$
+/// ([`super::primary::restrict`]; $A$ itself when that is the whole space) and the block sizes
+/// of each root from $\dim \ker g(A)^k$ (blocks of size $\ge k$: $(\dim_k - \dim_{k-1})/d$),
+/// without chains over $E$ ([`Component::has_chains`]: their normalisation $W V = I$ inverts
+/// elements of $E$ whose coefficients are large; [`Component::compute`] makes them).
+///
+/// # Errors
+/// `Verification` when $\dim \ker g(A)^e \ne d e$.
+fn primary_component(
+    a: &Matrix<RatFuncField>,
+    g: &Poly<RatFuncField>,
+    e: usize,
+) -> Result<Component<RatFuncField>> {
+    let (n, d) = (a.nrows(), g.deg());
+    let ga = a.eval_poly(g)?;
+    let mut pw = ga.clone();
+    let mut dims = vec![];
+    loop {
+        let (_, piv) = rref_params(&pw);
+        dims.push(n - piv.len());
+        if n - piv.len() >= d * e || dims.len() > e {
+            break;
+        }
+        pw = pw.try_mul(&ga)?;
+    }
+    if dims.last() != Some(&(d * e)) {
+        return Err(Error::Verification(format!(
+            "jordan over QQ(p): dim ker f(A)^{e} = {:?}, expected {}",
+            dims.last(),
+            d * e
+        )));
+    }
+    let restriction = super::primary::restrict(a, g, e, true)?;
+    let field = Ext::with_var(g, (0.0, 0.0), "t");
+    Ok(Component {
+        factor: g.clone(),
+        minpoly: None,
+        multiplicity: e,
+        roots: vec![],
+        blocks: blocks_from_dims(&dims, d),
+        kernel_dims: dims.iter().map(|x| x / d).collect(),
+        chains: Matrix::zeros(field.clone(), n, 0),
+        left_chains: Matrix::zeros(field.clone(), 0, n),
+        field,
+        restriction,
+    })
+}
+
+/// Block sizes (largest first) from $\dim\ker g(A)^k$, $k = 1..$, for a factor of degree `d`:
+/// blocks of size $\ge k$ per root: $(\dim_k - \dim_{k-1}) / d$.
+fn blocks_from_dims(dims: &[usize], d: usize) -> Vec<usize> {
+    let mut ge = vec![];
+    let mut prev = 0;
+    for &x in dims {
+        ge.push((x - prev) / d);
+        prev = x;
+    }
+    let mut blocks = vec![];
+    for (i, &g) in ge.iter().enumerate() {
+        let next = ge.get(i + 1).copied().unwrap_or(0);
+        for _ in 0..g.saturating_sub(next) {
+            blocks.push(i + 1);
+        }
+    }
+    blocks.sort_unstable_by(|a, b| b.cmp(a));
+    blocks
 }
 
 /// A monic polynomial over $\mathbb{Q}(p)$ with denominators cleared: in
@@ -204,6 +275,13 @@ mod tests {
     }
     /// Block sizes per root from the kernel dimensions over $\mathbb{Q}(p)$ (the ranks of
     /// $g(A)^k$): $\dim \ker g(A)^k = d \dim_E \ker (A - tI)^k$.
+    #[test]
+    fn blocks_from_dims_counts() {
+        assert_eq!(blocks_from_dims(&[1, 2, 3], 1), [3]);
+        assert_eq!(blocks_from_dims(&[2, 3], 1), [2, 1]);
+        assert_eq!(blocks_from_dims(&[4, 6], 2), [2, 1]);
+        assert_eq!(blocks_from_dims(&[2], 2), [1]);
+    }
     #[test]
     fn blocks_from_kernel_dims() {
         let k = RatFuncField::new(&["p"]).unwrap();
