@@ -108,7 +108,11 @@ fn main() {
         assert!(jf.verified);
         common::bench(name, 5, 1500.0, || jordan_qp(a).unwrap());
         let (t, _) = jf.primary_form().unwrap();
-        let size: usize = t.as_slice().iter().map(|x| jf.base().fmt_elem(x).len()).sum();
+        let size: usize = t
+            .as_slice()
+            .iter()
+            .map(|x| jf.base().fmt_elem(x).len())
+            .sum();
         println!(
             "  (T: {size} characters; {} conditions)",
             jf.conditions.len()

@@ -122,16 +122,8 @@ fn diag_jordan_is_diagonal_with_pairwise_conditions() {
         for b in a + 1..n {
             let d = k.parse(&format!("p{a} - p{b}")).unwrap();
             let f = d.num().primitive_part();
-            let f = if conditions.contains(&f) {
-                f
-            } else {
-                f.neg()
-            };
-            assert!(
-                conditions.contains(&f),
-                "p{a} - p{b} in {:?}",
-                conditions
-            );
+            let f = if conditions.contains(&f) { f } else { f.neg() };
+            assert!(conditions.contains(&f), "p{a} - p{b} in {:?}", conditions);
         }
     }
 }

@@ -5,10 +5,10 @@
 use exactlti::field::{Field, Q, Rational};
 use exactlti::jordan::jordan;
 use exactlti::jordan::{Component, JordanForm, jordan_qp};
-use exactlti::ratfunc::RatFunc;
-use exactlti::report::sections::conditions_qp;
 use exactlti::matrix::Matrix;
+use exactlti::ratfunc::RatFunc;
 use exactlti::ratfunc::RatFuncField;
+use exactlti::report::sections::conditions_qp;
 
 fn mat(k: &RatFuncField, rows: &[&[&str]]) -> Matrix<RatFuncField> {
     Matrix::from_rows(
@@ -147,7 +147,10 @@ fn general_yaw_plane_eq24_26_charpoly_and_discriminant() {
     let det = k
         .parse("(cf*cr*(a + b)^2)/(m*Izz*u^2) - (a*cf - b*cr)/Izz")
         .unwrap();
-    assert_eq!(quad.factor.coeffs(), &[det.clone(), tr.clone(), k.one()][..]);
+    assert_eq!(
+        quad.factor.coeffs(),
+        &[det.clone(), tr.clone(), k.one()][..]
+    );
     // the understeer/oversteer split: the discriminant tr^2 - 4 det is a condition
     let disc = k.sub(&k.mul(&tr, &tr), &k.mul(&k.from_i64(4), &det));
     let want: Vec<_> = exactlti::mpoly::factor(disc.num())

@@ -36,9 +36,9 @@ use super::over_qp::charpoly_factors;
 use super::primary::Component;
 use crate::algebraic::Ext;
 use crate::error::{Error, Result};
-use crate::matrix::params::rref_params;
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
+use crate::matrix::params::rref_params;
 use crate::mpoly::MPoly;
 use crate::mpoly::gcd::lcm;
 use crate::poly::Poly;
@@ -256,10 +256,9 @@ impl JordanForm<RatFuncField> {
     /// Does any condition vanish at `p0`?
     pub fn conditions_vanish_at(&self, p0: &[Rational]) -> bool {
         let k = self.base();
-        self.conditions.iter().any(|c| {
-            k.eval(c, p0)
-                .is_none_or(|v| num_traits::Zero::is_zero(&v))
-        })
+        self.conditions
+            .iter()
+            .any(|c| k.eval(c, p0).is_none_or(|v| num_traits::Zero::is_zero(&v)))
     }
 }
 
@@ -306,8 +305,16 @@ mod tests {
         assert_eq!(dims, [4, 6]);
         assert_eq!(jf.values(), [None]);
         // the integral factor: x^2 - p in Z[p, x]
-        assert_eq!(integral(&c.factor).to_string_vars(&["p".into(), "s".into()]), "s^2 - p");
+        assert_eq!(
+            integral(&c.factor).to_string_vars(&["p".into(), "s".into()]),
+            "s^2 - p"
+        );
         let (t, j) = jf.primary_form().unwrap();
         assert_eq!(&jf.a * &t, &t * &j);
+        // no chains over E in the form; the free response makes them and checks e^{At}
+        assert!(!c.has_chains());
+        let fr = jf.free_response();
+        assert_eq!(fr.terms.len(), 2, "powers 0 and 1 of the one component");
+        assert!(fr.verify(&jf));
     }
 }

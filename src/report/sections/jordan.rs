@@ -7,56 +7,17 @@
 //! (matrices over the fields, algebraic numbers) and make every string of the CLI contract's
 //! keys here; the math modules do not depend on [`crate::report`].
 
+pub(super) use super::cells::Cells;
 use super::eigenvalue_items;
 use crate::algebraic::{Ext, ExtElem};
 use crate::field::Field;
+use crate::jordan::qp_form::integral;
 use crate::jordan::{
     CompactPair, EigenField, Eigenvalue, FreeResponse, JordanForm, RealEntries, RealJordanForm,
 };
-use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::jordan::qp_form::integral;
 use crate::ratfunc::RatFuncField;
 use crate::report::{MatrixOut, Report, Value, str_list};
-
-/// A matrix of exact texts, LaTeX and approximations under construction (entries of
-/// several fields).
-pub(super) struct Cells(pub MatrixOut);
-
-impl Cells {
-    pub fn zeros(nrows: usize, ncols: usize) -> Self {
-        Cells(MatrixOut {
-            exact: vec![vec!["0".to_string(); ncols]; nrows],
-            latex: vec![vec!["0".to_string(); ncols]; nrows],
-            approx: vec![vec![(0.0, 0.0); ncols]; nrows],
-            nrows,
-            ncols,
-        })
-    }
-    /// Entry `(i, j)` from an element of `k` (its display, LaTeX and approximation).
-    pub fn put<K: Field>(&mut self, (i, j): (usize, usize), k: &K, x: &K::Elem) {
-        self.0.exact[i][j] = k.fmt_elem(x);
-        self.0.latex[i][j] = k.latex_elem(x);
-        self.0.approx[i][j] = k.approx(x).unwrap_or((f64::NAN, 0.0));
-    }
-    /// Entry `(i, j)` from a text (also its LaTeX) and a real approximation.
-    pub fn text(&mut self, (i, j): (usize, usize), text: String, approx: f64) {
-        self.0.latex[i][j] = text.clone();
-        self.0.exact[i][j] = text;
-        self.0.approx[i][j] = (approx, 0.0);
-    }
-    /// Writes `m` with its top left corner at `(r, c)`.
-    pub fn block<K: Field>(&mut self, (r, c): (usize, usize), m: &Matrix<K>) {
-        for i in 0..m.nrows() {
-            for j in 0..m.ncols() {
-                self.put((r + i, c + j), m.field(), m.get(i, j));
-            }
-        }
-    }
-    pub fn value(self) -> Value {
-        Value::Matrix(Box::new(self.0))
-    }
-}
 
 /// `r<k> = <value>`, with `(over K: root of g)` when the factor over the base field is not
 /// the eigenvalue's minimal polynomial over $\mathbb{Q}$.
@@ -450,7 +411,6 @@ fn rows<K: Field>(m: &crate::matrix::Matrix<K>) -> Value {
             .collect(),
     )
 }
-
 
 /// The name of the eigenvalue variable in displays over $\mathbb{Q}(p)$: `s` unless a
 /// parameter is called so (then `x`, then `lambda_`).

@@ -7,6 +7,7 @@
 //! ([`factor_report`], [`roots_report`], [`already_standard`], [`float_jordan_fallback`]).
 
 mod algebraic;
+mod cells;
 mod dcgain;
 mod discrete;
 mod interconnect;

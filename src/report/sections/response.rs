@@ -86,7 +86,9 @@ pub fn param_response_report(
     let mut items = vec![];
     for (ci, power, g) in &fr.terms {
         let e = g.field();
-        let theta = values[*ci].as_ref().map_or_else(String::new, |v| k.fmt_elem(v));
+        let theta = values[*ci]
+            .as_ref()
+            .map_or_else(String::new, |v| k.fmt_elem(v));
         let g = g.as_slice().iter().map(|x| match e.to_base(x) {
             Some(v) => k.fmt_elem(&v),
             None => e.fmt_elem(x),
