@@ -82,11 +82,11 @@ pub type Embedding<'a, F = Q> =
 /// One eigenvalue (one root of one factor).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Eigenvalue {
-    /// Minimal polynomial over $\mathbb{Q}$ (the component's factor).
+    /// Minimal polynomial over $\mathbb{Q}$ (the component's factor). Its exact display
+    /// (rational, closed form up to degree 2 and biquadratics, else `root of ... near ...`)
+    /// is made in the reports from it and [`Eigenvalue::approx`]
+    /// (`report::sections::eigenvalue_text`).
     pub minpoly: Poly<Q>,
-    /// Exact display: rational, closed form up to degree 2 (and biquadratics), else
-    /// `root of ... near ...`.
-    pub value: String,
     /// Approximation `(re, im)`, read off the certified region of [`Eigenvalue::number`]
     /// (relative error about $2^{-60}$); exactly `0.0` parts for real and purely imaginary
     /// roots.
@@ -96,12 +96,20 @@ pub struct Eigenvalue {
     /// Index into [`JordanForm::components`] and root index within it.
     pub component: usize,
     pub root: usize,
-    /// Symbol used for the root in per-root displays (`r<k>`).
-    pub symbol: String,
+    /// Index $k$ of the root's symbol `r<k>` in per-root displays (1-based position in
+    /// [`JordanForm::eigenvalues`]).
+    pub index: usize,
     pub algebraic_multiplicity: usize,
     pub geometric_multiplicity: usize,
     /// Jordan block sizes, largest first.
     pub blocks: Vec<usize>,
+}
+
+impl Eigenvalue {
+    /// The name `r<k>` of the root's variable in the fields it is written in.
+    pub fn symbol(&self) -> String {
+        format!("r{}", self.index)
+    }
 }
 
 /// $J$ and $T$ over one extension of the base field ([`JordanForm::single_field`]).
@@ -154,7 +162,8 @@ pub struct JordanForm<F: Field = Q> {
 /// ```
 /// use exactlti::{jordan::jordan, qmat};
 /// let jf = jordan(&qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]]).unwrap();
-/// let values: Vec<&str> = jf.eigenvalues.iter().map(|e| e.value.as_str()).collect();
+/// use exactlti::report::sections::eigenvalue_text;
+/// let values: Vec<String> = jf.eigenvalues.iter().map(eigenvalue_text).collect();
 /// assert_eq!(values, ["-2", "-1 + i", "-1 - i"]);
 /// assert!(jf.verified);
 /// ```

@@ -27,13 +27,13 @@ pub(super) fn root_line<F: Field>(k: &F, e: &Eigenvalue, g: &Poly<F>) -> String 
     } else {
         format!(" (over {k}: root of {g})")
     };
-    format!("{} = {}{over}", e.symbol, e.value)
+    format!("{} = {}{over}", e.symbol(), eigenvalue_text(e))
 }
 
 /// Whether the eigenvalue's field displays with its symbol (`r<k>`), so the symbol needs a
 /// definition.
 pub(super) fn named<F: Field>(f: &Ext<F>, e: &Eigenvalue) -> bool {
-    f.degree() >= 2 && f.var() == e.symbol
+    f.degree() >= 2 && f.var() == e.symbol()
 }
 
 /// `var = root of m near x` for a number field of degree $\ge 3$ shown with its generator.
@@ -151,7 +151,7 @@ pub(super) fn part_text<F: Field>(
 /// The displays of $\operatorname{Re}\theta$, $\operatorname{Im}\theta$ of a pair: closed
 /// forms up to degree 2, else the symbols `a<k>`, `b<k>`.
 pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue) -> (String, String) {
-    let k = &e.symbol[1..];
+    let k = e.index;
     let show = |x: &Option<crate::algebraic::AlgebraicNumber>, sym: String| match x {
         Some(x) if x.degree() <= 2 => x.value_string(),
         _ => sym,
@@ -164,25 +164,32 @@ pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue) -> (Str
 /// is `near X`).
 fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
     let (re, im) = theta_parts(cp, e);
-    let k = &e.symbol[1..];
+    let k = e.index;
     let define = |sym: String, what: &str, x: &Option<crate::algebraic::AlgebraicNumber>, v| match x
     {
         Some(x) if x.degree() <= 2 => None,
         Some(x) => Some(format!(
             "{sym} = {what} {} = {}",
-            e.symbol,
+            e.symbol(),
             x.value_string()
         )),
         None => Some(format!(
             "{sym} = {what} {}, near {}",
-            e.symbol,
+            e.symbol(),
             crate::algebraic::display::approx_text((v, 0.0))
         )),
     };
-    let mut out = vec![format!("{} = {re} + {im}*i", e.symbol)];
+    let mut out = vec![format!("{} = {re} + {im}*i", e.symbol())];
     out.extend(define(format!("a{k}"), "Re", &cp.re, e.approx.0));
     out.extend(define(format!("b{k}"), "Im", &cp.im, e.approx.1));
     out
+}
+
+/// The exact display of an eigenvalue (one number display: rational, closed form up to
+/// degree 2 and for biquadratics, else `root of <minpoly> near <approx>`), from its minimal
+/// polynomial and the approximation that marks the root.
+pub fn eigenvalue_text(e: &Eigenvalue) -> String {
+    crate::jordan::value_display(&e.minpoly, e.approx)
 }
 
 impl<F: EigenField> JordanForm<F> {
@@ -281,7 +288,7 @@ impl<F: EigenField> RealJordanForm<F> {
                         let th = pair.theta();
                         legend.parts.push(format!(
                             "{} = {} + ({})*i",
-                            e.symbol,
+                            e.symbol(),
                             f.fmt_elem(&th.re),
                             f.fmt_elem(&th.im)
                         ));
@@ -338,7 +345,9 @@ impl<F: EigenField> RealJordanForm<F> {
                 format!(
                     "eigenvalue {} (root of {}): exact real field not found ({}); compact exact \
                      form given instead",
-                    e.symbol, e.minpoly, note.error
+                    e.symbol(),
+                    e.minpoly,
+                    note.error
                 )
             })
             .collect()
@@ -390,7 +399,7 @@ impl<F: EigenField> FreeResponse<Ext<F>> {
             for (power, g) in self.terms_of(jf, ev) {
                 items.push(Value::Obj(
                     Report::new()
-                        .str("eigenvalue", e.value.clone())
+                        .str("eigenvalue", eigenvalue_text(e))
                         .int("power", power)
                         .matrix("G", &g),
                 ));

@@ -12,7 +12,7 @@ mod dcgain;
 mod discrete;
 mod interconnect;
 mod jordan;
-pub use jordan::{conditions_qp, qp_var_name};
+pub use jordan::{conditions_qp, eigenvalue_text, qp_var_name};
 mod mpoly;
 mod pencil;
 mod realization;

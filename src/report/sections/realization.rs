@@ -3,7 +3,7 @@
 //! Presentation only: these `report` methods read finished results of [`crate::realization`] and
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
-use super::jordan::{Cells, field_line, named, neg_display, part_text, root_line};
+use super::jordan::{Cells, eigenvalue_text, field_line, named, neg_display, part_text, root_line};
 use crate::algebraic::ExtElem;
 use crate::field::Field;
 use crate::jordan::EigenField;
@@ -64,7 +64,7 @@ fn put_compact<F: Field>(blk: &ModalBlock<F>, sym: &str, off: usize, [a, b, c]: 
 impl<F: EigenField> JordanMinimal<F> {
     /// The display of mode `blk` (a pair: `... (and its conjugate)`).
     fn mode_text(&self, ev: usize, pair: bool) -> String {
-        let v = &self.jordan.eigenvalues[ev].value;
+        let v = eigenvalue_text(&self.jordan.eigenvalues[ev]);
         if pair {
             format!("{v} (and its conjugate)")
         } else {
@@ -95,10 +95,10 @@ impl<F: EigenField> JordanMinimal<F> {
                         RealModalBlock::Pair { pair, .. } => out.extend(field_line(&pair.field)),
                         RealModalBlock::Compact(b) => {
                             let e = &jf.eigenvalues[b.eigenvalue];
-                            let kk = &e.symbol[1..];
+                            let (kk, sym) = (e.index, e.symbol());
                             out.push(line(b.eigenvalue));
-                            out.push(format!("a{kk} = Re {}", e.symbol));
-                            out.push(format!("b{kk} = Im {}", e.symbol));
+                            out.push(format!("a{kk} = Re {sym}"));
+                            out.push(format!("b{kk} = Im {sym}"));
                         }
                         _ => {}
                     }
@@ -123,8 +123,8 @@ impl<F: EigenField> JordanMinimal<F> {
                         RealModalBlock::Root(bk) => put_block([&bk.a, &bk.b, &bk.c], off, cells),
                         RealModalBlock::Pair { a, b, c, .. } => put_block([a, b, c], off, cells),
                         RealModalBlock::Compact(bk) | RealModalBlock::Radical(bk) => {
-                            let sym = &self.jordan.eigenvalues[bk.eigenvalue].symbol;
-                            put_compact(bk, sym, off, cells)
+                            let sym = self.jordan.eigenvalues[bk.eigenvalue].symbol();
+                            put_compact(bk, &sym, off, cells)
                         }
                     }
                     modes.push(self.mode_text(blk.eigenvalue(), blk.is_pair()));

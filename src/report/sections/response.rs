@@ -3,6 +3,7 @@
 //! eigenvalue in the field, $\mathbb{Q}(p)$) and of the mode
 //! contributions ([`crate::realization::contribution`]).
 
+use super::eigenvalue_text;
 use crate::algebraic::Ext;
 use crate::field::Field;
 use crate::jordan::{EigenField, JordanForm, StateResponse};
@@ -51,7 +52,7 @@ pub fn state_response_report<F: EigenField>(
         for (power, g) in sr.terms_of(jf, ev) {
             items.push(Value::Obj(
                 Report::new()
-                    .str("eigenvalue", e.value.clone())
+                    .str("eigenvalue", eigenvalue_text(e))
                     .int("power", power)
                     .matrix("g", &g),
             ));
@@ -133,7 +134,7 @@ pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Re
                 for (power, h) in m.residues.iter().enumerate() {
                     residues.push(Value::Obj(
                         Report::new()
-                            .str("eigenvalue", jf.eigenvalues[ev].value.clone())
+                            .str("eigenvalue", eigenvalue_text(&jf.eigenvalues[ev]))
                             .int("power", power)
                             .matrix("H", &h.map(&field, &f)),
                     ));
@@ -146,7 +147,7 @@ pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Re
                     str_list(
                         m.eigenvalues
                             .iter()
-                            .map(|&i| jf.eigenvalues[i].value.clone()),
+                            .map(|&i| eigenvalue_text(&jf.eigenvalues[i])),
                     ),
                 )
                 .int("order", m.part.a.nrows())
