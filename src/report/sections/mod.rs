@@ -8,11 +8,11 @@
 
 mod algebraic;
 mod cells;
+mod critical;
 mod dcgain;
 mod discrete;
 mod interconnect;
 mod jordan;
-pub use jordan::{conditions_qp, eigenvalue_text, qp_var_name};
 mod mpoly;
 mod pencil;
 mod realization;
@@ -22,8 +22,10 @@ mod tf_field;
 mod toolbox;
 
 pub use algebraic::{factor_report, roots_report};
+pub use critical::{critical_report, factor_displays};
 pub use discrete::{conversion_report, sequence_report, stability_report};
 pub use interconnect::{PartInfo, interconnection_report};
+pub use jordan::{conditions_qp, eigenvalue_text, qp_var_name};
 pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,
