@@ -25,7 +25,7 @@ mod systems;
 
 use common::{bench, selected};
 use exactlti::api::{Command, Format, LinalgOp, RunContext, execute_ctx};
-use exactlti::jordan::params::jordan_params;
+use exactlti::jordan::jordan_qp;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization::{MinrealMethod, minimal};
@@ -99,7 +99,7 @@ fn main() {
             0 => s.transfer_matrix().map(|t| t.entries.len()).unwrap(),
             1 => minimal(&s, MinrealMethod::Kalman).unwrap().order,
             2 => scb(&s.a, &s.b, &s.c, &s.d).unwrap().dims[0],
-            4 => jordan_params(&s.a).unwrap().eigenvalues.len(),
+            4 => jordan_qp(&s.a).unwrap().components.len(),
             5 => minimal(&s, MinrealMethod::Rosenbrock).unwrap().order,
             6 => minimal(&s, MinrealMethod::HoKalman).unwrap().order,
             7 => mechanical_normal_form_in(None, &s.a, &s.b, &s.c, &s.d, DEFAULT_MAX_CANDIDATES)

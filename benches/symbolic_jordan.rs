@@ -14,7 +14,7 @@
 mod common;
 
 use exactlti::field::Field;
-use exactlti::jordan::params::jordan_params;
+use exactlti::jordan::jordan_qp;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
 use std::fmt::Write as _;
@@ -104,14 +104,15 @@ fn main() {
         if !common::selected(name) {
             continue;
         }
-        let jf = jordan_params(a).unwrap();
+        let jf = jordan_qp(a).unwrap();
         assert!(jf.verified);
-        common::bench(name, 5, 1500.0, || jordan_params(a).unwrap());
-        let size: usize =
-            jf.t.as_slice()
-                .iter()
-                .map(|x| jf.field.fmt_elem(x).len())
-                .sum();
+        common::bench(name, 5, 1500.0, || jordan_qp(a).unwrap());
+        let (t, _) = jf.primary_form().unwrap();
+        let size: usize = t
+            .as_slice()
+            .iter()
+            .map(|x| jf.base().fmt_elem(x).len())
+            .sum();
         println!(
             "  (T: {size} characters; {} conditions)",
             jf.conditions.len()

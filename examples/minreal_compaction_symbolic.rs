@@ -13,7 +13,8 @@
 //! Run: `cargo run --example minreal_compaction_symbolic`
 
 use exactlti::field::Field;
-use exactlti::jordan::params::jordan_params;
+use exactlti::jordan::jordan_qp;
+use exactlti::jordan::qp_form::integral;
 use exactlti::matrix::Matrix;
 use exactlti::matrix::params::rref_params;
 use exactlti::mpoly::factor;
@@ -59,17 +60,19 @@ fn main() {
     let b = mat(&k, &[&["b1"], &["b2"], &["b3"], &["b4"]]);
     let c = mat(&k, &[&["c1", "c2", "c3", "c4"]]);
     println!("eq. 34: A = diag(M, M), M = [[a11, a12], [-a12, a22]], B = [b1..b4]^T, C = [c1..c4]");
-    let jf = jordan_params(&a).expect("jordan");
-    for e in &jf.eigenvalues {
+    let jf = jordan_qp(&a).expect("jordan");
+    let mut names = vars.iter().map(|v| v.to_string()).collect::<Vec<_>>();
+    names.push("s".into());
+    for e in &jf.components {
         println!(
             "  eigenvalues: roots of {} = 0, algebraic multiplicity {}, blocks {:?} per root",
-            jf.fmt_factor(&e.factor),
-            e.algebraic_multiplicity,
+            integral(&e.factor).to_string_vars(&names),
+            e.multiplicity,
             e.blocks
         );
     }
-    let e = &jf.eigenvalues[0];
-    assert_eq!((e.degree, e.algebraic_multiplicity), (2, 2));
+    let e = &jf.components[0];
+    assert_eq!((e.degree(), e.multiplicity), (2, 2));
     assert_eq!(e.blocks, [1, 1], "geometric = algebraic multiplicity");
     assert!(jf.verified);
     // controllability matrix rank

@@ -45,7 +45,7 @@ fn main() {
         assert_eq!(e.blocks, [1, 1]);
         println!(
             "{:<22} minpoly {:<18} blocks {:?}",
-            e.value,
+            exactlti::report::sections::eigenvalue_text(e),
             e.minpoly.to_string(),
             e.blocks
         );

@@ -17,7 +17,11 @@ fn main() {
     // eq. 11-14
     let a = qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]];
     let jf = jordan(&a).expect("jordan");
-    let values: Vec<&str> = jf.eigenvalues.iter().map(|e| e.value.as_str()).collect();
+    let values: Vec<String> = jf
+        .eigenvalues
+        .iter()
+        .map(exactlti::report::sections::eigenvalue_text)
+        .collect();
     assert_eq!(values, ["-2", "-1 + i", "-1 - i"]);
     let rf = jf.real_form().expect("real form");
     let (jr, tr) = rf.single_field().expect("over Q");
@@ -41,9 +45,17 @@ fn main() {
     .unwrap();
     let jf = jordan(&a).expect("jordan");
     println!("{}", jf.report().to_text());
-    let zero = jf.eigenvalues.iter().find(|e| e.value == "0").unwrap();
+    let zero = jf
+        .eigenvalues
+        .iter()
+        .find(|e| exactlti::report::sections::eigenvalue_text(e) == "0")
+        .unwrap();
     assert_eq!(zero.blocks, [3], "three zeros in one 3x3 block");
-    let se = jf.eigenvalues.iter().find(|e| e.value == "-8/3").unwrap();
+    let se = jf
+        .eigenvalues
+        .iter()
+        .find(|e| exactlti::report::sections::eigenvalue_text(e) == "-8/3")
+        .unwrap();
     assert_eq!(se.blocks, [1]);
     assert!(jf.verified);
     let (j, t) = jf.single_field().unwrap();
@@ -72,11 +84,15 @@ fn main() {
     );
     let fr = jf.free_response();
     assert!(fr.verify(&jf));
-    let ev0 = jf.eigenvalues.iter().position(|e| e.value == "0").unwrap();
+    let ev0 = jf
+        .eigenvalues
+        .iter()
+        .position(|e| exactlti::report::sections::eigenvalue_text(e) == "0")
+        .unwrap();
     let evs = jf
         .eigenvalues
         .iter()
-        .position(|e| e.value == "-8/3")
+        .position(|e| exactlti::report::sections::eigenvalue_text(e) == "-8/3")
         .unwrap();
     let as_q = |v: &Matrix<exactlti::algebraic::NumberField>| -> Vec<Rational> {
         (0..4)

@@ -7,10 +7,12 @@
 //! Run: `cargo run --example vehicle_jordan_symbolic`
 
 use exactlti::field::{Field, Rational};
-use exactlti::jordan::params::jordan_params;
+use exactlti::jordan::qp_form::integral;
+use exactlti::jordan::{Component, JordanForm, jordan_qp};
 use exactlti::matrix::Matrix;
 use exactlti::mpoly::factor;
 use exactlti::ratfunc::{RatFunc, RatFuncField};
+use exactlti::report::sections::conditions_qp;
 
 fn mat(k: &RatFuncField, rows: &[&[&str]]) -> Matrix<RatFuncField> {
     Matrix::from_rows(
@@ -73,20 +75,20 @@ fn main() {
         ],
     );
     println!("eq. 25: A over {k} =\n{}", show(&k, &a25));
-    let jf = jordan_params(&a25).expect("jordan");
-    let kk = &jf.field;
+    let jf = jordan_qp(&a25).expect("jordan");
+    let kk = jf.base();
     println!("eq. 10: det(sI - A) = {}", kk_charpoly(&jf));
     let quad = jf
-        .eigenvalues
+        .components
         .iter()
-        .find(|e| e.degree == 2)
+        .find(|e| e.degree() == 2)
         .expect("a quadratic factor");
-    let c = quad.monic.coeffs();
+    let c = quad.factor.coeffs();
     let (det, tr) = (c[0].clone(), c[1].clone());
     println!("  = s^2 (s^2 + tr s + det) with");
     println!("    tr  = {}", kk.fmt_elem(&tr));
     println!("    det = {}", factored(kk, &det));
-    let zero = jf.eigenvalue(&kk.zero()).expect("0");
+    let zero = eigenvalue(&jf, &kk.zero()).expect("0");
     println!(
         "  the repeated zero (rigid-body modes: lateral offset, heading): blocks {:?}",
         zero.blocks
@@ -111,13 +113,10 @@ fn main() {
         kk.parse("cf*cr*(a + b)^2 + m*u^2*(b*cr - a*cf)")
             .expect("p")
     );
-    println!(
-        "  conditions (assumed nonzero): {:?}",
-        jf.conditions_strings()
-    );
+    println!("  conditions (assumed nonzero): {:?}", conditions_qp(&jf));
     for (f, _) in factor(disc.num()).expect("f").factors {
         assert!(
-            jf.conditions.contains(&f),
+            jf.conditions.iter().any(|c| c.num() == &f),
             "the discriminant is a condition"
         );
     }
@@ -145,16 +144,17 @@ fn main() {
         "\neq. 27 (cf = 0, b = 0 in eq. 25): A =\n{}",
         show(&k3, &a27)
     );
-    let jf = jordan_params(&a27).expect("jordan");
-    let k3 = jf.field.clone();
+    let jf = jordan_qp(&a27).expect("jordan");
+    let k3 = jf.base().clone();
+    let (t, j) = jf.primary_form().expect("T, J");
     println!("eq. 10: det(sI - A) = {}", kk_charpoly(&jf));
     let s = k3.parse("-cr/(m*u)").expect("s");
-    let zero = jf.eigenvalue(&k3.zero()).expect("0");
-    let se = jf.eigenvalue(&s).expect("s");
+    let zero = eigenvalue(&jf, &k3.zero()).expect("0");
+    let se = eigenvalue(&jf, &s).expect("s");
     println!(
         "eq. 29: eigenvalues 0 (algebraic multiplicity {}, geometric {}, blocks {:?}) and s = {}",
-        zero.algebraic_multiplicity,
-        zero.geometric_multiplicity,
+        zero.multiplicity,
+        zero.geometric_multiplicity(),
         zero.blocks,
         k3.fmt_elem(&s)
     );
@@ -162,7 +162,7 @@ fn main() {
         (zero.blocks.as_slice(), se.blocks.as_slice()),
         (&[3][..], &[1][..])
     );
-    let t = &jf.t;
+    let t = &t;
     let col = |j: usize| -> Vec<String> { (0..4).map(|i| k3.fmt_elem(t.get(i, j))).collect() };
     println!(
         "eq. 28: X1 = {:?} (s = 0), X2 = {:?} (s = -cr/(m u))",
@@ -188,11 +188,7 @@ fn main() {
         az == y33
     );
     assert!(ay == x1 && az == y33);
-    println!(
-        "eq. 34-35: T =\n{}\nJ =\n{}",
-        show(&k3, t),
-        show(&k3, &jf.j)
-    );
+    println!("eq. 34-35: T =\n{}\nJ =\n{}", show(&k3, t), show(&k3, &j));
     let t34 = mat(
         &k3,
         &[
@@ -203,26 +199,17 @@ fn main() {
         ],
     );
     assert!(jf.verified);
-    assert_eq!(
-        jf.a.try_mul(&t34).expect("m"),
-        t34.try_mul(&jf.j).expect("m")
-    );
+    assert_eq!(jf.a.try_mul(&t34).expect("m"), t34.try_mul(&j).expect("m"));
     // the paper's T = our T * C with C commuting with J (the normalisation freedom)
     let cmat = t.inverse().expect("T invertible").try_mul(&t34).expect("m");
-    assert_eq!(
-        jf.j.try_mul(&cmat).expect("m"),
-        cmat.try_mul(&jf.j).expect("m")
-    );
+    assert_eq!(j.try_mul(&cmat).expect("m"), cmat.try_mul(&j).expect("m"));
     println!(
         "  A T = T J holds as rational functions (verified = {}); the paper's T of eq. 34 is valid \
          for the same J and equals T C with C J = J C:\nC =\n{}",
         jf.verified,
         show(&k3, &cmat)
     );
-    println!(
-        "  conditions (assumed nonzero): {:?}",
-        jf.conditions_strings()
-    );
+    println!("  conditions (assumed nonzero): {:?}", conditions_qp(&jf));
 
     // ---- eq. 36-37: the closed-form response in symbols
     let k7 = RatFuncField::new(&["cr", "m", "u", "y0", "psi0", "v0", "r0"]).expect("field");
@@ -235,8 +222,8 @@ fn main() {
             .map(|x| k7.parse(&k3.fmt_elem(x)).expect("same entry"))
             .collect(),
     );
-    let jf7 = jordan_params(&a7).expect("jordan");
-    let k7 = jf7.field.clone();
+    let jf7 = jordan_qp(&a7).expect("jordan");
+    let k7 = jf7.base().clone();
     let p = |s: &str| k7.parse(s).expect("p");
     // eq. 37 at t = 0: x0 = (y0 - v0/s, psi0, r0 u/s + v0, r0), s = -cr/(m u)
     let x0 = [
@@ -245,13 +232,12 @@ fn main() {
         p("v0 - r0*m*u^2/cr"),
         p("r0"),
     ];
-    let fr = jf7.free_response(&x0).expect("response").expect("complete");
-    assert!(fr.verified);
+    let fr = param_response(&jf7, &x0);
     println!(
         "\neq. 36-37: x(t) = sum over eigenvalues e^(theta t) sum_k t^k g_k (verified: x(0) = x0, x' = A x):"
     );
     let names = ["y", "psi", "v", "r"];
-    for (theta, gs) in &fr.terms {
+    for (theta, gs) in &fr {
         for (kk_, g) in gs.iter().enumerate() {
             let v: Vec<String> = g.iter().map(|x| k7.fmt_elem(x)).collect();
             println!(
@@ -266,13 +252,8 @@ fn main() {
         }
     }
     // eq. 37 term by term: y(t) = y0 + (psi0 - r0/s) u t - r0 u t^2/2 - (v0/s) e^{st}
-    let zero_terms = &fr.terms.iter().find(|(th, _)| k7.is_zero(th)).expect("0").1;
-    let s_terms = &fr
-        .terms
-        .iter()
-        .find(|(th, _)| !k7.is_zero(th))
-        .expect("s")
-        .1;
+    let zero_terms = &fr.iter().find(|(th, _)| k7.is_zero(th)).expect("0").1;
+    let s_terms = &fr.iter().find(|(th, _)| !k7.is_zero(th)).expect("s").1;
     let want37: [(&str, &[&str]); 4] = [
         ("37a", &["y0", "(psi0 + r0*m*u/cr)*u", "-r0*u/2"]),
         ("37b", &["psi0", "-r0", "0"]),
@@ -300,19 +281,54 @@ fn main() {
     assert_eq!(*derived, k7.neg(&eq36_t2));
 }
 
-fn kk_charpoly(jf: &exactlti::jordan::params::ParamJordanForm) -> String {
+type Form = JordanForm<RatFuncField>;
+
+/// The component of the eigenvalue `v` in Q(p).
+fn eigenvalue<'a>(jf: &'a Form, v: &RatFunc) -> Option<&'a Component<RatFuncField>> {
+    let i = jf.values().iter().position(|x| x.as_ref() == Some(v))?;
+    Some(&jf.components[i])
+}
+
+/// Terms of the free response from `x0` (every eigenvalue in Q(p)): per eigenvalue its value
+/// and g_0, g_1, ..., checked exactly (x(0) = x0, x' = A x).
+fn param_response(jf: &Form, x0: &[RatFunc]) -> Vec<(RatFunc, Vec<Vec<RatFunc>>)> {
+    let k = jf.base();
+    let x0m = Matrix::column(k.clone(), x0.to_vec());
+    let fr = jf.free_response().from_state(&x0m);
+    assert!(
+        fr.verify(jf, &x0m),
+        "the closed form solves x' = A x from x0"
+    );
+    let values = jf.values();
+    let mut out: Vec<(RatFunc, Vec<Vec<RatFunc>>)> = vec![];
+    for (ci, power, g) in &fr.terms {
+        let e = g.field();
+        let g: Vec<RatFunc> = g
+            .as_slice()
+            .iter()
+            .map(|x| e.to_base(x).expect("in Q(p)"))
+            .collect();
+        let theta = values[*ci].clone().expect("complete");
+        match out.last_mut() {
+            Some((th, gs)) if *power > 0 && *th == theta => gs.push(g),
+            _ => out.push((theta, vec![g])),
+        }
+    }
+    out
+}
+
+fn kk_charpoly(jf: &Form) -> String {
+    let mut names = jf.base().vars().to_vec();
+    names.push("s".into());
     let f: Vec<String> = jf
-        .eigenvalues
+        .components
         .iter()
         .map(|e| {
-            let t = jf.fmt_factor(&e.factor);
-            let t = if e.factor.len() > 1 {
-                format!("({t})")
-            } else {
-                t
-            };
-            if e.algebraic_multiplicity > 1 {
-                format!("{t}^{}", e.algebraic_multiplicity)
+            let big = integral(&e.factor);
+            let t = big.to_string_vars(&names);
+            let t = if big.len() > 1 { format!("({t})") } else { t };
+            if e.multiplicity > 1 {
+                format!("{t}^{}", e.multiplicity)
             } else {
                 t
             }

@@ -366,8 +366,9 @@ fn jordan_method_real_quadratic_modes_in_closed_form() {
             .unwrap();
     let jm = minimal_jordan(&sys).unwrap();
     assert!(jm.verified);
-    let value =
-        |b: &exactlti::realization::ModalBlock| jm.jordan.eigenvalues[b.eigenvalue].value.clone();
+    let value = |b: &exactlti::realization::ModalBlock| {
+        exactlti::report::sections::eigenvalue_text(&jm.jordan.eigenvalues[b.eigenvalue])
+    };
     let evs: Vec<String> = jm.blocks.iter().map(value).collect();
     assert_eq!(evs, ["sqrt(2)", "-sqrt(2)"]);
     for b in &jm.blocks {

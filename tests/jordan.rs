@@ -15,14 +15,17 @@ use jcommon::{planted, r, sliding_masses, yaw_plane};
 fn blocks_of(jf: &JordanForm, value: &str) -> Vec<usize> {
     jf.eigenvalues
         .iter()
-        .find(|e| e.value == value)
+        .find(|e| exactlti::report::sections::eigenvalue_text(e) == value)
         .unwrap_or_else(|| panic!("no eigenvalue {value} in {:?}", values(jf)))
         .blocks
         .clone()
 }
 
 fn values(jf: &JordanForm) -> Vec<String> {
-    jf.eigenvalues.iter().map(|e| e.value.clone()).collect()
+    jf.eigenvalues
+        .iter()
+        .map(exactlti::report::sections::eigenvalue_text)
+        .collect()
 }
 
 /// Q(sqrt 2) and a + b sqrt 2.
@@ -139,7 +142,11 @@ fn vehicle_eq_24_26_yaw_plane_understeer() {
     );
     let jf = jordan(&a).unwrap();
     assert!(jf.verified);
-    let zero = jf.eigenvalues.iter().find(|e| e.value == "0").unwrap();
+    let zero = jf
+        .eigenvalues
+        .iter()
+        .find(|e| exactlti::report::sections::eigenvalue_text(e) == "0")
+        .unwrap();
     assert_eq!(zero.algebraic_multiplicity, 2);
     let pair: Vec<_> = jf
         .eigenvalues
@@ -223,11 +230,15 @@ fn vehicle_eq_36_37_free_response_term_by_term() {
             Q,
             vec![&y0 - &v0 / &s, p0.clone(), &r0 * &u / &s + &v0, r0.clone()],
         );
-        let ev_zero = jf.eigenvalues.iter().position(|e| e.value == "0").unwrap();
+        let ev_zero = jf
+            .eigenvalues
+            .iter()
+            .position(|e| exactlti::report::sections::eigenvalue_text(e) == "0")
+            .unwrap();
         let ev_s = jf
             .eigenvalues
             .iter()
-            .position(|e| e.value == "-8/3")
+            .position(|e| exactlti::report::sections::eigenvalue_text(e) == "-8/3")
             .unwrap();
         let get = |ev: usize, power: usize| -> Vec<Rational> {
             let tv = fr.term_vectors(&jf, ev, &x0);
@@ -284,7 +295,12 @@ fn sliding_masses_ten_pairs_diagonalizable() {
     }
     for e in &jf.eigenvalues {
         assert!(e.approx.0 == 0.0, "purely imaginary, exactly");
-        assert_eq!(e.blocks, [1, 1], "{}", e.value);
+        assert_eq!(
+            e.blocks,
+            [1, 1],
+            "{}",
+            exactlti::report::sections::eigenvalue_text(e)
+        );
         assert_eq!((e.algebraic_multiplicity, e.geometric_multiplicity), (2, 2));
     }
     let vals = values(&jf);
@@ -490,7 +506,12 @@ fn real_form_exact_cube_root_chain_of_length_two() {
     assert!(jf.verified);
     assert_eq!(jf.charpoly.to_string(), "x^6 - 4*x^3 + 4");
     for e in &jf.eigenvalues {
-        assert_eq!(e.blocks, [2], "{}", e.value);
+        assert_eq!(
+            e.blocks,
+            [2],
+            "{}",
+            exactlti::report::sections::eigenvalue_text(e)
+        );
     }
     let rf = check_real_form_exact(&a);
     let pair = rf.blocks.iter().find(|b| b.pair).unwrap();

@@ -129,7 +129,7 @@ fn a_alone_is_a_system_without_inputs_and_outputs() {
     assert_eq!(t.ss.c.shape(), (0, 2));
     assert_eq!(t.ss.d.shape(), (0, 0));
     // the Jordan form of a single block: J = A, two chains of one eigenvalue a
-    let jf = exactlti::jordan::params::jordan_params(&t.a_raw).unwrap();
-    assert!(jf.verified && jf.complete);
-    assert_eq!(jf.eigenvalues[0].blocks, vec![2]);
+    let jf = exactlti::jordan::jordan_qp(&t.a_raw).unwrap();
+    assert!(jf.verified && jf.complete());
+    assert_eq!(jf.components[0].blocks, vec![2]);
 }

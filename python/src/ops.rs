@@ -241,12 +241,12 @@ pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResu
             .map(|e| {
                 Out::Dict(vec![
                     ("minpoly", poly(&e.minpoly)),
-                    ("value", Out::Str(e.value.clone())),
+                    ("value", Out::Str(exactlti::report::sections::eigenvalue_text(e))),
                     (
                         "approx",
                         Out::Tuple(vec![Out::Float(e.approx.0), Out::Float(e.approx.1)]),
                     ),
-                    ("symbol", Out::Str(e.symbol.clone())),
+                    ("symbol", Out::Str(e.symbol())),
                     (
                         "algebraic_multiplicity",
                         usize_out(e.algebraic_multiplicity),

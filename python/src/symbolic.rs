@@ -174,36 +174,39 @@ pub(crate) fn mnf(t: &T) -> FResult<Out> {
     with_context(Out::Dict(kv), &k)
 }
 
-/// The Jordan structure over $\mathbb{Q}(p)$ ([`exactlti::jordan::params::jordan_params`]).
+/// The Jordan structure over $\mathbb{Q}(p)$ ([`exactlti::jordan::jordan_qp`]).
 pub(crate) fn jordan(a: &Matrix<RatFuncField>) -> FResult<Out> {
-    let jf = exactlti::jordan::params::jordan_params(a)?;
-    let k = &jf.field;
-    let var = jf.var_name();
+    let jf = exactlti::jordan::jordan_qp(a)?;
+    let (t, j) = jf.primary_form()?;
+    let k = jf.base();
+    let mut var = k.vars().to_vec();
+    var.push(exactlti::report::sections::qp_var_name(k.vars()));
     let evs = jf
-        .eigenvalues
+        .components
         .iter()
-        .map(|e| {
+        .zip(jf.values())
+        .map(|(c, value)| {
             Out::Dict(vec![
                 (
                     "value",
-                    e.value
+                    value
                         .as_ref()
                         .map(|v| Out::Str(k.fmt_elem(v)))
                         .unwrap_or(Out::None),
                 ),
-                ("factor", Out::Str(jf.fmt_factor(&e.factor))),
-                ("degree", usize_out(e.degree)),
                 (
-                    "algebraic_multiplicity",
-                    usize_out(e.algebraic_multiplicity),
+                    "factor",
+                    Out::Str(exactlti::jordan::qp_form::integral(&c.factor).to_string_vars(&var)),
                 ),
+                ("degree", usize_out(c.degree())),
+                ("algebraic_multiplicity", usize_out(c.multiplicity)),
                 (
                     "geometric_multiplicity",
-                    usize_out(e.geometric_multiplicity),
+                    usize_out(c.geometric_multiplicity()),
                 ),
                 (
                     "blocks",
-                    Out::List(e.blocks.iter().map(|&b| usize_out(b)).collect()),
+                    Out::List(c.blocks.iter().map(|&b| usize_out(b)).collect()),
                 ),
             ])
         })
@@ -211,19 +214,24 @@ pub(crate) fn jordan(a: &Matrix<RatFuncField>) -> FResult<Out> {
     let ctx = context(k)?;
     let mut kv = vec![
         ("eigenvalues", Out::List(evs)),
-        ("var", Out::Str(var)),
+        ("var", Out::Str(var.last().cloned().unwrap_or_default())),
         ("charpoly", poly(&jf.charpoly)),
         ("A", mat(&jf.a)),
-        ("J", mat(&jf.j)),
-        ("T", mat(&jf.t)),
-        ("complete", Out::Bool(jf.complete)),
+        ("J", mat(&j)),
+        ("T", mat(&t)),
+        ("complete", Out::Bool(jf.complete())),
         ("verified", Out::Bool(jf.verified)),
     ];
     // the form's own conditions (discriminants, resultants, pivots), not the field's log
     kv.extend(ctx.into_iter().filter(|(key, _)| *key != "conditions"));
     kv.push((
         "conditions",
-        Out::List(jf.conditions_strings().into_iter().map(Out::Str).collect()),
+        Out::List(
+            exactlti::report::sections::conditions_qp(&jf)
+                .into_iter()
+                .map(Out::Str)
+                .collect(),
+        ),
     ));
     Ok(Out::Dict(kv))
 }

@@ -130,25 +130,25 @@ fn summary(of: Of, s: &StateSpace<RatFuncField>) -> Result<Summary> {
             }
         }
         Of::Jordan => {
-            let jf = crate::jordan::params::jordan_params(&s.a)?;
+            let jf = crate::jordan::jordan_qp(&s.a)?;
             // its conditions go into this computation's log
             for c in &jf.conditions {
-                k.record_condition(c);
+                k.record_condition(c.num());
             }
             let mut key = Vec::new();
             let mut vals = Vec::new();
-            for e in &jf.eigenvalues {
+            for (c, value) in jf.components.iter().zip(jf.values()) {
                 key.push(Value::Obj(
                     Report::new()
-                        .int("degree", e.degree)
-                        .int("algebraic_multiplicity", e.algebraic_multiplicity)
-                        .with("blocks", ints(&e.blocks)),
+                        .int("degree", c.degree())
+                        .int("algebraic_multiplicity", c.multiplicity)
+                        .with("blocks", ints(&c.blocks)),
                 ));
-                let mut v = Report::new().str("factor", e.monic.to_string_var("s"));
-                if let Some(x) = &e.value {
+                let mut v = Report::new().str("factor", c.factor.to_string_var("s"));
+                if let Some(x) = &value {
                     v = v.str("value", k.fmt_elem(x));
                 }
-                vals.push(Value::Obj(v.with("blocks", ints(&e.blocks))));
+                vals.push(Value::Obj(v.with("blocks", ints(&c.blocks))));
             }
             Summary {
                 key: vec![kv("eigenvalue_structure", Value::List(key))],

@@ -73,7 +73,13 @@ pub fn jordan_comparison(
     let exact: Vec<ExactEigenvalue> = jf
         .eigenvalues
         .iter()
-        .map(|ev| (ev.value.clone(), ev.approx, ev.blocks.clone()))
+        .map(|ev| {
+            (
+                crate::report::sections::eigenvalue_text(ev),
+                ev.approx,
+                ev.blocks.clone(),
+            )
+        })
         .collect();
     Ok(vec![spectrum_comparison(&exact, &a, jf.verified, path)?])
 }
@@ -224,7 +230,11 @@ fn real_form_spectrum<K: Field + 'static>(
             blocks.extend(jf.components[p].blocks.iter().copied());
         }
         blocks.sort_unstable_by(|x, y| y.cmp(x));
-        out.push((ev.value.clone(), ev.approx, blocks));
+        out.push((
+            crate::report::sections::eigenvalue_text(ev),
+            ev.approx,
+            blocks,
+        ));
         if partner[ev.component].is_none() {
             // mu-bar is an eigenvalue of conj(A) only, with the blocks of A at mu
             let (re, im) = ev.approx;

@@ -2,7 +2,7 @@
 //! $\mathbb{Q}$ and in symbols over $\mathbb{Q}(p)$) and `contributions FILE [--keep K]` (the
 //! modes ranked by contribution, minimal-realizations paper eq. 33, and the truncation with
 //! its exact error): thin wrappers over [`crate::jordan::StateResponse`],
-//! [`crate::jordan::params::ParamJordanForm::free_response`] and
+//! [`crate::jordan::JordanForm::free_response`] over [`crate::jordan::jordan_qp`] and
 //! [`crate::realization::contribution`].
 //!
 //! An initial state with symbols (`--x0 "y0, psi0, v0, r0"`) moves the computation to
@@ -15,7 +15,7 @@ use super::{Failure, Outcome};
 use crate::field::{Field, Q, parse_rational};
 use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::jordan::jordan;
-use crate::jordan::params::jordan_params;
+use crate::jordan::jordan_qp;
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
 use crate::realization::contribution::contributions;
@@ -227,20 +227,21 @@ fn symbolic_response(
                 .map_err(|err| Failure::input(format!("--x0 entry \"{x}\": {err}")))
         })
         .collect::<Result<_, _>>()?;
-    let jf = jordan_params(&a).map_err(e)?;
-    let Some(fr) = jf.free_response(&x0).map_err(e)? else {
+    let jf = jordan_qp(&a).map_err(e)?;
+    if !jf.complete() {
         return Err(Failure::unsupported(format!(
             "{}: the closed form in symbols needs every eigenvalue in {}; here the characteristic \
              polynomial has an irreducible factor of degree > 1 over it (its roots are not \
              rational functions of the parameters); give every symbol a value with --at",
             path.display(),
-            jf.field
+            jf.base()
         )));
-    };
-    let conds = jf.conditions_strings();
-    let ok = jf.verified && fr.verified;
+    }
+    let x0m = Matrix::column(jf.base().clone(), x0.clone());
+    let fr = jf.free_response().from_state(&x0m);
+    let ok = jf.verified && fr.verify(&jf, &x0m);
     Ok(Outcome::new(
-        rep::param_response_report(&jf.field, &fr, &x0, conds),
+        rep::param_response_report(&jf, &fr, &x0, ok),
         ok,
     ))
 }

@@ -17,7 +17,7 @@
 use super::chains::{Chains, jordan_chains};
 use super::pair_field::{PairField, RealEmbed};
 use super::primary::Component;
-use super::{Eigenvalue, Embedding, JordanForm, roots, simple};
+use super::{Eigenvalue, Embedding, JordanForm, simple};
 use crate::algebraic::{AlgebraicNumber, Ext};
 use crate::error::Result;
 use crate::field::{Field, Q};
@@ -73,7 +73,7 @@ pub trait EigenField: RealEmbed + 'static {
             None => None,
         };
         (
-            c.field.marked(e.approx, &e.symbol, radical),
+            c.field.marked(e.approx, &e.symbol(), radical),
             Box::new(|x| x.clone()),
         )
     }
@@ -130,6 +130,7 @@ pub fn generic_component<F: Field + 'static>(
         kernel_dims,
         chains: v,
         left_chains: w,
+        restriction: None,
     })
 }
 
@@ -165,12 +166,11 @@ pub fn jordan_over<F: EigenField>(a: &Matrix<F>) -> Result<JordanForm<F>> {
             let k = eigenvalues.len() + 1;
             eigenvalues.push(Eigenvalue {
                 minpoly: m.clone(),
-                value: roots::value_string(&m, z),
                 approx: z,
                 number,
                 component: ci,
                 root: j,
-                symbol: format!("r{k}"),
+                index: k,
                 algebraic_multiplicity: e,
                 geometric_multiplicity: c.geometric_multiplicity(),
                 blocks: c.blocks.clone(),
@@ -185,6 +185,7 @@ pub fn jordan_over<F: EigenField>(a: &Matrix<F>) -> Result<JordanForm<F>> {
         charpoly: chi,
         components,
         eigenvalues,
+        conditions: vec![],
         verified,
     })
 }

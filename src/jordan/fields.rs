@@ -94,7 +94,7 @@ impl EigenField for Q {
                 )
             }
             _ => (
-                c.embedding(e.root, &e.symbol),
+                c.embedding(e.root, &e.symbol()),
                 Box::new(|x: &NfElem| x.clone()),
             ),
         }
@@ -113,7 +113,7 @@ impl EigenField for Q {
             return Err(Error::Limit(format!(
                 "eigenvalue {} has degree {degree}: its real field may have degree up to {} \
                  (`--expand` writes out pairs of degree at most {EXPAND_MAX_EIGENVALUE_DEGREE})",
-                e.symbol,
+                e.symbol(),
                 degree * (degree - 1)
             )));
         }
@@ -178,7 +178,7 @@ impl EigenField for QuadraticField {
         if c.factor.deg() == 2 && c.minpoly.as_ref().is_some_and(|m| m.deg() == 2) {
             return Ok(None);
         }
-        pair_field(&c.factor, e.approx, &format!("c{}", &e.symbol[1..]), expand)
+        pair_field(&c.factor, e.approx, &format!("c{}", e.index), expand)
     }
 }
 

@@ -44,8 +44,8 @@ pub mod fields;
 pub mod normalize;
 pub mod over_qp;
 pub mod pair_field;
-pub mod params;
 pub mod primary;
+pub mod qp_form;
 pub mod real;
 pub mod real_quadratic;
 pub mod real_steps;
@@ -57,7 +57,8 @@ pub mod steps;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use decompose::{EigenField, eigenvalues_over, jordan_over};
-pub use primary::{Component, PrimaryComponent};
+pub use primary::{Component, PrimaryComponent, Restriction};
+pub use qp_form::jordan_qp;
 pub use real::{CompactPair, RealBlock, RealEntries, RealJordanForm, RealNote};
 pub use response::{FreeResponse, ResponseTerm, StateResponse};
 pub(crate) use roots::value_string as value_display;
@@ -81,11 +82,11 @@ pub type Embedding<'a, F = Q> =
 /// One eigenvalue (one root of one factor).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Eigenvalue {
-    /// Minimal polynomial over $\mathbb{Q}$ (the component's factor).
+    /// Minimal polynomial over $\mathbb{Q}$ (the component's factor). Its exact display
+    /// (rational, closed form up to degree 2 and biquadratics, else `root of ... near ...`)
+    /// is made in the reports from it and [`Eigenvalue::approx`]
+    /// (`report::sections::eigenvalue_text`).
     pub minpoly: Poly<Q>,
-    /// Exact display: rational, closed form up to degree 2 (and biquadratics), else
-    /// `root of ... near ...`.
-    pub value: String,
     /// Approximation `(re, im)`, read off the certified region of [`Eigenvalue::number`]
     /// (relative error about $2^{-60}$); exactly `0.0` parts for real and purely imaginary
     /// roots.
@@ -95,12 +96,20 @@ pub struct Eigenvalue {
     /// Index into [`JordanForm::components`] and root index within it.
     pub component: usize,
     pub root: usize,
-    /// Symbol used for the root in per-root displays (`r<k>`).
-    pub symbol: String,
+    /// Index $k$ of the root's symbol `r<k>` in per-root displays (1-based position in
+    /// [`JordanForm::eigenvalues`]).
+    pub index: usize,
     pub algebraic_multiplicity: usize,
     pub geometric_multiplicity: usize,
     /// Jordan block sizes, largest first.
     pub blocks: Vec<usize>,
+}
+
+impl Eigenvalue {
+    /// The name `r<k>` of the root's variable in the fields it is written in.
+    pub fn symbol(&self) -> String {
+        format!("r{}", self.index)
+    }
 }
 
 /// $J$ and $T$ over one extension of the base field ([`JordanForm::single_field`]).
@@ -129,9 +138,16 @@ pub struct JordanForm<F: Field = Q> {
     pub charpoly: Poly<F>,
     /// One component per irreducible factor of $\chi_A$ over $F$.
     pub components: Vec<Component<F>>,
-    /// All eigenvalues, component by component.
+    /// All eigenvalues as certified algebraic numbers, component by component (empty over
+    /// $\mathbb{Q}(p)$, whose eigenvalues are the roots of the components' factors:
+    /// functions of the parameters, not numbers).
     pub eigenvalues: Vec<Eigenvalue>,
-    /// Every component's identities held exactly and the dimensions add up to $n$.
+    /// Elements of $F$ the result assumes nonzero (over $\mathbb{Q}(p)$: irreducible
+    /// polynomials in the parameters, sorted: [`qp_form::jordan_qp`]); empty over a number
+    /// field, where nothing is assumed.
+    pub conditions: Vec<F::Elem>,
+    /// Every component's identities held exactly and the dimensions add up to $n$ (over
+    /// $\mathbb{Q}(p)$ also $A T = T J$ for the primary form and $\det T \ne 0$).
     pub verified: bool,
 }
 
@@ -146,7 +162,8 @@ pub struct JordanForm<F: Field = Q> {
 /// ```
 /// use exactlti::{jordan::jordan, qmat};
 /// let jf = jordan(&qmat![[-2, 0, 0], [0, 0, 1], [0, -2, -2]]).unwrap();
-/// let values: Vec<&str> = jf.eigenvalues.iter().map(|e| e.value.as_str()).collect();
+/// use exactlti::report::sections::eigenvalue_text;
+/// let values: Vec<String> = jf.eigenvalues.iter().map(eigenvalue_text).collect();
 /// assert_eq!(values, ["-2", "-1 + i", "-1 - i"]);
 /// assert!(jf.verified);
 /// ```
@@ -249,12 +266,29 @@ impl<F: Field> JordanForm<F> {
     pub fn base(&self) -> &F {
         self.a.field()
     }
-    /// The exact terms $G_{\theta,k}$ of $e^{At}$, one set per component.
-    pub fn free_response(&self) -> FreeResponse<crate::algebraic::Ext<F>> {
-        let comps = self
+    /// The exact terms $G_{\theta,k}$ of $e^{At}$, one set per component. A component
+    /// without chains (a factor of degree $\ge 2$ of [`jordan_qp`]) gets them here
+    /// ([`Component::compute`]); should that fail its terms are missing and
+    /// [`FreeResponse::verify`] says so.
+    pub fn free_response(&self) -> FreeResponse<crate::algebraic::Ext<F>>
+    where
+        F: 'static,
+    {
+        let made: Vec<Option<Component<F>>> = self
             .components
             .iter()
-            .map(|c| (&c.field, &c.blocks[..], &c.chains, &c.left_chains));
+            .map(|c| {
+                let (g, m, r) = (&c.factor, c.multiplicity, c.roots.clone());
+                let compute = || Component::compute(&self.a, g, m, c.minpoly.clone(), r, true);
+                (!c.has_chains()).then(compute).and_then(|x| x.ok())
+            })
+            .collect();
+        let comps = self.components.iter().zip(&made).map(|(c, m)| {
+            let c = m.as_ref().unwrap_or(c);
+            // still without chains: no terms (the verification then fails)
+            let blocks: &[usize] = if c.has_chains() { &c.blocks } else { &[] };
+            (&c.field, blocks, &c.chains, &c.left_chains)
+        });
         FreeResponse::from_chains(self.n(), comps)
     }
 }

@@ -19,7 +19,6 @@ use crate::error::{Error, Result};
 use crate::matrix::Matrix;
 use crate::matrix::params::charpoly_ratfunc;
 use crate::mpoly::factor::cmp_poly;
-use crate::mpoly::gcd::lcm;
 use crate::mpoly::resultant::{discriminant, resultant};
 use crate::mpoly::{MAX_VARS, MPoly, factor};
 use crate::poly::Poly;
@@ -88,25 +87,7 @@ pub fn charpoly_factors(a: &Matrix<RatFuncField>) -> Result<QpCharpoly> {
     }
     let chi = charpoly_ratfunc(a)?;
     // clear denominators: F = L chi in Z[p][x], x = variable nv
-    let mut l = MPoly::one(nv);
-    for c in chi.coeffs() {
-        if !c.den().is_one() {
-            l = lcm(&l, c.den());
-        }
-    }
-    let cs: Vec<MPoly> = chi
-        .coeffs()
-        .iter()
-        .map(|c| {
-            let s = if c.den() == &l {
-                c.num().clone()
-            } else {
-                c.num().mul(&l.div_exact(c.den()).expect("lcm"))
-            };
-            s.extend_vars(nv + 1)
-        })
-        .collect();
-    let integral = MPoly::from_univariate(nv + 1, nv, &cs).primitive_part();
+    let integral = super::qp_form::integral(&chi);
     let fz = if n == 0 {
         vec![]
     } else {

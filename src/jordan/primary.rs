@@ -40,16 +40,26 @@ pub struct Component<F: Field> {
     pub blocks: Vec<usize>,
     /// $\dim \ker (A - t I)^k$, $k = 1, \dots$ (over $E$).
     pub kernel_dims: Vec<usize>,
-    /// Right chains $V$ ($n \times m$) over $E$: $A V = V J_t$.
+    /// Right chains $V$ ($n \times m$) over $E$: $A V = V J_t$ ($n \times 0$ for a factor
+    /// of degree $\ge 2$ of [`super::jordan_qp`], which keeps its primary block:
+    /// [`Component::has_chains`]).
     pub chains: Matrix<Ext<F>>,
     /// Left chains $W$ ($m \times n$) over $E$: $W A = J_t W$, $W V = I$.
     pub left_chains: Matrix<Ext<F>>,
+    /// The generalized eigenspace over $F$ when it was computed ([`restrict`]): the
+    /// primary-block presentation of the factor ([`super::JordanForm::primary_form`]).
+    pub restriction: Option<Restriction<F>>,
 }
 
 /// A component over $\mathbb{Q}$: $K = \mathbb{Q}\[t\]/(p)$.
 pub type PrimaryComponent = Component<Q>;
 
 impl<F: Field> Component<F> {
+    /// The chains over $E$ were computed (always but for a factor of degree $\ge 2$ of the
+    /// primary form over $\mathbb{Q}(p)$, [`super::jordan_qp`]).
+    pub fn has_chains(&self) -> bool {
+        self.chains.ncols() == self.multiplicity
+    }
     /// Degree of the factor (number of conjugate eigenvalues over $F$).
     pub fn degree(&self) -> usize {
         self.factor.deg()
@@ -128,7 +138,8 @@ pub(crate) fn rational_field() -> NumberField {
 /// left space $\ker (p(A)^m)^T$ (so `proj u = I` and `proj A = A_p proj`). Over
 /// $\mathbb{Q}(p)$, $A_p$ is the primary block of the factor (the presentation of a factor
 /// of degree $\ge 2$).
-pub(crate) struct Restriction<F: Field> {
+#[derive(Clone, Debug, PartialEq)]
+pub struct Restriction<F: Field> {
     pub u: Matrix<F>,
     pub ap: Matrix<F>,
     pub proj: Matrix<F>,
@@ -224,10 +235,36 @@ impl<F: Field + 'static> Component<F> {
                 chains: lift(&ch.v),
                 left_chains: lift(&ch.w),
                 field,
+                restriction: None,
             });
         }
         let t = field.generator();
-        let (blocks, kernel_dims, v, w) = match restrict(a, factor, mult, always_restrict)? {
+        let restriction = restrict(a, factor, mult, always_restrict)?;
+        if mult == 1 {
+            // a simple factor: Krylov chains of A_p (or of A = A_p), no elimination over E
+            let (ap, chi) = match &restriction {
+                Some(r) => (&r.ap, factor.monic()),
+                None => (a, a.charpoly()?),
+            };
+            let (v, w) = super::simple::simple_chains(ap, &chi, &field)?;
+            let (v, w) = match &restriction {
+                Some(r) => (mul(&lift(&r.u), &v), mul(&w, &lift(&r.proj))),
+                None => (v, w),
+            };
+            return Ok(Component {
+                factor: factor.clone(),
+                minpoly,
+                multiplicity: 1,
+                roots,
+                blocks: vec![1],
+                kernel_dims: vec![1],
+                chains: v,
+                left_chains: w,
+                field,
+                restriction,
+            });
+        }
+        let (blocks, kernel_dims, v, w) = match &restriction {
             // chains of the restriction A_p (dm x dm) instead of the n x n matrix over E
             Some(r) => {
                 let nm = lift(&r.ap)
@@ -261,6 +298,56 @@ impl<F: Field + 'static> Component<F> {
             chains: v,
             left_chains: w,
             field,
+            restriction,
         })
+    }
+}
+
+impl<F: Field + 'static> super::JordanForm<F> {
+    /// $T$ and $J$ over $F$ itself, $A T = T J$: for a linear factor its chains and Jordan
+    /// blocks; for a factor $g$ of degree $\ge 2$ and multiplicity $e$ a basis of
+    /// $\ker g(A)^e$ and the restriction of $A$ to it (the primary block, [`restrict`]; kept
+    /// from the component's computation when it was made). Over $\mathbb{Q}(p)$ this is the
+    /// presentation of [`super::jordan_qp`].
+    ///
+    /// # Errors
+    /// `Verification` when a kernel contradicts a multiplicity.
+    pub fn primary_form(&self) -> Result<(Matrix<F>, Matrix<F>)> {
+        let k = self.base();
+        let (a, n) = (&self.a, self.n());
+        let mut cols: Vec<Matrix<F>> = vec![];
+        let mut blocks: Vec<Matrix<F>> = vec![];
+        for c in &self.components {
+            if c.degree() == 1 {
+                let theta = k.neg(&c.factor.monic().coeff(0));
+                let e = &c.field;
+                cols.push(c.chains.map(k, |x| e.to_base(x).expect("degree 1")));
+                blocks.push(jordan_block_matrix(k, &theta, &c.blocks));
+                continue;
+            }
+            let r = match &c.restriction {
+                Some(r) => Some(r.clone()),
+                None => restrict(a, &c.factor, c.multiplicity, true)?,
+            };
+            match r {
+                Some(r) => {
+                    cols.push(r.u);
+                    blocks.push(r.ap);
+                }
+                // the generalized eigenspace is the whole space
+                None => {
+                    cols.push(Matrix::identity(k.clone(), n));
+                    blocks.push(a.clone());
+                }
+            }
+        }
+        let width: usize = cols.iter().map(|c| c.ncols()).sum();
+        let mut t = Matrix::zeros(k.clone(), n, width);
+        let mut c0 = 0;
+        for c in &cols {
+            t.set_block(0, c0, c);
+            c0 += c.ncols();
+        }
+        Ok((t, Matrix::block_diag(k.clone(), &blocks)))
     }
 }

@@ -17,7 +17,7 @@
 //! polynomials in the parameters it assumes nonzero.
 //!
 //! The chains are those of [`super::chains::jordan_chains`], the primitive [`super::jordan`]
-//! and [`super::params::jordan_params`] use.
+//! and [`super::jordan_qp`] use.
 
 use super::chains::{jordan_block_matrix, jordan_chains};
 use super::derivation::{Derivation, Method, Object, Recorder, StepKind, ratfunc_log};
@@ -328,10 +328,10 @@ fn drop_last(f: &MPoly) -> MPoly {
 }
 
 /// The Jordan decomposition over $\mathbb{Q}(p)$, step by step (module docs): the factors of
-/// [`super::params::jordan_params`], each worked again with its conditions recorded.
+/// [`super::jordan_qp`], each worked again with its conditions recorded.
 ///
 /// # Errors
-/// As [`super::params::jordan_params`].
+/// As [`super::jordan_qp`].
 pub fn jordan_steps_params(a_in: &Matrix<RatFuncField>) -> Result<Derivation<RatFuncField>> {
     jordan_steps_params_with(a_in, &Normalization::default())
 }
@@ -340,12 +340,12 @@ pub fn jordan_steps_params(a_in: &Matrix<RatFuncField>) -> Result<Derivation<Rat
 /// `how` asks (the parameters taken real; a factor of degree $\ge 2$ keeps its primary block).
 ///
 /// # Errors
-/// As [`super::params::jordan_params`]; as [`super::normalize::normalize_chain`].
+/// As [`super::jordan_qp`]; as [`super::normalize::normalize_chain`].
 pub fn jordan_steps_params_with(
     a_in: &Matrix<RatFuncField>,
     how: &Normalization,
 ) -> Result<Derivation<RatFuncField>> {
-    let pj = super::params::jordan_params(a_in)?;
+    let pj = super::jordan_qp(a_in)?;
     let n = pj.n();
     let k = a_in.field().fresh();
     let a = Matrix::from_vec(k.clone(), n, n, a_in.as_slice().to_vec());
@@ -354,20 +354,25 @@ pub fn jordan_steps_params_with(
     charpoly_step(&mut rec, &a, &chi, 8);
     let nv = k.nvars();
     let facs: Vec<(Poly<RatFuncField>, usize)> = pj
-        .eigenvalues
+        .components
         .iter()
-        .map(|e| {
-            let p = Poly::new(k.clone(), e.monic.coeffs().to_vec());
-            (p, e.algebraic_multiplicity)
+        .map(|c| {
+            let p = Poly::new(k.clone(), c.factor.coeffs().to_vec());
+            (p, c.multiplicity)
         })
         .collect();
-    for (i, e) in pj.eigenvalues.iter().enumerate() {
-        k.record_condition(&drop_last(&e.factor.lc_in(nv)));
-        if e.degree >= 2 {
-            k.record_condition(&drop_last(&discriminant(&e.factor, nv)));
+    let integral: Vec<MPoly> = pj
+        .components
+        .iter()
+        .map(|c| super::qp_form::integral(&c.factor))
+        .collect();
+    for (i, f) in integral.iter().enumerate() {
+        k.record_condition(&drop_last(&f.lc_in(nv)));
+        if f.deg(nv) >= 2 {
+            k.record_condition(&drop_last(&discriminant(f, nv)));
         }
-        for g in &pj.eigenvalues[i + 1..] {
-            k.record_condition(&drop_last(&resultant(&e.factor, &g.factor, nv)));
+        for g in &integral[i + 1..] {
+            k.record_condition(&drop_last(&resultant(f, g, nv)));
         }
     }
     let ok = product(&k, &facs) == chi;
@@ -378,8 +383,8 @@ pub fn jordan_steps_params_with(
         Some(ok),
     );
     let (mut t_cols, mut j_blocks) = (vec![], vec![]);
-    for (part, (e, (f, m))) in pj.eigenvalues.iter().zip(&facs).enumerate() {
-        match &e.value {
+    for (part, (value, (f, m))) in pj.values().into_iter().zip(&facs).enumerate() {
+        match &value {
             Some(theta) => {
                 let (v, blocks) = eigenvalue_steps(&mut rec, part, &a, theta, *m)?;
                 let v = normalization_steps(&mut rec, part, &a, theta, (&v, &blocks), how, true)?;

@@ -314,7 +314,7 @@ pub fn minimal_jordan_rational(sys: &StateSpace<Q>) -> Result<super::MinimalReal
             .iter()
             .flatten()
             .find(|b| !matches!(b, RealModalBlock::Root(b) if b.field.degree() == 1))
-            .map(|b| jm.jordan.eigenvalues[b.eigenvalue()].value.clone())
+            .map(|b| jm.jordan.eigenvalues[b.eigenvalue()].number.to_string())
             .unwrap_or_default();
         return Err(crate::error::Error::Unsupported(format!(
             "the Jordan-method realization has entries outside QQ (mode {blk}): use \

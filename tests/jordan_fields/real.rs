@@ -301,7 +301,9 @@ fn free_response_over_k_is_verified() {
                 let f = g.field().clone();
                 g.map(&k, |x| f.to_base(x).unwrap())
             };
-            let theta = if jf.eigenvalues[ev].value.starts_with("-2") {
+            let theta = if exactlti::report::sections::eigenvalue_text(&jf.eigenvalues[ev])
+                .starts_with("-2")
+            {
                 q(-2, 0)
             } else {
                 q(1, 1)

@@ -114,26 +114,27 @@ pub(in crate::api) fn run(
             let mut rep = depends(out.report, "minimum_phase");
             let mut ok = out.verified;
             // the eigenvalue structure over Q(p) (its conditions join this computation's)
-            let sec = match crate::jordan::params::jordan_params(&s.a) {
+            let sec = match crate::jordan::jordan_qp(&s.a) {
                 Ok(jf) => {
                     ok &= jf.verified;
                     for c in &jf.conditions {
-                        k.record_condition(c);
+                        k.record_condition(c.num());
                     }
                     let eig = jf
-                        .eigenvalues
+                        .components
                         .iter()
-                        .map(|e| {
+                        .zip(jf.values())
+                        .map(|(c, value)| {
                             let mut r = Report::new()
-                                .str("factor", e.monic.to_string_var("s"))
-                                .int("algebraic_multiplicity", e.algebraic_multiplicity)
+                                .str("factor", c.factor.to_string_var("s"))
+                                .int("algebraic_multiplicity", c.multiplicity)
                                 .with(
                                     "blocks",
                                     Value::List(
-                                        e.blocks.iter().map(|&b| Value::Int(b as i64)).collect(),
+                                        c.blocks.iter().map(|&b| Value::Int(b as i64)).collect(),
                                     ),
                                 );
-                            if let Some(x) = &e.value {
+                            if let Some(x) = &value {
                                 r = r.str("value", k.fmt_elem(x));
                             }
                             Value::Obj(r)
@@ -141,7 +142,7 @@ pub(in crate::api) fn run(
                         .collect();
                     Report::titled("eigenvalues and Jordan structure over Q(p)")
                         .list("eigenvalues", eig)
-                        .bool("complete", jf.complete)
+                        .bool("complete", jf.complete())
                         .bool("verified", jf.verified)
                 }
                 Err(err) => Report::titled("eigenvalues and Jordan structure over Q(p)")

@@ -1,58 +1,23 @@
 //! Reports of Jordan forms, real Jordan forms and free responses, written once for every base
-//! field ([`crate::jordan::EigenField`]: $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$).
+//! field ([`crate::jordan::EigenField`]: $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$);
+//! over $\mathbb{Q}(p)$, whose eigenvalues are functions of the parameters, the primary form
+//! with its conditions ([`crate::jordan::jordan_qp`], [`crate::jordan::over_qp::real_form_qp`]).
 //!
 //! Presentation only: these `report` methods read finished results of [`crate::jordan`]
 //! (matrices over the fields, algebraic numbers) and make every string of the CLI contract's
 //! keys here; the math modules do not depend on [`crate::report`].
 
+pub(super) use super::cells::Cells;
 use super::eigenvalue_items;
 use crate::algebraic::{Ext, ExtElem};
 use crate::field::Field;
+use crate::jordan::qp_form::integral;
 use crate::jordan::{
     CompactPair, EigenField, Eigenvalue, FreeResponse, JordanForm, RealEntries, RealJordanForm,
 };
-use crate::matrix::Matrix;
 use crate::poly::Poly;
-use crate::report::{MatrixOut, Report, Value};
-
-/// A matrix of exact texts, LaTeX and approximations under construction (entries of
-/// several fields).
-pub(super) struct Cells(pub MatrixOut);
-
-impl Cells {
-    pub fn zeros(nrows: usize, ncols: usize) -> Self {
-        Cells(MatrixOut {
-            exact: vec![vec!["0".to_string(); ncols]; nrows],
-            latex: vec![vec!["0".to_string(); ncols]; nrows],
-            approx: vec![vec![(0.0, 0.0); ncols]; nrows],
-            nrows,
-            ncols,
-        })
-    }
-    /// Entry `(i, j)` from an element of `k` (its display, LaTeX and approximation).
-    pub fn put<K: Field>(&mut self, (i, j): (usize, usize), k: &K, x: &K::Elem) {
-        self.0.exact[i][j] = k.fmt_elem(x);
-        self.0.latex[i][j] = k.latex_elem(x);
-        self.0.approx[i][j] = k.approx(x).unwrap_or((f64::NAN, 0.0));
-    }
-    /// Entry `(i, j)` from a text (also its LaTeX) and a real approximation.
-    pub fn text(&mut self, (i, j): (usize, usize), text: String, approx: f64) {
-        self.0.latex[i][j] = text.clone();
-        self.0.exact[i][j] = text;
-        self.0.approx[i][j] = (approx, 0.0);
-    }
-    /// Writes `m` with its top left corner at `(r, c)`.
-    pub fn block<K: Field>(&mut self, (r, c): (usize, usize), m: &Matrix<K>) {
-        for i in 0..m.nrows() {
-            for j in 0..m.ncols() {
-                self.put((r + i, c + j), m.field(), m.get(i, j));
-            }
-        }
-    }
-    pub fn value(self) -> Value {
-        Value::Matrix(Box::new(self.0))
-    }
-}
+use crate::ratfunc::RatFuncField;
+use crate::report::{MatrixOut, Report, Value, str_list};
 
 /// `r<k> = <value>`, with `(over K: root of g)` when the factor over the base field is not
 /// the eigenvalue's minimal polynomial over $\mathbb{Q}$.
@@ -62,13 +27,13 @@ pub(super) fn root_line<F: Field>(k: &F, e: &Eigenvalue, g: &Poly<F>) -> String 
     } else {
         format!(" (over {k}: root of {g})")
     };
-    format!("{} = {}{over}", e.symbol, e.value)
+    format!("{} = {}{over}", e.symbol(), eigenvalue_text(e))
 }
 
 /// Whether the eigenvalue's field displays with its symbol (`r<k>`), so the symbol needs a
 /// definition.
 pub(super) fn named<F: Field>(f: &Ext<F>, e: &Eigenvalue) -> bool {
-    f.degree() >= 2 && f.var() == e.symbol
+    f.degree() >= 2 && f.var() == e.symbol()
 }
 
 /// `var = root of m near x` for a number field of degree $\ge 3$ shown with its generator.
@@ -186,7 +151,7 @@ pub(super) fn part_text<F: Field>(
 /// The displays of $\operatorname{Re}\theta$, $\operatorname{Im}\theta$ of a pair: closed
 /// forms up to degree 2, else the symbols `a<k>`, `b<k>`.
 pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue) -> (String, String) {
-    let k = &e.symbol[1..];
+    let k = e.index;
     let show = |x: &Option<crate::algebraic::AlgebraicNumber>, sym: String| match x {
         Some(x) if x.degree() <= 2 => x.value_string(),
         _ => sym,
@@ -199,25 +164,32 @@ pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue) -> (Str
 /// is `near X`).
 fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
     let (re, im) = theta_parts(cp, e);
-    let k = &e.symbol[1..];
+    let k = e.index;
     let define = |sym: String, what: &str, x: &Option<crate::algebraic::AlgebraicNumber>, v| match x
     {
         Some(x) if x.degree() <= 2 => None,
         Some(x) => Some(format!(
             "{sym} = {what} {} = {}",
-            e.symbol,
+            e.symbol(),
             x.value_string()
         )),
         None => Some(format!(
             "{sym} = {what} {}, near {}",
-            e.symbol,
+            e.symbol(),
             crate::algebraic::display::approx_text((v, 0.0))
         )),
     };
-    let mut out = vec![format!("{} = {re} + {im}*i", e.symbol)];
+    let mut out = vec![format!("{} = {re} + {im}*i", e.symbol())];
     out.extend(define(format!("a{k}"), "Re", &cp.re, e.approx.0));
     out.extend(define(format!("b{k}"), "Im", &cp.im, e.approx.1));
     out
+}
+
+/// The exact display of an eigenvalue (one number display: rational, closed form up to
+/// degree 2 and for biquadratics, else `root of <minpoly> near <approx>`), from its minimal
+/// polynomial and the approximation that marks the root.
+pub fn eigenvalue_text(e: &Eigenvalue) -> String {
+    crate::jordan::value_display(&e.minpoly, e.approx)
 }
 
 impl<F: EigenField> JordanForm<F> {
@@ -316,7 +288,7 @@ impl<F: EigenField> RealJordanForm<F> {
                         let th = pair.theta();
                         legend.parts.push(format!(
                             "{} = {} + ({})*i",
-                            e.symbol,
+                            e.symbol(),
                             f.fmt_elem(&th.re),
                             f.fmt_elem(&th.im)
                         ));
@@ -373,7 +345,9 @@ impl<F: EigenField> RealJordanForm<F> {
                 format!(
                     "eigenvalue {} (root of {}): exact real field not found ({}); compact exact \
                      form given instead",
-                    e.symbol, e.minpoly, note.error
+                    e.symbol(),
+                    e.minpoly,
+                    note.error
                 )
             })
             .collect()
@@ -425,7 +399,7 @@ impl<F: EigenField> FreeResponse<Ext<F>> {
             for (power, g) in self.terms_of(jf, ev) {
                 items.push(Value::Obj(
                     Report::new()
-                        .str("eigenvalue", e.value.clone())
+                        .str("eigenvalue", eigenvalue_text(e))
                         .int("power", power)
                         .matrix("G", &g),
                 ));
@@ -434,6 +408,183 @@ impl<F: EigenField> FreeResponse<Ext<F>> {
         Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0")
             .list("terms", items)
             .bool("verified", self.verify(jf))
+    }
+}
+
+/// A matrix over any field as rows of exact strings.
+fn rows<K: Field>(m: &crate::matrix::Matrix<K>) -> Value {
+    let k = m.field();
+    Value::List(
+        (0..m.nrows())
+            .map(|i| str_list(m.row(i).iter().map(|x| k.fmt_elem(x))))
+            .collect(),
+    )
+}
+
+/// The name of the eigenvalue variable in displays over $\mathbb{Q}(p)$: `s` unless a
+/// parameter is called so (then `x`, then `lambda_`).
+pub fn qp_var_name(vars: &[String]) -> String {
+    for c in ["s", "x", "lambda_"] {
+        if !vars.iter().any(|v| v == c) {
+            return c.to_string();
+        }
+    }
+    "lambda__".to_string()
+}
+
+/// $\chi_A$ over $\mathbb{Q}(p)$ as `s^4 + (cr/(m*u))*s^3` (coefficients in parentheses).
+fn charpoly_qp(k: &RatFuncField, p: &Poly<RatFuncField>, s: &str) -> String {
+    let mut parts = vec![];
+    for (i, c) in p.coeffs().iter().enumerate().rev() {
+        if k.is_zero(c) {
+            continue;
+        }
+        let mono = match i {
+            0 => String::new(),
+            1 => s.to_string(),
+            _ => format!("{s}^{i}"),
+        };
+        let cf = k.fmt_elem(c);
+        parts.push(match (mono.is_empty(), k.is_one(c)) {
+            (true, _) => format!("({cf})"),
+            (false, true) => mono,
+            (false, false) => format!("({cf})*{mono}"),
+        });
+    }
+    if parts.is_empty() {
+        "0".to_string()
+    } else {
+        parts.join(" + ")
+    }
+}
+
+/// The conditions of a result over $\mathbb{Q}(p)$ as display strings.
+pub fn conditions_qp(jf: &JordanForm<RatFuncField>) -> Vec<String> {
+    let vars = jf.base().vars();
+    jf.conditions
+        .iter()
+        .map(|c| c.num().display_normalized().to_string_vars(vars))
+        .collect()
+}
+
+impl JordanForm<RatFuncField> {
+    /// The report over $\mathbb{Q}(p)$ ([`crate::jordan::jordan_qp`]): `field`, `n`,
+    /// `charpoly`, `charpoly_factored` (in $\mathbb{Z}\lbrack p, s\rbrack$), `eigenvalues[]`
+    /// (`value` in $\mathbb{Q}(p)$ or `roots_of` the factor, `factor`, `degree`, the
+    /// multiplicities, `blocks`, `kernel_dims` of $g(A)^k$ over $\mathbb{Q}(p)$), `J`, `T` (the
+    /// primary form), `presentation`, `conditions`, `verified`.
+    pub fn report(&self) -> Report {
+        let k = self.base();
+        let s = qp_var_name(k.vars());
+        let mut vars = k.vars().to_vec();
+        vars.push(s.clone());
+        let ints = |xs: &[usize]| Value::List(xs.iter().map(|&b| Value::Int(b as i64)).collect());
+        let (mut evs, mut factors) = (vec![], vec![]);
+        for (c, value) in self.components.iter().zip(self.values()) {
+            let big = integral(&c.factor);
+            let f = big.to_string_vars(&vars);
+            let r = match &value {
+                Some(v) => Report::new().str("value", k.fmt_elem(v)),
+                None => Report::new().str("roots_of", format!("{f} = 0")),
+            };
+            let dims: Vec<usize> = c.kernel_dims.iter().map(|x| x * c.degree()).collect();
+            evs.push(Value::Obj(
+                r.str("factor", f.clone())
+                    .int("degree", c.degree())
+                    .int("algebraic_multiplicity", c.multiplicity)
+                    .int("geometric_multiplicity", c.geometric_multiplicity())
+                    .with("blocks", ints(&c.blocks))
+                    .with("kernel_dims", ints(&dims)),
+            ));
+            let f = if big.len() > 1 { format!("({f})") } else { f };
+            factors.push(match c.multiplicity {
+                1 => f,
+                e => format!("{f}^{e}"),
+            });
+        }
+        let presentation = if self.complete() {
+            "every eigenvalue in the field: J is the Jordan matrix, T its chains"
+        } else {
+            "eigenvalues of irreducible factors of degree >= 2 are roots of that factor: their \
+             diagonal block of J is the restriction of A to ker f(A)^e (T: a basis of it); \
+             their Jordan blocks are listed under eigenvalues[].blocks"
+        };
+        let mut r = Report::titled("Jordan form over QQ(p)")
+            .str("field", k.to_string())
+            .int("n", self.n())
+            .str("charpoly", charpoly_qp(k, &self.charpoly, &s))
+            .str("charpoly_factored", factors.join("*"))
+            .list("eigenvalues", evs);
+        r = match self.primary_form() {
+            Ok((t, j)) => r.with("J", rows(&j)).with("T", rows(&t)),
+            Err(err) => r.str("error", err.to_string()),
+        };
+        r.str("presentation", presentation)
+            .with("conditions", str_list(conditions_qp(self)))
+            .bool("verified", self.verified)
+    }
+}
+
+impl crate::jordan::over_qp::QpRealForm {
+    /// The CLI report of `jordan --real` over $\mathbb{Q}(p)$: `field`, `n`, `charpoly`,
+    /// `components[]` (an eigenvalue in $\mathbb{Q}(p)$ with `blocks` and its chains `T`, or
+    /// a pair with `factor`, `real_part`, `imaginary_part`, `complex_where`, `blocks`,
+    /// `J_real`, `T_real` over $\mathbb{Q}(p)(w)$), `conditions`, `verified`.
+    pub fn report(&self) -> Report {
+        let k = self.a.field();
+        let comps = self
+            .components
+            .iter()
+            .zip(&self.pairs)
+            .map(|(c, pair)| {
+                let blocks = Value::List(c.blocks.iter().map(|&b| Value::Int(b as i64)).collect());
+                let r = match pair {
+                    None => {
+                        let theta = k.neg(&c.factor.monic().coeff(0));
+                        let e = &c.field;
+                        let t = c
+                            .chains
+                            .map(k, |x| e.to_base(x).unwrap_or_else(|| k.zero()));
+                        Report::new()
+                            .str("eigenvalue", k.fmt_elem(&theta))
+                            .with("blocks", blocks)
+                            .with("T", rows(&t))
+                    }
+                    Some(p) => {
+                        let w = p.field.var();
+                        Report::new()
+                            .str("factor", c.factor.to_string_var("s"))
+                            .str("real_part", k.fmt_elem(&p.re))
+                            .str(
+                                "imaginary_part",
+                                format!("{w} = sqrt({})", k.fmt_elem(&p.im_squared)),
+                            )
+                            .str(
+                                "complex_where",
+                                format!("{} < 0", k.fmt_elem(&p.discriminant)),
+                            )
+                            .with("blocks", blocks)
+                            .with("J_real", rows(&p.j))
+                            .with("T_real", rows(&p.t))
+                            .bool("verified", p.verified)
+                    }
+                };
+                Value::Obj(r)
+            })
+            .collect();
+        Report::titled("real Jordan form over QQ(p)")
+            .str("field", k.to_string())
+            .int("n", self.a.nrows())
+            .str("charpoly", self.charpoly.charpoly.to_string_var("s"))
+            .list("components", comps)
+            .str(
+                "presentation",
+                "eigenvalues in QQ(p) with their Jordan chains; each quadratic factor s^2 + b s + c \
+                 as blocks [[a, w], [-w, a]] (I2 coupling), a = -b/2, w = sqrt(c - b^2/4), a \
+                 complex pair exactly where b^2 - 4c < 0; A T = T J checked exactly with w a \
+                 symbol (w^2 = c - b^2/4)",
+            )
+            .bool("verified", self.verified)
     }
 }
 

@@ -7,12 +7,12 @@
 //! ([`factor_report`], [`roots_report`], [`already_standard`], [`float_jordan_fallback`]).
 
 mod algebraic;
+mod cells;
 mod critical;
 mod dcgain;
 mod discrete;
 mod interconnect;
 mod jordan;
-mod jordan_qp;
 mod mpoly;
 mod pencil;
 mod realization;
@@ -25,6 +25,7 @@ pub use algebraic::{factor_report, roots_report};
 pub use critical::{critical_report, factor_displays};
 pub use discrete::{conversion_report, sequence_report, stability_report};
 pub use interconnect::{PartInfo, interconnection_report};
+pub use jordan::{conditions_qp, eigenvalue_text, qp_var_name};
 pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,

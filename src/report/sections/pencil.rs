@@ -36,7 +36,7 @@ pub fn eigenvalue_items(evs: &[crate::jordan::Eigenvalue]) -> Vec<Value> {
             Value::Obj(
                 Report::new()
                     .str("minpoly", e.minpoly.to_string())
-                    .str("value", e.value.clone())
+                    .str("value", super::eigenvalue_text(e))
                     .with("approx", approx(e.approx))
                     .int("algebraic_multiplicity", e.algebraic_multiplicity)
                     .int("geometric_multiplicity", e.geometric_multiplicity)

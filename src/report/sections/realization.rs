@@ -3,13 +3,14 @@
 //! Presentation only: these `report` methods read finished results of [`crate::realization`] and
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
-use super::jordan::{Cells, field_line, named, neg_display, part_text, root_line};
+use super::jordan::{Cells, eigenvalue_text, field_line, named, neg_display, part_text, root_line};
 use crate::algebraic::ExtElem;
 use crate::field::Field;
 use crate::jordan::EigenField;
 use crate::matrix::Matrix;
 use crate::realization::{
-    JordanMinimal, MinimalRealization, ModalBlock, ModalTable, RealModalBlock, StandardForm,
+    JordanMinimal, MinimalRealization, ModalBlock, ModalTable, PrimaryJordanMinimal,
+    RealModalBlock, StandardForm,
 };
 use crate::report::{Report, Value, str_list};
 
@@ -63,7 +64,7 @@ fn put_compact<F: Field>(blk: &ModalBlock<F>, sym: &str, off: usize, [a, b, c]: 
 impl<F: EigenField> JordanMinimal<F> {
     /// The display of mode `blk` (a pair: `... (and its conjugate)`).
     fn mode_text(&self, ev: usize, pair: bool) -> String {
-        let v = &self.jordan.eigenvalues[ev].value;
+        let v = eigenvalue_text(&self.jordan.eigenvalues[ev]);
         if pair {
             format!("{v} (and its conjugate)")
         } else {
@@ -94,10 +95,10 @@ impl<F: EigenField> JordanMinimal<F> {
                         RealModalBlock::Pair { pair, .. } => out.extend(field_line(&pair.field)),
                         RealModalBlock::Compact(b) => {
                             let e = &jf.eigenvalues[b.eigenvalue];
-                            let kk = &e.symbol[1..];
+                            let (kk, sym) = (e.index, e.symbol());
                             out.push(line(b.eigenvalue));
-                            out.push(format!("a{kk} = Re {}", e.symbol));
-                            out.push(format!("b{kk} = Im {}", e.symbol));
+                            out.push(format!("a{kk} = Re {sym}"));
+                            out.push(format!("b{kk} = Im {sym}"));
                         }
                         _ => {}
                     }
@@ -122,8 +123,8 @@ impl<F: EigenField> JordanMinimal<F> {
                         RealModalBlock::Root(bk) => put_block([&bk.a, &bk.b, &bk.c], off, cells),
                         RealModalBlock::Pair { a, b, c, .. } => put_block([a, b, c], off, cells),
                         RealModalBlock::Compact(bk) | RealModalBlock::Radical(bk) => {
-                            let sym = &self.jordan.eigenvalues[bk.eigenvalue].symbol;
-                            put_compact(bk, sym, off, cells)
+                            let sym = self.jordan.eigenvalues[bk.eigenvalue].symbol();
+                            put_compact(bk, &sym, off, cells)
                         }
                     }
                     modes.push(self.mode_text(blk.eigenvalue(), blk.is_pair()));
@@ -333,5 +334,67 @@ impl<K: Field> std::fmt::Display for MinimalRealization<K> {
 impl<F: EigenField> std::fmt::Display for JordanMinimal<F> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.report().to_text())
+    }
+}
+
+impl<F: Field> PrimaryJordanMinimal<F> {
+    /// One line per retained component: its eigenvalue (a factor of degree 1) or the factor
+    /// whose roots its primary block carries, with the Jordan block sizes and its states.
+    pub fn mode_lines(&self) -> Vec<String> {
+        let k = self.system.a.field();
+        self.blocks
+            .iter()
+            .map(|b| {
+                let comp = &self.components[b.component];
+                let g = &comp.factor;
+                let sizes: Vec<String> = b.blocks.iter().map(|s| s.to_string()).collect();
+                let states = format!("states {}..{}", b.offset + 1, b.offset + b.order);
+                if g.deg() == 1 {
+                    let theta = k.neg(&g.monic().coeff(0));
+                    format!(
+                        "eigenvalue {} (Jordan blocks {}): {states}",
+                        k.fmt_elem(&theta),
+                        sizes.join(", ")
+                    )
+                } else {
+                    format!(
+                        "roots of {} (Jordan blocks {} per root; primary block, regular \
+                         representation of the factor's field in the basis 1, t, .., t^{}): \
+                         {states}",
+                        g.to_string_var("s"),
+                        sizes.join(", "),
+                        g.deg() - 1
+                    )
+                }
+            })
+            .collect()
+    }
+    /// The CLI report: `method`, `field`, `original_order`, `order`, `mcmillan_degree`,
+    /// `stages`, `A`..`D`, `modes`, `presentation`, `verified`.
+    pub fn report(&self) -> Report {
+        let s = &self.system;
+        Report::titled("minimal realization (jordan)")
+            .str("method", "jordan")
+            .str("field", s.a.field().to_string())
+            .int("original_order", self.stages[0])
+            .int("order", s.nstates())
+            .int("mcmillan_degree", self.mcmillan_degree)
+            .with(
+                "stages",
+                Value::List(self.stages.iter().map(|&x| Value::Int(x as i64)).collect()),
+            )
+            .matrix("A", &s.a)
+            .matrix("B", &s.b)
+            .matrix("C", &s.c)
+            .matrix("D", &s.d)
+            .with("modes", str_list(self.mode_lines()))
+            .str(
+                "presentation",
+                "modal form over the base field: an eigenvalue in the field as its Jordan \
+                 blocks, the roots of an irreducible factor of degree d >= 2 as one primary \
+                 block (d states per Jordan state); verified by C A^k B equal for k < n + r and \
+                 the order equal to the McMillan degree",
+            )
+            .bool("verified", self.verified)
     }
 }

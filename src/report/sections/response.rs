@@ -1,11 +1,11 @@
 //! Reports of the free response $x(t) = e^{At} x_0$ in closed form
-//! ([`crate::jordan::StateResponse`] over $\mathbb{Q}$ and the number fields,
-//! [`crate::jordan::params::ParamResponse`] over $\mathbb{Q}(p)$) and of the mode
+//! ([`crate::jordan::StateResponse`] over $\mathbb{Q}$, the number fields and, every
+//! eigenvalue in the field, $\mathbb{Q}(p)$) and of the mode
 //! contributions ([`crate::realization::contribution`]).
 
+use super::eigenvalue_text;
 use crate::algebraic::Ext;
 use crate::field::Field;
-use crate::jordan::params::ParamResponse;
 use crate::jordan::{EigenField, JordanForm, StateResponse};
 use crate::matrix::Matrix;
 use crate::ratfunc::{RatFunc, RatFuncField};
@@ -52,7 +52,7 @@ pub fn state_response_report<F: EigenField>(
         for (power, g) in sr.terms_of(jf, ev) {
             items.push(Value::Obj(
                 Report::new()
-                    .str("eigenvalue", e.value.clone())
+                    .str("eigenvalue", eigenvalue_text(e))
                     .int("power", power)
                     .matrix("g", &g),
             ));
@@ -73,31 +73,41 @@ pub fn state_response_report<F: EigenField>(
     .bool("verified", verified)
 }
 
-/// The free response over $\mathbb{Q}(p)$ (every eigenvalue in $\mathbb{Q}(p)$).
+/// The free response over $\mathbb{Q}(p)$ (every eigenvalue in $\mathbb{Q}(p)$: the terms of
+/// `fr`, from [`JordanForm::free_response`], lie in the base field), with the form's
+/// conditions; `verified` as the caller checked it.
 pub fn param_response_report(
-    k: &RatFuncField,
-    fr: &ParamResponse,
+    jf: &JordanForm<RatFuncField>,
+    fr: &StateResponse<Ext<RatFuncField>>,
     x0: &[RatFunc],
-    conditions: Vec<String>,
+    verified: bool,
 ) -> Report {
+    let k = jf.base();
+    let values = jf.values();
     let mut items = vec![];
-    for (theta, gs) in &fr.terms {
-        for (power, g) in gs.iter().enumerate() {
-            items.push(Value::Obj(
-                Report::new()
-                    .str("eigenvalue", k.fmt_elem(theta))
-                    .int("power", power)
-                    .with("g", str_list(g.iter().map(|x| k.fmt_elem(x)))),
-            ));
-        }
+    for (ci, power, g) in &fr.terms {
+        let e = g.field();
+        let theta = values[*ci]
+            .as_ref()
+            .map_or_else(String::new, |v| k.fmt_elem(v));
+        let g = g.as_slice().iter().map(|x| match e.to_base(x) {
+            Some(v) => k.fmt_elem(&v),
+            None => e.fmt_elem(x),
+        });
+        items.push(Value::Obj(
+            Report::new()
+                .str("eigenvalue", theta)
+                .int("power", *power)
+                .with("g", str_list(g)),
+        ));
     }
     Report::titled("Free response x(t) = e^(At) x0 = sum_k t^k e^(s t) g")
         .str("field", k.to_string())
         .with("x0", str_list(x0.iter().map(|x| k.fmt_elem(x))))
         .list("terms", items)
         .with("identities", response_identities())
-        .with("conditions", str_list(conditions))
-        .bool("verified", fr.verified)
+        .with("conditions", str_list(super::conditions_qp(jf)))
+        .bool("verified", verified)
 }
 
 fn weight_values(w: &Weight) -> (String, Option<f64>) {
@@ -124,7 +134,7 @@ pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Re
                 for (power, h) in m.residues.iter().enumerate() {
                     residues.push(Value::Obj(
                         Report::new()
-                            .str("eigenvalue", jf.eigenvalues[ev].value.clone())
+                            .str("eigenvalue", eigenvalue_text(&jf.eigenvalues[ev]))
                             .int("power", power)
                             .matrix("H", &h.map(&field, &f)),
                     ));
@@ -137,7 +147,7 @@ pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Re
                     str_list(
                         m.eigenvalues
                             .iter()
-                            .map(|&i| jf.eigenvalues[i].value.clone()),
+                            .map(|&i| eigenvalue_text(&jf.eigenvalues[i])),
                     ),
                 )
                 .int("order", m.part.a.nrows())
