@@ -13,7 +13,8 @@
 //!   injective ring homomorphism, so $\rho(A)^{-1} = \rho(A^{-1})$ (its first block column
 //!   is $(X_0; X_1)$), and the image of $A$ is a $K$-space, so
 //!   $\mathrm{rank}_{\mathbb{Q}}\,\rho(A) = 2\,\mathrm{rank}_K A$. Both go to the certified
-//!   kernels of [`super::over_q`].
+//!   kernels of [`super::over_q`]; so does [`rank_at_least_mod_p`] (a rank of $\rho(A)$
+//!   modulo a prime of at least $2r$ proves $\mathrm{rank}_K A \ge r$).
 //!
 //! Each function computes the same canonical result as the generic algorithm of
 //! [`crate::matrix::Matrix`] over $K$. Matrices are row-major slices; a slice of the wrong
@@ -186,4 +187,16 @@ pub fn inverse_k(d: &BigInt, n: usize, a: &[Quadratic]) -> Option<Vec<Quadratic>
 pub fn rank_k(d: &BigInt, m: usize, n: usize, a: &[Quadratic]) -> usize {
     check_len("rank_k", a.len(), m, n);
     over_q::rank_q(2 * m, 2 * n, &regular(d, m, n, a)) / 2
+}
+
+/// Does an elimination modulo a word prime prove $\mathrm{rank}_K A \ge r$? The regular
+/// representation has $\mathrm{rank}_{\mathbb{Q}}\,\rho(A) = 2\,\mathrm{rank}_K A$ (module
+/// docs), and its rank modulo $p$ is a lower bound of that
+/// ([`over_q::rank_at_least_mod_p`]). `false` decides nothing.
+///
+/// # Panics
+/// When `a.len() != m * n`.
+pub fn rank_at_least_mod_p(d: &BigInt, m: usize, n: usize, a: &[Quadratic], r: usize) -> bool {
+    check_len("rank_at_least_mod_p", a.len(), m, n);
+    over_q::rank_at_least_mod_p(2 * m, 2 * n, &regular(d, m, n, a), 2 * r)
 }
