@@ -346,7 +346,10 @@ fn expressions_over_parameters() {
     assert_eq!(g.fmt_scalar(&x), "2 + sqrt(2)/2");
     let e = eval_expr("s + i", &q, &Ground::Quadratic(k)).unwrap_err();
     // an invalid expression is the crate error `Invalid` whose message is the text
-    assert!(matches!(&e, Error::Invalid(m) if m.contains("cannot be mixed")), "{e}");
+    assert!(
+        matches!(&e, Error::Invalid(m) if m.contains("cannot be mixed")),
+        "{e}"
+    );
 }
 
 #[test]

@@ -112,9 +112,14 @@ fn controller_form<F: Field>(num: &Poly<F>, den: &Poly<F>) -> [Matrix<F>; 3] {
             k.zero()
         }
     });
-    let b = Matrix::from_fn(k.clone(), n, 1, |i, _| {
-        if i + 1 == n { k.one() } else { k.zero() }
-    });
+    let b = Matrix::from_fn(
+        k.clone(),
+        n,
+        1,
+        |i, _| {
+            if i + 1 == n { k.one() } else { k.zero() }
+        },
+    );
     let c = Matrix::from_fn(k.clone(), 1, n, |_, j| num.coeff(j));
     [a, b, c]
 }
@@ -238,7 +243,12 @@ impl<F: Field> Planted<F> {
 /// tf: the planted $G$ exactly, and its Laurent coefficients are the Markov parameters.
 fn check_tf<F: Field>(p: &Planted<F>) {
     let g = p.sys.transfer_matrix().unwrap();
-    assert_eq!(g.entries, vec![vec![p.tf()]], "G = (n + D d)/d, sys = {:?}", p.sys);
+    assert_eq!(
+        g.entries,
+        vec![vec![p.tf()]],
+        "G = (n + D d)/d, sys = {:?}",
+        p.sys
+    );
     assert!(g.matches_markov(&p.sys));
     assert_eq!(p.sys.a.charpoly().unwrap(), p.den.mul(&p.hidden), "chi_A");
 }
@@ -259,7 +269,10 @@ fn refused_by_dispatcher<F: Field>(sys: &StateSpace<F>) {
             let rational = [&sys.a, &sys.b, &sys.c, &sys.d]
                 .iter()
                 .all(|m| to_rational_matrix(m).is_some());
-            assert!(rational && r.verified, "accepted only with rational entries");
+            assert!(
+                rational && r.verified,
+                "accepted only with rational entries"
+            );
         }
     }
 }
@@ -269,7 +282,12 @@ impl JordanMinreal for Q {
         let r = minimal(sys, MinrealMethod::Jordan).unwrap();
         let j = minimal_jordan(sys).unwrap();
         assert_eq!(j.order(), r.order);
-        (r.order, j.mcmillan_degree, r.verified && j.verified, r.system)
+        (
+            r.order,
+            j.mcmillan_degree,
+            r.verified && j.verified,
+            r.system,
+        )
     }
 }
 
@@ -280,9 +298,17 @@ impl JordanMinreal for QuadraticField {
         let base = j.real_to_base();
         let n = sys.nstates();
         if let Some(rs) = &base {
-            assert!(rs.same_markov(sys, 2 * n + 2), "real modal form over the base");
+            assert!(
+                rs.same_markov(sys, 2 * n + 2),
+                "real modal form over the base"
+            );
         }
-        (j.order(), j.mcmillan_degree, j.verified, base.unwrap_or(sys.clone()))
+        (
+            j.order(),
+            j.mcmillan_degree,
+            j.verified,
+            base.unwrap_or(sys.clone()),
+        )
     }
 }
 
@@ -328,7 +354,10 @@ fn check_zeros<F: Field>(p: &Planted<F>) {
     assert_eq!(z.polynomial, p.zero_polynomial(), "zeros, sys = {s:?}");
     assert_eq!(z.normal_rank, p.n() + 1);
     let zs = invariant_zeros_smith(&s.a, &s.b, &s.c, &s.d).unwrap();
-    assert_eq!((zs.polynomial, zs.normal_rank), (z.polynomial, z.normal_rank));
+    assert_eq!(
+        (zs.polynomial, zs.normal_rank),
+        (z.polynomial, z.normal_rank)
+    );
 }
 
 /// scb: its identities, $\det(sI - A_{aa})$ = the zero polynomial, the chain of the
@@ -361,14 +390,26 @@ fn check_ctrb_obsv<F: Field>(p: &Planted<F>) {
     assert!(c.verified);
     assert_eq!((c.order, c.indices.clone()), (n1 + n2, vec![n1 + n2]));
     assert_eq!(c.block_dims, vec![1; n1 + n2]);
-    assert_eq!(c.uncontrollable.charpoly().unwrap(), p.unc, "uncontrollable modes");
+    assert_eq!(
+        c.uncontrollable.charpoly().unwrap(),
+        p.unc,
+        "uncontrollable modes"
+    );
     assert!((&c.left * &s.b).is_zero(), "L B = 0");
-    assert_eq!(&c.left * &s.a, &c.uncontrollable * &c.left, "L A = A_cbar L");
+    assert_eq!(
+        &c.left * &s.a,
+        &c.uncontrollable * &c.left,
+        "L A = A_cbar L"
+    );
     assert_eq!(c.left.rank(), p.n() - c.order);
     let o = observability_structure(&s.a, &s.c).unwrap();
     assert!(o.verified);
     assert_eq!((o.order, o.indices.clone()), (n1 + n3, vec![n1 + n3]));
-    assert_eq!(o.uncontrollable.charpoly().unwrap(), p.unobs, "unobservable modes");
+    assert_eq!(
+        o.uncontrollable.charpoly().unwrap(),
+        p.unobs,
+        "unobservable modes"
+    );
     // [A - sI, B]: right index = controllability index, finite part = uncontrollable part
     let k = s.field().clone();
     let n = p.n();
@@ -378,7 +419,11 @@ fn check_ctrb_obsv<F: Field>(p: &Planted<F>) {
         .unwrap();
     let ks = kronecker_structure(&ab, &e).unwrap();
     assert!(ks.verified);
-    assert_eq!(ks.right_indices, vec![n1 + n2], "right index of [A - sI, B]");
+    assert_eq!(
+        ks.right_indices,
+        vec![n1 + n2],
+        "right index of [A - sI, B]"
+    );
     assert!(ks.left_indices.is_empty() && ks.infinite_divisors.is_empty());
     assert_eq!(ks.finite_part.charpoly().unwrap(), p.unc);
 }
@@ -486,14 +531,21 @@ fn check_mnf<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) {
         assert!(r.conditions.iter().any(|c| c.name == "n_even" && !c.holds));
         return;
     }
-    assert!(r.exists && r.verified, "controllable, single input, n = {n}");
+    assert!(
+        r.exists && r.verified,
+        "controllable, single input, n = {n}"
+    );
     assert!(r.verify());
     let f = r.form.unwrap();
     assert!((&f.t_inv * &f.t).is_identity());
     assert_eq!(&(&f.t * &sys.a) * &f.t_inv, f.a_tilde, "t A t^-1 = A~");
     assert_eq!(&f.t * &sys.b, f.b_tilde, "t B = B~");
     assert_eq!(&sys.c * &f.t_inv, f.output, "C t^-1 = C~");
-    assert_eq!(f.a_tilde.charpoly().unwrap(), den, "same characteristic polynomial");
+    assert_eq!(
+        f.a_tilde.charpoly().unwrap(),
+        den,
+        "same characteristic polynomial"
+    );
     let h = n / 2;
     assert!(f.a_tilde.submatrix(0, h, 0, h).is_zero());
     assert!(f.a_tilde.submatrix(0, h, h, n).is_identity());

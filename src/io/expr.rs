@@ -151,10 +151,7 @@ fn plain_fraction(text: &str) -> Option<Rational> {
 }
 
 /// Evaluates `text`; `lookup` gives the value of a parameter name (`None`: unknown).
-pub(crate) fn eval_with(
-    text: &str,
-    lookup: &dyn Fn(&str) -> Option<Value>,
-) -> Result<Value> {
+pub(crate) fn eval_with(text: &str, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<Value> {
     too_long(text)?;
     if let Some(q) = plain_fraction(text) {
         return Ok(Value::rational(q));
@@ -222,7 +219,7 @@ fn imaginary_unit() -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    fn ev(s: &str) -> Result<String, String> {
+    fn ev(s: &str) -> std::result::Result<String, String> {
         eval_expr(s, &[], &Ground::Rational)
             .map(|(x, g)| g.fmt_scalar(&x))
             .map_err(|e| e.to_string())
@@ -256,7 +253,9 @@ mod tests {
                     assert_eq!(Ok(x), want, "{s}");
                 }
                 assert_eq!(
-                    eval_with(&s, &|_| None).map(|v| v.a).map_err(|e| e.to_string()),
+                    eval_with(&s, &|_| None)
+                        .map(|v| v.a)
+                        .map_err(|e| e.to_string()),
                     want
                 );
             }

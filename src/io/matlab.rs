@@ -162,12 +162,7 @@ fn blank_separates(cur: &str, rest: &[char]) -> bool {
     !("+-".contains(next) && rest.get(1).is_none_or(|c| c.is_whitespace()))
 }
 
-fn end_entry(
-    cur: &mut String,
-    row: &mut Vec<String>,
-    nrows: usize,
-    comma: bool,
-) -> Result<()> {
+fn end_entry(cur: &mut String, row: &mut Vec<String>, nrows: usize, comma: bool) -> Result<()> {
     let e = cur.trim().to_string();
     cur.clear();
     if e.is_empty() {
@@ -226,7 +221,11 @@ pub(crate) struct FieldScan {
 
 impl FieldScan {
     /// Accepts `v` if it is rational or lies in the field seen first; `place` names `v`.
-    pub(crate) fn admit(&mut self, v: &expr::Value, place: &str) -> std::result::Result<(), String> {
+    pub(crate) fn admit(
+        &mut self,
+        v: &expr::Value,
+        place: &str,
+    ) -> std::result::Result<(), String> {
         let Some(k) = &v.k else { return Ok(()) };
         match &self.first {
             None => {

@@ -4,7 +4,7 @@
 //! | field entry | kernels |
 //! |---|---|
 //! | `Rational` ($\mathbb{Q}$) | [`super::over_q`]: charpoly, minpoly, det, RREF, rank, rank bound modulo $p$, null space, inverse, solve, product |
-//! | `Quadratic` ($\mathbb{Q}(\sqrt d)$) | [`super::over_k`]: rank, rank bound modulo $p$, inverse, product |
+//! | `Quadratic` ($\mathbb{Q}(\sqrt d)$) | [`super::over_k`]: RREF (and with it the null space), rank, rank bound modulo $p$, inverse, product |
 //! | `Table` (e.g. $\mathbb{Q}(p)$) | the field's [`crate::field::KernelTable`] (with the generic rank bound) |
 //! | `Generic` | none |
 //!
@@ -77,8 +77,12 @@ pub(super) fn rref<K: Field>(a: &Matrix<K>) -> Option<(Matrix<K>, Vec<usize>)> {
             let (d, piv) = over_q::rref_q(m, n, w.view(&a.data));
             (w.back(d), piv)
         }
+        Kernels::Quadratic(w, dd) => {
+            let (d, piv) = over_k::rref_k(dd, m, n, w.view(&a.data));
+            (w.back(d), piv)
+        }
         Kernels::Table(t) => t.rref(k, m, n, &a.data)?,
-        Kernels::Quadratic(..) | Kernels::Generic => return None,
+        Kernels::Generic => return None,
     };
     Some((Matrix::from_vec(k.clone(), m, n, d), piv))
 }
