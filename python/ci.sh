@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds and tests the Python package: a venv (.venv-python at the repository root, or
 # $EXACTLTI_PY_VENV), `pip install ./python` (maturin from PyPI builds the PyO3 extension,
-# release profile, target dir python/target), pytest with SymPy, numpy and python-control.
+# dev profile, the root's target dir: see below), pytest with SymPy, numpy and python-control.
 # Prints pytest's summary line, then executes the paper notebooks (python/examples/notebooks,
 # a plain runner: every cell in order, each displayed result rendered, no Jupyter needed)
 # with the time each took; fails when pytest or a notebook fails.
@@ -15,6 +15,14 @@ if [ ! -x "$VENV/bin/python" ]; then
 fi
 "$VENV/bin/python" -m pip install -q --upgrade pip >/dev/null 2>&1 || true
 "$VENV/bin/python" -m pip install -q pytest sympy numpy control slycot
+# The extension is built with the dev profile into the root's target dir (maturin's
+# `--profile dev`, CARGO_TARGET_DIR): after `cargo test` (.ci/run) the dependencies and the
+# exactlti library are already compiled there with the same profile and features, so only
+# PyO3 and the bindings compile (a release build in python/target compiled the whole
+# dependency graph and the crate a third time). EXACTLTI_PY_PROFILE=release for a release
+# build.
+export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$ROOT/target}"
+export MATURIN_PEP517_ARGS="--profile ${EXACTLTI_PY_PROFILE:-dev}"
 "$VENV/bin/python" -m pip install -q --force-reinstall --no-deps "$ROOT/python"
 echo "python package built and installed in $(( $(date +%s) - start )) s"
 # run from the repository root so that `import exactlti` finds the installed package,

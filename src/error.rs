@@ -7,8 +7,9 @@
 //! exception class) map; both map this one type.
 //!
 //! [`Error`] is the one error type of the library: every exact operation, loader and parser
-//! returns it (the expression and matrix-text parsers' own messages are wrapped into it with
-//! their place). [`InputError`] is the payload of [`Error::Input`], reached by
+//! returns it (an invalid expression is [`Error::Invalid`], a bad matrix text
+//! [`Error::MatrixText`] with its row and column, a syntax error [`Error::Parse`] or
+//! `Invalid` as the reader reports it). [`InputError`] is the payload of [`Error::Input`], reached by
 //! `std::error::Error::source`; the command layer's `api::Failure` wraps an [`Error`] the same
 //! way (its `source()` is the library error it came from).
 
@@ -52,7 +53,15 @@ pub enum Error {
         col: usize,
         msg: String,
     },
-    /// Any other invalid input, with a message naming the condition.
+    /// A bad MATLAB-style matrix text (`"[1 2; 3]"`): the 1-based row and column when the
+    /// error is about one row or entry, and what is wrong.
+    MatrixText {
+        row: Option<usize>,
+        col: Option<usize>,
+        msg: String,
+    },
+    /// Any other invalid input, with a message naming the condition (also an invalid
+    /// expression: its `Display` is the message itself).
     Invalid(String),
     // ---- the implementation cannot do it ----
     /// A case this implementation does not (yet) handle.
@@ -142,6 +151,15 @@ impl fmt::Display for Error {
             Error::Unstable(m) => write!(f, "unstable system: {m}"),
             Error::IllPosed(m) => write!(f, "ill-posed interconnection: {m}"),
             Error::Parse { line, col, msg } => write!(f, "line {line}, column {col}: {msg}"),
+            Error::MatrixText { row, col, msg } => {
+                if let Some(r) = row {
+                    write!(f, "row {r}, ")?;
+                }
+                if let Some(c) = col {
+                    write!(f, "column {c}, ")?;
+                }
+                write!(f, "{msg}")
+            }
             Error::Invalid(m) => write!(f, "{m}"),
             Error::Unsupported(m) => write!(f, "unsupported: {m}"),
             Error::Limit(m) => write!(f, "limit reached: {m}"),

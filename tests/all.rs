@@ -197,6 +197,8 @@ mod symbolic;
 mod symbolic_scb;
 #[path = "symjordan.rs"]
 mod symjordan;
+#[path = "system_fields.rs"]
+mod system_fields;
 #[path = "toolbox.rs"]
 mod toolbox;
 

@@ -7,7 +7,7 @@ use exactlti::field::lehmer;
 use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
 use exactlti::jordan::jordan_over as jordan_over_k;
 use exactlti::matrix::Matrix;
-use exactlti::matrix::over_k::{inverse_k, mul_k, mul_k_integer, rank_k};
+use exactlti::matrix::over_k::{inverse_k, mul_k, mul_k_integer, rank_k, rref_k};
 use proptest::prelude::*;
 
 fn r(n: i64, d: i64) -> Rational {
@@ -171,8 +171,14 @@ proptest! {
                 sq.set(m - 1, j, v);
             }
         }
-        let (_, piv) = sq.rref_gauss_jordan();
+        let (gj_r, piv) = sq.rref_gauss_jordan();
         prop_assert_eq!(rank_k(&d, m, m, sq.as_slice()), piv.len());
+        // RREF through the regular representation: Gauss-Jordan's, also on the rectangular A
+        let (rk, pk) = rref_k(&d, m, m, sq.as_slice());
+        prop_assert_eq!((rk.as_slice(), &pk), (gj_r.as_slice(), &piv));
+        let (ra, pa) = a.rref_gauss_jordan();
+        let (rk, pk) = rref_k(&d, m, kk, a.as_slice());
+        prop_assert_eq!((rk.as_slice(), pk), (ra.as_slice(), pa));
         let inv = inverse_k(&d, m, sq.as_slice());
         prop_assert_eq!(inv.is_some(), piv.len() == m);
         if let Some(x) = inv {

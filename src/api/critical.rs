@@ -48,7 +48,7 @@ impl<'a> CriticalArgs<'a> {
 
 fn bound(s: &str, what: &str) -> Result<Rational, Failure> {
     crate::io::expr::parse_number(s.trim())
-        .map_err(|e| Failure::input(format!("critical: --{what} '{s}': {}", e.msg)))
+        .map_err(|e| Failure::input(format!("critical: --{what} '{s}': {}", e)))
 }
 
 /// The bounds and `--digits` of `critical`, checked.

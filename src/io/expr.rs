@@ -25,7 +25,7 @@
 //! ([`crate::field::quadratic_display`]: `-3/20 - sqrt(1991)*i/20`) reads back. `pi` is rejected (transcendental); `i`, `sqrt`, `pi` are
 //! never parameter names.
 //!
-//! Every input gives a value or an [`ExprError`] in time bounded by the input length:
+//! Every input gives a value or an [`Error::Invalid`] in time bounded by the input length:
 //! expressions have at most [`MAX_EXPR_LEN`] characters (longer ones are refused before
 //! parsing), exponents satisfy $|n| \le 10^4$ (also in literals such as `1e-3`), literals have at most
 //! 4000 characters, intermediate numbers stay below $2^{14}$ bits (about 4900 digits),
@@ -36,9 +36,9 @@
 //! | [`eval_expr`] | the exact value of one expression over given parameters |
 //! | [`is_parameter_name`] | whether a string may name a parameter |
 
-pub use super::value::ExprError;
 pub(crate) use super::value::{Value, err};
 use super::{ExactScalar, Ground};
+use crate::error::{Error, Result};
 use crate::field::expr::{Algebra, Dialect, SyntaxError, evaluate};
 use crate::field::{QuadraticField, Rational};
 use num_bigint::BigInt;
@@ -87,7 +87,7 @@ pub fn eval_expr(
     text: &str,
     params: &[(String, ExactScalar)],
     ground: &Ground,
-) -> Result<(ExactScalar, Ground), ExprError> {
+) -> Result<(ExactScalar, Ground)> {
     let k = match ground {
         Ground::Rational | Ground::RatFunc(_) => None,
         Ground::Quadratic(k) => Some(k.clone()),
@@ -115,7 +115,7 @@ pub(crate) use crate::field::expr::referenced_names;
 ///
 /// # Errors
 /// The length and the bound.
-pub fn too_long(text: &str) -> Result<(), ExprError> {
+pub fn too_long(text: &str) -> Result<()> {
     let n = text.chars().count();
     if text.len() > MAX_EXPR_LEN && n > MAX_EXPR_LEN {
         return err(format!(
@@ -151,10 +151,7 @@ fn plain_fraction(text: &str) -> Option<Rational> {
 }
 
 /// Evaluates `text`; `lookup` gives the value of a parameter name (`None`: unknown).
-pub(crate) fn eval_with(
-    text: &str,
-    lookup: &dyn Fn(&str) -> Option<Value>,
-) -> Result<Value, ExprError> {
+pub(crate) fn eval_with(text: &str, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<Value> {
     too_long(text)?;
     if let Some(q) = plain_fraction(text) {
         return Ok(Value::rational(q));
@@ -169,24 +166,22 @@ struct Exact<'a> {
 
 impl Algebra for Exact<'_> {
     type Value = Value;
-    type Error = ExprError;
-    fn syntax(&self, e: SyntaxError) -> ExprError {
-        ExprError { msg: e.msg }
+    type Error = Error;
+    fn syntax(&self, e: SyntaxError) -> Error {
+        e.into_invalid()
     }
-    fn number(&self, s: &str, _: usize) -> Result<Value, ExprError> {
+    fn number(&self, s: &str, _: usize) -> Result<Value> {
         Value::rational(parse_number(s)?).checked()
     }
-    fn name(&self, n: &str, _: usize) -> Result<Value, ExprError> {
+    fn name(&self, n: &str, _: usize) -> Result<Value> {
         match n {
             "pi" => err("pi is transcendental; give a rational approximation such as 355/113"),
             "i" => Ok(imaginary_unit()),
             "sqrt" => err("sqrt needs an argument in parentheses, e.g. sqrt(2)"),
-            _ => (self.lookup)(n).ok_or_else(|| ExprError {
-                msg: format!("unknown parameter '{n}'"),
-            }),
+            _ => (self.lookup)(n).ok_or_else(|| Error::Invalid(format!("unknown parameter '{n}'"))),
         }
     }
-    fn call(&self, f: &str, mut args: Vec<Value>, _: usize) -> Result<Value, ExprError> {
+    fn call(&self, f: &str, mut args: Vec<Value>, _: usize) -> Result<Value> {
         match f {
             "pi" => err("pi is transcendental; give a rational approximation such as 355/113"),
             "sqrt" if args.len() == 1 => args.pop().expect("one argument").sqrt(),
@@ -194,23 +189,23 @@ impl Algebra for Exact<'_> {
             _ => err(format!("unknown function '{f}' (only sqrt is available)")),
         }
     }
-    fn neg(&self, a: Value, _: usize) -> Result<Value, ExprError> {
+    fn neg(&self, a: Value, _: usize) -> Result<Value> {
         Ok(a.neg())
     }
-    fn add(&self, a: Value, b: Value, subtract: bool, _: usize) -> Result<Value, ExprError> {
+    fn add(&self, a: Value, b: Value, subtract: bool, _: usize) -> Result<Value> {
         a.add(&if subtract { b.neg() } else { b })
     }
-    fn mul(&self, a: Value, b: Value, divide: bool, _: usize) -> Result<Value, ExprError> {
+    fn mul(&self, a: Value, b: Value, divide: bool, _: usize) -> Result<Value> {
         a.mul(&if divide { b.inv()? } else { b })
     }
-    fn pow(&self, a: Value, e: Value, _: usize) -> Result<Value, ExprError> {
+    fn pow(&self, a: Value, e: Value, _: usize) -> Result<Value> {
         a.pow(&e)
     }
 }
 
 /// A number literal, within the size limits ([`crate::field::expr::parse_number`]).
-pub(crate) fn parse_number(s: &str) -> Result<Rational, ExprError> {
-    crate::field::expr::parse_number(s).map_err(|msg| ExprError { msg })
+pub(crate) fn parse_number(s: &str) -> Result<Rational> {
+    crate::field::expr::parse_number(s).map_err(Error::Invalid)
 }
 
 fn imaginary_unit() -> Value {
@@ -224,10 +219,10 @@ fn imaginary_unit() -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    fn ev(s: &str) -> Result<String, String> {
+    fn ev(s: &str) -> std::result::Result<String, String> {
         eval_expr(s, &[], &Ground::Rational)
             .map(|(x, g)| g.fmt_scalar(&x))
-            .map_err(|e| e.msg)
+            .map_err(|e| e.to_string())
     }
     /// The plain-fraction shortcut gives what the parser gives, on a generator of the
     /// shapes it takes (signs, zeros, long digit strings) and of near misses it leaves to the
@@ -237,7 +232,7 @@ mod tests {
         let parsed = |s: &str| {
             evaluate(&Exact { lookup: &|_| None }, s, Dialect::EXACT)
                 .map(|v| v.a)
-                .map_err(|e| e.msg)
+                .map_err(|e| e.to_string())
         };
         let mut g = crate::rng::SplitMix64(29);
         for _ in 0..500 {
@@ -258,7 +253,9 @@ mod tests {
                     assert_eq!(Ok(x), want, "{s}");
                 }
                 assert_eq!(
-                    eval_with(&s, &|_| None).map(|v| v.a).map_err(|e| e.msg),
+                    eval_with(&s, &|_| None)
+                        .map(|v| v.a)
+                        .map_err(|e| e.to_string()),
                     want
                 );
             }

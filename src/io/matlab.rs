@@ -11,37 +11,42 @@
 //! | [`split_matlab_matrix`] | the entries as text, row by row (checked rectangular) |
 //! | [`parse_matlab_matrix`] | the exact [`MatrixEntries`] and their [`Ground`] |
 
-use super::expr::{self, ExprError};
-use super::{ExactScalar, Ground, MatrixEntries};
-use std::fmt;
+use super::expr;
+use super::{ExactScalar, Ground, InputError, MatrixEntries};
+use crate::error::{Error, Result};
 
-/// A bad matrix text; `row`/`col` are 1-based when the error is about one row or entry.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct MatrixTextError {
-    pub row: Option<usize>,
-    pub col: Option<usize>,
-    pub msg: String,
-}
-
-impl fmt::Display for MatrixTextError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(r) = self.row {
-            write!(f, "row {r}, ")?;
-        }
-        if let Some(c) = self.col {
-            write!(f, "column {c}, ")?;
-        }
-        write!(f, "{}", self.msg)
+/// A bad matrix text: [`Error::MatrixText`] (`row`/`col` 1-based when the error is about one
+/// row or entry).
+fn text_error(row: Option<usize>, col: Option<usize>, msg: impl Into<String>) -> Error {
+    Error::MatrixText {
+        row,
+        col,
+        msg: msg.into(),
     }
 }
 
-impl std::error::Error for MatrixTextError {}
+fn whole(msg: impl Into<String>) -> Error {
+    text_error(None, None, msg)
+}
 
-fn whole(msg: impl Into<String>) -> MatrixTextError {
-    MatrixTextError {
-        row: None,
-        col: None,
-        msg: msg.into(),
+/// The error of a matrix text as an [`InputError`] of key `key` of `file`: the row and
+/// column of the text become the error's, the message stays.
+pub(crate) fn key_error(file: &str, key: &str, e: Error) -> InputError {
+    match e {
+        Error::MatrixText { row, col, msg } => InputError {
+            row,
+            col,
+            ..InputError::key(file, key, msg)
+        },
+        e => InputError::key(file, key, e.to_string()),
+    }
+}
+
+/// The message of a matrix-text error without its place.
+pub(crate) fn message(e: &Error) -> String {
+    match e {
+        Error::MatrixText { msg, .. } => msg.clone(),
+        e => e.to_string(),
     }
 }
 
@@ -59,7 +64,7 @@ fn whole(msg: impl Into<String>) -> MatrixTextError {
 /// # Errors
 /// Unbalanced brackets or parentheses, nested brackets, empty entries (`[1,,2]`), and
 /// rows of different lengths (naming the row).
-pub fn split_matlab_matrix(text: &str) -> Result<Vec<Vec<String>>, MatrixTextError> {
+pub fn split_matlab_matrix(text: &str) -> Result<Vec<Vec<String>>> {
     let t = text.trim();
     let inner = match (t.strip_prefix('['), t.ends_with(']')) {
         (Some(rest), true) => &rest[..rest.len() - 1],
@@ -124,11 +129,7 @@ pub fn split_matlab_matrix(text: &str) -> Result<Vec<Vec<String>>, MatrixTextErr
     if let Some(first) = rows.first() {
         let n = first.len();
         if let Some((r, bad)) = rows.iter().enumerate().find(|(_, r)| r.len() != n) {
-            return Err(MatrixTextError {
-                row: Some(r + 1),
-                col: None,
-                msg: ragged_msg(bad.len(), n),
-            });
+            return Err(text_error(Some(r + 1), None, ragged_msg(bad.len(), n)));
         }
     }
     Ok(rows)
@@ -161,21 +162,16 @@ fn blank_separates(cur: &str, rest: &[char]) -> bool {
     !("+-".contains(next) && rest.get(1).is_none_or(|c| c.is_whitespace()))
 }
 
-fn end_entry(
-    cur: &mut String,
-    row: &mut Vec<String>,
-    nrows: usize,
-    comma: bool,
-) -> Result<(), MatrixTextError> {
+fn end_entry(cur: &mut String, row: &mut Vec<String>, nrows: usize, comma: bool) -> Result<()> {
     let e = cur.trim().to_string();
     cur.clear();
     if e.is_empty() {
         if comma {
-            return Err(MatrixTextError {
-                row: Some(nrows + 1),
-                col: Some(row.len() + 1),
-                msg: "empty entry".into(),
-            });
+            return Err(text_error(
+                Some(nrows + 1),
+                Some(row.len() + 1),
+                "empty entry",
+            ));
         }
         return Ok(());
     }
@@ -198,7 +194,7 @@ fn end_entry(
 /// # Errors
 /// Those of [`split_matlab_matrix`], an invalid entry (with its row and column), and
 /// entries from two different quadratic fields.
-pub fn parse_matlab_matrix(text: &str) -> Result<(MatrixEntries, Ground), MatrixTextError> {
+pub fn parse_matlab_matrix(text: &str) -> Result<(MatrixEntries, Ground)> {
     let rows = split_matlab_matrix(text)?;
     let nrows = rows.len();
     let ncols = rows.first().map_or(0, Vec::len);
@@ -206,12 +202,8 @@ pub fn parse_matlab_matrix(text: &str) -> Result<(MatrixEntries, Ground), Matrix
     let mut scan = FieldScan::default();
     for (i, r) in rows.iter().enumerate() {
         for (j, s) in r.iter().enumerate() {
-            let at = |msg: String| MatrixTextError {
-                row: Some(i + 1),
-                col: Some(j + 1),
-                msg,
-            };
-            let v = expr::eval_with(s, &|_| None).map_err(|e: ExprError| at(e.msg))?;
+            let at = |msg: String| text_error(Some(i + 1), Some(j + 1), msg);
+            let v = expr::eval_with(s, &|_| None).map_err(|e| at(e.to_string()))?;
             scan.admit(&v, &format!("row {}, column {}", i + 1, j + 1))
                 .map_err(at)?;
             data.push(ExactScalar { a: v.a, b: v.b });
@@ -229,7 +221,11 @@ pub(crate) struct FieldScan {
 
 impl FieldScan {
     /// Accepts `v` if it is rational or lies in the field seen first; `place` names `v`.
-    pub(crate) fn admit(&mut self, v: &expr::Value, place: &str) -> Result<(), String> {
+    pub(crate) fn admit(
+        &mut self,
+        v: &expr::Value,
+        place: &str,
+    ) -> std::result::Result<(), String> {
         let Some(k) = &v.k else { return Ok(()) };
         match &self.first {
             None => {

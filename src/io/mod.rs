@@ -50,7 +50,7 @@ pub mod transfer_written;
 mod value;
 pub(crate) mod write;
 
-pub use expr::{ExprError, eval_expr};
+pub use expr::eval_expr;
 pub use keys::SignalNames;
 pub use load::{
     FromScalars, LoadedSystem, SystemFormat, TypedAny, TypedSystem, as_rational, load_model_str,

@@ -50,14 +50,14 @@ impl QEntry for &str {
         };
         let q = match body.split_once('/') {
             Some((n, d)) => {
-                let n = parse_number(n.trim()).map_err(|e| e.msg)?;
-                let d = parse_number(d.trim()).map_err(|e| e.msg)?;
+                let n = parse_number(n.trim()).map_err(|e| e.to_string())?;
+                let d = parse_number(d.trim()).map_err(|e| e.to_string())?;
                 if d == Rational::from_integer(0.into()) {
                     return Err(format!("division by zero in '{self}'"));
                 }
                 n / d
             }
-            None => parse_number(body).map_err(|e| e.msg)?,
+            None => parse_number(body).map_err(|e| e.to_string())?,
         };
         Ok(if neg { -q } else { q })
     }

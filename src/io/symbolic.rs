@@ -294,7 +294,7 @@ fn read_matrix(
             let at = |m: String| {
                 InputError::key(file, key, format!("row {}, column {}: {m}", i + 1, j + 1))
             };
-            super::expr::too_long(t).map_err(|e| at(e.msg))?;
+            super::expr::too_long(t).map_err(|e| at(e.to_string()))?;
             let text = subst.apply(t).map_err(at)?;
             data.push(k.parse(&text).map_err(|e| at(e.to_string()))?);
         }

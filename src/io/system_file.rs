@@ -354,8 +354,8 @@ fn eval_scalar(r: &Raw, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<Value,
         // the same size limits as the text form (a bare 1e9999 is refused like "1e9999")
         Raw::Number(s) => expr::parse_number(s)
             .and_then(|q| Value::rational(q).checked())
-            .map_err(|e| e.msg),
-        Raw::Str(s) => expr::eval_with(s, lookup).map_err(|e| e.msg),
+            .map_err(|e| e.to_string()),
+        Raw::Str(s) => expr::eval_with(s, lookup).map_err(|e| e.to_string()),
         other => Err(format!(
             "expected a number or a string, found {}",
             other.kind()
@@ -375,11 +375,7 @@ fn read_matrix(
     let cells: Vec<&[Raw]> = match r {
         Raw::Str(s) => {
             owned = split_matlab_matrix(s)
-                .map_err(|e| InputError {
-                    row: e.row,
-                    col: e.col,
-                    ..InputError::key(file, key, e.msg)
-                })?
+                .map_err(|e| super::matlab::key_error(file, key, e))?
                 .into_iter()
                 .map(|row| row.into_iter().map(Raw::Str).collect())
                 .collect();

@@ -255,11 +255,8 @@ pub(crate) fn realize_g_as_written(
 /// (`"[1/(s+1) 2; 0 s/(s+2)]"`), the two matrix forms of every key.
 fn g_texts(name: &str, g: &serde_json::Value) -> Result<Vec<Vec<String>>, InputError> {
     if let serde_json::Value::String(s) = g {
-        return super::matlab::split_matlab_matrix(s).map_err(|e| InputError {
-            row: e.row,
-            col: e.col,
-            ..InputError::key(name, "G", e.msg)
-        });
+        return super::matlab::split_matlab_matrix(s)
+            .map_err(|e| super::matlab::key_error(name, "G", e));
     }
     let rows = g
         .as_array()

@@ -1,12 +1,12 @@
 //! The value of an exact expression: $a + b\sqrt d$ with $a, b \in \mathbb{Q}$ and at most
 //! one square-free radicand `d`, with every operation size-checked against
-//! [`MAX_BITS`] and [`MAX_EXPONENT`] (re-exported by [`super::expr`], whose errors
-//! are [`ExprError`]).
+//! [`MAX_BITS`] and [`MAX_EXPONENT`] (re-exported by [`super::expr`]); its errors are the
+//! crate's [`Error::Invalid`] with the message.
 
+use crate::error::{Error, Result};
 use crate::field::{QuadraticField, Rational, fmt_rational};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
-use std::fmt;
 
 /// Largest accepted |exponent| in `x^n` (and in literals such as `1e-3`).
 pub use crate::field::expr::MAX_EXPONENT;
@@ -15,22 +15,10 @@ pub use crate::field::expr::MAX_EXPONENT;
 /// tens of milliseconds at most; beyond it an input could stall for seconds.
 pub const MAX_BITS: u64 = 1 << 14;
 
-/// An invalid expression: what is wrong, with a 1-based character position where useful.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ExprError {
-    pub msg: String,
-}
-
-impl fmt::Display for ExprError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.msg)
-    }
-}
-
-impl std::error::Error for ExprError {}
-
-pub(crate) fn err<T>(msg: impl Into<String>) -> Result<T, ExprError> {
-    Err(ExprError { msg: msg.into() })
+/// An invalid expression: [`Error::Invalid`] with what is wrong (a 1-based character
+/// position where useful); its `Display` is the message itself.
+pub(crate) fn err<T>(msg: impl Into<String>) -> Result<T> {
+    Err(Error::Invalid(msg.into()))
 }
 
 /// A value $a + b\sqrt d$; `k` is `Some` exactly when `b != 0` (canonical).
@@ -88,7 +76,7 @@ fn radical_product(
     x: &QuadraticField,
     c: &Rational,
     y: &QuadraticField,
-) -> Result<Value, ExprError> {
+) -> Result<Value> {
     use num_integer::Integer;
     let g = x.d().gcd(y.d());
     let f = (x.d() / &g) * (y.d() / &g);
@@ -105,7 +93,7 @@ fn radical_product(
     if f.abs() >= BigInt::from(10u64.pow(18)) {
         return err("product of square roots too large (the radicand must stay below 10^18)");
     }
-    let k = QuadraticField::new(f).map_err(|e| ExprError { msg: e.to_string() })?;
+    let k = QuadraticField::new(f).map_err(|e| Error::Invalid(e.to_string()))?;
     Value::new(Rational::zero(), coef, Some(k)).checked()
 }
 
@@ -123,14 +111,14 @@ impl Value {
     pub(crate) fn size(&self) -> u64 {
         bits(&self.a).max(bits(&self.b))
     }
-    pub(crate) fn checked(self) -> Result<Value, ExprError> {
+    pub(crate) fn checked(self) -> Result<Value> {
         if self.size() > MAX_BITS {
             return err(format!("number too large (more than {MAX_BITS} bits)"));
         }
         Ok(self)
     }
     /// The common field of two values, or an error when they have different radicands.
-    pub(crate) fn join(&self, o: &Value) -> Result<Option<QuadraticField>, ExprError> {
+    pub(crate) fn join(&self, o: &Value) -> Result<Option<QuadraticField>> {
         match (&self.k, &o.k) {
             (Some(x), Some(y)) if x != y => err(format!(
                 "values of {x} and {y} cannot be mixed: all values must lie in one quadratic field"
@@ -139,14 +127,14 @@ impl Value {
             (None, None) => Ok(None),
         }
     }
-    pub(crate) fn add(&self, o: &Value) -> Result<Value, ExprError> {
+    pub(crate) fn add(&self, o: &Value) -> Result<Value> {
         let k = self.join(o)?;
         Value::new(q_add(&self.a, &o.a), q_add(&self.b, &o.b), k).checked()
     }
     pub(crate) fn neg(&self) -> Value {
         Value::new(-&self.a, -&self.b, self.k.clone())
     }
-    pub(crate) fn mul(&self, o: &Value) -> Result<Value, ExprError> {
+    pub(crate) fn mul(&self, o: &Value) -> Result<Value> {
         if let (Some(x), Some(y)) = (&self.k, &o.k)
             && x != y
             && self.a.is_zero()
@@ -165,7 +153,7 @@ impl Value {
         let b = q_add(&q_mul(&self.a, &o.b), &q_mul(&self.b, &o.a));
         Value::new(a, b, k).checked()
     }
-    pub(crate) fn inv(&self) -> Result<Value, ExprError> {
+    pub(crate) fn inv(&self) -> Result<Value> {
         if self.is_zero() {
             return err("division by zero");
         }
@@ -175,7 +163,7 @@ impl Value {
         let n = &self.a * &self.a - d * &self.b * &self.b;
         Value::new(&self.a / &n, -&self.b / &n, self.k.clone()).checked()
     }
-    pub(crate) fn pow(&self, e: &Value) -> Result<Value, ExprError> {
+    pub(crate) fn pow(&self, e: &Value) -> Result<Value> {
         if e.k.is_some() || !e.a.is_integer() {
             let shown = if e.k.is_some() {
                 "a non-rational value".to_string()
@@ -220,7 +208,7 @@ impl Value {
             Ok(result)
         }
     }
-    pub(crate) fn sqrt(&self) -> Result<Value, ExprError> {
+    pub(crate) fn sqrt(&self) -> Result<Value> {
         if self.k.is_some() {
             return err("sqrt of a non-rational value is not supported; use sqrt of a rational");
         }

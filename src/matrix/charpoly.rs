@@ -180,10 +180,8 @@ impl<K: Field> Matrix<K> {
     /// `NotSquare`.
     pub fn minpoly(&self) -> Result<Poly<K>> {
         self.check_square("minpoly")?;
-        if let Some(w) = self.field.as_rationals()
-            && let Some(c) = super::over_q::minpoly_q(self.nrows, w.view(&self.data))
-        {
-            return Ok(Poly::new(self.field.clone(), w.back(c)));
+        if let Some(p) = super::kernels::minpoly(self) {
+            return Ok(p);
         }
         let k = self.field.clone();
         let n = self.nrows;

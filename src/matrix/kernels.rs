@@ -3,9 +3,9 @@
 //!
 //! | field entry | kernels |
 //! |---|---|
-//! | `Rational` ($\mathbb{Q}$) | [`super::over_q`]: charpoly, det, RREF, rank, null space, inverse, solve, product |
-//! | `Quadratic` ($\mathbb{Q}(\sqrt d)$) | [`super::over_k`]: rank, inverse, product |
-//! | `Table` (e.g. $\mathbb{Q}(p)$) | the field's [`crate::field::KernelTable`] |
+//! | `Rational` ($\mathbb{Q}$) | [`super::over_q`]: charpoly, minpoly, det, RREF, rank, rank bound modulo $p$, null space, inverse, solve, product |
+//! | `Quadratic` ($\mathbb{Q}(\sqrt d)$) | [`super::over_k`]: RREF (and with it the null space), rank, rank bound modulo $p$, inverse, product |
+//! | `Table` (e.g. $\mathbb{Q}(p)$) | the field's [`crate::field::KernelTable`] (with the generic rank bound) |
 //! | `Generic` | none |
 //!
 //! Each function returns `None` when no kernel applies; the caller then runs the generic
@@ -27,6 +27,38 @@ pub(super) fn charpoly<K: Field>(a: &Matrix<K>) -> Option<Result<Poly<K>>> {
     Some(c.map(|c| Poly::new(k.clone(), c)))
 }
 
+/// The minimal polynomial (square `a`).
+pub(super) fn minpoly<K: Field>(a: &Matrix<K>) -> Option<Poly<K>> {
+    let (k, n) = (&a.field, a.nrows);
+    match k.kernels() {
+        Kernels::Rational(w) => {
+            let c = over_q::minpoly_q(n, w.view(&a.data))?;
+            Some(Poly::new(k.clone(), w.back(c)))
+        }
+        Kernels::Quadratic(..) | Kernels::Table(_) | Kernels::Generic => None,
+    }
+}
+
+/// Does an image modulo a word prime prove $\mathrm{rank}\,A \ge r$ (`0 < r <= min(m, n)`)?
+/// `false` decides nothing.
+pub(super) fn rank_at_least_mod_p<K: Field>(a: &Matrix<K>, r: usize) -> bool {
+    let (k, m, n) = (&a.field, a.nrows, a.ncols);
+    match k.kernels() {
+        Kernels::Rational(w) => over_q::rank_at_least_mod_p(m, n, w.view(&a.data), r),
+        Kernels::Quadratic(w, d) => over_k::rank_at_least_mod_p(d, m, n, w.view(&a.data), r),
+        Kernels::Table(_) | Kernels::Generic => false,
+    }
+}
+
+/// The field's cheap lower bound of the generic rank
+/// ([`crate::field::KernelTable::rank_lower_bound`]).
+pub(super) fn generic_rank_lower_bound<K: Field>(a: &Matrix<K>) -> Option<usize> {
+    match a.field.kernels() {
+        Kernels::Table(t) => t.rank_lower_bound(&a.field, a.nrows, a.ncols, &a.data),
+        Kernels::Rational(_) | Kernels::Quadratic(..) | Kernels::Generic => None,
+    }
+}
+
 /// $\det A$ (square `a`).
 pub(super) fn det<K: Field>(a: &Matrix<K>) -> Option<Result<K::Elem>> {
     let (k, n) = (&a.field, a.nrows);
@@ -45,8 +77,12 @@ pub(super) fn rref<K: Field>(a: &Matrix<K>) -> Option<(Matrix<K>, Vec<usize>)> {
             let (d, piv) = over_q::rref_q(m, n, w.view(&a.data));
             (w.back(d), piv)
         }
+        Kernels::Quadratic(w, dd) => {
+            let (d, piv) = over_k::rref_k(dd, m, n, w.view(&a.data));
+            (w.back(d), piv)
+        }
         Kernels::Table(t) => t.rref(k, m, n, &a.data)?,
-        Kernels::Quadratic(..) | Kernels::Generic => return None,
+        Kernels::Generic => return None,
     };
     Some((Matrix::from_vec(k.clone(), m, n, d), piv))
 }

@@ -13,7 +13,9 @@
 //!   injective ring homomorphism, so $\rho(A)^{-1} = \rho(A^{-1})$ (its first block column
 //!   is $(X_0; X_1)$), and the image of $A$ is a $K$-space, so
 //!   $\mathrm{rank}_{\mathbb{Q}}\,\rho(A) = 2\,\mathrm{rank}_K A$. Both go to the certified
-//!   kernels of [`super::over_q`].
+//!   kernels of [`super::over_q`]; so does [`rank_at_least_mod_p`] (a rank of $\rho(A)$
+//!   modulo a prime of at least $2r$ proves $\mathrm{rank}_K A \ge r$) and [`rref_k`] (the
+//!   RREF of $\rho(A)$ with interleaved columns is $\rho$ of the RREF over $K$, see there).
 //!
 //! Each function computes the same canonical result as the generic algorithm of
 //! [`crate::matrix::Matrix`] over $K$. Matrices are row-major slices; a slice of the wrong
@@ -186,4 +188,60 @@ pub fn inverse_k(d: &BigInt, n: usize, a: &[Quadratic]) -> Option<Vec<Quadratic>
 pub fn rank_k(d: &BigInt, m: usize, n: usize, a: &[Quadratic]) -> usize {
     check_len("rank_k", a.len(), m, n);
     over_q::rank_q(2 * m, 2 * n, &regular(d, m, n, a)) / 2
+}
+
+/// Does an elimination modulo a word prime prove $\mathrm{rank}_K A \ge r$? The regular
+/// representation has $\mathrm{rank}_{\mathbb{Q}}\,\rho(A) = 2\,\mathrm{rank}_K A$ (module
+/// docs), and its rank modulo $p$ is a lower bound of that
+/// ([`over_q::rank_at_least_mod_p`]). `false` decides nothing.
+///
+/// # Panics
+/// When `a.len() != m * n`.
+pub fn rank_at_least_mod_p(d: &BigInt, m: usize, n: usize, a: &[Quadratic], r: usize) -> bool {
+    check_len("rank_at_least_mod_p", a.len(), m, n);
+    over_q::rank_at_least_mod_p(2 * m, 2 * n, &regular(d, m, n, a), 2 * r)
+}
+
+/// Canonical RREF (`m x n`) and pivot columns over $\mathbb{Q}(\sqrt d)$, from the
+/// $\mathbb{Q}$-RREF of $\rho(A)$ with the columns interleaved ($u_{0j}, u_{1j}$ for each
+/// $j$). With $R = EA$ the RREF over $K$, $\rho(R) = \rho(E)\rho(A)$ is row equivalent to
+/// $\rho(A)$, and its rows, half 0 then half 1 of each row of $R$, are already in RREF:
+/// the row $i$ of half 0 has its leading 1 at $(p_i, 0)$, that of half 1 at $(p_i, 1)$, and
+/// both pivot columns vanish elsewhere (the entries there are $R_{kp_i} \in \{0, 1\}$ and
+/// $d\,\mathrm{Im}\,R_{kp_i} = 0$). The $\mathbb{Q}$-RREF is unique, so it is that matrix:
+/// pivots come in pairs $(2p_i, 2p_i + 1)$ and $R_{ij} = \mathrm{row}_{2i}[2j] +
+/// \mathrm{row}_{2i+1}[2j]\sqrt d$.
+///
+/// # Panics
+/// When `a.len() != m * n`.
+pub fn rref_k(d: &BigInt, m: usize, n: usize, a: &[Quadratic]) -> (Vec<Quadratic>, Vec<usize>) {
+    check_len("rref_k", a.len(), m, n);
+    let rho = regular(d, m, n, a);
+    // interleave the columns: (u0_j, u1_j)
+    let w = 2 * n;
+    let mut inter = Vec::with_capacity(rho.len());
+    for r in 0..2 * m {
+        let row = &rho[r * w..(r + 1) * w];
+        for j in 0..n {
+            inter.push(row[j].clone());
+            inter.push(row[n + j].clone());
+        }
+    }
+    let (q, qpiv) = over_q::rref_q(2 * m, w, &inter);
+    debug_assert!(
+        qpiv.chunks(2)
+            .all(|p| p.len() == 2 && p[1] == p[0] + 1 && p[0] % 2 == 0)
+    );
+    let piv: Vec<usize> = qpiv.iter().step_by(2).map(|c| c / 2).collect();
+    let zero = Quadratic::new(Rational::zero(), Rational::zero());
+    let mut out = vec![zero; m * n];
+    for i in 0..piv.len() {
+        for j in 0..n {
+            out[i * n + j] = Quadratic::new(
+                q[2 * i * w + 2 * j].clone(),
+                q[(2 * i + 1) * w + 2 * j].clone(),
+            );
+        }
+    }
+    (out, piv)
 }

@@ -217,3 +217,17 @@ pub fn minpoly_q(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
     }
     modular::minpoly::minpoly_modular(n, a)
 }
+
+/// Does one elimination modulo a word prime (two at most) prove $\mathrm{rank}\,A \ge r$?
+/// A prime dividing no denominator maps every nonzero minor modulo $p$ to a nonzero minor
+/// over $\mathbb{Q}$ ([`crate::qkernels::modular::rank`]), so the rank modulo $p$ is a
+/// lower bound. `false` decides nothing.
+///
+/// # Panics
+/// When `a.len() != m * n`.
+pub fn rank_at_least_mod_p(m: usize, n: usize, a: &[Rational], r: usize) -> bool {
+    check_len("rank_at_least_mod_p", a.len(), m, n);
+    crate::qkernels::prime::primes(11)
+        .take(2)
+        .any(|pr| modular::rank::rank_lower_bound(&pr, m, n, a).is_some_and(|rp| rp >= r))
+}

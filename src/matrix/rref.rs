@@ -90,7 +90,9 @@ impl<K: Field> Matrix<K> {
         self.rank_at_least_mod_p(r) || (r <= self.nrows.min(self.ncols) && self.rank() >= r)
     }
     /// The modular half of [`Matrix::rank_at_least`]: `true` proves $\mathrm{rank}\,A \ge r$;
-    /// `false` decides nothing (a prime too few, or not over $\mathbb{Q}$).
+    /// `false` decides nothing (a prime too few, or a field without such a kernel). The
+    /// field's kernel decides (`kernels::rank_at_least_mod_p`: over $\mathbb{Q}$ the rank
+    /// modulo a word prime, over $\mathbb{Q}(\sqrt d)$ that of the regular representation).
     pub fn rank_at_least_mod_p(&self, r: usize) -> bool {
         if r == 0 {
             return true;
@@ -98,14 +100,7 @@ impl<K: Field> Matrix<K> {
         if r > self.nrows.min(self.ncols) {
             return false;
         }
-        let Some(w) = self.field.as_rationals() else {
-            return false;
-        };
-        let a = w.view(&self.data);
-        crate::qkernels::prime::primes(11).take(2).any(|pr| {
-            crate::qkernels::modular::rank::rank_lower_bound(&pr, self.nrows, self.ncols, a)
-                .is_some_and(|rp| rp >= r)
-        })
+        kernels::rank_at_least_mod_p(self, r)
     }
     /// Is the generic rank at least `r`, proved cheaply and recording nothing? Over
     /// $\mathbb{Q}$ as [`Matrix::rank_at_least_mod_p`]; over a field with a cheap bound
@@ -120,12 +115,7 @@ impl<K: Field> Matrix<K> {
         if r > self.nrows.min(self.ncols) {
             return false;
         }
-        match self.field.kernels() {
-            crate::field::Kernels::Table(t) => t
-                .rank_lower_bound(&self.field, self.nrows, self.ncols, &self.data)
-                .is_some_and(|rp| rp >= r),
-            _ => false,
-        }
+        kernels::generic_rank_lower_bound(self).is_some_and(|rp| rp >= r)
     }
     /// Canonical basis of the right null space $\{v : A v = 0\}$, as the columns of an
     /// `ncols x nullity` matrix.

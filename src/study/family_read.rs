@@ -253,7 +253,10 @@ impl<R: ScalarReader> Resolver<'_, R> {
     fn matrix(&self, r: &Raw, key: &str) -> Result<Vec<Vec<R::Value>>> {
         let cells: Vec<Vec<Raw>> = match r {
             Raw::Str(s) => crate::io::split_matlab_matrix(s)
-                .map_err(|e| Error::Invalid(format!("{}: key {key}: {}", self.file, e.msg)))?
+                .map_err(|e| {
+                    let m = crate::io::matlab::message(&e);
+                    Error::Invalid(format!("{}: key {key}: {m}", self.file))
+                })?
                 .into_iter()
                 .map(|row| row.into_iter().map(Raw::Str).collect())
                 .collect(),

@@ -227,7 +227,7 @@ mod tests {
             .collect();
         assert_eq!(spans, [(1, 3), (3, 4), (4, 9)]);
         assert_eq!(
-            lex("1 # 2").unwrap_err().to_string(),
+            lex("1 # 2").unwrap_err().msg,
             "unexpected character '#' at position 3 in '1 # 2'"
         );
     }

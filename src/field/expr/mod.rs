@@ -36,7 +36,6 @@ pub use lex::{
 pub use parse::parse;
 
 use crate::error::Error;
-use std::fmt;
 
 /// Largest accepted nesting depth of parentheses, signs and exponents.
 pub const MAX_DEPTH: usize = 256;
@@ -54,8 +53,11 @@ impl Dialect {
     pub const POLY: Dialect = Dialect { juxtapose: true };
 }
 
-/// A syntax error: 0-based character position, a short message (for a message that adds
-/// the column itself) and the full one naming the position and the text.
+/// Where and what a syntax error is: 0-based character position, a short message (for a
+/// message that adds the column itself) and the full one naming the position and the text.
+/// Not an error type of its own: each reader ([`Algebra::syntax`]) turns it into the
+/// crate's [`Error`], as [`Error::Parse`] ([`SyntaxError::to_error`]) or
+/// [`Error::Invalid`] ([`SyntaxError::into_invalid`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SyntaxError {
     pub pos: usize,
@@ -71,15 +73,11 @@ impl SyntaxError {
     pub fn to_error(&self) -> Error {
         error_at(self.pos, &self.short)
     }
-}
-
-impl fmt::Display for SyntaxError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.msg)
+    /// As [`Error::Invalid`] with the full message (position and text named in it).
+    pub fn into_invalid(self) -> Error {
+        Error::Invalid(self.msg)
     }
 }
-
-impl std::error::Error for SyntaxError {}
 
 /// [`Error::Parse`] at the 0-based character position `pos` of a one-line text (the error
 /// of the evaluators that report a column).

@@ -112,7 +112,7 @@ fn precedence_and_dialects() {
     );
     assert_eq!(shape(" ", p).unwrap_err(), "empty expression");
     let deep = parse(&"(".repeat(300), e).unwrap_err();
-    assert!(deep.msg.contains("nested too deeply"), "{deep}");
+    assert!(deep.msg.contains("nested too deeply"), "{}", deep.msg);
     let err = parse("x + )", p).unwrap_err().to_error();
     assert_eq!(err.to_string(), "line 1, column 5: unexpected ')'");
 }

@@ -86,7 +86,8 @@ pub fn read_model_str(
     if symbols.is_empty() {
         let eval = |t: &str| -> Result<crate::field::Rational, String> {
             let text = subst.apply(t)?;
-            let (x, _) = super::eval_expr(&text, &[], &Ground::Rational).map_err(|e| e.msg)?;
+            let (x, _) =
+                super::eval_expr(&text, &[], &Ground::Rational).map_err(|e| e.to_string())?;
             x.to_rational()
                 .ok_or_else(|| "expected a rational number".to_string())
         };
