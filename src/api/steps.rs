@@ -21,10 +21,9 @@ use crate::field::Q;
 use crate::io::TypedAny;
 use crate::io::TypedSystem;
 use crate::io::symbolic::SymbolicOptions;
-use crate::jordan::derivation::{
-    AssumptionLog, Derivation, Method, Object, Recorder, Step, ratfunc_log,
-};
+use crate::jordan::derivation::{AssumptionLog, Derivation, Method, Recorder, ratfunc_log};
 use crate::jordan::normalize::Normalization;
+use crate::jordan::real_steps::lift_derivation;
 use crate::report::steps::derivation_report;
 use crate::report::steps_latex::derivation_latex;
 use crate::system::{Descriptor, StateSpace};
@@ -322,14 +321,32 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             first.steps.extend(then.steps);
             out.show(&first)
         }
-        (TypedAny::Rational(t), What::JordanMethod) if t.descriptor.is_none() => {
-            out.show(&crate::realization::steps::jordan_method_steps(&t.ss).map_err(e)?)
+        (TypedAny::Rational(t), What::JordanMethod) => {
+            let run = |ss: &StateSpace<Q>| crate::realization::steps::jordan_method_steps(ss);
+            out.show(&through_standard(&t.ss, t.descriptor.as_ref(), None, run).map_err(e)?)
+        }
+        (TypedAny::RatFunc(t), What::JordanMethod) => {
+            let k = t.ss.field().fresh();
+            let t = t.in_field(&k);
+            let run = crate::realization::steps::jordan_method_steps_qp;
+            let log = || Some(ratfunc_log(&k));
+            out.show(&through_standard(&t.ss, t.descriptor.as_ref(), log(), run).map_err(e)?)
+        }
+        (TypedAny::RatFunc(t), What::RealJordan(_)) => {
+            let k = t.ss.field().fresh();
+            let t = t.in_field(&k);
+            let run = |ss: &StateSpace<_>| crate::jordan::real_steps::real_jordan_steps_qp(&ss.a);
+            let log = || Some(ratfunc_log(&k));
+            let d = match &t.descriptor {
+                None => crate::jordan::real_steps::real_jordan_steps_qp(&t.a_raw),
+                Some(d) => through_standard(&t.ss, Some(d), log(), run),
+            };
+            out.show(&d.map_err(e)?)
         }
         (_, What::Jordan | What::JordanMethod | What::RealJordan(_)) => Err(refuse(format!(
-            "{}: --steps for this command needs rational entries (this file's lie in {}){}",
+            "{}: --steps for this command needs rational entries or entries in QQ(p) (this file's lie in {})",
             path_text(file),
             loaded.file.ground,
-            if descriptor { " and no E" } else { "" }
         ))),
         (TypedAny::Rational(t), w) => {
             out.show(&any_steps(&t.ss, t.descriptor.as_ref(), w, &|| None).map_err(e)?)
@@ -430,6 +447,25 @@ fn descriptor_file(file: &Path, out: &Render) -> Option<Result<Outcome, Failure>
     (l.has_e && l.pencil.is_none() && l.transfer.is_none()).then(|| l.run(Visit(file, out)))
 }
 
+/// A derivation over an extension of $F$ of the system (`run`), a descriptor system through
+/// its standard form first (its steps over $F$ lifted, then `run`'s on the standard system).
+fn through_standard<'a, F: Field>(
+    ss: &StateSpace<F>,
+    descriptor: Option<&Descriptor<F>>,
+    log: Option<AssumptionLog<'a, F>>,
+    run: impl Fn(&StateSpace<F>) -> crate::error::Result<Derivation<crate::algebraic::Ext<F>>>,
+) -> crate::error::Result<Derivation<crate::algebraic::Ext<F>>> {
+    let Some(d) = descriptor else {
+        return run(ss);
+    };
+    let (first, ss) = standard_steps(d, log)?;
+    let mut out = run(&ss)?;
+    let mut steps = lift_derivation(&first, &out.field).steps;
+    steps.append(&mut out.steps);
+    out.steps = steps;
+    Ok(out)
+}
+
 /// `jordan --steps` over $\mathbb{Q}$; for a descriptor system the steps of its standard
 /// form (lifted into the rationals as a number field of degree 1), then the Jordan steps of
 /// the standard form's $A$ (the finite dynamics `jordan` reports).
@@ -465,38 +501,6 @@ fn real_jordan_q(
     steps.append(&mut out.steps);
     out.steps = steps;
     Ok(out)
-}
-
-/// A derivation over $\mathbb{Q}$ as one over the rationals as a number field.
-fn lift_derivation(d: &Derivation<Q>, q: &NumberField) -> Derivation<NumberField> {
-    let lift = |x: &<Q as Field>::Elem| q.from_rational(x);
-    let obj = |o: &Object<Q>| match o {
-        Object::Matrix(m) => Object::Matrix(m.map(q, lift)),
-        Object::Poly(p) => Object::Poly(p.map(q, lift)),
-        Object::Factors(f) => {
-            Object::Factors(f.iter().map(|(p, e)| (p.map(q, lift), *e)).collect())
-        }
-        Object::Scalar(x) => Object::Scalar(lift(x)),
-        Object::Count(c) => Object::Count(*c),
-        Object::Counts(c) => Object::Counts(c.clone()),
-        Object::Polys(ps) => Object::Polys(ps.iter().map(|p| p.map(q, lift)).collect()),
-    };
-    Derivation {
-        method: d.method,
-        field: q.clone(),
-        variable: d.variable,
-        steps: d
-            .steps
-            .iter()
-            .map(|s| Step {
-                kind: s.kind,
-                part: s.part,
-                objects: s.objects.iter().map(|(k, o)| (*k, obj(o))).collect(),
-                holds: s.holds,
-                assumes: s.assumes.iter().map(lift).collect(),
-            })
-            .collect(),
-    }
 }
 
 fn path_text(p: &Path) -> String {

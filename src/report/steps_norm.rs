@@ -3,8 +3,12 @@
 //! sentences (plain and LaTeX) and the LaTeX symbols of their objects. Called through
 //! `report::steps_forms`.
 
+use crate::algebraic::ExtElem;
 use crate::field::Field;
 use crate::jordan::derivation::{Derivation, Method, Step, StepKind};
+use crate::jordan::normalize::{ClosedUnit, Normalization, Scale};
+use crate::jordan::{EigenField, JordanForm};
+use crate::report::{Report, Value};
 
 /// The title of a method of this file.
 pub fn title(m: Method) -> &'static str {
@@ -253,4 +257,61 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
 /// Whether an object key is a flag its sentence already states (not typeset in LaTeX).
 pub fn flag(key: &str) -> bool {
     matches!(key, "orth" | "refused" | "shifted")
+}
+
+/// The words of a normalisation (`jordan --normalize`).
+fn normalization_words(how: &Normalization) -> String {
+    let mut parts = vec![];
+    if how.orthogonal {
+        parts.push(
+            "every generalized eigenvector orthogonal to its eigenvector, v_j . v_1 = 0 (eq. 31)"
+                .to_string(),
+        );
+    }
+    match how.scale {
+        Scale::Keep => {}
+        Scale::Entry(Some(r)) => parts.push(format!("entry {} of each eigenvector 1 (its first nonzero entry where that one is 0)", r + 1)),
+        Scale::Entry(None) => parts.push("the first nonzero entry of each eigenvector 1".into()),
+        Scale::Unit => parts.push("each real eigenvector of unit length, v_1 . v_1 = 1 (exact when the length is rational, else in closed form: unit_lengths)".into()),
+    }
+    format!(
+        "chains normalised: {}; each chain c (I + b_1 N + ...) V is again a chain of the same block, so J is unchanged and A T = T J is checked again",
+        parts.join("; ")
+    )
+}
+
+/// `jordan --normalize` without `--steps`: the Jordan form's report (its `T` with the
+/// normalised chains) with `normalize` (what was asked) and `unit_lengths` (the chains whose
+/// unit length is in closed form: the columns of `T` shown as $V'$, to be divided by
+/// $\sqrt n$).
+pub fn normalized_form_report<F: EigenField>(
+    jf: &JordanForm<F>,
+    how: &Normalization,
+    closed: &[ClosedUnit<ExtElem<F::Elem>>],
+) -> Report {
+    let mut r = jf.report();
+    r.push("normalize", Value::Str(normalization_words(how)));
+    let mut notes = vec![];
+    let mut off = 0;
+    for ev in 0..jf.eigenvalues.len() {
+        let ci = jf.eigenvalues[ev].component;
+        let (field, f) = jf.root_map(ev);
+        for c in closed.iter().filter(|c| c.component == ci) {
+            let (a, b) = (off + c.first + 1, off + c.first + c.len);
+            let cols = if a == b {
+                format!("column {a}")
+            } else {
+                format!("columns {a}-{b}")
+            };
+            notes.push(Value::Str(format!(
+                "{cols} of T: the chain shown is V' with v_1 . v_1 = n = {}; the unit-length chain is V' / sqrt(n)",
+                field.fmt_elem(&f(&c.n))
+            )));
+        }
+        off += jf.components[ci].chains.ncols();
+    }
+    if !notes.is_empty() {
+        r.push("unit_lengths", Value::List(notes));
+    }
+    r
 }
