@@ -554,7 +554,7 @@ fn cli_steps_refusals_are_one_line_exit_2() {
     let (code, out, err) = common::cli::run(&["jordan", f, "--real", "--steps", "--symbolic"]);
     assert_eq!(code, 0, "{err}");
     assert!(
-        out.contains("real_pair") && out.contains("verified: true"),
+        out.contains("real_form") && out.contains("verified: true"),
         "{out}"
     );
     for args in [
