@@ -347,3 +347,153 @@ fn plain_normalize() {
     let col: Vec<&str> = (0..2).map(|i| t[i][0].as_str().unwrap()).collect();
     assert_eq!(col, ["1", "1"]);
 }
+
+/// The trace over Q of each entry of a matrix over a number field Q[t]/(p).
+fn trace_q(m: &Matrix<exactlti::algebraic::NumberField>) -> Matrix<exactlti::field::Q> {
+    use exactlti::field::{Q, Rational};
+    let e = m.field().clone();
+    let ps = newton_power_sums(e.modulus(), e.degree());
+    m.map(&Q, |x| {
+        x.0.iter()
+            .zip(&ps)
+            .fold(Rational::from_integer(0.into()), |acc, (a, b)| acc + a * b)
+    })
+}
+
+/// `contributions --steps` on random stable-ish systems (fixed seed) and the sliding masses:
+/// every identity recomputed from the steps (projectors idempotent and summing to I, A V =
+/// V A_p, the residues' traces C_p B_p, the Lyapunov identity of each weight, the parts'
+/// Markov parameters summing to C A^k B, the truncation's C B = C_K B_K + E_0).
+#[test]
+fn contributions_steps_identities() {
+    use crate::response_modal::random_system;
+    use exactlti::field::Q;
+    use exactlti::realization::contribution_steps::contributions_steps;
+    let mut rng = exactlti::rng::SplitMix64(27_027);
+    let mut systems = vec![crate::common::systems::sliding_masses()];
+    for case in 0..8 {
+        let n = 2 + case % 4;
+        let (a, b, c) = random_system(&mut rng, n);
+        let d = Matrix::zeros(Q, c.nrows(), b.ncols());
+        systems.push(exactlti::system::StateSpace::new(a, b, c, d).unwrap());
+    }
+    for ss in &systems {
+        let n = ss.nstates();
+        let d = contributions_steps(ss, Some(1)).unwrap();
+        assert!(d.verified());
+        let lq = |m: &Matrix<exactlti::algebraic::NumberField>| trace_q(m);
+        let mut sum = Matrix::zeros(Q, n, n);
+        let mut markov = vec![Matrix::zeros(Q, ss.noutputs(), ss.ninputs()); 2 * n];
+        for st in d.of_kind(StepKind::SpectralProjector) {
+            let m = |k: &str| lq(st.matrix(k).unwrap());
+            let (p, v, r, ap, bp, cp) = (m("P"), m("V"), m("R"), m("Ap"), m("Bp"), m("Cp"));
+            assert_eq!(&v * &r, p);
+            assert_eq!(&p * &p, p, "P^2 = P");
+            assert!((&r * &v).is_identity(), "R V = I");
+            assert_eq!(&ss.a * &v, &v * &ap, "A V = V A_p");
+            assert_eq!(bp, &r * &ss.b);
+            assert_eq!(cp, &ss.c * &v);
+            sum = &sum + &p;
+            let mut akb = bp.clone();
+            for h in markov.iter_mut() {
+                *h = &*h + &(&cp * &akb);
+                akb = &ap * &akb;
+            }
+            let res = d
+                .of_kind(StepKind::ModeResidues)
+                .find(|s| s.part == st.part)
+                .unwrap();
+            let h = res.matrix("H").unwrap();
+            let h0 = h.submatrix(0, h.nrows(), 0, ss.ninputs());
+            assert_eq!(
+                trace_q(&h0),
+                &cp * &bp,
+                "sum over conjugates of H_0 = C_p B_p"
+            );
+            let w = d
+                .of_kind(StepKind::ModeWeight)
+                .find(|s| s.part == st.part)
+                .unwrap();
+            if let Some(wm) = w.matrix("W") {
+                let wq = lq(wm);
+                let bbt = &bp * &bp.transpose();
+                assert!((&(&(&ap * &wq) + &(&wq * &ap.transpose())) + &bbt).is_zero());
+            }
+        }
+        assert!(sum.is_identity(), "sum P_p = I");
+        assert_eq!(markov, ss.markov(2 * n), "the parts add up to G");
+        let t = d.of_kind(StepKind::TruncationError).next().unwrap();
+        let m = |k: &str| lq(t.matrix(k).unwrap());
+        assert_eq!(&ss.c * &ss.b, &(&m("Ck") * &m("Bk")) + &m("M0"));
+    }
+}
+
+/// `response --steps` from x0: A g_k = theta g_k + (k+1) g_(k+1) per factor, the traces of
+/// g_0 sum to x0; on the command line (JSON, LaTeX) and refused with symbols in x0.
+#[test]
+fn response_steps_identities() {
+    use crate::response_modal::random_system;
+    use exactlti::field::{Q, Rational};
+    use exactlti::realization::contribution_steps::response_steps;
+    let mut rng = exactlti::rng::SplitMix64(27_028);
+    for case in 0..10 {
+        let n = 2 + case % 5;
+        let (a, _, _) = random_system(&mut rng, n);
+        let x0 = Matrix::from_fn(Q, n, 1, |i, _| {
+            Rational::from_integer((i as i64 - 1).into())
+        });
+        let d = response_steps(&a, &x0).unwrap();
+        assert!(d.verified());
+        let mut sum0 = Matrix::zeros(Q, n, 1);
+        for st in d.of_kind(StepKind::FreeTerms) {
+            let g = st.matrix("g").unwrap();
+            let e = g.field().clone();
+            let theta = st.scalar("theta").unwrap();
+            let ae = a.map(&e, |x| e.from_rational(x));
+            for k in 0..g.ncols() {
+                let gk = g.submatrix(0, n, k, k + 1);
+                let next = if k + 1 < g.ncols() {
+                    g.submatrix(0, n, k + 1, k + 2)
+                        .scale(&e.from_i64(k as i64 + 1))
+                } else {
+                    Matrix::zeros(e.clone(), n, 1)
+                };
+                assert_eq!(&ae * &gk, &gk.scale(theta) + &next, "case {case}");
+            }
+            sum0 = &sum0 + &trace_q(&g.submatrix(0, n, 0, 1));
+        }
+        assert_eq!(sum0, x0, "x(0) = x0");
+    }
+    let f = "data/sliding-masses.json";
+    let x0 = vec!["0"; 20].join(",").replacen('0', "1", 1);
+    let j = common::cli::run_json(&["response", f, "--x0", &x0, "--steps"]);
+    assert_eq!(j["verified"], true);
+    let c = common::cli::run_json(&["contributions", f, "--keep", "2", "--steps"]);
+    assert_eq!(c["verified"], true);
+    assert!(
+        c["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|s| s["step"] == "truncation")
+    );
+    let (code, out, err) = common::cli::run(&[
+        "contributions",
+        f,
+        "--steps",
+        "--format",
+        "latex",
+        "--standalone",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("holds exactly"));
+    let (code, _, err) = common::cli::run(&[
+        "response",
+        "tests/data/mnf_appendix_b.json",
+        "--x0",
+        "1,0,0,0",
+        "--steps",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("over QQ"), "{err}");
+}

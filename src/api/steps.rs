@@ -45,6 +45,10 @@ enum What {
     Mnf,
     /// `minreal --descriptor`.
     DescriptorMinimal,
+    /// `contributions [--keep K]`.
+    Contributions(Option<usize>),
+    /// `response --x0 ...` (the free response).
+    Response,
 }
 
 /// `--steps` for a case it does not cover (exit 2; Python's `UnsupportedError`).
@@ -52,7 +56,7 @@ fn refuse(message: String) -> Failure {
     Failure::unsupported(message)
 }
 
-const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf`, `minreal --method kalman|jordan|rosenbrock|ho-kalman` and `minreal --descriptor` (not for `minreal --method era`)";
+const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf`, `minreal --method kalman|jordan|rosenbrock|ho-kalman`, `minreal --descriptor`, `contributions` and `response` (not for `minreal --method era`)";
 
 /// The file and the derivation `cmd` asks for.
 fn what(cmd: &Command) -> Option<(&Path, What)> {
@@ -81,6 +85,10 @@ fn what(cmd: &Command) -> Option<(&Path, What)> {
         Command::Tf { file } => (file, What::Tf),
         Command::Standard { file } => (file, What::Standard),
         Command::Mnf { file } => (file, What::Mnf),
+        Command::Response(super::ResponseCmd::Contributions { file, keep }) => {
+            (file, What::Contributions(*keep))
+        }
+        Command::Response(super::ResponseCmd::Response { file, .. }) => (file, What::Response),
         _ => return None,
     })
 }
@@ -306,6 +314,21 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
         };
     }
     match (&loaded.system, what) {
+        (TypedAny::Rational(t), What::Contributions(keep)) if !descriptor => {
+            let d = crate::realization::contribution_steps::contributions_steps(&t.ss, keep);
+            out.show(&d.map_err(e)?)
+        }
+        (TypedAny::Rational(t), What::Response) if !descriptor => {
+            let x0 = exact_x0(cmd, t.ss.nstates())?;
+            let d = crate::realization::contribution_steps::response_steps(&t.ss.a, &x0);
+            out.show(&d.map_err(e)?)
+        }
+        (_, What::Contributions(_) | What::Response) => Err(refuse(format!(
+            "{}: --steps for `contributions` and `response` derives over QQ (a system without E and exact numbers in --x0); this file's entries lie in {}{}",
+            path_text(file),
+            loaded.file.ground,
+            if descriptor { " and it has E" } else { "" }
+        ))),
         (TypedAny::Rational(t), What::Jordan) => out.show(&jordan_q(t, &norm).map_err(e)?),
         (TypedAny::Rational(t), What::RealJordan(expand)) => {
             out.show(&real_jordan_q(t, expand).map_err(e)?)
@@ -362,6 +385,31 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             out.show(&any_steps(&t.ss, t.descriptor.as_ref(), w, &log).map_err(e)?)
         }
     }
+}
+
+/// The exact initial state of `response --x0` ($n$ rational entries).
+fn exact_x0(cmd: &Command, n: usize) -> Result<crate::matrix::Matrix<Q>, Failure> {
+    let Command::Response(super::ResponseCmd::Response { x0, .. }) = cmd else {
+        return Err(Failure::input("internal: not `response`".to_string()));
+    };
+    let xs: Vec<&str> = x0.split(',').map(str::trim).collect();
+    if xs.len() != n {
+        return Err(Failure::input(format!(
+            "--x0 needs {n} comma-separated entries (the state has {n}), got {}",
+            xs.len()
+        )));
+    }
+    let vals = xs
+        .iter()
+        .map(|x| {
+            crate::field::parse_rational(x).map_err(|m| {
+                Failure::unsupported(format!(
+                    "--x0 entry \"{x}\": {m} (--steps derives from exact numbers; the response in symbols is `response` without --steps)"
+                ))
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(crate::matrix::Matrix::column(Q, vals))
 }
 
 /// The chains' normalisation `jordan --normalize` asks for (none for the other commands).

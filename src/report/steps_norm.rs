@@ -14,7 +14,7 @@ use crate::report::{Report, Value};
 pub fn title(m: Method) -> &'static str {
     match m {
         Method::DescriptorMinimal => "minimal descriptor realization, step by step",
-        _ => "derivation, step by step",
+        m => super::steps_modes::title(m),
     }
 }
 
@@ -27,7 +27,7 @@ pub fn kind_name(k: StepKind) -> &'static str {
         StepKind::DescriptorInfinite => "infinite_part",
         StepKind::DescriptorNondynamic => "nondynamic_modes",
         StepKind::DescriptorMinimalForm => "minimal_descriptor",
-        _ => "step",
+        k => super::steps_modes::kind_name(k),
     }
 }
 
@@ -58,7 +58,7 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             "C(sE - A)^-1 B + D unchanged, finite part controllable and observable, minimal at infinity",
             r"C(sE - A)^{-1}B + D\ \text{unchanged},\ \text{minimal}",
         ),
-        _ => ("", ""),
+        k => super::steps_modes::identity(k),
     }
 }
 
@@ -103,6 +103,13 @@ fn scaled_text<K: Field>(d: &Derivation<K>, s: &Step<K>, latex: bool) -> String 
 /// The plain sentence of a step of this file.
 pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
     match s.kind {
+        StepKind::SpectralProjector
+        | StepKind::ModeResidues
+        | StepKind::ModeWeight
+        | StepKind::ModeRanking
+        | StepKind::TruncationError
+        | StepKind::FreeTerms
+        | StepKind::InitialState => super::steps_modes::sentence(d, s),
         StepKind::Normalization => format!(
             "Normalise the chain of length {}{}: V' = p(N) V with p(N) = c (I + b_1 N + ...), again a chain of the same block.{}{}",
             cnt(s, "top"),
@@ -203,13 +210,16 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
         StepKind::DescriptorInfinite => "The infinite part $C_\\infty(I + sN)^{-1}B_\\infty = \\sum_k (-s)^k C_\\infty N^k B_\\infty$: a minimal realization $(N_r, B_r, C_r)$ of the sequence $C_\\infty N^k B_\\infty$; as a descriptor part $E = -N_r$, $A = I$, $B = -B_r$, $C = C_r$.".into(),
         StepKind::DescriptorNondynamic => "The non-dynamic modes (infinite blocks of size 1) of the irreducible infinite part eliminated.".into(),
         StepKind::DescriptorMinimalForm => "The minimal descriptor realization $E = \\operatorname{diag}(I, E_\\infty)$, $A = \\operatorname{diag}(A_m, A_\\infty)$, $B = [B_m; B_\\infty]$, $C = [C_m, C_\\infty]$ (orders: original, irreducible, minimal, finite, infinite).".into(),
-        _ => String::new(),
+        _ => super::steps_modes::sentence_latex(st),
     }
 }
 
 /// The LaTeX symbol of an object key of this file's steps (`None`: the common tables).
 pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
     use StepKind as S;
+    if let Some(sym) = super::steps_modes::symbol(kind, key) {
+        return Some(sym);
+    }
     let desc = matches!(
         kind,
         S::DescriptorFinite
@@ -256,7 +266,7 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
 
 /// Whether an object key is a flag its sentence already states (not typeset in LaTeX).
 pub fn flag(key: &str) -> bool {
-    matches!(key, "orth" | "refused" | "shifted")
+    matches!(key, "orth" | "refused" | "shifted") || super::steps_modes::flag(key)
 }
 
 /// The words of a normalisation (`jordan --normalize`).
