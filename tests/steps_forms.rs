@@ -669,14 +669,11 @@ fn cli_steps_refusals_for_forms_are_one_line_exit_2() {
         .collect();
     assert_eq!(pairs.len(), 2);
     assert!(pairs.iter().all(|s| s["holds"] == true));
-    for args in [
-        vec!["standard", "data/yaw-plane-single-wheel.json", "--steps"],
-        // `zeros` and `jordan --real` of a descriptor file have steps now
-        // (tests/steps_descriptor.rs)
-    ] {
-        let (code, out, err) = common::cli::run(&args);
-        assert_eq!(code, 2, "{args:?}: {err}");
-        assert!(out.is_empty());
-        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-    }
+    // `zeros` and `jordan --real` of a descriptor file have steps now
+    // (tests/steps_descriptor.rs)
+    let args = ["standard", "data/yaw-plane-single-wheel.json", "--steps"];
+    let (code, out, err) = common::cli::run(&args);
+    assert_eq!(code, 2, "{args:?}: {err}");
+    assert!(out.is_empty());
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
 }

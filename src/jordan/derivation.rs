@@ -230,9 +230,9 @@ pub enum StepKind {
     /// The residues $H_k = C G_{\theta,k} B$ of the mode at the generic root (side by side);
     /// identity $\sum_{\text{conj}} H_0 = C_p B_p$. Objects: `theta`, `H`, `deg`.
     ModeResidues,
-    /// The mode's weight: $\|G_p\|_2^2 = \operatorname{tr}(C_p W C_p^T)$ with $A_p W + W A_p^T
-    /// + B_p B_p^T = 0$ (`W`, `h2`), or `zero` (all Markov parameters 0) or `infinite` (not
-    /// stable).
+    /// The mode's weight: $\|G_p\|_2^2 = \operatorname{tr}(C_p W C_p^T)$ with the Lyapunov
+    /// identity $A_p W + W A_p^T + B_p B_p^T = 0$ (`W`, `h2`), or `zero` (all Markov
+    /// parameters 0) or `infinite` (not stable).
     ModeWeight,
     /// The projectors add up to $I$ and the parts to $G$: $\sum_p P_p = I$, $\sum_p C_p A_p^k
     /// B_p = C A^k B$ ($k < 2n$); the modes ranked heaviest first. Objects: `n`, `order`.
