@@ -35,6 +35,8 @@ mod cli_pencil;
 mod connect_file;
 #[path = "critical_fields.rs"]
 mod critical_fields;
+#[path = "critical_values.rs"]
+mod critical_values;
 #[path = "ctrb_structure.rs"]
 mod ctrb_structure;
 #[path = "dcgain.rs"]

@@ -17,9 +17,9 @@ use std::f64::consts::PI;
 /// One pole of the damping table.
 #[derive(Clone, Debug)]
 pub struct DampRow {
-    /// Exact display of the pole.
-    pub pole: String,
-    pub minpoly: String,
+    /// The pole, exactly (its minimal polynomial and isolating region; displayed in
+    /// `report/`).
+    pub pole: AlgebraicNumber,
     pub approx: (f64, f64),
     pub multiplicity: usize,
     pub wn_rad_s: f64,
@@ -80,8 +80,7 @@ fn row(lam: &AlgebraicNumber, (re, im): (f64, f64), mult: usize) -> DampRow {
         tzw = Some(a1);
     }
     DampRow {
-        pole: lam.value_string(),
-        minpoly: mp.to_string(),
+        pole: lam.clone(),
         approx: (re, im),
         multiplicity: mult,
         wn_rad_s: wn,

@@ -56,6 +56,7 @@ fn value_has_control(v: &Value) -> bool {
     let has = |s: &str| s.chars().any(is_control);
     match v {
         Value::Str(s) => has(s),
+        Value::Math(m) => has(&m.text) || has(&m.latex),
         Value::List(xs) => xs.iter().any(value_has_control),
         Value::Obj(r) => report_has_control(r),
         Value::Matrix(m) => m.exact.iter().flatten().any(|x| has(x)),
@@ -88,6 +89,7 @@ pub fn escape_control_report(r: &Report) -> Report {
 fn escape_control_value(v: &Value) -> Value {
     match v {
         Value::Str(s) => Value::Str(escape_control(s)),
+        Value::Math(m) => Value::math(escape_control(&m.text), escape_control(&m.latex)),
         Value::List(xs) => Value::List(xs.iter().map(escape_control_value).collect()),
         Value::Obj(r) => Value::Obj(escape_control_report(r)),
         Value::Matrix(m) => {

@@ -117,6 +117,7 @@ fn scalar_tex(v: &Value) -> Option<String> {
         Value::Int(n) => n.to_string(),
         Value::Float(x) => float_math(*x),
         Value::Str(x) => to_math(x)?,
+        Value::Math(m) => m.latex.clone(),
         _ => return None,
     })
 }
@@ -128,6 +129,7 @@ fn value(s: &mut String, v: &Value, depth: usize) {
         Value::Int(n) => s.push_str(&n.to_string()),
         Value::Float(x) => s.push_str(&inline_math(&float_math(*x))),
         Value::Str(x) => s.push_str(&scalar_str(x)),
+        Value::Math(m) => s.push_str(&inline_math(&m.latex)),
         Value::Alt(a) => value(s, &a.data, depth),
         Value::Matrix(m) => matrix(s, m),
         Value::List(xs) if xs.is_empty() => s.push_str("(none)"),

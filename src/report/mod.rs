@@ -22,6 +22,7 @@ pub(crate) mod steps_norm;
 pub(crate) mod summary;
 pub(crate) mod text;
 
+pub use sections::critical_report;
 pub use steps::derivation_report;
 pub use text::{TextOptions, text_matrix};
 
@@ -75,9 +76,14 @@ impl MatrixOut {
             }
             Target::Latex => false,
         };
+        let latex = if target == Target::Latex {
+            latex_of_elements(m, &exact)
+        } else {
+            vec![]
+        };
         MatrixOut {
             exact,
-            latex: vec![],
+            latex,
             approx: if approx {
                 m.to_approx_complex()
             } else {
@@ -87,7 +93,7 @@ impl MatrixOut {
             ncols: m.ncols(),
         }
     }
-    /// From exact entry strings (also used as LaTeX) and their approximations, for matrices
+    /// From exact entry strings (typeset from the text) and their approximations, for matrices
     /// whose entries live in different fields.
     pub fn from_parts(exact: Vec<Vec<String>>, approx: Vec<Vec<(f64, f64)>>) -> Self {
         let nrows = exact.len();
@@ -100,9 +106,34 @@ impl MatrixOut {
             ncols,
         }
     }
+    /// The LaTeX of entry `(i, j)` made from its element, when the field made one of its
+    /// own (`None`: none, or the same as the exact string: typeset from that string).
+    pub fn latex_at(&self, i: usize, j: usize) -> Option<&str> {
+        let l = self.latex.get(i)?.get(j)?;
+        (!l.is_empty() && self.exact.get(i)?.get(j)? != l).then_some(l.as_str())
+    }
     fn is_complex(&self) -> bool {
         self.approx.iter().flatten().any(|(_, im)| *im != 0.0)
     }
+}
+
+/// The LaTeX of each entry made from the element by its field (`latex_elem`: fractions,
+/// radicals, rational functions with `\\mathit` names), empty where the field has no LaTeX
+/// of its own for it (it equals the text: the renderer typesets the text).
+fn latex_of_elements<K: Field>(m: &Matrix<K>, exact: &[Vec<String>]) -> Vec<Vec<String>> {
+    let k = m.field();
+    (0..m.nrows())
+        .map(|i| {
+            m.row(i)
+                .iter()
+                .zip(&exact[i])
+                .map(|(x, e)| {
+                    let l = k.latex_elem(x);
+                    if l == *e { String::new() } else { l }
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// The output a report is built for ([`MatrixOut::for_target`]): the command line knows its
@@ -134,6 +165,28 @@ pub enum Value {
     Obj(Report),
     /// Data with its own text display (a table, or nothing): JSON and LaTeX show the data.
     Alt(Box<Alt>),
+    /// An exact value with its LaTeX made from the elements: text and JSON show `text`,
+    /// LaTeX and HTML show `latex` (never re-parsed from `text`).
+    Math(Box<MathOut>),
+}
+
+/// The two displays of an exact value: [`Value::Math`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct MathOut {
+    /// The plain display (`x + 101*sqrt(610)/1830`).
+    pub text: String,
+    /// LaTeX math without delimiters, made from the same value.
+    pub latex: String,
+}
+
+impl Value {
+    /// An exact value shown as `text`, typeset as `latex` (made from the value).
+    pub fn math(text: impl Into<String>, latex: impl Into<String>) -> Value {
+        Value::Math(Box::new(MathOut {
+            text: text.into(),
+            latex: latex.into(),
+        }))
+    }
 }
 
 /// A value shown differently in text: [`Value::Alt`].
@@ -203,6 +256,10 @@ impl Report {
     }
     pub fn str(self, key: &str, s: impl Into<String>) -> Self {
         self.with(key, Value::Str(s.into()))
+    }
+    /// An exact value shown as `text` and typeset as `latex` ([`Value::Math`]).
+    pub fn math(self, key: &str, text: impl Into<String>, latex: impl Into<String>) -> Self {
+        self.with(key, Value::math(text, latex))
     }
     pub fn int(self, key: &str, n: usize) -> Self {
         self.with(key, Value::Int(n as i64))
@@ -327,6 +384,7 @@ fn value_json(v: &Value) -> Json {
         Value::List(xs) => Json::Array(xs.iter().map(value_json).collect()),
         Value::Obj(r) => r.to_json(),
         Value::Alt(a) => value_json(&a.data),
+        Value::Math(m) => Json::String(m.text.clone()),
     }
 }
 

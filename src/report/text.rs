@@ -383,6 +383,7 @@ pub(super) fn inline_text(v: &Value) -> String {
         Value::Int(n) => n.to_string(),
         Value::Float(x) => sig(*x),
         Value::Str(s) => s.clone(),
+        Value::Math(m) => m.text.clone(),
         Value::Matrix(mo) => format!("{:?}", mo.exact),
         Value::List(xs) => format!(
             "[{}]",

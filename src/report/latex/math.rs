@@ -65,6 +65,7 @@ fn scalar(v: &Value) -> Option<String> {
         Value::Int(n) => n.to_string(),
         Value::Float(x) => float_math(*x),
         Value::Str(s) => to_math(s).unwrap_or_else(|| text(s)),
+        Value::Math(m) => m.latex.clone(),
         _ => return None,
     })
 }
@@ -130,16 +131,12 @@ fn matrix(m: &MatrixOut) -> String {
             m.nrows, m.ncols
         ));
     }
-    let use_latex = m.latex.len() == m.nrows && m.latex.iter().all(|r| r.len() == m.ncols);
     let rows: Vec<String> = (0..m.nrows)
         .map(|i| {
             (0..m.ncols)
-                .map(|j| {
-                    if use_latex {
-                        m.latex[i][j].clone()
-                    } else {
-                        to_math(&m.exact[i][j]).unwrap_or_else(|| text(&m.exact[i][j]))
-                    }
+                .map(|j| match m.latex_at(i, j) {
+                    Some(l) => l.to_string(),
+                    None => to_math(&m.exact[i][j]).unwrap_or_else(|| text(&m.exact[i][j])),
                 })
                 .collect::<Vec<_>>()
                 .join(" & ")

@@ -10,9 +10,11 @@
 
 mod expr;
 mod math;
+mod values;
 
 pub use expr::{ident, to_math};
 pub use math::math;
+pub use values::{algebraic_latex, ext_latex, poly_latex, poly_over_ext_latex};
 
 use super::escape::{latex_comment, latex_text};
 use super::{MatrixOut, Report, Value};
@@ -88,6 +90,7 @@ fn value_width(v: &Value) -> f64 {
         Value::Obj(r) => estimate_width_em(r) + 2.0,
         Value::List(xs) => xs.iter().map(value_width).fold(0.0, f64::max) + 2.0,
         Value::Str(s) => (s.len() as f64 * 0.5).min(60.0),
+        Value::Math(m) => (m.text.len() as f64 * 0.5).min(60.0),
         _ => 0.0,
     }
 }
@@ -155,7 +158,12 @@ pub fn float_math(x: f64) -> String {
 fn is_scalar(v: &Value) -> bool {
     matches!(
         v,
-        Value::Null | Value::Bool(_) | Value::Int(_) | Value::Float(_) | Value::Str(_)
+        Value::Null
+            | Value::Bool(_)
+            | Value::Int(_)
+            | Value::Float(_)
+            | Value::Str(_)
+            | Value::Math(_)
     )
 }
 
@@ -167,6 +175,7 @@ fn math_scalar(v: &Value) -> String {
         Value::Int(n) => n.to_string(),
         Value::Float(x) => float_math(*x),
         Value::Str(s) => scalar_in_math(s),
+        Value::Math(m) => m.latex.clone(),
         _ => String::new(),
     }
 }
@@ -210,6 +219,9 @@ fn value(s: &mut String, v: &Value, depth: usize) {
             let _ = write!(s, "${}$", float_math(*x));
         }
         Value::Str(x) => s.push_str(&scalar_str(x)),
+        Value::Math(m) => {
+            let _ = write!(s, "${}$", m.latex);
+        }
         Value::Alt(a) => value(s, &a.data, depth),
         Value::Matrix(m) => matrix(s, m),
         Value::List(xs) if xs.is_empty() => s.push_str("(none)"),
@@ -333,8 +345,13 @@ fn matrix(s: &mut String, m: &MatrixOut) {
             )
         };
         let _ = writeln!(s, "\n\\[\n{open}");
-        for row in &m.exact {
-            let cells: Vec<String> = row[c0..c1].iter().map(|x| scalar_in_math(x)).collect();
+        for (i, row) in m.exact.iter().enumerate() {
+            let cells: Vec<String> = (c0..c1)
+                .map(|j| {
+                    m.latex_at(i, j)
+                        .map_or_else(|| scalar_in_math(&row[j]), String::from)
+                })
+                .collect();
             let _ = writeln!(s, "  {} \\\\", cells.join(" & "));
         }
         let _ = write!(s, "{close}\n\\]");

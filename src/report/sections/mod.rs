@@ -7,6 +7,7 @@
 //! ([`factor_report`], [`roots_report`], [`already_standard`], [`float_jordan_fallback`]).
 
 mod algebraic;
+mod critical;
 mod dcgain;
 mod discrete;
 mod interconnect;
@@ -21,6 +22,7 @@ mod tf_field;
 mod toolbox;
 
 pub use algebraic::{factor_report, roots_report};
+pub use critical::{critical_report, factor_displays};
 pub use discrete::{conversion_report, sequence_report, stability_report};
 pub use interconnect::{PartInfo, interconnection_report};
 pub use mpoly::{mfactor_report, mgcd_report};

@@ -156,8 +156,12 @@ pub fn damp_report(rows: &[DampRow]) -> Report {
         .map(|d| {
             Value::Obj(
                 Report::new()
-                    .str("pole", d.pole.clone())
-                    .str("minpoly", d.minpoly.clone())
+                    .math(
+                        "pole",
+                        d.pole.value_string(),
+                        crate::report::latex::algebraic_latex(&d.pole),
+                    )
+                    .str("minpoly", d.pole.minpoly().to_string())
                     .with(
                         "approx",
                         Value::List(vec![Value::Float(d.approx.0), Value::Float(d.approx.1)]),
@@ -191,8 +195,9 @@ pub fn damp_report(rows: &[DampRow]) -> Report {
     let text = rows
         .iter()
         .map(|d| {
-            let pole = if d.pole.chars().count() <= 40 {
-                d.pole.clone()
+            let shown = d.pole.value_string();
+            let pole = if shown.chars().count() <= 40 {
+                shown
             } else {
                 crate::report::text::short_complex(d.approx)
             };

@@ -25,6 +25,7 @@ mod intervals;
 pub mod over_k;
 mod roots;
 mod structure;
+pub mod value;
 
 pub use roots::{rational_between, sign_at_root};
 pub use structure::block_sizes;
@@ -32,7 +33,7 @@ pub use structure::block_sizes;
 use super::bivar::{BiPoly, charpoly_xv_content, discriminant_v, hurwitz_delta_n1};
 use super::family::ParamFamily;
 use super::hurwitz::{RootCounts, hurwitz_stable, root_counts};
-use crate::algebraic::AlgebraicNumber;
+use crate::algebraic::{AlgebraicNumber, NumberField};
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, QuadraticField, Rational, rational_to_f64};
 use crate::poly::Poly;
@@ -99,8 +100,30 @@ pub struct EigenvalueAt {
     /// Jordan block sizes, non-increasing (sum = multiplicity).
     pub blocks: Vec<usize>,
     /// For a repeated eigenvalue: the irreducible factor of $P(x, v_0)$ over
-    /// $\mathbb{Q}(v_0)$ it is a root of, in `x` and `t` ($t = v_0$); empty otherwise.
-    pub factor: String,
+    /// $\mathbb{Q}(v_0)$ (or $K(v_0)$) it is a root of, coefficients in $t = v_0$.
+    pub factor: Option<FactorAt>,
+    /// For a repeated eigenvalue whose factor is linear, $x - \lambda$: $\lambda$ exactly
+    /// ([`value`]).
+    pub value: Option<AlgebraicNumber>,
+}
+
+/// The irreducible factor of $P(x, v_0)$ a repeated eigenvalue is a root of.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FactorAt {
+    /// Over $\mathbb{Q}(v_0) = \mathbb{Q}[t]/(f)$, $f$ the minimal polynomial of $v_0$.
+    Q(Poly<NumberField>),
+    /// Over $K(v_0) = K[t]/(h)$, $K = \mathbb{Q}(\sqrt d)$ or $\mathbb{Q}(i)$.
+    K(Poly<over_k::RootField>),
+}
+
+impl FactorAt {
+    /// The degree of the factor in $x$.
+    pub fn deg(&self) -> usize {
+        match self {
+            FactorAt::Q(p) => p.deg(),
+            FactorAt::K(p) => p.deg(),
+        }
+    }
 }
 
 /// A critical value of the parameter.

@@ -4,7 +4,8 @@
 use super::approx::{approx_roots, approx_roots_q};
 use super::double::{double_blocks_exact, double_blocks_mod_p};
 use super::roots::rational_near;
-use super::{EigenvalueAt, Known};
+use super::value::value_over_q;
+use super::{EigenvalueAt, FactorAt, Known};
 use crate::algebraic::{AlgebraicNumber, NumberField, factor_over_number_field};
 use crate::error::{Error, Result};
 use crate::field::{Field, Rational, rational_to_f64};
@@ -18,7 +19,8 @@ fn simple(z: Complex<f64>) -> EigenvalueAt {
         approx: (z.re, z.im),
         multiplicity: 1,
         blocks: vec![1],
-        factor: String::new(),
+        factor: None,
+        value: None,
     }
 }
 
@@ -47,7 +49,7 @@ pub(super) fn structure_at(
     let s11 = k.from_poly(&kn.s1.0);
     if k.is_zero(&s11) {
         let pk = kn.p.at_nf(k);
-        let out = structure_general(kn.fam, k, &pk, &vq)?;
+        let out = structure_general(kn.fam, k, &pk, &vq, r)?;
         let rep = out.iter().any(|e| e.multiplicity > 1);
         return Ok((out, rep));
     }
@@ -69,20 +71,18 @@ pub(super) fn structure_at(
         }
     }
     let mut out: Vec<EigenvalueAt> = ev.into_iter().map(simple).collect();
-    let shown = format!(
-        "-({})/({})",
-        kn.s1.1.rem(f).to_string_var("t"),
-        kn.s1.0.rem(f).to_string_var("t")
+    // lambda = -s10(v0)/s11(v0) in Q(v0): the factor x - lambda and its exact value
+    let lambda = k.neg(
+        &k.div(&k.from_poly(&kn.s1.1), &s11)
+            .ok_or(Error::DivisionByZero)?,
     );
+    let factor = Poly::new(k.clone(), vec![k.neg(&lambda), k.one()]);
     out.push(EigenvalueAt {
         approx: (l, 0.0),
         multiplicity: 2,
         blocks,
-        factor: if shown.len() <= 400 {
-            format!("x - {shown}")
-        } else {
-            String::new()
-        },
+        value: Some(value_over_q(k, &lambda, r)?),
+        factor: Some(FactorAt::Q(factor)),
     });
     sort_eigs(&mut out);
     Ok((out, true))
@@ -96,6 +96,7 @@ fn structure_general(
     k: &NumberField,
     pk: &Poly<NumberField>,
     v0: &Rational,
+    r: &AlgebraicNumber,
 ) -> Result<Vec<EigenvalueAt>> {
     let mut a: Option<Matrix<NumberField>> = None;
     let mut out = vec![];
@@ -115,17 +116,19 @@ fn structure_general(
             } else {
                 vec![1]
             };
-            let factor = q.to_string();
+            let value = if mult > 1 && q.deg() == 1 {
+                Some(value_over_q(k, &k.neg(&q.monic().coeff(0)), r)?)
+            } else {
+                None
+            };
+            let factor = (mult > 1).then(|| FactorAt::Q(q.clone()));
             for z in approx_roots(k, &q, v0)? {
                 out.push(EigenvalueAt {
                     approx: (z.re, z.im),
                     multiplicity: mult,
                     blocks: blocks.clone(),
-                    factor: if mult > 1 {
-                        factor.clone()
-                    } else {
-                        String::new()
-                    },
+                    factor: factor.clone(),
+                    value: value.clone(),
                 });
             }
         }

@@ -15,11 +15,12 @@
 //! $U, V \in L[y]$, and an eigenvalue $iy$ on the axis ($y \ne 0$ real) is a nonzero real root
 //! of $\gcd(U, V)$, counted by Sturm's theorem with the signs of $L$.
 
-use super::super::EigenvalueAt;
 use super::super::approx::approx_roots;
 use super::super::imaginary::real_roots_by_sign;
 use super::super::roots::{rational_near, sign_at_root};
 use super::super::structure::{block_sizes, poly_of_matrix};
+use super::super::value::value_over_k;
+use super::super::{EigenvalueAt, FactorAt};
 use super::KFamily;
 use super::roots_k::{sign_at_real_root, split_parts};
 use crate::algebraic::{AlgebraicNumber, Ext, NumberField};
@@ -76,13 +77,19 @@ pub fn at_root(
     for (s, m) in pe.squarefree() {
         repeated |= m > 1;
         let blocks = blocks_of(&a, &s, m)?;
-        let factor = if m > 1 { s.to_string() } else { String::new() };
+        let factor = (m > 1).then(|| FactorAt::K(s.clone()));
+        let value = if m > 1 && s.deg() == 1 {
+            Some(value_over_k(&e, &e.neg(&s.monic().coeff(0)), r)?)
+        } else {
+            None
+        };
         for z in approx_roots_of(&s)? {
             eigenvalues.push(EigenvalueAt {
                 approx: (z.re, z.im),
                 multiplicity: m,
                 blocks: blocks.clone(),
                 factor: factor.clone(),
+                value: value.clone(),
             });
         }
     }

@@ -23,6 +23,7 @@
 //! (`imaginary_eigenvalue`).
 
 mod at_root;
+pub use at_root::RootField;
 pub(crate) mod roots_k;
 pub(crate) mod scalar;
 
