@@ -185,6 +185,8 @@ mod steps_discrete;
 mod steps_forms;
 #[path = "steps_normalize.rs"]
 mod steps_normalize;
+#[path = "steps_qp_forms.rs"]
+mod steps_qp_forms;
 #[path = "steps_systems.rs"]
 mod steps_systems;
 #[path = "study.rs"]

@@ -550,10 +550,15 @@ fn cli_steps_json_text_latex() {
 fn cli_steps_refusals_are_one_line_exit_2() {
     let f = "data/yaw-plane-single-wheel.json";
     // `mnf` and `jordan --real` have steps now (tests/steps_forms.rs); over Q(p) `jordan
-    // --real` is refused as the command itself is
+    // --real --steps` answers as the command itself does (tests/steps_qp_forms.rs)
+    let (code, out, err) = common::cli::run(&["jordan", f, "--real", "--steps", "--symbolic"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("real_form") && out.contains("verified: true"),
+        "{out}"
+    );
     for args in [
         vec!["standard", f, "--steps"],
-        vec!["jordan", f, "--real", "--steps", "--symbolic"],
         vec!["minreal", f, "--method", "era", "--steps"],
         vec!["jordan", "tests/data/sqrt2.toml", "--steps"],
         vec!["jordan", "tests/data/no-such-file.json", "--steps"],

@@ -653,20 +653,27 @@ fn cli_steps_for_mnf_standard_real_and_descriptor_files() {
 
 #[test]
 fn cli_steps_refusals_for_forms_are_one_line_exit_2() {
-    for args in [
-        vec!["standard", "data/yaw-plane-single-wheel.json", "--steps"],
-        // `zeros` and `jordan --real` of a descriptor file have steps now
-        // (tests/steps_descriptor.rs)
-        vec![
-            "jordan",
-            "tests/data/mnf_appendix_b.json",
-            "--real",
-            "--steps",
-        ],
-    ] {
-        let (code, out, err) = common::cli::run(&args);
-        assert_eq!(code, 2, "{args:?}: {err}");
-        assert!(out.is_empty());
-        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-    }
+    // `jordan --real --steps` over Q(w1, w2) answers now: two pairs, each with its identity
+    let j = common::cli::run_json(&[
+        "jordan",
+        "tests/data/mnf_appendix_b.json",
+        "--real",
+        "--steps",
+    ]);
+    assert_eq!(j["verified"], true);
+    let pairs: Vec<_> = j["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["step"] == "real_pair")
+        .collect();
+    assert_eq!(pairs.len(), 2);
+    assert!(pairs.iter().all(|s| s["holds"] == true));
+    // `zeros` and `jordan --real` of a descriptor file have steps now
+    // (tests/steps_descriptor.rs)
+    let args = ["standard", "data/yaw-plane-single-wheel.json", "--steps"];
+    let (code, out, err) = common::cli::run(&args);
+    assert_eq!(code, 2, "{args:?}: {err}");
+    assert!(out.is_empty());
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
 }

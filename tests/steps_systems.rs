@@ -769,3 +769,36 @@ fn cli_steps_for_scb_zeros_tf_minreal() {
     assert_eq!(code, 0, "{out}");
     assert!(out.contains("special coordinate basis"), "{out}");
 }
+
+/// Rosenbrock and Ho-Kalman steps over Q(m, k, c) (the chain of two masses): the staircase's
+/// similarity and zero pattern, the Hankel factorization and the minimal part's Markov
+/// parameters recomputed, with the conditions recorded (issue 27 Done-when over Q(p)).
+#[test]
+fn rosenbrock_and_ho_kalman_steps_over_qp() {
+    use exactlti::jordan::derivation::ratfunc_log;
+    let s0 = common::systems::chain_qp(2);
+    let k = s0.field().fresh();
+    let m = |x: &Matrix<exactlti::ratfunc::RatFuncField>| {
+        Matrix::from_vec(k.clone(), x.nrows(), x.ncols(), x.as_slice().to_vec())
+    };
+    let s = StateSpace::new(m(&s0.a), m(&s0.b), m(&s0.c), m(&s0.d)).unwrap();
+    let n = s.nstates();
+    let mut rec = Recorder::with_log(Method::Rosenbrock, k.clone(), ratfunc_log(&k));
+    minimal_rosenbrock_recorded(&s, Some(&mut rec)).unwrap();
+    let d = rec.finish();
+    assert!(d.verified());
+    let st: Vec<_> = d.of_kind(StepKind::Staircase).collect();
+    assert!(!st.is_empty());
+    check_staircase(st[0], &s).unwrap();
+    check_minimal_part(&d, &s).unwrap();
+    let mut rec = Recorder::with_log(Method::HoKalman, k.clone(), ratfunc_log(&k));
+    minimal_ho_kalman_recorded(&s, Some(&mut rec)).unwrap();
+    let d = rec.finish();
+    assert!(d.verified());
+    let h = d.of_kind(StepKind::Hankel).next().unwrap();
+    let h0 = exactlti::realization::hankel_matrix(&s, n, n, 0);
+    assert_eq!(mat(h, "H"), &h0);
+    let f = d.of_kind(StepKind::HankelFactor).next().unwrap();
+    assert_eq!(mat(f, "L") * mat(f, "R"), h0);
+    check_minimal_part(&d, &s).unwrap();
+}

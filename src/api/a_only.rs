@@ -9,6 +9,7 @@ use crate::field::{Field, Q};
 use crate::io::system_file::read_matrix_key;
 use crate::io::{FromScalars, Ground, InputError, read_system_file};
 use crate::jordan::EigenField;
+use crate::jordan::normalize::Normalization;
 use crate::matrix::Matrix;
 use crate::report::Value;
 use std::path::Path;
@@ -69,15 +70,27 @@ pub(super) fn a_command<K: Field + 'static>(
 ) -> Option<Result<Outcome, Failure>> {
     Some(match cmd {
         Command::Jordan {
-            normalize: Some(_), ..
-        } => Err(Failure::input(format!(
-            "{}: --normalize shows the normalised chains in the derivation: add --steps",
-            path.display()
-        ))),
-        Command::Jordan { real, expand, .. } => jordan_any(a, (*real, *expand), path),
+            real,
+            expand,
+            normalize,
+            ..
+        } => normalization(normalize.as_deref(), *real)
+            .and_then(|norm| jordan_any(a, (*real, *expand), &norm, path)),
         Command::Linalg { op, .. } => linalg_report(*op, a, path).map(Outcome::plain),
         _ => return None,
     })
+}
+
+/// `jordan --normalize X`: the chains' normalisation (none without the option); refused
+/// with `--real` (it normalises the chains of `jordan`, not the real form).
+pub(super) fn normalization(arg: Option<&str>, real: bool) -> Result<Normalization, Failure> {
+    match arg {
+        None => Ok(Normalization::default()),
+        Some(_) if real => Err(Failure::input(
+            "--normalize: applies to the chains of `jordan`, not to the real form of `jordan --real`".to_string(),
+        )),
+        Some(n) => n.parse().map_err(Failure::input),
+    }
 }
 
 /// `jordan [--real]` over the fields that have an exact Jordan form: Q, and a quadratic
@@ -85,16 +98,17 @@ pub(super) fn a_command<K: Field + 'static>(
 fn jordan_any<K: Field + 'static>(
     a: &Matrix<K>,
     how: (bool, bool),
+    norm: &Normalization,
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let any = a as &dyn std::any::Any;
     if let Some(q) = any.downcast_ref::<Matrix<Q>>() {
-        return jordan_cmd(q, how, path);
+        return jordan_cmd(q, how, norm, path);
     }
     if let Some(k) = any.downcast_ref::<Matrix<crate::field::QuadraticField>>() {
         return match crate::matrix::to_rational_matrix(k) {
-            Some(q) => jordan_cmd(&q, how, path),
-            None => jordan_cmd(k, how, path),
+            Some(q) => jordan_cmd(&q, how, norm, path),
+            None => jordan_cmd(k, how, norm, path),
         };
     }
     let e = Error::Unsupported(format!("Jordan form over {}", a.field()));
@@ -106,6 +120,7 @@ fn jordan_any<K: Field + 'static>(
 fn jordan_cmd<F: EigenField>(
     a: &Matrix<F>,
     (real, expand): (bool, bool),
+    norm: &Normalization,
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let e = |err| with_path(path, err);
@@ -124,7 +139,12 @@ fn jordan_cmd<F: EigenField>(
             k.fmt_elem(a.get(i, j))
         )));
     }
-    let jf = crate::jordan::jordan_over(a).map_err(e)?;
+    let mut jf = crate::jordan::jordan_over(a).map_err(e)?;
+    if !norm.is_none() {
+        let closed = crate::jordan::normalize::normalize_form(&mut jf, norm).map_err(e)?;
+        let r = crate::report::steps_norm::normalized_form_report(&jf, norm, &closed);
+        return Ok(Outcome::new(r, jf.verified));
+    }
     if real {
         let rf = jf.real_form_with(expand).map_err(e)?;
         // a real form left in complex coordinates (exact = false) is not checked

@@ -21,10 +21,9 @@ use crate::field::Q;
 use crate::io::TypedAny;
 use crate::io::TypedSystem;
 use crate::io::symbolic::SymbolicOptions;
-use crate::jordan::derivation::{
-    AssumptionLog, Derivation, Method, Object, Recorder, Step, ratfunc_log,
-};
+use crate::jordan::derivation::{AssumptionLog, Derivation, Method, Recorder, ratfunc_log};
 use crate::jordan::normalize::Normalization;
+use crate::jordan::real_steps::lift_derivation;
 use crate::report::steps::derivation_report;
 use crate::report::steps_latex::derivation_latex;
 use crate::system::{Descriptor, StateSpace};
@@ -46,6 +45,10 @@ enum What {
     Mnf,
     /// `minreal --descriptor`.
     DescriptorMinimal,
+    /// `contributions [--keep K]`.
+    Contributions(Option<usize>),
+    /// `response --x0 ...` (the free response).
+    Response,
 }
 
 /// `--steps` for a case it does not cover (exit 2; Python's `UnsupportedError`).
@@ -53,7 +56,7 @@ fn refuse(message: String) -> Failure {
     Failure::unsupported(message)
 }
 
-const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf`, `minreal --method kalman|jordan|rosenbrock|ho-kalman` and `minreal --descriptor` (not for `minreal --method era`)";
+const AVAILABLE: &str = "--steps: available for `jordan` (also --real), `scb`, `zeros`, `tf`, `standard`, `mnf`, `minreal --method kalman|jordan|rosenbrock|ho-kalman`, `minreal --descriptor`, `contributions` and `response` (not for `minreal --method era`)";
 
 /// The file and the derivation `cmd` asks for.
 fn what(cmd: &Command) -> Option<(&Path, What)> {
@@ -82,6 +85,10 @@ fn what(cmd: &Command) -> Option<(&Path, What)> {
         Command::Tf { file } => (file, What::Tf),
         Command::Standard { file } => (file, What::Standard),
         Command::Mnf { file } => (file, What::Mnf),
+        Command::Response(super::ResponseCmd::Contributions { file, keep }) => {
+            (file, What::Contributions(*keep))
+        }
+        Command::Response(super::ResponseCmd::Response { file, .. }) => (file, What::Response),
         _ => return None,
     })
 }
@@ -307,6 +314,21 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
         };
     }
     match (&loaded.system, what) {
+        (TypedAny::Rational(t), What::Contributions(keep)) if !descriptor => {
+            let d = crate::realization::contribution_steps::contributions_steps(&t.ss, keep);
+            out.show(&d.map_err(e)?)
+        }
+        (TypedAny::Rational(t), What::Response) if !descriptor => {
+            let x0 = exact_x0(cmd, t.ss.nstates())?;
+            let d = crate::realization::contribution_steps::response_steps(&t.ss.a, &x0);
+            out.show(&d.map_err(e)?)
+        }
+        (_, What::Contributions(_) | What::Response) => Err(refuse(format!(
+            "{}: --steps for `contributions` and `response` derives over QQ (a system without E and exact numbers in --x0); this file's entries lie in {}{}",
+            path_text(file),
+            loaded.file.ground,
+            if descriptor { " and it has E" } else { "" }
+        ))),
         (TypedAny::Rational(t), What::Jordan) => out.show(&jordan_q(t, &norm).map_err(e)?),
         (TypedAny::Rational(t), What::RealJordan(expand)) => {
             out.show(&real_jordan_q(t, expand).map_err(e)?)
@@ -322,14 +344,32 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             first.steps.extend(then.steps);
             out.show(&first)
         }
-        (TypedAny::Rational(t), What::JordanMethod) if t.descriptor.is_none() => {
-            out.show(&crate::realization::steps::jordan_method_steps(&t.ss).map_err(e)?)
+        (TypedAny::Rational(t), What::JordanMethod) => {
+            let run = |ss: &StateSpace<Q>| crate::realization::steps::jordan_method_steps(ss);
+            out.show(&through_standard(&t.ss, t.descriptor.as_ref(), None, run).map_err(e)?)
+        }
+        (TypedAny::RatFunc(t), What::JordanMethod) => {
+            let k = t.ss.field().fresh();
+            let t = t.in_field(&k);
+            let run = crate::realization::steps::jordan_method_steps_qp;
+            let log = || Some(ratfunc_log(&k));
+            out.show(&through_standard(&t.ss, t.descriptor.as_ref(), log(), run).map_err(e)?)
+        }
+        (TypedAny::RatFunc(t), What::RealJordan(_)) => {
+            let k = t.ss.field().fresh();
+            let t = t.in_field(&k);
+            let run = |ss: &StateSpace<_>| crate::jordan::real_steps::real_jordan_steps_qp(&ss.a);
+            let log = || Some(ratfunc_log(&k));
+            let d = match &t.descriptor {
+                None => crate::jordan::real_steps::real_jordan_steps_qp(&t.a_raw),
+                Some(d) => through_standard(&t.ss, Some(d), log(), run),
+            };
+            out.show(&d.map_err(e)?)
         }
         (_, What::Jordan | What::JordanMethod | What::RealJordan(_)) => Err(refuse(format!(
-            "{}: --steps for this command needs rational entries (this file's lie in {}){}",
+            "{}: --steps for this command needs rational entries or entries in QQ(p) (this file's lie in {})",
             path_text(file),
             loaded.file.ground,
-            if descriptor { " and no E" } else { "" }
         ))),
         (TypedAny::Rational(t), w) => {
             out.show(&any_steps(&t.ss, t.descriptor.as_ref(), w, &|| None).map_err(e)?)
@@ -345,6 +385,31 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             out.show(&any_steps(&t.ss, t.descriptor.as_ref(), w, &log).map_err(e)?)
         }
     }
+}
+
+/// The exact initial state of `response --x0` ($n$ rational entries).
+fn exact_x0(cmd: &Command, n: usize) -> Result<crate::matrix::Matrix<Q>, Failure> {
+    let Command::Response(super::ResponseCmd::Response { x0, .. }) = cmd else {
+        return Err(Failure::input("internal: not `response`".to_string()));
+    };
+    let xs: Vec<&str> = x0.split(',').map(str::trim).collect();
+    if xs.len() != n {
+        return Err(Failure::input(format!(
+            "--x0 needs {n} comma-separated entries (the state has {n}), got {}",
+            xs.len()
+        )));
+    }
+    let vals = xs
+        .iter()
+        .map(|x| {
+            crate::field::parse_rational(x).map_err(|m| {
+                Failure::unsupported(format!(
+                    "--x0 entry \"{x}\": {m} (--steps derives from exact numbers; the response in symbols is `response` without --steps)"
+                ))
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(crate::matrix::Matrix::column(Q, vals))
 }
 
 /// The chains' normalisation `jordan --normalize` asks for (none for the other commands).
@@ -430,6 +495,25 @@ fn descriptor_file(file: &Path, out: &Render) -> Option<Result<Outcome, Failure>
     (l.has_e && l.pencil.is_none() && l.transfer.is_none()).then(|| l.run(Visit(file, out)))
 }
 
+/// A derivation over an extension of $F$ of the system (`run`), a descriptor system through
+/// its standard form first (its steps over $F$ lifted, then `run`'s on the standard system).
+fn through_standard<'a, F: Field>(
+    ss: &StateSpace<F>,
+    descriptor: Option<&Descriptor<F>>,
+    log: Option<AssumptionLog<'a, F>>,
+    run: impl Fn(&StateSpace<F>) -> crate::error::Result<Derivation<crate::algebraic::Ext<F>>>,
+) -> crate::error::Result<Derivation<crate::algebraic::Ext<F>>> {
+    let Some(d) = descriptor else {
+        return run(ss);
+    };
+    let (first, ss) = standard_steps(d, log)?;
+    let mut out = run(&ss)?;
+    let mut steps = lift_derivation(&first, &out.field).steps;
+    steps.append(&mut out.steps);
+    out.steps = steps;
+    Ok(out)
+}
+
 /// `jordan --steps` over $\mathbb{Q}$; for a descriptor system the steps of its standard
 /// form (lifted into the rationals as a number field of degree 1), then the Jordan steps of
 /// the standard form's $A$ (the finite dynamics `jordan` reports).
@@ -465,38 +549,6 @@ fn real_jordan_q(
     steps.append(&mut out.steps);
     out.steps = steps;
     Ok(out)
-}
-
-/// A derivation over $\mathbb{Q}$ as one over the rationals as a number field.
-fn lift_derivation(d: &Derivation<Q>, q: &NumberField) -> Derivation<NumberField> {
-    let lift = |x: &<Q as Field>::Elem| q.from_rational(x);
-    let obj = |o: &Object<Q>| match o {
-        Object::Matrix(m) => Object::Matrix(m.map(q, lift)),
-        Object::Poly(p) => Object::Poly(p.map(q, lift)),
-        Object::Factors(f) => {
-            Object::Factors(f.iter().map(|(p, e)| (p.map(q, lift), *e)).collect())
-        }
-        Object::Scalar(x) => Object::Scalar(lift(x)),
-        Object::Count(c) => Object::Count(*c),
-        Object::Counts(c) => Object::Counts(c.clone()),
-        Object::Polys(ps) => Object::Polys(ps.iter().map(|p| p.map(q, lift)).collect()),
-    };
-    Derivation {
-        method: d.method,
-        field: q.clone(),
-        variable: d.variable,
-        steps: d
-            .steps
-            .iter()
-            .map(|s| Step {
-                kind: s.kind,
-                part: s.part,
-                objects: s.objects.iter().map(|(k, o)| (*k, obj(o))).collect(),
-                holds: s.holds,
-                assumes: s.assumes.iter().map(lift).collect(),
-            })
-            .collect(),
-    }
 }
 
 fn path_text(p: &Path) -> String {

@@ -44,6 +44,10 @@ pub enum Method {
     /// A minimal descriptor realization (`minreal --descriptor`): Weierstrass split, finite
     /// and infinite parts reduced, non-dynamic modes removed.
     DescriptorMinimal,
+    /// Mode contributions (minimal-realization paper eq. 33) and truncation by contribution.
+    Contributions,
+    /// The free response $x(t) = e^{At} x_0$ in closed form.
+    FreeResponse,
 }
 
 /// What a step computes; each kind has one sentence and one identity (see `report::steps`).
@@ -219,6 +223,29 @@ pub enum StepKind {
     /// The real Jordan basis $T$ (real chains and the pairs' real columns) and the real $J$:
     /// $A T = T J$, $T$ invertible, over one real field. Objects: `T`, `J`.
     RealForm,
+    /// The spectral projector of one irreducible factor $p$ of $\chi_A$: $P_p = V_p R_p$ and the
+    /// part $(A_p, B_p, C_p) = (R_p A V_p, R_p B, C V_p)$; identity $R_p V_p = I$, $A V_p = V_p
+    /// A_p$, $P_p^2 = P_p$. Objects: `f`, `P`, `V`, `R`, `Ap`, `Bp`, `Cp`.
+    SpectralProjector,
+    /// The residues $H_k = C G_{\theta,k} B$ of the mode at the generic root (side by side);
+    /// identity $\sum_{\text{conj}} H_0 = C_p B_p$. Objects: `theta`, `H`, `deg`.
+    ModeResidues,
+    /// The mode's weight: $\|G_p\|_2^2 = \operatorname{tr}(C_p W C_p^T)$ with the Lyapunov
+    /// identity $A_p W + W A_p^T + B_p B_p^T = 0$ (`W`, `h2`), or `zero` (all Markov
+    /// parameters 0) or `infinite` (not stable).
+    ModeWeight,
+    /// The projectors add up to $I$ and the parts to $G$: $\sum_p P_p = I$, $\sum_p C_p A_p^k
+    /// B_p = C A^k B$ ($k < 2n$); the modes ranked heaviest first. Objects: `n`, `order`.
+    ModeRanking,
+    /// The truncated realization $(A_K, B_K, C_K, D)$ and its error $E = G - G_K$: $E(0)$,
+    /// its first Markov parameter, its $H_2^2$. Objects: `kept`, `Ak`, `Bk`, `Ck`, `dc`, `M0`,
+    /// `h2`.
+    TruncationError,
+    /// The free response's vectors of one factor at its generic root: $g_k = G_{\theta,k} x_0$,
+    /// identity $A g_k = \theta g_k + (k+1) g_{k+1}$. Objects: `theta`, `g`, `deg`.
+    FreeTerms,
+    /// $x(0) = \sum_p \operatorname{Tr} g_{p,0} = x_0$. Objects: `x0`.
+    InitialState,
 }
 
 /// An exact object a step computed.

@@ -266,3 +266,72 @@ pub fn normalized_holds<K: Field>(
     };
     super::steps::is_chain(nm, w) && same_span && orth && scaled
 }
+
+/// A chain whose unit length is in closed form after [`normalize_form`]: the columns
+/// `first..first + len` of its component's chains are shown as $V'$, the normalised chain
+/// being $V' / \sqrt n$.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClosedUnit<E> {
+    /// Index of the component (irreducible factor) in the Jordan form.
+    pub component: usize,
+    /// First column of the chain among the component's chains, and its length.
+    pub first: usize,
+    pub len: usize,
+    /// $n = v_1 \cdot v_1$ (in the component's field $E$).
+    pub n: E,
+}
+
+/// The chains of a Jordan form normalised as `how` asks (`jordan --normalize` without
+/// `--steps`): in every component each chain $V$ is replaced by [`normalize_chain`]'s $V'$
+/// (in $E = F\[t\]/(g)$ at the generic root, so every conjugate root's columns follow by
+/// embedding) and the left chains by $W' = (W V')^{-1} W$ (so $W' V' = I$). $T$ changes,
+/// $J$ does not; $A V' = V' J_t$, $W' A = J_t W'$, $W' V' = I$ are checked again
+/// ([`super::primary::Component::verify`]) and `verified` keeps only what held. Returns the
+/// chains whose unit length is in closed form.
+///
+/// # Errors
+/// As [`normalize_chain`]; `Verification` when $W V'$ is singular (it cannot be: $V'$ spans
+/// the chains' space).
+pub fn normalize_form<F: Field>(
+    jf: &mut super::JordanForm<F>,
+    how: &Normalization,
+) -> Result<Vec<ClosedUnit<crate::algebraic::ExtElem<F::Elem>>>> {
+    let mut closed = vec![];
+    if how.is_none() {
+        return Ok(closed);
+    }
+    let a = jf.a.clone();
+    let mut ok = jf.verified;
+    for (ci, comp) in jf.components.iter_mut().enumerate() {
+        let real = comp
+            .roots
+            .first()
+            .map_or(comp.degree() == 1, |z| z.1 == 0.0);
+        let n = comp.chains.nrows();
+        let mut v = comp.chains.clone();
+        let mut off = 0;
+        for &s in &comp.blocks {
+            let chain = comp.chains.submatrix(0, n, off, off + s);
+            let c = normalize_chain(&chain, how, real)?;
+            v.set_block(0, off, &c.v);
+            if let UnitLength::ClosedForm { n } = c.unit {
+                closed.push(ClosedUnit {
+                    component: ci,
+                    first: off,
+                    len: s,
+                    n,
+                });
+            }
+            off += s;
+        }
+        let wv = comp.left_chains.try_mul(&v)?;
+        let inv = wv
+            .inverse()
+            .map_err(|_| Error::Verification("normalised chains: W V' is singular".into()))?;
+        comp.left_chains = inv.try_mul(&comp.left_chains)?;
+        comp.chains = v;
+        ok &= comp.verify(&a);
+    }
+    jf.verified = ok;
+    Ok(closed)
+}

@@ -74,6 +74,10 @@ pub struct ModeContribution {
     pub eigenvalues: Vec<usize>,
     /// The part on the generalized eigenspace: $(A_p, B_p, C_p)$, order $\deg p \cdot$ mult.
     pub part: StateSpace<Q>,
+    /// The spectral projector $P_p = V_p R_p$: $V_p$ (its pivot columns) and $R_p$ (the rows of
+    /// its RREF), $R_p V_p = I$, $A V_p = V_p A_p$.
+    pub basis: Matrix<Q>,
+    pub rows: Matrix<Q>,
     /// Residues $H_{\theta,k} = C G_{\theta,k} B$ in the component field, $k = 0, 1, \dots$.
     pub residues: Vec<Matrix<NumberField>>,
     pub weight: Weight,
@@ -185,6 +189,8 @@ pub fn contributions(ss: &StateSpace<Q>) -> Result<Contributions> {
             component: ci,
             eigenvalues,
             part,
+            basis: v,
+            rows: r,
             residues,
             weight,
         });

@@ -23,6 +23,7 @@
 
 mod as_written;
 pub mod contribution;
+pub mod contribution_steps;
 mod controllability;
 mod ctrb_structure;
 mod damp;

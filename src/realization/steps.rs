@@ -12,7 +12,8 @@
 //! $C A^k B = C_2 A_{22}^k B_2$ ($k < n + r$), $r$ = McMillan degree.
 //!
 //! **Jordan method** (over $\mathbb{Q}$, one number field $K_p = \mathbb{Q}\[t\]/(p)$ per
-//! irreducible factor): per eigenvalue the modal data $(J_\theta, WB, CV)$; the states dropped
+//! irreducible factor; over $\mathbb{Q}(p)$ one $E = \mathbb{Q}(p)\[t\]/(g)$ per factor, with
+//! the conditions of each step): per eigenvalue the modal data $(J_\theta, WB, CV)$; the states dropped
 //! (after the last excited one in their block: not excited; before the first observed one:
 //! not observed) with the check that the block's Markov parameters are unchanged; the
 //! compaction of repeated modes (a minimal realization of $(N, WB, CV)$ in Jordan form, Markov
@@ -20,15 +21,20 @@
 //! check of [`super::minimal_jordan`].
 
 use super::controllability::{controllability_matrix, mcmillan_degree, observability_matrix};
-use super::jordan_core::{base_times as rational_times, drop_modes, times_base as times_rational};
+use super::jordan_core::{
+    base_times as rational_times, compact_components, drop_modes, times_base as times_rational,
+};
 use super::kalman::kalman_decomposition;
 use super::minimal::minimal_kalman;
-use crate::algebraic::NumberField;
+use crate::algebraic::{Ext, NumberField};
 use crate::error::Result;
 use crate::field::{Field, Q};
 use crate::jordan::chains::{jordan_block_matrix, jordan_chains};
 use crate::jordan::derivation::{AssumptionLog, Derivation, Method, Object, Recorder, StepKind};
+use crate::jordan::primary::Component;
+use crate::jordan::real_steps::{degree_one, lift_log};
 use crate::matrix::Matrix;
+use crate::ratfunc::RatFuncField;
 use crate::system::StateSpace;
 
 /// The Kalman minimal realization step by step (module docs); `log` gives the assumptions
@@ -198,101 +204,150 @@ fn dropped<K: Field>(
 /// As [`super::minimal_jordan`].
 pub fn jordan_method_steps(sys: &StateSpace<Q>) -> Result<Derivation<NumberField>> {
     let q = crate::jordan::primary::rational_field();
-    let mut rec = Recorder::new(Method::JordanMethod, q);
-    let jf = crate::jordan::jordan(&sys.a)?;
+    let rec = Recorder::new(Method::JordanMethod, q);
+    jordan_method_recorded(sys, rec, || Ok(crate::jordan::jordan(&sys.a)?.components))
+}
+
+/// The Jordan-form minimal realization over $\mathbb{Q}(p)$ step by step: the components of
+/// [`crate::jordan::over_qp::components_qp`] (eigenvalues in $\mathbb{Q}(p)$ as Jordan
+/// blocks, the roots of a factor of degree $\ge 2$ at its generic root $t$ in
+/// $E = \mathbb{Q}(p)\[t\]/(g)$), then the steps of [`jordan_method_steps`]; every step lists
+/// the polynomials in the parameters it assumes nonzero (the first one those of the
+/// factorization and of the chains: leading coefficients, discriminants, resultants, pivots).
+///
+/// # Errors
+/// As [`super::minimal_jordan_qp`].
+pub fn jordan_method_steps_qp(
+    sys_in: &StateSpace<RatFuncField>,
+) -> Result<Derivation<Ext<RatFuncField>>> {
+    let k = sys_in.field().fresh();
+    let m = |x: &Matrix<RatFuncField>| {
+        Matrix::from_vec(k.clone(), x.nrows(), x.ncols(), x.as_slice().to_vec())
+    };
+    let sys = StateSpace::new(m(&sys_in.a), m(&sys_in.b), m(&sys_in.c), m(&sys_in.d))?;
+    let e0 = degree_one(&k);
+    let log = lift_log(&e0, crate::jordan::derivation::ratfunc_log(&k));
+    let rec = Recorder::with_log(Method::JordanMethod, e0, log);
+    jordan_method_recorded(&sys, rec, || {
+        Ok(crate::jordan::over_qp::components_qp(&sys.a)?.1)
+    })
+}
+
+/// The steps of the Jordan method over any field with [`Component`]s of $A$ (computed by
+/// `components` after the recorder started, so that their conditions are recorded).
+fn jordan_method_recorded<F: Field + 'static>(
+    sys: &StateSpace<F>,
+    mut rec: Recorder<'_, Ext<F>>,
+    components: impl FnOnce() -> Result<Vec<Component<F>>>,
+) -> Result<Derivation<Ext<F>>> {
+    let comps = components()?;
     let (mut stage1, mut stage2) = (0, 0);
-    for (part, comp) in jf.components.iter().enumerate() {
-        let k = comp.field.clone();
-        let d = comp.degree();
-        let theta = comp.root_elem();
-        let bk = times_rational(&comp.left_chains, &sys.b);
-        let ck = rational_times(&sys.c, &comp.chains);
-        let j = comp.jordan_matrix();
-        let m = j.nrows();
-        rec.push(
-            StepKind::ModalData,
-            Some(part),
-            vec![
-                ("theta", Object::Scalar(theta.clone())),
-                ("deg", Object::Count(d)),
-                ("J", Object::Matrix(j.clone())),
-                ("WB", Object::Matrix(bk.clone())),
-                ("CV", Object::Matrix(ck.clone())),
-            ],
-            None,
-        );
-        let (keep, sizes) = drop_modes(&comp.blocks, &bk, &ck);
-        let (not_exc, not_obs) = dropped(&comp.blocks, &keep, &bk, &ck);
-        let jk = jordan_block_matrix(&k, &theta, &sizes);
-        let (bkk, ckk) = (bk.select_rows(&keep), ck.select_cols(&keep));
-        let full = StateSpace::new_strictly_proper(j, bk, ck)?;
-        let kept = StateSpace::new_strictly_proper(jk.clone(), bkk.clone(), ckk.clone())?;
-        let ok = full.same_markov(&kept, 2 * m + 1);
-        stage1 += keep.len() * d;
-        rec.push(
-            StepKind::DropModes,
-            Some(part),
-            vec![
-                ("kept", Object::Counts(keep.clone())),
-                ("not_excited", Object::Counts(not_exc)),
-                ("not_observed", Object::Counts(not_obs)),
-                ("deg", Object::Count(d)),
-                ("Jk", Object::Matrix(jk)),
-                ("Bk", Object::Matrix(bkk.clone())),
-                ("Ck", Object::Matrix(ckk.clone())),
-            ],
-            Some(ok),
-        );
-        if keep.is_empty() {
-            continue;
-        }
-        let nilp = jordan_block_matrix(&k, &k.zero(), &sizes);
-        let min = minimal_kalman(&StateSpace::new_strictly_proper(nilp, bkk, ckk)?)?.system;
-        let r = min.nstates();
-        let (jn, bn, cn) = if r == 0 {
-            let z = |a, b| Matrix::zeros(k.clone(), a, b);
-            (z(0, 0), z(0, sys.ninputs()), z(sys.noutputs(), 0))
-        } else {
-            let ch = jordan_chains(&min.a, r)?;
-            (
-                jordan_block_matrix(&k, &theta, &ch.blocks),
-                &ch.w * &min.b,
-                &min.c * &ch.v,
-            )
-        };
-        let compact = StateSpace::new_strictly_proper(jn.clone(), bn.clone(), cn.clone())?;
-        let ok = kept.same_markov(&compact, 2 * m + 1);
-        stage2 += r * d;
-        let real = k.approx(&theta).1 == 0.0;
-        let norm_step = (r > 0 && r < keep.len() && real).then(|| (kept.clone(), compact.clone()));
-        rec.push(
-            StepKind::Compaction,
-            Some(part),
-            vec![
-                ("J", Object::Matrix(jn)),
-                ("B", Object::Matrix(bn)),
-                ("C", Object::Matrix(cn)),
-                ("order", Object::Count(r)),
-                ("deg", Object::Count(d)),
-            ],
-            Some(ok),
-        );
-        if let Some((kept, compact)) = norm_step {
-            norm_match(&mut rec, part, &kept, &compact);
-        }
+    for (part, comp) in comps.iter().enumerate() {
+        let (s1, s2) = component_steps(&mut rec, part, sys, comp)?;
+        stage1 += s1;
+        stage2 += s2;
     }
-    let jm = super::minimal_jordan(sys)?;
-    let ok = jm.verified && jm.stages == [sys.nstates(), stage1, stage2];
+    let c = compact_components(sys, &comps)?;
+    let ok = c.verified && c.stages == [sys.nstates(), stage1, stage2];
     rec.push(
         StepKind::Stages,
         None,
         vec![
-            ("stages", Object::Counts(jm.stages.to_vec())),
-            ("mcmillan", Object::Count(jm.mcmillan_degree)),
+            ("stages", Object::Counts(c.stages.to_vec())),
+            ("mcmillan", Object::Count(c.mcmillan_degree)),
         ],
         Some(ok),
     );
     Ok(rec.finish())
+}
+
+/// The modal data, dropped modes and compaction of one component; returns its states after
+/// dropping and after compacting (times the degree of its factor).
+fn component_steps<F: Field + 'static>(
+    rec: &mut Recorder<'_, Ext<F>>,
+    part: usize,
+    sys: &StateSpace<F>,
+    comp: &Component<F>,
+) -> Result<(usize, usize)> {
+    let k = comp.field.clone();
+    let d = comp.degree();
+    let theta = comp.root_elem();
+    let bk = times_rational(&comp.left_chains, &sys.b);
+    let ck = rational_times(&sys.c, &comp.chains);
+    let j = comp.jordan_matrix();
+    let m = j.nrows();
+    rec.push(
+        StepKind::ModalData,
+        Some(part),
+        vec![
+            ("theta", Object::Scalar(theta.clone())),
+            ("deg", Object::Count(d)),
+            ("J", Object::Matrix(j.clone())),
+            ("WB", Object::Matrix(bk.clone())),
+            ("CV", Object::Matrix(ck.clone())),
+        ],
+        None,
+    );
+    let (keep, sizes) = drop_modes(&comp.blocks, &bk, &ck);
+    let (not_exc, not_obs) = dropped(&comp.blocks, &keep, &bk, &ck);
+    let jk = jordan_block_matrix(&k, &theta, &sizes);
+    let (bkk, ckk) = (bk.select_rows(&keep), ck.select_cols(&keep));
+    let full = StateSpace::new_strictly_proper(j, bk, ck)?;
+    let kept = StateSpace::new_strictly_proper(jk.clone(), bkk.clone(), ckk.clone())?;
+    let ok = full.same_markov(&kept, 2 * m + 1);
+    let stage1 = keep.len() * d;
+    rec.push(
+        StepKind::DropModes,
+        Some(part),
+        vec![
+            ("kept", Object::Counts(keep.clone())),
+            ("not_excited", Object::Counts(not_exc)),
+            ("not_observed", Object::Counts(not_obs)),
+            ("deg", Object::Count(d)),
+            ("Jk", Object::Matrix(jk)),
+            ("Bk", Object::Matrix(bkk.clone())),
+            ("Ck", Object::Matrix(ckk.clone())),
+        ],
+        Some(ok),
+    );
+    if keep.is_empty() {
+        return Ok((stage1, 0));
+    }
+    let nilp = jordan_block_matrix(&k, &k.zero(), &sizes);
+    let min = minimal_kalman(&StateSpace::new_strictly_proper(nilp, bkk, ckk)?)?.system;
+    let r = min.nstates();
+    let (jn, bn, cn) = if r == 0 {
+        let z = |a, b| Matrix::zeros(k.clone(), a, b);
+        (z(0, 0), z(0, sys.ninputs()), z(sys.noutputs(), 0))
+    } else {
+        let ch = jordan_chains(&min.a, r)?;
+        (
+            jordan_block_matrix(&k, &theta, &ch.blocks),
+            &ch.w * &min.b,
+            &min.c * &ch.v,
+        )
+    };
+    let compact = StateSpace::new_strictly_proper(jn.clone(), bn.clone(), cn.clone())?;
+    let ok = kept.same_markov(&compact, 2 * m + 1);
+    // a real root: the first root's approximation (over QQ(p): an eigenvalue in QQ(p))
+    let real = comp.roots.first().map_or(d == 1, |z| z.1 == 0.0);
+    let norm_step = (r > 0 && r < keep.len() && real).then(|| (kept.clone(), compact.clone()));
+    rec.push(
+        StepKind::Compaction,
+        Some(part),
+        vec![
+            ("J", Object::Matrix(jn)),
+            ("B", Object::Matrix(bn)),
+            ("C", Object::Matrix(cn)),
+            ("order", Object::Count(r)),
+            ("deg", Object::Count(d)),
+        ],
+        Some(ok),
+    );
+    if let Some((kept, compact)) = norm_step {
+        norm_match(rec, part, &kept, &compact);
+    }
+    Ok((stage1, r * d))
 }
 
 /// The minimal-realization paper's choice after eq. 36: the compacted block $(J, \tilde B,

@@ -16,6 +16,7 @@ pub(crate) mod steps;
 pub(crate) mod steps_forms;
 pub mod steps_html;
 pub mod steps_latex;
+pub(crate) mod steps_modes;
 pub(crate) mod steps_more;
 pub(crate) mod steps_norm;
 pub(crate) mod summary;

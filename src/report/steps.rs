@@ -70,10 +70,14 @@ pub(crate) fn in_variable_math(text: &str, var: &str) -> String {
         .join("$")
 }
 
-/// The name of a derivation's field (the rationals as a number field of degree 1: `QQ`).
+/// The name of a derivation's field (a field $F$ as its extension of degree 1,
+/// $F\[t\]/(t)$: $F$, so the rationals as a number field of degree 1 are `QQ`).
 pub fn field_name<K: Field>(k: &K) -> String {
     let s = k.to_string();
-    if s.ends_with("/(t)") { "QQ".into() } else { s }
+    match s.strip_suffix("[t]/(t)") {
+        Some(base) => base.to_string(),
+        None => s,
+    }
 }
 
 /// The method's title.
@@ -438,11 +442,14 @@ pub fn derivation_report<K: Field>(d: &Derivation<K>) -> Report {
         .enumerate()
         .map(|(i, s)| Value::Obj(step_report(d, i, s)))
         .collect();
-    let conds: Vec<String> = d
-        .assumptions()
-        .iter()
-        .map(|x| format!("{} != 0", d.field.fmt_elem(x)))
-        .collect();
+    let mut conds: Vec<String> = vec![];
+    for x in d.assumptions() {
+        // parts derived in fields of their own may assume the same polynomial
+        let c = format!("{} != 0", d.field.fmt_elem(x));
+        if !conds.contains(&c) {
+            conds.push(c);
+        }
+    }
     let mut r = Report::titled(title(d.method))
         .str("field", field_name(&d.field))
         .list("steps", steps);

@@ -185,6 +185,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
         ),
         StepKind::RealPair if c("compact") == 1 => "A complex pair whose real field K(Re theta, Im theta) is large: kept in the compact form (its complex chains above; T_R = [Re V, Im V]).".into(),
         StepKind::RealForm => "The real Jordan form: T = [the real eigenvalues' chains, the pairs' real columns] and J = diag(their Jordan blocks, the real pair blocks), over one real field.".into(),
+        StepKind::RealPair if s.get("w2").is_some() => "The quadratic factor x^2 + c1 x + c0: its roots theta = alpha +- i w with alpha = -c1/2 (re) and w^2 = c0 - c1^2/4 (w2), w a symbol, are a complex pair where the discriminant c1^2 - 4 c0 (disc) is < 0 (assumed for this real form; where it is > 0 the roots are real). The chain v_j = p_j + q_j t shown above (t the generic root) gives the real columns x_j = p_j + alpha q_j, y_j = w q_j and the blocks [[alpha, w], [-w, alpha]] with I_2 above the diagonal; A Tc = Tc Jc is checked in QQ(p)[w]/(w^2 - w2) by ring operations only, so it holds for either square root.".into(),
         StepKind::RealPair => "A complex pair theta = a + b i, conj(theta): the chain v_1..v_k of theta gives the real columns x_j = Re v_j, y_j = Im v_j, and A(x + i y) = (a + b i)(x + i y) gives A x = a x - b y, A y = b x + a y: the blocks [[a, b], [-b, a]] with I_2 above the diagonal.".into(),
         _ => super::steps_norm::sentence(d, s),
     }
@@ -210,6 +211,7 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
         StepKind::StandardForm => "The standard form $\\dot z = A_s z + B_s u$, $y = C_s z + D_s u$.".into(),
         StepKind::RealPair if c("compact") == 1 => "A complex pair whose real field is large: kept in the compact form.".into(),
         StepKind::RealForm => "The real Jordan form: $T$ = the real eigenvalues' chains beside the pairs' real columns, $J$ = their Jordan blocks beside the real pair blocks, over one real field.".into(),
+        StepKind::RealPair if st.get("w2").is_some() => "The quadratic factor $x^2 + c_1 x + c_0$: its roots $\\theta = \\alpha \\pm i w$ with $\\alpha = -c_1/2$ and $w^2 = c_0 - c_1^2/4$ ($w$ a symbol) are a complex pair where $c_1^2 - 4c_0 < 0$ (assumed for this real form). The chains $v_j = p_j + q_j t$ above ($t$ the generic root) give the real columns $x_j = p_j + \\alpha q_j$, $y_j = w q_j$ and the blocks $[\\alpha,\\ w;\\ -w,\\ \\alpha]$ (with $I_2$ above the diagonal); $A T_c = T_c J_c$ holds in $\\mathbb{Q}(p)[w]$ modulo $w^2 - (c_0 - c_1^2/4)$ by ring operations only, so for either square root.".into(),
         StepKind::RealPair => "A complex pair $\\theta = a + bi$, $\\bar\\theta$: the real columns $x_j = \\operatorname{Re} v_j$, $y_j = \\operatorname{Im} v_j$ of its chains; $A(x + iy) = (a + bi)(x + iy)$ gives $Ax = ax - by$, $Ay = bx + ay$, so the blocks are $[a,\\ b;\\ -b,\\ a]$ (with $I_2$ above the diagonal).".into(),
         _ => super::steps_norm::sentence_latex(st),
     }
@@ -280,13 +282,16 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
         "Tc" => "T_c",
         "Jc" => "J_c",
         "compact" => r"\text{compact}",
+        "re" if kind == S::RealPair => r"\alpha = -c_1/2",
+        "w2" => r"w^2 = c_0 - c_1^2/4",
+        "disc" => r"c_1^2 - 4c_0",
         _ => return super::steps_norm::symbol(kind, key),
     })
 }
 
 /// Whether an object key of this file lists indices (shown one-based).
 pub fn index_list(key: &str) -> bool {
-    matches!(key, "eqs" | "states")
+    matches!(key, "eqs" | "states") || super::steps_modes::index_list(key)
 }
 
 /// Whether an object key is a flag its sentence already states (not typeset in LaTeX).

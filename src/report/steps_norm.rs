@@ -3,14 +3,18 @@
 //! sentences (plain and LaTeX) and the LaTeX symbols of their objects. Called through
 //! `report::steps_forms`.
 
+use crate::algebraic::ExtElem;
 use crate::field::Field;
 use crate::jordan::derivation::{Derivation, Method, Step, StepKind};
+use crate::jordan::normalize::{ClosedUnit, Normalization, Scale};
+use crate::jordan::{EigenField, JordanForm};
+use crate::report::{Report, Value};
 
 /// The title of a method of this file.
 pub fn title(m: Method) -> &'static str {
     match m {
         Method::DescriptorMinimal => "minimal descriptor realization, step by step",
-        _ => "derivation, step by step",
+        m => super::steps_modes::title(m),
     }
 }
 
@@ -23,7 +27,7 @@ pub fn kind_name(k: StepKind) -> &'static str {
         StepKind::DescriptorInfinite => "infinite_part",
         StepKind::DescriptorNondynamic => "nondynamic_modes",
         StepKind::DescriptorMinimalForm => "minimal_descriptor",
-        _ => "step",
+        k => super::steps_modes::kind_name(k),
     }
 }
 
@@ -54,7 +58,7 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             "C(sE - A)^-1 B + D unchanged, finite part controllable and observable, minimal at infinity",
             r"C(sE - A)^{-1}B + D\ \text{unchanged},\ \text{minimal}",
         ),
-        _ => ("", ""),
+        k => super::steps_modes::identity(k),
     }
 }
 
@@ -99,6 +103,13 @@ fn scaled_text<K: Field>(d: &Derivation<K>, s: &Step<K>, latex: bool) -> String 
 /// The plain sentence of a step of this file.
 pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
     match s.kind {
+        StepKind::SpectralProjector
+        | StepKind::ModeResidues
+        | StepKind::ModeWeight
+        | StepKind::ModeRanking
+        | StepKind::TruncationError
+        | StepKind::FreeTerms
+        | StepKind::InitialState => super::steps_modes::sentence(d, s),
         StepKind::Normalization => format!(
             "Normalise the chain of length {}{}: V' = p(N) V with p(N) = c (I + b_1 N + ...), again a chain of the same block.{}{}",
             cnt(s, "top"),
@@ -199,13 +210,16 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
         StepKind::DescriptorInfinite => "The infinite part $C_\\infty(I + sN)^{-1}B_\\infty = \\sum_k (-s)^k C_\\infty N^k B_\\infty$: a minimal realization $(N_r, B_r, C_r)$ of the sequence $C_\\infty N^k B_\\infty$; as a descriptor part $E = -N_r$, $A = I$, $B = -B_r$, $C = C_r$.".into(),
         StepKind::DescriptorNondynamic => "The non-dynamic modes (infinite blocks of size 1) of the irreducible infinite part eliminated.".into(),
         StepKind::DescriptorMinimalForm => "The minimal descriptor realization $E = \\operatorname{diag}(I, E_\\infty)$, $A = \\operatorname{diag}(A_m, A_\\infty)$, $B = [B_m; B_\\infty]$, $C = [C_m, C_\\infty]$ (orders: original, irreducible, minimal, finite, infinite).".into(),
-        _ => String::new(),
+        _ => super::steps_modes::sentence_latex(st),
     }
 }
 
 /// The LaTeX symbol of an object key of this file's steps (`None`: the common tables).
 pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
     use StepKind as S;
+    if let Some(sym) = super::steps_modes::symbol(kind, key) {
+        return Some(sym);
+    }
     let desc = matches!(
         kind,
         S::DescriptorFinite
@@ -252,5 +266,62 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
 
 /// Whether an object key is a flag its sentence already states (not typeset in LaTeX).
 pub fn flag(key: &str) -> bool {
-    matches!(key, "orth" | "refused" | "shifted")
+    matches!(key, "orth" | "refused" | "shifted") || super::steps_modes::flag(key)
+}
+
+/// The words of a normalisation (`jordan --normalize`).
+fn normalization_words(how: &Normalization) -> String {
+    let mut parts = vec![];
+    if how.orthogonal {
+        parts.push(
+            "every generalized eigenvector orthogonal to its eigenvector, v_j . v_1 = 0 (eq. 31)"
+                .to_string(),
+        );
+    }
+    match how.scale {
+        Scale::Keep => {}
+        Scale::Entry(Some(r)) => parts.push(format!("entry {} of each eigenvector 1 (its first nonzero entry where that one is 0)", r + 1)),
+        Scale::Entry(None) => parts.push("the first nonzero entry of each eigenvector 1".into()),
+        Scale::Unit => parts.push("each real eigenvector of unit length, v_1 . v_1 = 1 (exact when the length is rational, else in closed form: unit_lengths)".into()),
+    }
+    format!(
+        "chains normalised: {}; each chain c (I + b_1 N + ...) V is again a chain of the same block, so J is unchanged and A T = T J is checked again",
+        parts.join("; ")
+    )
+}
+
+/// `jordan --normalize` without `--steps`: the Jordan form's report (its `T` with the
+/// normalised chains) with `normalize` (what was asked) and `unit_lengths` (the chains whose
+/// unit length is in closed form: the columns of `T` shown as $V'$, to be divided by
+/// $\sqrt n$).
+pub fn normalized_form_report<F: EigenField>(
+    jf: &JordanForm<F>,
+    how: &Normalization,
+    closed: &[ClosedUnit<ExtElem<F::Elem>>],
+) -> Report {
+    let mut r = jf.report();
+    r.push("normalize", Value::Str(normalization_words(how)));
+    let mut notes = vec![];
+    let mut off = 0;
+    for ev in 0..jf.eigenvalues.len() {
+        let ci = jf.eigenvalues[ev].component;
+        let (field, f) = jf.root_map(ev);
+        for c in closed.iter().filter(|c| c.component == ci) {
+            let (a, b) = (off + c.first + 1, off + c.first + c.len);
+            let cols = if a == b {
+                format!("column {a}")
+            } else {
+                format!("columns {a}-{b}")
+            };
+            notes.push(Value::Str(format!(
+                "{cols} of T: the chain shown is V' with v_1 . v_1 = n = {}; the unit-length chain is V' / sqrt(n)",
+                field.fmt_elem(&f(&c.n))
+            )));
+        }
+        off += jf.components[ci].chains.ncols();
+    }
+    if !notes.is_empty() {
+        r.push("unit_lengths", Value::List(notes));
+    }
+    r
 }

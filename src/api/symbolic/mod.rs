@@ -99,6 +99,11 @@ pub(super) fn execute(
                     .with("conditions", str_list(conds)),
             ))
         }
+        Command::Jordan {
+            normalize: Some(_), ..
+        } => Err(refuse(format!(
+            "--normalize over {k}: the normalised chains are shown in the derivation (add --steps); the plain Jordan form over {k} keeps its chains"
+        ))),
         Command::Jordan { real: false, .. } => {
             crate::api::symbolic_jordan::jordan_outcome(&t.a_raw).map_err(|e| with_path(path, e))
         }
