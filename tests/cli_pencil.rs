@@ -185,3 +185,47 @@ fn cli_tf_of_a_state_space_checks_markov_parameters() {
     assert_eq!(code, 0, "{err}");
     assert!(v.get("markov_verified").is_none());
 }
+
+/// `jordan` of a descriptor file with symbols is the Jordan form of the pencil's finite part
+/// (as for numbers), not of `A` alone: E = diag(1, m, 0) leaves two finite eigenvalues, the
+/// roots of s^2 + (c/m) s + k/m, and one non-dynamic mode (infinite block of size 1).
+#[test]
+fn jordan_of_a_symbolic_descriptor_is_the_finite_part() {
+    let text = |params: &str| {
+        format!(
+            r#"{{"parameters": {{{params}}},
+ "E": [[1,0,0],[0,"m",0],[0,0,0]],
+ "A": [[0,1,0],[0,"-c",1],["-k",0,-1]],
+ "B": [[0],[0],[1]], "C": [[1,0,0]], "D": [[0]]}}"#
+        )
+    };
+    let sym = crate::common::cli::temp_file(
+        "jordan-desc",
+        "sym.json",
+        &text(r#""m": null, "k": null, "c": null"#),
+    );
+    let num = crate::common::cli::temp_file(
+        "jordan-desc",
+        "num.json",
+        &text(r#""m": 2, "k": 3, "c": 1"#),
+    );
+    for (file, real) in [(&sym, false), (&sym, true), (&num, false)] {
+        let f = file.to_str().unwrap();
+        let mut args = vec!["jordan", f];
+        if real {
+            args.push("--real");
+        }
+        let (code, v, err) = run(&args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        assert_eq!(
+            v["infinite_blocks"],
+            serde_json::json!([1]),
+            "{args:?}: {v}"
+        );
+        assert!(v["note"].as_str().unwrap().contains("finite part"), "{v}");
+        assert_eq!(v["n"], 2, "{args:?}: {v}");
+    }
+    let (_, v, _) = run(&["jordan", sym.to_str().unwrap()]);
+    let chi = v["charpoly"].as_str().unwrap();
+    assert!(chi.starts_with("s^2") && chi.contains("k/m"), "{chi}");
+}

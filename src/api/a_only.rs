@@ -162,6 +162,18 @@ pub(super) fn descriptor_jordan<K: Field + 'static>(
     d: &crate::system::Descriptor<K>,
     path: &Path,
 ) -> Result<Outcome, Failure> {
+    descriptor_jordan_with(d, path, |af| {
+        a_command(cmd, af, path).expect("jordan is an A-only command")
+    })
+}
+
+/// [`descriptor_jordan`] with the Jordan form of the finite part's `A` made by `run` (over
+/// $\mathbb{Q}(p)$ the symbolic Jordan form).
+pub(super) fn descriptor_jordan_with<K: Field + 'static>(
+    d: &crate::system::Descriptor<K>,
+    path: &Path,
+    run: impl FnOnce(&Matrix<K>) -> Result<Outcome, Failure>,
+) -> Result<Outcome, Failure> {
     let e = |err| with_path(path, err);
     let ks = crate::pencil::kronecker_structure(&d.a, &d.e).map_err(e)?;
     if !ks.is_regular() {
@@ -173,7 +185,7 @@ pub(super) fn descriptor_jordan<K: Field + 'static>(
         )));
     }
     let (af, method) = crate::realization::finite_dynamics(d).map_err(e)?;
-    let mut out = a_command(cmd, &af, path).expect("jordan is an A-only command")?;
+    let mut out = run(&af)?;
     let blocks = ks.infinite_divisors.iter().map(|&k| Value::Int(k as i64));
     out.report
         .push("infinite_blocks", Value::List(blocks.collect()));

@@ -304,10 +304,11 @@ mod tests {
         let dims: Vec<usize> = c.kernel_dims.iter().map(|x| 2 * x).collect();
         assert_eq!(dims, [4, 6]);
         assert_eq!(jf.values(), [None]);
-        // the integral factor: x^2 - p in Z[p, x]
+        // the integral factor: x^2 - p in Z[p, x], primitive with a positive leading
+        // coefficient in lex order (p before x): p - x^2
         assert_eq!(
             integral(&c.factor).to_string_vars(&["p".into(), "s".into()]),
-            "s^2 - p"
+            "-s^2 + p"
         );
         let (t, j) = jf.primary_form().unwrap();
         assert_eq!(&jf.a * &t, &t * &j);

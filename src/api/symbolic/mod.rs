@@ -104,6 +104,19 @@ pub(super) fn execute(
         } => Err(refuse(format!(
             "--normalize over {k}: the normalised chains are shown in the derivation (add --steps); the plain Jordan form over {k} keeps its chains"
         ))),
+        // a descriptor file: the Jordan form of the pencil's finite part (not of A alone)
+        Command::Jordan { real, .. } if t.descriptor.is_some() => {
+            let d = t.descriptor.as_ref().expect("descriptor");
+            let real = *real;
+            crate::api::a_only::descriptor_jordan_with(d, path, |af| {
+                let r = if real {
+                    crate::api::symbolic_jordan::real_outcome(af)
+                } else {
+                    crate::api::symbolic_jordan::jordan_outcome(af)
+                };
+                r.map_err(|e| with_path(path, e))
+            })
+        }
         Command::Jordan { real: false, .. } => {
             crate::api::symbolic_jordan::jordan_outcome(&t.a_raw).map_err(|e| with_path(path, e))
         }
