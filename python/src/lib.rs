@@ -375,7 +375,10 @@ impl System {
                         f.ground
                     )));
                 }
-                symbolic::jordan(&t.a_raw)
+                match &t.descriptor {
+                    Some(d) => symbolic::jordan_descriptor(d),
+                    None => symbolic::jordan(&t.a_raw),
+                }
             })
         })?
         .to_py(py)

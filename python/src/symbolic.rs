@@ -174,6 +174,26 @@ pub(crate) fn mnf(t: &T) -> FResult<Out> {
     with_context(Out::Dict(kv), &k)
 }
 
+/// The Jordan structure of a descriptor system over $\mathbb{Q}(p)$: [`jordan`] of the
+/// pencil's finite part (as the CLI and the numeric path), with `infinite_blocks`.
+pub(crate) fn jordan_descriptor(d: &exactlti::system::Descriptor<RatFuncField>) -> FResult<Out> {
+    let ks = exactlti::pencil::kronecker_structure(&d.a, &d.e)?;
+    if !ks.is_regular() {
+        return Err(Fail::Input(
+            "the pencil sE - A is singular: it has no Jordan structure (pencil() gives its Kronecker structure)".into(),
+        ));
+    }
+    let (af, _) = realization::finite_dynamics(d)?;
+    let Out::Dict(mut kv) = jordan(&af)? else {
+        unreachable!("jordan returns a dict")
+    };
+    kv.push((
+        "infinite_blocks",
+        Out::List(ks.infinite_divisors.iter().map(|&b| usize_out(b)).collect()),
+    ));
+    Ok(Out::Dict(kv))
+}
+
 /// The Jordan structure over $\mathbb{Q}(p)$ ([`exactlti::jordan::jordan_qp`]).
 pub(crate) fn jordan(a: &Matrix<RatFuncField>) -> FResult<Out> {
     let jf = exactlti::jordan::jordan_qp(a)?;

@@ -231,3 +231,27 @@ def test_two_sympy_symbols_with_one_name_are_refused():
     x = sympy.Symbol("x", positive=True)
     S = exactlti.ss([[x, 1], [0, x + 1]], params={"x": sympy.Symbol("x", positive=True)})
     assert S.params == ("x",)
+
+
+def test_jordan_of_a_symbolic_descriptor_is_the_finite_part(tmp_path):
+    # E = diag(1, m, 0): two finite eigenvalues (roots of m s^2 + c s + k) and one
+    # non-dynamic mode; the Jordan form of A alone (3 states) would be wrong, as the CLI
+    import json
+
+    import exactlti
+
+    def model(params):
+        return {"parameters": params,
+                "E": [[1, 0, 0], [0, "m", 0], [0, 0, 0]],
+                "A": [[0, 1, 0], [0, "-c", 1], ["-k", 0, -1]],
+                "B": [[0], [0], [1]], "C": [[1, 0, 0]], "D": [[0]]}
+
+    sym = tmp_path / "sym.json"
+    sym.write_text(json.dumps(model({"m": None, "k": None, "c": None})))
+    num = tmp_path / "num.json"
+    num.write_text(json.dumps(model({"m": 2, "k": 3, "c": 1})))
+    js = exactlti.load(str(sym)).jordan()
+    jn = exactlti.load(str(num)).jordan()
+    assert js.nstates == 2 and jn.nstates == 2
+    assert js.verified and jn.verified
+    assert js.J.nrows == 2 and js.charpoly.degree == 2
