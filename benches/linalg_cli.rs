@@ -51,7 +51,7 @@ fn anchor_file(n: usize, deficient: bool) -> String {
         .map(|r| {
             let xs: Vec<String> = r
                 .iter()
-                .map(|x| format!("\"{}\"", exactlti::field::fmt_rational(x)))
+                .map(|x| format!("\"{}\"", exactlti::report::display::fmt_rational(x)))
                 .collect();
             format!("[{}]", xs.join(", "))
         })

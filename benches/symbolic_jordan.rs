@@ -13,7 +13,7 @@
 #[path = "common.rs"]
 mod common;
 
-use exactlti::field::Field;
+use exactlti::field::{ElemDisplay, Field};
 use exactlti::jordan::jordan_qp;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;

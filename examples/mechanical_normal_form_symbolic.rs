@@ -5,6 +5,7 @@
 //!
 //! Run: `cargo run --example mechanical_normal_form_symbolic`
 
+use exactlti::field::ElemDisplay;
 use exactlti::field::Field;
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;

@@ -12,6 +12,7 @@
 //!
 //! Run: `cargo run --example minreal_compaction_symbolic`
 
+use exactlti::field::ElemDisplay;
 use exactlti::field::Field;
 use exactlti::jordan::jordan_qp;
 use exactlti::jordan::qp_form::integral;

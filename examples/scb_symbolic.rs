@@ -6,7 +6,7 @@
 //!
 //! Run: `cargo run --example scb_symbolic`
 
-use exactlti::field::Field;
+use exactlti::field::ElemDisplay;
 use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};
 use exactlti::matrix::Matrix;

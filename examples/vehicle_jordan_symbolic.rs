@@ -6,6 +6,7 @@
 //!
 //! Run: `cargo run --example vehicle_jordan_symbolic`
 
+use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Rational};
 use exactlti::jordan::qp_form::integral;
 use exactlti::jordan::{Component, JordanForm, jordan_qp};

@@ -83,6 +83,11 @@ pub mod algebraic;
 pub mod api;
 #[cfg(feature = "cli")]
 pub mod cli;
+/// `report::display` (the `Display` impls and element displays of the math types) for a
+/// build without the `cli` feature, where `report` is absent: the core needs its displays.
+#[cfg(not(feature = "cli"))]
+#[path = "report/display/mod.rs"]
+pub mod display;
 pub mod error;
 pub mod field;
 #[cfg(feature = "float")]

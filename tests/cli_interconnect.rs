@@ -3,7 +3,7 @@
 //! static gains (a file with only `D`), and one-line refusals with exit status 2.
 
 use crate::common::cli::{run, temp_file};
-use exactlti::field::Field;
+use exactlti::field::ElemDisplay;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};
 use exactlti::io::{TypedAny, load_system_path};
 use std::path::PathBuf;

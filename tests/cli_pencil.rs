@@ -109,8 +109,8 @@ fn cli_pencil_rectangular() {
 #[test]
 fn cli_bicycle_descriptor() {
     use exactlti::field::Q;
-    use exactlti::field::fmt_rational;
     use exactlti::matrix::Matrix;
+    use exactlti::report::display::fmt_rational;
     let d = crate::bicycle::bicycle_descriptor("2");
     let js = |m: &Matrix<Q>| {
         let rows: Vec<String> = (0..m.nrows())

@@ -10,8 +10,9 @@
 //! the discriminant (exact, over a real $K$) is bracketed by a reported value.
 
 use exactlti::api::{Options, System, SystemVisitor};
-use exactlti::field::{Field, fmt_rational};
+use exactlti::field::Field;
 use exactlti::io::{SystemFile, SystemFormat, TypedSystem};
+use exactlti::report::display::fmt_rational;
 use exactlti::rng::SplitMix64;
 use exactlti::study::critical::over_k::critical_values_of_file;
 use exactlti::study::{CriticalKind, CriticalValues};

@@ -4,7 +4,7 @@
 //! parameters), and the command line (`dt` key, refusals, mixed interconnections).
 
 use crate::common::cli::run;
-use exactlti::field::{Field, Q, Rational};
+use exactlti::field::{ElemDisplay, Q, Rational};
 use exactlti::matrix::Matrix;
 use exactlti::poly::{Poly, parse_poly_q};
 use exactlti::rng::SplitMix64;

@@ -3,11 +3,11 @@
 //! every formatter (quadratic fields, radical-named number fields, algebraic numbers, the
 //! Jordan form's closed forms, LaTeX), and every display reads back to the same number.
 use exactlti::algebraic::{AlgebraicNumber, ExtElem, NumberField};
-use exactlti::field::{
-    Field, Q, Quadratic, QuadraticField, Rational, quadratic_display, quadratic_latex, radical_text,
-};
+use exactlti::field::ElemDisplay;
+use exactlti::field::{Field, Q, Quadratic, QuadraticField, Rational, radical_text};
 use exactlti::io::{Ground, eval_expr};
 use exactlti::poly::Poly;
+use exactlti::report::display::{quadratic_display, quadratic_latex};
 use exactlti::report::latex::to_math;
 use num_bigint::BigInt;
 use num_traits::Zero;

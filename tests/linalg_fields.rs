@@ -18,10 +18,9 @@
 //!   nullspace, one outside the column space gives `None`.
 
 use crate::common::{self, Rng, elem, unimodular};
-use exactlti::field::{Field, Q};
+use exactlti::field::Field;
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;
-use exactlti::ratfunc::RatFuncField;
 
 fn nonzero<K: Field>(k: &K, g: &Option<K::Elem>, rng: &mut Rng) -> K::Elem {
     loop {
@@ -192,26 +191,5 @@ fn check_linalg<K: Field>(k: &K, g: &Option<K::Elem>, seed: u64, cases: usize) {
     }
 }
 
-#[test]
-fn linalg_over_q() {
-    check_linalg(&Q, &None, 2311, common::iters(10));
-}
-
-#[test]
-fn linalg_over_q_sqrt2() {
-    let (k, g) = common::qsqrt2();
-    check_linalg(&k, &g, 2312, common::iters(10));
-}
-
-#[test]
-fn linalg_over_q_i() {
-    let (k, g) = common::qi();
-    check_linalg(&k, &g, 2313, common::iters(10));
-}
-
-#[test]
-fn linalg_over_q_p() {
-    let k = RatFuncField::new(&["p"]).unwrap();
-    let g = Some(k.var(0));
-    check_linalg(&k, &g, 2314, common::iters(5));
-}
+crate::for_each_field!(check_linalg, 2311, 10, 5; linalg_over_q, linalg_over_q_sqrt2,
+    linalg_over_q_i, linalg_over_q_p);

@@ -1,6 +1,7 @@
 //! Multivariate polynomials, gcd, resultants, factorization and the field Q(p1..pk):
 //! textbook cases, random properties, naive oracles.
 
+use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Rational};
 use exactlti::matrix::Matrix;
 use exactlti::matrix::params::{charpoly_ratfunc, charpoly_zp, det_bareiss_zp};

@@ -197,26 +197,5 @@ fn check_all<F: JordanOps>(k: &F, g: &Option<F::Elem>, seed: u64, cases: usize) 
     }
 }
 
-#[test]
-fn every_operation_over_q() {
-    check_all(&common::q(), &None, 2301, common::iters(6));
-}
-
-#[test]
-fn every_operation_over_q_sqrt2() {
-    let (k, g) = common::qsqrt2();
-    check_all(&k, &g, 2302, common::iters(6));
-}
-
-#[test]
-fn every_operation_over_q_i() {
-    let (k, g) = common::qi();
-    check_all(&k, &g, 2303, common::iters(6));
-}
-
-#[test]
-fn every_operation_over_q_p() {
-    let k = RatFuncField::new(&["p"]).unwrap();
-    let g = Some(k.var(0));
-    check_all(&k, &g, 2304, common::iters(3));
-}
+crate::for_each_field!(check_all, 2301, 6, 3; every_operation_over_q, every_operation_over_q_sqrt2,
+    every_operation_over_q_i, every_operation_over_q_p);

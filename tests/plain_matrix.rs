@@ -5,10 +5,11 @@
 //! invariants (whitespace, row order, printing and reading back, one output's report renders
 //! as the full report).
 
-use exactlti::field::{Q, Rational, fmt_rational};
+use exactlti::field::{Q, Rational};
 use exactlti::io::plain_matrix::{plain_entry, plain_square_matrix};
 use exactlti::io::{FromScalars, Ground, parse_system_json};
 use exactlti::matrix::Matrix;
+use exactlti::report::display::fmt_rational;
 use exactlti::report::{Report, Target};
 use exactlti::rng::SplitMix64;
 use num_bigint::BigInt;

@@ -5,6 +5,7 @@
 
 use crate::common;
 use crate::jcommon;
+use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Q, Rational};
 use exactlti::jordan::derivation::{Derivation, Object, StepKind, ratfunc_log};
 use exactlti::jordan::steps::{is_chain, jordan_steps, jordan_steps_params, weyr_segre};

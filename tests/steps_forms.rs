@@ -10,6 +10,7 @@
 
 use crate::common;
 use exactlti::algebraic::NumberField;
+use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Q};
 use exactlti::jordan::derivation::{
     Derivation, Method, Object, Recorder, Step, StepKind, ratfunc_log,

@@ -13,6 +13,7 @@
 
 use crate::common;
 use exactlti::algebraic::{Ext, ExtElem};
+use exactlti::field::ElemDisplay;
 use exactlti::field::Field;
 use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};

@@ -6,6 +6,7 @@
 //! tampered step is rejected (`tampered_*` tests). Over Q, Q(sqrt 2) and Q(m, k, c).
 
 use crate::common;
+use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Q, Rational};
 use exactlti::jordan::derivation::{Derivation, Method, Object, Recorder, StepKind, ratfunc_log};
 use exactlti::matrix::Matrix;

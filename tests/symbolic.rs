@@ -1,6 +1,7 @@
 //! Symbolic parameters (contract, second wave): the single-wheel yaw-plane model of the
 //! vehicle-dynamics paper (eq. 27) over QQ(cr, m, u).
 
+use exactlti::field::ElemDisplay;
 use exactlti::field::Field;
 use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};

@@ -6,6 +6,7 @@
 //! paper's values equals the SCB computed over Q at those values), and properties (verified
 //! identities, every condition irreducible and nonvanishing at the paper's values).
 
+use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Q, Rational};
 use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};

@@ -2,6 +2,7 @@
 //! symbols (eq. 24-35), random properties (A T = T J, agreement with the rational Jordan form
 //! at points), and a naive oracle (block sizes from ranks of (A - theta I)^k at a point).
 
+use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Q, Rational};
 use exactlti::jordan::jordan;
 use exactlti::jordan::{Component, JordanForm, jordan_qp};

@@ -31,7 +31,7 @@
 //!   ($t A t^{-1} = \tilde A$, $t B = \tilde B$, same characteristic polynomial); odd order
 //!   has none (`exists = false`, the `n_even` condition).
 
-use crate::common::{self, Rng, elem};
+use crate::common::{Rng, elem};
 use exactlti::error::Error;
 use exactlti::field::{Field, Q, QuadraticField};
 use exactlti::matrix::{Matrix, to_rational_matrix};
@@ -566,26 +566,5 @@ fn check_systems<F: JordanMinreal>(k: &F, g: &Option<F::Elem>, seed: u64, cases:
     }
 }
 
-#[test]
-fn system_operations_over_q() {
-    check_systems(&common::q(), &None, 2351, common::iters(8));
-}
-
-#[test]
-fn system_operations_over_q_sqrt2() {
-    let (k, g) = common::qsqrt2();
-    check_systems(&k, &g, 2352, common::iters(8));
-}
-
-#[test]
-fn system_operations_over_q_i() {
-    let (k, g) = common::qi();
-    check_systems(&k, &g, 2353, common::iters(8));
-}
-
-#[test]
-fn system_operations_over_q_p() {
-    let k = RatFuncField::new(&["p"]).unwrap();
-    let g = Some(k.var(0));
-    check_systems(&k, &g, 2354, common::iters(4));
-}
+crate::for_each_field!(check_systems, 2351, 8, 4; system_operations_over_q, system_operations_over_q_sqrt2,
+    system_operations_over_q_i, system_operations_over_q_p);

@@ -546,7 +546,7 @@ impl System {
     /// The sample time of a discrete-time system as exact text (`None`: continuous).
     #[getter]
     fn dt(&self) -> Option<String> {
-        self.api.dt().map(exactlti::field::fmt_rational)
+        self.api.dt().map(exactlti::report::display::fmt_rational)
     }
 
     /// The input and output names the system carries (`None` where it has none).

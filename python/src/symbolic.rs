@@ -10,7 +10,7 @@
 use crate::ops::{mnf_out, scb_typed, tf_parts, zeros_typed};
 use crate::out::*;
 use crate::{FResult, Fail};
-use exactlti::field::Field;
+use exactlti::field::{ElemDisplay, Field};
 use exactlti::io::TypedSystem as Typed;
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;

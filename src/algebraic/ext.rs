@@ -17,12 +17,10 @@
 //! $\mathbb{Q}(\sqrt d)$ named by its radical ([`Ext::radicand`]), or, when
 //! $\theta = a_0 + s\sqrt f$ with rational $a_0, s$, `u + v*sqrt(f)` with $u, v \in F$.
 
-use crate::field::quadratic::fmt_pair;
 use crate::field::{Field, Rational};
-use crate::poly::{Poly, fmt_poly};
+use crate::poly::Poly;
 use num_bigint::BigInt;
 use num_traits::Zero;
-use std::fmt;
 use std::sync::Arc;
 
 /// $t = a_0 + s\sqrt f$ with rational $a_0, s$ and square-free $f$.
@@ -188,7 +186,7 @@ impl<F: Field> Ext<F> {
     /// `Some(d)` when this is $\mathbb{Q}(\sqrt d)$ displayed with its radical: modulus
     /// $t^2 - d$ with rational $d$ and variable [`crate::field::radical_text`]`(d)`
     /// (`sqrt(3)`, `sqrt(2)*i`, `i`). Its elements are then shown as every quadratic number
-    /// is ([`crate::field::quadratic_display`]: `-6 + sqrt(1598)/10`, not
+    /// is ([`crate::report::display::quadratic_display`]: `-6 + sqrt(1598)/10`, not
     /// `1/10*sqrt(1598) - 6`).
     pub fn radicand(&self) -> Option<BigInt> {
         let m = &self.0.modulus;
@@ -242,7 +240,10 @@ impl<F: Field> Ext<F> {
     }
     /// `(c0, c1, d)` for $a = c_0 + c_1 \sqrt d$ with rational $c_0, c_1$ in a field named
     /// by its radical ([`Ext::radicand`]).
-    fn radical_pair(&self, a: &ExtElem<F::Elem>) -> Option<(Rational, Rational, BigInt)> {
+    pub(crate) fn radical_pair(
+        &self,
+        a: &ExtElem<F::Elem>,
+    ) -> Option<(Rational, Rational, BigInt)> {
         let d = self.radicand()?;
         let k = &self.0.base;
         let c = |i: usize| match a.0.get(i) {
@@ -250,52 +251,6 @@ impl<F: Field> Ext<F> {
             None => Some(Rational::zero()),
         };
         Some((c(0)?, c(1)?, d))
-    }
-    /// `u + v sqrt f` for $t = a_0 + s\sqrt f$ (module docs).
-    fn fmt_radical(&self, a: &ExtElem<F::Elem>, (a0, s, f): &Radical) -> String {
-        let k = &self.0.base;
-        // c0 + c1 (a0 + s sqrt f) = (c0 + a0 c1) + (s c1) sqrt f
-        let c0 = a.0.first().cloned().unwrap_or_else(|| k.zero());
-        let c1 = a.0.get(1).cloned().unwrap_or_else(|| k.zero());
-        let u = k.add(&c0, &k.mul(&k.from_rational(a0), &c1));
-        let v = k.mul(&k.from_rational(s), &c1);
-        let rad = crate::field::radical_text(f);
-        match (k.to_rational(&u), k.to_rational(&v)) {
-            (Some(u), Some(v)) => fmt_pair(&u, &v, &rad),
-            _ if k.is_zero(&v) => k.fmt_elem(&u),
-            _ => {
-                // u + v sqrt f, written "u - w sqrt f" when v = -w displays with a sign
-                let neg = k.fmt_elem(&v).starts_with('-');
-                let w = if neg { k.neg(&v) } else { v };
-                let wt = if k.is_one(&w) {
-                    rad
-                } else {
-                    format!("{}*{rad}", paren(k.fmt_elem(&w)))
-                };
-                let op = if neg { "-" } else { "+" };
-                if k.is_zero(&u) {
-                    if neg { format!("-{wt}") } else { wt }
-                } else {
-                    format!("{} {op} {wt}", k.fmt_elem(&u))
-                }
-            }
-        }
-    }
-}
-
-impl<F: Field> fmt::Display for Ext<F> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let k = &self.0.base;
-        write!(f, "{k}[t]/({})", fmt_poly(k, self.0.modulus.coeffs(), "t"))
-    }
-}
-
-/// `x` in parentheses when it is a sum or difference (for a coefficient before a product).
-fn paren(x: String) -> String {
-    if x[1..].contains([' ', '+']) || x[1..].contains('-') {
-        format!("({x})")
-    } else {
-        x
     }
 }
 
@@ -382,23 +337,6 @@ impl<F: Field> Field for Ext<F> {
     }
     fn to_rational(&self, a: &Self::Elem) -> Option<Rational> {
         self.to_base(a).and_then(|c| self.0.base.to_rational(&c))
-    }
-    fn fmt_elem(&self, a: &Self::Elem) -> String {
-        if let Some(r) = &self.0.radical {
-            return self.fmt_radical(a, r);
-        }
-        match self.radical_pair(a) {
-            Some((c0, c1, d)) => crate::field::quadratic_display(&c0, &c1, &d),
-            None => fmt_poly(&self.0.base, &a.0, &self.0.var),
-        }
-    }
-    fn latex_elem(&self, a: &Self::Elem) -> String {
-        match self.radical_pair(a) {
-            Some((c0, c1, d)) if self.0.radical.is_none() => {
-                crate::field::quadratic_latex(&c0, &c1, &d)
-            }
-            _ => self.fmt_elem(a),
-        }
     }
     fn approx(&self, a: &Self::Elem) -> Option<(f64, f64)> {
         let z = Ext::approx(self, a);

@@ -22,7 +22,7 @@
 //! | [`composed_half_sum`], [`composed_half_diff_imag`] | $\prod (x - \frac{r_i + r_j}{2})$, $\prod (x - \frac{r_i - r_j}{2i})$ |
 //! | [`crate::report::sections::factor_report`], [`crate::report::sections::roots_report`] | the CLI's `poly factor` / `poly roots` reports |
 
-pub(crate) mod display;
+pub(crate) mod digits;
 pub(crate) mod ext;
 mod ext_q;
 pub mod isolate_complex;

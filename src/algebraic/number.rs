@@ -13,7 +13,7 @@
 //! real (imaginary) range of the box.
 
 use super::NumberField;
-use super::display::{quadratic_string, round_sig, split_square};
+use super::digits::{round_sig, split_square};
 use super::isolate_complex::{CBox, isolate_upper, refine_box};
 use super::isolate_real::{RealRoot, bisect, isolate_real_roots, refine_real};
 use crate::error::{Error, Result};
@@ -458,23 +458,6 @@ impl AlgebraicNumber {
         }
     }
 
-    /// Exact closed form up to degree 2 and for $x^4 + b x^2 + c$ (the nested radicals of
-    /// [`super::display::closed_form`], the display every report uses), else
-    /// `root of <minpoly> near <10 digits>`.
-    pub fn value_string(&self) -> String {
-        if let Some((a, b, d)) = self.quadratic_parts() {
-            return quadratic_string(&a, &b, &d);
-        }
-        if self.degree() == 4
-            && let Some(s) = super::display::closed_form(&self.minpoly, self.approx())
-        {
-            return s;
-        }
-        let (re, im) = self.digits(10);
-        let near = super::display::near_text(&re, &im, self.is_real());
-        format!("root of {} near {near}", self.minpoly)
-    }
-
     /// $\mathbb{Q}\[t\]/(m)$ with $t$ marked as this root.
     pub fn to_number_field(&self) -> NumberField {
         NumberField::new_unchecked(&self.minpoly, self.approx())
@@ -531,10 +514,4 @@ fn identify_real(
     Err(Error::Verification(
         "real or imaginary part not found among the composed roots".into(),
     ))
-}
-
-impl std::fmt::Display for AlgebraicNumber {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.value_string())
-    }
 }

@@ -61,6 +61,7 @@ impl Ext<Q> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::field::ElemDisplay;
     use crate::field::Field;
     #[test]
     fn arithmetic() {

@@ -11,7 +11,7 @@
 use super::symbolic::system::factors;
 use super::{Failure, Outcome};
 use crate::error::Result;
-use crate::field::Field;
+use crate::field::ElemDisplay;
 use crate::io::TypedSystem;
 use crate::ratfunc::RatFuncField;
 use crate::realization::{self, MinrealMethod};

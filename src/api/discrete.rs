@@ -7,9 +7,10 @@
 
 use super::common::with_path;
 use super::{Failure, Outcome};
-use crate::field::{Field, Q, Rational, fmt_rational, rational_to_f64};
+use crate::field::{Field, Q, Rational, rational_to_f64};
 use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::report::Value;
+use crate::report::display::fmt_rational;
 use crate::report::sections::{conversion_report, sequence_report, stability_report};
 use crate::system::StateSpace;
 use crate::system::discrete::stability::{Domain, stability_of};

@@ -47,7 +47,7 @@ pub fn bode_file_dt<K: Field>(
     let resp = float_response_dt(t, &sys, path, &freqs, Some(t_s))?;
     let title = format!(
         "{title}: Bode plot of G(e^(j 2 pi f T)), T = {} s",
-        crate::field::fmt_rational(dt)
+        crate::report::display::fmt_rational(dt)
     );
     let label = format!(
         "Nyquist 1/(2T) = {} Hz",

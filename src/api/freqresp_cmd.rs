@@ -53,7 +53,7 @@ pub(crate) fn freqresp_command<K: Field>(
         r = r.str("svg", out.display().to_string());
     }
     Ok(super::Outcome::plain(
-        r.str("dt", crate::field::fmt_rational(dt)).str(
+        r.str("dt", crate::report::display::fmt_rational(dt)).str(
             "note",
             "G(e^(j 2 pi f T)), up to the Nyquist frequency 1/(2 T) Hz",
         ),

@@ -210,7 +210,7 @@ pub(crate) fn common_dt(
             Some((j, d0)) if *d0 != dt => {
                 let show = |d: &Option<crate::field::Rational>| {
                     d.as_ref().map_or("continuous time".to_string(), |d| {
-                        format!("dt = {}", crate::field::fmt_rational(d))
+                        format!("dt = {}", crate::report::display::fmt_rational(d))
                     })
                 };
                 return Err(Failure::input(format!(

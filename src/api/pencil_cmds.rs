@@ -84,7 +84,7 @@ fn with_dt(rep: crate::report::Report, s: &crate::io::SignalNames) -> crate::rep
                 if after {
                     items.push((
                         "dt".to_string(),
-                        crate::report::Value::Str(crate::field::fmt_rational(dt)),
+                        crate::report::Value::Str(crate::report::display::fmt_rational(dt)),
                     ));
                 }
             }

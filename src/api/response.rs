@@ -12,6 +12,7 @@
 
 use super::common::with_path;
 use super::{Failure, Outcome};
+use crate::field::ElemDisplay;
 use crate::field::{Field, Q, parse_rational};
 use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::jordan::jordan;

@@ -4,8 +4,6 @@
 //! marked embedding is real). $(a + bi)^{-1} = (a - bi)/(a^2 + b^2)$.
 
 use super::{Field, Rational};
-use crate::field::quadratic_display;
-use std::fmt;
 
 /// The field $F(i)$ for a real field $F$.
 #[derive(Clone, Debug, PartialEq)]
@@ -35,12 +33,6 @@ impl<F: Field> ComplexField<F> {
             re: a.clone(),
             im: self.base.zero(),
         }
-    }
-}
-
-impl<F: Field> fmt::Display for ComplexField<F> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "({})(i)", self.base)
     }
 }
 
@@ -112,27 +104,6 @@ impl<F: Field> Field for ComplexField<F> {
             self.base.to_rational(&a.re)
         } else {
             None
-        }
-    }
-    fn fmt_elem(&self, a: &Self::Elem) -> String {
-        let k = &self.base;
-        if let (Some(r), Some(i)) = (k.to_rational(&a.re), k.to_rational(&a.im)) {
-            return quadratic_display(&r, &i, &(-1).into());
-        }
-        let re = k.fmt_elem(&a.re);
-        if k.is_zero(&a.im) {
-            return re;
-        }
-        let im = k.fmt_elem(&a.im);
-        let imt = if k.is_one(&a.im) {
-            "i".to_string()
-        } else {
-            format!("({im})*i")
-        };
-        if k.is_zero(&a.re) {
-            imt
-        } else {
-            format!("{re} + {imt}")
         }
     }
     fn approx(&self, a: &Self::Elem) -> Option<(f64, f64)> {

@@ -42,13 +42,25 @@ pub fn pow_by_squaring<T: Clone>(x: &T, mut e: u32, one: T, mul: impl Fn(&T, &T)
     }
     acc
 }
-pub use quadratic::{
-    Quadratic, QuadraticElems, QuadraticField, quadratic_display, quadratic_latex, radical_text,
-};
-pub use rational::{Q, Rational, fmt_rational, parse_rational, rational_to_f64};
+pub use quadratic::{Quadratic, QuadraticElems, QuadraticField, radical_text};
+pub use rational::{Q, Rational, parse_rational, rational_to_f64};
+
+/// How the elements of a field are written (text and LaTeX). Every [`Field`] has one; the
+/// implementations live in `report::display` with every other string of the math types
+/// (values in math, strings in report/), so generic code writes `k.fmt_elem(a)` as before.
+pub trait ElemDisplay<E> {
+    /// Exact display of an element (e.g. `-3/7`, `1 - sqrt(2)/2`, `2 + i`).
+    fn fmt_elem(&self, a: &E) -> String;
+    /// LaTeX display of an element.
+    fn latex_elem(&self, a: &E) -> String {
+        self.fmt_elem(a)
+    }
+}
 
 /// An exact field, as a domain value.
-pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
+pub trait Field:
+    Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync + ElemDisplay<<Self as Field>::Elem>
+{
     /// Canonical representation: `==` is mathematical equality.
     type Elem: Clone + PartialEq + fmt::Debug + Send + Sync;
 
@@ -82,12 +94,6 @@ pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
     /// `acc -= a * b`.
     fn mul_sub_assign(&self, acc: &mut Self::Elem, a: &Self::Elem, b: &Self::Elem) {
         *acc = self.sub(acc, &self.mul(a, b));
-    }
-    /// Exact display of an element (e.g. `-3/7`, `1 - sqrt(2)/2`, `2 + i`).
-    fn fmt_elem(&self, a: &Self::Elem) -> String;
-    /// LaTeX display of an element.
-    fn latex_elem(&self, a: &Self::Elem) -> String {
-        self.fmt_elem(a)
     }
     /// Floating-point approximation `(re, im)` under the field's marked embedding; `None`
     /// for a field without one (e.g. a field of rational functions in symbols).

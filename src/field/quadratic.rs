@@ -10,12 +10,11 @@
 //! | [`QuadraticField::sqrt_of_rational`] | $\sqrt{r}$ as (field, element) for any rational `r` |
 //! | [`Field::sign`] | exact sign (real fields only) |
 
-use super::{Field, Kernels, Rational, fmt_rational, lehmer, rational_to_f64};
+use super::{Field, Kernels, Rational, lehmer, rational_to_f64};
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
-use std::fmt;
 
 /// The field $\mathbb{Q}(\sqrt d)$, `d` square-free, `d != 0, 1`.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -224,16 +223,6 @@ impl QuadraticField {
     }
 }
 
-impl fmt::Display for QuadraticField {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.d == BigInt::from(-1) {
-            write!(f, "QQ(i)")
-        } else {
-            write!(f, "QQ(sqrt({}))", self.d)
-        }
-    }
-}
-
 /// The text of $\sqrt d$ in every display: `i` for `d = -1`, `sqrt(3)*i` for `d = -3`,
 /// `sqrt(2)` for `d = 2`.
 pub fn radical_text(d: &BigInt) -> String {
@@ -243,87 +232,6 @@ pub fn radical_text(d: &BigInt) -> String {
         format!("sqrt({})*i", -d)
     } else {
         format!("sqrt({d})")
-    }
-}
-
-/// The one display of the quadratic number $a + b\sqrt d$ (`d` square-free, `d = -1` is
-/// $i$), used by every text and JSON output: the rational part first, then the radical with
-/// its coefficient's numerator before and denominator after it.
-///
-/// `-6 + sqrt(1598)/10`, `-sqrt(3)/24`, `1/2 + 3*sqrt(5)/2`, `-1 + i`, `sqrt(2)*i/2`,
-/// `-3/20 - sqrt(1991)*i/20`; a rational (`b = 0`) as `-7/2`. Every display parses back to the
-/// same number (`exactlti::io::eval_expr`, feature `cli`).
-///
-/// # Examples
-/// ```
-/// use exactlti::field::{Rational, quadratic_display};
-/// let r = |n: i64, d: i64| Rational::new(n.into(), d.into());
-/// assert_eq!(quadratic_display(&r(-6, 1), &r(1, 10), &1598.into()), "-6 + sqrt(1598)/10");
-/// assert_eq!(quadratic_display(&r(0, 1), &r(-1, 24), &3.into()), "-sqrt(3)/24");
-/// assert_eq!(quadratic_display(&r(0, 1), &r(1, 2), &(-2).into()), "sqrt(2)*i/2");
-/// assert_eq!(quadratic_display(&r(-1, 1), &r(1, 1), &(-1).into()), "-1 + i");
-/// ```
-pub fn quadratic_display(a: &Rational, b: &Rational, d: &BigInt) -> String {
-    fmt_pair(a, b, &radical_text(d))
-}
-
-/// The LaTeX of [`quadratic_display`], as the report's LaTeX output typesets that display:
-/// `-6 + \frac{\sqrt{1598}}{10}`, `-\frac{\sqrt{3}}{24}`, `\frac{\sqrt{2}\,\mathrm{i}}{2}`,
-/// `-1 + \mathrm{i}`.
-pub fn quadratic_latex(a: &Rational, b: &Rational, d: &BigInt) -> String {
-    let q = |x: &Rational| crate::field::Q.latex_elem(x);
-    if b.is_zero() {
-        return q(a);
-    }
-    let rad = if *d == BigInt::from(-1) {
-        "\\mathrm{i}".to_string()
-    } else if d.is_negative() {
-        format!("\\sqrt{{{}}}\\,\\mathrm{{i}}", -d)
-    } else {
-        format!("\\sqrt{{{d}}}")
-    };
-    let babs = b.abs();
-    let num = babs.numer();
-    let top = if num.is_one() {
-        rad
-    } else {
-        format!("{num} {rad}")
-    };
-    let t = if babs.denom().is_one() {
-        top
-    } else {
-        format!("\\frac{{{top}}}{{{}}}", babs.denom())
-    };
-    let op = if b.is_negative() { "-" } else { "+" };
-    if a.is_zero() {
-        if b.is_negative() { format!("-{t}") } else { t }
-    } else {
-        format!("{} {op} {t}", q(a))
-    }
-}
-
-/// Formats `a + b*rad` with `rad` a radical text, e.g. `1 - sqrt(2)/2`, `-1 + i`
-/// ([`quadratic_display`] when `rad` is the text of a square root).
-pub(crate) fn fmt_pair(a: &Rational, b: &Rational, rad: &str) -> String {
-    if b.is_zero() {
-        return fmt_rational(a);
-    }
-    let babs = b.abs();
-    let num = babs.numer();
-    let den = babs.denom();
-    let mut t = if num.is_one() {
-        rad.to_string()
-    } else {
-        format!("{num}*{rad}")
-    };
-    if !den.is_one() {
-        t = format!("{t}/{den}");
-    }
-    if a.is_zero() {
-        if b.is_negative() { format!("-{t}") } else { t }
-    } else {
-        let op = if b.is_negative() { "-" } else { "+" };
-        format!("{} {op} {t}", fmt_rational(a))
     }
 }
 
@@ -423,12 +331,6 @@ impl Field for QuadraticField {
             None
         }
     }
-    fn fmt_elem(&self, x: &Quadratic) -> String {
-        quadratic_display(&x.a, &x.b, &self.d)
-    }
-    fn latex_elem(&self, x: &Quadratic) -> String {
-        quadratic_latex(&x.a, &x.b, &self.d)
-    }
     fn approx(&self, x: &Quadratic) -> Option<(f64, f64)> {
         Some(QuadraticField::approx(self, x))
     }
@@ -472,6 +374,7 @@ impl Field for QuadraticField {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::field::ElemDisplay;
     fn r(n: i64, d: i64) -> Rational {
         Rational::new(n.into(), d.into())
     }

@@ -6,8 +6,7 @@
 use super::{Field, Kernels, RationalElems, lehmer};
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, ToPrimitive, Zero};
-use std::fmt;
+use num_traits::{One, ToPrimitive, Zero};
 
 /// An exact rational number (canonical: lowest terms, positive denominator).
 pub type Rational = num_rational::BigRational;
@@ -15,12 +14,6 @@ pub type Rational = num_rational::BigRational;
 /// The field $\mathbb{Q}$ (zero-sized domain value).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Q;
-
-impl fmt::Display for Q {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "QQ")
-    }
-}
 
 impl Q {
     /// Floating-point approximation `(a, 0)`; always defined (the field trait's
@@ -75,17 +68,6 @@ impl Field for Q {
             *acc = lehmer::sub(acc, &lehmer::mul(a, b));
         }
     }
-    fn fmt_elem(&self, a: &Rational) -> String {
-        fmt_rational(a)
-    }
-    fn latex_elem(&self, a: &Rational) -> String {
-        if a.is_integer() {
-            int_string(a.numer())
-        } else {
-            let s = if a.is_negative() { "-" } else { "" };
-            format!("{s}\\frac{{{}}}{{{}}}", a.numer().abs(), a.denom())
-        }
-    }
     fn approx(&self, a: &Rational) -> Option<(f64, f64)> {
         Some(Q::approx(self, a))
     }
@@ -97,24 +79,6 @@ impl Field for Q {
     }
     fn kernels(&self) -> Kernels<'_, Q> {
         Kernels::Rational(RationalElems::IDENTITY)
-    }
-}
-
-/// `p/q` or `p` when the denominator is one.
-pub fn fmt_rational(a: &Rational) -> String {
-    if a.is_integer() {
-        int_string(a.numer())
-    } else {
-        format!("{}/{}", a.numer(), a.denom())
-    }
-}
-
-/// The decimal text of `x`, through a machine word when it fits one (the entries of an
-/// identity or of a small-integer matrix: issue 29, 10^4 of them in one report).
-fn int_string(x: &num_bigint::BigInt) -> String {
-    match x.to_i64() {
-        Some(v) => v.to_string(),
-        None => x.to_string(),
     }
 }
 

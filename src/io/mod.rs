@@ -60,7 +60,7 @@ pub use matlab::{parse_matlab_matrix, split_matlab_matrix};
 pub use read::read_text;
 pub use system_file::{SystemFile, parse_system_json, parse_system_toml, read_system_file};
 
-use crate::field::{Field, Quadratic, QuadraticField, Rational, fmt_rational};
+use crate::field::{ElemDisplay, Q, Quadratic, QuadraticField, Rational};
 use num_bigint::BigInt;
 use num_traits::Zero;
 use std::fmt;
@@ -136,10 +136,10 @@ impl Ground {
     pub fn fmt_scalar(&self, x: &ExactScalar) -> String {
         match self {
             Ground::Quadratic(k) => k.fmt_elem(&x.to_quadratic()),
-            Ground::Rational | Ground::RatFunc(_) if x.is_rational() => fmt_rational(&x.a),
+            Ground::Rational | Ground::RatFunc(_) if x.is_rational() => Q.fmt_elem(&x.a),
             // a scalar that does not belong to Q: show its coordinates rather than lie
             Ground::Rational | Ground::RatFunc(_) => {
-                format!("{} + {}*sqrt(?)", fmt_rational(&x.a), fmt_rational(&x.b))
+                format!("{} + {}*sqrt(?)", Q.fmt_elem(&x.a), Q.fmt_elem(&x.b))
             }
         }
     }

@@ -305,7 +305,9 @@ mod tests {
 
     #[test]
     fn literals() {
-        let q = |s: &str| plain_entry(s).map(|x| crate::field::fmt_rational(&x));
+        let q = |s: &str| {
+            plain_entry(s).map(|x| crate::field::ElemDisplay::fmt_elem(&crate::field::Q, &x))
+        };
         assert_eq!(q("0.08").as_deref(), Some("2/25"));
         assert_eq!(q("-1.5e-3").as_deref(), Some("-3/2000"));
         assert_eq!(q("2E3").as_deref(), Some("2000"));

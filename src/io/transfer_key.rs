@@ -17,6 +17,22 @@ use crate::realization::{
 use crate::system::StateSpace;
 use crate::system::transfer::TransferMatrix;
 
+/// The refusal of an improper `G` (its minimal realization has an infinite part of order
+/// `order`) by a command that needs a state-space system; `takers` names the commands that
+/// take the file.
+pub(crate) fn improper_g(file: &str, order: usize, takers: Option<&str>) -> InputError {
+    let also = takers.map_or(String::new(), |t| format!("; {t}"));
+    InputError::key(
+        file,
+        "G",
+        format!(
+            "improper transfer matrix (its minimal realization has an infinite part of order \
+             {order}): this command needs a state-space system{also}"
+        ),
+    )
+    .with_kind(InputErrorKind::Unsupported)
+}
+
 fn entries(m: &Matrix<Q>) -> MatrixEntries {
     MatrixEntries {
         nrows: m.nrows(),
@@ -71,18 +87,8 @@ pub(crate) fn realize_g_key(
     }
     let (_, r) = realize_g(file, &g.to_json(), params.as_ref(), var)?;
     let Some(ss) = r.state_space else {
-        return Err(InputError::key(
-            file,
-            "G",
-            format!(
-                "improper transfer matrix (its minimal realization has an infinite part of order {}): \
-                 this command needs a \
-                 state-space system; `tf`, `pencil`, `ctrb`, `obsv`, `zeros` and \
-                 `minreal --descriptor` take it",
-                r.minimal.infinite_order
-            ),
-        )
-        .with_kind(InputErrorKind::Unsupported));
+        let takers = "`tf`, `pencil`, `ctrb`, `obsv`, `zeros` and `minreal --descriptor` take it";
+        return Err(improper_g(file, r.minimal.infinite_order, Some(takers)));
     };
     Ok(vec![
         ("A", entries(&ss.a)),

@@ -92,16 +92,11 @@ pub(super) fn realize_g_symbolic(
     let tm = TransferMatrix { entries };
     let r = realize_transfer(&tm).map_err(|e| InputError::key(file, "G", e.to_string()))?;
     let Some(ss) = r.state_space else {
-        return Err(InputError::key(
+        return Err(super::transfer_key::improper_g(
             file,
-            "G",
-            format!(
-                "improper transfer matrix (its minimal realization has an infinite part of order {}): \
-                 this command needs a state-space system",
-                r.minimal.infinite_order
-            ),
-        )
-        .with_kind(InputErrorKind::Unsupported));
+            r.minimal.infinite_order,
+            None,
+        ));
     };
     Ok(vec![("A", ss.a), ("B", ss.b), ("C", ss.c), ("D", ss.d)])
 }

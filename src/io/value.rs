@@ -4,7 +4,7 @@
 //! crate's [`Error::Invalid`] with the message.
 
 use crate::error::{Error, Result};
-use crate::field::{QuadraticField, Rational, fmt_rational};
+use crate::field::{ElemDisplay, Q, QuadraticField, Rational};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
@@ -168,7 +168,7 @@ impl Value {
             let shown = if e.k.is_some() {
                 "a non-rational value".to_string()
             } else {
-                fmt_rational(&e.a)
+                Q.fmt_elem(&e.a)
             };
             return err(format!("exponent must be an integer, found {shown}"));
         }

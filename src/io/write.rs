@@ -43,7 +43,10 @@ pub fn system_file_json<K: Field>(
         o.insert("name".into(), Value::String(n.to_string()));
     }
     if let Some(dt) = &signals.dt {
-        o.insert("dt".into(), Value::String(crate::field::fmt_rational(dt)));
+        o.insert(
+            "dt".into(),
+            Value::String(crate::field::ElemDisplay::fmt_elem(&crate::field::Q, dt)),
+        );
     }
     let lists = [
         ("inputs", &signals.inputs, ss.ninputs()),

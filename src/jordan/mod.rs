@@ -61,18 +61,17 @@ pub use primary::{Component, PrimaryComponent, Restriction};
 pub use qp_form::jordan_qp;
 pub use real::{CompactPair, RealBlock, RealEntries, RealJordanForm, RealNote};
 pub use response::{FreeResponse, ResponseTerm, StateResponse};
-pub(crate) use roots::value_string as value_display;
+#[cfg(test)]
+pub(crate) use roots::certified_roots;
 
 use crate::algebraic::AlgebraicNumber;
 use crate::algebraic::{Ext, ExtElem, NfElem, NumberField};
 use crate::error::Result;
+use crate::field::ElemDisplay;
 use crate::field::{Field, Q};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use primary::named_field;
-#[cfg(feature = "cli")]
-#[allow(unused_imports)] // the `near` text of root legends
-pub(crate) use roots::fmt_approx;
 use roots::radical_text;
 
 /// An embedding of a component field $E = F\[t\]/(g)$ into an eigenvalue's display field.

@@ -102,26 +102,8 @@ fn real_approx(p: &Poly<Q>, z: AlgebraicNumber) -> (AlgebraicNumber, f64) {
     (z.clone(), z.approx().0)
 }
 
-pub(crate) use crate::algebraic::display::quadratic_roots;
+pub(crate) use crate::algebraic::digits::quadratic_roots;
 pub(crate) use crate::field::radical_text;
-
-/// Exact display of the root of the irreducible `p` nearest `approx`: the closed form of
-/// [`crate::algebraic::display::closed_form`] (the same as
-/// [`AlgebraicNumber::value_string`]'s), else `root of p near ...`.
-pub(crate) fn value_string(p: &Poly<Q>, approx: (f64, f64)) -> String {
-    crate::algebraic::display::closed_form(p, approx).unwrap_or_else(|| root_of(p, approx))
-}
-
-fn root_of(p: &Poly<Q>, approx: (f64, f64)) -> String {
-    format!("root of {p} near {}", fmt_approx(approx))
-}
-
-/// `1.259921050`, `1.931851653*i` or `-0.6299605249 - 1.091123636*i`: 10 significant
-/// digits, as [`AlgebraicNumber::value_string`] writes them
-/// ([`crate::algebraic::display::approx_text`]).
-pub(crate) fn fmt_approx(z: (f64, f64)) -> String {
-    crate::algebraic::display::approx_text(z)
-}
 
 #[cfg(test)]
 mod tests {
@@ -148,20 +130,6 @@ mod tests {
             assert_eq!(w[0].1.1, -w[1].1.1);
             assert!(w[0].1.1 > 0.0 && w[0].0 == w[1].0.conj());
         }
-        let vs = |q: &Poly<Q>| -> Vec<String> {
-            certified_roots(q)
-                .unwrap()
-                .iter()
-                .map(|z| value_string(q, z.1))
-                .collect()
-        };
-        assert_eq!(vs(&p(&[2, 2, 1])), ["-1 + i", "-1 - i"]);
-        let v = vs(&p(&[1, 0, 4, 0, 1]));
-        assert!(v.contains(&"i*sqrt(2 - sqrt(3))".to_string()), "{v:?}");
-        assert!(v.contains(&"-i*sqrt(2 + sqrt(3))".to_string()), "{v:?}");
-        let v = vs(&p(&[1, 0, -4, 0, 1]));
-        assert!(v.contains(&"-sqrt(2 + sqrt(3))".to_string()), "{v:?}");
-        assert_eq!(vs(&p(&[-1, -1, 1])), ["1/2 + sqrt(5)/2", "1/2 - sqrt(5)/2"]);
         let f = p(&[-1, 2])
             .pow(2)
             .mul(&p(&[1, 0, 1]))

@@ -30,7 +30,6 @@ pub(crate) use rref::nullspace_from_rref;
 
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, Rational};
-use std::fmt;
 
 /// A dense matrix over the field `K`, row-major.
 #[derive(Clone, Debug, PartialEq)]
@@ -218,12 +217,6 @@ impl<K: Field> Matrix<K> {
         }
         Ok(())
     }
-    /// Display entries with the field's exact display, `[[1, 2], [3, 4]]`.
-    pub fn to_rows_strings(&self) -> Vec<Vec<String>> {
-        (0..self.nrows)
-            .map(|i| self.row(i).iter().map(|x| self.field.fmt_elem(x)).collect())
-            .collect()
-    }
     /// Entry-wise floating-point approximation (real parts), for `_approx` outputs; NaN for
     /// an entry the field cannot approximate ([`Field::approx`] is `None`), see
     /// [`Matrix::try_to_approx_complex`].
@@ -277,17 +270,6 @@ pub fn to_rational_matrix<K: Field>(m: &Matrix<K>) -> Option<Matrix<Q>> {
         .map(|x| m.field().to_rational(x))
         .collect();
     Some(Matrix::from_vec(Q, m.nrows(), m.ncols(), data?))
-}
-
-impl<K: Field> fmt::Display for Matrix<K> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let rows: Vec<String> = self
-            .to_rows_strings()
-            .into_iter()
-            .map(|r| format!("[{}]", r.join(", ")))
-            .collect();
-        write!(f, "[{}]", rows.join(", "))
-    }
 }
 
 // `qmat!` (integers, rationals and exact text such as "0.08") is defined in crate::io::qmat.

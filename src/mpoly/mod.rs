@@ -111,36 +111,6 @@ impl QPoly {
             .is_integer()
             .then(|| self.prim.scale(self.content.numer()))
     }
-    fn render(&self, vars: &[String], latex: bool) -> String {
-        let show = |p: &MPoly| {
-            if latex {
-                p.to_latex(vars)
-            } else {
-                p.to_string_vars(vars)
-            }
-        };
-        if let Some(p) = self.to_integer_poly() {
-            return show(&p);
-        }
-        // rational content: the integer numerator times the polynomial, over the denominator
-        let num = self.prim.scale(self.content.numer());
-        let d = self.content.denom();
-        if latex {
-            format!("\\frac{{{}}}{{{d}}}", show(&num))
-        } else if num.len() == 1 {
-            format!("{}/{d}", show(&num))
-        } else {
-            format!("({})/{d}", show(&num))
-        }
-    }
-    /// Display with variable names: `m*u^2 - 3*cr`, `(2*x - y)/3`.
-    pub fn to_string_vars(&self, vars: &[String]) -> String {
-        self.render(vars, false)
-    }
-    /// LaTeX display: `m u^{2} - 3 \mathit{cr}`, `\frac{2 x - y}{3}`.
-    pub fn to_latex(&self, vars: &[String]) -> String {
-        self.render(vars, true)
-    }
 }
 
 impl MPoly {

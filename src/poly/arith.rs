@@ -2,7 +2,6 @@
 
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, Rational};
-use std::fmt;
 
 /// A dense univariate polynomial over the field `K`, coefficients low degree first.
 ///
@@ -344,10 +343,6 @@ impl<K: Field> Poly<K> {
     pub fn map<L: Field>(&self, to: &L, f: impl Fn(&K::Elem) -> L::Elem) -> Poly<L> {
         Poly::new(to.clone(), self.coeffs.iter().map(f).collect())
     }
-    /// Display with a chosen variable name.
-    pub fn to_string_var(&self, var: &str) -> String {
-        fmt_poly(&self.field, &self.coeffs, var)
-    }
 }
 
 impl Poly<Q> {
@@ -362,55 +357,6 @@ impl Poly<Q> {
     }
 }
 
-/// Formats coefficients `cs` (low first) as `x^4 + 4*x^2 + 1` in variable `var`.
-pub fn fmt_poly<K: Field>(k: &K, cs: &[K::Elem], var: &str) -> String {
-    let mut s = String::new();
-    for i in (0..cs.len()).rev() {
-        let c = &cs[i];
-        if k.is_zero(c) {
-            continue;
-        }
-        let mut t = k.fmt_elem(c);
-        let compound = t[1..].contains([' ', '+']) || (t[1..].contains('-'));
-        let neg = t.starts_with('-') && !compound;
-        if neg {
-            t.remove(0);
-        }
-        let mono = match i {
-            0 => String::new(),
-            1 => var.to_string(),
-            _ => format!("{var}^{i}"),
-        };
-        let body = if i == 0 {
-            // a compound constant term in parentheses beside other terms, bare alone
-            if compound && !s.is_empty() {
-                format!("({t})")
-            } else {
-                t
-            }
-        } else if t == "1" {
-            mono
-        } else if compound {
-            format!("({t})*{mono}")
-        } else {
-            format!("{t}*{mono}")
-        };
-        if s.is_empty() {
-            s = if neg { format!("-{body}") } else { body };
-        } else {
-            s.push_str(if neg { " - " } else { " + " });
-            s.push_str(&body);
-        }
-    }
-    if s.is_empty() { "0".into() } else { s }
-}
-
-impl<K: Field> fmt::Display for Poly<K> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", fmt_poly(&self.field, &self.coeffs, "x"))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -420,19 +366,6 @@ mod tests {
     #[test]
     fn basics() {
         let f = p(&[1, 0, 4, 0, 1]);
-        assert_eq!(f.to_string(), "x^4 + 4*x^2 + 1");
-        assert_eq!(p(&[-1, 1]).to_string(), "x - 1");
-        assert_eq!(p(&[0, -2]).to_string(), "-2*x");
-        // a constant in Q(sqrt 3) shows as the number itself (`1/6 - sqrt(3)/9`)
-        let k = crate::field::QuadraticField::new(3).unwrap();
-        let h = |n: i64, d: i64| Rational::new(n.into(), d.into());
-        let c = crate::field::Quadratic::new(h(1, 6), h(-1, 9));
-        assert_eq!(
-            fmt_poly(&k, std::slice::from_ref(&c), "t"),
-            "1/6 - sqrt(3)/9"
-        );
-        let lin = [c.clone(), k.one()];
-        assert_eq!(fmt_poly(&k, &lin, "t"), "t + (1/6 - sqrt(3)/9)");
         let g = p(&[2, 1]);
         let (q, r) = f.divrem(&g).unwrap();
         assert_eq!(q.mul(&g).add(&r), f);

@@ -19,11 +19,10 @@
 
 use super::Poly;
 use crate::field::Q;
-use num_bigint::{BigInt, Sign};
+use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
-use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
 
 /// A dense integer polynomial, low degree first, without trailing zeros.
@@ -291,51 +290,6 @@ impl ZPoly {
             self.clone()
         }
     }
-
-    /// Display with `var` as the variable name, e.g. `s^2 + 1`.
-    pub fn display_with<'a>(&'a self, var: &'a str) -> impl fmt::Display + 'a {
-        struct D<'a>(&'a ZPoly, &'a str);
-        impl fmt::Display for D<'_> {
-            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                self.0.fmt_var(f, self.1)
-            }
-        }
-        D(self, var)
-    }
-
-    fn fmt_var(&self, f: &mut fmt::Formatter<'_>, var: &str) -> fmt::Result {
-        if self.is_zero() {
-            return write!(f, "0");
-        }
-        let mut first = true;
-        for (k, c) in self.coeffs.iter().enumerate().rev() {
-            if c.is_zero() {
-                continue;
-            }
-            let neg = c.sign() == Sign::Minus;
-            match (first, neg) {
-                (true, true) => write!(f, "-")?,
-                (true, false) => {}
-                (false, true) => write!(f, " - ")?,
-                (false, false) => write!(f, " + ")?,
-            }
-            first = false;
-            let a = c.magnitude();
-            if k == 0 {
-                write!(f, "{a}")?;
-                continue;
-            }
-            if !a.is_one() {
-                write!(f, "{a}*")?;
-            }
-            if k == 1 {
-                write!(f, "{var}")?;
-            } else {
-                write!(f, "{var}^{k}")?;
-            }
-        }
-        Ok(())
-    }
 }
 
 /// Subresultant PRS for primitive `a`, `b` with $\deg a \ge \deg b \ge 1$; returns the last
@@ -379,12 +333,6 @@ impl Ord for ZPoly {
 impl PartialOrd for ZPoly {
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
-    }
-}
-
-impl fmt::Display for ZPoly {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.fmt_var(f, "x")
     }
 }
 

@@ -21,7 +21,6 @@
 //! Display: `-cr/(m*u)`; numerator and denominator are shown factored where that is shorter
 //! (`(a + b)^2/c`); LaTeX uses `\frac{}{}`.
 
-mod display;
 pub(crate) mod kernels;
 
 /// $\det B$ of a matrix over $\mathbb{Z}\lbrack p\rbrack$ by evaluation/interpolation (the kernel behind every Q(p) determinant).
@@ -90,13 +89,6 @@ impl Eq for RatFuncField {}
 impl fmt::Debug for RatFuncField {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "RatFuncField({:?})", self.ctx.vars)
-    }
-}
-
-impl fmt::Display for RatFuncField {
-    /// `QQ(cr, m, u)`.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "QQ({})", self.ctx.vars.join(", "))
     }
 }
 
@@ -282,10 +274,6 @@ impl RatFuncField {
             .iter()
             .map(|p| p.display_normalized().to_string_vars(self.vars()))
             .collect())
-    }
-    /// Display of a polynomial in this field's variables.
-    pub fn fmt_poly(&self, p: &MPoly) -> String {
-        p.to_string_vars(self.vars())
     }
     /// `a / b` for nonzero `b` (no condition recorded: internal use by callers that record
     /// themselves).
@@ -489,12 +477,6 @@ impl Field for RatFuncField {
     fn to_rational(&self, a: &RatFunc) -> Option<Rational> {
         a.to_rational()
     }
-    fn fmt_elem(&self, a: &RatFunc) -> String {
-        display::fmt(self.vars(), a, false)
-    }
-    fn latex_elem(&self, a: &RatFunc) -> String {
-        display::fmt(self.vars(), a, true)
-    }
     /// Evaluation/interpolation kernels ([`kernels`]).
     fn kernels(&self) -> Kernels<'_, RatFuncField> {
         Kernels::Table(&kernels::QP_KERNELS)
@@ -524,6 +506,7 @@ impl RatFuncField {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::field::ElemDisplay;
     #[test]
     fn examples() {
         let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();

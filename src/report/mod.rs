@@ -5,6 +5,7 @@
 //! becomes `"T": [["1", "-1/2"], ...]` plus `"T_approx": [[1.0, -0.5], ...]` as the CLI
 //! contract requires.
 
+pub mod display;
 pub mod escape;
 pub mod html;
 pub mod latex;

@@ -18,7 +18,7 @@ pub fn canonical(minpoly: &str, approx: (f64, f64)) -> Option<String> {
     if p.deg() < 1 {
         return None;
     }
-    Some(crate::jordan::value_display(&p, approx))
+    Some(crate::report::display::value_display(&p, approx))
 }
 
 /// `value` with every display of a number rewritten in its canonical display.

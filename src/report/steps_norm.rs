@@ -4,6 +4,7 @@
 //! `report::steps_forms`.
 
 use crate::algebraic::ExtElem;
+use crate::field::ElemDisplay;
 use crate::field::Field;
 use crate::jordan::derivation::{Derivation, Method, Step, StepKind};
 use crate::jordan::normalize::{ClosedUnit, Normalization, Scale};

@@ -24,7 +24,7 @@
 //! "a single integrator chain of length three" (sec. V).
 
 use crate::error::{Error, Result};
-use crate::field::Field;
+use crate::field::ElemDisplay;
 use crate::matrix::Matrix;
 use crate::mpoly::MPoly;
 use crate::mpoly::factor::cmp_poly;

@@ -16,7 +16,6 @@
 
 pub mod dcgain;
 pub mod discrete;
-mod display;
 pub mod interconnect;
 pub mod margins;
 pub(crate) mod steps;

@@ -42,16 +42,6 @@ impl<K: Field> RationalFunction<K> {
     pub fn is_proper(&self) -> bool {
         self.num.is_zero() || self.num.deg() <= self.den.deg()
     }
-    pub fn to_string_var(&self, var: &str) -> String {
-        if self.den.is_one() {
-            return self.num.to_string_var(var);
-        }
-        format!(
-            "({})/({})",
-            self.num.to_string_var(var),
-            self.den.to_string_var(var)
-        )
-    }
 }
 
 /// A matrix of rational functions.
@@ -104,19 +94,6 @@ impl<K: Field> TransferMatrix<K> {
             }
         }
         true
-    }
-
-    /// Entries as strings in the variable `s`.
-    pub fn to_strings(&self) -> Vec<Vec<String>> {
-        self.to_strings_var("s")
-    }
-
-    /// Entries as strings in the variable `var` (`z` for a discrete-time system).
-    pub fn to_strings_var(&self, var: &str) -> Vec<Vec<String>> {
-        self.entries
-            .iter()
-            .map(|r| r.iter().map(|f| f.to_string_var(var)).collect())
-            .collect()
     }
 }
 

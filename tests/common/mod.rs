@@ -71,6 +71,46 @@ pub fn unimodular<K: Field>(k: &K, n: usize, rng: &mut Rng) -> Matrix<K> {
     t
 }
 
+/// One `#[test]` per field for a generic check `$check(&k, &gen, seed, iters)`: over
+/// $\mathbb{Q}$ (no generator), $\mathbb{Q}(\sqrt 2)$, $\mathbb{Q}(i)$ and $\mathbb{Q}(p)$
+/// (generator `p`), seeded `$seed`, `$seed + 1`, `$seed + 2`, `$seed + 3`, with
+/// `common::iters($n)` rounds (`$n_qp` over $\mathbb{Q}(p)$, whose arithmetic is slower):
+/// `for_each_field!(check_linalg, 2311, 10, 5; linalg_over_q, linalg_over_q_sqrt2,
+/// linalg_over_q_i, linalg_over_q_p);`
+#[macro_export]
+macro_rules! for_each_field {
+    ($check:ident, $seed:expr, $n:expr, $n_qp:expr; $q:ident, $sqrt2:ident, $i:ident, $p:ident) => {
+        #[test]
+        fn $q() {
+            $check(
+                &$crate::common::q(),
+                &None,
+                $seed,
+                $crate::common::iters($n),
+            );
+        }
+
+        #[test]
+        fn $sqrt2() {
+            let (k, g) = $crate::common::qsqrt2();
+            $check(&k, &g, $seed + 1, $crate::common::iters($n));
+        }
+
+        #[test]
+        fn $i() {
+            let (k, g) = $crate::common::qi();
+            $check(&k, &g, $seed + 2, $crate::common::iters($n));
+        }
+
+        #[test]
+        fn $p() {
+            let k = exactlti::ratfunc::RatFuncField::new(&["p"]).unwrap();
+            let g = Some(k.var(0));
+            $check(&k, &g, $seed + 3, $crate::common::iters($n_qp));
+        }
+    };
+}
+
 pub fn q() -> Q {
     Q
 }

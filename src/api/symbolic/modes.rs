@@ -10,6 +10,7 @@
 //! For the mass–spring–damper $m s^2 + c s + k$: $\omega_n^2 = k/m$, $2\zeta\omega_n = c/m$,
 //! $\zeta^2 = c^2/(4 k m)$, i.e. $\omega_n = \sqrt{k/m}$, $\zeta = c / (2\sqrt{k m})$.
 
+use crate::field::ElemDisplay;
 use crate::field::Field;
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;

@@ -9,6 +9,7 @@
 use crate::api::common::exact_only;
 use crate::api::common::with_path;
 use crate::api::{Command, Failure, MethodArg, Outcome};
+use crate::field::ElemDisplay;
 use crate::field::Field;
 use crate::io::{SystemFile, TypedSystem};
 use crate::poly::Poly;

@@ -3,48 +3,22 @@
 //! monomial `c\,x^{k}` with the sign of the coefficient pulled into the sum.
 
 use crate::algebraic::{AlgebraicNumber, Ext};
-use crate::field::{Field, Q, quadratic_latex};
+use crate::field::ElemDisplay;
+use crate::field::{Field, Q};
 use crate::poly::Poly;
+use crate::report::display::quadratic_latex;
+use crate::report::display::{LATEX, poly_sum};
 
 /// The polynomial with coefficients `cs` (low degree first) in `var`, each coefficient
-/// typeset by `elem` (compound ones in parentheses): `x^{2} - \frac{1}{2} x + 3`.
+/// typeset by `elem` (compound ones in parentheses): `x^{2} - \frac{1}{2} x + 3` (the one
+/// sum writer of the text display, [`crate::report::display::poly_sum`], in its LaTeX style).
 pub fn poly_latex<K: Field>(
     k: &K,
     cs: &[K::Elem],
     var: &str,
     elem: &dyn Fn(&K::Elem) -> String,
 ) -> String {
-    let mut s = String::new();
-    for i in (0..cs.len()).rev() {
-        if k.is_zero(&cs[i]) {
-            continue;
-        }
-        let mut t = elem(&cs[i]);
-        let compound = t.len() > 1 && (t[1..].contains(" + ") || t[1..].contains(" - "));
-        let neg = t.starts_with('-') && !compound;
-        if neg {
-            t.remove(0);
-        }
-        let mono = match i {
-            0 => String::new(),
-            1 => var.to_string(),
-            _ => format!("{var}^{{{i}}}"),
-        };
-        let body = match (i, t.as_str(), compound) {
-            (0, _, true) if !s.is_empty() => format!("\\left({t}\\right)"),
-            (0, _, _) => t,
-            (_, "1", _) => mono,
-            (_, _, true) => format!("\\left({t}\\right) {mono}"),
-            _ => format!("{t} {mono}"),
-        };
-        if s.is_empty() {
-            s = if neg { format!("-{body}") } else { body };
-        } else {
-            s.push_str(if neg { " - " } else { " + " });
-            s.push_str(&body);
-        }
-    }
-    if s.is_empty() { "0".into() } else { s }
+    poly_sum(k, cs, var, elem, &LATEX)
 }
 
 /// An element of $F[t]/(g)$: the field's closed form when it has one ($a + b\sqrt d$),
@@ -77,7 +51,7 @@ pub fn algebraic_latex(a: &AlgebraicNumber) -> String {
     }
     let (re, im) = a.digits(10);
     let near =
-        crate::algebraic::display::near_text(&re, &im, a.is_real()).replace("*i", "\\,\\mathrm{i}");
+        crate::report::display::near_text(&re, &im, a.is_real()).replace("*i", "\\,\\mathrm{i}");
     format!(
         "\\text{{root of }} {} \\text{{ near }} {near}",
         poly_latex(&Q, a.minpoly().coeffs(), "x", &|c| Q.latex_elem(c))
@@ -87,6 +61,7 @@ pub fn algebraic_latex(a: &AlgebraicNumber) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::field::ElemDisplay;
     use crate::field::Rational;
 
     fn q(n: i64, d: i64) -> Rational {
@@ -125,7 +100,7 @@ mod tests {
 
 #[cfg(test)]
 mod matrix_tests {
-    use crate::field::{Field, QuadraticField, Rational};
+    use crate::field::{ElemDisplay, Field, QuadraticField, Rational};
     use crate::matrix::Matrix;
     use crate::ratfunc::RatFuncField;
     use crate::report::{MatrixOut, Target};

@@ -4,7 +4,8 @@
 //! $K(v_0)$) and the algebraic number the study holds, text and LaTeX from the same value.
 
 use crate::algebraic::AlgebraicNumber;
-use crate::field::{Rational, fmt_rational};
+use crate::field::Rational;
+use crate::report::display::fmt_rational;
 use crate::report::latex::{algebraic_latex, poly_over_ext_latex};
 use crate::report::{Report, Value};
 use crate::study::CriticalValues;

@@ -1,8 +1,9 @@
 //! Reports of the discrete-time commands: exact stability (factors of $\det(zI - A)$ and
 //! where their roots lie), exact step/impulse sequences, and c2d/d2c results.
 
-use crate::field::{Field, Rational, fmt_rational};
+use crate::field::{Field, Rational};
 use crate::matrix::Matrix;
+use crate::report::display::fmt_rational;
 use crate::report::{Report, Value};
 use crate::system::StateSpace;
 use crate::system::discrete::stability::{Domain, Place, Stability, Verdict};

@@ -10,6 +10,7 @@
 pub(super) use super::cells::Cells;
 use super::eigenvalue_items;
 use crate::algebraic::{Ext, ExtElem};
+use crate::field::ElemDisplay;
 use crate::field::Field;
 use crate::jordan::qp_form::integral;
 use crate::jordan::{
@@ -42,7 +43,7 @@ pub(super) fn field_line(f: &crate::algebraic::NumberField) -> Option<String> {
         format!(
             "{} = {}",
             f.var(),
-            crate::jordan::value_display(f.modulus(), f.root_approx())
+            crate::report::display::value_display(f.modulus(), f.root_approx())
         )
     })
 }
@@ -82,9 +83,9 @@ pub(super) fn neg_display(x: &str) -> String {
 /// $q\sqrt g$ for rational $q$ and square-free $g > 0$ (`q` itself when $g = 1$).
 fn im_radical(q: &crate::field::Rational, g: &num_bigint::BigInt) -> String {
     if num_traits::One::is_one(g) {
-        crate::field::fmt_rational(q)
+        crate::report::display::fmt_rational(q)
     } else {
-        crate::field::quadratic::fmt_pair(&num_traits::Zero::zero(), q, &format!("sqrt({g})"))
+        crate::report::display::fmt_pair(&num_traits::Zero::zero(), q, &format!("sqrt({g})"))
     }
 }
 
@@ -176,7 +177,7 @@ fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
         None => Some(format!(
             "{sym} = {what} {}, near {}",
             e.symbol(),
-            crate::algebraic::display::approx_text((v, 0.0))
+            crate::report::display::approx_text((v, 0.0))
         )),
     };
     let mut out = vec![format!("{} = {re} + {im}*i", e.symbol())];
@@ -189,7 +190,7 @@ fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
 /// degree 2 and for biquadratics, else `root of <minpoly> near <approx>`), from its minimal
 /// polynomial and the approximation that marks the root.
 pub fn eigenvalue_text(e: &Eigenvalue) -> String {
-    crate::jordan::value_display(&e.minpoly, e.approx)
+    crate::report::display::value_display(&e.minpoly, e.approx)
 }
 
 impl<F: EigenField> JordanForm<F> {

@@ -1,8 +1,8 @@
 //! Reports of `poly factor` and `poly gcd` on multivariate input (every identifier is a
 //! variable; CLI contract, second wave).
 
-use crate::field::fmt_rational;
 use crate::mpoly::{QPoly, factor::factor_q, gcd};
+use crate::report::display::fmt_rational;
 use crate::report::{Report, Value};
 
 fn vars_value(vars: &[String]) -> Value {

@@ -297,7 +297,7 @@ fn zpk_string(num: &Poly<Q>, den: &Poly<Q>, var: &str) -> Result<String> {
     if num.is_zero() {
         return Ok("0".into());
     }
-    let gain = crate::field::fmt_rational(&(num.lc() / den.lc()));
+    let gain = crate::report::display::fmt_rational(&(num.lc() / den.lc()));
     let factors = |p: &Poly<Q>| -> Result<Vec<(String, usize)>> {
         if p.deg() == 0 {
             return Ok(Vec::new());

@@ -258,7 +258,7 @@ impl crate::realization::Mode {
             .iter()
             .map(|(k, v)| {
                 let text = match v {
-                    ExactFigure::Rational(q) => crate::field::fmt_rational(q),
+                    ExactFigure::Rational(q) => crate::report::display::fmt_rational(q),
                     ExactFigure::Sqrt { radicand, negative } => {
                         let s = sqrt_display(radicand);
                         if *negative { format!("-{s}") } else { s }
@@ -274,8 +274,8 @@ impl crate::realization::Mode {
 fn sqrt_display(r: &crate::field::Rational) -> String {
     let (field, a, b) = crate::field::QuadraticField::sqrt_of_rational(r);
     match field {
-        None => crate::field::fmt_rational(&a),
-        Some(k) => crate::field::quadratic_display(&num_traits::Zero::zero(), &b, k.d()),
+        None => crate::report::display::fmt_rational(&a),
+        Some(k) => crate::report::display::quadratic_display(&num_traits::Zero::zero(), &b, k.d()),
     }
 }
 

@@ -5,7 +5,7 @@
 
 use super::eigenvalue_text;
 use crate::algebraic::Ext;
-use crate::field::Field;
+use crate::field::ElemDisplay;
 use crate::jordan::{EigenField, JordanForm, StateResponse};
 use crate::matrix::Matrix;
 use crate::ratfunc::{RatFunc, RatFuncField};

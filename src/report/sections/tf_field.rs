@@ -12,6 +12,7 @@
 
 use crate::algebraic::{factor_over_quadratic, rational_minpoly};
 use crate::error::Result;
+use crate::field::ElemDisplay;
 use crate::field::{Field, QuadraticField};
 use crate::matrix::Matrix;
 use crate::poly::Poly;

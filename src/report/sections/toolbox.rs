@@ -3,9 +3,10 @@
 //! `stepinfo` (float step characteristics per channel).
 
 use crate::algebraic::AlgebraicNumber;
-use crate::field::{Q, fmt_rational};
+use crate::field::Q;
 use crate::float::stepinfo::{NoStepInfo, StepInfo};
 use crate::realization::{DampRow, GramType, Gramian};
+use crate::report::display::fmt_rational;
 use crate::report::text::short;
 use crate::report::{Report, Value};
 use crate::system::margins::{Margins, to_db};

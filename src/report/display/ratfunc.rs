@@ -1,12 +1,38 @@
-//! Display of rational functions: `-cr/(m*u)`, `(a + b)^2/c`, `\frac{...}{...}`.
+//! Display of rational functions $\mathbb{Q}(p_1, \dots, p_k)$: `-cr/(m*u)`, `(a + b)^2/c`,
+//! `\frac{...}{...}`; the field itself as `QQ(cr, m, u)`.
 //!
 //! Numerator and denominator are each shown expanded or factored, whichever is shorter
 //! (factored on a tie); factoring is tried only for polynomials of at most
 //! [`FACTOR_DISPLAY_TERMS`] terms, so display stays cheap.
 
-use super::RatFunc;
+use crate::field::ElemDisplay;
 use crate::mpoly::{MPoly, factor};
+use crate::ratfunc::{RatFunc, RatFuncField};
 use num_traits::{One, Signed};
+use std::fmt;
+
+impl fmt::Display for RatFuncField {
+    /// `QQ(cr, m, u)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "QQ({})", self.vars().join(", "))
+    }
+}
+
+impl ElemDisplay<RatFunc> for RatFuncField {
+    fn fmt_elem(&self, a: &RatFunc) -> String {
+        fmt(self.vars(), a, false)
+    }
+    fn latex_elem(&self, a: &RatFunc) -> String {
+        fmt(self.vars(), a, true)
+    }
+}
+
+impl RatFuncField {
+    /// Display of a polynomial in this field's variables.
+    pub fn fmt_poly(&self, p: &MPoly) -> String {
+        p.to_string_vars(self.vars())
+    }
+}
 
 /// Polynomials with more terms are displayed expanded only.
 pub const FACTOR_DISPLAY_TERMS: usize = 64;
@@ -76,15 +102,15 @@ fn best(vars: &[String], p: &MPoly, latex: bool) -> String {
 }
 
 /// Text (`latex = false`) or LaTeX display of `a`.
-pub(super) fn fmt(vars: &[String], a: &RatFunc, latex: bool) -> String {
-    let neg = a.num.lc().is_negative();
-    let abs = if neg { a.num.neg() } else { a.num.clone() };
+fn fmt(vars: &[String], a: &RatFunc, latex: bool) -> String {
+    let neg = a.num().lc().is_negative();
+    let abs = if neg { a.num().neg() } else { a.num().clone() };
     let num_abs = best(vars, &abs, latex);
-    if a.den.is_one() {
+    if a.den().is_one() {
         if !neg {
             return num_abs;
         }
-        let direct = render(vars, &a.num, latex);
+        let direct = render(vars, a.num(), latex);
         let factored = if is_sum(&num_abs) {
             format!("-({num_abs})")
         } else {
@@ -96,7 +122,7 @@ pub(super) fn fmt(vars: &[String], a: &RatFunc, latex: bool) -> String {
             direct
         };
     }
-    let den = best(vars, &a.den, latex);
+    let den = best(vars, a.den(), latex);
     let sign = if neg { "-" } else { "" };
     if latex {
         return format!("{sign}\\frac{{{num_abs}}}{{{den}}}");
@@ -118,7 +144,7 @@ pub(super) fn fmt(vars: &[String], a: &RatFunc, latex: bool) -> String {
     if !is_sum(&num_abs) {
         return format!("-{num_abs}/{den}");
     }
-    let direct = format!("({})/{den}", render(vars, &a.num, false));
+    let direct = format!("({})/{den}", render(vars, a.num(), false));
     let pulled = format!("-({num_abs})/{den}");
     if pulled.len() < direct.len() {
         pulled
