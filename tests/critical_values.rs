@@ -9,18 +9,13 @@ use exactlti::study::critical::over_k::critical_values_of_file;
 use exactlti::study::critical::{EigenvalueAt, FactorAt};
 use exactlti::study::{CriticalKind, CriticalValues, ParamFamily, critical_values};
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 fn q(n: i64, d: i64) -> Rational {
     Rational::new(n.into(), d.into())
 }
 
 fn write(name: &str, text: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-critical-values");
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
+    crate::common::cli::temp_file("critical-values", name, text)
 }
 
 const YAW: &str = r#"{"parameters": {"m": 1500, "J": 2500, "lf": 1.2, "lr": 1.4, "cf": 80000,
@@ -89,20 +84,13 @@ fn yaw_plane_double_eigenvalue_is_exact() {
 }
 
 fn cli(file: &Path, format: &str) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .arg("critical")
-        .arg(file)
-        .args([
-            "--param", "v", "--from", "1", "--to", "80", "--format", format,
-        ])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
+    let file = file.to_str().unwrap();
+    let args = [
+        "critical", file, "--param", "v", "--from", "1", "--to", "80",
+    ];
+    let (code, out, err) = crate::common::cli::run(&[&args[..], &["--format", format]].concat());
+    assert_eq!(code, 0, "{err}");
+    out
 }
 
 #[test]

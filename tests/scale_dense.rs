@@ -35,6 +35,16 @@ fn dense(n: usize, q: usize, seed: u64) -> Matrix<RatFuncField> {
     })
 }
 
+/// Every dense case: `(n, q, A)` for n = 4..7 and q = 2, 3 parameters, A = [`dense`] seeded
+/// by `(n, q)`.
+fn dense_cases() -> impl Iterator<Item = (usize, usize, Matrix<RatFuncField>)> {
+    (4..=7).flat_map(|n| {
+        [2, 3]
+            .into_iter()
+            .map(move |q| (n, q, dense(n, q, 1000 + 10 * n as u64 + q as u64)))
+    })
+}
+
 fn point(q: usize, rng: &mut SplitMix64) -> Vec<Rational> {
     (0..q)
         .map(|_| Rational::new(rng.int(-30, 30).into(), rng.int(1, 7).into()))
@@ -52,27 +62,24 @@ fn eval_poly(p: &Poly<RatFuncField>, x: &[Rational]) -> Vec<Rational> {
 #[test]
 fn dense_charpoly_and_det_commute_with_substitution() {
     let mut rng = SplitMix64(25);
-    for n in 4..=7 {
-        for q in [2, 3] {
-            let a = dense(n, q, 1000 + 10 * n as u64 + q as u64);
-            let chi = a.charpoly().unwrap();
-            let det = a.det().unwrap();
-            assert_eq!(chi.degree(), Some(n));
-            for _ in 0..3 {
-                let x = point(q, &mut rng);
-                let aq = at(&a, &x);
-                let want = aq.charpoly().unwrap();
-                assert_eq!(
-                    eval_poly(&chi, &x),
-                    want.coeffs().to_vec(),
-                    "n = {n}, q = {q}"
-                );
-                assert_eq!(
-                    a.field().eval(&det, &x).unwrap(),
-                    aq.det().unwrap(),
-                    "n = {n}, q = {q}"
-                );
-            }
+    for (n, q, a) in dense_cases() {
+        let chi = a.charpoly().unwrap();
+        let det = a.det().unwrap();
+        assert_eq!(chi.degree(), Some(n));
+        for _ in 0..3 {
+            let x = point(q, &mut rng);
+            let aq = at(&a, &x);
+            let want = aq.charpoly().unwrap();
+            assert_eq!(
+                eval_poly(&chi, &x),
+                want.coeffs().to_vec(),
+                "n = {n}, q = {q}"
+            );
+            assert_eq!(
+                a.field().eval(&det, &x).unwrap(),
+                aq.det().unwrap(),
+                "n = {n}, q = {q}"
+            );
         }
     }
 }
@@ -80,31 +87,28 @@ fn dense_charpoly_and_det_commute_with_substitution() {
 #[test]
 fn dense_rref_commutes_with_substitution_off_the_conditions() {
     let mut rng = SplitMix64(52);
-    for n in 4..=7 {
-        for q in [2, 3] {
-            let a = dense(n, q, 1000 + 10 * n as u64 + q as u64);
-            let k = a.field().fresh();
-            let a = Matrix::from_vec(k.clone(), n, n, a.as_slice().to_vec());
-            // [A | A e]: rank n, pivots 0..n-1, the free column is the row sums
-            let ones = Matrix::from_fn(k.clone(), n, 1, |_, _| k.one());
-            let wide = a.hstack(&a.try_mul(&ones).unwrap()).unwrap();
-            let (r, piv) = wide.rref();
-            assert_eq!(piv, (0..n).collect::<Vec<_>>(), "n = {n}, q = {q}");
-            let conds = k.conditions().unwrap();
-            let mut checked = 0;
-            while checked < 2 {
-                let x = point(q, &mut rng);
-                if conds
-                    .iter()
-                    .any(|c| Q.is_zero(&k.eval(&k.from_mpoly(c.clone()), &x).unwrap()))
-                {
-                    continue;
-                }
-                let (rq, pq) = at(&wide, &x).rref();
-                assert_eq!(pq, piv);
-                assert_eq!(at(&r, &x), rq, "n = {n}, q = {q}");
-                checked += 1;
+    for (n, q, a) in dense_cases() {
+        let k = a.field().fresh();
+        let a = Matrix::from_vec(k.clone(), n, n, a.as_slice().to_vec());
+        // [A | A e]: rank n, pivots 0..n-1, the free column is the row sums
+        let ones = Matrix::from_fn(k.clone(), n, 1, |_, _| k.one());
+        let wide = a.hstack(&a.try_mul(&ones).unwrap()).unwrap();
+        let (r, piv) = wide.rref();
+        assert_eq!(piv, (0..n).collect::<Vec<_>>(), "n = {n}, q = {q}");
+        let conds = k.conditions().unwrap();
+        let mut checked = 0;
+        while checked < 2 {
+            let x = point(q, &mut rng);
+            if conds
+                .iter()
+                .any(|c| Q.is_zero(&k.eval(&k.from_mpoly(c.clone()), &x).unwrap()))
+            {
+                continue;
             }
+            let (rq, pq) = at(&wide, &x).rref();
+            assert_eq!(pq, piv);
+            assert_eq!(at(&r, &x), rq, "n = {n}, q = {q}");
+            checked += 1;
         }
     }
 }

@@ -17,7 +17,7 @@ use exactlti::field::ElemDisplay;
 use exactlti::field::Field;
 use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};
-use exactlti::jordan::derivation::{Derivation, StepKind};
+use exactlti::jordan::derivation::{Derivation, Step, StepKind};
 use exactlti::jordan::normalize::{Normalization, dot, normalize_form};
 use exactlti::jordan::real_steps::real_jordan_steps_qp;
 use exactlti::matrix::Matrix;
@@ -198,6 +198,22 @@ fn traced_markov(
     out
 }
 
+/// The `(J, B, C)` matrices named `names` of each step (`nonempty`: the steps whose `J` has
+/// rows only).
+fn stage_parts<'a>(
+    steps: impl Iterator<Item = &'a Step<E>>,
+    names: [&str; 3],
+    nonempty: bool,
+) -> Vec<(&'a Matrix<E>, &'a Matrix<E>, &'a Matrix<E>)> {
+    steps
+        .filter(|s| !nonempty || s.matrix(names[0]).unwrap().nrows() > 0)
+        .map(|s| {
+            let m = |name: &str| s.matrix(name).unwrap();
+            (m(names[0]), m(names[1]), m(names[2]))
+        })
+        .collect()
+}
+
 /// The sliding masses in m, k (paper sec. 4.1): 20 -> 16 -> 8, the Markov parameters of
 /// every stage (the modal data, the kept modes, the compacted blocks) equal C A^k B.
 #[test]
@@ -215,39 +231,9 @@ fn jordan_method_stages_over_qp() {
     let kmax = 28;
     // the system in the derivation's parameters' field
     let want = t.ss.markov(kmax);
-    let modal: Vec<_> = d.of_kind(StepKind::ModalData).collect();
-    let stage0: Vec<_> = modal
-        .iter()
-        .map(|s| {
-            (
-                s.matrix("J").unwrap(),
-                s.matrix("WB").unwrap(),
-                s.matrix("CV").unwrap(),
-            )
-        })
-        .collect();
-    let stage1: Vec<_> = d
-        .of_kind(StepKind::DropModes)
-        .filter(|s| s.matrix("Jk").unwrap().nrows() > 0)
-        .map(|s| {
-            (
-                s.matrix("Jk").unwrap(),
-                s.matrix("Bk").unwrap(),
-                s.matrix("Ck").unwrap(),
-            )
-        })
-        .collect();
-    let stage2: Vec<_> = d
-        .of_kind(StepKind::Compaction)
-        .filter(|s| s.matrix("J").unwrap().nrows() > 0)
-        .map(|s| {
-            (
-                s.matrix("J").unwrap(),
-                s.matrix("B").unwrap(),
-                s.matrix("C").unwrap(),
-            )
-        })
-        .collect();
+    let stage0 = stage_parts(d.of_kind(StepKind::ModalData), ["J", "WB", "CV"], false);
+    let stage1 = stage_parts(d.of_kind(StepKind::DropModes), ["Jk", "Bk", "Ck"], true);
+    let stage2 = stage_parts(d.of_kind(StepKind::Compaction), ["J", "B", "C"], true);
     let order = |parts: &[(&Matrix<E>, &Matrix<E>, &Matrix<E>)]| -> usize {
         parts
             .iter()

@@ -225,26 +225,18 @@ fn sweep_agrees_with_exact_eigenvalue_counts() {
 #[test]
 fn cli_critical_and_sweep() {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/bicycle-whipple.json");
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args([
-            "critical",
-            file.to_str().unwrap(),
-            "--param",
-            "v",
-            "--from",
-            "0",
-            "--to",
-            "10",
-        ])
-        .args(["--format", "json", "--digits", "14"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let j = crate::common::cli::run_json(&[
+        "critical",
+        file.to_str().unwrap(),
+        "--param",
+        "v",
+        "--from",
+        "0",
+        "--to",
+        "10",
+        "--digits",
+        "14",
+    ]);
     let cvs = j["critical_values"].as_array().unwrap();
     assert_eq!(cvs[1]["kind"], "imaginary_pair");
     assert_eq!(cvs[1]["digits"], "4.2923825363411");

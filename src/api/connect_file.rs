@@ -219,7 +219,7 @@ impl SystemVisitor for Finish<'_> {
             .str("field", sys.field().to_string())
             .with("variable", crate::report::sections::variable(domain));
         if let Some(dt) = &f.signals.dt {
-            r = r.str("dt", crate::report::display::fmt_rational(dt));
+            r = r.rational("dt", dt);
         }
         r = r
             .int("states", sys.nstates())

@@ -52,10 +52,8 @@ pub(crate) fn freqresp_command<K: Field>(
         super::discrete_plots::bode_file_dt(f, t, path, dt, range, out)?;
         r = r.str("svg", out.display().to_string());
     }
-    Ok(super::Outcome::plain(
-        r.str("dt", crate::report::display::fmt_rational(dt)).str(
-            "note",
-            "G(e^(j 2 pi f T)), up to the Nyquist frequency 1/(2 T) Hz",
-        ),
-    ))
+    Ok(super::Outcome::plain(r.rational("dt", dt).str(
+        "note",
+        "G(e^(j 2 pi f T)), up to the Nyquist frequency 1/(2 T) Hz",
+    )))
 }

@@ -262,6 +262,11 @@ impl Report {
     pub fn math(self, key: &str, text: impl Into<String>, latex: impl Into<String>) -> Self {
         self.with(key, Value::math(text, latex))
     }
+    /// A rational number, its text and LaTeX made from the value (`-3/7`, `-\\frac{3}{7}`).
+    pub fn rational(self, key: &str, q: &crate::field::Rational) -> Self {
+        use crate::field::{ElemDisplay, Q};
+        self.math(key, Q.fmt_elem(q), Q.latex_elem(q))
+    }
     pub fn int(self, key: &str, n: usize) -> Self {
         self.with(key, Value::Int(n as i64))
     }

@@ -48,17 +48,27 @@ pub fn quadratic_string(a: &Rational, b: &Rational, d: &BigInt) -> String {
     quadratic_display(a, b, d)
 }
 
-/// The closed form of the root of the irreducible monic `p` nearest `approx`, the one used
-/// by every report: the rational for degree 1, [`quadratic_display`] for degree 2 (the sign
-/// of the radical read off `approx`), and for $x^4 + b x^2 + c$ with a real square root of
-/// the discriminant the nested radical `sqrt(u)` / `i*sqrt(-u)` (`i*sqrt(2 - sqrt(3))`);
-/// `None` otherwise (the caller writes `root of p near ...`).
+/// The closed form of a root of an irreducible polynomial, as values: a rational, a
+/// quadratic number $a + b\sqrt f$, or the nested radical $\pm\sqrt{u}$ /
+/// $\pm i\sqrt{-u}$ with $u = u_a + u_b\sqrt f$.
+enum Closed {
+    Rational(Rational),
+    Quadratic(Rational, Rational, BigInt),
+    Nested {
+        neg: bool,
+        imag: bool,
+        inner: (Rational, Rational, BigInt),
+    },
+}
+
+/// The closed form of the root of the irreducible monic `p` nearest `approx`: degree 1, 2,
+/// and $x^4 + b x^2 + c$ with a real square root of the discriminant.
 ///
 /// `approx` only chooses among the roots: it must be nearer the wanted root than half the
 /// distance to the others (any certified approximation is).
-pub fn closed_form(p: &Poly<Q>, approx: (f64, f64)) -> Option<String> {
+fn closed_parts(p: &Poly<Q>, approx: (f64, f64)) -> Option<Closed> {
     match p.deg() {
-        1 => Some(fmt_rational(&-p.coeff(0))),
+        1 => Some(Closed::Rational(-p.coeff(0))),
         2 => {
             let (a0, s, f) = quadratic_roots(p)?;
             let positive = if f.is_negative() {
@@ -67,7 +77,7 @@ pub fn closed_form(p: &Poly<Q>, approx: (f64, f64)) -> Option<String> {
                 approx.0 > rational_to_f64(&a0)
             };
             let coef = if positive { s } else { -s };
-            Some(quadratic_display(&a0, &coef, &f))
+            Some(Closed::Quadratic(a0, coef, f))
         }
         4 if p.coeff(1).is_zero() && p.coeff(3).is_zero() => {
             // theta^2 = u with u a root of y^2 + b y + c
@@ -80,22 +90,53 @@ pub fn closed_form(p: &Poly<Q>, approx: (f64, f64)) -> Option<String> {
             let u = z * z;
             let coef = if u.re > rational_to_f64(&a0) { s } else { -s };
             let u_pos = u.re > 0.0;
-            let sign_neg = if u_pos {
+            let neg = if u_pos {
                 approx.0 < 0.0
             } else {
                 approx.1 < 0.0
             };
             let (ua, ub) = if u_pos { (a0, coef) } else { (-a0, -coef) };
-            let inner = quadratic_display(&ua, &ub, &f);
-            let body = if u_pos {
-                format!("sqrt({inner})")
-            } else {
-                format!("i*sqrt({inner})")
-            };
-            Some(if sign_neg { format!("-{body}") } else { body })
+            Some(Closed::Nested {
+                neg,
+                imag: !u_pos,
+                inner: (ua, ub, f),
+            })
         }
         _ => None,
     }
+}
+
+/// The closed form of the root of the irreducible monic `p` nearest `approx`, the one used
+/// by every report: the rational for degree 1, [`quadratic_display`] for degree 2 (the sign
+/// of the radical read off `approx`), and for $x^4 + b x^2 + c$ with a real square root of
+/// the discriminant the nested radical `sqrt(u)` / `i*sqrt(-u)` (`i*sqrt(2 - sqrt(3))`);
+/// `None` otherwise (the caller writes `root of p near ...`).
+pub fn closed_form(p: &Poly<Q>, approx: (f64, f64)) -> Option<String> {
+    Some(match closed_parts(p, approx)? {
+        Closed::Rational(q) => fmt_rational(&q),
+        Closed::Quadratic(a, b, f) => quadratic_display(&a, &b, &f),
+        Closed::Nested { neg, imag, inner } => {
+            let body = quadratic_display(&inner.0, &inner.1, &inner.2);
+            let i = if imag { "i*" } else { "" };
+            let sign = if neg { "-" } else { "" };
+            format!("{sign}{i}sqrt({body})")
+        }
+    })
+}
+
+/// The LaTeX of [`closed_form`], made from the same values: `-\frac{1}{2}`,
+/// `\frac{1}{2} + \frac{\sqrt{5}}{2}`, `\mathrm{i} \sqrt{2 - \sqrt{3}}`.
+pub fn closed_form_latex(p: &Poly<Q>, approx: (f64, f64)) -> Option<String> {
+    Some(match closed_parts(p, approx)? {
+        Closed::Rational(q) => Q.latex_elem(&q),
+        Closed::Quadratic(a, b, f) => quadratic_latex(&a, &b, &f),
+        Closed::Nested { neg, imag, inner } => {
+            let body = quadratic_latex(&inner.0, &inner.1, &inner.2);
+            let i = if imag { "\\mathrm{i} " } else { "" };
+            let sign = if neg { "-" } else { "" };
+            format!("{sign}{i}\\sqrt{{{body}}}")
+        }
+    })
 }
 
 /// Exact display of the root of the irreducible `p` nearest `approx`: the closed form of
@@ -229,5 +270,25 @@ mod tests {
         let v = vs(&p(&[1, 0, -4, 0, 1]));
         assert!(v.contains(&"-sqrt(2 + sqrt(3))".to_string()), "{v:?}");
         assert_eq!(vs(&p(&[-1, -1, 1])), ["1/2 + sqrt(5)/2", "1/2 - sqrt(5)/2"]);
+    }
+    /// The LaTeX of a closed form, made from its values, is what re-parsing its text gave.
+    #[cfg(feature = "cli")]
+    #[test]
+    fn closed_form_latex_is_the_typeset_text() {
+        let p = |cs: &[i64]| Poly::from_i64s(cs);
+        for q in [
+            p(&[1, 0, 4, 0, 1]),
+            p(&[1, 0, -4, 0, 1]),
+            p(&[-1, -1, 1]),
+            p(&[2, 2, 1]),
+            p(&[3, 2]).monic(),
+            p(&[-2, 0, 1]),
+        ] {
+            for (_, z) in crate::jordan::certified_roots(&q).unwrap() {
+                let text = closed_form(&q, z).unwrap();
+                let latex = closed_form_latex(&q, z).unwrap();
+                assert_eq!(Some(latex), crate::report::latex::to_math(&text), "{text}");
+            }
+        }
     }
 }

@@ -17,7 +17,9 @@ pub mod poly;
 pub mod ratfunc;
 pub mod scalar;
 
-pub use algebraic::{approx_text, closed_form, near_text, quadratic_string, value_display};
+pub use algebraic::{
+    approx_text, closed_form, closed_form_latex, near_text, quadratic_string, value_display,
+};
 pub use mpoly::latex_name;
 pub use poly::{LATEX, SumStyle, TEXT, fmt_poly, poly_sum};
 pub use ratfunc::FACTOR_DISPLAY_TERMS;

@@ -7,7 +7,7 @@ use crate::field::ElemDisplay;
 use crate::field::{Field, Q};
 use crate::poly::Poly;
 use crate::report::display::quadratic_latex;
-use crate::report::display::{LATEX, poly_sum};
+use crate::report::display::{LATEX, closed_form_latex, poly_sum};
 
 /// The polynomial with coefficients `cs` (low degree first) in `var`, each coefficient
 /// typeset by `elem` (compound ones in parentheses): `x^{2} - \frac{1}{2} x + 3` (the one
@@ -38,16 +38,17 @@ pub fn poly_over_ext_latex<F: Field>(p: &Poly<Ext<F>>, var: &str) -> String {
     poly_latex(e, p.coeffs(), var, &|c| ext_latex(e, c))
 }
 
-/// An algebraic number from its value: $a + b\sqrt d$ from its quadratic parts, `root of`
-/// its minimal polynomial `near` its certified digits otherwise (the nested radicals of a
-/// biquadratic, the one display still typeset from text, through [`super::to_math`]).
+/// An algebraic number from its value: $a + b\sqrt d$ from its quadratic parts, the nested
+/// radicals of a biquadratic from theirs ([`closed_form_latex`]), `root of` its minimal
+/// polynomial `near` its certified digits otherwise.
 pub fn algebraic_latex(a: &AlgebraicNumber) -> String {
     if let Some((x, y, d)) = a.quadratic_parts() {
         return quadratic_latex(&x, &y, &d);
     }
-    let text = a.value_string();
-    if !text.starts_with("root of") {
-        return super::to_math(&text).unwrap_or_else(|| format!("\\text{{{text}}}"));
+    if a.degree() == 4
+        && let Some(l) = closed_form_latex(a.minpoly(), a.approx())
+    {
+        return l;
     }
     let (re, im) = a.digits(10);
     let near =

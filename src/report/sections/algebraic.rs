@@ -23,7 +23,7 @@ pub fn factor_report(p: &Poly<Q>) -> crate::Result<Report> {
         .collect();
     Ok(Report::titled("factorization over QQ")
         .str("input", p.to_string())
-        .str("content", crate::report::display::fmt_rational(&lc))
+        .rational("content", &lc)
         .list("factors", items))
 }
 

@@ -105,7 +105,7 @@ pub fn critical_report(cv: &CriticalValues, digits: usize) -> Report {
                     .str("to", iv.to.value_string())
                     .float("from_approx", iv.from.approx().0)
                     .float("to_approx", iv.to.approx().0)
-                    .str("sample", fmt_rational(&iv.sample))
+                    .rational("sample", &iv.sample)
                     .bool("stable", iv.stable)
                     .int(
                         "unstable_eigenvalues",

@@ -55,7 +55,7 @@ pub fn stability_report(s: &Stability, dt: Option<&Rational>) -> Report {
         },
     );
     if let Some(dt) = dt {
-        r = r.str("dt", fmt_rational(dt));
+        r = r.rational("dt", dt);
     }
     r.str("verdict", verdict)
         .bool(
@@ -124,7 +124,7 @@ pub fn sequence_report<K: Field>(
     let first = Value::List(exact.iter().take(SHOWN).cloned().collect());
     let shown = Value::table(first, header, rows);
     Report::titled(format!("{what} (discrete time, exact)"))
-        .str("dt", fmt_rational(dt))
+        .rational("dt", dt)
         .int("samples", seq.len())
         .list(
             "inputs",
@@ -160,7 +160,7 @@ pub fn conversion_report<K: Field>(
 ) -> Report {
     let mut r = Report::titled(title.to_string())
         .str("method", method)
-        .str("dt", fmt_rational(dt))
+        .rational("dt", dt)
         .matrix("A", &sys.a)
         .matrix("B", &sys.b)
         .matrix("C", &sys.c)

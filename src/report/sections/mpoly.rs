@@ -2,7 +2,6 @@
 //! variable; CLI contract, second wave).
 
 use crate::mpoly::{QPoly, factor::factor_q, gcd};
-use crate::report::display::fmt_rational;
 use crate::report::{Report, Value};
 
 fn vars_value(vars: &[String]) -> Value {
@@ -50,7 +49,7 @@ pub fn mfactor_report(vars: &[String], p: &QPoly) -> crate::Result<Report> {
     Ok(Report::titled("factorization over QQ")
         .str("input", p.to_string_vars(vars))
         .with("variables", vars_value(vars))
-        .str("content", fmt_rational(&c))
+        .rational("content", &c)
         .list("factors", items)
         .bool("verified", verified))
 }
