@@ -2,6 +2,7 @@
 //! benchmark's published speeds, textbook families with known answers, and direct
 //! recomputation at rational points.
 
+use crate::common::cli::run_json;
 use exactlti::algebraic::AlgebraicNumber;
 use exactlti::field::{Q, Rational};
 use exactlti::matrix::Matrix;
@@ -13,7 +14,6 @@ use exactlti::study::{
     sweep, sweep_values,
 };
 use std::path::Path;
-use std::process::Command;
 
 fn q(s: &str) -> Rational {
     exactlti::field::parse_rational(s).expect("rational")
@@ -225,18 +225,14 @@ fn sweep_agrees_with_exact_eigenvalue_counts() {
 #[test]
 fn cli_critical_and_sweep() {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/bicycle-whipple.json");
-    let j = crate::common::cli::run_json(&[
-        "critical",
-        file.to_str().unwrap(),
-        "--param",
-        "v",
-        "--from",
-        "0",
-        "--to",
-        "10",
-        "--digits",
-        "14",
-    ]);
+    let f = file.to_str().unwrap();
+    // `CMD FILE --param v --from 0 --to 10 EXTRA`
+    let family = |cmd: &'static str, extra: &[&'static str]| -> Vec<String> {
+        let base = [cmd, f, "--param", "v", "--from", "0", "--to", "10"];
+        base.iter().chain(extra).map(|s| s.to_string()).collect()
+    };
+    let args = family("critical", &["--digits", "14"]);
+    let j = run_json(&args.iter().map(String::as_str).collect::<Vec<_>>());
     let cvs = j["critical_values"].as_array().unwrap();
     assert_eq!(cvs[1]["kind"], "imaginary_pair");
     assert_eq!(cvs[1]["digits"], "4.2923825363411");
@@ -245,49 +241,13 @@ fn cli_critical_and_sweep() {
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("exactlti-study");
     std::fs::create_dir_all(&dir).unwrap();
     let svg = dir.join("sweep.svg");
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args([
-            "sweep",
-            file.to_str().unwrap(),
-            "--param",
-            "v",
-            "--from",
-            "0",
-            "--to",
-            "10",
-        ])
-        .args([
-            "--points",
-            "51",
-            "--format",
-            "json",
-            "--svg",
-            svg.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let mut args = family("sweep", &["--points", "51"]);
+    args.extend(["--svg".to_string(), svg.to_str().unwrap().to_string()]);
+    let j = run_json(&args.iter().map(String::as_str).collect::<Vec<_>>());
     assert_eq!(j["values"].as_array().unwrap().len(), 51);
     assert_eq!(j["eigenvalues_approx"][0].as_array().unwrap().len(), 4);
     assert!(std::fs::read_to_string(&svg).unwrap().contains("<polyline"));
-    let bad = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args([
-            "critical",
-            file.to_str().unwrap(),
-            "--param",
-            "v",
-            "--from",
-            "x",
-            "--to",
-            "1",
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(bad.status.code(), Some(2));
+    let bad = ["critical", f, "--param", "v", "--from", "x", "--to", "1"];
+    assert_eq!(crate::common::cli::run(&bad).0, 2);
     let _ = std::fs::remove_dir_all(&dir);
 }
