@@ -22,7 +22,7 @@
 //! $s\sqrt f$ with $r = s^2 f$ (`sqrt(8) = 2*sqrt(2)`, `sqrt(9) = 3`,
 //! `sqrt(1/2) = sqrt(2)/2`); a product of two square roots is one (`sqrt(3)*i` is
 //! $\sqrt{-3}$, `sqrt(2)*sqrt(3)` is $\sqrt 6$), so every display of a quadratic number
-//! ([`crate::field::quadratic_display`]: `-3/20 - sqrt(1991)*i/20`) reads back. `pi` is rejected (transcendental); `i`, `sqrt`, `pi` are
+//! ([`crate::report::display::quadratic_display`]: `-3/20 - sqrt(1991)*i/20`) reads back. `pi` is rejected (transcendental); `i`, `sqrt`, `pi` are
 //! never parameter names.
 //!
 //! Every input gives a value or an [`Error::Invalid`] in time bounded by the input length:

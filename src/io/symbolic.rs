@@ -11,7 +11,7 @@
 //!
 //! # Examples
 //! ```
-//! use exactlti::field::Field;
+//! use exactlti::field::ElemDisplay;
 //! use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_str};
 //! use exactlti::io::{SystemFormat, TypedAny};
 //!
