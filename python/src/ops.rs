@@ -447,7 +447,7 @@ pub(crate) fn mnf_out<K: Field>(
         ("exists", Out::Bool(r.exists)),
         (
             "reason",
-            r.reason.clone().map(Out::Str).unwrap_or(Out::None),
+            r.reason_text().map(Out::Str).unwrap_or(Out::None),
         ),
         ("verified", Out::Bool(r.verified)),
         ("report", report(&r.report())),
