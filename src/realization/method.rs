@@ -48,7 +48,7 @@ impl<K: Field> JordanMethod<K> {
 /// it; what differs between the fields is a method here, never a second entry point.
 pub trait SystemField: crate::jordan::JordanField {
     /// The Jordan-form minimal realization over this field, with the realization as a
-    /// system over the field.
+    /// system over the field (its Markov parameters part of the method's verification).
     ///
     /// # Errors
     /// Those of the decomposition and of the compaction.
@@ -64,10 +64,14 @@ pub trait SystemField: crate::jordan::JordanField {
 /// in the field when every entry lies there, else the primary blocks over the field built
 /// from the same components.
 fn modal<F: EigenField>(sys: &StateSpace<F>) -> Result<(JordanMethod<F>, StateSpace<F>)> {
-    let jm = minimal_jordan(sys)?;
+    let mut jm = minimal_jordan(sys)?;
     let system = match jm.real_to_base() {
         Some(s) => s,
-        None => minimal_jordan_primary(sys, jm.jordan.components.clone())?.system,
+        None => {
+            let p = minimal_jordan_primary(sys, jm.jordan.components.clone())?;
+            jm.verified &= p.verified;
+            p.system
+        }
     };
     Ok((JordanMethod::Modal(Box::new(jm)), system))
 }
@@ -111,8 +115,9 @@ impl SystemField for RatFuncField {
 /// Minimal realization by the chosen method, over every [`SystemField`].
 ///
 /// With [`MinrealMethod::Jordan`] the result also holds the method's full result
-/// ([`MinimalRealization::jordan`]) and is verified only when both the generic checks and
-/// the method's own hold.
+/// ([`MinimalRealization::jordan`]) and carries the method's own exact verification (Markov
+/// parameters $C A^k B$ equal for $k < n + r$, order = McMillan degree, the system's own
+/// Markov parameters; the primary blocks' when the modal form is not over the field).
 ///
 /// # Errors
 /// Those of the chosen algorithm.
@@ -125,11 +130,19 @@ pub fn minimal<K: SystemField>(
         MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock_recorded(sys, None),
         MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman_recorded(sys, None),
         MinrealMethod::Jordan => {
+            // verified by the method itself: C A^k B equal for k < n + r and the order equal
+            // to the McMillan degree (no second rank test: over Q(p) it would add pivots to
+            // the result's conditions)
             let (jm, min) = K::jordan_method(sys)?;
-            let mut r = MinimalRealization::new(sys, min, MinrealMethod::Jordan, None);
-            r.verified &= jm.verified();
-            r.jordan = Some(jm);
-            Ok(r)
+            Ok(MinimalRealization {
+                order: min.nstates(),
+                original_order: sys.nstates(),
+                system: min,
+                method: MinrealMethod::Jordan,
+                t: None,
+                verified: jm.verified(),
+                jordan: Some(jm),
+            })
         }
     }
 }

@@ -187,8 +187,7 @@ impl<F: Field> JordanMinimal<F> {
 
 impl<K: Field> MinimalRealization<K> {
     /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`); by the
-    /// Jordan-form method, the method's own report (its modal or primary blocks) with the
-    /// verdict of both checks.
+    /// Jordan-form method, the method's own report (its modal or primary blocks).
     pub fn report(&self) -> Report {
         match &self.jordan {
             Some(JordanMethod::Modal(m)) => {
