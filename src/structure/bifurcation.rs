@@ -241,7 +241,9 @@ impl Default for Limits {
 /// };
 /// let t = bifurcations(&s, &f, Limits::default()).unwrap();
 /// assert_eq!(t.result, 1);
-/// assert_eq!(t.branches[0].equation, Equation::Zero);
+/// // the condition a is solved for a: the substitution a = 0
+/// let zero = Equation::Substitution { var: 0, value: k.zero() };
+/// assert_eq!(t.branches[0].equation, zero);
 /// let BranchOutcome::Explored(b) = &t.branches[0].outcome else { panic!() };
 /// assert_eq!(b.result, 0);
 /// ```
