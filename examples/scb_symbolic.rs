@@ -11,6 +11,7 @@ use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
+use exactlti::report::sections::{branch_equation, branch_reason};
 use exactlti::structure::bifurcation::{BranchOutcome, Limits, Node, bifurcations};
 use exactlti::structure::scb::{Scb, scb};
 use exactlti::system::StateSpace;
@@ -79,7 +80,7 @@ fn tree(k: &RatFuncField, n: &Node<[usize; 4]>, indent: usize) {
                 println!(
                     "{pad}{} = 0  ({}): dims {:?}{}",
                     k.fmt_poly(&b.condition),
-                    b.equation,
+                    branch_equation(k, b),
                     c.result,
                     if c.result != n.result {
                         "  <- structure changes"
@@ -89,7 +90,8 @@ fn tree(k: &RatFuncField, n: &Node<[usize; 4]>, indent: usize) {
                 );
                 tree(k, c, indent + 2);
             }
-            BranchOutcome::Undefined(why) | BranchOutcome::NotExplored(why) => {
+            BranchOutcome::Undefined | BranchOutcome::NotExplored(_) => {
+                let why = branch_reason(k, b).unwrap_or_default();
                 println!("{pad}{} = 0: {why}", k.fmt_poly(&b.condition));
             }
         }

@@ -9,7 +9,7 @@ use exactlti::io::{
 use exactlti::jordan::jordan;
 use exactlti::matrix::Matrix;
 use exactlti::qmat;
-use exactlti::realization::{MinrealMethod, mcmillan_degree, minimal};
+use exactlti::realization::{JordanMethod, MinrealMethod, mcmillan_degree, minimal};
 use exactlti::system::StateSpace;
 use exactlti::{Error, Result};
 use std::path::Path;
@@ -148,8 +148,9 @@ fn minimal_jordan_method_gives_a_verified_rational_realization() -> Result<()> {
 }
 
 #[test]
-fn minimal_jordan_method_refuses_irrational_blocks_with_a_reason() {
-    // eigenvalues ±sqrt(2): the modal blocks live in Q(sqrt 2)
+fn minimal_jordan_method_writes_irrational_blocks_over_the_base_field() {
+    // eigenvalues ±sqrt(2): the modal blocks live in Q(sqrt 2) (kept in `r.jordan`); the
+    // system over Q is their primary block (the dispatcher refused this before issue 23)
     let sys = StateSpace::new(
         qmat![[0, 1], [2, 0]],
         qmat![[0], [1]],
@@ -157,10 +158,15 @@ fn minimal_jordan_method_refuses_irrational_blocks_with_a_reason() {
         qmat![[0]],
     )
     .unwrap();
-    match minimal(&sys, MinrealMethod::Jordan) {
-        Err(e @ Error::Unsupported(_)) => assert!(e.to_string().contains("minimal_jordan")),
-        other => panic!("expected Unsupported, got {other:?}"),
-    }
+    let r = minimal(&sys, MinrealMethod::Jordan).unwrap();
+    assert!(r.verified && r.order == 2);
+    assert_eq!(r.system.markov(8), sys.markov(8));
+    let Some(JordanMethod::Modal(m)) = &r.jordan else {
+        panic!("the modal result is kept: {:?}", r.jordan)
+    };
+    assert!(m.verified && m.real_to_base().is_none());
+    assert_eq!(m.blocks.len(), 2);
+    assert!(m.blocks.iter().all(|b| b.field.degree() == 2));
 }
 
 #[test]

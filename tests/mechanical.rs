@@ -282,7 +282,7 @@ fn appendix_c5_several_zero_eigenvalues() {
     let (a, b, c) = block_system(&Matrix::diagonal(Q, &[r(1), r(0), r(0), r(0)]), 0);
     let res = run(&a, &b, &c);
     assert!(!res.exists);
-    assert!(res.reason.unwrap().contains("uncontrollable"));
+    assert!(res.reason_text().unwrap().contains("uncontrollable"));
 }
 
 // ---------------------------------------------------------------- property test
@@ -432,7 +432,7 @@ fn descriptor_systems() {
         assert!(
             res.exists && res.verified,
             "h = {h}, p = {p}: {:?}",
-            res.reason
+            res.reason_text()
         );
         let form = res.form.as_ref().unwrap();
         // z = (T F) x: A~ (T F) = T A, T B = B~
@@ -460,7 +460,7 @@ fn descriptor_systems() {
     // F = 2 I, A = I: A B lies in the span of B, rank K = 0 < p
     let two = Matrix::diagonal(Q, &[r(2), r(2)]);
     let res = mechanical_normal_form_descriptor(&two, &Matrix::identity(Q, 2), &b, &c, &d).unwrap();
-    assert!(!res.exists && res.reason.unwrap().contains("rank(U_B2^T A U_B1)"));
+    assert!(!res.exists && res.reason_text().unwrap().contains("rank(U_B2^T A U_B1)"));
 }
 
 // ---------------------------------------------------------------- conditions that fail
@@ -472,7 +472,7 @@ fn reason_of(a: &Matrix<Q>, b: &Matrix<Q>) -> (String, bool) {
     let j = res.report().to_json();
     assert_eq!(j["exists"], serde_json::Value::Bool(false));
     assert!(j["T"].is_null());
-    (res.reason.clone().unwrap_or_default(), res.exists)
+    (res.reason_text().unwrap_or_default(), res.exists)
 }
 
 #[test]
@@ -510,7 +510,7 @@ fn failing_conditions_give_reasons() {
     assert!(
         e.conditions
             .iter()
-            .any(|c| c.name == "paper_rank_g" && c.holds)
+            .any(|c| c.name() == "paper_rank_g" && c.holds)
     );
     let (why, ok) = reason_of(&a, &b);
     assert!(
@@ -539,7 +539,7 @@ fn paper_rank_g_condition_is_not_necessary() {
     assert!(
         res.conditions
             .iter()
-            .any(|c| c.name == "paper_rank_g" && !c.holds && !c.decisive)
+            .any(|c| c.name() == "paper_rank_g" && !c.holds && !c.decisive)
     );
     assert_normal_form(&res, &a, &b, &c, "rank G = 0");
 }
@@ -625,7 +625,7 @@ fn uncontrollable_multiplicity_decides() {
             assert_normal_form(&res, &a2, &b2, &c2, &ctx);
         } else {
             assert!(
-                res.reason.as_ref().unwrap().contains("uncontrollable"),
+                res.reason_text().unwrap().contains("uncontrollable"),
                 "{ctx}"
             );
             let fam = transformation_family(None, &a2, &b2).unwrap();

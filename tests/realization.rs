@@ -123,7 +123,11 @@ fn padded<K: Field>(k: &K, g: &Option<K::Elem>, rng: &mut Rng) -> (StateSpace<K>
     }
 }
 
-fn minreal_properties<K: Field>(k: &K, g: &Option<K::Elem>, seed: u64) {
+fn minreal_properties<K: exactlti::realization::SystemField>(
+    k: &K,
+    g: &Option<K::Elem>,
+    seed: u64,
+) {
     let mut rng = Rng(seed);
     for _ in 0..iters(15) {
         let (sys, r) = padded(k, g, &mut rng);

@@ -248,7 +248,7 @@ fn dc_motor_bifurcation_sigma1_zero_found_without_being_told() {
     let b = t
         .branches
         .iter()
-        .find(|b| b.equation == "sigma1 = 0")
+        .find(|b| exactlti::report::sections::branch_equation(s.a.field(), b) == "sigma1 = 0")
         .expect("a branch sigma1 = 0");
     let BranchOutcome::Explored(n) = &b.outcome else {
         panic!("sigma1 = 0 not explored: {:?}", b.outcome)
@@ -558,7 +558,7 @@ fn random_symbolic_scb_agrees_with_rational_scb_at_points() {
                     d: eval(&sys.d, &pt),
                 };
                 let rq = scb(&q.a, &q.b, &q.c, &q.d).unwrap();
-                assert_eq!(rq.dims, n.result, "branch {}", b.equation);
+                assert_eq!(rq.dims, n.result, "branch {:?}", b.equation);
                 break;
             }
         }

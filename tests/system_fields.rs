@@ -9,8 +9,10 @@
 //!   ($\lambda_{uo}$), each 0 or 1 states, random couplings where the Kalman form allows them;
 //! * tf: $G(s) = C(sI - A)^{-1}B + D = (n + D d)/d$ exactly, and its Markov parameters;
 //! * minreal (Kalman, Rosenbrock, Ho-Kalman, Jordan method): order $= \deg d$ = McMillan
-//!   degree, Markov parameters and $D$ equal, transfer matrix unchanged; the dispatcher's
-//!   Jordan method refuses fields other than Q with `Unsupported` (asserted: a gap of 23);
+//!   degree, Markov parameters and $D$ equal, transfer matrix unchanged, all through the one
+//!   entry point `minimal` (the Jordan method's own result kept and verified);
+//! * PBH: controllable (observable) iff no uncontrollable (unobservable) mode was planted,
+//!   agreeing with the rank of the controllability (observability) matrix;
 //! * zeros: $\det P(s) = \pm\,\chi_{hidden}(s)\,(n + D d)(s)$, so the invariant zero
 //!   polynomial is the monic $(n + Dd)\,\chi_{hidden}$ (transmission and decoupling zeros),
 //!   normal rank $n + 1$; the Smith-form oracle agrees;
@@ -24,26 +26,26 @@
 //! * pencil / standard on a descriptor system $E = P\,\mathrm{diag}(I, N)\,Q$,
 //!   $A = P\,\mathrm{diag}(A_f, I)\,Q$, $B = P[B_f; B_\infty]$, $C = [C_f, C_\infty]Q$
 //!   ($N = J_2(0) \oplus 0$; $x = Q^{-1}z$ gives back the block form): infinite divisors $[1, 2]$,
-//!   finite part similar to $A_f$, standard form $(A_f, B_f, C_f, D - C_\infty B_\infty)$ up
+//!   finite part similar to $A_f$ (`pencil_structure`: the product of its Jordan factors is
+//!   $\chi_{A_f}$), standard form $(A_f, B_f, C_f, D - C_\infty B_\infty)$ up
 //!   to coordinates (equal transfer matrices); an output that sees $N B_\infty$ is improper
 //!   (`ImproperTransfer`);
-//! * mnf: a controllable single-input system of even order has a mechanical normal form
+//! * mnf (`mechanical_normal_form`): a controllable single-input system of even order has a mechanical normal form
 //!   ($t A t^{-1} = \tilde A$, $t B = \tilde B$, same characteristic polynomial); odd order
 //!   has none (`exists = false`, the `n_even` condition).
 
 use crate::common::{Rng, elem};
 use exactlti::error::Error;
-use exactlti::field::{Field, Q, QuadraticField};
-use exactlti::matrix::{Matrix, to_rational_matrix};
-use exactlti::pencil::kronecker_structure;
+use exactlti::field::Field;
+use exactlti::matrix::Matrix;
+use exactlti::pencil::{kronecker_structure, pencil_structure};
 use exactlti::poly::Poly;
-use exactlti::ratfunc::RatFuncField;
 use exactlti::realization::{
-    MinrealMethod, controllability_matrix, controllability_structure, descriptor_to_standard,
-    mcmillan_degree, minimal, minimal_jordan, minimal_jordan_qp, observability_matrix,
-    observability_structure,
+    JordanMethod, MinrealMethod, SystemField, controllability_matrix, controllability_structure,
+    descriptor_to_standard, mcmillan_degree, minimal, observability_matrix,
+    observability_structure, pbh_controllable, pbh_observable,
 };
-use exactlti::structure::mechanical::mechanical_normal_form_in;
+use exactlti::structure::mechanical::mechanical_normal_form;
 use exactlti::structure::scb::scb;
 use exactlti::structure::zeros::{invariant_zeros, invariant_zeros_smith};
 use exactlti::system::transfer::RationalFunction;
@@ -253,77 +255,9 @@ fn check_tf<F: Field>(p: &Planted<F>) {
     assert_eq!(p.sys.a.charpoly().unwrap(), p.den.mul(&p.hidden), "chi_A");
 }
 
-/// Jordan-method minimal realization: through the dispatcher over Q, the field's own entry
-/// point elsewhere (the dispatcher refuses: asserted).
-trait JordanMinreal: Field {
-    /// `(order, mcmillan degree, verified, realization)`.
-    fn minreal_jordan(sys: &StateSpace<Self>) -> (usize, usize, bool, StateSpace<Self>);
-}
-
-fn refused_by_dispatcher<F: Field>(sys: &StateSpace<F>) {
-    match minimal(sys, MinrealMethod::Jordan) {
-        Err(Error::Unsupported(m)) => assert!(m.contains("rational entries"), "{m}"),
-        Err(e) => panic!("expected Unsupported, got {e}"),
-        // only a system whose entries all happen to be rational is taken down to Q
-        Ok(r) => {
-            let rational = [&sys.a, &sys.b, &sys.c, &sys.d]
-                .iter()
-                .all(|m| to_rational_matrix(m).is_some());
-            assert!(
-                rational && r.verified,
-                "accepted only with rational entries"
-            );
-        }
-    }
-}
-
-impl JordanMinreal for Q {
-    fn minreal_jordan(sys: &StateSpace<Q>) -> (usize, usize, bool, StateSpace<Q>) {
-        let r = minimal(sys, MinrealMethod::Jordan).unwrap();
-        let j = minimal_jordan(sys).unwrap();
-        assert_eq!(j.order(), r.order);
-        (
-            r.order,
-            j.mcmillan_degree,
-            r.verified && j.verified,
-            r.system,
-        )
-    }
-}
-
-impl JordanMinreal for QuadraticField {
-    fn minreal_jordan(sys: &StateSpace<Self>) -> (usize, usize, bool, StateSpace<Self>) {
-        refused_by_dispatcher(sys);
-        let j = minimal_jordan(sys).unwrap();
-        let base = j.real_to_base();
-        let n = sys.nstates();
-        if let Some(rs) = &base {
-            assert!(
-                rs.same_markov(sys, 2 * n + 2),
-                "real modal form over the base"
-            );
-        }
-        (
-            j.order(),
-            j.mcmillan_degree,
-            j.verified,
-            base.unwrap_or(sys.clone()),
-        )
-    }
-}
-
-impl JordanMinreal for RatFuncField {
-    fn minreal_jordan(sys: &StateSpace<Self>) -> (usize, usize, bool, StateSpace<Self>) {
-        refused_by_dispatcher(sys);
-        let j = minimal_jordan_qp(sys).unwrap();
-        let order = j.system.nstates();
-        (order, j.mcmillan_degree, j.verified, j.system)
-    }
-}
-
 /// minreal by every method: order = McMillan degree = deg d, Markov parameters, D and the
 /// transfer matrix unchanged.
-fn check_minreal<F: JordanMinreal>(p: &Planted<F>) {
+fn check_minreal<F: SystemField>(p: &Planted<F>) {
     let n = p.n();
     let order = p.den.deg();
     assert_eq!(mcmillan_degree(&p.sys), order, "McMillan degree");
@@ -331,6 +265,7 @@ fn check_minreal<F: JordanMinreal>(p: &Planted<F>) {
         MinrealMethod::Kalman,
         MinrealMethod::Rosenbrock,
         MinrealMethod::HoKalman,
+        MinrealMethod::Jordan,
     ] {
         let r = minimal(&p.sys, method).unwrap();
         assert!(r.verified, "{}", method.name());
@@ -339,11 +274,33 @@ fn check_minreal<F: JordanMinreal>(p: &Planted<F>) {
         assert_eq!(r.system.d, p.sys.d);
         let g = r.system.transfer_matrix().unwrap();
         assert_eq!(g.entries, vec![vec![p.tf()]], "{} keeps G", method.name());
+        // the Jordan method keeps its own result: its checks and its McMillan degree
+        match (&r.jordan, method) {
+            (Some(JordanMethod::Modal(m)), MinrealMethod::Jordan) => {
+                assert!(m.verified && m.mcmillan_degree == order && m.order() == order);
+            }
+            (Some(JordanMethod::Primary(j)), MinrealMethod::Jordan) => {
+                assert!(j.verified && j.mcmillan_degree == order);
+                assert_eq!(j.system, r.system, "the primary blocks are the system");
+            }
+            (None, MinrealMethod::Jordan) => panic!("the Jordan method keeps its result"),
+            (Some(_), _) => panic!("{}: no Jordan result", method.name()),
+            (None, _) => {}
+        }
     }
-    let (jo, mcm, verified, sys) = F::minreal_jordan(&p.sys);
-    assert!(verified, "Jordan method verified");
-    assert_eq!((jo, mcm), (order, order), "Jordan method order");
-    assert!(sys.same_markov(&p.sys, 2 * n + 2), "Jordan method Markov");
+}
+
+/// PBH: $(A, B)$ controllable iff no uncontrollable mode was planted, and the test agrees
+/// with the rank of the controllability matrix; the same for $(A, C)$.
+fn check_pbh<F: SystemField>(p: &Planted<F>) {
+    let s = &p.sys;
+    let n = p.n();
+    let pc = pbh_controllable(&s.a, &s.b).unwrap();
+    assert_eq!(pc, p.unc.deg() == 0, "PBH controllable");
+    assert_eq!(pc, controllability_matrix(&s.a, &s.b).rank() == n);
+    let po = pbh_observable(&s.a, &s.c).unwrap();
+    assert_eq!(po, p.unobs.deg() == 0, "PBH observable");
+    assert_eq!(po, observability_matrix(&s.a, &s.c).rank() == n);
 }
 
 /// zeros: the planted zero polynomial (transmission and decoupling zeros), normal rank
@@ -491,12 +448,26 @@ fn planted_descriptor<F: Field>(
 }
 
 /// pencil and standard on the planted descriptor system; the improper one is refused.
-fn check_descriptor<F: Field>(p: &Planted<F>, g: &Option<F::Elem>, rng: &mut Rng) {
+fn check_descriptor<F: SystemField>(p: &Planted<F>, g: &Option<F::Elem>, rng: &mut Rng) {
     let (desc, std) = planted_descriptor(p, g, false, rng);
     let chi = p.sys.a.charpoly().unwrap();
     let ks = kronecker_structure(&desc.a, &desc.e).unwrap();
     assert!(ks.verified && ks.is_regular());
     assert_eq!(ks.infinite_divisors, vec![1, 2], "N = J_2(0) + 0");
+    // with the Jordan form of the finite part: prod g^(sum of blocks) = chi_A
+    let ps = pencil_structure(&desc.a, &desc.e).unwrap();
+    assert!(ps.verified && ps.structure == ks, "pencil_structure");
+    let fk = ps.finite.base().clone();
+    let mut prod = Poly::new(fk.clone(), vec![fk.one()]);
+    for c in &ps.finite.components {
+        let e: usize = c.blocks.iter().sum();
+        prod = prod.mul(&pow(&c.factor, e));
+    }
+    assert_eq!(
+        prod.coeffs(),
+        chi.coeffs(),
+        "finite part: the factors of chi_A"
+    );
     assert!(ks.right_indices.is_empty() && ks.left_indices.is_empty());
     assert_eq!(ks.finite_part.charpoly().unwrap(), chi, "finite part ~ A_f");
     let f = descriptor_to_standard(&desc).unwrap();
@@ -525,10 +496,14 @@ fn check_mnf<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) {
         .unwrap()
         .transform(&scramble(k, g, n, rng))
         .unwrap();
-    let r = mechanical_normal_form_in(None, &sys.a, &sys.b, &sys.c, &sys.d, 1_000_000).unwrap();
+    let r = mechanical_normal_form(&sys.a, &sys.b, &sys.c, &sys.d).unwrap();
     if n % 2 == 1 {
         assert!(!r.exists, "odd order: no mechanical normal form");
-        assert!(r.conditions.iter().any(|c| c.name == "n_even" && !c.holds));
+        assert!(
+            r.conditions
+                .iter()
+                .any(|c| c.name() == "n_even" && !c.holds)
+        );
         return;
     }
     assert!(
@@ -552,12 +527,13 @@ fn check_mnf<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) {
 }
 
 /// Every operation on `cases` planted systems over `k` (generator `g`).
-fn check_systems<F: JordanMinreal>(k: &F, g: &Option<F::Elem>, seed: u64, cases: usize) {
+fn check_systems<F: SystemField>(k: &F, g: &Option<F::Elem>, seed: u64, cases: usize) {
     let mut rng = Rng(seed);
     for _ in 0..cases {
         let p = planted(k, g, &mut rng);
         check_tf(&p);
         check_minreal(&p);
+        check_pbh(&p);
         check_zeros(&p);
         check_scb(&p);
         check_ctrb_obsv(&p);

@@ -175,7 +175,7 @@ macro_rules! visit {
         impl exactlti::api::SystemVisitor for V {
             type Output = $out;
             #[allow(unused_variables)]
-            fn visit<K: exactlti::field::Field + 'static>(
+            fn visit<K: exactlti::realization::SystemField>(
                 self,
                 $f: &exactlti::io::SystemFile,
                 $t: &Typed<K>,
@@ -192,7 +192,7 @@ macro_rules! visit {
         impl exactlti::api::SystemVisitor for V {
             type Output = $out;
             #[allow(unused_variables)]
-            fn visit<K: exactlti::field::Field + 'static>(
+            fn visit<K: exactlti::realization::SystemField>(
                 self,
                 $f: &exactlti::io::SystemFile,
                 $t: &Typed<K>,

@@ -33,7 +33,7 @@ pub(crate) fn typed_system<K: Field>(t: &Typed<K>) -> Out {
     ])
 }
 
-pub(crate) fn minreal_typed<K: Field + 'static>(t: &Typed<K>, m: MinrealMethod) -> FResult<Out> {
+pub(crate) fn minreal_typed<K: realization::SystemField>(t: &Typed<K>, m: MinrealMethod) -> FResult<Out> {
     let r = realization::minimal(&t.ss, m)?;
     let sys = system_out(Typed {
         descriptor: None,
@@ -122,7 +122,7 @@ pub(crate) fn tf_parts<K: Field>(
 ) -> FResult<(Items, Matrix<K>)> {
     let var = domain.var();
     let g = s.transfer_matrix()?;
-    let min = realization::minimal(s, MinrealMethod::Kalman)?;
+    let min = realization::minimal_kalman(s)?;
     let verified = min.verified && g.matches_markov(s);
     let entries = Out::List(
         g.entries
@@ -356,7 +356,7 @@ pub(crate) fn check_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
         ])
     };
     let mut items = vec![];
-    let exact_min = realization::minimal(s, MinrealMethod::Kalman)?;
+    let exact_min = realization::minimal_kalman(s)?;
     let fm = float::minreal(&a, &b, &c, &d, &tol)?;
     items.push(item(
         "mcmillan_degree",
@@ -447,7 +447,7 @@ pub(crate) fn mnf_out<K: Field>(
         ("exists", Out::Bool(r.exists)),
         (
             "reason",
-            r.reason.clone().map(Out::Str).unwrap_or(Out::None),
+            r.reason_text().map(Out::Str).unwrap_or(Out::None),
         ),
         ("verified", Out::Bool(r.verified)),
         ("report", report(&r.report())),

@@ -176,11 +176,18 @@ impl<F: Field> Ext<F> {
     }
     /// Index of the marked root among the exactly isolated roots of a rational modulus
     /// ([`super::AlgebraicNumber::roots_of_irreducible`], canonical order): the root nearest
-    /// the stored approximation. `None` over a base other than $\mathbb{Q}$, when the
+    /// the stored approximation. `None` when the modulus has a coefficient outside $\mathbb{Q}$, when the
     /// isolation fails (budget) or two roots are equally near.
     pub fn marked_root_index(&self) -> Option<usize> {
-        let w = self.0.base.as_rationals()?;
-        let m = Poly::new(crate::field::Q, w.view(self.0.modulus.coeffs()).to_vec());
+        let k = &self.0.base;
+        let m: Option<Vec<Rational>> = self
+            .0
+            .modulus
+            .coeffs()
+            .iter()
+            .map(|c| k.to_rational(c))
+            .collect();
+        let m = Poly::new(crate::field::Q, m?);
         super::ext_q::marked_root_index(&m, self.0.root)
     }
     /// `Some(d)` when this is $\mathbb{Q}(\sqrt d)$ displayed with its radical: modulus
@@ -298,12 +305,8 @@ impl<F: Field> Field for Ext<F> {
             return self.scale(&b.0[0], a);
         }
         let k = &self.0.base;
-        if let Some(w) = k.as_rationals() {
-            let m = w.view(self.0.modulus.coeffs());
-            if m.iter().all(|c| c.is_integer()) {
-                let p = super::ext_q::mul_integral(m, w.view(&a.0), w.view(&b.0));
-                return ExtElem(w.back(p));
-            }
+        if let Some(p) = k.mul_mod_poly(self.0.modulus.coeffs(), &a.0, &b.0) {
+            return ExtElem(p);
         }
         let mut v = vec![k.zero(); a.0.len() + b.0.len() - 1];
         for (i, x) in a.0.iter().enumerate() {

@@ -15,7 +15,7 @@ use crate::field::ElemDisplay;
 use crate::io::TypedSystem;
 use crate::ratfunc::RatFuncField;
 use crate::realization::{self, MinrealMethod};
-use crate::report::{Report, Value, str_list};
+use crate::report::{Report, Value, sections, str_list};
 use crate::structure::bifurcation::{BranchOutcome, Limits, Node, bifurcations};
 use crate::system::StateSpace;
 use clap::ValueEnum;
@@ -189,24 +189,26 @@ fn node_report(k: &RatFuncField, n: &Node<Summary>) -> (Report, bool) {
         for b in &n.branches {
             let mut br =
                 Report::new().str("condition", format!("{} = 0", k.fmt_poly(&b.condition)));
+            let eq = sections::branch_equation(k, b);
+            let why = sections::branch_reason(k, b).unwrap_or_default();
             match &b.outcome {
                 BranchOutcome::Explored(child) => {
                     let (cr, cok) = node_report(k, child);
                     ok &= cok;
                     br = br
-                        .str("substitution", b.equation.clone())
+                        .str("substitution", eq)
                         .str("outcome", "explored")
                         .bool("changed", n.changed(b).unwrap_or(false));
                     br.items.extend(cr.items);
                 }
-                BranchOutcome::Undefined(why) => {
+                BranchOutcome::Undefined => {
                     br = br
-                        .str("substitution", b.equation.clone())
+                        .str("substitution", eq)
                         .str("outcome", "undefined")
-                        .str("reason", why.clone());
+                        .str("reason", why);
                 }
-                BranchOutcome::NotExplored(why) => {
-                    br = br.str("outcome", "not_explored").str("reason", why.clone());
+                BranchOutcome::NotExplored(_) => {
+                    br = br.str("outcome", "not_explored").str("reason", why);
                 }
             }
             bs.push(Value::Obj(br));

@@ -8,10 +8,10 @@ use super::a_only::a_command;
 use super::common::with_path;
 use super::system::{System, SystemVisitor};
 use super::{Command, Failure, MethodArg, Outcome};
-use crate::field::{Field, Q};
+use crate::field::Field;
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{SystemFile, TypedSystem, as_rational};
-use crate::realization::{self, MinrealMethod};
+use crate::realization::{self, MinrealMethod, SystemField};
 use crate::report::{Report, Value, sections};
 use std::path::Path;
 
@@ -246,7 +246,7 @@ struct FileCommand<'a> {
 
 impl SystemVisitor for FileCommand<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+    fn visit<K: SystemField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
         let path = self.path;
         let e = |err| with_path(path, err);
         let s = &t.ss;
@@ -299,30 +299,8 @@ impl SystemVisitor for FileCommand<'_> {
             Command::Jordan { .. } | Command::Linalg { .. } => {
                 a_command(self.cmd, &t.a_raw, path).expect("an A-only command")
             }
-            Command::Modes { .. } => {
-                // exact over Q and the quadratic fields Q(i), Q(sqrt d)
-                if let Some(a) = quadratic(&s.a) {
-                    return Ok(Outcome::plain(
-                        realization::modal_table_over(a).map_err(e)?.report(),
-                    ));
-                }
-                let q = needs_rational(f, t, "the modal table")?;
-                Ok(Outcome::plain(
-                    realization::modal_table(&q.ss.a).map_err(e)?.report(),
-                ))
-            }
-            Command::Mnf { .. } => {
-                // exact over Q and the quadratic fields Q(i), Q(sqrt d) (not over Q(p))
-                let quad = (s as &dyn std::any::Any)
-                    .downcast_ref::<crate::system::StateSpace<crate::field::QuadraticField>>();
-                match quad {
-                    Some(s) => mnf(s, path),
-                    None => mnf(
-                        &needs_rational(f, t, "the mechanical normal form")?.ss,
-                        path,
-                    ),
-                }
-            }
+            Command::Modes { .. } => Ok(Outcome::plain(K::modal_table(&s.a).map_err(e)?.report())),
+            Command::Mnf { .. } => mnf(s, path),
             Command::Scb { .. } => {
                 let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
                 let ok = r.verified && r.verify();
@@ -359,7 +337,7 @@ impl SystemVisitor for FileCommand<'_> {
                 let agree = !matches!(r.get("agree"), Some(Value::Bool(false)));
                 Ok(Outcome::float_vs_exact(r, agree))
             }
-            Command::Minreal { method, hankel, .. } => minreal(f, t, *method, *hankel, path),
+            Command::Minreal { method, hankel, .. } => minreal(t, *method, *hankel, path),
             Command::Toolbox(c) => super::toolbox::run(c, f, t, path),
             Command::Discrete(c) => super::discrete::run(c, f, t, path),
             Command::Response(c) => super::response::run(c, f, t, path),
@@ -427,48 +405,13 @@ fn mnf<K: Field>(s: &crate::system::StateSpace<K>, path: &Path) -> Result<Outcom
     Ok(Outcome::new(m.report(), !m.exists || m.verified))
 }
 
-/// `a` as a matrix over a quadratic field $\mathbb{Q}(i)$ / $\mathbb{Q}(\sqrt d)$ (files whose
-/// entries are all rational are typed over $\mathbb{Q}$ by the loader).
-fn quadratic<K: Field + 'static>(
-    a: &crate::matrix::Matrix<K>,
-) -> Option<&crate::matrix::Matrix<crate::field::QuadraticField>> {
-    (a as &dyn std::any::Any).downcast_ref()
-}
-
-/// The system over Q, or exit 2 naming the field when the file's entries lie in a larger one.
-fn needs_rational<'t, K: Field + 'static>(
-    f: &SystemFile,
-    t: &'t TypedSystem<K>,
-    what: &str,
-) -> Result<&'t TypedSystem<Q>, Failure> {
-    as_rational(t).ok_or_else(|| {
-        Failure::input(format!(
-            "{}: {what} needs rational matrices; this file's entries lie in {}",
-            f.path, f.ground
-        ))
-    })
-}
-
-fn minreal<K: Field + 'static>(
-    f: &SystemFile,
+fn minreal<K: SystemField>(
     t: &TypedSystem<K>,
     method: MethodArg,
     hankel: Option<usize>,
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let m = match method {
-        MethodArg::Jordan => {
-            // exact over Q(i) / Q(sqrt d) too: the complex modal form
-            if let Some(s) = (&t.ss as &dyn std::any::Any)
-                .downcast_ref::<crate::system::StateSpace<crate::field::QuadraticField>>()
-            {
-                let r = realization::minimal_jordan(s).map_err(|e| with_path(path, e))?;
-                return Ok(Outcome::new(r.report(), r.verified));
-            }
-            let q = needs_rational(f, t, "the Jordan-form method")?;
-            let r = realization::minimal_jordan(&q.ss).map_err(|e| with_path(path, e))?;
-            return Ok(Outcome::new(r.report(), r.verified));
-        }
         MethodArg::Era => {
             let r = super::float_cmds::era(t, path, hankel)?;
             let agree = !matches!(r.get("agree_with_exact"), Some(Value::Bool(false)));
@@ -477,6 +420,7 @@ fn minreal<K: Field + 'static>(
         MethodArg::Kalman => MinrealMethod::Kalman,
         MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
         MethodArg::HoKalman => MinrealMethod::HoKalman,
+        MethodArg::Jordan => MinrealMethod::Jordan,
     };
     let r = realization::minimal(&t.ss, m).map_err(|e| with_path(path, e))?;
     Ok(Outcome::new(r.report(), r.verified))

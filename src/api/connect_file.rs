@@ -14,10 +14,10 @@ use super::common::with_path;
 use super::connect_names::{NamedConnection, connect_named};
 use super::interconnect::InterconnectOpts;
 use super::{Failure, Outcome, System, SystemVisitor};
-use crate::field::Field;
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{SystemFile, TypedSystem};
 use crate::ratfunc::RatFuncField;
+use crate::realization::SystemField;
 use crate::realization::{MinrealMethod, minimal};
 use crate::report::{Report, Value, str_list};
 use crate::system::discrete::stability::Domain;
@@ -203,7 +203,7 @@ struct Finish<'a> {
 
 impl SystemVisitor for Finish<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+    fn visit<K: SystemField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
         let path = Path::new(&self.name);
         let e = |err| with_path(path, err);
         let sys = &t.ss;

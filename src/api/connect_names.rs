@@ -7,10 +7,10 @@
 
 use super::common::with_path;
 use super::{Failure, System};
-use crate::field::Field;
 use crate::io::combine::{SystemsVisitor, common_field};
 use crate::io::{SignalNames, TypedSystem};
 use crate::matrix::Matrix;
+use crate::realization::SystemField;
 use crate::system::interconnect::append;
 use crate::system::interconnect::connect::{Routing, close, routing_holds};
 use std::path::Path;
@@ -154,7 +154,7 @@ struct Close {
 
 impl SystemsVisitor for Close {
     type Output = Result<System, Failure>;
-    fn visit<K: Field + 'static>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+    fn visit<K: SystemField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
         let path = Path::new("interconnect");
         let e = |err| with_path(path, err);
         let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();

@@ -3,9 +3,9 @@
 use super::SystemVisitor;
 use super::common::with_path;
 use super::{Failure, Outcome};
-use crate::field::Field;
 use crate::io::{SystemFile, TypedSystem};
 use crate::ratfunc::RatFuncField;
+use crate::realization::SystemField;
 use crate::system::dcgain::{dc_gain, gain_at};
 use std::path::Path;
 
@@ -21,7 +21,7 @@ struct Dc<'a> {
 
 impl SystemVisitor for Dc<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+    fn visit<K: SystemField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
         let e = |err| with_path(self.path, err);
         // discrete time: the DC gain is G(z = 1)
         let g = match f.signals.dt {

@@ -11,6 +11,7 @@ use crate::io::combine::{SystemsVisitor, common_field};
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{InputError, TypedSystem};
 use crate::ratfunc::RatFuncField;
+use crate::realization::SystemField;
 use crate::realization::{MinrealMethod, minimal};
 use crate::report::sections::{PartInfo, interconnection_report};
 use crate::system::interconnect::{Interconnection, Operation, Sign, verify};
@@ -273,7 +274,7 @@ struct Connect<'a> {
 
 impl SystemsVisitor for Connect<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: Field + 'static>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+    fn visit<K: SystemField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
         let what = format!("{} {}", self.op.name(), self.names.join(" "));
         let e = |err| with_path(Path::new(&what), err);
         let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();
@@ -365,7 +366,7 @@ struct Build<'a> {
 
 impl SystemsVisitor for Build<'_> {
     type Output = Result<super::System, Failure>;
-    fn visit<K: Field + 'static>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+    fn visit<K: SystemField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
         let e = |err| with_path(Path::new(self.name), err);
         let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();
         let conn = Interconnection::of(self.op, &parts).map_err(e)?;

@@ -10,9 +10,9 @@
 use super::Failure;
 use super::common::with_path;
 use super::system::{System, SystemVisitor};
-use crate::field::Field;
 use crate::float::{to_cmatrix, to_dmatrix};
 use crate::io::{SystemFile, TypedSystem};
+use crate::realization::SystemField;
 use crate::study::{PointStatus, SweepResult};
 use num_complex::Complex;
 
@@ -82,7 +82,7 @@ struct Dim;
 
 impl SystemVisitor for Dim {
     type Output = usize;
-    fn visit<K: Field + 'static>(self, _f: &SystemFile, t: &TypedSystem<K>) -> usize {
+    fn visit<K: SystemField>(self, _f: &SystemFile, t: &TypedSystem<K>) -> usize {
         t.descriptor
             .as_ref()
             .map_or(t.ss.nstates(), |d| d.e.nrows())
@@ -94,7 +94,7 @@ struct Eigen;
 
 impl SystemVisitor for Eigen {
     type Output = Result<(Vec<Complex<f64>>, PointStatus), Failure>;
-    fn visit<K: Field + 'static>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+    fn visit<K: SystemField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
         let path = std::path::Path::new(&f.path);
         let a = &t.ss.a;
         let mut ev = match to_dmatrix(a) {

@@ -15,12 +15,13 @@
 //! ```
 //! use exactlti::api::{Options, System, SystemVisitor};
 //! use exactlti::field::Field;
+//! use exactlti::realization::SystemField;
 //! use exactlti::io::{SystemFile, SystemFormat, TypedSystem};
 //!
 //! struct Order;
 //! impl SystemVisitor for Order {
 //!     type Output = (usize, String);
-//!     fn visit<K: Field + 'static>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+//!     fn visit<K: SystemField>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
 //!         (t.ss.nstates(), t.ss.a.field().to_string())
 //!     }
 //! }
@@ -39,6 +40,7 @@ use crate::io::{
     load_system_str,
 };
 use crate::ratfunc::RatFuncField;
+use crate::realization::SystemField;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -70,7 +72,7 @@ struct Source {
 pub trait SystemVisitor: Sized {
     type Output;
     /// Runs on the system over its concrete field.
-    fn visit<K: Field + 'static>(self, file: &SystemFile, sys: &TypedSystem<K>) -> Self::Output;
+    fn visit<K: SystemField>(self, file: &SystemFile, sys: &TypedSystem<K>) -> Self::Output;
     /// Runs on a system over $\mathbb{Q}(p_1, \dots, p_k)$ (default: as [`Self::visit`]).
     fn visit_symbolic(self, file: &SystemFile, sys: &TypedSystem<RatFuncField>) -> Self::Output {
         self.visit(file, sys)

@@ -25,6 +25,7 @@ pub(crate) mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
 pub mod expr;
 pub(crate) mod rational;
+mod rational_mulmod;
 
 /// $x^e$ by repeated squaring from `one` ($x^0 = $ `one`), `mul` the product: at most
 /// $2 \log_2 e$ products. Serves scalars, polynomials and matrices alike.
@@ -125,6 +126,19 @@ pub trait Field:
             Kernels::Rational(w) => Some(w),
             _ => None,
         }
+    }
+    /// `a * b` reduced modulo the monic `m` (coefficients low degree first, `a`, `b` of
+    /// degree below `deg m`, the result without trailing zeros) when the field has a fast
+    /// kernel for it ($\mathbb{Q}$ with an integral `m`: in integers, one division at the
+    /// end); `None`: the caller's generic product.
+    fn mul_mod_poly(
+        &self,
+        m: &[Self::Elem],
+        a: &[Self::Elem],
+        b: &[Self::Elem],
+    ) -> Option<Vec<Self::Elem>> {
+        let _ = (m, a, b);
+        None
     }
     /// Is `a` zero-or-positive-real? Meaningful for real fields only (`None` otherwise).
     fn sign(&self, a: &Self::Elem) -> Option<std::cmp::Ordering> {

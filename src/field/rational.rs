@@ -77,6 +77,16 @@ impl Field for Q {
     fn sign(&self, a: &Rational) -> Option<std::cmp::Ordering> {
         Some(a.cmp(&Rational::zero()))
     }
+    fn mul_mod_poly(
+        &self,
+        m: &[Rational],
+        a: &[Rational],
+        b: &[Rational],
+    ) -> Option<Vec<Rational>> {
+        m.iter()
+            .all(|c| c.is_integer())
+            .then(|| super::rational_mulmod::mul_integral(m, a, b))
+    }
     fn kernels(&self) -> Kernels<'_, Q> {
         Kernels::Rational(RationalElems::IDENTITY)
     }

@@ -41,6 +41,7 @@ pub(crate) mod coeffs;
 pub mod decompose;
 pub mod derivation;
 pub mod fields;
+mod jordan_field;
 pub mod normalize;
 pub mod over_qp;
 pub mod pair_field;
@@ -57,6 +58,7 @@ pub mod steps;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use decompose::{EigenField, eigenvalues_over, jordan_over};
+pub use jordan_field::JordanField;
 pub use primary::{Component, PrimaryComponent, Restriction};
 pub use qp_form::jordan_qp;
 pub use real::{CompactPair, RealBlock, RealEntries, RealJordanForm, RealNote};

@@ -8,6 +8,9 @@
 //! | `Table` (e.g. $\mathbb{Q}(p)$) | the field's [`crate::field::KernelTable`] (with the generic rank bound) |
 //! | `Generic` | none |
 //!
+//! Two kernels only guess (their callers check every guess exactly): the image modulo a word
+//! prime and an RREF reconstructed from such images ($\mathbb{Q}$ only).
+//!
 //! Each function returns `None` when no kernel applies; the caller then runs the generic
 //! algorithm of [`Matrix`], which computes the same canonical result.
 
@@ -15,6 +18,9 @@ use super::{Matrix, over_k, over_q};
 use crate::error::{Error, Result};
 use crate::field::{Field, Kernels};
 use crate::poly::Poly;
+use crate::qkernels::modular::guess::rref_guess as rref_guess_q;
+use crate::qkernels::modular::rank::reduce_rational;
+use crate::qkernels::prime::Prime;
 
 /// $\det(xI - A)$ (square `a`).
 pub(super) fn charpoly<K: Field>(a: &Matrix<K>) -> Option<Result<Poly<K>>> {
@@ -47,6 +53,37 @@ pub(super) fn rank_at_least_mod_p<K: Field>(a: &Matrix<K>, r: usize) -> bool {
         Kernels::Rational(w) => over_q::rank_at_least_mod_p(m, n, w.view(&a.data), r),
         Kernels::Quadratic(w, d) => over_k::rank_at_least_mod_p(d, m, n, w.view(&a.data), r),
         Kernels::Table(_) | Kernels::Generic => false,
+    }
+}
+
+/// The image of $A$ modulo the word prime `pr` (row-major), when the field registers a
+/// reduction ($\mathbb{Q}$: `None` when `pr` divides a denominator).
+pub(super) fn image_mod_p<K: Field>(a: &Matrix<K>, pr: &Prime) -> Option<Vec<u64>> {
+    match a.field.kernels() {
+        Kernels::Rational(w) => w
+            .view(&a.data)
+            .iter()
+            .map(|x| reduce_rational(pr, x))
+            .collect(),
+        Kernels::Quadratic(..) | Kernels::Table(_) | Kernels::Generic => None,
+    }
+}
+
+/// A guess of the canonical RREF (pivot columns, the nonzero rows) from images modulo
+/// primes and rational reconstruction, unchecked, when the field registers one
+/// ($\mathbb{Q}$: `max_primes` word primes).
+pub(super) fn rref_guess<K: Field>(
+    a: &Matrix<K>,
+    max_primes: usize,
+) -> Option<(Vec<usize>, Matrix<K>)> {
+    let (k, m, n) = (&a.field, a.nrows, a.ncols);
+    match k.kernels() {
+        Kernels::Rational(w) => {
+            let (piv, r) = rref_guess_q(m, n, w.view(&a.data), max_primes)?;
+            let rows = piv.len();
+            Some((piv, Matrix::from_vec(k.clone(), rows, n, w.back(r))))
+        }
+        Kernels::Quadratic(..) | Kernels::Table(_) | Kernels::Generic => None,
     }
 }
 

@@ -102,6 +102,19 @@ impl<K: Field> Matrix<K> {
         }
         kernels::rank_at_least_mod_p(self, r)
     }
+    /// The image of the matrix (row-major) under a reduction modulo the word prime `pr`
+    /// that the field registers ($\mathbb{Q}$); `None` without one, or when `pr` divides a
+    /// denominator. A guess for algorithms that check their results exactly.
+    pub fn image_mod_p(&self, pr: &crate::qkernels::prime::Prime) -> Option<Vec<u64>> {
+        kernels::image_mod_p(self, pr)
+    }
+    /// A guess of the canonical RREF: its pivot columns and nonzero rows, reconstructed from
+    /// images modulo up to `max_primes` word primes when the field registers that kernel
+    /// ($\mathbb{Q}$); `None` without one or without a stable reconstruction. Unchecked:
+    /// the caller checks what it uses.
+    pub fn rref_guess(&self, max_primes: usize) -> Option<(Vec<usize>, Matrix<K>)> {
+        kernels::rref_guess(self, max_primes)
+    }
     /// Is the generic rank at least `r`, proved cheaply and recording nothing? Over
     /// $\mathbb{Q}$ as [`Matrix::rank_at_least_mod_p`]; over a field with a cheap bound
     /// ([`crate::field::KernelTable::rank_lower_bound`]; $\mathbb{Q}(p)$: the rank at a

@@ -41,8 +41,8 @@ mod staircase;
 pub(crate) mod verify;
 
 use crate::error::{Error, Result};
-use crate::field::{Field, Q, Rational};
-use crate::jordan::{JordanForm, jordan};
+use crate::field::{Field, Q};
+use crate::jordan::{JordanField, JordanForm};
 use crate::matrix::Matrix;
 
 /// The Kronecker structure of $A - sE$.
@@ -162,42 +162,51 @@ fn verify_structure<K: Field>(a: &Matrix<K>, e: &Matrix<K>, ks: &KroneckerStruct
         && verify::check_local(&-e, a, n - r, &ks.infinite_divisors)
 }
 
-/// The Kronecker structure of a rational pencil with its finite eigenvalues.
+/// The Kronecker structure of a pencil with the Jordan form of its finite part.
 #[derive(Clone, Debug)]
-pub struct PencilStructure {
-    pub structure: KroneckerStructure<Q>,
-    /// Jordan form of the finite part: eigenvalues (algebraic numbers) and block sizes.
-    pub finite: JordanForm,
+pub struct PencilStructure<K: Field = Q> {
+    pub structure: KroneckerStructure<K>,
+    /// Jordan form of the finite part: eigenvalues and block sizes.
+    pub finite: JordanForm<K>,
     /// The structure's certificate and checks, the Jordan identities of the finite part
     /// (the proof), and the Toeplitz cross-checks $\dim\ker T_k(\theta)$ of the pencil
-    /// itself at every finite eigenvalue $\theta$ (for an irrational $\theta$ through
-    /// $A \otimes I - E \otimes C_f$ over $\mathbb{Q}$, $C_f$ the companion matrix of its
-    /// minimal polynomial; modulo a prime as in [`verify`]) held.
+    /// itself at every finite eigenvalue $\theta$ (for a root $\theta$ of an irreducible
+    /// factor $f$ of degree $d \ge 2$ through $A \otimes I - E \otimes C_f$ over the field,
+    /// $C_f$ the companion matrix of $f$; modulo a prime as in [`verify`] over
+    /// $\mathbb{Q}$) held.
     pub verified: bool,
 }
 
 /// Companion matrix of a monic-izable polynomial (last row $-f_0, \dots, -f_{d-1}$).
-fn companion(f: &crate::poly::Poly<Q>) -> Matrix<Q> {
+fn companion<K: Field>(f: &crate::poly::Poly<K>) -> Matrix<K> {
+    let k = f.field().clone();
     let d = f.deg();
     let lc = f.lc();
-    Matrix::from_fn(Q, d, d, |i, j| {
+    Matrix::from_fn(k.clone(), d, d, |i, j| {
         if i + 1 == d {
-            -(f.coeff(j) / &lc)
+            k.neg(
+                &k.div(&f.coeff(j), &lc)
+                    .expect("nonzero leading coefficient"),
+            )
         } else if j == i + 1 {
-            Rational::from_integer(1.into())
+            k.one()
         } else {
-            Rational::from_integer(0.into())
+            k.zero()
         }
     })
 }
 
-/// Kronecker structure of a rational pencil, finite eigenvalues included.
+/// Kronecker structure of a pencil over any [`JordanField`], finite eigenvalues included.
 ///
 /// # Errors
-/// As [`kronecker_structure`] and [`crate::jordan::jordan`].
-pub fn pencil_structure(a: &Matrix<Q>, e: &Matrix<Q>) -> Result<PencilStructure> {
+/// As [`kronecker_structure`] and [`JordanField::jordan_form`].
+pub fn pencil_structure<K: JordanField>(
+    a: &Matrix<K>,
+    e: &Matrix<K>,
+) -> Result<PencilStructure<K>> {
+    let k = a.field().clone();
     let structure = kronecker_structure(a, e)?;
-    let finite = jordan(&structure.finite_part)?;
+    let finite = K::jordan_form(&structure.finite_part)?;
     let defect = structure.shape.1 - structure.normal_rank;
     let mut ok = structure.verified && finite.verified;
     for comp in &finite.components {
@@ -205,17 +214,20 @@ pub fn pencil_structure(a: &Matrix<Q>, e: &Matrix<Q>) -> Result<PencilStructure>
             break;
         }
         ok = if comp.factor.deg() == 1 {
-            let theta: Rational = -comp.factor.coeff(0) / comp.factor.coeff(1);
+            let theta = k.neg(
+                &k.div(&comp.factor.coeff(0), &comp.factor.coeff(1))
+                    .expect("nonzero leading coefficient"),
+            );
             let p0 = a - &e.scale(&theta);
             verify::check_local(&p0, &-e, defect, &comp.blocks)
         } else {
             // the pencil at the companion matrix C_f of the factor f (degree d):
             // A (x) I_d - E (x) C_f is similar over the splitting field to the direct sum of
             // A - theta_j E over the d conjugate roots, which share one local structure, so
-            // every kernel dimension is d times that at theta (exact, over Q).
+            // every kernel dimension is d times that at theta (exact, over the field).
             let d = comp.factor.deg();
             let cf = companion(&comp.factor);
-            let id = Matrix::identity(Q, d);
+            let id = Matrix::identity(k.clone(), d);
             let p0 = &a.kron(&id) - &e.kron(&cf);
             let p1 = -&e.kron(&id);
             let blocks: Vec<usize> = comp

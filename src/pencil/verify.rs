@@ -59,30 +59,27 @@ fn local_toeplitz<K: Field>(p0: &Matrix<K>, p1: &Matrix<K>, k: usize) -> Matrix<
 /// column $c + 1$ alone and is replaced by an echelon basis of its row space (a row
 /// operation). $T_k$ shares its first $k$ block-column steps with $T_{k+1}$, so
 /// $\mathrm{rank}\,T_k = (\text{pivots before column } k) + \mathrm{rank}$(the leftover,
-/// with `p1` below it when `tail`). `None` when `pr` divides a denominator.
+/// with `p1` below it when `tail`); `r0`, `r1` are the images of `p0`, `p1` modulo `pr`
+/// ([`Matrix::image_mod_p`]).
 fn toeplitz_ranks_mod_p(
     pr: &crate::qkernels::prime::Prime,
-    p0: &[crate::field::Rational],
-    p1: &[crate::field::Rational],
+    r0: &[u64],
+    r1: &[u64],
     (m, n): (usize, usize),
     kmax: usize,
     tail: bool,
-) -> Option<Vec<usize>> {
-    use crate::qkernels::modular::rank::{eliminate_mod_p, rank_mod_p, reduce_rational};
-    let red = |v: &[crate::field::Rational]| -> Option<Vec<u64>> {
-        v.iter().map(|x| reduce_rational(pr, x)).collect()
-    };
-    let (r0, r1) = (red(p0)?, red(p1)?);
+) -> Vec<usize> {
+    use crate::qkernels::modular::rank::{eliminate_mod_p, rank_mod_p};
     if n == 0 {
-        return Some(vec![0; kmax + 1]);
+        return vec![0; kmax + 1];
     }
     let mut ranks = Vec::with_capacity(kmax + 1);
     let mut before = 0usize;
-    let mut left = r0.clone();
+    let mut left = r0.to_vec();
     for k in 0..=kmax {
         let mut last = left.clone();
         if tail {
-            last.extend_from_slice(&r1);
+            last.extend_from_slice(r1);
         }
         let rows = last.len() / n;
         ranks.push(before + rank_mod_p(pr, rows, n, &mut last));
@@ -110,7 +107,7 @@ fn toeplitz_ranks_mod_p(
         rest.truncate(rr * n);
         left = rest;
     }
-    Some(ranks)
+    ranks
 }
 
 /// Compares the predicted ranks `want[k]` of $T_k$ (as [`toeplitz_ranks_mod_p`]) with
@@ -126,25 +123,17 @@ fn toeplitz_ranks_match<K: Field>(
 ) -> bool {
     let kmax = want.len().saturating_sub(1);
     let mut open: Vec<usize> = (0..want.len()).collect();
-    if let Some(w) = p0.field().as_rationals() {
-        for pr in crate::qkernels::prime::primes(11).take(2) {
-            let Some(got) = toeplitz_ranks_mod_p(
-                &pr,
-                w.view(p0.as_slice()),
-                w.view(p1.as_slice()),
-                p0.shape(),
-                kmax,
-                tail,
-            ) else {
-                continue;
-            };
-            if open.iter().any(|&k| got[k] > want[k]) {
-                return false;
-            }
-            open.retain(|&k| got[k] < want[k]);
-            if open.is_empty() {
-                return true;
-            }
+    for pr in crate::qkernels::prime::primes(11).take(2) {
+        let Some((r0, r1)) = p0.image_mod_p(&pr).zip(p1.image_mod_p(&pr)) else {
+            continue;
+        };
+        let got = toeplitz_ranks_mod_p(&pr, &r0, &r1, p0.shape(), kmax, tail);
+        if open.iter().any(|&k| got[k] > want[k]) {
+            return false;
+        }
+        open.retain(|&k| got[k] < want[k]);
+        if open.is_empty() {
+            return true;
         }
     }
     open.into_iter().all(|k| assemble(k).rank() == want[k])

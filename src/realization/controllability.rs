@@ -1,7 +1,10 @@
 //! Controllability and observability matrices (paper eq. 7-8), the block Hankel matrix
 //! (eq. 9) and the McMillan degree.
 
+use crate::algebraic::Ext;
+use crate::error::Result;
 use crate::field::Field;
+use crate::jordan::JordanField;
 use crate::matrix::Matrix;
 use crate::system::StateSpace;
 
@@ -71,33 +74,25 @@ pub fn row_compression<K: Field>(x: &Matrix<K>) -> (Matrix<K>, usize) {
 }
 
 /// PBH test (Popov–Belevitch–Hautus): $(A, B)$ is controllable iff
-/// $\mathrm{rank}\,[A - \lambda I, B] = n$ for every eigenvalue $\lambda$. Exact over
-/// $\mathbb{Q}$: one rank per irreducible factor $p$ of $\det(sI - A)$, computed in
-/// $K = \mathbb{Q}\[t\]/(p)$ at $\lambda = t$ (the conjugate roots give the same rank).
+/// $\mathrm{rank}\,[A - \lambda I, B] = n$ for every eigenvalue $\lambda$. Exact over every
+/// [`JordanField`]: one rank per irreducible factor $g$ of $\det(sI - A)$ over the field,
+/// computed in $E = F\[t\]/(g)$ at $\lambda = t$ (the conjugate roots give the same rank).
 ///
 /// # Errors
-/// `NotSquare`; factorization failures.
-pub fn pbh_controllable(
-    a: &Matrix<crate::field::Q>,
-    b: &Matrix<crate::field::Q>,
-) -> crate::error::Result<bool> {
-    use crate::algebraic::NumberField;
+/// `NotSquare`/`Shape`; factorization failures.
+pub fn pbh_controllable<F: JordanField>(a: &Matrix<F>, b: &Matrix<F>) -> Result<bool> {
     a.check_square("pbh")?;
     let n = a.nrows();
-    let (_, factors) = crate::algebraic::factor_q(&a.charpoly()?)?;
-    for (p, _) in factors {
-        let k = NumberField::new_unchecked(&p, (0.0, 0.0));
-        let t = if p.deg() == 1 {
-            k.from_rational(&-p.coeff(0))
-        } else {
-            k.generator()
-        };
-        let mut m = a.convert_to(&k);
+    b.check_shape("pbh B", (n, b.ncols()))?;
+    for (g, _) in F::charpoly_factors(a)? {
+        let e = Ext::with_var(&g, (0.0, 0.0), "t");
+        let t = e.generator();
+        let mut m = a.map(&e, |x| e.from_base(x));
         for i in 0..n {
-            let v = k.sub(m.get(i, i), &t);
+            let v = e.sub(m.get(i, i), &t);
             m.set(i, i, v);
         }
-        if m.hstack(&b.convert_to(&k))?.rank() < n {
+        if m.hstack(&b.map(&e, |x| e.from_base(x)))?.rank() < n {
             return Ok(false);
         }
     }
@@ -108,9 +103,6 @@ pub fn pbh_controllable(
 ///
 /// # Errors
 /// As [`pbh_controllable`].
-pub fn pbh_observable(
-    a: &Matrix<crate::field::Q>,
-    c: &Matrix<crate::field::Q>,
-) -> crate::error::Result<bool> {
+pub fn pbh_observable<F: JordanField>(a: &Matrix<F>, c: &Matrix<F>) -> Result<bool> {
     pbh_controllable(&a.transpose(), &c.transpose())
 }

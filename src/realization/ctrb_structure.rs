@@ -80,15 +80,15 @@ pub fn controllability_structure<K: Field>(
     // Krylov selection: over Q first modulo word-size primes (certified below, exactly),
     // then, if no prime gives a certified selection, by exact elimination per level.
     let mut found = None;
-    if let Some(w) = a.field().as_rationals() {
-        let (qa, qb) = (w.view(a.as_slice()), w.view(b.as_slice()));
-        for pr in crate::qkernels::prime::primes(7).take(3) {
-            if let Some(levels) = krylov_levels_mod_p(&pr, n, m, qa, qb)
-                && let Some(sel) = certify_levels(a, b, &levels)
-            {
-                found = Some(sel);
-                break;
-            }
+    for pr in crate::qkernels::prime::primes(7).take(3) {
+        let Some((ap, bp)) = a.image_mod_p(&pr).zip(b.image_mod_p(&pr)) else {
+            continue;
+        };
+        if let Some(levels) = krylov_levels_mod_p(&pr, n, m, &ap, &bp)
+            && let Some(sel) = certify_levels(a, b, &levels)
+        {
+            found = Some(sel);
+            break;
         }
     }
     let (kappa, basis, block_dims) = match found {
@@ -224,67 +224,61 @@ fn identity_on<K: Field>(l: &Matrix<K>, cols: &[usize]) -> bool {
         })
 }
 
-/// Over $\mathbb{Q}$: a basis $L$ of the left null space of `basis` ($n \times s$) guessed
+/// With the field's RREF guess ($\mathbb{Q}$, [`Matrix::rref_guess`]): a basis $L$ of the left null space of `basis` ($n \times s$) guessed
 /// from its images modulo primes (the canonical null space of $S^T$, identity on the
 /// non-pivot columns, returned with them). Nothing is trusted: the caller checks
 /// $LB = 0$ and $LA = \bar A L$ exactly, which with $\mathrm{rank}\,L = n - s$ and
 /// $\mathrm{rank}\,S = s$ make $\ker L$ the controllable subspace.
 fn left_kernel_guess<K: Field>(basis: &Matrix<K>) -> Option<(Matrix<K>, Vec<usize>)> {
-    let w = basis.field().as_rationals()?;
+    let k = basis.field().clone();
     let (n, s) = basis.shape();
-    let st = basis.transpose();
-    let (piv, r) = crate::qkernels::modular::guess::rref_guess(s, n, w.view(st.as_slice()), 24)?;
+    let (piv, r) = basis.transpose().rref_guess(24)?;
     if piv.len() != s {
         return None;
     }
     let free: Vec<usize> = (0..n).filter(|c| !piv.contains(c)).collect();
-    let zero = crate::field::Rational::from_integer(0.into());
-    let one = crate::field::Rational::from_integer(1.into());
-    let mut data = vec![zero; free.len() * n];
+    let mut l = Matrix::zeros(k.clone(), free.len(), n);
     for (i, &f) in free.iter().enumerate() {
-        data[i * n + f] = one.clone();
-        for (k, &c) in piv.iter().enumerate() {
-            data[i * n + c] = -r[k * n + f].clone();
+        l.set(i, f, k.one());
+        for (row, &c) in piv.iter().enumerate() {
+            l.set(i, c, k.neg(r.get(row, f)));
         }
     }
-    let l = Matrix::from_vec(basis.field().clone(), free.len(), n, w.back(data));
     Some((l, free))
 }
 
-/// Over $\mathbb{Q}$: is every column $t$ of `rej` in the span of the first `lim[t]`
+/// With the field's RREF guess ($\mathbb{Q}$): is every column $t$ of `rej` in the span of the first `lim[t]`
 /// columns of `basis`, with `basis` of full column rank? Coefficients $C$ are guessed
 /// modulo primes and $S C = R$ is checked exactly (with $C$ zero below `lim`); the rank by
 /// one elimination modulo a prime (a lower bound). `None`: undecided (not over
 /// $\mathbb{Q}$, or no stable guess), the caller falls back to the certified RREF.
 fn contained_guess<K: Field>(basis: &Matrix<K>, rej: &Matrix<K>, lim: &[usize]) -> Option<bool> {
-    let w = basis.field().as_rationals()?;
-    let (n, s) = basis.shape();
-    if !basis.rank_at_least_mod_p(s) {
-        return None;
-    }
+    let k = basis.field().clone();
+    let (_, s) = basis.shape();
     let t = rej.ncols();
     if t == 0 {
-        return Some(true);
+        return basis.rank_at_least_mod_p(s).then_some(true);
     }
     let both = basis.hstack(rej).ok()?;
-    let (piv, r) =
-        crate::qkernels::modular::guess::rref_guess(n, s + t, w.view(both.as_slice()), 24)?;
+    let (piv, r) = both.rref_guess(24)?;
     if piv.len() < s || piv[..s].iter().enumerate().any(|(i, &c)| i != c) {
         return None;
     }
-    let zero = crate::field::Rational::from_integer(0.into());
-    let mut coef = vec![zero; s * t];
+    if !basis.rank_at_least_mod_p(s) {
+        return None;
+    }
+    let mut coef = Matrix::zeros(k.clone(), s, t);
     for i in 0..s {
         for j in 0..t {
+            let x = r.get(i, s + j);
             if i < lim[j] {
-                coef[i * t + j] = r[i * (s + t) + s + j].clone();
-            } else if !num_traits::Zero::is_zero(&r[i * (s + t) + s + j]) {
+                coef.set(i, j, x.clone());
+            } else if !k.is_zero(x) {
                 return Some(false);
             }
         }
     }
-    let c = Matrix::from_vec(basis.field().clone(), s, t, w.back(coef));
-    Some(&(basis * &c) == rej)
+    Some(&(basis * &coef) == rej)
 }
 
 /// A Krylov selection: per level, the positions (in the level's candidate list) of the
@@ -295,26 +289,15 @@ type Levels = Vec<Vec<usize>>;
 /// (indices per input, selected columns, block dimensions).
 type Selection<K> = (Vec<usize>, Matrix<K>, Vec<usize>);
 
-fn reduce_q(pr: &crate::qkernels::prime::Prime, x: &crate::field::Rational) -> Option<u64> {
-    let red = |v: &num_bigint::BigInt| {
-        let (s, l) = v.to_u64_digits();
-        pr.reduce_limbs(s == num_bigint::Sign::Minus, &l)
-    };
-    let d = pr.inv(red(x.denom()))?;
-    Some(pr.mul(red(x.numer()), d))
-}
-
-/// The greedy Krylov selection of $(A \bmod p, B \bmod p)$ (incremental echelon form over
-/// $\mathbb{F}_p$); `None` when a denominator is divisible by $p$.
+/// The greedy Krylov selection of the images $(A \bmod p, B \bmod p)$ (row-major; incremental
+/// echelon form over $\mathbb{F}_p$).
 fn krylov_levels_mod_p(
     pr: &crate::qkernels::prime::Prime,
     n: usize,
     m: usize,
-    a: &[crate::field::Rational],
-    b: &[crate::field::Rational],
+    ap: &[u64],
+    bp: &[u64],
 ) -> Option<Levels> {
-    let ap: Vec<u64> = a.iter().map(|x| reduce_q(pr, x)).collect::<Option<_>>()?;
-    let bp: Vec<u64> = b.iter().map(|x| reduce_q(pr, x)).collect::<Option<_>>()?;
     // echelon rows: (pivot position, vector with 1 at the pivot)
     let mut ech: Vec<(usize, Vec<u64>)> = Vec::new();
     let mut cand: Vec<Vec<u64>> = (0..m)

@@ -226,11 +226,14 @@ fn real_pair<F: EigenField>(
     }
 }
 
-impl<F: EigenField> JordanMinimal<F> {
+impl<F: Field> JordanMinimal<F> {
     /// Order of the realization.
     pub fn order(&self) -> usize {
         self.stages[2]
     }
+}
+
+impl<F: EigenField> JordanMinimal<F> {
     /// The real modal form as one system over the base field when every entry lies in it
     /// (real roots in $F$, pairs whose real field is $\mathbb{Q}$ or $F$ itself, radical
     /// pairs whose imaginary unit $\sqrt{-f}$ lies in $F$).

@@ -1,21 +1,127 @@
-//! Minimal realization by a chosen method: the dispatcher [`minimal`].
+//! Minimal realization by a chosen method: the dispatcher [`minimal`], one entry point for
+//! every field a system can be over ([`SystemField`]).
 //!
 //! Each method returns a [`MinimalRealization`] verified exactly (controllable, observable,
-//! same Markov parameters, see [`super::minimal::verify_minimal`]).
+//! same Markov parameters, see [`super::minimal::verify_minimal`]). The Jordan-form method
+//! keeps its full result ([`JordanMethod`]) beside the system:
+//!
+//! | field | Jordan-method result | `system` |
+//! |---|---|---|
+//! | $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$ | the modal form ([`super::minimal_jordan`]) | its real form when every entry lies in the field, else the primary blocks over the field ([`super::minimal_jordan_primary`]) |
+//! | $\mathbb{Q}(p_1, \dots, p_k)$ | the primary blocks over $\mathbb{Q}(p)$ ([`super::minimal_jordan_qp`]) | that realization |
 
+use super::jordan_method::{JordanMinimal, minimal_jordan};
+use super::jordan_method_primary::{
+    PrimaryJordanMinimal, minimal_jordan_primary, minimal_jordan_qp,
+};
 use super::minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
+use super::modal::{ModalTable, modal_table_over};
 use crate::error::{Error, Result};
-use crate::field::Field;
+use crate::field::{Field, Q, QuadraticField};
+use crate::jordan::EigenField;
 use crate::matrix::Matrix;
+use crate::ratfunc::RatFuncField;
 use crate::system::StateSpace;
 
-/// Minimal realization by the chosen method.
+/// The Jordan-form method's result over a field, as the field decomposes $A$.
+#[derive(Clone, Debug)]
+pub enum JordanMethod<K: Field> {
+    /// Over a field with certified eigenvalues: one block per eigenvalue (and the real form).
+    Modal(Box<JordanMinimal<K>>),
+    /// Over $\mathbb{Q}(p)$: eigenvalues in the field as Jordan blocks, the roots of an
+    /// irreducible factor of degree $\ge 2$ as one primary block.
+    Primary(Box<PrimaryJordanMinimal<K>>),
+}
+
+impl<K: Field> JordanMethod<K> {
+    /// The method's own exact checks held.
+    pub fn verified(&self) -> bool {
+        match self {
+            JordanMethod::Modal(m) => m.verified,
+            JordanMethod::Primary(p) => p.verified,
+        }
+    }
+}
+
+/// A field a system's matrices can lie in ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
+/// $\mathbb{Q}(i)$, $\mathbb{Q}(p_1, \dots, p_k)$): every operation on systems is generic over
+/// it; what differs between the fields is a method here, never a second entry point.
+pub trait SystemField: crate::jordan::JordanField {
+    /// The Jordan-form minimal realization over this field, with the realization as a
+    /// system over the field (its Markov parameters part of the method's verification).
+    ///
+    /// # Errors
+    /// Those of the decomposition and of the compaction.
+    fn jordan_method(sys: &StateSpace<Self>) -> Result<(JordanMethod<Self>, StateSpace<Self>)>;
+    /// The modal table of `a` (figures of each eigenvalue).
+    ///
+    /// # Errors
+    /// Those of the decomposition; `Unsupported` over a field without numeric eigenvalues.
+    fn modal_table(a: &Matrix<Self>) -> Result<ModalTable>;
+}
+
+/// The modal form over a field with certified eigenvalues, and the system: its real form
+/// in the field when every entry lies there, else the primary blocks over the field built
+/// from the same components.
+fn modal<F: EigenField>(sys: &StateSpace<F>) -> Result<(JordanMethod<F>, StateSpace<F>)> {
+    let mut jm = minimal_jordan(sys)?;
+    let system = match jm.real_to_base() {
+        Some(s) => s,
+        None => {
+            let p = minimal_jordan_primary(sys, jm.jordan.components.clone())?;
+            jm.verified &= p.verified;
+            p.system
+        }
+    };
+    Ok((JordanMethod::Modal(Box::new(jm)), system))
+}
+
+impl SystemField for Q {
+    fn jordan_method(sys: &StateSpace<Q>) -> Result<(JordanMethod<Q>, StateSpace<Q>)> {
+        modal(sys)
+    }
+    fn modal_table(a: &Matrix<Q>) -> Result<ModalTable> {
+        modal_table_over(a)
+    }
+}
+
+impl SystemField for QuadraticField {
+    fn jordan_method(
+        sys: &StateSpace<QuadraticField>,
+    ) -> Result<(JordanMethod<QuadraticField>, StateSpace<QuadraticField>)> {
+        modal(sys)
+    }
+    fn modal_table(a: &Matrix<QuadraticField>) -> Result<ModalTable> {
+        modal_table_over(a)
+    }
+}
+
+impl SystemField for RatFuncField {
+    fn jordan_method(
+        sys: &StateSpace<RatFuncField>,
+    ) -> Result<(JordanMethod<RatFuncField>, StateSpace<RatFuncField>)> {
+        let p = minimal_jordan_qp(sys)?;
+        let system = p.system.clone();
+        Ok((JordanMethod::Primary(Box::new(p)), system))
+    }
+    fn modal_table(a: &Matrix<RatFuncField>) -> Result<ModalTable> {
+        Err(Error::Unsupported(format!(
+            "the modal table lists numbers (frequencies, damping ratios): give the parameters of {} values",
+            a.field()
+        )))
+    }
+}
+
+/// Minimal realization by the chosen method, over every [`SystemField`].
+///
+/// With [`MinrealMethod::Jordan`] the result also holds the method's full result
+/// ([`MinimalRealization::jordan`]) and carries the method's own exact verification (Markov
+/// parameters $C A^k B$ equal for $k < n + r$, order = McMillan degree, the system's own
+/// Markov parameters; the primary blocks' when the modal form is not over the field).
 ///
 /// # Errors
-/// `Unsupported` for a method not available for this field (Jordan: systems with rational entries
-/// whose minimal Jordan-method blocks are rational, see
-/// [`super::jordan_method::minimal_jordan_rational`]); internal failures.
-pub fn minimal<K: Field>(
+/// Those of the chosen algorithm.
+pub fn minimal<K: SystemField>(
     sys: &StateSpace<K>,
     method: MinrealMethod,
 ) -> Result<MinimalRealization<K>> {
@@ -24,32 +130,19 @@ pub fn minimal<K: Field>(
         MinrealMethod::Rosenbrock => super::rosenbrock::minimal_rosenbrock_recorded(sys, None),
         MinrealMethod::HoKalman => super::ho_kalman::minimal_ho_kalman_recorded(sys, None),
         MinrealMethod::Jordan => {
-            // the Jordan method works over Q: systems with rational entries are taken down
-            // to Q, realized there, lifted back and verified over K
-            let k = sys.a.field().clone();
-            let down = |m: &Matrix<K>| crate::matrix::to_rational_matrix(m);
-            let (Some(a), Some(b), Some(c), Some(d)) =
-                (down(&sys.a), down(&sys.b), down(&sys.c), down(&sys.d))
-            else {
-                return Err(Error::Unsupported(format!(
-                    "the Jordan-form method works on systems with rational entries, not over {k}"
-                )));
-            };
-            let q = StateSpace::new(a, b, c, d)?;
-            let r = super::jordan_method::minimal_jordan_rational(&q)?;
-            let up = |m: &Matrix<crate::field::Q>| m.convert_to(&k);
-            let min = StateSpace::new(
-                up(&r.system.a),
-                up(&r.system.b),
-                up(&r.system.c),
-                up(&r.system.d),
-            )?;
-            Ok(MinimalRealization::new(
-                sys,
-                min,
-                MinrealMethod::Jordan,
-                None,
-            ))
+            // verified by the method itself: C A^k B equal for k < n + r and the order equal
+            // to the McMillan degree (no second rank test: over Q(p) it would add pivots to
+            // the result's conditions)
+            let (jm, min) = K::jordan_method(sys)?;
+            Ok(MinimalRealization {
+                order: min.nstates(),
+                original_order: sys.nstates(),
+                system: min,
+                method: MinrealMethod::Jordan,
+                t: None,
+                verified: jm.verified(),
+                jordan: Some(jm),
+            })
         }
     }
 }

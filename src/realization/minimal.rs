@@ -49,6 +49,8 @@ pub struct MinimalRealization<K: Field> {
     /// Controllable, observable, and Markov parameters $C A^k B$ ($k < 2n$) and $D$ equal
     /// to the original's, all checked exactly.
     pub verified: bool,
+    /// The Jordan-form method's full result (modal or primary blocks), for that method.
+    pub jordan: Option<super::method::JordanMethod<K>>,
 }
 
 impl<K: Field> MinimalRealization<K> {
@@ -67,6 +69,7 @@ impl<K: Field> MinimalRealization<K> {
             method,
             t,
             verified,
+            jordan: None,
         }
     }
 }

@@ -13,10 +13,10 @@
 //! | [`controllability_matrix`], [`observability_matrix`], [`hankel_matrix`], [`mcmillan_degree`] | Krylov matrices, rank over the field |
 //! | [`kalman_decomposition`] | controllable subspace $\mathcal R$, unobservable $\mathcal N$, four parts |
 //! | [`realize_as_written`] | a transfer matrix as written: column companion blocks, nothing cancelled |
-//! | [`minimal`] (`MinrealMethod::Kalman`, default) | the $co$ block of the Kalman decomposition |
+//! | [`minimal`] (`MinrealMethod::Kalman`, default), over every [`SystemField`] | the $co$ block of the Kalman decomposition |
 //! | `MinrealMethod::Rosenbrock` | staircase of exact row compressions of $[A\ B; C\ 0]$, then of the dual (paper sec. 2.3) |
 //! | `MinrealMethod::HoKalman` | rank factorization of the block Hankel matrix over the field (exact ERA) |
-//! | [`minimal_jordan`] | Jordan-form method (sec. 3.3): drop non-contributing modes, compact repeated ones, real Jordan blocks |
+//! | `MinrealMethod::Jordan` ([`minimal_jordan`], [`minimal_jordan_qp`]) | Jordan-form method (sec. 3.3): drop non-contributing modes, compact repeated ones, real Jordan blocks |
 //! | [`descriptor_to_standard`] | $E^{-1}A$, index-1 elimination, or a Weierstrass-type split |
 //! | [`modal_table`], [`modal_table_over`] | eigenvalue, frequency, damping ratio, time constant, period per mode (Tab. 8) |
 //! | [`gramians`] | exact Lyapunov solves $AW + WA^T = -BB^T$ for stable systems |
@@ -74,7 +74,7 @@ pub use jordan_method_primary::{
     PrimaryBlock, PrimaryJordanMinimal, minimal_jordan_primary, minimal_jordan_qp,
 };
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
-pub use method::minimal;
+pub use method::{JordanMethod, SystemField, minimal};
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
 pub use modal::{ExactFigure, ModalTable, Mode, modal_table, modal_table_over};
 pub use rosenbrock::{controllable_part, controllable_staircase, minimal_rosenbrock_recorded};

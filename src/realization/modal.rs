@@ -68,7 +68,10 @@ pub fn modal_table(a: &Matrix<Q>) -> Result<ModalTable> {
 /// `NotSquare`; those of the factorization and of root isolation.
 pub fn modal_table_over<F: EigenField>(a: &Matrix<F>) -> Result<ModalTable> {
     let (_, factors) = crate::jordan::eigenvalues_over(a)?;
-    let real = a.field().is_real() || crate::matrix::to_rational_matrix(a).is_some();
+    // a real matrix (over a real field, or with every entry its own conjugate) has its
+    // complex eigenvalues in conjugate pairs
+    let k = a.field();
+    let real = k.is_real() || a.as_slice().iter().all(|x| k.conj(x).as_ref() == Some(x));
     let mut modes = vec![];
     for (_, mult, _, roots) in factors {
         for (lam, z) in roots {

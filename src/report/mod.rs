@@ -273,6 +273,14 @@ impl Report {
     pub fn bool(self, key: &str, b: bool) -> Self {
         self.with(key, Value::Bool(b))
     }
+    /// The item `key` set to `v` in place (appended when absent).
+    pub fn set(mut self, key: &str, v: Value) -> Self {
+        match self.items.iter_mut().find(|(k, _)| k == key) {
+            Some(item) => item.1 = v,
+            None => self.items.push((key.to_string(), v)),
+        }
+        self
+    }
     pub fn float(self, key: &str, x: f64) -> Self {
         self.with(key, Value::Float(x))
     }

@@ -24,7 +24,6 @@
 //! "a single integrator chain of length three" (sec. V).
 
 use crate::error::{Error, Result};
-use crate::field::ElemDisplay;
 use crate::matrix::Matrix;
 use crate::mpoly::MPoly;
 use crate::mpoly::factor::cmp_poly;
@@ -56,10 +55,20 @@ pub struct Node<S> {
 pub struct Branch<S> {
     /// The condition set to zero.
     pub condition: MPoly,
-    /// `"sigma1 = 0"`, or the substitution made: `"cr = m*u^2/(a + b)"`.
-    pub equation: String,
+    /// The condition solved: `sigma1 = 0` as it is, or the substitution made
+    /// (`cr = m*u^2/(a + b)`).
+    pub equation: Equation,
     /// What happens there.
     pub outcome: BranchOutcome<S>,
+}
+
+/// The equation of a branch, as values (the text is made in `report`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Equation {
+    /// The condition set to zero, not solved for a parameter.
+    Zero,
+    /// Parameter `var` (index into the field's variables) set to `value`.
+    Substitution { var: usize, value: RatFunc },
 }
 
 /// What a branch gives.
@@ -67,10 +76,20 @@ pub struct Branch<S> {
 pub enum BranchOutcome<S> {
     /// The substitution was made and the computation run again.
     Explored(Box<Node<S>>),
-    /// An entry of the system has a pole on the branch (the system is not defined there).
-    Undefined(String),
-    /// Not linear in any parameter, or the computation failed there: the reason.
-    NotExplored(String),
+    /// An entry of the system has a pole at the substitution (the system is not defined
+    /// there).
+    Undefined,
+    /// Not explored: the reason.
+    NotExplored(NotExplored),
+}
+
+/// Why a branch was not explored.
+#[derive(Clone, Debug)]
+pub enum NotExplored {
+    /// The condition is not linear in any parameter.
+    NotLinear,
+    /// The computation failed on the branch.
+    Failed(Error),
 }
 
 /// The substitution that solves a condition `c = a p_i + b`: parameter `i`, value `-b/a`,
@@ -209,7 +228,7 @@ impl Default for Limits {
 /// use exactlti::field::Field;
 /// use exactlti::matrix::Matrix;
 /// use exactlti::ratfunc::RatFuncField;
-/// use exactlti::structure::bifurcation::{BranchOutcome, Limits, bifurcations};
+/// use exactlti::structure::bifurcation::{BranchOutcome, Equation, Limits, bifurcations};
 /// use exactlti::system::StateSpace;
 /// // x' = a x + u, y = x: the controllability matrix [1] never degenerates, but its
 /// // eigenvalue a is kept; dividing by a makes `a` a condition.
@@ -222,7 +241,9 @@ impl Default for Limits {
 /// };
 /// let t = bifurcations(&s, &f, Limits::default()).unwrap();
 /// assert_eq!(t.result, 1);
-/// assert_eq!(t.branches[0].equation, "a = 0");
+/// // the condition a is solved for a: the substitution a = 0
+/// let zero = Equation::Substitution { var: 0, value: k.zero() };
+/// assert_eq!(t.branches[0].equation, zero);
 /// let BranchOutcome::Explored(b) = &t.branches[0].outcome else { panic!() };
 /// assert_eq!(b.result, 0);
 /// ```
@@ -276,19 +297,18 @@ fn expand<S: Clone>(
         if assumed.contains(&c) {
             continue;
         }
-        let zero = format!("{} = 0", k.fmt_poly(&c));
         let Some(sol) = solve_linear(&k, &c) else {
             node.branches.push(Branch {
                 condition: c.clone(),
-                equation: zero,
-                outcome: BranchOutcome::NotExplored(
-                    "not linear in any parameter: not explored".into(),
-                ),
+                equation: Equation::Zero,
+                outcome: BranchOutcome::NotExplored(NotExplored::NotLinear),
             });
             continue;
         };
-        let name = &k.vars()[sol.var];
-        let equation = format!("{name} = {}", k.fmt_elem(&sol.value));
+        let equation = Equation::Substitution {
+            var: sol.var,
+            value: sol.value.clone(),
+        };
         let sub = |m: &Matrix<RatFuncField>| subst_matrix(&k, m, sol.var, &sol.value);
         let sys = match (
             sub(&node.system.a),
@@ -301,10 +321,7 @@ fn expand<S: Clone>(
                 node.branches.push(Branch {
                     condition: c.clone(),
                     equation,
-                    outcome: BranchOutcome::Undefined(format!(
-                        "an entry of the system has a pole at {name} = {}",
-                        k.fmt_elem(&sol.value)
-                    )),
+                    outcome: BranchOutcome::Undefined,
                 });
                 continue;
             }
@@ -337,7 +354,7 @@ fn expand<S: Clone>(
                 BranchOutcome::Explored(Box::new(child))
             }
             Err(e @ Error::Limit(_)) if *budget == 0 => return Err(e),
-            Err(e) => BranchOutcome::NotExplored(format!("the computation failed there: {e}")),
+            Err(e) => BranchOutcome::NotExplored(NotExplored::Failed(e)),
         };
         node.branches.push(Branch {
             condition: c,

@@ -19,7 +19,7 @@ use super::{Failure, Outcome};
 use crate::error::Error;
 use crate::field::{Field, QuadraticField};
 use crate::io::{SystemFile, TypedSystem, as_rational};
-use crate::realization::{self, MinrealMethod};
+use crate::realization;
 use crate::report::{Report, Value, str_list};
 use eigen::eigen_sections;
 use runner::{Insist, Section, Sections};
@@ -77,7 +77,7 @@ fn realization_section<K: Field>(t: &TypedSystem<K>) -> Result<(bool, Report), E
     let s = &t.ss;
     let rc = realization::controllability_matrix(&s.a, &s.b).rank();
     let ro = realization::observability_matrix(&s.a, &s.c).rank();
-    let min = realization::minimal(s, MinrealMethod::Kalman)?;
+    let min = realization::minimal_kalman(s)?;
     let tf = s.transfer_matrix()?;
     let r = Report::titled("realization")
         .int("controllability_rank", rc)

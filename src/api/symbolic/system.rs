@@ -60,10 +60,7 @@ pub(in crate::api) fn run(
                 MethodArg::Kalman => MinrealMethod::Kalman,
                 MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
                 MethodArg::HoKalman => MinrealMethod::HoKalman,
-                MethodArg::Jordan => {
-                    let r = realization::minimal_jordan_qp(s).map_err(e)?;
-                    return finish(&k, r.report(), r.verified).map(Some).map_err(e);
-                }
+                MethodArg::Jordan => MinrealMethod::Jordan,
                 MethodArg::Era => return Ok(None),
             };
             let r = realization::minimal(s, m).map_err(e)?;

@@ -31,6 +31,7 @@ pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,
     kronecker_report, minreal_descriptor_report, pencil_report, tf_report,
 };
+pub use structure::{branch_equation, branch_reason};
 pub use tf_field::{TfRealization, tf_report_quadratic};
 pub use toolbox::{
     damp_report, gram_report, margins_report, no_stepinfo_reason, stepinfo_channel, stepinfo_table,

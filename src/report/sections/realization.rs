@@ -6,10 +6,9 @@
 use super::jordan::{Cells, eigenvalue_text, field_line, named, neg_display, part_text, root_line};
 use crate::algebraic::ExtElem;
 use crate::field::Field;
-use crate::jordan::EigenField;
 use crate::matrix::Matrix;
 use crate::realization::{
-    JordanMinimal, MinimalRealization, ModalBlock, ModalTable, PrimaryJordanMinimal,
+    JordanMethod, JordanMinimal, MinimalRealization, ModalBlock, ModalTable, PrimaryJordanMinimal,
     RealModalBlock, StandardForm,
 };
 use crate::report::{Report, Value, str_list};
@@ -61,7 +60,7 @@ fn put_compact<F: Field>(blk: &ModalBlock<F>, sym: &str, off: usize, [a, b, c]: 
     }
 }
 
-impl<F: EigenField> JordanMinimal<F> {
+impl<F: Field> JordanMinimal<F> {
     /// The display of mode `blk` (a pair: `... (and its conjugate)`).
     fn mode_text(&self, ev: usize, pair: bool) -> String {
         let v = eigenvalue_text(&self.jordan.eigenvalues[ev]);
@@ -187,8 +186,18 @@ impl<F: EigenField> JordanMinimal<F> {
 }
 
 impl<K: Field> MinimalRealization<K> {
-    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`).
+    /// The CLI report (`order`, `mcmillan_degree`, `A`..`D`, `verified`); by the
+    /// Jordan-form method, the method's own report (its modal or primary blocks).
     pub fn report(&self) -> Report {
+        match &self.jordan {
+            Some(JordanMethod::Modal(m)) => {
+                return m.report().set("verified", Value::Bool(self.verified));
+            }
+            Some(JordanMethod::Primary(p)) => {
+                return p.report().set("verified", Value::Bool(self.verified));
+            }
+            None => {}
+        }
         let mut r = Report::titled(format!("minimal realization ({})", self.method.name()))
             .str("method", self.method.name())
             .int("original_order", self.original_order)
@@ -331,7 +340,7 @@ impl<K: Field> std::fmt::Display for MinimalRealization<K> {
     }
 }
 
-impl<F: EigenField> std::fmt::Display for JordanMinimal<F> {
+impl<F: Field> std::fmt::Display for JordanMinimal<F> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.report().to_text())
     }

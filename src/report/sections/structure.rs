@@ -3,10 +3,12 @@
 //! Presentation only: these `report` methods read finished results of [`crate::structure`] and
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
-use crate::field::Field;
+use crate::field::{ElemDisplay, Field};
 use crate::poly::Poly;
+use crate::ratfunc::RatFuncField;
 use crate::report::{Report, Value};
-use crate::structure::mechanical::MechanicalNormalForm;
+use crate::structure::bifurcation::{Branch, BranchOutcome, Equation, NotExplored};
+use crate::structure::mechanical::{Check, Condition, MechanicalNormalForm};
 use crate::structure::scb::Scb;
 use crate::structure::zeros::InvariantZeros;
 use crate::system::discrete::stability::{Domain, schur_stable};
@@ -66,7 +68,93 @@ const MNF_KEYS: [&str; 7] = [
     "T",
 ];
 
+/// The statement of an existence condition with its values, e.g. `rank B = p = 2`.
+pub fn condition_statement<K: Field>(c: &Condition<K>) -> String {
+    let rel = |holds: bool, yes: &'static str, no: &'static str| if holds { yes } else { no };
+    match &c.check {
+        Check::StatesEven { n } => format!("n = {n} is {}", rel(c.holds, "even", "odd")),
+        Check::InputsAtMostHalf { p, half } => {
+            format!("p = {p} {} n/2 = {half}", rel(c.holds, "<=", ">"))
+        }
+        Check::RankB { p, .. } if c.holds => format!("rank B = p = {p}"),
+        Check::RankB { rank, p } => format!("rank B = {rank} < p = {p}"),
+        Check::RankK { p, .. } if c.holds => format!("rank(U_B2^T A U_B1) = p = {p}"),
+        Check::RankK { rank, p } => format!("rank(U_B2^T A U_B1) = {rank} < p = {p}"),
+        Check::PaperRankG { rank, bound } => {
+            format!(
+                "rank G = {rank} {} n/2 - p = {bound}",
+                rel(c.holds, ">=", "<")
+            )
+        }
+        Check::UncontrollableMultiplicity {
+            geo,
+            bound,
+            witness,
+        } => {
+            let wit = witness
+                .as_ref()
+                .map_or(String::new(), |f| format!(" (eigenvalues: roots of {f})"));
+            format!(
+                "max geometric multiplicity of the uncontrollable part = {geo} {} n/2 - p = \
+                 {bound}{wit}",
+                rel(c.holds, "<=", ">")
+            )
+        }
+        Check::InputCompression { rank, p } => {
+            format!("rank B = {rank} < p = {p}: B = B1 R with B1 its pivot columns")
+        }
+    }
+}
+
+/// What a failure of the condition means for the system (for the diagnostics: why it does
+/// not decide).
+pub fn condition_meaning<K: Field>(c: &Check<K>) -> String {
+    match c {
+        Check::StatesEven { .. } => {
+            "a second-order model with n/2 coordinates q and their velocities q' needs an even \
+             number of states"
+        }
+        Check::InputsAtMostHalf { .. } => {
+            "each input must act as a force on its own coordinate, so there cannot be more \
+             inputs than coordinates"
+        }
+        Check::RankB { .. } => {
+            "the input matrix must have full column rank (combine or remove redundant inputs)"
+        }
+        Check::RankK { .. } => {
+            "A B must be independent of B (rank [B, AB] = 2p): in a mechanical system an input \
+             force changes accelerations, which become positions only through the velocities; \
+             here some input combination acts directly on the position-like states"
+        }
+        Check::PaperRankG { .. } => {
+            "Theorem 2.1's last condition; it depends on the orthonormal bases (it is not \
+             similarity invariant), so it is reported but does not decide"
+        }
+        Check::UncontrollableMultiplicity { .. } => {
+            "in q'' + D q' + K q = [0; I_p] u only the n/2 - p unforced coordinates can carry \
+             independent uncontrollable modes of one eigenvalue, so an uncontrollable eigenvalue \
+             with more independent eigenvectors cannot be represented"
+        }
+        Check::InputCompression { .. } => {
+            "dependent inputs act through fewer independent forces; the conditions below are \
+             those of (A, B1) and the input matrix of the second-order model is W = [0; R] \
+             instead of [0; I_p]"
+        }
+    }
+    .to_string()
+}
+
 impl<K: Field> MechanicalNormalForm<K> {
+    /// Which condition fails and what it means (`statement: meaning`), when `exists` is
+    /// false.
+    pub fn reason_text(&self) -> Option<String> {
+        let c = &self.conditions[self.reason?];
+        Some(format!(
+            "{}: {}",
+            condition_statement(c),
+            condition_meaning(&c.check)
+        ))
+    }
     /// The report with the CLI contract keys of `mnf`: `exists`, `reason`, `mass`, `damping`,
     /// `stiffness`, `input`, `output`, `feedthrough`, `T`, `verified` (`"not applicable"` when
     /// no form exists, e.g. an odd number of states), then `conditions` and the search
@@ -74,10 +162,7 @@ impl<K: Field> MechanicalNormalForm<K> {
     pub fn report(&self) -> Report {
         let mut r = Report::titled("mechanical normal form")
             .bool("exists", self.exists)
-            .with(
-                "reason",
-                self.reason.clone().map_or(Value::Null, Value::Str),
-            );
+            .with("reason", self.reason_text().map_or(Value::Null, Value::Str));
         match &self.form {
             Some(m) => {
                 let ms = [
@@ -112,11 +197,11 @@ impl<K: Field> MechanicalNormalForm<K> {
             .map(|c| {
                 Value::Obj(
                     Report::new()
-                        .str("name", c.name)
-                        .str("statement", c.statement.clone())
+                        .str("name", c.name())
+                        .str("statement", condition_statement(c))
                         .bool("holds", c.holds)
                         .bool("decisive", c.decisive)
-                        .str("meaning", c.meaning.clone()),
+                        .str("meaning", condition_meaning(&c.check)),
                 )
             })
             .collect();
@@ -216,4 +301,33 @@ pub(crate) fn zero_items_in<K: Field>(p: &Poly<K>, var: &str) -> Vec<Value> {
             Value::Obj(r)
         })
         .collect()
+}
+
+/// The equation of a bifurcation branch: `c = 0` for a condition not solved, else the
+/// substitution made (`cr = m*u^2/(a + b)`).
+pub fn branch_equation<S>(k: &RatFuncField, b: &Branch<S>) -> String {
+    match &b.equation {
+        Equation::Zero => format!("{} = 0", k.fmt_poly(&b.condition)),
+        Equation::Substitution { var, value } => {
+            format!("{} = {}", k.vars()[*var], k.fmt_elem(value))
+        }
+    }
+}
+
+/// Why a bifurcation branch has no result: an entry's pole at the substitution, or why it
+/// was not explored; `None` for an explored branch.
+pub fn branch_reason<S>(k: &RatFuncField, b: &Branch<S>) -> Option<String> {
+    match &b.outcome {
+        BranchOutcome::Explored(_) => None,
+        BranchOutcome::Undefined => Some(format!(
+            "an entry of the system has a pole at {}",
+            branch_equation(k, b)
+        )),
+        BranchOutcome::NotExplored(NotExplored::NotLinear) => {
+            Some("not linear in any parameter: not explored".into())
+        }
+        BranchOutcome::NotExplored(NotExplored::Failed(e)) => {
+            Some(format!("the computation failed there: {e}"))
+        }
+    }
 }

@@ -41,7 +41,7 @@ pub(crate) fn decide_existence_descriptor<K: Field>(
     f: &Matrix<K>,
     a: &Matrix<K>,
     b: &Matrix<K>,
-) -> Result<(Existence, ExistenceParts<K>)> {
+) -> Result<(Existence<K>, ExistenceParts<K>)> {
     let n = a.nrows();
     if f.shape() != (n, n) {
         return Err(Error::Shape {

@@ -48,39 +48,73 @@ use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 
+/// What one condition compares, with the values computed ($h = n/2$).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Check<K: Field> {
+    /// $n$ even.
+    StatesEven { n: usize },
+    /// $p \le h$.
+    InputsAtMostHalf { p: usize, half: usize },
+    /// $\operatorname{rank} B = p$.
+    RankB { rank: usize, p: usize },
+    /// $\operatorname{rank}(U_{B,2}^T A U_{B,1}) = p$.
+    RankK { rank: usize, p: usize },
+    /// Theorem 2.1's $\operatorname{rank} G \ge h - p$ (a diagnostic).
+    PaperRankG { rank: usize, bound: usize },
+    /// The largest geometric multiplicity of an uncontrollable eigenvalue $\le h - p$, with a
+    /// square-free polynomial whose roots attain it.
+    UncontrollableMultiplicity {
+        geo: usize,
+        bound: usize,
+        witness: Option<Poly<K>>,
+    },
+    /// $\operatorname{rank} B < p$: the conditions are those of $(A, B_1)$, $B = B_1 R$.
+    InputCompression { rank: usize, p: usize },
+}
+
 /// One checked condition.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Condition {
-    /// Short key: `n_even`, `p_le_half`, `rank_b`, `rank_k`, `paper_rank_g`,
-    /// `uncontrollable_multiplicity`.
-    pub name: &'static str,
-    /// The statement with the computed values, e.g. `rank B = 2 = p`.
-    pub statement: String,
+#[derive(Clone, Debug, PartialEq)]
+pub struct Condition<K: Field> {
+    /// What was compared, with the values.
+    pub check: Check<K>,
     pub holds: bool,
-    /// Whether the verdict depends on it (`paper_rank_g` is a diagnostic only).
+    /// Whether the verdict depends on it (Theorem 2.1's `G` and the input compression do not
+    /// decide).
     pub decisive: bool,
-    /// What a failure means for the system.
-    pub meaning: String,
+}
+
+impl<K: Field> Condition<K> {
+    /// Short key: `n_even`, `p_le_half`, `rank_b`, `rank_k`, `paper_rank_g`,
+    /// `uncontrollable_multiplicity`, `input_compression`.
+    pub fn name(&self) -> &'static str {
+        match self.check {
+            Check::StatesEven { .. } => "n_even",
+            Check::InputsAtMostHalf { .. } => "p_le_half",
+            Check::RankB { .. } => "rank_b",
+            Check::RankK { .. } => "rank_k",
+            Check::PaperRankG { .. } => "paper_rank_g",
+            Check::UncontrollableMultiplicity { .. } => "uncontrollable_multiplicity",
+            Check::InputCompression { .. } => "input_compression",
+        }
+    }
 }
 
 /// The verdict on existence.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Existence {
+#[derive(Clone, Debug, PartialEq)]
+pub struct Existence<K: Field> {
     pub n: usize,
     pub p: usize,
-    pub conditions: Vec<Condition>,
+    pub conditions: Vec<Condition<K>>,
     pub exists: bool,
-    /// The first failing decisive condition (and its meaning) when `exists` is false.
-    pub reason: Option<String>,
+    /// Index in `conditions` of the first failing decisive condition when `exists` is false.
+    pub reason: Option<usize>,
 }
 
-fn cond(name: &'static str, statement: String, holds: bool, meaning: &str) -> Condition {
+fn cond<K: Field>(check: Check<K>, holds: bool) -> Condition<K> {
     Condition {
-        name,
-        statement,
+        check,
         holds,
         decisive: true,
-        meaning: meaning.to_string(),
     }
 }
 
@@ -104,7 +138,7 @@ pub struct ExistenceParts<K: Field> {
 
 /// Decides whether $(A, B)$ has a mechanical normal form. Shapes must already agree
 /// (`a` is `n x n`, `b` is `n x p`); the caller checks them.
-pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
+pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence<K> {
     decide_existence_parts(a, b).0
 }
 
@@ -112,7 +146,7 @@ pub fn decide_existence<K: Field>(a: &Matrix<K>, b: &Matrix<K>) -> Existence {
 pub fn decide_existence_parts<K: Field>(
     a: &Matrix<K>,
     b: &Matrix<K>,
-) -> (Existence, ExistenceParts<K>) {
+) -> (Existence<K>, ExistenceParts<K>) {
     let n = a.nrows();
     let p = b.ncols();
     let mut conds = vec![];
@@ -124,54 +158,29 @@ pub fn decide_existence_parts<K: Field>(
         g: None,
         geo: None,
     };
-    let done = |conds: Vec<Condition>, parts: ExistenceParts<K>| {
-        let failed = conds.iter().find(|c| c.decisive && !c.holds);
-        let reason = failed.map(|c| format!("{}: {}", c.statement, c.meaning));
+    let done = |conds: Vec<Condition<K>>, parts: ExistenceParts<K>| {
+        let reason = conds.iter().position(|c| c.decisive && !c.holds);
         let e = Existence {
             n,
             p,
-            exists: failed.is_none(),
+            exists: reason.is_none(),
             reason,
             conditions: conds,
         };
         (e, parts)
     };
-    conds.push(cond(
-        "n_even",
-        format!(
-            "n = {n} is {}",
-            if n.is_multiple_of(2) { "even" } else { "odd" }
-        ),
-        n.is_multiple_of(2),
-        "a second-order model with n/2 coordinates q and their velocities q' needs an even \
-         number of states",
-    ));
+    conds.push(cond(Check::StatesEven { n }, n.is_multiple_of(2)));
     if !n.is_multiple_of(2) {
         return done(conds, parts);
     }
     let h = n / 2;
-    conds.push(cond(
-        "p_le_half",
-        format!("p = {p} {} n/2 = {h}", if p <= h { "<=" } else { ">" }),
-        p <= h,
-        "each input must act as a force on its own coordinate, so there cannot be more \
-         inputs than coordinates",
-    ));
+    conds.push(cond(Check::InputsAtMostHalf { p, half: h }, p <= h));
     if p > h {
         return done(conds, parts);
     }
     let rb = b.rank();
     parts.rank_b = Some(rb);
-    conds.push(cond(
-        "rank_b",
-        if rb == p {
-            format!("rank B = p = {p}")
-        } else {
-            format!("rank B = {rb} < p = {p}")
-        },
-        rb == p,
-        "the input matrix must have full column rank (combine or remove redundant inputs)",
-    ));
+    conds.push(cond(Check::RankB { rank: rb, p }, rb == p));
     if rb != p {
         return done(conds, parts);
     }
@@ -179,18 +188,7 @@ pub fn decide_existence_parts<K: Field>(
     let ub2t = b.left_nullspace();
     let kmat = &(&ub2t * a) * b;
     let rk = kmat.rank();
-    conds.push(cond(
-        "rank_k",
-        if rk == p {
-            format!("rank(U_B2^T A U_B1) = p = {p}")
-        } else {
-            format!("rank(U_B2^T A U_B1) = {rk} < p = {p}")
-        },
-        rk == p,
-        "A B must be independent of B (rank [B, AB] = 2p): in a mechanical system an input \
-         force changes accelerations, which become positions only through the velocities; \
-         here some input combination acts directly on the position-like states",
-    ));
+    conds.push(cond(Check::RankK { rank: rk, p }, rk == p));
     if rk != p {
         parts.ub2t = Some(ub2t);
         parts.k = Some(kmat);
@@ -211,17 +209,12 @@ pub fn decide_existence_parts<K: Field>(
     };
     let holds_g = rg >= h - p;
     conds.push(Condition {
-        name: "paper_rank_g",
-        statement: format!(
-            "rank G = {rg} {} n/2 - p = {}",
-            if holds_g { ">=" } else { "<" },
-            h - p
-        ),
+        check: Check::PaperRankG {
+            rank: rg,
+            bound: h - p,
+        },
         holds: holds_g,
         decisive: false,
-        meaning: "Theorem 2.1's last condition; it depends on the orthonormal bases (it is not \
-                  similarity invariant), so it is reported but does not decide"
-            .to_string(),
     });
     parts.ub2t = Some(ub2t);
     parts.k = Some(kmat);
@@ -229,18 +222,13 @@ pub fn decide_existence_parts<K: Field>(
     let (geo, witness) = uncontrollable_multiplicity(a, b);
     parts.geo = Some(geo);
     let holds_u = geo <= h - p;
-    let wit = witness.map_or(String::new(), |f| format!(" (eigenvalues: roots of {f})"));
     conds.push(cond(
-        "uncontrollable_multiplicity",
-        format!(
-            "max geometric multiplicity of the uncontrollable part = {geo} {} n/2 - p = {}{wit}",
-            if holds_u { "<=" } else { ">" },
-            h - p
-        ),
+        Check::UncontrollableMultiplicity {
+            geo,
+            bound: h - p,
+            witness,
+        },
         holds_u,
-        "in q'' + D q' + K q = [0; I_p] u only the n/2 - p unforced coordinates can carry \
-         independent uncontrollable modes of one eigenvalue, so an uncontrollable eigenvalue \
-         with more independent eigenvectors cannot be represented",
     ));
     done(conds, parts)
 }
@@ -404,7 +392,7 @@ mod tests {
         assert!(
             e.conditions
                 .iter()
-                .all(|c| c.holds || c.name == "uncontrollable_multiplicity")
+                .all(|c| c.holds || c.name() == "uncontrollable_multiplicity")
         );
     }
 }

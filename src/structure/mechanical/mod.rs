@@ -25,7 +25,7 @@
 //!
 //! | entry point | input | result |
 //! |---|---|---|
-//! | [`mechanical_normal_form`] | $(A, B, C, D)$ over $\mathbb{Q}$ | [`MnfResult`] |
+//! | [`mechanical_normal_form`] | $(A, B, C, D)$ over any exact field | [`MechanicalNormalForm`] ([`MnfResult`] over $\mathbb{Q}$) |
 //! | [`mechanical_normal_form_descriptor`] | $(F, A, B, C, D)$, $F$ invertible | [`MnfResult`] |
 //! | [`mechanical_normal_form_in`] | the same over any exact field `K` | [`MechanicalNormalForm<K>`] |
 //! | [`existence::decide_existence`] | $(A, B)$ | the conditions and the verdict |
@@ -41,7 +41,7 @@ pub mod transform;
 pub mod unify;
 
 pub use descriptor::mechanical_normal_form_descriptor;
-pub use existence::{Condition, Existence, decide_existence};
+pub use existence::{Check, Condition, Existence, decide_existence};
 
 use crate::jordan::derivation::Recorder;
 
@@ -98,10 +98,10 @@ struct Original<K: Field> {
 #[derive(Clone, Debug, PartialEq)]
 pub struct MechanicalNormalForm<K: Field> {
     pub exists: bool,
-    /// Which condition fails and what it means, when `exists` is false.
-    pub reason: Option<String>,
+    /// Index in `conditions` of the decisive condition that fails, when `exists` is false.
+    pub reason: Option<usize>,
     /// Every condition that was checked (Theorem 2.1's and the decisive replacement).
-    pub conditions: Vec<Condition>,
+    pub conditions: Vec<Condition<K>>,
     /// The second-order model, when `exists`.
     pub form: Option<MechanicalForm<K>>,
     /// [`MechanicalNormalForm::verify`] evaluated at construction.
@@ -112,7 +112,7 @@ pub struct MechanicalNormalForm<K: Field> {
 /// The rational mechanical normal form.
 pub type MnfResult = MechanicalNormalForm<Q>;
 
-/// Mechanical normal form of $\dot x = A x + B u$, $y = C x + D u$ over $\mathbb{Q}$.
+/// Mechanical normal form of $\dot x = A x + B u$, $y = C x + D u$ over any exact field.
 ///
 /// A system that has no normal form gives `Ok` with `exists = false` and the reason.
 ///
@@ -133,12 +133,12 @@ pub type MnfResult = MechanicalNormalForm<Q>;
 /// assert_eq!(f.stiffness.to_string(), "[[4]]");
 /// assert_eq!(f.damping.to_string(), "[[1]]");
 /// ```
-pub fn mechanical_normal_form(
-    a: &Matrix<Q>,
-    b: &Matrix<Q>,
-    c: &Matrix<Q>,
-    d: &Matrix<Q>,
-) -> Result<MnfResult> {
+pub fn mechanical_normal_form<K: Field>(
+    a: &Matrix<K>,
+    b: &Matrix<K>,
+    c: &Matrix<K>,
+    d: &Matrix<K>,
+) -> Result<MechanicalNormalForm<K>> {
     mechanical_normal_form_in(None, a, b, c, d, DEFAULT_MAX_CANDIDATES)
 }
 
@@ -220,22 +220,17 @@ pub fn mechanical_normal_form_recorded<K: Field>(
     if let Some(r) = rec.as_deref_mut() {
         steps::existence(r, &existence, parts, f.is_some());
     }
+    let n_decided = existence.conditions.len();
     if b1.ncols() < b.ncols() {
         existence.conditions.insert(
             0,
             Condition {
-                name: "input_compression",
-                statement: format!(
-                    "rank B = {} < p = {}: B = B1 R with B1 its pivot columns",
-                    b1.ncols(),
-                    b.ncols()
-                ),
+                check: Check::InputCompression {
+                    rank: b1.ncols(),
+                    p: b.ncols(),
+                },
                 holds: true,
                 decisive: false,
-                meaning: "dependent inputs act through fewer independent forces; the \
-                          conditions below are those of (A, B1) and the input matrix of the \
-                          second-order model is W = [0; R] instead of [0; I_p]"
-                    .to_string(),
             },
         );
     }
@@ -246,9 +241,10 @@ pub fn mechanical_normal_form_recorded<K: Field>(
         c: c.clone(),
         d: d.clone(),
     };
+    let shift = existence.conditions.len() - n_decided;
     let mut out = MechanicalNormalForm {
         exists: existence.exists,
-        reason: existence.reason,
+        reason: existence.reason.map(|i| i + shift),
         conditions: existence.conditions,
         form: None,
         verified: false,

@@ -47,7 +47,7 @@ pub(crate) fn compression<K: Field>(
 
 pub(crate) fn existence<K: Field>(
     rec: &mut Recorder<'_, K>,
-    e: &Existence,
+    e: &Existence<K>,
     parts: ExistenceParts<K>,
     descriptor: bool,
 ) {

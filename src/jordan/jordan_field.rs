@@ -1,0 +1,70 @@
+//! The fields of system matrices as base fields of the Jordan decomposition
+//! ([`JordanField`]): $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$ (certified
+//! eigenvalues, [`super::jordan_over`]) and $\mathbb{Q}(p_1, \dots, p_k)$ (the generic
+//! structure with its conditions, [`super::jordan_qp`]).
+//!
+//! Operations that need the eigenstructure of a matrix (the PBH test, the finite part of a
+//! pencil, the Jordan-form realization) are written once over a [`JordanField`]; the field
+//! supplies the decomposition, no caller asks which field it has.
+
+use super::over_qp::charpoly_factors as charpoly_factors_qp;
+use super::{EigenField, JordanForm, jordan_over, jordan_qp};
+use crate::error::Result;
+use crate::field::{Field, Q, QuadraticField};
+use crate::matrix::Matrix;
+use crate::poly::Poly;
+use crate::ratfunc::RatFuncField;
+
+/// A base field of the exact Jordan decomposition of a system's matrices.
+pub trait JordanField: Field + 'static {
+    /// The exact Jordan form of the square matrix `a` (each component verified).
+    ///
+    /// # Errors
+    /// `NotSquare`; those of the factorization and of the chains.
+    fn jordan_form(a: &Matrix<Self>) -> Result<JordanForm<Self>>;
+    /// The monic irreducible factors of $\chi_A$ over the field with their multiplicities
+    /// (over $\mathbb{Q}(p)$ the conditions under which they stay irreducible, coprime and
+    /// of their degree are recorded in `a`'s field).
+    ///
+    /// # Errors
+    /// `NotSquare`; those of the factorization.
+    fn charpoly_factors(a: &Matrix<Self>) -> Result<Vec<(Poly<Self>, usize)>>;
+}
+
+/// The factors of $\chi_A$ over a field with certified eigenvalues.
+fn eigen_charpoly_factors<F: EigenField>(a: &Matrix<F>) -> Result<Vec<(Poly<F>, usize)>> {
+    let (_, factors) = super::eigenvalues_over(a)?;
+    Ok(factors.into_iter().map(|(g, e, _, _)| (g, e)).collect())
+}
+
+impl JordanField for Q {
+    fn jordan_form(a: &Matrix<Q>) -> Result<JordanForm<Q>> {
+        jordan_over(a)
+    }
+    fn charpoly_factors(a: &Matrix<Q>) -> Result<Vec<(Poly<Q>, usize)>> {
+        eigen_charpoly_factors(a)
+    }
+}
+
+impl JordanField for QuadraticField {
+    fn jordan_form(a: &Matrix<QuadraticField>) -> Result<JordanForm<QuadraticField>> {
+        jordan_over(a)
+    }
+    fn charpoly_factors(a: &Matrix<QuadraticField>) -> Result<Vec<(Poly<QuadraticField>, usize)>> {
+        eigen_charpoly_factors(a)
+    }
+}
+
+impl JordanField for RatFuncField {
+    fn jordan_form(a: &Matrix<RatFuncField>) -> Result<JordanForm<RatFuncField>> {
+        jordan_qp(a)
+    }
+    fn charpoly_factors(a: &Matrix<RatFuncField>) -> Result<Vec<(Poly<RatFuncField>, usize)>> {
+        let cp = charpoly_factors_qp(a)?;
+        Ok(cp
+            .factors
+            .into_iter()
+            .map(|f| (f.monic, f.multiplicity))
+            .collect())
+    }
+}
