@@ -414,7 +414,7 @@ pub(crate) fn assumes_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> Option
     let conds: Vec<String> = st
         .assumes
         .iter()
-        .map(|x| format!("{} \\ne 0", d.field.latex_elem(x)))
+        .map(|x| format!("{} \\ne 0", entry(&d.field, x)))
         .collect();
     Some(conds.join(",\\ "))
 }

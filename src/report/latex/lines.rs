@@ -288,6 +288,53 @@ fn aligned_rows(name: &str, lines: &[String]) -> String {
 /// Lines a numerator may take over a fraction bar before it is named instead.
 const STACKED_LINES: usize = 3;
 
+/// The fractions of `body` outside braces wider than `max` points replaced by
+/// `\kappa_{j}` (`j` from `first`): the new body and the `(symbol, fraction)` pairs.
+fn name_wide_fractions(body: &str, max: f64, first: usize) -> (String, Vec<(String, String)>) {
+    let b = body.as_bytes();
+    let (mut out, mut named) = (String::new(), vec![]);
+    let (mut i, mut last, mut depth) = (0usize, 0usize, 0i32);
+    while i < b.len() {
+        match b[i] {
+            b'\\' => {
+                let rest = &body[i..];
+                let len = if rest.starts_with("\\frac{") {
+                    5
+                } else if rest.starts_with("\\dfrac{") {
+                    6
+                } else {
+                    i += 2;
+                    continue;
+                };
+                if depth == 0
+                    && let Some(e1) = group_end(b, i + len)
+                    && b.get(e1 + 1) == Some(&b'{')
+                    && let Some(e2) = group_end(b, e1 + 1)
+                {
+                    let frac = &body[i..=e2];
+                    if width_pt(frac) > max {
+                        let sym = format!("\\kappa_{{{}}}", first + named.len());
+                        out.push_str(&body[last..i]);
+                        out.push_str(&sym);
+                        named.push((sym, frac.to_string()));
+                        last = e2 + 1;
+                    }
+                    i = e2 + 1;
+                    continue;
+                }
+                i += len;
+                continue;
+            }
+            b'{' => depth += 1,
+            b'}' => depth -= 1,
+            _ => {}
+        }
+        i += 1;
+    }
+    out.push_str(&body[last..]);
+    (out, named)
+}
+
 /// `name = body` in display math, fitted to the A4 text width (module docs).
 ///
 /// ```
@@ -298,42 +345,29 @@ const STACKED_LINES: usize = 3;
 /// assert!(s.contains("align*") && s.contains("\\nu &="));
 /// ```
 pub fn display(s: &mut String, name: &str, body: &str) {
+    display_sub(s, name, body, "");
+}
+
+/// [`display`] with `sub` the subscript of the names it introduces ($\nu$, $\delta$).
+fn display_sub(s: &mut String, name: &str, body: &str, sub: &str) {
     let room = TEXT_PT - width_pt(name) - 20.0;
     if width_pt(body) <= room {
         let _ = writeln!(s, "\\[ {name} = {body} \\]");
         return;
     }
     if let Some((sign, num, den)) = as_fraction(body) {
-        let (wn, wd) = (width_pt(num), width_pt(den));
-        let nl = break_sum(num, room - 20.0);
-        if wd <= room - 10.0 && nl.len() <= STACKED_LINES {
-            // stacked over the bar: the lines of the numerator left-aligned, continued
-            let rows = nl.join(r" \\ \quad ");
-            let _ = writeln!(
-                s,
-                "\\[ {name} = {sign}\\frac{{\\begin{{array}}{{@{{}}l@{{}}}}{rows}\\end{{array}}}}{{{den}}} \\]"
-            );
+        return fraction(s, name, (sign, num, den), sub);
+    }
+    // a fraction too wide to sit in a line of the sum: named, set below
+    if pieces(body).iter().any(|p| width_pt(p) > room) {
+        let (short, named) = name_wide_fractions(body, room / 2.0, 1);
+        if !named.is_empty() {
+            display_sub(s, name, &short, sub);
+            for (i, (sym, frac)) in named.iter().enumerate() {
+                display_sub(s, sym, frac, &format!("{}", i + 1));
+            }
             return;
         }
-        // named: name = -nu/delta, nu = ..., delta = ...
-        let short_den = wd <= room / 2.0;
-        let short_num = wn <= room / 2.0;
-        let (n_sym, d_sym) = (
-            if short_num { num } else { r"\nu" },
-            if short_den { den } else { r"\delta" },
-        );
-        let _ = writeln!(
-            s,
-            "\\begin{{align*}}\n{name} &= {sign}\\frac{{{n_sym}}}{{{d_sym}}},\\quad\\text{{where}}"
-        );
-        if !short_num {
-            let _ = write!(s, "\\\\\n{}", aligned_rows(r"\nu", &break_sum(num, TEXT_PT - 40.0)));
-        }
-        if !short_den {
-            let _ = write!(s, "\\\\\n{}", aligned_rows(r"\delta", &break_sum(den, TEXT_PT - 40.0)));
-        }
-        s.push_str("\n\\end{align*}\n");
-        return;
     }
     let lines = break_sum(body, room);
     if lines.len() == 1 {
@@ -342,6 +376,43 @@ pub fn display(s: &mut String, name: &str, body: &str) {
     }
     let _ = writeln!(s, "\\begin{{align*}}\n{}", aligned_rows(name, &lines));
     s.push_str("\\end{align*}\n");
+}
+
+/// `name = sign N / D` too wide for one line: the numerator stacked over the bar when that
+/// stays short, else `name = sign nu / delta` with $\nu$, $\delta$ on lines of their own.
+fn fraction(s: &mut String, name: &str, (sign, num, den): (&str, &str, &str), sub: &str) {
+    let room = TEXT_PT - width_pt(name) - 20.0;
+    let (wn, wd) = (width_pt(num), width_pt(den));
+    let nl = break_sum(num, room - 20.0);
+    if wd <= room - 10.0 && nl.len() <= STACKED_LINES {
+        let rows = nl.join(r" \\ \quad ");
+        let _ = writeln!(
+            s,
+            "\\[ {name} = {sign}\\frac{{\\begin{{array}}{{@{{}}l@{{}}}}{rows}\\end{{array}}}}{{{den}}} \\]"
+        );
+        return;
+    }
+    let sub = if sub.is_empty() {
+        String::new()
+    } else {
+        format!("_{{{sub}}}")
+    };
+    let (nu, delta) = (format!("\\nu{sub}"), format!("\\delta{sub}"));
+    let short_den = wd <= room / 2.0;
+    let short_num = wn <= room / 2.0;
+    let n_sym = if short_num { num } else { nu.as_str() };
+    let d_sym = if short_den { den } else { delta.as_str() };
+    let _ = writeln!(
+        s,
+        "\\begin{{align*}}\n{name} &= {sign}\\frac{{{n_sym}}}{{{d_sym}}},\\quad\\text{{where}}"
+    );
+    if !short_num {
+        let _ = write!(s, "\\\\\n{}", aligned_rows(&nu, &break_sum(num, TEXT_PT - 40.0)));
+    }
+    if !short_den {
+        let _ = write!(s, "\\\\\n{}", aligned_rows(&delta, &break_sum(den, TEXT_PT - 40.0)));
+    }
+    s.push_str("\n\\end{align*}\n");
 }
 
 #[cfg(test)]
@@ -372,5 +443,21 @@ mod tests {
         // nothing lost: the pieces joined again are the sum
         let again: String = lines.join(" ");
         assert_eq!(again.matches('+').count(), 198);
+    }
+
+    #[test]
+    fn wide_fractions_inside_a_sum_are_named() {
+        let long: Vec<String> = (1..60).map(|i| format!("{i} a^{{{i}}}")).collect();
+        let f = format!("\\frac{{{}}}{{b}}", long.join(" + "));
+        let body = format!("\\left({f}\\right) t + \\left({f}\\right)");
+        let (short, named) = name_wide_fractions(&body, 200.0, 1);
+        assert_eq!(short, r"\left(\kappa_{1}\right) t + \left(\kappa_{2}\right)");
+        assert_eq!(named.len(), 2);
+        let mut s = String::new();
+        display(&mut s, "x", &body);
+        assert!(s.contains(r"\nu_{2} &="), "{s}");
+        for line in s.lines() {
+            assert!(width_pt(line) <= TEXT_PT + 40.0, "{line}");
+        }
     }
 }
