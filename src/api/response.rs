@@ -12,14 +12,14 @@
 
 use super::common::with_path;
 use super::{Failure, Outcome};
+use crate::field::QuadraticField;
 use crate::field::{Field, Q, parse_rational};
 use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::jordan::jordan;
 use crate::jordan::jordan_qp;
+use crate::jordan::{EigenField, jordan_over};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
-use crate::field::QuadraticField;
-use crate::jordan::{EigenField, jordan_over};
 use crate::realization::contribution::{contributions, contributions_in, contributions_qp};
 use crate::report::sections::response as rep;
 use clap::Subcommand;
@@ -251,7 +251,11 @@ pub(super) fn run_symbolic(
                     "truncation",
                     crate::report::Report::new()
                         .int("order", tr.system.a.nrows())
-                        .matrices(&[("A", &tr.system.a), ("B", &tr.system.b), ("C", &tr.system.c)])
+                        .matrices(&[
+                            ("A", &tr.system.a),
+                            ("B", &tr.system.b),
+                            ("C", &tr.system.c),
+                        ])
                         .bool("verified", tr.verified),
                 );
                 return Ok(Outcome::new(r, ok));

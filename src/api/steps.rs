@@ -329,9 +329,12 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             out.show(&d.map_err(e)?)
         }
         (TypedAny::Quadratic(t), What::Response) if !descriptor => {
-            let x0 = exact_x0(cmd, t.ss.nstates())?.map(t.ss.field(), |q| t.ss.field().from_rational(q));
+            let x0 =
+                exact_x0(cmd, t.ss.nstates())?.map(t.ss.field(), |q| t.ss.field().from_rational(q));
             let jf = crate::jordan::jordan_over(&t.ss.a).map_err(e)?;
-            out.show(&crate::realization::contribution_steps::response_steps_in(&jf, &x0))
+            out.show(&crate::realization::contribution_steps::response_steps_in(
+                &jf, &x0,
+            ))
         }
         (TypedAny::RatFunc(t), What::Contributions(keep)) if !descriptor => {
             let d = crate::realization::contribution_steps::contributions_steps_qp(&t.ss, keep);

@@ -231,7 +231,8 @@ pub fn contributions_qp(
 /// `ss` with its matrices carried by the field value `k` (over $\mathbb{Q}(p)$: another
 /// condition log).
 pub(crate) fn in_field<F: Field>(ss: &StateSpace<F>, k: &F) -> Result<StateSpace<F>> {
-    let re = |m: &Matrix<F>| Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec());
+    let re =
+        |m: &Matrix<F>| Matrix::from_vec(k.clone(), m.nrows(), m.ncols(), m.as_slice().to_vec());
     StateSpace::new(re(&ss.a), re(&ss.b), re(&ss.c), re(&ss.d))
 }
 

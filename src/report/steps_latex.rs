@@ -219,7 +219,11 @@ fn entries_latex(s: &mut String, name: &str, cells: &[Vec<String>]) {
         r"\[ {name}\ ({} \times {}),\ \text{{entries one by one (wider than the page){}}} \]",
         cells.len(),
         cells.first().map_or(0, |r| r.len()),
-        if zeros > 0 { "; those not listed are 0" } else { "" }
+        if zeros > 0 {
+            "; those not listed are 0"
+        } else {
+            ""
+        }
     );
     for (i, row) in cells.iter().enumerate() {
         for (j, c) in row.iter().enumerate() {
@@ -295,11 +299,7 @@ pub(crate) fn object_latex<K: Field>(
                 let _ = writeln!(s, "\\[ {name}:\\ {} \\]", parts.join(",\\; "));
             } else {
                 for (i, p) in parts.iter().enumerate() {
-                    display_wrapped(
-                        s,
-                        &format!("\\text{{({})}}\\ {name}", i + 1),
-                        p,
-                    );
+                    display_wrapped(s, &format!("\\text{{({})}}\\ {name}", i + 1), p);
                 }
             }
         }

@@ -75,7 +75,8 @@ fn width_scaled(b: &[u8], scale: f64) -> f64 {
                 i = j + 1;
                 continue;
             }
-            if (word == b"frac" || word == b"dfrac" || word == b"tfrac") && b.get(j) == Some(&b'{') {
+            if (word == b"frac" || word == b"dfrac" || word == b"tfrac") && b.get(j) == Some(&b'{')
+            {
                 if let Some(e1) = group_end(b, j)
                     && b.get(e1 + 1) == Some(&b'{')
                     && let Some(e2) = group_end(b, e1 + 1)
@@ -89,8 +90,8 @@ fn width_scaled(b: &[u8], scale: f64) -> f64 {
             }
             w += match word {
                 b"left" | b"right" | b"mathit" | b"mathrm" | b"operatorname" | b"text"
-                | b"mathbf" | b"displaystyle" | b"begin" | b"end" | b"Bigl" | b"Bigr"
-                | b"bigl" | b"bigr" => 2.0,
+                | b"mathbf" | b"displaystyle" | b"begin" | b"end" | b"Bigl" | b"Bigr" | b"bigl"
+                | b"bigr" => 2.0,
                 b"quad" => 11.0,
                 b"qquad" => 22.0,
                 b"cdot" | b"ne" | b"le" | b"ge" | b"mapsto" | b"to" => 13.0,
@@ -148,8 +149,7 @@ fn pieces(body: &str) -> Vec<String> {
         } else if b[i] == b'}' {
             depth -= 1;
         }
-        if depth == 0 && (rest.starts_with(" + ") || rest.starts_with(" - ")) && !cur.is_empty()
-        {
+        if depth == 0 && (rest.starts_with(" + ") || rest.starts_with(" - ")) && !cur.is_empty() {
             parts.push(std::mem::take(&mut cur));
         }
         let ch = rest.chars().next().unwrap_or(' ');
@@ -169,8 +169,7 @@ fn fix_delims(line: &str) -> String {
     while let Some(p) = line[i..].find('\\') {
         let at = i + p;
         let rest = &line[at..];
-        if rest.starts_with("\\left") && !rest[5..].starts_with(|c: char| c.is_ascii_alphabetic())
-        {
+        if rest.starts_with("\\left") && !rest[5..].starts_with(|c: char| c.is_ascii_alphabetic()) {
             toks.push((at, true));
         } else if rest.starts_with("\\right")
             && !rest[6..].starts_with(|c: char| c.is_ascii_alphabetic())
@@ -219,7 +218,11 @@ pub fn break_sum(body: &str, max: f64) -> Vec<String> {
         .iter()
         .map(|l| {
             let l = fix_delims(l.trim_start());
-            if width_pt(&l) > max { stack_digits(&l, max) } else { l }
+            if width_pt(&l) > max {
+                stack_digits(&l, max)
+            } else {
+                l
+            }
         })
         .collect()
 }
@@ -407,10 +410,18 @@ fn fraction(s: &mut String, name: &str, (sign, num, den): (&str, &str, &str), su
         "\\begin{{align*}}\n{name} &= {sign}\\frac{{{n_sym}}}{{{d_sym}}},\\quad\\text{{where}}"
     );
     if !short_num {
-        let _ = write!(s, "\\\\\n{}", aligned_rows(&nu, &break_sum(num, TEXT_PT - 40.0)));
+        let _ = write!(
+            s,
+            "\\\\\n{}",
+            aligned_rows(&nu, &break_sum(num, TEXT_PT - 40.0))
+        );
     }
     if !short_den {
-        let _ = write!(s, "\\\\\n{}", aligned_rows(&delta, &break_sum(den, TEXT_PT - 40.0)));
+        let _ = write!(
+            s,
+            "\\\\\n{}",
+            aligned_rows(&delta, &break_sum(den, TEXT_PT - 40.0))
+        );
     }
     s.push_str("\n\\end{align*}\n");
 }
@@ -423,7 +434,10 @@ mod tests {
     fn pairs_split_across_lines_become_big_delimiters() {
         assert_eq!(fix_delims(r"\left(a + b"), r"\Bigl(a + b");
         assert_eq!(fix_delims(r"c\right) s^{2}"), r"c\Bigr) s^{2}");
-        assert_eq!(fix_delims(r"\left(a\right) + \left(b"), r"\left(a\right) + \Bigl(b");
+        assert_eq!(
+            fix_delims(r"\left(a\right) + \left(b"),
+            r"\left(a\right) + \Bigl(b"
+        );
     }
 
     #[test]
@@ -436,7 +450,9 @@ mod tests {
 
     #[test]
     fn every_line_of_a_long_sum_fits() {
-        let body: Vec<String> = (1..200).map(|i| format!("{i} \\mathit{{cf}}^{{{i}}} m")).collect();
+        let body: Vec<String> = (1..200)
+            .map(|i| format!("{i} \\mathit{{cf}}^{{{i}}} m"))
+            .collect();
         let lines = break_sum(&body.join(" + "), TEXT_PT);
         assert!(lines.len() > 5);
         assert!(lines.iter().all(|l| width_pt(l) <= TEXT_PT));
@@ -451,7 +467,10 @@ mod tests {
         let f = format!("\\frac{{{}}}{{b}}", long.join(" + "));
         let body = format!("\\left({f}\\right) t + \\left({f}\\right)");
         let (short, named) = name_wide_fractions(&body, 200.0, 1);
-        assert_eq!(short, r"\left(\kappa_{1}\right) t + \left(\kappa_{2}\right)");
+        assert_eq!(
+            short,
+            r"\left(\kappa_{1}\right) t + \left(\kappa_{2}\right)"
+        );
         assert_eq!(named.len(), 2);
         let mut s = String::new();
         display(&mut s, "x", &body);

@@ -171,9 +171,10 @@ pub fn contributions_report<F: EigenField>(
             Value::Obj(r.list("residues", residues))
         })
         .collect();
-    let r = Report::titled("Mode contributions (minimal-realizations paper eq. 33), heaviest first")
-        .str("weight", WEIGHT_WORDS)
-        .list("modes", modes);
+    let r =
+        Report::titled("Mode contributions (minimal-realizations paper eq. 33), heaviest first")
+            .str("weight", WEIGHT_WORDS)
+            .list("modes", modes);
     with_truncation(r, c, trunc)
 }
 
