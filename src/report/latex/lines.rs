@@ -75,18 +75,17 @@ fn width_scaled(b: &[u8], scale: f64) -> f64 {
                 i = j + 1;
                 continue;
             }
-            if (word == b"frac" || word == b"dfrac" || word == b"tfrac") && b.get(j) == Some(&b'{')
+            if (word == b"frac" || word == b"dfrac" || word == b"tfrac")
+                && b.get(j) == Some(&b'{')
+                && let Some(e1) = group_end(b, j)
+                && b.get(e1 + 1) == Some(&b'{')
+                && let Some(e2) = group_end(b, e1 + 1)
             {
-                if let Some(e1) = group_end(b, j)
-                    && b.get(e1 + 1) == Some(&b'{')
-                    && let Some(e2) = group_end(b, e1 + 1)
-                {
-                    let n = width_scaled(&b[j + 1..e1], scale);
-                    let d = width_scaled(&b[e1 + 2..e2], scale);
-                    w += n.max(d) + 4.0 * scale;
-                    i = e2 + 1;
-                    continue;
-                }
+                let n = width_scaled(&b[j + 1..e1], scale);
+                let d = width_scaled(&b[e1 + 2..e2], scale);
+                w += n.max(d) + 4.0 * scale;
+                i = e2 + 1;
+                continue;
             }
             w += match word {
                 b"left" | b"right" | b"mathit" | b"mathrm" | b"operatorname" | b"text"
