@@ -276,8 +276,6 @@ fn cli_normalize() {
         "data/sliding-masses-symbolic.json",
         "--normalize",
         "unit",
-        "--format",
-        "json",
     ]);
     assert_eq!(sym["verified"], true);
     assert!(
