@@ -183,6 +183,8 @@ mod steps_descriptor;
 mod steps_discrete;
 #[path = "steps_forms.rs"]
 mod steps_forms;
+#[path = "steps_modes_fields.rs"]
+mod steps_modes_fields;
 #[path = "steps_normalize.rs"]
 mod steps_normalize;
 #[path = "steps_qp_forms.rs"]

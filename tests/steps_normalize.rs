@@ -260,17 +260,6 @@ fn cli_normalize() {
             vec!["jordan", p, "--steps", "--normalize", "bogus"],
             "bogus",
         ),
-        // plain --normalize answers over Q (tests/steps_qp_forms.rs); over Q(p) the
-        // normalised chains are in the derivation only
-        (
-            vec![
-                "jordan",
-                "data/sliding-masses-symbolic.json",
-                "--normalize",
-                "unit",
-            ],
-            "add --steps",
-        ),
         (
             vec!["jordan", p, "--real", "--steps", "--normalize", "unit"],
             "--real",
@@ -280,6 +269,22 @@ fn cli_normalize() {
         assert_eq!(code, 2, "{args:?}");
         assert!(err.contains(want), "{err}");
     }
+    // plain --normalize answers over Q(p) too (was refused: "add --steps"); A T = T J
+    // re-checked (tests/steps_modes_fields.rs asserts it on the matrices)
+    let sym = common::cli::run_json(&[
+        "jordan",
+        "data/sliding-masses-symbolic.json",
+        "--normalize",
+        "unit",
+    ]);
+    assert_eq!(sym["verified"], true);
+    // every factor of the sliding masses' chi is s^2 + c k/m (degree 2): primary blocks, kept
+    assert!(
+        sym["normalize_note"]
+            .as_str()
+            .unwrap()
+            .contains("primary block")
+    );
     let (code, out, _) = common::cli::run(&[
         "jordan",
         p,

@@ -12,14 +12,15 @@
 
 use super::common::with_path;
 use super::{Failure, Outcome};
-use crate::field::ElemDisplay;
+use crate::field::{ElemDisplay, QuadraticField};
 use crate::field::{Field, Q, parse_rational};
 use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::jordan::jordan;
 use crate::jordan::jordan_qp;
+use crate::jordan::{EigenField, jordan_over};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
-use crate::realization::contribution::contributions;
+use crate::realization::contribution::{contributions, contributions_in, contributions_qp};
 use crate::report::sections::response as rep;
 use clap::Subcommand;
 use std::path::{Path, PathBuf};
@@ -120,14 +121,19 @@ pub(super) fn run<K: Field + 'static>(
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let e = |err| with_path(path, err);
-    let q = as_rational(t).ok_or_else(|| {
-        Failure::input(format!(
-            "{}: `{}` needs rational matrices; this file's entries lie in {}",
-            f.path,
-            cmd.name(),
-            f.ground
-        ))
-    })?;
+    let Some(q) = as_rational(t) else {
+        // Q(sqrt d), Q(i): the same computation over the file's field
+        let Some(t) = (t as &dyn std::any::Any).downcast_ref::<TypedSystem<QuadraticField>>()
+        else {
+            return Err(Failure::input(format!(
+                "{}: `{}` needs rational or quadratic matrices; this file's entries lie in {}",
+                f.path,
+                cmd.name(),
+                f.ground
+            )));
+        };
+        return run_over(cmd, &t.ss, path);
+    };
     match cmd {
         ResponseCmd::Contributions { keep, .. } => {
             let c = contributions(&q.ss).map_err(e)?;
@@ -169,6 +175,64 @@ pub(super) fn run<K: Field + 'static>(
     }
 }
 
+/// A response command over a field with an exact Jordan form other than $\mathbb{Q}$
+/// ($\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$): the generic computation; `--x0` in exact
+/// rational numbers, `--times` refused (its evaluation is written for $\mathbb{Q}$).
+fn run_over<F: EigenField>(
+    cmd: &ResponseCmd,
+    ss: &crate::system::StateSpace<F>,
+    path: &Path,
+) -> Result<Outcome, Failure> {
+    let e = |err| with_path(path, err);
+    let jf = jordan_over(&ss.a).map_err(e)?;
+    match cmd {
+        ResponseCmd::Contributions { keep, .. } => {
+            let c = contributions_in(ss, jf).map_err(e)?;
+            let tr = match keep {
+                Some(k) => Some(c.truncate(*k).map_err(e)?),
+                None => None,
+            };
+            let ok = c.verified && tr.as_ref().is_none_or(|t| t.verified);
+            Ok(Outcome::new(rep::contributions_report(&c, tr.as_ref()), ok))
+        }
+        ResponseCmd::Response { x0, times: ts, .. } => {
+            if ts.is_some() {
+                return Err(Failure::unsupported(format!(
+                    "{}: --times evaluates the response over QQ; this system's entries lie in {}",
+                    path.display(),
+                    ss.field()
+                )));
+            }
+            let x0m = rational_x0(x0, ss.nstates(), path, ss.field())?;
+            let sr = jf.free_response().from_state(&x0m);
+            let ok = jf.verified && sr.verify(&jf, &x0m);
+            Ok(Outcome::new(
+                rep::state_response_report(&jf, &sr, &x0m, &[], ok),
+                ok,
+            ))
+        }
+    }
+}
+
+/// `--x0` of exact rational numbers as a column over `k`.
+pub(super) fn rational_x0<F: Field>(
+    text: &str,
+    n: usize,
+    path: &Path,
+    k: &F,
+) -> Result<Matrix<F>, Failure> {
+    let xs = entries(text, n, path)?;
+    let vals = xs
+        .iter()
+        .map(|x| {
+            parse_rational(x)
+                .map(|q| k.from_rational(&q))
+                .map_err(|m| Failure::input(format!("--x0 entry \"{x}\": {m}")))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Matrix::column(k.clone(), vals))
+}
+
 /// Runs a response command on a system over $\mathbb{Q}(p)$.
 pub(super) fn run_symbolic(
     cmd: &ResponseCmd,
@@ -176,12 +240,28 @@ pub(super) fn run_symbolic(
     path: &Path,
 ) -> Result<Outcome, Failure> {
     match cmd {
-        ResponseCmd::Contributions { .. } => Err(Failure::unsupported(format!(
-            "{}: `contributions` ranks modes by numbers (an H2 norm, a sign of Re s), this \
-             system's entries lie in {}; give every symbol a value with --at",
-            path.display(),
-            t.a_raw.field()
-        ))),
+        ResponseCmd::Contributions { keep, .. } => {
+            let e = |err| with_path(path, err);
+            let c = contributions_qp(&t.ss).map_err(e)?;
+            if let Some(k) = keep {
+                // refused unless every weight was compared exactly
+                let tr = c.truncate(*k).map_err(e)?;
+                let ok = c.verified && tr.verified;
+                let r = rep::contributions_report_qp(&c).obj(
+                    "truncation",
+                    crate::report::Report::new()
+                        .int("order", tr.system.a.nrows())
+                        .matrices(&[
+                            ("A", &tr.system.a),
+                            ("B", &tr.system.b),
+                            ("C", &tr.system.c),
+                        ])
+                        .bool("verified", tr.verified),
+                );
+                return Ok(Outcome::new(r, ok));
+            }
+            Ok(Outcome::new(rep::contributions_report_qp(&c), c.verified))
+        }
         ResponseCmd::Response { x0, times, .. } => {
             if times.is_some() {
                 return Err(Failure::unsupported(format!(

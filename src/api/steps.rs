@@ -323,8 +323,30 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             let d = crate::realization::contribution_steps::response_steps(&t.ss.a, &x0);
             out.show(&d.map_err(e)?)
         }
+        (TypedAny::Quadratic(t), What::Contributions(keep)) if !descriptor => {
+            let jf = crate::jordan::jordan_over(&t.ss.a).map_err(e)?;
+            let d = crate::realization::contribution_steps::contributions_steps_in(&t.ss, jf, keep);
+            out.show(&d.map_err(e)?)
+        }
+        (TypedAny::Quadratic(t), What::Response) if !descriptor => {
+            let x0 =
+                exact_x0(cmd, t.ss.nstates())?.map(t.ss.field(), |q| t.ss.field().from_rational(q));
+            let jf = crate::jordan::jordan_over(&t.ss.a).map_err(e)?;
+            out.show(&crate::realization::contribution_steps::response_steps_in(
+                &jf, &x0,
+            ))
+        }
+        (TypedAny::RatFunc(t), What::Contributions(keep)) if !descriptor => {
+            let d = crate::realization::contribution_steps::contributions_steps_qp(&t.ss, keep);
+            out.show(&d.map_err(e)?)
+        }
+        (TypedAny::RatFunc(t), What::Response) if !descriptor => {
+            let x0 = x0_in(cmd, t.ss.field(), t.ss.nstates())?;
+            let d = crate::realization::contribution_steps::response_steps_qp(&t.ss.a, &x0);
+            out.show(&d.map_err(e)?)
+        }
         (_, What::Contributions(_) | What::Response) => Err(refuse(format!(
-            "{}: --steps for `contributions` and `response` derives over QQ (a system without E and exact numbers in --x0); this file's entries lie in {}{}",
+            "{}: --steps for `contributions` and `response` derives a system without E (its standard form's A is what `response` integrates: derive `standard --steps` first); this file's entries lie in {}{}",
             path_text(file),
             loaded.file.ground,
             if descriptor { " and it has E" } else { "" }
@@ -410,6 +432,36 @@ fn exact_x0(cmd: &Command, n: usize) -> Result<crate::matrix::Matrix<Q>, Failure
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(crate::matrix::Matrix::column(Q, vals))
+}
+
+/// `--x0` over $\mathbb{Q}(p)$: each entry an expression in the file's parameters (a symbol of
+/// its own needs `response` without --steps, which adds it to the field).
+fn x0_in(
+    cmd: &Command,
+    k: &crate::ratfunc::RatFuncField,
+    n: usize,
+) -> Result<crate::matrix::Matrix<crate::ratfunc::RatFuncField>, Failure> {
+    let Command::Response(super::ResponseCmd::Response { x0, .. }) = cmd else {
+        return Err(Failure::input("internal: not `response`".to_string()));
+    };
+    let xs: Vec<&str> = x0.split(',').map(str::trim).collect();
+    if xs.len() != n {
+        return Err(Failure::input(format!(
+            "--x0 needs {n} comma-separated entries (the state has {n}), got {}",
+            xs.len()
+        )));
+    }
+    let vals = xs
+        .iter()
+        .map(|x| {
+            k.parse(x).map_err(|m| {
+                Failure::unsupported(format!(
+                    "--x0 entry \"{x}\": {m} (--steps reads --x0 in the file's parameters {k}; new symbols: `response` without --steps)"
+                ))
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(crate::matrix::Matrix::column(k.clone(), vals))
 }
 
 /// The chains' normalisation `jordan --normalize` asks for (none for the other commands).

@@ -28,6 +28,22 @@ pub fn jordan_outcome(a: &Matrix<RatFuncField>) -> Result<Outcome> {
     Ok(Outcome::new(jf.report(), jf.verified))
 }
 
+/// `jordan --normalize X FILE` on a symbolic `A`: the chains of every eigenvalue in
+/// $\mathbb{Q}(p)$ normalised ([`crate::jordan::normalize::normalize_form_qp`]: $A T = T J$
+/// and $\det T \ne 0$ checked again, the divisions it made among the conditions).
+///
+/// # Errors
+/// Those of [`jordan_qp`] and of the normalisation.
+pub fn normalized_outcome(
+    a: &Matrix<RatFuncField>,
+    how: &crate::jordan::normalize::Normalization,
+) -> Result<Outcome> {
+    let mut jf = jordan_qp(a)?;
+    let closed = crate::jordan::normalize::normalize_form_qp(&mut jf, how)?;
+    let r = crate::report::steps_norm::normalized_form_report_qp(&jf, how, &closed);
+    Ok(Outcome::new(r, jf.verified))
+}
+
 /// `jordan --real FILE` on a symbolic `A` ([`crate::jordan::over_qp::real_form_qp`]); the
 /// conditions recorded in its fresh field join the report.
 ///

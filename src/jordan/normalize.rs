@@ -287,7 +287,9 @@ pub struct ClosedUnit<E> {
 /// embedding) and the left chains by $W' = (W V')^{-1} W$ (so $W' V' = I$). $T$ changes,
 /// $J$ does not; $A V' = V' J_t$, $W' A = J_t W'$, $W' V' = I$ are checked again
 /// ([`super::primary::Component::verify`]) and `verified` keeps only what held. Returns the
-/// chains whose unit length is in closed form.
+/// chains whose unit length is in closed form. A component without chains (over
+/// $\mathbb{Q}(p)$ a factor of degree $\ge 2$, presented by its primary block) is left as it
+/// is; over $\mathbb{Q}(p)$ use [`normalize_form_qp`], which also re-checks the primary form.
 ///
 /// # Errors
 /// As [`normalize_chain`]; `Verification` when $W V'$ is singular (it cannot be: $V'$ spans
@@ -303,6 +305,11 @@ pub fn normalize_form<F: Field>(
     let a = jf.a.clone();
     let mut ok = jf.verified;
     for (ci, comp) in jf.components.iter_mut().enumerate() {
+        if !comp.has_chains() {
+            // a primary block over Q(p) (a factor of degree >= 2): a basis of ker g(A)^e,
+            // not Jordan chains; nothing to normalise
+            continue;
+        }
         let real = comp
             .roots
             .first()
@@ -333,5 +340,37 @@ pub fn normalize_form<F: Field>(
         ok &= comp.verify(&a);
     }
     jf.verified = ok;
+    Ok(closed)
+}
+
+/// [`normalize_form`] over $\mathbb{Q}(p)$ (`jordan --normalize X` on a file with symbols):
+/// the chains of every eigenvalue $\theta \in \mathbb{Q}(p)$ normalised as rational functions
+/// (the primary blocks of the factors of degree $\ge 2$ are kept: they are not chains), then
+/// the primary form re-checked, $A T = T J$ as rational functions with $\det T \ne 0$, and the
+/// conditions refreshed from the field's log: a division the normalisation made (by the entry
+/// $(v_1)_r$ made 1, by $v_1 \cdot v_1$ of eq. 31) is a condition of the result like the
+/// pivots of [`super::jordan_qp`]. A unit length is exact only when $v_1 \cdot v_1$ is the
+/// square of a rational number; otherwise it is given in closed form ($V' / \sqrt n$, $n$ a
+/// rational function).
+///
+/// # Errors
+/// As [`normalize_form`] and [`super::JordanForm::primary_form`].
+pub fn normalize_form_qp(
+    jf: &mut super::JordanForm<crate::ratfunc::RatFuncField>,
+    how: &Normalization,
+) -> Result<Vec<ClosedUnit<crate::algebraic::ExtElem<crate::ratfunc::RatFunc>>>> {
+    let closed = normalize_form(jf, how)?;
+    let k = jf.base().clone();
+    let (t, j) = jf.primary_form()?;
+    let holds = jf.a.try_mul(&t)? == t.try_mul(&j)?;
+    let det = t.det()?;
+    let invertible = !k.is_zero(&det);
+    k.record_condition(det.num());
+    jf.conditions = k
+        .conditions()?
+        .into_iter()
+        .map(|c| k.from_mpoly(c))
+        .collect();
+    jf.verified &= holds && invertible;
     Ok(closed)
 }

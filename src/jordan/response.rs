@@ -157,7 +157,7 @@ impl<F: Field> FreeResponse<Ext<F>> {
 }
 
 /// $\operatorname{Tr}_{E/F}$ of each entry, $E = F\[t\]/(p)$, from the Newton power sums of $p$.
-fn trace_down<F: Field>(m: &Matrix<Ext<F>>, p: &Poly<F>, k: &F) -> Matrix<F> {
+pub(crate) fn trace_down<F: Field>(m: &Matrix<Ext<F>>, p: &Poly<F>, k: &F) -> Matrix<F> {
     let ps = newton_power_sums(p, p.deg().saturating_sub(1));
     m.map(k, |x| {
         x.0.iter().zip(&ps).fold(k.zero(), |mut acc, (a, b)| {

@@ -128,12 +128,12 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             r"\textstyle\prod_i p_i^{e_i} = \chi_A",
         ),
         StepKind::KernelSequence => (
-            "dim ker N^k = n - rank N^k, increasing to the multiplicity m",
-            r"\dim\ker N^k = n - \operatorname{rank} N^k \nearrow m",
+            "dim ker N^k = n - rank N^k, increasing to the algebraic multiplicity mu",
+            r"\dim\ker N^k = n - \operatorname{rank} N^k \nearrow \mu",
         ),
         StepKind::WeyrSegre => (
-            "segre = conjugate partition of weyr, sum = m",
-            r"s_j = \#\{k : w_k \ge j\},\ \textstyle\sum_j s_j = m",
+            "segre = conjugate partition of weyr, sum = mu",
+            r"s_j = \#\{k : w_k \ge j\},\ \textstyle\sum_j s_j = \mu",
         ),
         StepKind::Chain => (
             "N v_1 = 0, v_1 != 0, N v_j = v_(j-1)",
@@ -276,7 +276,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
             _ => "Irreducible factors.".into(),
         },
         StepKind::KernelSequence => format!(
-            "Eigenvalue theta = {} of multiplicity m = {}{}: N = A - theta I; rank N^k = {} so dim ker N^k = {} (k = 1..{}).",
+            "Eigenvalue theta = {} of algebraic multiplicity mu = {}{}: N = A - theta I; rank N^k = {} so dim ker N^k = {} (k = 1..{}).",
             theta(),
             c("m"),
             field_note(d, s),

@@ -6,6 +6,7 @@
 //! small, wider than 20 in column blocks, so every page is A4.
 
 use super::escape::latex_text;
+use super::latex::lines::{TEXT_PT, display, width_pt};
 use super::steps::{generic_root, identity, kind_name, step_field, theta_step, title};
 use crate::field::Field;
 use crate::jordan::derivation::{Derivation, Object, Step, StepKind};
@@ -31,6 +32,8 @@ fn symbol_in_s(kind: StepKind, key: &str) -> String {
         }
         (StepKind::Similarity, "dims") => return r"d_i\,m_i".into(),
         (StepKind::PrimaryBlock, "dims") => return r"\dim\ker f(A)^k".into(),
+        // the algebraic multiplicity: not `m`, which a system's parameter may be called
+        (StepKind::KernelSequence, "m") => return r"\mu".into(),
         _ => {}
     }
     if let Some(sym) = super::steps_more::symbol(kind, key) {
@@ -207,61 +210,26 @@ fn matrix_latex<K: Field>(s: &mut String, name: &str, m: &Matrix<K>, a4: bool) {
     }
 }
 
-/// Digits of an integer set on one line; longer integers are stacked in lines of this many.
-const DIGITS_PER_LINE: usize = 64;
-
-/// `t` with every run of more than [`DIGITS_PER_LINE`] digits stacked in lines (a one-column
-/// `array`: TeX does not break a number, and a Markov parameter of the A-arm quarter car
-/// has 170 digits).
-fn break_digits(t: &str) -> String {
-    fn flush(out: &mut String, run: &mut String) {
-        if run.len() > DIGITS_PER_LINE {
-            let lines: Vec<&str> = run
-                .as_bytes()
-                .chunks(DIGITS_PER_LINE)
-                .map(|c| std::str::from_utf8(c).unwrap_or(""))
-                .collect();
-            let _ = write!(
-                out,
-                r"\begin{{array}}{{@{{}}l@{{}}}}{}\end{{array}}",
-                lines.join(r" \\ ")
-            );
-        } else {
-            out.push_str(run);
-        }
-        run.clear();
-    }
-    let (mut out, mut run) = (String::new(), String::new());
-    for c in t.chars() {
-        if c.is_ascii_digit() {
-            run.push(c);
-        } else {
-            flush(&mut out, &mut run);
-            out.push(c);
-        }
-    }
-    flush(&mut out, &mut run);
-    out
-}
-
-/// A matrix whose widest column alone is wider than the page: one display per entry
-/// (`name_{(i,j)} = ...`), long integers stacked.
+/// A matrix whose widest column alone is wider than the page: one display per nonzero entry
+/// (`name_{(i,j)} = ...`, broken over lines where it is long: [`display`]).
 fn entries_latex(s: &mut String, name: &str, cells: &[Vec<String>]) {
+    let zeros = cells.iter().flatten().filter(|c| c.as_str() == "0").count();
     let _ = writeln!(
         s,
-        r"\[ {name}\ ({} \times {}),\ \text{{entries one by one (wider than the page)}} \]",
+        r"\[ {name}\ ({} \times {}),\ \text{{entries one by one (wider than the page){}}} \]",
         cells.len(),
-        cells.first().map_or(0, |r| r.len())
+        cells.first().map_or(0, |r| r.len()),
+        if zeros > 0 {
+            "; those not listed are 0"
+        } else {
+            ""
+        }
     );
     for (i, row) in cells.iter().enumerate() {
         for (j, c) in row.iter().enumerate() {
-            let _ = writeln!(
-                s,
-                r"\[ {{{name}{{}}}}_{{({},{})}} = {} \]",
-                i + 1,
-                j + 1,
-                break_digits(c)
-            );
+            if c != "0" {
+                display(s, &format!(r"{{{name}{{}}}}_{{({},{})}}", i + 1, j + 1), c);
+            }
         }
     }
 }
@@ -299,7 +267,7 @@ pub(crate) fn object_latex<K: Field>(
                 })
                 .collect();
             let all = parts.join("");
-            if !a4 || typeset_len(&all) <= LINE_CHARS {
+            if !a4 || width_pt(&all) <= TEXT_PT {
                 let _ = writeln!(s, "\\[ {name} = {all} \\]");
                 return;
             }
@@ -317,9 +285,7 @@ pub(crate) fn object_latex<K: Field>(
                 display_wrapped(s, &format!("p_{{{}}}", i + 1), &poly_latex(p, "s"));
             }
         }
-        Object::Scalar(x) => {
-            let _ = writeln!(s, "\\[ {name} = {} \\]", entry(field, x));
-        }
+        Object::Scalar(x) => display(s, &name, &entry(field, x)),
         Object::Count(c) => {
             let _ = writeln!(s, "\\[ {name} = {c} \\]");
         }
@@ -328,82 +294,23 @@ pub(crate) fn object_latex<K: Field>(
         }
         Object::Polys(ps) => {
             let parts: Vec<String> = ps.iter().map(|p| poly_latex(p, var)).collect();
-            let one_line = parts.iter().map(|p| typeset_len(p) + 2).sum::<usize>() <= LINE_CHARS;
+            let one_line = parts.iter().map(|p| width_pt(p) + 15.0).sum::<f64>() <= TEXT_PT;
             if !a4 || one_line {
                 let _ = writeln!(s, "\\[ {name}:\\ {} \\]", parts.join(",\\; "));
             } else {
                 for (i, p) in parts.iter().enumerate() {
-                    display_wrapped(
-                        s,
-                        &format!("\\text{{({})}}\\ {name}", i + 1),
-                        &break_digits(p),
-                    );
+                    display_wrapped(s, &format!("\\text{{({})}}\\ {name}", i + 1), p);
                 }
             }
         }
     }
 }
 
-/// Characters of a displayed line (a rough count of the typeset symbols) that fit A4.
-const LINE_CHARS: usize = 90;
-
-/// The typeset length of LaTeX math, roughly: its characters without control words.
-fn typeset_len(t: &str) -> usize {
-    let mut n = 0;
-    let mut chars = t.chars().peekable();
-    while let Some(c) = chars.next() {
-        if c == '\\' {
-            while chars.peek().is_some_and(|c| c.is_ascii_alphabetic()) {
-                chars.next();
-            }
-        } else if !matches!(c, '{' | '}' | '^' | '_' | ' ') {
-            n += 1;
-        }
-    }
-    n
-}
-
-/// `name = body` in display math; a long sum is broken at its top-level `+`/`-` signs
-/// into the lines of an `align*` (a polynomial of the 747 model is several lines wide).
+/// `name = body` in display math, broken over lines that fit A4 when long
+/// ([`super::latex::lines::display`]: a polynomial of the 747 model is several lines wide, a
+/// symbolic numerator dozens).
 fn display_wrapped(s: &mut String, name: &str, body: &str) {
-    if typeset_len(body) <= LINE_CHARS {
-        let _ = writeln!(s, "\\[ {name} = {body} \\]");
-        return;
-    }
-    // split before " + " / " - " outside \left( ... \right) and outside braces (the
-    // numerator of a \frac is one term)
-    let (mut parts, mut cur, mut depth) = (vec![], String::new(), 0i32);
-    let b = body.as_bytes();
-    let mut i = 0;
-    while i < b.len() {
-        let rest = &body[i..];
-        let escaped = i > 0 && b[i - 1] == b'\\';
-        if rest.starts_with("\\left") || (rest.starts_with('{') && !escaped) {
-            depth += 1;
-        } else if rest.starts_with("\\right") || (rest.starts_with('}') && !escaped) {
-            depth -= 1;
-        }
-        if depth == 0 && (rest.starts_with(" + ") || rest.starts_with(" - ")) && !cur.is_empty() {
-            parts.push(std::mem::take(&mut cur));
-        }
-        let ch = rest.chars().next().unwrap_or(' ');
-        cur.push(ch);
-        i += ch.len_utf8();
-    }
-    parts.push(cur);
-    let mut lines: Vec<String> = vec![];
-    for p in parts {
-        match lines.last_mut() {
-            Some(l) if typeset_len(l) + typeset_len(&p) <= LINE_CHARS => l.push_str(&p),
-            _ => lines.push(p),
-        }
-    }
-    let _ = writeln!(
-        s,
-        "\\begin{{align*}}\n{name} &= {}",
-        lines.join(" \\\\\n&\\quad ")
-    );
-    s.push_str("\\end{align*}\n");
+    display(s, name, body);
 }
 
 /// The sentence of a step in LaTeX (the objects follow it in display math).
@@ -422,9 +329,16 @@ fn sentence_latex_in_s<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
         String::new()
     };
     let generic = if generic_root(d, st) {
+        // a long field name (its modulus with big coefficients) does not break in
+        // \texttt: named by its factor instead, which the factorization step shows
+        let f = step_field(d, st).to_string();
+        let field = if f.chars().count() <= 40 {
+            format!("\\texttt{{{}}}", latex_text(&f))
+        } else {
+            "$F[t]/(f)$, $f$ its irreducible factor,".into()
+        };
         format!(
-            ", worked once in \\texttt{{{}}} at the generic root $t$ (its conjugates by the embeddings $t \\mapsto \\theta_j$)",
-            latex_text(&step_field(d, st).to_string())
+            ", worked once in {field} at the generic root $t$ (its conjugates by the embeddings $t \\mapsto \\theta_j$)"
         )
     } else {
         String::new()
@@ -433,7 +347,7 @@ fn sentence_latex_in_s<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
         StepKind::CharPoly => "The characteristic polynomial $\\chi_A(s) = \\det(sI - A)$.".into(),
         StepKind::Factorization => "Its irreducible factors.".into(),
         StepKind::KernelSequence => format!(
-            "Eigenvalue $\\theta = {th}$ of algebraic multiplicity $m$ {generic}: with $N = A - \\theta I$ the ranks of $N, N^2, \\dots$ give the kernel dimensions $\\dim\\ker N^k = n - \\operatorname{{rank}} N^k$, up to $m$."
+            "Eigenvalue $\\theta = {th}$ of algebraic multiplicity $\\mu${generic}: with $N = A - \\theta I$ the ranks of $N, N^2, \\dots$ give the kernel dimensions $\\dim\\ker N^k = n - \\operatorname{{rank}} N^k$, up to $\\mu$."
         ),
         StepKind::WeyrSegre => "The Weyr characteristic $w_k = \\dim\\ker N^k - \\dim\\ker N^{k-1}$ counts the Jordan blocks of size $\\ge k$; its conjugate partition (the Segre characteristic) lists the block sizes.".into(),
         StepKind::Chain if c("top") == 1 => format!("An eigenvector of $\\theta = {th}$: $v_1 \\in \\ker N$."),
@@ -500,7 +414,7 @@ pub(crate) fn assumes_latex<K: Field>(d: &Derivation<K>, st: &Step<K>) -> Option
     let conds: Vec<String> = st
         .assumes
         .iter()
-        .map(|x| format!("{} \\ne 0", d.field.latex_elem(x)))
+        .map(|x| format!("{} \\ne 0", entry(&d.field, x)))
         .collect();
     Some(conds.join(",\\ "))
 }
@@ -555,15 +469,15 @@ pub(crate) fn transfer_latex<K: Field>(
     };
     let p = st.count("p").unwrap_or(1).max(1);
     let m = num.len() / p;
-    let row_len = |i: usize| -> usize {
+    let row_len = |i: usize| -> f64 {
         (0..m)
             .map(|j| {
                 let (n, d) = (&num[i * m + j], &den[i * m + j]);
-                typeset_len(&poly_latex(n, var)).max(typeset_len(&poly_latex(d, var))) + 2
+                width_pt(&poly_latex(n, var)).max(width_pt(&poly_latex(d, var))) + 15.0
             })
             .sum()
     };
-    if a4 && (0..p).any(|i| row_len(i) > LINE_CHARS) {
+    if a4 && (0..p).any(|i| row_len(i) > TEXT_PT) {
         // one entry at a time, numerator and denominator each wrapped over lines
         for i in 0..p {
             for j in 0..m {

@@ -40,8 +40,8 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             r"\textstyle\sum_{\text{conj}} H_0 = C_p B_p",
         ),
         StepKind::ModeWeight => (
-            "Ap W + W Ap^T + Bp Bp^T = 0, h2 = tr(Cp W Cp^T) (or every Cp Ap^k Bp = 0)",
-            r"A_p W + W A_p^T + B_p B_p^T = 0,\ \|G_p\|_2^2 = \operatorname{tr}(C_p W C_p^T)",
+            "Ap W + W Ap^H + Bp Bp^H = 0, h2 = tr(Cp W Cp^H) (^H: conjugate transpose; or every Cp Ap^k Bp = 0)",
+            r"A_p W + W A_p^H + B_p B_p^H = 0,\ \|G_p\|_2^2 = \operatorname{tr}(C_p W C_p^H)",
         ),
         StepKind::ModeRanking => (
             "sum_p P_p = I, sum_p Cp Ap^k Bp = C A^k B (k < 2n)",
@@ -92,7 +92,13 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
         ),
         StepKind::ModeWeight if c("zero") == 1 => "Weight 0: every Markov parameter of the part is zero (eq. 33: b c = 0, the mode does not reach y from u).".into(),
         StepKind::ModeWeight if c("infinite") == 1 => "Weight infinite: the part contributes and is not asymptotically stable (H2 = infinity); never dropped before the finite ones.".into(),
-        StepKind::ModeWeight => "Weight: the squared H2 norm of the part, tr(Cp W Cp^T) with W the exact solution of the Lyapunov equation Ap W + W Ap^T + Bp Bp^T = 0.".into(),
+        StepKind::ModeWeight if c("where_stable") == 1 => "Weight: tr(Cp W Cp^T), a rational function of the parameters, with W the exact solution of the Lyapunov equation Ap W + W Ap^T + Bp Bp^T = 0: the squared H2 norm of the part for the parameter values where Ap is Hurwitz (a sign condition on the parameters, not decided in symbols; elsewhere the norm is infinite).".into(),
+        StepKind::ModeWeight => "Weight: the squared H2 norm of the part, tr(Cp W Cp^H) with W the exact solution of the Lyapunov equation Ap W + W Ap^H + Bp Bp^H = 0 (^H: the conjugate transpose, the transpose over a real field).".into(),
+        StepKind::ModeRanking if c("unranked") == 1 => format!(
+            "The projectors add up to I (n = {}) and the parts' Markov parameters to C A^k B; the modes in the order of the factors {} (not ranked: their weights are rational functions of the parameters, whose order changes with the values).",
+            c("n"),
+            s.counts("ranked").map(super::steps::one_based).unwrap_or_default()
+        ),
         StepKind::ModeRanking => format!(
             "The projectors add up to I (n = {}) and the parts' Markov parameters to C A^k B; the modes ranked heaviest first: factors {}.",
             c("n"),
@@ -120,7 +126,9 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
         StepKind::ModeResidues => "The residues $H_k = C G_{\\theta,k} B$ (side by side, $k = 0, 1, \\dots$) of $G(s) = D + \\sum_k k!\\,H_k/(s - \\theta)^{k+1}$: eq.~33's products $b_i c_i$.".into(),
         StepKind::ModeWeight if c("zero") == 1 => "Weight $0$: every Markov parameter of the part vanishes (eq.~33: $bc = 0$).".into(),
         StepKind::ModeWeight if c("infinite") == 1 => "Weight $\\infty$: the part contributes and is not asymptotically stable.".into(),
-        StepKind::ModeWeight => "Weight: $\\|G_p\\|_2^2 = \\operatorname{tr}(C_p W C_p^T)$ with $W$ the exact solution of $A_p W + W A_p^T + B_p B_p^T = 0$.".into(),
+        StepKind::ModeWeight if c("where_stable") == 1 => "Weight: $\\operatorname{tr}(C_p W C_p^T)$, a rational function of the parameters, with $W$ the exact solution of $A_p W + W A_p^T + B_p B_p^T = 0$: it is $\\|G_p\\|_2^2$ where $A_p$ is Hurwitz (a sign condition on the parameters, not decided in symbols; elsewhere $\\|G_p\\|_2 = \\infty$).".into(),
+        StepKind::ModeWeight => "Weight: $\\|G_p\\|_2^2 = \\operatorname{tr}(C_p W C_p^H)$ with $W$ the exact solution of $A_p W + W A_p^H + B_p B_p^H = 0$ ($^H$: the conjugate transpose, the transpose over a real field).".into(),
+        StepKind::ModeRanking if c("unranked") == 1 => "The projectors add up to $I$ and the parts to $G$; the modes in the order of the factors (not ranked: their weights are rational functions of the parameters, whose order changes with their values).".into(),
         StepKind::ModeRanking => "The projectors add up to $I$ and the parts to $G$; the modes ranked heaviest first (factor numbers below).".into(),
         StepKind::TruncationError => "Truncation: $(A_K, B_K, C_K, D)$ keeps the heaviest modes; the error $E = G - G_K$ is the sum of the dropped parts: $E_0 = C_D B_D$, $E(0) = -C_D A_D^{-1} B_D$, $\\|E\\|_2^2$.".into(),
         StepKind::FreeTerms => "The vectors $g_k = G_{\\theta,k} x_0$ (side by side) of the terms $t^k e^{\\theta t} g_k$ of $x(t)$.".into(),
@@ -179,5 +187,5 @@ pub fn index_list(key: &str) -> bool {
 
 /// Flags the sentence states.
 pub fn flag(key: &str) -> bool {
-    matches!(key, "zero" | "infinite")
+    matches!(key, "zero" | "infinite" | "where_stable" | "unranked")
 }

@@ -210,7 +210,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>, var: &str) -> String {
             "Block Hankel matrix H_0 = [C A^(i+j) B] (n block rows and columns), rank {} (the McMillan degree).",
             c("rank")
         ),
-        StepKind::HankelFactor => "Rank factorization H_0 = L R (L the pivot columns of H_0, R the nonzero rows of its RREF); A_r = L^+ H_1 R^+ with the shifted Hankel matrix H_1, B_r = the first m columns of R, C_r = the first p rows of L.".into(),
+        StepKind::HankelFactor => "Rank factorization H_0 = L R (L the pivot columns of H_0, R the nonzero rows of its RREF); A_r = L^+ H_1 R^+ with the shifted Hankel matrix H_1, B_r = the first columns of R (one per input), C_r = the first rows of L (one per output).".into(),
         _ => super::steps_forms::sentence(d, s),
     }
 }
@@ -243,7 +243,7 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
         StepKind::Staircase if c("dual") == 1 => "The staircase on the dual $(A^T, C^T)$ of the controllable part (eq.~19): its reached states are the observable ones.".into(),
         StepKind::Staircase => "Rosenbrock's staircase: the Krylov pivot columns of $[B, AB, \\dots]$ (block 0 last) completed by unit vectors give $T$; $(T^{-1}AT, T^{-1}B, CT)$ has the zero pattern of eq.~17 and $k$ reached states.".into(),
         StepKind::Hankel => "The block Hankel matrix $H_0 = [C A^{i+j} B]$ ($n$ block rows and columns) and its rank, the McMillan degree.".into(),
-        StepKind::HankelFactor => "Rank factorization $H_0 = L R$ ($L$ the pivot columns, $R$ the nonzero rows of the RREF); $A_r = L^{+} H_1 R^{+}$ with the shifted Hankel matrix $H_1$, $B_r$ the first $m$ columns of $R$, $C_r$ the first $p$ rows of $L$.".into(),
+        StepKind::HankelFactor => "Rank factorization $H_0 = L R$ ($L$ the pivot columns, $R$ the nonzero rows of the RREF); $A_r = L^{+} H_1 R^{+}$ with the shifted Hankel matrix $H_1$, $B_r$ the first columns of $R$ (one per input), $C_r$ the first rows of $L$ (one per output).".into(),
         _ => super::steps_forms::sentence_latex(st),
     }
 }

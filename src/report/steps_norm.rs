@@ -300,27 +300,62 @@ pub fn normalized_form_report<F: EigenField>(
     how: &Normalization,
     closed: &[ClosedUnit<ExtElem<F::Elem>>],
 ) -> Report {
-    let mut r = jf.report();
-    r.push("normalize", Value::Str(normalization_words(how)));
+    // the columns of T: eigenvalue by eigenvalue (each conjugate root its own columns)
     let mut notes = vec![];
     let mut off = 0;
     for ev in 0..jf.eigenvalues.len() {
         let ci = jf.eigenvalues[ev].component;
         let (field, f) = jf.root_map(ev);
         for c in closed.iter().filter(|c| c.component == ci) {
-            let (a, b) = (off + c.first + 1, off + c.first + c.len);
-            let cols = if a == b {
-                format!("column {a}")
-            } else {
-                format!("columns {a}-{b}")
-            };
-            notes.push(Value::Str(format!(
-                "{cols} of T: the chain shown is V' with v_1 . v_1 = n = {}; the unit-length chain is V' / sqrt(n)",
-                field.fmt_elem(&f(&c.n))
-            )));
+            notes.push(unit_note(off + c.first, c.len, &field.fmt_elem(&f(&c.n))));
         }
         off += jf.components[ci].chains.ncols();
     }
+    with_notes(jf.report(), how, notes)
+}
+
+/// [`normalized_form_report`] over $\mathbb{Q}(p)$ (after
+/// [`crate::jordan::normalize::normalize_form_qp`]): the columns of $T$ component by
+/// component (a factor of degree $d \ge 2$ and multiplicity $e$ takes $d e$ columns, its
+/// primary block, which is not normalised), `conditions` the refreshed ones.
+pub fn normalized_form_report_qp(
+    jf: &JordanForm<crate::ratfunc::RatFuncField>,
+    how: &Normalization,
+    closed: &[ClosedUnit<ExtElem<crate::ratfunc::RatFunc>>],
+) -> Report {
+    let mut notes = vec![];
+    let mut off = 0;
+    for (ci, comp) in jf.components.iter().enumerate() {
+        for c in closed.iter().filter(|c| c.component == ci) {
+            notes.push(unit_note(off + c.first, c.len, &comp.field.fmt_elem(&c.n)));
+        }
+        off += comp.degree() * comp.multiplicity;
+    }
+    let mut r = with_notes(jf.report(), how, notes);
+    if jf.components.iter().any(|c| !c.has_chains()) {
+        r.push(
+            "normalize_note",
+            Value::Str("the columns of a factor of degree >= 2 are a basis of ker g(A)^e (its primary block), not Jordan chains: kept as they are".into()),
+        );
+    }
+    r
+}
+
+/// The note of one chain whose unit length is in closed form (0-based first column).
+fn unit_note(first: usize, len: usize, n: &str) -> Value {
+    let (a, b) = (first + 1, first + len);
+    let cols = if a == b {
+        format!("column {a}")
+    } else {
+        format!("columns {a}-{b}")
+    };
+    Value::Str(format!(
+        "{cols} of T: the chain shown is V' with v_1 . v_1 = n = {n}; the unit-length chain is V' / sqrt(n)"
+    ))
+}
+
+fn with_notes(mut r: Report, how: &Normalization, notes: Vec<Value>) -> Report {
+    r.push("normalize", Value::Str(normalization_words(how)));
     if !notes.is_empty() {
         r.push("unit_lengths", Value::List(notes));
     }

@@ -100,10 +100,20 @@ pub(super) fn execute(
             ))
         }
         Command::Jordan {
-            normalize: Some(_), ..
-        } => Err(refuse(format!(
-            "--normalize over {k}: the normalised chains are shown in the derivation (add --steps); the plain Jordan form over {k} keeps its chains"
-        ))),
+            normalize: Some(n),
+            real,
+            ..
+        } => {
+            let how = crate::api::a_only::normalization(Some(n), *real)?;
+            let run = |af: &crate::matrix::Matrix<RatFuncField>| {
+                crate::api::symbolic_jordan::normalized_outcome(af, &how)
+                    .map_err(|e| with_path(path, e))
+            };
+            match t.descriptor.as_ref() {
+                Some(d) => crate::api::a_only::descriptor_jordan_with(d, path, run),
+                None => run(&t.a_raw),
+            }
+        }
         // a descriptor file: the Jordan form of the pencil's finite part (not of A alone)
         Command::Jordan { real, .. } if t.descriptor.is_some() => {
             let d = t.descriptor.as_ref().expect("descriptor");

@@ -9,6 +9,7 @@
 //! names) are escaped ([`super::escape`]), so none can end a `%` comment or a math group.
 
 mod expr;
+pub mod lines;
 mod math;
 mod values;
 

@@ -5,7 +5,7 @@
 
 use super::eigenvalue_text;
 use crate::algebraic::Ext;
-use crate::field::ElemDisplay;
+use crate::field::{ElemDisplay, Field};
 use crate::jordan::{EigenField, JordanForm, StateResponse};
 use crate::matrix::Matrix;
 use crate::ratfunc::{RatFunc, RatFuncField};
@@ -110,24 +110,37 @@ pub fn param_response_report(
         .bool("verified", verified)
 }
 
-fn weight_values(w: &Weight) -> (String, Option<f64>) {
-    use num_traits::ToPrimitive;
+fn weight_values<F: Field>(k: &F, w: &Weight<F::Elem>) -> (String, Option<f64>) {
     match w {
         Weight::Zero => ("0".into(), Some(0.0)),
         Weight::Infinite => ("inf".into(), None),
-        Weight::H2Squared(r) => (r.to_string(), r.to_f64()),
+        Weight::H2Squared(r) => (k.fmt_elem(r), k.approx(r).map(|z| z.0)),
+        Weight::H2SquaredWhereStable(r) => (k.fmt_elem(r), None),
     }
 }
 
-/// The ranked modes (heaviest first) and, with `--keep`, the truncation with its exact error.
-pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Report {
+const WEIGHT_WORDS: &str = "h2_squared = ||C_p (sI - A_p)^-1 B_p||_2^2 of the mode's part (exact, Lyapunov over the field; conjugate transposes over Q(i)); \
+     0: every Markov parameter of the part vanishes (eq. 33: b c = 0); inf: the part \
+     contributes and is not asymptotically stable. A mode is one irreducible factor of \
+     the characteristic polynomial (a real eigenvalue, a complex pair, or all conjugates), \
+     so every truncation stays over the field. H = C G_k B are the residues (eq. 33's products b c): \
+     G(s) = D + sum k! H / (s - eigenvalue)^(k+1)";
+
+/// The ranked modes (heaviest first) and, with `--keep`, the truncation with its exact error
+/// (over $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$: each eigenvalue named, its
+/// residues in its own field).
+pub fn contributions_report<F: EigenField>(
+    c: &Contributions<F>,
+    trunc: Option<&Truncation<F>>,
+) -> Report {
     let jf = &c.jordan;
+    let k = jf.base();
     let modes: Vec<Value> = c
         .modes
         .iter()
         .enumerate()
         .map(|(rank, m)| {
-            let (w, approx) = weight_values(&m.weight);
+            let (w, approx) = weight_values(k, &m.weight);
             let mut residues = vec![];
             for &ev in &m.eigenvalues {
                 let (field, f) = jf.root_map(ev);
@@ -158,17 +171,67 @@ pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Re
             Value::Obj(r.list("residues", residues))
         })
         .collect();
-    let mut r = Report::titled("Mode contributions (minimal-realizations paper eq. 33), heaviest first")
-        .str(
-            "weight",
-            "h2_squared = ||C_p (sI - A_p)^-1 B_p||_2^2 of the mode's part (exact, Lyapunov over Q); \
-             0: every Markov parameter of the part vanishes (eq. 33: b c = 0); inf: the part \
-             contributes and is not asymptotically stable. A mode is one irreducible factor of \
-             the characteristic polynomial (a real eigenvalue, a complex pair, or all conjugates), \
-             so every truncation stays over Q. H = C G_k B are the residues (eq. 33's products b c): \
-             G(s) = D + sum k! H / (s - eigenvalue)^(k+1)",
-        )
-        .list("modes", modes);
+    let r =
+        Report::titled("Mode contributions (minimal-realizations paper eq. 33), heaviest first")
+            .str("weight", WEIGHT_WORDS)
+            .list("modes", modes);
+    with_truncation(r, c, trunc)
+}
+
+/// [`contributions_report`] over $\mathbb{Q}(p)$: each mode named by its factor, the residues
+/// at its generic root $t$ (in $\mathbb{Q}(p)$ for a linear factor), the weights rational
+/// functions that are the squared $H_2$ norms where the parts are stable, the modes in the
+/// factors' order (not ranked: [`crate::realization::contribution`]), and the conditions.
+pub fn contributions_report_qp(c: &Contributions<RatFuncField>) -> Report {
+    let jf = &c.jordan;
+    let k = jf.base();
+    let modes: Vec<Value> = c
+        .modes
+        .iter()
+        .map(|m| {
+            let comp = &jf.components[m.component];
+            let (w, _) = weight_values(k, &m.weight);
+            let residues: Vec<Value> = m
+                .residues
+                .iter()
+                .enumerate()
+                .map(|(power, h)| {
+                    Value::Obj(Report::new().int("power", power).matrix("H", h))
+                })
+                .collect();
+            let mut r = Report::new()
+                .str("factor", comp.factor.to_string_var("s"))
+                .int("order", m.part.a.nrows())
+                .str("h2_squared", w);
+            if matches!(m.weight, Weight::H2SquaredWhereStable(_)) {
+                r = r.str(
+                    "h2_squared_valid",
+                    "where A_p is Hurwitz (a sign condition on the parameters, not decided in symbols); elsewhere the H2 norm is infinite",
+                );
+            }
+            Value::Obj(r.list("residues", residues))
+        })
+        .collect();
+    let title = if c.ranked {
+        "Mode contributions (minimal-realizations paper eq. 33), heaviest first"
+    } else {
+        "Mode contributions (minimal-realizations paper eq. 33), in the order of the factors (weights in symbols are not ranked)"
+    };
+    Report::titled(title)
+        .str("field", k.to_string())
+        .str("weight", WEIGHT_WORDS)
+        .list("modes", modes)
+        .with("conditions", str_list(super::conditions_qp(jf)))
+        .bool("verified", c.verified)
+}
+
+/// The truncation (when asked) and `verified`.
+fn with_truncation<F: Field>(
+    mut r: Report,
+    c: &Contributions<F>,
+    trunc: Option<&Truncation<F>>,
+) -> Report {
+    let k = c.d.field();
     if let Some(t) = trunc {
         let mut tr = Report::new()
             .with(
@@ -183,11 +246,10 @@ pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Re
                 ("D", &t.system.d),
             ]);
         tr = match &t.error_h2_squared {
-            Some(h) => {
-                use num_traits::ToPrimitive;
-                tr.str("error_h2_squared", h.to_string())
-                    .float("error_h2_approx", h.to_f64().unwrap_or(f64::NAN).sqrt())
-            }
+            Some(h) => tr.str("error_h2_squared", k.fmt_elem(h)).float(
+                "error_h2_approx",
+                k.approx(h).map_or(f64::NAN, |z| z.0.sqrt()),
+            ),
             None => tr.str(
                 "error_h2_squared",
                 "inf (a dropped mode is not asymptotically stable)",
@@ -201,7 +263,7 @@ pub fn contributions_report(c: &Contributions, trunc: Option<&Truncation>) -> Re
             .matrix("error_markov0", &t.error_markov0)
             .str(
                 "exact",
-                "A, B, C, D and the errors are exact rationals; only *_approx are floats",
+                "A, B, C, D and the errors are exact; only *_approx are floats",
             )
             .bool("verified", t.verified);
         r = r.obj("truncation", tr);
