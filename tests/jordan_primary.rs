@@ -115,3 +115,82 @@ fn planted_systems_over_qp_and_at_a_point() {
         assert_eq!(sq_stages[2], stages[2]);
     }
 }
+
+/// Every identity of `minimal_jordan_qp` recomputed here: verified, order = McMillan degree,
+/// C A^k B equal for k < n + r, D unchanged; returns (stages, restriction blocks).
+fn check_qp(sys: &StateSpace<RatFuncField>) -> ([usize; 3], usize) {
+    let r = minimal_jordan_qp(sys).unwrap();
+    assert!(r.verified);
+    let m = &r.system;
+    assert_eq!(m.nstates(), mcmillan_degree(sys));
+    let kmax = sys.nstates() + m.nstates();
+    assert_eq!(m.markov(kmax), sys.markov(kmax));
+    assert_eq!(m.d, sys.d);
+    let restricted = r.blocks.iter().filter(|b| b.is_restriction()).count();
+    for b in r.blocks.iter().filter(|b| b.is_restriction()) {
+        assert_eq!(b.order, r.components[b.component].degree());
+    }
+    (r.stages, restricted)
+}
+
+/// The single-track models in 8 symbols (an irreducible quartic chi: the whole system is one
+/// simple primary block; > 300 s through chains over E before): minimal of order 4.
+#[test]
+fn single_track_symbolic_minreal_jordan_is_its_primary_block() {
+    for f in [
+        "data/scb/single-track-front.json",
+        "data/scb/single-track-rear.json",
+    ] {
+        let opts = SymbolicOptions::from_args(Some(""), None).unwrap();
+        let l = load_symbolic_path(Path::new(f), &opts).unwrap();
+        let TypedAny::RatFunc(t) = &l.system else {
+            panic!("expected QQ(p) for {f}")
+        };
+        assert_eq!(check_qp(&t.ss), ([4, 4, 4], 1), "{f}");
+    }
+}
+
+/// A = U diag(a, [[0, -a], [1, 0]], [[0, -2a], [1, 0]]) U^-1 (U unimodular): two simple
+/// quadratic factors, each a restriction block of 2 states (ker g(A) smaller than the
+/// space), or dropped when B or C misses it.
+#[test]
+fn simple_quadratic_factors_as_restriction_blocks() {
+    let mut rng = Rng(2512);
+    let k = RatFuncField::new(&["a"]).unwrap();
+    let e = |s: &str| k.parse(s).unwrap();
+    let rows: [[&str; 5]; 5] = [
+        ["a", "0", "0", "0", "0"],
+        ["0", "0", "-a", "0", "0"],
+        ["0", "1", "0", "0", "0"],
+        ["0", "0", "0", "0", "-2*a"],
+        ["0", "0", "0", "1", "0"],
+    ];
+    let j = Matrix::from_fn(k.clone(), 5, 5, |r, c| e(rows[r][c]));
+    for case in 0..crate::common::iters(3) {
+        let u = unimodular(&k, 5, &mut rng);
+        let ui = u.inverse().unwrap();
+        let a = u.try_mul(&j).unwrap().try_mul(&ui).unwrap();
+        // case 0: everything excited and observed; else the last pair not excited
+        let b0 = Matrix::from_fn(k.clone(), 5, 1, |i, _| {
+            if case > 0 && i >= 3 {
+                k.zero()
+            } else {
+                k.one()
+            }
+        });
+        let c0 = Matrix::from_fn(k.clone(), 1, 5, |_, j| k.from_i64(j as i64 + 1));
+        let sys = StateSpace::new(
+            a,
+            u.try_mul(&b0).unwrap(),
+            c0.try_mul(&ui).unwrap(),
+            Matrix::zeros(k.clone(), 1, 1),
+        )
+        .unwrap();
+        let (stages, restricted) = check_qp(&sys);
+        if case == 0 {
+            assert_eq!((stages, restricted), ([5, 5, 5], 2));
+        } else {
+            assert_eq!((stages, restricted), ([5, 3, 3], 1));
+        }
+    }
+}

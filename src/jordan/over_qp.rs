@@ -14,10 +14,13 @@
 //! distinct); the resultant in $x$ of every pair of factors (distinct eigenvalues stay
 //! distinct). The eliminations of the components add their pivots.
 
-use super::primary::Component;
+use super::primary::{Component, Restriction, restriction_of};
+use crate::algebraic::Ext;
 use crate::error::{Error, Result};
 use crate::matrix::Matrix;
+use crate::matrix::nullspace_from_rref;
 use crate::matrix::params::charpoly_ratfunc;
+use crate::matrix::params::rref_params;
 use crate::mpoly::factor::cmp_poly;
 use crate::mpoly::resultant::{discriminant, resultant};
 use crate::mpoly::{MAX_VARS, MPoly, factor};
@@ -154,6 +157,62 @@ pub fn components_qp(
         .map(|f| Component::compute(a, &f.monic, f.multiplicity, None, vec![], true))
         .collect::<Result<Vec<_>>>()?;
     Ok((cp, comps))
+}
+
+/// The component of a simple factor `g` (multiplicity 1) as its primary block over
+/// $\mathbb{Q}(p)$, without chains over $E$: the restriction $A_g$ of $A$ to $\ker g(A)$
+/// ($u$ its canonical basis, $A u = u A_g$) and the projector $P$ along $\operatorname{im}
+/// g(A)$ ($P u = I$, $P A = A_g P$); both null spaces from the fraction-free RREF
+/// ([`rref_params`], no gcd per operation). No restriction when $\deg g = n$ ($A$ itself).
+/// A minimal realization needs nothing more: $(A_g, P B, C u)$ is the component's part of
+/// $C (sI - A)^{-1} B$, minimal as soon as $P B \ne 0$ and $C u \ne 0$ ($g$ irreducible: the
+/// only invariant subspaces of $A_g$ are $0$ and everything).
+///
+/// # Errors
+/// `Verification` when a null space does not have dimension $\deg g$.
+pub fn simple_primary_component(
+    a: &Matrix<RatFuncField>,
+    g: &Poly<RatFuncField>,
+) -> Result<Component<RatFuncField>> {
+    let (n, d) = (a.nrows(), g.deg());
+    let restriction = if d < n {
+        let ga = a.eval_poly(&g.monic())?;
+        let null = |m: &Matrix<RatFuncField>| {
+            let (r, piv) = rref_params(m);
+            nullspace_from_rref(&r, &piv)
+        };
+        let (u, l) = (null(&ga), null(&ga.transpose()));
+        if u.ncols() != d || l.ncols() != d {
+            return Err(Error::Verification(format!(
+                "jordan over QQ(p): dim ker g(A) = {} (left {}), expected {d}",
+                u.ncols(),
+                l.ncols()
+            )));
+        }
+        let ap = restriction_of(a, &u)?;
+        let lt = l.transpose();
+        let proj = lt.try_mul(&u)?.inverse()?.try_mul(&lt)?;
+        Some(Restriction {
+            u,
+            ap,
+            proj: Some(proj),
+        })
+    } else {
+        None
+    };
+    let field = Ext::with_var(g, (0.0, 0.0), "t");
+    Ok(Component {
+        factor: g.clone(),
+        minpoly: None,
+        multiplicity: 1,
+        roots: vec![],
+        blocks: vec![1],
+        kernel_dims: vec![1],
+        chains: Matrix::zeros(field.clone(), n, 0),
+        left_chains: Matrix::zeros(field.clone(), 0, n),
+        field,
+        restriction,
+    })
 }
 
 /// The real Jordan form over $\mathbb{Q}(p)$: eigenvalues in $\mathbb{Q}(p)$ with their

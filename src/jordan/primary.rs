@@ -142,11 +142,77 @@ pub(crate) fn rational_field() -> NumberField {
 pub struct Restriction<F: Field> {
     pub u: Matrix<F>,
     pub ap: Matrix<F>,
-    pub proj: Matrix<F>,
+    /// `None` when only $u$ and $A_p$ were asked for (the primary form needs no projector:
+    /// the left null space is a second elimination of $p(A)^m$, half the cost over
+    /// $\mathbb{Q}(p)$).
+    pub proj: Option<Matrix<F>>,
+}
+
+impl<F: Field> Restriction<F> {
+    /// The projector (`proj u = I`).
+    ///
+    /// # Errors
+    /// `Verification` when the restriction was computed without it.
+    pub fn projector(&self) -> Result<&Matrix<F>> {
+        self.proj.as_ref().ok_or_else(|| {
+            crate::error::Error::Verification("restriction computed without its projector".into())
+        })
+    }
+}
+
+/// $p(A)^m$ for a monic `p`: $p(A)$ by Horner, then its $m$-th power.
+fn power_of_poly_at<F: Field>(a: &Matrix<F>, p: &Poly<F>, m: usize) -> Matrix<F> {
+    let (n, k) = (a.nrows(), a.field());
+    let mut pa = Matrix::identity(k.clone(), n);
+    for i in (0..p.deg()).rev() {
+        let c = Matrix::identity(k.clone(), n).scale(&p.coeff(i));
+        pa = mul(a, &pa).try_add(&c).expect("same shape");
+    }
+    let mut pm = pa.clone();
+    for _ in 1..m {
+        pm = mul(&pm, &pa);
+    }
+    pm
+}
+
+/// The rows $r_j$ with $u_{r_j} = e_j^T$, one per column (a canonical null-space basis has
+/// them at the non-pivot columns of the RREF); `None` when some column has none.
+fn unit_rows<F: Field>(u: &Matrix<F>) -> Option<Vec<usize>> {
+    let k = u.field();
+    let mut rows = vec![None; u.ncols()];
+    for i in 0..u.nrows() {
+        let nz: Vec<usize> = (0..u.ncols())
+            .filter(|&j| !k.is_zero(u.get(i, j)))
+            .collect();
+        if let [j] = nz[..]
+            && k.is_one(u.get(i, j))
+            && rows[j].is_none()
+        {
+            rows[j] = Some(i);
+        }
+    }
+    rows.into_iter().collect()
+}
+
+/// $A_p$ with $A u = u A_p$ for `u` of full column rank spanning an $A$-invariant space: the
+/// unit rows of $A u$ when `u` has them ([`unit_rows`]; no elimination), else by solving;
+/// $u A_p = A u$ checked exactly.
+///
+/// # Errors
+/// `Verification` when the span of `u` is not invariant.
+pub(crate) fn restriction_of<F: Field>(a: &Matrix<F>, u: &Matrix<F>) -> Result<Matrix<F>> {
+    let au = mul(a, u);
+    let ap = match unit_rows(u) {
+        Some(rows) => Some(au.select_rows(&rows)).filter(|ap| mul(u, ap) == au),
+        None => u.solve(&au)?.map(|(ap, _)| ap),
+    };
+    ap.ok_or_else(|| {
+        crate::error::Error::Verification("the generalized eigenspace is not invariant".into())
+    })
 }
 
 /// [`Restriction`] of `a` to the factor `p` of multiplicity `m` (always computed when `always`,
-/// else only when it is smaller than `a` and $n \ge 8$).
+/// else only when it is smaller than `a` and $n \ge 8$); the projector only when `with_proj`.
 ///
 /// Chains of $A_p$ over $E$ give those of $A$: $A (u V_p) = (u V_p) J$ and
 /// $(W_p\,\mathrm{proj}) A = J\,(W_p\,\mathrm{proj})$, $(W_p \mathrm{proj})(u V_p) = W_p V_p = I$.
@@ -161,38 +227,35 @@ pub(crate) fn restrict<F: Field>(
     p: &Poly<F>,
     m: usize,
     always: bool,
+    with_proj: bool,
 ) -> Result<Option<Restriction<F>>> {
     let n = a.nrows();
-    let k = a.field();
     let dm = p.deg() * m;
     if dm >= n || (!always && n < 8) {
         return Ok(None);
     }
-    // p(A) by Horner, then its m-th power
     let p = p.monic();
-    let mut pa = Matrix::identity(k.clone(), n);
-    for i in (0..p.deg()).rev() {
-        pa = mul(a, &pa).try_add(&Matrix::identity(k.clone(), n).scale(&p.coeff(i)))?;
-    }
-    let mut pm = pa.clone();
-    for _ in 1..m {
-        pm = mul(&pm, &pa);
-    }
+    let pm = power_of_poly_at(a, &p, m);
     let u = pm.nullspace();
-    let l = pm.transpose().nullspace();
-    if u.ncols() != dm || l.ncols() != dm {
-        return Err(crate::error::Error::Verification(format!(
-            "ker p(A)^{m} has dimension {} for p = {p} of multiplicity {m}",
-            u.ncols()
-        )));
-    }
-    let Some((ap, _)) = u.solve(&mul(a, &u))? else {
-        return Err(crate::error::Error::Verification(
-            "the generalized eigenspace is not invariant".into(),
-        ));
+    let dim_error = |d: usize| {
+        crate::error::Error::Verification(format!(
+            "ker p(A)^{m} has dimension {d} for p = {p} of multiplicity {m}"
+        ))
     };
-    let lt = l.transpose();
-    let proj = mul(&mul(&lt, &u).inverse()?, &lt);
+    if u.ncols() != dm {
+        return Err(dim_error(u.ncols()));
+    }
+    let ap = restriction_of(a, &u)?;
+    let proj = if with_proj {
+        let l = pm.transpose().nullspace();
+        if l.ncols() != dm {
+            return Err(dim_error(l.ncols()));
+        }
+        let lt = l.transpose();
+        Some(mul(&mul(&lt, &u).inverse()?, &lt))
+    } else {
+        None
+    };
     Ok(Some(Restriction { u, ap, proj }))
 }
 
@@ -239,7 +302,7 @@ impl<F: Field + 'static> Component<F> {
             });
         }
         let t = field.generator();
-        let restriction = restrict(a, factor, mult, always_restrict)?;
+        let restriction = restrict(a, factor, mult, always_restrict, true)?;
         if mult == 1 {
             // a simple factor: Krylov chains of A_p (or of A = A_p), no elimination over E
             let (ap, chi) = match &restriction {
@@ -248,7 +311,7 @@ impl<F: Field + 'static> Component<F> {
             };
             let (v, w) = super::simple::simple_chains(ap, &chi, &field)?;
             let (v, w) = match &restriction {
-                Some(r) => (mul(&lift(&r.u), &v), mul(&w, &lift(&r.proj))),
+                Some(r) => (mul(&lift(&r.u), &v), mul(&w, &lift(r.projector()?))),
                 None => (v, w),
             };
             return Ok(Component {
@@ -274,7 +337,7 @@ impl<F: Field + 'static> Component<F> {
                     ch.blocks,
                     ch.kernel_dims,
                     mul(&lift(&r.u), &ch.v),
-                    mul(&ch.w, &lift(&r.proj)),
+                    mul(&ch.w, &lift(r.projector()?)),
                 )
             }
             None => {
@@ -327,7 +390,7 @@ impl<F: Field + 'static> super::JordanForm<F> {
             }
             let r = match &c.restriction {
                 Some(r) => Some(r.clone()),
-                None => restrict(a, &c.factor, c.multiplicity, true)?,
+                None => restrict(a, &c.factor, c.multiplicity, true, false)?,
             };
             match r {
                 Some(r) => {

@@ -33,12 +33,12 @@
 
 use super::JordanForm;
 use super::over_qp::charpoly_factors;
-use super::primary::Component;
+use super::primary::{Component, Restriction};
 use crate::algebraic::Ext;
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, Rational};
-use crate::matrix::Matrix;
 use crate::matrix::params::rref_params;
+use crate::matrix::{Matrix, nullspace_from_rref};
 use crate::mpoly::MPoly;
 use crate::mpoly::gcd::lcm;
 use crate::poly::Poly;
@@ -128,7 +128,8 @@ pub fn jordan_qp(a_in: &Matrix<RatFuncField>) -> Result<JordanForm<RatFuncField>
 
 /// The component of an irreducible factor `g` of degree $d \ge 2$ and multiplicity `e` in its
 /// primary-block presentation: the restriction of $A$ to $\ker g(A)^e$ over $\mathbb{Q}(p)$
-/// ([`super::primary::restrict`]; $A$ itself when that is the whole space) and the block sizes
+/// (the canonical basis of $\ker g(A)^e$ from the RREF that gave its dimension, $A_g$ from its
+/// unit rows; $A$ itself when that is the whole space) and the block sizes
 /// of each root from $\dim \ker g(A)^k$ (blocks of size $\ge k$: $(\dim_k - \dim_{k-1})/d$),
 /// without chains over $E$ ([`Component::has_chains`]: their normalisation $W V = I$ inverts
 /// elements of $E$ whose coefficients are large; [`Component::compute`] makes them).
@@ -144,14 +145,14 @@ fn primary_component(
     let ga = a.eval_poly(g)?;
     let mut pw = ga.clone();
     let mut dims = vec![];
-    loop {
-        let (_, piv) = rref_params(&pw);
+    let top = loop {
+        let (r, piv) = rref_params(&pw);
         dims.push(n - piv.len());
         if n - piv.len() >= d * e || dims.len() > e {
-            break;
+            break (r, piv);
         }
         pw = pw.try_mul(&ga)?;
-    }
+    };
     if dims.last() != Some(&(d * e)) {
         return Err(Error::Verification(format!(
             "jordan over QQ(p): dim ker f(A)^{e} = {:?}, expected {}",
@@ -159,7 +160,14 @@ fn primary_component(
             d * e
         )));
     }
-    let restriction = super::primary::restrict(a, g, e, true)?;
+    // the canonical basis of ker g(A)^e from the RREF just made (no second elimination)
+    let restriction = (d * e < n)
+        .then(|| -> Result<Restriction<RatFuncField>> {
+            let u = nullspace_from_rref(&top.0, &top.1);
+            let ap = super::primary::restriction_of(a, &u)?;
+            Ok(Restriction { u, ap, proj: None })
+        })
+        .transpose()?;
     let field = Ext::with_var(g, (0.0, 0.0), "t");
     Ok(Component {
         factor: g.clone(),

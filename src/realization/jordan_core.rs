@@ -110,7 +110,7 @@ pub(super) fn base_times<F: Field>(c: &Matrix<F>, v: &Matrix<Ext<F>>) -> Matrix<
 
 /// Steps 1-3 of the module docs for one component; `stage1` counts the states kept by
 /// step 2 (times the degree of the factor).
-fn compact_component<F: Field + 'static>(
+pub(super) fn compact_component<F: Field + 'static>(
     sys: &StateSpace<F>,
     ci: usize,
     comp: &Component<F>,

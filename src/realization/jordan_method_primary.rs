@@ -14,12 +14,22 @@
 //! over $F$ is minimal of the same order $\sum_g r_g d_g$. For $d = 1$ it is the Jordan block
 //! itself.
 //!
+//! A simple factor ($e = 1$) of degree $d \ge 2$ needs no chains over $E$ (over
+//! $\mathbb{Q}(p)$ their normalisation $W V = I$ inverts elements of $E$ whose coefficients
+//! are huge rational functions: > 300 s on the 7-symbol yaw plane): its block is the
+//! restriction $(A_g, P B, C u)$ ($u$ a basis of $\ker g(A)$, $A u = u A_g$, $P$ the
+//! projector along $\operatorname{im} g(A)$), kept when $P B \ne 0$ and $C u \ne 0$ ($g$
+//! irreducible: then it is controllable and observable), $d$ states
+//! ([`crate::jordan::over_qp::simple_primary_component`], used by [`minimal_jordan_qp`]).
+//!
 //! # Verification
-//! Exact, over $F$: the trace identity of the compaction, the order equals the McMillan
-//! degree, and the realization's own Markov parameters $C_F A_F^k B_F$ equal $C A^k B$ for
-//! $k < n + r$ (with the feedthrough $D$ unchanged).
+//! Exact, over $F$: the order equals the McMillan degree, and the realization's own Markov
+//! parameters $C_F A_F^k B_F$ equal $C A^k B$ for $k < n + r$ (with the feedthrough $D$
+//! unchanged; for the regular-representation blocks this is the trace identity
+//! $\sum_g \mathrm{Tr}_{E/F}(C_g J_g^k B_g) = C A^k B$).
 
-use super::jordan_core::{Compact, Compacted, compact_components, trace_shifted};
+use super::controllability::mcmillan_degree;
+use super::jordan_core::{Compact, compact_component, trace_shifted};
 use crate::algebraic::{Ext, ExtElem};
 use crate::error::Result;
 use crate::field::Field;
@@ -41,8 +51,16 @@ pub struct PrimaryBlock<F: Field> {
     pub offset: usize,
     pub order: usize,
     /// $(J, B, C)$ over $E$ (marked as the component's field) before the regular
-    /// representation.
+    /// representation ($0 \times 0$ for a simple factor's restriction block).
     pub modal: [Matrix<Ext<F>>; 3],
+}
+
+impl<F: Field> PrimaryBlock<F> {
+    /// The block is a simple factor's restriction $(A_g, P B, C u)$ (module docs), not a
+    /// regular representation.
+    pub fn is_restriction(&self) -> bool {
+        self.modal[0].nrows() == 0
+    }
 }
 
 /// The Jordan-method minimal realization over $F$ (module docs).
@@ -118,7 +136,33 @@ fn regular_representation<F: Field>(
     (a, b, cf)
 }
 
-/// The Jordan-method minimal realization over $F$ from the components of $A$ (module docs).
+/// One retained block over $F$: its Jordan block sizes, $(J, B, C)$ over $E$ (empty for a
+/// restriction block) and $(A_F, B_F, C_F)$.
+type Part<F> = (Vec<usize>, [Matrix<Ext<F>>; 3], [Matrix<F>; 3]);
+
+/// The block of a simple component given by its restriction (no chains over $E$,
+/// [`crate::jordan::over_qp::simple_primary_component`]): $(A_g, P B, C u)$, or `None` when
+/// $P B = 0$ or $C u = 0$ (the roots of $g$ are not excited or not observed).
+fn restriction_part<F: Field>(sys: &StateSpace<F>, comp: &Component<F>) -> Result<Option<Part<F>>> {
+    let (a, b, c) = match &comp.restriction {
+        Some(r) => (
+            r.ap.clone(),
+            r.projector()?.try_mul(&sys.b)?,
+            sys.c.try_mul(&r.u)?,
+        ),
+        None => (sys.a.clone(), sys.b.clone(), sys.c.clone()),
+    };
+    if b.is_zero() || c.is_zero() {
+        return Ok(None);
+    }
+    let e = &comp.field;
+    let empty = || Matrix::zeros(e.clone(), 0, 0);
+    Ok(Some((vec![1], [empty(), empty(), empty()], [a, b, c])))
+}
+
+/// The Jordan-method minimal realization over $F$ from the components of $A$ (module docs):
+/// a component with chains over $E$ compacted and written by the regular representation, a
+/// simple component without chains by its restriction ([`restriction_part`]).
 ///
 /// # Errors
 /// Those of the Kalman decomposition in the compaction.
@@ -126,26 +170,34 @@ pub fn minimal_jordan_primary<F: Field + 'static>(
     sys: &StateSpace<F>,
     components: Vec<Component<F>>,
 ) -> Result<PrimaryJordanMinimal<F>> {
-    let Compacted {
-        comps,
-        stages,
-        mcmillan_degree,
-        markov,
-        mut verified,
-    } = compact_components(sys, &components)?;
+    let n = sys.nstates();
     let k = sys.a.field().clone();
+    let mut stage1 = 0;
+    let mut parts: Vec<(usize, Part<F>)> = vec![];
+    for (ci, comp) in components.iter().enumerate() {
+        let part = if comp.has_chains() {
+            compact_component(sys, ci, comp, &mut stage1)?.map(|c| {
+                let (a, b, cf) = regular_representation(&c, comp);
+                (c.blocks, [c.a, c.b, c.c], [a, b, cf])
+            })
+        } else {
+            let p = restriction_part(sys, comp)?;
+            stage1 += p.as_ref().map_or(0, |p| p.2[0].nrows());
+            p
+        };
+        parts.extend(part.map(|p| (ci, p)));
+    }
     let (mut aa, mut bb, mut cc) = (vec![], vec![], vec![]);
     let mut blocks = vec![];
     let mut offset = 0;
-    for c in &comps {
-        let (a, b, cf) = regular_representation(c, &components[c.comp]);
+    for (ci, (sizes, modal, [a, b, cf])) in parts {
         let order = a.nrows();
         blocks.push(PrimaryBlock {
-            component: c.comp,
-            blocks: c.blocks.clone(),
+            component: ci,
+            blocks: sizes,
             offset,
             order,
-            modal: [c.a.clone(), c.b.clone(), c.c.clone()],
+            modal,
         });
         offset += order;
         aa.push(a);
@@ -162,9 +214,11 @@ pub fn minimal_jordan_primary<F: Field + 'static>(
         off += bi.nrows();
     }
     let system = StateSpace::new(a, b, c, sys.d.clone())?;
-    verified &= system.markov(markov.len()) == markov && system.nstates() == mcmillan_degree;
+    let mcmillan_degree = mcmillan_degree(sys);
+    let kmax = n + offset;
+    let verified = system.markov(kmax) == sys.markov(kmax) && system.nstates() == mcmillan_degree;
     Ok(PrimaryJordanMinimal {
-        stages,
+        stages: [n, stage1, offset],
         components,
         blocks,
         system,
@@ -173,15 +227,30 @@ pub fn minimal_jordan_primary<F: Field + 'static>(
     })
 }
 
-/// The Jordan-method minimal realization over $\mathbb{Q}(p)$: components from
-/// [`crate::jordan::over_qp::components_qp`] (their conditions recorded in `sys`'s field),
-/// then [`minimal_jordan_primary`].
+/// The Jordan-method minimal realization over $\mathbb{Q}(p)$: the factors of
+/// [`crate::jordan::over_qp::charpoly_factors`] (their conditions recorded in `sys`'s field),
+/// a simple factor of degree $\ge 2$ by its restriction
+/// ([`crate::jordan::over_qp::simple_primary_component`]), every other one by
+/// [`Component::compute`] (chains over $\mathbb{Q}(p)$ or $E$), then
+/// [`minimal_jordan_primary`].
 ///
 /// # Errors
 /// Those of the decomposition over $\mathbb{Q}(p)$ and of the compaction.
 pub fn minimal_jordan_qp(
     sys: &StateSpace<RatFuncField>,
 ) -> Result<PrimaryJordanMinimal<RatFuncField>> {
-    let (_, comps) = crate::jordan::over_qp::components_qp(&sys.a)?;
+    let a = &sys.a;
+    let cp = crate::jordan::over_qp::charpoly_factors(a)?;
+    let comps = cp
+        .factors
+        .iter()
+        .map(|f| {
+            if f.monic.deg() >= 2 && f.multiplicity == 1 {
+                crate::jordan::over_qp::simple_primary_component(a, &f.monic)
+            } else {
+                Component::compute(a, &f.monic, f.multiplicity, None, vec![], true)
+            }
+        })
+        .collect::<Result<Vec<_>>>()?;
     minimal_jordan_primary(sys, comps)
 }

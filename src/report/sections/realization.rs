@@ -365,6 +365,13 @@ impl<F: Field> PrimaryJordanMinimal<F> {
                         k.fmt_elem(&theta),
                         sizes.join(", ")
                     )
+                } else if b.is_restriction() {
+                    format!(
+                        "roots of {} (Jordan blocks {} per root; primary block, the \
+                         restriction of A to ker g(A)): {states}",
+                        g.to_string_var("s"),
+                        sizes.join(", ")
+                    )
                 } else {
                     format!(
                         "roots of {} (Jordan blocks {} per root; primary block, regular \
