@@ -25,6 +25,8 @@ pub(crate) mod quadratic;
 pub use complex::{ComplexField, ComplexPair};
 pub mod expr;
 pub(crate) mod rational;
+pub mod value;
+pub use value::{ElemValue, Generator};
 
 /// $x^e$ by repeated squaring from `one` ($x^0 = $ `one`), `mul` the product: at most
 /// $2 \log_2 e$ products. Serves scalars, polynomials and matrices alike.
@@ -88,6 +90,11 @@ pub trait Field: Clone + PartialEq + fmt::Debug + fmt::Display + Send + Sync {
     /// LaTeX display of an element.
     fn latex_elem(&self, a: &Self::Elem) -> String {
         self.fmt_elem(a)
+    }
+    /// The element as a structured value ([`value`]: no display text); `None` only for a
+    /// field that does not describe its elements (the default describes rational ones).
+    fn elem_value(&self, a: &Self::Elem) -> Option<ElemValue> {
+        value::rational_or_none(self, a)
     }
     /// Floating-point approximation `(re, im)` under the field's marked embedding; `None`
     /// for a field without one (e.g. a field of rational functions in symbols).
