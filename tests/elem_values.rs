@@ -26,12 +26,18 @@ fn rationals_and_quadratic_elements_are_their_parts() {
     for d in [2i64, -1, 5] {
         let k = QuadraticField::new(d).unwrap();
         for _ in 0..50 {
-            let x = k.add(&k.from_rational(&rat(&mut g)), &k.mul(&k.from_rational(&rat(&mut g)), &k.gen_elem()));
+            let x = k.add(
+                &k.from_rational(&rat(&mut g)),
+                &k.mul(&k.from_rational(&rat(&mut g)), &k.gen_elem()),
+            );
             let Some(ElemValue::Quadratic { a, b, d: dd }) = k.elem_value(&x) else {
                 panic!("a quadratic value")
             };
             assert_eq!(dd, d.into());
-            let back = k.add(&k.from_rational(&a), &k.mul(&k.from_rational(&b), &k.gen_elem()));
+            let back = k.add(
+                &k.from_rational(&a),
+                &k.mul(&k.from_rational(&b), &k.gen_elem()),
+            );
             assert_eq!(back, x);
         }
     }
@@ -41,7 +47,13 @@ fn rationals_and_quadratic_elements_are_their_parts() {
 
 #[test]
 fn number_field_elements_are_polynomials_in_the_marked_root() {
-    let m = Poly::new(Q, [-2, 0, 0, 1].iter().map(|&c| Rational::from_integer(c.into())).collect());
+    let m = Poly::new(
+        Q,
+        [-2, 0, 0, 1]
+            .iter()
+            .map(|&c| Rational::from_integer(c.into()))
+            .collect(),
+    );
     let k = NumberField::new(&m, (1.26, 0.0)).unwrap();
     let mut g = SplitMix64(7);
     for _ in 0..50 {
@@ -67,7 +79,10 @@ fn rational_functions_are_their_terms() {
     for _ in 0..40 {
         let mut x = k.zero();
         for _ in 0..3 {
-            let mono = k.mul(&k.from_rational(&rat(&mut g)), &k.mul(&k.var(0), &k.var(g.int(0, 1) as usize)));
+            let mono = k.mul(
+                &k.from_rational(&rat(&mut g)),
+                &k.mul(&k.var(0), &k.var(g.int(0, 1) as usize)),
+            );
             x = k.add(&x, &mono);
         }
         let den = k.add(&k.var(1), &k.from_rational(&rat(&mut g)));

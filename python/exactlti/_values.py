@@ -84,7 +84,7 @@ def _root_of(sympy, coeffs, approx=None, box=None):
     """The root of the polynomial with coefficients ``coeffs`` (SymPy numbers, low degree
     first) marked by ``box`` or ``approx``: rational, radicals for degree 2, else
     ``CRootOf``."""
-    x = sympy.Dummy("x")
+    x = sympy.Symbol("x")
     if len(coeffs) == 2:
         return -coeffs[0] / coeffs[1]
     poly = sympy.Poly(list(reversed(coeffs)), x)
@@ -121,7 +121,7 @@ class _Ctx:
         if radical is not None:
             a0, s, f = radical
             g = _rational(sympy, a0) + _rational(sympy, s) * sympy.sqrt(f)
-        elif len(modulus) > 2 and self.keep_symbols:
+        elif len(modulus) > 3 and self.keep_symbols:
             g = sympy.Symbol(name)
         else:
             g = _root_of(sympy, [self.value(c) for c in modulus], approx=root)

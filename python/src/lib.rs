@@ -580,7 +580,12 @@ impl System {
             }
         };
         let (n, m, p) = self.shape();
-        let signals = exactlti::io::SignalNames { inputs, outputs, states: None, dt };
+        let signals = exactlti::io::SignalNames {
+            inputs,
+            outputs,
+            states: None,
+            dt,
+        };
         signals
             .check(&self.api.path().display().to_string(), n, m, p)
             .map_err(|e| PyValueError::new_err(e.to_string()))?;
@@ -602,7 +607,10 @@ impl System {
         let s = run(py, max_seconds, move || {
             let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
             let exactlti::api::Command::Interconnect(c) = cmd else {
-                return Err(Fail::Input(format!("{}: not an interconnection", args.join(" "))));
+                return Err(Fail::Input(format!(
+                    "{}: not an interconnection",
+                    args.join(" ")
+                )));
             };
             let refs: Vec<&exactlti::api::System> = all.iter().map(|s| s.as_ref()).collect();
             Ok(exactlti::api::interconnect_system(&c, &refs)?)

@@ -3,9 +3,9 @@
 use crate::out::*;
 use crate::values::{Grid, elem, part, values_of, zero};
 use crate::{FResult, Fail};
-use exactlti::jordan::{EigenField, JordanForm, RealEntries, RealJordanForm};
 use exactlti::field::Field;
 use exactlti::io::TypedSystem as Typed;
+use exactlti::jordan::{EigenField, JordanForm, RealEntries, RealJordanForm};
 use exactlti::matrix::Matrix;
 use exactlti::realization::{self, MinrealMethod};
 use exactlti::system::StateSpace;
@@ -118,10 +118,7 @@ pub(crate) fn tf_typed<K: Field>(t: &Typed<K>, domain: Domain) -> FResult<Out> {
 }
 
 /// [`tf_typed`]'s items and the minimal realization's `A` (for the pole polynomial).
-pub(crate) fn tf_parts<K: Field>(
-    s: &StateSpace<K>,
-    domain: Domain,
-) -> FResult<(Items, Matrix<K>)> {
+pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>, domain: Domain) -> FResult<(Items, Matrix<K>)> {
     let var = domain.var();
     let g = s.transfer_matrix()?;
     let min = realization::minimal(s, MinrealMethod::Kalman)?;
@@ -171,7 +168,12 @@ pub(crate) fn balred_typed<K: Field>(t: &Typed<K>, order: usize) -> FResult<Out>
         ("D", rows(&r.d)),
         (
             "hankel_singular_values",
-            Out::List(r.hankel_singular_values.iter().map(|x| Out::Float(*x)).collect()),
+            Out::List(
+                r.hankel_singular_values
+                    .iter()
+                    .map(|x| Out::Float(*x))
+                    .collect(),
+            ),
         ),
         ("error_bound", Out::Float(r.error_bound)),
     ]))
@@ -249,7 +251,10 @@ pub(crate) fn jordan_out<F: EigenField>(jf: &JordanForm<F>, real: bool) -> FResu
                 Out::Dict(vec![
                     ("minpoly", poly(&e.minpoly)),
                     ("box", Out::Tuple(vec![pair(&rl, &rh), pair(&il, &ih)])),
-                    ("value", Out::Str(exactlti::report::sections::eigenvalue_text(e))),
+                    (
+                        "value",
+                        Out::Str(exactlti::report::sections::eigenvalue_text(e)),
+                    ),
                     (
                         "approx",
                         Out::Tuple(vec![Out::Float(e.approx.0), Out::Float(e.approx.1)]),
@@ -594,9 +599,12 @@ fn modal_values<F: EigenField>(r: &realization::JordanMinimal<F>) -> Out {
                     RealModalBlock::Root(bk) => {
                         put_ext([&bk.a, &bk.b, &bk.c], off, [&mut a, &mut b, &mut c])
                     }
-                    RealModalBlock::Pair { a: pa, b: pb, c: pc, .. } => {
-                        put_ext([pa, pb, pc], off, [&mut a, &mut b, &mut c])
-                    }
+                    RealModalBlock::Pair {
+                        a: pa,
+                        b: pb,
+                        c: pc,
+                        ..
+                    } => put_ext([pa, pb, pc], off, [&mut a, &mut b, &mut c]),
                     RealModalBlock::Compact(bk) | RealModalBlock::Radical(bk) => {
                         put_compact(bk, off, [&mut a, &mut b, &mut c])
                     }

@@ -225,7 +225,10 @@ pub(crate) fn jordan(a: &Matrix<RatFuncField>) -> FResult<Out> {
                     "value_v",
                     value.as_ref().map(|v| elem(k, v)).unwrap_or(Out::None),
                 ),
-                ("factor_terms", terms(&exactlti::jordan::qp_form::integral(&c.factor))),
+                (
+                    "factor_terms",
+                    terms(&exactlti::jordan::qp_form::integral(&c.factor)),
+                ),
                 (
                     "factor",
                     Out::Str(exactlti::jordan::qp_form::integral(&c.factor).to_string_vars(&var)),

@@ -41,7 +41,10 @@ pub(crate) fn value(v: &ElemValue) -> Out {
         ElemValue::Complex { re, im } => {
             Out::Tuple(vec![Out::Str("i".into()), value(re), value(im)])
         }
-        ElemValue::Ext { coeffs, generator: g } => Out::Tuple(vec![
+        ElemValue::Ext {
+            coeffs,
+            generator: g,
+        } => Out::Tuple(vec![
             Out::Str("ext".into()),
             Out::List(coeffs.iter().map(value).collect()),
             Out::Tuple(vec![
@@ -103,11 +106,7 @@ pub(crate) struct Grid(pub Vec<Vec<Out>>);
 
 impl Grid {
     pub(crate) fn zeros(n: usize, m: usize) -> Self {
-        Grid(
-            (0..n)
-                .map(|_| (0..m).map(|_| zero()).collect())
-                .collect(),
-        )
+        Grid((0..n).map(|_| (0..m).map(|_| zero()).collect()).collect())
     }
     /// Writes the values of `b` with its top-left corner at `at`.
     pub(crate) fn block<K: Field>(&mut self, at: (usize, usize), b: &Matrix<K>) {

@@ -43,7 +43,7 @@ def test_sqrt2_eigenvalues_are_exactly_sqrt2():
     assert zero(A * T - T * J) and sympy.simplify(T.det()) != 0
     # every entry of J, T lies in Q(sqrt 2): a + b*sqrt(2) with rational a, b
     for x in list(J) + list(T):
-        a, b = sympy.expand(x).as_independent(s2)
+        a, b = sympy.expand(x).as_independent(s2, as_Add=True)
         assert a.is_Rational and (b == 0 or (b / s2).is_Rational)
     p = exactlti.ss([[0, 2], [1, 0]]).poles()
     assert [x.to_sympy() for x in p] == [-s2, s2]
@@ -52,6 +52,7 @@ def test_sqrt2_eigenvalues_are_exactly_sqrt2():
 def test_complex_and_cubic_jordan_values():
     r = exactlti.jordan([[-2, 0, 0], [0, 0, 1], [0, -2, -2]])
     assert r.J.to_sympy() == sympy.diag(-2, -1 + sympy.I, -1 - sympy.I)
+    assert r.check()  # the keep-symbols form: i stays I (degree 2 is a closed form)
     assert zero(r.A.to_sympy() * r.T.to_sympy() - r.T.to_sympy() * r.J.to_sympy())
     # x^3 - 2: one real root and a complex pair, each a CRootOf of the same polynomial
     c = exactlti.jordan([[0, 0, 2], [1, 0, 0], [0, 1, 0]])
@@ -69,15 +70,18 @@ def test_jordan_over_q_sqrt2_entries_through_the_api():
     # A over Q(sqrt 2) with irrational entries: the api's field choice (as the command line)
     G = exactlti.ss([["sqrt(2)", 1], [0, "sqrt(2)"]], [[0], [1]], [[1, 0]])
     assert G.field.startswith("QQ(sqrt")
-    r = G.jordan()
     s2 = sympy.sqrt(2)
-    assert r.verified
-    assert r.J.to_sympy() == sympy.Matrix([[s2, 1], [0, s2]])
-    A, T = G.A.to_sympy(), r.T.to_sympy()
-    assert zero(A * T - T * r.J.to_sympy())
-    assert G.A.to_sympy() == sympy.Matrix([[s2, 1], [0, s2]])
-    cli = G.run("jordan")
-    assert cli.to_sympy("J") == r.J.to_sympy()
+    A = G.A.to_sympy()
+    assert A == sympy.Matrix([[s2, 1], [0, s2]])
+    # the command's report: J and T built from the values beside its JSON
+    rep = G.jordan()
+    J, T = rep.to_sympy("J"), rep.to_sympy("T")
+    assert rep.verified and J == sympy.Matrix([[s2, 1], [0, s2]])
+    assert zero(A * T - T * J) and T.det() != 0
+    # the binding's own Jordan form goes through the same api entry points
+    r = exactlti.JordanResult(G._core.jordan(False, None))
+    assert r.verified and r.J.to_sympy() == J
+    assert [e.to_sympy() for e in r.eigenvalues] == [s2]
 
 
 def test_symbolic_tf_numerator_equals_the_independent_expression():

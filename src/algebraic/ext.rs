@@ -402,7 +402,11 @@ impl<F: Field> Field for Ext<F> {
     }
     fn elem_value(&self, a: &Self::Elem) -> Option<crate::field::ElemValue> {
         let k = &self.0.base;
-        let vals = |c: &[F::Elem]| c.iter().map(|x| k.elem_value(x)).collect::<Option<Vec<_>>>();
+        let vals = |c: &[F::Elem]| {
+            c.iter()
+                .map(|x| k.elem_value(x))
+                .collect::<Option<Vec<_>>>()
+        };
         Some(crate::field::ElemValue::Ext {
             coeffs: vals(&a.0)?,
             generator: Box::new(crate::field::Generator {

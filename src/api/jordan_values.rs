@@ -73,7 +73,10 @@ pub trait EigenVisitor {
 /// Runs `v` on `a` over the field its Jordan form is computed in: $\mathbb{Q}$, or
 /// $\mathbb{Q}(\sqrt d)$ ($\mathbb{Q}(i)$) unless every entry is rational (then over
 /// $\mathbb{Q}$); `None` over any other field (no exact Jordan decomposition).
-pub fn on_eigen_field<K: Field + 'static, V: EigenVisitor>(a: &Matrix<K>, v: V) -> Option<V::Output> {
+pub fn on_eigen_field<K: Field + 'static, V: EigenVisitor>(
+    a: &Matrix<K>,
+    v: V,
+) -> Option<V::Output> {
     let any = a as &dyn std::any::Any;
     if let Some(q) = any.downcast_ref::<Matrix<Q>>() {
         return Some(v.visit(q));

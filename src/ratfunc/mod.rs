@@ -69,7 +69,10 @@ impl RatFunc {
 /// The terms of an integer polynomial as (exponent vector, coefficient) pairs
 /// ([`crate::field::value::Terms`]).
 pub fn exp_terms(p: &MPoly) -> crate::field::value::Terms {
-    p.terms().iter().map(|(m, c)| (p.exps(*m), c.clone())).collect()
+    p.terms()
+        .iter()
+        .map(|(m, c)| (p.exps(*m), c.clone()))
+        .collect()
 }
 
 struct Ctx {

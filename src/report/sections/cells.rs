@@ -15,7 +15,13 @@ impl Cells {
             exact: vec![vec!["0".to_string(); ncols]; nrows],
             latex: vec![vec!["0".to_string(); ncols]; nrows],
             approx: vec![vec![(0.0, 0.0); ncols]; nrows],
-            values: vec![vec![Some(crate::field::ElemValue::Rational(num_traits::Zero::zero())); ncols]; nrows],
+            values: vec![
+                vec![
+                    Some(crate::field::ElemValue::Rational(num_traits::Zero::zero()));
+                    ncols
+                ];
+                nrows
+            ],
             nrows,
             ncols,
         })
