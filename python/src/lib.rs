@@ -3,9 +3,16 @@
 //! Thin by design: systems are read by the library's own system-file reader (so a bad entry
 //! gives the command line's one-line message), every computation runs on a worker thread
 //! with the GIL released while this thread polls for Ctrl-C (`check_signals`) and for the
-//! `max_seconds` deadline, and results come back as plain dicts of exact data (rationals as
-//! integer pairs, other field elements as exact strings with their LaTeX and approximations)
-//! that the pure-Python layer (`python/exactlti/`) wraps in classes.
+//! `max_seconds` deadline, and results come back as plain dicts of exact data that the
+//! pure-Python layer (`python/exactlti/`) wraps in classes: every exact number as a VALUE
+//! (rationals as integer pairs, $a + b\sqrt d$, polynomials in a marked root, rational
+//! functions of the parameters as term lists, algebraic numbers by minimal polynomial and
+//! isolating box: the encoding is in [`values`]), its display text and LaTeX beside it only
+//! to be shown; Python builds SymPy from the values and parses no text.
+//!
+//! The choices of a command are the api's, not repeated here: which matrix `jordan`
+//! decomposes and over which field ([`exactlti::api::jordan_values`]), loading
+//! ([`exactlti::api::System`]), every command of the command line ([`exactlti::api::execute_on`]).
 #![allow(non_snake_case)]
 
 use exactlti::Error;
