@@ -49,6 +49,8 @@ mod discrete;
 mod discrete_text;
 #[path = "display.rs"]
 mod display;
+#[path = "elem_values.rs"]
+mod elem_values;
 #[path = "everyday.rs"]
 mod everyday;
 #[path = "failure_class.rs"]

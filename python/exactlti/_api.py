@@ -4,10 +4,12 @@ field the command line accepts (Q, Q(i), Q(sqrt d), Q(p1, ..., pk)).
 
 Each method returns a :class:`Report`: the command line's JSON report as Python values
 (a ``dict``; exact numbers as exact strings, every ``<key>_approx`` as floats), with
-``verified`` (its exact checks passed), ``field`` and ``conditions`` over Q(p).
+``verified`` (its exact checks passed), ``field`` and ``conditions`` over Q(p); its
+matrices' exact values come beside the JSON (``Report.to_sympy``), never parsed from it.
 """
 
 import json
+from fractions import Fraction
 
 from . import _core
 from ._display import Rendered
@@ -20,8 +22,9 @@ class Report(dict, Rendered):
     agrees with the exact one (``check``, ERA). ``title`` is the report's title.
     """
 
-    def __init__(self, data, verified, agree=True, op=None, rendered=None):
+    def __init__(self, data, verified, agree=True, op=None, rendered=None, values=None):
         super().__init__(data)
+        self._values = values or {}
         self._rendered = rendered
         self.verified = bool(verified)
         self.agree = bool(agree)
@@ -38,21 +41,33 @@ class Report(dict, Rendered):
         return list(self.get("conditions", []))
 
     def to_sympy(self, key):
-        """The exact matrix (list of rows) or number under ``key`` as SymPy (the exact text
-        of the report is valid input by design: ``sqrt(2)``, ``i``, ``-3/4``)."""
+        """The exact matrix under ``key`` as a ``sympy.Matrix``, built from the values the
+        library hands over with the report (``_values``), or the exact rational number
+        under ``key``; the report's text is for reading and is never parsed back."""
         import sympy
 
-        loc = {"i": sympy.I, "sqrt": sympy.sqrt}
+        from ._values import grid_to_sympy
 
-        def one(x):
-            return sympy.sympify(str(x).replace("^", "**"), locals=loc)
-
+        rows = self._values.get(key)
+        if rows is not None:
+            nrows = len(rows)
+            ncols = len(rows[0]) if nrows else 0
+            if any(v is None for r in rows for v in r):
+                raise TypeError(
+                    "%s: some entries are shown by text only (a compact real form)" % key
+                )
+            return sympy.Matrix(nrows, ncols, grid_to_sympy(rows))
         v = self[key]
-        if isinstance(v, list) and v and isinstance(v[0], list):
-            return sympy.Matrix([[one(x) for x in r] for r in v])
-        if isinstance(v, list):
-            return [one(x) for x in v]
-        return one(v)
+        if isinstance(v, int) and not isinstance(v, bool):
+            return sympy.Integer(v)
+        if isinstance(v, str):
+            try:
+                q = Fraction(v)  # a rational literal ("-3/4"), not an expression
+            except ValueError:
+                pass
+            else:
+                return sympy.Rational(q.numerator, q.denominator)
+        raise TypeError("%s: not an exact matrix or rational number of the report" % key)
 
     def to_numpy(self, key):
         """The approximation of the matrix or list under ``key`` (``<key>_approx``) as a
@@ -84,9 +99,12 @@ def run(system, op, *args, max_seconds=None):
         argv = [op, args[0], source] + args[1:]
     else:
         argv = [op, source] + args
-    text, verified, agree, latex, html = system._core.command(argv, max_seconds)
+    text, verified, agree, latex, html, values = system._core.command(argv, max_seconds)
     rendered = {"latex": latex, "html": html}
-    return Report(json.loads(text), verified, agree, op=" ".join([op] + args), rendered=rendered)
+    return Report(
+        json.loads(text), verified, agree, op=" ".join([op] + args), rendered=rendered,
+        values=values,
+    )
 
 
 def connect(op, systems, *args, max_seconds=None):
@@ -95,7 +113,7 @@ def connect(op, systems, *args, max_seconds=None):
     first, rest = systems[0], systems[1:]
     names = [s._core.source[0] for s in systems]
     argv = [op] + names + [str(a) for a in args]
-    text, verified, agree, latex, html = first._core.connect(
+    text, verified, agree, latex, html, values = first._core.connect(
         argv, [s._core for s in rest], max_seconds
     )
     return Report(
@@ -104,6 +122,7 @@ def connect(op, systems, *args, max_seconds=None):
         agree,
         op=" ".join([op] + [str(a) for a in args]),
         rendered={"latex": latex, "html": html},
+        values=values,
     )
 
 

@@ -2,12 +2,15 @@
 
 Rationals travel from Rust as integer pairs and become :class:`fractions.Fraction`;
 entries of larger fields (``1 - sqrt(2)/2``, ``-1 + i``, polynomials in a root symbol
-``r3``) keep the library's exact text, its LaTeX and a floating-point approximation.
-``to_sympy()`` turns every exact value into SymPy (``CRootOf`` for roots without a closed
+``r3``) travel as values (``_values``: their structure, never their text), with the
+library's exact text and LaTeX for display and a floating-point approximation.
+``to_sympy()`` builds SymPy from the values (``CRootOf`` for roots without a closed
 form); ``to_numpy()`` gives the approximation.
 """
 
 from fractions import Fraction
+
+from ._values import algebraic_to_sympy, grid_to_sympy, terms_to_sympy, to_sympy as _value_sympy
 
 __all__ = ["Matrix", "AlgebraicNumber", "Polynomial", "RationalFunction", "Conditions"]
 
@@ -32,31 +35,23 @@ def _sympy():
     return sympy
 
 
-def _sympy_names(sympy, params=()):
-    """The names an exact entry's text may use: ``i``, ``sqrt`` and the parameters."""
-    names = {"i": sympy.I, "sqrt": sympy.sqrt}
-    for p in params:
-        names[p] = sympy.Symbol(p)
-    return names
-
-
-def _sympify(sympy, text, names):
-    return sympy.sympify(text.replace("^", "**"), locals=names)
-
-
 class Conditions(list):
     """The polynomials in the parameters a symbolic result assumes nonzero (pivots,
-    divisions, discriminants), as strings; ``to_sympy()`` gives SymPy expressions. The
-    result holds for every parameter value at which none of them vanishes."""
+    divisions, discriminants), as strings; ``to_sympy()`` gives SymPy expressions (built
+    from their terms). The result holds for every parameter value at which none of them
+    vanishes."""
 
-    def __init__(self, items=(), params=()):
+    def __init__(self, items=(), params=(), values=None):
         super().__init__(str(x) for x in items)
         self.params = tuple(params)
+        self._values = list(values) if values is not None else None
 
     def to_sympy(self):
-        sympy = _sympy()
-        names = _sympy_names(sympy, self.params)
-        return [_sympify(sympy, c, names) for c in self]
+        if self._values is None:
+            if not self:
+                return []
+            raise TypeError("these conditions carry no values")
+        return [terms_to_sympy(t, self.params) for t in self._values]
 
     def __repr__(self):
         return "Conditions(%s != 0)" % ", ".join(self) if self else "Conditions()"
@@ -115,6 +110,7 @@ class Polynomial:
         self.text = data["text"]
         #: exact text of each coefficient (low degree first) when they are not rational
         self.exact_coeffs = data.get("coeffs")
+        self._values = data.get("values")
         self.params = tuple(params)
         #: the variable of the text: ``s``, or ``z`` for a discrete-time system
         self.var = data.get("var", "s")
@@ -134,13 +130,9 @@ class Polynomial:
         var = self.var if var is None else var
         s = sympy.Symbol(var) if isinstance(var, str) else var
         if self.coeffs is None:
-            names = _sympy_names(sympy, self.params)
-            if self.exact_coeffs is not None:
-                return sympy.Add(
-                    *[_sympify(sympy, c, names) * s**k for k, c in enumerate(self.exact_coeffs)]
-                )
-            names[self.var] = s
-            return _sympify(sympy, self.text, names)
+            if self._values is None:
+                raise TypeError("no exact coefficients: %s" % self.text)
+            return sympy.Add(*[_value_sympy(c) * s**k for k, c in enumerate(self._values)])
         return sum(
             (_sympy_rational(sympy, c.numerator, c.denominator) * s**k for k, c in enumerate(self.coeffs)),
             sympy.Integer(0),
@@ -195,6 +187,8 @@ class AlgebraicNumber:
     def __init__(self, data, symbol=None):
         self.minpoly = Polynomial(data["minpoly"])
         self.value = data["value"]
+        #: a rational rectangle ((re_lo, re_hi), (im_lo, im_hi)) isolating the root
+        self._box = data.get("box")
         re, im = data["approx"]
         self._approx = complex(re, im)
         self.multiplicity = data.get("multiplicity", data.get("algebraic_multiplicity", 1))
@@ -228,31 +222,10 @@ class AlgebraicNumber:
         """The exact number in SymPy: Rational, a radical form (degree 2) or ``CRootOf``."""
         if self._sympy is not None:
             return self._sympy
-        sympy = _sympy()
-        c = self.minpoly.coeffs
-        x = sympy.Symbol("x")
-        if len(c) == 2:
-            r = -c[0] / c[1]
-            self._sympy = _sympy_rational(sympy, r.numerator, r.denominator)
-            return self._sympy
-        poly = sympy.Poly(
-            [_sympy_rational(sympy, a.numerator, a.denominator) for a in reversed(c)], x
-        )
-        # the root is the one nearest to the certified approximation (roots of an
-        # irreducible polynomial are simple and far apart at double precision); degree 2
-        # in closed form, else CRootOf
-        if poly.degree() == 2:
-            candidates = list(sympy.roots(poly, multiple=True))
-        else:
-            candidates = [sympy.CRootOf(poly, k) for k in range(poly.degree())]
-        best, best_d = None, None
-        for r in candidates:
-            z = complex(r.evalf(30))
-            d = abs(z - self._approx)
-            if best_d is None or d < best_d:
-                best, best_d = r, d
-        self._sympy = best
-        return best
+        c = [(a.numerator, a.denominator) for a in self.minpoly.coeffs]
+        # the root in its isolating rectangle (radicals for degree 2, else CRootOf)
+        self._sympy = algebraic_to_sympy(c, self._box, (self._approx.real, self._approx.imag))
+        return self._sympy
 
     def __eq__(self, other):
         if isinstance(other, AlgebraicNumber):
@@ -308,16 +281,32 @@ class Matrix:
         self._exact = data.get("exact")
         self._latex = data.get("latex")
         self._approx = data.get("approx")
+        #: the exact values of the entries (``_values``) when they are not all rational
+        self._values = data.get("values")
         self.symbols = symbols or {}
         #: names of the symbolic parameters the entries may contain
         self.params = tuple(params)
 
     @classmethod
     def _from_strings(cls, exact, approx=None, symbols=None):
+        """A matrix shown from its exact text only (a step of a derivation): ``tolist``,
+        ``str`` and LaTeX; no ``to_sympy`` (the text is for reading)."""
+        return cls._from_values(None, exact, approx, symbols)
+
+    @classmethod
+    def _from_values(cls, values, exact, approx=None, symbols=None):
+        """A matrix from the values of its entries, with their exact text for display."""
         nrows = len(exact)
         ncols = len(exact[0]) if nrows else 0
         return cls(
-            {"nrows": nrows, "ncols": ncols, "exact": exact, "latex": exact, "approx": approx},
+            {
+                "nrows": nrows,
+                "ncols": ncols,
+                "values": values,
+                "exact": exact,
+                "latex": exact,
+                "approx": approx,
+            },
             symbols,
         )
 
@@ -362,10 +351,10 @@ class Matrix:
     def to_sympy(self, keep_symbols=False):
         """The exact matrix as a ``sympy.Matrix``.
 
-        Non-rational entries are parsed from their exact text with ``i`` as ``I`` and each
-        root symbol ``r<k>`` replaced by its eigenvalue (``CRootOf`` where needed), or kept
-        as a SymPy ``Symbol`` with ``keep_symbols=True`` (then ``symbols`` gives each one's
-        minimal polynomial)."""
+        Non-rational entries are built from their values: radicals, ``I``, each root
+        symbol ``r<k>`` as its eigenvalue (``CRootOf`` where needed), or kept as a SymPy
+        ``Symbol`` with ``keep_symbols=True`` (then ``symbols`` gives each one's minimal
+        polynomial); rational functions of the parameters from their terms."""
         sympy = _sympy()
         if self._q is not None:
             try:
@@ -377,15 +366,9 @@ class Matrix:
                 Integer(p) if q == 1 else Rational(p, q) for row in self._q for (p, q) in row
             ]
             return sympy.Matrix(self.nrows, self.ncols, flat)
-        names = _sympy_names(sympy, self.params)
-        for name, num in self.symbols.items():
-            if keep_symbols:
-                names[name] = sympy.Symbol(name)
-            else:
-                names[name] = num.to_sympy() if hasattr(num, "to_sympy") else num
-        flat = [
-            sympy.sympify(s.replace("^", "**"), locals=names) for row in self._exact for s in row
-        ]
+        if self._values is None:
+            raise TypeError("this matrix carries no exact values")
+        flat = grid_to_sympy(self._values, keep_symbols)
         return sympy.Matrix(self.nrows, self.ncols, flat)
 
     def to_numpy(self):

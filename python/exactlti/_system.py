@@ -7,6 +7,7 @@ import warnings
 from . import _core
 from ._convert import ExactnessWarning, entry_text, matrix_text, _FloatNote, system_doc, system_json
 from ._exact import AlgebraicNumber, Conditions, Matrix, Polynomial, RationalFunction
+from ._values import terms_to_sympy, to_sympy as _value_sympy
 
 __all__ = [
     "StateSpace",
@@ -903,25 +904,6 @@ class JordanResult(Rendered):
 
 
 
-class _TextRoot:
-    """A root given as ``root of POLY near APPROX`` (the library's display)."""
-
-    def __init__(self, text):
-        self.text = text
-
-    def to_sympy(self):
-        import sympy
-
-        if not self.text.startswith("root of ") or " near " not in self.text:
-            return sympy.sympify(self.text.replace("^", "**"), locals={"i": sympy.I})
-        poly_text, near = self.text[len("root of "):].split(" near ", 1)
-        x = sympy.Symbol("x")
-        poly = sympy.Poly(sympy.sympify(poly_text.replace("^", "**"), locals={"x": x}), x)
-        target = complex(sympy.sympify(near.replace("i", "I")))
-        roots = [sympy.CRootOf(poly, k) for k in range(poly.degree())]
-        return min(roots, key=lambda r: abs(complex(r.evalf(30)) - target))
-
-
 class MinrealSystem(StateSpace):
     """The exact minimal realization as a system (``G.minreal()``): every
     :class:`StateSpace` method, the input/output names and ``dt`` of the original, and the
@@ -989,23 +971,21 @@ class MinrealResult(Rendered):
         self.verified = d["verified"]
         self.stages = tuple(d["stages"]) if "stages" in d else None
         self.report, self._rendered = report_parts(d)
-        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.conditions = Conditions(d.get("conditions", ()), self.params, d.get("condition_values"))
         self.original = original
+        self._values = d.get("values")
 
     def _mat(self, key):
         if self.system is not None:
             return getattr(self.system, key)
-        # the modal (Jordan-method) realization: exact entries in real number fields
+        # the modal (Jordan-method) realization: exact entries in real number fields, built
+        # from their values (the report's text is shown only)
         approx = self.report.get(key + "_approx")
         if approx and approx and isinstance(approx[0][0] if approx[0] else 0.0, list):
             approx = [[tuple(z) for z in r] for r in approx]
         elif approx:
             approx = [[(float(x), 0.0) for x in r] for r in approx]
-        symbols = {}
-        for line in self.report.get("symbols", []):
-            name, _, definition = line.partition(" = ")
-            symbols[name.strip()] = _TextRoot(definition)
-        return Matrix._from_strings(self.report[key], approx, symbols)
+        return Matrix._from_values(self._values[key], self.report[key], approx)
 
     @property
     def A(self):
@@ -1061,7 +1041,7 @@ class ScbResult(Rendered):
         self.minimum_phase = d.get("minimum_phase")
         self.verified = d["verified"]
         self.report, self._rendered = report_parts(d)
-        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.conditions = Conditions(d.get("conditions", ()), self.params, d.get("condition_values"))
         #: symbolic: the invariant-zero polynomial's factors over Q(params)
         self.zero_factors = (
             [Factor(f, self.params) for f in d["zero_factors"]] if "zero_factors" in d else None
@@ -1092,7 +1072,7 @@ class MnfResult(Rendered):
         self.verified = d["verified"]
         self.report, self._rendered = report_parts(d)
         self.params = tuple(d.get("params", ()))
-        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.conditions = Conditions(d.get("conditions", ()), self.params, d.get("condition_values"))
         for k in self._MATS:
             setattr(self, k, Matrix(d[k], params=self.params) if k in d else None)
 
@@ -1162,7 +1142,7 @@ class TransferMatrix(Rendered):
         ]
         self.mcmillan_degree = d["mcmillan_degree"]
         self.verified = d["verified"]
-        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.conditions = Conditions(d.get("conditions", ()), self.params, d.get("condition_values"))
         self.pole_polynomial = (
             Polynomial(d["pole_polynomial"], self.params) if "pole_polynomial" in d else None
         )
@@ -1212,6 +1192,7 @@ class Factor:
         self.factor = Polynomial(d["factor"], self.params)
         self.multiplicity = d["multiplicity"]
         self.root = d.get("root")
+        self._root_value = d.get("root_value")
 
     @property
     def degree(self):
@@ -1223,13 +1204,9 @@ class Factor:
 
     def root_sympy(self):
         """The root of a linear factor in SymPy (``None`` for a factor of higher degree)."""
-        if self.root is None:
+        if self._root_value is None:
             return None
-        import sympy
-
-        from ._exact import _sympify, _sympy_names
-
-        return _sympify(sympy, self.root, _sympy_names(sympy, self.params))
+        return _value_sympy(self._root_value)
 
     def __repr__(self):
         m = "^%d" % self.multiplicity if self.multiplicity > 1 else ""
@@ -1255,7 +1232,7 @@ class Factorization(Rendered):
         self.params = tuple(d.get("params", ()))
         self.polynomial = Polynomial(d["polynomial"], self.params)
         self.factors = [Factor(f, self.params) for f in d["factors"]]
-        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.conditions = Conditions(d.get("conditions", ()), self.params, d.get("condition_values"))
         self.normal_rank = d.get("normal_rank")
 
     @property
@@ -1284,7 +1261,9 @@ class SymbolicEigenvalue:
 
     def __init__(self, d, params, var):
         self.value = d["value"]
+        self._value = d.get("value_v")
         self.factor = d["factor"]
+        self._factor_terms = d.get("factor_terms")
         self.degree = d["degree"]
         self.algebraic_multiplicity = d["algebraic_multiplicity"]
         self.geometric_multiplicity = d["geometric_multiplicity"]
@@ -1295,23 +1274,14 @@ class SymbolicEigenvalue:
     def to_sympy(self):
         """The value in SymPy (``None`` for a root of a factor of degree >= 2: see
         :meth:`factor_sympy`)."""
-        if self.value is None:
+        if self._value is None:
             return None
-        import sympy
-
-        from ._exact import _sympify, _sympy_names
-
-        return _sympify(sympy, self.value, _sympy_names(sympy, self.params))
+        return _value_sympy(self._value)
 
     def factor_sympy(self):
-        """The irreducible factor as a SymPy expression in ``var`` and the parameters."""
-        import sympy
-
-        from ._exact import _sympify, _sympy_names
-
-        names = _sympy_names(sympy, self.params)
-        names[self.var] = sympy.Symbol(self.var)
-        return _sympify(sympy, self.factor, names)
+        """The irreducible factor as a SymPy expression in ``var`` and the parameters
+        (built from its terms)."""
+        return terms_to_sympy(self._factor_terms, self.params + (self.var,))
 
     def __str__(self):
         return self.value if self.value is not None else "root of %s" % self.factor
@@ -1346,8 +1316,11 @@ class SymbolicJordanResult(Rendered):
         self.complete = d["complete"]
         self.verified = d["verified"]
         self.exact = True
-        self.conditions = Conditions(d.get("conditions", ()), self.params)
+        self.conditions = Conditions(d.get("conditions", ()), self.params, d.get("condition_values"))
         self.field = d.get("field")
+        self.notes = list(d.get("notes", []))
+        # a descriptor system: sizes of the Jordan blocks at s = infinity
+        self.infinite_blocks = list(d.get("infinite_blocks", []))
 
     @property
     def nstates(self):

@@ -3,9 +3,16 @@
 //! Thin by design: systems are read by the library's own system-file reader (so a bad entry
 //! gives the command line's one-line message), every computation runs on a worker thread
 //! with the GIL released while this thread polls for Ctrl-C (`check_signals`) and for the
-//! `max_seconds` deadline, and results come back as plain dicts of exact data (rationals as
-//! integer pairs, other field elements as exact strings with their LaTeX and approximations)
-//! that the pure-Python layer (`python/exactlti/`) wraps in classes.
+//! `max_seconds` deadline, and results come back as plain dicts of exact data that the
+//! pure-Python layer (`python/exactlti/`) wraps in classes: every exact number as a VALUE
+//! (rationals as integer pairs, $a + b\sqrt d$, polynomials in a marked root, rational
+//! functions of the parameters as term lists, algebraic numbers by minimal polynomial and
+//! isolating box: the encoding is in [`values`]), its display text and LaTeX beside it only
+//! to be shown; Python builds SymPy from the values and parses no text.
+//!
+//! The choices of a command are the api's, not repeated here: which matrix `jordan`
+//! decomposes and over which field ([`exactlti::api::jordan_values`]), loading
+//! ([`exactlti::api::System`]), every command of the command line ([`exactlti::api::execute_on`]).
 #![allow(non_snake_case)]
 
 use exactlti::Error;
@@ -156,6 +163,7 @@ fn scrub(m: &str) -> String {
 mod ops;
 mod out;
 mod symbolic;
+mod values;
 use ops::*;
 use out::*;
 
@@ -365,8 +373,9 @@ impl System {
     #[pyo3(signature = (real=false, max_seconds=None))]
     fn jordan(&self, py: Python<'_>, real: bool, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
+        let path = self.api.path().to_path_buf();
         run(py, max_seconds, move || {
-            visit!(s => FResult<Out>, [real: bool], |f, t| ops::jordan_typed(t, real),
+            visit!(s => FResult<Out>, [real: bool, path: std::path::PathBuf], |f, t| ops::jordan_typed(t, real, &path),
                    sym |f, t| {
                 if real {
                     return Err(Fail::Unsupported(format!(
@@ -376,7 +385,7 @@ impl System {
                     )));
                 }
                 match &t.descriptor {
-                    Some(d) => symbolic::jordan_descriptor(d),
+                    Some(d) => symbolic::jordan_descriptor(d, &path),
                     None => symbolic::jordan(&t.a_raw),
                 }
             })
@@ -484,14 +493,15 @@ impl System {
         py: Python<'_>,
         args: Vec<String>,
         max_seconds: Option<f64>,
-    ) -> PyResult<(String, bool, bool, String, String)> {
+    ) -> PyResult<CommandOut> {
         let s = self.api.clone();
-        run(py, max_seconds, move || {
+        let r = run(py, max_seconds, move || {
             let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
             let ctx = exactlti::api::RunContext::default();
             let out = exactlti::api::execute_on(&cmd, &s, &ctx)?;
             command_out(&out)
-        })
+        })?;
+        r.into_py(py)
     }
 
     /// The derivation of one command step by step (`args` as the command line spells them
@@ -577,7 +587,12 @@ impl System {
             }
         };
         let (n, m, p) = self.shape();
-        let signals = exactlti::io::SignalNames { inputs, outputs, states: None, dt };
+        let signals = exactlti::io::SignalNames {
+            inputs,
+            outputs,
+            states: None,
+            dt,
+        };
         signals
             .check(&self.api.path().display().to_string(), n, m, p)
             .map_err(|e| PyValueError::new_err(e.to_string()))?;
@@ -599,7 +614,10 @@ impl System {
         let s = run(py, max_seconds, move || {
             let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
             let exactlti::api::Command::Interconnect(c) = cmd else {
-                return Err(Fail::Input(format!("{}: not an interconnection", args.join(" "))));
+                return Err(Fail::Input(format!(
+                    "{}: not an interconnection",
+                    args.join(" ")
+                )));
             };
             let refs: Vec<&exactlti::api::System> = all.iter().map(|s| s.as_ref()).collect();
             Ok(exactlti::api::interconnect_system(&c, &refs)?)
@@ -617,31 +635,48 @@ impl System {
         args: Vec<String>,
         others: Vec<PyRef<'_, System>>,
         max_seconds: Option<f64>,
-    ) -> PyResult<(String, bool, bool, String, String)> {
+    ) -> PyResult<CommandOut> {
         let mut all = vec![self.api.clone()];
         all.extend(others.iter().map(|o| o.api.clone()));
-        run(py, max_seconds, move || {
+        let r = run(py, max_seconds, move || {
             let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
             let ctx = exactlti::api::RunContext::default();
             let refs: Vec<&exactlti::api::System> = all.iter().map(|s| s.as_ref()).collect();
             let out = exactlti::api::execute_on_many(&cmd, &refs, &ctx)?;
             command_out(&out)
-        })
+        })?;
+        r.into_py(py)
     }
 }
 
 /// A command's outcome for Python: the report as JSON text, whether its exact checks
-/// passed, whether the float path agrees, and the report as LaTeX (one math formula) and HTML (the library's
-/// report layer renders both from the report's values).
-fn command_out(out: &exactlti::api::Outcome) -> FResult<(String, bool, bool, String, String)> {
+/// passed, whether the float path agrees, the report as LaTeX (one math formula) and HTML
+/// (the library's report layer renders both from the report's values), and the values of
+/// its matrices by key (`Report.to_sympy`; [`values`]).
+type CommandOut = (String, bool, bool, String, String, Py<PyAny>);
+
+/// [`CommandOut`] made on the worker (the values still plain data).
+struct Outcome((String, bool, bool, String, String), Out);
+
+impl Outcome {
+    fn into_py(self, py: Python<'_>) -> PyResult<CommandOut> {
+        let ((a, b, c, d, e), v) = (self.0, self.1);
+        Ok((a, b, c, d, e, v.to_py(py)?))
+    }
+}
+
+fn command_out(out: &exactlti::api::Outcome) -> FResult<Outcome> {
     let text =
         serde_json::to_string(&out.report.to_json()).map_err(|e| Fail::Input(e.to_string()))?;
-    Ok((
-        text,
-        out.verified,
-        !out.float_disagrees,
-        out.report.to_latex_math(),
-        out.report.to_html(),
+    Ok(Outcome(
+        (
+            text,
+            out.verified,
+            !out.float_disagrees,
+            out.report.to_latex_math(),
+            out.report.to_html(),
+        ),
+        values::report_values(&out.report),
     ))
 }
 

@@ -1,9 +1,11 @@
 //! The exact operations on a system over its (numeric) ground field, as plain output data.
 
 use crate::out::*;
+use crate::values::{Grid, elem, part, values_of, zero};
 use crate::{FResult, Fail};
 use exactlti::field::Field;
 use exactlti::io::TypedSystem as Typed;
+use exactlti::jordan::{EigenField, JordanForm, RealEntries, RealJordanForm};
 use exactlti::matrix::Matrix;
 use exactlti::realization::{self, MinrealMethod};
 use exactlti::system::StateSpace;
@@ -116,10 +118,7 @@ pub(crate) fn tf_typed<K: Field>(t: &Typed<K>, domain: Domain) -> FResult<Out> {
 }
 
 /// [`tf_typed`]'s items and the minimal realization's `A` (for the pole polynomial).
-pub(crate) fn tf_parts<K: Field>(
-    s: &StateSpace<K>,
-    domain: Domain,
-) -> FResult<(Items, Matrix<K>)> {
+pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>, domain: Domain) -> FResult<(Items, Matrix<K>)> {
     let var = domain.var();
     let g = s.transfer_matrix()?;
     let min = realization::minimal_kalman(s)?;
@@ -169,7 +168,12 @@ pub(crate) fn balred_typed<K: Field>(t: &Typed<K>, order: usize) -> FResult<Out>
         ("D", rows(&r.d)),
         (
             "hankel_singular_values",
-            Out::List(r.hankel_singular_values.iter().map(|x| Out::Float(*x)).collect()),
+            Out::List(
+                r.hankel_singular_values
+                    .iter()
+                    .map(|x| Out::Float(*x))
+                    .collect(),
+            ),
         ),
         ("error_bound", Out::Float(r.error_bound)),
     ]))
@@ -234,14 +238,23 @@ pub(crate) fn freqresp_typed<K: Field>(
     ))
 }
 
-pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResult<Out> {
+/// The Jordan form as output data (any field with an exact Jordan decomposition): `J`, `T`
+/// with their values (complex form: per eigenvalue, elements of its field; real form: the
+/// blocks' fields, or Re/Im of the complex data for a compact pair).
+pub(crate) fn jordan_out<F: EigenField>(jf: &JordanForm<F>, real: bool) -> FResult<Out> {
     let evs = Out::List(
         jf.eigenvalues
             .iter()
             .map(|e| {
+                let ((rl, rh), (il, ih)) = e.number.bounding_box();
+                let pair = |a, b| Out::Tuple(vec![q(a), q(b)]);
                 Out::Dict(vec![
                     ("minpoly", poly(&e.minpoly)),
-                    ("value", Out::Str(exactlti::report::sections::eigenvalue_text(e))),
+                    ("box", Out::Tuple(vec![pair(&rl, &rh), pair(&il, &ih)])),
+                    (
+                        "value",
+                        Out::Str(exactlti::report::sections::eigenvalue_text(e)),
+                    ),
                     (
                         "approx",
                         Out::Tuple(vec![Out::Float(e.approx.0), Out::Float(e.approx.1)]),
@@ -271,8 +284,9 @@ pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResu
     if real {
         let rf = jf.real_form()?;
         let (j, t) = rf.j_t_out();
-        kv.push(("J", matout(&j)));
-        kv.push(("T", matout(&t)));
+        let (jv, tv) = real_values(&rf);
+        kv.push(("J", matout(&j, jv)));
+        kv.push(("T", matout(&t, tv)));
         kv.push(("exact", Out::Bool(rf.exact)));
         kv.push(("verified", Out::Bool(rf.verified)));
         kv.push((
@@ -284,8 +298,9 @@ pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResu
         let (j, t) = match jf.single_field() {
             Some((j, t)) if j.field().degree() == 1 => (mat(&j), mat(&t)),
             _ => {
+                // per eigenvalue, elements of its field (the report's cells carry their values)
                 let (j, t) = jf.j_t_out();
-                (matout(&j), matout(&t))
+                (matout(&j, values_of(&j)), matout(&t, values_of(&t)))
             }
         };
         kv.push(("J", j));
@@ -298,42 +313,117 @@ pub(crate) fn jordan_out(jf: &exactlti::jordan::JordanForm, real: bool) -> FResu
     Ok(Out::Dict(kv))
 }
 
-/// `jordan` of a descriptor system: the Jordan form of the pencil's finite dynamics (the
-/// standard form's `A`), with `infinite_blocks` (sizes of the Jordan blocks at infinity) and
-/// a `note`; a singular pencil is refused.
-pub(crate) fn descriptor_jordan<K: Field>(
+/// An eigenvalue as an element value: `("root", minpoly, box)`.
+fn root_value(e: &exactlti::jordan::Eigenvalue) -> Out {
+    let ((rl, rh), (il, ih)) = e.number.bounding_box();
+    let pair = |a, b| Out::Tuple(vec![q(a), q(b)]);
+    Out::Tuple(vec![
+        Out::Str("root".into()),
+        Out::List(e.minpoly.coeffs().iter().map(q).collect()),
+        Out::Tuple(vec![pair(&rl, &rh), pair(&il, &ih)]),
+    ])
+}
+
+/// The values of `J` and `T` of the real Jordan form, block by block as the report lays them
+/// out: a real root or an expanded pair in its field; a compact pair `r = a + b i` as
+/// `[[a, b], [-b, a]]` blocks with the real and imaginary parts of its complex chains.
+fn real_values<F: EigenField>(rf: &RealJordanForm<F>) -> (Out, Out) {
+    let n = rf.n;
+    let (mut j, mut t) = (Grid::zeros(n, n), Grid::zeros(n, n));
+    let mut off = 0;
+    for b in &rf.blocks {
+        let w = b.j_approx.len();
+        match &b.entries {
+            RealEntries::Root { t: bt, j: bj, .. } => {
+                t.block((0, off), bt);
+                j.block((off, off), bj);
+            }
+            RealEntries::Expanded { t: bt, j: bj, .. } => {
+                t.block((0, off), bt);
+                j.block((off, off), bj);
+            }
+            RealEntries::Compact(cp) | RealEntries::Radical(cp) => {
+                let f = &cp.field;
+                for r in 0..n {
+                    for c in 0..w {
+                        let x = elem(f, cp.v.get(r, c / 2));
+                        t.set((r, off + c), part(x, c % 2 == 1, false));
+                    }
+                }
+                let theta = || root_value(&rf.eigenvalues[b.eigenvalue]);
+                for r in 0..w {
+                    for c in 0..w {
+                        let v = if r / 2 == c / 2 {
+                            match (r % 2, c % 2) {
+                                (0, 0) | (1, 1) => part(theta(), false, false),
+                                (0, 1) => part(theta(), true, false),
+                                _ => part(theta(), true, true),
+                            }
+                        } else if b.j_approx[r][c] == 1.0 {
+                            Out::Tuple(vec![Out::Int(1), Out::Int(1)])
+                        } else {
+                            zero()
+                        };
+                        j.set((off + r, off + c), v);
+                    }
+                }
+            }
+        }
+        off += w;
+    }
+    (j.out(), t.out())
+}
+
+/// `jordan` of a system through the api's choices ([`exactlti::api::jordan_values`]): the
+/// matrix (`A`, or the finite part of a descriptor system's pencil with `infinite_blocks` and
+/// its note) and the field it is decomposed over; `UnsupportedError` naming any other field.
+pub(crate) fn jordan_typed<K: Field + 'static>(
     t: &Typed<K>,
     real: bool,
-    jordan: impl Fn(&Matrix<K>) -> exactlti::Result<exactlti::jordan::JordanForm>,
+    path: &std::path::Path,
 ) -> FResult<Out> {
-    let d = t.descriptor.as_ref().expect("a descriptor system");
-    let ks = exactlti::pencil::kronecker_structure(&d.a, &d.e)?;
-    let (af, method) = realization::finite_dynamics(d)?;
-    let jf = jordan(&af)?;
-    let Out::Dict(mut kv) = jordan_out(&jf, real)? else {
+    use exactlti::api::jordan_values::{EigenVisitor, finite_part, on_eigen_field};
+    struct V(bool);
+    impl EigenVisitor for V {
+        type Output = FResult<Out>;
+        fn visit<F: EigenField>(self, a: &Matrix<F>) -> FResult<Out> {
+            jordan_out(&exactlti::jordan::jordan_over(a)?, self.0)
+        }
+    }
+    let unsupported = || {
+        Fail::Unsupported(format!(
+            "the Jordan form is not supported over {}",
+            t.a_raw.field()
+        ))
+    };
+    let Some(d) = &t.descriptor else {
+        return on_eigen_field(&t.a_raw, V(real)).ok_or_else(unsupported)?;
+    };
+    let fp = finite_part(d, path)?;
+    let Out::Dict(mut kv) = on_eigen_field(&fp.a, V(real)).ok_or_else(unsupported)?? else {
         unreachable!("jordan_out returns a dict")
     };
-    let ok = ks.verified && af.nrows() == ks.finite_order();
+    with_finite_part(&mut kv, &fp.infinite_blocks, fp.verified, &fp.note);
+    Ok(Out::Dict(kv))
+}
+
+/// Adds a descriptor system's finite-part facts to a Jordan result: `verified` also needs the
+/// pencil's checks, `infinite_blocks`, and the note (when the result has `notes`).
+pub(crate) fn with_finite_part(kv: &mut Items, blocks: &[usize], verified: bool, note: &str) {
     for (k, v) in kv.iter_mut() {
-        if *k == "verified" {
-            let was = matches!(v, Out::Bool(true));
-            *v = Out::Bool(was && ok);
+        match (*k, v) {
+            ("verified", v) => {
+                let was = matches!(v, Out::Bool(true));
+                *v = Out::Bool(was && verified);
+            }
+            ("notes", Out::List(notes)) => notes.push(Out::Str(note.to_string())),
+            _ => {}
         }
     }
     kv.push((
         "infinite_blocks",
-        Out::List(ks.infinite_divisors.iter().map(|&b| usize_out(b)).collect()),
+        Out::List(blocks.iter().map(|&b| usize_out(b)).collect()),
     ));
-    let note = format!(
-        "descriptor system: J is the Jordan form of the finite part of the pencil sE - A, computed on the finite part's A ({}); infinite_blocks: sizes of the Jordan blocks at s = infinity (size 1 = non-dynamic mode)",
-        method.name()
-    );
-    for (k, v) in kv.iter_mut() {
-        if let ("notes", Out::List(notes)) = (*k, v) {
-            notes.push(Out::Str(note.clone()));
-        }
-    }
-    Ok(Out::Dict(kv))
 }
 
 pub(crate) fn truth(t: exactlti::float::Truth) -> Out {
@@ -480,31 +570,84 @@ pub(crate) fn minreal_jordan(t: &Typed<exactlti::field::Q>) -> FResult<Out> {
         ("method", Out::Str("jordan".into())),
         ("T", Out::None),
         ("verified", Out::Bool(r.verified)),
+        ("values", modal_values(&r)),
         ("report", report(&r.report())),
     ]))
 }
 
-/// The Jordan form of `A` (of the finite part of a descriptor system) over Q or a quadratic
-/// field; `UnsupportedError` naming any other field.
-pub(crate) fn jordan_typed<K: Field + 'static>(t: &Typed<K>, real: bool) -> FResult<Out> {
-    use exactlti::field::{Q, QuadraticField};
-    let any = t as &dyn std::any::Any;
-    if let Some(t) = any.downcast_ref::<Typed<Q>>() {
-        if t.descriptor.is_some() {
-            return descriptor_jordan(t, real, exactlti::jordan::jordan);
+/// The values of the Jordan-method realization's `A`, `B`, `C`, `D`, block by block as its
+/// report lays them out: a real root or an expanded pair in its field; a compact pair as
+/// $A_r = [[\mathrm{Re}, \mathrm{Im}], [-\mathrm{Im}, \mathrm{Re}]]$ of $J$,
+/// $B_r = [\mathrm{Re}; -\mathrm{Im}]$ of $WB$, $C_r = [\mathrm{Re}, \mathrm{Im}]$ of $2CV$
+/// (the complex form when the system is not real).
+fn modal_values<F: EigenField>(r: &realization::JordanMinimal<F>) -> Out {
+    use realization::{ModalBlock, RealModalBlock};
+    let n = r.order();
+    let (m, p) = (r.d.ncols(), r.d.nrows());
+    let (mut a, mut b, mut c) = (Grid::zeros(n, n), Grid::zeros(n, m), Grid::zeros(p, n));
+    let mut off = 0;
+    match &r.real {
+        None => {
+            for bk in &r.blocks {
+                put_ext([&bk.a, &bk.b, &bk.c], off, [&mut a, &mut b, &mut c]);
+                off += bk.a.nrows();
+            }
         }
-        return jordan_out(&exactlti::jordan::jordan(&t.a_raw)?, real);
-    }
-    if let Some(t) = any.downcast_ref::<Typed<QuadraticField>>() {
-        if t.descriptor.is_some() {
-            return descriptor_jordan(t, real, exactlti::jordan::jordan_quadratic);
+        Some(real) => {
+            for blk in real {
+                match blk {
+                    RealModalBlock::Root(bk) => {
+                        put_ext([&bk.a, &bk.b, &bk.c], off, [&mut a, &mut b, &mut c])
+                    }
+                    RealModalBlock::Pair {
+                        a: pa,
+                        b: pb,
+                        c: pc,
+                        ..
+                    } => put_ext([pa, pb, pc], off, [&mut a, &mut b, &mut c]),
+                    RealModalBlock::Compact(bk) | RealModalBlock::Radical(bk) => {
+                        put_compact(bk, off, [&mut a, &mut b, &mut c])
+                    }
+                }
+                off += blk.order();
+            }
         }
-        return jordan_out(&exactlti::jordan::jordan_quadratic(&t.a_raw)?, real);
     }
-    Err(Fail::Unsupported(format!(
-        "the Jordan form is not supported over {}",
-        t.a_raw.field()
-    )))
+    fn put_ext<F: Field>(m: [&Matrix<F>; 3], off: usize, [a, b, c]: [&mut Grid; 3]) {
+        a.block((off, off), m[0]);
+        b.block((off, 0), m[1]);
+        c.block((0, off), m[2]);
+    }
+    fn put_compact<F: Field>(bk: &ModalBlock<F>, off: usize, [a, b, c]: [&mut Grid; 3]) {
+        let f = &bk.field;
+        let v = |x: &exactlti::algebraic::ExtElem<F::Elem>| elem(f, x);
+        for i in 0..bk.a.nrows() {
+            for j in 0..bk.a.ncols() {
+                let x = bk.a.get(i, j);
+                let (o, q) = (off + 2 * i, off + 2 * j);
+                a.set((o, q), part(v(x), false, false));
+                a.set((o, q + 1), part(v(x), true, false));
+                a.set((o + 1, q), part(v(x), true, true));
+                a.set((o + 1, q + 1), part(v(x), false, false));
+            }
+            for j in 0..bk.b.ncols() {
+                let x = bk.b.get(i, j);
+                b.set((off + 2 * i, j), part(v(x), false, false));
+                b.set((off + 2 * i + 1, j), part(v(x), true, true));
+            }
+            for row in 0..bk.c.nrows() {
+                let x = f.mul(&f.from_i64(2), bk.c.get(row, i));
+                c.set((row, off + 2 * i), part(v(&x), false, false));
+                c.set((row, off + 2 * i + 1), part(v(&x), true, false));
+            }
+        }
+    }
+    Out::Dict(vec![
+        ("A", a.out()),
+        ("B", b.out()),
+        ("C", c.out()),
+        ("D", crate::values::rows(&r.d)),
+    ])
 }
 
 /// The modal table of `A` over Q as output data.

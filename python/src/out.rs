@@ -17,6 +17,7 @@ use crate::System;
 pub(crate) type Items = Vec<(&'static str, Out)>;
 
 /// A value to be turned into Python objects on the caller's thread (the worker has no GIL).
+#[derive(Clone)]
 pub(crate) enum Out {
     None,
     Bool(bool),
@@ -27,6 +28,8 @@ pub(crate) enum Out {
     List(Vec<Out>),
     Tuple(Vec<Out>),
     Dict(Vec<(&'static str, Out)>),
+    /// A dict with keys made at run time (a report's keys).
+    Map(Vec<(String, Out)>),
     /// A system computed here (a minimal realization, ...), given to the front door.
     Sys(Arc<exactlti::api::System>),
 }
@@ -58,6 +61,13 @@ impl Out {
                 let d = PyDict::new(py);
                 for (k, v) in kv {
                     d.set_item(*k, v.to_py(py)?)?;
+                }
+                d.into_any().unbind()
+            }
+            Out::Map(kv) => {
+                let d = PyDict::new(py);
+                for (k, v) in kv {
+                    d.set_item(k, v.to_py(py)?)?;
                 }
                 d.into_any().unbind()
             }
@@ -112,8 +122,9 @@ pub(crate) fn approx_rows(rows: &[Vec<(f64, f64)>]) -> Out {
     )
 }
 
-/// A matrix: `q` = rows of integer pairs when every entry is rational, else `exact`,
-/// `latex` (strings) and `approx` (pairs re, im).
+/// A matrix: `q` = rows of integer pairs when every entry is rational, else `values` (rows
+/// of element values, [`crate::values`]) with `exact`, `latex` (strings, for display) and
+/// `approx` (pairs re, im).
 pub(crate) fn mat<K: Field>(m: &Matrix<K>) -> Out {
     let k = m.field();
     let shape = |kv: &mut Vec<(&'static str, Out)>| {
@@ -133,6 +144,7 @@ pub(crate) fn mat<K: Field>(m: &Matrix<K>) -> Out {
     match rat {
         Some(rows) => kv.push(("q", Out::List(rows.into_iter().map(Out::List).collect()))),
         None => {
+            kv.push(("values", crate::values::rows(m)));
             kv.push(("exact", strs(&m.to_rows_strings())));
             let latex: Vec<Vec<String>> = (0..m.nrows())
                 .map(|i| m.row(i).iter().map(|x| k.latex_elem(x)).collect())
@@ -149,19 +161,21 @@ pub(crate) fn mat<K: Field>(m: &Matrix<K>) -> Out {
     Out::Dict(kv)
 }
 
-/// A matrix whose entries lie in several fields (exact strings with per-root symbols).
-pub(crate) fn matout(mo: &MatrixOut) -> Out {
+/// A matrix whose entries lie in several fields: their values (rows, [`crate::values`]),
+/// and the report's exact strings (per-root symbols), LaTeX and approximations for display.
+pub(crate) fn matout(mo: &MatrixOut, values: Out) -> Out {
     Out::Dict(vec![
         ("nrows", usize_out(mo.nrows)),
         ("ncols", usize_out(mo.ncols)),
+        ("values", values),
         ("exact", strs(&mo.exact)),
         ("latex", strs(&mo.latex)),
         ("approx", approx_rows(&mo.approx)),
     ])
 }
 
-/// Polynomial: `q` coefficients low degree first when rational (else `coeffs`, their exact
-/// text), and its text in `s`.
+/// Polynomial: `q` coefficients low degree first when rational (else `values`, their
+/// element values, and `coeffs`, their exact text for display), and its text in `s`.
 pub(crate) fn poly<K: Field>(p: &Poly<K>) -> Out {
     poly_var(p, "s")
 }
@@ -187,6 +201,7 @@ pub(crate) fn poly_var<K: Field>(p: &Poly<K>, var: &str) -> Out {
                 "coeffs",
                 Out::List(p.coeffs().iter().map(|c| Out::Str(k.fmt_elem(c))).collect()),
             ));
+            kv.push(("values", crate::values::coeffs(p)));
         }
     }
     Out::Dict(kv)
@@ -211,8 +226,11 @@ pub(crate) fn report(r: &Report) -> Out {
 
 pub(crate) fn alg(n: &exactlti::algebraic::AlgebraicNumber, mult: usize) -> Out {
     let (re, im) = n.approx();
+    let ((rl, rh), (il, ih)) = n.bounding_box();
+    let pair = |a, b| Out::Tuple(vec![q(a), q(b)]);
     Out::Dict(vec![
         ("minpoly", poly(n.minpoly())),
+        ("box", Out::Tuple(vec![pair(&rl, &rh), pair(&il, &ih)])),
         ("value", Out::Str(n.value_string())),
         ("approx", Out::Tuple(vec![Out::Float(re), Out::Float(im)])),
         ("multiplicity", usize_out(mult)),

@@ -73,7 +73,12 @@ pub(crate) fn sweep(
 ) -> PyResult<Py<PyAny>> {
     run(py, None, move || -> FResult<Out> {
         let opts = exactlti::api::Options::default();
-        Ok(sweep_out(&sweep_file(Path::new(&path), &param, &opts, &values)?))
+        Ok(sweep_out(&sweep_file(
+            Path::new(&path),
+            &param,
+            &opts,
+            &values,
+        )?))
     })?
     .to_py(py)
 }
@@ -92,8 +97,8 @@ pub(crate) fn execute(
     run(py, max_seconds, move || {
         let cmd = exactlti::api::Command::parse_args(&args).map_err(Fail::Input)?;
         let out = exactlti::api::execute(&cmd)?;
-        let text = serde_json::to_string(&out.report.to_json())
-            .map_err(|e| Fail::Input(e.to_string()))?;
+        let text =
+            serde_json::to_string(&out.report.to_json()).map_err(|e| Fail::Input(e.to_string()))?;
         Ok((text, out.verified, !out.float_disagrees))
     })
 }

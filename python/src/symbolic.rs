@@ -9,6 +9,7 @@
 
 use crate::ops::{mnf_out, scb_typed, tf_parts, zeros_typed};
 use crate::out::*;
+use crate::values::{elem, terms};
 use crate::{FResult, Fail};
 use exactlti::field::{ElemDisplay, Field};
 use exactlti::io::TypedSystem as Typed;
@@ -39,7 +40,14 @@ fn refield(t: &T) -> (RatFuncField, T) {
 /// `params`, `field` and `conditions` (after the computation filled the log).
 fn context(k: &RatFuncField) -> FResult<Vec<(&'static str, Out)>> {
     let conds = k.conditions_strings()?;
+    // the same polynomials as values: terms of the normalized display
+    let values = k
+        .conditions()?
+        .iter()
+        .map(|p| terms(&p.display_normalized()))
+        .collect();
     Ok(vec![
+        ("condition_values", Out::List(values)),
         (
             "params",
             Out::List(k.vars().iter().map(|v| Out::Str(v.clone())).collect()),
@@ -79,7 +87,10 @@ fn factors(p: &Poly<RatFuncField>) -> FResult<Out> {
                 ];
                 if g.deg() == 1 {
                     let r = k.div(&k.neg(&g.coeff(0)), &g.coeff(1));
-                    kv[2].1 = r.map(|r| Out::Str(k.fmt_elem(&r))).unwrap_or(Out::None);
+                    if let Some(r) = r {
+                        kv[2].1 = Out::Str(k.fmt_elem(&r));
+                        kv.push(("root_value", elem(&k, &r)));
+                    }
                 }
                 Out::Dict(kv)
             })
@@ -175,22 +186,18 @@ pub(crate) fn mnf(t: &T) -> FResult<Out> {
 }
 
 /// The Jordan structure of a descriptor system over $\mathbb{Q}(p)$: [`jordan`] of the
-/// pencil's finite part (as the CLI and the numeric path), with `infinite_blocks`.
-pub(crate) fn jordan_descriptor(d: &exactlti::system::Descriptor<RatFuncField>) -> FResult<Out> {
-    let ks = exactlti::pencil::kronecker_structure(&d.a, &d.e)?;
-    if !ks.is_regular() {
-        return Err(Fail::Input(
-            "the pencil sE - A is singular: it has no Jordan structure (pencil() gives its Kronecker structure)".into(),
-        ));
-    }
-    let (af, _) = realization::finite_dynamics(d)?;
-    let Out::Dict(mut kv) = jordan(&af)? else {
+/// pencil's finite part as the api chooses it ([`exactlti::api::jordan_values::finite_part`],
+/// the command line's code path), with `infinite_blocks` and the note.
+pub(crate) fn jordan_descriptor(
+    d: &exactlti::system::Descriptor<RatFuncField>,
+    path: &std::path::Path,
+) -> FResult<Out> {
+    let fp = exactlti::api::jordan_values::finite_part(d, path)?;
+    let Out::Dict(mut kv) = jordan(&fp.a)? else {
         unreachable!("jordan returns a dict")
     };
-    kv.push((
-        "infinite_blocks",
-        Out::List(ks.infinite_divisors.iter().map(|&b| usize_out(b)).collect()),
-    ));
+    kv.push(("notes", Out::List(vec![])));
+    crate::ops::with_finite_part(&mut kv, &fp.infinite_blocks, fp.verified, &fp.note);
     Ok(Out::Dict(kv))
 }
 
@@ -213,6 +220,14 @@ pub(crate) fn jordan(a: &Matrix<RatFuncField>) -> FResult<Out> {
                         .as_ref()
                         .map(|v| Out::Str(k.fmt_elem(v)))
                         .unwrap_or(Out::None),
+                ),
+                (
+                    "value_v",
+                    value.as_ref().map(|v| elem(k, v)).unwrap_or(Out::None),
+                ),
+                (
+                    "factor_terms",
+                    terms(&exactlti::jordan::qp_form::integral(&c.factor)),
                 ),
                 (
                     "factor",
@@ -243,7 +258,19 @@ pub(crate) fn jordan(a: &Matrix<RatFuncField>) -> FResult<Out> {
         ("verified", Out::Bool(jf.verified)),
     ];
     // the form's own conditions (discriminants, resultants, pivots), not the field's log
-    kv.extend(ctx.into_iter().filter(|(key, _)| *key != "conditions"));
+    kv.extend(
+        ctx.into_iter()
+            .filter(|(key, _)| *key != "conditions" && *key != "condition_values"),
+    );
+    kv.push((
+        "condition_values",
+        Out::List(
+            jf.conditions
+                .iter()
+                .map(|c| terms(&c.num().display_normalized()))
+                .collect(),
+        ),
+    ));
     kv.push((
         "conditions",
         Out::List(

@@ -212,7 +212,12 @@ def test_jordan_identity_with_crootof_entries():
     assert len({x.index for x in ev}) == 3
     assert r.check()  # A T = T J in SymPy, independently of the library
     # and the check can fail: a wrong J is caught
-    r.J._exact[0][0] = r.J._exact[0][0] + " + 1"
+    # (J[0, 0] + 1: its value's constant coefficient moved by one; the values, not the
+    # text, are what to_sympy builds from)
+    tag, coeffs, gen = r.J._values[0][0]
+    coeffs = list(coeffs) or [(0, 1)]
+    p, q = coeffs[0]
+    r.J._values[0][0] = (tag, [(p + q, q)] + coeffs[1:], gen)
     assert not r.check()
     assert np.allclose(r.A.to_numpy() @ r.T.to_numpy(), r.T.to_numpy() @ r.J.to_numpy())
 

@@ -341,6 +341,23 @@ impl<F: Field> Field for Ext<F> {
     fn to_rational(&self, a: &Self::Elem) -> Option<Rational> {
         self.to_base(a).and_then(|c| self.0.base.to_rational(&c))
     }
+    fn elem_value(&self, a: &Self::Elem) -> Option<crate::field::ElemValue> {
+        let k = &self.0.base;
+        let vals = |c: &[F::Elem]| {
+            c.iter()
+                .map(|x| k.elem_value(x))
+                .collect::<Option<Vec<_>>>()
+        };
+        Some(crate::field::ElemValue::Ext {
+            coeffs: vals(&a.0)?,
+            generator: Box::new(crate::field::Generator {
+                modulus: vals(self.0.modulus.coeffs())?,
+                root: self.0.root,
+                name: self.0.var.clone(),
+                radical: self.0.radical.clone(),
+            }),
+        })
+    }
     fn approx(&self, a: &Self::Elem) -> Option<(f64, f64)> {
         let z = Ext::approx(self, a);
         (!z.0.is_nan()).then_some(z)

@@ -101,18 +101,17 @@ fn jordan_any<K: Field + 'static>(
     norm: &Normalization,
     path: &Path,
 ) -> Result<Outcome, Failure> {
-    let any = a as &dyn std::any::Any;
-    if let Some(q) = any.downcast_ref::<Matrix<Q>>() {
-        return jordan_cmd(q, how, norm, path);
+    struct V<'a>((bool, bool), &'a Normalization, &'a Path);
+    impl super::jordan_values::EigenVisitor for V<'_> {
+        type Output = Result<Outcome, Failure>;
+        fn visit<F: EigenField>(self, a: &Matrix<F>) -> Self::Output {
+            jordan_cmd(a, self.0, self.1, self.2)
+        }
     }
-    if let Some(k) = any.downcast_ref::<Matrix<crate::field::QuadraticField>>() {
-        return match crate::matrix::to_rational_matrix(k) {
-            Some(q) => jordan_cmd(&q, how, norm, path),
-            None => jordan_cmd(k, how, norm, path),
-        };
-    }
-    let e = Error::Unsupported(format!("Jordan form over {}", a.field()));
-    Err(with_path(path, e))
+    super::jordan_values::on_eigen_field(a, V(how, norm, path)).unwrap_or_else(|| {
+        let e = Error::Unsupported(format!("Jordan form over {}", a.field()));
+        Err(with_path(path, e))
+    })
 }
 
 /// `jordan [--real]` ([`crate::jordan::jordan_over`]); `--real` of a matrix over a field
@@ -174,31 +173,13 @@ pub(super) fn descriptor_jordan_with<K: Field + 'static>(
     path: &Path,
     run: impl FnOnce(&Matrix<K>) -> Result<Outcome, Failure>,
 ) -> Result<Outcome, Failure> {
-    let e = |err| with_path(path, err);
-    let ks = crate::pencil::kronecker_structure(&d.a, &d.e).map_err(e)?;
-    if !ks.is_regular() {
-        return Err(Failure::input(format!(
-            "{}: the pencil sE - A is singular (det(sE - A) = 0 for every s, normal rank {} < {}): it has no Jordan structure; `exactlti pencil` gives its Kronecker structure",
-            path.display(),
-            ks.normal_rank,
-            ks.shape.0
-        )));
-    }
-    let (af, method) = crate::realization::finite_dynamics(d).map_err(e)?;
-    let mut out = run(&af)?;
-    let blocks = ks.infinite_divisors.iter().map(|&k| Value::Int(k as i64));
+    let fp = super::jordan_values::finite_part(d, path)?;
+    let mut out = run(&fp.a)?;
+    let blocks = fp.infinite_blocks.iter().map(|&k| Value::Int(k as i64));
     out.report
         .push("infinite_blocks", Value::List(blocks.collect()));
-    out.report.push(
-        "note",
-        Value::Str(format!(
-            "descriptor system: J is the Jordan form of the finite part of the pencil sE - A ({} finite eigenvalues), computed on the finite part's A ({}); A T = T J holds for that A. infinite_blocks: sizes of the Jordan blocks at s = infinity ({} states; size 1 = non-dynamic mode)",
-            af.nrows(),
-            method.name(),
-            ks.infinite_order()
-        )),
-    );
-    out.verified = out.verified && ks.verified && af.nrows() == ks.finite_order();
+    out.report.push("note", Value::Str(fp.note));
+    out.verified = out.verified && fp.verified;
     Ok(out)
 }
 

@@ -27,6 +27,7 @@ mod float_cmds;
 mod float_compare;
 mod freqresp_cmd;
 mod interconnect;
+pub mod jordan_values;
 mod linalg;
 mod pencil_cmds;
 pub mod plots;

@@ -106,6 +106,12 @@ impl<F: Field> Field for ComplexField<F> {
             None
         }
     }
+    fn elem_value(&self, a: &Self::Elem) -> Option<super::ElemValue> {
+        Some(super::ElemValue::Complex {
+            re: Box::new(self.base.elem_value(&a.re)?),
+            im: Box::new(self.base.elem_value(&a.im)?),
+        })
+    }
     fn approx(&self, a: &Self::Elem) -> Option<(f64, f64)> {
         let (r, _) = self.base.approx(&a.re)?;
         let (i, _) = self.base.approx(&a.im)?;

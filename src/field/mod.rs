@@ -26,6 +26,8 @@ pub use complex::{ComplexField, ComplexPair};
 pub mod expr;
 pub(crate) mod rational;
 mod rational_mulmod;
+pub mod value;
+pub use value::{ElemValue, Generator};
 
 /// $x^e$ by repeated squaring from `one` ($x^0 = $ `one`), `mul` the product: at most
 /// $2 \log_2 e$ products. Serves scalars, polynomials and matrices alike.
@@ -95,6 +97,11 @@ pub trait Field:
     /// `acc -= a * b`.
     fn mul_sub_assign(&self, acc: &mut Self::Elem, a: &Self::Elem, b: &Self::Elem) {
         *acc = self.sub(acc, &self.mul(a, b));
+    }
+    /// The element as a structured value ([`value`]: no display text); `None` only for a
+    /// field that does not describe its elements (the default describes rational ones).
+    fn elem_value(&self, a: &Self::Elem) -> Option<ElemValue> {
+        value::rational_or_none(self, a)
     }
     /// Floating-point approximation `(re, im)` under the field's marked embedding; `None`
     /// for a field without one (e.g. a field of rational functions in symbols).

@@ -331,6 +331,13 @@ impl Field for QuadraticField {
             None
         }
     }
+    fn elem_value(&self, x: &Quadratic) -> Option<super::ElemValue> {
+        Some(super::ElemValue::Quadratic {
+            a: x.a.clone(),
+            b: x.b.clone(),
+            d: self.d.clone(),
+        })
+    }
     fn approx(&self, x: &Quadratic) -> Option<(f64, f64)> {
         Some(QuadraticField::approx(self, x))
     }

@@ -65,6 +65,15 @@ impl RatFunc {
     }
 }
 
+/// The terms of an integer polynomial as (exponent vector, coefficient) pairs
+/// ([`crate::field::value::Terms`]).
+pub fn exp_terms(p: &MPoly) -> crate::field::value::Terms {
+    p.terms()
+        .iter()
+        .map(|(m, c)| (p.exps(*m), c.clone()))
+        .collect()
+}
+
 struct Ctx {
     vars: Vec<String>,
     log: Mutex<HashSet<MPoly>>,
@@ -482,6 +491,13 @@ impl Field for RatFuncField {
         Kernels::Table(&kernels::QP_KERNELS)
     }
     /// Only constants have an approximation (no values are attached to the parameters).
+    fn elem_value(&self, a: &RatFunc) -> Option<crate::field::ElemValue> {
+        Some(crate::field::ElemValue::RatFunc {
+            vars: self.vars().to_vec(),
+            num: exp_terms(&a.num),
+            den: exp_terms(&a.den),
+        })
+    }
     fn approx(&self, a: &RatFunc) -> Option<(f64, f64)> {
         let q = a.to_rational()?;
         Some((crate::field::rational_to_f64(&q), 0.0))

@@ -37,6 +37,10 @@ pub struct MatrixOut {
     pub exact: Vec<Vec<String>>,
     pub latex: Vec<Vec<String>>,
     pub approx: Vec<Vec<(f64, f64)>>,
+    /// The entries as values ([`crate::field::ElemValue`], for bindings: the Python package
+    /// builds SymPy from them), made with the LaTeX strings ([`Target::Every`]); empty when
+    /// not made, `None` for an entry shown by text only.
+    pub values: Vec<Vec<Option<crate::field::ElemValue>>>,
     pub nrows: usize,
     pub ncols: usize,
 }
@@ -50,6 +54,9 @@ impl MatrixOut {
                 .map(|i| m.row(i).iter().map(|x| k.latex_elem(x)).collect())
                 .collect(),
             approx: m.to_approx_complex(),
+            values: (0..m.nrows())
+                .map(|i| m.row(i).iter().map(|x| k.elem_value(x)).collect())
+                .collect(),
             nrows: m.nrows(),
             ncols: m.ncols(),
         }
@@ -90,6 +97,7 @@ impl MatrixOut {
             } else {
                 vec![]
             },
+            values: vec![],
             nrows: m.nrows(),
             ncols: m.ncols(),
         }
@@ -103,6 +111,7 @@ impl MatrixOut {
             latex: exact.clone(),
             exact,
             approx,
+            values: vec![],
             nrows,
             ncols,
         }

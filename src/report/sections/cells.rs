@@ -15,6 +15,13 @@ impl Cells {
             exact: vec![vec!["0".to_string(); ncols]; nrows],
             latex: vec![vec!["0".to_string(); ncols]; nrows],
             approx: vec![vec![(0.0, 0.0); ncols]; nrows],
+            values: vec![
+                vec![
+                    Some(crate::field::ElemValue::Rational(num_traits::Zero::zero()));
+                    ncols
+                ];
+                nrows
+            ],
             nrows,
             ncols,
         })
@@ -24,12 +31,14 @@ impl Cells {
         self.0.exact[i][j] = k.fmt_elem(x);
         self.0.latex[i][j] = k.latex_elem(x);
         self.0.approx[i][j] = k.approx(x).unwrap_or((f64::NAN, 0.0));
+        self.0.values[i][j] = k.elem_value(x);
     }
     /// Entry `(i, j)` from a text (also its LaTeX) and a real approximation.
     pub fn text(&mut self, (i, j): (usize, usize), text: String, approx: f64) {
         self.0.latex[i][j] = text.clone();
         self.0.exact[i][j] = text;
         self.0.approx[i][j] = (approx, 0.0);
+        self.0.values[i][j] = None;
     }
     /// Writes `m` with its top left corner at `(r, c)`.
     pub fn block<K: Field>(&mut self, (r, c): (usize, usize), m: &Matrix<K>) {
