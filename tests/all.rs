@@ -139,6 +139,7 @@ mod plots;
 mod poly_factor;
 #[path = "qp_conditions.rs"]
 mod qp_conditions;
+mod conditions_reasons;
 #[path = "qp_kernels.rs"]
 mod qp_kernels;
 #[path = "qp_scale.rs"]
