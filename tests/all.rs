@@ -31,6 +31,7 @@ mod cli_mpoly;
 mod cli_options;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
+mod conditions_reasons;
 #[path = "connect_file.rs"]
 mod connect_file;
 #[path = "critical_fields.rs"]
@@ -139,7 +140,6 @@ mod plots;
 mod poly_factor;
 #[path = "qp_conditions.rs"]
 mod qp_conditions;
-mod conditions_reasons;
 #[path = "qp_kernels.rs"]
 mod qp_kernels;
 #[path = "qp_scale.rs"]

@@ -6,7 +6,7 @@
 //! every condition the numeric result equals the symbolic one evaluated.
 
 use crate::common::cli::{run, temp_file};
-use exactlti::field::{Field, Rational};
+use exactlti::field::{Field as _, Rational};
 use exactlti::mpoly::MPoly;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::rng::SplitMix64;
@@ -33,7 +33,11 @@ fn file(values: Option<&[Rational; 5]>) -> std::path::PathBuf {
     );
     let tag = match values {
         None => "sym".to_string(),
-        Some(v) => v.iter().map(|x| x.to_string().replace('/', "_")).collect::<Vec<_>>().join("-"),
+        Some(v) => v
+            .iter()
+            .map(|x| x.to_string().replace('/', "_"))
+            .collect::<Vec<_>>()
+            .join("-"),
     };
     temp_file("conditions_reasons", &format!("{tag}.json"), &text)
 }
@@ -51,7 +55,9 @@ fn field() -> RatFuncField {
 /// The listed conditions with their kinds (and every one with a reason sentence).
 fn conditions(v: &Value) -> Vec<(MPoly, String)> {
     let k = field();
-    let rs = v["condition_reasons"].as_array().expect("condition_reasons");
+    let rs = v["condition_reasons"]
+        .as_array()
+        .expect("condition_reasons");
     assert_eq!(rs.len(), v["conditions"].as_array().unwrap().len());
     rs.iter()
         .map(|c| {
@@ -71,16 +77,22 @@ fn eval(f: &MPoly, p: &[Rational; 5]) -> Rational {
 /// A random point on f = 0 (f linear in some parameter), every other listed condition
 /// nonzero there.
 fn point_on(f: &MPoly, others: &[MPoly], rng: &mut SplitMix64) -> [Rational; 5] {
-    let x = (0..5).find(|&i| f.deg(i) == 1).expect("linear in a parameter");
+    let x = (0..5)
+        .find(|&i| f.deg(i) == 1)
+        .expect("linear in a parameter");
     let cs = f.to_univariate(x);
     loop {
-        let mut p: [Rational; 5] = std::array::from_fn(|_| Rational::from_integer(rng.int(-9, 9).into()));
+        let mut p: [Rational; 5] =
+            std::array::from_fn(|_| Rational::from_integer(rng.int(-9, 9).into()));
         let a = eval(&cs[1], &p);
         if a == Rational::from_integer(0.into()) {
             continue;
         }
         p[x] = -eval(&cs[0], &p) / a;
-        if others.iter().all(|g| g == f || eval(g, &p) != Rational::from_integer(0.into())) {
+        if others
+            .iter()
+            .all(|g| g == f || eval(g, &p) != Rational::from_integer(0.into()))
+        {
             return p;
         }
     }
@@ -88,8 +100,12 @@ fn point_on(f: &MPoly, others: &[MPoly], rng: &mut SplitMix64) -> [Rational; 5] 
 
 fn point_off(all: &[MPoly], rng: &mut SplitMix64) -> [Rational; 5] {
     loop {
-        let p: [Rational; 5] = std::array::from_fn(|_| Rational::from_integer(rng.int(-9, 9).into()));
-        if all.iter().all(|g| eval(g, &p) != Rational::from_integer(0.into())) {
+        let p: [Rational; 5] =
+            std::array::from_fn(|_| Rational::from_integer(rng.int(-9, 9).into()));
+        if all
+            .iter()
+            .all(|g| eval(g, &p) != Rational::from_integer(0.into()))
+        {
             return p;
         }
     }
@@ -117,7 +133,10 @@ fn msd_descriptor_tf_has_no_pivot_artefact() {
     // the text shows the sentence
     let (code, out, _) = run(&["tf", f.to_str().unwrap()]);
     assert_eq!(code, 0);
-    assert!(out.contains("m != 0") && out.contains("finite eigenvalue"), "{out}");
+    assert!(
+        out.contains("m != 0") && out.contains("finite eigenvalue"),
+        "{out}"
+    );
 }
 
 /// tf and every minreal method: the McMillan condition is the resultant, m is the input's
@@ -141,7 +160,11 @@ fn tf_and_minreal_list_where_the_order_drops() {
         let has = |p: &MPoly| polys.contains(p) || polys.contains(&p.neg());
         assert!(has(&res), "{cmd:?}: {:?}", v["conditions"]);
         assert!(has(&poly("m")), "{cmd:?}: {:?}", v["conditions"]);
-        let key = if cmd[0] == "tf" { "mcmillan_degree" } else { "order" };
+        let key = if cmd[0] == "tf" {
+            "mcmillan_degree"
+        } else {
+            "order"
+        };
         assert_eq!(v[key], 2, "{cmd:?}");
         for (p, kind) in &conds {
             if kind != "structure_change" {
@@ -153,7 +176,10 @@ fn tf_and_minreal_list_where_the_order_drops() {
             let mut a = cmd.clone();
             a.extend([num.to_str().unwrap(), "--format", "json"]);
             let w = json(&a);
-            assert!(w[key].as_i64().unwrap() < 2, "{cmd:?} at {pt:?} on {p:?}: {w}");
+            assert!(
+                w[key].as_i64().unwrap() < 2,
+                "{cmd:?} at {pt:?} on {p:?}: {w}"
+            );
         }
         // off every condition: the same order, and tf equals the symbolic one evaluated
         let pt = point_off(&polys, &mut rng);
@@ -201,12 +227,22 @@ fn ctrb_obsv_list_the_krylov_drops() {
     for (p, kind) in &conds {
         if kind == "structure_change" {
             let pt = point_on(p, &polys, &mut rng);
-            let w = json(&["obsv", file(Some(&pt)).to_str().unwrap(), "--format", "json"]);
+            let w = json(&[
+                "obsv",
+                file(Some(&pt)).to_str().unwrap(),
+                "--format",
+                "json",
+            ]);
             assert!(w["observable_order"].as_i64().unwrap() < 2, "{pt:?}: {w}");
         }
     }
     let pt = point_off(&polys, &mut rng);
-    let w = json(&["obsv", file(Some(&pt)).to_str().unwrap(), "--format", "json"]);
+    let w = json(&[
+        "obsv",
+        file(Some(&pt)).to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
     assert_eq!(w["observable_order"], 2, "{w}");
 }
 
@@ -223,18 +259,27 @@ fn zeros_list_where_a_zero_escapes() {
         let polys: Vec<MPoly> = conds.iter().map(|(p, _)| p.clone()).collect();
         let a = poly("a");
         assert!(
-            conds.iter().any(|(p, k)| p == &a && k == "structure_change"),
+            conds
+                .iter()
+                .any(|(p, k)| p == &a && k == "structure_change"),
             "{cmd}: {v}"
         );
         // no artefact: nothing of degree > 1 in the zero structure of this system
-        assert!(!polys.iter().any(|p| p == &poly("m*b^2 - a*b*c + a^2*k")), "{cmd}: {v}");
+        assert!(
+            !polys.iter().any(|p| p == &poly("m*b^2 - a*b*c + a^2*k")),
+            "{cmd}: {v}"
+        );
         let pt = point_on(&a, &polys, &mut rng);
         let w = json(&[cmd, file(Some(&pt)).to_str().unwrap(), "--format", "json"]);
         assert_eq!(w["zero_polynomial"], "1", "{cmd} at {pt:?}: {w}");
         let pt = point_off(&polys, &mut rng);
         let w = json(&[cmd, file(Some(&pt)).to_str().unwrap(), "--format", "json"]);
         let z = -pt[4].clone() / pt[3].clone();
-        assert_eq!(w["invariant_zeros"][0]["value"], z.to_string(), "{cmd}: {w}");
+        assert_eq!(
+            w["invariant_zeros"][0]["value"],
+            z.to_string(),
+            "{cmd}: {w}"
+        );
     }
 }
 

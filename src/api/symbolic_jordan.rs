@@ -44,7 +44,11 @@ fn explained_with_input(
             let d = a.get(i, j).den();
             if !d.is_constant() {
                 let part = crate::ratfunc::Part::A;
-                let why = crate::ratfunc::Reason::InputDenominator { part, row: i, col: j };
+                let why = crate::ratfunc::Reason::InputDenominator {
+                    part,
+                    row: i,
+                    col: j,
+                };
                 items.push((d.clone(), why));
             }
         }
@@ -98,7 +102,11 @@ pub fn mnf_outcome(
         for (part, m) in [(Part::T, &f.t), (Part::TInv, &f.t_inv)] {
             for i in 0..m.nrows() {
                 for j in 0..m.ncols() {
-                    let why = Reason::PoleOfEntry { part, row: i, col: j };
+                    let why = Reason::PoleOfEntry {
+                        part,
+                        row: i,
+                        col: j,
+                    };
                     k.record_because(m.get(i, j).den(), why);
                 }
             }

@@ -49,7 +49,11 @@ pub enum Structure {
     Observable { dim: usize },
     /// The rank of the Krylov block $[B, AB, \dots, A^{j-1} B]$ (`blocks` $= j$) drops below
     /// `rank`: the controllability (observability, `dual`) indices change.
-    Krylov { blocks: usize, rank: usize, dual: bool },
+    Krylov {
+        blocks: usize,
+        rank: usize,
+        dual: bool,
+    },
     /// The McMillan degree (the rank of the Hankel matrix of the Markov parameters) drops
     /// below `degree`.
     McMillanDegree { degree: usize },

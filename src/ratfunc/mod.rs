@@ -289,11 +289,7 @@ impl RatFuncField {
     /// # Errors
     /// As [`crate::mpoly::factor()`] (`Limit`).
     pub fn conditions(&self) -> Result<Vec<MPoly>> {
-        Ok(self
-            .explained()?
-            .into_iter()
-            .map(|c| c.poly)
-            .collect())
+        Ok(self.explained()?.into_iter().map(|c| c.poly).collect())
     }
     /// [`RatFuncField::conditions`] with the reason of each (the least reason of the
     /// divisors it divides).

@@ -39,9 +39,17 @@ pub(super) fn denominators(part: Part, m: &M, result: bool) -> Vec<Item> {
             let d = m.get(i, j).den();
             if !d.is_constant() {
                 let why = if result {
-                    Reason::PoleOfEntry { part, row: i, col: j }
+                    Reason::PoleOfEntry {
+                        part,
+                        row: i,
+                        col: j,
+                    }
                 } else {
-                    Reason::InputDenominator { part, row: i, col: j }
+                    Reason::InputDenominator {
+                        part,
+                        row: i,
+                        col: j,
+                    }
                 };
                 out.push((d.clone(), why));
             }
@@ -51,10 +59,24 @@ pub(super) fn denominators(part: Part, m: &M, result: bool) -> Vec<Item> {
 }
 
 /// The denominators of the input: `E, A, B, C, D` of the descriptor, else of `A..D`.
-pub(super) fn input(ss: &StateSpace<RatFuncField>, desc: Option<&Descriptor<RatFuncField>>) -> Vec<Item> {
+pub(super) fn input(
+    ss: &StateSpace<RatFuncField>,
+    desc: Option<&Descriptor<RatFuncField>>,
+) -> Vec<Item> {
     let mats: Vec<(Part, &M)> = match desc {
-        Some(d) => vec![(Part::E, &d.e), (Part::A, &d.a), (Part::B, &d.b), (Part::C, &d.c), (Part::D, &d.d)],
-        None => vec![(Part::A, &ss.a), (Part::B, &ss.b), (Part::C, &ss.c), (Part::D, &ss.d)],
+        Some(d) => vec![
+            (Part::E, &d.e),
+            (Part::A, &d.a),
+            (Part::B, &d.b),
+            (Part::C, &d.c),
+            (Part::D, &d.d),
+        ],
+        None => vec![
+            (Part::A, &ss.a),
+            (Part::B, &ss.b),
+            (Part::C, &ss.c),
+            (Part::D, &ss.d),
+        ],
     };
     mats.into_iter()
         .flat_map(|(p, m)| denominators(p, m, false))
@@ -63,10 +85,15 @@ pub(super) fn input(ss: &StateSpace<RatFuncField>, desc: Option<&Descriptor<RatF
 
 /// The poles of a result state space (`A, B, C, D`) and of `t`.
 pub(super) fn result_poles(s: &StateSpace<RatFuncField>, t: Option<&M>) -> Vec<Item> {
-    let mut out: Vec<Item> = [(Part::A, &s.a), (Part::B, &s.b), (Part::C, &s.c), (Part::D, &s.d)]
-        .into_iter()
-        .flat_map(|(p, m)| denominators(p, m, true))
-        .collect();
+    let mut out: Vec<Item> = [
+        (Part::A, &s.a),
+        (Part::B, &s.b),
+        (Part::C, &s.c),
+        (Part::D, &s.d),
+    ]
+    .into_iter()
+    .flat_map(|(p, m)| denominators(p, m, true))
+    .collect();
     if let Some(t) = t {
         out.extend(denominators(Part::T, t, true));
     }
@@ -109,7 +136,11 @@ pub(super) fn mcmillan(
 
 /// The rank of the Hankel matrix $O_N K_N$ of `s` at the point `p` (over $\mathbb{Q}$);
 /// `None` where `s` is undefined.
-fn hankel_rank(s: &StateSpace<RatFuncField>, n: usize, p: &[crate::field::Rational]) -> Option<usize> {
+fn hankel_rank(
+    s: &StateSpace<RatFuncField>,
+    n: usize,
+    p: &[crate::field::Rational],
+) -> Option<usize> {
     let (a, b, c) = (eval_at(&s.a, p)?, eval_at(&s.b, p)?, eval_at(&s.c, p)?);
     let o = krylov(&a.transpose(), &c.transpose(), n).ok()?.transpose();
     let kk = krylov(&a, &b, n).ok()?;
@@ -139,7 +170,11 @@ pub(super) fn krylov_drops(a: &M, b: &M, dual: bool) -> Result<Vec<Item>> {
         if r == prev && j > 1 {
             break;
         }
-        let why = Reason::StructureChange(Structure::Krylov { blocks: j, rank: r, dual });
+        let why = Reason::StructureChange(Structure::Krylov {
+            blocks: j,
+            rank: r,
+            dual,
+        });
         out.extend(kry.rank_drop(r)?.all().into_iter().map(|f| (f, why)));
         prev = r;
         if r == n {
@@ -148,7 +183,7 @@ pub(super) fn krylov_drops(a: &M, b: &M, dual: bool) -> Result<Vec<Item>> {
         cur = a.try_mul(&cur)?;
         kry = kry.hstack(&cur)?;
     }
-    let last = Reason::StructureChange(Structure::Krylov { blocks: 0, rank: prev, dual });
+    // the last rank is the controllable (observable) order
     let dim = prev;
     for item in out.iter_mut() {
         if let Reason::StructureChange(Structure::Krylov { rank, .. }) = item.1
@@ -161,7 +196,6 @@ pub(super) fn krylov_drops(a: &M, b: &M, dual: bool) -> Result<Vec<Item>> {
             });
         }
     }
-    let _ = last;
     Ok(out)
 }
 
@@ -172,7 +206,12 @@ pub(super) fn zero_escapes(z: &crate::poly::Poly<RatFuncField>) -> Vec<Item> {
     z.coeffs()
         .iter()
         .filter(|c| !c.den().is_constant())
-        .map(|c| (c.den().clone(), Reason::StructureChange(Structure::ZeroEscapes { degree })))
+        .map(|c| {
+            (
+                c.den().clone(),
+                Reason::StructureChange(Structure::ZeroEscapes { degree }),
+            )
+        })
         .collect()
 }
 
@@ -235,4 +274,35 @@ fn newton(
         cs = next;
     }
     cs
+}
+
+/// The first column of the Routh array of `g` (leading coefficient made positive by
+/// dividing by it): every root of `g` lies in the open left half plane exactly when every
+/// entry is positive (stopping at an entry that is identically zero: the test degenerates,
+/// the entries so far are returned).
+pub(super) fn routh_first_column(
+    g: &crate::poly::Poly<RatFuncField>,
+) -> Vec<crate::ratfunc::RatFunc> {
+    let k = g.field().clone();
+    let n = g.deg();
+    let lc = g.coeff(n);
+    let c = |i: usize| k.div_unrecorded(&g.coeff(i), &lc).expect("nonzero lc");
+    let mut r0: Vec<_> = (0..=n).rev().step_by(2).map(c).collect();
+    let mut r1: Vec<_> = (0..n).rev().step_by(2).map(c).collect();
+    let mut out = vec![];
+    while let Some(h) = r1.first().cloned() {
+        if k.is_zero(&h) {
+            break;
+        }
+        out.push(h.clone());
+        let r2: Vec<_> = (0..r0.len().saturating_sub(1))
+            .map(|j| {
+                let a = k.mul(&h, &r0[j + 1]);
+                let b = k.mul(&r0[0], r1.get(j + 1).unwrap_or(&k.zero()));
+                k.div_unrecorded(&k.sub(&a, &b), &h).expect("h nonzero")
+            })
+            .collect();
+        r0 = std::mem::replace(&mut r1, r2);
+    }
+    out
 }

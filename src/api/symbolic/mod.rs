@@ -39,7 +39,11 @@ fn descriptor(
     let t = t.in_field(&k);
     let out = super::pencil_cmds::execute_typed(cmd, path, f, &t)?;
     let conds = k.explained().map_err(|e| with_path(path, e))?;
-    let r = with_conditions(exact_only(out.report).str("field", k.to_string()), &k, &conds);
+    let r = with_conditions(
+        exact_only(out.report).str("field", k.to_string()),
+        &k,
+        &conds,
+    );
     Ok(Outcome::new(r, out.verified))
 }
 

@@ -6,6 +6,7 @@
 //! approximations) are made only where they hold for every parameter value (a zero at
 //! $s = 0$ is not minimum phase); otherwise `minimum_phase` says "depends on parameters".
 
+use super::conditions::{self, Item};
 use crate::api::common::exact_only;
 use crate::api::common::with_path;
 use crate::api::{Command, Failure, MethodArg, Outcome};
@@ -13,11 +14,10 @@ use crate::field::Field;
 use crate::io::{SystemFile, TypedSystem};
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;
-use crate::realization::{self, MinrealMethod};
 use crate::ratfunc::{Part, Reason, Structure};
+use crate::realization::{self, MinrealMethod};
 use crate::report::sections::conditions::with_conditions;
 use crate::report::{Report, Value, sections, str_list};
-use super::conditions::{self, Item};
 use crate::structure::factor_qp::{factor_over_qp, hurwitz_over_qp};
 use crate::system::StateSpace;
 use std::path::Path;
@@ -229,7 +229,12 @@ fn scb_items(
 /// The outcome of a report over $\mathbb{Q}(p)$: exact only, the field and the conditions
 /// (`items` with reasons, else those recorded in `k` during the computation), `verified` set
 /// to `ok`.
-fn finish(k: &RatFuncField, r: Report, ok: bool, items: Option<Vec<Item>>) -> crate::Result<Outcome> {
+fn finish(
+    k: &RatFuncField,
+    r: Report,
+    ok: bool,
+    items: Option<Vec<Item>>,
+) -> crate::Result<Outcome> {
     let conds = match items {
         Some(v) => k.explain(v)?,
         None => k.explained()?,
@@ -251,10 +256,28 @@ pub(in crate::api) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
 /// `minimum_phase` decided over $\mathbb{Q}(p)$ from the zero polynomial's factors
 /// ([`hurwitz_over_qp`]: a zero at the origin for every parameter value is not minimum
 /// phase), else "depends on parameters".
+///
+/// Undecided: `minimum_phase_requires` names the deciding rational functions, the entries
+/// of the Routh array's first column of each undecided factor that are not constants (all
+/// must be positive); files state no signs of their parameters, so none is assumed.
 fn minimum_phase(r: Report, zeros: &Poly<RatFuncField>) -> crate::Result<Report> {
     Ok(match hurwitz_over_qp(zeros)? {
         Some(b) => set_key(r, "minimum_phase", Value::Bool(b)),
-        None => depends(r, "minimum_phase"),
+        None => {
+            let k = zeros.field().clone();
+            let mut req = vec![];
+            for (g, _) in crate::structure::factor_qp::factor_over_qp(zeros)? {
+                if crate::structure::scb::hurwitz(&g).is_none() {
+                    for x in conditions::routh_first_column(&g) {
+                        if !k.is_constant(&x) {
+                            req.push(format!("{} > 0", k.fmt_elem(&x)));
+                        }
+                    }
+                }
+            }
+            req.dedup();
+            depends(r, "minimum_phase").with("minimum_phase_requires", str_list(req))
+        }
     })
 }
 

@@ -150,7 +150,11 @@ pub fn with_conditions(mut r: Report, k: &RatFuncField, cs: &[Condition]) -> Rep
         Some(i) => {
             r.items[i].1 = cv;
             r.items.retain(|(key, _)| key != &rk);
-            let i = r.items.iter().position(|(key, _)| key == &ck).expect("kept");
+            let i = r
+                .items
+                .iter()
+                .position(|(key, _)| key == &ck)
+                .expect("kept");
             r.items.insert(i + 1, (rk, rv));
         }
         None => {
