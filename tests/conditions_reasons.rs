@@ -6,7 +6,7 @@
 //! every condition the numeric result equals the symbolic one evaluated.
 
 use crate::common::cli::{run, temp_file};
-use exactlti::field::{Field as _, Rational};
+use exactlti::field::Rational;
 use exactlti::mpoly::MPoly;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::rng::SplitMix64;
