@@ -96,12 +96,28 @@ pub fn drop_factors(
     exact: bool,
     rank_at: &dyn Fn(&[Rational]) -> Option<usize>,
 ) -> Result<Drop> {
-    let mut out = Drop::default();
     if candidates.is_constant() || r == 0 {
-        return Ok(out);
+        return Ok(Drop::default());
     }
+    let fs: Vec<MPoly> = factor(&candidates.primitive_part())?
+        .factors
+        .into_iter()
+        .map(|(f, _)| f)
+        .collect();
+    Ok(test_factors(k, fs, r, exact, rank_at))
+}
+
+/// [`drop_factors`] on candidates already factored (irreducible).
+pub fn test_factors(
+    k: &RatFuncField,
+    fs: Vec<MPoly>,
+    r: usize,
+    exact: bool,
+    rank_at: &dyn Fn(&[Rational]) -> Option<usize>,
+) -> Drop {
+    let mut out = Drop::default();
     let mut rng = SplitMix64(0x25c0_4d17);
-    for (f, _) in factor(&candidates.primitive_part())?.factors {
+    for f in fs {
         if f.is_constant() {
             continue;
         }
@@ -127,7 +143,7 @@ pub fn drop_factors(
             _ => {}
         }
     }
-    Ok(out)
+    out
 }
 
 /// Rows of `m` (a matrix over $\mathbb{Q}$) independent and spanning its row space.

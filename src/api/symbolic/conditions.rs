@@ -20,7 +20,9 @@
 use crate::error::Result;
 use crate::field::Field;
 use crate::matrix::Matrix;
-use crate::matrix::qp_conditions::{drop_factors, eval_at, independent_rows, random_point};
+use crate::matrix::qp_conditions::{
+    drop_factors, eval_at, independent_rows, random_point, test_factors,
+};
 use crate::mpoly::{MPoly, gcd};
 use crate::ratfunc::{Part, RatFuncField, Reason, Structure};
 use crate::system::{Descriptor, StateSpace};
@@ -115,6 +117,15 @@ pub(super) fn mcmillan(
         return Ok(vec![]);
     }
     let k = min.a.field().clone();
+    let why = Reason::StructureChange(Structure::McMillanDegree { degree: r });
+    if r == n {
+        // already minimal: every maximal minor of the Hankel matrix is det O_I det K_J, so
+        // the factors of the Krylov minors that proved the order (the log, factored once)
+        // are complete candidates
+        let fs = k.explained()?.into_iter().map(|c| c.poly).collect();
+        let found = test_factors(&k, fs, r, false, &|p| hankel_rank(input, n, p));
+        return Ok(found.all().into_iter().map(|f| (f, why)).collect());
+    }
     let o = krylov(&min.a.transpose(), &min.c.transpose(), n)?.transpose();
     let kk = krylov(&min.a, &min.b, n)?;
     let mut rng = crate::rng::SplitMix64(0x25c0_4d19);
@@ -129,7 +140,6 @@ pub(super) fn mcmillan(
     };
     let minor = k.mul(&o.select_rows(&rows).det()?, &kk.select_cols(&cols).det()?);
     let exact = o.nrows() == r && kk.ncols() == r;
-    let why = Reason::StructureChange(Structure::McMillanDegree { degree: r });
     let found = drop_factors(&k, minor.num(), r, exact, &|p| hankel_rank(input, n, p))?;
     Ok(found.all().into_iter().map(|f| (f, why)).collect())
 }
