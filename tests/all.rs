@@ -31,6 +31,7 @@ mod cli_mpoly;
 mod cli_options;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
+mod conditions_reasons;
 #[path = "connect_file.rs"]
 mod connect_file;
 #[path = "critical_fields.rs"]

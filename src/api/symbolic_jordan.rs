@@ -17,7 +17,7 @@ use crate::jordan::JordanForm;
 use crate::jordan::jordan_qp;
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
-use crate::report::str_list;
+use crate::report::sections::conditions::with_conditions;
 
 /// `jordan FILE` on a symbolic `A`.
 ///
@@ -25,7 +25,35 @@ use crate::report::str_list;
 /// Those of [`jordan_qp`].
 pub fn jordan_outcome(a: &Matrix<RatFuncField>) -> Result<Outcome> {
     let jf = jordan_qp(a)?;
-    Ok(Outcome::new(jf.report(), jf.verified))
+    let k = jf.base().clone();
+    let conds = explained_with_input(&k, a)?;
+    Ok(Outcome::new(
+        with_conditions(jf.report(), &k, &conds),
+        jf.verified,
+    ))
+}
+
+/// The log of `k` (with reasons) and the denominators of the input `a`.
+fn explained_with_input(
+    k: &RatFuncField,
+    a: &Matrix<RatFuncField>,
+) -> Result<Vec<crate::ratfunc::Condition>> {
+    let mut items = k.recorded_with_reasons();
+    for i in 0..a.nrows() {
+        for j in 0..a.ncols() {
+            let d = a.get(i, j).den();
+            if !d.is_constant() {
+                let part = crate::ratfunc::Part::A;
+                let why = crate::ratfunc::Reason::InputDenominator {
+                    part,
+                    row: i,
+                    col: j,
+                };
+                items.push((d.clone(), why));
+            }
+        }
+    }
+    k.explain(items)
 }
 
 /// `jordan --normalize X FILE` on a symbolic `A`: the chains of every eigenvalue in
@@ -51,8 +79,9 @@ pub fn normalized_outcome(
 /// Those of the real form over $\mathbb{Q}(p)$.
 pub fn real_outcome(a: &Matrix<RatFuncField>) -> Result<Outcome> {
     let r = crate::jordan::over_qp::real_form_qp(a)?;
-    let conds = r.a.field().conditions_strings()?;
-    let rep = exact_only(r.report()).with("conditions", str_list(conds));
+    let k = r.a.field().clone();
+    let conds = explained_with_input(&k, a)?;
+    let rep = with_conditions(exact_only(r.report()), &k, &conds);
     Ok(Outcome::new(rep, r.verified))
 }
 
@@ -85,19 +114,27 @@ pub fn mnf_outcome(
     )?;
     // t is invertible where t and t^-1 (checked: t^-1 t = I) are both defined
     if let Some(f) = &m.form {
-        for x in f.t.as_slice().iter().chain(f.t_inv.as_slice()) {
-            k.record_condition(x.den());
+        use crate::ratfunc::{Part, Reason};
+        for (part, m) in [(Part::T, &f.t), (Part::TInv, &f.t_inv)] {
+            for i in 0..m.nrows() {
+                for j in 0..m.ncols() {
+                    let why = Reason::PoleOfEntry {
+                        part,
+                        row: i,
+                        col: j,
+                    };
+                    k.record_because(m.get(i, j).den(), why);
+                }
+            }
         }
     }
-    let conds = k.conditions_strings()?;
+    let conds = explained_with_input(&k, &a)?;
     let mut r = exact_only(m.report());
     for item in r.items.iter_mut() {
         if item.0 == "conditions" {
             item.0 = "existence_checks".to_string();
         }
     }
-    let r = r
-        .str("field", k.to_string())
-        .with("conditions", str_list(conds));
+    let r = with_conditions(r.str("field", k.to_string()), &k, &conds);
     Ok(Outcome::new(r, !m.exists || m.verified))
 }

@@ -25,7 +25,7 @@ use crate::mpoly::factor::cmp_poly;
 use crate::mpoly::resultant::{discriminant, resultant};
 use crate::mpoly::{MAX_VARS, MPoly, factor};
 use crate::poly::Poly;
-use crate::ratfunc::{RatFunc, RatFuncField};
+use crate::ratfunc::{RatFunc, RatFuncField, Reason, Structure};
 
 /// Largest matrix the decomposition over $\mathbb{Q}(p)$ accepts (expression swell grows
 /// fast with `n`).
@@ -104,12 +104,15 @@ pub fn charpoly_factors(a: &Matrix<RatFuncField>) -> Result<QpCharpoly> {
             .then_with(|| cmp_poly(f, g))
     });
     for (i, (f, _)) in facs.iter().enumerate() {
-        k.record_condition(&drop_last(&f.lc_in(nv)));
+        let why = |s| Reason::StructureChange(s);
+        k.record_because(&drop_last(&f.lc_in(nv)), why(Structure::FactorDegree));
         if f.deg(nv) >= 2 {
-            k.record_condition(&drop_last(&discriminant(f, nv)));
+            let d = drop_last(&discriminant(f, nv));
+            k.record_because(&d, why(Structure::RepeatedEigenvalue));
         }
         for (g, _) in &facs[i + 1..] {
-            k.record_condition(&drop_last(&resultant(f, g, nv)));
+            let r = drop_last(&resultant(f, g, nv));
+            k.record_because(&r, why(Structure::EigenvaluesMeet));
         }
     }
     let factors = facs

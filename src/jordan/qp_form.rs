@@ -114,7 +114,10 @@ pub fn jordan_qp(a_in: &Matrix<RatFuncField>) -> Result<JordanForm<RatFuncField>
             // det T != 0 as a rational function; its numerator's factors are conditions
             let det = t.det()?;
             verified = !k.is_zero(&det);
-            k.record_condition(det.num());
+            k.record_because(
+                det.num(),
+                crate::ratfunc::Reason::StructureChange(crate::ratfunc::Structure::SingularBasis),
+            );
         }
     }
     jf.conditions = k

@@ -24,6 +24,7 @@ mod ops;
 pub mod over_k;
 pub mod over_q;
 pub mod params;
+pub mod qp_conditions;
 mod rref;
 
 pub(crate) use rref::nullspace_from_rref;

@@ -21,7 +21,10 @@
 //! Display: `-cr/(m*u)`; numerator and denominator are shown factored where that is shorter
 //! (`(a + b)^2/c`); LaTeX uses `\frac{}{}`.
 
+pub mod condition;
 pub(crate) mod kernels;
+
+pub use condition::{Condition, Part, Reason, Structure};
 
 /// $\det B$ of a matrix over $\mathbb{Z}\lbrack p\rbrack$ by evaluation/interpolation (the kernel behind every Q(p) determinant).
 pub use kernels::{charpoly_zp, det_zp};
@@ -32,7 +35,7 @@ use crate::mpoly::factor::cmp_poly;
 use crate::mpoly::{MAX_VARS, MPoly, QPoly, factor, gcd};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
-use std::collections::HashSet;
+use std::collections::HashMap;
 use std::fmt;
 use std::sync::{Arc, Mutex};
 
@@ -76,9 +79,10 @@ pub fn exp_terms(p: &MPoly) -> crate::field::value::Terms {
 
 struct Ctx {
     vars: Vec<String>,
-    log: Mutex<HashSet<MPoly>>,
+    /// Each recorded divisor with its first reason (the least in [`Reason`]'s order).
+    log: Mutex<HashMap<MPoly, Reason>>,
     /// The irreducible factors of each recorded divisor, once computed.
-    factored: Mutex<std::collections::HashMap<MPoly, Vec<MPoly>>>,
+    factored: Mutex<HashMap<MPoly, Vec<MPoly>>>,
 }
 
 /// The field $\mathbb{Q}(p_1, \dots, p_k)$ (a domain value; clones share the condition log).
@@ -132,8 +136,8 @@ impl RatFuncField {
         Ok(RatFuncField {
             ctx: Arc::new(Ctx {
                 vars,
-                log: Mutex::new(HashSet::new()),
-                factored: Mutex::new(std::collections::HashMap::new()),
+                log: Mutex::new(HashMap::new()),
+                factored: Mutex::new(HashMap::new()),
             }),
         })
     }
@@ -207,20 +211,27 @@ impl RatFuncField {
         };
         self.frac(hom(&a.num), hom(&a.den))
     }
-    /// Records that `p` is assumed nonzero (its primitive part; constants are ignored).
+    /// Records that `p` is assumed nonzero (its primitive part; constants are ignored), as a
+    /// pivot of the elimination ([`Reason::Pivot`]).
     pub fn record_condition(&self, p: &MPoly) {
+        self.record_because(p, Reason::Pivot);
+    }
+    /// Records that `p` is assumed nonzero for `reason` (a polynomial recorded twice keeps the
+    /// lesser reason in [`Reason`]'s order: input, structure, pole, proof, pivot).
+    pub fn record_because(&self, p: &MPoly, reason: Reason) {
         if p.is_constant() {
             return;
         }
         let q = p.primitive_part();
         if let Ok(mut log) = self.ctx.log.lock() {
-            log.insert(q);
+            let slot = log.entry(q).or_insert(reason);
+            *slot = (*slot).min(reason);
         }
     }
     /// Records that `p` is assumed nonzero, **unfactored**: [`RatFuncField::conditions`]
     /// lists it as one condition (a pivot minor whose factors were not found; factoring it
     /// could cost more than the computation that needed it).
-    pub fn record_condition_unfactored(&self, p: &MPoly) {
+    pub fn record_condition_unfactored(&self, p: &MPoly, reason: Reason) {
         if p.is_constant() {
             return;
         }
@@ -228,16 +239,22 @@ impl RatFuncField {
         if let Ok(mut m) = self.ctx.factored.lock() {
             m.insert(q.clone(), vec![q.clone()]);
         }
-        if let Ok(mut log) = self.ctx.log.lock() {
-            log.insert(q);
-        }
+        self.record_because(&q, reason);
     }
     /// The raw recorded divisors (primitive, not factored), in no particular order.
     pub fn recorded(&self) -> Vec<MPoly> {
         self.ctx
             .log
             .lock()
-            .map(|l| l.iter().cloned().collect())
+            .map(|l| l.keys().cloned().collect())
+            .unwrap_or_default()
+    }
+    /// The raw recorded divisors with their reasons, in no particular order.
+    pub fn recorded_with_reasons(&self) -> Vec<(MPoly, Reason)> {
+        self.ctx
+            .log
+            .lock()
+            .map(|l| l.iter().map(|(p, r)| (p.clone(), *r)).collect())
             .unwrap_or_default()
     }
     /// Empties the condition log.
@@ -246,34 +263,66 @@ impl RatFuncField {
             log.clear();
         }
     }
+    /// The irreducible factors of `p` (primitive, positive leading coefficient; cached).
+    fn factors_of(&self, p: &MPoly) -> Result<Vec<MPoly>> {
+        let known = self
+            .ctx
+            .factored
+            .lock()
+            .ok()
+            .and_then(|m| m.get(p).cloned());
+        if let Some(fs) = known {
+            return Ok(fs);
+        }
+        let fs: Vec<MPoly> = factor(p)?
+            .factors
+            .into_iter()
+            .map(|(g, _)| g.primitive_part())
+            .collect();
+        if let Ok(mut m) = self.ctx.factored.lock() {
+            m.insert(p.clone(), fs.clone());
+        }
+        Ok(fs)
+    }
     /// The conditions: distinct irreducible factors of every recorded divisor, sorted (total
     /// degree, number of terms, terms), each primitive with positive leading coefficient.
     ///
     /// # Errors
     /// As [`crate::mpoly::factor()`] (`Limit`).
     pub fn conditions(&self) -> Result<Vec<MPoly>> {
-        let mut set: HashSet<MPoly> = HashSet::new();
-        for p in self.recorded() {
-            let known = self
-                .ctx
-                .factored
-                .lock()
-                .ok()
-                .and_then(|m| m.get(&p).cloned());
-            let fs = match known {
-                Some(fs) => fs,
-                None => {
-                    let fs: Vec<MPoly> = factor(&p)?.factors.into_iter().map(|(g, _)| g).collect();
-                    if let Ok(mut m) = self.ctx.factored.lock() {
-                        m.insert(p.clone(), fs.clone());
-                    }
-                    fs
-                }
-            };
-            set.extend(fs);
+        Ok(self.explained()?.into_iter().map(|c| c.poly).collect())
+    }
+    /// [`RatFuncField::conditions`] with the reason of each (the least reason of the
+    /// divisors it divides).
+    ///
+    /// # Errors
+    /// As [`RatFuncField::conditions`].
+    pub fn explained(&self) -> Result<Vec<Condition>> {
+        self.explain(self.recorded_with_reasons())
+    }
+    /// The distinct irreducible factors of `items` (non-constant polynomials with reasons),
+    /// each with the least reason of the polynomials it divides, sorted as
+    /// [`RatFuncField::conditions`].
+    ///
+    /// # Errors
+    /// As [`crate::mpoly::factor()`] (`Limit`).
+    pub fn explain(&self, items: Vec<(MPoly, Reason)>) -> Result<Vec<Condition>> {
+        let mut set: HashMap<MPoly, Reason> = HashMap::new();
+        for (p, why) in items {
+            if p.is_constant() {
+                continue;
+            }
+            for f in self.factors_of(&p.primitive_part())? {
+                let f = if f.lc().is_negative() { f.neg() } else { f };
+                let slot = set.entry(f).or_insert(why);
+                *slot = (*slot).min(why);
+            }
         }
-        let mut v: Vec<MPoly> = set.into_iter().collect();
-        v.sort_by(cmp_poly);
+        let mut v: Vec<Condition> = set
+            .into_iter()
+            .map(|(poly, reason)| Condition { poly, reason })
+            .collect();
+        v.sort_by(|a, b| cmp_poly(&a.poly, &b.poly));
         Ok(v)
     }
     /// [`RatFuncField::conditions`] as display strings.

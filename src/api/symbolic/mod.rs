@@ -15,6 +15,7 @@
 //! [`execute`] is the $\mathbb{Q}(p)$ arm of [`crate::api::System::run`]; a file whose
 //! symbols all got values (`--at`) is typed over its numeric field and never comes here.
 
+pub(super) mod conditions;
 mod modes;
 pub(super) mod system;
 
@@ -23,7 +24,7 @@ use super::{Command, Failure, MethodArg, Outcome};
 use crate::io::symbolic::refusal;
 use crate::io::{SystemFile, TypedSystem};
 use crate::ratfunc::RatFuncField;
-use crate::report::str_list;
+use crate::report::sections::conditions::with_conditions;
 use std::path::Path;
 
 /// A descriptor-level command ([`super::pencil_cmds`]) over $\mathbb{Q}(p)$, on a fresh
@@ -37,11 +38,36 @@ fn descriptor(
     let k = t.a_raw.field().fresh();
     let t = t.in_field(&k);
     let out = super::pencil_cmds::execute_typed(cmd, path, f, &t)?;
-    let conds = k.conditions_strings().map_err(|e| with_path(path, e))?;
-    let r = exact_only(out.report)
-        .str("field", k.to_string())
-        .with("conditions", str_list(conds));
+    let conds = k.explained().map_err(|e| with_path(path, e))?;
+    let r = with_conditions(
+        exact_only(out.report).str("field", k.to_string()),
+        &k,
+        &conds,
+    );
     Ok(Outcome::new(r, out.verified))
+}
+
+/// The condition set of `linalg OP` on `a` (`conditions` module docs): the input's
+/// denominators for `det` and `charpoly` (identities), with the gcd of the maximal minors for
+/// `rank`; the log of the elimination for the others.
+fn linalg_conditions(
+    op: crate::api::args::LinalgOp,
+    a: &crate::matrix::Matrix<RatFuncField>,
+) -> crate::Result<Vec<crate::ratfunc::Condition>> {
+    use crate::api::args::LinalgOp;
+    use crate::ratfunc::{Part, Reason, Structure};
+    let k = a.field();
+    let mut items = conditions::denominators(Part::A, a, false);
+    match op {
+        LinalgOp::Det | LinalgOp::Charpoly => {}
+        LinalgOp::Rank => {
+            let r = a.rank();
+            let why = Reason::StructureChange(Structure::Rank { rank: r });
+            items.extend(a.rank_drop(r)?.all().into_iter().map(|f| (f, why)));
+        }
+        _ => items.extend(k.recorded_with_reasons()),
+    }
+    k.explain(items)
 }
 
 /// The command's name as typed.
@@ -92,12 +118,12 @@ pub(super) fn execute(
             let k = k.fresh();
             let a = t.a_raw.map(&k, |x| x.clone());
             let r = linalg_report(*op, &a, path)?;
-            let conds = k.conditions_strings().map_err(|e| with_path(path, e))?;
-            Ok(Outcome::plain(
-                exact_only(r)
-                    .str("field", k.to_string())
-                    .with("conditions", str_list(conds)),
-            ))
+            let conds = linalg_conditions(*op, &a).map_err(|e| with_path(path, e))?;
+            Ok(Outcome::plain(with_conditions(
+                exact_only(r).str("field", k.to_string()),
+                &k,
+                &conds,
+            )))
         }
         Command::Jordan {
             normalize: Some(n),

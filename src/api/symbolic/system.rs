@@ -6,6 +6,7 @@
 //! approximations) are made only where they hold for every parameter value (a zero at
 //! $s = 0$ is not minimum phase); otherwise `minimum_phase` says "depends on parameters".
 
+use super::conditions::{self, Item};
 use crate::api::common::exact_only;
 use crate::api::common::with_path;
 use crate::api::{Command, Failure, MethodArg, Outcome};
@@ -14,7 +15,9 @@ use crate::field::Field;
 use crate::io::{SystemFile, TypedSystem};
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;
+use crate::ratfunc::{Part, Reason, Structure};
 use crate::realization::{self, MinrealMethod};
+use crate::report::sections::conditions::with_conditions;
 use crate::report::{Report, Value, sections, str_list};
 use crate::structure::factor_qp::{factor_over_qp, hurwitz_over_qp};
 use crate::system::StateSpace;
@@ -34,16 +37,20 @@ pub(in crate::api) fn run(
     let t = t.in_field(&k);
     let e = |err| with_path(path, err);
     let s = &t.ss;
+    // the command's own condition set (`conditions` module docs); `None`: the log's
+    let mut items: Option<Vec<Item>> = None;
     let (r, ok) = match cmd {
         Command::Scb { .. } => {
             let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
             let ok = r.verified;
             let zp = r.invariant_zero_polynomial();
+            items = Some(scb_items(&r, &zp).map_err(e)?);
             let rep = minimum_phase(r.report(), &zp).map_err(e)?;
             (rep.with("zero_factors", factors(&zp).map_err(e)?), ok)
         }
         Command::Zeros { .. } => {
             let z = crate::structure::zeros::invariant_zeros(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
+            items = Some(conditions::zero_escapes(&z.polynomial));
             let rep = minimum_phase(z.report(), &z.polynomial).map_err(e)?;
             (
                 rep.with("zero_factors", factors(&z.polynomial).map_err(e)?),
@@ -64,6 +71,9 @@ pub(in crate::api) fn run(
                 MethodArg::Era => return Ok(None),
             };
             let r = realization::minimal(s, m).map_err(e)?;
+            let mut v = conditions::result_poles(&r.system, r.t.as_ref());
+            v.extend(conditions::mcmillan(&r.system, s).map_err(e)?);
+            items = Some(v);
             (r.report(), r.verified)
         }
         Command::Ctrb { .. } | Command::Obsv { .. } => {
@@ -88,17 +98,31 @@ pub(in crate::api) fn run(
                 "uncontrollable_charpoly_factors"
             };
             let cp = part.charpoly().map_err(e)?;
+            items = Some(
+                if dual {
+                    conditions::krylov_drops(&s.a.transpose(), &s.c.transpose(), true)
+                } else {
+                    conditions::krylov_drops(&s.a, &s.b, false)
+                }
+                .map_err(e)?,
+            );
             let rep = sections::ctrb_report(&c, dual).map_err(e)?;
             (rep.with(key, factors(&cp).map_err(e)?), c.verified)
         }
         Command::Tf { .. } => {
             // with E: G = C (sE - A)^-1 B + D of the pencil, and the standard form (the
             // system the other commands see) checked against it by its Markov parameters
-            let g = match &t.descriptor {
-                Some(d) => realization::descriptor_transfer_matrix(d).map_err(e)?,
-                None => s.transfer_matrix().map_err(e)?,
+            let (g, mut v) = match &t.descriptor {
+                Some(d) => (
+                    realization::descriptor_transfer_matrix(d).map_err(e)?,
+                    conditions::pencil(d).map_err(e)?,
+                ),
+                None => (s.transfer_matrix().map_err(e)?, vec![]),
             };
-            tf(s, &g).map_err(e)?
+            let (rep, ok, min) = tf(s, &g).map_err(e)?;
+            v.extend(conditions::mcmillan(&min, s).map_err(e)?);
+            items = Some(v);
+            (rep, ok)
         }
         Command::Standard { .. } => match &t.descriptor {
             Some(d) => {
@@ -152,16 +176,64 @@ pub(in crate::api) fn run(
         Command::Modes { .. } => (super::modes::modes_report(&s.a).map_err(e)?, true),
         _ => return Ok(None),
     };
-    finish(&k, r, ok).map(Some).map_err(e)
+    let items = items.map(|v| with_input(&t, v));
+    finish(&k, r, ok, items).map(Some).map_err(e)
+}
+
+/// `items` and the input's denominators.
+fn with_input(t: &T, mut items: Vec<Item>) -> Vec<Item> {
+    items.extend(conditions::input(&t.ss, t.descriptor.as_ref()));
+    items
+}
+
+/// The condition set of `scb`: where a zero escapes, the poles of the SCB matrices and of
+/// the transformations, and where a transformation is singular.
+fn scb_items(
+    r: &crate::structure::scb::Scb<RatFuncField>,
+    zp: &Poly<RatFuncField>,
+) -> crate::Result<Vec<Item>> {
+    let res = StateSpace {
+        a: r.a.clone(),
+        b: r.b.clone(),
+        c: r.c.clone(),
+        d: r.d.clone(),
+    };
+    let mut v = conditions::zero_escapes(zp);
+    v.extend(conditions::result_poles(&res, None));
+    for (p, m) in [
+        (Part::Gamma1, &r.gamma1),
+        (Part::Gamma2, &r.gamma2),
+        (Part::Gamma3, &r.gamma3),
+        (Part::U, &r.u_pre),
+        (Part::Y, &r.y_pre),
+    ] {
+        v.extend(conditions::denominators(p, m, true));
+        if m.is_square() && m.nrows() > 0 {
+            let d = m.det()?;
+            v.push((
+                d.num().clone(),
+                Reason::StructureChange(Structure::SingularBasis),
+            ));
+        }
+    }
+    Ok(v)
 }
 
 /// The outcome of a report over $\mathbb{Q}(p)$: exact only, the field and the conditions
-/// recorded in `k` during the computation, `verified` set to `ok`.
-fn finish(k: &RatFuncField, r: Report, ok: bool) -> crate::Result<Outcome> {
-    let conds = k.conditions_strings()?;
-    let r = exact_only(r)
-        .str("field", k.to_string())
-        .with("conditions", str_list(conds));
+/// (`items` with reasons, else those recorded in `k` during the computation), `verified` set
+/// to `ok`.
+fn finish(
+    k: &RatFuncField,
+    r: Report,
+    ok: bool,
+    items: Option<Vec<Item>>,
+) -> crate::Result<Outcome> {
+    let conds = match items {
+        Some(v) => k.explain(v)?,
+        None => k.explained()?,
+    };
+    let r = exact_only(r).str("field", k.to_string());
+    let r = with_conditions(r, k, &conds);
     Ok(Outcome::new(set_key(r, "verified", Value::Bool(ok)), ok))
 }
 
@@ -177,10 +249,28 @@ pub(in crate::api) fn set_key(mut r: Report, key: &str, v: Value) -> Report {
 /// `minimum_phase` decided over $\mathbb{Q}(p)$ from the zero polynomial's factors
 /// ([`hurwitz_over_qp`]: a zero at the origin for every parameter value is not minimum
 /// phase), else "depends on parameters".
+///
+/// Undecided: `minimum_phase_requires` names the deciding rational functions, the entries
+/// of the Routh array's first column of each undecided factor that are not constants (all
+/// must be positive); files state no signs of their parameters, so none is assumed.
 fn minimum_phase(r: Report, zeros: &Poly<RatFuncField>) -> crate::Result<Report> {
     Ok(match hurwitz_over_qp(zeros)? {
         Some(b) => set_key(r, "minimum_phase", Value::Bool(b)),
-        None => depends(r, "minimum_phase"),
+        None => {
+            let k = zeros.field().clone();
+            let mut req = vec![];
+            for (g, _) in crate::structure::factor_qp::factor_over_qp(zeros)? {
+                if crate::structure::scb::hurwitz(&g).is_none() {
+                    for x in conditions::routh_first_column(&g) {
+                        if !k.is_constant(&x) {
+                            req.push(format!("{} > 0", k.fmt_elem(&x)));
+                        }
+                    }
+                }
+            }
+            req.dedup();
+            depends(r, "minimum_phase").with("minimum_phase_requires", str_list(req))
+        }
     })
 }
 
@@ -251,7 +341,7 @@ pub(in crate::api) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
 fn tf(
     s: &StateSpace<RatFuncField>,
     g: &crate::system::transfer::TransferMatrix<RatFuncField>,
-) -> crate::Result<(Report, bool)> {
+) -> crate::Result<(Report, bool, StateSpace<RatFuncField>)> {
     let min = realization::minimal(s, MinrealMethod::Kalman)?;
     let poles = min.system.a.charpoly()?;
     let ok = g.matches_markov(s);
@@ -264,5 +354,5 @@ fn tf(
         .str("pole_polynomial", poles.to_string_var("s"))
         .with("pole_factors", factors(&poles)?)
         .bool("minimal_realization_verified", min.verified);
-    Ok((rep, ok && min.verified))
+    Ok((rep, ok && min.verified, min.system))
 }

@@ -20,7 +20,7 @@ use super::interp::{Bounds, MAX_GRID_POINTS, grid_points};
 use super::modp::{ReducedPoly, det_mod_p, eval_mod_p, powers};
 use crate::mpoly::{MPoly, factor};
 use crate::qkernels::prime::{Prime, nth_prime};
-use crate::ratfunc::RatFuncField;
+use crate::ratfunc::{RatFuncField, Reason};
 use crate::rng::SplitMix64;
 use std::collections::HashSet;
 
@@ -65,7 +65,7 @@ pub fn record_minor(
     match peel(r, &c, cert.dtot as usize, &den, &known) {
         Some(p) if p.complete => {
             for f in &p.out {
-                k.record_condition(f);
+                k.record_because(f, Reason::ProofMinor { size: r });
             }
             return true;
         }
@@ -90,7 +90,7 @@ fn record_det(k: &RatFuncField, r: usize, c: &[MPoly], bounds: &Bounds, den: MPo
         .and_then(|d| k.frac(d, den))
     {
         Some(q) if !q.num().is_zero() => {
-            k.record_condition(q.num());
+            k.record_because(q.num(), Reason::ProofMinor { size: r });
             true
         }
         _ => false,
@@ -118,7 +118,7 @@ fn record_unfactored(
         .and_then(|d| k.frac(d, den.clone()))
     {
         Some(q) if !q.num().is_zero() => {
-            k.record_condition_unfactored(q.num());
+            k.record_condition_unfactored(q.num(), Reason::ProofMinor { size: r });
             true
         }
         _ => false,
@@ -255,10 +255,10 @@ fn record_cofactor(
         return false;
     };
     for f in &p.out {
-        k.record_condition(f);
+        k.record_because(f, Reason::ProofMinor { size: r });
     }
     if !qd.num().is_constant() {
-        k.record_condition(qd.num());
+        k.record_because(qd.num(), Reason::ProofMinor { size: r });
     }
     true
 }

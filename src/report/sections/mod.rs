@@ -8,6 +8,7 @@
 
 mod algebraic;
 mod cells;
+pub mod conditions;
 mod critical;
 mod dcgain;
 mod discrete;
