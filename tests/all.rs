@@ -31,6 +31,7 @@ mod cli_mpoly;
 mod cli_options;
 #[path = "cli_pencil.rs"]
 mod cli_pencil;
+#[path = "conditions_reasons.rs"]
 mod conditions_reasons;
 #[path = "connect_file.rs"]
 mod connect_file;

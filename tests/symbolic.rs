@@ -76,8 +76,19 @@ fn cli_rank_of_a_is_3_with_conditions() {
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(j["rank"], 3);
     assert_eq!(j["field"], "QQ(cr, m, u)");
-    // the pivots divided by cr/(m u) and u: their numerators are assumed nonzero
-    assert_eq!(j["conditions"], serde_json::json!(["cr", "u"]));
+    // cr: the rank drops below 3 there; m and u: denominators of A[3,3] (the model is
+    // undefined), listed with their reasons (issue 25 item 3)
+    assert_eq!(j["conditions"], serde_json::json!(["cr", "m", "u"]));
+    let kinds: Vec<&str> = j["condition_reasons"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        kinds,
+        ["structure_change", "input_denominator", "input_denominator"]
+    );
     let (code, out, _) = run(&["linalg", "rref", YAW, "--symbolic", "--format", "json"]);
     assert_eq!(code, 0);
     assert!(
