@@ -21,7 +21,7 @@ use crate::error::Result;
 use crate::field::Field;
 use crate::matrix::Matrix;
 use crate::matrix::qp_conditions::{
-    drop_factors, eval_at, independent_rows, random_point, test_factors,
+    drop_factors, eval_at, expandable, independent_rows, random_point, test_factors,
 };
 use crate::mpoly::{MPoly, gcd};
 use crate::ratfunc::{Part, RatFuncField, Reason, Structure};
@@ -138,7 +138,8 @@ pub(super) fn mcmillan(
     }) else {
         return Ok(vec![]);
     };
-    let minor = k.mul(&o.select_rows(&rows).det()?, &kk.select_cols(&cols).det()?);
+    let (os, ks) = (o.select_rows(&rows), kk.select_cols(&cols));
+    let minor = k.mul(&expandable(&os)?.det()?, &expandable(&ks)?.det()?);
     let exact = o.nrows() == r && kk.ncols() == r;
     let found = drop_factors(&k, minor.num(), r, exact, &|p| hankel_rank(input, n, p))?;
     Ok(found.all().into_iter().map(|f| (f, why)).collect())
@@ -173,6 +174,15 @@ fn krylov<F: Field>(a: &Matrix<F>, b: &Matrix<F>, j: usize) -> Result<Matrix<F>>
 /// $[B, \dots, A^{j-1} B]$; the last one is the controllable (observable) order.
 pub(super) fn krylov_drops(a: &M, b: &M, dual: bool) -> Result<Vec<Item>> {
     let n = a.nrows();
+    // the largest minor the loop would expand first, its size checked before any work: the
+    // full Krylov matrix at a random point gives its rows and columns (`Limit`: too large)
+    let full = krylov(a, b, n.max(1))?;
+    let mut rng = crate::rng::SplitMix64(0x25c0_4d1a);
+    if let Some(q) = eval_at(&full, &random_point(a.field().nvars(), &mut rng)) {
+        let rows = independent_rows(&q);
+        let cols = independent_rows(&q.select_rows(&rows).transpose());
+        expandable(&full.select_rows(&rows).select_cols(&cols))?;
+    }
     let mut out = vec![];
     let (mut prev, mut cur, mut kry) = (0, b.clone(), b.clone());
     for j in 1..=n.max(1) {

@@ -44,7 +44,7 @@ pub(in crate::api) fn run(
             let r = crate::structure::scb::scb(&s.a, &s.b, &s.c, &s.d).map_err(e)?;
             let ok = r.verified;
             let zp = r.invariant_zero_polynomial();
-            items = Some(scb_items(&r, &zp).map_err(e)?);
+            items = honest(scb_items(&r, &zp)).map_err(e)?;
             let rep = minimum_phase(r.report(), &zp).map_err(e)?;
             (rep.with("zero_factors", factors(&zp).map_err(e)?), ok)
         }
@@ -71,9 +71,13 @@ pub(in crate::api) fn run(
                 MethodArg::Era => return Ok(None),
             };
             let r = realization::minimal(s, m).map_err(e)?;
-            let mut v = conditions::result_poles(&r.system, r.t.as_ref());
-            v.extend(conditions::mcmillan(&r.system, s).map_err(e)?);
-            items = Some(v);
+            items = honest(conditions::mcmillan(&r.system, s))
+                .map_err(e)?
+                .map(|m| {
+                    let mut v = conditions::result_poles(&r.system, r.t.as_ref());
+                    v.extend(m);
+                    v
+                });
             (r.report(), r.verified)
         }
         Command::Ctrb { .. } | Command::Obsv { .. } => {
@@ -98,14 +102,12 @@ pub(in crate::api) fn run(
                 "uncontrollable_charpoly_factors"
             };
             let cp = part.charpoly().map_err(e)?;
-            items = Some(
-                if dual {
-                    conditions::krylov_drops(&s.a.transpose(), &s.c.transpose(), true)
-                } else {
-                    conditions::krylov_drops(&s.a, &s.b, false)
-                }
-                .map_err(e)?,
-            );
+            items = honest(if dual {
+                conditions::krylov_drops(&s.a.transpose(), &s.c.transpose(), true)
+            } else {
+                conditions::krylov_drops(&s.a, &s.b, false)
+            })
+            .map_err(e)?;
             let rep = sections::ctrb_report(&c, dual).map_err(e)?;
             (rep.with(key, factors(&cp).map_err(e)?), c.verified)
         }
@@ -120,8 +122,10 @@ pub(in crate::api) fn run(
                 None => (s.transfer_matrix().map_err(e)?, vec![]),
             };
             let (rep, ok, min) = tf(s, &g).map_err(e)?;
-            v.extend(conditions::mcmillan(&min, s).map_err(e)?);
-            items = Some(v);
+            items = honest(conditions::mcmillan(&min, s)).map_err(e)?.map(|m| {
+                v.extend(m);
+                v
+            });
             (rep, ok)
         }
         Command::Standard { .. } => match &t.descriptor {
@@ -209,7 +213,7 @@ fn scb_items(
     ] {
         v.extend(conditions::denominators(p, m, true));
         if m.is_square() && m.nrows() > 0 {
-            let d = m.det()?;
+            let d = crate::matrix::qp_conditions::expandable(m)?.det()?;
             v.push((
                 d.num().clone(),
                 Reason::StructureChange(Structure::SingularBasis),
@@ -259,8 +263,16 @@ fn minimum_phase(r: Report, zeros: &Poly<RatFuncField>) -> crate::Result<Report>
         None => {
             let k = zeros.field().clone();
             let mut req = vec![];
+            // the Routh entries of a factor of degree > 4 or with long coefficients swell
+            // (diag(p0..p9): degree 9 in 10 parameters): then no list is given at all (a
+            // partial list would read as complete)
+            let mut complete = true;
             for (g, _) in crate::structure::factor_qp::factor_over_qp(zeros)? {
                 if crate::structure::scb::hurwitz(&g).is_none() {
+                    if !routh_affordable(&g) {
+                        complete = false;
+                        break;
+                    }
                     for x in conditions::routh_first_column(&g) {
                         if !k.is_constant(&x) {
                             req.push(format!("{} > 0", k.fmt_elem(&x)));
@@ -269,7 +281,12 @@ fn minimum_phase(r: Report, zeros: &Poly<RatFuncField>) -> crate::Result<Report>
                 }
             }
             req.dedup();
-            depends(r, "minimum_phase").with("minimum_phase_requires", str_list(req))
+            let r = depends(r, "minimum_phase");
+            if complete {
+                r.with("minimum_phase_requires", str_list(req))
+            } else {
+                r
+            }
         }
     })
 }
@@ -355,4 +372,27 @@ fn tf(
         .with("pole_factors", factors(&poles)?)
         .bool("minimal_realization_verified", min.verified);
     Ok((rep, ok && min.verified, min.system))
+}
+
+/// The command's own condition set, or `None` (the computation's log, each condition labelled
+/// by its step) when a minor it needs is too large to expand (`Limit`, e.g. the Vandermonde
+/// minors of diag(p0..p9)).
+fn honest(r: crate::Result<Vec<Item>>) -> crate::Result<Option<Vec<Item>>> {
+    match r {
+        Ok(v) => Ok(Some(v)),
+        Err(crate::error::Error::Limit(_)) => Ok(None),
+        Err(x) => Err(x),
+    }
+}
+
+/// Whether the Routh first column of `g` is small enough to state: degree at most 4 and at
+/// most 64 terms in its coefficients' numerators and denominators together.
+fn routh_affordable(g: &Poly<RatFuncField>) -> bool {
+    let terms: usize = (0..=g.deg())
+        .map(|i| {
+            let c = g.coeff(i);
+            c.num().len() + c.den().len()
+        })
+        .sum();
+    g.deg() <= 4 && terms <= 64
 }
