@@ -312,3 +312,55 @@ fn rank_lists_the_gcd_of_the_maximal_minors() {
     assert_eq!(v["conditions"], serde_json::json!(["a*d - b*c"]), "{v}");
     assert_eq!(v["condition_reasons"][0]["kind"], "structure_change", "{v}");
 }
+
+/// diag(p0..p7) with B = C = ones: the Krylov minors are Vandermonde determinants (8! terms,
+/// degree bound 8^8 > 2e6): the commands do not expand them but fall back to their
+/// computation's log, which still names every rank drop p_i - p_j; the zero polynomial's
+/// Routh column (degree 7 in 8 parameters) is not stated rather than stated in part.
+#[test]
+fn large_minors_fall_back_to_the_log() {
+    let n = 8;
+    let names: Vec<String> = (0..n).map(|i| format!("p{i}")).collect();
+    let params: Vec<String> = names.iter().map(|p| format!("\"{p}\": null")).collect();
+    let a: Vec<String> = (0..n)
+        .map(|i| {
+            let row: Vec<String> = (0..n)
+                .map(|j| {
+                    if i == j {
+                        format!("\"{}\"", names[i])
+                    } else {
+                        "0".into()
+                    }
+                })
+                .collect();
+            format!("[{}]", row.join(","))
+        })
+        .collect();
+    let text = format!(
+        r#"{{"parameters": {{{}}}, "A": [{}], "B": [{}], "C": [[{}]], "D": [[0]]}}"#,
+        params.join(","),
+        a.join(","),
+        vec!["[1]"; n].join(","),
+        vec!["1"; n].join(","),
+    );
+    let f = temp_file("conditions_reasons", "diag8.json", &text);
+    let path = f.to_str().unwrap();
+    for cmd in ["ctrb", "obsv"] {
+        let v = json(&[cmd, path, "--format", "json"]);
+        let conds = v["conditions"].as_array().unwrap();
+        for i in 0..n {
+            for j in i + 1..n {
+                let d = format!("p{i} - p{j}");
+                assert!(conds.iter().any(|c| c == &d), "{cmd}: {d} missing: {v}");
+            }
+        }
+        assert_eq!(
+            v["condition_reasons"].as_array().unwrap().len(),
+            conds.len()
+        );
+    }
+    for cmd in ["zeros", "scb"] {
+        let v = json(&[cmd, path, "--format", "json"]);
+        assert!(v.get("minimum_phase_requires").is_none(), "{cmd}: {v}");
+    }
+}
