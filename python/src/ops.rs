@@ -35,7 +35,10 @@ pub(crate) fn typed_system<K: Field>(t: &Typed<K>) -> Out {
     ])
 }
 
-pub(crate) fn minreal_typed<K: realization::SystemField>(t: &Typed<K>, m: MinrealMethod) -> FResult<Out> {
+pub(crate) fn minreal_typed<K: realization::SystemField>(
+    t: &Typed<K>,
+    m: MinrealMethod,
+) -> FResult<Out> {
     let r = realization::minimal(&t.ss, m)?;
     let sys = system_out(Typed {
         descriptor: None,
@@ -535,10 +538,7 @@ pub(crate) fn mnf_out<K: Field>(
 ) -> Vec<(&'static str, Out)> {
     let mut kv = vec![
         ("exists", Out::Bool(r.exists)),
-        (
-            "reason",
-            r.reason_text().map(Out::Str).unwrap_or(Out::None),
-        ),
+        ("reason", r.reason_text().map(Out::Str).unwrap_or(Out::None)),
         ("verified", Out::Bool(r.verified)),
         ("report", report(&r.report())),
     ];
