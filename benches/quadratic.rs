@@ -6,6 +6,13 @@
 //! -5..=5 from a fixed xorshift stream. Prints `case<TAB>seconds` lines (median of repeats);
 //! an argument keeps the cases whose label contains it.
 //!
+//! `charpoly|det dense N QQ(sqrt2) generic|kernel` (N = 10, 20, 40): `Matrix::charpoly` /
+//! `Matrix::det` (the field's multi-modular kernels, `qkernels::modular::quadratic`) beside
+//! the generic algorithms they replaced (`charpoly_hessenberg`, `det_gauss`), entries
+//! `a + b*sqrt(2)` with |a| <= 9, |b| <= 5 (as `scripts/anchors/quadratic_matrix.py`); the
+//! generic 40x40 charpoly takes tens of seconds (one repetition), filter it out with an
+//! argument (e.g. `kernel`) for a quick run. Each pair is checked equal.
+//!
 //! 2026-11-24 21:27 UTC, load average ~3 on 2 shared cores: jordan 10x10 0.16 s, minreal
 //! --method jordan 0.18 s, tf 8-state 0.18-0.21 s. The CLI on inputs of the same distribution
 //! (best of 3) before this kernel work: jordan 3.95 s, minreal 4.25 s, tf 1.44 s.
@@ -59,9 +66,49 @@ fn time(label: &str, reps: usize, mut f: impl FnMut() -> bool) {
     println!("{label}\t{:.6}", ts[ts.len() / 2]);
 }
 
+/// Dense `n x n` over Q(sqrt 2), entries `a + b sqrt 2` with |a| <= 9, |b| <= 5.
+fn dense_sqrt2(n: usize, seed: u64) -> Matrix<QuadraticField> {
+    let k = QuadraticField::new(2).expect("Q(sqrt 2)");
+    let mut rng = Rng(seed);
+    Matrix::from_fn(k, n, n, |_, _| {
+        let a = Rational::from_integer(rng.int(-9, 9).into());
+        let b = Rational::from_integer(rng.int(-5, 5).into());
+        Quadratic::new(a, b)
+    })
+}
+
+/// Generic algorithm vs the field's kernel (charpoly and det) on dense matrices.
+fn kernels_vs_generic(want: &dyn Fn(&str) -> bool) {
+    for n in [10usize, 20, 40] {
+        let a = dense_sqrt2(n, 0x5DEE_CE66_D1CE_4E5B ^ n as u64);
+        let reps = if n >= 40 { 1 } else { 3 };
+        let kernel = a.charpoly().expect("square");
+        let label = format!("charpoly dense {n} QQ(sqrt2) kernel");
+        if want(&label) {
+            time(&label, 5, || a.charpoly().expect("square") == kernel);
+        }
+        let label = format!("charpoly dense {n} QQ(sqrt2) generic");
+        if want(&label) {
+            time(&label, reps, || {
+                a.charpoly_hessenberg().expect("square") == kernel
+            });
+        }
+        let det = a.det().expect("square");
+        let label = format!("det dense {n} QQ(sqrt2) kernel");
+        if want(&label) {
+            time(&label, 5, || a.det().expect("square") == det);
+        }
+        let label = format!("det dense {n} QQ(sqrt2) generic");
+        if want(&label) {
+            time(&label, reps, || a.det_gauss().expect("square") == det);
+        }
+    }
+}
+
 fn main() {
     let only: Option<String> = std::env::args().nth(1).filter(|s| !s.starts_with('-'));
     let want = |l: &str| only.as_ref().is_none_or(|o| l.contains(o.as_str()));
+    kernels_vs_generic(&want);
     let dense = system(10, 1, 0x9E37_79B9_7F4A_7C15);
     if want("jordan dense 10x10 QQ(i)") {
         time("jordan dense 10x10 QQ(i)", 5, || {

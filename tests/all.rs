@@ -149,6 +149,8 @@ mod qp_kernels;
 mod qp_scale;
 #[path = "qp_scale_kernels.rs"]
 mod qp_scale_kernels;
+#[path = "quadratic_kernels.rs"]
+mod quadratic_kernels;
 #[path = "readable_text.rs"]
 mod readable_text;
 #[path = "realization.rs"]

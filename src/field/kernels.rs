@@ -7,7 +7,7 @@
 //! | variant | field | kernels (dispatched by `matrix::kernels`) |
 //! |---|---|---|
 //! | [`Kernels::Rational`] | $\mathbb{Q}$ | fraction-free and multi-modular $\mathbb{Q}$ kernels (`matrix::over_q`) |
-//! | [`Kernels::Quadratic`] | $\mathbb{Q}(\sqrt d)$ | integer products, regular representation (`matrix::over_k`) |
+//! | [`Kernels::Quadratic`] | $\mathbb{Q}(\sqrt d)$ | multi-modular charpoly and det (both embeddings $\sqrt d \mapsto \pm r$ modulo primes), integer products, regular representation (`matrix::over_k`) |
 //! | [`Kernels::Table`] | a field with its own table ($\mathbb{Q}(p)$: evaluation/interpolation) | the [`KernelTable`] methods (also the gcd in $K\lbrack s\rbrack$, dispatched by `Poly::gcd`) |
 //! | [`Kernels::Generic`] | any other | the generic algorithms of `Matrix<K>` only |
 //!

@@ -4,7 +4,7 @@
 //! | field entry | kernels |
 //! |---|---|
 //! | `Rational` ($\mathbb{Q}$) | [`super::over_q`]: charpoly, minpoly, det, RREF, rank, rank bound modulo $p$, null space, inverse, solve, product |
-//! | `Quadratic` ($\mathbb{Q}(\sqrt d)$) | [`super::over_k`]: RREF (and with it the null space), rank, rank bound modulo $p$, inverse, product |
+//! | `Quadratic` ($\mathbb{Q}(\sqrt d)$) | [`super::over_k`]: charpoly, det (multi-modular, both embeddings $\sqrt d \mapsto \pm r$), RREF (and with it the null space), rank, rank bound modulo $p$, inverse, product |
 //! | `Table` (e.g. $\mathbb{Q}(p)$) | the field's [`crate::field::KernelTable`] (with the generic rank bound) |
 //! | `Generic` | none |
 //!
@@ -27,8 +27,9 @@ pub(super) fn charpoly<K: Field>(a: &Matrix<K>) -> Option<Result<Poly<K>>> {
     let (k, n) = (&a.field, a.nrows);
     let c = match k.kernels() {
         Kernels::Rational(w) => Ok(w.back(over_q::charpoly_q(n, w.view(&a.data)))),
+        Kernels::Quadratic(w, d) => Ok(w.back(over_k::charpoly_k(d, n, w.view(&a.data))?)),
         Kernels::Table(t) => t.charpoly(k, n, &a.data)?,
-        Kernels::Quadratic(..) | Kernels::Generic => return None,
+        Kernels::Generic => return None,
     };
     Some(c.map(|c| Poly::new(k.clone(), c)))
 }
@@ -101,8 +102,12 @@ pub(super) fn det<K: Field>(a: &Matrix<K>) -> Option<Result<K::Elem>> {
     let (k, n) = (&a.field, a.nrows);
     match k.kernels() {
         Kernels::Rational(w) => Some(Ok(w.back_one(over_q::det_q(n, w.view(&a.data))))),
+        Kernels::Quadratic(w, d) => {
+            let x = over_k::det_k(d, n, w.view(&a.data))?;
+            Some(Ok(w.back(vec![x]).pop().expect("one element in, one out")))
+        }
         Kernels::Table(t) => t.det(k, n, &a.data),
-        Kernels::Quadratic(..) | Kernels::Generic => None,
+        Kernels::Generic => None,
     }
 }
 

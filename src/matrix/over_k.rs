@@ -17,6 +17,11 @@
 //!   modulo a prime of at least $2r$ proves $\mathrm{rank}_K A \ge r$) and [`rref_k`] (the
 //!   RREF of $\rho(A)$ with interleaved columns is $\rho$ of the RREF over $K$, see there).
 //!
+//! * [`charpoly_k`], [`det_k`]: the certified multi-modular kernels of
+//!   [`crate::qkernels::modular::quadratic`] (images under $\sqrt d \mapsto \pm r$ modulo
+//!   primes where $d$ is a square, CRT up to a Hadamard-type bound) from
+//!   [`MODULAR_MIN_N`] rows on; smaller matrices keep the generic algorithm.
+//!
 //! Each function computes the same canonical result as the generic algorithm of
 //! [`crate::matrix::Matrix`] over $K$. Matrices are row-major slices; a slice of the wrong
 //! length is a caller bug and panics.
@@ -24,6 +29,7 @@
 use super::over_q::{self, MUL_MIN_K};
 use crate::field::lehmer::{fraction, gcd};
 use crate::field::{Quadratic, Rational};
+use crate::qkernels::modular::quadratic::{charpoly_quadratic, det_quadratic};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
@@ -244,4 +250,27 @@ pub fn rref_k(d: &BigInt, m: usize, n: usize, a: &[Quadratic]) -> (Vec<Quadratic
         }
     }
     (out, piv)
+}
+
+/// Square matrices from this size on take the multi-modular determinant and characteristic
+/// polynomial (below it the generic elimination over $K$ is as fast: `benches/quadratic.rs`).
+pub const MODULAR_MIN_N: usize = 3;
+
+/// $\det(xI - A)$ (low degree first, monic) of the `n x n` `a` over $\mathbb{Q}(\sqrt d)$;
+/// `None` below [`MODULAR_MIN_N`] (the generic algorithm).
+///
+/// # Panics
+/// When `a.len() != n * n`.
+pub fn charpoly_k(d: &BigInt, n: usize, a: &[Quadratic]) -> Option<Vec<Quadratic>> {
+    check_len("charpoly_k", a.len(), n, n);
+    (n >= MODULAR_MIN_N).then(|| charpoly_quadratic(d, n, a))
+}
+
+/// $\det A$ of the `n x n` `a` over $\mathbb{Q}(\sqrt d)$; `None` below [`MODULAR_MIN_N`].
+///
+/// # Panics
+/// When `a.len() != n * n`.
+pub fn det_k(d: &BigInt, n: usize, a: &[Quadratic]) -> Option<Quadratic> {
+    check_len("det_k", a.len(), n, n);
+    (n >= MODULAR_MIN_N).then(|| det_quadratic(d, n, a))
 }

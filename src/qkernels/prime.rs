@@ -142,6 +142,45 @@ impl Prime {
         r
     }
 
+    /// A square root of `a` modulo the odd prime `p` (Tonelli–Shanks): `Some(r)` with
+    /// $r^2 \equiv a$, `None` when `a` is a non-residue (Euler's criterion
+    /// $a^{(p-1)/2} \ne 1$). `Some(0)` for $a \equiv 0$.
+    pub fn sqrt(&self, a: u64) -> Option<u64> {
+        let (p, a) = (self.p, a % self.p);
+        if a == 0 {
+            return Some(0);
+        }
+        if p == 2 {
+            return Some(a);
+        }
+        if self.pow(a, (p - 1) / 2) != 1 {
+            return None;
+        }
+        // p - 1 = q 2^s with q odd; z a non-residue (exists: half of 1..p-1 are)
+        let s = (p - 1).trailing_zeros();
+        let q = (p - 1) >> s;
+        let z = (2..p)
+            .find(|&z| self.pow(z, (p - 1) / 2) == p - 1)
+            .expect("an odd prime has a non-residue");
+        let (mut m, mut c) = (s, self.pow(z, q));
+        let (mut t, mut r) = (self.pow(a, q), self.pow(a, q.div_ceil(2)));
+        // invariant: r^2 = a t, t of order dividing 2^(m-1), c of order 2^m
+        while t != 1 {
+            let mut i = 0;
+            let mut t2 = t;
+            while t2 != 1 {
+                t2 = self.mul(t2, t2);
+                i += 1;
+            }
+            let b = self.pow(c, 1 << (m - i - 1));
+            m = i;
+            c = self.mul(b, b);
+            t = self.mul(t, c);
+            r = self.mul(r, b);
+        }
+        Some(r)
+    }
+
     /// Inverse of `a` modulo `p`; `None` when `a ≡ 0`.
     pub fn inv(&self, a: u64) -> Option<u64> {
         let a = a % self.p;
@@ -321,6 +360,35 @@ mod tests {
             }
             assert_eq!(pr.inv(0), None);
             assert_eq!(pr.inv(p), None);
+        }
+    }
+
+    /// Tonelli–Shanks: r^2 = a for residues, `None` exactly for non-residues (Euler's
+    /// criterion), on the word primes (p = 3 and p = 1 mod 4 among them) and small primes
+    /// with a large power of 2 in p - 1.
+    #[test]
+    fn square_roots_modulo_primes() {
+        let moduli = (0..6)
+            .map(|i| nth_prime(i).p)
+            .chain([3, 5, 13, 17, 97, 193, 65537, 7681]);
+        for p in moduli {
+            let pr = Prime::new(p);
+            let mut found = [0usize; 2];
+            for a in (0..200u64).chain([p - 1, p - 2, p / 3]) {
+                let a = a % p;
+                match pr.sqrt(a) {
+                    Some(r) => {
+                        assert!(r < p);
+                        assert_eq!(pr.mul(r, r), a, "sqrt({a}) mod {p}");
+                        found[0] += 1;
+                    }
+                    None => {
+                        assert_eq!(pr.pow(a, (p - 1) / 2), p - 1, "{a} mod {p}");
+                        found[1] += 1;
+                    }
+                }
+            }
+            assert!(found[0] > 0 && found[1] > 0, "both kinds met modulo {p}");
         }
     }
 

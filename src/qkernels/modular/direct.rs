@@ -53,7 +53,7 @@ pub fn rank_if_full(m: usize, n: usize, a: &[Rational]) -> Option<usize> {
 }
 
 /// $\Delta = \prod_i d_i$ and $\log_2 \Delta$.
-fn delta(rm: &RatMat) -> (BigInt, f64) {
+pub(crate) fn delta(rm: &RatMat) -> (BigInt, f64) {
     let dens = rm.row_dens();
     let log = dens.iter().map(log2_int).sum();
     (dens.iter().product(), log)
@@ -85,8 +85,15 @@ pub fn det_direct(n: usize, a: &[Rational]) -> Rational {
 
 /// $\log_2$ of the bound of the module docs on $|\Delta c_k|$, maximised over $k$.
 fn charpoly_bound_log2(rm: &RatMat, log_delta: f64) -> f64 {
-    let n = rm.n;
-    let mut rows = rm.row_norm_log2();
+    log_delta + principal_minors_log2(rm.row_norm_log2())
+}
+
+/// $\log_2 \max_k \binom{n}{k} \max_{|S| = k} \prod_{i \in S} 2^{\ell_i}$ for upper bounds
+/// $\ell_i$ of $\log_2$ of the row norms (`-inf` for a zero row): a bound of every
+/// coefficient of $\det(xI - A)$ (the sum of the $\binom nk$ principal $k \times k$ minors,
+/// each at most the product of its row norms by Hadamard). 0 for `n = 0`.
+pub(crate) fn principal_minors_log2(mut rows: Vec<f64>) -> f64 {
+    let n = rows.len();
     rows.sort_by(|x, y| y.total_cmp(x));
     let (mut best, mut s, mut lbin) = (0.0f64, 0.0f64, 0.0f64);
     for k in 1..=n {
@@ -97,7 +104,7 @@ fn charpoly_bound_log2(rm: &RatMat, log_delta: f64) -> f64 {
         lbin += ((n - k + 1) as f64 / k as f64).log2() + 1e-12;
         best = best.max(lbin + s);
     }
-    log_delta + best
+    best
 }
 
 /// $\det(xI - A)$, coefficients low degree first, monic, length `n + 1`.
@@ -123,7 +130,8 @@ pub fn charpoly_direct(n: usize, a: &[Rational]) -> Vec<Rational> {
         .collect()
 }
 
-fn delta_mod(pr: &Prime, x: &BigInt) -> u64 {
+/// The residue of a (signed) big integer modulo `pr`.
+pub(crate) fn delta_mod(pr: &Prime, x: &BigInt) -> u64 {
     let (s, l) = x.to_u64_digits();
     pr.reduce_limbs(s == num_bigint::Sign::Minus, &l)
 }

@@ -20,6 +20,10 @@
 //! | [`charpoly_modular`] | $\det(xI - A)$, low degree first | principal-minor Hadamard bound ([`charpoly`]) |
 //! | [`inverse_modular`] | $A^{-1}$ or `None` | $BN = dI$ checked modulo $M > 2\beta$ ([`inverse`]) |
 //!
+//! [`quadratic`] holds the determinant and characteristic polynomial over $\mathbb{Q}(\sqrt d)$
+//! (images under $\sqrt d \mapsto \pm r$ modulo primes where $d$ is a square, the same
+//! Hadamard-type certificates).
+//!
 //! [`direct`] holds the kernels that reduce the rational matrix itself modulo each prime
 //! ([`qimage`]): determinant, characteristic polynomial, inverse, the full-rank test and the
 //! cyclicity test of the minimal polynomial.
@@ -44,6 +48,7 @@ pub mod inverse;
 pub(crate) mod minpoly;
 pub mod pivot_solve;
 pub mod qimage;
+pub mod quadratic;
 pub(crate) mod rank;
 pub mod rref;
 
