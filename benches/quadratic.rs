@@ -6,7 +6,7 @@
 //! -5..=5 from a fixed xorshift stream. Prints `case<TAB>seconds` lines (median of repeats);
 //! an argument keeps the cases whose label contains it.
 //!
-//! `charpoly|det dense N QQ(sqrt2) generic|kernel` (N = 10, 20, 40): `Matrix::charpoly` /
+//! `charpoly|det dense N QQ(sqrt2) generic|kernel` (N = 2, 3, 5, 10, 20, 40): `Matrix::charpoly` /
 //! `Matrix::det` (the field's multi-modular kernels, `qkernels::modular::quadratic`) beside
 //! the generic algorithms they replaced (`charpoly_hessenberg`, `det_gauss`), entries
 //! `a + b*sqrt(2)` with |a| <= 9, |b| <= 5 (as `scripts/anchors/quadratic_matrix.py`); the
@@ -20,6 +20,7 @@
 use exactlti::field::{Quadratic, QuadraticField, Rational};
 use exactlti::jordan::jordan_over as jordan_over_k;
 use exactlti::matrix::Matrix;
+use exactlti::qkernels::modular::quadratic::{charpoly_quadratic, det_quadratic};
 use exactlti::realization::{minimal_jordan, minimal_kalman};
 use exactlti::report::sections::{TfRealization, tf_report_quadratic};
 use exactlti::system::StateSpace;
@@ -77,26 +78,30 @@ fn dense_sqrt2(n: usize, seed: u64) -> Matrix<QuadraticField> {
     })
 }
 
-/// Generic algorithm vs the field's kernel (charpoly and det) on dense matrices.
+/// Generic algorithm vs the field's kernel (charpoly and det) on dense matrices; the kernel
+/// is called directly (`Matrix::charpoly` / `det` take it from `MODULAR_MIN_N` rows on).
 fn kernels_vs_generic(want: &dyn Fn(&str) -> bool) {
-    for n in [10usize, 20, 40] {
+    for n in [2usize, 3, 5, 10, 20, 40] {
         let a = dense_sqrt2(n, 0x5DEE_CE66_D1CE_4E5B ^ n as u64);
-        let reps = if n >= 40 { 1 } else { 3 };
-        let kernel = a.charpoly().expect("square");
+        let (d, v) = (a.field().d().clone(), a.as_slice());
+        let reps = if n >= 40 { 1 } else { 5 };
+        let kernel = charpoly_quadratic(&d, n, v);
+        assert_eq!(a.charpoly().expect("square").coeffs(), &kernel[..]);
         let label = format!("charpoly dense {n} QQ(sqrt2) kernel");
         if want(&label) {
-            time(&label, 5, || a.charpoly().expect("square") == kernel);
+            time(&label, 5, || charpoly_quadratic(&d, n, v) == kernel);
         }
         let label = format!("charpoly dense {n} QQ(sqrt2) generic");
         if want(&label) {
             time(&label, reps, || {
-                a.charpoly_hessenberg().expect("square") == kernel
+                a.charpoly_hessenberg().expect("square").coeffs() == &kernel[..]
             });
         }
-        let det = a.det().expect("square");
+        let det = det_quadratic(&d, n, v);
+        assert_eq!(a.det().expect("square"), det);
         let label = format!("det dense {n} QQ(sqrt2) kernel");
         if want(&label) {
-            time(&label, 5, || a.det().expect("square") == det);
+            time(&label, 5, || det_quadratic(&d, n, v) == det);
         }
         let label = format!("det dense {n} QQ(sqrt2) generic");
         if want(&label) {

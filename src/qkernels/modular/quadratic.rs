@@ -26,14 +26,15 @@
 //! symmetric range) and divided by $\Delta$. About half of the primes qualify.
 //!
 //! **Certified bound (no early termination).** Let $\sigma$ be an embedding of $K$ into
-//! $\mathbb{C}$ ($\sigma(\sqrt d) = \pm\sqrt d$, or $\pm i\sqrt{|d|}$ for $d < 0$). Then
-//! $\|\sigma(A_{i,:})\|_2 \le \|A_{0,i,:}\|_2 + \sqrt{|d|}\,\|A_{1,i,:}\|_2 =: \rho_i$, and
-//! by Hadamard's inequality (valid over $\mathbb{C}$)
+//! $\mathbb{C}$ ($\sigma(\sqrt d) = \pm\sqrt d$, or $\pm i\sqrt{|d|}$ for $d < 0$). Since
+//! $\sigma(A_{i,:}) = A_{0,i,:} + \sigma(\sqrt d) A_{1,i,:}$, the triangle inequality gives
+//! $\|\sigma(A_{i,:})\|_2 \le \|A_{0,i,:}\|_2 + \sqrt{|d|}\,\|A_{1,i,:}\|_2 =: \rho_i$
+//! (the rows of $\sigma(DA)$ have norms at most $d_i \rho_i$), and by Hadamard's inequality
+//! (valid over $\mathbb{C}$) on $\det(DA)$ and on each principal minor of $\Delta c_k =
+//! \pm\sum_{|S| = n-k} (\Delta / \prod_{i \in S} d_i) \det (DA)_{S,S}$:
 //!
 //! * $|\sigma(\Delta \det A)| \le \Delta \prod_i \rho_i$,
-//! * $|\sigma(\Delta c_k)| \le \Delta \binom{n}{k} \max_{|S| = n-k} \prod_{i \in S} \rho_i$
-//!   (entrywise: $|\sigma(x)| \le |x_0| + |x_1| \sqrt{|d|}$ bounds each entry, and the row
-//!   norms of $DA$ are $d_i$ times those of $A$).
+//! * $|\sigma(\Delta c_k)| \le \Delta \binom{n}{k} \max_{|S| = n-k} \prod_{i \in S} \rho_i$.
 //!
 //! Both integer parts of $c = a + b\sqrt d$ are bounded by $\max_\sigma |\sigma(c)|$: for
 //! $d > 0$, $a = (\sigma_+(c) + \sigma_-(c))/2$ and $b = (\sigma_+(c) - \sigma_-(c)) /
