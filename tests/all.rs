@@ -85,6 +85,8 @@ mod io;
 mod jordan;
 #[path = "jordan_fields.rs"]
 mod jordan_fields;
+#[path = "jordan_eigen_qp.rs"]
+mod jordan_eigen_qp;
 #[path = "jordan_generic.rs"]
 mod jordan_generic;
 #[path = "jordan_primary.rs"]

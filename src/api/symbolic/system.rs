@@ -146,26 +146,7 @@ pub(in crate::api) fn run(
                     for c in &jf.conditions {
                         k.record_condition(c.num());
                     }
-                    let eig = jf
-                        .components
-                        .iter()
-                        .zip(jf.values())
-                        .map(|(c, value)| {
-                            let mut r = Report::new()
-                                .str("factor", c.factor.to_string_var("s"))
-                                .int("algebraic_multiplicity", c.multiplicity)
-                                .with(
-                                    "blocks",
-                                    Value::List(
-                                        c.blocks.iter().map(|&b| Value::Int(b as i64)).collect(),
-                                    ),
-                                );
-                            if let Some(x) = &value {
-                                r = r.str("value", k.fmt_elem(x));
-                            }
-                            Value::Obj(r)
-                        })
-                        .collect();
+                    let eig = sections::eigenvalue_structure(&jf, "s");
                     Report::titled("eigenvalues and Jordan structure over Q(p)")
                         .list("eigenvalues", eig)
                         .bool("complete", jf.complete())
