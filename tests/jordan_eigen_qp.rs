@@ -125,7 +125,10 @@ fn check<F: JordanField>(a: &Matrix<F>, planted: &[(F::Elem, usize)], pair: bool
                 assert_eq!(e.is_real(), Decided::Exactly(true));
                 let sign = e.re_sign(&k).unwrap();
                 match k.to_rational(x) {
-                    Some(q) => assert_eq!(sign, Decided::Exactly(q.cmp(&exactlti::field::Rational::from_integer(0.into())))),
+                    Some(q) => assert_eq!(
+                        sign,
+                        Decided::Exactly(q.cmp(&exactlti::field::Rational::from_integer(0.into())))
+                    ),
                     None => assert_eq!(sign, Decided::NotInSymbols),
                 }
             }
@@ -183,7 +186,9 @@ fn check<F: JordanField>(a: &Matrix<F>, planted: &[(F::Elem, usize)], pair: bool
 fn divides_chi<F: Field>(chi: &Poly<F>, g: &Poly<F>, mu: usize) {
     let mut q = chi.clone();
     for _ in 0..mu {
-        q = q.div_exact(g).expect("the minimal polynomial divides chi_A");
+        q = q
+            .div_exact(g)
+            .expect("the minimal polynomial divides chi_A");
     }
 }
 

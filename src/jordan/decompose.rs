@@ -15,9 +15,9 @@
 //! $\mathbb{Q}$ and the quadratic fields are in `fields.rs`.
 
 use super::chains::{Chains, jordan_chains};
+use super::eigenvalue::{Certified, Eigenvalue, NumberEigen};
 use super::pair_field::{PairField, RealEmbed};
 use super::primary::Component;
-use super::eigenvalue::{Certified, Eigenvalue, NumberEigen};
 use super::{Embedding, JordanForm, simple};
 use crate::algebraic::{AlgebraicNumber, Ext};
 use crate::error::Result;

@@ -31,8 +31,8 @@
 //! [`super::FreeResponse::from_state`]): its terms are rational functions when every factor
 //! is linear.
 
-use super::eigenvalue::{EigenValue, Eigenvalue};
 use super::JordanForm;
+use super::eigenvalue::{EigenValue, Eigenvalue};
 use super::over_qp::charpoly_factors;
 use super::primary::{Component, Restriction};
 use crate::algebraic::Ext;

@@ -140,21 +140,14 @@ pub(in crate::api) fn run(
             let mut rep = depends(out.report, "minimum_phase");
             let mut ok = out.verified;
             // the eigenvalue structure over Q(p) (its conditions join this computation's)
-            let sec = match crate::jordan::jordan_qp(&s.a) {
-                Ok(jf) => {
-                    ok &= jf.verified;
-                    for c in &jf.conditions {
-                        k.record_condition(c.num());
-                    }
-                    let eig = sections::eigenvalue_structure(&jf, "s");
-                    Report::titled("eigenvalues and Jordan structure over Q(p)")
-                        .list("eigenvalues", eig)
-                        .bool("complete", jf.complete())
-                        .bool("verified", jf.verified)
+            let title = "eigenvalues and Jordan structure over Q(p)";
+            let (sec, jf) = crate::api::analyze::structure_section(&s.a, title);
+            if let Some(jf) = jf {
+                ok &= jf.verified;
+                for c in &jf.conditions {
+                    k.record_condition(c.num());
                 }
-                Err(err) => Report::titled("eigenvalues and Jordan structure over Q(p)")
-                    .str("error", err.to_string()),
-            };
+            }
             rep.push("jordan", Value::Obj(sec));
             (rep, ok)
         }

@@ -55,3 +55,28 @@ pub fn eigenvalue_structure<F: Field>(jf: &JordanForm<F>, var: &str) -> Vec<Valu
         })
         .collect()
 }
+
+/// Asymptotic stability ($\operatorname{Re}\theta < 0$ for every eigenvalue) read off the
+/// typed signs of the eigenvalue list: `unstable` when a real part is positive, `not
+/// asymptotically stable` when one is zero (both exact, whatever the other entries),
+/// `asymptotically stable` when every sign is negative, else [`NOT_DECIDED`].
+pub fn stability_text<F: Field>(jf: &JordanForm<F>) -> String {
+    let k = jf.base();
+    let mut signs = vec![];
+    for e in &jf.eigenvalues {
+        match e.re_sign(k) {
+            Ok(s) => signs.push(s),
+            Err(err) => return format!("not computed: {err}"),
+        }
+    }
+    let has = |o: Ordering| signs.contains(&Decided::Exactly(o));
+    if has(Ordering::Greater) {
+        "unstable: an eigenvalue has a positive real part".into()
+    } else if has(Ordering::Equal) {
+        "not asymptotically stable: an eigenvalue has zero real part".into()
+    } else if signs.iter().all(|s| *s == Decided::Exactly(Ordering::Less)) {
+        "asymptotically stable: every eigenvalue has a negative real part".into()
+    } else {
+        NOT_DECIDED.into()
+    }
+}

@@ -14,8 +14,8 @@ use crate::field::ElemDisplay;
 use crate::field::Field;
 use crate::jordan::qp_form::integral;
 use crate::jordan::{
-    CompactPair, EigenField, EigenValue, Eigenvalue, FreeResponse, JordanForm, NumberEigen, RealEntries,
-    RealJordanForm,
+    CompactPair, EigenField, EigenValue, Eigenvalue, FreeResponse, JordanForm, NumberEigen,
+    RealEntries, RealJordanForm,
 };
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;

@@ -26,7 +26,7 @@ mod toolbox;
 pub use algebraic::{factor_report, roots_report};
 pub use critical::{critical_report, factor_displays};
 pub use discrete::{conversion_report, sequence_report, stability_report};
-pub use eigen_list::{NOT_DECIDED, eigenvalue_structure};
+pub use eigen_list::{NOT_DECIDED, eigenvalue_structure, stability_text};
 pub use interconnect::{PartInfo, interconnection_report};
 pub use jordan::{conditions_qp, eigenvalue_text, eigenvalue_value_text, qp_var_name};
 pub use mpoly::{mfactor_report, mgcd_report};

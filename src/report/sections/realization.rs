@@ -3,7 +3,9 @@
 //! Presentation only: these `report` methods read finished results of [`crate::realization`] and
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
-use super::jordan::{Cells, eigenvalue_value_text, field_line, named, neg_display, part_text, root_line};
+use super::jordan::{
+    Cells, eigenvalue_value_text, field_line, named, neg_display, part_text, root_line,
+};
 use crate::algebraic::ExtElem;
 use crate::field::Field;
 use crate::matrix::Matrix;
