@@ -83,6 +83,8 @@ mod interconnect;
 mod io;
 #[path = "jordan.rs"]
 mod jordan;
+#[path = "jordan_eigen_qp.rs"]
+mod jordan_eigen_qp;
 #[path = "jordan_fields.rs"]
 mod jordan_fields;
 #[path = "jordan_generic.rs"]

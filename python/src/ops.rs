@@ -317,7 +317,7 @@ pub(crate) fn jordan_out<F: EigenField>(jf: &JordanForm<F>, real: bool) -> FResu
 }
 
 /// An eigenvalue as an element value: `("root", minpoly, box)`.
-fn root_value(e: &exactlti::jordan::Eigenvalue) -> Out {
+fn root_value(e: &exactlti::jordan::Certified) -> Out {
     let ((rl, rh), (il, ih)) = e.number.bounding_box();
     let pair = |a, b| Out::Tuple(vec![q(a), q(b)]);
     Out::Tuple(vec![

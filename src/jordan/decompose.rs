@@ -15,9 +15,10 @@
 //! $\mathbb{Q}$ and the quadratic fields are in `fields.rs`.
 
 use super::chains::{Chains, jordan_chains};
+use super::eigenvalue::{Certified, Eigenvalue, NumberEigen};
 use super::pair_field::{PairField, RealEmbed};
 use super::primary::Component;
-use super::{Eigenvalue, Embedding, JordanForm, simple};
+use super::{Embedding, JordanForm, simple};
 use crate::algebraic::{AlgebraicNumber, Ext};
 use crate::error::Result;
 use crate::field::{Field, Q};
@@ -33,7 +34,7 @@ pub type FactorRoots<F> = (Poly<F>, usize, Poly<Q>, CertifiedRoots);
 
 /// A base field of the exact Jordan decomposition: it factors polynomials and certifies
 /// the roots of each factor; the component of a factor has a generic default.
-pub trait EigenField: RealEmbed + 'static {
+pub trait EigenField: RealEmbed + NumberEigen + 'static {
     /// The irreducible factors of the monic `chi` over the field with their roots.
     ///
     /// # Errors
@@ -162,19 +163,14 @@ pub fn jordan_over<F: EigenField>(a: &Matrix<F>) -> Result<JordanForm<F>> {
         let approx: Vec<(f64, f64)> = certified.iter().map(|z| z.1).collect();
         let c = F::component(a, &chi, (&g, e, m.clone()), approx)?;
         let ci = components.len();
-        for (j, (number, z)) in certified.into_iter().enumerate() {
+        for (j, (number, approx)) in certified.into_iter().enumerate() {
             let k = eigenvalues.len() + 1;
-            eigenvalues.push(Eigenvalue {
+            let root = Certified {
                 minpoly: m.clone(),
-                approx: z,
+                approx,
                 number,
-                component: ci,
-                root: j,
-                index: k,
-                algebraic_multiplicity: e,
-                geometric_multiplicity: c.geometric_multiplicity(),
-                blocks: c.blocks.clone(),
-            });
+            };
+            eigenvalues.push(Eigenvalue::number(root, (ci, j, k, e, c.blocks.clone())));
         }
         components.push(c);
     }

@@ -40,6 +40,7 @@ pub mod chains;
 pub(crate) mod coeffs;
 pub mod decompose;
 pub mod derivation;
+pub mod eigenvalue;
 pub mod fields;
 mod jordan_field;
 pub mod normalize;
@@ -58,6 +59,7 @@ pub mod steps;
 
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use decompose::{EigenField, eigenvalues_over, jordan_over};
+pub use eigenvalue::{Certified, Decided, EigenValue, Eigenvalue, NumberEigen};
 pub use jordan_field::JordanField;
 pub use primary::{Component, PrimaryComponent, Restriction};
 pub use qp_form::jordan_qp;
@@ -66,7 +68,6 @@ pub use response::{FreeResponse, ResponseTerm, StateResponse};
 #[cfg(test)]
 pub(crate) use roots::certified_roots;
 
-use crate::algebraic::AlgebraicNumber;
 use crate::algebraic::{Ext, ExtElem, NfElem, NumberField};
 use crate::error::Result;
 use crate::field::ElemDisplay;
@@ -79,39 +80,6 @@ use roots::radical_text;
 /// An embedding of a component field $E = F\[t\]/(g)$ into an eigenvalue's display field.
 pub type Embedding<'a, F = Q> =
     Box<dyn Fn(&ExtElem<<F as Field>::Elem>) -> ExtElem<<F as Field>::Elem> + 'a>;
-
-/// One eigenvalue (one root of one factor).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Eigenvalue {
-    /// Minimal polynomial over $\mathbb{Q}$ (the component's factor). Its exact display
-    /// (rational, closed form up to degree 2 and biquadratics, else `root of ... near ...`)
-    /// is made in the reports from it and [`Eigenvalue::approx`]
-    /// (`report::sections::eigenvalue_text`).
-    pub minpoly: Poly<Q>,
-    /// Approximation `(re, im)`, read off the certified region of [`Eigenvalue::number`]
-    /// (relative error about $2^{-60}$); exactly `0.0` parts for real and purely imaginary
-    /// roots.
-    pub approx: (f64, f64),
-    /// The certified algebraic number (minimal polynomial and isolating region).
-    pub number: AlgebraicNumber,
-    /// Index into [`JordanForm::components`] and root index within it.
-    pub component: usize,
-    pub root: usize,
-    /// Index $k$ of the root's symbol `r<k>` in per-root displays (1-based position in
-    /// [`JordanForm::eigenvalues`]).
-    pub index: usize,
-    pub algebraic_multiplicity: usize,
-    pub geometric_multiplicity: usize,
-    /// Jordan block sizes, largest first.
-    pub blocks: Vec<usize>,
-}
-
-impl Eigenvalue {
-    /// The name `r<k>` of the root's variable in the fields it is written in.
-    pub fn symbol(&self) -> String {
-        format!("r{}", self.index)
-    }
-}
 
 /// $J$ and $T$ over one extension of the base field ([`JordanForm::single_field`]).
 pub type JPair<F> = (Matrix<Ext<F>>, Matrix<Ext<F>>);
@@ -139,10 +107,11 @@ pub struct JordanForm<F: Field = Q> {
     pub charpoly: Poly<F>,
     /// One component per irreducible factor of $\chi_A$ over $F$.
     pub components: Vec<Component<F>>,
-    /// All eigenvalues as certified algebraic numbers, component by component (empty over
-    /// $\mathbb{Q}(p)$, whose eigenvalues are the roots of the components' factors:
-    /// functions of the parameters, not numbers).
-    pub eigenvalues: Vec<Eigenvalue>,
+    /// The eigenvalues as values, component by component ([`eigenvalue`]): over a number
+    /// field every root as a certified algebraic number; over $\mathbb{Q}(p)$ one entry per
+    /// irreducible factor (an element of $\mathbb{Q}(p)$, or the roots of a factor of
+    /// degree $\ge 2$ given by that factor).
+    pub eigenvalues: Vec<Eigenvalue<F>>,
     /// Elements of $F$ the result assumes nonzero (over $\mathbb{Q}(p)$: irreducible
     /// polynomials in the parameters, sorted: [`qp_form::jordan_qp`]); empty over a number
     /// field, where nothing is assumed.

@@ -147,7 +147,7 @@ pub fn parts_affordable(p: &Poly<Q>) -> bool {
 /// when [`parts_affordable`] (composed polynomials of degree $d(d-1)/2$ and
 /// $d(d-1)$, factored), else `None`.
 pub(crate) fn exact_parts(
-    e: &super::Eigenvalue,
+    e: &super::Certified,
 ) -> (Option<AlgebraicNumber>, Option<AlgebraicNumber>) {
     if parts_affordable(&e.minpoly) {
         (e.number.try_re().ok(), e.number.try_im().ok())

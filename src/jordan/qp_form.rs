@@ -32,6 +32,7 @@
 //! is linear.
 
 use super::JordanForm;
+use super::eigenvalue::{EigenValue, Eigenvalue};
 use super::over_qp::charpoly_factors;
 use super::primary::{Component, Restriction};
 use crate::algebraic::Ext;
@@ -88,11 +89,12 @@ pub fn jordan_qp(a_in: &Matrix<RatFuncField>) -> Result<JordanForm<RatFuncField>
             _ => primary_component(&a, &f.monic, f.multiplicity),
         })
         .collect::<Result<Vec<_>>>()?;
+    let eigenvalues = eigenvalues_qp(&k, &components);
     let mut jf = JordanForm {
         a,
         charpoly: cp.charpoly,
         components,
-        eigenvalues: vec![],
+        eigenvalues,
         conditions: vec![],
         verified: false,
     };
@@ -127,6 +129,27 @@ pub fn jordan_qp(a_in: &Matrix<RatFuncField>) -> Result<JordanForm<RatFuncField>
         .collect();
     jf.verified = verified;
     Ok(jf)
+}
+
+/// The eigenvalues of the components over $\mathbb{Q}(p)$, one entry per component: the
+/// root $-g_0 \in \mathbb{Q}(p)$ of a linear factor $x + g_0$, else the roots of the factor
+/// $g$ (its minimal polynomial over $\mathbb{Q}(p)$), with the multiplicity and the block
+/// sizes of each root.
+fn eigenvalues_qp(
+    k: &RatFuncField,
+    components: &[Component<RatFuncField>],
+) -> Vec<Eigenvalue<RatFuncField>> {
+    components
+        .iter()
+        .enumerate()
+        .map(|(ci, c)| {
+            let s = (ci, 0, ci + 1, c.multiplicity, c.blocks.clone());
+            match c.degree() {
+                1 => Eigenvalue::in_field(k.neg(&c.factor.monic().coeff(0)), s),
+                _ => Eigenvalue::root_of(c.factor.monic(), s),
+            }
+        })
+        .collect()
 }
 
 /// The component of an irreducible factor `g` of degree $d \ge 2$ and multiplicity `e` in its
@@ -244,12 +267,15 @@ impl JordanForm<RatFuncField> {
         self.components.iter().all(|c| c.degree() == 1)
     }
     /// The eigenvalue $\theta \in \mathbb{Q}(p)$ of each linear component (`None` for a factor
-    /// of degree $\ge 2$), in component order.
+    /// of degree $\ge 2$), in component order (read off [`JordanForm::eigenvalues`], one
+    /// entry per component over $\mathbb{Q}(p)$).
     pub fn values(&self) -> Vec<Option<crate::ratfunc::RatFunc>> {
-        let k = self.base();
-        self.components
+        self.eigenvalues
             .iter()
-            .map(|c| (c.degree() == 1).then(|| k.neg(&c.factor.monic().coeff(0))))
+            .map(|e| match e.value() {
+                EigenValue::InField(x) => Some(x.clone()),
+                _ => None,
+            })
             .collect()
     }
     /// `(A, T, J)` at the rational point `p0` ([`JordanForm::primary_form`]); `None` when a

@@ -132,7 +132,7 @@ pub struct RealJordanForm<F: Field = Q> {
     pub base: F,
     /// The eigenvalues of the complex form (the blocks refer to them) and the irreducible
     /// factor over the base field of each component.
-    pub eigenvalues: Vec<super::Eigenvalue>,
+    pub eigenvalues: Vec<super::Eigenvalue<F>>,
     pub factors: Vec<Poly<F>>,
     pub blocks: Vec<RealBlock<F>>,
     /// Every block is exact (always: a pair whose real field is not found is compact).

@@ -6,7 +6,7 @@
 use super::runner::{Insist, Section, Sections, failed_msg};
 use super::{MAX_FREE_RESPONSE_BYTES, not_applicable};
 use crate::io::TypedSystem;
-use crate::jordan::{EigenField, JordanForm, jordan_over};
+use crate::jordan::{EigenField, JordanField, JordanForm, jordan_over};
 use crate::realization;
 use crate::report::{Report, Value, sections};
 use crate::system::StateSpace;
@@ -202,4 +202,27 @@ fn pbh_from_jordan<F: EigenField>(jf: &JordanForm<F>, s: &StateSpace<F>) -> (boo
         po &= (&lift(&s.c) * &c.chains.select_cols(&starts)).rank() == nb;
     }
     (pc, po)
+}
+
+/// The eigenvalue structure of `a` over any field with a Jordan decomposition, read off the
+/// generic eigenvalue list ([`sections::eigenvalue_structure`], the factor in `s`):
+/// `eigenvalues`, `complete` (every eigenvalue lies in the field), `stability` (from the
+/// typed signs: [`sections::stability_text`]), `verified`. The decomposition is returned
+/// with it (its conditions join the caller's).
+pub(crate) fn structure_section<F: JordanField>(
+    a: &crate::matrix::Matrix<F>,
+    title: &str,
+) -> (Report, Option<JordanForm<F>>) {
+    match F::jordan_form(a) {
+        Ok(jf) => {
+            let complete = jf.components.iter().all(|c| c.degree() == 1);
+            let r = Report::titled(title)
+                .list("eigenvalues", sections::eigenvalue_structure(&jf, "s"))
+                .bool("complete", complete)
+                .str("stability", sections::stability_text(&jf))
+                .bool("verified", jf.verified);
+            (r, Some(jf))
+        }
+        Err(err) => (Report::titled(title).str("error", err.to_string()), None),
+    }
 }

@@ -22,6 +22,7 @@ use crate::io::{SystemFile, TypedSystem, as_rational};
 use crate::realization;
 use crate::report::{Report, Value, str_list};
 use eigen::eigen_sections;
+pub(crate) use eigen::structure_section;
 use runner::{Insist, Section, Sections};
 use std::sync::Arc;
 

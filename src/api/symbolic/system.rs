@@ -140,40 +140,14 @@ pub(in crate::api) fn run(
             let mut rep = depends(out.report, "minimum_phase");
             let mut ok = out.verified;
             // the eigenvalue structure over Q(p) (its conditions join this computation's)
-            let sec = match crate::jordan::jordan_qp(&s.a) {
-                Ok(jf) => {
-                    ok &= jf.verified;
-                    for c in &jf.conditions {
-                        k.record_condition(c.num());
-                    }
-                    let eig = jf
-                        .components
-                        .iter()
-                        .zip(jf.values())
-                        .map(|(c, value)| {
-                            let mut r = Report::new()
-                                .str("factor", c.factor.to_string_var("s"))
-                                .int("algebraic_multiplicity", c.multiplicity)
-                                .with(
-                                    "blocks",
-                                    Value::List(
-                                        c.blocks.iter().map(|&b| Value::Int(b as i64)).collect(),
-                                    ),
-                                );
-                            if let Some(x) = &value {
-                                r = r.str("value", k.fmt_elem(x));
-                            }
-                            Value::Obj(r)
-                        })
-                        .collect();
-                    Report::titled("eigenvalues and Jordan structure over Q(p)")
-                        .list("eigenvalues", eig)
-                        .bool("complete", jf.complete())
-                        .bool("verified", jf.verified)
+            let title = "eigenvalues and Jordan structure over Q(p)";
+            let (sec, jf) = crate::api::analyze::structure_section(&s.a, title);
+            if let Some(jf) = jf {
+                ok &= jf.verified;
+                for c in &jf.conditions {
+                    k.record_condition(c.num());
                 }
-                Err(err) => Report::titled("eigenvalues and Jordan structure over Q(p)")
-                    .str("error", err.to_string()),
-            };
+            }
             rep.push("jordan", Value::Obj(sec));
             (rep, ok)
         }

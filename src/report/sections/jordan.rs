@@ -14,7 +14,8 @@ use crate::field::ElemDisplay;
 use crate::field::Field;
 use crate::jordan::qp_form::integral;
 use crate::jordan::{
-    CompactPair, EigenField, Eigenvalue, FreeResponse, JordanForm, RealEntries, RealJordanForm,
+    CompactPair, EigenField, EigenValue, Eigenvalue, FreeResponse, JordanForm, NumberEigen,
+    RealEntries, RealJordanForm,
 };
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;
@@ -22,18 +23,17 @@ use crate::report::{MatrixOut, Report, Value, str_list};
 
 /// `r<k> = <value>`, with `(over K: root of g)` when the factor over the base field is not
 /// the eigenvalue's minimal polynomial over $\mathbb{Q}$.
-pub(super) fn root_line<F: Field>(k: &F, e: &Eigenvalue, g: &Poly<F>) -> String {
-    let over = if g.deg() == e.minpoly.deg() {
-        String::new()
-    } else {
-        format!(" (over {k}: root of {g})")
+pub(super) fn root_line<F: Field>(k: &F, e: &Eigenvalue<F>, g: &Poly<F>) -> String {
+    let over = match e.value() {
+        EigenValue::Number(z) if g.deg() != z.minpoly.deg() => format!(" (over {k}: root of {g})"),
+        _ => String::new(),
     };
-    format!("{} = {}{over}", e.symbol(), eigenvalue_text(e))
+    format!("{} = {}{over}", e.symbol(), eigenvalue_value_text(k, e))
 }
 
 /// Whether the eigenvalue's field displays with its symbol (`r<k>`), so the symbol needs a
 /// definition.
-pub(super) fn named<F: Field>(f: &Ext<F>, e: &Eigenvalue) -> bool {
+pub(super) fn named<F: Field>(f: &Ext<F>, e: &Eigenvalue<F>) -> bool {
     f.degree() >= 2 && f.var() == e.symbol()
 }
 
@@ -151,7 +151,7 @@ pub(super) fn part_text<F: Field>(
 
 /// The displays of $\operatorname{Re}\theta$, $\operatorname{Im}\theta$ of a pair: closed
 /// forms up to degree 2, else the symbols `a<k>`, `b<k>`.
-pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue) -> (String, String) {
+pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue<F>) -> (String, String) {
     let k = e.index;
     let show = |x: &Option<crate::algebraic::AlgebraicNumber>, sym: String| match x {
         Some(x) if x.degree() <= 2 => x.value_string(),
@@ -163,7 +163,7 @@ pub(super) fn theta_parts<F: Field>(cp: &CompactPair<F>, e: &Eigenvalue) -> (Str
 /// The legend lines of a compact pair: `r<k> = a<k> + b<k>*i` and each part's definition
 /// (a closed form where there is one, else `root of P near X`; a part not computed exactly
 /// is `near X`).
-fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
+fn part_lines<F: NumberEigen>(e: &Eigenvalue<F>, cp: &CompactPair<F>) -> Vec<String> {
     let (re, im) = theta_parts(cp, e);
     let k = e.index;
     let define = |sym: String, what: &str, x: &Option<crate::algebraic::AlgebraicNumber>, v| match x
@@ -189,8 +189,19 @@ fn part_lines<F: Field>(e: &Eigenvalue, cp: &CompactPair<F>) -> Vec<String> {
 /// The exact display of an eigenvalue (one number display: rational, closed form up to
 /// degree 2 and for biquadratics, else `root of <minpoly> near <approx>`), from its minimal
 /// polynomial and the approximation that marks the root.
-pub fn eigenvalue_text(e: &Eigenvalue) -> String {
+pub fn eigenvalue_text<F: NumberEigen>(e: &Eigenvalue<F>) -> String {
     crate::report::display::value_display(&e.minpoly, e.approx)
+}
+
+/// The display of an eigenvalue over any base field `k`: a certified number as
+/// [`eigenvalue_text`], an element of the field (over $\mathbb{Q}(p)$) as the field writes
+/// it, the roots of a factor $g$ of degree $\ge 2$ as `root of g`.
+pub fn eigenvalue_value_text<F: Field>(k: &F, e: &Eigenvalue<F>) -> String {
+    match e.value() {
+        EigenValue::Number(z) => crate::report::display::value_display(&z.minpoly, z.approx),
+        EigenValue::InField(x) => k.fmt_elem(x),
+        EigenValue::RootOf(g) => format!("root of {g}"),
+    }
 }
 
 impl<F: EigenField> JordanForm<F> {
@@ -481,20 +492,21 @@ impl JordanForm<RatFuncField> {
         vars.push(s.clone());
         let ints = |xs: &[usize]| Value::List(xs.iter().map(|&b| Value::Int(b as i64)).collect());
         let (mut evs, mut factors) = (vec![], vec![]);
-        for (c, value) in self.components.iter().zip(self.values()) {
+        for e in &self.eigenvalues {
+            let c = &self.components[e.component];
             let big = integral(&c.factor);
             let f = big.to_string_vars(&vars);
-            let r = match &value {
-                Some(v) => Report::new().str("value", k.fmt_elem(v)),
-                None => Report::new().str("roots_of", format!("{f} = 0")),
+            let r = match e.value() {
+                EigenValue::InField(v) => Report::new().str("value", k.fmt_elem(v)),
+                _ => Report::new().str("roots_of", format!("{f} = 0")),
             };
             let dims: Vec<usize> = c.kernel_dims.iter().map(|x| x * c.degree()).collect();
             evs.push(Value::Obj(
                 r.str("factor", f.clone())
                     .int("degree", c.degree())
-                    .int("algebraic_multiplicity", c.multiplicity)
-                    .int("geometric_multiplicity", c.geometric_multiplicity())
-                    .with("blocks", ints(&c.blocks))
+                    .int("algebraic_multiplicity", e.algebraic_multiplicity)
+                    .int("geometric_multiplicity", e.geometric_multiplicity)
+                    .with("blocks", ints(&e.blocks))
                     .with("kernel_dims", ints(&dims)),
             ));
             let f = if big.len() > 1 { format!("({f})") } else { f };

@@ -12,6 +12,7 @@ pub mod conditions;
 mod critical;
 mod dcgain;
 mod discrete;
+mod eigen_list;
 mod interconnect;
 mod jordan;
 mod mpoly;
@@ -25,8 +26,9 @@ mod toolbox;
 pub use algebraic::{factor_report, roots_report};
 pub use critical::{critical_report, factor_displays};
 pub use discrete::{conversion_report, sequence_report, stability_report};
+pub use eigen_list::{NOT_DECIDED, eigenvalue_structure, stability_text};
 pub use interconnect::{PartInfo, interconnection_report};
-pub use jordan::{conditions_qp, eigenvalue_text, qp_var_name};
+pub use jordan::{conditions_qp, eigenvalue_text, eigenvalue_value_text, qp_var_name};
 pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,

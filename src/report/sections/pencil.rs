@@ -30,7 +30,9 @@ pub fn eigen_items(jf: &JordanForm) -> Vec<Value> {
 }
 
 /// Eigenvalue objects of a list of eigenvalues (rational or quadratic-field Jordan forms).
-pub fn eigenvalue_items(evs: &[crate::jordan::Eigenvalue]) -> Vec<Value> {
+pub fn eigenvalue_items<F: crate::jordan::NumberEigen>(
+    evs: &[crate::jordan::Eigenvalue<F>],
+) -> Vec<Value> {
     evs.iter()
         .map(|e| {
             Value::Obj(

@@ -3,7 +3,9 @@
 //! Presentation only: these `report` methods read finished results of [`crate::realization`] and
 //! build the CLI contract's keys; the math modules do not depend on [`crate::report`].
 
-use super::jordan::{Cells, eigenvalue_text, field_line, named, neg_display, part_text, root_line};
+use super::jordan::{
+    Cells, eigenvalue_value_text, field_line, named, neg_display, part_text, root_line,
+};
 use crate::algebraic::ExtElem;
 use crate::field::Field;
 use crate::matrix::Matrix;
@@ -63,7 +65,7 @@ fn put_compact<F: Field>(blk: &ModalBlock<F>, sym: &str, off: usize, [a, b, c]: 
 impl<F: Field> JordanMinimal<F> {
     /// The display of mode `blk` (a pair: `... (and its conjugate)`).
     fn mode_text(&self, ev: usize, pair: bool) -> String {
-        let v = eigenvalue_text(&self.jordan.eigenvalues[ev]);
+        let v = eigenvalue_value_text(self.jordan.base(), &self.jordan.eigenvalues[ev]);
         if pair {
             format!("{v} (and its conjugate)")
         } else {
