@@ -239,7 +239,7 @@ pub fn descriptor_to_standard_recorded<K: Field>(
         system,
         removed_infinite: k2,
         method: StandardMethod::Weierstrass,
-        lambda0: Some(split.lambda0),
+        lambda0: split.lambda0,
         v1: split.v1,
         states: None,
         verified,

@@ -7,6 +7,13 @@
 //! $$G(s) = C_f(sI - A_f)^{-1}B_f + D + \sum_{k \ge 0} (-s)^k C_\infty N^k B_\infty .$$
 //! Here the split is returned whole (improper systems included); the polynomial part is
 //! $P(s) = \sum_k P_k s^k$ with $P_0 = D + C_\infty B_\infty$, $P_k = (-1)^kC_\infty N^kB_\infty$.
+//!
+//! **$E$ invertible** (decided by one inverse, the field's kernel over $\mathbb{Q}(p)$): there
+//! is no infinite part and the split is the trivial one, $V_1 = I$, $A_f = E^{-1}A$,
+//! $B_f = E^{-1}B$ (no shift $\lambda_0$, no $\hat E^n$: over $\mathbb{Q}(p)$ the powers of
+//! $(\lambda_0E - A)^{-1}E$ and the inverse of their column basis are what made the general
+//! route slow); its identity is $EA_f = A$, $EB_f = B$. $E = I$ (a standard system read as
+//! a descriptor one) takes $A$ and $B$ as they are.
 
 use crate::error::{Error, Result};
 use crate::field::Field;
@@ -49,9 +56,10 @@ impl<K: Field> WeierstrassSplit<K> {
 /// [`super::descriptor_to_standard`]: the shift $\lambda_0$, the bases $V_1$, $V_2$, the
 /// finite part $(\lambda_0 I - \hat E_1^{-1}, \hat E_1^{-1}\hat B_1, CV_1)$, the nilpotent
 /// $GN$ and $G\hat B_2$ with $G = (I - \lambda_0 N)^{-1}$, and whether $V^{-1}\hat E V$ is
-/// block diagonal.
+/// block diagonal. For invertible $E$ (module docs): `lambda0` is `None`, $V_1 = I$, $V_2$,
+/// $GN$, $G\hat B_2$ empty, and `decoupled` is the identity $EA_f = A$, $EB_f = B$.
 pub(crate) struct FittingSplit<K: Field> {
-    pub lambda0: i64,
+    pub lambda0: Option<i64>,
     pub v1: Matrix<K>,
     pub v2: Matrix<K>,
     pub a_f: Matrix<K>,
@@ -66,6 +74,9 @@ pub(crate) struct FittingSplit<K: Field> {
 /// # Errors
 /// `Invalid` when $\det(sE - A) \equiv 0$ (singular pencil).
 pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSplit<K>> {
+    if let Some(split) = invertible_split(sys) {
+        return Ok(split);
+    }
     let fld = sys.a.field().clone();
     let n = sys.nstates();
     let mut found = None;
@@ -100,13 +111,37 @@ pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSpli
     // N z2' = (l0 N - I) z2 + B2 u  <=>  (I + s G N) z2 = G B2 u with G = (I - l0 N)^-1
     let g = (&Matrix::identity(fld, n - r) - &nil.scale(&l0e)).inverse()?;
     Ok(FittingSplit {
-        lambda0: l0,
+        lambda0: Some(l0),
         a_f,
         b_f,
         gn: &g * &nil,
         gb: &g * &bt.submatrix(r, n, 0, sys.b.ncols()),
         v1,
         v2,
+        decoupled,
+    })
+}
+
+/// The trivial split of a system with invertible $E$ (module docs); `None` when $E$ is
+/// singular (the general route then runs).
+fn invertible_split<K: Field>(sys: &Descriptor<K>) -> Option<FittingSplit<K>> {
+    let fld = sys.a.field().clone();
+    let (n, m) = (sys.nstates(), sys.b.ncols());
+    let (a_f, b_f) = if sys.e.is_identity() {
+        (sys.a.clone(), sys.b.clone())
+    } else {
+        let ei = sys.e.inverse().ok()?;
+        (&ei * &sys.a, &ei * &sys.b)
+    };
+    let decoupled = &sys.e * &a_f == sys.a && &sys.e * &b_f == sys.b;
+    Some(FittingSplit {
+        lambda0: None,
+        v1: Matrix::identity(fld.clone(), n),
+        v2: Matrix::zeros(fld.clone(), n, 0),
+        a_f,
+        b_f,
+        gn: Matrix::zeros(fld.clone(), 0, 0),
+        gb: Matrix::zeros(fld, 0, m),
         decoupled,
     })
 }
