@@ -10,7 +10,8 @@
 //! * (index $> 1$) the Weierstrass split: $V^{-1}\hat E V$ block diagonal and $GN$ nilpotent
 //!   (for `minreal --descriptor` with $E$ invertible the trivial split, $EA_f = A$, $EB_f = B$);
 //! * the standard form with the certificate of its route: $x = V_1 z + W u$ maps solutions
-//!   (index $\le 1$), or equal transfer matrices at enough points (Weierstrass).
+//!   (index $\le 1$), or equal transfer matrices (Weierstrass,
+//!   [`super::weierstrass::same_transfer`]).
 
 use super::descriptor_elim::CompressedE;
 use super::weierstrass::FittingSplit;
