@@ -45,6 +45,8 @@ mod ctrb_structure;
 mod dcgain;
 #[path = "descriptor_class.rs"]
 mod descriptor_class;
+#[path = "descriptor_qp_speed.rs"]
+mod descriptor_qp_speed;
 #[path = "discrete.rs"]
 mod discrete;
 #[path = "discrete_text.rs"]

@@ -27,8 +27,9 @@
 //! $\deg \det(sE - A)$ states.
 //!
 //! Every route is checked the same way: the transfer matrix of the standard form equals
-//! $C(sE - A)^{-1}B + D$ exactly ([`super::weierstrass::same_transfer`], agreement at more
-//! rational points than the degree of the difference allows).
+//! $C(sE - A)^{-1}B + D$ exactly ([`super::weierstrass::same_transfer`]: Markov parameters
+//! when both $E$ are invertible, else Taylor coefficients at a regular rational point, as
+//! many as the degree of the difference allows).
 
 use super::weierstrass::same_transfer;
 use crate::error::{Error, Result};
@@ -54,8 +55,8 @@ pub struct StandardForm<K: Field> {
     /// and of $W$ zero; the index-0 and index-1 routes when $E$ is block diagonal up to a
     /// permutation); `None` otherwise.
     pub states: Option<Vec<usize>>,
-    /// The transfer matrix of the standard form equals the descriptor's (exactly, at enough
-    /// rational points) and, for the Weierstrass split, the transformed pencil is block
+    /// The transfer matrix of the standard form equals the descriptor's (exactly,
+    /// [`super::weierstrass::same_transfer`]) and, for the Weierstrass split, the transformed pencil is block
     /// diagonal.
     pub verified: bool,
 }
@@ -239,7 +240,7 @@ pub fn descriptor_to_standard_recorded<K: Field>(
         system,
         removed_infinite: k2,
         method: StandardMethod::Weierstrass,
-        lambda0: Some(split.lambda0),
+        lambda0: split.lambda0,
         v1: split.v1,
         states: None,
         verified,

@@ -7,9 +7,11 @@
 //!   $k = n - r$);
 //! * (index 1) the elimination of the algebraic states with $X = \hat A_{IJ}$ invertible and the
 //!   reduced $E' = E_{11}$ invertible;
-//! * (index $> 1$) the Weierstrass split: $V^{-1}\hat E V$ block diagonal and $GN$ nilpotent;
+//! * (index $> 1$) the Weierstrass split: $V^{-1}\hat E V$ block diagonal and $GN$ nilpotent
+//!   (for `minreal --descriptor` with $E$ invertible the trivial split, $EA_f = A$, $EB_f = B$);
 //! * the standard form with the certificate of its route: $x = V_1 z + W u$ maps solutions
-//!   (index $\le 1$), or equal transfer matrices at enough points (Weierstrass).
+//!   (index $\le 1$), or equal transfer matrices (Weierstrass,
+//!   [`super::weierstrass::same_transfer`]).
 
 use super::descriptor_elim::CompressedE;
 use super::weierstrass::FittingSplit;
@@ -80,13 +82,26 @@ pub(crate) fn eliminate<K: Field>(
 
 pub(crate) fn fitting<K: Field>(rec: &mut Recorder<'_, K>, s: &FittingSplit<K>) {
     let k = s.a_f.field().clone();
+    let Some(l0) = s.lambda0 else {
+        // E invertible: the trivial split, checked by E Af = A, E Bf = B
+        rec.push(
+            StepKind::DescriptorFitting,
+            None,
+            vec![
+                ("Af", Object::Matrix(s.a_f.clone())),
+                ("Bf", Object::Matrix(s.b_f.clone())),
+            ],
+            Some(s.decoupled),
+        );
+        return;
+    };
     let ninf = s.gn.nrows();
     let nilpotent = ninf == 0 || s.gn.pow(ninf as u32).is_ok_and(|m| m.is_zero());
     rec.push(
         StepKind::DescriptorFitting,
         None,
         vec![
-            ("lambda0", Object::Scalar(k.from_i64(s.lambda0))),
+            ("lambda0", Object::Scalar(k.from_i64(l0))),
             ("V1", Object::Matrix(s.v1.clone())),
             ("V2", Object::Matrix(s.v2.clone())),
             ("Af", Object::Matrix(s.a_f.clone())),

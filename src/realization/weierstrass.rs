@@ -7,6 +7,13 @@
 //! $$G(s) = C_f(sI - A_f)^{-1}B_f + D + \sum_{k \ge 0} (-s)^k C_\infty N^k B_\infty .$$
 //! Here the split is returned whole (improper systems included); the polynomial part is
 //! $P(s) = \sum_k P_k s^k$ with $P_0 = D + C_\infty B_\infty$, $P_k = (-1)^kC_\infty N^kB_\infty$.
+//!
+//! **$E$ invertible** (decided by one inverse, the field's kernel over $\mathbb{Q}(p)$): there
+//! is no infinite part and the split is the trivial one, $V_1 = I$, $A_f = E^{-1}A$,
+//! $B_f = E^{-1}B$ (no shift $\lambda_0$, no $\hat E^n$: over $\mathbb{Q}(p)$ the powers of
+//! $(\lambda_0E - A)^{-1}E$ and the inverse of their column basis are what made the general
+//! route slow); its identity is $EA_f = A$, $EB_f = B$. $E = I$ (a standard system read as
+//! a descriptor one) takes $A$ and $B$ as they are.
 
 use crate::error::{Error, Result};
 use crate::field::Field;
@@ -49,9 +56,10 @@ impl<K: Field> WeierstrassSplit<K> {
 /// [`super::descriptor_to_standard`]: the shift $\lambda_0$, the bases $V_1$, $V_2$, the
 /// finite part $(\lambda_0 I - \hat E_1^{-1}, \hat E_1^{-1}\hat B_1, CV_1)$, the nilpotent
 /// $GN$ and $G\hat B_2$ with $G = (I - \lambda_0 N)^{-1}$, and whether $V^{-1}\hat E V$ is
-/// block diagonal.
+/// block diagonal. For invertible $E$ (module docs): `lambda0` is `None`, $V_1 = I$, $V_2$,
+/// $GN$, $G\hat B_2$ empty, and `decoupled` is the identity $EA_f = A$, $EB_f = B$.
 pub(crate) struct FittingSplit<K: Field> {
-    pub lambda0: i64,
+    pub lambda0: Option<i64>,
     pub v1: Matrix<K>,
     pub v2: Matrix<K>,
     pub a_f: Matrix<K>,
@@ -66,6 +74,9 @@ pub(crate) struct FittingSplit<K: Field> {
 /// # Errors
 /// `Invalid` when $\det(sE - A) \equiv 0$ (singular pencil).
 pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSplit<K>> {
+    if let Some(split) = invertible_split(sys) {
+        return Ok(split);
+    }
     let fld = sys.a.field().clone();
     let n = sys.nstates();
     let mut found = None;
@@ -100,13 +111,37 @@ pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSpli
     // N z2' = (l0 N - I) z2 + B2 u  <=>  (I + s G N) z2 = G B2 u with G = (I - l0 N)^-1
     let g = (&Matrix::identity(fld, n - r) - &nil.scale(&l0e)).inverse()?;
     Ok(FittingSplit {
-        lambda0: l0,
+        lambda0: Some(l0),
         a_f,
         b_f,
         gn: &g * &nil,
         gb: &g * &bt.submatrix(r, n, 0, sys.b.ncols()),
         v1,
         v2,
+        decoupled,
+    })
+}
+
+/// The trivial split of a system with invertible $E$ (module docs); `None` when $E$ is
+/// singular (the general route then runs).
+fn invertible_split<K: Field>(sys: &Descriptor<K>) -> Option<FittingSplit<K>> {
+    let fld = sys.a.field().clone();
+    let (n, m) = (sys.nstates(), sys.b.ncols());
+    let (a_f, b_f) = if sys.e.is_identity() {
+        (sys.a.clone(), sys.b.clone())
+    } else {
+        let ei = sys.e.inverse().ok()?;
+        (&ei * &sys.a, &ei * &sys.b)
+    };
+    let decoupled = &sys.e * &a_f == sys.a && &sys.e * &b_f == sys.b;
+    Some(FittingSplit {
+        lambda0: None,
+        v1: Matrix::identity(fld.clone(), n),
+        v2: Matrix::zeros(fld.clone(), n, 0),
+        a_f,
+        b_f,
+        gn: Matrix::zeros(fld.clone(), 0, 0),
+        gb: Matrix::zeros(fld, 0, m),
         decoupled,
     })
 }
@@ -143,30 +178,63 @@ pub fn eval_transfer<K: Field>(sys: &Descriptor<K>, s0: &K::Elem) -> Option<Matr
     Some(&(&(&sys.c * &x) * &sys.b) + &sys.d)
 }
 
-/// Do two descriptor systems have the same transfer matrix? Exact: entries of
-/// $G_1 - G_2$ are rational functions with numerator degree below $2(n_1 + n_2) + 1$, so
-/// agreement at that many points (poles of either skipped) proves equality.
+/// Do two descriptor systems have the same transfer matrix? Exact, by two expansions:
+///
+/// * **both $E_i$ invertible**: $D_1 = D_2$ and the Markov parameters
+///   $C_i(E_i^{-1}A_i)^kE_i^{-1}B_i$ agree for $k < n_1 + n_2$ (the difference of the
+///   strictly proper parts has a realization of order $n_1 + n_2$, so by Cayley-Hamilton its
+///   first $n_1 + n_2$ Markov parameters decide all). Products only: no point, no inverse
+///   but $E_i^{-1}$ ($E_i = I$: none), and over $\mathbb{Q}(p)$ no condition recorded.
+/// * **otherwise**: the Taylor coefficients at a rational $s_0$ where both pencils are
+///   regular, $G_i(s_0 + h) = D_i + \sum_k (-h)^k C_i(F_iE_i)^kF_iB_i$ with
+///   $F_i = (s_0E_i - A_i)^{-1}$, for $k \le n_1 + n_2$: each entry of $G_i$ is $p_i/d_i$ with
+///   $\deg p_i, \deg d_i \le n_i$ and $d_i(s_0) \ne 0$, so the numerator of
+///   $(G_1 - G_2)d_1d_2$ has degree $\le n_1 + n_2$ and vanishes to that order at $s_0$: it is
+///   zero. One inverse per system (at most $n_1 + n_2 + 2$ values of $s_0$ tried; a singular
+///   pencil has none and gives `false`).
 pub fn same_transfer<K: Field>(s1: &Descriptor<K>, s2: &Descriptor<K>) -> bool {
     if s1.d.shape() != s2.d.shape() {
         return false;
     }
+    let need = s1.nstates() + s2.nstates();
+    if let (Some(m1), Some(m2)) = (markov_of(s1, need), markov_of(s2, need)) {
+        return s1.d == s2.d && m1 == m2;
+    }
     let fld = s1.a.field().clone();
-    let need = 2 * (s1.nstates() + s2.nstates()) + 1;
-    let mut agree = 0;
-    let mut t: i64 = 0;
-    // at most n1 + n2 points are poles of either system
-    while agree < need && t < (need + s1.nstates() + s2.nstates() + 1) as i64 {
+    for t in 0..need as i64 + 2 {
         let s0 = fld.from_rational(&crate::field::Rational::new((2 * t + 1).into(), 7.into()));
-        t += 1;
-        let (Some(g1), Some(g2)) = (eval_transfer(s1, &s0), eval_transfer(s2, &s0)) else {
+        let (Some(g1), Some(g2)) = (moments(s1, &s0, need + 1), moments(s2, &s0, need + 1)) else {
             continue;
         };
-        if g1 != g2 {
-            return false;
-        }
-        agree += 1;
+        return g1 == g2;
     }
-    agree >= need
+    false
+}
+
+/// $C(E^{-1}A)^kE^{-1}B$ for $k < $ `count` when $E$ is invertible, else `None`.
+fn markov_of<K: Field>(sys: &Descriptor<K>, count: usize) -> Option<Vec<Matrix<K>>> {
+    let (a, b) = if sys.e.is_identity() {
+        (sys.a.clone(), sys.b.clone())
+    } else {
+        let ei = sys.e.inverse().ok()?;
+        (&ei * &sys.a, &ei * &sys.b)
+    };
+    let ss = StateSpace::new_strictly_proper(a, b, sys.c.clone()).ok()?;
+    Some(ss.markov(count))
+}
+
+/// $G(s_0)$ and $C(FE)^kFB$, $k = 1..$ `count` $- 1$, with $F = (s_0E - A)^{-1}$; `None`
+/// when $s_0E - A$ is singular.
+fn moments<K: Field>(sys: &Descriptor<K>, s0: &K::Elem, count: usize) -> Option<Vec<Matrix<K>>> {
+    let f = (&sys.e.scale(s0) - &sys.a).inverse().ok()?;
+    let w = &f * &sys.e;
+    let mut x = &f * &sys.b;
+    let mut out = vec![&(&sys.c * &x) + &sys.d];
+    for _ in 1..count {
+        x = &w * &x;
+        out.push(&sys.c * &x);
+    }
+    Some(out)
 }
 
 /// The exact transfer matrix of a regular descriptor system (improper included):

@@ -62,8 +62,8 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             r"\det X \ne 0,\ \det E' \ne 0",
         ),
         StepKind::DescriptorFitting => (
-            "V^-1 Eh V = diag(Eh_1, N) block diagonal, G N nilpotent",
-            r"V^{-1}\hat E V = \operatorname{diag}(\hat E_1, N),\ (GN)^{n_\infty} = 0",
+            "V^-1 Eh V = diag(Eh_1, N) block diagonal, G N nilpotent (E invertible: E Af = A, E Bf = B)",
+            r"V^{-1}\hat E V = \operatorname{diag}(\hat E_1, N),\ (GN)^{n_\infty} = 0\ (\det E \ne 0:\ E A_f = A,\ E B_f = B)",
         ),
         StepKind::StandardForm => (
             "x = V1 z + W u maps solutions (E W = 0, E V1 As = A V1, E V1 Bs = A W + B, C V1 = Cs, C W + D = Ds), or C (sE - A)^-1 B + D = Cs (sI - As)^-1 Bs + Ds",
@@ -169,6 +169,7 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
             s.counts("states").map(super::steps::one_based).unwrap_or_default(),
             s.counts("eqs").map(super::steps::one_based).unwrap_or_default()
         ),
+        StepKind::DescriptorFitting if s.get("lambda0").is_none() => "E is invertible: no infinite eigenvalues, the split is trivial, V1 = I, Af = E^-1 A, Bf = E^-1 B (E Af = A, E Bf = B).".into(),
         StepKind::DescriptorFitting => format!(
             "Weierstrass split: lambda_0 = {} has det(lambda_0 E - A) != 0; Eh = (lambda_0 E - A)^-1 E and its Fitting decomposition x = V1 z1 + V2 z2 (range and kernel of Eh^n) give z1' = Af z1 + Bf u (finite modes) and (I + s G N) z2 = G B2 u (infinite modes, G = (I - lambda_0 N)^-1).",
             s.scalar("lambda0").map(|x| d.field.fmt_elem(x)).unwrap_or_default()
@@ -207,6 +208,7 @@ pub fn sentence_latex<K: Field>(st: &Step<K>) -> String {
         StepKind::MnfForm => "The normal form $z = (TF)x$: $\\tilde A = TA(TF)^{-1} = [0,\\ I;\\ -K,\\ -D_q]$, $\\tilde B = TB = [0; W]$, $\\tilde C = C(TF)^{-1}$: the second-order model $M\\ddot q + D_q\\dot q + K q = W u$.".into(),
         StepKind::DescriptorCompress => "Compress $E$: $U$ = unit rows at the pivot rows of $E$ over its left null space, $V$ = unit columns at its pivot columns beside its null space, so $UEV = \\operatorname{diag}(E_{11}, 0)$, $x = Vz$; $k$ is the rank of the algebraic block $\\hat A_{22}$ (index $\\le 1$ iff $k = n - r$).".into(),
         StepKind::DescriptorEliminate => "Eliminate the algebraic states $z_J$ with the equations $I$ ($X = \\hat A_{IJ}$ invertible, one-based indices below): $z_J = -X^{-1}(\\hat A_{IS} z_S + \\hat B_I u)$, leaving $E' \\dot z_S = A' z_S + B' u$, $y = C' z_S + D' u$.".into(),
+        StepKind::DescriptorFitting if st.get("lambda0").is_none() => "$E$ is invertible: no infinite eigenvalues, the split is trivial, $V_1 = I$, $A_f = E^{-1}A$, $B_f = E^{-1}B$.".into(),
         StepKind::DescriptorFitting => "Weierstrass split: $\\det(\\lambda_0 E - A) \\ne 0$, $\\hat E = (\\lambda_0 E - A)^{-1}E$ and its Fitting decomposition $x = V_1 z_1 + V_2 z_2$ give the finite part $\\dot z_1 = A_f z_1 + B_f u$ and the infinite part $(I + sGN) z_2 = G\\hat B_2 u$, $G = (I - \\lambda_0 N)^{-1}$.".into(),
         StepKind::StandardForm => "The standard form $\\dot z = A_s z + B_s u$, $y = C_s z + D_s u$.".into(),
         StepKind::RealPair if c("compact") == 1 => "A complex pair whose real field is large: kept in the compact form.".into(),
