@@ -16,7 +16,9 @@ pub const MAX_DET_TERMS: u128 = 2_000_000;
 /// $\mathbb{Q}(p)$ with `nv` parameters) before it is computed: the smaller of
 /// $\prod_v (d_v + 1)$ and $\binom{d + k}{k}$, with $d_v = \sum_i \max_j (\deg_v
 /// \mathrm{num}_{ij} + \deg_v \mathrm{den}_{ij})$ and $d$ the same sum of total degrees ($k$
-/// parameters): a degree bound of the cleared determinant, row by row.
+/// parameters): a degree bound of the cleared determinant, row by row. An upper bound of
+/// the numerator's terms when each row has one denominator (a polynomial matrix); with
+/// several denominators in a row their lcm is not counted (a heuristic there).
 pub fn det_terms_bound(nv: usize, m: usize, n: usize, a: &[RatFunc]) -> u128 {
     let mut dv = vec![0u32; nv];
     let mut dtot = 0u32;
