@@ -7,8 +7,9 @@
 
 use crate::common::systems::diag_qp;
 use exactlti::error::Error;
-use exactlti::field::{Q, Rational};
+use exactlti::field::Rational;
 use exactlti::matrix::Matrix;
+use exactlti::matrix::qp_conditions::eval_at as at;
 use exactlti::ratfunc::{MAX_DET_TERMS, RatFuncField, det_budget, det_terms_bound};
 use exactlti::rng::SplitMix64;
 
@@ -21,12 +22,6 @@ fn vandermonde(n: usize) -> Matrix<RatFuncField> {
 
 fn bound(m: &Matrix<RatFuncField>) -> u128 {
     det_terms_bound(m.field().nvars(), m.nrows(), m.ncols(), m.as_slice())
-}
-
-fn at(m: &Matrix<RatFuncField>, p: &[Rational]) -> Option<Matrix<Q>> {
-    let k = m.field();
-    let v: Option<Vec<Rational>> = m.as_slice().iter().map(|x| k.eval(x, p)).collect();
-    Some(Matrix::from_vec(Q, m.nrows(), m.ncols(), v?))
 }
 
 #[test]
@@ -57,7 +52,9 @@ fn within_the_budget_det_is_exact_and_the_bound_holds() {
         assert_eq!(d.num().len(), fact, "n = {n}");
         assert!(bound(&v) >= fact as u128, "n = {n}");
         // prod_{i<j} (p_j - p_i) at a point
-        let p: Vec<Rational> = (0..n).map(|i| Rational::from_integer((3 * i * i + 1).into())).collect();
+        let p: Vec<Rational> = (0..n)
+            .map(|i| Rational::from_integer((3 * i * i + 1).into()))
+            .collect();
         let want = at(&v, &p).unwrap().det().unwrap();
         assert_eq!(v.field().eval(&d, &p), Some(want), "n = {n}");
     }

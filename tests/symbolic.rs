@@ -1,12 +1,12 @@
 //! Symbolic parameters (contract, second wave): the single-wheel yaw-plane model of the
 //! vehicle-dynamics paper (eq. 27) over QQ(cr, m, u).
 
+use crate::common::cli::run;
 use exactlti::field::ElemDisplay;
 use exactlti::field::Field;
 use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};
 use std::path::Path;
-use crate::common::cli::run;
 
 const YAW: &str = "data/yaw-plane-single-wheel.json";
 

@@ -6,6 +6,7 @@
 //! paper's values equals the SCB computed over Q at those values), and properties (verified
 //! identities, every condition irreducible and nonvanishing at the paper's values).
 
+use crate::common::cli::run;
 use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Q, Rational};
 use exactlti::io::TypedAny;
@@ -16,7 +17,6 @@ use exactlti::structure::bifurcation::{BranchOutcome, Limits, bifurcations, solv
 use exactlti::structure::scb::{Scb, scb};
 use exactlti::system::StateSpace;
 use std::path::Path;
-use crate::common::cli::run;
 
 const DC: &str = "data/dc-motor-lugre.json";
 const FRONT: &str = "data/scb/single-track-front.json";

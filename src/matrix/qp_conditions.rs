@@ -20,10 +20,10 @@
 
 use super::Matrix;
 use crate::error::{Error, Result};
-use crate::ratfunc::kernels::budget::det_budget;
 use crate::field::{Q, Rational};
 use crate::mpoly::{MPoly, factor};
 use crate::ratfunc::RatFuncField;
+use crate::ratfunc::kernels::budget::det_budget;
 use crate::rng::SplitMix64;
 use num_traits::Zero;
 
