@@ -167,7 +167,10 @@ class StateSpace(Operations, ControlOps, ResponseOps, SystemOps, Rendered):
         transfer matrix (Markov parameters checked exactly, ``verified``).
 
         ``method``: ``"kalman"`` (default), ``"rosenbrock"``, ``"ho-kalman"``, or
-        ``"jordan"`` (modal form, stages ``original -> after dropping modes -> minimal``).
+        ``"jordan"`` (modal form, stages ``original -> after dropping modes -> minimal``),
+        on every field through the library's one entry point (as ``minreal --method``):
+        over Q, Q(sqrt d) and Q(i) the modal form; over Q(p) the primary blocks over Q(p)
+        (a system, with its ``conditions``).
 
         >>> import exactlti
         >>> G = exactlti.ss([[-1, 0], [0, -2]], [[1], [0]], [[1, 1]], [[0]])
