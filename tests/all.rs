@@ -147,6 +147,8 @@ mod plots;
 mod poly_factor;
 #[path = "qp_conditions.rs"]
 mod qp_conditions;
+#[path = "qp_det_budget.rs"]
+mod qp_det_budget;
 #[path = "qp_kernels.rs"]
 mod qp_kernels;
 #[path = "qp_scale.rs"]

@@ -11,11 +11,7 @@ use std::path::PathBuf;
 const D: &str = "tests/data/interconnect";
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let mut a = args.to_vec();
-    a.extend(["--format", "json"]);
-    let (code, out, err) = run(&a);
-    assert_eq!(code, 0, "args {args:?}: stderr {err}");
-    serde_json::from_str(&out).unwrap_or_else(|e| panic!("invalid JSON for {args:?}: {e}\n{out}"))
+    crate::common::cli::run_json(args)
 }
 
 fn data(name: &str) -> String {

@@ -1,20 +1,14 @@
 //! CLI of the second-wave descriptor commands: `pencil`, `ctrb`, `obsv`, `tf`,
 //! `minreal --descriptor`, `zeros` with `E`, and the key `G`.
-use std::process::Command;
 
+/// The CLI with `--format json` appended: exit code, the output's JSON (`Null` when it is
+/// not JSON) and stderr.
 fn run(args: &[&str]) -> (i32, serde_json::Value, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .args(["--format", "json"])
-        .output()
-        .expect("runs");
-    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
-    let v = serde_json::from_str(&stdout).unwrap_or(serde_json::Value::Null);
-    (
-        out.status.code().unwrap_or(-1),
-        v,
-        String::from_utf8_lossy(&out.stderr).to_string(),
-    )
+    let mut a = args.to_vec();
+    a.extend(["--format", "json"]);
+    let (code, out, err) = crate::common::cli::run(&a);
+    let v = serde_json::from_str(&out).unwrap_or(serde_json::Value::Null);
+    (code, v, err)
 }
 
 #[test]

@@ -43,9 +43,7 @@ fn file(values: Option<&[Rational; 5]>) -> std::path::PathBuf {
 }
 
 fn json(args: &[&str]) -> Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
+    crate::common::cli::json_of(args)
 }
 
 fn field() -> RatFuncField {

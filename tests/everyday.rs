@@ -178,26 +178,8 @@ fn simple_component_matches_the_general_chains() {
     }
 }
 
-/// Runs the binary in the crate root: (exit code, stdout, stderr).
-fn cli(args: &[&str]) -> (i32, String, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
 fn cli_json(args: &[&str]) -> serde_json::Value {
-    let mut a = args.to_vec();
-    a.extend(["--format", "json"]);
-    let (code, out, err) = cli(&a);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
+    common::cli::run_json(args)
 }
 
 const SECTIONS: [&str; 8] = [
@@ -243,7 +225,7 @@ fn analyze_random_12_has_every_section_done_or_marked() {
         assert_eq!(j["pbh"]["observable"], j["realization"]["observable"]);
     }
     // a section budget that nothing fits: every section is still there, marked, exit 0
-    let (code, out, err) = cli(&["analyze", f, "--section-seconds", "0.001"]);
+    let (code, out, err) = common::cli::run(&["analyze", f, "--section-seconds", "0.001"]);
     assert_eq!(code, 0, "{err}");
     for title in ["== eigenvalues and Jordan form ==", "== modal table =="] {
         assert!(out.contains(title), "{title}:\n{out}");
@@ -268,15 +250,15 @@ fn compact_text_by_default_full_on_request() {
         .max_by_key(String::len)
         .unwrap();
     assert!(long.len() > 24, "{long}");
-    let (code, compact, _) = cli(&["jordan", "--real", f]);
+    let (code, compact, _) = common::cli::run(&["jordan", "--real", f]);
     assert_eq!(code, 0);
     assert!(compact.contains("T (8x8) ~ (4 digits"), "{compact}");
     assert!(!compact.contains(&long));
-    let (code, full, _) = cli(&["jordan", "--real", f, "--full"]);
+    let (code, full, _) = common::cli::run(&["jordan", "--real", f, "--full"]);
     assert_eq!(code, 0);
     assert!(full.contains(&long) && !full.contains("~ (4 digits"));
     // short entries stay exact in compact mode; wide matrices come in column blocks
-    let (code, out, _) = cli(&["jordan", "data/sliding-masses.json"]);
+    let (code, out, _) = common::cli::run(&["jordan", "data/sliding-masses.json"]);
     assert_eq!(code, 0);
     assert!(
         out.contains("sqrt(2)*i") && out.contains("columns 1.."),
@@ -292,7 +274,7 @@ fn compact_text_by_default_full_on_request() {
 #[test]
 fn freqresp_and_modes_as_tables() {
     let f = "tests/data/everyday/quarter_car.json";
-    let (code, out, _) = cli(&[
+    let (code, out, _) = common::cli::run(&[
         "freqresp", f, "--points", "5", "--from", "0.01", "--to", "10",
     ]);
     assert_eq!(code, 0);
@@ -309,7 +291,7 @@ fn freqresp_and_modes_as_tables() {
     let j = cli_json(&["freqresp", f, "--points", "5"]);
     assert_eq!(j["frequencies_hz"].as_array().unwrap().len(), 5);
     assert_eq!(j["response"][0][0][0].as_array().unwrap().len(), 2);
-    let (code, out, _) = cli(&["modes", f]);
+    let (code, out, _) = common::cli::run(&["modes", f]);
     assert_eq!(code, 0);
     assert!(
         out.contains("mode") && out.contains("frequency (Hz)") && out.contains("damping ratio"),
@@ -378,7 +360,7 @@ fn spinner_on_a_terminal_only() {
         "--max-seconds",
         "3",
     ];
-    let (_, _, err) = cli(&args);
+    let (_, _, err) = common::cli::run(&args);
     assert!(!err.contains('\u{1b}'), "{err:?}");
     let have_script = std::process::Command::new("script")
         .arg("--version")

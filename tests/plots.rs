@@ -9,7 +9,6 @@ use exactlti::qmat;
 use exactlti::system::StateSpace;
 use exactlti::system::time_response::{ClosedFormResponse, time_grid};
 use std::path::PathBuf;
-use std::process::Command;
 
 /// Checks that `svg` is well-formed as far as tags go: every element closed in order, one
 /// root `<svg>`, attribute quotes paired, no stray `<` or `&` in text. Returns the number of
@@ -67,17 +66,7 @@ fn tmp(name: &str, text: &str) -> PathBuf {
 }
 
 fn run(args: &[&str]) -> serde_json::Value {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .args(["--format", "json"])
-        .output()
-        .expect("run exactlti");
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("json")
+    crate::common::cli::run_json(args)
 }
 
 /// Two inputs, two outputs, a complex pair, a 2x2 Jordan block at -1, feedthrough; stable.

@@ -60,9 +60,7 @@ fn the_closed_form_solves_x_dot_equals_a_x_from_x0() {
 }
 
 fn json(args: &[&str]) -> Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
+    crate::common::cli::json_of(args)
 }
 
 #[test]

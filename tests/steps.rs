@@ -489,9 +489,7 @@ fn charpoly_factors_multiply_back() {
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = common::cli::run(args);
-    assert_eq!(code, 0, "{err}");
-    serde_json::from_str(&out).expect("json")
+    common::cli::json_of(args)
 }
 
 #[test]

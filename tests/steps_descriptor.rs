@@ -12,9 +12,7 @@ use exactlti::jordan::steps::jordan_steps;
 use exactlti::matrix::Matrix;
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = common::cli::run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).expect("json")
+    common::cli::json_of(args)
 }
 
 fn step_names(j: &serde_json::Value) -> Vec<String> {

@@ -563,9 +563,7 @@ fn tampered_real_jordan_steps_are_rejected() {
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = common::cli::run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).expect("json")
+    common::cli::json_of(args)
 }
 
 fn step_names(j: &serde_json::Value) -> Vec<String> {

@@ -223,9 +223,7 @@ fn orthogonalize_keeps_the_eigenvector() {
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = common::cli::run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).expect("json")
+    common::cli::json_of(args)
 }
 
 /// The command line: `jordan --steps --normalize paper` on the vehicle paper's model; bad

@@ -726,9 +726,7 @@ fn rosenbrock_and_ho_kalman_steps_on_planted_systems() {
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = common::cli::run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).expect("json")
+    common::cli::json_of(args)
 }
 
 #[test]

@@ -1,12 +1,12 @@
 //! Symbolic parameters (contract, second wave): the single-wheel yaw-plane model of the
 //! vehicle-dynamics paper (eq. 27) over QQ(cr, m, u).
 
+use crate::common::cli::run;
 use exactlti::field::ElemDisplay;
 use exactlti::field::Field;
 use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};
 use std::path::Path;
-use std::process::Command;
 
 const YAW: &str = "data/yaw-plane-single-wheel.json";
 
@@ -55,18 +55,6 @@ fn at_values_give_the_rational_system() {
     };
     let k = t.a_raw.field();
     assert_eq!(k.fmt_elem(t.a_raw.get(2, 2)), "-4000/m");
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 #[test]

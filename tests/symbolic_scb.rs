@@ -6,6 +6,7 @@
 //! paper's values equals the SCB computed over Q at those values), and properties (verified
 //! identities, every condition irreducible and nonvanishing at the paper's values).
 
+use crate::common::cli::run;
 use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Q, Rational};
 use exactlti::io::TypedAny;
@@ -16,7 +17,6 @@ use exactlti::structure::bifurcation::{BranchOutcome, Limits, bifurcations, solv
 use exactlti::structure::scb::{Scb, scb};
 use exactlti::system::StateSpace;
 use std::path::Path;
-use std::process::Command;
 
 const DC: &str = "data/dc-motor-lugre.json";
 const FRONT: &str = "data/scb/single-track-front.json";
@@ -322,24 +322,8 @@ fn zero_polynomial_factors_over_qp() {
     assert!(fs.iter().all(|(g, _)| g.deg() == 1 || g.deg() == 2));
 }
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactlti"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
 fn json(args: &[&str]) -> serde_json::Value {
-    let mut a = args.to_vec();
-    a.extend(["--format", "json"]);
-    let (code, out, err) = run(&a);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
+    crate::common::cli::run_json(args)
 }
 
 #[test]

@@ -167,7 +167,10 @@ class StateSpace(Operations, ControlOps, ResponseOps, SystemOps, Rendered):
         transfer matrix (Markov parameters checked exactly, ``verified``).
 
         ``method``: ``"kalman"`` (default), ``"rosenbrock"``, ``"ho-kalman"``, or
-        ``"jordan"`` (modal form, stages ``original -> after dropping modes -> minimal``).
+        ``"jordan"`` (modal form, stages ``original -> after dropping modes -> minimal``),
+        on every field through the library's one entry point (as ``minreal --method``):
+        over Q, Q(sqrt d) and Q(i) the modal form; over Q(p) the primary blocks over Q(p)
+        (a system, with its ``conditions``).
 
         >>> import exactlti
         >>> G = exactlti.ss([[-1, 0], [0, -2]], [[1], [0]], [[1, 1]], [[0]])
@@ -186,8 +189,6 @@ class StateSpace(Operations, ControlOps, ResponseOps, SystemOps, Rendered):
             raise ValueError(
                 "unknown method '%s' (%s)" % (method, ", ".join(_METHODS + ("era",)))
             )
-        if method == "jordan" and self._extension:
-            return _run(self, "minreal", "--method", "jordan", max_seconds=max_seconds)
         res = MinrealResult(self._core.minreal(method, max_seconds), self)
         if res._rendered is None:
             res._source = (self, "minreal", "--method", method)
@@ -321,8 +322,9 @@ class StateSpace(Operations, ControlOps, ResponseOps, SystemOps, Rendered):
         >>> c.agree
         True
         """
-        r = CheckResult(self._core.check(max_seconds))
-        r._source = (self, "check")
+        text, _verified, _agree, latex, html, _values = self._core.check(max_seconds)
+        r = CheckResult.of_report(json.loads(text))
+        r._rendered = {"latex": latex, "html": html}
         return r
 
     def freqresp(self, omega):
@@ -1349,11 +1351,35 @@ class SymbolicJordanResult(Rendered):
 
 
 class CheckResult(list, Rendered):
-    """Items ``{what, exact, float, float_truth, agree}``; ``agree`` is True when the
-    float path agrees with the exact one on every item."""
+    """Items ``{what, exact, float, float_truth, agree, detail}``, one per comparison of the
+    command line's ``check`` (``mcmillan_degree``, ``controllability_rank``,
+    ``observability_rank``, ``era_order``, ``jordan_structure``, ...; ``exact``, ``float``
+    and ``float_truth`` are ``None`` where a comparison has no single count, ``detail`` is
+    the comparison as the report gives it); ``agree`` is True when the float path agrees
+    with the exact one on every item. ``report``: the command's report."""
 
-    def __init__(self, items):
+    #: the report's name of a comparison -> the item's ``what`` (the McMillan degree is the
+    #: exact minimal order)
+    _NAMES = {"minreal_order": "mcmillan_degree"}
+
+    def __init__(self, items, report=None):
         super().__init__(items)
+        self.report = report
+
+    @classmethod
+    def of_report(cls, report):
+        """The items of ``check``'s report (its ``comparisons``)."""
+        items = []
+        for name, d in report.get("comparisons", {}).items():
+            items.append({
+                "what": cls._NAMES.get(name, name),
+                "exact": d.get("exact"),
+                "float": d.get("float"),
+                "float_truth": d.get("float_truth"),
+                "agree": bool(d.get("agree")),
+                "detail": d,
+            })
+        return cls(items, report)
 
     @property
     def agree(self):

@@ -312,18 +312,8 @@ impl System {
     ) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
         let out = run(py, max_seconds, move || {
-            visit!(s => FResult<Out>, [method: String], |f, t| {
-                if method == "jordan" {
-                    let t = rational(f, t, "the Jordan-form method")?;
-                    return minreal_jordan(t);
-                }
-                minreal_typed(t, method_of(&method)?)
-            }, sym |f, t| {
-                if method == "jordan" {
-                    return Err(symbolic::needs_numbers("the Jordan-form method", &f.ground.to_string()));
-                }
-                symbolic::minreal(t, method_of(&method)?)
-            })
+            visit!(s => FResult<Out>, [method: String], |f, t| minreal_typed(t, method_of(&method)?),
+                   sym |f, t| symbolic::minreal(t, method_of(&method)?))
         })?;
         out.to_py(py)
     }
@@ -348,23 +338,21 @@ impl System {
         .to_py(py)
     }
 
-    /// Roots of the characteristic polynomial of `A` with multiplicities.
+    /// Roots of the characteristic polynomial of `A` with multiplicities, over the field the
+    /// api decomposes `A` in ([`exactlti::api::poles::eigenvalues`], as `pzmap`); over
+    /// $\mathbb{Q}(p)$ the factors of $\det(sI - A)$.
     #[pyo3(signature = (max_seconds=None))]
     fn poles(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
         run(py, max_seconds, move || {
             visit!(s => FResult<Out>, [], |f, t| {
-                let t = rational(f, t, "exact poles")?;
-                let p = t.ss.a.charpoly()?;
-                if p.deg() == 0 {
-                    return Ok(Out::List(vec![]));
-                }
-                Ok(Out::List(
-                    exactlti::algebraic::roots(&p)?
-                        .iter()
-                        .map(|(n, m)| alg(n, *m))
-                        .collect(),
-                ))
+                let roots = exactlti::api::poles::eigenvalues(&t.ss.a).ok_or_else(|| {
+                    Fail::Unsupported(format!(
+                        "exact poles are not supported over {}",
+                        t.ss.a.field()
+                    ))
+                })??;
+                Ok(Out::List(roots.iter().map(|(n, _, m)| alg(n, *m)).collect()))
             }, sym |f, t| symbolic::poles(t))
         })?
         .to_py(py)
@@ -470,16 +458,21 @@ impl System {
         .to_py(py)
     }
 
-    /// The float path beside the exact path: McMillan degree, controllability and
-    /// observability ranks, and eigenvalues, each exact and in floating point.
+    /// The float path beside the exact path: the command line's `check` run by the api
+    /// ([`exactlti::api::execute_on`]) on this system, as [`System::command`] returns it
+    /// (over $\mathbb{Q}(p)$ `ValueError`: it needs numbers).
     #[pyo3(signature = (max_seconds=None))]
-    fn check(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
+    fn check(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<CommandOut> {
         let s = self.api.clone();
-        run(py, max_seconds, move || {
-            visit!(s => FResult<Out>, [], |f, t| check_typed(t),
-                   sym |f, t| Err(symbolic::needs_numbers("the float cross-check", &f.ground.to_string())))
-        })?
-        .to_py(py)
+        let r = run(py, max_seconds, move || {
+            visit!(s => FResult<()>, [], |f, t| Ok(()),
+                   sym |f, t| Err(symbolic::needs_numbers("the float cross-check", &f.ground.to_string())))?;
+            let file = s.path().display().to_string();
+            let cmd = exactlti::api::Command::parse_args(&["check", &file]).map_err(Fail::Input)?;
+            let out = exactlti::api::execute_on(&cmd, &s, &exactlti::api::RunContext::default())?;
+            command_out(&out)
+        })?;
+        r.into_py(py)
     }
 
     /// Runs one operation of the command line on this system: `args` as the command line

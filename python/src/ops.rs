@@ -35,11 +35,18 @@ pub(crate) fn typed_system<K: Field>(t: &Typed<K>) -> Out {
     ])
 }
 
+/// A minimal realization by the method `m` through the library's one entry point
+/// ([`realization::minimal`], as the command line's `minreal --method`): by the Jordan-form
+/// method over a field with certified eigenvalues the modal form ([`modal_out`]), else the
+/// system over the field.
 pub(crate) fn minreal_typed<K: realization::SystemField>(
     t: &Typed<K>,
     m: MinrealMethod,
 ) -> FResult<Out> {
     let r = realization::minimal(&t.ss, m)?;
+    if let Some(realization::JordanMethod::Modal(jm)) = &r.jordan {
+        return Ok(modal_out(jm, &r));
+    }
     let sys = system_out(Typed {
         descriptor: None,
         a_raw: r.system.a.clone(),
@@ -124,8 +131,7 @@ pub(crate) fn tf_typed<K: Field>(t: &Typed<K>, domain: Domain) -> FResult<Out> {
 pub(crate) fn tf_parts<K: Field>(s: &StateSpace<K>, domain: Domain) -> FResult<(Items, Matrix<K>)> {
     let var = domain.var();
     let g = s.transfer_matrix()?;
-    let min = realization::minimal_kalman(s)?;
-    let verified = min.verified && g.matches_markov(s);
+    let (min, verified) = exactlti::api::transfer::minimal_of_transfer(s, &g)?;
     let entries = Out::List(
         g.entries
             .iter()
@@ -429,107 +435,12 @@ pub(crate) fn with_finite_part(kv: &mut Items, blocks: &[usize], verified: bool,
     ));
 }
 
-pub(crate) fn truth(t: exactlti::float::Truth) -> Out {
-    Out::Str(format!("{t:?}"))
-}
-
-pub(crate) fn check_typed<K: Field>(t: &Typed<K>) -> FResult<Out> {
-    use exactlti::float::{self, Tol};
-    let s = &t.ss;
-    let [a, b, c, d] = [&s.a, &s.b, &s.c, &s.d].map(to_dmatrix);
-    let (a, b, c, d) = (a?, b?, c?, d?);
-    let tol = Tol::default();
-    let item = |name: &str, exact: Out, fl: Out, tr: Out, agree: bool| {
-        Out::Dict(vec![
-            ("what", Out::Str(name.to_string())),
-            ("exact", exact),
-            ("float", fl),
-            ("float_truth", tr),
-            ("agree", Out::Bool(agree)),
-        ])
-    };
-    let mut items = vec![];
-    let exact_min = realization::minimal_kalman(s)?;
-    let fm = float::minreal(&a, &b, &c, &d, &tol)?;
-    items.push(item(
-        "mcmillan_degree",
-        usize_out(exact_min.order),
-        usize_out(fm.order),
-        truth(fm.truth),
-        exact_min.order == fm.order,
-    ));
-    let rc = realization::controllability_matrix(&s.a, &s.b).rank();
-    let frc = float::controllability_rank(&a, &b, &tol)?;
-    items.push(item(
-        "controllability_rank",
-        usize_out(rc),
-        usize_out(frc.rank),
-        truth(frc.truth),
-        rc == frc.rank,
-    ));
-    let ro = realization::observability_matrix(&s.a, &s.c).rank();
-    let fro = float::observability_rank(&a, &c, &tol)?;
-    items.push(item(
-        "observability_rank",
-        usize_out(ro),
-        usize_out(fro.rank),
-        truth(fro.truth),
-        ro == fro.rank,
-    ));
-    // eigenvalues: the float ones matched to the exact ones (greedy nearest)
-    let fe = float::eigenvalues(&a)?;
-    let exact_ev: Option<Vec<(f64, f64)>> = exactlti::matrix::to_rational_matrix(&s.a)
-        .map(|aq| -> FResult<Vec<(f64, f64)>> {
-            let p = aq.charpoly()?;
-            let mut v = vec![];
-            if p.deg() > 0 {
-                for (n, m) in exactlti::algebraic::roots(&p)? {
-                    for _ in 0..m {
-                        v.push(n.approx());
-                    }
-                }
-            }
-            Ok(v)
-        })
-        .transpose()?;
-    if let Some(ev) = exact_ev {
-        let mut used = vec![false; fe.len()];
-        let mut worst = 0.0f64;
-        for (re, im) in &ev {
-            let mut best = (f64::INFINITY, usize::MAX);
-            for (j, z) in fe.iter().enumerate() {
-                let dist = ((z.re - re).powi(2) + (z.im - im).powi(2)).sqrt();
-                if !used[j] && dist < best.0 {
-                    best = (dist, j);
-                }
-            }
-            if best.1 != usize::MAX {
-                used[best.1] = true;
-                worst = worst.max(best.0);
-            }
-        }
-        items.push(Out::Dict(vec![
-            ("what", Out::Str("max_eigenvalue_error".into())),
-            ("exact", Out::Float(0.0)),
-            ("float", Out::Float(worst)),
-            ("float_truth", Out::None),
-            ("agree", Out::Bool(worst <= 1e-6)),
-        ]));
-    }
-    Ok(Out::List(items))
-}
-
+/// The exact method `--method` names `name`, parsed by the api ([`exactlti::api::MethodArg`]).
 pub(crate) fn method_of(name: &str) -> FResult<MinrealMethod> {
-    Ok(match name {
-        "kalman" => MinrealMethod::Kalman,
-        "rosenbrock" => MinrealMethod::Rosenbrock,
-        "ho-kalman" | "ho_kalman" | "hokalman" => MinrealMethod::HoKalman,
-        other => {
-            return Err(Fail::Input(format!(
-                "unknown method '{other}' (kalman, rosenbrock, ho-kalman, jordan)"
-            )));
-        }
-    })
+    exactlti::api::MethodArg::named(name)
+        .map_err(Fail::Input)?
+        .exact()
+        .ok_or_else(|| Fail::Input(format!("method '{name}' is the float path: use era()")))
 }
 
 /// The mechanical normal form as output data (any field).
@@ -556,23 +467,27 @@ pub(crate) fn mnf_out<K: Field>(
     kv
 }
 
-/// `minreal(method="jordan")` over Q: the modal form with its stages.
-pub(crate) fn minreal_jordan(t: &Typed<exactlti::field::Q>) -> FResult<Out> {
-    let r = realization::minimal_jordan(&t.ss)?;
-    Ok(Out::Dict(vec![
+/// `minreal(method="jordan")` over a field with certified eigenvalues: the modal form
+/// `jm` with its stages and values; `r` the library's result (its report and verification
+/// are the command line's).
+fn modal_out<F: Field>(
+    jm: &realization::JordanMinimal<F>,
+    r: &realization::MinimalRealization<F>,
+) -> Out {
+    Out::Dict(vec![
         ("system", Out::None),
-        ("order", usize_out(r.mcmillan_degree)),
-        ("original_order", usize_out(r.stages[0])),
+        ("order", usize_out(jm.mcmillan_degree)),
+        ("original_order", usize_out(r.original_order)),
         (
             "stages",
-            Out::List(r.stages.iter().map(|&x| usize_out(x)).collect()),
+            Out::List(jm.stages.iter().map(|&x| usize_out(x)).collect()),
         ),
-        ("method", Out::Str("jordan".into())),
+        ("method", Out::Str(r.method.name().to_string())),
         ("T", Out::None),
         ("verified", Out::Bool(r.verified)),
-        ("values", modal_values(&r)),
+        ("values", modal_values(jm)),
         ("report", report(&r.report())),
-    ]))
+    ])
 }
 
 /// The values of the Jordan-method realization's `A`, `B`, `C`, `D`, block by block as its
@@ -580,7 +495,7 @@ pub(crate) fn minreal_jordan(t: &Typed<exactlti::field::Q>) -> FResult<Out> {
 /// $A_r = [[\mathrm{Re}, \mathrm{Im}], [-\mathrm{Im}, \mathrm{Re}]]$ of $J$,
 /// $B_r = [\mathrm{Re}; -\mathrm{Im}]$ of $WB$, $C_r = [\mathrm{Re}, \mathrm{Im}]$ of $2CV$
 /// (the complex form when the system is not real).
-fn modal_values<F: EigenField>(r: &realization::JordanMinimal<F>) -> Out {
+fn modal_values<F: Field>(r: &realization::JordanMinimal<F>) -> Out {
     use realization::{ModalBlock, RealModalBlock};
     let n = r.order();
     let (m, p) = (r.d.ncols(), r.d.nrows());

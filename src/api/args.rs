@@ -14,6 +14,41 @@ pub enum MethodArg {
     Era,
 }
 
+impl MethodArg {
+    /// The method `--method` names `name` (`kalman`, `rosenbrock`, `ho-kalman`, `jordan`,
+    /// `era`), as the command line parses it; the message lists the names otherwise.
+    ///
+    /// # Errors
+    /// An unknown name.
+    ///
+    /// ```
+    /// use exactlti::api::MethodArg;
+    /// assert_eq!(MethodArg::named("ho-kalman"), Ok(MethodArg::HoKalman));
+    /// assert!(MethodArg::named("magic").unwrap_err().contains("kalman, rosenbrock"));
+    /// ```
+    pub fn named(name: &str) -> Result<MethodArg, String> {
+        <MethodArg as ValueEnum>::from_str(name, false).map_err(|_| {
+            let names: Vec<String> = MethodArg::value_variants()
+                .iter()
+                .filter_map(|v| v.to_possible_value().map(|p| p.get_name().to_string()))
+                .collect();
+            format!("unknown method '{name}' ({})", names.join(", "))
+        })
+    }
+
+    /// The exact minimal-realization method (`None` for `era`, the float path).
+    pub fn exact(self) -> Option<crate::realization::MinrealMethod> {
+        use crate::realization::MinrealMethod as M;
+        match self {
+            MethodArg::Kalman => Some(M::Kalman),
+            MethodArg::Rosenbrock => Some(M::Rosenbrock),
+            MethodArg::HoKalman => Some(M::HoKalman),
+            MethodArg::Jordan => Some(M::Jordan),
+            MethodArg::Era => None,
+        }
+    }
+}
+
 /// Operations of `linalg`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum LinalgOp {

@@ -11,7 +11,7 @@ use super::{Command, Failure, MethodArg, Outcome};
 use crate::field::Field;
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{SystemFile, TypedSystem, as_rational};
-use crate::realization::{self, MinrealMethod, SystemField};
+use crate::realization::{self, SystemField};
 use crate::report::{Report, Value, sections};
 use std::path::Path;
 
@@ -411,16 +411,10 @@ fn minreal<K: SystemField>(
     hankel: Option<usize>,
     path: &Path,
 ) -> Result<Outcome, Failure> {
-    let m = match method {
-        MethodArg::Era => {
-            let r = super::float_cmds::era(t, path, hankel)?;
-            let agree = !matches!(r.get("agree_with_exact"), Some(Value::Bool(false)));
-            return Ok(Outcome::float_vs_exact(r, agree));
-        }
-        MethodArg::Kalman => MinrealMethod::Kalman,
-        MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
-        MethodArg::HoKalman => MinrealMethod::HoKalman,
-        MethodArg::Jordan => MinrealMethod::Jordan,
+    let Some(m) = method.exact() else {
+        let r = super::float_cmds::era(t, path, hankel)?;
+        let agree = !matches!(r.get("agree_with_exact"), Some(Value::Bool(false)));
+        return Ok(Outcome::float_vs_exact(r, agree));
     };
     let r = realization::minimal(&t.ss, m).map_err(|e| with_path(path, e))?;
     Ok(Outcome::new(r.report(), r.verified))

@@ -31,6 +31,7 @@ pub mod jordan_values;
 mod linalg;
 mod pencil_cmds;
 pub mod plots;
+pub mod poles;
 mod response;
 pub mod runner;
 pub mod steps;
@@ -41,6 +42,7 @@ mod symbolic;
 mod symbolic_jordan;
 mod system;
 mod toolbox;
+pub mod transfer;
 
 pub use args::{LinalgOp, MethodArg, PolyCmd, TimeOpts};
 pub use bifurcations::Of;

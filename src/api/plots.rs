@@ -231,22 +231,10 @@ type Root = (String, (f64, f64), usize);
 /// over the field, its roots (those of the polynomial, not of its conjugate); real ones
 /// ascending, then complex ones by real and imaginary part.
 fn exact_roots_over<F: EigenField>(p: &crate::poly::Poly<F>) -> crate::Result<Vec<Root>> {
-    if p.deg() == 0 {
-        return Ok(vec![]);
-    }
-    let mut out: Vec<Root> = vec![];
-    for (_, e, _, roots) in F::eigen_factors(&p.monic())? {
-        for (z, approx) in roots {
-            out.push((z.value_string(), approx, e));
-        }
-    }
-    let key = |r: &Root| (r.1.1 != 0.0, r.1.0, r.1.1);
-    out.sort_by(|x, y| {
-        key(x)
-            .partial_cmp(&key(y))
-            .unwrap_or(std::cmp::Ordering::Equal)
-    });
-    Ok(out)
+    Ok(super::poles::roots_over(p)?
+        .into_iter()
+        .map(|(z, approx, e)| (z.value_string(), approx, e))
+        .collect())
 }
 
 /// Poles and invariant zeros of a system over an [`EigenField`], exact.

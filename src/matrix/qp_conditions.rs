@@ -23,68 +23,21 @@ use crate::error::{Error, Result};
 use crate::field::{Q, Rational};
 use crate::mpoly::{MPoly, factor};
 use crate::ratfunc::RatFuncField;
+use crate::ratfunc::kernels::budget::det_budget;
 use crate::rng::SplitMix64;
 use num_traits::Zero;
 
-/// The most terms a minor may have (by [`minor_terms_bound`]) for [`Matrix::rank_drop`] to
-/// expand it; beyond, `Limit` (a Vandermonde minor of diag(p0..p9) has 10! terms).
-const MAX_MINOR_TERMS: u128 = 2_000_000;
-
-/// `m` itself when the numerator of $\det m$ has at most [`MAX_MINOR_TERMS`] terms by
-/// [`minor_terms_bound`].
+/// `m` itself when the numerator of $\det m$ is within the determinant kernel's size budget
+/// ([`crate::ratfunc::kernels::budget::det_budget`]: `Matrix::det` over $\mathbb{Q}(p)$
+/// answers `Limit` beyond it): a check before any work, for a caller that expands smaller
+/// minors first.
 ///
 /// # Errors
 /// `Limit` beyond (the caller falls back to its computation's log of conditions).
 pub fn expandable(m: &Matrix<RatFuncField>) -> Result<&Matrix<RatFuncField>> {
-    let bound = minor_terms_bound(m, m.field().nvars());
-    if bound > MAX_MINOR_TERMS {
-        return Err(Error::Limit(format!(
-            "a {} x {} minor may have up to {bound} terms (more than {MAX_MINOR_TERMS})",
-            m.nrows(),
-            m.ncols()
-        )));
-    }
+    let nv = m.field().nvars();
+    det_budget(nv, m.nrows(), m.ncols(), m.as_slice())?;
     Ok(m)
-}
-
-/// A bound on the number of terms of the numerator of $\det M$ before it is computed:
-/// $\prod_v (d_v + 1)$ and $\binom{d + k}{k}$, with $d_v = \sum_i \max_j (\deg_v
-/// \mathrm{num}_{ij} + \deg_v \mathrm{den}_{ij})$ and $d$ the same sum of total degrees
-/// ($k$ parameters): a degree bound of the cleared determinant, row by row.
-fn minor_terms_bound(m: &Matrix<RatFuncField>, nv: usize) -> u128 {
-    let mut dv = vec![0u32; nv];
-    let mut dtot = 0u32;
-    for i in 0..m.nrows() {
-        let mut row = vec![0u32; nv];
-        let mut rt = 0u32;
-        for j in 0..m.ncols() {
-            let x = m.get(i, j);
-            let (a, b) = (x.num(), x.den());
-            for (v, r) in row.iter_mut().enumerate() {
-                *r = (*r).max(a.deg(v) + b.deg(v));
-            }
-            rt = rt.max(a.total_degree() + b.total_degree());
-        }
-        for (d, r) in dv.iter_mut().zip(row) {
-            *d += r;
-        }
-        dtot += rt;
-    }
-    let dense = dv
-        .iter()
-        .fold(1u128, |acc, &d| acc.saturating_mul(u128::from(d) + 1));
-    // C(dtot + nv, nv), exact step by step (C(dtot + i, i) = C(dtot + i - 1, i - 1) (dtot + i) / i)
-    let mut simplex = 1u128;
-    for i in 1..=nv as u128 {
-        simplex = match simplex.checked_mul(u128::from(dtot) + i) {
-            Some(x) => x / i,
-            None => u128::MAX,
-        };
-        if simplex == u128::MAX {
-            break;
-        }
-    }
-    dense.min(simplex)
 }
 
 /// Half-width of the random integer coordinates of the test points.
@@ -218,7 +171,7 @@ impl Matrix<RatFuncField> {
     /// candidates of one nonzero `r x r` minor, tested on their zero sets.
     ///
     /// # Errors
-    /// Those of the determinant kernel and of factoring (`Limit`).
+    /// Those of the determinant kernel (`Limit` beyond its size budget) and of factoring.
     pub fn rank_drop(&self, r: usize) -> Result<Drop> {
         if r == 0 {
             return Ok(Drop::default());
@@ -235,7 +188,7 @@ impl Matrix<RatFuncField> {
                 "rank {r} not met at 16 random points (a rank drop everywhere?)"
             )));
         };
-        let minor = expandable(&self.select_rows(&rows).select_cols(&cols))?.det()?;
+        let minor = self.select_rows(&rows).select_cols(&cols).det()?;
         let exact = self.nrows() == r && self.ncols() == r;
         drop_factors(self.field(), minor.num(), r, exact, &|p| {
             eval_at(self, p).map(|m| m.rank())

@@ -26,6 +26,8 @@ pub(crate) mod kernels;
 
 pub use condition::{Condition, Part, Reason, Structure};
 
+/// The size budget of the determinant kernel (`Matrix::det` over $\mathbb{Q}(p)$ answers `Limit` beyond it).
+pub use kernels::budget::{MAX_DET_TERMS, det_budget, det_terms_bound};
 /// $\det B$ of a matrix over $\mathbb{Z}\lbrack p\rbrack$ by evaluation/interpolation (the kernel behind every Q(p) determinant).
 pub use kernels::{charpoly_zp, det_zp};
 

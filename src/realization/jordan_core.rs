@@ -19,7 +19,7 @@
 //! the result is minimal.
 
 use super::controllability::mcmillan_degree;
-use super::minimal::minimal_kalman;
+use super::kalman::kalman_decomposition;
 use crate::algebraic::{Ext, ExtElem};
 use crate::error::Result;
 use crate::field::{Field, Rational};
@@ -138,7 +138,7 @@ pub(super) fn compact_component<F: Field + 'static>(
     let nilp = jordan_block_matrix(e, &e.zero(), &sizes);
     let trimmed =
         StateSpace::new_strictly_proper(nilp, bk.select_rows(&keep), ck.select_cols(&keep))?;
-    let min = minimal_kalman(&trimmed)?.system;
+    let min = kalman_decomposition(&trimmed)?.minimal_part();
     let r = min.nstates();
     if r == 0 {
         return Ok(None);

@@ -34,102 +34,13 @@
 //! realization's own Markov parameters are compared too ([`JordanMinimal::real_to_base`]).
 
 use super::jordan_core::real_pair_block;
+use super::jordan_result::{JordanMinimal, ModalBlock, RealModalBlock};
 use crate::algebraic::{Ext, ExtElem, NumberField};
 use crate::error::Result;
-use crate::field::{Field, Q};
-use crate::jordan::pair_field::PairField;
+use crate::field::Q;
 use crate::jordan::{EigenField, JordanForm};
 use crate::matrix::Matrix;
 use crate::system::StateSpace;
-
-/// One eigenvalue's block of the complex modal form, exact in $E$ at that eigenvalue.
-#[derive(Clone, Debug)]
-pub struct ModalBlock<F: Field = Q> {
-    /// Index into the Jordan form's eigenvalues ([`JordanMinimal::jordan`]).
-    pub eigenvalue: usize,
-    /// $E = F(\theta)$ marked at the eigenvalue ([`crate::jordan::EigenField::root_field`]).
-    pub field: Ext<F>,
-    pub a: Matrix<Ext<F>>,
-    pub b: Matrix<Ext<F>>,
-    pub c: Matrix<Ext<F>>,
-}
-
-/// One block of the real modal form.
-#[derive(Clone, Debug)]
-pub enum RealModalBlock<F: Field = Q> {
-    /// A real eigenvalue: its modal block, real entries exact in its field.
-    Root(ModalBlock<F>),
-    /// A complex pair $a \pm bi$ in its real field ([`PairField`]): blocks $[[a, b], [-b, a]]$
-    /// with $I_2$ coupling, $x = [\mathrm{Re}\, z; -\mathrm{Im}\, z]$ interleaved,
-    /// $B_r = [\mathrm{Re}\, WB; -\mathrm{Im}\, WB]$, $C_r = [2\,\mathrm{Re}\, CV,
-    /// 2\,\mathrm{Im}\, CV]$.
-    Pair {
-        eigenvalue: usize,
-        pair: PairField,
-        a: Matrix<NumberField>,
-        b: Matrix<NumberField>,
-        c: Matrix<NumberField>,
-    },
-    /// A pair $a_0 \pm s\sqrt f$ of a rational quadratic factor over a quadratic field: the
-    /// complex data of the upper root, whose entries $u + w\sqrt f$ have the exact real and
-    /// imaginary parts $u$ and $w\sqrt{-f}$.
-    Radical(ModalBlock<F>),
-    /// A complex pair whose real field is large: the complex modal data of the upper root,
-    /// the real block read off as the real and imaginary parts of its entries (compact form).
-    Compact(ModalBlock<F>),
-}
-
-impl<F: Field> RealModalBlock<F> {
-    /// Order of the real block.
-    pub fn order(&self) -> usize {
-        match self {
-            RealModalBlock::Root(b) => b.a.nrows(),
-            RealModalBlock::Pair { a, .. } => a.nrows(),
-            RealModalBlock::Compact(b) | RealModalBlock::Radical(b) => 2 * b.a.nrows(),
-        }
-    }
-    /// Index of the eigenvalue (the upper root of a pair).
-    pub fn eigenvalue(&self) -> usize {
-        match self {
-            RealModalBlock::Pair { eigenvalue, .. } => *eigenvalue,
-            RealModalBlock::Root(b) | RealModalBlock::Compact(b) | RealModalBlock::Radical(b) => {
-                b.eigenvalue
-            }
-        }
-    }
-    /// Whether the block is a complex pair.
-    pub fn is_pair(&self) -> bool {
-        !matches!(self, RealModalBlock::Root(_))
-    }
-}
-
-impl RealModalBlock<Q> {
-    /// The block's field and $(A, B, C)$ when it is written in one real number field (a
-    /// real root, or an expanded pair).
-    pub fn exact_entries(&self) -> Option<(&NumberField, [&Matrix<NumberField>; 3])> {
-        match self {
-            RealModalBlock::Root(b) => Some((&b.field, [&b.a, &b.b, &b.c])),
-            RealModalBlock::Pair { pair, a, b, c, .. } => Some((&pair.field, [a, b, c])),
-            _ => None,
-        }
-    }
-}
-
-/// The Jordan-method minimal realization.
-#[derive(Clone, Debug)]
-pub struct JordanMinimal<F: Field = Q> {
-    /// Orders: original, after dropping non-contributing modes, after compaction.
-    pub stages: [usize; 3],
-    /// The Jordan form of $A$ (the eigenvalues the blocks refer to).
-    pub jordan: JordanForm<F>,
-    /// The complex modal form: one block per retained eigenvalue.
-    pub blocks: Vec<ModalBlock<F>>,
-    /// Over a real field: the real modal form (per retained eigenvalue or pair).
-    pub real: Option<Vec<RealModalBlock<F>>>,
-    pub d: Matrix<F>,
-    pub mcmillan_degree: usize,
-    pub verified: bool,
-}
 
 /// Minimal realization by the Jordan-form method, complex pairs expanded into their real
 /// field only when it is small (degree at most [`crate::jordan::real::EXPAND_MAX_DEGREE`]),
@@ -223,13 +134,6 @@ fn real_pair<F: EigenField>(
         }
         _ if radical => RealModalBlock::Radical(blk),
         _ => RealModalBlock::Compact(blk),
-    }
-}
-
-impl<F: Field> JordanMinimal<F> {
-    /// Order of the realization.
-    pub fn order(&self) -> usize {
-        self.stages[2]
     }
 }
 

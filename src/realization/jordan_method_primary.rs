@@ -30,6 +30,7 @@
 
 use super::controllability::mcmillan_degree;
 use super::jordan_core::{Compact, compact_component, trace_shifted};
+use super::jordan_result::{PrimaryBlock, PrimaryJordanMinimal};
 use crate::algebraic::{Ext, ExtElem};
 use crate::error::Result;
 use crate::field::Field;
@@ -38,46 +39,6 @@ use crate::matrix::Matrix;
 use crate::poly::{Poly, newton_power_sums};
 use crate::ratfunc::RatFuncField;
 use crate::system::StateSpace;
-
-/// One retained component in the realization over $F$.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PrimaryBlock<F: Field> {
-    /// Index into [`PrimaryJordanMinimal::components`].
-    pub component: usize,
-    /// Jordan block sizes of each root after the compaction, largest first.
-    pub blocks: Vec<usize>,
-    /// First state of the block in [`PrimaryJordanMinimal::system`] and its number of states
-    /// (sum of `blocks` times the degree of the factor).
-    pub offset: usize,
-    pub order: usize,
-    /// $(J, B, C)$ over $E$ (marked as the component's field) before the regular
-    /// representation ($0 \times 0$ for a simple factor's restriction block).
-    pub modal: [Matrix<Ext<F>>; 3],
-}
-
-impl<F: Field> PrimaryBlock<F> {
-    /// The block is a simple factor's restriction $(A_g, P B, C u)$ (module docs), not a
-    /// regular representation.
-    pub fn is_restriction(&self) -> bool {
-        self.modal[0].nrows() == 0
-    }
-}
-
-/// The Jordan-method minimal realization over $F$ (module docs).
-#[derive(Clone, Debug)]
-pub struct PrimaryJordanMinimal<F: Field> {
-    /// Orders: original, after dropping non-contributing modes, after compaction.
-    pub stages: [usize; 3],
-    /// One component per irreducible factor of $\chi_A$ over $F$.
-    pub components: Vec<Component<F>>,
-    /// The retained components, in the order of their states.
-    pub blocks: Vec<PrimaryBlock<F>>,
-    /// The minimal realization $(A_F, B_F, C_F, D)$.
-    pub system: StateSpace<F>,
-    pub mcmillan_degree: usize,
-    /// The checks of the module docs held exactly.
-    pub verified: bool,
-}
 
 /// The coefficients of `x` in $1, t, \dots, t^{d-1}$.
 fn coefficients<F: Field>(e: &Ext<F>, x: &ExtElem<F::Elem>) -> Vec<F::Elem> {

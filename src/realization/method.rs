@@ -10,43 +10,22 @@
 //! | $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$ | the modal form ([`super::minimal_jordan`]) | its real form when every entry lies in the field, else the primary blocks over the field ([`super::minimal_jordan_primary`]) |
 //! | $\mathbb{Q}(p_1, \dots, p_k)$ | the primary blocks over $\mathbb{Q}(p)$ ([`super::minimal_jordan_qp`]) | that realization |
 
-use super::jordan_method::{JordanMinimal, minimal_jordan};
-use super::jordan_method_primary::{
-    PrimaryJordanMinimal, minimal_jordan_primary, minimal_jordan_qp,
-};
+use super::jordan_method::minimal_jordan;
+use super::jordan_method_primary::{minimal_jordan_primary, minimal_jordan_qp};
+use super::jordan_result::JordanMethod;
 use super::minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
 use super::modal::{ModalTable, modal_table_over};
 use crate::error::{Error, Result};
-use crate::field::{Field, Q, QuadraticField};
-use crate::jordan::EigenField;
+use crate::field::{Q, QuadraticField};
+use crate::jordan::{EigenField, JordanField};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
 use crate::system::StateSpace;
 
-/// The Jordan-form method's result over a field, as the field decomposes $A$.
-#[derive(Clone, Debug)]
-pub enum JordanMethod<K: Field> {
-    /// Over a field with certified eigenvalues: one block per eigenvalue (and the real form).
-    Modal(Box<JordanMinimal<K>>),
-    /// Over $\mathbb{Q}(p)$: eigenvalues in the field as Jordan blocks, the roots of an
-    /// irreducible factor of degree $\ge 2$ as one primary block.
-    Primary(Box<PrimaryJordanMinimal<K>>),
-}
-
-impl<K: Field> JordanMethod<K> {
-    /// The method's own exact checks held.
-    pub fn verified(&self) -> bool {
-        match self {
-            JordanMethod::Modal(m) => m.verified,
-            JordanMethod::Primary(p) => p.verified,
-        }
-    }
-}
-
 /// A field a system's matrices can lie in ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
 /// $\mathbb{Q}(i)$, $\mathbb{Q}(p_1, \dots, p_k)$): every operation on systems is generic over
 /// it; what differs between the fields is a method here, never a second entry point.
-pub trait SystemField: crate::jordan::JordanField {
+pub trait SystemField: JordanField {
     /// The Jordan-form minimal realization over this field, with the realization as a
     /// system over the field (its Markov parameters part of the method's verification).
     ///
@@ -76,22 +55,19 @@ fn modal<F: EigenField>(sys: &StateSpace<F>) -> Result<(JordanMethod<F>, StateSp
     Ok((JordanMethod::Modal(Box::new(jm)), system))
 }
 
-impl SystemField for Q {
-    fn jordan_method(sys: &StateSpace<Q>) -> Result<(JordanMethod<Q>, StateSpace<Q>)> {
-        modal(sys)
-    }
-    fn modal_table(a: &Matrix<Q>) -> Result<ModalTable> {
-        modal_table_over(a)
-    }
-}
+/// A field whose Jordan-method result is the modal form: certified eigenvalues
+/// ([`EigenField`]). Every such field is a [`SystemField`] by one implementation (the modal
+/// form, the modal table); a new field with certified eigenvalues needs only this marker.
+pub trait ModalField: EigenField + JordanField {}
 
-impl SystemField for QuadraticField {
-    fn jordan_method(
-        sys: &StateSpace<QuadraticField>,
-    ) -> Result<(JordanMethod<QuadraticField>, StateSpace<QuadraticField>)> {
+impl ModalField for Q {}
+impl ModalField for QuadraticField {}
+
+impl<F: ModalField> SystemField for F {
+    fn jordan_method(sys: &StateSpace<F>) -> Result<(JordanMethod<F>, StateSpace<F>)> {
         modal(sys)
     }
-    fn modal_table(a: &Matrix<QuadraticField>) -> Result<ModalTable> {
+    fn modal_table(a: &Matrix<F>) -> Result<ModalTable> {
         modal_table_over(a)
     }
 }

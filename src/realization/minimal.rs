@@ -1,5 +1,7 @@
 //! Minimal realizations: the result type and its exact verification (the algorithms are in
-//! `kalman`/`method`, `rosenbrock`, `ho_kalman`, `jordan_method`).
+//! `kalman`/`method`, `rosenbrock`, `ho_kalman`, `jordan_method`). The result imports the
+//! Jordan method's result types ([`super::jordan_result`]) only, never an algorithm's file, so
+//! every method can build it without an import cycle.
 
 use super::controllability::{is_controllable, is_observable};
 use super::kalman::kalman_decomposition;
@@ -50,7 +52,7 @@ pub struct MinimalRealization<K: Field> {
     /// to the original's, all checked exactly.
     pub verified: bool,
     /// The Jordan-form method's full result (modal or primary blocks), for that method.
-    pub jordan: Option<super::method::JordanMethod<K>>,
+    pub jordan: Option<super::jordan_result::JordanMethod<K>>,
 }
 
 impl<K: Field> MinimalRealization<K> {

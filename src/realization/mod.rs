@@ -37,6 +37,7 @@ mod ho_kalman;
 mod jordan_core;
 mod jordan_method;
 mod jordan_method_primary;
+mod jordan_result;
 mod kalman;
 mod method;
 mod minimal;
@@ -66,15 +67,13 @@ pub use descriptor_minimal::{
 pub use from_transfer::{TransferRealization, realize_state_space, realize_transfer};
 pub use gramian::{GramType, Gramian, Gramians, gramian, gramians, is_hurwitz, lyapunov};
 pub use ho_kalman::minimal_ho_kalman_recorded;
-pub use jordan_method::{
-    JordanMinimal, ModalBlock, RealModalBlock, minimal_jordan, minimal_jordan_rational,
-    minimal_jordan_with,
-};
-pub use jordan_method_primary::{
-    PrimaryBlock, PrimaryJordanMinimal, minimal_jordan_primary, minimal_jordan_qp,
+pub use jordan_method::{minimal_jordan, minimal_jordan_rational, minimal_jordan_with};
+pub use jordan_method_primary::{minimal_jordan_primary, minimal_jordan_qp};
+pub use jordan_result::{
+    JordanMethod, JordanMinimal, ModalBlock, PrimaryBlock, PrimaryJordanMinimal, RealModalBlock,
 };
 pub use kalman::{KalmanDecomposition, kalman_decomposition};
-pub use method::{JordanMethod, SystemField, minimal};
+pub use method::{ModalField, SystemField, minimal};
 pub use minimal::{MinimalRealization, MinrealMethod, minimal_kalman};
 pub use modal::{ExactFigure, ModalTable, Mode, modal_table, modal_table_over};
 pub use rosenbrock::{controllable_part, controllable_staircase, minimal_rosenbrock_recorded};

@@ -76,7 +76,13 @@ pub fn temp_file(tag: &str, name: &str, text: &str) -> std::path::PathBuf {
 pub fn run_json(args: &[&str]) -> serde_json::Value {
     let mut a = args.to_vec();
     a.extend(["--format", "json"]);
-    let (code, out, err) = run(&a);
+    json_of(&a)
+}
+
+/// Runs the CLI with `args` as given (they name `--format json`), asserts exit 0, and parses
+/// the output (the message names the arguments, stderr, and the text that is not JSON).
+pub fn json_of(args: &[&str]) -> serde_json::Value {
+    let (code, out, err) = run(args);
     assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("invalid JSON for {args:?}: {e}\n{out}"))
 }

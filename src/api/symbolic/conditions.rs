@@ -139,7 +139,7 @@ pub(super) fn mcmillan(
         return Ok(vec![]);
     };
     let (os, ks) = (o.select_rows(&rows), kk.select_cols(&cols));
-    let minor = k.mul(&expandable(&os)?.det()?, &expandable(&ks)?.det()?);
+    let minor = k.mul(&os.det()?, &ks.det()?);
     let exact = o.nrows() == r && kk.ncols() == r;
     let found = drop_factors(&k, minor.num(), r, exact, &|p| hankel_rank(input, n, p))?;
     Ok(found.all().into_iter().map(|f| (f, why)).collect())

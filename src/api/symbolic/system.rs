@@ -9,14 +9,14 @@
 use super::conditions::{self, Item};
 use crate::api::common::exact_only;
 use crate::api::common::with_path;
-use crate::api::{Command, Failure, MethodArg, Outcome};
+use crate::api::{Command, Failure, Outcome};
 use crate::field::ElemDisplay;
 use crate::field::Field;
 use crate::io::{SystemFile, TypedSystem};
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;
 use crate::ratfunc::{Part, Reason, Structure};
-use crate::realization::{self, MinrealMethod};
+use crate::realization;
 use crate::report::sections::conditions::with_conditions;
 use crate::report::{Report, Value, sections, str_list};
 use crate::structure::factor_qp::{factor_over_qp, hurwitz_over_qp};
@@ -63,12 +63,8 @@ pub(in crate::api) fn run(
             if *descriptor {
                 return Ok(None);
             }
-            let m = match method {
-                MethodArg::Kalman => MinrealMethod::Kalman,
-                MethodArg::Rosenbrock => MinrealMethod::Rosenbrock,
-                MethodArg::HoKalman => MinrealMethod::HoKalman,
-                MethodArg::Jordan => MinrealMethod::Jordan,
-                MethodArg::Era => return Ok(None),
+            let Some(m) = method.exact() else {
+                return Ok(None);
             };
             let r = realization::minimal(s, m).map_err(e)?;
             items = honest(conditions::mcmillan(&r.system, s))
@@ -187,7 +183,7 @@ fn scb_items(
     ] {
         v.extend(conditions::denominators(p, m, true));
         if m.is_square() && m.nrows() > 0 {
-            let d = crate::matrix::qp_conditions::expandable(m)?.det()?;
+            let d = m.det()?;
             v.push((
                 d.num().clone(),
                 Reason::StructureChange(Structure::SingularBasis),
@@ -333,9 +329,8 @@ fn tf(
     s: &StateSpace<RatFuncField>,
     g: &crate::system::transfer::TransferMatrix<RatFuncField>,
 ) -> crate::Result<(Report, bool, StateSpace<RatFuncField>)> {
-    let min = realization::minimal(s, MinrealMethod::Kalman)?;
+    let (min, ok) = crate::api::transfer::minimal_of_transfer(s, g)?;
     let poles = min.system.a.charpoly()?;
-    let ok = g.matches_markov(s);
     let rep = Report::titled("transfer matrix")
         .with(
             "transfer_matrix",
@@ -345,7 +340,7 @@ fn tf(
         .str("pole_polynomial", poles.to_string_var("s"))
         .with("pole_factors", factors(&poles)?)
         .bool("minimal_realization_verified", min.verified);
-    Ok((rep, ok && min.verified, min.system))
+    Ok((rep, ok, min.system))
 }
 
 /// The command's own condition set, or `None` (the computation's log, each condition labelled

@@ -6,7 +6,7 @@
 //! | kernel | identity computed | how |
 //! |---|---|---|
 //! | charpoly | $\det(xI - A)$, no conditions (a polynomial identity) | $A = B/D$ (common denominator), $\det(xI - B)$ by [`charpoly_zp`], $c_k = c'_k / D^{n-k}$ |
-//! | det | $\det A$, no conditions | rows cleared ($B_i = d_i A_i$), $\det B$ interpolated, divided by $\prod d_i$ |
+//! | det | $\det A$, no conditions | rows cleared ($B_i = d_i A_i$), $\det B$ interpolated, divided by $\prod d_i$; `Limit` beyond the size budget ([`budget`]) |
 //! | rref, rank (null space through the RREF) | canonical RREF $R$ | below |
 //! | inverse | $A^{-1} = \operatorname{adj}(B) D / \det B$ ($B = DA$ row-cleared) | [`inverse`]: $\det B$ and $\operatorname{adj} B$ interpolated together, checked, one division per entry |
 //! | product | $AB$ | [`mul`]: rows of $A$ and columns of $B$ cleared, one reduction per entry |
@@ -31,6 +31,7 @@
 //! block ([`blocks`]).
 
 pub(crate) mod blocks;
+pub mod budget;
 /// The evaluation/interpolation engine (in [`crate::mpoly`], where resultants use it too).
 pub use crate::mpoly::interp;
 pub(crate) mod inverse;
@@ -157,11 +158,13 @@ pub fn charpoly_qp(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Result<Vec<RatF
     Ok(out)
 }
 
-/// $\det A$ over $\mathbb{Q}(p)$ (no conditions).
+/// $\det A$ over $\mathbb{Q}(p)$ (no conditions): rows cleared, $\det$ over
+/// $\mathbb{Z}\lbrack p\rbrack$ ([`det_zp`]). The table's entry point checks the size budget
+/// first ([`budget::det_budget`]).
 ///
 /// # Errors
 /// `Limit` as [`det_zp`].
-pub fn det_qp(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Result<RatFunc> {
+fn det_cleared(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Result<RatFunc> {
     let nv = k.nvars();
     let (b, ds) = clear_rows(nv, n, n, a);
     let det = det_zp(nv, n, &b)?;
@@ -183,11 +186,16 @@ impl KernelTable<RatFuncField> for QpKernels {
             r => Some(r),
         }
     }
+    /// Beyond the size budget `Limit` ([`budget::det_budget`]: no fallback expands it); a
+    /// `Limit` of the interpolation itself leaves the generic elimination to run.
     fn det(&self, k: &RatFuncField, n: usize, a: &[RatFunc]) -> Option<Result<RatFunc>> {
         if n * n <= TINY || k.nvars() == 0 {
             return None;
         }
-        match det_qp(k, n, a) {
+        if let Err(e) = budget::det_budget(k.nvars(), n, n, a) {
+            return Some(Err(e));
+        }
+        match det_cleared(k, n, a) {
             Err(crate::error::Error::Limit(_)) => None,
             r => Some(r),
         }
