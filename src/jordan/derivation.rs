@@ -124,10 +124,17 @@ pub enum StepKind {
     /// Repeated modes compacted: a minimal realization of $(N, W B, C V)$ over $K$ in Jordan
     /// form. Objects: `J`, `B`, `C`, `order`; identity: Markov parameters unchanged.
     Compaction,
-    /// The orders of the stages (original, after dropping, after compaction) and the exact
-    /// check $\sum_p \operatorname{Tr}(C_p J_p^k B_p) = C A^k B$, order = McMillan degree.
-    /// Objects: `stages`, `mcmillan`.
+    /// The orders of the stages (original, after dropping, after compaction), each stage's
+    /// realization over the base field reproducing $C A^k B$ ($k < 2n$), and the method's
+    /// realization $(A_r, B_r, C_r, D)$ (the command's result): $C_r A_r^k B_r = C A^k B$,
+    /// order = McMillan degree. Objects: `stages`, `mcmillan`, `Ar`, `Br`, `Cr`, `Dr`.
     Stages,
+    /// The Jordan method on a simple irreducible factor $g$ of degree $d \ge 2$, without chains:
+    /// $u$ a basis of $\ker g(A)$, $A_g$ with $A u = u A_g$, $P$ the projector along
+    /// $\operatorname{im} g(A)$ ($P u = I$, $P A = A_g P$); the part $(A_g, P B, C u)$ is kept
+    /// iff $P B \ne 0$ and $C u \ne 0$ (then minimal: $g$ irreducible). Objects: `g`, `deg`,
+    /// `u`, `Ag`, `P` (not for $d = n$: $u = P = I$), `PB`, `Cu`, `excited`, `observed`.
+    Restriction,
     /// SCB pre-transformation (sec. II-D, III-C): $Y^{-1} D U = \operatorname{diag}(I_{m_0}, 0)$
     /// and the strictly proper system $(A_1, B_1, C_1)$, $A_1 = A - B_0 C_0$. Objects: `U`,
     /// `Yinv`, `Dh`, `m0`, `A1`, `B1`, `C1`.

@@ -48,7 +48,7 @@ fn coefficients<F: Field>(e: &Ext<F>, x: &ExtElem<F::Elem>) -> Vec<F::Elem> {
 }
 
 /// $(A_F, B_F, C_F)$ of one compacted component (module docs).
-fn regular_representation<F: Field>(
+pub(super) fn regular_representation<F: Field>(
     c: &Compact<F>,
     comp: &Component<F>,
 ) -> (Matrix<F>, Matrix<F>, Matrix<F>) {
@@ -200,10 +200,22 @@ pub fn minimal_jordan_primary<F: Field + 'static>(
 pub fn minimal_jordan_qp(
     sys: &StateSpace<RatFuncField>,
 ) -> Result<PrimaryJordanMinimal<RatFuncField>> {
-    let a = &sys.a;
+    minimal_jordan_primary(sys, components_qp_minimal(&sys.a)?)
+}
+
+/// The components [`minimal_jordan_qp`] realizes (and its `--steps` derivation derives): one
+/// per factor of [`crate::jordan::over_qp::charpoly_factors`] (conditions recorded in `a`'s
+/// field), a simple factor of degree $\ge 2$ by its restriction
+/// ([`crate::jordan::over_qp::simple_primary_component`], no chains), every other one by
+/// [`Component::compute`].
+///
+/// # Errors
+/// Those of the decomposition over $\mathbb{Q}(p)$.
+pub(super) fn components_qp_minimal(
+    a: &Matrix<RatFuncField>,
+) -> Result<Vec<Component<RatFuncField>>> {
     let cp = crate::jordan::over_qp::charpoly_factors(a)?;
-    let comps = cp
-        .factors
+    cp.factors
         .iter()
         .map(|f| {
             if f.monic.deg() >= 2 && f.multiplicity == 1 {
@@ -212,6 +224,5 @@ pub fn minimal_jordan_qp(
                 Component::compute(a, &f.monic, f.multiplicity, None, vec![], true)
             }
         })
-        .collect::<Result<Vec<_>>>()?;
-    minimal_jordan_primary(sys, comps)
+        .collect()
 }

@@ -37,6 +37,7 @@ mod ho_kalman;
 mod jordan_core;
 mod jordan_method;
 mod jordan_method_primary;
+mod jordan_method_stages;
 mod jordan_result;
 mod kalman;
 mod method;

@@ -17,13 +17,19 @@
 //! (after the last excited one in their block: not excited; before the first observed one:
 //! not observed) with the check that the block's Markov parameters are unchanged; the
 //! compaction of repeated modes (a minimal realization of $(N, WB, CV)$ in Jordan form, Markov
-//! parameters unchanged); the stages (20 → 16 → 8 for the sliding masses) with the exact trace
-//! check of [`super::minimal_jordan`].
+//! parameters unchanged); over $\mathbb{Q}(p)$ a simple factor of degree $\ge 2$ by its
+//! restriction $(A_g, P B, C u)$ instead (no chains over $E$, as the command); the stages
+//! (20 → 16 → 8 for the sliding masses), each written over the base field and checked to
+//! reproduce $C A^k B$, and the command's realization with its check
+//! ([`super::jordan_method_stages`]).
 
 use super::controllability::{controllability_matrix, mcmillan_degree, observability_matrix};
 use super::jordan_core::{
-    base_times as rational_times, compact_components, drop_modes, times_base as times_rational,
+    base_times as rational_times, drop_modes, times_base as times_rational,
 };
+use super::jordan_method_primary::{components_qp_minimal, minimal_jordan_primary};
+use super::jordan_method_stages::{StageParts, over_base, restriction_step, stages_step};
+use super::method::SystemField;
 use super::kalman::kalman_decomposition;
 use super::minimal::minimal_kalman;
 use crate::algebraic::{Ext, NumberField};
@@ -198,22 +204,31 @@ fn dropped<K: Field>(
     (not_exc, not_obs)
 }
 
-/// The Jordan-form minimal realization step by step (module docs).
+/// The Jordan-form minimal realization step by step (module docs); the last step's
+/// realization is the command's (`minreal --method jordan`, [`SystemField::jordan_method`]).
 ///
 /// # Errors
 /// As [`super::minimal_jordan`].
 pub fn jordan_method_steps(sys: &StateSpace<Q>) -> Result<Derivation<NumberField>> {
     let q = crate::jordan::primary::rational_field();
     let rec = Recorder::new(Method::JordanMethod, q);
-    jordan_method_recorded(sys, rec, || Ok(crate::jordan::jordan(&sys.a)?.components))
+    jordan_method_recorded(
+        sys,
+        rec,
+        || Ok(crate::jordan::jordan(&sys.a)?.components),
+        |s, _| Ok(<Q as SystemField>::jordan_method(s)?.1),
+    )
 }
 
-/// The Jordan-form minimal realization over $\mathbb{Q}(p)$ step by step: the components of
-/// [`crate::jordan::over_qp::components_qp`] (eigenvalues in $\mathbb{Q}(p)$ as Jordan
-/// blocks, the roots of a factor of degree $\ge 2$ at its generic root $t$ in
-/// $E = \mathbb{Q}(p)\[t\]/(g)$), then the steps of [`jordan_method_steps`]; every step lists
-/// the polynomials in the parameters it assumes nonzero (the first one those of the
-/// factorization and of the chains: leading coefficients, discriminants, resultants, pivots).
+/// The Jordan-form minimal realization over $\mathbb{Q}(p)$ step by step, on the components
+/// [`super::minimal_jordan_qp`] realizes: an eigenvalue in $\mathbb{Q}(p)$ or a repeated
+/// factor by its chains (over $E = \mathbb{Q}(p)\[t\]/(g)$ at the generic root $t$ for
+/// $\deg g \ge 2$), a simple factor of degree $\ge 2$ by its restriction $(A_g, P B, C u)$
+/// (no chains over $E$; [`super::jordan_method_stages`]); then the stages and the
+/// command's realization ([`super::minimal_jordan_primary`] on the same components). Every
+/// step lists the polynomials in the parameters it assumes nonzero (the first one those of
+/// the factorization and of the eliminations: leading coefficients, discriminants,
+/// resultants, pivots).
 ///
 /// # Errors
 /// As [`super::minimal_jordan_qp`].
@@ -228,47 +243,46 @@ pub fn jordan_method_steps_qp(
     let e0 = degree_one(&k);
     let log = lift_log(&e0, crate::jordan::derivation::ratfunc_log(&k));
     let rec = Recorder::with_log(Method::JordanMethod, e0, log);
-    jordan_method_recorded(&sys, rec, || {
-        Ok(crate::jordan::over_qp::components_qp(&sys.a)?.1)
-    })
+    jordan_method_recorded(
+        &sys,
+        rec,
+        || components_qp_minimal(&sys.a),
+        |s, comps| Ok(minimal_jordan_primary(s, comps)?.system),
+    )
 }
 
 /// The steps of the Jordan method over any field with [`Component`]s of $A$ (computed by
-/// `components` after the recorder started, so that their conditions are recorded).
+/// `components` after the recorder started, so that their conditions are recorded): per
+/// component its chain steps or its restriction step, then the stages with the method's
+/// realization `realize(sys, components)`.
 fn jordan_method_recorded<F: Field + 'static>(
     sys: &StateSpace<F>,
     mut rec: Recorder<'_, Ext<F>>,
     components: impl FnOnce() -> Result<Vec<Component<F>>>,
+    realize: impl FnOnce(&StateSpace<F>, Vec<Component<F>>) -> Result<StateSpace<F>>,
 ) -> Result<Derivation<Ext<F>>> {
     let comps = components()?;
-    let (mut stage1, mut stage2) = (0, 0);
+    let mut parts = vec![];
     for (part, comp) in comps.iter().enumerate() {
-        let (s1, s2) = component_steps(&mut rec, part, sys, comp)?;
-        stage1 += s1;
-        stage2 += s2;
+        parts.push(if comp.has_chains() {
+            component_steps(&mut rec, part, sys, comp)?
+        } else {
+            restriction_step(&mut rec, part, sys, comp)?
+        });
     }
-    let c = compact_components(sys, &comps)?;
-    let ok = c.verified && c.stages == [sys.nstates(), stage1, stage2];
-    rec.push(
-        StepKind::Stages,
-        None,
-        vec![
-            ("stages", Object::Counts(c.stages.to_vec())),
-            ("mcmillan", Object::Count(c.mcmillan_degree)),
-        ],
-        Some(ok),
-    );
+    let system = realize(sys, comps)?;
+    stages_step(&mut rec, sys, &parts, &system)?;
     Ok(rec.finish())
 }
 
-/// The modal data, dropped modes and compaction of one component; returns its states after
-/// dropping and after compacting (times the degree of its factor).
+/// The modal data, dropped modes and compaction of one component; returns its part over
+/// $F$ at each stage (modal, kept, compacted).
 fn component_steps<F: Field + 'static>(
     rec: &mut Recorder<'_, Ext<F>>,
     part: usize,
     sys: &StateSpace<F>,
     comp: &Component<F>,
-) -> Result<(usize, usize)> {
+) -> Result<StageParts<F>> {
     let k = comp.field.clone();
     let d = comp.degree();
     let theta = comp.root_elem();
@@ -276,6 +290,7 @@ fn component_steps<F: Field + 'static>(
     let ck = rational_times(&sys.c, &comp.chains);
     let j = comp.jordan_matrix();
     let m = j.nrows();
+    let stage0 = over_base(comp, part, &j, &bk, &ck);
     rec.push(
         StepKind::ModalData,
         Some(part),
@@ -295,7 +310,7 @@ fn component_steps<F: Field + 'static>(
     let full = StateSpace::new_strictly_proper(j, bk, ck)?;
     let kept = StateSpace::new_strictly_proper(jk.clone(), bkk.clone(), ckk.clone())?;
     let ok = full.same_markov(&kept, 2 * m + 1);
-    let stage1 = keep.len() * d;
+    let stage1 = (!keep.is_empty()).then(|| over_base(comp, part, &jk, &bkk, &ckk));
     rec.push(
         StepKind::DropModes,
         Some(part),
@@ -311,7 +326,7 @@ fn component_steps<F: Field + 'static>(
         Some(ok),
     );
     if keep.is_empty() {
-        return Ok((stage1, 0));
+        return Ok([Some(stage0), None, None]);
     }
     let nilp = jordan_block_matrix(&k, &k.zero(), &sizes);
     let min = minimal_kalman(&StateSpace::new_strictly_proper(nilp, bkk, ckk)?)?.system;
@@ -329,6 +344,7 @@ fn component_steps<F: Field + 'static>(
     };
     let compact = StateSpace::new_strictly_proper(jn.clone(), bn.clone(), cn.clone())?;
     let ok = kept.same_markov(&compact, 2 * m + 1);
+    let stage2 = (r > 0).then(|| over_base(comp, part, &jn, &bn, &cn));
     // a real root: the first root's approximation (over QQ(p): an eigenvalue in QQ(p))
     let real = comp.roots.first().map_or(d == 1, |z| z.1 == 0.0);
     let norm_step = (r > 0 && r < keep.len() && real).then(|| (kept.clone(), compact.clone()));
@@ -347,7 +363,7 @@ fn component_steps<F: Field + 'static>(
     if let Some((kept, compact)) = norm_step {
         norm_match(rec, part, &kept, &compact);
     }
-    Ok((stage1, r * d))
+    Ok([Some(stage0), stage1, stage2])
 }
 
 /// The minimal-realization paper's choice after eq. 36: the compacted block $(J, \tilde B,

@@ -112,6 +112,7 @@ pub fn kind_name(k: StepKind) -> &'static str {
         StepKind::DropModes => "drop_modes",
         StepKind::Compaction => "compaction",
         StepKind::Stages => "stages",
+        StepKind::Restriction => "restriction",
         k => super::steps_more::kind_name(k),
     }
 }
@@ -166,8 +167,12 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
             r"C V J_\theta^k W B\ \text{unchanged for all } k",
         ),
         StepKind::Stages => (
-            "sum_p Tr(C_p J_p^k B_p) = C A^k B, order = McMillan degree",
-            r"\textstyle\sum_p \operatorname{Tr}(C_p J_p^k B_p) = C A^k B,\ r = \delta_M",
+            "every stage's C_s A_s^k B_s = C A^k B and Cr Ar^k Br = C A^k B (k < 2n), Dr = D, order = McMillan degree",
+            r"C_s A_s^k B_s = C_r A_r^k B_r = C A^k B\ (k < 2n),\ r = \delta_M",
+        ),
+        StepKind::Restriction => (
+            "A u = u Ag, P u = I, P A = Ag P",
+            r"A u = u A_g,\ P u = I,\ P A = A_g P",
         ),
         k => super::steps_more::identity(k),
     }
@@ -370,15 +375,39 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
             let st = s.counts("stages").unwrap_or(&[]);
             let at = |i: usize| st.get(i).copied().unwrap_or(0);
             format!(
-                "Stages: {} states -> {} after dropping non-contributing modes -> {} after compacting repeated modes (McMillan degree {}).",
+                "Stages: {} states -> {} after dropping non-contributing modes -> {} after compacting repeated modes (McMillan degree {}); each stage, written over the base field, reproduces the Markov parameters C A^k B. The realization (Ar, Br, Cr, Dr) is the command's result (`minreal --method jordan`).",
                 at(0),
                 at(1),
                 at(2),
                 c("mcmillan")
             )
         }
+        StepKind::Restriction => restriction_sentence(s, var),
         _ => super::steps_more::sentence(d, s, var),
     }
+}
+
+/// The sentence of a restriction step: the factor, the part and why it is kept or dropped.
+fn restriction_sentence<K: Field>(s: &Step<K>, var: &str) -> String {
+    let g = s.poly("g").map(|p| poly_text(p, var)).unwrap_or_default();
+    let deg = s.count("deg").unwrap_or(0);
+    let flag = |k: &str| s.count(k) == Some(1);
+    let basis = if s.matrix("u").is_some() {
+        "u a basis of ker g(A), Ag with A u = u Ag, P the projector along im g(A) (P u = I, P A = Ag P)"
+    } else {
+        "g has degree n: u = P = I, the part is (A, B, C) itself"
+    };
+    let why = match (flag("excited"), flag("observed")) {
+        (true, true) => format!(
+            "kept: P B != 0 (excited) and C u != 0 (observed); g is irreducible, so Ag has no invariant subspace but 0 and the whole space, and the part is controllable and observable: minimal, {deg} states"
+        ),
+        (false, true) => "dropped: P B = 0, its modes are not excited".into(),
+        (true, false) => "dropped: C u = 0, its modes are not observed".into(),
+        (false, false) => "dropped: P B = 0 and C u = 0 (neither excited nor observed)".into(),
+    };
+    format!(
+        "Simple irreducible factor g = {g} of degree {deg}: its {deg} roots as one block, no chains over F[t]/(g). The restriction ({basis}) gives the part (Ag, P B, C u) of C (sI - A)^-1 B; {why}."
+    )
 }
 
 fn object_value<K: Field>(o: &Object<K>, var: &str, field: &K) -> Value {

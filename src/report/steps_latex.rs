@@ -32,6 +32,15 @@ fn symbol_in_s(kind: StepKind, key: &str) -> String {
         }
         (StepKind::Similarity, "dims") => return r"d_i\,m_i".into(),
         (StepKind::PrimaryBlock, "dims") => return r"\dim\ker f(A)^k".into(),
+        (StepKind::Restriction, "g") => return "g(s)".into(),
+        (StepKind::Restriction, "deg") => return r"\deg g".into(),
+        (StepKind::Restriction, "Ag") => return "A_g".into(),
+        (StepKind::Restriction, "PB") => return "P B".into(),
+        (StepKind::Restriction, "Cu") => return "C u".into(),
+        (StepKind::Stages, "Ar") => return "A_r".into(),
+        (StepKind::Stages, "Br") => return "B_r".into(),
+        (StepKind::Stages, "Cr") => return "C_r".into(),
+        (StepKind::Stages, "Dr") => return "D_r".into(),
         // the algebraic multiplicity: not `m`, which a system's parameter may be called
         (StepKind::KernelSequence, "m") => return r"\mu".into(),
         _ => {}
@@ -373,9 +382,32 @@ fn sentence_latex_in_s<K: Field>(d: &Derivation<K>, st: &Step<K>) -> String {
         StepKind::Compaction => format!(
             "Repeated modes of $\\theta = {th}$ compacted{conj}: a minimal realization of $(N, WB, CV)$ over the field, back in Jordan form by its chains."
         ),
-        StepKind::Stages => "The orders of the stages: original, after dropping, after compacting; the last is the McMillan degree $\\delta_M$.".into(),
+        StepKind::Stages => "The orders of the stages: original, after dropping, after compacting; the last is the McMillan degree $\\delta_M$. Each stage $(A_s, B_s, C_s)$, written over the base field, reproduces the Markov parameters $C A^k B$; $(A_r, B_r, C_r, D_r)$ is the command's realization (\\texttt{minreal --method jordan}).".into(),
+        StepKind::Restriction => restriction_latex(st),
         _ => super::steps_more::sentence_latex(st),
     }
+}
+
+/// The LaTeX sentence of a restriction step (the plain one in `report::steps`).
+fn restriction_latex<K: Field>(st: &Step<K>) -> String {
+    let deg = st.count("deg").unwrap_or(0);
+    let flag = |k: &str| st.count(k) == Some(1);
+    let basis = if st.matrix("u").is_some() {
+        "the columns of $u$ a basis of $\\ker g(A)$, $A_g$ with $A u = u A_g$ and $P$ the projector along $\\operatorname{im} g(A)$ ($P u = I$, $P A = A_g P$)"
+    } else {
+        "$g$ has degree $n$: $u = P = I$ and the part is $(A, B, C)$ itself"
+    };
+    let why = match (flag("excited"), flag("observed")) {
+        (true, true) => format!(
+            "kept, as $P B \\ne 0$ (excited) and $C u \\ne 0$ (observed); $g$ is irreducible, so the only $A_g$-invariant subspaces are $0$ and the whole space: the part is controllable and observable, a minimal block of {deg} states"
+        ),
+        (false, true) => "dropped: $P B = 0$, its modes are not excited".into(),
+        (true, false) => "dropped: $C u = 0$, its modes are not observed".into(),
+        (false, false) => "dropped: $P B = 0$ and $C u = 0$".into(),
+    };
+    format!(
+        "A simple irreducible factor $g$ of degree {deg}: its {deg} roots form one block, realized without chains over $F[t]/(g)$ by the restriction ({basis}). The part $(A_g, P B, C u)$ is the factor's share of $C(sI - A)^{{-1}}B$; it is {why}."
+    )
 }
 
 fn step_latex<K: Field>(s: &mut String, d: &Derivation<K>, i: usize, st: &Step<K>) {
