@@ -288,5 +288,8 @@ fn restriction_steps_cli() {
         "--standalone",
     ]);
     assert_eq!(code, 0, "{err}");
-    assert!(out.contains("\\texttt{restriction}") && out.contains("A_g"), "{out}");
+    assert!(
+        out.contains("\\texttt{restriction}") && out.contains("A_g"),
+        "{out}"
+    );
 }
