@@ -195,6 +195,8 @@ mod steps_descriptor;
 mod steps_discrete;
 #[path = "steps_forms.rs"]
 mod steps_forms;
+#[path = "steps_jordan_restriction.rs"]
+mod steps_jordan_restriction;
 #[path = "steps_modes_fields.rs"]
 mod steps_modes_fields;
 #[path = "steps_normalize.rs"]

@@ -32,8 +32,14 @@ pub type CertifiedRoots = Vec<(AlgebraicNumber, (f64, f64))>;
 /// $\mathbb{Q}$ of its roots and the certified roots of $g$ (real part descending).
 pub type FactorRoots<F> = (Poly<F>, usize, Poly<Q>, CertifiedRoots);
 
-/// A base field of the exact Jordan decomposition: it factors polynomials and certifies
-/// the roots of each factor; the component of a factor has a generic default.
+/// A number field as base field of the exact Jordan decomposition: it factors polynomials
+/// and certifies the roots of each factor (its eigenvalues are certified algebraic numbers,
+/// [`NumberEigen`]); the component of a factor has a generic default. Every base field,
+/// $\mathbb{Q}(p)$ included, is a [`super::JordanField`], whose [`JordanForm`] carries the
+/// eigenvalue list as values ([`super::eigenvalue`]); over $\mathbb{Q}(p)$ there is no
+/// embedding into a number field (its elements are functions of the parameters), so the
+/// real-embedding questions are the typed answers of [`super::Eigenvalue::is_real`] and
+/// [`super::Eigenvalue::re_sign`], not a [`RealEmbed`].
 pub trait EigenField: RealEmbed + NumberEigen + 'static {
     /// The irreducible factors of the monic `chi` over the field with their roots.
     ///

@@ -50,7 +50,7 @@ pub struct Certified {
 #[derive(Clone, Debug, PartialEq)]
 pub enum EigenValue<F: Field> {
     /// A certified algebraic number (number fields).
-    Number(Certified),
+    Number(Box<Certified>),
     /// An element of the base field: the root $-g_0$ of a linear factor $x + g_0$
     /// (over $\mathbb{Q}(p)$).
     InField(F::Elem),
@@ -108,7 +108,7 @@ pub(crate) type Structure = (usize, usize, usize, usize, Vec<usize>);
 impl<F: Field> Eigenvalue<F> {
     /// A certified root (number fields).
     pub(crate) fn number(c: Certified, s: Structure) -> Self {
-        Self::with(EigenValue::Number(c), s)
+        Self::with(EigenValue::Number(Box::new(c)), s)
     }
     fn with(value: EigenValue<F>, (component, root, index, mu, blocks): Structure) -> Self {
         Eigenvalue {
@@ -205,7 +205,7 @@ impl<F: NumberEigen> std::ops::Deref for Eigenvalue<F> {
     type Target = Certified;
     fn deref(&self) -> &Certified {
         match &self.value {
-            EigenValue::Number(c) => c,
+            EigenValue::Number(c) => c.as_ref(),
             // the constructors of the other kinds exist only over Q(p), not a NumberEigen
             _ => unreachable!("an eigenvalue over a number field is a certified number"),
         }

@@ -6,6 +6,10 @@
 //! Operations that need the eigenstructure of a matrix (the PBH test, the finite part of a
 //! pencil, the Jordan-form realization) are written once over a [`JordanField`]; the field
 //! supplies the decomposition, no caller asks which field it has.
+//!
+//! The result's eigenvalue list ([`JordanForm::eigenvalues`], [`super::eigenvalue`]) is one
+//! type for all of them: certified numbers over the number fields, elements of
+//! $\mathbb{Q}(p)$ or the irreducible factor whose roots they are over $\mathbb{Q}(p)$.
 
 use super::over_qp::charpoly_factors as charpoly_factors_qp;
 use super::{EigenField, JordanForm, jordan_over, jordan_qp};

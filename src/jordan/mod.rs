@@ -26,6 +26,7 @@
 //! | entry point | computes |
 //! |---|---|
 //! | [`jordan`] | [`JordanForm`]: components, eigenvalues, verification |
+//! | [`JordanForm::eigenvalues`] | [`Eigenvalue`]: the eigenvalues as values over every base field (certified numbers; over $\mathbb{Q}(p)$ elements of the field or an irreducible factor), typed answers about the real embedding ([`Decided`]) |
 //! | [`JordanForm::real_form`] | [`RealJordanForm`]: $2 \times 2$ blocks $[[a, b], [-b, a]]$, real $T$ |
 //! | [`JordanForm::free_response`] | [`FreeResponse`]: $e^{At} = \sum t^k e^{\theta t} G_{\theta,k}$ |
 //! | [`JordanForm::report`] | JSON keys of the CLI contract (`eigenvalues`, `J`, `T`, `verified`) |

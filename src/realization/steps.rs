@@ -24,13 +24,11 @@
 //! ([`super::jordan_method_stages`]).
 
 use super::controllability::{controllability_matrix, mcmillan_degree, observability_matrix};
-use super::jordan_core::{
-    base_times as rational_times, drop_modes, times_base as times_rational,
-};
+use super::jordan_core::{base_times as rational_times, drop_modes, times_base as times_rational};
 use super::jordan_method_primary::{components_qp_minimal, minimal_jordan_primary};
 use super::jordan_method_stages::{StageParts, over_base, restriction_step, stages_step};
-use super::method::SystemField;
 use super::kalman::kalman_decomposition;
+use super::method::SystemField;
 use super::minimal::minimal_kalman;
 use crate::algebraic::{Ext, NumberField};
 use crate::error::Result;

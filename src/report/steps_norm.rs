@@ -267,10 +267,8 @@ pub fn symbol(kind: StepKind, key: &str) -> Option<&'static str> {
 
 /// Whether an object key is a flag its sentence already states (not typeset in LaTeX).
 pub fn flag(key: &str) -> bool {
-    matches!(
-        key,
-        "orth" | "refused" | "shifted" | "excited" | "observed"
-    ) || super::steps_modes::flag(key)
+    matches!(key, "orth" | "refused" | "shifted" | "excited" | "observed")
+        || super::steps_modes::flag(key)
 }
 
 /// The words of a normalisation (`jordan --normalize`).

@@ -223,7 +223,13 @@ fn matrix_text(s: &mut String, head: &str, mo: &MatrixOut, indent: usize, o: &Te
         .map(|e| e.chars().count())
         .max()
         .unwrap_or(0);
-    if o.full {
+    // entries without a number (rational functions of parameters) have no approximation
+    let numeric = mo
+        .approx
+        .iter()
+        .flatten()
+        .all(|z| z.0.is_finite() && z.1.is_finite());
+    if o.full || !numeric {
         // every exact entry, in column blocks that keep lines within MAX_LINE (an entry is
         // never split unless it alone is wider than that)
         s.push_str(&format!("{head}{shape} =\n"));
