@@ -123,10 +123,7 @@ fn singular_case(seed: u64, improper: bool) -> Case {
         Matrix::from_vec(k.clone(), 1, 2, vec![k.zero(), gamma])
     };
     let e0 = Matrix::block_diag(k.clone(), &[Matrix::identity(k.clone(), nf), j.clone()]);
-    let a0 = Matrix::block_diag(
-        k.clone(),
-        &[fin.a.clone(), Matrix::identity(k.clone(), 2)],
-    );
+    let a0 = Matrix::block_diag(k.clone(), &[fin.a.clone(), Matrix::identity(k.clone(), 2)]);
     let (pl, tr) = (unimodular(&k, n, &mut rng), unimodular(&k, n, &mut rng));
     let sys = Descriptor::new(
         &(&pl * &e0) * &tr,
@@ -202,12 +199,9 @@ fn assert_same_markov(x: &Descriptor<Q>, y: &Descriptor<Q>, what: &str) {
 /// rank Hankel(0, P1) = 2 rank P1.
 fn least_order(case: &Case, pt: &[Rational]) -> Option<usize> {
     let f = &case.finite;
-    let fq = StateSpace::new_strictly_proper(
-        eval_at(&f.a, pt)?,
-        eval_at(&f.b, pt)?,
-        eval_at(&f.c, pt)?,
-    )
-    .ok()?;
+    let fq =
+        StateSpace::new_strictly_proper(eval_at(&f.a, pt)?, eval_at(&f.b, pt)?, eval_at(&f.c, pt)?)
+            .ok()?;
     Some(mcmillan_degree(&fq) + 2 * eval_at(&case.p1, pt)?.rank())
 }
 
@@ -245,7 +239,10 @@ fn check(case: &Case, seed: u64) {
             continue;
         };
         // the realization holds off its recorded conditions (pencils: regular everywhere)
-        if conditions.iter().any(|c| k.eval(c, &pt).is_some_and(|v| v == zero)) {
+        if conditions
+            .iter()
+            .any(|c| k.eval(c, &pt).is_some_and(|v| v == zero))
+        {
             continue;
         }
         points += 1;
@@ -282,7 +279,9 @@ fn invertible_e_is_the_trivial_split() {
 
 #[test]
 fn singular_e_proper_with_impulsive_modes() {
-    for seed in 10..13 {
+    // (seed 11 passes too but spends ~10 s in the general Fitting split over Q(a, b): the
+    // singular-E route still inverts V = [range Eh^n, ker Eh^n] by the adjugate kernel)
+    for seed in [10, 12, 13] {
         let case = singular_case(seed, false);
         check(&case, seed);
         let m = minimal_descriptor(&case.sys).unwrap();
