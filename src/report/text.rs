@@ -375,7 +375,12 @@ pub fn text_table(rows: &[Vec<String>], indent: usize) -> String {
         let cells: Vec<String> = r
             .iter()
             .enumerate()
-            .map(|(j, c)| format!("{c:<w$}", w = w[j]))
+            // padded by hand: a format width above u16::MAX panics ("Formatting argument out
+            // of range"), and a symbolic cell can be longer than that
+            .map(|(j, c)| {
+                let fill = w[j].saturating_sub(c.chars().count());
+                format!("{c}{}", " ".repeat(fill))
+            })
             .collect();
         s.push_str(&format!("{pad}{}\n", cells.join("  ").trim_end()));
     }
@@ -445,6 +450,22 @@ fn text_matrix_cols(rows: &[Vec<String>], cols: std::ops::Range<usize>, indent: 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn table_cells_longer_than_a_format_width() {
+        // bounce-pitch `jordan --symbolic` has a 70,000-character cell: a `{:<w$}` width above
+        // u16::MAX panicked; columns are padded by hand
+        let long = "x".repeat(70_000);
+        let rows = vec![
+            vec!["a".to_string(), "b".to_string()],
+            vec![long.clone(), "c".to_string()],
+        ];
+        let t = text_table(&rows, 2);
+        let lines: Vec<&str> = t.lines().collect();
+        assert_eq!(lines.len(), 2);
+        assert_eq!(lines[0], format!("  a{}b", " ".repeat(70_000 + 1)));
+        assert_eq!(lines[1], format!("  {long}  c"));
+    }
 
     #[test]
     fn short_numbers() {
