@@ -26,6 +26,7 @@ mod discrete_plots;
 mod float_cmds;
 mod float_compare;
 mod freqresp_cmd;
+mod ground;
 mod interconnect;
 pub mod jordan_values;
 mod linalg;
@@ -50,6 +51,7 @@ pub use commands::{
 };
 pub use connect_names::{NamedConnection, connect_named};
 pub use discrete::{C2dMethod, DiscreteCmd};
+pub use crate::io::{GroundField, NumericField};
 pub use interconnect::{InterconnectCmd, system_of as interconnect_system};
 pub use response::ResponseCmd;
 pub use sweep::sweep_file;
