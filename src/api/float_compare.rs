@@ -22,9 +22,9 @@
 
 use super::Failure;
 use crate::field::{Field, Q};
-use crate::io::{GroundField, NumericField};
 use crate::float::{self, FloatScalar, Tol, Truth, to_dmatrix};
 use crate::io::TypedSystem as Typed;
+use crate::io::{GroundField, NumericField};
 use crate::matrix::Matrix;
 use crate::realization;
 use crate::report::{Report, Value};
@@ -324,7 +324,11 @@ pub(crate) fn complex_items<K: GroundField>(
     // imaginary quadratic field, the Jordan form of A over K and its conjugate's
     let compared = match exact_real_form(&t.a_raw) {
         Some(aq) => jordan_comparison(&aq, path)?,
-        None => match K::numeric(t).map(|n| real_form_spectrum(&n.a_raw, path)).transpose()?.flatten() {
+        None => match K::numeric(t)
+            .map(|n| real_form_spectrum(&n.a_raw, path))
+            .transpose()?
+            .flatten()
+        {
             Some((exact, verified)) => {
                 let az = float::to_cmatrix(&t.a_raw).map_err(|e| fail(path, e))?;
                 let ar = FloatScalar::realify(&az);

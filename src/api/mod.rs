@@ -43,6 +43,7 @@ mod symbolic_jordan;
 mod system;
 mod toolbox;
 
+pub use crate::io::{GroundField, NumericField};
 pub use args::{LinalgOp, MethodArg, PolyCmd, TimeOpts};
 pub use bifurcations::Of;
 /// One command run in-process (no output, no time bound): the report and its status.
@@ -51,7 +52,6 @@ pub use commands::{
 };
 pub use connect_names::{NamedConnection, connect_named};
 pub use discrete::{C2dMethod, DiscreteCmd};
-pub use crate::io::{GroundField, NumericField};
 pub use interconnect::{InterconnectCmd, system_of as interconnect_system};
 pub use response::ResponseCmd;
 pub use sweep::sweep_file;

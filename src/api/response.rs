@@ -13,8 +13,8 @@
 //! its own eq. 37a, give $-r_0 u t^2/2$: a sign slip in eq. 36.)
 
 use super::common::with_path;
-use super::{Failure, Outcome};
 use super::ground::numeric;
+use super::{Failure, Outcome};
 use crate::field::ElemDisplay;
 use crate::io::{GroundField, NumericField, SystemFile, TypedSystem};
 use crate::jordan::jordan_over;
@@ -161,7 +161,11 @@ fn run_over<F: NumericField>(
             let sr = jf.free_response().from_state(&x0m);
             let ok = jf.verified && sr.verify(&jf, &x0m);
             // real when A and x0 equal their conjugates (exactly): then x(t) is real
-            let real = ss.a.as_slice().iter().chain(x0m.as_slice()).all(|x| k.conj(x).as_ref() == Some(x));
+            let real =
+                ss.a.as_slice()
+                    .iter()
+                    .chain(x0m.as_slice())
+                    .all(|x| k.conj(x).as_ref() == Some(x));
             let values: Vec<rep::TimeValue> = times(ts.as_deref())?
                 .into_iter()
                 .map(|t| {

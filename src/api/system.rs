@@ -34,13 +34,13 @@
 //! ```
 
 use crate::field::Field;
+use crate::io::GroundField;
 use crate::io::symbolic::{declares_symbols, load_symbolic_str};
 use crate::io::{
     Ground, InputError, LoadedSystem, SystemFile, SystemFormat, TypedAny, TypedSystem,
     load_system_str,
 };
 use crate::ratfunc::RatFuncField;
-use crate::io::GroundField;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 

@@ -7,8 +7,8 @@
 //! [`crate::report::sections`].
 
 use super::common::with_path;
-use super::{Failure, Outcome};
 use super::ground::numeric;
+use super::{Failure, Outcome};
 use crate::field::Field;
 use crate::float::stepinfo::step_info;
 use crate::float::{self, to_dmatrix};

@@ -11,12 +11,12 @@
 //! solve, the closed-form step plot, the discrete stability test) asks [`GroundField::rational`].
 
 use super::Ground;
-use crate::field::{Field, Q, Quadratic, QuadraticField, Rational};
-use crate::ratfunc::RatFunc;
 use super::{TypedAny, TypedSystem};
+use crate::field::{Field, Q, Quadratic, QuadraticField, Rational};
 use crate::jordan::EigenField;
 use crate::jordan::derivation::AssumptionLog;
 use crate::matrix::Matrix;
+use crate::ratfunc::RatFunc;
 use crate::ratfunc::RatFuncField;
 use crate::realization::SystemField;
 use crate::system::Descriptor;
@@ -120,8 +120,12 @@ impl GroundField for QuadraticField {
         TypedAny::Quadratic(t)
     }
     fn imaginary_generator(&self) -> Option<Quadratic> {
-        num_traits::Signed::is_negative(self.d())
-            .then(|| Quadratic::new(Rational::from_integer(0.into()), Rational::from_integer(1.into())))
+        num_traits::Signed::is_negative(self.d()).then(|| {
+            Quadratic::new(
+                Rational::from_integer(0.into()),
+                Rational::from_integer(1.into()),
+            )
+        })
     }
     fn parse_elem(&self, text: &str) -> Result<Quadratic, String> {
         let (x, g) = super::eval_expr(text, &[], &Ground::Quadratic(self.clone()))
@@ -167,4 +171,3 @@ impl GroundField for RatFuncField {
         self.parse(text).map_err(|e| e.to_string())
     }
 }
-

@@ -31,9 +31,9 @@
 
 pub(crate) mod combine;
 pub(crate) mod expr;
+pub mod ground;
 pub(crate) mod keys;
 pub(crate) mod load;
-pub mod ground;
 pub mod load_descriptor;
 pub(crate) mod matlab;
 pub mod model_file;

@@ -116,7 +116,7 @@ pub fn kronecker_report<K: Field>(k: &KroneckerStructure<K>) -> Report {
     .bool("verified", k.verified)
 }
 
-fn structure_items<K: Field>(
+fn structure_items<K: GroundField>(
     r: Report,
     c: &ControllabilityStructure<K>,
     dual: bool,
@@ -179,7 +179,7 @@ pub fn ctrb_report<K: GroundField>(c: &ControllabilityStructure<K>, dual: bool) 
 ///
 /// # Errors
 /// From the Jordan form of the uncontrollable part.
-pub fn descriptor_ctrb_report<K: Field>(
+pub fn descriptor_ctrb_report<K: GroundField>(
     d: &DescriptorControllability<K>,
     dual: bool,
 ) -> Result<Report> {
