@@ -80,7 +80,12 @@ fn random_case(
     let mut x0 = vec![];
     for _ in 0..n {
         let (p, q) = (rng.int(-2, 2), if unit == "1" { 0 } else { rng.int(-2, 2) });
-        xs.push(format!("{p} + {q}*{unit}"));
+        // over Q `--x0` takes numbers; over Q(sqrt 2), Q(i) expressions in the field
+        xs.push(if unit == "1" {
+            format!("{p}")
+        } else {
+            format!("{p} + {q}*{unit}")
+        });
         x0.push(embed(p, q, unit));
     }
     let text = format!("{{\"A\": [{}]}}", rows.join(", "));

@@ -152,7 +152,8 @@ fn run_over<F: NumericField>(
             let xs = entries(x0, n, path)?;
             // symbols of its own (not `i`, `sqrt`): the response in symbols
             let reserved = crate::field::expr::lex::reserved_meaning;
-            if symbols(&xs)?.iter().any(|s| reserved(s).is_none()) {
+            let own = symbols(&xs).is_ok_and(|s| s.iter().any(|s| reserved(s).is_none()));
+            if own {
                 let a: Vec<String> = ss.a.as_slice().iter().map(|x| k.fmt_elem(x)).collect();
                 return symbolic_response(&[], (n, a), &xs, path);
             }
