@@ -13,6 +13,8 @@ mod algebraic;
 mod api;
 #[path = "api_fields.rs"]
 mod api_fields;
+#[path = "api_fields_generic.rs"]
+mod api_fields_generic;
 #[path = "as_written.rs"]
 mod as_written;
 #[path = "balred.rs"]

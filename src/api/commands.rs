@@ -10,7 +10,7 @@ use super::system::{System, SystemVisitor};
 use super::{Command, Failure, MethodArg, Outcome};
 use crate::field::Field;
 use crate::io::symbolic::SymbolicOptions;
-use crate::io::{SystemFile, TypedSystem, as_rational};
+use crate::io::{SystemFile, TypedSystem};
 use crate::realization::{self, SystemField};
 use crate::report::{Report, Value, sections};
 use std::path::Path;
@@ -246,7 +246,7 @@ struct FileCommand<'a> {
 
 impl SystemVisitor for FileCommand<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: SystemField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+    fn visit<K: crate::io::GroundField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
         let path = self.path;
         let e = |err| with_path(path, err);
         let s = &t.ss;
@@ -329,7 +329,7 @@ impl SystemVisitor for FileCommand<'_> {
                 Ok(Outcome::new(r, ok))
             }
             Command::Check { .. } => {
-                let extra = match as_rational(t) {
+                let extra = match K::rational(t) {
                     Some(q) => super::float_compare::jordan_comparison(&q.a_raw, path)?,
                     None => vec![],
                 };

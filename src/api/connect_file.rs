@@ -16,8 +16,6 @@ use super::interconnect::InterconnectOpts;
 use super::{Failure, Outcome, System, SystemVisitor};
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{SystemFile, TypedSystem};
-use crate::ratfunc::RatFuncField;
-use crate::realization::SystemField;
 use crate::realization::{MinrealMethod, minimal};
 use crate::report::{Report, Value, str_list};
 use crate::system::discrete::stability::Domain;
@@ -203,7 +201,7 @@ struct Finish<'a> {
 
 impl SystemVisitor for Finish<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: SystemField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+    fn visit<K: crate::io::GroundField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
         let path = Path::new(&self.name);
         let e = |err| with_path(path, err);
         let sys = &t.ss;
@@ -237,8 +235,9 @@ impl SystemVisitor for Finish<'_> {
                 ),
             )
             .bool("verified", true);
-        let symbols = (sys.field() as &dyn std::any::Any)
-            .downcast_ref::<RatFuncField>()
+        let symbols = sys
+            .field()
+            .symbolic()
             .map(|k| k.vars().to_vec())
             .unwrap_or_default();
         if let Some(m) = &min {

@@ -10,7 +10,6 @@ use super::{Failure, System};
 use crate::io::combine::{SystemsVisitor, common_field};
 use crate::io::{SignalNames, TypedSystem};
 use crate::matrix::Matrix;
-use crate::realization::SystemField;
 use crate::system::interconnect::append;
 use crate::system::interconnect::connect::{Routing, close, routing_holds};
 use std::path::Path;
@@ -154,7 +153,7 @@ struct Close {
 
 impl SystemsVisitor for Close {
     type Output = Result<System, Failure>;
-    fn visit<K: SystemField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+    fn visit<K: crate::io::GroundField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
         let path = Path::new("interconnect");
         let e = |err| with_path(path, err);
         let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();
@@ -193,7 +192,6 @@ impl SystemsVisitor for Close {
             a_raw: closed.a.clone(),
             ss: closed,
         };
-        System::from_field("interconnect", typed)
-            .ok_or_else(|| Failure::verification("interconnect: internal: an unknown field".into()))
+        Ok(System::from_ground("interconnect", typed))
     }
 }

@@ -4,8 +4,6 @@ use super::SystemVisitor;
 use super::common::with_path;
 use super::{Failure, Outcome};
 use crate::io::{SystemFile, TypedSystem};
-use crate::ratfunc::RatFuncField;
-use crate::realization::SystemField;
 use crate::system::dcgain::{dc_gain, gain_at};
 use std::path::Path;
 
@@ -21,7 +19,7 @@ struct Dc<'a> {
 
 impl SystemVisitor for Dc<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: SystemField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+    fn visit<K: crate::io::GroundField>(self, f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
         let e = |err| with_path(self.path, err);
         // discrete time: the DC gain is G(z = 1)
         let g = match f.signals.dt {
@@ -30,7 +28,7 @@ impl SystemVisitor for Dc<'_> {
         };
         let mut r = g.report(t.ss.field());
         // over Q(p): what the gain assumes nonzero (A invertible, the denominators at 0)
-        if let Some(k) = (t.ss.field() as &dyn std::any::Any).downcast_ref::<RatFuncField>() {
+        if let Some(k) = t.ss.field().symbolic() {
             let conds = k.conditions_strings().map_err(e)?;
             r = r
                 .str("field", k.to_string())

@@ -8,7 +8,7 @@
 use super::common::with_path;
 use super::{Failure, Outcome};
 use crate::field::{Field, Q, Rational, rational_to_f64};
-use crate::io::{SystemFile, TypedSystem, as_rational};
+use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::report::Value;
 use crate::report::display::fmt_rational;
 use crate::report::sections::{conversion_report, sequence_report, stability_report};
@@ -87,7 +87,7 @@ fn fail(path: &Path, message: impl Into<String>) -> Failure {
 }
 
 /// Runs a discrete-time subcommand on a system over its field.
-pub fn run<K: Field + 'static>(
+pub fn run<K: GroundField>(
     cmd: &DiscreteCmd,
     f: &SystemFile,
     t: &TypedSystem<K>,
@@ -103,7 +103,7 @@ pub fn run<K: Field + 'static>(
     let e = |err| with_path(path, err);
     match cmd {
         DiscreteCmd::Stability { .. } => {
-            let Some(q) = as_rational(t) else {
+            let Some(q) = K::rational(t) else {
                 return Err(fail(
                     path,
                     format!(
@@ -235,21 +235,21 @@ fn zoh_of<K: Field>(
     StateSpace::new(exact(&ad)?, exact(&bd)?, exact(&c)?, exact(&d)?).map_err(e)
 }
 
-fn written<K: Field + 'static>(f: &SystemFile, s: &StateSpace<K>, dt: &Rational) -> String {
+fn written<K: GroundField>(f: &SystemFile, s: &StateSpace<K>, dt: &Rational) -> String {
     let mut file = f.clone();
     file.signals.dt = Some(dt.clone());
     written_plain(&file, s)
 }
 
-fn written_plain<K: Field + 'static>(f: &SystemFile, s: &StateSpace<K>) -> String {
+fn written_plain<K: GroundField>(f: &SystemFile, s: &StateSpace<K>) -> String {
     let mut signals = f.signals.clone();
     signals.states = None;
     crate::io::write::system_file_text(f.name.as_deref(), s, &symbols_of(s), &signals)
 }
 
-fn symbols_of<K: Field + 'static>(s: &StateSpace<K>) -> Vec<String> {
-    (s.field() as &dyn std::any::Any)
-        .downcast_ref::<crate::ratfunc::RatFuncField>()
+fn symbols_of<K: GroundField>(s: &StateSpace<K>) -> Vec<String> {
+    s.field()
+        .symbolic()
         .map(|k| k.vars().to_vec())
         .unwrap_or_default()
 }
@@ -271,7 +271,7 @@ fn finish(
 /// What a command does on a system with a sample time: `Some` when it is answered here
 /// (step, impulse, freqresp) or refused (continuous-time meaning), `None` when the command
 /// means the same in discrete time (structure, realizations, poles and zeros).
-pub fn on_sampled<K: Field + 'static>(
+pub fn on_sampled<K: GroundField>(
     cmd: &super::Command,
     f: &SystemFile,
     t: &TypedSystem<K>,
@@ -307,7 +307,7 @@ pub fn on_sampled<K: Field + 'static>(
 }
 
 /// Exact step/impulse sequences of a sampled system with float values for plots.
-fn sequence<K: Field + 'static>(
+fn sequence<K: GroundField>(
     f: &SystemFile,
     t: &TypedSystem<K>,
     path: &Path,

@@ -6,7 +6,7 @@
 use super::Failure;
 use super::float_cmds::{FloatAbcd, float_abcd, float_response_dt};
 use crate::field::{Field, Q, Rational, rational_to_f64};
-use crate::io::{SystemFile, TypedSystem, as_rational};
+use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::report::plot::bode::bode_svg_marked;
 use crate::report::plot::time::{TimePlot, time_response_svg};
 use crate::report::plot::{logspace, response_table};
@@ -81,8 +81,8 @@ pub struct Stairs<'a> {
 
 /// The exact final value $G(1)$ of a step response when the system is over $\mathbb{Q}$
 /// and asymptotically stable (decided exactly, $|z| < 1$), as floats for the dashed line.
-fn final_values<K: Field + 'static>(t: &TypedSystem<K>) -> Option<Vec<Vec<f64>>> {
-    let q: &TypedSystem<Q> = as_rational(t)?;
+fn final_values<K: GroundField>(t: &TypedSystem<K>) -> Option<Vec<Vec<f64>>> {
+    let q: &TypedSystem<Q> = K::rational(t)?;
     let st = stability_of(&q.ss.a, Domain::Discrete).ok()?;
     if st.verdict != Verdict::AsymptoticallyStable {
         return None;
@@ -98,7 +98,7 @@ fn final_values<K: Field + 'static>(t: &TypedSystem<K>) -> Option<Vec<Vec<f64>>>
 
 /// Writes the stairs SVG of a sampled step or impulse response (step: with the exact
 /// final value $G(1)$ dashed when the system is stable).
-pub fn stairs_file<K: Field + 'static>(
+pub fn stairs_file<K: GroundField>(
     t: &TypedSystem<K>,
     plot: &Stairs<'_>,
     out: &Path,

@@ -306,7 +306,7 @@ fn era_report<K: Field, T: FloatScalar>(
 }
 
 /// Float path beside the exact path.
-pub fn check<K: Field + 'static>(
+pub fn check<K: crate::io::GroundField>(
     t: &Typed<K>,
     path: &Path,
     extra: Vec<(String, bool, Report)>,

@@ -21,9 +21,10 @@
 //! disagreement makes `check` exit 3.
 
 use super::Failure;
-use crate::field::{Field, Q, QuadraticField};
+use crate::field::{Field, Q};
 use crate::float::{self, FloatScalar, Tol, Truth, to_dmatrix};
 use crate::io::TypedSystem as Typed;
+use crate::io::{GroundField, NumericField};
 use crate::matrix::Matrix;
 use crate::realization;
 use crate::report::{Report, Value};
@@ -197,28 +198,25 @@ fn count_item(exact: usize, real_form: usize, truth: float::Truth) -> (bool, Rep
 /// $\bar\mu$: from the components of the Jordan form of $A$ over $K$
 /// ([`crate::jordan::jordan_over`]), those of a factor $g$ and of $\bar g$
 /// (coefficients conjugated in $K$, compared exactly).
-fn real_form_spectrum<K: Field + 'static>(
+fn real_form_spectrum<K: NumericField>(
     a: &Matrix<K>,
     path: &Path,
 ) -> Result<Option<(Vec<ExactEigenvalue>, bool)>, Failure> {
-    let Some(q) = (a as &dyn std::any::Any).downcast_ref::<Matrix<QuadraticField>>() else {
-        return Ok(None);
-    };
-    let k = q.field();
-    if !num_traits::Signed::is_negative(k.d()) {
+    let k = a.field();
+    if k.is_real() {
         return Ok(None);
     }
-    let jf = crate::jordan::jordan_over(q).map_err(|e| fail(path, e))?;
-    let conj_of = |g: &crate::poly::Poly<QuadraticField>| {
-        let cs = g.coeffs().iter().map(|c| k.galois(c)).collect();
-        crate::poly::Poly::new(k.clone(), cs)
+    let jf = crate::jordan::jordan_over(a).map_err(|e| fail(path, e))?;
+    let conj_of = |g: &crate::poly::Poly<K>| {
+        let cs: Option<Vec<_>> = g.coeffs().iter().map(|c| k.conj(c)).collect();
+        cs.map(|cs| crate::poly::Poly::new(k.clone(), cs))
     };
     // the component whose factor is the conjugate of component c's, if any
     let partner: Vec<Option<usize>> = jf
         .components
         .iter()
         .map(|c| {
-            let gbar = conj_of(&c.factor);
+            let gbar = conj_of(&c.factor)?;
             jf.components.iter().position(|o| o.factor == gbar)
         })
         .collect();
@@ -248,27 +246,35 @@ fn real_form_spectrum<K: Field + 'static>(
     Ok(Some((out, jf.verified)))
 }
 
-/// The real form of a matrix over $\mathbb{Q}(i)$, exactly; `None` for another field.
-fn exact_real_form<K: Field + 'static>(a: &Matrix<K>) -> Option<Matrix<Q>> {
-    let q = (a as &dyn std::any::Any).downcast_ref::<Matrix<QuadraticField>>()?;
-    let k = q.field();
-    if *k.d() != num_bigint::BigInt::from(-1) {
-        return None;
-    }
-    let n = q.nrows();
+/// The real form of a matrix over $\mathbb{Q}(i)$, exactly (each entry $x + yi$ read off
+/// its [`Field::elem_value`]); `None` for another field.
+fn exact_real_form<K: Field>(a: &Matrix<K>) -> Option<Matrix<Q>> {
+    use crate::field::value::ElemValue;
+    let k = a.field();
+    let minus_one = num_bigint::BigInt::from(-1);
+    let parts = a
+        .as_slice()
+        .iter()
+        .map(|z| match k.elem_value(z)? {
+            ElemValue::Rational(x) => Some((x, crate::field::Rational::from_integer(0.into()))),
+            ElemValue::Quadratic { a, b, d } if d == minus_one => Some((a, b)),
+            _ => None,
+        })
+        .collect::<Option<Vec<_>>>()?;
+    let n = a.nrows();
     Some(Matrix::from_fn(Q, 2 * n, 2 * n, |i, j| {
-        let z = q.get(i % n, j % n);
+        let (x, y) = &parts[(i % n) * n + j % n];
         match (i < n, j < n) {
-            (true, true) | (false, false) => z.a.clone(),
-            (true, false) => -z.b.clone(),
-            (false, true) => z.b.clone(),
+            (true, true) | (false, false) => x.clone(),
+            (true, false) => -y.clone(),
+            (false, true) => y.clone(),
         }
     }))
 }
 
 /// The comparisons of `check` for a complex float image `[a, b, c, d]`, and the ones skipped
 /// with the reason.
-pub(crate) fn complex_items<K: Field + 'static>(
+pub(crate) fn complex_items<K: GroundField>(
     t: &Typed<K>,
     path: &Path,
     [a, b, c, d]: &[DMatrix<Complex<f64>>; 4],
@@ -318,7 +324,11 @@ pub(crate) fn complex_items<K: Field + 'static>(
     // imaginary quadratic field, the Jordan form of A over K and its conjugate's
     let compared = match exact_real_form(&t.a_raw) {
         Some(aq) => jordan_comparison(&aq, path)?,
-        None => match real_form_spectrum(&t.a_raw, path)? {
+        None => match K::numeric(t)
+            .map(|n| real_form_spectrum(&n.a_raw, path))
+            .transpose()?
+            .flatten()
+        {
             Some((exact, verified)) => {
                 let az = float::to_cmatrix(&t.a_raw).map_err(|e| fail(path, e))?;
                 let ar = FloatScalar::realify(&az);
@@ -355,35 +365,28 @@ pub const MAX_EXACT_RESPONSE_STATES: usize = 40;
 /// $K$ (a point where $sI - A$ is singular is left out), then its embedding compared with
 /// the float value at $\omega = r\sqrt{-d}$. Agreement: every entry within
 /// $10^{-6}(1 + \max|G|)$; `float_truth` is `true` within $10^{-10}(1 + \max|G|)$.
-fn response_item<K: Field + 'static>(
+fn response_item<K: GroundField>(
     t: &Typed<K>,
     [a, b, c, d]: [&DMatrix<Complex<f64>>; 4],
 ) -> Result<Item, String> {
-    use crate::field::Quadratic;
-    let Some(s) =
-        (&t.ss as &dyn std::any::Any).downcast_ref::<crate::system::StateSpace<QuadraticField>>()
-    else {
-        return Err("the exact response needs a quadratic field".into());
-    };
+    let s = &t.ss;
     let k = s.a.field();
-    if !num_traits::Signed::is_negative(k.d()) {
+    let Some(unit) = k.imaginary_generator() else {
         return Err("the imaginary axis meets a real field only at 0".into());
-    }
+    };
     let n = s.nstates();
     if n > MAX_EXACT_RESPONSE_STATES || s.ninputs() == 0 || s.noutputs() == 0 {
         return Err(format!(
             "evaluated for 1..{MAX_EXACT_RESPONSE_STATES} states with inputs and outputs"
         ));
     }
-    let root = num_traits::ToPrimitive::to_f64(&-k.d())
-        .unwrap_or(f64::NAN)
-        .sqrt();
+    let root = k.approx(&unit).map_or(f64::NAN, |z| z.1);
     let mut worst = 0.0f64;
     let mut scale = 0.0f64;
     let mut used = vec![];
     for (num, den) in [(-3, 1), (-1, 2), (1, 3), (2, 1), (5, 1)] {
         let r = crate::field::Rational::new(num.into(), den.into());
-        let sk = Quadratic::new(crate::field::Rational::from_integer(0.into()), r.clone());
+        let sk = k.mul(&k.from_rational(&r), &unit);
         let m = Matrix::from_fn(k.clone(), n, n, |i, j| {
             let x = k.neg(s.a.get(i, j));
             if i == j { k.add(&x, &sk) } else { x }
@@ -397,7 +400,7 @@ fn response_item<K: Field + 'static>(
         };
         for i in 0..g.nrows() {
             for j in 0..g.ncols() {
-                let (re, im) = k.approx(g.get(i, j));
+                let (re, im) = k.approx(g.get(i, j)).unwrap_or((f64::NAN, f64::NAN));
                 let e = Complex::new(re, im);
                 scale = scale.max(e.norm());
                 worst = worst.max((fr[0][(i, j)] - e).norm());

@@ -10,8 +10,6 @@ use crate::field::Field;
 use crate::io::combine::{SystemsVisitor, common_field};
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{InputError, TypedSystem};
-use crate::ratfunc::RatFuncField;
-use crate::realization::SystemField;
 use crate::realization::{MinrealMethod, minimal};
 use crate::report::sections::{PartInfo, interconnection_report};
 use crate::system::interconnect::{Interconnection, Operation, Sign, verify};
@@ -274,7 +272,7 @@ struct Connect<'a> {
 
 impl SystemsVisitor for Connect<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: SystemField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+    fn visit<K: crate::io::GroundField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
         let what = format!("{} {}", self.op.name(), self.names.join(" "));
         let e = |err| with_path(Path::new(&what), err);
         let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();
@@ -286,8 +284,9 @@ impl SystemsVisitor for Connect<'_> {
             None
         };
         // over Q(p): the conditions of the result, before the check evaluates at points
-        let symbols = (sys.field() as &dyn std::any::Any)
-            .downcast_ref::<RatFuncField>()
+        let symbols = sys
+            .field()
+            .symbolic()
             .map(|k| (k.vars().to_vec(), k.conditions_strings()));
         let verified = verify(&conn, &sys);
         let info: Vec<PartInfo> = self
@@ -366,7 +365,7 @@ struct Build<'a> {
 
 impl SystemsVisitor for Build<'_> {
     type Output = Result<super::System, Failure>;
-    fn visit<K: SystemField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
+    fn visit<K: crate::io::GroundField>(self, systems: &[TypedSystem<K>]) -> Self::Output {
         let e = |err| with_path(Path::new(self.name), err);
         let parts: Vec<_> = systems.iter().map(|t| t.ss.clone()).collect();
         let conn = Interconnection::of(self.op, &parts).map_err(e)?;
@@ -382,8 +381,6 @@ impl SystemsVisitor for Build<'_> {
             a_raw: ss.a.clone(),
             ss,
         };
-        super::System::from_field(self.name, typed).ok_or_else(|| {
-            Failure::verification(format!("{}: internal: an unknown field", self.name))
-        })
+        Ok(super::System::from_ground(self.name, typed))
     }
 }

@@ -26,6 +26,7 @@ mod discrete_plots;
 mod float_cmds;
 mod float_compare;
 mod freqresp_cmd;
+mod ground;
 mod interconnect;
 pub mod jordan_values;
 mod linalg;
@@ -44,6 +45,7 @@ mod system;
 mod toolbox;
 pub mod transfer;
 
+pub use crate::io::{GroundField, NumericField};
 pub use args::{LinalgOp, MethodArg, PolyCmd, TimeOpts};
 pub use bifurcations::Of;
 /// One command run in-process (no output, no time bound): the report and its status.

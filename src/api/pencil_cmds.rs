@@ -6,7 +6,7 @@ use super::common::with_path;
 use super::{Command, Failure, Outcome};
 use crate::field::{Field, Q, QuadraticField};
 use crate::io::load_descriptor::{DescriptorVisitor, LoadedDescriptor, load_descriptor_path};
-use crate::io::{SystemFile, TypedSystem};
+use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::matrix::Matrix;
 use crate::pencil::{kronecker_structure, pencil_structure};
 use crate::realization::{
@@ -40,7 +40,7 @@ pub fn handles(cmd: &Command, file: Option<&SystemFile>) -> bool {
 
 /// Runs a command of [`handles`] on a system already read (with `--at` values): the
 /// descriptor `E x' = A x + B u` as given, or `E = I`.
-pub fn execute_typed<K: Field + 'static>(
+pub fn execute_typed<K: GroundField>(
     cmd: &Command,
     path: &Path,
     f: &SystemFile,
@@ -137,7 +137,7 @@ struct Run<'a> {
 
 impl DescriptorVisitor for Run<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: Field + 'static>(self, l: &LoadedDescriptor, s: &Descriptor<K>) -> Self::Output {
+    fn visit<K: GroundField>(self, l: &LoadedDescriptor, s: &Descriptor<K>) -> Self::Output {
         run_on(
             self.cmd,
             self.path,
@@ -150,7 +150,7 @@ impl DescriptorVisitor for Run<'_> {
 
 /// One command on a descriptor system; `has_e`: the file gave `E`; `signals`: the file's
 /// names of inputs and outputs; `transfer`: the file's `G` and its realization.
-fn run_on<K: Field + 'static>(
+fn run_on<K: GroundField>(
     cmd: &Command,
     path: &Path,
     (has_e, signals): (bool, &crate::io::SignalNames),
@@ -162,7 +162,7 @@ fn run_on<K: Field + 'static>(
         let domain = Domain::of(signals.dt.as_ref());
         match cmd {
             Command::Pencil { .. } => {
-                if let Some(sq) = (s as &dyn Any).downcast_ref::<Descriptor<Q>>() {
+                if let Some(sq) = K::rational_descriptor(s) {
                     let ps = pencil_structure(&sq.a, &sq.e).map_err(e)?;
                     Ok(Outcome::new(sections::pencil_report(&ps), ps.verified))
                 } else {
@@ -231,7 +231,7 @@ fn run_on<K: Field + 'static>(
                     let ok = matches!(rep.get("verified"), Some(crate::report::Value::Bool(true)));
                     return Ok(Outcome::new(rep, ok));
                 }
-                let Some(sq) = (s as &dyn Any).downcast_ref::<Descriptor<Q>>() else {
+                let Some(sq) = K::rational_descriptor(s) else {
                     return Err(Failure::unsupported(format!(
                         "{}: tf: only rational and quadratic-field systems are supported",
                         path.display()

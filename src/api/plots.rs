@@ -8,7 +8,7 @@ use super::Failure;
 use super::common::with_path;
 use crate::field::Field;
 use crate::float::{self, FloatScalar, to_cmatrix, to_dmatrix};
-use crate::io::{SystemFile, TypedSystem, as_rational};
+use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::jordan::EigenField;
 use crate::report::plot::bode::{bode_svg, bode_svg_two_sided};
 use crate::report::plot::pzmap::{Point, pzmap_svg};
@@ -282,7 +282,7 @@ fn point_items(xs: &[Root]) -> Vec<Value> {
 /// `pzmap`: the poles (eigenvalues of `A`) and the invariant zeros, exact over Q, Q(sqrt d)
 /// and Q(i) (certified algebraic numbers; over a non-real field the roots of `A`'s own
 /// factors, not of its conjugate's), float otherwise; `--svg` draws the map.
-pub fn pzmap<K: Field + 'static>(
+pub fn pzmap<K: GroundField>(
     f: &SystemFile,
     t: &TypedSystem<K>,
     path: &Path,
@@ -290,12 +290,9 @@ pub fn pzmap<K: Field + 'static>(
 ) -> Result<Report, Failure> {
     let e = |err| with_path(path, err);
     let s = &t.ss;
-    let quadratic = (s as &dyn std::any::Any)
-        .downcast_ref::<crate::system::StateSpace<crate::field::QuadraticField>>();
-    let exact = match (as_rational(t), quadratic) {
-        (Some(q), _) => Some(exact_poles_zeros(&q.ss).map_err(e)?),
-        (None, Some(k)) => Some(exact_poles_zeros(k).map_err(e)?),
-        (None, None) => None,
+    let exact = match K::numeric(t) {
+        Some(n) => Some(exact_poles_zeros(&n.ss).map_err(e)?),
+        None => None,
     };
     let (poles, zeros, exact) = match exact {
         Some((p, z)) => (p, z, true),
@@ -358,7 +355,7 @@ pub const MAX_TIME_VALUES: usize = 1_000_000;
 /// `step` / `impulse`: the response of every channel on an even time grid; from the exact
 /// closed form (Jordan form of `A`) over Q, with the float matrix-exponential recursion
 /// beside it (`float_max_difference`); float only otherwise or with `--float`.
-pub fn time_response<K: Field + 'static>(
+pub fn time_response<K: GroundField>(
     f: &SystemFile,
     t: &TypedSystem<K>,
     path: &Path,
@@ -424,7 +421,7 @@ pub fn time_response<K: Field + 'static>(
         }
         Mats::Real(m) => (float_time(m, args.impulse, &times).map_err(e)?, None),
     };
-    let exact = match as_rational(t) {
+    let exact = match K::rational(t) {
         Some(q) if !args.float_only => Some(ClosedFormResponse::new(&q.ss).map_err(e)?),
         _ => None,
     };

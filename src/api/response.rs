@@ -1,5 +1,7 @@
 //! `response FILE --x0 ...` (the free response $x(t) = e^{At} x_0$ in closed form, exact over
-//! $\mathbb{Q}$ and in symbols over $\mathbb{Q}(p)$) and `contributions FILE [--keep K]` (the
+//! every numeric field ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$: `--x0` in the
+//! system's field, `--times` the exact terms embedded by the field's `approx`, with the
+//! imaginary parts when $A$ or $x_0$ is not real) and in symbols over $\mathbb{Q}(p)$) and `contributions FILE [--keep K]` (the
 //! modes ranked by contribution, minimal-realizations paper eq. 33, and the truncation with
 //! its exact error): thin wrappers over [`crate::jordan::StateResponse`],
 //! [`crate::jordan::JordanForm::free_response`] over [`crate::jordan::jordan_qp`] and
@@ -11,16 +13,15 @@
 //! its own eq. 37a, give $-r_0 u t^2/2$: a sign slip in eq. 36.)
 
 use super::common::with_path;
+use super::ground::numeric;
 use super::{Failure, Outcome};
-use crate::field::{ElemDisplay, QuadraticField};
-use crate::field::{Field, Q, parse_rational};
-use crate::io::{SystemFile, TypedSystem, as_rational};
-use crate::jordan::jordan;
+use crate::field::ElemDisplay;
+use crate::io::{GroundField, NumericField, SystemFile, TypedSystem};
+use crate::jordan::jordan_over;
 use crate::jordan::jordan_qp;
-use crate::jordan::{EigenField, jordan_over};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFuncField;
-use crate::realization::contribution::{contributions, contributions_in, contributions_qp};
+use crate::realization::contribution::{contributions_in, contributions_qp};
 use crate::report::sections::response as rep;
 use clap::Subcommand;
 use std::path::{Path, PathBuf};
@@ -34,11 +35,12 @@ pub enum ResponseCmd {
     Response {
         /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
-        /// Initial state: n comma-separated exact numbers (`1, 0, -1/2`), or expressions in the
+        /// Initial state: n comma-separated exact numbers of the system's field (`1, 0, -1/2`;
+        /// `1 + sqrt(2)`, `i` over Q(sqrt 2), Q(i)), or expressions in the
         /// file's parameters and new symbols (`y0, psi0, v0, r0`: the response in symbols).
         #[arg(long, value_name = "X0", allow_hyphen_values = true)]
         x0: String,
-        /// Also evaluate x(t) (float) at these times in seconds (`0,0.5,1`; exact x0 over Q).
+        /// Also evaluate x(t) (float) at these times in seconds (`0,0.5,1`; x0 in numbers).
         #[arg(long, value_name = "T1,T2,...")]
         times: Option<String>,
     },
@@ -113,30 +115,30 @@ fn times(text: Option<&str>) -> Result<Vec<f64>, Failure> {
         .collect()
 }
 
-/// Runs a response command on a system over an exact field without symbols.
-pub(super) fn run<K: Field + 'static>(
+/// Runs a response command on a system over an exact field without symbols: the one
+/// computation over the system's numeric field ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
+/// $\mathbb{Q}(i)$); `--x0` in that field, or with symbols of its own (over $\mathbb{Q}$:
+/// the response in symbols).
+pub(super) fn run<K: GroundField>(
     cmd: &ResponseCmd,
-    f: &SystemFile,
+    _f: &SystemFile,
     t: &TypedSystem<K>,
     path: &Path,
 ) -> Result<Outcome, Failure> {
+    let t = numeric(t, cmd.name(), path)?;
+    run_over(cmd, &t.ss, path)
+}
+
+fn run_over<F: NumericField>(
+    cmd: &ResponseCmd,
+    ss: &crate::system::StateSpace<F>,
+    path: &Path,
+) -> Result<Outcome, Failure> {
     let e = |err| with_path(path, err);
-    let Some(q) = as_rational(t) else {
-        // Q(sqrt d), Q(i): the same computation over the file's field
-        let Some(t) = (t as &dyn std::any::Any).downcast_ref::<TypedSystem<QuadraticField>>()
-        else {
-            return Err(Failure::input(format!(
-                "{}: `{}` needs rational or quadratic matrices; this file's entries lie in {}",
-                f.path,
-                cmd.name(),
-                f.ground
-            )));
-        };
-        return run_over(cmd, &t.ss, path);
-    };
+    let k = ss.field();
     match cmd {
         ResponseCmd::Contributions { keep, .. } => {
-            let c = contributions(&q.ss).map_err(e)?;
+            let c = contributions_in(ss, jordan_over(&ss.a).map_err(e)?).map_err(e)?;
             let tr = match keep {
                 Some(k) => Some(c.truncate(*k).map_err(e)?),
                 None => None,
@@ -146,26 +148,33 @@ pub(super) fn run<K: Field + 'static>(
             Ok(Outcome::new(r, ok))
         }
         ResponseCmd::Response { x0, times: ts, .. } => {
-            let n = q.ss.a.nrows();
+            let n = ss.nstates();
             let xs = entries(x0, n, path)?;
-            if !symbols(&xs)?.is_empty() {
-                let a: Vec<String> = q.ss.a.as_slice().iter().map(|x| x.to_string()).collect();
+            // symbols of its own (not `i`, `sqrt`): the response in symbols
+            let reserved = crate::field::expr::lex::reserved_meaning;
+            let own = symbols(&xs).is_ok_and(|s| s.iter().any(|s| reserved(s).is_none()));
+            if own {
+                let a: Vec<String> = ss.a.as_slice().iter().map(|x| k.fmt_elem(x)).collect();
                 return symbolic_response(&[], (n, a), &xs, path);
             }
-            let vals: Result<Vec<_>, _> = xs
-                .iter()
-                .map(|x| {
-                    parse_rational(x)
-                        .map_err(|m| Failure::input(format!("--x0 entry \"{x}\": {m}")))
-                })
-                .collect();
-            let x0m = Matrix::column(Q, vals?);
-            let jf = jordan(&q.ss.a).map_err(e)?;
+            let x0m = x0_column(k, &xs)?;
+            let jf = jordan_over(&ss.a).map_err(e)?;
             let sr = jf.free_response().from_state(&x0m);
             let ok = jf.verified && sr.verify(&jf, &x0m);
-            let values: Vec<(f64, Vec<f64>)> = times(ts.as_deref())?
+            // real when A and x0 equal their conjugates (exactly): then x(t) is real
+            let real =
+                ss.a.as_slice()
+                    .iter()
+                    .chain(x0m.as_slice())
+                    .all(|x| k.conj(x).as_ref() == Some(x));
+            let values: Vec<rep::TimeValue> = times(ts.as_deref())?
                 .into_iter()
-                .map(|t| (t, sr.evaluate(&jf, t)))
+                .map(|t| {
+                    let z = sr.evaluate_complex(&jf, t);
+                    let re = z.iter().map(|z| z.re).collect();
+                    let im = (!real).then(|| z.iter().map(|z| z.im).collect());
+                    (t, re, im)
+                })
                 .collect();
             Ok(Outcome::new(
                 rep::state_response_report(&jf, &sr, &x0m, &values, ok),
@@ -175,58 +184,13 @@ pub(super) fn run<K: Field + 'static>(
     }
 }
 
-/// A response command over a field with an exact Jordan form other than $\mathbb{Q}$
-/// ($\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$): the generic computation; `--x0` in exact
-/// rational numbers, `--times` refused (its evaluation is written for $\mathbb{Q}$).
-fn run_over<F: EigenField>(
-    cmd: &ResponseCmd,
-    ss: &crate::system::StateSpace<F>,
-    path: &Path,
-) -> Result<Outcome, Failure> {
-    let e = |err| with_path(path, err);
-    let jf = jordan_over(&ss.a).map_err(e)?;
-    match cmd {
-        ResponseCmd::Contributions { keep, .. } => {
-            let c = contributions_in(ss, jf).map_err(e)?;
-            let tr = match keep {
-                Some(k) => Some(c.truncate(*k).map_err(e)?),
-                None => None,
-            };
-            let ok = c.verified && tr.as_ref().is_none_or(|t| t.verified);
-            Ok(Outcome::new(rep::contributions_report(&c, tr.as_ref()), ok))
-        }
-        ResponseCmd::Response { x0, times: ts, .. } => {
-            if ts.is_some() {
-                return Err(Failure::unsupported(format!(
-                    "{}: --times evaluates the response over QQ; this system's entries lie in {}",
-                    path.display(),
-                    ss.field()
-                )));
-            }
-            let x0m = rational_x0(x0, ss.nstates(), path, ss.field())?;
-            let sr = jf.free_response().from_state(&x0m);
-            let ok = jf.verified && sr.verify(&jf, &x0m);
-            Ok(Outcome::new(
-                rep::state_response_report(&jf, &sr, &x0m, &[], ok),
-                ok,
-            ))
-        }
-    }
-}
-
-/// `--x0` of exact rational numbers as a column over `k`.
-pub(super) fn rational_x0<F: Field>(
-    text: &str,
-    n: usize,
-    path: &Path,
-    k: &F,
-) -> Result<Matrix<F>, Failure> {
-    let xs = entries(text, n, path)?;
+/// The entries of `--x0` as a column over `k`, each read in the field
+/// ([`GroundField::parse_elem`]).
+fn x0_column<K: GroundField>(k: &K, xs: &[String]) -> Result<Matrix<K>, Failure> {
     let vals = xs
         .iter()
         .map(|x| {
-            parse_rational(x)
-                .map(|q| k.from_rational(&q))
+            k.parse_elem(x)
                 .map_err(|m| Failure::input(format!("--x0 entry \"{x}\": {m}")))
         })
         .collect::<Result<Vec<_>, _>>()?;

@@ -18,9 +18,9 @@ use super::{Command, Failure, Format, MethodArg, Outcome};
 use crate::algebraic::NumberField;
 use crate::field::Field;
 use crate::field::Q;
-use crate::io::TypedAny;
 use crate::io::TypedSystem;
 use crate::io::symbolic::SymbolicOptions;
+use crate::io::{GroundField, TypedAny};
 use crate::jordan::derivation::{AssumptionLog, Derivation, Method, Recorder, ratfunc_log};
 use crate::jordan::normalize::Normalization;
 use crate::jordan::real_steps::lift_derivation;
@@ -319,7 +319,7 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             out.show(&d.map_err(e)?)
         }
         (TypedAny::Rational(t), What::Response) if !descriptor => {
-            let x0 = exact_x0(cmd, t.ss.nstates())?;
+            let x0 = x0_column(cmd, t.ss.field(), t.ss.nstates())?;
             let d = crate::realization::contribution_steps::response_steps(&t.ss.a, &x0);
             out.show(&d.map_err(e)?)
         }
@@ -329,8 +329,7 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             out.show(&d.map_err(e)?)
         }
         (TypedAny::Quadratic(t), What::Response) if !descriptor => {
-            let x0 =
-                exact_x0(cmd, t.ss.nstates())?.map(t.ss.field(), |q| t.ss.field().from_rational(q));
+            let x0 = x0_column(cmd, t.ss.field(), t.ss.nstates())?;
             let jf = crate::jordan::jordan_over(&t.ss.a).map_err(e)?;
             out.show(&crate::realization::contribution_steps::response_steps_in(
                 &jf, &x0,
@@ -341,7 +340,7 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
             out.show(&d.map_err(e)?)
         }
         (TypedAny::RatFunc(t), What::Response) if !descriptor => {
-            let x0 = x0_in(cmd, t.ss.field(), t.ss.nstates())?;
+            let x0 = x0_column(cmd, t.ss.field(), t.ss.nstates())?;
             let d = crate::realization::contribution_steps::response_steps_qp(&t.ss.a, &x0);
             out.show(&d.map_err(e)?)
         }
@@ -409,38 +408,15 @@ fn derive<S: Sink>(cmd: &Command, sys: &super::System, out: &S) -> Result<S::Out
     }
 }
 
-/// The exact initial state of `response --x0` ($n$ rational entries).
-fn exact_x0(cmd: &Command, n: usize) -> Result<crate::matrix::Matrix<Q>, Failure> {
-    let Command::Response(super::ResponseCmd::Response { x0, .. }) = cmd else {
-        return Err(Failure::input("internal: not `response`".to_string()));
-    };
-    let xs: Vec<&str> = x0.split(',').map(str::trim).collect();
-    if xs.len() != n {
-        return Err(Failure::input(format!(
-            "--x0 needs {n} comma-separated entries (the state has {n}), got {}",
-            xs.len()
-        )));
-    }
-    let vals = xs
-        .iter()
-        .map(|x| {
-            crate::field::parse_rational(x).map_err(|m| {
-                Failure::unsupported(format!(
-                    "--x0 entry \"{x}\": {m} (--steps derives from exact numbers; the response in symbols is `response` without --steps)"
-                ))
-            })
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(crate::matrix::Matrix::column(Q, vals))
-}
-
-/// `--x0` over $\mathbb{Q}(p)$: each entry an expression in the file's parameters (a symbol of
-/// its own needs `response` without --steps, which adds it to the field).
-fn x0_in(
+/// The initial state of `response --x0 --steps`: $n$ entries, each an element of the
+/// system's field `k` ([`GroundField::parse_elem`]: rational numbers over $\mathbb{Q}$,
+/// radicals and `i` over $\mathbb{Q}(\sqrt d)$, expressions in the file's parameters over
+/// $\mathbb{Q}(p)$).
+fn x0_column<K: GroundField>(
     cmd: &Command,
-    k: &crate::ratfunc::RatFuncField,
+    k: &K,
     n: usize,
-) -> Result<crate::matrix::Matrix<crate::ratfunc::RatFuncField>, Failure> {
+) -> Result<crate::matrix::Matrix<K>, Failure> {
     let Command::Response(super::ResponseCmd::Response { x0, .. }) = cmd else {
         return Err(Failure::input("internal: not `response`".to_string()));
     };
@@ -451,14 +427,17 @@ fn x0_in(
             xs.len()
         )));
     }
+    let hint = match k.symbolic() {
+        Some(_) => format!(
+            "--steps reads --x0 in the file's parameters {k}; new symbols: `response` without --steps"
+        ),
+        None => "--steps derives from exact numbers; the response in symbols is `response` without --steps".to_string(),
+    };
     let vals = xs
         .iter()
         .map(|x| {
-            k.parse(x).map_err(|m| {
-                Failure::unsupported(format!(
-                    "--x0 entry \"{x}\": {m} (--steps reads --x0 in the file's parameters {k}; new symbols: `response` without --steps)"
-                ))
-            })
+            k.parse_elem(x)
+                .map_err(|m| Failure::unsupported(format!("--x0 entry \"{x}\": {m} ({hint})")))
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(crate::matrix::Matrix::column(k.clone(), vals))
@@ -511,28 +490,24 @@ fn descriptor_file(file: &Path, out: &Render) -> Option<Result<Outcome, Failure>
     struct Visit<'a>(&'a Path, &'a Render);
     impl crate::io::load_descriptor::DescriptorVisitor for Visit<'_> {
         type Output = Result<Outcome, Failure>;
-        fn visit<K: Field + 'static>(
+        fn visit<K: GroundField>(
             self,
             _: &crate::io::load_descriptor::LoadedDescriptor,
             s: &Descriptor<K>,
         ) -> Self::Output {
             let e = |err| super::common::with_path(self.0, err);
-            let any = s as &dyn std::any::Any;
-            if let Some(r) = any.downcast_ref::<Descriptor<crate::ratfunc::RatFuncField>>() {
-                // a fresh field: its conditions are the ones this derivation assumes
-                let k = r.a.field().fresh();
-                let m = |x: &crate::matrix::Matrix<_>| {
-                    crate::matrix::Matrix::from_vec(
-                        k.clone(),
-                        x.nrows(),
-                        x.ncols(),
-                        x.as_slice().to_vec(),
-                    )
-                };
-                let d = Descriptor::new(m(&r.e), m(&r.a), m(&r.b), m(&r.c), m(&r.d)).map_err(e)?;
-                return self.1.show(&der(&d, Some(ratfunc_log(&k))).map_err(e)?);
-            }
-            self.1.show(&der(s, None).map_err(e)?)
+            // a fresh field (over Q(p): its conditions are the ones this derivation assumes)
+            let k = s.a.field().fresh();
+            let m = |x: &crate::matrix::Matrix<K>| {
+                crate::matrix::Matrix::from_vec(
+                    k.clone(),
+                    x.nrows(),
+                    x.ncols(),
+                    x.as_slice().to_vec(),
+                )
+            };
+            let d = Descriptor::new(m(&s.e), m(&s.a), m(&s.b), m(&s.c), m(&s.d)).map_err(e)?;
+            self.1.show(&der(&d, k.assumption_log()).map_err(e)?)
         }
     }
     fn der<K: Field>(

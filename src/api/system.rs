@@ -15,13 +15,13 @@
 //! ```
 //! use exactlti::api::{Options, System, SystemVisitor};
 //! use exactlti::field::Field;
-//! use exactlti::realization::SystemField;
+//! use exactlti::api::GroundField;
 //! use exactlti::io::{SystemFile, SystemFormat, TypedSystem};
 //!
 //! struct Order;
 //! impl SystemVisitor for Order {
 //!     type Output = (usize, String);
-//!     fn visit<K: SystemField>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
+//!     fn visit<K: GroundField>(self, _f: &SystemFile, t: &TypedSystem<K>) -> Self::Output {
 //!         (t.ss.nstates(), t.ss.a.field().to_string())
 //!     }
 //! }
@@ -34,13 +34,13 @@
 //! ```
 
 use crate::field::Field;
+use crate::io::GroundField;
 use crate::io::symbolic::{declares_symbols, load_symbolic_str};
 use crate::io::{
     Ground, InputError, LoadedSystem, SystemFile, SystemFormat, TypedAny, TypedSystem,
     load_system_str,
 };
 use crate::ratfunc::RatFuncField;
-use crate::realization::SystemField;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -72,7 +72,7 @@ struct Source {
 pub trait SystemVisitor: Sized {
     type Output;
     /// Runs on the system over its concrete field.
-    fn visit<K: SystemField>(self, file: &SystemFile, sys: &TypedSystem<K>) -> Self::Output;
+    fn visit<K: GroundField>(self, file: &SystemFile, sys: &TypedSystem<K>) -> Self::Output;
     /// Runs on a system over $\mathbb{Q}(p_1, \dots, p_k)$ (default: as [`Self::visit`]).
     fn visit_symbolic(self, file: &SystemFile, sys: &TypedSystem<RatFuncField>) -> Self::Output {
         self.visit(file, sys)
@@ -206,6 +206,12 @@ impl System {
             },
         };
         Some(Self::from_typed(name, any))
+    }
+
+    /// A system given by its matrices over a ground field of the crate (the field's own
+    /// [`GroundField::into_any`]: no type probing).
+    pub fn from_ground<K: GroundField>(name: &str, system: TypedSystem<K>) -> Self {
+        Self::from_typed(name, K::into_any(system))
     }
 
     /// The built-in example of `analyze` without a file (sliding masses).

@@ -7,11 +7,12 @@
 //! [`crate::report::sections`].
 
 use super::common::with_path;
+use super::ground::numeric;
 use super::{Failure, Outcome};
-use crate::field::{Field, QuadraticField};
+use crate::field::Field;
 use crate::float::stepinfo::step_info;
 use crate::float::{self, to_dmatrix};
-use crate::io::{SystemFile, TypedSystem, as_rational};
+use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::realization::{self, GramType};
 use crate::report::sections;
 use crate::system::time_response::{default_horizon, default_points, time_grid};
@@ -96,7 +97,7 @@ fn bad(path: &Path, what: String) -> Failure {
 }
 
 /// Runs a toolbox command on a system over its exact field.
-pub(super) fn run<K: Field + 'static>(
+pub(super) fn run<K: GroundField>(
     cmd: &ToolboxCmd,
     f: &SystemFile,
     t: &TypedSystem<K>,
@@ -114,34 +115,17 @@ pub(super) fn run<K: Field + 'static>(
     };
     match cmd {
         ToolboxCmd::Margin { .. } => {
-            use crate::system::margins::margins;
-            let (report, verified) = if let Some(q) = as_rational(t) {
-                let m = margins(&q.ss).map_err(e)?;
-                (sections::margins_report(&m), m.verified)
-            } else if let Some(s) = (&t.ss as &dyn std::any::Any)
-                .downcast_ref::<crate::system::StateSpace<QuadraticField>>()
-            {
-                let m = margins(s).map_err(e)?;
-                (sections::margins_report(&m), m.verified)
-            } else {
-                return Err(needs_q("`margin`"));
-            };
-            Ok(Outcome::new(report, verified))
+            let t = numeric(t, "margin", path)?;
+            let m = crate::system::margins::margins(&t.ss).map_err(e)?;
+            Ok(Outcome::new(sections::margins_report(&m), m.verified))
         }
         ToolboxCmd::Damp { .. } => {
-            let rows = if let Some(q) = as_rational(t) {
-                realization::damp(&q.ss.a).map_err(e)?
-            } else if let Some(a) = (&t.ss.a as &dyn std::any::Any)
-                .downcast_ref::<crate::matrix::Matrix<QuadraticField>>()
-            {
-                realization::damp_over(a).map_err(e)?
-            } else {
-                return Err(needs_q("`damp`"));
-            };
+            let t = numeric(t, "damp", path)?;
+            let rows = realization::damp_over(&t.ss.a).map_err(e)?;
             Ok(Outcome::plain(sections::damp_report(&rows)))
         }
         ToolboxCmd::Gram { kind, .. } => {
-            let q = as_rational(t).ok_or_else(|| needs_q("`gram`"))?;
+            let q = K::rational(t).ok_or_else(|| needs_q("`gram`"))?;
             let kind = match kind {
                 GramArg::C => GramType::Controllability,
                 GramArg::O => GramType::Observability,

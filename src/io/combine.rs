@@ -12,7 +12,6 @@ use super::raw::{Raw, from_json_text, from_toml_text};
 use super::{Ground, InputError, SystemFormat};
 use crate::field::{Field, Q, QuadraticField};
 use crate::ratfunc::RatFuncField;
-use crate::realization::SystemField;
 
 /// Systems over one common field.
 #[derive(Clone, Debug)]
@@ -26,7 +25,7 @@ pub enum CommonSystems {
 /// Work on several systems, written once for every field `K`.
 pub trait SystemsVisitor {
     type Output;
-    fn visit<K: SystemField>(self, systems: &[TypedSystem<K>]) -> Self::Output;
+    fn visit<K: super::GroundField>(self, systems: &[TypedSystem<K>]) -> Self::Output;
 }
 
 impl CommonSystems {

@@ -11,7 +11,7 @@
 
 use super::transfer_key::realize_g;
 use super::{FromScalars, Ground, InputError, SystemFile};
-use crate::field::{Field, Q, QuadraticField};
+use crate::field::{Q, QuadraticField};
 use crate::matrix::Matrix;
 use crate::realization::{Realize, TransferRealization};
 use crate::system::Descriptor;
@@ -45,7 +45,7 @@ pub struct LoadedDescriptor {
 /// Work on a loaded descriptor system, generic over the field.
 pub trait DescriptorVisitor {
     type Output;
-    fn visit<K: Field + 'static>(
+    fn visit<K: super::GroundField>(
         self,
         loaded: &LoadedDescriptor,
         sys: &Descriptor<K>,

@@ -31,6 +31,7 @@
 
 pub(crate) mod combine;
 pub(crate) mod expr;
+pub mod ground;
 pub(crate) mod keys;
 pub(crate) mod load;
 pub mod load_descriptor;
@@ -51,6 +52,7 @@ mod value;
 pub(crate) mod write;
 
 pub use expr::eval_expr;
+pub use ground::{GroundField, NumericField};
 pub use keys::SignalNames;
 pub use load::{
     FromScalars, LoadedSystem, SystemFormat, TypedAny, TypedSystem, as_rational, load_model_str,

@@ -250,9 +250,10 @@ impl<F: EigenField> StateResponse<Ext<F>> {
     }
 }
 
-impl StateResponse {
-    /// Floating-point value of $x(t)$ (the sum over every root of every component).
-    pub fn evaluate(&self, jf: &JordanForm, t: f64) -> Vec<f64> {
+impl<F: Field + 'static> StateResponse<Ext<F>> {
+    /// Floating-point value of $x(t)$ (the sum over every root of every component), complex:
+    /// each exact $g$ embedded at its root by the field's [`Field::approx`].
+    pub fn evaluate_complex(&self, jf: &JordanForm<F>, t: f64) -> Vec<Complex64> {
         let n = jf.n();
         let mut x = vec![Complex64::zero(); n];
         for (ci, power, g) in &self.terms {
@@ -266,7 +267,15 @@ impl StateResponse {
                 }
             }
         }
-        x.into_iter().map(|z| z.re).collect()
+        x
+    }
+    /// Floating-point value of $x(t)$ for a real system (the real parts of
+    /// [`Self::evaluate_complex`]).
+    pub fn evaluate(&self, jf: &JordanForm<F>, t: f64) -> Vec<f64> {
+        self.evaluate_complex(jf, t)
+            .into_iter()
+            .map(|z| z.re)
+            .collect()
     }
 }
 

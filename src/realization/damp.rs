@@ -47,9 +47,9 @@ pub fn damp(a: &Matrix<Q>) -> Result<Vec<DampRow>> {
         .collect())
 }
 
-/// The damping table of `a` over any field with exact eigenvalues ($\mathbb{Q}(i)$,
-/// $\mathbb{Q}(\sqrt d)$, ...): the roots of each irreducible factor of det(sI - A) over the
-/// field, never those of the conjugate.
+/// The damping table of `a` over any field with exact eigenvalues ($\mathbb{Q}$,
+/// $\mathbb{Q}(i)$, $\mathbb{Q}(\sqrt d)$, ...): the roots of each irreducible factor of
+/// det(sI - A) over the field, never those of the conjugate, in the order of [`damp`].
 ///
 /// # Errors
 /// `NotSquare`; as [`crate::jordan::EigenField::eigen_factors`].
@@ -62,6 +62,8 @@ pub fn damp_over<F: crate::jordan::EigenField>(a: &Matrix<F>) -> Result<Vec<Damp
             out.push(row(&lam, z, mult));
         }
     }
+    // the order of [`damp`] over every field (real ascending, then complex)
+    out.sort_by(|x, y| crate::algebraic::number::cmp_complex(&x.pole, &y.pole));
     Ok(out)
 }
 

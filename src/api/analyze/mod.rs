@@ -17,8 +17,8 @@ mod runner;
 use super::budget::{Budget, Events};
 use super::{Failure, Outcome};
 use crate::error::Error;
-use crate::field::{Field, QuadraticField};
-use crate::io::{SystemFile, TypedSystem, as_rational};
+use crate::field::Field;
+use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::realization;
 use crate::report::{Report, Value, str_list};
 use eigen::eigen_sections;
@@ -95,12 +95,12 @@ fn realization_section<K: Field>(t: &TypedSystem<K>) -> Result<(bool, Report), E
 }
 
 /// The whole analysis with the default budgets and nothing streamed.
-pub fn analyze<K: Field + 'static>(f: &SystemFile, t: &TypedSystem<K>) -> Result<Outcome, Failure> {
+pub fn analyze<K: GroundField>(f: &SystemFile, t: &TypedSystem<K>) -> Result<Outcome, Failure> {
     analyze_with(f, t, &AnalyzeOptions::default())
 }
 
 /// The whole analysis; `verified` is the conjunction of every exact check made.
-pub fn analyze_with<K: Field + 'static>(
+pub fn analyze_with<K: GroundField>(
     f: &SystemFile,
     t: &TypedSystem<K>,
     opts: &AnalyzeOptions,
@@ -135,17 +135,14 @@ pub fn analyze_with<K: Field + 'static>(
         );
         secs.push("zeros", not_applicable("invariant zeros", why));
     }
-    let quad = (t as &dyn std::any::Any).downcast_ref::<TypedSystem<QuadraticField>>();
     let how = (opts.full, f.path.as_str());
-    if let Some(q) = as_rational(t) {
-        let s = Arc::new(q.ss.clone());
+    if let Some(n) = K::numeric(t) {
+        let s = Arc::new(n.ss.clone());
         let by_rank = move || {
             let pc = realization::pbh_controllable(&s.a, &s.b)?;
             Ok((pc, realization::pbh_observable(&s.a, &s.c)?))
         };
-        eigen_sections(Arc::new(q.clone()), &mut secs, how, Some(Box::new(by_rank)));
-    } else if let Some(q) = quad {
-        eigen_sections(Arc::new(q.clone()), &mut secs, how, None);
+        eigen_sections(Arc::new(n.clone()), &mut secs, how, Some(Box::new(by_rank)));
     } else {
         let why = format!(
             "needs rational matrices; this file's entries lie in {}",

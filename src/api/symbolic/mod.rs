@@ -173,10 +173,7 @@ pub(super) fn execute(
             method: MethodArg::Era,
             descriptor: false,
             ..
-        } => Err(refuse(format!(
-            "`{}` needs numbers (a float computation), this system's entries lie in {k}; give every symbol a value with --at",
-            name(cmd)
-        ))),
+        } => Err(super::ground::needs_numbers(k, name(cmd), path)),
         Command::Jordan { real: true, .. } => {
             crate::api::symbolic_jordan::real_outcome(&t.a_raw).map_err(|e| with_path(path, e))
         }

@@ -4,8 +4,9 @@
 
 use crate::error::Result;
 use crate::field::{Field, Q};
-use crate::jordan::{JordanForm, jordan};
-use crate::matrix::{Matrix, to_rational_matrix};
+use crate::io::GroundField;
+use crate::jordan::{JordanForm, jordan_over};
+use crate::matrix::Matrix;
 use crate::pencil::{KroneckerStructure, PencilStructure};
 use crate::poly::Poly;
 use crate::realization::{
@@ -48,14 +49,14 @@ pub fn eigenvalue_items<F: crate::jordan::NumberEigen>(
         .collect()
 }
 
-/// Eigenvalue objects of the matrix `a` when it is rational (empty list for 0 x 0); `None`
-/// for matrices over other fields.
-fn eigen_items_of<K: Field>(a: &Matrix<K>) -> Result<Option<Vec<Value>>> {
+/// Eigenvalue objects of the matrix `a` over a numeric field (empty list for 0 x 0); `None`
+/// over a field of symbols.
+fn eigen_items_of<K: GroundField>(a: &Matrix<K>) -> Result<Option<Vec<Value>>> {
     if a.nrows() == 0 {
         return Ok(Some(vec![]));
     }
-    match to_rational_matrix(a) {
-        Some(aq) => Ok(Some(eigen_items(&jordan(&aq)?))),
+    match K::numeric_matrix(a) {
+        Some(an) => Ok(Some(eigenvalue_items(&jordan_over(an)?.eigenvalues))),
         None => Ok(None),
     }
 }
@@ -117,7 +118,7 @@ pub fn kronecker_report<K: Field>(k: &KroneckerStructure<K>) -> Report {
     .bool("verified", k.verified)
 }
 
-fn structure_items<K: Field>(
+fn structure_items<K: GroundField>(
     r: Report,
     c: &ControllabilityStructure<K>,
     dual: bool,
@@ -167,7 +168,7 @@ fn structure_items<K: Field>(
 ///
 /// # Errors
 /// From the Jordan form of the uncontrollable part.
-pub fn ctrb_report<K: Field>(c: &ControllabilityStructure<K>, dual: bool) -> Result<Report> {
+pub fn ctrb_report<K: GroundField>(c: &ControllabilityStructure<K>, dual: bool) -> Result<Report> {
     let title = if dual {
         "observability structure of (C, A)"
     } else {
@@ -180,7 +181,7 @@ pub fn ctrb_report<K: Field>(c: &ControllabilityStructure<K>, dual: bool) -> Res
 ///
 /// # Errors
 /// From the Jordan form of the uncontrollable part.
-pub fn descriptor_ctrb_report<K: Field>(
+pub fn descriptor_ctrb_report<K: GroundField>(
     d: &DescriptorControllability<K>,
     dual: bool,
 ) -> Result<Report> {

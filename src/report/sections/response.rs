@@ -23,15 +23,21 @@ pub fn response_identities() -> Value {
 }
 
 /// `x(t)` at the requested times (float evaluation of the exact closed form).
-fn values(times: &[(f64, Vec<f64>)]) -> Value {
+/// $x(t)$ at one time: `(t, real parts, imaginary parts)`, the imaginary parts `None` for a
+/// real system (real $A$ and $x_0$).
+pub type TimeValue = (f64, Vec<f64>, Option<Vec<f64>>);
+
+fn values(times: &[TimeValue]) -> Value {
+    let floats = |x: &[f64]| Value::List(x.iter().map(|v| Value::Float(*v)).collect());
     Value::List(
         times
             .iter()
-            .map(|(t, x)| {
-                Value::Obj(Report::new().float("t", *t).with(
-                    "x",
-                    Value::List(x.iter().map(|v| Value::Float(*v)).collect()),
-                ))
+            .map(|(t, x, im)| {
+                let r = Report::new().float("t", *t).with("x", floats(x));
+                Value::Obj(match im {
+                    Some(im) => r.with("x_imag", floats(im)),
+                    None => r,
+                })
             })
             .collect(),
     )
@@ -44,7 +50,7 @@ pub fn state_response_report<F: EigenField>(
     jf: &JordanForm<F>,
     sr: &StateResponse<Ext<F>>,
     x0: &Matrix<F>,
-    times: &[(f64, Vec<f64>)],
+    times: &[TimeValue],
     verified: bool,
 ) -> Report {
     let mut items = vec![];
