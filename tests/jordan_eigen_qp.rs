@@ -15,61 +15,11 @@
 //!   element of Q(p) has a decided sign, a non-constant one and a pair over Q(p) are
 //!   `NotInSymbols`.
 
-use crate::common::{self, Rng};
+use crate::common::Rng;
 use exactlti::field::{ElemDisplay, Field};
 use exactlti::jordan::{Decided, EigenValue, JordanField};
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;
-
-/// `A = P J P^-1` and the planted linear blocks `(eigenvalue, size)`, and whether the pair
-/// of companion blocks of `x^2 + 3 + g` (one chain of length 2) was planted.
-type Planted<F> = (Matrix<F>, Vec<(<F as Field>::Elem, usize)>, bool);
-
-fn planted<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) -> Planted<F> {
-    let mut blocks = vec![];
-    let mut size = 0;
-    let n_lin = rng.int(1, 4) as usize;
-    while size < n_lin {
-        let m = [1, 1, 2, 3][rng.int(0, 3) as usize].min(n_lin - size);
-        let mut lam = k.from_i64(rng.int(-2, 2));
-        if let Some(g) = g
-            && rng.int(0, 1) == 1
-        {
-            lam = k.add(&lam, g);
-        }
-        blocks.push((lam, m));
-        size += m;
-    }
-    let pair = rng.int(0, 1) == 1;
-    let n = size + if pair { 4 } else { 0 };
-    let mut j = Matrix::zeros(k.clone(), n, n);
-    let mut off = 0;
-    for (lam, m) in &blocks {
-        for i in 0..*m {
-            j.set(off + i, off + i, lam.clone());
-            if i + 1 < *m {
-                j.set(off + i, off + i + 1, k.one());
-            }
-        }
-        off += m;
-    }
-    if pair {
-        // [[C, I], [0, C]] with C the companion matrix of x^2 + c, c = 3 + g
-        let c = match g {
-            Some(g) => k.add(&k.from_i64(3), g),
-            None => k.from_i64(3),
-        };
-        for b in [0, 2] {
-            j.set(off + b, off + b + 1, k.one());
-            j.set(off + b + 1, off + b, k.neg(&c));
-        }
-        j.set(off, off + 2, k.one());
-        j.set(off + 1, off + 3, k.one());
-    }
-    let p = common::unimodular(k, n, rng);
-    let pi = p.inverse().expect("unimodular");
-    ((&(&p * &j) * &pi), blocks, pair)
-}
 
 /// `n - sum_b min(b, k)` for `k = 1..=max block + 1`, times `d` roots.
 fn want_ranks(n: usize, d: usize, blocks: &[usize]) -> Vec<usize> {
@@ -195,7 +145,7 @@ fn divides_chi<F: Field>(chi: &Poly<F>, g: &Poly<F>, mu: usize) {
 fn run<F: JordanField>(k: &F, g: &Option<F::Elem>, seed: u64, iters: usize) {
     let mut rng = Rng(seed);
     for _ in 0..iters {
-        let (a, blocks, pair) = planted(k, g, &mut rng);
+        let (a, blocks, pair) = crate::jcommon::planted_jordan(k, g, &mut rng, (1, 4), true);
         check(&a, &blocks, pair);
     }
 }

@@ -6,59 +6,8 @@
 //! characteristic polynomial, and the free response identities.
 
 use crate::common::{self, Rng};
-use exactlti::field::Field;
 use exactlti::jordan::{EigenField, jordan_over};
 use exactlti::matrix::Matrix;
-
-/// `A = P J P^-1` over `k`: Jordan blocks of eigenvalues `c + s g` (`c` in -2..=2, `s` in
-/// {0, 1} when a generator `g` is given) and, on some seeds, a block pair of the companion
-/// matrix of x^2 + 3 (irreducible over all three fields) with a chain of length 2. Returns
-/// `A` and the planted linear blocks `(eigenvalue, size)`.
-fn planted<F: Field>(
-    k: &F,
-    g: &Option<F::Elem>,
-    rng: &mut Rng,
-) -> (Matrix<F>, Vec<(F::Elem, usize)>) {
-    let mut blocks = vec![];
-    let mut size = 0;
-    let n_lin = rng.int(2, 5) as usize;
-    while size < n_lin {
-        let m = [1, 1, 2, 3][rng.int(0, 3) as usize].min(n_lin - size);
-        let mut lam = k.from_i64(rng.int(-2, 2));
-        if let Some(g) = g
-            && rng.int(0, 1) == 1
-        {
-            lam = k.add(&lam, g);
-        }
-        blocks.push((lam, m));
-        size += m;
-    }
-    let pair = rng.int(0, 1) == 1;
-    let n = size + if pair { 4 } else { 0 };
-    let mut j = Matrix::zeros(k.clone(), n, n);
-    let mut off = 0;
-    for (lam, m) in &blocks {
-        for i in 0..*m {
-            j.set(off + i, off + i, lam.clone());
-            if i + 1 < *m {
-                j.set(off + i, off + i + 1, k.one());
-            }
-        }
-        off += m;
-    }
-    if pair {
-        // [[C, I], [0, C]] with C the companion matrix of x^2 + 3
-        for b in [0, 2] {
-            j.set(off + b, off + b + 1, k.one());
-            j.set(off + b + 1, off + b, k.from_i64(-3));
-        }
-        j.set(off, off + 2, k.one());
-        j.set(off + 1, off + 3, k.one());
-    }
-    let p = common::unimodular(k, n, rng);
-    let pi = p.inverse().expect("unimodular");
-    (&(&p * &j) * &pi, blocks)
-}
 
 /// Every assertion of the module docs for one matrix.
 fn check<F: EigenField>(a: &Matrix<F>, planted: &[(F::Elem, usize)]) {
@@ -126,7 +75,7 @@ fn check<F: EigenField>(a: &Matrix<F>, planted: &[(F::Elem, usize)]) {
 fn run<F: EigenField>(k: &F, g: &Option<F::Elem>, seed: u64) {
     let mut rng = Rng(seed);
     for _ in 0..common::iters(6) {
-        let (a, blocks) = planted(k, g, &mut rng);
+        let (a, blocks, _) = crate::jcommon::planted_jordan(k, g, &mut rng, (2, 5), false);
         check(&a, &blocks);
     }
 }

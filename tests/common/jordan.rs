@@ -121,3 +121,65 @@ pub fn companion_pair_chain(p: &[i64], seed: u64) -> Matrix<Q> {
     let p = crate::common::unimodular(&Q, 2 * n, &mut rng);
     &(&p * &j) * &p.inverse().unwrap()
 }
+
+/// `A = P J P^-1` over `k` with `P` unimodular: Jordan blocks (sizes 1..3) of eigenvalues
+/// `c + s g` (`c` in -2..=2, `s` in {0, 1} when a generator `g` is given) filling
+/// `lo..=hi` rows, and on some seeds a coupled pair of companion blocks of `x^2 + c0`
+/// (`[[C, I], [0, C]]`, one chain of length 2; `c0 = 3`, or `3 + g` when `shift_pair`).
+/// Returns `A`, the planted linear blocks `(eigenvalue, size)` and whether the pair was planted.
+pub type PlantedJordan<F> = (
+    Matrix<F>,
+    Vec<(<F as exactlti::field::Field>::Elem, usize)>,
+    bool,
+);
+
+pub fn planted_jordan<F: exactlti::field::Field>(
+    k: &F,
+    g: &Option<F::Elem>,
+    rng: &mut Rng,
+    (lo, hi): (i64, i64),
+    shift_pair: bool,
+) -> PlantedJordan<F> {
+    let mut blocks = vec![];
+    let mut size = 0;
+    let n_lin = rng.int(lo, hi) as usize;
+    while size < n_lin {
+        let m = [1, 1, 2, 3][rng.int(0, 3) as usize].min(n_lin - size);
+        let mut lam = k.from_i64(rng.int(-2, 2));
+        if let Some(g) = g
+            && rng.int(0, 1) == 1
+        {
+            lam = k.add(&lam, g);
+        }
+        blocks.push((lam, m));
+        size += m;
+    }
+    let pair = rng.int(0, 1) == 1;
+    let n = size + if pair { 4 } else { 0 };
+    let mut j = Matrix::zeros(k.clone(), n, n);
+    let mut off = 0;
+    for (lam, m) in &blocks {
+        for i in 0..*m {
+            j.set(off + i, off + i, lam.clone());
+            if i + 1 < *m {
+                j.set(off + i, off + i + 1, k.one());
+            }
+        }
+        off += m;
+    }
+    if pair {
+        let c = match g {
+            Some(g) if shift_pair => k.add(&k.from_i64(3), g),
+            _ => k.from_i64(3),
+        };
+        for b in [0, 2] {
+            j.set(off + b, off + b + 1, k.one());
+            j.set(off + b + 1, off + b, k.neg(&c));
+        }
+        j.set(off, off + 2, k.one());
+        j.set(off + 1, off + 3, k.one());
+    }
+    let p = crate::common::unimodular(k, n, rng);
+    let pi = p.inverse().expect("unimodular");
+    (&(&p * &j) * &pi, blocks, pair)
+}
