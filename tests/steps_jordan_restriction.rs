@@ -14,13 +14,12 @@
 //!   C A^k B.
 
 use crate::common::{self, Rng, unimodular};
-use exactlti::algebraic::{Ext, ExtElem};
+use exactlti::algebraic::Ext;
 use exactlti::field::Field;
 use exactlti::io::TypedAny;
 use exactlti::io::symbolic::{SymbolicOptions, load_symbolic_path};
 use exactlti::jordan::derivation::{Derivation, Step, StepKind};
 use exactlti::matrix::Matrix;
-use exactlti::poly::newton_power_sums;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization::steps::jordan_method_steps_qp;
 use exactlti::realization::{mcmillan_degree, minimal_jordan_qp};
@@ -52,31 +51,6 @@ fn down(m: &Matrix<E>) -> Matrix<F> {
     Matrix::from_fn(f.clone(), m.nrows(), m.ncols(), |i, j| {
         m.get(i, j).0.first().cloned().unwrap_or_else(|| f.zero())
     })
-}
-
-/// sum over `parts` of Tr_{E/F}(C J^k B), k < kmax.
-fn traced_markov(parts: &[Part<'_>], p: usize, m: usize, f: &F, kmax: usize) -> Vec<Matrix<F>> {
-    (0..kmax)
-        .map(|kk| {
-            let mut sum = Matrix::zeros(f.clone(), p, m);
-            for (j, b, c) in parts {
-                let e = j.field().clone();
-                let s = newton_power_sums(e.modulus(), e.degree() + 1);
-                let tr = |x: &ExtElem<<F as Field>::Elem>| {
-                    x.0.iter()
-                        .enumerate()
-                        .fold(f.zero(), |acc, (i, xi)| f.add(&acc, &f.mul(xi, &s[i])))
-                };
-                let mut h: Matrix<E> = (*c).clone();
-                for _ in 0..kk {
-                    h = &h * *j;
-                }
-                let h = &h * *b;
-                sum = &sum + &Matrix::from_fn(f.clone(), p, m, |r, q| tr(h.get(r, q)));
-            }
-            sum
-        })
-        .collect()
 }
 
 fn triple<'a>(s: &'a Step<E>, names: [&str; 3]) -> Part<'a> {
@@ -156,7 +130,7 @@ fn check_derivation(sys: &StateSpace<F>) -> ([usize; 3], usize, usize) {
             .map(|(j, _, _)| j.nrows() * j.field().degree())
             .sum();
         assert_eq!(order, counts[i], "stage {i}: its order");
-        let got = traced_markov(parts, p, m, &f, kmax);
+        let got = crate::jcommon::traced_markov(parts, p, m, &f, kmax);
         for (k, (g, w)) in got.iter().zip(&want).enumerate() {
             assert_eq!(g.as_slice(), w.as_slice(), "stage {i}: C A^{k} B");
         }

@@ -12,7 +12,7 @@
 //!   still verified, T changed, closed-form unit lengths listed.
 
 use crate::common;
-use exactlti::algebraic::{Ext, ExtElem};
+use exactlti::algebraic::Ext;
 use exactlti::field::ElemDisplay;
 use exactlti::field::Field;
 use exactlti::io::TypedAny;
@@ -164,40 +164,6 @@ fn real_steps_yaw_plane_cli() {
     assert!(j["conditions"].as_array().unwrap().len() > 3);
 }
 
-/// sum over the parts of Tr_{E/F}(C J^k B) for k < kmax (each part in its own field E).
-fn traced_markov(
-    parts: &[(&Matrix<E>, &Matrix<E>, &Matrix<E>)],
-    kmax: usize,
-) -> Vec<Matrix<RatFuncField>> {
-    let (p, m) = (parts[0].2.nrows(), parts[0].1.ncols());
-    let mut out = vec![];
-    for kk in 0..kmax {
-        let mut sum: Option<Matrix<RatFuncField>> = None;
-        for (j, b, c) in parts {
-            let e = j.field().clone();
-            let f = e.base().clone();
-            let s = newton_power_sums(e.modulus(), e.degree() + 1);
-            let tr = |x: &ExtElem<<RatFuncField as Field>::Elem>| {
-                x.0.iter()
-                    .enumerate()
-                    .fold(f.zero(), |acc, (i, xi)| f.add(&acc, &f.mul(xi, &s[i])))
-            };
-            let mut h: Matrix<E> = (*c).clone();
-            for _ in 0..kk {
-                h = &h * *j;
-            }
-            let h = &h * *b;
-            let t = Matrix::from_fn(f.clone(), p, m, |r, q| tr(h.get(r, q)));
-            sum = Some(match sum {
-                None => t,
-                Some(acc) => &acc + &t,
-            });
-        }
-        out.push(sum.unwrap_or_else(|| Matrix::zeros(parts[0].0.field().base().clone(), p, m)));
-    }
-    out
-}
-
 /// The `(J, B, C)` matrices named `names` of each step (`nonempty`: the steps whose `J` has
 /// rows only).
 fn stage_parts<'a>(
@@ -245,7 +211,11 @@ fn jordan_method_stages_over_qp() {
         [20, 16, 8]
     );
     for stage in [&stage0, &stage1, &stage2] {
-        let got = traced_markov(stage, kmax);
+        let got = {
+            let (p, m) = (stage[0].2.nrows(), stage[0].1.ncols());
+            let f = stage[0].0.field().base().clone();
+            crate::jcommon::traced_markov(stage, p, m, &f, kmax)
+        };
         for (g, w) in got.iter().zip(&want) {
             assert_eq!(g.as_slice(), w.as_slice(), "C A^k B at every stage");
         }

@@ -183,3 +183,42 @@ pub fn planted_jordan<F: exactlti::field::Field>(
     let pi = p.inverse().expect("unimodular");
     (&(&p * &j) * &pi, blocks, pair)
 }
+
+/// One part `(J, B, C)` of a realization written over an extension `E = F[t]/(g)`.
+pub type ExtPart<'a, F> = (
+    &'a Matrix<exactlti::algebraic::Ext<F>>,
+    &'a Matrix<exactlti::algebraic::Ext<F>>,
+    &'a Matrix<exactlti::algebraic::Ext<F>>,
+);
+
+/// $\sum_{\text{parts}} \operatorname{Tr}_{E/F}(C J^k B)$ for `k < kmax` (`p x m`, each part in
+/// its own field `E`): the Markov parameters of the parts written over the base field `f`.
+pub fn traced_markov<F: exactlti::field::Field>(
+    parts: &[ExtPart<'_, F>],
+    p: usize,
+    m: usize,
+    f: &F,
+    kmax: usize,
+) -> Vec<Matrix<F>> {
+    (0..kmax)
+        .map(|kk| {
+            let mut sum = Matrix::zeros(f.clone(), p, m);
+            for (j, b, c) in parts {
+                let e = j.field().clone();
+                let s = exactlti::poly::newton_power_sums(e.modulus(), e.degree() + 1);
+                let tr = |x: &exactlti::algebraic::ExtElem<F::Elem>| {
+                    x.0.iter()
+                        .enumerate()
+                        .fold(f.zero(), |acc, (i, xi)| f.add(&acc, &f.mul(xi, &s[i])))
+                };
+                let mut h = (*c).clone();
+                for _ in 0..kk {
+                    h = &h * *j;
+                }
+                let h = &h * *b;
+                sum = &sum + &Matrix::from_fn(f.clone(), p, m, |r, q| tr(h.get(r, q)));
+            }
+            sum
+        })
+        .collect()
+}
