@@ -98,19 +98,7 @@ fn check<F: JordanField>(a: &Matrix<F>, planted: &[(F::Elem, usize)], pair: bool
         }
     }
     // the planted eigenvalues with their block sizes
-    let mut lams: Vec<F::Elem> = vec![];
-    for (lam, _) in planted {
-        if !lams.contains(lam) {
-            lams.push(lam.clone());
-        }
-    }
-    for lam in &lams {
-        let mut want: Vec<usize> = planted
-            .iter()
-            .filter(|(l, _)| l == lam)
-            .map(|(_, m)| *m)
-            .collect();
-        want.sort_unstable_by(|x, y| y.cmp(x));
+    for (lam, want) in &crate::jcommon::sizes_by_eigenvalue(planted) {
         let found = jf.eigenvalues.iter().find(|e| match e.value() {
             EigenValue::InField(x) => x == lam,
             _ => {
@@ -119,7 +107,7 @@ fn check<F: JordanField>(a: &Matrix<F>, planted: &[(F::Elem, usize)], pair: bool
             }
         });
         let e = found.unwrap_or_else(|| panic!("no eigenvalue {}", k.fmt_elem(lam)));
-        assert_eq!(e.blocks, want, "blocks of {}", k.fmt_elem(lam));
+        assert_eq!(&e.blocks, want, "blocks of {}", k.fmt_elem(lam));
     }
     // the planted pair: the roots of a quadratic factor with one block of size 2 each
     if pair {

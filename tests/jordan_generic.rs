@@ -40,25 +40,13 @@ fn check<F: EigenField>(a: &Matrix<F>, planted: &[(F::Elem, usize)]) {
         }
     }
     // planted blocks: for each planted eigenvalue, its linear component has those sizes
-    let mut lams: Vec<F::Elem> = vec![];
-    for (lam, _) in planted {
-        if !lams.contains(lam) {
-            lams.push(lam.clone());
-        }
-    }
-    for lam in &lams {
-        let mut want: Vec<usize> = planted
-            .iter()
-            .filter(|(l, _)| l == lam)
-            .map(|(_, m)| *m)
-            .collect();
-        want.sort_unstable_by(|x, y| y.cmp(x));
+    for (lam, want) in &crate::jcommon::sizes_by_eigenvalue(planted) {
         let c = jf
             .components
             .iter()
             .find(|c| c.degree() == 1 && k.neg(&c.factor.coeff(0)) == *lam)
             .unwrap_or_else(|| panic!("no component for {}", k.fmt_elem(lam)));
-        assert_eq!(c.blocks, want, "blocks of {}", k.fmt_elem(lam));
+        assert_eq!(&c.blocks, want, "blocks of {}", k.fmt_elem(lam));
     }
     // the eigenvalues' certified numbers are roots of their minimal polynomials, which
     // divide the norm of chi: checked through the factor of each component

@@ -142,17 +142,7 @@ fn planted<F: Field>(
         blocks.push((lam, m));
         n += m;
     }
-    let mut j = Matrix::zeros(k.clone(), n, n);
-    let mut off = 0;
-    for (lam, m) in &blocks {
-        for i in 0..*m {
-            j.set(off + i, off + i, lam.clone());
-            if i + 1 < *m {
-                j.set(off + i, off + i + 1, k.one());
-            }
-        }
-        off += m;
-    }
+    let j = crate::jcommon::jordan_blocks(k, &blocks, n);
     let p = common::unimodular(k, n, rng);
     let a = &(&p * &j) * &p.inverse().unwrap();
     let nonzero = |rng: &mut Rng| {

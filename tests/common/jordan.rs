@@ -156,17 +156,8 @@ pub fn planted_jordan<F: exactlti::field::Field>(
     }
     let pair = rng.int(0, 1) == 1;
     let n = size + if pair { 4 } else { 0 };
-    let mut j = Matrix::zeros(k.clone(), n, n);
-    let mut off = 0;
-    for (lam, m) in &blocks {
-        for i in 0..*m {
-            j.set(off + i, off + i, lam.clone());
-            if i + 1 < *m {
-                j.set(off + i, off + i + 1, k.one());
-            }
-        }
-        off += m;
-    }
+    let mut j = jordan_blocks(k, &blocks, n);
+    let off = size;
     if pair {
         let c = match g {
             Some(g) if shift_pair => k.add(&k.from_i64(3), g),
@@ -221,4 +212,40 @@ pub fn traced_markov<F: exactlti::field::Field>(
             sum
         })
         .collect()
+}
+
+/// The `n x n` matrix with the Jordan blocks `(eigenvalue, size)` on the diagonal from the
+/// top left (rows past the blocks are zero).
+pub fn jordan_blocks<F: exactlti::field::Field>(
+    k: &F,
+    blocks: &[(F::Elem, usize)],
+    n: usize,
+) -> Matrix<F> {
+    let mut j = Matrix::zeros(k.clone(), n, n);
+    let mut off = 0;
+    for (lam, m) in blocks {
+        for i in 0..*m {
+            j.set(off + i, off + i, lam.clone());
+            if i + 1 < *m {
+                j.set(off + i, off + i + 1, k.one());
+            }
+        }
+        off += m;
+    }
+    j
+}
+
+/// The planted block sizes per distinct eigenvalue (first-seen order), largest first.
+pub fn sizes_by_eigenvalue<E: Clone + PartialEq>(planted: &[(E, usize)]) -> Vec<(E, Vec<usize>)> {
+    let mut out: Vec<(E, Vec<usize>)> = vec![];
+    for (lam, m) in planted {
+        match out.iter_mut().find(|(l, _)| l == lam) {
+            Some((_, v)) => v.push(*m),
+            None => out.push((lam.clone(), vec![*m])),
+        }
+    }
+    for (_, v) in &mut out {
+        v.sort_unstable_by(|x, y| y.cmp(x));
+    }
+    out
 }
