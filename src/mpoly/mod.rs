@@ -226,6 +226,17 @@ impl MPoly {
     pub fn deg(&self, i: usize) -> u32 {
         self.degree(i).unwrap_or(0)
     }
+    /// Degrees in every variable, into a fixed array (no allocation; entries past `nvars`
+    /// are 0).
+    pub fn degrees_array(&self) -> [u32; MAX_VARS] {
+        let mut d = [0; MAX_VARS];
+        for (m, _) in &self.terms {
+            for (i, di) in d.iter_mut().enumerate().take(self.nvars) {
+                *di = (*di).max(self.exp(*m, i));
+            }
+        }
+        d
+    }
     /// Degrees in every variable.
     pub fn degrees(&self) -> Vec<u32> {
         let mut d = vec![0; self.nvars];

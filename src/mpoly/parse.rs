@@ -136,9 +136,9 @@ impl Fractions<'_> {
     fn check(&self, f: Frac, pos: usize) -> Result<Frac> {
         let lim = self.lim();
         if f.0
-            .degrees()
+            .degrees_array()
             .iter()
-            .chain(f.1.degrees().iter())
+            .chain(f.1.degrees_array().iter())
             .any(|&d| d > lim)
         {
             return Err(at(pos, "degree too large"));
@@ -147,7 +147,7 @@ impl Fractions<'_> {
     }
     fn check_mul(&self, a: &MPoly, b: &MPoly, pos: usize) -> Result<()> {
         let lim = self.lim();
-        let (da, db) = (a.degrees(), b.degrees());
+        let (da, db) = (a.degrees_array(), b.degrees_array());
         if da.iter().zip(&db).any(|(x, y)| x + y > lim) {
             return Err(at(pos, "degree too large"));
         }
