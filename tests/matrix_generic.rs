@@ -1,4 +1,5 @@
-//! Test triad for the generic matrix algorithms over Q, Q(sqrt 2) and Q(i).
+//! Test triad for the generic matrix algorithms over Q, Q(sqrt 2), Q(i) and Q(p) (one generic
+//! function, `for_each_field!`: over Q(p) the registered kernels of `RatFuncField` run).
 use crate::common;
 use common::*;
 use exactlti::field::{Field, Q};
@@ -40,9 +41,9 @@ fn rref_examples() {
     );
 }
 
-fn properties<K: Field>(k: &K, g: &Option<K::Elem>, seed: u64) {
+fn properties<K: Field>(k: &K, g: &Option<K::Elem>, seed: u64, cases: usize) {
     let mut rng = Rng(seed);
-    for _ in 0..iters(30) {
+    for _ in 0..cases {
         let n = rng.int(0, 5) as usize;
         let m = rng.int(0, 5) as usize;
         let a = random_matrix(k, g, m, n, &mut rng);
@@ -73,6 +74,12 @@ fn properties<K: Field>(k: &K, g: &Option<K::Elem>, seed: u64) {
         assert!(cp.rem(&mp).is_zero(), "minpoly | charpoly, A = {s}");
         assert!(s.eval_poly(&mp).unwrap().is_zero());
         let t = unimodular(k, n, &mut rng);
+        // det is multiplicative: det(S T) = det S det T
+        assert_eq!(
+            (&s * &t).det().unwrap(),
+            k.mul(&s.det().unwrap(), &t.det().unwrap()),
+            "det(S T) = det S det T, S = {s}"
+        );
         let st = s.similar_by(&t).unwrap();
         assert_eq!(st.charpoly().unwrap(), cp, "similarity invariance");
         assert_eq!(st.rank(), s.rank());
@@ -99,17 +106,5 @@ fn properties<K: Field>(k: &K, g: &Option<K::Elem>, seed: u64) {
     }
 }
 
-#[test]
-fn matrix_properties_q() {
-    properties(&Q, &None, 1);
-}
-#[test]
-fn matrix_properties_qsqrt2() {
-    let (k, g) = qsqrt2();
-    properties(&k, &g, 2);
-}
-#[test]
-fn matrix_properties_qi() {
-    let (k, g) = qi();
-    properties(&k, &g, 3);
-}
+crate::for_each_field!(properties, 1, 30, 8; matrix_properties_q, matrix_properties_qsqrt2,
+    matrix_properties_qi, matrix_properties_qp);
