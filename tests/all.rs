@@ -163,8 +163,6 @@ mod quadratic_kernels;
 mod readable_text;
 #[path = "realization.rs"]
 mod realization;
-#[path = "realization_fields.rs"]
-mod realization_fields;
 #[path = "realization_planted.rs"]
 mod realization_planted;
 #[path = "reserved_names.rs"]

@@ -42,7 +42,7 @@ use exactlti::pencil::{kronecker_structure, pencil_structure};
 use exactlti::poly::Poly;
 use exactlti::realization::{
     JordanMethod, MinrealMethod, SystemField, controllability_matrix, controllability_structure,
-    descriptor_to_standard, mcmillan_degree, minimal, observability_matrix,
+    descriptor_to_standard, kalman_decomposition, mcmillan_degree, minimal, observability_matrix,
     observability_structure, pbh_controllable, pbh_observable,
 };
 use exactlti::structure::mechanical::mechanical_normal_form;
@@ -303,6 +303,39 @@ fn check_pbh<F: SystemField>(p: &Planted<F>) {
     assert_eq!(po, observability_matrix(&s.a, &s.c).rank() == n);
 }
 
+/// The Kalman decomposition: `A T = T A~`, `B = T B~`, `C T = C~`, its part dimensions the
+/// planted ones (order: controllable-unobservable, minimal, uncontrollable-unobservable,
+/// uncontrollable-observable) and the zero blocks of the form: `B~` on the uncontrollable
+/// rows, `A~` below-left of the controllable block, `C~` on the unobservable columns.
+fn check_kalman<F: Field>(p: &Planted<F>) {
+    let (s, n) = (&p.sys, p.n());
+    let k = s.field();
+    let kd = kalman_decomposition(s).unwrap();
+    let (t, st) = (&kd.t, &kd.system);
+    assert_eq!(&s.a * t, t * &st.a, "A T = T A~");
+    assert_eq!(s.b, t * &st.b, "B = T B~");
+    assert_eq!(&s.c * t, st.c, "C T = C~");
+    assert_eq!(st.d, s.d);
+    let [co, c_unobs, unc_obs, neither] = p.dims;
+    assert_eq!(kd.dims, [c_unobs, co, neither, unc_obs], "Kalman parts");
+    let ctrl = co + c_unobs;
+    for i in ctrl..n {
+        assert!(
+            k.is_zero(st.b.get(i, 0)),
+            "B~ zero on the uncontrollable rows"
+        );
+        for j in 0..ctrl {
+            assert!(k.is_zero(st.a.get(i, j)), "A~ block triangular");
+        }
+    }
+    for j in (0..c_unobs).chain(ctrl..ctrl + neither) {
+        assert!(
+            k.is_zero(st.c.get(0, j)),
+            "C~ zero on the unobservable columns"
+        );
+    }
+}
+
 /// zeros: the planted zero polynomial (transmission and decoupling zeros), normal rank
 /// $n + 1$, the Smith-form oracle agrees.
 fn check_zeros<F: Field>(p: &Planted<F>) {
@@ -534,6 +567,7 @@ fn check_systems<F: SystemField>(k: &F, g: &Option<F::Elem>, seed: u64, cases: u
         check_tf(&p);
         check_minreal(&p);
         check_pbh(&p);
+        check_kalman(&p);
         check_zeros(&p);
         check_scb(&p);
         check_ctrb_obsv(&p);
