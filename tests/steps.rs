@@ -154,27 +154,9 @@ fn a_broken_chain_is_detected() {
     assert!(!is_chain(n_mat, &Matrix::zeros(k, 4, 1)));
 }
 
-fn yaw27() -> (RatFuncField, Matrix<RatFuncField>) {
-    let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();
-    let rows = [
-        ["0", "u", "-1", "0"],
-        ["0", "0", "0", "-1"],
-        ["0", "0", "-cr/(m*u)", "-u"],
-        ["0", "0", "0", "0"],
-    ];
-    let a = Matrix::from_rows(
-        k.clone(),
-        rows.iter()
-            .map(|r| r.iter().map(|s| k.parse(s).unwrap()).collect())
-            .collect(),
-    )
-    .unwrap();
-    (k, a)
-}
-
 #[test]
 fn yaw_plane_single_wheel_reproduces_the_paper() {
-    let (k, a) = yaw27();
+    let (k, a) = jcommon::yaw27();
     let d = jordan_steps_params(&a).unwrap();
     let blocks = check_jordan(&d, &a);
     assert_eq!(
@@ -348,7 +330,7 @@ fn planted_kalman_steps_identities() {
 
 #[test]
 fn kalman_steps_over_qp_with_conditions() {
-    let (k, a) = yaw27();
+    let (k, a) = jcommon::yaw27();
     let p = |s: &str| k.parse(s).unwrap();
     let k2 = k.fresh();
     let mv = |m: &Matrix<RatFuncField>| m.map(&k2, |x| x.clone());

@@ -171,20 +171,7 @@ fn complex_eigenvalues_refuse_unit_length() {
 /// orthogonal and with its first entry 1; the constants are rational functions.
 #[test]
 fn symbolic_chains_normalised() {
-    let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();
-    let rows = [
-        ["0", "u", "-1", "0"],
-        ["0", "0", "0", "-1"],
-        ["0", "0", "-cr/(m*u)", "-u"],
-        ["0", "0", "0", "0"],
-    ];
-    let a = Matrix::from_rows(
-        k.clone(),
-        rows.iter()
-            .map(|r| r.iter().map(|s| k.parse(s).unwrap()).collect())
-            .collect(),
-    )
-    .unwrap();
+    let (_, a) = jcommon::yaw27();
     for h in ["orth", "orth,entry", "unit"] {
         let how: Normalization = h.parse().unwrap();
         let d = jordan_steps_params_with(&a, &how).unwrap();
@@ -394,16 +381,7 @@ fn descriptor_minimal_steps_identities_over_q_and_qp() {
     check(&rec.finish(), &sys);
     // over Q(k): E x' = A x + B u with a parameter in the finite and the infinite part
     let k = RatFuncField::new(&["k"]).unwrap();
-    let p = |s: &str| k.parse(s).unwrap();
-    let mk = |rows: &[&[&str]]| {
-        Matrix::from_rows(
-            k.clone(),
-            rows.iter()
-                .map(|r| r.iter().map(|s| p(s)).collect())
-                .collect(),
-        )
-        .unwrap()
-    };
+    let mk = |rows: &[&[&str]]| crate::common::qp_matrix(&k, rows);
     let sys = Descriptor::new(
         mk(&[&["0", "1", "0"], &["0", "0", "0"], &["0", "0", "1"]]),
         mk(&[&["1", "0", "0"], &["0", "1", "0"], &["0", "0", "-k"]]),
