@@ -16,17 +16,6 @@ use exactlti::realization::steps::{jordan_method_steps, kalman_steps};
 use exactlti::realization::{mcmillan_degree, observability_matrix};
 use exactlti::system::StateSpace;
 
-/// $A - \theta I$ over the field of `a`.
-fn shifted<K: Field>(a: &Matrix<K>, theta: &K::Elem) -> Matrix<K> {
-    let k = a.field().clone();
-    let mut n = a.clone();
-    for i in 0..a.nrows() {
-        let v = k.sub(n.get(i, i), theta);
-        n.set(i, i, v);
-    }
-    n
-}
-
 /// Checks every Jordan step of `d` (for the input `a_of(part)` over the part's field) against
 /// recomputed values; returns the block sizes per part.
 fn check_jordan<K: Field + 'static>(d: &Derivation<K>, a: &Matrix<K>) -> Vec<Vec<usize>> {
@@ -41,7 +30,7 @@ fn check_jordan<K: Field + 'static>(d: &Derivation<K>, a: &Matrix<K>) -> Vec<Vec
         let n_mat = ks.matrix("N").unwrap();
         let theta = ks.scalar("theta").unwrap();
         let lifted = a.map(n_mat.field(), |x| x.clone());
-        assert_eq!(n_mat, &shifted(&lifted, theta), "N = A - theta I");
+        assert_eq!(n_mat, &jcommon::shifted(&lifted, theta), "N = A - theta I");
         let ranks = ks.counts("ranks").unwrap();
         let dims = ks.counts("dims").unwrap();
         let mut pw = n_mat.clone();

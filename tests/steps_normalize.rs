@@ -22,16 +22,6 @@ use exactlti::matrix::Matrix;
 use exactlti::qmat;
 use exactlti::ratfunc::RatFuncField;
 
-fn shifted<K: Field>(a: &Matrix<K>, theta: &K::Elem) -> Matrix<K> {
-    let k = a.field().clone();
-    let mut n = a.clone();
-    for i in 0..a.nrows() {
-        let v = k.sub(n.get(i, i), theta);
-        n.set(i, i, v);
-    }
-    n
-}
-
 /// Recomputes every normalisation step of `d` (for the matrix `a` over the steps' fields)
 /// and returns how many steps were checked.
 fn check_normalized<K: Field>(d: &Derivation<K>, a: &Matrix<K>, how: &Normalization) -> usize {
@@ -46,7 +36,7 @@ fn check_normalized<K: Field>(d: &Derivation<K>, a: &Matrix<K>, how: &Normalizat
         let k = nm.field().clone();
         // the same N as A - theta I (A lifted into the part's field when it is Q)
         if a.field().to_string() == k.to_string() {
-            assert_eq!(&shifted(a, theta), nm);
+            assert_eq!(&jcommon::shifted(a, theta), nm);
         }
         let (v, w) = (st.matrix("V").unwrap(), st.matrix("Vn").unwrap());
         let s = w.ncols();

@@ -266,3 +266,14 @@ pub fn yaw27() -> (RatFuncField, Matrix<RatFuncField>) {
     );
     (k, a)
 }
+
+/// $A - \theta I$ over the field of `a`.
+pub fn shifted<K: exactlti::field::Field>(a: &Matrix<K>, theta: &K::Elem) -> Matrix<K> {
+    let k = a.field().clone();
+    let mut n = a.clone();
+    for i in 0..a.nrows() {
+        let v = k.sub(n.get(i, i), theta);
+        n.set(i, i, v);
+    }
+    n
+}
