@@ -5,7 +5,8 @@ Usage: python3 scripts/layers.py [--files]
 Floors (low -> high): field, poly, algebraic/numberfield, matrix, jordan, pencil, system, realization, multibody,
 structure; io, study (parameter families read from files), report, api (the front door), cli on top; float apart (it may use anything below io).
 An arrow A -> B is "up" when B's floor is higher than A's. Cycles are reported between
-top-level modules and, with --files, between files.
+top-level modules and between files (a file-level cycle: files that reach each other through
+`use` paths, within a module or across); any of the three fails the check (exit 1).
 """
 import os, re, sys
 from collections import defaultdict
@@ -126,7 +127,7 @@ def main():
     if "--files" in sys.argv or True:
         for c in fc:
             print("  " + " <-> ".join(sorted(c)))
-    return 1 if (cycles or ups) else 0
+    return 1 if (cycles or ups or fc) else 0
 
 
 def sccs(g):

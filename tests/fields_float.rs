@@ -1,8 +1,9 @@
 //! Issue 17 item 2 for the commands other than Jordan: `tf` exact over Q(i) and Q(sqrt d),
 //! and the complex float path (`freqresp`, `check`, `minreal --method era`) over Q(i).
 use crate::common::cli::{self, run};
+use crate::common::{quadratic as q, quadratic_matrix as mat};
 use exactlti::algebraic::{factor_over_quadratic, norm_over_q};
-use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
+use exactlti::field::{Field, QuadraticField};
 use exactlti::float::{Tol, Truth, era_system, freqresp, markov_parameters, to_cmatrix};
 use exactlti::matrix::Matrix;
 use exactlti::poly::Poly;
@@ -20,24 +21,6 @@ fn json(args: &[&str]) -> (i32, serde_json::Value, String) {
     let (code, out, err) = run(&a);
     let j = serde_json::from_str(&out).unwrap_or(serde_json::Value::Null);
     (code, j, err)
-}
-
-/// `a + b*sqrt(d)` with integer parts.
-fn q(a: i64, b: i64) -> Quadratic {
-    Quadratic::new(
-        Rational::from_integer(a.into()),
-        Rational::from_integer(b.into()),
-    )
-}
-
-fn mat(k: &QuadraticField, rows: &[&[(i64, i64)]]) -> Matrix<QuadraticField> {
-    Matrix::from_rows(
-        k.clone(),
-        rows.iter()
-            .map(|r| r.iter().map(|&(a, b)| q(a, b)).collect())
-            .collect(),
-    )
-    .unwrap()
 }
 
 /// A 3-state SISO system over Q(i) with McMillan degree 2: the mode 2i is unobservable.

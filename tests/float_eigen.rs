@@ -162,18 +162,7 @@ fn permutation_matrices() {
 /// A Jordan matrix with the given eigenvalues and block sizes.
 fn jordan_matrix(blocks: &[(Rational, usize)]) -> Matrix<Q> {
     let n = blocks.iter().map(|b| b.1).sum();
-    let mut j = Matrix::zeros(Q, n, n);
-    let mut off = 0;
-    for (x, s) in blocks {
-        for i in 0..*s {
-            j.set(off + i, off + i, x.clone());
-            if i + 1 < *s {
-                j.set(off + i, off + i + 1, Q.one());
-            }
-        }
-        off += s;
-    }
-    j
+    crate::jcommon::jordan_blocks(&Q, blocks, n)
 }
 
 #[test]

@@ -175,31 +175,20 @@ fn wide_systems_are_sized_by_need_and_refused_beyond_the_limit() {
     assert!((r.realization.a[(0, 0)] + 1.0).abs() < 1e-12);
 }
 
+/// Found by the fuzzer: an entry 1e300 in the yaw-plane A.
+#[rustfmt::skip]
+fn huge_yaw_a() -> DMatrix<f64> {
+    DMatrix::from_row_slice(4, 4, &[
+        0.0, 20.0, -1.0, 0.0,
+        0.0, 0.0, 1e300, -1.0,
+        0.0, 0.0, -80000.0 / 30000.0, -20.0,
+        0.0, 0.0, 0.0, 0.0,
+    ])
+}
+
 #[test]
 fn huge_entries_do_not_hang() {
-    // found by the fuzzer: an entry 1e300 in the yaw-plane A
-    let a = DMatrix::from_row_slice(
-        4,
-        4,
-        &[
-            0.0,
-            20.0,
-            -1.0,
-            0.0,
-            0.0,
-            0.0,
-            1e300,
-            -1.0,
-            0.0,
-            0.0,
-            -80000.0 / 30000.0,
-            -20.0,
-            0.0,
-            0.0,
-            0.0,
-            0.0,
-        ],
-    );
+    let a = huge_yaw_a();
     let b = DMatrix::from_row_slice(4, 1, &[0.0, 0.0, 1.0 / 1500.0, 0.0]);
     let c = DMatrix::from_row_slice(1, 4, &[1.0, 0.0, 0.0, 0.0]);
     let d = DMatrix::zeros(1, 1);
@@ -211,27 +200,6 @@ fn huge_entries_do_not_hang() {
 
 #[test]
 fn huge_entries_eigenvalues_do_not_hang() {
-    let a = DMatrix::from_row_slice(
-        4,
-        4,
-        &[
-            0.0,
-            20.0,
-            -1.0,
-            0.0,
-            0.0,
-            0.0,
-            1e300,
-            -1.0,
-            0.0,
-            0.0,
-            -80000.0 / 30000.0,
-            -20.0,
-            0.0,
-            0.0,
-            0.0,
-            0.0,
-        ],
-    );
+    let a = huge_yaw_a();
     let _ = exactlti::float::eigenvalues(&a);
 }

@@ -55,27 +55,36 @@ fn wilkinson_bidiagonal_20() {
     check_distinct(&a, &exact);
 }
 
-#[test]
-fn wilkinson_symmetric_21() {
-    // W21+: diag |10 - i|, off-diagonal 1; eigenvalues simple, the largest pairs agree to 1e-14
-    let n = 21;
-    let a = DMatrix::from_fn(n, n, |i, j| {
+/// The symmetric tridiagonal `n x n` matrix with diagonal `diag(i)` and ones beside it.
+fn tridiagonal_ones(n: usize, diag: impl Fn(usize) -> f64) -> DMatrix<f64> {
+    DMatrix::from_fn(n, n, |i, j| {
         if i == j {
-            (10.0 - i as f64).abs()
+            diag(i)
         } else if i.abs_diff(j) == 1 {
             1.0
         } else {
             0.0
         }
-    });
-    let j = jordan_guess(&a, &Tol::default()).unwrap();
-    // symmetric: every block has size 1; a pair merged into one cluster must not be True
-    // with algebraic multiplicity 2 (the exact eigenvalues are simple)
+    })
+}
+
+/// No cluster of `a`'s float Jordan guess claims (`True`) a multiple eigenvalue: `a` has
+/// simple eigenvalues only.
+fn no_true_multiple(a: &DMatrix<f64>) {
+    let j = jordan_guess(a, &Tol::default()).unwrap();
     for c in &j.clusters {
         if c.truth == Truth::True {
             assert_eq!(c.algebraic_multiplicity, 1, "{c:?}");
         }
     }
+}
+
+#[test]
+fn wilkinson_symmetric_21() {
+    // W21+: diag |10 - i|, off-diagonal 1; eigenvalues simple, the largest pairs agree to 1e-14
+    // symmetric: every block has size 1; a pair merged into one cluster must not be True
+    // with algebraic multiplicity 2 (the exact eigenvalues are simple)
+    no_true_multiple(&tridiagonal_ones(21, |i| (10.0 - i as f64).abs()));
 }
 
 #[test]
@@ -88,34 +97,17 @@ fn clusters_of_close_distinct_eigenvalues_are_not_true() {
 #[test]
 fn four_distinct_eigenvalues_within_1e9_are_not_a_true_multiple_eigenvalue() {
     let d = [1.0, 1.0 + 1e-9, 1.0 + 2e-9, 1.0 + 3e-9, -10.0];
-    let a = DMatrix::from_fn(5, 5, |i, j| if i == j { d[i] } else { 0.0 });
-    let j = jordan_guess(&a, &Tol::default()).unwrap();
-    for c in &j.clusters {
-        if c.truth == Truth::True {
-            assert_eq!(c.algebraic_multiplicity, 1, "{c:?}");
-        }
-    }
+    no_true_multiple(&DMatrix::from_fn(
+        5,
+        5,
+        |i, j| if i == j { d[i] } else { 0.0 },
+    ));
 }
 
 #[test]
 fn wilkinson_20_pairs_not_claimed_double() {
     // MATLAB wilkinson(20): diag |-9.5..9.5|, off-diagonal 1; every eigenvalue simple
-    let n = 20;
-    let a = DMatrix::from_fn(n, n, |i, j| {
-        if i == j {
-            (i as f64 - 9.5).abs()
-        } else if i.abs_diff(j) == 1 {
-            1.0
-        } else {
-            0.0
-        }
-    });
-    let j = jordan_guess(&a, &Tol::default()).unwrap();
-    for c in &j.clusters {
-        if c.truth == Truth::True {
-            assert_eq!(c.algebraic_multiplicity, 1, "{c:?}");
-        }
-    }
+    no_true_multiple(&tridiagonal_ones(20, |i| (i as f64 - 9.5).abs()));
 }
 
 #[test]

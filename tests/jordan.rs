@@ -162,8 +162,9 @@ fn vehicle_eq_24_26_yaw_plane_understeer() {
     assert!(rf.exact && rf.verified, "{:?}", rf.notes);
 }
 
-#[test]
-fn vehicle_eq_27_35_single_wheel_three_zeros_one_block() {
+/// The vehicle paper's single-wheel yaw plane (eq. 27 with m = 1500, u = 20, cr = 80000,
+/// the front axle absent): `(m, u, cr)`, `A` and its Jordan form.
+fn single_wheel() -> ((Rational, Rational, Rational), Matrix<Q>, JordanForm) {
     let (m, u, cr) = (r(1500, 1), r(20, 1), r(80000, 1));
     let a = yaw_plane(
         m.clone(),
@@ -175,6 +176,12 @@ fn vehicle_eq_27_35_single_wheel_three_zeros_one_block() {
         u.clone(),
     );
     let jf = jordan(&a).unwrap();
+    ((m, u, cr), a, jf)
+}
+
+#[test]
+fn vehicle_eq_27_35_single_wheel_three_zeros_one_block() {
+    let ((m, u, cr), a, jf) = single_wheel();
     assert!(jf.verified);
     assert_eq!(blocks_of(&jf, "0"), [3]);
     let s = -(&cr / (&m * &u));
@@ -203,17 +210,7 @@ fn vehicle_eq_27_35_single_wheel_three_zeros_one_block() {
 
 #[test]
 fn vehicle_eq_36_37_free_response_term_by_term() {
-    let (m, u, cr) = (r(1500, 1), r(20, 1), r(80000, 1));
-    let a = yaw_plane(
-        m.clone(),
-        r(2500, 1),
-        r(6, 5),
-        r(0, 1),
-        r(0, 1),
-        cr.clone(),
-        u.clone(),
-    );
-    let jf = jordan(&a).unwrap();
+    let ((m, u, cr), _, jf) = single_wheel();
     let fr = jf.free_response();
     assert!(fr.verify(&jf));
     let s = -(&cr / (&m * &u));

@@ -4,7 +4,8 @@
 //! proptest over both fields.
 
 use crate::common::cli::{self, run};
-use exactlti::field::{Field, Quadratic, QuadraticField, Rational};
+use crate::common::{quadratic as q, quadratic_matrix as mat};
+use exactlti::field::{Field, Quadratic, QuadraticField};
 use exactlti::jordan::{JordanForm, jordan_over as jordan_over_k};
 type JordanFormK = JordanForm<QuadraticField>;
 use exactlti::matrix::Matrix;
@@ -14,23 +15,6 @@ use proptest::prelude::*;
 mod real;
 #[path = "jordan_fields/symbols.rs"]
 mod symbols;
-
-fn q(a: i64, b: i64) -> Quadratic {
-    Quadratic::new(
-        Rational::from_integer(a.into()),
-        Rational::from_integer(b.into()),
-    )
-}
-
-fn mat(k: &QuadraticField, rows: &[&[(i64, i64)]]) -> Matrix<QuadraticField> {
-    Matrix::from_rows(
-        k.clone(),
-        rows.iter()
-            .map(|r| r.iter().map(|&(a, b)| q(a, b)).collect())
-            .collect(),
-    )
-    .unwrap()
-}
 
 fn values(jf: &JordanFormK) -> Vec<String> {
     jf.eigenvalues
@@ -147,18 +131,7 @@ fn planted(
 
 fn jordan_matrix(k: &QuadraticField, blocks: &[(Quadratic, usize)]) -> Matrix<QuadraticField> {
     let n: usize = blocks.iter().map(|b| b.1).sum();
-    let mut j = Matrix::zeros(k.clone(), n, n);
-    let mut off = 0;
-    for (theta, size) in blocks {
-        for i in 0..*size {
-            j.set(off + i, off + i, theta.clone());
-            if i + 1 < *size {
-                j.set(off + i, off + i + 1, k.one());
-            }
-        }
-        off += size;
-    }
-    j
+    crate::jcommon::jordan_blocks(k, blocks, n)
 }
 
 #[test]
@@ -303,17 +276,7 @@ fn real_jordan_form_over_q_sqrt2() {
     real_form_close(&a, &rf);
     // [[sqrt 2, 1], [-1, sqrt 2]] (roots sqrt 2 +- i, minimal polynomial of degree 4), a
     // real root, and a 2-block of a complex pair: planted
-    let mut j = Matrix::zeros(k.clone(), 5, 5);
-    for off in [0, 2] {
-        j.set(off, off, q(0, 1));
-        j.set(off + 1, off + 1, q(0, 1));
-        j.set(off, off + 1, q(1, 0));
-        j.set(off + 1, off, q(-1, 0));
-    }
-    j.set(0, 2, k.one());
-    j.set(1, 3, k.one());
-    j.set(4, 4, q(-1, 1));
-    let a = planted(&k, &j, &[(1, 0), (0, 1), (-1, 1), (2, 0)]);
+    let a = real::pair_block_matrix(&k);
     let jf = jordan_over_k(&a).unwrap();
     check(&jf);
     let pair: Vec<_> = jf

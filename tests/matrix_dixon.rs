@@ -13,42 +13,10 @@ use num_traits::{One, Signed, Zero};
 use proptest::prelude::*;
 use proptest::test_runner::{RngAlgorithm, TestRng, TestRunner};
 
+use crate::common::{matmul_q as matmul, random_rationals as random};
+
 fn qq(n: i64, d: i64) -> Rational {
     Rational::new(n.into(), d.into())
-}
-
-/// Entries p/q with |p| <= `pmax` and 1 <= q <= `qmax`, a zero one time in `zeros`.
-fn random(
-    g: &mut SplitMix64,
-    m: usize,
-    n: usize,
-    pmax: i64,
-    qmax: i64,
-    zeros: i64,
-) -> Vec<Rational> {
-    (0..m * n)
-        .map(|_| {
-            if zeros > 0 && g.int(0, zeros - 1) == 0 {
-                Rational::zero()
-            } else {
-                qq(g.int(-pmax, pmax), g.int(1, qmax))
-            }
-        })
-        .collect()
-}
-
-fn matmul(m: usize, k: usize, n: usize, a: &[Rational], b: &[Rational]) -> Vec<Rational> {
-    let mut c = vec![Rational::zero(); m * n];
-    for i in 0..m {
-        for l in 0..k {
-            if !a[i * k + l].is_zero() {
-                for j in 0..n {
-                    c[i * n + j] += &a[i * k + l] * &b[l * n + j];
-                }
-            }
-        }
-    }
-    c
 }
 
 /// The particular solution of the generic RREF of `[A | B]` (None: inconsistent).

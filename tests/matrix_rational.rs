@@ -11,35 +11,15 @@ use exactlti::qkernels::modular::direct;
 use exactlti::rng::SplitMix64;
 use num_traits::{One, Zero};
 
+use crate::common::matmul_q as matmul;
+
 fn qq(n: i64, d: i64) -> Rational {
     Rational::new(n.into(), d.into())
 }
 
 /// Entries p/q with |p| <= 10^6 and q <= `qmax`, a zero one time in `zeros`.
 fn random(g: &mut SplitMix64, m: usize, n: usize, qmax: i64, zeros: i64) -> Vec<Rational> {
-    (0..m * n)
-        .map(|_| {
-            if zeros > 0 && g.int(0, zeros - 1) == 0 {
-                Rational::zero()
-            } else {
-                qq(g.int(-1_000_000, 1_000_000), g.int(1, qmax))
-            }
-        })
-        .collect()
-}
-
-fn matmul(m: usize, k: usize, n: usize, a: &[Rational], b: &[Rational]) -> Vec<Rational> {
-    let mut c = vec![Rational::zero(); m * n];
-    for i in 0..m {
-        for l in 0..k {
-            if !a[i * k + l].is_zero() {
-                for j in 0..n {
-                    c[i * n + j] += &a[i * k + l] * &b[l * n + j];
-                }
-            }
-        }
-    }
-    c
+    crate::common::random_rationals(g, m, n, 1_000_000, qmax, zeros)
 }
 
 fn mat(m: usize, n: usize, a: &[Rational]) -> Matrix<Q> {

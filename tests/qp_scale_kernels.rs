@@ -170,16 +170,22 @@ fn an_irreducible_pivot_minor_is_recorded_unfactored() {
     );
 }
 
+/// diag(p0..p(n-1)) by Rosenbrock and by Ho–Kalman: the whole system (order n), verified,
+/// the Markov parameters kept.
+fn diag_keeps_the_markov_parameters(n: usize) {
+    let s = diag_qp(n);
+    for method in [MinrealMethod::Rosenbrock, MinrealMethod::HoKalman] {
+        let r = minimal(&s, method).unwrap();
+        assert_eq!(r.order, n, "n = {n}, {method:?}");
+        assert!(r.verified, "n = {n}, {method:?}");
+        assert_eq!(s.markov(2 * n + 1), r.system.markov(2 * n + 1), "n = {n}");
+    }
+}
+
 #[test]
 fn diag_rosenbrock_and_ho_kalman_keep_the_markov_parameters() {
     for n in 2..=4 {
-        let s = diag_qp(n);
-        for method in [MinrealMethod::Rosenbrock, MinrealMethod::HoKalman] {
-            let r = minimal(&s, method).unwrap();
-            assert_eq!(r.order, n, "n = {n}, {method:?}");
-            assert!(r.verified, "n = {n}, {method:?}");
-            assert_eq!(s.markov(2 * n + 1), r.system.markov(2 * n + 1), "n = {n}");
-        }
+        diag_keeps_the_markov_parameters(n);
     }
 }
 
@@ -189,13 +195,7 @@ fn diag_rosenbrock_and_ho_kalman_keep_the_markov_parameters() {
 #[test]
 fn diag_rosenbrock_without_the_vandermonde_inverse() {
     for n in [5, 7] {
-        let s = diag_qp(n);
-        for method in [MinrealMethod::Rosenbrock, MinrealMethod::HoKalman] {
-            let r = minimal(&s, method).unwrap();
-            assert_eq!(r.order, n, "n = {n}, {method:?}");
-            assert!(r.verified, "n = {n}, {method:?}");
-            assert_eq!(s.markov(2 * n + 1), r.system.markov(2 * n + 1), "n = {n}");
-        }
+        diag_keeps_the_markov_parameters(n);
     }
 }
 

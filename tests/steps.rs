@@ -16,17 +16,6 @@ use exactlti::realization::steps::{jordan_method_steps, kalman_steps};
 use exactlti::realization::{mcmillan_degree, observability_matrix};
 use exactlti::system::StateSpace;
 
-/// $A - \theta I$ over the field of `a`.
-fn shifted<K: Field>(a: &Matrix<K>, theta: &K::Elem) -> Matrix<K> {
-    let k = a.field().clone();
-    let mut n = a.clone();
-    for i in 0..a.nrows() {
-        let v = k.sub(n.get(i, i), theta);
-        n.set(i, i, v);
-    }
-    n
-}
-
 /// Checks every Jordan step of `d` (for the input `a_of(part)` over the part's field) against
 /// recomputed values; returns the block sizes per part.
 fn check_jordan<K: Field + 'static>(d: &Derivation<K>, a: &Matrix<K>) -> Vec<Vec<usize>> {
@@ -41,7 +30,7 @@ fn check_jordan<K: Field + 'static>(d: &Derivation<K>, a: &Matrix<K>) -> Vec<Vec
         let n_mat = ks.matrix("N").unwrap();
         let theta = ks.scalar("theta").unwrap();
         let lifted = a.map(n_mat.field(), |x| x.clone());
-        assert_eq!(n_mat, &shifted(&lifted, theta), "N = A - theta I");
+        assert_eq!(n_mat, &jcommon::shifted(&lifted, theta), "N = A - theta I");
         let ranks = ks.counts("ranks").unwrap();
         let dims = ks.counts("dims").unwrap();
         let mut pw = n_mat.clone();
@@ -154,27 +143,9 @@ fn a_broken_chain_is_detected() {
     assert!(!is_chain(n_mat, &Matrix::zeros(k, 4, 1)));
 }
 
-fn yaw27() -> (RatFuncField, Matrix<RatFuncField>) {
-    let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();
-    let rows = [
-        ["0", "u", "-1", "0"],
-        ["0", "0", "0", "-1"],
-        ["0", "0", "-cr/(m*u)", "-u"],
-        ["0", "0", "0", "0"],
-    ];
-    let a = Matrix::from_rows(
-        k.clone(),
-        rows.iter()
-            .map(|r| r.iter().map(|s| k.parse(s).unwrap()).collect())
-            .collect(),
-    )
-    .unwrap();
-    (k, a)
-}
-
 #[test]
 fn yaw_plane_single_wheel_reproduces_the_paper() {
-    let (k, a) = yaw27();
+    let (k, a) = jcommon::yaw27();
     let d = jordan_steps_params(&a).unwrap();
     let blocks = check_jordan(&d, &a);
     assert_eq!(
@@ -348,7 +319,7 @@ fn planted_kalman_steps_identities() {
 
 #[test]
 fn kalman_steps_over_qp_with_conditions() {
-    let (k, a) = yaw27();
+    let (k, a) = jcommon::yaw27();
     let p = |s: &str| k.parse(s).unwrap();
     let k2 = k.fresh();
     let mv = |m: &Matrix<RatFuncField>| m.map(&k2, |x| x.clone());

@@ -5,24 +5,12 @@
 //! 32: `v_j + K c` solves `N x = v_(j-1)` for every `c`).
 
 use crate::common;
+use crate::common::cli::{json_of as json, step_names};
 use crate::jcommon;
 use exactlti::field::Field;
 use exactlti::jordan::derivation::StepKind;
 use exactlti::jordan::steps::jordan_steps;
 use exactlti::matrix::Matrix;
-
-fn json(args: &[&str]) -> serde_json::Value {
-    common::cli::json_of(args)
-}
-
-fn step_names(j: &serde_json::Value) -> Vec<String> {
-    j["steps"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| s["step"].as_str().unwrap().to_string())
-        .collect()
-}
 
 /// The invariant zeros of a descriptor file: the steps (standard form first) end with the
 /// zero polynomial of the standard system, which is the descriptor pencil's (`zeros`

@@ -9,6 +9,7 @@
 //! its unit-length normalisation).
 
 use crate::common;
+use crate::common::cli::{json_of as json, step_names};
 use exactlti::algebraic::NumberField;
 use exactlti::field::ElemDisplay;
 use exactlti::field::{Field, Q};
@@ -136,9 +137,9 @@ fn mnf_steps<K: Field>(abcd: [&Matrix<K>; 4], rec: &mut Recorder<'_, K>) {
     mechanical_normal_form_recorded(None, abcd, DEFAULT_MAX_CANDIDATES, Some(rec)).unwrap();
 }
 
-#[test]
-fn mnf_steps_scrambled_oscillator_over_q() {
-    // the library's doc example: S^-1 [[0, 1], [-4, -1]] S, S = [[0, 1], [1, 1]]
+/// The library's doc example, S^-1 [[0, 1], [-4, -1]] S with S = [[0, 1], [1, 1]] (B = e1,
+/// C = e1^T, D = 0): `(A, B, C)` and its MNF steps.
+fn scrambled_oscillator_steps() -> ([Matrix<Q>; 3], Derivation<Q>) {
     let (a, b, c, d) = (
         qmat![[-2, -6], [1, 1]],
         qmat![[1], [0]],
@@ -147,7 +148,12 @@ fn mnf_steps_scrambled_oscillator_over_q() {
     );
     let mut rec = Recorder::new(Method::Mnf, Q);
     mnf_steps([&a, &b, &c, &d], &mut rec);
-    let der = rec.finish();
+    ([a, b, c], rec.finish())
+}
+
+#[test]
+fn mnf_steps_scrambled_oscillator_over_q() {
+    let ([a, b, c], der) = scrambled_oscillator_steps();
     assert!(der.verified());
     check_mnf(&der, [&a, &b, &c]).unwrap();
     let fm = one(&der, StepKind::MnfForm).unwrap();
@@ -161,16 +167,7 @@ fn mnf_steps_scrambled_oscillator_over_q() {
 fn mnf_steps_paper_appendix_b_in_symbols() {
     // eq. 18: A already in normal form over QQ(w1, w2), B = e4
     let k = RatFuncField::new(&["w1", "w2"]).unwrap();
-    let e = |s: &str| k.parse(s).unwrap();
-    let m = |rows: &[&[&str]]| {
-        Matrix::from_rows(
-            k.clone(),
-            rows.iter()
-                .map(|r| r.iter().map(|x| e(x)).collect())
-                .collect(),
-        )
-        .unwrap()
-    };
+    let m = |rows: &[&[&str]]| common::qp_matrix(&k, rows);
     let a = m(&[
         &["0", "0", "1", "0"],
         &["0", "0", "0", "1"],
@@ -240,15 +237,7 @@ fn mnf_steps_dependent_inputs_and_no_form() {
 
 #[test]
 fn tampered_mnf_steps_are_rejected() {
-    let (a, b, c, d) = (
-        qmat![[-2, -6], [1, 1]],
-        qmat![[1], [0]],
-        qmat![[1, 0]],
-        qmat![[0]],
-    );
-    let mut rec = Recorder::new(Method::Mnf, Q);
-    mnf_steps([&a, &b, &c, &d], &mut rec);
-    let der = rec.finish();
+    let ([a, b, c], der) = scrambled_oscillator_steps();
     let mut rejected = 0;
     for (i, st) in der.steps.iter().enumerate() {
         for (j, (_, o)) in st.objects.iter().enumerate() {
@@ -437,16 +426,7 @@ fn tampered_standard_steps_are_rejected() {
 fn standard_steps_over_qp() {
     // m x'' + c x' + k x = u with the velocity as an algebraic state: index 1
     let k = RatFuncField::new(&["m", "c", "k"]).unwrap();
-    let e = |s: &str| k.parse(s).unwrap();
-    let m = |rows: &[&[&str]]| {
-        Matrix::from_rows(
-            k.clone(),
-            rows.iter()
-                .map(|r| r.iter().map(|x| e(x)).collect())
-                .collect(),
-        )
-        .unwrap()
-    };
+    let m = |rows: &[&[&str]]| common::qp_matrix(&k, rows);
     let sys = Descriptor::new(
         m(&[&["1", "0", "0"], &["0", "m", "0"], &["0", "0", "0"]]),
         m(&[&["0", "0", "1"], &["-k", "-c", "0"], &["0", "1", "-1"]]),
@@ -560,19 +540,6 @@ fn tampered_real_jordan_steps_are_rejected() {
     }
     // T_c, J_c of the pair and the whole T, J
     assert_eq!(rejected, 4);
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    common::cli::json_of(args)
-}
-
-fn step_names(j: &serde_json::Value) -> Vec<String> {
-    j["steps"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| s["step"].as_str().unwrap().to_string())
-        .collect()
 }
 
 #[test]

@@ -22,16 +22,6 @@ use exactlti::matrix::Matrix;
 use exactlti::qmat;
 use exactlti::ratfunc::RatFuncField;
 
-fn shifted<K: Field>(a: &Matrix<K>, theta: &K::Elem) -> Matrix<K> {
-    let k = a.field().clone();
-    let mut n = a.clone();
-    for i in 0..a.nrows() {
-        let v = k.sub(n.get(i, i), theta);
-        n.set(i, i, v);
-    }
-    n
-}
-
 /// Recomputes every normalisation step of `d` (for the matrix `a` over the steps' fields)
 /// and returns how many steps were checked.
 fn check_normalized<K: Field>(d: &Derivation<K>, a: &Matrix<K>, how: &Normalization) -> usize {
@@ -46,7 +36,7 @@ fn check_normalized<K: Field>(d: &Derivation<K>, a: &Matrix<K>, how: &Normalizat
         let k = nm.field().clone();
         // the same N as A - theta I (A lifted into the part's field when it is Q)
         if a.field().to_string() == k.to_string() {
-            assert_eq!(&shifted(a, theta), nm);
+            assert_eq!(&jcommon::shifted(a, theta), nm);
         }
         let (v, w) = (st.matrix("V").unwrap(), st.matrix("Vn").unwrap());
         let s = w.ncols();
@@ -171,20 +161,7 @@ fn complex_eigenvalues_refuse_unit_length() {
 /// orthogonal and with its first entry 1; the constants are rational functions.
 #[test]
 fn symbolic_chains_normalised() {
-    let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();
-    let rows = [
-        ["0", "u", "-1", "0"],
-        ["0", "0", "0", "-1"],
-        ["0", "0", "-cr/(m*u)", "-u"],
-        ["0", "0", "0", "0"],
-    ];
-    let a = Matrix::from_rows(
-        k.clone(),
-        rows.iter()
-            .map(|r| r.iter().map(|s| k.parse(s).unwrap()).collect())
-            .collect(),
-    )
-    .unwrap();
+    let (_, a) = jcommon::yaw27();
     for h in ["orth", "orth,entry", "unit"] {
         let how: Normalization = h.parse().unwrap();
         let d = jordan_steps_params_with(&a, &how).unwrap();
@@ -394,16 +371,7 @@ fn descriptor_minimal_steps_identities_over_q_and_qp() {
     check(&rec.finish(), &sys);
     // over Q(k): E x' = A x + B u with a parameter in the finite and the infinite part
     let k = RatFuncField::new(&["k"]).unwrap();
-    let p = |s: &str| k.parse(s).unwrap();
-    let mk = |rows: &[&[&str]]| {
-        Matrix::from_rows(
-            k.clone(),
-            rows.iter()
-                .map(|r| r.iter().map(|s| p(s)).collect())
-                .collect(),
-        )
-        .unwrap()
-    };
+    let mk = |rows: &[&[&str]]| crate::common::qp_matrix(&k, rows);
     let sys = Descriptor::new(
         mk(&[&["0", "1", "0"], &["0", "0", "0"], &["0", "0", "1"]]),
         mk(&[&["1", "0", "0"], &["0", "1", "0"], &["0", "0", "-k"]]),

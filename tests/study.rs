@@ -129,6 +129,14 @@ fn charpoly_and_conditions_agree_with_direct_computation() {
     }
 }
 
+/// The critical values as text with their kinds, in order.
+fn kinds(cv: &exactlti::study::CriticalValues) -> Vec<(String, CriticalKind)> {
+    cv.critical
+        .iter()
+        .map(|c| (c.value.to_string(), c.kind))
+        .collect()
+}
+
 #[test]
 fn damped_oscillator_textbook() {
     // q'' + c q' + q = 0: imaginary pair +-i at c = 0, double eigenvalue -1 (one block) at
@@ -142,13 +150,8 @@ fn damped_oscillator_textbook() {
     .unwrap();
     let cv = critical_values(&fam, &q("-1"), &q("3")).unwrap();
     assert!(cv.verified);
-    let got: Vec<(String, CriticalKind)> = cv
-        .critical
-        .iter()
-        .map(|c| (c.value.to_string(), c.kind))
-        .collect();
     assert_eq!(
-        got,
+        kinds(&cv),
         [
             ("0".to_string(), CriticalKind::ImaginaryPair),
             ("2".to_string(), CriticalKind::DoubleEigenvalue)
@@ -178,13 +181,8 @@ fn derogatory_double_eigenvalue_has_two_blocks() {
     );
     let fam = ParamFamily::first_order("v", a, None).unwrap();
     let cv = critical_values(&fam, &q("-2"), &q("2")).unwrap();
-    let got: Vec<(String, CriticalKind)> = cv
-        .critical
-        .iter()
-        .map(|c| (c.value.to_string(), c.kind))
-        .collect();
     assert_eq!(
-        got,
+        kinds(&cv),
         [
             ("0".to_string(), CriticalKind::ZeroEigenvalue),
             ("1".to_string(), CriticalKind::DoubleEigenvalue)

@@ -11,33 +11,10 @@ use exactlti::ratfunc::RatFunc;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::report::sections::conditions_qp;
 
-fn mat(k: &RatFuncField, rows: &[&[&str]]) -> Matrix<RatFuncField> {
-    Matrix::from_rows(
-        k.clone(),
-        rows.iter()
-            .map(|r| r.iter().map(|s| k.parse(s).unwrap()).collect())
-            .collect(),
-    )
-    .unwrap()
-}
+use crate::common::qp_matrix as mat;
 
 fn q(n: i64, d: i64) -> Rational {
     Rational::new(n.into(), d.into())
-}
-
-/// eq. 27 over QQ(cr, m, u).
-fn yaw27() -> (RatFuncField, Matrix<RatFuncField>) {
-    let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();
-    let a = mat(
-        &k,
-        &[
-            &["0", "u", "-1", "0"],
-            &["0", "0", "0", "-1"],
-            &["0", "0", "-cr/(m*u)", "-u"],
-            &["0", "0", "0", "0"],
-        ],
-    );
-    (k, a)
 }
 
 type Form = JordanForm<RatFuncField>;
@@ -60,7 +37,7 @@ fn strings(jf: &Form, m: &Matrix<RatFuncField>) -> Vec<Vec<String>> {
 
 #[test]
 fn yaw_single_wheel_eq27_35() {
-    let (k, a) = yaw27();
+    let (k, a) = crate::jcommon::yaw27();
     let jf = jordan_qp(&a).unwrap();
     assert!(jf.verified && jf.complete());
     let kk = jf.base();

@@ -12,7 +12,7 @@
 
 use super::common::with_path;
 use super::connect_names::{NamedConnection, connect_named};
-use super::interconnect::InterconnectOpts;
+use super::interconnect_common::InterconnectOpts;
 use super::{Failure, Outcome, System, SystemVisitor};
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{SystemFile, TypedSystem};
@@ -246,7 +246,9 @@ impl SystemVisitor for Finish<'_> {
         if let Some(out) = &self.opts.out {
             let written = min.as_ref().map_or(sys, |m| &m.system);
             let name = format!("connect {}", self.name);
-            super::interconnect::write_system_file(out, &name, written, &symbols, &f.signals)?;
+            super::interconnect_common::write_system_file(
+                out, &name, written, &symbols, &f.signals,
+            )?;
             r = r.str("written", out.display().to_string());
         }
         let ok = min.as_ref().is_none_or(|m| m.verified);

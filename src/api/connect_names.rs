@@ -130,7 +130,7 @@ pub fn connect_named(systems: &[&System], c: &NamedConnection) -> Result<System,
         return Err(bad("no systems".into()));
     }
     let names: Vec<String> = (1..=systems.len()).map(|i| format!("system {i}")).collect();
-    let dt = super::interconnect::common_dt(
+    let dt = super::interconnect_common::common_dt(
         crate::system::interconnect::Operation::Append,
         &names,
         systems,

@@ -6,7 +6,6 @@
 
 use super::common::with_path;
 use super::{Failure, Outcome};
-use crate::field::Field;
 use crate::io::combine::{SystemsVisitor, common_field};
 use crate::io::symbolic::SymbolicOptions;
 use crate::io::{InputError, TypedSystem};
@@ -16,16 +15,8 @@ use crate::system::interconnect::{Interconnection, Operation, Sign, verify};
 use clap::Subcommand;
 use std::path::{Path, PathBuf};
 
-/// Options of every interconnection.
-#[derive(clap::Args, Debug, Clone)]
-pub struct InterconnectOpts {
-    /// Also the exact minimal realization of the result (Kalman decomposition), verified.
-    #[arg(long)]
-    pub minreal: bool,
-    /// Write the result (the minimal realization with --minreal) as a JSON system file.
-    #[arg(long, value_name = "OUT.json")]
-    pub out: Option<PathBuf>,
-}
+pub use super::interconnect_common::InterconnectOpts;
+use super::interconnect_common::{common_dt, write_system_file};
 
 /// The interconnection subcommands (python-control's conventions).
 #[derive(Subcommand, Debug, Clone)]
@@ -188,45 +179,6 @@ fn checked_parts(
     Ok((names, result_signals(op, systems, dt)))
 }
 
-/// The sample time shared by every system (`None`: all continuous). A static gain (no
-/// states) fits either.
-///
-/// # Errors
-/// A continuous and a discrete system, or two different sample times, named by file.
-pub(crate) fn common_dt(
-    op: Operation,
-    names: &[String],
-    systems: &[&super::System],
-) -> Result<Option<crate::field::Rational>, Failure> {
-    let mut seen: Option<(usize, Option<crate::field::Rational>)> = None;
-    for (i, s) in systems.iter().enumerate() {
-        if s.nstates() == 0 && s.dt().is_none() {
-            continue; // a static gain
-        }
-        let dt = s.file().signals.dt.clone();
-        match &seen {
-            None => seen = Some((i, dt)),
-            Some((j, d0)) if *d0 != dt => {
-                let show = |d: &Option<crate::field::Rational>| {
-                    d.as_ref().map_or("continuous time".to_string(), |d| {
-                        format!("dt = {}", crate::report::display::fmt_rational(d))
-                    })
-                };
-                return Err(Failure::input(format!(
-                    "{}: cannot connect {} ({}) with {} ({}): every system needs the same time domain and sample time (convert with c2d or d2c)",
-                    op.name(),
-                    names[*j],
-                    show(d0),
-                    names[i],
-                    show(&dt)
-                )));
-            }
-            Some(_) => {}
-        }
-    }
-    Ok(seen.and_then(|(_, d)| d))
-}
-
 /// The signal names and sample time of the result: python-control's rules for names (the
 /// inputs of the first system and the outputs of the last in a series, of the first in a
 /// parallel connection or a feedback loop), states left unnamed.
@@ -315,29 +267,6 @@ impl SystemsVisitor for Connect<'_> {
         let ok = verified && min.as_ref().is_none_or(|m| m.verified);
         Ok(Outcome::new(report, ok))
     }
-}
-
-/// Writes `sys` as a JSON system file to `out` (`--out` of the interconnection commands);
-/// a `.toml` name is an input error (only JSON is written).
-pub(crate) fn write_system_file<K: Field>(
-    out: &Path,
-    name: &str,
-    sys: &crate::system::StateSpace<K>,
-    vars: &[String],
-    signals: &crate::io::keys::SignalNames,
-) -> Result<(), Failure> {
-    if out
-        .extension()
-        .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
-    {
-        return Err(Failure::input(format!(
-            "{}: --out writes JSON; name the file .json",
-            out.display()
-        )));
-    }
-    let text = crate::io::write::system_file_text(Some(name), sys, vars, signals);
-    std::fs::write(out, text)
-        .map_err(|err| Failure::input(format!("{}: cannot write: {err}", out.display())))
 }
 
 /// The interconnection of `systems` (in the order of the command's files) as a system of

@@ -28,6 +28,7 @@ mod float_compare;
 mod freqresp_cmd;
 mod ground;
 mod interconnect;
+mod interconnect_common;
 pub mod jordan_values;
 mod linalg;
 mod pencil_cmds;

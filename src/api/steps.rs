@@ -534,11 +534,18 @@ fn through_standard<'a, F: Field>(
         return run(ss);
     };
     let (first, ss) = standard_steps(d, log)?;
-    let mut out = run(&ss)?;
-    let mut steps = lift_derivation(&first, &out.field).steps;
+    Ok(after_lifted(&first, run(&ss)?))
+}
+
+/// `out` (over an extension of $F$) with the steps of `first` (over $F$, lifted) in front.
+fn after_lifted<F: Field>(
+    first: &Derivation<F>,
+    mut out: Derivation<crate::algebraic::Ext<F>>,
+) -> Derivation<crate::algebraic::Ext<F>> {
+    let mut steps = lift_derivation(first, &out.field).steps;
     steps.append(&mut out.steps);
     out.steps = steps;
-    Ok(out)
+    out
 }
 
 /// `jordan --steps` over $\mathbb{Q}$; for a descriptor system the steps of its standard
@@ -548,16 +555,7 @@ fn jordan_q(
     t: &TypedSystem<Q>,
     norm: &Normalization,
 ) -> crate::error::Result<Derivation<NumberField>> {
-    let Some(d) = &t.descriptor else {
-        return crate::jordan::steps::jordan_steps_with(&t.a_raw, norm);
-    };
-    let (first, ss) = standard_steps(d, None)?;
-    let mut out = crate::jordan::steps::jordan_steps_with(&ss.a, norm)?;
-    let q = out.field.clone();
-    let mut steps = lift_derivation(&first, &q).steps;
-    steps.append(&mut out.steps);
-    out.steps = steps;
-    Ok(out)
+    a_through_standard(t, |a| crate::jordan::steps::jordan_steps_with(a, norm))
 }
 
 /// `jordan --real --steps` over $\mathbb{Q}$; a descriptor system through its standard form
@@ -566,16 +564,22 @@ fn real_jordan_q(
     t: &TypedSystem<Q>,
     expand: bool,
 ) -> crate::error::Result<Derivation<NumberField>> {
+    a_through_standard(t, |a| {
+        crate::jordan::real_steps::real_jordan_steps(a, expand)
+    })
+}
+
+/// `run` on the file's $A$, or for a descriptor system on its standard form's $A$ after the
+/// standard form's own steps (lifted, as in [`through_standard`]).
+fn a_through_standard(
+    t: &TypedSystem<Q>,
+    run: impl Fn(&crate::matrix::Matrix<Q>) -> crate::error::Result<Derivation<NumberField>>,
+) -> crate::error::Result<Derivation<NumberField>> {
     let Some(d) = &t.descriptor else {
-        return crate::jordan::real_steps::real_jordan_steps(&t.a_raw, expand);
+        return run(&t.a_raw);
     };
     let (first, ss) = standard_steps(d, None)?;
-    let mut out = crate::jordan::real_steps::real_jordan_steps(&ss.a, expand)?;
-    let q = out.field.clone();
-    let mut steps = lift_derivation(&first, &q).steps;
-    steps.append(&mut out.steps);
-    out.steps = steps;
-    Ok(out)
+    Ok(after_lifted(&first, run(&ss.a)?))
 }
 
 fn path_text(p: &Path) -> String {

@@ -154,46 +154,50 @@ pub trait Field:
     }
 }
 
-/// A type-equality witness `E = Rational`, returned by [`Field::as_rationals`]: views a slice
-/// of elements as rationals and turns rationals back into elements, without copying.
-pub struct RationalElems<E> {
-    view: for<'a> fn(&'a [E]) -> &'a [Rational],
-    back: fn(Vec<Rational>) -> Vec<E>,
+/// A type-equality witness `E = T`: views a slice of elements as `T`s and turns `T`s back
+/// into elements, without copying. [`RationalElems`] (returned by [`Field::as_rationals`])
+/// and [`QuadraticElems`] (in [`Kernels::Quadratic`]) are its two uses.
+pub struct Elems<T, E> {
+    view: for<'a> fn(&'a [E]) -> &'a [T],
+    back: fn(Vec<T>) -> Vec<E>,
 }
 
-impl<E> Clone for RationalElems<E> {
+/// The witness `E = Rational` ([`Field::as_rationals`], [`Kernels::Rational`]).
+pub type RationalElems<E> = Elems<Rational, E>;
+
+impl<T, E> Clone for Elems<T, E> {
     fn clone(&self) -> Self {
         *self
     }
 }
-impl<E> Copy for RationalElems<E> {}
+impl<T, E> Copy for Elems<T, E> {}
 
-fn same_slice(a: &[Rational]) -> &[Rational] {
+fn same_slice<T>(a: &[T]) -> &[T] {
     a
 }
-fn same_vec(v: Vec<Rational>) -> Vec<Rational> {
+fn same_vec<T>(v: Vec<T>) -> Vec<T> {
     v
 }
 
-impl RationalElems<Rational> {
-    /// The witness for $\mathbb{Q}$ itself.
-    pub const IDENTITY: Self = RationalElems {
-        view: same_slice,
-        back: same_vec,
+impl<T> Elems<T, T> {
+    /// The witness for `T` itself.
+    pub const IDENTITY: Self = Elems {
+        view: same_slice::<T>,
+        back: same_vec::<T>,
     };
 }
 
-impl<E> RationalElems<E> {
-    /// The elements `a`, seen as rationals.
-    pub fn view<'a>(&self, a: &'a [E]) -> &'a [Rational] {
+impl<T, E> Elems<T, E> {
+    /// The elements `a`, seen as `T`s.
+    pub fn view<'a>(&self, a: &'a [E]) -> &'a [T] {
         (self.view)(a)
     }
-    /// Rationals, as elements.
-    pub fn back(&self, v: Vec<Rational>) -> Vec<E> {
+    /// `T`s, as elements.
+    pub fn back(&self, v: Vec<T>) -> Vec<E> {
         (self.back)(v)
     }
-    /// One rational, as an element.
-    pub fn back_one(&self, x: Rational) -> E {
+    /// One `T`, as an element.
+    pub fn back_one(&self, x: T) -> E {
         self.back(vec![x]).pop().expect("one element in, one out")
     }
 }

@@ -37,43 +37,7 @@ impl Quadratic {
 
 /// A type-equality witness `E = Quadratic`, returned in [`crate::field::Kernels::Quadratic`]: views a
 /// slice of elements as [`Quadratic`]s and turns them back into elements, without copying.
-pub struct QuadraticElems<E> {
-    view: for<'a> fn(&'a [E]) -> &'a [Quadratic],
-    back: fn(Vec<Quadratic>) -> Vec<E>,
-}
-
-impl<E> Clone for QuadraticElems<E> {
-    fn clone(&self) -> Self {
-        *self
-    }
-}
-impl<E> Copy for QuadraticElems<E> {}
-
-fn same_slice(a: &[Quadratic]) -> &[Quadratic] {
-    a
-}
-fn same_vec(v: Vec<Quadratic>) -> Vec<Quadratic> {
-    v
-}
-
-impl QuadraticElems<Quadratic> {
-    /// The witness for the quadratic fields themselves.
-    pub const IDENTITY: Self = QuadraticElems {
-        view: same_slice,
-        back: same_vec,
-    };
-}
-
-impl<E> QuadraticElems<E> {
-    /// The elements `a`, seen as quadratic numbers.
-    pub fn view<'a>(&self, a: &'a [E]) -> &'a [Quadratic] {
-        (self.view)(a)
-    }
-    /// Quadratic numbers, as elements.
-    pub fn back(&self, v: Vec<Quadratic>) -> Vec<E> {
-        (self.back)(v)
-    }
-}
+pub type QuadraticElems<E> = super::Elems<Quadratic, E>;
 
 /// Trial division in [`squarefree_split`] goes up to this bound.
 const TRIAL_LIMIT: u64 = 1_000_000;

@@ -8,7 +8,7 @@
 //! states, $y = D u$).
 
 use super::load::{LoadedSystem, TypedAny, TypedSystem};
-use super::raw::{Raw, from_json_text, from_toml_text};
+use super::raw::{Raw, from_text};
 use super::{Ground, InputError, SystemFormat};
 use crate::field::{Field, Q, QuadraticField};
 use crate::ratfunc::RatFuncField;
@@ -98,10 +98,7 @@ pub fn common_field(systems: &[&LoadedSystem]) -> Result<CommonSystems, InputErr
 /// (the system without states $y = D u$); `None` for any other file (read as it is). The
 /// one reader ([`crate::api::System::open_or_gain`]) reads the text this returns.
 pub fn gain_text(text: &str, format: SystemFormat, name: &str) -> Option<String> {
-    let raw = match format {
-        SystemFormat::Json => from_json_text(text, name),
-        SystemFormat::Toml => from_toml_text(text, name),
-    };
+    let raw = from_text(text, format, name);
     let gain_only = match &raw {
         Ok(Raw::Table(entries)) => {
             let keys: Vec<&str> = entries.iter().map(|(k, _)| k.as_str()).collect();

@@ -96,11 +96,7 @@ fn descriptor_of<K: FromScalars>(f: &SystemFile, k: &K) -> Result<Descriptor<K>,
 pub fn load_descriptor_path(path: &Path) -> Result<LoadedDescriptor, InputError> {
     let name = path.display().to_string();
     let text = super::read_text(path)?;
-    let raw = if super::read::SystemFormat::of(path, &text) == super::read::SystemFormat::Toml {
-        super::raw::from_toml_text(&text, &name)?
-    } else {
-        super::raw::from_json_text(&text, &name)?
-    };
+    let raw = super::raw::from_text(&text, super::read::SystemFormat::of(path, &text), &name)?;
     if let super::raw::Raw::Table(entries) = &raw
         && entries.iter().any(|(k, _)| k == "bodies")
     {

@@ -57,6 +57,21 @@ impl Raw {
     }
 }
 
+/// `text` read as `format` ([`from_json_text`] or [`from_toml_text`]).
+///
+/// # Errors
+/// As the reader of the format.
+pub(crate) fn from_text(
+    text: &str,
+    format: super::read::SystemFormat,
+    file: &str,
+) -> Result<Raw, InputError> {
+    match format {
+        super::read::SystemFormat::Json => from_json_text(text, file),
+        super::read::SystemFormat::Toml => from_toml_text(text, file),
+    }
+}
+
 /// Parses JSON text into the proxy tree, in one pass (no intermediate `serde_json::Value`).
 ///
 /// A key given twice in one object is an error naming the key (`serde_json::Value` would

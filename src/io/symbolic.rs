@@ -26,7 +26,7 @@
 
 use super::keys::{check_keys, keys_of};
 use super::load::{LoadedSystem, TypedAny, type_file, typed_from};
-use super::raw::{Raw, from_json_text, from_toml_text};
+use super::raw::{Raw, from_text};
 pub use super::refusal;
 use super::system_file::{reserved_symbol, validate};
 use super::{Ground, InputError, SignalNames, SystemFile, SystemFormat, split_matlab_matrix};
@@ -63,10 +63,7 @@ pub fn load_symbolic_str(
     name: &str,
     opts: &SymbolicOptions,
 ) -> Result<LoadedSystem, InputError> {
-    let raw = match format {
-        SystemFormat::Json => from_json_text(text, name)?,
-        SystemFormat::Toml => from_toml_text(text, name)?,
-    };
+    let raw = from_text(text, format, name)?;
     let Raw::Table(entries) = raw else {
         return validate(raw, name).and_then(type_file);
     };
@@ -206,10 +203,7 @@ pub fn load_symbolic_str(
 /// whose value is `null` (read from the parsed table; text that does not parse is `false`,
 /// and the ordinary reader reports it).
 pub fn declares_symbols(text: &str, format: SystemFormat, name: &str) -> bool {
-    let raw = match format {
-        SystemFormat::Json => from_json_text(text, name),
-        SystemFormat::Toml => from_toml_text(text, name),
-    };
+    let raw = from_text(text, format, name);
     let Ok(Raw::Table(entries)) = raw else {
         return false;
     };

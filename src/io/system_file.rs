@@ -610,18 +610,7 @@ pub fn read_matrix_key(
 ) -> Result<(MatrixEntries, super::Ground), InputError> {
     let shown = path.display().to_string();
     let text = super::read::read_text(path)?;
-    let toml = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
-        || !(path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("json"))
-            || text.trim_start().starts_with('{'));
-    let raw = if toml {
-        raw::from_toml_text(&text, &shown)?
-    } else {
-        raw::from_json_text(&text, &shown)?
-    };
+    let raw = raw::from_text(&text, super::read::SystemFormat::of(path, &text), &shown)?;
     let Raw::Table(entries) = raw else {
         return Err(InputError::file(&shown, "expected a table of keys"));
     };

@@ -165,19 +165,7 @@ pub(crate) fn realize_g(
     params: Option<&serde_json::Value>,
     var: &str,
 ) -> Result<(TransferMatrix<Q>, TransferRealization<Q>), InputError> {
-    let values = eval_params(name, params)?;
-    let texts = g_texts(name, g)?;
-    let mut entries = Vec::new();
-    for (i, row) in texts.iter().enumerate() {
-        let mut out = Vec::new();
-        for (j, text) in row.iter().enumerate() {
-            out.push(
-                parse_rational_function_in(text, &values, var)
-                    .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
-            );
-        }
-        entries.push(out);
-    }
+    let entries = g_entries(name, g, params, var, parse_rational_function_in)?;
     let ncols = entries.first().map_or(0, |r| r.len());
     if entries.is_empty() || ncols == 0 || entries.iter().any(|r| r.len() != ncols) {
         return Err(InputError::key(
@@ -229,19 +217,7 @@ pub(crate) fn realize_g_as_written(
     params: Option<&serde_json::Value>,
     var: &str,
 ) -> Result<StateSpace<Q>, InputError> {
-    let values = eval_params(name, params)?;
-    let texts = g_texts(name, g)?;
-    let mut rows = Vec::new();
-    for (i, row) in texts.iter().enumerate() {
-        let mut out = Vec::new();
-        for (j, text) in row.iter().enumerate() {
-            out.push(
-                parse_written_fraction_in(text, &values, var)
-                    .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
-            );
-        }
-        rows.push(out);
-    }
+    let rows = g_entries(name, g, params, var, parse_written_fraction_in)?;
     let w = WrittenTransfer { entries: rows };
     let r = realize_as_written(&w).map_err(|e| {
         InputError::key(name, "G", format!("realize = \"as_written\": {e}"))
@@ -255,6 +231,32 @@ pub(crate) fn realize_g_as_written(
         ));
     }
     Ok(r.system)
+}
+
+/// The entries of key `G`, parameters evaluated first, each read by `parse` (with the
+/// parameter values and the variable); an entry that does not parse is named by row and
+/// column.
+fn g_entries<T>(
+    name: &str,
+    g: &serde_json::Value,
+    params: Option<&serde_json::Value>,
+    var: &str,
+    parse: impl Fn(&str, &[(String, Rational)], &str) -> crate::error::Result<T>,
+) -> Result<Vec<Vec<T>>, InputError> {
+    let values = eval_params(name, params)?;
+    let texts = g_texts(name, g)?;
+    let mut entries = Vec::new();
+    for (i, row) in texts.iter().enumerate() {
+        let mut out = Vec::new();
+        for (j, text) in row.iter().enumerate() {
+            out.push(
+                parse(text, &values, var)
+                    .map_err(|e| InputError::entry(name, "G", i + 1, j + 1, e.to_string()))?,
+            );
+        }
+        entries.push(out);
+    }
+    Ok(entries)
 }
 
 /// The entries of `G` as text, row by row: from an array of rows or a MATLAB-style string

@@ -263,6 +263,23 @@ pub fn jordan_chains<K: Field + 'static>(nm: &Matrix<K>, m: usize) -> Result<Cha
     })
 }
 
+/// Whether the columns of `v` form a chain of `nm`: $N v_1 = 0$, $v_1 \ne 0$, $N v_j =
+/// v_{j-1}$.
+pub fn is_chain<K: Field>(nm: &Matrix<K>, v: &Matrix<K>) -> bool {
+    if v.ncols() == 0 || v.col(0).iter().all(|x| v.field().is_zero(x)) {
+        return false;
+    }
+    let nv = nm * v;
+    let n = v.nrows();
+    (0..v.ncols()).all(|j| {
+        if j == 0 {
+            nv.submatrix(0, n, 0, 1).is_zero()
+        } else {
+            nv.submatrix(0, n, j, j + 1) == v.submatrix(0, n, j - 1, j)
+        }
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

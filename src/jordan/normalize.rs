@@ -264,7 +264,7 @@ pub fn normalized_holds<K: Field>(
         (Scale::Unit, UnitLength::ClosedForm { n }) => n1 == *n && !k.is_zero(n),
         _ => true,
     };
-    super::steps::is_chain(nm, w) && same_span && orth && scaled
+    super::chains::is_chain(nm, w) && same_span && orth && scaled
 }
 
 /// A chain whose unit length is in closed form after [`normalize_form`]: the columns

@@ -90,7 +90,7 @@ pub fn charpoly_factors(a: &Matrix<RatFuncField>) -> Result<QpCharpoly> {
     }
     let chi = charpoly_ratfunc(a)?;
     // clear denominators: F = L chi in Z[p][x], x = variable nv
-    let integral = super::qp_form::integral(&chi);
+    let integral = integral(&chi);
     let fz = if n == 0 {
         vec![]
     } else {
@@ -277,4 +277,15 @@ pub fn real_form_qp(a_in: &Matrix<RatFuncField>) -> Result<QpRealForm> {
         pairs,
         verified,
     })
+}
+
+/// A monic polynomial over $\mathbb{Q}(p)$ with denominators cleared: in
+/// $\mathbb{Z}\lbrack p, x\rbrack$ ($x$ the last variable), primitive, positive (lex) leading
+/// coefficient. For an irreducible factor of $\chi_A$ this is the factor as
+/// [`crate::mpoly::factor()`] writes it.
+pub fn integral(f: &Poly<RatFuncField>) -> MPoly {
+    let nv = f.field().nvars();
+    let (nums, _) = crate::ratfunc::kernels::clear_common(nv, f.coeffs());
+    let cs: Vec<MPoly> = nums.iter().map(|s| s.extend_vars(nv + 1)).collect();
+    MPoly::from_univariate(nv + 1, nv, &cs).primitive_part()
 }

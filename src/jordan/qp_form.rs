@@ -40,12 +40,10 @@ use crate::error::{Error, Result};
 use crate::field::{Field, Q, Rational};
 use crate::matrix::params::rref_params;
 use crate::matrix::{Matrix, nullspace_from_rref};
-use crate::mpoly::MPoly;
-use crate::mpoly::gcd::lcm;
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;
 
-pub use super::over_qp::MAX_N;
+pub use super::over_qp::{MAX_N, integral};
 
 /// The Jordan decomposition of a square matrix over $\mathbb{Q}(p)$ (module docs).
 ///
@@ -227,33 +225,6 @@ fn blocks_from_dims(dims: &[usize], d: usize) -> Vec<usize> {
     }
     blocks.sort_unstable_by(|a, b| b.cmp(a));
     blocks
-}
-
-/// A monic polynomial over $\mathbb{Q}(p)$ with denominators cleared: in
-/// $\mathbb{Z}\lbrack p, x\rbrack$ ($x$ the last variable), primitive, positive (lex) leading
-/// coefficient. For an irreducible factor of $\chi_A$ this is the factor as
-/// [`crate::mpoly::factor()`] writes it.
-pub fn integral(f: &Poly<RatFuncField>) -> MPoly {
-    let nv = f.field().nvars();
-    let mut l = MPoly::one(nv);
-    for c in f.coeffs() {
-        if !c.den().is_one() {
-            l = lcm(&l, c.den());
-        }
-    }
-    let cs: Vec<MPoly> = f
-        .coeffs()
-        .iter()
-        .map(|c| {
-            let s = if c.den() == &l {
-                c.num().clone()
-            } else {
-                c.num().mul(&l.div_exact(c.den()).expect("lcm"))
-            };
-            s.extend_vars(nv + 1)
-        })
-        .collect();
-    MPoly::from_univariate(nv + 1, nv, &cs).primitive_part()
 }
 
 /// The decomposition evaluated at a parameter point: `A(p0)`, `T(p0)`, `J(p0)` over

@@ -226,13 +226,11 @@ impl<F: EigenField> FreeResponse<Ext<F>> {
     /// $G_{\theta,k}$ of eigenvalue `ev` of `jf` in that eigenvalue's field
     /// ([`JordanForm::root_map`]): `(power, G)` pairs.
     pub fn terms_of(&self, jf: &JordanForm<F>, ev: usize) -> Vec<(usize, Matrix<Ext<F>>)> {
-        let e = &jf.eigenvalues[ev];
-        let (field, f) = jf.root_map(ev);
-        self.terms
-            .iter()
-            .filter(|t| t.component == e.component)
-            .map(|t| (t.power, t.coeff.map(&field, &f)))
-            .collect()
+        terms_at(
+            jf,
+            ev,
+            self.terms.iter().map(|t| (t.component, t.power, &t.coeff)),
+        )
     }
 }
 
@@ -240,14 +238,23 @@ impl<F: EigenField> StateResponse<Ext<F>> {
     /// $g_{\theta,k}$ of eigenvalue `ev` of `jf` in that eigenvalue's field
     /// ([`JordanForm::root_map`]): `(power, g)` pairs.
     pub fn terms_of(&self, jf: &JordanForm<F>, ev: usize) -> Vec<(usize, Matrix<Ext<F>>)> {
-        let e = &jf.eigenvalues[ev];
-        let (field, f) = jf.root_map(ev);
-        self.terms
-            .iter()
-            .filter(|(c, _, _)| *c == e.component)
-            .map(|(_, k, g)| (*k, g.map(&field, &f)))
-            .collect()
+        terms_at(jf, ev, self.terms.iter().map(|(c, k, g)| (*c, *k, g)))
     }
+}
+
+/// The terms `(component, power, matrix)` of eigenvalue `ev`'s component, each mapped into
+/// that eigenvalue's field ([`JordanForm::root_map`]): `(power, matrix)` pairs.
+fn terms_at<'a, F: EigenField + 'a>(
+    jf: &JordanForm<F>,
+    ev: usize,
+    terms: impl Iterator<Item = (usize, usize, &'a Matrix<Ext<F>>)>,
+) -> Vec<(usize, Matrix<Ext<F>>)> {
+    let e = &jf.eigenvalues[ev];
+    let (field, f) = jf.root_map(ev);
+    terms
+        .filter(|(c, _, _)| *c == e.component)
+        .map(|(_, k, g)| (k, g.map(&field, &f)))
+        .collect()
 }
 
 impl<F: Field + 'static> StateResponse<Ext<F>> {

@@ -19,6 +19,7 @@
 //! The chains are those of [`super::chains::jordan_chains`], the primitive [`super::jordan`]
 //! and [`super::jordan_qp`] use.
 
+pub use super::chains::is_chain;
 use super::chains::{jordan_block_matrix, jordan_chains};
 use super::derivation::{Derivation, Method, Object, Recorder, StepKind, ratfunc_log};
 use super::normalize::{Normalization, UnitLength, normalize_chain, normalized_holds};
@@ -73,23 +74,6 @@ pub fn weyr_segre(dims: &[usize]) -> (Vec<usize>, Vec<usize>) {
         .map(|j| weyr.iter().filter(|&&w| w >= j).count())
         .collect();
     (weyr, segre)
-}
-
-/// Whether the columns of `v` form a chain of `nm`: $N v_1 = 0$, $v_1 \ne 0$, $N v_j =
-/// v_{j-1}$.
-pub fn is_chain<K: Field>(nm: &Matrix<K>, v: &Matrix<K>) -> bool {
-    if v.ncols() == 0 || v.col(0).iter().all(|x| v.field().is_zero(x)) {
-        return false;
-    }
-    let nv = nm * v;
-    let n = v.nrows();
-    (0..v.ncols()).all(|j| {
-        if j == 0 {
-            nv.submatrix(0, n, 0, 1).is_zero()
-        } else {
-            nv.submatrix(0, n, j, j + 1) == v.submatrix(0, n, j - 1, j)
-        }
-    })
 }
 
 /// Records the steps of the eigenvalue `theta` (multiplicity `m`) of `a` and returns its

@@ -177,16 +177,32 @@ impl<K: Field> Matrix<K> {
     }
     pub fn is_identity(&self) -> bool {
         self.is_square()
-            && (0..self.nrows).all(|i| {
-                (0..self.ncols).all(|j| {
-                    let x = self.get(i, j);
-                    if i == j {
-                        self.field.is_one(x)
-                    } else {
-                        self.field.is_zero(x)
-                    }
-                })
-            })
+            && (0..self.nrows).all(|i| (0..self.ncols).all(|j| self.is_delta(i, j, i == j)))
+    }
+    /// Do the columns `cols`, in this order, form the identity (one per row)?
+    pub fn is_identity_on_cols(&self, cols: &[usize]) -> bool {
+        cols.len() == self.nrows
+            && cols
+                .iter()
+                .enumerate()
+                .all(|(k, &c)| (0..self.nrows).all(|i| self.is_delta(i, c, i == k)))
+    }
+    /// Do the rows `rows`, in this order, form the identity (one per column)?
+    pub fn is_identity_on_rows(&self, rows: &[usize]) -> bool {
+        rows.len() == self.ncols
+            && rows
+                .iter()
+                .enumerate()
+                .all(|(k, &r)| (0..self.ncols).all(|j| self.is_delta(r, j, j == k)))
+    }
+    /// Entry `(i, j)` is one (`one`) or zero (not `one`).
+    fn is_delta(&self, i: usize, j: usize, one: bool) -> bool {
+        let x = self.get(i, j);
+        if one {
+            self.field.is_one(x)
+        } else {
+            self.field.is_zero(x)
+        }
     }
     /// Converts every entry into another field.
     pub fn map<L: Field>(&self, to: &L, f: impl Fn(&K::Elem) -> L::Elem) -> Matrix<L> {

@@ -16,8 +16,8 @@ use super::Matrix;
 use crate::error::{Error, Result};
 use crate::field::Field;
 use crate::mpoly::MPoly;
-use crate::mpoly::gcd::lcm;
 use crate::poly::Poly;
+use crate::qkernels::fraction_free::{FractionFree, bareiss, ff_gauss_jordan};
 use crate::ratfunc::RatFuncField;
 use num_bigint::BigInt;
 use num_traits::ToPrimitive;
@@ -51,31 +51,35 @@ pub fn det_bareiss_zp(nvars: usize, n: usize, b: &[MPoly]) -> MPoly {
         return MPoly::one(nvars);
     }
     let mut a = b.to_vec();
-    let mut prev = MPoly::one(nvars);
-    let mut neg = false;
-    for k in 0..n {
-        let Some(p) = (k..n).find(|&i| !a[i * n + k].is_zero()) else {
-            return MPoly::zero(nvars);
-        };
-        if p != k {
-            for j in 0..n {
-                a.swap(p * n + j, k * n + j);
+    match bareiss(n, &mut a, MPoly::one(nvars)) {
+        None => MPoly::zero(nvars),
+        Some((d, neg)) => {
+            if neg {
+                d.neg()
+            } else {
+                d
             }
-            neg = !neg;
         }
-        for i in k + 1..n {
-            for j in k + 1..n {
-                let t = a[k * n + k]
-                    .mul(&a[i * n + j])
-                    .sub(&a[i * n + k].mul(&a[k * n + j]));
-                a[i * n + j] = t.div_exact(&prev).expect("Bareiss division is exact");
-            }
-            a[i * n + k] = MPoly::zero(nvars);
-        }
-        prev = a[k * n + k].clone();
     }
-    let d = a[n * n - 1].clone();
-    if neg { d.neg() } else { d }
+}
+
+/// $\mathbb{Z}\lbrack p\rbrack$ for [`ff_gauss_jordan`] (a zero `c` skips its product).
+impl FractionFree for MPoly {
+    fn vanishes(&self) -> bool {
+        self.is_zero()
+    }
+    fn cross_div(a: &Self, b: &Self, c: &Self, d: &Self, e: &Self) -> Self {
+        let t = if c.is_zero() {
+            a.mul(b)
+        } else {
+            a.mul(b).sub(&c.mul(d))
+        };
+        if e.is_one() {
+            t
+        } else {
+            t.div_exact(e).expect("fraction-free division is exact")
+        }
+    }
 }
 
 /// Canonical RREF and pivot columns of an `m x n` matrix over $\mathbb{Q}(p)$ by
@@ -89,70 +93,19 @@ pub fn rref_params(a: &Matrix<RatFuncField>) -> (Matrix<RatFuncField>, Vec<usize
     let k = a.field().clone();
     let nv = k.nvars();
     let (m, n) = a.shape();
-    let mut e: Vec<MPoly> = Vec::with_capacity(m * n);
-    let mut scale: Vec<MPoly> = Vec::with_capacity(m);
-    for i in 0..m {
-        let row = a.row(i);
-        let mut d = MPoly::one(nv);
-        for x in row {
-            if !x.den().is_one() {
-                d = lcm(&d, x.den());
-            }
-        }
-        for x in row {
-            e.push(if x.den() == &d {
-                x.num().clone()
-            } else {
-                x.num().mul(&d.div_exact(x.den()).expect("lcm"))
-            });
-        }
-        scale.push(d);
-    }
-    let mut pivots = Vec::new();
-    let mut den = MPoly::one(nv);
+    let (mut e, mut scale) = crate::ratfunc::kernels::clear_rows(nv, m, n, a.as_slice());
     let mut sprod = MPoly::one(nv);
-    let mut r = 0;
-    for c in 0..n {
-        if r == m {
-            break;
-        }
-        let Some(i) = (r..m).find(|&i| !e[i * n + c].is_zero()) else {
-            continue;
-        };
+    let (pivots, den) = ff_gauss_jordan(m, n, &mut e, MPoly::one(nv), |r, i, piv| {
         if i != r {
-            for j in 0..n {
-                e.swap(i * n + j, r * n + j);
-            }
             scale.swap(i, r);
         }
-        let piv = e[r * n + c].clone();
         // the leading minor M_r(A) = piv / (product of the row scalings)
         sprod = sprod.mul(&scale[r]);
         if let Some(minor) = k.frac(piv.clone(), sprod.clone()) {
             k.record_condition(minor.num());
         }
-        for i in 0..m {
-            if i == r {
-                continue;
-            }
-            let f = e[i * n + c].clone();
-            for j in 0..n {
-                let t = if f.is_zero() {
-                    piv.mul(&e[i * n + j])
-                } else {
-                    piv.mul(&e[i * n + j]).sub(&f.mul(&e[r * n + j]))
-                };
-                e[i * n + j] = if den.is_one() {
-                    t
-                } else {
-                    t.div_exact(&den).expect("fraction-free division is exact")
-                };
-            }
-        }
-        den = piv;
-        pivots.push(c);
-        r += 1;
-    }
+    });
+    let r = pivots.len();
     let out: Vec<_> = e
         .into_iter()
         .enumerate()

@@ -313,20 +313,32 @@ fn subresultant_last(mut a: Vec<MPoly>, mut b: Vec<MPoly>) -> Vec<MPoly> {
         if r.len() == 1 {
             return r;
         }
-        let den = g.mul(&h.pow(delta));
-        a = b;
-        b = r
-            .iter()
-            .map(|c| c.div_exact(&den).expect("subresultant division is exact"))
-            .collect();
-        g = a.last().unwrap().clone();
-        h = if delta == 0 {
-            h
-        } else {
-            g.pow(delta)
-                .div_exact(&h.pow(delta - 1))
-                .expect("subresultant division is exact")
-        };
+        subresultant_step([&mut a, &mut b], &r, [&mut g, &mut h], delta);
+    }
+}
+
+/// One step of the subresultant PRS (Cohen, Alg. 3.3.1), shared by [`subresultant_last`] and
+/// [`super::resultant::resultant`]: with `r = prem(a, b)` nonzero and `delta = deg a - deg
+/// b`, `a <- b`, `b <- r / (g h^delta)`, `g <- lc(a)`, `h <- g^delta / h^(delta - 1)`; every
+/// division is exact.
+pub(crate) fn subresultant_step(
+    [a, b]: [&mut Vec<MPoly>; 2],
+    r: &[MPoly],
+    [g, h]: [&mut MPoly; 2],
+    delta: u32,
+) {
+    let den = g.mul(&h.pow(delta));
+    let next = r
+        .iter()
+        .map(|c| c.div_exact(&den).expect("exact subresultant step"))
+        .collect();
+    *a = std::mem::replace(b, next);
+    *g = a.last().unwrap().clone();
+    if delta != 0 {
+        *h = g
+            .pow(delta)
+            .div_exact(&h.pow(delta - 1))
+            .expect("exact subresultant step");
     }
 }
 

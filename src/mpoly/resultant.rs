@@ -15,7 +15,7 @@
 //! result checked at random points: [`super::probe`]).
 
 use super::MPoly;
-use super::gcd::{prem, trim};
+use super::gcd::{prem, subresultant_step, trim};
 use super::interp::{Bounds, interpolate_zp};
 use crate::qkernels::modular::det::det_mod_p;
 use crate::qkernels::prime::Prime;
@@ -119,20 +119,7 @@ pub fn resultant_prs(f: &MPoly, g: &MPoly, i: usize) -> MPoly {
         if r.is_empty() {
             return MPoly::zero(n);
         }
-        let den = g_.mul(&h.pow(delta));
-        a = b;
-        b = r
-            .iter()
-            .map(|c| c.div_exact(&den).expect("exact subresultant step"))
-            .collect();
-        g_ = a.last().unwrap().clone();
-        h = if delta == 0 {
-            h
-        } else {
-            g_.pow(delta)
-                .div_exact(&h.pow(delta - 1))
-                .expect("exact subresultant step")
-        };
+        subresultant_step([&mut a, &mut b], &r, [&mut g_, &mut h], delta);
         if b.len() == 1 {
             let dega = (a.len() - 1) as u32;
             let num = b[0].pow(dega);

@@ -1,10 +1,8 @@
 //! Assembly of a [`Model`] into its descriptor system (see the module docs of
 //! [`crate::multibody`] for the equations).
 
-use super::geometry::{
-    Vec3, add_block, carried, carried_rows, dot3, point_map, scale3, skew, sparse_mul, sub3,
-};
-use super::preload::{load_stiffness, tangent_stiffness};
+use super::geometry::{Vec3, add_block, dot3, point_map, scale3, skew, sparse_mul, sub3};
+use super::preload::{load_stiffness, projections, tangent_stiffness};
 use super::{Assembly, LineItem, LineKind, Model, PointItem, PointKind};
 use crate::error::{Error, Result};
 use crate::field::Field;
@@ -160,24 +158,11 @@ fn two_body_rows<K: Field>(
 }
 
 /// The rows `[Pf 0; 0 Pm] T` of a point item: the 6 rows of the projections for a flexible
-/// item (its stiffness is `k T^T P T`), the independent rows of [`carried_rows`] for a
+/// item (its stiffness is `k T^T P T`), the independent rows of [`super::geometry::carried_rows`] for a
 /// constraint (one equation per carried direction).
 pub(super) fn point_rows<K: Field>(m: &Model<K>, p: &PointItem<K>) -> Result<Matrix<K>> {
     let k = &m.field;
-    let proj = |n: u8| {
-        let p6 = if p.kind == PointKind::Flexible {
-            carried(k, n, &p.axis)
-        } else {
-            carried_rows(k, n, &p.axis)
-        };
-        p6.ok_or_else(|| {
-            Error::Invalid(format!(
-                "{}: an axis is needed (and must be non-zero)",
-                p.name
-            ))
-        })
-    };
-    let (pf, pm) = (proj(p.forces)?, proj(p.moments)?);
+    let (pf, pm) = projections(k, p, p.kind == PointKind::Flexible)?;
     let mut p6 = Matrix::zeros(k.clone(), pf.nrows() + pm.nrows(), 6);
     add_block(&mut p6, 0, 0, &pf, false);
     add_block(&mut p6, pf.nrows(), 3, &pm, false);

@@ -124,17 +124,18 @@ pub(super) fn tangent_stiffness<K: Field>(
     Ok(out)
 }
 
-/// The force and moment a point item carries from its multipliers `lam` (the 6 of a
-/// flexible item's projections, `full`, or one per independent row of a constraint):
-/// $P^T \lambda$; and how many multipliers it used.
-fn carried_load<K: Field>(
-    m: &Model<K>,
+/// The projections `(Pf, Pm)` of a point item's forces and moments: the full ones
+/// ([`carried`], a flexible item) or their independent rows ([`carried_rows`], a
+/// constraint).
+///
+/// # Errors
+/// `Invalid` when a projection needs the item's axis and it is missing or zero.
+pub(super) fn projections<K: Field>(
+    k: &K,
     p: &super::PointItem<K>,
-    lam: &[K::Elem],
     full: bool,
-) -> Result<(Vec3<K>, Vec3<K>, usize)> {
-    let k = &m.field;
-    let rows = |n: u8| {
+) -> Result<(Matrix<K>, Matrix<K>)> {
+    let proj = |n: u8| {
         let r = if full {
             carried(k, n, &p.axis)
         } else {
@@ -147,7 +148,20 @@ fn carried_load<K: Field>(
             ))
         })
     };
-    let (pf, pm) = (rows(p.forces)?, rows(p.moments)?);
+    Ok((proj(p.forces)?, proj(p.moments)?))
+}
+
+/// The force and moment a point item carries from its multipliers `lam` (the 6 of a
+/// flexible item's projections, `full`, or one per independent row of a constraint):
+/// $P^T \lambda$; and how many multipliers it used.
+fn carried_load<K: Field>(
+    m: &Model<K>,
+    p: &super::PointItem<K>,
+    lam: &[K::Elem],
+    full: bool,
+) -> Result<(Vec3<K>, Vec3<K>, usize)> {
+    let k = &m.field;
+    let (pf, pm) = projections(k, p, full)?;
     let (nf, nm) = (pf.nrows(), pm.nrows());
     let vec3 = |pr: &Matrix<K>, l: &[K::Elem]| -> Vec3<K> {
         let v = &pr.transpose() * &Matrix::column(k.clone(), l.to_vec());

@@ -38,19 +38,8 @@ pub(crate) struct Deflation<K: Field> {
 
 /// Do the rows of `ker` outside `piv` form the identity (in increasing order)?
 fn identity_off_pivots<K: Field>(ker: &Matrix<K>, piv: &[usize]) -> bool {
-    let fld = ker.field();
     let free: Vec<usize> = (0..ker.nrows()).filter(|i| !piv.contains(i)).collect();
-    free.len() == ker.ncols()
-        && free.iter().enumerate().all(|(k, &i)| {
-            (0..ker.ncols()).all(|j| {
-                let x = ker.get(i, j);
-                if j == k {
-                    fld.is_one(x)
-                } else {
-                    fld.is_zero(x)
-                }
-            })
-        })
+    ker.is_identity_on_rows(&free)
 }
 
 /// Runs the staircase until $E$ has full column rank.

@@ -49,16 +49,8 @@ impl Zp {
         if a >= b { a - b } else { a + self.p - b }
     }
 
-    pub fn powu(&self, mut a: u64, mut e: u64) -> u64 {
-        let mut r = 1 % self.p;
-        while e > 0 {
-            if e & 1 == 1 {
-                r = self.mulm(r, a);
-            }
-            a = self.mulm(a, a);
-            e >>= 1;
-        }
-        r
+    pub fn powu(&self, a: u64, e: u64) -> u64 {
+        crate::qkernels::prime::pow_by(a, e, 1 % self.p, |x, y| self.mulm(x, y))
     }
 
     /// Inverse of a nonzero element (Fermat).

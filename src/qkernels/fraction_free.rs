@@ -40,21 +40,30 @@ fn cross_div(a: &BigInt, b: &BigInt, c: &BigInt, d: &BigInt, e: &BigInt) -> BigI
 pub fn det_bareiss(n: usize, a: &[Rational]) -> Rational {
     let (b, scales) = integer_rows(n, n, a);
     let mut m = b.entries;
-    let mut sign_neg = false;
-    let mut prev = BigInt::one();
+    let Some((d, neg)) = bareiss(n, &mut m, BigInt::one()) else {
+        return Rational::zero();
+    };
+    let d = if neg { -d } else { d };
+    crate::qkernels::intmat::scale_det(d, &scales)
+}
+
+/// Bareiss's one-step elimination on the `n x n` row-major `m` over an integral domain, in
+/// place (`one` its unit): `Some((d, neg))` with $\det = \pm d$ (`neg`: an odd number of
+/// row swaps; `d = one` for `n = 0`), `None` for a singular matrix. Every division is exact.
+pub fn bareiss<R: FractionFree>(n: usize, m: &mut [R], one: R) -> Option<(R, bool)> {
+    let mut neg = false;
+    let mut prev = one;
     for k in 0..n {
-        let Some(i) = (k..n).find(|&i| !m[i * n + k].is_zero()) else {
-            return Rational::zero();
-        };
+        let i = (k..n).find(|&i| !m[i * n + k].vanishes())?;
         if i != k {
             for j in 0..n {
                 m.swap(i * n + j, k * n + j);
             }
-            sign_neg = !sign_neg;
+            neg = !neg;
         }
         for i in k + 1..n {
             for j in k + 1..n {
-                m[i * n + j] = cross_div(
+                m[i * n + j] = R::cross_div(
                     &m[k * n + k],
                     &m[i * n + j],
                     &m[i * n + k],
@@ -65,22 +74,45 @@ pub fn det_bareiss(n: usize, a: &[Rational]) -> Rational {
         }
         prev = m[k * n + k].clone();
     }
-    let d = if sign_neg { -prev } else { prev };
-    crate::qkernels::intmat::scale_det(d, &scales)
+    Some((prev, neg))
 }
 
-/// Fraction-free Gauss–Jordan on an integer `m x n` matrix in place. Afterwards the first
-/// `r` rows hold `den * R` (every pivot entry equals `den`, the last pivot); returns
-/// `(pivots, den)`.
-fn ff_gauss_jordan(m: usize, n: usize, a: &mut [BigInt]) -> (Vec<usize>, BigInt) {
+/// An integral domain for fraction-free elimination: $\mathbb{Z}$ ([`BigInt`]) here,
+/// $\mathbb{Z}\lbrack p\rbrack$ in [`crate::matrix::params::rref_params`].
+pub trait FractionFree: Clone {
+    fn vanishes(&self) -> bool;
+    /// $(a b - c d) / e$, the division exact.
+    fn cross_div(a: &Self, b: &Self, c: &Self, d: &Self, e: &Self) -> Self;
+}
+
+impl FractionFree for BigInt {
+    fn vanishes(&self) -> bool {
+        self.is_zero()
+    }
+    fn cross_div(a: &Self, b: &Self, c: &Self, d: &Self, e: &Self) -> Self {
+        cross_div(a, b, c, d, e)
+    }
+}
+
+/// Fraction-free Gauss–Jordan on an `m x n` matrix over an integral domain in place
+/// (`one` its unit). Afterwards the first `r` rows hold `den * R` (every pivot entry equals
+/// `den`, the last pivot); returns `(pivots, den)`. `on_pivot(r, i, piv)` sees each pivot
+/// after row `i` was swapped into row `r` (`i == r`: no swap), before the elimination.
+pub fn ff_gauss_jordan<R: FractionFree>(
+    m: usize,
+    n: usize,
+    a: &mut [R],
+    one: R,
+    mut on_pivot: impl FnMut(usize, usize, &R),
+) -> (Vec<usize>, R) {
     let mut pivots = Vec::new();
-    let mut den = BigInt::one();
+    let mut den = one;
     let mut r = 0;
     for c in 0..n {
         if r == m {
             break;
         }
-        let Some(i) = (r..m).find(|&i| !a[i * n + c].is_zero()) else {
+        let Some(i) = (r..m).find(|&i| !a[i * n + c].vanishes()) else {
             continue;
         };
         if i != r {
@@ -89,6 +121,7 @@ fn ff_gauss_jordan(m: usize, n: usize, a: &mut [BigInt]) -> (Vec<usize>, BigInt)
             }
         }
         let piv = a[r * n + c].clone();
+        on_pivot(r, i, &piv);
         for i in 0..m {
             if i == r {
                 continue;
@@ -96,7 +129,7 @@ fn ff_gauss_jordan(m: usize, n: usize, a: &mut [BigInt]) -> (Vec<usize>, BigInt)
             let f = a[i * n + c].clone();
             for j in 0..n {
                 // columns left of c in row r are zero; the update there is a pure rescale
-                a[i * n + j] = cross_div(&piv, &a[i * n + j], &f, &a[r * n + j], &den);
+                a[i * n + j] = R::cross_div(&piv, &a[i * n + j], &f, &a[r * n + j], &den);
             }
         }
         den = piv;
@@ -114,7 +147,7 @@ fn ff_gauss_jordan(m: usize, n: usize, a: &mut [BigInt]) -> (Vec<usize>, BigInt)
 pub fn rref_bareiss(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<usize>) {
     let (b, _) = integer_rows(m, n, a);
     let mut e = b.entries;
-    let (pivots, den) = ff_gauss_jordan(m, n, &mut e);
+    let (pivots, den) = ff_gauss_jordan(m, n, &mut e, BigInt::one(), |_, _, _| {});
     let r = pivots.len();
     let out = e
         .into_iter()
@@ -137,7 +170,9 @@ pub fn rref_bareiss(m: usize, n: usize, a: &[Rational]) -> (Vec<Rational>, Vec<u
 pub fn rank_bareiss(m: usize, n: usize, a: &[Rational]) -> usize {
     let (b, _) = integer_rows(m, n, a);
     let mut e = b.entries;
-    ff_gauss_jordan(m, n, &mut e).0.len()
+    ff_gauss_jordan(m, n, &mut e, BigInt::one(), |_, _, _| {})
+        .0
+        .len()
 }
 
 /// Inverse of the `n x n` row-major `a` (`None` when singular), by fraction-free
@@ -155,7 +190,7 @@ pub fn inverse_bareiss(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
         }
         e[i * w + n + i] = BigInt::one();
     }
-    let (pivots, den) = ff_gauss_jordan(n, w, &mut e);
+    let (pivots, den) = ff_gauss_jordan(n, w, &mut e, BigInt::one(), |_, _, _| {});
     // invertible iff the first n pivots are the columns of B
     if n > 0 && pivots.get(n - 1) != Some(&(n - 1)) {
         return None;

@@ -76,29 +76,42 @@ impl IntMat {
     /// $\log_2$ of the Euclidean norm of each row (`-inf` for a zero row), rounded up by a
     /// safety margin so that $2^{\text{result}}$ bounds the true norm.
     pub fn row_norm_log2(&self) -> Vec<f64> {
-        if let Some(s) = &self.small
-            && let Some(v) = (0..self.m)
-                .map(|i| norm_log2_small((0..self.n).map(|j| s[i * self.n + j])))
-                .collect()
-        {
-            return v;
-        }
-        (0..self.m)
-            .map(|i| norm_log2((0..self.n).map(|j| self.at(i, j))))
-            .collect()
+        self.norms_log2::<true>()
     }
 
     /// As [`IntMat::row_norm_log2`] for the columns.
     pub fn col_norm_log2(&self) -> Vec<f64> {
+        self.norms_log2::<false>()
+    }
+
+    /// [`IntMat::row_norm_log2`] (`ROWS`) or [`IntMat::col_norm_log2`]: line `o`, entry `k`
+    /// is `(o, k)` for rows and `(k, o)` for columns.
+    fn norms_log2<const ROWS: bool>(&self) -> Vec<f64> {
+        let (lines, len) = if ROWS {
+            (self.m, self.n)
+        } else {
+            (self.n, self.m)
+        };
+        let at = |o: usize, k: usize| if ROWS { (o, k) } else { (k, o) };
         if let Some(s) = &self.small
-            && let Some(v) = (0..self.n)
-                .map(|j| norm_log2_small((0..self.m).map(|i| s[i * self.n + j])))
+            && let Some(v) = (0..lines)
+                .map(|o| {
+                    norm_log2_small((0..len).map(|k| {
+                        let (i, j) = at(o, k);
+                        s[i * self.n + j]
+                    }))
+                })
                 .collect()
         {
             return v;
         }
-        (0..self.n)
-            .map(|j| norm_log2((0..self.m).map(|i| self.at(i, j))))
+        (0..lines)
+            .map(|o| {
+                norm_log2((0..len).map(|k| {
+                    let (i, j) = at(o, k);
+                    self.at(i, j)
+                }))
+            })
             .collect()
     }
 }

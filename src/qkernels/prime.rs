@@ -130,16 +130,8 @@ impl Prime {
     }
 
     /// `a^e mod p`.
-    pub fn pow(&self, mut a: u64, mut e: u64) -> u64 {
-        let mut r = 1 % self.p;
-        while e > 0 {
-            if e & 1 == 1 {
-                r = self.mul(r, a);
-            }
-            a = self.mul(a, a);
-            e >>= 1;
-        }
-        r
+    pub fn pow(&self, a: u64, e: u64) -> u64 {
+        pow_by(a, e, 1 % self.p, |x, y| self.mul(x, y))
     }
 
     /// A square root of `a` modulo the odd prime `p` (Tonelli–Shanks): `Some(r)` with
@@ -305,6 +297,21 @@ pub fn primes(start: usize) -> impl Iterator<Item = Prime> {
 
 /// $\log_2 p$ lower bound used when counting how many primes a bound needs.
 pub const PRIME_BITS: f64 = 61.0;
+
+/// `a^e` by square-and-multiply with the modular product `mul` and its unit `one` (the one
+/// loop of [`Prime::pow`] and of `Fp::powu` in `poly::fp`).
+#[inline]
+pub fn pow_by(mut a: u64, mut e: u64, one: u64, mul: impl Fn(u64, u64) -> u64) -> u64 {
+    let mut r = one;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mul(r, a);
+        }
+        a = mul(a, a);
+        e >>= 1;
+    }
+    r
+}
 
 #[cfg(test)]
 mod tests {

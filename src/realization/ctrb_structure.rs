@@ -104,7 +104,7 @@ pub fn controllability_structure<K: Field>(
         let unc = la.select_cols(unit);
         let ok = left.nrows() == n - order
             && unit.len() == n - order
-            && identity_on(left, unit)
+            && left.is_identity_on_cols(unit)
             && (left * b).is_zero()
             && la == &unc * left;
         ok.then_some(unc)
@@ -206,22 +206,6 @@ pub fn descriptor_controllability<K: Field>(
         finite_order: f.nstates(),
         infinite_order: split.n.nrows(),
     })
-}
-
-/// Is `l` restricted to the columns `cols` the identity?
-fn identity_on<K: Field>(l: &Matrix<K>, cols: &[usize]) -> bool {
-    let fld = l.field();
-    cols.len() == l.nrows()
-        && cols.iter().enumerate().all(|(k, &c)| {
-            (0..l.nrows()).all(|i| {
-                let x = l.get(i, c);
-                if i == k {
-                    fld.is_one(x)
-                } else {
-                    fld.is_zero(x)
-                }
-            })
-        })
 }
 
 /// With the field's RREF guess ($\mathbb{Q}$, [`Matrix::rref_guess`]): a basis $L$ of the left null space of `basis` ($n \times s$) guessed

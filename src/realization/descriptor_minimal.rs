@@ -39,24 +39,7 @@ use crate::jordan::derivation::Recorder;
 use crate::matrix::Matrix;
 use crate::system::{Descriptor, StateSpace};
 
-/// A minimal descriptor realization with its exact checks.
-#[derive(Clone, Debug)]
-pub struct DescriptorMinimal<K: Field> {
-    pub system: Descriptor<K>,
-    /// Order of the minimal realization ($n_f + n_\infty$).
-    pub order: usize,
-    /// Finite (McMillan degree of the strictly proper part) and infinite parts of `order`.
-    pub finite_order: usize,
-    pub infinite_order: usize,
-    /// Order of an irreducible realization of the original (non-dynamic modes kept).
-    pub irreducible_order: usize,
-    pub original_order: usize,
-    /// Degree $q$ of the polynomial part (0: proper).
-    pub polynomial_degree: usize,
-    /// Same transfer matrix, finite and infinite controllability and observability, no
-    /// non-dynamic modes: checked exactly.
-    pub verified: bool,
-}
+pub use super::descriptor_minimal_result::{DescriptorMinimal, is_minimal_at_infinity};
 
 /// $\mathrm{diag}$ of a standard system $(A_f, B_f, C_f)$ and a descriptor system.
 fn assemble<K: Field>(fin: &StateSpace<K>, inf: &Descriptor<K>) -> Result<Descriptor<K>> {
@@ -178,14 +161,4 @@ pub fn minimal_descriptor_recorded<K: Field>(
         steps::assembled(r, &out);
     }
     Ok(out)
-}
-
-/// $\mathrm{rank}[E, B] = n$, $\mathrm{rank}[E; C] = n$, $A\ker E \subseteq \mathrm{im}\,E$.
-pub fn is_minimal_at_infinity<K: Field>(sys: &Descriptor<K>) -> bool {
-    let n = sys.nstates();
-    let re = sys.e.rank();
-    let akere = &sys.a * &sys.e.nullspace();
-    sys.e.hstack(&sys.b).is_ok_and(|x| x.rank() == n)
-        && sys.e.vstack(&sys.c).is_ok_and(|x| x.rank() == n)
-        && sys.e.hstack(&akere).is_ok_and(|x| x.rank() == re)
 }

@@ -12,7 +12,7 @@
 //!   infinity.
 
 use super::controllability::{is_controllable, is_observable};
-use super::descriptor_minimal::{DescriptorMinimal, is_minimal_at_infinity};
+use super::descriptor_minimal_result::{DescriptorMinimal, is_minimal_at_infinity};
 use super::weierstrass::same_transfer;
 use crate::field::Field;
 use crate::jordan::derivation::{Object, Recorder, StepKind};

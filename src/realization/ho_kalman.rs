@@ -102,7 +102,7 @@ pub fn minimal_ho_kalman_recorded<K: Field>(
             sys.d.clone(),
         )?;
         if let Some(r) = rec {
-            super::steps::minimal_part(r, sys, &min);
+            super::steps_record::minimal_part(r, sys, &min);
         }
         return Ok(MinimalRealization::new(
             sys,
@@ -124,7 +124,7 @@ pub fn minimal_ho_kalman_recorded<K: Field>(
     let h1 = hankel_matrix(sys, n, n, 1);
     let (rref, piv) = h0.rref();
     let r = piv.len();
-    super::steps::hankel(rc, &h0, r);
+    super::steps_record::hankel(rc, &h0, r);
     let l = h0.select_cols(&piv);
     let rr = rref.submatrix(0, r, 0, h0.ncols());
     let linv = left_inverse(&l)?;
@@ -133,8 +133,8 @@ pub fn minimal_ho_kalman_recorded<K: Field>(
     let b = rr.submatrix(0, r, 0, m);
     let c = l.submatrix(0, p, 0, r);
     let min = StateSpace::new(a, b, c, sys.d.clone())?;
-    super::steps::hankel_factor(rc, [&h0, &h1], [&l, &rr], [&linv, &rinv], &min);
-    super::steps::minimal_part(rc, sys, &min);
+    super::steps_record::hankel_factor(rc, [&h0, &h1], [&l, &rr], [&linv, &rinv], &min);
+    super::steps_record::minimal_part(rc, sys, &min);
     Ok(MinimalRealization::new(
         sys,
         min,

@@ -30,6 +30,7 @@ mod damp;
 mod descriptor;
 mod descriptor_elim;
 mod descriptor_minimal;
+mod descriptor_minimal_result;
 mod descriptor_minimal_steps;
 mod from_transfer;
 mod gramian;
@@ -46,6 +47,7 @@ mod modal;
 mod rosenbrock;
 pub(crate) mod standard_steps;
 pub mod steps;
+mod steps_record;
 mod weierstrass;
 
 pub use as_written::{Realize, WrittenRealization, WrittenTransfer, realize_as_written};

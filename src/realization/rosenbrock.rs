@@ -185,7 +185,7 @@ pub fn minimal_rosenbrock_recorded<K: Field>(
     let n = sys.nstates();
     let (t1, kc) = controllable_staircase(&sys.a, &sys.b)?;
     let s1 = sys.transform(&t1)?;
-    super::steps::staircase(rec, sys, &t1, &s1, kc, false);
+    super::steps_record::staircase(rec, sys, &t1, &s1, kc, false);
     let cidx: Vec<usize> = (n - kc..n).collect();
     let ctrl = s1.select_states(&cidx);
     // observability staircase on the dual of the controllable part
@@ -196,8 +196,8 @@ pub fn minimal_rosenbrock_recorded<K: Field>(
     let s2 = ctrl.transform(&t2p)?;
     let oidx: Vec<usize> = (kc - ko..kc).collect();
     let min = s2.select_states(&oidx);
-    super::steps::staircase(rec, &dual, &t2, &dual.transform(&t2)?, ko, true);
-    super::steps::minimal_part(rec, sys, &min);
+    super::steps_record::staircase(rec, &dual, &t2, &dual.transform(&t2)?, ko, true);
+    super::steps_record::minimal_part(rec, sys, &min);
     Ok(MinimalRealization::new(
         sys,
         min,

@@ -14,6 +14,7 @@ pub mod plot;
 pub mod sections;
 pub(crate) mod series;
 pub(crate) mod steps;
+pub(crate) mod steps_base;
 pub(crate) mod steps_forms;
 pub mod steps_html;
 pub mod steps_latex;
@@ -22,6 +23,7 @@ pub(crate) mod steps_more;
 pub(crate) mod steps_norm;
 pub(crate) mod summary;
 pub(crate) mod text;
+pub(crate) mod text_cells;
 
 pub use sections::critical_report;
 pub use steps::derivation_report;

@@ -9,7 +9,7 @@
 //! [`SAMPLE_ROWS`] evenly spaced rows plus the rows of the extremes; the sampled rows are
 //! exactly the data's rows (not interpolated). JSON and LaTeX keep every sample.
 
-use super::text::{sig, text_table};
+use super::text_cells::{sig, text_table};
 use super::{AltText, Report, Value};
 
 /// Evenly spaced rows of a series table (the rows of the extremes come on top).
@@ -133,7 +133,7 @@ fn names(r: &Report, key: &str, n: usize, base: &str) -> Vec<String> {
             .iter()
             .map(|x| match x {
                 Value::Str(s) => s.clone(),
-                other => super::text::inline_text(other),
+                other => super::text_cells::inline_text(other),
             })
             .collect(),
         _ => (1..=n).map(|k| format!("{base}{k}")).collect(),
@@ -239,7 +239,7 @@ fn sweep_series(r: &Report, pad: &str) -> Option<String> {
         let list: Vec<String> = ev[k]
             .iter()
             .map(|z| match z.as_slice() {
-                [re, im] => super::text::sig_complex((*re, *im)),
+                [re, im] => super::text_cells::sig_complex((*re, *im)),
                 other => other.iter().map(|x| sig(*x)).collect::<Vec<_>>().join(" "),
             })
             .collect();

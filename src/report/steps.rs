@@ -9,23 +9,7 @@ use crate::jordan::derivation::{Derivation, Method, Object, Step, StepKind};
 use crate::poly::Poly;
 use crate::report::{MatrixOut, Report, Value, str_list};
 
-/// The variable of characteristic polynomials and transfer functions in displays: the
-/// derivation's (`s`, or `z` in discrete time) unless a parameter is so named (then `x`).
-pub(crate) fn poly_var<K: Field>(d: &Derivation<K>) -> &'static str {
-    let shown = d.field.to_string();
-    let v = d.variable;
-    let named = [
-        format!("({v},"),
-        format!(", {v})"),
-        format!(", {v},"),
-        format!("({v})"),
-    ];
-    if named.iter().any(|n| shown.contains(n.as_str())) {
-        "x"
-    } else {
-        v
-    }
-}
+pub(crate) use super::steps_base::{counts, one_based, poly_var, step_field, theta_step};
 
 /// `text` with the Laplace variable `s` written as `var` (`z` in discrete time): every `s`
 /// standing as a symbol of its own (`(s)`, `sI`, `s_0`, `s0`, `s^{k}`), not a letter of a
@@ -178,19 +162,6 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
     }
 }
 
-pub(crate) fn counts(xs: &[usize]) -> String {
-    let v: Vec<String> = xs.iter().map(|x| x.to_string()).collect();
-    v.join(", ")
-}
-
-pub(crate) fn one_based(xs: &[usize]) -> String {
-    if xs.is_empty() {
-        return "none".into();
-    }
-    let v: Vec<String> = xs.iter().map(|x| (x + 1).to_string()).collect();
-    v.join(", ")
-}
-
 /// A polynomial in `var`.
 pub fn poly_text<K: Field>(p: &Poly<K>, var: &str) -> String {
     p.to_string_var(var)
@@ -206,24 +177,6 @@ fn factors_text<K: Field>(fs: &[(Poly<K>, usize)], var: &str) -> String {
         })
         .collect();
     v.join(" * ")
-}
-
-/// The field of a step's first matrix (a number field per part over $\mathbb{Q}$).
-pub(crate) fn step_field<K: Field>(d: &Derivation<K>, s: &Step<K>) -> K {
-    s.objects
-        .iter()
-        .find_map(|(_, o)| match o {
-            Object::Matrix(m) => Some(m.field().clone()),
-            _ => None,
-        })
-        .unwrap_or_else(|| d.field.clone())
-}
-
-/// The step that names the eigenvalue of `part` (kernel sequence or modal data).
-pub(crate) fn theta_step<K: Field>(d: &Derivation<K>, part: Option<usize>) -> Option<&Step<K>> {
-    d.steps.iter().find(|s| {
-        s.part == part && matches!(s.kind, StepKind::KernelSequence | StepKind::ModalData)
-    })
 }
 
 /// The eigenvalue of a part, as text.

@@ -166,8 +166,8 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
         ),
         StepKind::DescriptorEliminate => format!(
             "Eliminate the algebraic states {} with the equations {} (X = A^_IJ invertible): z_J = -X^-1 (A^_IS z_S + B^_I u); E' = E11, A' = A^_RS - A^_RJ X^-1 A^_IS, B' = B^_R - A^_RJ X^-1 B^_I, C' = C^_S - C^_J X^-1 A^_IS, D' = D - C^_J X^-1 B^_I.",
-            s.counts("states").map(super::steps::one_based).unwrap_or_default(),
-            s.counts("eqs").map(super::steps::one_based).unwrap_or_default()
+            s.counts("states").map(super::steps_base::one_based).unwrap_or_default(),
+            s.counts("eqs").map(super::steps_base::one_based).unwrap_or_default()
         ),
         StepKind::DescriptorFitting if s.get("lambda0").is_none() => "E is invertible: no infinite eigenvalues, the split is trivial, V1 = I, Af = E^-1 A, Bf = E^-1 B (E Af = A, E Bf = B).".into(),
         StepKind::DescriptorFitting => format!(

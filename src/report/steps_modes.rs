@@ -64,7 +64,7 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
 }
 
 fn theta<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
-    let f = super::steps::step_field(d, s);
+    let f = super::steps_base::step_field(d, s);
     s.scalar("theta").map(|t| f.fmt_elem(t)).unwrap_or_default()
 }
 
@@ -79,7 +79,7 @@ fn roots(s: usize) -> String {
 /// The plain sentence of a step of this file.
 pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
     let c = |k: &str| s.count(k).unwrap_or(0);
-    let var = super::steps::poly_var(d);
+    let var = super::steps_base::poly_var(d);
     match s.kind {
         StepKind::SpectralProjector => format!(
             "The mode of the factor {}: its spectral projector P = V R (V its pivot columns, R the rows of its RREF) and the part (Ap, Bp, Cp) = (R A V, R B, C V) on the generalized eigenspace.",
@@ -97,16 +97,16 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
         StepKind::ModeRanking if c("unranked") == 1 => format!(
             "The projectors add up to I (n = {}) and the parts' Markov parameters to C A^k B; the modes in the order of the factors {} (not ranked: their weights are rational functions of the parameters, whose order changes with the values).",
             c("n"),
-            s.counts("ranked").map(super::steps::one_based).unwrap_or_default()
+            s.counts("ranked").map(super::steps_base::one_based).unwrap_or_default()
         ),
         StepKind::ModeRanking => format!(
             "The projectors add up to I (n = {}) and the parts' Markov parameters to C A^k B; the modes ranked heaviest first: factors {}.",
             c("n"),
-            s.counts("ranked").map(super::steps::one_based).unwrap_or_default()
+            s.counts("ranked").map(super::steps_base::one_based).unwrap_or_default()
         ),
         StepKind::TruncationError => format!(
             "Truncation: keep the factors {}; (Ak, Bk, Ck, D) is the sum of their parts, the error E = G - G_K the sum of the dropped ones: its first Markov parameter M0 = C_D B_D, its DC gain E(0) = -C_D A_D^-1 B_D and its H2 norm squared h2 (when the dropped parts are stable).",
-            s.counts("kept_modes").map(super::steps::one_based).unwrap_or_default()
+            s.counts("kept_modes").map(super::steps_base::one_based).unwrap_or_default()
         ),
         StepKind::FreeTerms => format!(
             "Eigenvalue theta = {}{}: the vectors g_k = G_k x0 (side by side) of the terms t^k e^(theta t) g_k of x(t).",

@@ -3,6 +3,7 @@
 //! LaTeX) and the LaTeX symbols of their objects. The Jordan and Kalman texts are in
 //! `report::steps`; both are called through the same functions there.
 
+use super::steps_base::{counts, one_based};
 use crate::field::Field;
 use crate::jordan::derivation::{Derivation, Method, Step, StepKind};
 
@@ -103,19 +104,6 @@ pub fn identity(k: StepKind) -> (&'static str, &'static str) {
         ),
         k => super::steps_forms::identity(k),
     }
-}
-
-fn one_based(xs: &[usize]) -> String {
-    if xs.is_empty() {
-        return "none".into();
-    }
-    let v: Vec<String> = xs.iter().map(|x| (x + 1).to_string()).collect();
-    v.join(", ")
-}
-
-fn counts(xs: &[usize]) -> String {
-    let v: Vec<String> = xs.iter().map(|x| x.to_string()).collect();
-    v.join(", ")
 }
 
 fn rows_of<K: Field>(s: &Step<K>, key: &str) -> usize {

@@ -69,7 +69,7 @@ fn cnt<K: Field>(s: &Step<K>, key: &str) -> usize {
 
 /// What the scaling of a normalised chain did, in words.
 fn scaled_text<K: Field>(d: &Derivation<K>, s: &Step<K>, latex: bool) -> String {
-    let k = super::steps::step_field(d, s);
+    let k = super::steps_base::step_field(d, s);
     let el = |x: &K::Elem| {
         if latex {
             format!("${}$", k.latex_elem(x))
@@ -126,12 +126,12 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
             "The paper's |B| = |Bt| (eq. 36) for the compacted block{}: Bt -> a Bt, Ct -> Ct / a with a^2 = |B|^2 / |Bt|^2 = {}{}.",
             theta_text(d, s),
             s.scalar("a2")
-                .map(|x| super::steps::step_field(d, s).fmt_elem(x))
+                .map(|x| super::steps_base::step_field(d, s).fmt_elem(x))
                 .unwrap_or_default(),
             match s.scalar("a") {
                 Some(a) => format!(
                     ", a = {} exact (shown: the scaled Bt, Ct)",
-                    super::steps::step_field(d, s).fmt_elem(a)
+                    super::steps_base::step_field(d, s).fmt_elem(a)
                 ),
                 None =>
                     ", a = sqrt(a^2) not in the field: closed form (shown: Bt, Ct before scaling)"
@@ -177,8 +177,11 @@ pub fn sentence<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
 
 /// `" of theta = ..."` for a step of an eigenvalue part.
 fn theta_text<K: Field>(d: &Derivation<K>, s: &Step<K>) -> String {
-    match super::steps::theta_step(d, s.part).and_then(|t| t.scalar("theta").map(|x| (t, x))) {
-        Some((t, x)) => format!(" of theta = {}", super::steps::step_field(d, t).fmt_elem(x)),
+    match super::steps_base::theta_step(d, s.part).and_then(|t| t.scalar("theta").map(|x| (t, x))) {
+        Some((t, x)) => format!(
+            " of theta = {}",
+            super::steps_base::step_field(d, t).fmt_elem(x)
+        ),
         None => String::new(),
     }
 }

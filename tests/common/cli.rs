@@ -79,6 +79,16 @@ pub fn run_json(args: &[&str]) -> serde_json::Value {
     json_of(&a)
 }
 
+/// The `step` names of a derivation's JSON (`steps: [{step, ...}]`), in order.
+pub fn step_names(j: &serde_json::Value) -> Vec<String> {
+    j["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["step"].as_str().unwrap().to_string())
+        .collect()
+}
+
 /// Runs the CLI with `args` as given (they name `--format json`), asserts exit 0, and parses
 /// the output (the message names the arguments, stderr, and the text that is not JSON).
 pub fn json_of(args: &[&str]) -> serde_json::Value {

@@ -4,6 +4,7 @@
 use crate::common::Rng;
 use exactlti::field::{Q, Rational};
 use exactlti::matrix::Matrix;
+use exactlti::ratfunc::RatFuncField;
 
 pub fn r(n: i64, d: i64) -> Rational {
     Rational::new(n.into(), d.into())
@@ -248,4 +249,31 @@ pub fn sizes_by_eigenvalue<E: Clone + PartialEq>(planted: &[(E, usize)]) -> Vec<
         v.sort_unstable_by(|x, y| y.cmp(x));
     }
     out
+}
+
+/// The vehicle paper's yaw plane over $\mathbb{Q}(cr, m, u)$ (eq. 27: a chain of length 3 at
+/// 0 and the eigenvalue $-cr/(m u)$).
+pub fn yaw27() -> (RatFuncField, Matrix<RatFuncField>) {
+    let k = RatFuncField::new(&["cr", "m", "u"]).unwrap();
+    let a = crate::common::qp_matrix(
+        &k,
+        &[
+            &["0", "u", "-1", "0"],
+            &["0", "0", "0", "-1"],
+            &["0", "0", "-cr/(m*u)", "-u"],
+            &["0", "0", "0", "0"],
+        ],
+    );
+    (k, a)
+}
+
+/// $A - \theta I$ over the field of `a`.
+pub fn shifted<K: exactlti::field::Field>(a: &Matrix<K>, theta: &K::Elem) -> Matrix<K> {
+    let k = a.field().clone();
+    let mut n = a.clone();
+    for i in 0..a.nrows() {
+        let v = k.sub(n.get(i, i), theta);
+        n.set(i, i, v);
+    }
+    n
 }

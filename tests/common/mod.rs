@@ -124,3 +124,72 @@ pub fn qi() -> (QuadraticField, Option<<QuadraticField as Field>::Elem>) {
     let g = k.gen_elem();
     (k, Some(g))
 }
+
+/// `a + b*sqrt(d)` (or `a + b*i`) with integer parts.
+pub fn quadratic(a: i64, b: i64) -> exactlti::field::Quadratic {
+    exactlti::field::Quadratic::new(
+        Rational::from_integer(a.into()),
+        Rational::from_integer(b.into()),
+    )
+}
+
+/// A matrix over a quadratic field from `(a, b)` pairs, `a + b*sqrt(d)` each.
+pub fn quadratic_matrix(k: &QuadraticField, rows: &[&[(i64, i64)]]) -> Matrix<QuadraticField> {
+    Matrix::from_rows(
+        k.clone(),
+        rows.iter()
+            .map(|r| r.iter().map(|&(a, b)| quadratic(a, b)).collect())
+            .collect(),
+    )
+    .unwrap()
+}
+
+/// `m x n` row-major entries p/q with |p| <= `pmax` and 1 <= q <= `qmax`, a zero one time
+/// in `zeros` (none for `zeros = 0`).
+pub fn random_rationals(
+    g: &mut Rng,
+    m: usize,
+    n: usize,
+    pmax: i64,
+    qmax: i64,
+    zeros: i64,
+) -> Vec<Rational> {
+    (0..m * n)
+        .map(|_| {
+            if zeros > 0 && g.int(0, zeros - 1) == 0 {
+                Rational::from_integer(0.into())
+            } else {
+                Rational::new(g.int(-pmax, pmax).into(), g.int(1, qmax).into())
+            }
+        })
+        .collect()
+}
+
+/// The product of the row-major `m x k` `a` and `k x n` `b` (zero entries of `a` skipped).
+pub fn matmul_q(m: usize, k: usize, n: usize, a: &[Rational], b: &[Rational]) -> Vec<Rational> {
+    let mut c = vec![Rational::from_integer(0.into()); m * n];
+    for i in 0..m {
+        for l in 0..k {
+            if a[i * k + l] != Rational::from_integer(0.into()) {
+                for j in 0..n {
+                    c[i * n + j] += &a[i * k + l] * &b[l * n + j];
+                }
+            }
+        }
+    }
+    c
+}
+
+/// A matrix over $\mathbb{Q}(p)$ from rows of entries written as text (`"-cr/(m*u)"`).
+pub fn qp_matrix(
+    k: &exactlti::ratfunc::RatFuncField,
+    rows: &[&[&str]],
+) -> Matrix<exactlti::ratfunc::RatFuncField> {
+    Matrix::from_rows(
+        k.clone(),
+        rows.iter()
+            .map(|r| r.iter().map(|x| k.parse(x).unwrap()).collect())
+            .collect(),
+    )
+    .unwrap()
+}

@@ -71,7 +71,7 @@ pub(super) fn legend(rf: &RealJordanForm<QuadraticField>, key: &str) -> Vec<Stri
 }
 
 /// sqrt(d) +- i twice in a 2-block, and -1 + sqrt(d), planted over Q(sqrt d).
-fn pair_block_matrix(k: &QuadraticField) -> Matrix<QuadraticField> {
+pub(super) fn pair_block_matrix(k: &QuadraticField) -> Matrix<QuadraticField> {
     let mut j = Matrix::zeros(k.clone(), 5, 5);
     for off in [0, 2] {
         j.set(off, off, q(0, 1));

@@ -16,7 +16,7 @@
 mod items;
 mod reader;
 
-use super::raw::{Raw, from_json_text, from_toml_text};
+use super::raw::{Raw, from_text};
 use super::subst::{Substitution, SymbolicOptions};
 use super::{Ground, InputError, SystemFormat};
 use crate::field::Q;
@@ -51,10 +51,7 @@ const TOP_KEYS: [&str; 14] = [
 
 /// Does `text` (JSON or TOML) hold a model file (a top-level key `bodies`)?
 pub fn is_model_text(text: &str, format: SystemFormat) -> bool {
-    let raw = match format {
-        SystemFormat::Json => from_json_text(text, ""),
-        SystemFormat::Toml => from_toml_text(text, ""),
-    };
+    let raw = from_text(text, format, "");
     matches!(raw, Ok(Raw::Table(t)) if t.iter().any(|(k, _)| k == "bodies"))
 }
 
@@ -71,10 +68,7 @@ pub fn read_model_str(
     name: &str,
     opts: &SymbolicOptions,
 ) -> Result<ModelAny, InputError> {
-    let raw = match format {
-        SystemFormat::Json => from_json_text(text, name)?,
-        SystemFormat::Toml => from_toml_text(text, name)?,
-    };
+    let raw = from_text(text, format, name)?;
     let Raw::Table(top) = raw else {
         return Err(InputError::file(name, "expected a table at the top level"));
     };

@@ -14,27 +14,11 @@
 
 use super::clear_common;
 use crate::field::Field;
+use crate::mpoly::modp::eval_mod_p as eval;
 use crate::mpoly::{MAX_VARS, MPoly, gcd};
 use crate::qkernels::prime::{Prime, nth_prime};
 use crate::ratfunc::{RatFunc, RatFuncField};
 use crate::rng::SplitMix64;
-use num_bigint::Sign;
-
-fn eval(pr: &Prime, f: &MPoly, x: &[u64]) -> u64 {
-    let mut s = 0u64;
-    for (m, c) in f.terms() {
-        let (sg, digits) = c.to_u64_digits();
-        let mut t = pr.reduce_limbs(sg == Sign::Minus, &digits);
-        for (v, &xv) in x.iter().enumerate() {
-            let e = f.exp(*m, v);
-            if e > 0 {
-                t = pr.mul(t, pr.pow(xv, u64::from(e)));
-            }
-        }
-        s = pr.add(s, t);
-    }
-    s
-}
 
 /// Degree of the gcd of two polynomials over $\mathbb{Z}/p$ (low degree first, nonzero
 /// leading coefficients).

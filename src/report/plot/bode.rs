@@ -78,6 +78,22 @@ pub fn bode_svg(freqs: &[f64], resp: &Response, title: &str, labels: &[Vec<Strin
     bode_svg_marked(freqs, resp, title, labels, &[])
 }
 
+/// The curves of `resp`, the columns of their legend (two for more than one channel) and
+/// a canvas `w` wide and `h` high plus a legend line per row.
+fn canvas(
+    resp: &Response,
+    labels: &[Vec<String>],
+    title: &str,
+    (w, h): (f64, f64),
+) -> (Curves, usize, Svg) {
+    let curves = curves(resp, labels);
+    let channels = curves.2.len();
+    let cols = if channels > 1 { 2 } else { 1 };
+    let rows = channels.div_ceil(cols);
+    let svg = Svg::new(w, h + 18.0 * rows as f64, title);
+    (curves, cols, svg)
+}
+
 /// [`bode_svg`] with labelled vertical lines at the frequencies of `marks` [Hz] on both
 /// panels (the Nyquist frequency $1/(2T)$ of a discrete-time system).
 pub fn bode_svg_marked(
@@ -87,12 +103,7 @@ pub fn bode_svg_marked(
     labels: &[Vec<String>],
     marks: &[(f64, &str)],
 ) -> String {
-    let (mags, phases, names) = curves(resp, labels);
-    let channels = names.len();
-    let cols = if channels > 1 { 2 } else { 1 };
-    let rows = channels.div_ceil(cols);
-    let (w, h) = (840.0, 650.0 + 18.0 * rows as f64);
-    let mut svg = Svg::new(w, h, title);
+    let ((mags, phases, names), cols, mut svg) = canvas(resp, labels, title, (840.0, 650.0));
     let lf = finite_range(freqs.iter().map(|f| f.max(1e-300).log10()));
     let (ml, mh) = finite_range(mags.iter().flatten().copied());
     let (pl, ph) = finite_range(phases.iter().flatten().copied());
@@ -156,12 +167,7 @@ pub fn bode_svg_two_sided(
     title: &str,
     labels: &[Vec<String>],
 ) -> String {
-    let (mags, phases, names) = curves(resp, labels);
-    let channels = names.len();
-    let cols = if channels > 1 { 2 } else { 1 };
-    let rows = channels.div_ceil(cols);
-    let (w, h) = (1000.0, 690.0 + 18.0 * rows as f64);
-    let mut svg = Svg::new(w, h, title);
+    let ((mags, phases, names), cols, mut svg) = canvas(resp, labels, title, (1000.0, 690.0));
     let lf = finite_range(freqs.iter().map(|f| f.abs().max(1e-300).log10()));
     let (ml, mh) = finite_range(mags.iter().flatten().copied());
     let (pl, ph) = finite_range(phases.iter().flatten().copied());

@@ -406,21 +406,32 @@ impl<F: EigenField> FreeResponse<Ext<F>> {
     /// in the eigenvalue's field), and `verified` ([`FreeResponse::verify`]: the derivative
     /// and the value at `t = 0`).
     pub fn report(&self, jf: &JordanForm<F>) -> Report {
-        let mut items = vec![];
-        for (ev, e) in jf.eigenvalues.iter().enumerate() {
-            for (power, g) in self.terms_of(jf, ev) {
-                items.push(Value::Obj(
-                    Report::new()
-                        .str("eigenvalue", eigenvalue_text(e))
-                        .int("power", power)
-                        .matrix("G", &g),
-                ));
-            }
-        }
+        let items = response_terms(jf, "G", |ev| self.terms_of(jf, ev));
         Report::titled("Free response x(t) = sum_k t^k e^(s t) G x0")
             .list("terms", items)
             .bool("verified", self.verify(jf))
     }
+}
+
+/// The terms of a free response, one per eigenvalue and power (`terms_of(ev)`: the powers
+/// and matrices of eigenvalue `ev`), the matrix under `key`.
+pub(super) fn response_terms<F: EigenField>(
+    jf: &JordanForm<F>,
+    key: &str,
+    terms_of: impl Fn(usize) -> Vec<(usize, crate::matrix::Matrix<Ext<F>>)>,
+) -> Vec<Value> {
+    let mut items = vec![];
+    for (ev, e) in jf.eigenvalues.iter().enumerate() {
+        for (power, g) in terms_of(ev) {
+            items.push(Value::Obj(
+                Report::new()
+                    .str("eigenvalue", eigenvalue_text(e))
+                    .int("power", power)
+                    .matrix(key, &g),
+            ));
+        }
+    }
+    items
 }
 
 /// A matrix over any field as rows of exact strings.

@@ -53,17 +53,7 @@ pub fn state_response_report<F: EigenField>(
     times: &[TimeValue],
     verified: bool,
 ) -> Report {
-    let mut items = vec![];
-    for (ev, e) in jf.eigenvalues.iter().enumerate() {
-        for (power, g) in sr.terms_of(jf, ev) {
-            items.push(Value::Obj(
-                Report::new()
-                    .str("eigenvalue", eigenvalue_text(e))
-                    .int("power", power)
-                    .matrix("g", &g),
-            ));
-        }
-    }
+    let items = super::jordan::response_terms(jf, "g", |ev| sr.terms_of(jf, ev));
     let mut r = Report::titled("Free response x(t) = e^(At) x0 = sum_k t^k e^(s t) g")
         .matrix("x0", x0)
         .list("terms", items)
