@@ -8,9 +8,31 @@ use crate::report::{Report, Value};
 use crate::system::StateSpace;
 use crate::system::discrete::stability::{Domain, Place, Stability, Verdict};
 
+/// How the `stability` verdict was decided, in words (over $\mathbb{Q}$ as it always read;
+/// over a larger field the same tests with conjugates).
+fn stability_method<F: Field>(s: &Stability<F>) -> String {
+    let k = s.charpoly.field();
+    if k.as_rationals().is_some() {
+        return match s.domain {
+            Domain::Discrete => "exact over Q: Schur-Cohn (Jury) reduction per irreducible factor; self-reciprocal factors counted on the circle by a Sturm sequence of h(z + 1/z)",
+            Domain::Continuous => "exact over Q: each factor mapped by s = (z - 1)/(z + 1) onto the unit disk, then Schur-Cohn (Jury) and Sturm",
+        }
+        .to_string();
+    }
+    let how = "Schur-Cohn with conjugates (|a| compared as a conj(a), p* = z^n conj(p)(1/z)) per irreducible factor over the field; a factor on the circle through f conj(f), real coefficients, and a Sturm sequence of h(z + 1/z)";
+    match s.domain {
+        Domain::Discrete => format!("exact over {k}: {how}"),
+        Domain::Continuous => {
+            format!(
+                "exact over {k}: each factor mapped by s = (z - 1)/(z + 1) onto the unit disk, then {how}"
+            )
+        }
+    }
+}
+
 /// The `stability` report: verdict, region, and per irreducible factor of the
 /// characteristic polynomial its multiplicities and where its roots lie.
-pub fn stability_report(s: &Stability, dt: Option<&Rational>) -> Report {
+pub fn stability_report<F: Field>(s: &Stability<F>, dt: Option<&Rational>) -> Report {
     let (var, region, boundary) = match s.domain {
         Domain::Continuous => ("s", "Re s < 0", "imaginary axis"),
         Domain::Discrete => ("z", "|z| < 1", "unit circle"),
@@ -64,17 +86,7 @@ pub fn stability_report(s: &Stability, dt: Option<&Rational>) -> Report {
         )
         .str("charpoly", s.charpoly.to_string_var(var))
         .with("factors", Value::table(data, header, rows))
-        .str(
-            "method",
-            match s.domain {
-                Domain::Discrete => {
-                    "exact over Q: Schur-Cohn (Jury) reduction per irreducible factor; self-reciprocal factors counted on the circle by a Sturm sequence of h(z + 1/z)"
-                }
-                Domain::Continuous => {
-                    "exact over Q: each factor mapped by s = (z - 1)/(z + 1) onto the unit disk, then Schur-Cohn (Jury) and Sturm"
-                }
-            },
-        )
+        .str("method", stability_method(s))
         .bool("verified", true)
 }
 
