@@ -270,6 +270,13 @@ fn cli_gram_and_stability_over_number_fields() {
     let g = g.to_str().unwrap();
     let v = json(&["stability", g, "--format", "json"]);
     assert_eq!(v["asymptotically_stable"], false);
+    assert!(
+        v["method"]
+            .as_str()
+            .unwrap()
+            .starts_with("exact over Q(sqrt(2)): "),
+        "{v}"
+    );
     let (code, _, err) = run(&["gram", g]);
     assert_eq!(code, 2, "{err}");
     assert_eq!(err.trim().lines().count(), 1, "{err}");

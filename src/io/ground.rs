@@ -29,6 +29,9 @@ use crate::system::margins::axis::AxisField;
 pub trait NumericField: GroundField + EigenField + AxisField {}
 impl<F: GroundField + EigenField + AxisField> NumericField for F {}
 
+/// Monic irreducible factors with their multiplicities.
+pub type Factors<F> = Vec<(Poly<F>, usize)>;
+
 /// A ground field of a system file (see the module docs).
 pub trait GroundField: SystemField {
     /// The field itself when it is numeric; over $\mathbb{Q}(p)$ a placeholder never reached.
@@ -47,7 +50,7 @@ pub trait GroundField: SystemField {
     /// ($\mathbb{Q}$: [`crate::algebraic::factor_q`]; $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$:
     /// [`crate::algebraic::factor_over_quadratic`]); `None` where the crate does not factor
     /// ($\mathbb{Q}(p)$).
-    fn factors(p: &Poly<Self>) -> Option<crate::error::Result<Vec<(Poly<Self>, usize)>>> {
+    fn factors(p: &Poly<Self>) -> Option<crate::error::Result<Factors<Self>>> {
         let _ = p;
         None
     }
@@ -100,7 +103,7 @@ impl GroundField for Q {
     fn rational_descriptor(d: &Descriptor<Q>) -> Option<&Descriptor<Q>> {
         Some(d)
     }
-    fn factors(p: &Poly<Q>) -> Option<crate::error::Result<Vec<(Poly<Q>, usize)>>> {
+    fn factors(p: &Poly<Q>) -> Option<crate::error::Result<Factors<Q>>> {
         Some(crate::algebraic::factor_q(p).map(|f| f.1))
     }
     fn into_any(t: TypedSystem<Q>) -> TypedAny {
@@ -128,7 +131,7 @@ impl GroundField for QuadraticField {
     fn rational_descriptor(_: &Descriptor<Self>) -> Option<&Descriptor<Q>> {
         None
     }
-    fn factors(p: &Poly<Self>) -> Option<crate::error::Result<Vec<(Poly<Self>, usize)>>> {
+    fn factors(p: &Poly<Self>) -> Option<crate::error::Result<Factors<Self>>> {
         Some(crate::algebraic::factor_over_quadratic(p))
     }
     fn into_any(t: TypedSystem<Self>) -> TypedAny {
