@@ -79,6 +79,8 @@ mod from_transfer;
 mod fuzz;
 #[path = "g_in_z.rs"]
 mod g_in_z;
+#[path = "gram_stability_fields.rs"]
+mod gram_stability_fields;
 #[path = "inputs.rs"]
 mod inputs;
 #[path = "interconnect.rs"]

@@ -264,11 +264,22 @@ fn float_only_step_for_a_quadratic_field() {
         "sqrt2.json",
         r#"{"A": [["-sqrt(2)", 1], [0, -1]], "B": [[0], [1]], "C": [[1, 0]], "D": [[0]]}"#,
     );
+    // issue 23: the closed form is exact over Q(sqrt 2) too; --float keeps the float path
     let j = run(&["step", file.to_str().unwrap(), "--points", "50"]);
-    assert!(j["method"].as_str().unwrap().starts_with("float"));
+    assert!(
+        j["method"]
+            .as_str()
+            .unwrap()
+            .starts_with("exact closed form")
+    );
+    assert_eq!(j["dc_gain"], serde_json::json!([["sqrt(2)/2"]]));
+    let jf = run(&["step", file.to_str().unwrap(), "--points", "50", "--float"]);
+    assert!(jf["method"].as_str().unwrap().starts_with("float"));
     // DC gain of 1/((s + sqrt 2)(s + 1)) is 1/sqrt(2)
-    let last = j["response"][49][0][0].as_f64().unwrap();
-    assert!((last - 0.5f64.sqrt()).abs() < 1e-2);
+    for j in [j, jf] {
+        let last = j["response"][49][0][0].as_f64().unwrap();
+        assert!((last - 0.5f64.sqrt()).abs() < 1e-2);
+    }
 }
 
 #[test]

@@ -68,8 +68,9 @@ class ControlOps:
 
     def gram(self, type="c", max_seconds=None):
         """The controllability (``"c"``) or observability (``"o"``) Gramian of a stable
-        system by an exact Lyapunov solve over Q: a :class:`Report` with ``W`` (exact
-        strings; ``to_sympy("W")``, ``to_numpy("W")``) and ``verified``."""
+        system by an exact Lyapunov solve over its field (Q, Q(sqrt d), Q(i)): a
+        :class:`Report` with ``W`` (exact strings; ``to_sympy("W")``,
+        ``to_numpy("W")``) and ``verified``."""
         if type not in ("c", "o"):
             raise ValueError("gram: type must be 'c' or 'o' (got %r)" % (type,))
         return run(self, "gram", "--type", type, max_seconds=max_seconds)

@@ -329,11 +329,7 @@ impl SystemVisitor for FileCommand<'_> {
                 Ok(Outcome::new(r, ok))
             }
             Command::Check { .. } => {
-                let extra = match K::rational(t) {
-                    Some(q) => super::float_compare::jordan_comparison(&q.a_raw, path)?,
-                    None => vec![],
-                };
-                let r = super::float_cmds::check(t, path, extra)?;
+                let r = super::float_cmds::check(t, path)?;
                 let agree = !matches!(r.get("agree"), Some(Value::Bool(false)));
                 Ok(Outcome::float_vs_exact(r, agree))
             }

@@ -13,7 +13,7 @@ use crate::report::Value;
 use crate::report::display::fmt_rational;
 use crate::report::sections::{conversion_report, sequence_report, stability_report};
 use crate::system::StateSpace;
-use crate::system::discrete::stability::{Domain, stability_of};
+use crate::system::discrete::stability::Domain;
 use crate::system::discrete::{impulse_sequence, step_sequence, tustin, tustin_inverse, zoh_exact};
 use clap::Subcommand;
 use std::path::{Path, PathBuf};
@@ -32,9 +32,10 @@ pub enum C2dMethod {
 /// The discrete-time subcommands.
 #[derive(Subcommand, Debug, Clone)]
 pub enum DiscreteCmd {
-    /// Exact stability over Q without floats: every eigenvalue in Re s < 0, or |z| < 1 for a
-    /// file with `dt` (Schur-Cohn / Jury per irreducible factor of det(sI - A), a Sturm
-    /// count on the circle, the minimal polynomial for marginal stability).
+    /// Exact stability over Q, Q(sqrt d), Q(i) without floats: every eigenvalue in Re s < 0,
+    /// or |z| < 1 for a file with `dt` (Schur-Cohn / Jury per irreducible factor of
+    /// det(sI - A) over the field, a Sturm count on the circle, the minimal polynomial for
+    /// marginal stability).
     Stability {
         /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
@@ -103,21 +104,12 @@ pub fn run<K: GroundField>(
     let e = |err| with_path(path, err);
     match cmd {
         DiscreteCmd::Stability { .. } => {
-            let Some(q) = K::rational(t) else {
-                return Err(fail(
-                    path,
-                    format!(
-                        "stability is decided exactly over Q; this system is over {} (use `jordan` or `modes`)",
-                        t.ss.field()
-                    ),
-                ));
-            };
             let domain = if dt.is_some() {
                 Domain::Discrete
             } else {
                 Domain::Continuous
             };
-            let s = stability_of(&q.ss.a, domain).map_err(e)?;
+            let s = super::ground::stability_over(&t.ss.a, domain).map_err(e)?;
             Ok(Outcome::plain(stability_report(&s, dt)))
         }
         DiscreteCmd::C2d {

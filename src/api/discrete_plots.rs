@@ -5,13 +5,13 @@
 
 use super::Failure;
 use super::float_cmds::{FloatAbcd, float_abcd, float_response_dt};
-use crate::field::{Field, Q, Rational, rational_to_f64};
+use crate::field::{Field, Rational, rational_to_f64};
 use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::report::plot::bode::bode_svg_marked;
 use crate::report::plot::time::{TimePlot, time_response_svg};
 use crate::report::plot::{logspace, response_table};
 use crate::system::dcgain::gain_at;
-use crate::system::discrete::stability::{Domain, Verdict, stability_of};
+use crate::system::discrete::stability::{Domain, Verdict};
 use std::path::Path;
 
 fn write(out: &Path, text: &str) -> Result<(), Failure> {
@@ -79,21 +79,20 @@ pub struct Stairs<'a> {
     pub outputs: &'a [String],
 }
 
-/// The exact final value $G(1)$ of a step response when the system is over $\mathbb{Q}$
-/// and asymptotically stable (decided exactly, $|z| < 1$), as floats for the dashed line.
+/// The exact final value $G(1)$ of a step response when the system is asymptotically stable
+/// (decided exactly over its field, $|z| < 1$), as floats for the dashed line (real parts
+/// under the marked embedding); `None` over a field without numbers.
 fn final_values<K: GroundField>(t: &TypedSystem<K>) -> Option<Vec<Vec<f64>>> {
-    let q: &TypedSystem<Q> = K::rational(t)?;
-    let st = stability_of(&q.ss.a, Domain::Discrete).ok()?;
+    let st = super::ground::stability_over(&t.ss.a, Domain::Discrete).ok()?;
     if st.verdict != Verdict::AsymptoticallyStable {
         return None;
     }
-    let g = gain_at(&q.ss, &Q.one()).ok()?;
+    let k = t.ss.field();
+    let g = gain_at(&t.ss, &k.one()).ok()?;
     let m = g.matrix?;
-    Some(
-        (0..m.nrows())
-            .map(|i| m.row(i).iter().map(rational_to_f64).collect())
-            .collect(),
-    )
+    (0..m.nrows())
+        .map(|i| m.row(i).iter().map(|x| k.approx(x).map(|z| z.0)).collect())
+        .collect()
 }
 
 /// Writes the stairs SVG of a sampled step or impulse response (step: with the exact

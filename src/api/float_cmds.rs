@@ -306,17 +306,19 @@ fn era_report<K: Field, T: FloatScalar>(
 }
 
 /// Float path beside the exact path.
-pub fn check<K: crate::io::GroundField>(
-    t: &Typed<K>,
-    path: &Path,
-    extra: Vec<(String, bool, Report)>,
-) -> Result<Report, Failure> {
+pub fn check<K: crate::io::GroundField>(t: &Typed<K>, path: &Path) -> Result<Report, Failure> {
     let tol = Tol::default();
-    let (mut items, skipped) = match float_abcd(t, path)? {
-        FloatAbcd::Real(m) => real_items(t, path, &m, &tol)?,
+    let (items, skipped) = match float_abcd(t, path)? {
+        FloatAbcd::Real(m) => {
+            let (mut items, skipped) = real_items(t, path, &m, &tol)?;
+            // the exact Jordan structure of the real A over its field against the float guess
+            if let Some(n) = K::numeric(t) {
+                items.extend(super::float_compare::jordan_comparison(&n.a_raw, path)?);
+            }
+            (items, skipped)
+        }
         FloatAbcd::Complex(m) => super::float_compare::complex_items(t, path, &m, &tol)?,
     };
-    items.extend(extra);
     check_report(items, skipped, &tol)
 }
 

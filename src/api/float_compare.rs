@@ -1,5 +1,5 @@
 //! `check`'s float-vs-exact comparisons: the labels of float claims ([`claim_str`]), the
-//! Jordan structure of a rational `A` ([`jordan_comparison`]), and the comparisons for a
+//! Jordan structure of a real `A` ([`jordan_comparison`]), and the comparisons for a
 //! system with complex entries (over $\mathbb{Q}(i)$ or $\mathbb{Q}(\sqrt{-d})$,
 //! [`complex_items`]).
 //!
@@ -64,12 +64,13 @@ fn truth_str(t: Truth) -> &'static str {
 /// sizes (largest first; the algebraic multiplicity is their sum).
 pub(crate) type ExactEigenvalue = (String, (f64, f64), Vec<usize>);
 
-/// Eigenvalues and Jordan structure: exact (rational `A`) against the float guess.
-pub fn jordan_comparison(
-    a_exact: &crate::matrix::Matrix<crate::field::Q>,
+/// Eigenvalues and Jordan structure: exact (a real `A` over its field, $\mathbb{Q}$ or
+/// $\mathbb{Q}(\sqrt d)$, written once) against the float guess.
+pub fn jordan_comparison<F: crate::jordan::EigenField>(
+    a_exact: &crate::matrix::Matrix<F>,
     path: &Path,
 ) -> Result<Vec<(String, bool, Report)>, Failure> {
-    let jf = crate::jordan::jordan(a_exact).map_err(|e| fail(path, e))?;
+    let jf = crate::jordan::jordan_over(a_exact).map_err(|e| fail(path, e))?;
     let a = to_dmatrix(a_exact).map_err(|e| fail(path, e))?;
     let exact: Vec<ExactEigenvalue> = jf
         .eigenvalues

@@ -25,3 +25,24 @@ pub(super) fn numeric<'a, K: GroundField>(
 ) -> Result<&'a TypedSystem<K::Numeric>, Failure> {
     K::numeric(t).ok_or_else(|| needs_numbers(t.ss.field(), what, path))
 }
+
+/// The exact stability of `a` over its own field for `domain`, written once
+/// ([`crate::system::discrete::stability::stability_with`] with the field's factorization,
+/// [`GroundField::factors`]).
+///
+/// # Errors
+/// `Unsupported` over a field the crate does not factor in ($\mathbb{Q}(p)$: the signs of
+/// rational functions of the parameters are undecided), those of the test.
+pub(super) fn stability_over<K: GroundField>(
+    a: &crate::matrix::Matrix<K>,
+    domain: crate::system::discrete::stability::Domain,
+) -> crate::Result<crate::system::discrete::stability::Stability<K>> {
+    crate::system::discrete::stability::stability_with(a, domain, |chi| {
+        K::factors(chi).unwrap_or_else(|| {
+            Err(crate::Error::Unsupported(format!(
+                "stability is decided exactly over Q, Q(sqrt d), Q(i); this system is over {} (give every symbol a value with --at)",
+                a.field()
+            )))
+        })
+    })
+}

@@ -197,7 +197,8 @@ pub enum Command {
         svg: Option<PathBuf>,
     },
     /// Step response of every input -> output channel: exact closed form from the Jordan form
-    /// of A over Q (evaluated in floats), float matrix exponential otherwise; with the exact
+    /// of A over its field, Q, Q(sqrt d), Q(i) (evaluated in floats), float matrix exponential
+    /// with --float; with the exact
     /// DC gain D - C A^-1 B (the final value of a stable system).
     Step {
         /// System file (JSON or TOML; see "FILE" in `exactlti --help`).

@@ -353,8 +353,8 @@ enum Mats {
 pub const MAX_TIME_VALUES: usize = 1_000_000;
 
 /// `step` / `impulse`: the response of every channel on an even time grid; from the exact
-/// closed form (Jordan form of `A`) over Q, with the float matrix-exponential recursion
-/// beside it (`float_max_difference`); float only otherwise or with `--float`.
+/// closed form (Jordan form of `A`) over its field (Q, Q(sqrt d), Q(i)), with the float
+/// matrix-exponential recursion beside it (`float_max_difference`); float only with `--float`.
 pub fn time_response<K: GroundField>(
     f: &SystemFile,
     t: &TypedSystem<K>,
@@ -421,22 +421,31 @@ pub fn time_response<K: GroundField>(
         }
         Mats::Real(m) => (float_time(m, args.impulse, &times).map_err(e)?, None),
     };
-    let exact = match K::rational(t) {
-        Some(q) if !args.float_only => Some(ClosedFormResponse::new(&q.ss).map_err(e)?),
+    let exact = match K::numeric(t) {
+        Some(n) if !args.float_only => Some(ClosedFormResponse::new(&n.ss).map_err(e)?),
         _ => None,
     };
-    let vals: Vec<Vec<Vec<f64>>> = match &exact {
-        Some(cf) => times
-            .iter()
-            .map(|&x| {
-                if args.impulse {
-                    cf.impulse_at(x)
-                } else {
-                    cf.step_at(x)
-                }
-            })
-            .collect(),
-        None => fl.clone(),
+    let (vals, imag): (Vec<Vec<Vec<f64>>>, _) = match &exact {
+        Some(cf) => {
+            let z: Vec<_> = times
+                .iter()
+                .map(|&x| {
+                    if args.impulse {
+                        cf.impulse_at_complex(x)
+                    } else {
+                        cf.step_at_complex(x)
+                    }
+                })
+                .collect();
+            let part = |f: fn(&num_complex::Complex<f64>) -> f64| -> Vec<Vec<Vec<f64>>> {
+                z.iter()
+                    .map(|g| g.iter().map(|r| r.iter().map(f).collect()).collect())
+                    .collect()
+            };
+            // over a field that is not real the exact response is complex too
+            (part(|x| x.re), imag.map(|_| part(|x| x.im)))
+        }
+        None => (fl.clone(), imag),
     };
     let (title, ins, outs) = names(f, path, m, p);
     let stable = poles.iter().all(|z| z.0 < 0.0);
@@ -445,8 +454,11 @@ pub fn time_response<K: GroundField>(
         .str(
             "method",
             match (exact.is_some(), complex) {
-                (true, _) => {
+                (true, false) => {
                     "exact closed form from the Jordan form of A, evaluated in floating point"
+                }
+                (true, true) => {
+                    "exact closed form from the Jordan form of A over its field, evaluated in floating point; response holds the real parts, response_imag the imaginary parts"
                 }
                 (false, false) => {
                     "float: matrix exponential of [[A, B], [0, 0]] dt (zero-order hold)"
@@ -484,7 +496,7 @@ pub fn time_response<K: GroundField>(
                     (0..p)
                         .map(|i| {
                             (0..m)
-                                .map(|j| crate::field::rational_to_f64(g.get(i, j)))
+                                .map(|j| g.field().approx(g.get(i, j)).map_or(f64::NAN, |z| z.0))
                                 .collect()
                         })
                         .collect(),

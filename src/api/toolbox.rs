@@ -61,7 +61,8 @@ pub enum ToolboxCmd {
         file: PathBuf,
     },
     /// Controllability (c) or observability (o) Gramian of a stable system, by an exact
-    /// Lyapunov solve over Q, substituted back into its equation (verified).
+    /// Lyapunov solve over the system's field (Q, Q(sqrt d), Q(i): conjugate transposes A^H),
+    /// substituted back into its equation (verified).
     Gram {
         /// System file (JSON or TOML; see "FILE" in `exactlti --help`).
         file: PathBuf,
@@ -104,15 +105,6 @@ pub(super) fn run<K: GroundField>(
     path: &Path,
 ) -> Result<Outcome, Failure> {
     let e = |err| with_path(path, err);
-    let needs_q = |what: &str| {
-        bad(
-            path,
-            format!(
-                "{what} needs rational matrices; this file's entries lie in {}",
-                f.ground
-            ),
-        )
-    };
     match cmd {
         ToolboxCmd::Margin { .. } => {
             let t = numeric(t, "margin", path)?;
@@ -125,12 +117,11 @@ pub(super) fn run<K: GroundField>(
             Ok(Outcome::plain(sections::damp_report(&rows)))
         }
         ToolboxCmd::Gram { kind, .. } => {
-            let q = K::rational(t).ok_or_else(|| needs_q("`gram`"))?;
             let kind = match kind {
                 GramArg::C => GramType::Controllability,
                 GramArg::O => GramType::Observability,
             };
-            let g = realization::gramian(&q.ss, kind).map_err(e)?;
+            let g = realization::gramian(&t.ss, kind).map_err(e)?;
             Ok(Outcome::new(sections::gram_report(&g), g.verified))
         }
         ToolboxCmd::Stepinfo { to, points, .. } => stepinfo(f, t, path, *to, *points),

@@ -7,8 +7,8 @@
 //! [`GroundField::numeric`] for the system over a [`NumericField`]: the same system (the identity witness
 //! `K = K::Numeric`) over every field with an embedding into $\mathbb{C}$, and over
 //! $\mathbb{Q}(p)$ `None`, which the api turns into its one refusal line ("needs numeric
-//! entries: give values for m, u (--at)"). An algorithm written over $\mathbb{Q}$ only (the Gramian's Lyapunov
-//! solve, the closed-form step plot, the discrete stability test) asks [`GroundField::rational`].
+//! entries: give values for m, u (--at)"). An algorithm written over $\mathbb{Q}$ only (the closed-form
+//! step plot) asks [`GroundField::rational`].
 
 use super::Ground;
 use super::{TypedAny, TypedSystem};
@@ -16,6 +16,7 @@ use crate::field::{Field, Q, Quadratic, QuadraticField, Rational};
 use crate::jordan::EigenField;
 use crate::jordan::derivation::AssumptionLog;
 use crate::matrix::Matrix;
+use crate::poly::Poly;
 use crate::ratfunc::RatFunc;
 use crate::ratfunc::RatFuncField;
 use crate::realization::SystemField;
@@ -27,6 +28,9 @@ use crate::system::margins::axis::AxisField;
 /// ([`SystemField`]), and a ground field of system files ([`GroundField`]).
 pub trait NumericField: GroundField + EigenField + AxisField {}
 impl<F: GroundField + EigenField + AxisField> NumericField for F {}
+
+/// Monic irreducible factors with their multiplicities.
+pub type Factors<F> = Vec<(Poly<F>, usize)>;
 
 /// A ground field of a system file (see the module docs).
 pub trait GroundField: SystemField {
@@ -42,6 +46,14 @@ pub trait GroundField: SystemField {
     fn rational(t: &TypedSystem<Self>) -> Option<&TypedSystem<Q>>;
     /// The descriptor system over $\mathbb{Q}$ when the field is $\mathbb{Q}$.
     fn rational_descriptor(d: &Descriptor<Self>) -> Option<&Descriptor<Q>>;
+    /// The monic irreducible factors of `p` over this field with their multiplicities
+    /// ($\mathbb{Q}$: [`crate::algebraic::factor_q`]; $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$:
+    /// [`crate::algebraic::factor_over_quadratic`]); `None` where the crate does not factor
+    /// ($\mathbb{Q}(p)$).
+    fn factors(p: &Poly<Self>) -> Option<crate::error::Result<Factors<Self>>> {
+        let _ = p;
+        None
+    }
     /// The field of rational functions when the field is $\mathbb{Q}(p_1, \dots, p_k)$
     /// (its symbols, its condition log).
     fn symbolic(&self) -> Option<&RatFuncField> {
@@ -91,6 +103,9 @@ impl GroundField for Q {
     fn rational_descriptor(d: &Descriptor<Q>) -> Option<&Descriptor<Q>> {
         Some(d)
     }
+    fn factors(p: &Poly<Q>) -> Option<crate::error::Result<Factors<Q>>> {
+        Some(crate::algebraic::factor_q(p).map(|f| f.1))
+    }
     fn into_any(t: TypedSystem<Q>) -> TypedAny {
         TypedAny::Rational(t)
     }
@@ -115,6 +130,9 @@ impl GroundField for QuadraticField {
     }
     fn rational_descriptor(_: &Descriptor<Self>) -> Option<&Descriptor<Q>> {
         None
+    }
+    fn factors(p: &Poly<Self>) -> Option<crate::error::Result<Factors<Self>>> {
+        Some(crate::algebraic::factor_over_quadratic(p))
     }
     fn into_any(t: TypedSystem<Self>) -> TypedAny {
         TypedAny::Quadratic(t)

@@ -39,6 +39,7 @@
 //! parameter $C_D B_D$. Checked exactly: $\sum_p P_p = I$, $R_p V_p = I$, $A V_p = V_p A_p$, and
 //! each Lyapunov solution substituted back.
 
+pub(crate) use super::gramian::{adjoint, hurwitz, lyapunov_h};
 use crate::algebraic::Ext;
 use crate::error::{Error, Result};
 use crate::field::{Field, Q};
@@ -128,53 +129,6 @@ pub struct Truncation<F: Field = Q> {
     pub error_markov0: Matrix<F>,
     /// The Lyapunov solution of the error substituted back.
     pub verified: bool,
-}
-
-/// The complex conjugate of every entry (the identity in a real field, also in
-/// $\mathbb{Q}(p)$ with real parameters).
-fn conjugate<F: Field>(m: &Matrix<F>) -> Matrix<F> {
-    let k = m.field().clone();
-    m.map(&k, |x| k.conj(x).unwrap_or_else(|| x.clone()))
-}
-
-/// $M^H$.
-pub(crate) fn adjoint<F: Field>(m: &Matrix<F>) -> Matrix<F> {
-    conjugate(&m.transpose())
-}
-
-/// Solves $A W + W A^H = -Q$ exactly ($\operatorname{vec}$: $(I \otimes A + \bar A \otimes I)
-/// \operatorname{vec} W = -\operatorname{vec} Q$).
-///
-/// # Errors
-/// `Singular` when the operator is singular ($\lambda_i + \bar\lambda_j = 0$).
-pub(crate) fn lyapunov_h<F: Field>(a: &Matrix<F>, q: &Matrix<F>) -> Result<Matrix<F>> {
-    let n = a.nrows();
-    let i = Matrix::identity(a.field().clone(), n);
-    let op = &i.kron(a) + &conjugate(a).kron(&i);
-    match op.solve(&-&q.vec())? {
-        Some((x, nul)) if nul.ncols() == 0 => x.unvec(n, n),
-        _ => Err(Error::Singular),
-    }
-}
-
-/// Is $A$ Hurwitz? Lyapunov's theorem (module docs): `None` when a sign is undecided.
-pub(crate) fn hurwitz<F: Field>(a: &Matrix<F>) -> Result<Option<bool>> {
-    let n = a.nrows();
-    let k = a.field();
-    let x = match lyapunov_h(a, &Matrix::identity(k.clone(), n)) {
-        Ok(x) => x,
-        Err(Error::Singular) => return Ok(Some(false)),
-        Err(e) => return Err(e),
-    };
-    let mut decided = true;
-    for m in 1..=n {
-        match k.sign(&x.submatrix(0, m, 0, m).det()?) {
-            Some(Ordering::Greater) => {}
-            Some(_) => return Ok(Some(false)),
-            None => decided = false,
-        }
-    }
-    Ok(decided.then_some(true))
 }
 
 /// $\|C (sI - A)^{-1} B\|_2^2 = \operatorname{tr}(C W C^H)$ with $A W + W A^H + B B^H = 0$

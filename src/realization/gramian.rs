@@ -3,7 +3,9 @@
 //! $A W_c + W_c A^T = -BB^T$ and $A^T W_o + W_o A = -C^TC$ are solved as the linear systems
 //! $(I \otimes A + A \otimes I)\,\mathrm{vec}(W) = -\mathrm{vec}(Q)$, uniquely solvable when no
 //! two eigenvalues of $A$ sum to zero. Stability is decided exactly over $\mathbb Q$ by the
-//! Routh–Hurwitz test on $\det(sI - A)$.
+//! Routh–Hurwitz test on $\det(sI - A)$ ([`is_hurwitz`]), over any field by Lyapunov's
+//! theorem ([`hurwitz`]). [`gramian`] is written once over the field: conjugate transposes
+//! ($A W + W A^H + B B^H = 0$), which are transposes over a real field.
 
 use crate::error::{Error, Result};
 use crate::field::{Field, Q, Rational};
@@ -11,6 +13,7 @@ use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::system::StateSpace;
 use num_traits::{Signed, Zero};
+use std::cmp::Ordering;
 
 /// Controllability and observability Gramians.
 #[derive(Clone, Debug)]
@@ -85,35 +88,109 @@ pub enum GramType {
     Observability,
 }
 
-/// One Gramian with its exact check.
+/// One Gramian with its exact check (`F`: the field of the system).
 #[derive(Clone, Debug)]
-pub struct Gramian {
+pub struct Gramian<F: Field = Q> {
     pub kind: GramType,
-    pub w: Matrix<Q>,
-    /// The Lyapunov residual is exactly zero and $W = W^T$.
+    pub w: Matrix<F>,
+    /// Whether the equation is written with conjugate transposes ($A^H$, $B^H$): some entry of
+    /// the system is not real (over $\mathbb{Q}(i)$, $\mathbb{Q}(\sqrt d)$ with $d < 0$).
+    pub hermitian: bool,
+    /// The Lyapunov residual is exactly zero and $W = W^H$.
     pub verified: bool,
 }
 
-/// The controllability or observability Gramian of a stable rational system, verified by
-/// substituting it back into its Lyapunov equation (exact arithmetic).
+/// The controllability or observability Gramian of a stable system over any field with
+/// complex conjugation (the identity over a real field), written once:
+/// $A W + W A^H + B B^H = 0$ or $A^H W + W A + C^H C = 0$, solved exactly and verified by
+/// substituting $W$ back (and $W = W^H$). Stability is decided exactly in the field by
+/// Lyapunov's theorem ([`hurwitz`]).
 ///
 /// # Errors
-/// `Unstable` when $A$ is not Hurwitz (decided exactly, Routh–Hurwitz on $\det(sI - A)$).
-pub fn gramian(sys: &StateSpace<Q>, kind: GramType) -> Result<Gramian> {
-    if !is_hurwitz(&sys.a.charpoly()?) {
-        return Err(Error::Unstable(
-            "A has an eigenvalue with non-negative real part; the Gramian integral diverges".into(),
-        ));
+/// `Unstable` when $A$ is not Hurwitz; `Unsupported` when its stability is undecided in the
+/// field (over $\mathbb{Q}(p)$: signs of rational functions of the parameters).
+pub fn gramian<F: Field>(sys: &StateSpace<F>, kind: GramType) -> Result<Gramian<F>> {
+    match hurwitz(&sys.a)? {
+        Some(true) => {}
+        Some(false) => {
+            return Err(Error::Unstable(
+                "A has an eigenvalue with non-negative real part; the Gramian integral diverges"
+                    .into(),
+            ));
+        }
+        None => {
+            return Err(Error::Unsupported(format!(
+                "the Gramian needs A Hurwitz, which is not decided over {} (a sign of a rational function of the parameters); give the symbols values with --at",
+                sys.field()
+            )));
+        }
     }
     let (a, q) = match kind {
-        GramType::Controllability => (sys.a.clone(), &sys.b * &sys.b.transpose()),
-        GramType::Observability => (sys.a.transpose(), &sys.c.transpose() * &sys.c),
+        GramType::Controllability => (sys.a.clone(), &sys.b * &adjoint(&sys.b)),
+        GramType::Observability => (adjoint(&sys.a), &adjoint(&sys.c) * &sys.c),
     };
-    let w = lyapunov(&a, &q)?;
-    let residual = &(&(&a * &w) + &(&w * &a.transpose())) + &q;
-    let zero = Matrix::zeros(Q, w.nrows(), w.ncols());
-    let verified = residual == zero && w == w.transpose();
-    Ok(Gramian { kind, w, verified })
+    let w = lyapunov_h(&a, &q)?;
+    let residual = &(&(&a * &w) + &(&w * &adjoint(&a))) + &q;
+    let verified = residual.is_zero() && w == adjoint(&w);
+    let hermitian = [&sys.a, &sys.b, &sys.c]
+        .iter()
+        .any(|m| adjoint(m) != m.transpose());
+    Ok(Gramian {
+        kind,
+        w,
+        hermitian,
+        verified,
+    })
+}
+
+/// The complex conjugate of every entry (the identity in a real field, also in
+/// $\mathbb{Q}(p)$ with real parameters).
+fn conjugate<F: Field>(m: &Matrix<F>) -> Matrix<F> {
+    let k = m.field().clone();
+    m.map(&k, |x| k.conj(x).unwrap_or_else(|| x.clone()))
+}
+
+/// $M^H$.
+pub(crate) fn adjoint<F: Field>(m: &Matrix<F>) -> Matrix<F> {
+    conjugate(&m.transpose())
+}
+
+/// Solves $A W + W A^H = -Q$ exactly ($\operatorname{vec}$: $(I \otimes A + \bar A \otimes I)
+/// \operatorname{vec} W = -\operatorname{vec} Q$).
+///
+/// # Errors
+/// `Singular` when the operator is singular ($\lambda_i + \bar\lambda_j = 0$).
+pub(crate) fn lyapunov_h<F: Field>(a: &Matrix<F>, q: &Matrix<F>) -> Result<Matrix<F>> {
+    let n = a.nrows();
+    let i = Matrix::identity(a.field().clone(), n);
+    let op = &i.kron(a) + &conjugate(a).kron(&i);
+    match op.solve(&-&q.vec())? {
+        Some((x, nul)) if nul.ncols() == 0 => x.unvec(n, n),
+        _ => Err(Error::Singular),
+    }
+}
+
+/// Is $A$ Hurwitz? Lyapunov's theorem: $A X + X A^H = -I$ has a positive definite solution
+/// (every leading principal minor $> 0$, a sign in $F$; a singular operator,
+/// $\lambda_i + \bar\lambda_j = 0$, means not Hurwitz). `None` when a sign is undecided
+/// (over $\mathbb{Q}(p)$: a sign of a rational function of the parameters).
+pub(crate) fn hurwitz<F: Field>(a: &Matrix<F>) -> Result<Option<bool>> {
+    let n = a.nrows();
+    let k = a.field();
+    let x = match lyapunov_h(a, &Matrix::identity(k.clone(), n)) {
+        Ok(x) => x,
+        Err(Error::Singular) => return Ok(Some(false)),
+        Err(e) => return Err(e),
+    };
+    let mut decided = true;
+    for m in 1..=n {
+        match k.sign(&x.submatrix(0, m, 0, m).det()?) {
+            Some(Ordering::Greater) => {}
+            Some(_) => return Ok(Some(false)),
+            None => decided = false,
+        }
+    }
+    Ok(decided.then_some(true))
 }
 
 /// Gramians of a stable rational system.

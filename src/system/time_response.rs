@@ -17,9 +17,10 @@
 //! which is $(\theta + N)^{-1} = \sum_k (-N)^k \theta^{-(k+1)}$ on each generalized
 //! eigenspace.
 
+use crate::algebraic::Ext;
 use crate::error::Result;
 use crate::field::{Field, Q, Rational};
-use crate::jordan::{JordanForm, jordan};
+use crate::jordan::{EigenField, JordanForm, jordan_over};
 use crate::matrix::Matrix;
 use crate::poly::newton_power_sums;
 use crate::system::StateSpace;
@@ -29,27 +30,29 @@ use num_traits::{One, Zero};
 /// One exact output term $H_{\theta,k} = C G_{\theta,k} B$ ($p \times m$ over the component
 /// field) and its float values at each conjugate root.
 #[derive(Clone, Debug)]
-pub struct OutputTerm {
+pub struct OutputTerm<F: Field = Q> {
     /// Index into [`JordanForm::components`].
     pub component: usize,
     /// The power $k$ of $t$.
     pub power: usize,
-    pub coeff: Matrix<crate::algebraic::NumberField>,
+    pub coeff: Matrix<Ext<F>>,
     /// `(theta_j, H` at `theta_j)` for every root of the component.
     values: Vec<(Complex64, Vec<Complex64>)>,
 }
 
-/// The closed-form step and impulse responses of a rational system.
+/// The closed-form step and impulse responses of a system over $F$ ($\mathbb{Q}$,
+/// $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$: written once; the traces are
+/// $\operatorname{Tr}_{F(\theta)/F}$).
 #[derive(Clone, Debug)]
-pub struct ClosedFormResponse {
-    pub jordan: JordanForm,
-    pub terms: Vec<OutputTerm>,
+pub struct ClosedFormResponse<F: Field = Q> {
+    pub jordan: JordanForm<F>,
+    pub terms: Vec<OutputTerm<F>>,
     /// $D$.
-    pub d: Matrix<Q>,
+    pub d: Matrix<F>,
     /// $C B$ as computed by the sum of traces of $H_{\theta,0}$ (exact).
-    pub impulse_at_zero: Matrix<Q>,
+    pub impulse_at_zero: Matrix<F>,
     /// $D - C A^{-1} B$ from the sum of the traces (exact; `None` when $A$ is singular).
-    pub dc_gain: Option<Matrix<Q>>,
+    pub dc_gain: Option<Matrix<F>>,
     /// The identities of the module docs held exactly (and the Jordan form verified).
     pub verified: bool,
     noutputs: usize,
@@ -92,29 +95,30 @@ pub fn integral_power_exp(k: usize, theta: Complex64, t: f64) -> Complex64 {
     fact / (-theta).powi(k as i32 + 1) * (Complex64::one() - z.exp() * partial)
 }
 
-impl ClosedFormResponse {
+impl<F: EigenField> ClosedFormResponse<F> {
     /// Builds the exact terms from the Jordan form of `ss.a` and checks the identities.
     ///
     /// # Errors
-    /// As [`jordan`] (a characteristic polynomial that cannot be factored, limits).
-    pub fn new(ss: &StateSpace<Q>) -> Result<Self> {
-        let jf = jordan(&ss.a)?;
+    /// As [`jordan_over`] (a characteristic polynomial that cannot be factored, limits).
+    pub fn new(ss: &StateSpace<F>) -> Result<Self> {
+        let jf = jordan_over(&ss.a)?;
         let fr = jf.free_response();
         let (p, m) = (ss.noutputs(), ss.ninputs());
+        let base = ss.field().clone();
         let mut terms = vec![];
-        let mut h0 = Matrix::zeros(Q, p, m);
-        let mut dc = Matrix::zeros(Q, p, m);
+        let mut h0 = Matrix::zeros(base.clone(), p, m);
+        let mut dc = Matrix::zeros(base.clone(), p, m);
         let mut singular = false;
         for g in &fr.terms {
             let c = &jf.components[g.component];
             let k = &c.field;
-            let h = &(&ss.c.convert_to(k) * &g.coeff) * &ss.b.convert_to(k);
+            let h = &(&c.lift(&ss.c) * &g.coeff) * &c.lift(&ss.b);
             let ps = newton_power_sums(&c.factor, c.factor.deg().saturating_sub(1));
-            let trace = |x: &Matrix<crate::algebraic::NumberField>| {
-                x.map(&Q, |e: &crate::algebraic::NfElem| {
+            let trace = |x: &Matrix<Ext<F>>| {
+                x.map(&base, |e: &crate::algebraic::ExtElem<F::Elem>| {
                     e.0.iter()
                         .zip(&ps)
-                        .fold(Rational::zero(), |acc, (a, b)| acc + a * b)
+                        .fold(base.zero(), |acc, (a, b)| base.add(&acc, &base.mul(a, b)))
                 })
             };
             if g.power == 0 {
@@ -179,7 +183,7 @@ impl ClosedFormResponse {
         })
     }
 
-    fn eval(&self, f: impl Fn(usize, Complex64) -> Complex64) -> Vec<Vec<f64>> {
+    fn eval(&self, f: impl Fn(usize, Complex64) -> Complex64) -> Vec<Vec<Complex64>> {
         let (p, m) = (self.noutputs, self.ninputs);
         let mut out = vec![Complex64::zero(); p * m];
         for term in &self.terms {
@@ -191,25 +195,44 @@ impl ClosedFormResponse {
             }
         }
         (0..p)
-            .map(|i| (0..m).map(|j| out[i * m + j].re).collect())
+            .map(|i| (0..m).map(|j| out[i * m + j]).collect())
             .collect()
     }
 
-    /// $h(t) = C e^{At} B$ ($p \times m$, floats; the $D\,\delta(t)$ part left out).
+    /// $h(t) = C e^{At} B$ ($p \times m$, floats; the $D\,\delta(t)$ part left out): its real
+    /// part (the whole value over a real field).
     pub fn impulse_at(&self, t: f64) -> Vec<Vec<f64>> {
+        real_part(self.impulse_at_complex(t))
+    }
+
+    /// $h(t)$ as complex numbers (over a field that is not real, e.g. $\mathbb{Q}(i)$).
+    pub fn impulse_at_complex(&self, t: f64) -> Vec<Vec<Complex64>> {
         self.eval(|k, theta| (theta * t).exp() * t.powi(k as i32))
     }
 
-    /// $s(t) = D + \int_0^t C e^{A\tau} B\, d\tau$ ($p \times m$, floats).
+    /// $s(t) = D + \int_0^t C e^{A\tau} B\, d\tau$ ($p \times m$, floats): its real part.
     pub fn step_at(&self, t: f64) -> Vec<Vec<f64>> {
-        let mut s = self.eval(|k, theta| integral_power_exp(k, theta, t));
+        real_part(self.step_at_complex(t))
+    }
+
+    /// $s(t)$ as complex numbers.
+    pub fn step_at_complex(&self, t: f64) -> Vec<Vec<Complex64>> {
+        let k = self.d.field();
+        let mut s = self.eval(|j, theta| integral_power_exp(j, theta, t));
         for (i, row) in s.iter_mut().enumerate() {
             for (j, x) in row.iter_mut().enumerate() {
-                *x += crate::field::rational_to_f64(self.d.get(i, j));
+                let (re, im) = k.approx(self.d.get(i, j)).unwrap_or((f64::NAN, f64::NAN));
+                *x += Complex64::new(re, im);
             }
         }
         s
     }
+}
+
+fn real_part(v: Vec<Vec<Complex64>>) -> Vec<Vec<f64>> {
+    v.into_iter()
+        .map(|r| r.into_iter().map(|z| z.re).collect())
+        .collect()
 }
 
 /// A time horizon showing the response settle: 7 time constants of the slowest stable pole,

@@ -8,9 +8,34 @@ use crate::report::{Report, Value};
 use crate::system::StateSpace;
 use crate::system::discrete::stability::{Domain, Place, Stability, Verdict};
 
+/// How the `stability` verdict was decided, in words, over the field of the factors (`QQ`
+/// shown as `Q`); with a factor of non-real coefficients the conjugates it takes.
+fn stability_method<F: Field>(s: &Stability<F>) -> String {
+    let k = s.charpoly.field();
+    let name = k.to_string();
+    let name = name.strip_prefix('Q').unwrap_or(&name);
+    let mut text = match s.domain {
+        Domain::Discrete => format!(
+            "exact over {name}: Schur-Cohn (Jury) reduction per irreducible factor; self-reciprocal factors counted on the circle by a Sturm sequence of h(z + 1/z)"
+        ),
+        Domain::Continuous => format!(
+            "exact over {name}: each factor mapped by s = (z - 1)/(z + 1) onto the unit disk, then Schur-Cohn (Jury) and Sturm"
+        ),
+    };
+    let non_real = s.factors.iter().any(|(f, ..)| {
+        f.coeffs()
+            .iter()
+            .any(|c| k.conj(c).is_some_and(|b| b != *c))
+    });
+    if non_real {
+        text.push_str("; a factor with non-real coefficients: |a| compared as a conj(a), p* = z^n conj(p)(1/z), on the circle through f conj(f) (real coefficients)");
+    }
+    text
+}
+
 /// The `stability` report: verdict, region, and per irreducible factor of the
 /// characteristic polynomial its multiplicities and where its roots lie.
-pub fn stability_report(s: &Stability, dt: Option<&Rational>) -> Report {
+pub fn stability_report<F: Field>(s: &Stability<F>, dt: Option<&Rational>) -> Report {
     let (var, region, boundary) = match s.domain {
         Domain::Continuous => ("s", "Re s < 0", "imaginary axis"),
         Domain::Discrete => ("z", "|z| < 1", "unit circle"),
@@ -64,17 +89,7 @@ pub fn stability_report(s: &Stability, dt: Option<&Rational>) -> Report {
         )
         .str("charpoly", s.charpoly.to_string_var(var))
         .with("factors", Value::table(data, header, rows))
-        .str(
-            "method",
-            match s.domain {
-                Domain::Discrete => {
-                    "exact over Q: Schur-Cohn (Jury) reduction per irreducible factor; self-reciprocal factors counted on the circle by a Sturm sequence of h(z + 1/z)"
-                }
-                Domain::Continuous => {
-                    "exact over Q: each factor mapped by s = (z - 1)/(z + 1) onto the unit disk, then Schur-Cohn (Jury) and Sturm"
-                }
-            },
-        )
+        .str("method", stability_method(s))
         .bool("verified", true)
 }
 

@@ -3,7 +3,7 @@
 //! `stepinfo` (float step characteristics per channel).
 
 use crate::algebraic::AlgebraicNumber;
-use crate::field::Q;
+use crate::field::Field;
 use crate::float::stepinfo::{NoStepInfo, StepInfo};
 use crate::realization::{DampRow, GramType, Gramian};
 use crate::report::display::fmt_rational;
@@ -218,15 +218,17 @@ pub fn damp_report(rows: &[DampRow]) -> Report {
 }
 
 /// The `gram` report: `type`, `W` (exact, with `W_approx`), the equation, `verified`.
-pub fn gram_report(g: &Gramian) -> Report {
-    let (t, eq) = match g.kind {
-        GramType::Controllability => ("c", "A W + W A^T + B B^T = 0"),
-        GramType::Observability => ("o", "A^T W + W A + C^T C = 0"),
+pub fn gram_report<F: Field>(g: &Gramian<F>) -> Report {
+    let (t, eq) = match (g.kind, g.hermitian) {
+        (GramType::Controllability, false) => ("c", "A W + W A^T + B B^T = 0"),
+        (GramType::Observability, false) => ("o", "A^T W + W A + C^T C = 0"),
+        (GramType::Controllability, true) => ("c", "A W + W A^H + B B^H = 0"),
+        (GramType::Observability, true) => ("o", "A^H W + W A + C^H C = 0"),
     };
     Report::titled("Gramian")
         .str("type", t)
         .str("equation", eq)
-        .matrix::<Q>("W", &g.w)
+        .matrix::<F>("W", &g.w)
         .bool("verified", g.verified)
 }
 

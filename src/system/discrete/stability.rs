@@ -1,6 +1,10 @@
-//! Exact stability over $\mathbb{Q}$: where the roots of a polynomial lie with respect to
-//! the unit circle (discrete time) or the imaginary axis (continuous time), decided with
-//! rational arithmetic only.
+//! Exact stability over $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$: where the roots
+//! of a polynomial lie with respect to the unit circle (discrete time) or the imaginary axis
+//! (continuous time), decided with exact arithmetic only, written once over the field: the
+//! field's complex conjugation ([`Field::conj`]) and the sign of a real element
+//! ([`Field::sign`]) are all it asks (over $\mathbb{Q}(p)$ signs are undecided: refused).
+//! With non-real coefficients $p^*$ below is $z^n \bar p(1/z)$ and $|a|$ is compared as
+//! $a \bar a$; a factor is judged on the circle through $f \bar f$ (real coefficients).
 //!
 //! * [`schur_stable`]: every root in $|z| < 1$, by the Schur-Cohn (Jury) reduction: with
 //!   $p^*(z) = z^n p(1/z)$, $p$ is Schur stable iff $|p(0)| < |\mathrm{lc}\,p|$ and
@@ -20,10 +24,10 @@
 
 use crate::algebraic::factor_q;
 use crate::error::Result;
-use crate::field::{Q, Rational};
+use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
-use num_traits::{Signed, Zero};
+use std::cmp::Ordering;
 
 /// Time domain of a stability question.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -78,56 +82,88 @@ pub enum Verdict {
 }
 
 /// The stability of $A$: its characteristic polynomial's factors, where each lies and its
-/// multiplicity in the minimal polynomial.
+/// multiplicity in the minimal polynomial (`F`: the field of $A$; the factors are
+/// irreducible over $F$).
 #[derive(Clone, Debug)]
-pub struct Stability {
+pub struct Stability<F: Field = Q> {
     pub domain: Domain,
-    pub charpoly: Poly<Q>,
+    pub charpoly: Poly<F>,
     /// Monic irreducible factor, multiplicity in $\chi$, multiplicity in the minimal
     /// polynomial, place.
-    pub factors: Vec<(Poly<Q>, usize, usize, Place)>,
+    pub factors: Vec<(Poly<F>, usize, usize, Place)>,
     pub verdict: Verdict,
 }
 
-/// $p^*(z) = z^n p(1/z)$: the coefficients reversed.
-fn reversed(p: &Poly<Q>) -> Poly<Q> {
-    let mut cs = p.coeffs().to_vec();
+/// The complex conjugate of `c` under the field's marked embedding (`None`: the field has
+/// no conjugation, e.g. symbols).
+fn conj<F: Field>(k: &F, c: &F::Elem) -> Option<F::Elem> {
+    k.conj(c)
+}
+
+/// $p^*(z) = z^n \bar p(1/z)$: the coefficients reversed and conjugated (reversed over a real
+/// field). A root $\zeta$ of $p$ gives the root $1/\bar\zeta$ of $p^*$.
+fn reversed<F: Field>(p: &Poly<F>) -> Option<Poly<F>> {
+    let k = p.field();
+    let mut cs = p
+        .coeffs()
+        .iter()
+        .map(|c| conj(k, c))
+        .collect::<Option<Vec<_>>>()?;
     cs.reverse();
-    Poly::new(Q, cs)
+    Some(Poly::new(k.clone(), cs))
+}
+
+/// The sign of `x` (`None`: undecided in the field).
+fn sign<F: Field>(k: &F, x: &F::Elem) -> Option<Ordering> {
+    k.sign(x)
+}
+
+/// Every root of `p` strictly inside the unit circle, over any field with conjugation and the
+/// order of the reals (Schur-Cohn: $|p(0)| < |\mathrm{lc}\, p|$, compared as $a \bar a$,
+/// and $(\overline{\mathrm{lc}\, p}\, p - p(0)\, p^*)/z$ stable). `None` when a sign or a
+/// conjugate is undecided in the field.
+pub fn schur_stable_in<F: Field>(p: &Poly<F>) -> Option<bool> {
+    if p.is_zero() {
+        return Some(false);
+    }
+    let k = p.field().clone();
+    let mut p = p.clone();
+    while p.deg() > 0 {
+        let (a0, an) = (p.coeff(0), p.lc());
+        let (c0, cn) = (conj(&k, &a0)?, conj(&k, &an)?);
+        let gap = k.sub(&k.mul(&an, &cn), &k.mul(&a0, &c0));
+        if sign(&k, &gap)? != Ordering::Greater {
+            return Some(false);
+        }
+        let t = p.scale(&cn).sub(&reversed(&p)?.scale(&a0));
+        // the constant term cancels: divide by z
+        p = Poly::new(k.clone(), t.coeffs()[1..].to_vec());
+    }
+    Some(true)
 }
 
 /// Every root of `p` strictly inside the unit circle (Schur-Cohn / Jury). A nonzero
 /// constant has no roots and is stable; the zero polynomial is not.
 pub fn schur_stable(p: &Poly<Q>) -> bool {
-    if p.is_zero() {
-        return false;
-    }
-    let mut p = p.clone();
-    while p.deg() > 0 {
-        let (a0, an) = (p.coeff(0), p.lc());
-        if a0.abs() >= an.abs() {
-            return false;
-        }
-        let t = p.scale(&an).sub(&reversed(&p).scale(&a0));
-        // the constant term cancels: divide by z
-        p = Poly::new(Q, t.coeffs()[1..].to_vec());
-    }
-    true
+    schur_stable_in(p).unwrap_or(false)
 }
 
 /// Number of sign changes of the Sturm sequence `seq` at `x`.
-fn sign_changes(seq: &[Poly<Q>], x: &Rational) -> usize {
-    let signs: Vec<bool> = seq
-        .iter()
-        .map(|s| s.eval(x))
-        .filter(|v| !v.is_zero())
-        .map(|v| v.is_positive())
-        .collect();
-    signs.windows(2).filter(|w| w[0] != w[1]).count()
+fn sign_changes<F: Field>(seq: &[Poly<F>], x: &F::Elem) -> Option<usize> {
+    let k = seq.first()?.field();
+    let mut signs = vec![];
+    for s in seq {
+        let v = s.eval(x);
+        match sign(k, &v)? {
+            Ordering::Equal => {}
+            o => signs.push(o == Ordering::Greater),
+        }
+    }
+    Some(signs.windows(2).filter(|w| w[0] != w[1]).count())
 }
 
-/// Distinct real roots of the square-free `h` in $(lo, hi]$.
-fn real_roots_in(h: &Poly<Q>, lo: &Rational, hi: &Rational) -> usize {
+/// Distinct real roots of the real polynomial `h` in $(lo, hi]$.
+fn real_roots_in<F: Field>(h: &Poly<F>, lo: &F::Elem, hi: &F::Elem) -> Option<usize> {
     let mut seq = vec![h.clone(), h.derivative()];
     while !seq[seq.len() - 1].is_zero() && seq[seq.len() - 1].deg() > 0 {
         let n = seq.len();
@@ -137,21 +173,20 @@ fn real_roots_in(h: &Poly<Q>, lo: &Rational, hi: &Rational) -> usize {
         }
         seq.push(r);
     }
-    sign_changes(&seq, lo).saturating_sub(sign_changes(&seq, hi))
+    Some(sign_changes(&seq, lo)?.saturating_sub(sign_changes(&seq, hi)?))
 }
 
 /// $h$ with $f(z) = z^m h(z + 1/z)$ for a palindromic $f$ of degree $2m$:
 /// $z^k + z^{-k} = P_k(x)$, $P_0 = 2$, $P_1 = x$, $P_{k+1} = x P_k - P_{k-1}$.
-fn palindromic_reduce(f: &Poly<Q>) -> Poly<Q> {
+fn palindromic_reduce<F: Field>(f: &Poly<F>) -> Poly<F> {
+    let k = f.field().clone();
     let m = f.deg() / 2;
-    let x = Poly::x(Q);
-    let mut h = Poly::constant(Q, f.coeff(m));
-    let (mut prev, mut cur) = (
-        Poly::constant(Q, Rational::from_integer(2.into())),
-        x.clone(),
-    );
-    for k in 1..=m {
-        h = h.add(&cur.scale(&f.coeff(m + k)));
+    let x = Poly::x(k.clone());
+    let mut h = Poly::constant(k.clone(), f.coeff(m));
+    let two = k.from_rational(&Rational::from_integer(2.into()));
+    let (mut prev, mut cur) = (Poly::constant(k.clone(), two), x.clone());
+    for j in 1..=m {
+        h = h.add(&cur.scale(&f.coeff(m + j)));
         let next = x.mul(&cur).sub(&prev);
         prev = cur;
         cur = next;
@@ -159,68 +194,83 @@ fn palindromic_reduce(f: &Poly<Q>) -> Poly<Q> {
     h
 }
 
-/// Where the roots of the monic irreducible `f` lie with respect to the unit circle.
-pub fn classify_factor(f: &Poly<Q>) -> Place {
-    if schur_stable(f) {
-        return Place::Inside;
+/// Where the roots of the monic irreducible `f` over $F$ lie with respect to the unit circle
+/// (`None`: a sign undecided in the field). A factor with a non-real coefficient is
+/// judged on the circle through $f \bar f$, which has real coefficients, the roots of $f$
+/// and their conjugates (the same moduli).
+pub fn classify_factor_in<F: Field>(f: &Poly<F>) -> Option<Place> {
+    if schur_stable_in(f)? {
+        return Some(Place::Inside);
     }
-    let r = reversed(f);
-    let self_reciprocal = r.deg() == f.deg() && (r.monic() == *f);
+    let k = f.field();
+    let fbar = Poly::new(
+        k.clone(),
+        f.coeffs()
+            .iter()
+            .map(|c| conj(k, c))
+            .collect::<Option<Vec<_>>>()?,
+    );
+    let f = if fbar == *f { f.clone() } else { f.mul(&fbar) };
+    let r = reversed(&f)?;
+    let self_reciprocal = r.deg() == f.deg() && (r.monic() == f);
     if !self_reciprocal {
-        return Place::Outside;
+        return Some(Place::Outside);
     }
     if f.deg() == 1 {
-        return Place::Boundary; // z - 1 or z + 1
+        return Some(Place::Boundary); // z - 1 or z + 1
     }
     if f.deg() % 2 == 1 {
         // odd palindromic polynomials have the root -1: not irreducible beyond degree 1
-        return Place::Outside;
+        return Some(Place::Outside);
     }
-    let h = palindromic_reduce(f);
-    let two = Rational::from_integer(2.into());
-    if real_roots_in(&h, &-two.clone(), &two) == h.deg() {
-        Place::Boundary
+    let h = palindromic_reduce(&f);
+    let two = k.from_rational(&Rational::from_integer(2.into()));
+    if real_roots_in(&h, &k.neg(&two), &two)? == h.deg() {
+        Some(Place::Boundary)
     } else {
-        Place::Outside
+        Some(Place::Outside)
     }
+}
+
+/// Where the roots of the monic irreducible `f` over $\mathbb{Q}$ lie with respect to the
+/// unit circle.
+pub fn classify_factor(f: &Poly<Q>) -> Place {
+    classify_factor_in(f).unwrap_or(Place::Outside)
 }
 
 /// $(z + 1)^d f((z - 1)/(z + 1))$: the image of $f(s)$ under $s = (z - 1)/(z + 1)$
 /// ($\mathrm{Re}\, s < 0 \iff |z| < 1$); `None` when the degree drops ($f(1) = 0$, a root
 /// at $s = 1$).
-fn to_disk(f: &Poly<Q>) -> Option<Poly<Q>> {
+fn to_disk<F: Field>(f: &Poly<F>) -> Option<Poly<F>> {
+    let k = f.field().clone();
     let d = f.deg();
-    let zm = Poly::new(
-        Q,
-        vec![
-            -Rational::from_integer(1.into()),
-            Rational::from_integer(1.into()),
-        ],
-    );
-    let zp = Poly::new(
-        Q,
-        vec![
-            Rational::from_integer(1.into()),
-            Rational::from_integer(1.into()),
-        ],
-    );
-    let mut g = Poly::zero(Q);
-    for (k, c) in f.coeffs().iter().enumerate() {
-        g = g.add(&zm.pow(k as u32).mul(&zp.pow((d - k) as u32)).scale(c));
+    let zm = Poly::new(k.clone(), vec![k.neg(&k.one()), k.one()]);
+    let zp = Poly::new(k.clone(), vec![k.one(), k.one()]);
+    let mut g = Poly::zero(k);
+    for (j, c) in f.coeffs().iter().enumerate() {
+        g = g.add(&zm.pow(j as u32).mul(&zp.pow((d - j) as u32)).scale(c));
     }
     (g.deg() == d).then(|| g.monic())
 }
 
-/// Where the roots of an irreducible factor lie for `domain`.
-pub fn place_of(f: &Poly<Q>, domain: Domain) -> Place {
+/// Where the roots of an irreducible factor over $F$ lie for `domain` (`None`: undecided).
+pub fn place_in<F: Field>(f: &Poly<F>, domain: Domain) -> Option<Place> {
     match domain {
-        Domain::Discrete => classify_factor(f),
-        Domain::Continuous => to_disk(f).map_or(Place::Outside, |g| classify_factor(&g)),
+        Domain::Discrete => classify_factor_in(f),
+        Domain::Continuous => match to_disk(f) {
+            None => Some(Place::Outside),
+            Some(g) => classify_factor_in(&g),
+        },
     }
 }
 
+/// Where the roots of an irreducible factor lie for `domain`.
+pub fn place_of(f: &Poly<Q>, domain: Domain) -> Place {
+    place_in(f, domain).unwrap_or(Place::Outside)
+}
+
 /// How often `f` divides `p`.
-fn multiplicity(p: &Poly<Q>, f: &Poly<Q>) -> usize {
+fn multiplicity<F: Field>(p: &Poly<F>, f: &Poly<F>) -> usize {
     let (mut p, mut k) = (p.clone(), 0);
     while let Some(q) = p.div_exact(f) {
         p = q;
@@ -234,18 +284,37 @@ fn multiplicity(p: &Poly<Q>, f: &Poly<Q>) -> usize {
 /// # Errors
 /// `NotSquare` for a non-square `A`.
 pub fn stability_of(a: &Matrix<Q>, domain: Domain) -> Result<Stability> {
+    stability_with(a, domain, |chi| Ok(factor_q(chi)?.1))
+}
+
+/// The exact stability of $A$ over its field $F$ for `domain`, written once: `factor` gives
+/// the monic irreducible factors of $\chi_A$ over $F$ with their multiplicities
+/// ([`factor_q`] over $\mathbb{Q}$; the tower's factorization over $\mathbb{Q}(\sqrt d)$,
+/// $\mathbb{Q}(i)$); each is placed by [`place_in`] (Schur-Cohn with conjugates, a Sturm
+/// count on the circle), and the minimal polynomial decides the boundary's Jordan blocks.
+///
+/// # Errors
+/// `NotSquare` for a non-square `A`; `Unsupported` when a place is undecided in the field
+/// (signs of rational functions of parameters); those of `factor`.
+pub fn stability_with<F: Field>(
+    a: &Matrix<F>,
+    domain: Domain,
+    factor: impl Fn(&Poly<F>) -> Result<Vec<(Poly<F>, usize)>>,
+) -> Result<Stability<F>> {
     a.check_square("stability A")?;
     let chi = a.charpoly()?;
     let mu = a.minpoly()?;
-    let (_, fs) = factor_q(&chi)?;
-    let factors: Vec<_> = fs
-        .into_iter()
-        .map(|(f, e)| {
-            let place = place_of(&f, domain);
-            let in_mu = multiplicity(&mu, &f);
-            (f, e, in_mu, place)
-        })
-        .collect();
+    let mut factors = vec![];
+    for (f, e) in factor(&chi)? {
+        let place = place_in(&f, domain).ok_or_else(|| {
+            crate::error::Error::Unsupported(format!(
+                "stability: where the roots of a factor lie is not decided over {}",
+                a.field()
+            ))
+        })?;
+        let in_mu = multiplicity(&mu, &f);
+        factors.push((f, e, in_mu, place));
+    }
     let verdict = if factors.iter().any(|x| x.3 == Place::Outside) {
         Verdict::Unstable
     } else if factors.iter().all(|x| x.3 == Place::Inside) {
