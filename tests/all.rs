@@ -135,6 +135,8 @@ mod multibody;
 mod multibody_examples;
 #[path = "over_fields.rs"]
 mod over_fields;
+#[path = "analyze_fields.rs"]
+mod analyze_fields;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]

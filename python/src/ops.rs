@@ -565,9 +565,10 @@ fn modal_values<F: Field>(r: &realization::JordanMinimal<F>) -> Out {
     ])
 }
 
-/// The modal table of `A` over Q as output data.
-pub(crate) fn modes_out(a: &Matrix<exactlti::field::Q>) -> FResult<Out> {
-    let m = realization::modal_table(a)?;
+/// The modal table of `A` as output data, over every field with certified eigenvalues
+/// ([`realization::SystemField::modal_table`], as the command line's `modes`).
+pub(crate) fn modes_out<K: realization::SystemField>(a: &Matrix<K>) -> FResult<Out> {
+    let m = K::modal_table(a)?;
     let opt = |x: Option<f64>| x.map(Out::Float).unwrap_or(Out::None);
     let modes = m
         .modes
