@@ -99,7 +99,8 @@ fn check_minreal_jordan_any<K: SystemField>(sys: &StateSpace<K>, order: usize) {
     };
     assert!(pm.verified);
     assert_eq!(pm.mcmillan_degree, order);
-    assert_eq!(pm.order(), order);
+    assert_eq!(pm.stages[2], order);
+    assert_eq!(pm.stages[0], n);
     let (p, m, f) = (sys.noutputs(), sys.ninputs(), sys.a.field().clone());
     let kmax = 2 * n;
     let modal: Vec<_> = pm

@@ -18,12 +18,13 @@ use std::sync::Arc;
 /// The PBH tests, computed when the section runs: `(controllable, observable)`.
 pub(super) type Pbh = Box<dyn FnOnce() -> crate::Result<(bool, bool)> + Send>;
 
-/// The PBH tests by ranks over every [`JordanField`]: per irreducible factor $g$ of
-/// $\det(sI - A)$, $\operatorname{rank}[A - tI, B] = n$ in $E = F\[t\]/(g)$
-/// ([`realization::pbh_controllable`]; a factor of degree 1 is $\theta \in F$, and over
-/// $\mathbb{Q}(p)$ a factor of degree $\ge 2$ is the `RootOf(g)` eigenvalue, tested in the
-/// generic extension without splitting it). Over $\mathbb{Q}(p)$ the factorization and the
-/// ranks record their conditions in the field.
+/// The PBH tests by ranks over every [`JordanField`], all over the base field
+/// ([`realization::pbh_controllable`]: the Kalman rank decides every eigenvalue when it is
+/// full; otherwise per irreducible factor $g$ the $g$-primary part's controllability, the left
+/// kernel of $g(A)$; for $g = s - \theta$, $\theta \in F$, $\operatorname{rank}[A - \theta I,
+/// B] < n$; over $\mathbb{Q}(p)$ a factor of degree $\ge 2$ is a `RootOf(g)` eigenvalue, tested
+/// without splitting it). Over $\mathbb{Q}(p)$ the factorization and the ranks record their
+/// conditions in the field.
 pub(super) fn pbh_by_rank<F: JordanField>(s: Arc<StateSpace<F>>) -> Pbh {
     Box::new(move || {
         let pc = realization::pbh_controllable(&s.a, &s.b)?;
