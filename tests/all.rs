@@ -9,6 +9,8 @@ mod jcommon;
 
 #[path = "algebraic.rs"]
 mod algebraic;
+#[path = "analyze_fields.rs"]
+mod analyze_fields;
 #[path = "api.rs"]
 mod api;
 #[path = "api_fields.rs"]
@@ -135,8 +137,6 @@ mod multibody;
 mod multibody_examples;
 #[path = "over_fields.rs"]
 mod over_fields;
-#[path = "analyze_fields.rs"]
-mod analyze_fields;
 #[path = "pencil.rs"]
 mod pencil;
 #[path = "pencil_descriptor.rs"]

@@ -50,12 +50,17 @@ fn analyze_pbh_modes_and_stability_over_every_field() {
             let pbh = &j["pbh"];
             let rz = &j["realization"];
             assert!(pbh["controllable"].is_boolean(), "{name}: {pbh}");
-            assert_eq!(pbh["controllable"], rz["controllable"], "{name} b3={b3}: {j}");
+            assert_eq!(
+                pbh["controllable"], rz["controllable"],
+                "{name} b3={b3}: {j}"
+            );
             assert_eq!(pbh["observable"], rz["observable"], "{name} b3={b3}");
             assert_eq!(pbh["controllable"], b3 == "1", "{name} b3={b3}");
             assert_eq!(pbh["observable"], true, "{name}");
             // the modal table accounts for every eigenvalue
-            let modes = j["modes"]["modes"].as_array().unwrap_or_else(|| panic!("{j}"));
+            let modes = j["modes"]["modes"]
+                .as_array()
+                .unwrap_or_else(|| panic!("{j}"));
             let count: u64 = if symbolic {
                 modes
                     .iter()

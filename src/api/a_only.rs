@@ -8,10 +8,10 @@ use crate::error::Error;
 use crate::field::{Field, Q};
 use crate::io::system_file::read_matrix_key;
 use crate::io::{FromScalars, Ground, InputError, read_system_file};
-use crate::jordan::{EigenField, JordanField};
-use crate::ratfunc::RatFuncField;
 use crate::jordan::normalize::Normalization;
+use crate::jordan::{EigenField, JordanField};
 use crate::matrix::Matrix;
+use crate::ratfunc::RatFuncField;
 use crate::report::Value;
 use std::path::Path;
 

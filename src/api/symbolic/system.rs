@@ -148,7 +148,9 @@ pub(in crate::api) fn run(
             // the modal table as formulas, as `modes` over Q(p) (one code path)
             let modes = match super::modes::modes_report(&s.a) {
                 Ok(m) => Value::Obj(m),
-                Err(err) => Value::Obj(Report::titled("modes over Q(p)").str("error", err.to_string())),
+                Err(err) => {
+                    Value::Obj(Report::titled("modes over Q(p)").str("error", err.to_string()))
+                }
             };
             (set_key(rep, "modes", modes), ok)
         }

@@ -71,9 +71,10 @@ pub fn stability_text<F: Field>(jf: &JordanForm<F>) -> String {
         }
     }
     let has = |o: Ordering| signs.contains(&Decided::Exactly(o));
-    let on_axis_block = jf.eigenvalues.iter().zip(&signs).any(|(e, s)| {
-        *s == Decided::Exactly(Ordering::Equal) && e.blocks.iter().any(|&b| b > 1)
-    });
+    let on_axis_block =
+        jf.eigenvalues.iter().zip(&signs).any(|(e, s)| {
+            *s == Decided::Exactly(Ordering::Equal) && e.blocks.iter().any(|&b| b > 1)
+        });
     if has(Ordering::Greater) {
         "unstable: an eigenvalue has a positive real part".into()
     } else if on_axis_block {
