@@ -19,7 +19,6 @@ use exactlti::Error;
 use exactlti::error::ErrorClass;
 mod study;
 use exactlti::api::runner::{Poll, Worker};
-use exactlti::field::Q;
 use exactlti::io::TypedSystem as Typed;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization;
