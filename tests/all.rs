@@ -9,6 +9,8 @@ mod jcommon;
 
 #[path = "algebraic.rs"]
 mod algebraic;
+#[path = "analyze_fields.rs"]
+mod analyze_fields;
 #[path = "api.rs"]
 mod api;
 #[path = "api_fields.rs"]

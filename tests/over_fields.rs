@@ -9,7 +9,10 @@
 //!   order = McMillan degree (Hankel rank);
 //! * minimal realization, Jordan method: the same Markov parameters through the traces,
 //!   the same order as Kalman, and the real modal system's own Markov parameters when it
-//!   lies over the base field (not over Q(p): no Jordan-method realization there);
+//!   lies over the base field; over Q(p) (the primary blocks: restriction blocks of simple
+//!   factors, the others over `E = Q(p)[t]/(g)`) the sum of the blocks' Markov parameters
+//!   (`Tr_{E/F}` of the modal ones, `traced_markov`) equals the system's, order = McMillan
+//!   degree, and the realization over Q(p) has the same Markov parameters;
 //! * transfer matrix: `G(s) = C (sI - A)^-1 B + D` reproduces every Markov parameter;
 //! * invariant zeros: the SCB route and the Smith-form oracle give the same polynomial;
 //! * special coordinate basis: every identity of its construction (`Scb::check`) and its
@@ -20,7 +23,10 @@ use exactlti::field::{Field, Q, QuadraticField};
 use exactlti::jordan::{EigenField, jordan_over};
 use exactlti::matrix::Matrix;
 use exactlti::ratfunc::RatFuncField;
-use exactlti::realization::{mcmillan_degree, minimal_jordan, minimal_kalman};
+use exactlti::realization::{
+    JordanMethod, MinrealMethod, SystemField, mcmillan_degree, minimal, minimal_jordan,
+    minimal_kalman,
+};
 use exactlti::structure::scb::scb;
 use exactlti::structure::zeros::{invariant_zeros, invariant_zeros_smith};
 use exactlti::system::StateSpace;
@@ -75,12 +81,66 @@ fn check_minreal_jordan_eigen<F: EigenField>(sys: &StateSpace<F>, order: usize) 
     }
 }
 
+/// The Jordan-method realization through the front door ([`minimal`] with
+/// [`MinrealMethod::Jordan`]) over every field: verified, order = McMillan degree, the same
+/// Markov parameters and `D`; over Q(p) the primary blocks' Markov parameters add up to the
+/// system's (the modal blocks' through `Tr_{E/F}`, the restriction blocks' as the rows and
+/// columns of the realization they occupy).
+fn check_minreal_jordan_any<K: SystemField>(sys: &StateSpace<K>, order: usize) {
+    let n = sys.nstates();
+    let r = minimal(sys, MinrealMethod::Jordan).unwrap();
+    assert!(r.verified);
+    assert_eq!(r.order, order, "order = McMillan degree");
+    assert_eq!(r.system.nstates(), order);
+    assert!(r.system.same_markov(sys, 2 * n + 2));
+    assert_eq!(r.system.d, sys.d);
+    let Some(JordanMethod::Primary(pm)) = &r.jordan else {
+        return;
+    };
+    assert!(pm.verified);
+    assert_eq!(pm.mcmillan_degree, order);
+    assert_eq!(pm.stages[2], order);
+    assert_eq!(pm.stages[0], n);
+    let (p, m, f) = (sys.noutputs(), sys.ninputs(), sys.a.field().clone());
+    let kmax = 2 * n;
+    let modal: Vec<_> = pm
+        .blocks
+        .iter()
+        .filter(|b| !b.is_restriction())
+        .map(|b| (&b.modal[0], &b.modal[1], &b.modal[2]))
+        .collect();
+    let mut got = crate::jcommon::traced_markov(&modal, p, m, &f, kmax);
+    let mut covered = 0;
+    for b in &pm.blocks {
+        covered += b.order;
+        if !b.is_restriction() {
+            continue;
+        }
+        let idx: Vec<usize> = (b.offset..b.offset + b.order).collect();
+        let part = StateSpace::new(
+            pm.system.a.select_rows(&idx).select_cols(&idx),
+            pm.system.b.select_rows(&idx),
+            pm.system.c.select_cols(&idx),
+            sys.d.clone(),
+        )
+        .unwrap();
+        for (g, h) in got.iter_mut().zip(part.markov(kmax)) {
+            *g = &*g + &h;
+        }
+    }
+    assert_eq!(covered, order, "the blocks cover the realization");
+    for (k, (g, w)) in got.iter().zip(sys.markov(kmax)).enumerate() {
+        assert_eq!(g, &w, "sum over the primary blocks of C A^{k} B");
+    }
+}
+
 impl JordanOps for Q {
     fn check_jordan(a: &Matrix<Q>, planted: &[(Self::Elem, usize)]) {
         check_jordan_eigen(a, planted)
     }
     fn check_minreal_jordan(sys: &StateSpace<Q>, order: usize) {
-        check_minreal_jordan_eigen(sys, order)
+        check_minreal_jordan_eigen(sys, order);
+        check_minreal_jordan_any(sys, order)
     }
 }
 
@@ -89,7 +149,8 @@ impl JordanOps for QuadraticField {
         check_jordan_eigen(a, planted)
     }
     fn check_minreal_jordan(sys: &StateSpace<Self>, order: usize) {
-        check_minreal_jordan_eigen(sys, order)
+        check_minreal_jordan_eigen(sys, order);
+        check_minreal_jordan_any(sys, order)
     }
 }
 
@@ -118,7 +179,9 @@ impl JordanOps for RatFuncField {
             assert_eq!(jf.components[i].multiplicity, want);
         }
     }
-    fn check_minreal_jordan(_: &StateSpace<Self>, _: usize) {}
+    fn check_minreal_jordan(sys: &StateSpace<Self>, order: usize) {
+        check_minreal_jordan_any(sys, order)
+    }
 }
 
 /// `A = P J P^-1` (blocks of `c + s g`, `c` in -2..=2, `s` in {0, 1}), `B`, `C` with one

@@ -266,9 +266,8 @@ class StateSpace(Operations, ControlOps, ResponseOps, SystemOps, Rendered):
     def mnf(self, max_seconds=None):
         """Mechanical normal form: ``M q'' + L q' + K q = F u`` with ``T A = A~ T``,
         ``T B = B~`` and equal Markov parameters (``verified``), or ``exists=False`` with
-        the reason."""
-        if self._extension:
-            return _run(self, "mnf", max_seconds=max_seconds)
+        the reason. Over every field (Q, Q(sqrt d), Q(i), symbols), as the command line's
+        ``mnf``."""
         r = MnfResult(self._core.mnf(max_seconds))
         if r._rendered is None:
             r._source = (self, "mnf")
@@ -276,10 +275,11 @@ class StateSpace(Operations, ControlOps, ResponseOps, SystemOps, Rendered):
 
     def modes(self, max_seconds=None):
         """The modal table: eigenvalue, frequency, damping ratio, time constant, period.
-        Over Q(i) / Q(sqrt d) and with symbolic parameters (the modes as formulas: the
-        factors of ``det(sI - A)`` over Q(p) with ``omega_n^2``, ``2 zeta omega_n``) a
-        :class:`Report`."""
-        if self._extension or self.is_symbolic:
+        Over Q, Q(sqrt d) and Q(i) a :class:`ModalTable` (each eigenvalue a certified
+        algebraic number: ``eigenvalue``, ``minpoly``, ``approx``); with symbolic parameters
+        (the modes as formulas: the factors of ``det(sI - A)`` over Q(p) with
+        ``omega_n^2``, ``2 zeta omega_n``) a :class:`Report`."""
+        if self.is_symbolic:
             return _run(self, "modes", max_seconds=max_seconds)
         return ModalTable(self._core.modes(max_seconds))
 

@@ -19,7 +19,6 @@ use exactlti::Error;
 use exactlti::error::ErrorClass;
 mod study;
 use exactlti::api::runner::{Poll, Worker};
-use exactlti::field::Q;
 use exactlti::io::TypedSystem as Typed;
 use exactlti::ratfunc::RatFuncField;
 use exactlti::realization;
@@ -222,20 +221,6 @@ macro_rules! visit {
     }};
 }
 
-/// The system over Q, or `UnsupportedError` naming the field of its entries.
-fn rational<'t, K: exactlti::field::Field + 'static>(
-    f: &exactlti::io::SystemFile,
-    t: &'t Typed<K>,
-    what: &str,
-) -> FResult<&'t Typed<Q>> {
-    exactlti::io::as_rational(t).ok_or_else(|| {
-        Fail::Unsupported(format!(
-            "{what} needs rational matrices; this system's entries lie in {}",
-            f.ground
-        ))
-    })
-}
-
 /// An exact state-space system (standard form; a descriptor system is converted on input).
 #[pyclass(frozen, module = "exactlti._core")]
 pub struct System {
@@ -386,7 +371,7 @@ impl System {
         let s = self.api.clone();
         run(py, max_seconds, move || {
             visit!(s => FResult<Out>, [], |f, t| {
-                let t = rational(f, t, "the mechanical normal form")?;
+                // over every numeric field, as the command line's `mnf`
                 let ss = &t.ss;
                 let r = exactlti::structure::mechanical::mechanical_normal_form(
                     &ss.a, &ss.b, &ss.c, &ss.d,
@@ -401,9 +386,7 @@ impl System {
     fn modes(&self, py: Python<'_>, max_seconds: Option<f64>) -> PyResult<Py<PyAny>> {
         let s = self.api.clone();
         run(py, max_seconds, move || {
-            visit!(s => FResult<Out>, [], |f, t| {
-                modes_out(&rational(f, t, "the modal table")?.ss.a)
-            }, sym |f, t| Err(symbolic::needs_numbers("the modal table", &f.ground.to_string())))
+            visit!(s => FResult<Out>, [], |f, t| modes_out(&t.ss.a), sym |f, t| Err(symbolic::needs_numbers("the modal table", &f.ground.to_string())))
         })?
         .to_py(py)
     }

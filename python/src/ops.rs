@@ -386,7 +386,7 @@ fn real_values<F: EigenField>(rf: &RealJordanForm<F>) -> (Out, Out) {
 /// `jordan` of a system through the api's choices ([`exactlti::api::jordan_values`]): the
 /// matrix (`A`, or the finite part of a descriptor system's pencil with `infinite_blocks` and
 /// its note) and the field it is decomposed over; `UnsupportedError` naming any other field.
-pub(crate) fn jordan_typed<K: Field + 'static>(
+pub(crate) fn jordan_typed<K: realization::SystemField>(
     t: &Typed<K>,
     real: bool,
     path: &std::path::Path,
@@ -394,9 +394,17 @@ pub(crate) fn jordan_typed<K: Field + 'static>(
     use exactlti::api::jordan_values::{EigenVisitor, finite_part, on_eigen_field};
     struct V(bool);
     impl EigenVisitor for V {
-        type Output = FResult<Out>;
-        fn visit<F: EigenField>(self, a: &Matrix<F>) -> FResult<Out> {
-            jordan_out(&exactlti::jordan::jordan_over(a)?, self.0)
+        type Output = Option<FResult<Out>>;
+        fn visit<F: EigenField>(self, a: &Matrix<F>) -> Self::Output {
+            Some(
+                exactlti::jordan::jordan_over(a)
+                    .map_err(Into::into)
+                    .and_then(|jf| jordan_out(&jf, self.0)),
+            )
+        }
+        fn visit_qp(self, _: &Matrix<exactlti::ratfunc::RatFuncField>) -> Self::Output {
+            // Q(p) has its own path (`symbolic::jordan`, the symbolic Jordan form)
+            None
         }
     }
     let unsupported = || {
@@ -565,9 +573,10 @@ fn modal_values<F: Field>(r: &realization::JordanMinimal<F>) -> Out {
     ])
 }
 
-/// The modal table of `A` over Q as output data.
-pub(crate) fn modes_out(a: &Matrix<exactlti::field::Q>) -> FResult<Out> {
-    let m = realization::modal_table(a)?;
+/// The modal table of `A` as output data, over every field with certified eigenvalues
+/// ([`realization::SystemField::modal_table`], as the command line's `modes`).
+pub(crate) fn modes_out<K: realization::SystemField>(a: &Matrix<K>) -> FResult<Out> {
+    let m = K::modal_table(a)?;
     let opt = |x: Option<f64>| x.map(Out::Float).unwrap_or(Out::None);
     let modes = m
         .modes

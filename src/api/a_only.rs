@@ -8,9 +8,10 @@ use crate::error::Error;
 use crate::field::{Field, Q};
 use crate::io::system_file::read_matrix_key;
 use crate::io::{FromScalars, Ground, InputError, read_system_file};
-use crate::jordan::EigenField;
 use crate::jordan::normalize::Normalization;
+use crate::jordan::{EigenField, JordanField};
 use crate::matrix::Matrix;
+use crate::ratfunc::RatFuncField;
 use crate::report::Value;
 use std::path::Path;
 
@@ -63,7 +64,7 @@ pub(super) fn fallback(cmd: &Command, path: &Path, err: InputError) -> Result<Ou
 }
 
 /// The commands that need only the matrix `A` (`jordan`, `linalg`); `None` for the others.
-pub(super) fn a_command<K: Field + 'static>(
+pub(super) fn a_command<K: JordanField>(
     cmd: &Command,
     a: &Matrix<K>,
     path: &Path,
@@ -93,9 +94,10 @@ pub(super) fn normalization(arg: Option<&str>, real: bool) -> Result<Normalizati
     }
 }
 
-/// `jordan [--real]` over the fields that have an exact Jordan form: Q, and a quadratic
-/// field (over Q when every entry is rational).
-fn jordan_any<K: Field + 'static>(
+/// `jordan [--real]` over every field with an exact Jordan form: Q, a quadratic field (over
+/// Q when every entry is rational), and Q(p) (the symbolic Jordan form with its conditions,
+/// as `jordan` on a system over Q(p)).
+fn jordan_any<K: JordanField>(
     a: &Matrix<K>,
     how: (bool, bool),
     norm: &Normalization,
@@ -107,11 +109,19 @@ fn jordan_any<K: Field + 'static>(
         fn visit<F: EigenField>(self, a: &Matrix<F>) -> Self::Output {
             jordan_cmd(a, self.0, self.1, self.2)
         }
+        fn visit_qp(self, a: &Matrix<RatFuncField>) -> Self::Output {
+            let V((real, _), norm, path) = self;
+            let out = if !norm.is_none() {
+                super::symbolic_jordan::normalized_outcome(a, norm)
+            } else if real {
+                super::symbolic_jordan::real_outcome(a)
+            } else {
+                super::symbolic_jordan::jordan_outcome(a)
+            };
+            out.map_err(|e| with_path(path, e))
+        }
     }
-    super::jordan_values::on_eigen_field(a, V(how, norm, path)).unwrap_or_else(|| {
-        let e = Error::Unsupported(format!("Jordan form over {}", a.field()));
-        Err(with_path(path, e))
-    })
+    super::jordan_values::on_eigen_field(a, V(how, norm, path))
 }
 
 /// `jordan [--real]` ([`crate::jordan::jordan_over`]); `--real` of a matrix over a field
@@ -156,7 +166,7 @@ fn jordan_cmd<F: EigenField>(
 /// eigenvalues of $sE - A$ with their blocks) beside the sizes of its infinite blocks (from
 /// the Kronecker structure, [`crate::pencil::kronecker_structure`]). A singular pencil has
 /// no Jordan structure and is refused with the reason (exit 2).
-pub(super) fn descriptor_jordan<K: Field + 'static>(
+pub(super) fn descriptor_jordan<K: JordanField>(
     cmd: &Command,
     d: &crate::system::Descriptor<K>,
     path: &Path,
@@ -192,7 +202,7 @@ pub(super) fn descriptor_jordan_path(
     struct Visit<'a>(&'a Command, &'a Path);
     impl crate::io::load_descriptor::DescriptorVisitor for Visit<'_> {
         type Output = Result<Outcome, Failure>;
-        fn visit<K: Field + 'static>(
+        fn visit<K: crate::io::GroundField>(
             self,
             _: &crate::io::load_descriptor::LoadedDescriptor,
             s: &crate::system::Descriptor<K>,

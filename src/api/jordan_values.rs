@@ -2,7 +2,8 @@
 //! command line itself (one code path): which matrix is decomposed ($A$, or for a
 //! descriptor system the finite part of its pencil $sE - A$, the pencil checked regular:
 //! [`finite_part`]) and over which field ([`on_eigen_field`]: a matrix over
-//! $\mathbb{Q}(\sqrt d)$ whose entries are all rational is decomposed over $\mathbb{Q}$).
+//! $\mathbb{Q}(\sqrt d)$ whose entries are all rational is decomposed over $\mathbb{Q}$; over
+//! $\mathbb{Q}(p)$ the visitor's [`EigenVisitor::visit_qp`]).
 //!
 //! Identity: the finite part's $A_f$ has order $\deg\det(sE - A)$ (the pencil's finite
 //! order), and its eigenvalues are the finite eigenvalues of the pencil; `verified` says the
@@ -10,8 +11,8 @@
 
 use super::Failure;
 use super::common::with_path;
-use crate::field::{Field, Q, QuadraticField};
-use crate::jordan::EigenField;
+use crate::field::Field;
+use crate::jordan::JordanField;
 use crate::matrix::Matrix;
 use crate::system::Descriptor;
 use std::path::Path;
@@ -64,28 +65,12 @@ pub fn finite_part<K: Field + 'static>(
     })
 }
 
-/// Code run on a matrix over a field with an exact Jordan decomposition.
-pub trait EigenVisitor {
-    type Output;
-    fn visit<F: EigenField>(self, a: &Matrix<F>) -> Self::Output;
-}
+pub use crate::jordan::EigenVisitor;
 
-/// Runs `v` on `a` over the field its Jordan form is computed in: $\mathbb{Q}$, or
-/// $\mathbb{Q}(\sqrt d)$ ($\mathbb{Q}(i)$) unless every entry is rational (then over
-/// $\mathbb{Q}$); `None` over any other field (no exact Jordan decomposition).
-pub fn on_eigen_field<K: Field + 'static, V: EigenVisitor>(
-    a: &Matrix<K>,
-    v: V,
-) -> Option<V::Output> {
-    let any = a as &dyn std::any::Any;
-    if let Some(q) = any.downcast_ref::<Matrix<Q>>() {
-        return Some(v.visit(q));
-    }
-    if let Some(k) = any.downcast_ref::<Matrix<QuadraticField>>() {
-        return Some(match crate::matrix::to_rational_matrix(k) {
-            Some(q) => v.visit(&q),
-            None => v.visit(k),
-        });
-    }
-    None
+/// Runs `v` on `a` over the field its eigenvalues are computed in
+/// ([`JordanField::on_eigen_field`]): $\mathbb{Q}$, or $\mathbb{Q}(\sqrt d)$ ($\mathbb{Q}(i)$)
+/// unless every entry is rational (then over $\mathbb{Q}$), or $\mathbb{Q}(p)$
+/// ([`EigenVisitor::visit_qp`]: eigenvalues in the field or roots of irreducible factors).
+pub fn on_eigen_field<K: JordanField, V: EigenVisitor>(a: &Matrix<K>, v: V) -> V::Output {
+    K::on_eigen_field(a, v)
 }

@@ -10,8 +10,7 @@
 use super::jordan_values::{EigenVisitor, on_eigen_field};
 use crate::algebraic::AlgebraicNumber;
 use crate::error::Result;
-use crate::field::Field;
-use crate::jordan::EigenField;
+use crate::jordan::{EigenField, JordanField};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 
@@ -50,12 +49,16 @@ pub fn roots_over<F: EigenField>(p: &Poly<F>) -> Result<Vec<ExactRoot>> {
 ///
 /// # Errors
 /// `NotSquare`; those of [`roots_over`].
-pub fn eigenvalues<K: Field + 'static>(a: &Matrix<K>) -> Option<Result<Vec<ExactRoot>>> {
+pub fn eigenvalues<K: JordanField>(a: &Matrix<K>) -> Option<Result<Vec<ExactRoot>>> {
     struct V;
     impl EigenVisitor for V {
-        type Output = Result<Vec<ExactRoot>>;
+        type Output = Option<Result<Vec<ExactRoot>>>;
         fn visit<F: EigenField>(self, a: &Matrix<F>) -> Self::Output {
-            roots_over(&a.charpoly()?)
+            Some(a.charpoly().and_then(|p| roots_over(&p)))
+        }
+        fn visit_qp(self, _: &Matrix<crate::ratfunc::RatFuncField>) -> Self::Output {
+            // not numbers: the factors of det(sI - A) over Q(p) (`modes`, `jordan`)
+            None
         }
     }
     on_eigen_field(a, V)

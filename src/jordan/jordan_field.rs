@@ -19,6 +19,19 @@ use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::ratfunc::RatFuncField;
 
+/// Code run on a matrix over the field its eigenvalues are computed in
+/// ([`JordanField::on_eigen_field`]): certified algebraic numbers over a number field, or
+/// over $\mathbb{Q}(p)$ elements of the field and roots of irreducible factors
+/// ([`super::EigenValue::InField`], [`super::EigenValue::RootOf`]).
+pub trait EigenVisitor {
+    type Output;
+    /// Over a field with certified eigenvalues ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
+    /// $\mathbb{Q}(i)$).
+    fn visit<F: EigenField>(self, a: &Matrix<F>) -> Self::Output;
+    /// Over $\mathbb{Q}(p_1, \dots, p_k)$.
+    fn visit_qp(self, a: &Matrix<RatFuncField>) -> Self::Output;
+}
+
 /// A base field of the exact Jordan decomposition of a system's matrices.
 pub trait JordanField: Field + 'static {
     /// The exact Jordan form of the square matrix `a` (each component verified).
@@ -33,6 +46,10 @@ pub trait JordanField: Field + 'static {
     /// # Errors
     /// `NotSquare`; those of the factorization.
     fn charpoly_factors(a: &Matrix<Self>) -> Result<Vec<(Poly<Self>, usize)>>;
+    /// Runs `v` on `a` over the field its eigenvalues are computed in: $\mathbb{Q}$;
+    /// $\mathbb{Q}(\sqrt d)$ ($\mathbb{Q}(i)$) unless every entry is rational (then over
+    /// $\mathbb{Q}$); $\mathbb{Q}(p)$ ([`EigenVisitor::visit_qp`]).
+    fn on_eigen_field<V: EigenVisitor>(a: &Matrix<Self>, v: V) -> V::Output;
 }
 
 /// The factors of $\chi_A$ over a field with certified eigenvalues.
@@ -48,6 +65,9 @@ impl JordanField for Q {
     fn charpoly_factors(a: &Matrix<Q>) -> Result<Vec<(Poly<Q>, usize)>> {
         eigen_charpoly_factors(a)
     }
+    fn on_eigen_field<V: EigenVisitor>(a: &Matrix<Q>, v: V) -> V::Output {
+        v.visit(a)
+    }
 }
 
 impl JordanField for QuadraticField {
@@ -56,6 +76,12 @@ impl JordanField for QuadraticField {
     }
     fn charpoly_factors(a: &Matrix<QuadraticField>) -> Result<Vec<(Poly<QuadraticField>, usize)>> {
         eigen_charpoly_factors(a)
+    }
+    fn on_eigen_field<V: EigenVisitor>(a: &Matrix<QuadraticField>, v: V) -> V::Output {
+        match crate::matrix::to_rational_matrix(a) {
+            Some(q) => v.visit(&q),
+            None => v.visit(a),
+        }
     }
 }
 
@@ -70,5 +96,8 @@ impl JordanField for RatFuncField {
             .into_iter()
             .map(|f| (f.monic, f.multiplicity))
             .collect())
+    }
+    fn on_eigen_field<V: EigenVisitor>(a: &Matrix<RatFuncField>, v: V) -> V::Output {
+        v.visit_qp(a)
     }
 }

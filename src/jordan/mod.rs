@@ -61,7 +61,7 @@ pub mod steps;
 pub use chains::{Chains, jordan_block_matrix, jordan_chains};
 pub use decompose::{EigenField, eigenvalues_over, jordan_over};
 pub use eigenvalue::{Certified, Decided, EigenValue, Eigenvalue, NumberEigen};
-pub use jordan_field::JordanField;
+pub use jordan_field::{EigenVisitor, JordanField};
 pub use primary::{Component, PrimaryComponent, Restriction};
 pub use qp_form::jordan_qp;
 pub use real::{CompactPair, RealBlock, RealEntries, RealJordanForm, RealNote};

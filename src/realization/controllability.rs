@@ -1,7 +1,6 @@
 //! Controllability and observability matrices (paper eq. 7-8), the block Hankel matrix
 //! (eq. 9) and the McMillan degree.
 
-use crate::algebraic::Ext;
 use crate::error::Result;
 use crate::field::Field;
 use crate::jordan::JordanField;
@@ -75,28 +74,58 @@ pub fn row_compression<K: Field>(x: &Matrix<K>) -> (Matrix<K>, usize) {
 
 /// PBH test (Popov–Belevitch–Hautus): $(A, B)$ is controllable iff
 /// $\mathrm{rank}\,[A - \lambda I, B] = n$ for every eigenvalue $\lambda$. Exact over every
-/// [`JordanField`]: one rank per irreducible factor $g$ of $\det(sI - A)$ over the field,
-/// computed in $E = F\[t\]/(g)$ at $\lambda = t$ (the conjugate roots give the same rank).
+/// [`JordanField`] ($\mathbb{Q}(p)$ too), all over the base field $F$ (no arithmetic in an
+/// extension $F\[t\]/(g)$, whose inverses swell over $\mathbb{Q}(p)$):
+///
+/// * a left eigenvector $w$ with $w B = 0$ exists for some eigenvalue iff the Kalman matrix
+///   $\mathcal C$ has rank $< n$ (Hautus $\Leftrightarrow$ Kalman), so full rank decides every
+///   eigenvalue at once;
+/// * otherwise the test runs per irreducible factor $g$ of $\det(sI - A)$ over $F$: the left
+///   kernel $W$ of $g(A)$ holds every left eigenvector of every root of $g$ and is
+///   $A$-invariant, so PBH fails at the roots of $g$ iff $(W A^j B)_{j < k}$ has rank
+///   $< k = \dim W$ (the $g$-primary part's controllability; for $g = s - \theta$ this is
+///   $\mathrm{rank}\,[A - \theta I, B] < n$). Some factor must fail: if none does, the two
+///   tests disagree and `Verification` is returned.
 ///
 /// # Errors
-/// `NotSquare`/`Shape`; factorization failures.
+/// `NotSquare`/`Shape`; factorization failures; `Verification` as above.
 pub fn pbh_controllable<F: JordanField>(a: &Matrix<F>, b: &Matrix<F>) -> Result<bool> {
     a.check_square("pbh")?;
     let n = a.nrows();
     b.check_shape("pbh B", (n, b.ncols()))?;
+    if controllability_matrix(a, b).rank() == n {
+        return Ok(true);
+    }
     for (g, _) in F::charpoly_factors(a)? {
-        let e = Ext::with_var(&g, (0.0, 0.0), "t");
-        let t = e.generator();
-        let mut m = a.map(&e, |x| e.from_base(x));
-        for i in 0..n {
-            let v = e.sub(m.get(i, i), &t);
-            m.set(i, i, v);
+        let w = poly_of_matrix(&g, a)?.left_nullspace();
+        let k = w.nrows();
+        let mut r = w;
+        let mut kry = Matrix::zeros(a.field().clone(), k, 0);
+        for _ in 0..k {
+            kry = kry.hstack(&(&r * b))?;
+            r = &r * a;
         }
-        if m.hstack(&b.map(&e, |x| e.from_base(x)))?.rank() < n {
+        if kry.rank() < k {
             return Ok(false);
         }
     }
-    Ok(true)
+    Err(crate::error::Error::Verification(
+        "PBH: the Kalman matrix is rank deficient but no eigenvalue fails the PBH test".into(),
+    ))
+}
+
+/// $g(A)$ by Horner.
+fn poly_of_matrix<F: Field>(g: &crate::poly::Poly<F>, a: &Matrix<F>) -> Result<Matrix<F>> {
+    let k = a.field();
+    let mut acc = Matrix::zeros(k.clone(), a.nrows(), a.nrows());
+    for c in g.coeffs().iter().rev() {
+        acc = acc.try_mul(a)?;
+        for i in 0..a.nrows() {
+            let v = k.add(acc.get(i, i), c);
+            acc.set(i, i, v);
+        }
+    }
+    Ok(acc)
 }
 
 /// PBH test for observability: the dual of [`pbh_controllable`].

@@ -1,55 +1,83 @@
 //! The eigenvalue sections of `analyze`, once for every field with an exact Jordan form
 //! ([`EigenField`]: $\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$): the Jordan form
-//! ($A T = T J$), its real form when $A$ is real, the free response
-//! $e^{At} = \sum_k t^k e^{\theta t} G_{\theta,k}$, the PBH tests and the modal table.
+//! ($A T = T J$), its real form when $A$ is real, its stability, the free response
+//! $e^{At} = \sum_k t^k e^{\theta t} G_{\theta,k}$, the PBH tests and the modal table. The PBH
+//! tests by ranks ([`pbh_section`]) serve every [`JordanField`] ($\mathbb{Q}(p)$ too).
 
 use super::runner::{Insist, Section, Sections, failed_msg};
 use super::{MAX_FREE_RESPONSE_BYTES, not_applicable};
+use crate::field::Q;
 use crate::io::TypedSystem;
 use crate::jordan::{EigenField, JordanField, JordanForm, jordan_over};
+use crate::matrix::Matrix;
 use crate::realization;
 use crate::report::{Report, Value, sections};
 use crate::system::StateSpace;
 use std::sync::Arc;
 
-/// The PBH tests by ranks, for when the Jordan form was not computed (`None`: no such test
-/// over this field).
-pub(super) type PbhByRank = Option<Box<dyn FnOnce() -> crate::Result<(bool, bool)> + Send>>;
+/// The PBH tests, computed when the section runs: `(controllable, observable)`.
+pub(super) type Pbh = Box<dyn FnOnce() -> crate::Result<(bool, bool)> + Send>;
 
-/// The Jordan form (with the real form over a real field and the free response), the PBH
-/// tests and the modal table over the system's field.
-pub(super) fn eigen_sections<F: EigenField>(
-    t: Arc<TypedSystem<F>>,
-    secs: &mut Sections,
-    (full, path): (bool, &str),
-    by_rank: PbhByRank,
-) {
-    let (sec, jf) = jordan_section(&t, secs, (full, path));
-    secs.push("jordan", sec);
+/// The PBH tests by ranks over every [`JordanField`], all over the base field
+/// ([`realization::pbh_controllable`]: the Kalman rank decides every eigenvalue when it is
+/// full; otherwise per irreducible factor $g$ the $g$-primary part's controllability, the left
+/// kernel of $g(A)$; for $g = s - \theta$, $\theta \in F$, $\operatorname{rank}[A - \theta I,
+/// B] < n$; over $\mathbb{Q}(p)$ a factor of degree $\ge 2$ is a `RootOf(g)` eigenvalue, tested
+/// without splitting it). Over $\mathbb{Q}(p)$ the factorization and the ranks record their
+/// conditions in the field.
+pub(super) fn pbh_by_rank<F: JordanField>(s: Arc<StateSpace<F>>) -> Pbh {
+    Box::new(move || {
+        let pc = realization::pbh_controllable(&s.a, &s.b)?;
+        Ok((pc, realization::pbh_observable(&s.a, &s.c)?))
+    })
+}
+
+/// The PBH section: not applicable without inputs or without a way to test (`pbh` `None`).
+pub(super) fn pbh_section(secs: &mut Sections, ninputs: usize, pbh: Option<Pbh>) {
     let title = "PBH tests (exact, one test per irreducible factor)";
-    if t.ss.ninputs() == 0 {
+    if ninputs == 0 {
         secs.push(
             "pbh",
             not_applicable("PBH tests", "the system has no inputs"),
         );
-    } else if jf.is_none() && by_rank.is_none() {
+        return;
+    }
+    let Some(pbh) = pbh else {
         let why = "the Jordan form was not computed";
         secs.push("pbh", not_applicable(title, why));
-    } else {
-        let tt = t.clone();
-        let work = move || {
-            let (pc, po) = match (jf, by_rank) {
-                (Some(jf), _) => pbh_from_jordan(&jf, &tt.ss),
-                (None, Some(rank)) => rank()?,
-                (None, None) => unreachable!("checked above"),
-            };
-            let rep = Report::titled(title)
-                .bool("controllable", pc)
-                .bool("observable", po);
-            Ok((true, rep))
-        };
-        secs.section("pbh", Section::new(title, Insist::Analyze, work));
-    }
+        return;
+    };
+    let work = move || {
+        let (pc, po) = pbh()?;
+        let rep = Report::titled(title)
+            .bool("controllable", pc)
+            .bool("observable", po);
+        Ok((true, rep))
+    };
+    secs.section("pbh", Section::new(title, Insist::Analyze, work));
+}
+
+/// The Jordan form (with the real form over a real field, the stability and the free
+/// response), the PBH tests and the modal table over the system's field. `routh`: the
+/// system's $A$ when the field is $\mathbb{Q}$ (stability by Routh-Hurwitz,
+/// [`exact_stability`]); over the other fields the stability is read off the Jordan form's
+/// typed signs ([`sections::stability_text`]).
+pub(super) fn eigen_sections<F: EigenField + JordanField>(
+    t: Arc<TypedSystem<F>>,
+    secs: &mut Sections,
+    (full, path): (bool, &str),
+    routh: Option<Matrix<Q>>,
+) {
+    let (sec, jf) = jordan_section(&t, secs, (full, path), routh);
+    secs.push("jordan", sec);
+    let pbh: Pbh = match jf {
+        Some(jf) => {
+            let tt = t.clone();
+            Box::new(move || Ok(pbh_from_jordan(&jf, &tt.ss)))
+        }
+        None => pbh_by_rank(Arc::new(t.ss.clone())),
+    };
+    pbh_section(secs, t.ss.ninputs(), Some(pbh));
     let modes = move || realization::modal_table_over(&t.ss.a).map(|m| (true, m.report()));
     let modal = Section::new("modal table", Insist::Command("modes"), modes);
     secs.section("modes", modal);
@@ -78,6 +106,7 @@ fn jordan_section<F: EigenField>(
     t: &Arc<TypedSystem<F>>,
     secs: &mut Sections,
     (full, path): (bool, &str),
+    routh: Option<Matrix<Q>>,
 ) -> (Value, Option<Arc<JordanForm<F>>>) {
     let title = "eigenvalues and Jordan form";
     let tt = t.clone();
@@ -122,11 +151,11 @@ fn jordan_section<F: EigenField>(
         not_applicable(title, why)
     };
     sec.push("real_form", real);
-    if let Some(q) =
-        (t.as_ref() as &dyn std::any::Any).downcast_ref::<TypedSystem<crate::field::Q>>()
-    {
-        sec.push("stability", exact_stability(q, secs));
-    }
+    let stability = match routh {
+        Some(a) => exact_stability(a, secs),
+        None => jordan_stability(&jf),
+    };
+    sec.push("stability", stability);
     let est = free_response_estimate(&sec, jf.n());
     sec.push("free_response", free_response(&jf, secs, est, (full, path)));
     (Value::Obj(sec), Some(jf))
@@ -135,9 +164,8 @@ fn jordan_section<F: EigenField>(
 /// Stability decided exactly over $\mathbb{Q}$ (no floats: Routh-Hurwitz through the
 /// Cayley map and Schur-Cohn per irreducible factor of $\det(sI - A)$, the minimal
 /// polynomial for the blocks on the imaginary axis), under its budget.
-fn exact_stability(t: &TypedSystem<crate::field::Q>, secs: &mut Sections) -> Value {
+fn exact_stability(a: Matrix<Q>, secs: &mut Sections) -> Value {
     use crate::system::discrete::stability::{Domain, stability_of};
-    let a = t.ss.a.clone();
     let title = "stability (exact)";
     match secs.run(title, Insist::Command("stability"), move || {
         stability_of(&a, Domain::Continuous)
@@ -146,6 +174,35 @@ fn exact_stability(t: &TypedSystem<crate::field::Q>, secs: &mut Sections) -> Val
         Ok(Err(e)) => failed_msg(title, &e.to_string()),
         Err(v) => v,
     }
+}
+
+/// Stability read off the Jordan form over any field ([`JordanField`]): the typed sign of
+/// each eigenvalue's real part ([`crate::jordan::Eigenvalue::re_sign`], a
+/// [`crate::jordan::Decided`]: exact over a number field; over $\mathbb{Q}(p)$ a sign that
+/// depends on the parameters is "not decided in symbols", never guessed), with the Jordan
+/// block sizes on the imaginary axis ([`sections::stability_text`]).
+fn jordan_stability<F: crate::field::Field>(jf: &JordanForm<F>) -> Value {
+    use crate::jordan::Decided;
+    use std::cmp::Ordering;
+    let k = jf.base();
+    let signs: crate::Result<Vec<_>> = jf.eigenvalues.iter().map(|e| e.re_sign(k)).collect();
+    let less = Decided::Exactly(Ordering::Less);
+    let asymptotic = match signs {
+        Ok(s) if s.iter().any(|d| d.exactly().is_some() && *d != less) => Value::Bool(false),
+        Ok(s) if s.iter().all(|d| *d == less) => Value::Bool(true),
+        Ok(_) => Value::Str(sections::NOT_DECIDED.into()),
+        Err(e) => Value::Str(format!("not computed: {e}")),
+    };
+    Value::Obj(
+        Report::titled("stability (exact)")
+            .str("time", "continuous")
+            .str("verdict", sections::stability_text(jf))
+            .with("asymptotically_stable", asymptotic)
+            .str(
+                "method",
+                "the signs of the eigenvalues' real parts, read off the Jordan form",
+            ),
+    )
 }
 
 /// The free response under its budget, or its size when too large.

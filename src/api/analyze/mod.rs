@@ -137,13 +137,12 @@ pub fn analyze_with<K: GroundField>(
     }
     let how = (opts.full, f.path.as_str());
     if let Some(n) = K::numeric(t) {
-        let s = Arc::new(n.ss.clone());
-        let by_rank = move || {
-            let pc = realization::pbh_controllable(&s.a, &s.b)?;
-            Ok((pc, realization::pbh_observable(&s.a, &s.c)?))
-        };
-        eigen_sections(Arc::new(n.clone()), &mut secs, how, Some(Box::new(by_rank)));
+        let routh = K::rational(t).map(|q| q.ss.a.clone());
+        eigen_sections(Arc::new(n.clone()), &mut secs, how, routh);
     } else {
+        // no certified eigenvalues: the Jordan structure over the field is the caller's
+        // (`api::symbolic`, with its conditions); the PBH tests by ranks hold over every field
+        // with a Jordan decomposition (their conditions recorded in the field)
         let why = format!(
             "needs rational matrices; this file's entries lie in {}",
             f.ground
@@ -152,7 +151,8 @@ pub fn analyze_with<K: GroundField>(
             "jordan",
             not_applicable("eigenvalues and Jordan form", why.clone()),
         );
-        secs.push("pbh", not_applicable("PBH tests", why.clone()));
+        let pbh = eigen::pbh_by_rank(Arc::new(t.ss.clone()));
+        eigen::pbh_section(&mut secs, s.ninputs(), Some(pbh));
         secs.push("modes", not_applicable("modal table", why));
     }
     mechanical_section(&fa, &ta, &mut secs);

@@ -145,7 +145,14 @@ pub(in crate::api) fn run(
                 }
             }
             rep.push("jordan", Value::Obj(sec));
-            (rep, ok)
+            // the modal table as formulas, as `modes` over Q(p) (one code path)
+            let modes = match super::modes::modes_report(&s.a) {
+                Ok(m) => Value::Obj(m),
+                Err(err) => {
+                    Value::Obj(Report::titled("modes over Q(p)").str("error", err.to_string()))
+                }
+            };
+            (set_key(rep, "modes", modes), ok)
         }
         Command::Modes { .. } => (super::modes::modes_report(&s.a).map_err(e)?, true),
         _ => return Ok(None),

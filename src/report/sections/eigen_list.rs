@@ -57,8 +57,9 @@ pub fn eigenvalue_structure<F: Field>(jf: &JordanForm<F>, var: &str) -> Vec<Valu
 }
 
 /// Asymptotic stability ($\operatorname{Re}\theta < 0$ for every eigenvalue) read off the
-/// typed signs of the eigenvalue list: `unstable` when a real part is positive, `not
-/// asymptotically stable` when one is zero (both exact, whatever the other entries),
+/// typed signs of the eigenvalue list: `unstable` when a real part is positive or an
+/// eigenvalue of zero real part has a Jordan block larger than 1 ($t^k$ growth), `not
+/// asymptotically stable` when one is zero (all exact, whatever the other entries),
 /// `asymptotically stable` when every sign is negative, else [`NOT_DECIDED`].
 pub fn stability_text<F: Field>(jf: &JordanForm<F>) -> String {
     let k = jf.base();
@@ -70,8 +71,14 @@ pub fn stability_text<F: Field>(jf: &JordanForm<F>) -> String {
         }
     }
     let has = |o: Ordering| signs.contains(&Decided::Exactly(o));
+    let on_axis_block =
+        jf.eigenvalues.iter().zip(&signs).any(|(e, s)| {
+            *s == Decided::Exactly(Ordering::Equal) && e.blocks.iter().any(|&b| b > 1)
+        });
     if has(Ordering::Greater) {
         "unstable: an eigenvalue has a positive real part".into()
+    } else if on_axis_block {
+        "unstable: a Jordan block larger than 1 on the imaginary axis".into()
     } else if has(Ordering::Equal) {
         "not asymptotically stable: an eigenvalue has zero real part".into()
     } else if signs.iter().all(|s| *s == Decided::Exactly(Ordering::Less)) {
