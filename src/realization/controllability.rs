@@ -97,7 +97,7 @@ pub fn pbh_controllable<F: JordanField>(a: &Matrix<F>, b: &Matrix<F>) -> Result<
         return Ok(true);
     }
     for (g, _) in F::charpoly_factors(a)? {
-        let w = poly_of_matrix(&g, a)?.left_nullspace();
+        let w = a.eval_poly(&g)?.left_nullspace();
         let k = w.nrows();
         let mut r = w;
         let mut kry = Matrix::zeros(a.field().clone(), k, 0);
@@ -112,20 +112,6 @@ pub fn pbh_controllable<F: JordanField>(a: &Matrix<F>, b: &Matrix<F>) -> Result<
     Err(crate::error::Error::Verification(
         "PBH: the Kalman matrix is rank deficient but no eigenvalue fails the PBH test".into(),
     ))
-}
-
-/// $g(A)$ by Horner.
-fn poly_of_matrix<F: Field>(g: &crate::poly::Poly<F>, a: &Matrix<F>) -> Result<Matrix<F>> {
-    let k = a.field();
-    let mut acc = Matrix::zeros(k.clone(), a.nrows(), a.nrows());
-    for c in g.coeffs().iter().rev() {
-        acc = acc.try_mul(a)?;
-        for i in 0..a.nrows() {
-            let v = k.add(acc.get(i, i), c);
-            acc.set(i, i, v);
-        }
-    }
-    Ok(acc)
 }
 
 /// PBH test for observability: the dual of [`pbh_controllable`].

@@ -146,21 +146,6 @@ fn sort_eigs(out: &mut [EigenvalueAt]) {
     });
 }
 
-/// $q(A)$ by Horner over the matrix field.
-pub(super) fn poly_of_matrix<K: Field>(q: &Poly<K>, a: &Matrix<K>) -> Result<Matrix<K>> {
-    let k = a.field().clone();
-    let n = a.nrows();
-    let mut acc = Matrix::zeros(k.clone(), n, n);
-    for c in q.coeffs().iter().rev() {
-        acc = acc.try_mul(a)?;
-        for i in 0..n {
-            let v = k.add(acc.get(i, i), c);
-            acc.set(i, i, v);
-        }
-    }
-    Ok(acc)
-}
-
 /// Jordan block sizes (non-increasing) of each root of the irreducible `q` (multiplicity
 /// `m` in the characteristic polynomial) for the matrix `a`.
 pub fn block_sizes<K: Field>(a: &Matrix<K>, q: &Poly<K>, m: usize) -> Result<Vec<usize>> {
@@ -168,7 +153,7 @@ pub fn block_sizes<K: Field>(a: &Matrix<K>, q: &Poly<K>, m: usize) -> Result<Vec
         return Ok(vec![1]);
     }
     let d = q.deg();
-    let qa = poly_of_matrix(q, a)?;
+    let qa = a.eval_poly(q)?;
     let mut ranks = vec![a.nrows()];
     let mut pw = qa.clone();
     for k in 1..=m {

@@ -18,7 +18,7 @@
 use super::super::approx::approx_roots;
 use super::super::imaginary::real_roots_by_sign;
 use super::super::roots::{rational_near, sign_at_root};
-use super::super::structure::{block_sizes, poly_of_matrix};
+use super::super::structure::block_sizes;
 use super::super::value::value_over_k;
 use super::super::{EigenvalueAt, FactorAt};
 use super::KFamily;
@@ -112,7 +112,7 @@ fn blocks_of<F: Field>(a: &Matrix<F>, s: &Poly<F>, m: usize) -> Result<Vec<usize
     if m == 1 || s.deg() == 1 {
         return block_sizes(a, s, m);
     }
-    let nullity = a.nrows() - poly_of_matrix(s, a)?.rank();
+    let nullity = a.nrows() - a.eval_poly(s)?.rank();
     if nullity == m * s.deg() {
         Ok(vec![1; m])
     } else if nullity == s.deg() {
