@@ -197,21 +197,9 @@ fn check_stability<K: GroundField>(k: &K, g: &Option<K::Elem>, seed: u64, iters:
     }
 }
 
-#[test]
-fn stability_over_q() {
-    let k = crate::common::q();
-    check_stability(&k, &None, 2311, crate::common::iters(30));
-}
-#[test]
-fn stability_over_q_sqrt2() {
-    let (k, g) = crate::common::qsqrt2();
-    check_stability(&k, &g, 2312, crate::common::iters(30));
-}
-#[test]
-fn stability_over_q_i() {
-    let (k, g) = crate::common::qi();
-    check_stability(&k, &g, 2313, crate::common::iters(30));
-}
+crate::for_each_number_field!(check_stability, 2311, 30; stability_over_q,
+    stability_over_q_sqrt2, stability_over_q_i);
+
 #[test]
 fn stability_over_q_p_refused() {
     // Q(p) does not factor nor decide signs: the api refuses (on the CLI below)
@@ -347,20 +335,8 @@ fn check_closed_form<K: exactlti::jordan::EigenField>(
     }
 }
 
-#[test]
-fn closed_form_over_q() {
-    check_closed_form(&crate::common::q(), &None, 2331, crate::common::iters(6));
-}
-#[test]
-fn closed_form_over_q_sqrt2() {
-    let (k, g) = crate::common::qsqrt2();
-    check_closed_form(&k, &g, 2332, crate::common::iters(6));
-}
-#[test]
-fn closed_form_over_q_i() {
-    let (k, g) = crate::common::qi();
-    check_closed_form(&k, &g, 2333, crate::common::iters(6));
-}
+crate::for_each_number_field!(check_closed_form, 2331, 6; closed_form_over_q,
+    closed_form_over_q_sqrt2, closed_form_over_q_i);
 
 #[test]
 fn cli_step_impulse_over_number_fields() {

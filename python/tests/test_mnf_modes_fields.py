@@ -15,6 +15,7 @@ re-checked here in SymPy, independently of the library:
 import pytest
 
 import exactlti
+from test_minreal_fields import markov_sympy  # C A^k B in SymPy, one helper for both files
 
 sympy = pytest.importorskip("sympy")
 
@@ -41,14 +42,6 @@ def system(name):
     return exactlti.ss(A, B, C, params=params or None)
 
 
-def markov(A, B, C, count):
-    out, M = [], B
-    for _ in range(count):
-        out.append(C * M)
-        M = A * M
-    return out
-
-
 def zero(M):
     return all(sympy.simplify(sympy.cancel(x)) == 0 for x in M)
 
@@ -73,7 +66,7 @@ def test_mnf_identities_on_every_field(name):
     assert zero(Bt[:h, :]) and zero(Bt[h:, :] - F)
     # the Markov parameters of the normal form equal the system's
     Ct = C * T.inv()
-    for got, want in zip(markov(At, Bt, Ct, 2 * n), markov(A, B, C, 2 * n)):
+    for got, want in zip(markov_sympy(At, Bt, Ct, 2 * n), markov_sympy(A, B, C, 2 * n)):
         assert zero(got - want)
 
 

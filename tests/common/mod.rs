@@ -111,6 +111,36 @@ macro_rules! for_each_field {
     };
 }
 
+/// As [`for_each_field!`] over the number fields only (Q, Q(sqrt 2), Q(i): operations that
+/// need certified roots or signs, which Q(p) refuses), seeded `$seed`, `$seed + 1`,
+/// `$seed + 2`.
+#[macro_export]
+macro_rules! for_each_number_field {
+    ($check:ident, $seed:expr, $n:expr; $q:ident, $sqrt2:ident, $i:ident) => {
+        #[test]
+        fn $q() {
+            $check(
+                &$crate::common::q(),
+                &None,
+                $seed,
+                $crate::common::iters($n),
+            );
+        }
+
+        #[test]
+        fn $sqrt2() {
+            let (k, g) = $crate::common::qsqrt2();
+            $check(&k, &g, $seed + 1, $crate::common::iters($n));
+        }
+
+        #[test]
+        fn $i() {
+            let (k, g) = $crate::common::qi();
+            $check(&k, &g, $seed + 2, $crate::common::iters($n));
+        }
+    };
+}
+
 pub fn q() -> Q {
     Q
 }
