@@ -338,6 +338,20 @@ fn check_closed_form<K: exactlti::jordan::EigenField>(
 crate::for_each_number_field!(check_closed_form, 2331, 6; closed_form_over_q,
     closed_form_over_q_sqrt2, closed_form_over_q_i);
 
+/// The CLI's JSON for `args`, asserted verified and computed by the exact closed form.
+fn exact_closed_form(args: &[&str]) -> serde_json::Value {
+    let v = json(args);
+    assert_eq!(v["verified"], true, "{v}");
+    assert!(
+        v["method"]
+            .as_str()
+            .unwrap()
+            .starts_with("exact closed form"),
+        "{v}"
+    );
+    v
+}
+
 #[test]
 fn cli_step_impulse_over_number_fields() {
     let f = temp_file(
@@ -347,15 +361,7 @@ fn cli_step_impulse_over_number_fields() {
     );
     let f = f.to_str().unwrap();
     for cmd in ["step", "impulse"] {
-        let v = json(&[cmd, f, "--format", "json"]);
-        assert_eq!(v["verified"], true, "{v}");
-        assert!(
-            v["method"]
-                .as_str()
-                .unwrap()
-                .starts_with("exact closed form"),
-            "{v}"
-        );
+        let v = exact_closed_form(&[cmd, f, "--format", "json"]);
         assert!(v["response_imag"].is_array());
         let diff = v["float_max_difference"].as_f64().unwrap();
         assert!(diff < 1e-6, "{diff}");
@@ -365,15 +371,7 @@ fn cli_step_impulse_over_number_fields() {
         "qs2_step.json",
         r#"{"A": [["-sqrt(2)", 1], [0, -1]], "B": [[0], [1]], "C": [["sqrt(2)", 1]], "D": [[0]]}"#,
     );
-    let v = json(&["step", g.to_str().unwrap(), "--format", "json"]);
-    assert_eq!(v["verified"], true, "{v}");
-    assert!(
-        v["method"]
-            .as_str()
-            .unwrap()
-            .starts_with("exact closed form"),
-        "{v}"
-    );
+    let v = exact_closed_form(&["step", g.to_str().unwrap(), "--format", "json"]);
     assert!(v["float_max_difference"].as_f64().unwrap() < 1e-6);
     // a sampled stable system over Q(sqrt 2): the step plot's exact final value G(1)
     let h = temp_file(

@@ -80,27 +80,7 @@ pub fn unimodular<K: Field>(k: &K, n: usize, rng: &mut Rng) -> Matrix<K> {
 #[macro_export]
 macro_rules! for_each_field {
     ($check:ident, $seed:expr, $n:expr, $n_qp:expr; $q:ident, $sqrt2:ident, $i:ident, $p:ident) => {
-        #[test]
-        fn $q() {
-            $check(
-                &$crate::common::q(),
-                &None,
-                $seed,
-                $crate::common::iters($n),
-            );
-        }
-
-        #[test]
-        fn $sqrt2() {
-            let (k, g) = $crate::common::qsqrt2();
-            $check(&k, &g, $seed + 1, $crate::common::iters($n));
-        }
-
-        #[test]
-        fn $i() {
-            let (k, g) = $crate::common::qi();
-            $check(&k, &g, $seed + 2, $crate::common::iters($n));
-        }
+        $crate::for_each_number_field!($check, $seed, $n; $q, $sqrt2, $i);
 
         #[test]
         fn $p() {
