@@ -14,7 +14,7 @@ use super::roots::{rational_near, sign_at_root};
 use crate::algebraic::{AlgebraicNumber, NfElem, NumberField};
 use crate::error::Result;
 use crate::field::Field;
-use crate::poly::Poly;
+use crate::poly::{Poly, sign_variations};
 use std::cmp::Ordering;
 
 /// Is there a purely imaginary pair at $v_0$? `Ok((omega, certified))` with the smallest
@@ -87,15 +87,7 @@ pub(crate) fn real_roots_by_sign<F: Field>(
     if g.degree().unwrap_or(0) == 0 {
         return Ok((0, 0));
     }
-    let mut seq = vec![g.clone(), g.derivative()];
-    loop {
-        let n = seq.len();
-        let rem = seq[n - 2].rem(&seq[n - 1]);
-        if rem.is_zero() {
-            break;
-        }
-        seq.push(rem.neg());
-    }
+    let seq = g.sturm_sequence();
     let (mut at_minus_inf, mut at_zero, mut at_inf) = (vec![], vec![], vec![]);
     for s in &seq {
         let lc = sign(&s.lc())?;
@@ -104,17 +96,11 @@ pub(crate) fn real_roots_by_sign<F: Field>(
         at_zero.push(sign(&s.coeff(0))?);
     }
     let (vm, v0, vp) = (
-        variations(&at_minus_inf),
-        variations(&at_zero),
-        variations(&at_inf),
+        sign_variations(&at_minus_inf),
+        sign_variations(&at_zero),
+        sign_variations(&at_inf),
     );
     Ok((vm.saturating_sub(v0), v0.saturating_sub(vp)))
-}
-
-/// Sign changes in a sequence, zeros skipped.
-fn variations(signs: &[Ordering]) -> usize {
-    let nonzero: Vec<&Ordering> = signs.iter().filter(|s| **s != Ordering::Equal).collect();
-    nonzero.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
 #[cfg(test)]

@@ -26,7 +26,7 @@ use crate::algebraic::factor_q;
 use crate::error::Result;
 use crate::field::{Field, Q, Rational};
 use crate::matrix::Matrix;
-use crate::poly::Poly;
+use crate::poly::{Poly, sign_variations};
 use std::cmp::Ordering;
 
 /// Time domain of a stability question.
@@ -94,12 +94,6 @@ pub struct Stability<F: Field = Q> {
     pub verdict: Verdict,
 }
 
-/// The complex conjugate of `c` under the field's marked embedding (`None`: the field has
-/// no conjugation, e.g. symbols).
-fn conj<F: Field>(k: &F, c: &F::Elem) -> Option<F::Elem> {
-    k.conj(c)
-}
-
 /// $p^*(z) = z^n \bar p(1/z)$: the coefficients reversed and conjugated (reversed over a real
 /// field). A root $\zeta$ of $p$ gives the root $1/\bar\zeta$ of $p^*$.
 fn reversed<F: Field>(p: &Poly<F>) -> Option<Poly<F>> {
@@ -107,15 +101,10 @@ fn reversed<F: Field>(p: &Poly<F>) -> Option<Poly<F>> {
     let mut cs = p
         .coeffs()
         .iter()
-        .map(|c| conj(k, c))
+        .map(|c| k.conj(c))
         .collect::<Option<Vec<_>>>()?;
     cs.reverse();
     Some(Poly::new(k.clone(), cs))
-}
-
-/// The sign of `x` (`None`: undecided in the field).
-fn sign<F: Field>(k: &F, x: &F::Elem) -> Option<Ordering> {
-    k.sign(x)
 }
 
 /// Every root of `p` strictly inside the unit circle, over any field with conjugation and the
@@ -130,9 +119,9 @@ pub fn schur_stable_in<F: Field>(p: &Poly<F>) -> Option<bool> {
     let mut p = p.clone();
     while p.deg() > 0 {
         let (a0, an) = (p.coeff(0), p.lc());
-        let (c0, cn) = (conj(&k, &a0)?, conj(&k, &an)?);
+        let (c0, cn) = (k.conj(&a0)?, k.conj(&an)?);
         let gap = k.sub(&k.mul(&an, &cn), &k.mul(&a0, &c0));
-        if sign(&k, &gap)? != Ordering::Greater {
+        if k.sign(&gap)? != Ordering::Greater {
             return Some(false);
         }
         let t = p.scale(&cn).sub(&reversed(&p)?.scale(&a0));
@@ -151,28 +140,16 @@ pub fn schur_stable(p: &Poly<Q>) -> bool {
 /// Number of sign changes of the Sturm sequence `seq` at `x`.
 fn sign_changes<F: Field>(seq: &[Poly<F>], x: &F::Elem) -> Option<usize> {
     let k = seq.first()?.field();
-    let mut signs = vec![];
-    for s in seq {
-        let v = s.eval(x);
-        match sign(k, &v)? {
-            Ordering::Equal => {}
-            o => signs.push(o == Ordering::Greater),
-        }
-    }
-    Some(signs.windows(2).filter(|w| w[0] != w[1]).count())
+    let signs = seq
+        .iter()
+        .map(|s| k.sign(&s.eval(x)))
+        .collect::<Option<Vec<_>>>()?;
+    Some(sign_variations(&signs))
 }
 
 /// Distinct real roots of the real polynomial `h` in $(lo, hi]$.
 fn real_roots_in<F: Field>(h: &Poly<F>, lo: &F::Elem, hi: &F::Elem) -> Option<usize> {
-    let mut seq = vec![h.clone(), h.derivative()];
-    while !seq[seq.len() - 1].is_zero() && seq[seq.len() - 1].deg() > 0 {
-        let n = seq.len();
-        let r = seq[n - 2].rem(&seq[n - 1]).neg();
-        if r.is_zero() {
-            break;
-        }
-        seq.push(r);
-    }
+    let seq = h.sturm_sequence();
     Some(sign_changes(&seq, lo)?.saturating_sub(sign_changes(&seq, hi)?))
 }
 
@@ -207,7 +184,7 @@ pub fn classify_factor_in<F: Field>(f: &Poly<F>) -> Option<Place> {
         k.clone(),
         f.coeffs()
             .iter()
-            .map(|c| conj(k, c))
+            .map(|c| k.conj(c))
             .collect::<Option<Vec<_>>>()?,
     );
     let f = if fbar == *f { f.clone() } else { f.mul(&fbar) };
