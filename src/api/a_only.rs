@@ -206,6 +206,7 @@ pub(super) fn descriptor_jordan_path(
             self,
             _: &crate::io::load_descriptor::LoadedDescriptor,
             s: &crate::system::Descriptor<K>,
+            _: Option<&crate::io::load_descriptor::GivenTransfer<K>>,
         ) -> Self::Output {
             descriptor_jordan(self.0, s, self.1)
         }

@@ -4,8 +4,10 @@
 
 use super::common::with_path;
 use super::{Command, Failure, Outcome};
-use crate::field::{Field, Q, QuadraticField};
-use crate::io::load_descriptor::{DescriptorVisitor, LoadedDescriptor, load_descriptor_path};
+use crate::field::Field;
+use crate::io::load_descriptor::{
+    DescriptorVisitor, GivenTransfer, LoadedDescriptor, load_descriptor_path,
+};
 use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::matrix::Matrix;
 use crate::pencil::{kronecker_structure, pencil_structure};
@@ -17,7 +19,6 @@ use crate::report::sections;
 use crate::structure::descriptor_zeros::descriptor_zeros;
 use crate::system::discrete::stability::Domain;
 use crate::system::{Descriptor, StateSpace};
-use std::any::Any;
 use std::path::Path;
 
 /// Whether a command goes through this module (`zeros` only for systems with `E` or `G`,
@@ -125,11 +126,6 @@ pub fn execute(cmd: &Command, path: &Path) -> Result<Outcome, Failure> {
     l.run(Run { cmd, path })
 }
 
-type GivenTransfer = (
-    crate::system::transfer::TransferMatrix<Q>,
-    crate::realization::TransferRealization<Q>,
-);
-
 struct Run<'a> {
     cmd: &'a Command,
     path: &'a Path,
@@ -137,14 +133,13 @@ struct Run<'a> {
 
 impl DescriptorVisitor for Run<'_> {
     type Output = Result<Outcome, Failure>;
-    fn visit<K: GroundField>(self, l: &LoadedDescriptor, s: &Descriptor<K>) -> Self::Output {
-        run_on(
-            self.cmd,
-            self.path,
-            (l.has_e, &l.signals),
-            l.transfer.as_ref(),
-            s,
-        )
+    fn visit<K: GroundField>(
+        self,
+        l: &LoadedDescriptor,
+        s: &Descriptor<K>,
+        transfer: Option<&GivenTransfer<K>>,
+    ) -> Self::Output {
+        run_on(self.cmd, self.path, (l.has_e, &l.signals), transfer, s)
     }
 }
 
@@ -154,7 +149,7 @@ fn run_on<K: GroundField>(
     cmd: &Command,
     path: &Path,
     (has_e, signals): (bool, &crate::io::SignalNames),
-    transfer: Option<&GivenTransfer>,
+    transfer: Option<&GivenTransfer<K>>,
     s: &Descriptor<K>,
 ) -> Result<Outcome, Failure> {
     {
@@ -205,69 +200,37 @@ fn run_on<K: GroundField>(
                 ))
             }
             Command::Tf { .. } => {
-                if let Some(sk) = (s as &dyn Any).downcast_ref::<Descriptor<QuadraticField>>() {
-                    // exact over Q(i) / Q(sqrt d); a state-space input is also checked by
-                    // its Markov parameters
-                    let (g, r, ss) = if has_e {
-                        let g = descriptor_transfer_matrix(sk).map_err(e)?;
-                        let r = realize_g(sk, &g).map_err(e)?;
-                        (g, sections::TfRealization::from_transfer(&r), None)
-                    } else {
-                        let ss =
-                            StateSpace::new(sk.a.clone(), sk.b.clone(), sk.c.clone(), sk.d.clone())
-                                .map_err(e)?;
-                        let g = ss.transfer_matrix().map_err(e)?;
-                        let m = crate::realization::minimal_kalman(&ss).map_err(e)?;
-                        // the minimal realization has the input's transfer matrix: checked
-                        // by the Markov parameters of both against g (in the report)
-                        let ok = m.verified && g.matches_markov(&m.system);
-                        let r =
-                            sections::TfRealization::from_state_space(&m.system, ok).map_err(e)?;
-                        (g, r, Some(ss))
-                    };
-                    let rep =
-                        sections::tf_report_quadratic(&g, &r, ss.as_ref(), domain).map_err(e)?;
-                    let rep = with_dt(rep, signals);
-                    let ok = matches!(rep.get("verified"), Some(crate::report::Value::Bool(true)));
-                    return Ok(Outcome::new(rep, ok));
-                }
-                let Some(sq) = K::rational_descriptor(s) else {
-                    return Err(Failure::unsupported(format!(
-                        "{}: tf: only rational and quadratic-field systems are supported",
-                        path.display()
-                    )));
-                };
+                // a state-space input: its own (Kalman) minimal realization, and G checked
+                // against its Markov parameters; a descriptor: G realized entry by entry
                 let mut markov = None;
                 let (g, r) = match transfer {
                     Some((g, r)) => (g.clone(), r.clone()),
                     None if !has_e => {
-                        // a state-space input: its own minimal realization, and G checked
-                        // against its Markov parameters (as over Q(i) / Q(sqrt d))
                         let ss =
-                            StateSpace::new(sq.a.clone(), sq.b.clone(), sq.c.clone(), sq.d.clone())
+                            StateSpace::new(s.a.clone(), s.b.clone(), s.c.clone(), s.d.clone())
                                 .map_err(e)?;
-                        let g = descriptor_transfer_matrix(sq).map_err(e)?;
+                        let g = ss.transfer_matrix().map_err(e)?;
                         let r = realize_state_space(&ss, &g).map_err(e)?;
                         markov = Some(g.matches_markov(&ss));
                         (g, r)
                     }
                     None => {
-                        let g = descriptor_transfer_matrix(sq).map_err(e)?;
-                        let r = realize_g(sq, &g).map_err(e)?;
+                        let g = descriptor_transfer_matrix(s).map_err(e)?;
+                        let r = realize_g(s, &g).map_err(e)?;
                         (g, r)
                     }
                 };
-                let mut rep = with_dt(sections::tf_report(&g, &r, domain).map_err(e)?, signals);
-                if let Some(mv) = markov {
-                    rep.push("markov_verified", crate::report::Value::Bool(mv));
-                }
+                let mut rep = with_dt(
+                    sections::tf_report(&g, &r, markov, domain).map_err(e)?,
+                    signals,
+                );
                 channel_names(
                     &mut rep,
                     signals,
                     g.entries.len(),
                     g.entries.first().map_or(0, Vec::len),
                 );
-                let ok = r.verified;
+                let ok = matches!(rep.get("verified"), Some(crate::report::Value::Bool(true)));
                 Ok(Outcome::new(rep, ok))
             }
             _ => Err(Failure::verification(

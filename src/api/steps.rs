@@ -494,6 +494,7 @@ fn descriptor_file(file: &Path, out: &Render) -> Option<Result<Outcome, Failure>
             self,
             _: &crate::io::load_descriptor::LoadedDescriptor,
             s: &Descriptor<K>,
+            _: Option<&crate::io::load_descriptor::GivenTransfer<K>>,
         ) -> Self::Output {
             let e = |err| super::common::with_path(self.0, err);
             // a fresh field (over Q(p): its conditions are the ones this derivation assumes)

@@ -34,7 +34,7 @@ pub struct LoadedDescriptor {
     /// Whether the file gave `E` (a descriptor system) rather than $E = I$.
     pub has_e: bool,
     /// The transfer matrix and its minimal realization, for a `G` file.
-    pub transfer: Option<(TransferMatrix<Q>, TransferRealization<Q>)>,
+    pub transfer: Option<GivenTransfer<Q>>,
     /// A rectangular pencil `(A, E)` (a file with only `A`, `E` and a non-square `A`, over
     /// $\mathbb{Q}$): only `pencil` accepts it; `system` is then empty.
     pub pencil: Option<(Matrix<Q>, Matrix<Q>)>,
@@ -42,21 +42,27 @@ pub struct LoadedDescriptor {
     pub signals: super::SignalNames,
 }
 
-/// Work on a loaded descriptor system, generic over the field.
+/// A file's transfer matrix `G` and its minimal realization (over the file's field).
+pub type GivenTransfer<K> = (TransferMatrix<K>, TransferRealization<K>);
+
+/// Work on a loaded descriptor system, generic over the field; `transfer`: the file's `G`
+/// and its realization, typed over the system's field (a `G` file is read over
+/// $\mathbb{Q}$).
 pub trait DescriptorVisitor {
     type Output;
     fn visit<K: super::GroundField>(
         self,
         loaded: &LoadedDescriptor,
         sys: &Descriptor<K>,
+        transfer: Option<&GivenTransfer<K>>,
     ) -> Self::Output;
 }
 
 impl LoadedDescriptor {
     pub fn run<V: DescriptorVisitor>(&self, v: V) -> V::Output {
         match &self.system {
-            DescriptorAny::Rational(s) => v.visit(self, s),
-            DescriptorAny::Quadratic(s) => v.visit(self, s),
+            DescriptorAny::Rational(s) => v.visit(self, s, self.transfer.as_ref()),
+            DescriptorAny::Quadratic(s) => v.visit(self, s, None),
         }
     }
 }

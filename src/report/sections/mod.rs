@@ -20,7 +20,7 @@ mod pencil;
 mod realization;
 pub mod response;
 mod structure;
-mod tf_field;
+mod tf;
 mod toolbox;
 
 pub use algebraic::{factor_report, roots_report};
@@ -32,10 +32,10 @@ pub use jordan::{conditions_qp, eigenvalue_text, eigenvalue_value_text, qp_var_n
 pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,
-    kronecker_report, minreal_descriptor_report, pencil_report, tf_report,
+    kronecker_report, minreal_descriptor_report, pencil_report,
 };
 pub use structure::{branch_equation, branch_reason};
-pub use tf_field::{TfRealization, tf_report_quadratic};
+pub use tf::{factor_items, tf_report, zpk_string};
 pub use toolbox::{
     damp_report, gram_report, margins_report, no_stepinfo_reason, stepinfo_channel, stepinfo_table,
 };

@@ -9,9 +9,7 @@ use crate::jordan::{JordanForm, jordan_over};
 use crate::matrix::Matrix;
 use crate::pencil::{KroneckerStructure, PencilStructure};
 use crate::poly::Poly;
-use crate::realization::{
-    ControllabilityStructure, DescriptorControllability, DescriptorMinimal, TransferRealization,
-};
+use crate::realization::{ControllabilityStructure, DescriptorControllability, DescriptorMinimal};
 use crate::report::{Report, Value};
 use crate::structure::descriptor_zeros::DescriptorZeros;
 use crate::system::discrete::stability::Domain;
@@ -293,27 +291,6 @@ pub(super) fn transfer_lists<K: Field>(
     Ok((tm, zpk))
 }
 
-/// Zero-pole-gain display of one rational function over Q in the variable `var`:
-/// `k (factors) / (factors)` with the monic irreducible factors over Q, assembled by
-/// [`zpk_text`].
-fn zpk_string(num: &Poly<Q>, den: &Poly<Q>, var: &str) -> Result<String> {
-    if num.is_zero() {
-        return Ok("0".into());
-    }
-    let gain = crate::report::display::fmt_rational(&(num.lc() / den.lc()));
-    let factors = |p: &Poly<Q>| -> Result<Vec<(String, usize)>> {
-        if p.deg() == 0 {
-            return Ok(Vec::new());
-        }
-        let (_, fs) = crate::algebraic::factor_q(p)?;
-        Ok(fs
-            .iter()
-            .map(|(f, e)| (f.monic().to_string_var(var), *e))
-            .collect())
-    };
-    Ok(zpk_text(&gain, &factors(num)?, &factors(den)?))
-}
-
 /// One line of zero-pole-gain text that reads one way only: the gain (in parentheses when it
 /// is a fraction or a sum and factors follow), the numerator factors, and `/` followed by the
 /// denominator in parentheses when it has more than one factor: `(-1/1500) / (s (s + 8/3))`,
@@ -347,38 +324,6 @@ pub(super) fn zpk_text(gain: &str, num: &[(String, usize)], den: &[(String, usiz
         };
     }
     s
-}
-
-/// `tf` over Q: transfer matrix in lowest terms, McMillan degree, poles, transmission zeros,
-/// zero-pole-gain display, in the variable of `domain` (`s`, or `z` in discrete time).
-///
-/// # Errors
-/// From factorization and root isolation.
-pub fn tf_report(
-    g: &TransferMatrix<Q>,
-    r: &TransferRealization<Q>,
-    domain: Domain,
-) -> Result<Report> {
-    let sys = &r.minimal.system;
-    let nf = r.minimal.finite_order;
-    // finite poles: eigenvalues of the finite block of the minimal realization (E = diag(I, N))
-    let a_f = sys.a.submatrix(0, nf, 0, nf);
-    let poles = eigen_items_of(&a_f)?.unwrap_or_default();
-    let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
-    let zero_poly = zeros.polynomial.clone();
-    let (tm, zpk) = transfer_lists(g, domain.var(), zpk_string)?;
-    Ok(Report::titled("transfer matrix")
-        .with("variable", super::variable(domain))
-        .list("transfer_matrix", tm)
-        .list("zpk", zpk)
-        .int("mcmillan_degree", r.mcmillan_degree)
-        .int("infinite_pole_degree", r.mcmillan_degree - nf)
-        .list("poles", poles)
-        .list("transmission_zeros", root_items(&zero_poly)?)
-        .with("infinite_zero_orders", ints(&zeros.infinite_zero_orders))
-        .int("normal_rank", zeros.pencil.normal_rank - sys.nstates())
-        .int("order", r.minimal.order)
-        .bool("verified", r.verified && zeros.pencil.verified))
 }
 
 #[cfg(test)]

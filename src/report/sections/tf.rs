@@ -1,0 +1,168 @@
+//! `tf`: one report for every numeric ground field ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
+//! $\mathbb{Q}(i)$), written once over [`GroundField`]: the transfer matrix in lowest terms,
+//! its zero-pole-gain display, the McMillan degree, and the poles and transmission zeros as
+//! the irreducible factors over the field of the pole and zero polynomials
+//! ([`crate::jordan::EigenField::eigen_factors`]: each factor with the minimal polynomial over $\mathbb{Q}$
+//! of its roots and their certified values). Over $\mathbb{Q}(p)$ the command goes through
+//! the symbolic front end (its conditions); this report refuses it.
+//!
+//! # Verification
+//! `verified` is the conjunction of: the minimal realization's checks
+//! ([`TransferRealization::verified`]), the zero pencil's checks, the product of the pole
+//! (zero) factors equals the pole (zero) polynomial (the pole polynomial is the
+//! characteristic polynomial of the minimal realization's finite block), and, for a
+//! state-space input, `markov` (the Markov parameters of the transfer matrix equal
+//! $D, CB, CAB, \dots$ of the input system).
+
+use crate::error::{Error, Result};
+use crate::field::Field;
+use crate::io::{GroundField, NumericField};
+use crate::poly::Poly;
+use crate::realization::TransferRealization;
+use crate::report::{Report, Value};
+use crate::system::discrete::stability::Domain;
+use crate::system::transfer::TransferMatrix;
+
+fn approx(a: (f64, f64)) -> Value {
+    Value::List(vec![Value::Float(a.0), Value::Float(a.1)])
+}
+
+/// One report item per irreducible factor $f$ over the field of `p`: `factor` (monic, in
+/// `var`), `degree`, `minpoly` (over $\mathbb{Q}$, of the factor's roots), `value` and
+/// `approx` (the exact root of a linear factor; `a root of f` otherwise, with `roots`: each
+/// certified root as `{value, approx}`), `algebraic_multiplicity`. Returns the items and
+/// whether the product of the factors is `p` up to its leading coefficient.
+///
+/// # Errors
+/// From the factorization and root isolation.
+pub fn factor_items<F: NumericField>(p: &Poly<F>, var: &str) -> Result<(Vec<Value>, bool)> {
+    if p.is_zero() || p.deg() == 0 {
+        return Ok((vec![], true));
+    }
+    let k = p.field().clone();
+    let monic = p.monic();
+    let mut prod = Poly::new(k.clone(), vec![p.lc()]);
+    let mut items = vec![];
+    for (f, e, minpoly, roots) in F::eigen_factors(&monic)? {
+        for _ in 0..e {
+            prod = prod.mul(&f);
+        }
+        let mut r = Report::new()
+            .str("factor", f.to_string_var(var))
+            .int("degree", f.deg())
+            .str("minpoly", minpoly.to_string());
+        if f.deg() == 1 {
+            let root = k.neg(
+                &k.div(&f.coeff(0), &f.coeff(1))
+                    .ok_or(Error::DivisionByZero)?,
+            );
+            let a = roots.first().map_or((f64::NAN, f64::NAN), |z| z.1);
+            r = r.str("value", k.fmt_elem(&root)).with("approx", approx(a));
+        } else {
+            r = r
+                .str("value", format!("a root of {}", f.to_string_var(var)))
+                .list(
+                    "roots",
+                    roots
+                        .iter()
+                        .map(|(z, a)| {
+                            Value::Obj(
+                                Report::new()
+                                    .str("value", z.value_string())
+                                    .with("approx", approx(*a)),
+                            )
+                        })
+                        .collect(),
+                );
+        }
+        items.push(Value::Obj(r.int("algebraic_multiplicity", e)));
+    }
+    Ok((items, prod == *p))
+}
+
+/// Zero-pole-gain display of one rational function over the field in the variable `var`:
+/// `k (factors) / (factors)` with the monic irreducible factors over the field
+/// ([`GroundField::factors`]), assembled by [`super::pencil::zpk_text`]; a field that does
+/// not factor keeps the polynomials whole.
+///
+/// # Errors
+/// From the factorization.
+pub fn zpk_string<K: GroundField>(num: &Poly<K>, den: &Poly<K>, var: &str) -> Result<String> {
+    if num.is_zero() {
+        return Ok("0".into());
+    }
+    let k = num.field().clone();
+    let gain = k.fmt_elem(&k.div(&num.lc(), &den.lc()).ok_or(Error::DivisionByZero)?);
+    let factors = |p: &Poly<K>| -> Result<Vec<(String, usize)>> {
+        if p.deg() == 0 {
+            return Ok(Vec::new());
+        }
+        Ok(match K::factors(p) {
+            Some(fs) => fs?
+                .iter()
+                .map(|(f, e)| (f.monic().to_string_var(var), *e))
+                .collect(),
+            None => vec![(p.monic().to_string_var(var), 1)],
+        })
+    };
+    Ok(super::pencil::zpk_text(
+        &gain,
+        &factors(num)?,
+        &factors(den)?,
+    ))
+}
+
+/// `tf` over a numeric ground field, in the variable of `domain`: `field`, `variable`,
+/// `transfer_matrix`, `zpk`, `mcmillan_degree`, `infinite_pole_degree`, `pole_polynomial`,
+/// `poles` and `transmission_zeros` ([`factor_items`]), `infinite_zero_orders`,
+/// `normal_rank`, `order`, `markov_verified` (when `markov` is given: the input was a
+/// state-space system whose Markov parameters were compared with `g`'s) and `verified`
+/// (module docs).
+///
+/// # Errors
+/// `Unsupported` over $\mathbb{Q}(p)$; from the factorizations and the zero pencil.
+pub fn tf_report<K: GroundField>(
+    g: &TransferMatrix<K>,
+    r: &TransferRealization<K>,
+    markov: Option<bool>,
+    domain: Domain,
+) -> Result<Report> {
+    let Some(sys) = K::numeric_descriptor(&r.minimal.system) else {
+        return Err(Error::Unsupported(
+            "tf over Q(p) is reported by the symbolic front end".into(),
+        ));
+    };
+    let var = domain.var();
+    let k = g_field(r);
+    let nf = r.minimal.finite_order;
+    let pole_poly = sys.a.submatrix(0, nf, 0, nf).charpoly()?;
+    let (poles, poles_ok) = factor_items(&pole_poly, var)?;
+    let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
+    let (tzeros, zeros_ok) = factor_items(&zeros.polynomial, var)?;
+    let (tm, zpk) = super::pencil::transfer_lists(g, var, zpk_string::<K>)?;
+    let ints = |v: &[usize]| Value::List(v.iter().map(|&x| Value::Int(x as i64)).collect());
+    let mut rep = Report::titled("transfer matrix")
+        .str("field", k.to_string())
+        .with("variable", super::variable(domain))
+        .list("transfer_matrix", tm)
+        .list("zpk", zpk)
+        .int("mcmillan_degree", r.mcmillan_degree)
+        .int("infinite_pole_degree", r.mcmillan_degree - nf)
+        .str("pole_polynomial", pole_poly.to_string_var(var))
+        .list("poles", poles)
+        .list("transmission_zeros", tzeros)
+        .with("infinite_zero_orders", ints(&zeros.infinite_zero_orders))
+        .int("normal_rank", zeros.pencil.normal_rank - sys.nstates())
+        .int("order", r.minimal.order);
+    if let Some(m) = markov {
+        rep = rep.bool("markov_verified", m);
+    }
+    Ok(rep.bool(
+        "verified",
+        r.verified && zeros.pencil.verified && poles_ok && zeros_ok && markov.unwrap_or(true),
+    ))
+}
+
+fn g_field<K: Field>(r: &TransferRealization<K>) -> K {
+    r.minimal.system.a.field().clone()
+}
