@@ -21,8 +21,9 @@ use exactlti::field::{Quadratic, QuadraticField, Rational};
 use exactlti::jordan::jordan_over as jordan_over_k;
 use exactlti::matrix::Matrix;
 use exactlti::qkernels::modular::quadratic::{charpoly_quadratic, det_quadratic};
-use exactlti::realization::{minimal_jordan, minimal_kalman};
-use exactlti::report::sections::{TfRealization, tf_report_quadratic};
+use exactlti::realization::minimal_jordan;
+use exactlti::realization::realize_state_space;
+use exactlti::report::sections::tf_report;
 use exactlti::system::StateSpace;
 use exactlti::system::discrete::stability::Domain;
 use std::time::Instant;
@@ -129,14 +130,14 @@ fn main() {
         let s = system(8, 2, 0x2545_F491_4F6C_DD1D);
         time("tf 8-state 2x2 QQ(i)", 3, || {
             let g = s.transfer_matrix().expect("transfer matrix");
-            let m = minimal_kalman(&s).expect("kalman");
-            let ok = m.verified && g.matches_markov(&m.system);
-            let r = TfRealization::from_state_space(&m.system, ok).expect("realization");
-            let rep = tf_report_quadratic(&g, &r, Some(&s), Domain::Continuous).expect("report");
-            ok && matches!(
-                rep.get("verified"),
-                Some(exactlti::report::Value::Bool(true))
-            )
+            let r = realize_state_space(&s, &g).expect("realization");
+            let markov = Some(g.matches_markov(&s));
+            let rep = tf_report(&g, &r, markov, Domain::Continuous).expect("report");
+            r.verified
+                && matches!(
+                    rep.get("verified"),
+                    Some(exactlti::report::Value::Bool(true))
+                )
         });
     }
 }
