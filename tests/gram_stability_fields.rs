@@ -202,10 +202,21 @@ crate::for_each_number_field!(check_stability, 2311, 30; stability_over_q,
 
 #[test]
 fn stability_over_q_p_refused() {
-    // Q(p) does not factor nor decide signs: the api refuses (on the CLI below)
+    // Q(p) factors (x^2 - p^2 = (x - p)(x + p)) but decides no sign of a root: the api
+    // refuses stability over Q(p) (on the CLI below), not for want of factors
     let k = exactlti::ratfunc::RatFuncField::new(&["p"]).unwrap();
-    let x = exactlti::poly::Poly::x(k);
-    assert!(<exactlti::ratfunc::RatFuncField as GroundField>::factors(&x).is_none());
+    let x = exactlti::poly::Poly::x(k.clone());
+    let p2 = exactlti::poly::Poly::constant(k.clone(), k.mul(&k.var(0), &k.var(0)));
+    let f = x.mul(&x).sub(&p2);
+    let fs = <exactlti::ratfunc::RatFuncField as GroundField>::factors(&f)
+        .expect("Q(p) factors")
+        .unwrap();
+    assert_eq!(fs.len(), 2);
+    assert!(fs.iter().all(|(g, e)| g.deg() == 1 && *e == 1));
+    let prod = fs
+        .iter()
+        .fold(exactlti::poly::Poly::one(k), |acc, (g, _)| acc.mul(g));
+    assert_eq!(prod, f);
 }
 
 /// Over Q the generic test is the Q test (the same factors, places and verdict).

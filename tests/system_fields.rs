@@ -8,6 +8,9 @@
 //!   $x_{c\bar o}$ (mode $\lambda_o$), $x_{\bar c o}$ ($\lambda_u$), $x_{\bar c\bar o}$
 //!   ($\lambda_{uo}$), each 0 or 1 states, random couplings where the Kalman form allows them;
 //! * tf: $G(s) = C(sI - A)^{-1}B + D = (n + D d)/d$ exactly, and its Markov parameters;
+//!   the `tf` report (`report::sections::tf_report`, one for every field): verified, McMillan
+//!   degree $\deg d$, pole polynomial $d$, the poles exactly the chosen roots of $d$ with
+//!   their multiplicities, the transmission zeros' degrees summing to $\deg(n + Dd)$;
 //! * minreal (Kalman, Rosenbrock, Ho-Kalman, Jordan method): order $= \deg d$ = McMillan
 //!   degree, Markov parameters and $D$ equal, transfer matrix unchanged, all through the one
 //!   entry point `minimal` (the Jordan method's own result kept and verified);
@@ -37,17 +40,21 @@
 use crate::common::{Rng, elem};
 use exactlti::error::Error;
 use exactlti::field::Field;
+use exactlti::io::GroundField;
 use exactlti::matrix::Matrix;
 use exactlti::pencil::{kronecker_structure, pencil_structure};
 use exactlti::poly::Poly;
 use exactlti::realization::{
     JordanMethod, MinrealMethod, SystemField, controllability_matrix, controllability_structure,
     descriptor_to_standard, kalman_decomposition, mcmillan_degree, minimal, observability_matrix,
-    observability_structure, pbh_controllable, pbh_observable,
+    observability_structure, pbh_controllable, pbh_observable, realize_state_space,
 };
+use exactlti::report::Value;
+use exactlti::report::sections::tf_report;
 use exactlti::structure::mechanical::mechanical_normal_form;
 use exactlti::structure::scb::scb;
 use exactlti::structure::zeros::{invariant_zeros, invariant_zeros_smith};
+use exactlti::system::discrete::stability::Domain;
 use exactlti::system::transfer::RationalFunction;
 use exactlti::system::{Descriptor, StateSpace};
 
@@ -64,6 +71,8 @@ struct Planted<F: Field> {
     hidden: Poly<F>,
     /// $(n_{co}, n_{c\bar o}, n_{\bar co}, n_{\bar c\bar o})$.
     dims: [usize; 4],
+    /// The roots of $d$, repeated by multiplicity.
+    roots: Vec<F::Elem>,
 }
 
 fn nonzero<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) -> F::Elem {
@@ -128,11 +137,16 @@ fn controller_form<F: Field>(num: &Poly<F>, den: &Poly<F>) -> [Matrix<F>; 3] {
 
 /// `den` (1..=3 chosen poles), `num` (a non-zero constant times fewer chosen zeros, none a
 /// pole).
-fn planted_tf<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) -> (Poly<F>, Poly<F>) {
+fn planted_tf<F: Field>(
+    k: &F,
+    g: &Option<F::Elem>,
+    rng: &mut Rng,
+) -> (Poly<F>, Poly<F>, Vec<F::Elem>) {
     let n1 = rng.int(1, 3) as usize;
-    let den = (0..n1).fold(Poly::one(k.clone()), |acc, _| {
-        acc.mul(&linear(k, &elem(k, g, rng)))
-    });
+    let roots: Vec<F::Elem> = (0..n1).map(|_| elem(k, g, rng)).collect();
+    let den = roots
+        .iter()
+        .fold(Poly::one(k.clone()), |acc, z| acc.mul(&linear(k, z)));
     let nz = rng.int(0, n1 as i64 - 1) as usize;
     let mut num = Poly::constant(k.clone(), nonzero(k, g, rng));
     while num.deg() < nz {
@@ -141,14 +155,14 @@ fn planted_tf<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) -> (Poly<F>, 
             num = num.mul(&linear(k, &z));
         }
     }
-    (num, den)
+    (num, den, roots)
 }
 
 /// The Kalman canonical structure of the module docs, scrambled by [`scramble`]; drawn
 /// again when a random coupling happens to break the planted (un)controllability.
 fn planted<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) -> Planted<F> {
     loop {
-        let (num, den) = planted_tf(k, g, rng);
+        let (num, den, roots) = planted_tf(k, g, rng);
         let dims = [den.deg(), rng.int(0, 1) as usize, rng.int(0, 1) as usize, {
             rng.int(0, 1) as usize
         }];
@@ -212,6 +226,7 @@ fn planted<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) -> Planted<F> {
             unobs,
             hidden: all,
             dims,
+            roots,
         };
     }
 }
@@ -253,6 +268,68 @@ fn check_tf<F: Field>(p: &Planted<F>) {
     );
     assert!(g.matches_markov(&p.sys));
     assert_eq!(p.sys.a.charpoly().unwrap(), p.den.mul(&p.hidden), "chi_A");
+}
+
+/// The `tf` report over the field: verified (Markov parameters too), McMillan degree and
+/// order $\deg d$, pole polynomial $d$, the poles' values exactly the planted roots of $d$
+/// (each linear over the field) with their multiplicities, the transmission zeros' degrees
+/// times multiplicities summing to $\deg(n + Dd)$.
+fn check_tf_report<F: GroundField>(p: &Planted<F>) {
+    let k = p.sys.a.field().clone();
+    let g = p.sys.transfer_matrix().unwrap();
+    let r = realize_state_space(&p.sys, &g).unwrap();
+    let rep = tf_report(&g, &r, Some(g.matches_markov(&p.sys)), Domain::Continuous).unwrap();
+    let get = |key: &str| rep.get(key).unwrap_or_else(|| panic!("no {key}: {rep:?}"));
+    assert!(matches!(get("verified"), Value::Bool(true)), "{rep:?}");
+    assert!(matches!(get("markov_verified"), Value::Bool(true)));
+    let deg = p.den.deg() as i64;
+    assert!(matches!(get("mcmillan_degree"), Value::Int(d) if *d == deg));
+    assert!(matches!(get("order"), Value::Int(d) if *d == deg));
+    assert!(
+        matches!(get("pole_polynomial"), Value::Str(s) if *s == p.den.monic().to_string_var("s"))
+    );
+    let items = |key: &str| -> Vec<(String, i64, i64)> {
+        let Value::List(v) = get(key) else {
+            panic!("{key}: not a list")
+        };
+        v.iter()
+            .map(|x| {
+                let Value::Obj(o) = x else {
+                    panic!("{key}: item")
+                };
+                let s = |k: &str| match o.get(k) {
+                    Some(Value::Str(s)) => s.clone(),
+                    other => panic!("{key}.{k}: {other:?}"),
+                };
+                let i = |k: &str| match o.get(k) {
+                    Some(Value::Int(i)) => *i,
+                    other => panic!("{key}.{k}: {other:?}"),
+                };
+                (s("value"), i("degree"), i("algebraic_multiplicity"))
+            })
+            .collect()
+    };
+    // the planted roots of d, counted, against the report's linear pole factors
+    let mut want: Vec<(String, i64)> = vec![];
+    for z in &p.roots {
+        let v = k.fmt_elem(z);
+        match want.iter_mut().find(|w| w.0 == v) {
+            Some(w) => w.1 += 1,
+            None => want.push((v, 1)),
+        }
+    }
+    let mut got: Vec<(String, i64)> = items("poles")
+        .into_iter()
+        .map(|(v, d, m)| {
+            assert_eq!(d, 1, "every planted pole is in the field: {v}");
+            (v, m)
+        })
+        .collect();
+    want.sort();
+    got.sort();
+    assert_eq!(got, want, "poles");
+    let zdeg: i64 = items("transmission_zeros").iter().map(|x| x.1 * x.2).sum();
+    assert_eq!(zdeg, p.total_num().deg() as i64, "transmission zeros");
 }
 
 /// minreal by every method: order = McMillan degree = deg d, Markov parameters, D and the
@@ -521,7 +598,7 @@ fn check_descriptor<F: SystemField>(p: &Planted<F>, g: &Option<F::Elem>, rng: &m
 
 /// mnf: a controllable single-input system of even order has the form; odd order has none.
 fn check_mnf<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) {
-    let (num, den) = planted_tf(k, g, rng);
+    let (num, den, _) = planted_tf(k, g, rng);
     let [a, b, c] = controller_form(&num, &den);
     let n = den.deg();
     let d = Matrix::zeros(k.clone(), 1, 1);
@@ -560,11 +637,12 @@ fn check_mnf<F: Field>(k: &F, g: &Option<F::Elem>, rng: &mut Rng) {
 }
 
 /// Every operation on `cases` planted systems over `k` (generator `g`).
-fn check_systems<F: SystemField>(k: &F, g: &Option<F::Elem>, seed: u64, cases: usize) {
+fn check_systems<F: GroundField>(k: &F, g: &Option<F::Elem>, seed: u64, cases: usize) {
     let mut rng = Rng(seed);
     for _ in 0..cases {
         let p = planted(k, g, &mut rng);
         check_tf(&p);
+        check_tf_report(&p);
         check_minreal(&p);
         check_pbh(&p);
         check_kalman(&p);

@@ -37,12 +37,16 @@ pub(super) fn stability_over<K: GroundField>(
     a: &crate::matrix::Matrix<K>,
     domain: crate::system::discrete::stability::Domain,
 ) -> crate::Result<crate::system::discrete::stability::Stability<K>> {
+    let undecided = || {
+        crate::Error::Unsupported(format!(
+            "stability is decided exactly over Q, Q(sqrt d), Q(i); this system is over {} (give every symbol a value with --at)",
+            a.field()
+        ))
+    };
+    if a.field().symbolic().is_some() {
+        return Err(undecided());
+    }
     crate::system::discrete::stability::stability_with(a, domain, |chi| {
-        K::factors(chi).unwrap_or_else(|| {
-            Err(crate::Error::Unsupported(format!(
-                "stability is decided exactly over Q, Q(sqrt d), Q(i); this system is over {} (give every symbol a value with --at)",
-                a.field()
-            )))
-        })
+        K::factors(chi).unwrap_or_else(|| Err(undecided()))
     })
 }

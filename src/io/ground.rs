@@ -42,14 +42,17 @@ pub trait GroundField: SystemField {
     fn numeric_descriptor(d: &Descriptor<Self>) -> Option<&Descriptor<Self::Numeric>>;
     /// The matrix over its numeric field (`None` over $\mathbb{Q}(p)$).
     fn numeric_matrix(a: &Matrix<Self>) -> Option<&Matrix<Self::Numeric>>;
+    /// The polynomial over its numeric field (`None` over $\mathbb{Q}(p)$).
+    fn numeric_poly(p: &Poly<Self>) -> Option<&Poly<Self::Numeric>>;
     /// The system over $\mathbb{Q}$ when the field is $\mathbb{Q}$.
     fn rational(t: &TypedSystem<Self>) -> Option<&TypedSystem<Q>>;
     /// The descriptor system over $\mathbb{Q}$ when the field is $\mathbb{Q}$.
     fn rational_descriptor(d: &Descriptor<Self>) -> Option<&Descriptor<Q>>;
     /// The monic irreducible factors of `p` over this field with their multiplicities
     /// ($\mathbb{Q}$: [`crate::algebraic::factor_q`]; $\mathbb{Q}(\sqrt d)$, $\mathbb{Q}(i)$:
-    /// [`crate::algebraic::factor_over_quadratic`]); `None` where the crate does not factor
-    /// ($\mathbb{Q}(p)$).
+    /// [`crate::algebraic::factor_over_quadratic`]; $\mathbb{Q}(p)$:
+    /// [`crate::structure::factor_qp::factor_over_qp`]); `None` where the crate does not
+    /// factor.
     fn factors(p: &Poly<Self>) -> Option<crate::error::Result<Factors<Self>>> {
         let _ = p;
         None
@@ -97,6 +100,9 @@ impl GroundField for Q {
     fn numeric_matrix(a: &Matrix<Q>) -> Option<&Matrix<Q>> {
         Some(a)
     }
+    fn numeric_poly(p: &Poly<Q>) -> Option<&Poly<Q>> {
+        Some(p)
+    }
     fn rational(t: &TypedSystem<Q>) -> Option<&TypedSystem<Q>> {
         Some(t)
     }
@@ -124,6 +130,9 @@ impl GroundField for QuadraticField {
     }
     fn numeric_matrix(a: &Matrix<Self>) -> Option<&Matrix<Self>> {
         Some(a)
+    }
+    fn numeric_poly(p: &Poly<Self>) -> Option<&Poly<Self>> {
+        Some(p)
     }
     fn rational(_: &TypedSystem<Self>) -> Option<&TypedSystem<Q>> {
         None
@@ -167,11 +176,17 @@ impl GroundField for RatFuncField {
     fn numeric_matrix(_: &Matrix<Self>) -> Option<&Matrix<Q>> {
         None
     }
+    fn numeric_poly(_: &Poly<Self>) -> Option<&Poly<Q>> {
+        None
+    }
     fn rational(_: &TypedSystem<Self>) -> Option<&TypedSystem<Q>> {
         None
     }
     fn rational_descriptor(_: &Descriptor<Self>) -> Option<&Descriptor<Q>> {
         None
+    }
+    fn factors(p: &Poly<Self>) -> Option<crate::error::Result<Factors<Self>>> {
+        Some(crate::structure::factor_qp::factor_over_qp(p))
     }
     fn symbolic(&self) -> Option<&RatFuncField> {
         Some(self)

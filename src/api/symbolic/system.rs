@@ -21,6 +21,7 @@ use crate::report::sections::conditions::with_conditions;
 use crate::report::{Report, Value, sections, str_list};
 use crate::structure::factor_qp::{factor_over_qp, hurwitz_over_qp};
 use crate::system::StateSpace;
+use crate::system::discrete::stability::Domain;
 use std::path::Path;
 
 type T = TypedSystem<RatFuncField>;
@@ -117,7 +118,7 @@ pub(in crate::api) fn run(
                 ),
                 None => (s.transfer_matrix().map_err(e)?, vec![]),
             };
-            let (rep, ok, min) = tf(s, &g).map_err(e)?;
+            let (rep, ok, min) = tf(s, &g, Domain::of(f.signals.dt.as_ref())).map_err(e)?;
             items = honest(conditions::mcmillan(&min, s)).map_err(e)?.map(|m| {
                 v.extend(m);
                 v
@@ -213,7 +214,7 @@ fn finish(
         Some(v) => k.explain(v)?,
         None => k.explained()?,
     };
-    let r = exact_only(r).str("field", k.to_string());
+    let r = set_key(exact_only(r), "field", Value::Str(k.to_string()));
     let r = with_conditions(r, k, &conds);
     Ok(Outcome::new(set_key(r, "verified", Value::Bool(ok)), ok))
 }
@@ -328,26 +329,23 @@ pub(in crate::api) fn factors(p: &Poly<RatFuncField>) -> crate::Result<Value> {
     ))
 }
 
-/// `tf` over $\mathbb{Q}(p)$: the transfer matrix in lowest terms, its McMillan degree (the
-/// Kalman minimal order) and the poles' factors; verified: the expansion of every entry at
-/// $s = \infty$ equals $D, CB, CAB, \dots$ ($2n$ terms) of `s`, the system whose transfer
-/// matrix `g` is (with `E`: `g` from the pencil, `s` the standard form).
+/// `tf` over $\mathbb{Q}(p)$: the one `tf` report ([`sections::tf_report`]) of the
+/// minimal realization of `s` (Kalman; with `E`: `s` is the standard form whose transfer
+/// matrix `g` is); verified: the realization's checks and the expansion of every entry at
+/// $s = \infty$ equals $D, CB, CAB, \dots$ ($2n$ terms) of `s` and of the minimal system.
 fn tf(
     s: &StateSpace<RatFuncField>,
     g: &crate::system::transfer::TransferMatrix<RatFuncField>,
+    domain: Domain,
 ) -> crate::Result<(Report, bool, StateSpace<RatFuncField>)> {
-    let (min, ok) = crate::api::transfer::minimal_of_transfer(s, g)?;
-    let poles = min.system.a.charpoly()?;
-    let rep = Report::titled("transfer matrix")
-        .with(
-            "transfer_matrix",
-            Value::List(g.to_strings().into_iter().map(str_list).collect()),
-        )
-        .int("mcmillan_degree", min.order)
-        .str("pole_polynomial", poles.to_string_var("s"))
-        .with("pole_factors", factors(&poles)?)
-        .bool("minimal_realization_verified", min.verified);
-    Ok((rep, ok, min.system))
+    let r = realization::realize_state_space(s, g)?;
+    let markov = g.matches_markov(s);
+    let rep = sections::tf_report(g, &r, Some(markov), domain)?;
+    let ok = matches!(rep.get("verified"), Some(Value::Bool(true)));
+    let min = r.state_space.ok_or_else(|| {
+        crate::Error::Verification("tf: the Kalman realization has no state-space form".into())
+    })?;
+    Ok((rep, ok, min))
 }
 
 /// The command's own condition set, or `None` (the computation's log, each condition labelled

@@ -1,10 +1,10 @@
-//! `tf`: one report for every numeric ground field ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
-//! $\mathbb{Q}(i)$), written once over [`GroundField`]: the transfer matrix in lowest terms,
+//! `tf`: one report for every ground field ($\mathbb{Q}$, $\mathbb{Q}(\sqrt d)$,
+//! $\mathbb{Q}(i)$, $\mathbb{Q}(p)$), written once over [`GroundField`]: the transfer matrix in lowest terms,
 //! its zero-pole-gain display, the McMillan degree, and the poles and transmission zeros as
 //! the irreducible factors over the field of the pole and zero polynomials
 //! ([`crate::jordan::EigenField::eigen_factors`]: each factor with the minimal polynomial over $\mathbb{Q}$
-//! of its roots and their certified values). Over $\mathbb{Q}(p)$ the command goes through
-//! the symbolic front end (its conditions); this report refuses it.
+//! of its roots and their certified values); over $\mathbb{Q}(p)$ the factors over
+//! $\mathbb{Q}(p)$, the roots of linear factors as formulas ([`root_items`]).
 //!
 //! # Verification
 //! `verified` is the conjunction of: the minimal realization's checks
@@ -80,6 +80,53 @@ pub fn factor_items<F: NumericField>(p: &Poly<F>, var: &str) -> Result<(Vec<Valu
     Ok((items, prod == *p))
 }
 
+/// The roots of `p` as report items: over a numeric field [`factor_items`]; over
+/// $\mathbb{Q}(p)$ one item per irreducible factor over the field ([`GroundField::factors`]):
+/// `factor`, `degree`, `value` (the root as a formula for a linear factor, else `a root of
+/// f`) and `algebraic_multiplicity`. Returns the items and whether the product of the
+/// factors is `p` up to its leading coefficient.
+///
+/// # Errors
+/// From the factorization and root isolation.
+pub fn root_items<K: GroundField>(p: &Poly<K>, var: &str) -> Result<(Vec<Value>, bool)> {
+    if let Some(pn) = K::numeric_poly(p) {
+        return factor_items(pn, var);
+    }
+    if p.is_zero() || p.deg() == 0 {
+        return Ok((vec![], true));
+    }
+    let k = p.field().clone();
+    let fs = match K::factors(p) {
+        Some(fs) => fs?,
+        None => vec![(p.monic(), 1)],
+    };
+    let mut prod = Poly::new(k.clone(), vec![p.lc()]);
+    let mut items = vec![];
+    for (f, e) in &fs {
+        for _ in 0..*e {
+            prod = prod.mul(f);
+        }
+        let value = if f.deg() == 1 {
+            k.fmt_elem(
+                &k.neg(
+                    &k.div(&f.coeff(0), &f.coeff(1))
+                        .ok_or(Error::DivisionByZero)?,
+                ),
+            )
+        } else {
+            format!("a root of {}", f.to_string_var(var))
+        };
+        items.push(Value::Obj(
+            Report::new()
+                .str("factor", f.to_string_var(var))
+                .int("degree", f.deg())
+                .str("value", value)
+                .int("algebraic_multiplicity", *e),
+        ));
+    }
+    Ok((items, prod == *p))
+}
+
 /// Zero-pole-gain display of one rational function over the field in the variable `var`:
 /// `k (factors) / (factors)` with the monic irreducible factors over the field
 /// ([`GroundField::factors`]), assembled by [`super::pencil::zpk_text`]; a field that does
@@ -120,25 +167,21 @@ pub fn zpk_string<K: GroundField>(num: &Poly<K>, den: &Poly<K>, var: &str) -> Re
 /// (module docs).
 ///
 /// # Errors
-/// `Unsupported` over $\mathbb{Q}(p)$; from the factorizations and the zero pencil.
+/// From the factorizations and the zero pencil.
 pub fn tf_report<K: GroundField>(
     g: &TransferMatrix<K>,
     r: &TransferRealization<K>,
     markov: Option<bool>,
     domain: Domain,
 ) -> Result<Report> {
-    let Some(sys) = K::numeric_descriptor(&r.minimal.system) else {
-        return Err(Error::Unsupported(
-            "tf over Q(p) is reported by the symbolic front end".into(),
-        ));
-    };
+    let sys = &r.minimal.system;
     let var = domain.var();
     let k = g_field(r);
     let nf = r.minimal.finite_order;
     let pole_poly = sys.a.submatrix(0, nf, 0, nf).charpoly()?;
-    let (poles, poles_ok) = factor_items(&pole_poly, var)?;
+    let (poles, poles_ok) = root_items(&pole_poly, var)?;
     let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
-    let (tzeros, zeros_ok) = factor_items(&zeros.polynomial, var)?;
+    let (tzeros, zeros_ok) = root_items(&zeros.polynomial, var)?;
     let (tm, zpk) = super::pencil::transfer_lists(g, var, zpk_string::<K>)?;
     let ints = |v: &[usize]| Value::List(v.iter().map(|&x| Value::Int(x as i64)).collect());
     let mut rep = Report::titled("transfer matrix")
