@@ -3,7 +3,7 @@
 //! the contract's keys.
 
 use crate::error::Result;
-use crate::field::{Field, Q};
+use crate::field::Field;
 use crate::io::GroundField;
 use crate::jordan::{JordanForm, jordan_over};
 use crate::matrix::Matrix;
@@ -57,26 +57,6 @@ fn eigen_items_of<K: GroundField>(a: &Matrix<K>) -> Result<Option<Vec<Value>>> {
         Some(an) => Ok(Some(eigenvalue_items(&jordan_over(an)?.eigenvalues))),
         None => Ok(None),
     }
-}
-
-/// The roots of a rational polynomial as eigenvalue-like objects with
-/// `algebraic_multiplicity`.
-fn root_items(p: &Poly<Q>) -> Result<Vec<Value>> {
-    if p.deg() == 0 {
-        return Ok(vec![]);
-    }
-    Ok(crate::algebraic::roots(p)?
-        .into_iter()
-        .map(|(z, mult)| {
-            Value::Obj(
-                Report::new()
-                    .str("minpoly", z.minpoly().to_string())
-                    .str("value", z.value_string())
-                    .with("approx", approx(z.approx()))
-                    .int("algebraic_multiplicity", mult),
-            )
-        })
-        .collect())
 }
 
 fn kronecker_items<K: Field>(r: Report, k: &KroneckerStructure<K>) -> Report {
@@ -238,28 +218,25 @@ pub fn minreal_descriptor_report<K: Field>(m: &DescriptorMinimal<K>) -> Report {
         .bool("verified", m.verified)
 }
 
-/// `zeros` of a descriptor system (polynomials in the variable of `domain`).
+/// `zeros` of a descriptor system (polynomials in the variable of `domain`; the zeros as the
+/// irreducible factors over the field, [`super::tf::root_items`]).
 ///
 /// # Errors
 /// From root isolation.
-pub fn descriptor_zeros_report<K: Field>(z: &DescriptorZeros<K>, domain: Domain) -> Result<Report> {
+pub fn descriptor_zeros_report<K: GroundField>(
+    z: &DescriptorZeros<K>,
+    domain: Domain,
+) -> Result<Report> {
     let k = &z.pencil;
-    let mut r = Report::titled("zeros of the descriptor system");
-    r = match z.polynomial.to_rational_poly() {
-        Some(zq) => r.list("invariant_zeros", root_items(&zq)?),
-        None => r.list(
-            "invariant_zeros",
-            super::structure::zero_items_in(&z.polynomial, domain.var()),
-        ),
-    };
-    Ok(
-        r.str("zero_polynomial", z.polynomial.to_string_var(domain.var()))
-            .with("infinite_zero_orders", ints(&z.infinite_zero_orders))
-            .int("normal_rank", k.normal_rank)
-            .with("right_kronecker_indices", ints(&k.right_indices))
-            .with("left_kronecker_indices", ints(&k.left_indices))
-            .bool("verified", k.verified),
-    )
+    let (items, _) = super::tf::root_items(&z.polynomial, domain.var())?;
+    Ok(Report::titled("zeros of the descriptor system")
+        .list("invariant_zeros", items)
+        .str("zero_polynomial", z.polynomial.to_string_var(domain.var()))
+        .with("infinite_zero_orders", ints(&z.infinite_zero_orders))
+        .int("normal_rank", k.normal_rank)
+        .with("right_kronecker_indices", ints(&k.right_indices))
+        .with("left_kronecker_indices", ints(&k.left_indices))
+        .bool("verified", k.verified))
 }
 
 /// The `transfer_matrix` and `zpk` lists of a `tf` report (rows of entries) in the
