@@ -10,7 +10,7 @@ use crate::io::load_descriptor::{
 };
 use crate::io::{GroundField, SystemFile, TypedSystem};
 use crate::matrix::Matrix;
-use crate::pencil::{kronecker_structure, pencil_structure};
+use crate::pencil::pencil_structure;
 use crate::realization::{
     controllability_structure, descriptor_controllability, descriptor_transfer_matrix,
     minimal_descriptor, observability_structure, realize_state_space, realize_transfer,
@@ -157,13 +157,8 @@ fn run_on<K: GroundField>(
         let domain = Domain::of(signals.dt.as_ref());
         match cmd {
             Command::Pencil { .. } => {
-                if let Some(sq) = K::rational_descriptor(s) {
-                    let ps = pencil_structure(&sq.a, &sq.e).map_err(e)?;
-                    Ok(Outcome::new(sections::pencil_report(&ps), ps.verified))
-                } else {
-                    let k = kronecker_structure(&s.a, &s.e).map_err(e)?;
-                    Ok(Outcome::new(sections::kronecker_report(&k), k.verified))
-                }
+                let ps = pencil_structure(&s.a, &s.e).map_err(e)?;
+                Ok(Outcome::new(sections::pencil_report(&ps), ps.verified))
             }
             Command::Ctrb { .. } | Command::Obsv { .. } => {
                 let dual = matches!(cmd, Command::Obsv { .. });

@@ -13,8 +13,8 @@
 use super::Ground;
 use super::{TypedAny, TypedSystem};
 use crate::field::{Field, Q, Quadratic, QuadraticField, Rational};
-use crate::jordan::EigenField;
 use crate::jordan::derivation::AssumptionLog;
+use crate::jordan::{EigenField, JordanForm};
 use crate::matrix::Matrix;
 use crate::poly::Poly;
 use crate::ratfunc::RatFunc;
@@ -44,6 +44,8 @@ pub trait GroundField: SystemField {
     fn numeric_matrix(a: &Matrix<Self>) -> Option<&Matrix<Self::Numeric>>;
     /// The polynomial over its numeric field (`None` over $\mathbb{Q}(p)$).
     fn numeric_poly(p: &Poly<Self>) -> Option<&Poly<Self::Numeric>>;
+    /// The Jordan form over its numeric field (`None` over $\mathbb{Q}(p)$).
+    fn numeric_jordan(j: &JordanForm<Self>) -> Option<&JordanForm<Self::Numeric>>;
     /// The system over $\mathbb{Q}$ when the field is $\mathbb{Q}$.
     fn rational(t: &TypedSystem<Self>) -> Option<&TypedSystem<Q>>;
     /// The descriptor system over $\mathbb{Q}$ when the field is $\mathbb{Q}$.
@@ -103,6 +105,9 @@ impl GroundField for Q {
     fn numeric_poly(p: &Poly<Q>) -> Option<&Poly<Q>> {
         Some(p)
     }
+    fn numeric_jordan(j: &JordanForm<Q>) -> Option<&JordanForm<Q>> {
+        Some(j)
+    }
     fn rational(t: &TypedSystem<Q>) -> Option<&TypedSystem<Q>> {
         Some(t)
     }
@@ -133,6 +138,9 @@ impl GroundField for QuadraticField {
     }
     fn numeric_poly(p: &Poly<Self>) -> Option<&Poly<Self>> {
         Some(p)
+    }
+    fn numeric_jordan(j: &JordanForm<Self>) -> Option<&JordanForm<Self>> {
+        Some(j)
     }
     fn rational(_: &TypedSystem<Self>) -> Option<&TypedSystem<Q>> {
         None
@@ -177,6 +185,9 @@ impl GroundField for RatFuncField {
         None
     }
     fn numeric_poly(_: &Poly<Self>) -> Option<&Poly<Q>> {
+        None
+    }
+    fn numeric_jordan(_: &JordanForm<Self>) -> Option<&JordanForm<Q>> {
         None
     }
     fn rational(_: &TypedSystem<Self>) -> Option<&TypedSystem<Q>> {

@@ -32,7 +32,7 @@ pub use jordan::{conditions_qp, eigenvalue_text, eigenvalue_value_text, qp_var_n
 pub use mpoly::{mfactor_report, mgcd_report};
 pub use pencil::{
     ctrb_report, descriptor_ctrb_report, descriptor_zeros_report, eigen_items, eigenvalue_items,
-    kronecker_report, minreal_descriptor_report, pencil_report,
+    minreal_descriptor_report, pencil_report,
 };
 pub use structure::{branch_equation, branch_reason};
 pub use tf::{factor_items, tf_report, zpk_string};

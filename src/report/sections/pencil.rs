@@ -69,22 +69,16 @@ fn kronecker_items<K: Field>(r: Report, k: &KroneckerStructure<K>) -> Report {
         .int("nondynamic_modes", k.nondynamic_modes())
 }
 
-/// `pencil` over Q: the Kronecker structure with finite eigenvalues.
-pub fn pencil_report(ps: &PencilStructure) -> Report {
+/// `pencil` over any ground field: the Kronecker structure, the finite part as a matrix and
+/// its eigenvalues (over a numeric field [`eigenvalue_items`]: exact values, `minpoly`,
+/// `approx`, multiplicities, `blocks`; over $\mathbb{Q}(p)$
+/// [`super::eigen_list::eigenvalue_structure`]).
+pub fn pencil_report<K: GroundField>(ps: &PencilStructure<K>) -> Report {
     let k = &ps.structure;
-    kronecker_items(
-        Report::titled(format!(
-            "Kronecker structure of the {}x{} pencil A - sE",
-            k.shape.0, k.shape.1
-        )),
-        k,
-    )
-    .list("finite_eigenvalues", eigen_items(&ps.finite))
-    .bool("verified", ps.verified)
-}
-
-/// `pencil` over another field: indices, and the finite part as a matrix.
-pub fn kronecker_report<K: Field>(k: &KroneckerStructure<K>) -> Report {
+    let eigen = match K::numeric_jordan(&ps.finite) {
+        Some(j) => eigenvalue_items(&j.eigenvalues),
+        None => super::eigen_list::eigenvalue_structure(&ps.finite, "s"),
+    };
     kronecker_items(
         Report::titled(format!(
             "Kronecker structure of the {}x{} pencil A - sE",
@@ -93,7 +87,8 @@ pub fn kronecker_report<K: Field>(k: &KroneckerStructure<K>) -> Report {
         k,
     )
     .matrix("finite_part", &k.finite_part)
-    .bool("verified", k.verified)
+    .list("finite_eigenvalues", eigen)
+    .bool("verified", ps.verified)
 }
 
 fn structure_items<K: GroundField>(
