@@ -2,9 +2,7 @@
 //!
 //! As in [`super::descriptor_to_standard`]: with $\det(\lambda_0E - A) \ne 0$,
 //! $M = (\lambda_0E - A)^{-1}$, $\hat E = ME$, the Fitting decomposition of $\hat E$,
-//! $x = V_1z_1 + V_2z_2$ ($V_1$ the pivot columns of $\hat E^k$ and $V_2$ the kernel basis of
-//! $\hat E^k$, $k$ the first power with $\hat E$ injective on $\mathrm{range}\,\hat E^k$: the
-//! same range and kernel as $\hat E^n$, with smaller entries), gives $\dot z_1 = A_fz_1 + B_fu$ and, with $N$ nilpotent,
+//! $x = V_1z_1 + V_2z_2$, gives $\dot z_1 = A_fz_1 + B_fu$ and, with $N$ nilpotent,
 //! $(I + sN)z_2 = B_\infty u$, so
 //! $$G(s) = C_f(sI - A_f)^{-1}B_f + D + \sum_{k \ge 0} (-s)^k C_\infty N^k B_\infty .$$
 //! Here the split is returned whole (improper systems included); the polynomial part is
@@ -96,19 +94,8 @@ pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSpli
     };
     let eh = &m * &sys.e;
     let bh = &m * &sys.b;
-    // range and kernel of Eh^n are those of Eh^k from the first k where Eh is injective on
-    // range Eh^k (then the ranges stop shrinking; k is the index of the nilpotent part, at
-    // most n): the lowest power, with the smallest entries (over Q(p) the n-th power's
-    // entries are what made the singular-E route run out of memory)
-    let mut en = eh.clone();
-    let mut v1 = en.column_space();
-    for _ in 1..n {
-        if (&eh * &v1).rank() == v1.ncols() {
-            break;
-        }
-        en = &eh * &en;
-        v1 = en.column_space();
-    }
+    let en = eh.pow(n as u32)?;
+    let v1 = en.column_space();
     let v2 = en.nullspace();
     let v = v1.hstack(&v2)?;
     let vi = v.inverse()?;
@@ -200,13 +187,11 @@ pub fn eval_transfer<K: Field>(sys: &Descriptor<K>, s0: &K::Elem) -> Option<Matr
 ///   but $E_i^{-1}$ ($E_i = I$: none), and over $\mathbb{Q}(p)$ no condition recorded.
 /// * **otherwise**: the Taylor coefficients at a rational $s_0$ where both pencils are
 ///   regular, $G_i(s_0 + h) = D_i + \sum_k (-h)^k C_i(F_iE_i)^kF_iB_i$ with
-///   $F_i = (s_0E_i - A_i)^{-1}$: $G_1 = G_2$ iff $D_1 = D_2$ and every coefficient of the
-///   difference, $C W^k X$ with $W = \mathrm{diag}(F_1E_1, F_2E_2)$, $X = [F_1B_1; F_2B_2]$,
-///   $C = [C_1, -C_2]$, vanishes, i.e. iff $C$ is zero on the Krylov space of $(W, X)$,
-///   computed as a canonical basis grown one product at a time ([`krylov_basis`]; no power
-///   of $W$, whose entries over $\mathbb{Q}(p)$ grow with $k$). One inverse per system (at
-///   most $n_1 + n_2 + 2$ values of $s_0$ tried; a singular pencil has none and gives
-///   `false`).
+///   $F_i = (s_0E_i - A_i)^{-1}$, for $k \le n_1 + n_2$: each entry of $G_i$ is $p_i/d_i$ with
+///   $\deg p_i, \deg d_i \le n_i$ and $d_i(s_0) \ne 0$, so the numerator of
+///   $(G_1 - G_2)d_1d_2$ has degree $\le n_1 + n_2$ and vanishes to that order at $s_0$: it is
+///   zero. One inverse per system (at most $n_1 + n_2 + 2$ values of $s_0$ tried; a singular
+///   pencil has none and gives `false`).
 pub fn same_transfer<K: Field>(s1: &Descriptor<K>, s2: &Descriptor<K>) -> bool {
     if s1.d.shape() != s2.d.shape() {
         return false;
@@ -215,47 +200,15 @@ pub fn same_transfer<K: Field>(s1: &Descriptor<K>, s2: &Descriptor<K>) -> bool {
     if let (Some(m1), Some(m2)) = (markov_of(s1, need), markov_of(s2, need)) {
         return s1.d == s2.d && m1 == m2;
     }
-    if s1.d != s2.d {
-        return false;
-    }
     let fld = s1.a.field().clone();
     for t in 0..need as i64 + 2 {
         let s0 = fld.from_rational(&crate::field::Rational::new((2 * t + 1).into(), 7.into()));
-        let (Some((w1, x1)), Some((w2, x2))) = (resolvent(s1, &s0), resolvent(s2, &s0)) else {
+        let (Some(g1), Some(g2)) = (moments(s1, &s0, need + 1), moments(s2, &s0, need + 1)) else {
             continue;
         };
-        // the difference: W = diag(W1, W2), X = [X1; X2], C = [C1, -C2]; all its Taylor
-        // coefficients C W^k X vanish iff C kills the Krylov space of (W, X)
-        let w = Matrix::block_diag(fld.clone(), &[w1, w2]);
-        let (Ok(x), Ok(c)) = (x1.vstack(&x2), s1.c.hstack(&-&s2.c)) else {
-            return false;
-        };
-        return (&c * &krylov_basis(&w, &x)).is_zero();
+        return g1 == g2;
     }
     false
-}
-
-/// $W = FE$ and $X = FB$ with $F = (s_0E - A)^{-1}$; `None` when $s_0E - A$ is singular.
-fn resolvent<K: Field>(sys: &Descriptor<K>, s0: &K::Elem) -> Option<(Matrix<K>, Matrix<K>)> {
-    let f = (&sys.e.scale(s0) - &sys.a).inverse().ok()?;
-    Some((&f * &sys.e, &f * &sys.b))
-}
-
-/// A basis (columns, canonical: the transposed RREF of the row space) of the Krylov space
-/// $\mathrm{span}\{W^kX : k \ge 0\}$: $Q \leftarrow$ the basis of $[Q, WQ]$ until the
-/// dimension stops growing (at most `nrows` rounds). Each round multiplies the canonical
-/// basis, not a power of $W$: over $\mathbb{Q}(p)$ the entries keep the size of a basis of
-/// the space instead of growing with $k$.
-fn krylov_basis<K: Field>(w: &Matrix<K>, x: &Matrix<K>) -> Matrix<K> {
-    let basis = |m: &Matrix<K>| m.transpose().row_space().transpose();
-    let mut q = basis(x);
-    loop {
-        let next = basis(&q.hstack(&(w * &q)).expect("same rows"));
-        if next.ncols() == q.ncols() {
-            return q;
-        }
-        q = next;
-    }
 }
 
 /// $C(E^{-1}A)^kE^{-1}B$ for $k < $ `count` when $E$ is invertible, else `None`.
@@ -268,6 +221,20 @@ fn markov_of<K: Field>(sys: &Descriptor<K>, count: usize) -> Option<Vec<Matrix<K
     };
     let ss = StateSpace::new_strictly_proper(a, b, sys.c.clone()).ok()?;
     Some(ss.markov(count))
+}
+
+/// $G(s_0)$ and $C(FE)^kFB$, $k = 1..$ `count` $- 1$, with $F = (s_0E - A)^{-1}$; `None`
+/// when $s_0E - A$ is singular.
+fn moments<K: Field>(sys: &Descriptor<K>, s0: &K::Elem, count: usize) -> Option<Vec<Matrix<K>>> {
+    let f = (&sys.e.scale(s0) - &sys.a).inverse().ok()?;
+    let w = &f * &sys.e;
+    let mut x = &f * &sys.b;
+    let mut out = vec![&(&sys.c * &x) + &sys.d];
+    for _ in 1..count {
+        x = &w * &x;
+        out.push(&sys.c * &x);
+    }
+    Some(out)
 }
 
 /// The exact transfer matrix of a regular descriptor system (improper included):

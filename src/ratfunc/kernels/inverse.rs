@@ -18,8 +18,8 @@
 
 use super::blocks::{Block, split, sub};
 use super::clear_rows;
-use super::interp::{Bounds, grid_points, interpolate_zp};
 use super::fraction_free::gauss_jordan_zp;
+use super::interp::{Bounds, grid_points, interpolate_zp};
 use super::modp::{det_mod_p, eval_mod_p, profile_mod_p};
 use crate::field::Field;
 use crate::mpoly::MPoly;
