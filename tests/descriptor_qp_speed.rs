@@ -353,8 +353,8 @@ fn singular_e_many_parameters() {
     }
 }
 
-/// RREF over six parameters of a rank-deficient product `L R` (`5 x 4` times `4 x 6`): a
-/// dense grid of about `9^6` points per output, so the minors come from the fraction-free
+/// RREF over six parameters of a rank-deficient product `L R` (`5 x 4` times `4 x 6`,
+/// affine entries): a dense grid of about `9^6` points per output, so the minors come from the fraction-free
 /// Gauss-Jordan. Asserted: the rank is the largest rank at random rational points, `R` is in
 /// reduced echelon form on its pivots, and `A = A_{:,P} R` (the rows of `A` from the pivot
 /// columns and the RREF).
@@ -363,7 +363,14 @@ fn rref_many_parameters_fraction_free() {
     let k = field_many();
     let mut rng = Rng(0xf4ac);
     let (m, r, n) = (5, 4, 6);
-    let a = &random(&k, m, r, &mut rng) * &random(&k, r, n, &mut rng);
+    // polynomial entries, affine in one symbol (row denominators would only make it slower)
+    let mut affine = |_: usize, _: usize| {
+        let (c, d) = (rng.int(-3, 3), rng.int(-3, 3));
+        let x = MANY[rng.int(0, MANY.len() as i64 - 1) as usize];
+        k.parse(&format!("{c}*{x} + {d}")).unwrap()
+    };
+    let l = Matrix::from_fn(k.clone(), m, r, &mut affine);
+    let a = &l * &Matrix::from_fn(k.clone(), r, n, &mut affine);
     let (rr, piv) = a.rref();
     let rank = piv.len();
     let mut generic = 0;
@@ -378,8 +385,14 @@ fn rref_many_parameters_fraction_free() {
     assert_eq!(rank, generic, "rank = generic rank");
     assert!(rank <= r);
     let top = rr.submatrix(0, rank, 0, n);
-    assert!(top.is_identity_on_cols(&piv), "pivot columns are unit columns");
-    assert!(rr.submatrix(rank, m, 0, n).is_zero(), "zero rows below the rank");
+    assert!(
+        top.is_identity_on_cols(&piv),
+        "pivot columns are unit columns"
+    );
+    assert!(
+        rr.submatrix(rank, m, 0, n).is_zero(),
+        "zero rows below the rank"
+    );
     assert_eq!(&a.select_cols(&piv) * &top, a, "A = A_P R");
     assert_eq!(a.rank(), rank);
 }

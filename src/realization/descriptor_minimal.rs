@@ -145,7 +145,7 @@ pub fn minimal_descriptor_recorded<K: Field>(
         StateSpace::new_strictly_proper(split.n.clone(), split.b_inf.clone(), split.c_inf.clone())?;
     let red = minimal_kalman(&tri)?.system;
     if let Some(r) = rec.as_deref_mut() {
-        steps::finite(r, &split.finite, &fin);
+        steps::finite(r, &split.finite, &fin, fin_verified);
         steps::infinite(r, &tri, &red, q);
     }
     let nr = red.nstates();
