@@ -301,6 +301,26 @@ impl MPoly {
     }
 }
 
+/// Most terms reserved up front for a product (the table grows past it when needed): half
+/// the term pairs, at most the dense box of the product's degrees, and at most
+/// [`MAX_RESERVE`] (two large factors asked for gigabytes that their product never fills).
+fn product_capacity(a: &MPoly, b: &MPoly) -> usize {
+    let (da, db) = (a.degrees_array(), b.degrees_array());
+    let dense = da
+        .iter()
+        .zip(db.iter())
+        .take(a.nvars())
+        .fold(1usize, |acc, (x, y)| {
+            acc.saturating_mul(*x as usize + *y as usize + 1)
+        });
+    (a.len().saturating_mul(b.len()) / 2 + 1)
+        .min(dense)
+        .min(MAX_RESERVE)
+}
+
+/// The cap of [`product_capacity`] (about 1M entries).
+const MAX_RESERVE: usize = 1 << 20;
+
 #[cfg(test)]
 mod tests {
     use crate::mpoly::parse::abc as p;
@@ -327,23 +347,3 @@ mod tests {
         );
     }
 }
-
-/// Most terms reserved up front for a product (the table grows past it when needed): half
-/// the term pairs, at most the dense box of the product's degrees, and at most
-/// [`MAX_RESERVE`] (two large factors asked for gigabytes that their product never fills).
-fn product_capacity(a: &MPoly, b: &MPoly) -> usize {
-    let (da, db) = (a.degrees_array(), b.degrees_array());
-    let dense = da
-        .iter()
-        .zip(db.iter())
-        .take(a.nvars())
-        .fold(1usize, |acc, (x, y)| {
-            acc.saturating_mul(*x as usize + *y as usize + 1)
-        });
-    (a.len().saturating_mul(b.len()) / 2 + 1)
-        .min(dense)
-        .min(MAX_RESERVE)
-}
-
-/// The cap of [`product_capacity`] (about 1M entries).
-const MAX_RESERVE: usize = 1 << 20;
