@@ -29,15 +29,32 @@ fn field() -> Qp {
     RatFuncField::new(&["a", "b"]).unwrap()
 }
 
-/// A random entry: 0, an integer, or affine in the parameters.
+/// The parameters of [`field_many`].
+const MANY: [&str; 6] = ["a", "b", "c", "f", "g", "h"];
+
+/// $\mathbb{Q}(a, b, c, f, g, h)$: six parameters, where the interpolation grids of the
+/// kernels are too large and the fraction-free elimination and the piecewise check of the
+/// Fitting split run.
+fn field_many() -> Qp {
+    RatFuncField::new(&MANY).unwrap()
+}
+
+/// A random entry: 0, an integer, or affine in the parameters (over $\mathbb{Q}(a, b)$ in
+/// $a$ and $b$ as the seeds were written; over [`field_many`] in any two of its symbols).
 fn entry(k: &Qp, rng: &mut Rng) -> <Qp as Field>::Elem {
     let (c, d) = (rng.int(-3, 3), rng.int(-3, 3));
+    let (x, y) = if k.nvars() == 2 {
+        ("a", "b")
+    } else {
+        let hi = MANY.len() as i64 - 1;
+        (MANY[rng.int(0, hi) as usize], MANY[rng.int(0, hi) as usize])
+    };
     let text = match rng.int(0, 4) {
         0 => "0".to_string(),
         1 => format!("{c}"),
-        2 => format!("{c}*a + {d}"),
-        3 => format!("{c}*b - {d}*a"),
-        _ => format!("({c} + a)/(b^2 + 1)"),
+        2 => format!("{c}*{x} + {d}"),
+        3 => format!("{c}*{y} - {d}*{x}"),
+        _ => format!("({c} + {x})/({y}^2 + 1)"),
     };
     k.parse(&text).unwrap()
 }
@@ -106,7 +123,11 @@ fn invertible_case(seed: u64) -> Case {
 /// E singular: E = P diag(I, J) T, A = P diag(A0, I) T, B = P [B0; Binf], C = [C0, Cinf] T
 /// with J = [[0, 1], [0, 0]]; `improper`: Cinf J Binf != 0 (a polynomial part s P1).
 fn singular_case(seed: u64, improper: bool) -> Case {
-    let k = field();
+    singular_case_in(field(), seed, improper)
+}
+
+/// [`singular_case`] over the field `k` (its symbols include a and b).
+fn singular_case_in(k: Qp, seed: u64, improper: bool) -> Case {
     let mut rng = Rng(seed);
     let nf = 3;
     let n = nf + 2;
@@ -228,7 +249,7 @@ fn check(case: &Case, seed: u64) {
         if points == 3 {
             break;
         }
-        let pt: Vec<Rational> = (0..2)
+        let pt: Vec<Rational> = (0..k.nvars())
             .map(|_| Rational::from_integer(rng.int(-9, 9).into()))
             .collect();
         let (Some(x), Some(y), Some(least)) = (
@@ -317,4 +338,61 @@ fn yaw_plane_symbolic_descriptor_steps() {
     assert!(steps[0].get("lambda0").is_none(), "{}", steps[0]);
     assert!(steps.iter().all(|s| s["holds"] == true), "{j}");
     assert_eq!(steps.last().unwrap()["orders"][2], 2);
+}
+
+/// Six parameters, E singular (proper with impulsive modes, and improper): the Fitting split
+/// from E and the pencil, the piecewise transfer check; transfer identity at random points
+/// and the least order asserted by [`check`].
+#[test]
+fn singular_e_many_parameters() {
+    for (seed, improper) in [(30, false), (31, true)] {
+        let case = singular_case_in(field_many(), seed, improper);
+        check(&case, seed);
+        let m = minimal_descriptor(&case.sys).unwrap();
+        assert_eq!(m.polynomial_degree, usize::from(improper), "seed {seed}");
+    }
+}
+
+/// RREF over six parameters of a rank-deficient product `L R` (`5 x 4` times `4 x 6`,
+/// affine entries): a dense grid of about `9^6` points per output, so the minors come from the fraction-free
+/// Gauss-Jordan. Asserted: the rank is the largest rank at random rational points, `R` is in
+/// reduced echelon form on its pivots, and `A = A_{:,P} R` (the rows of `A` from the pivot
+/// columns and the RREF).
+#[test]
+fn rref_many_parameters_fraction_free() {
+    let k = field_many();
+    let mut rng = Rng(0xf4ac);
+    let (m, r, n) = (5, 4, 6);
+    // polynomial entries, affine in one symbol (row denominators would only make it slower)
+    let mut affine = |_: usize, _: usize| {
+        let (c, d) = (rng.int(-3, 3), rng.int(-3, 3));
+        let x = MANY[rng.int(0, MANY.len() as i64 - 1) as usize];
+        k.parse(&format!("{c}*{x} + {d}")).unwrap()
+    };
+    let l = Matrix::from_fn(k.clone(), m, r, &mut affine);
+    let a = &l * &Matrix::from_fn(k.clone(), r, n, &mut affine);
+    let (rr, piv) = a.rref();
+    let rank = piv.len();
+    let mut generic = 0;
+    for _ in 0..4 {
+        let pt: Vec<Rational> = (0..k.nvars())
+            .map(|_| Rational::from_integer(rng.int(-9, 9).into()))
+            .collect();
+        if let Some(x) = eval_at(&a, &pt) {
+            generic = generic.max(x.rank());
+        }
+    }
+    assert_eq!(rank, generic, "rank = generic rank");
+    assert!(rank <= r);
+    let top = rr.submatrix(0, rank, 0, n);
+    assert!(
+        top.is_identity_on_cols(&piv),
+        "pivot columns are unit columns"
+    );
+    assert!(
+        rr.submatrix(rank, m, 0, n).is_zero(),
+        "zero rows below the rank"
+    );
+    assert_eq!(&a.select_cols(&piv) * &top, a, "A = A_P R");
+    assert_eq!(a.rank(), rank);
 }

@@ -93,7 +93,7 @@ impl MPoly {
                 .map(|(m, c)| (*m, c.to_i128().unwrap()))
                 .collect();
             let mut acc: super::monomap::MonoMap<i128> =
-                super::monomap::with_capacity(a.len() * b.len() / 2 + 1);
+                super::monomap::with_capacity(product_capacity(a, b));
             for (m, c) in &ai {
                 for (n, d) in &bi {
                     *acc.entry(m + n).or_insert(0) += c * d;
@@ -108,7 +108,7 @@ impl MPoly {
             return MPoly::from_sorted(self.nvars, t);
         }
         let mut acc: super::monomap::MonoMap<BigInt> =
-            super::monomap::with_capacity(a.len() * b.len() / 2 + 1);
+            super::monomap::with_capacity(product_capacity(a, b));
         for (m, c) in &a.terms {
             for (n, d) in &b.terms {
                 let e = acc.entry(m + n).or_default();
@@ -300,6 +300,26 @@ impl MPoly {
         self.lc().is_negative()
     }
 }
+
+/// Most terms reserved up front for a product (the table grows past it when needed): half
+/// the term pairs, at most the dense box of the product's degrees, and at most
+/// [`MAX_RESERVE`] (two large factors asked for gigabytes that their product never fills).
+fn product_capacity(a: &MPoly, b: &MPoly) -> usize {
+    let (da, db) = (a.degrees_array(), b.degrees_array());
+    let dense = da
+        .iter()
+        .zip(db.iter())
+        .take(a.nvars())
+        .fold(1usize, |acc, (x, y)| {
+            acc.saturating_mul(*x as usize + *y as usize + 1)
+        });
+    (a.len().saturating_mul(b.len()) / 2 + 1)
+        .min(dense)
+        .min(MAX_RESERVE)
+}
+
+/// The cap of [`product_capacity`] (about 1M entries).
+const MAX_RESERVE: usize = 1 << 20;
 
 #[cfg(test)]
 mod tests {

@@ -17,7 +17,9 @@
 //!    \hat E - I$, so $E\dot x = Ax + Bu \iff \hat E \dot x = (\lambda_0 \hat E - I)x + \hat B u$;
 //! 3. the Fitting decomposition $K^n = \mathrm{range}\,\hat E^n \oplus \ker \hat E^n$, $x = V_1
 //!    z_1 + V_2 z_2$, splits $\hat E$ into an invertible $\hat E_1$ (the finite eigenvalues
-//!    $\lambda = \lambda_0 - 1/\mu$) and a nilpotent $N$ (the infinite ones);
+//!    $\lambda = \lambda_0 - 1/\mu$) and a nilpotent $N$ (the infinite ones); the bases come
+//!    from $\hat E^k$, $k$ the index of $N$, without forming a power of $\hat E$
+//!    ([`super::weierstrass`]'s `fitting_bases`);
 //! 4. $\dot z_1 = (\lambda_0 I - \hat E_1^{-1}) z_1 + \hat E_1^{-1}\hat B_1 u$ and, with
 //!    $G = (I - \lambda_0 N)^{-1}$, $z_2 = \sum_{k \ge 0} (-s\,GN)^k G \hat B_2 u$.
 //!

@@ -23,6 +23,14 @@
 //! Both steps only remove states, so the order never exceeds the input's. The result is
 //! checked exactly: same transfer matrix, finite part controllable and observable,
 //! $\mathrm{rank}[E, B] = \mathrm{rank}[E; C] = n$ and $A\ker E \subseteq \mathrm{im}\,E$.
+//! The transfer matrix is compared piecewise, never by expanding the input's (over
+//! $\mathbb{Q}(p)$ with many parameters its Taylor coefficients were what ran out of
+//! memory): the split's identities prove $G = G_f + G_\infty$
+//! (`FittingSplit` in [`super::weierstrass`]), the finite part's minimal realization has its
+//! Markov parameters ([`minimal_kalman`]'s check), and the realization of the infinite part
+//! (with $D$) has the transfer matrix of $(GN, -I, G\hat B_2, CV_2, D)$
+//! ([`same_transfer`] on the small infinite parts); the result is block diagonal, so its
+//! transfer matrix is the sum of the two.
 //!
 //! (Realizing only the shifted sequence, as an earlier version did, fixes $C_rB_r = 0$ and
 //! can need more states than the input: $[[s^2, s], [s, 1]]$ from De Terán-Dopico-Mackey
@@ -32,7 +40,7 @@ use super::controllability::{is_controllable, is_observable};
 use super::descriptor_elim::remove_nondynamic;
 use super::descriptor_minimal_steps as steps;
 use super::minimal::minimal_kalman;
-use super::weierstrass::same_transfer;
+use super::weierstrass::{WeierstrassSplit, same_transfer};
 use crate::error::Result;
 use crate::field::Field;
 use crate::jordan::derivation::Recorder;
@@ -89,6 +97,19 @@ fn shifted_sequence<K: Field>(
     Descriptor::new(z.a, Matrix::identity(fld, k), z.b, -&z.c, p0.clone())
 }
 
+/// The infinite part of a split with the feedthrough, as the descriptor system
+/// $(GN, -I, G\hat B_2, CV_2, D)$: $(sGN + I)^{-1}$ (`FittingSplit` in [`super::weierstrass`]).
+fn infinite_descriptor<K: Field>(split: &WeierstrassSplit<K>) -> Result<Descriptor<K>> {
+    let fld = split.d.field().clone();
+    Descriptor::new(
+        split.n.clone(),
+        -&Matrix::identity(fld, split.n.nrows()),
+        split.b_inf.clone(),
+        split.c_inf.clone(),
+        split.d.clone(),
+    )
+}
+
 /// Minimal descriptor realization of a regular descriptor system (proper or not).
 ///
 /// # Errors
@@ -112,16 +133,19 @@ pub fn minimal_descriptor_recorded<K: Field>(
     if let Some(r) = rec.as_deref_mut() {
         super::standard_steps::fitting(r, &fitting);
     }
+    let split_exact = fitting.decoupled;
     let split = super::weierstrass::from_fitting(sys, fitting)?;
     let fld = sys.a.field().clone();
-    let fin = minimal_kalman(&split.finite)?.system;
+    let fin_min = minimal_kalman(&split.finite)?;
+    let fin_verified = fin_min.verified;
+    let fin = fin_min.system;
     let poly = split.polynomial_part();
     let q = poly.len() - 1;
     let tri =
         StateSpace::new_strictly_proper(split.n.clone(), split.b_inf.clone(), split.c_inf.clone())?;
     let red = minimal_kalman(&tri)?.system;
     if let Some(r) = rec.as_deref_mut() {
-        steps::finite(r, &split.finite, &fin);
+        steps::finite(r, &split.finite, &fin, fin_verified);
         steps::infinite(r, &tri, &red, q);
     }
     let nr = red.nstates();
@@ -143,7 +167,11 @@ pub fn minimal_descriptor_recorded<K: Field>(
         steps::nondynamic(r, &irreducible, &inf, took_shifted);
     }
     let system = assemble(&fin, &inf)?;
-    let verified = same_transfer(sys, &system)
+    // G = G_split (the split's identities) = G_fin + G_inf (Markov parameters of the finite
+    // parts, Taylor coefficients of the small infinite parts): the module docs
+    let verified = split_exact
+        && fin_verified
+        && same_transfer(&infinite_descriptor(&split)?, &inf)
         && is_controllable(&fin.a, &fin.b)
         && is_observable(&fin.a, &fin.c)
         && is_minimal_at_infinity(&system);

@@ -11,7 +11,6 @@
 //! * the assembled realization: the input's transfer matrix, finite part minimal, minimal at
 //!   infinity.
 
-use super::controllability::{is_controllable, is_observable};
 use super::descriptor_minimal_result::{DescriptorMinimal, is_minimal_at_infinity};
 use super::weierstrass::same_transfer;
 use crate::field::Field;
@@ -23,16 +22,16 @@ fn mat<K: Field>(m: &Matrix<K>) -> Object<K> {
     Object::Matrix(m.clone())
 }
 
-/// The finite part `full` and its minimal part `min`.
+/// The finite part `full` and its minimal part `min`; `ok` is the Kalman realization's own
+/// check of exactly these identities ([`super::minimal::verify_minimal`]: Markov parameters
+/// for $k < n_f + n_m$, controllable, observable), not computed a second time (over
+/// $\mathbb{Q}(p)$ with many parameters the Markov parameters are the costly part).
 pub(crate) fn finite<K: Field>(
     rec: &mut Recorder<'_, K>,
     full: &StateSpace<K>,
     min: &StateSpace<K>,
+    ok: bool,
 ) {
-    let k = full.nstates() + min.nstates();
-    let ok = full.markov(k) == min.markov(k)
-        && is_controllable(&min.a, &min.b)
-        && is_observable(&min.a, &min.c);
     rec.push(
         StepKind::DescriptorFinite,
         None,

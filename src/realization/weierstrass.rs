@@ -58,6 +58,14 @@ impl<K: Field> WeierstrassSplit<K> {
 /// $GN$ and $G\hat B_2$ with $G = (I - \lambda_0 N)^{-1}$, and whether $V^{-1}\hat E V$ is
 /// block diagonal. For invertible $E$ (module docs): `lambda0` is `None`, $V_1 = I$, $V_2$,
 /// $GN$, $G\hat B_2$ empty, and `decoupled` is the identity $EA_f = A$, $EB_f = B$.
+///
+/// Otherwise `decoupled` checks every identity the split's transfer matrix rests on:
+/// $M(\lambda_0E - A) = I$, $V^{-1}V = I$, $V^{-1}\hat EV = \mathrm{diag}(\hat E_1, N)$,
+/// $\hat E_1^{-1}\hat E_1 = I$ and $G(I - \lambda_0N) = I$. Then $L = V^{-1}M$ and $V$ are
+/// invertible with $L(sE - A)V = \mathrm{diag}(s\hat E_1 - \lambda_0\hat E_1 + I,
+/// sN - \lambda_0N + I)$, so $C(sE - A)^{-1}B + D = CV_1(sI - A_f)^{-1}B_f + CV_2(I +
+/// sGN)^{-1}G\hat B_2 + D$ exactly: the transfer matrix of the split (finite part plus the
+/// descriptor $(GN, -I, G\hat B_2, CV_2, D)$) is the input's, with no expansion of it.
 pub(crate) struct FittingSplit<K: Field> {
     pub lambda0: Option<i64>,
     pub v1: Matrix<K>,
@@ -94,22 +102,29 @@ pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSpli
     };
     let eh = &m * &sys.e;
     let bh = &m * &sys.b;
-    let en = eh.pow(n as u32)?;
-    let v1 = en.column_space();
-    let v2 = en.nullspace();
+    let (v1, v2) = fitting_bases(sys, l0, &eh)?;
     let v = v1.hstack(&v2)?;
     let vi = v.inverse()?;
     let et = &(&vi * &eh) * &v;
     let bt = &vi * &bh;
     let r = v1.ncols();
-    let decoupled = et.submatrix(0, r, r, n).is_zero() && et.submatrix(r, n, 0, r).is_zero();
-    let e1i = et.submatrix(0, r, 0, r).inverse()?;
-    let nil = et.submatrix(r, n, r, n);
     let l0e = fld.from_i64(l0);
+    let e11 = et.submatrix(0, r, 0, r);
+    let e1i = e11.inverse()?;
+    let nil = et.submatrix(r, n, r, n);
     let a_f = &Matrix::identity(fld.clone(), r).scale(&l0e) - &e1i;
     let b_f = &e1i * &bt.submatrix(0, r, 0, sys.b.ncols());
     // N z2' = (l0 N - I) z2 + B2 u  <=>  (I + s G N) z2 = G B2 u with G = (I - l0 N)^-1
-    let g = (&Matrix::identity(fld, n - r) - &nil.scale(&l0e)).inverse()?;
+    let ig = &Matrix::identity(fld.clone(), n - r) - &nil.scale(&l0e);
+    let g = ig.inverse()?;
+    // the identities the split's transfer matrix rests on (the struct docs): block diagonal
+    // V^-1 Eh V, and the four inverses
+    let decoupled = et.submatrix(0, r, r, n).is_zero()
+        && et.submatrix(r, n, 0, r).is_zero()
+        && (&m * &(&sys.e.scale(&l0e) - &sys.a)).is_identity()
+        && (&vi * &v).is_identity()
+        && (&e1i * &e11).is_identity()
+        && (&g * &ig).is_identity();
     Ok(FittingSplit {
         lambda0: Some(l0),
         a_f,
@@ -120,6 +135,51 @@ pub(crate) fn fitting_split<K: Field>(sys: &Descriptor<K>) -> Result<FittingSpli
         v2,
         decoupled,
     })
+}
+
+/// Bases $V_1$ of $\mathrm{range}\,\hat E^k$ and $V_2$ of $\ker \hat E^k$ for the index $k$
+/// of $\hat E$'s nilpotent part (the first $k$ with $\ker \hat E^k = \ker \hat E^{k+1}$; from
+/// there on range and kernel stay those of $\hat E^n$), without a power of $\hat E$ (over
+/// $\mathbb{Q}(p)$ the entries of $\hat E^n$ are what made the singular-$E$ route run out of
+/// memory) and with no elimination on $M = (\lambda_0E - A)^{-1}$:
+///
+/// * kernels from the input's entries: $\ker \hat E = \ker E$ ($M$ is invertible) and
+///   $\ker \hat E^{j+1} = \{x : Ex \in P\ker \hat E^j\}$ with $P = \lambda_0E - A$, i.e. the
+///   $x$-part of $\ker\,[E, -PK_j]$ (injective: $PK_jy = 0$ forces $y = 0$);
+/// * ranges: $\hat E X = M(EX)$ has the pivot columns of $EX$, so $\mathrm{range}\,\hat E =
+///   M\,E_{:,P}$ ($P$ the pivots of $E$) and $R_{j+1} = (\hat ER_j)_{:,P_j}$ ($P_j$ the pivots of
+///   $ER_j$), $k - 1$ times.
+///
+/// Their dimensions add up to $n$ (rank-nullity for $\hat E^k$), checked.
+fn fitting_bases<K: Field>(
+    sys: &Descriptor<K>,
+    l0: i64,
+    eh: &Matrix<K>,
+) -> Result<(Matrix<K>, Matrix<K>)> {
+    let n = sys.nstates();
+    let fld = sys.a.field().clone();
+    let pencil = &sys.e.scale(&fld.from_i64(l0)) - &sys.a;
+    let mut kern = sys.e.nullspace();
+    let mut index = 1;
+    while kern.ncols() > 0 && kern.ncols() < n {
+        let ns = sys.e.hstack(&-&(&pencil * &kern))?.nullspace();
+        if ns.ncols() == kern.ncols() {
+            break;
+        }
+        kern = ns.submatrix(0, n, 0, ns.ncols());
+        index += 1;
+    }
+    let mut range = eh.select_cols(&sys.e.pivots());
+    for _ in 1..index {
+        let piv = (&sys.e * &range).pivots();
+        range = (eh * &range).select_cols(&piv);
+    }
+    if range.ncols() + kern.ncols() != n {
+        return Err(Error::Verification(
+            "Fitting split: dim range + dim kernel of the shifted E differ from n".into(),
+        ));
+    }
+    Ok((range, kern))
 }
 
 /// The trivial split of a system with invertible $E$ (module docs); `None` when $E$ is

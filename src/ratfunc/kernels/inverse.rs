@@ -12,13 +12,15 @@
 //! The result is checked exactly, $B \operatorname{adj} B = \det B \cdot I$, before the
 //! entries are brought to lowest terms (the only gcds). Recorded: the numerator of
 //! $\det A$ (the inverse holds where it is nonzero). A matrix that splits into blocks is
-//! inverted block by block; a grid over [`MAX_VALUES`] residues gives way to the generic
-//! algorithm (`None`).
+//! inverted block by block; a grid over [`MAX_VALUES`] residues (many parameters) is
+//! replaced by fraction-free Gauss–Jordan on $[B \mid I]$ ([`super::fraction_free`]), checked
+//! by the same identity.
 
 use super::blocks::{Block, split, sub};
 use super::clear_rows;
+use super::fraction_free::gauss_jordan_zp;
 use super::interp::{Bounds, grid_points, interpolate_zp};
-use super::modp::det_mod_p;
+use super::modp::{det_mod_p, eval_mod_p, profile_mod_p};
 use crate::field::Field;
 use crate::mpoly::MPoly;
 use crate::qkernels::modular::inverse::inverse_mod_p;
@@ -46,15 +48,16 @@ pub fn inverse_qp(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Option<Option<Ve
         Some(v)
     };
     let bounds = Bounds::of_square(nv, n, &b).probe(&b, &map);
-    if grid_points(&bounds).saturating_mul(n * n + 1 + b.len()) > MAX_VALUES {
-        return None;
-    }
-    let out = interpolate_zp(nv, &b, &bounds, n * n + 1, true, map);
-    let out = match out {
-        Ok(Some(o)) => o,
-        // singular at every shifted grid point tried: decide singularity exactly
-        Ok(None) => return super::det_zp(nv, n, &b).ok()?.is_zero().then_some(None),
-        Err(_) => return None,
+    let out = if grid_points(&bounds).saturating_mul(n * n + 1 + b.len()) > MAX_VALUES {
+        // the grid is too large: fraction-free Gauss-Jordan on [B | I]
+        fraction_free(nv, n, &b)?
+    } else {
+        match interpolate_zp(nv, &b, &bounds, n * n + 1, true, map) {
+            Ok(Some(o)) => o,
+            // singular at every shifted grid point tried: decide singularity exactly
+            Ok(None) => return super::det_zp(nv, n, &b).ok()?.is_zero().then_some(None),
+            Err(_) => fraction_free(nv, n, &b)?,
+        }
     };
     let det = &out[0];
     if det.is_zero() {
@@ -80,6 +83,35 @@ pub fn inverse_qp(k: &RatFuncField, n: usize, a: &[RatFunc]) -> Option<Option<Ve
         })
         .collect();
     Some(Some(inv))
+}
+
+/// `[Δ, Δ B^{-1}]` (row-major after `Δ`) with $\Delta = \pm\det B$ by fraction-free
+/// Gauss–Jordan on $[B_S \mid I_S]$, the rows $S$ in the pivot order of the rank profile at
+/// a random point ([`gauss_jordan_zp`]; the RREF of $[B_S \mid I_S]$ is $[I \mid B^{-1}]$
+/// whatever the row order). `None`: $B$ is singular at that point (undecided: the generic
+/// algorithm runs) or the elimination gave up. Checked by the caller ([`check`]).
+fn fraction_free(nv: usize, n: usize, b: &[MPoly]) -> Option<Vec<MPoly>> {
+    let pr = super::profile_prime(0);
+    let mut rng = crate::rng::SplitMix64(0x1a7e_b0a5);
+    let x: Vec<u64> = (0..nv).map(|_| rng.next_u64() % pr.p).collect();
+    let mut at: Vec<u64> = b.iter().map(|f| eval_mod_p(&pr, f, &x)).collect();
+    let (piv, rows) = profile_mod_p(&pr, n, n, &mut at);
+    if piv.len() < n {
+        return None;
+    }
+    let w = 2 * n;
+    let mut c = vec![MPoly::zero(nv); n * w];
+    for (k, &i) in rows.iter().enumerate() {
+        c[k * w..k * w + n].clone_from_slice(&b[i * n..(i + 1) * n]);
+        c[k * w + n + i] = MPoly::one(nv);
+    }
+    let minors = gauss_jordan_zp(n, w, &mut c, &piv)?;
+    let mut out = Vec::with_capacity(n * n + 1);
+    out.push(minors.last()?.clone());
+    for k in 0..n {
+        out.extend(c[k * w + n..(k + 1) * w].iter().cloned());
+    }
+    Some(out)
 }
 
 /// $B \operatorname{adj} B = \det B \cdot I$, exactly.

@@ -28,12 +28,16 @@
 //! minor at a point (full rank, pivots $0..r-1$) holds where that minor is nonzero: its
 //! factors are recorded ([`minor_cond`]), or the shortcut is given up. A matrix whose rows
 //! and columns split into independent blocks (a diagonal $A - \lambda I$) is reduced block by
-//! block ([`blocks`]).
+//! block ([`blocks`]). When the interpolation grid is too large (many parameters), the
+//! minors and $N$ (and the adjugate of the inverse) come from fraction-free Gauss–Jordan
+//! over $\mathbb{Z}\lbrack p\rbrack$ instead ([`fraction_free`]: exact divisions, no gcd),
+//! certified by the same checks.
 
 pub(crate) mod blocks;
 pub mod budget;
 /// The evaluation/interpolation engine (in [`crate::mpoly`], where resultants use it too).
 pub use crate::mpoly::interp;
+pub(crate) mod fraction_free;
 pub(crate) mod inverse;
 pub(crate) mod minor_cond;
 pub(crate) mod modp;

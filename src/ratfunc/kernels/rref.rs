@@ -2,6 +2,7 @@
 //! and its exact check).
 
 use super::blocks::{assemble, split, sub};
+use super::fraction_free::gauss_jordan_zp;
 use super::interp::{Bounds, grid_points, interpolate_zp};
 use super::minor_cond::record_minor;
 use super::modp::{eval_mod_p, minors_and_solve_mod_p, profile_mod_p};
@@ -73,7 +74,10 @@ fn check(b: &[MPoly], n: usize, e: &Echelon) -> bool {
 }
 
 /// The certified echelon form; `None` when the kernel gives way to the generic algorithm
-/// (interpolation grid too large, or three unlucky points).
+/// (three unlucky points, or a fraction-free elimination beyond its size bound). The
+/// minors and $N$ are interpolated, or, when the grid is too large, computed by
+/// fraction-free Gauss–Jordan on the same rows and pivots ([`gauss_jordan_zp`]); either way
+/// [`check`] certifies them.
 fn echelon(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Echelon> {
     let nv = k.nvars();
     let (b, ds) = clear_rows(nv, m, n, a);
@@ -120,21 +124,38 @@ fn echelon(k: &RatFuncField, m: usize, n: usize, a: &[RatFunc]) -> Option<Echelo
         let map = |pr: &Prime, x: &mut [u64]| minors_and_solve_mod_p(pr, n, x, &piv, &free);
         let bounds = Bounds::of_rows(nv, n, &c, &all).probe(&c, &map);
         let nout = r + r * free.len();
-        if grid_points(&bounds).saturating_mul(nout + c.len()) > MAX_VALUES {
-            return None;
-        }
-        let out = match interpolate_zp(nv, &c, &bounds, nout, true, map) {
-            Ok(Some(o)) => o,
-            Ok(None) => continue,
-            Err(_) => return None,
+        let too_large = grid_points(&bounds).saturating_mul(nout + c.len()) > MAX_VALUES;
+        let interpolated = if too_large {
+            None
+        } else {
+            match interpolate_zp(nv, &c, &bounds, nout, true, map) {
+                Ok(Some(o)) => Some(o),
+                Ok(None) => continue,
+                Err(_) => None,
+            }
         };
-        let mut out = out.into_iter();
-        let minors: Vec<MPoly> = out.by_ref().take(r).collect();
+        let (minors, nmat) = match interpolated {
+            Some(out) => {
+                let mut out = out.into_iter();
+                let minors: Vec<MPoly> = out.by_ref().take(r).collect();
+                (minors, out.collect())
+            }
+            // the grid is too large: fraction-free elimination on the same rows and pivots
+            None => {
+                let mut c = c;
+                let minors = gauss_jordan_zp(r, n, &mut c, &piv)?;
+                let nmat = (0..r)
+                    .flat_map(|i| free.iter().map(move |&f| (i, f)))
+                    .map(|(i, f)| std::mem::replace(&mut c[i * n + f], MPoly::zero(nv)))
+                    .collect();
+                (minors, nmat)
+            }
+        };
         let e = Echelon {
             piv,
             rows,
             minors,
-            nmat: out.collect(),
+            nmat,
             free,
             ds: ds.clone(),
         };
