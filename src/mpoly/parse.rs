@@ -153,7 +153,11 @@ fn plain_polynomial(text: &str, vars: &[&str], lim: u32) -> Option<MPoly> {
         if j < s.len() && (s[j].is_ascii_alphanumeric() || matches!(s[j], b'_' | b'.')) {
             return None;
         }
-        std::str::from_utf8(&s[i..j]).ok()?.parse().ok().map(|v| (v, j))
+        std::str::from_utf8(&s[i..j])
+            .ok()?
+            .parse()
+            .ok()
+            .map(|v| (v, j))
     };
     let mut terms: Vec<(u128, BigInt)> = Vec::new();
     skip(&mut i);
@@ -215,7 +219,10 @@ fn plain_polynomial(text: &str, vars: &[&str], lim: u32) -> Option<MPoly> {
                 expect_factor = false;
             }
         }
-        terms.push((super::pack(n, &exps[..n]), BigInt::from(if neg { -coef } else { coef })));
+        terms.push((
+            super::pack(n, &exps[..n]),
+            BigInt::from(if neg { -coef } else { coef }),
+        ));
         if i >= s.len() {
             break;
         }
@@ -440,10 +447,42 @@ mod tests {
             assert_eq!(got, num, "{t}");
         }
         let other = [
-            "", "-", "a -", "+a", "a + -b", "a - -b", "--a", "2a", "2 a", "a b", "2.5*a",
-            "1e3*a", "2e", "02*a", "a^02", "a**2", "a^-1", "a^2^3", "-2^2", "(a + b)",
-            "a/2", "2*3", "a*2", "a*-b", "d", "i", "sqrt(a)", "a^10001", "a^5000*a^5001",
-            "1234567890123456789*a", "a^2.5", "a^2b", "a +", "* a", "a * ", "aé",
+            "",
+            "-",
+            "a -",
+            "+a",
+            "a + -b",
+            "a - -b",
+            "--a",
+            "2a",
+            "2 a",
+            "a b",
+            "2.5*a",
+            "1e3*a",
+            "2e",
+            "02*a",
+            "a^02",
+            "a**2",
+            "a^-1",
+            "a^2^3",
+            "-2^2",
+            "(a + b)",
+            "a/2",
+            "2*3",
+            "a*2",
+            "a*-b",
+            "d",
+            "i",
+            "sqrt(a)",
+            "a^10001",
+            "a^5000*a^5001",
+            "1234567890123456789*a",
+            "a^2.5",
+            "a^2b",
+            "a +",
+            "* a",
+            "a * ",
+            "aé",
         ];
         for t in other {
             assert!(plain_polynomial(t, &vars, lim).is_none(), "{t}");
