@@ -133,3 +133,73 @@ fn a_alone_is_a_system_without_inputs_and_outputs() {
     assert!(jf.verified && jf.complete());
     assert_eq!(jf.components[0].blocks, vec![2]);
 }
+
+/// `--symbolic` takes an optional value: a file name after it is the FILE, not names
+/// (`--symbolic x.json` was read as the names `x.json`, the FILE then missing); names and
+/// `--symbolic=NAMES` keep their meaning.
+#[test]
+fn symbolic_before_the_file_does_not_swallow_it() {
+    let expect = |args: &[&str], field: &str| {
+        let (code, out, err) = run(args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(j["field"], field, "{args:?}");
+        out
+    };
+    let after = expect(
+        &["linalg", "charpoly", YAW, "--symbolic", "--format", "json"],
+        "QQ(cr, m, u)",
+    );
+    for args in [
+        &["linalg", "charpoly", "--symbolic", YAW, "--format", "json"][..],
+        &["--symbolic", "linalg", "charpoly", YAW, "--format", "json"][..],
+        &["linalg", "--symbolic", "charpoly", YAW, "--format", "json"][..],
+    ] {
+        // the last two: `charpoly`/`linalg` is a list of names, taken as NAMES (an unknown
+        // parameter: refused, one line) as before
+        let (code, out, err) = run(args);
+        if args[0] == "linalg" && args[2] == "--symbolic" {
+            assert_eq!(code, 0, "{args:?}: {err}");
+            assert_eq!(out, after, "{args:?}");
+        } else {
+            assert_eq!(code, 2, "{args:?}: {out}");
+            assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        }
+    }
+    // names stay names, spelled either way, before or after the file
+    for args in [
+        &[
+            "linalg",
+            "charpoly",
+            "--symbolic",
+            "m,u",
+            YAW,
+            "--format",
+            "json",
+        ][..],
+        &[
+            "linalg",
+            "charpoly",
+            "--symbolic=m,u",
+            YAW,
+            "--format",
+            "json",
+        ][..],
+        &[
+            "linalg",
+            "charpoly",
+            YAW,
+            "--symbolic",
+            "m,u",
+            "--format",
+            "json",
+        ][..],
+    ] {
+        expect(args, "QQ(m, u)");
+    }
+    // a path is never a list of names, even when it does not exist: the file is missing
+    let (code, _, err) = run(&["linalg", "charpoly", "--symbolic", "no/such.json"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("no/such.json"), "{err}");
+    assert!(!err.contains("unknown parameter"), "{err}");
+}

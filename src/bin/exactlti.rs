@@ -1,5 +1,4 @@
 //! The `exactlti` command: see `exactlti --help` and ../shared/CLI-CONTRACT.md.
-use clap::Parser;
 use std::io::Write;
 
 /// Every allocation is counted against `--max-memory` (over it: one line, exit 2).
@@ -18,7 +17,7 @@ fn main() {
         // never a second panic from a closed stderr
         let _ = writeln!(std::io::stderr(), "exactlti: internal failure: {msg}");
     }));
-    let cli = match exactlti::cli::Cli::try_parse() {
+    let cli = match exactlti::cli::Cli::try_parse_args(std::env::args_os()) {
         Ok(c) => c,
         // contract: one line on stderr, exit 2 (help and version: exit 0)
         Err(e) => std::process::exit(exactlti::cli::report_parse_error(&e)),

@@ -50,7 +50,10 @@ pub struct Cli {
     /// on stderr and exit 2 instead of exhausting the machine (see `exactlti::cli::memory`).
     #[arg(long, global = true, default_value_t = memory::DEFAULT_MAX_MEMORY_MIB, value_name = "MIB")]
     pub max_memory: u64,
-    /// Keep these parameters as symbols (comma separated; alone: every parameter).
+    /// Keep these parameters as symbols (comma separated; alone: every parameter). A word
+    /// after `--symbolic` that is not a list of names (a path such as `x.toml`, or an
+    /// existing file) is not taken as NAMES: `--symbolic FILE` is `--symbolic` alone and the
+    /// FILE; `--symbolic=NAMES` always takes NAMES.
     #[arg(long, global = true, num_args = 0..=1, default_missing_value = "", value_name = "NAMES")]
     pub symbolic: Option<String>,
     /// Values for parameters or symbols before the computation, e.g. "m=1500, u=20".
@@ -65,6 +68,68 @@ pub struct Cli {
     /// sentence, exact objects, identity and its check; over Q(p) what it assumes).
     #[arg(long, global = true)]
     pub steps: bool,
+}
+
+impl Cli {
+    /// Parses the command line ([`symbolic_alone`] first, then clap).
+    ///
+    /// # Errors
+    /// clap's error (help and version included).
+    pub fn try_parse_args(
+        args: impl IntoIterator<Item = std::ffi::OsString>,
+    ) -> Result<Self, clap::Error> {
+        use clap::{CommandFactory, FromArgMatches};
+        let mut cmd = Self::command();
+        let parsed = cmd
+            .try_get_matches_from_mut(symbolic_alone(args.into_iter().collect()))
+            .and_then(|mut m| Self::from_arg_matches_mut(&mut m));
+        // the command tree (every subcommand and option) is not needed again and the
+        // process ends after this command: not freed piece by piece (1.5% of a short run)
+        std::mem::forget(cmd);
+        parsed
+    }
+}
+
+/// Is `w` a value of `--symbolic` (names separated by commas or spaces, at least one; not a
+/// file that exists)?
+fn names_list(w: &std::ffi::OsStr) -> bool {
+    let Some(w) = w.to_str() else {
+        return false;
+    };
+    let mut any = false;
+    for name in w.split([',', ' ']).filter(|x| !x.is_empty()) {
+        let mut cs = name.chars();
+        let first_ok = cs
+            .next()
+            .is_some_and(|c| c.is_ascii_alphabetic() || c == '_');
+        if !first_ok || !cs.all(|c| c.is_ascii_alphanumeric() || c == '_') {
+            return false;
+        }
+        any = true;
+    }
+    any && !std::path::Path::new(w).is_file()
+}
+
+/// `--symbolic WORD` with a WORD that is not a list of names ([`names_list`]: a path such as
+/// `data/models/x.toml`, or an existing file) becomes `--symbolic=` (every parameter) and
+/// the WORD stays an argument of its own (the FILE); without this the optional value of
+/// `--symbolic` swallowed the file (`analyze --symbolic x.toml` read `x.toml` as names).
+/// `--symbolic=NAMES` is left as written. Arguments after `--` are not looked at.
+pub fn symbolic_alone(mut args: Vec<std::ffi::OsString>) -> Vec<std::ffi::OsString> {
+    let mut i = 1;
+    while i + 1 < args.len() {
+        if args[i] == "--" {
+            break;
+        }
+        if args[i] == "--symbolic" && !args[i + 1].to_string_lossy().starts_with('-') {
+            if !names_list(&args[i + 1]) {
+                args[i] = "--symbolic=".into();
+            }
+            i += 1;
+        }
+        i += 1;
+    }
+    args
 }
 
 /// Renders a report in the chosen format (`--standalone` off, compact text).

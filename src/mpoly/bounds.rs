@@ -5,7 +5,7 @@
 use super::MPoly;
 use crate::qkernels::prime::Prime;
 use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed};
 
 /// Degree and coefficient bounds of the outputs (see the module docs).
 #[derive(Clone, Debug)]
@@ -25,41 +25,47 @@ impl Bounds {
     /// Bounds for polynomials taking one entry from each row in `rows` of the row-major
     /// `B` with `ncols` columns (and possibly the 1 of $xI$).
     pub fn of_rows(nvars: usize, ncols: usize, b: &[MPoly], rows: &[usize]) -> Self {
+        // the degrees of every entry of the rows, once (the assignment bound reads each
+        // many times): per entry the degree in each parameter, then the total degree
+        let stride = nvars + 1;
+        let mut degs = vec![0u32; rows.len() * ncols * stride];
+        for (k, &i) in rows.iter().enumerate() {
+            for (j, e) in b[i * ncols..(i + 1) * ncols].iter().enumerate() {
+                let at = (k * ncols + j) * stride;
+                degs[at..at + nvars].copy_from_slice(&e.degrees_array()[..nvars]);
+                degs[at + nvars] = e.total_degree();
+            }
+        }
+        let deg_at = |i: usize, j: usize, v: usize| degs[(i * ncols + j) * stride + v];
         let mut dv = vec![0u32; nvars];
         let mut dtot = 0u32;
         let mut coef = BigInt::one();
-        for &i in rows {
-            let mut rowmax = vec![0u32; nvars];
-            let mut rowtot = 0u32;
-            let mut r = BigInt::zero();
-            for e in &b[i * ncols..(i + 1) * ncols] {
-                for (v, d) in e.degrees().into_iter().enumerate() {
-                    rowmax[v] = rowmax[v].max(d);
-                }
-                rowtot = rowtot.max(e.total_degree());
-                r += norm1(e);
+        for (k, &i) in rows.iter().enumerate() {
+            for (v, d) in dv.iter_mut().enumerate() {
+                *d += (0..ncols).map(|j| deg_at(k, j, v)).max().unwrap_or(0);
             }
-            for v in 0..nvars {
-                dv[v] += rowmax[v];
-            }
-            dtot += rowtot;
+            dtot += (0..ncols).map(|j| deg_at(k, j, nvars)).max().unwrap_or(0);
+            let r: BigInt = b[i * ncols..(i + 1) * ncols].iter().map(norm1).sum();
             coef *= r + 1u32;
         }
-        // the assignment bound: every term takes entries at distinct rows and columns
-        let deg_at = |i: usize, j: usize, v: Option<usize>| -> i64 {
-            let e = &b[rows[i] * ncols + j];
-            i64::from(match v {
-                Some(v) => e.deg(v),
-                None => e.total_degree(),
-            })
-        };
+        // the assignment bound: every term takes entries at distinct rows and columns. It
+        // is at most the sum of the row maxima, so when the map i -> i attains that sum
+        // (a dense matrix: every entry of the same degree) it is that sum, no Hungarian run
         if !rows.is_empty() && ncols > 0 {
+            let assign = |d: u32, v: usize| -> u32 {
+                let diag = (rows.len() <= ncols)
+                    .then(|| (0..rows.len()).map(|i| deg_at(i, i, v)).sum::<u32>());
+                if diag == Some(d) {
+                    return d;
+                }
+                d.min(max_assignment(rows.len(), ncols, |i, j| {
+                    i64::from(deg_at(i, j, v))
+                }))
+            };
             for (v, d) in dv.iter_mut().enumerate() {
-                *d = (*d).min(max_assignment(rows.len(), ncols, |i, j| {
-                    deg_at(i, j, Some(v))
-                }));
+                *d = assign(*d, v);
             }
-            dtot = dtot.min(max_assignment(rows.len(), ncols, |i, j| deg_at(i, j, None)));
+            dtot = assign(dtot, nvars);
         }
         Bounds {
             dv,

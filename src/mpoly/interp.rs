@@ -45,6 +45,8 @@ fn reduce(pr: &Prime, c: &BigInt) -> u64 {
 /// The grid: exponent (node index) vectors and whether it is the simplex.
 struct Grid {
     points: Vec<Vec<u32>>,
+    /// The total degree of every point (the simplex only; empty for the box).
+    tot: Vec<u32>,
     simplex: bool,
     sizes: Vec<usize>,
     dtot: u32,
@@ -75,8 +77,14 @@ fn grid(bounds: &Bounds) -> Result<Grid> {
             })
             .collect()
     };
+    let tot = if simplex {
+        points.iter().map(|e| e.iter().sum()).collect()
+    } else {
+        vec![]
+    };
     Ok(Grid {
         points,
+        tot,
         simplex,
         sizes,
         dtot: bounds.dtot,
@@ -101,15 +109,37 @@ pub fn interpolate_zp<F>(
 where
     F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
 {
+    interpolate_zp_capped(nvars, b, bounds, &vec![u32::MAX; nout], shifted, f)
+}
+
+/// [`interpolate_zp`] with a certified total-degree bound per output (`caps[k]` for output
+/// `k`; `caps.len()` outputs): on the simplex grid an output of total degree at most
+/// `caps[k] < D` is interpolated on the lower set $\{e : e_v \le d_v, |e| \le$ `caps[k]`$\}$
+/// only (the coefficients of $\det(xI - B)$: degree $n - k$ for the coefficient of $x^k$ of
+/// a matrix linear in $p$, one third of the work of the full grid for each of them).
+///
+/// # Errors
+/// As [`interpolate_zp`].
+pub fn interpolate_zp_capped<F>(
+    nvars: usize,
+    b: &[MPoly],
+    bounds: &Bounds,
+    caps: &[u32],
+    shifted: bool,
+    f: F,
+) -> Result<Option<Vec<MPoly>>>
+where
+    F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
+{
     if let Some(cert) = &bounds.certified {
-        if let Ok(Some(out)) = interpolate_on(nvars, b, bounds, nout, shifted, &f)
+        if let Ok(Some(out)) = interpolate_on(nvars, b, bounds, caps, shifted, &f)
             && super::probe::verify(b, &out, &f)
         {
             return Ok(Some(out));
         }
-        return interpolate_on(nvars, b, cert, nout, shifted, &f);
+        return interpolate_on(nvars, b, cert, caps, shifted, &f);
     }
-    interpolate_on(nvars, b, bounds, nout, shifted, &f)
+    interpolate_on(nvars, b, bounds, caps, shifted, &f)
 }
 
 /// Largest number of residues (grid points times outputs) one prime may hold (64 MB).
@@ -120,13 +150,14 @@ fn interpolate_on<F>(
     nvars: usize,
     b: &[MPoly],
     bounds: &Bounds,
-    nout: usize,
+    caps: &[u32],
     shifted: bool,
     f: &F,
 ) -> Result<Option<Vec<MPoly>>>
 where
     F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
 {
+    let nout = caps.len();
     if grid_points(bounds).saturating_mul(nout.max(1)) > MAX_VALUES {
         return Err(Error::Limit(
             "matrix over Q(p): interpolation needs more than 64 MB per prime".into(),
@@ -156,7 +187,7 @@ where
                     }
                 })
                 .collect();
-            if let Some(v) = images_mod_p(pr, (&g, &lines), &ev, &shifts, nout, f) {
+            if let Some(v) = images_mod_p(pr, (&g, &lines), &ev, &shifts, caps, f) {
                 done = Some(v);
                 break;
             }
@@ -242,16 +273,26 @@ fn images_mod_p<F>(
     (g, lines): (&Grid, &[Vec<Vec<usize>>]),
     ev: &Evaluator,
     shifts: &[u64],
-    nout: usize,
+    caps: &[u32],
     f: &F,
 ) -> Option<Vec<Vec<u64>>>
 where
     F: Fn(&Prime, &mut [u64]) -> Option<Vec<u64>>,
 {
-    let red: Vec<Vec<(usize, u64)>> = ev
+    let nout = caps.len();
+    // each coefficient with its Shoup quotient: one entry is a dot product of fixed
+    // coefficients with the monomials' values at the point
+    let red: Vec<Vec<(usize, u64, u64)>> = ev
         .terms
         .iter()
-        .map(|e| e.iter().map(|&(j, c)| (j, reduce(pr, c))).collect())
+        .map(|e| {
+            e.iter()
+                .map(|&(j, c)| {
+                    let r = reduce(pr, c);
+                    (j, r, pr.shoup(r))
+                })
+                .collect()
+        })
         .collect();
     let maxs = (g.dtot as usize + 1).max(g.sizes.iter().copied().max().unwrap_or(1));
     // pw[v][t][e] = (shift_v + t)^e
@@ -288,7 +329,7 @@ where
         for (slot, e) in a.iter_mut().zip(&red) {
             *slot = e
                 .iter()
-                .fold(0u64, |s, &(j, c)| pr.add(s, pr.mul(c, mv[j])));
+                .fold(0u64, |s, &(j, c, cs)| pr.add(s, pr.mul_shoup(c, cs, mv[j])));
         }
         let out = f(pr, &mut a)?;
         for (k, c) in out.into_iter().enumerate() {
@@ -298,8 +339,19 @@ where
     if g.simplex {
         let invs = small_inverses(pr, g.dtot as usize + 1);
         let mut buf = Vec::new();
-        for v in vals.iter_mut() {
-            interpolate_lower_set(pr, v, lines, &invs, shifts, &mut buf);
+        for (v, &cap) in vals.iter_mut().zip(caps) {
+            if cap < g.dtot {
+                // the sub-lower-set |e| <= cap (see interpolate_lower_set); the coefficients
+                // outside it are zero
+                interpolate_lower_set(pr, v, (lines, &g.tot, cap), &invs, shifts, &mut buf);
+                for (x, &t) in v.iter_mut().zip(&g.tot) {
+                    if t > cap {
+                        *x = 0;
+                    }
+                }
+            } else {
+                interpolate_lower_set(pr, v, (lines, &g.tot, u32::MAX), &invs, shifts, &mut buf);
+            }
         }
     } else {
         for v in vals.iter_mut() {
@@ -365,16 +417,38 @@ fn lower_set_lines(points: &[Vec<u32>], nvars: usize) -> Vec<Vec<Vec<usize>>> {
 /// along every axis in turn (on a lower set the Newton basis $\prod_v \prod_{t < e_v}
 /// (x_v - c_v - t)$ is triangular axis by axis), then the change to monomials along every
 /// axis in turn. Values in, coefficients out (at the index of their exponent vector).
+///
+/// With a cap $c$ (`tot[i]` the total degree of point `i`) only the sub-lower-set
+/// $|e| \le c$ is used: each line cut to its points of total degree at most $c$ (a prefix,
+/// the total degree grows by one along a line). Divided differences of a prefix are the
+/// prefix of the line's, and for a polynomial supported on the sub-lower-set the Newton
+/// (and monomial) coefficients outside it are zero at every stage, so the values inside are
+/// those of the whole computation; the caller sets the ones outside to zero.
 fn interpolate_lower_set(
     pr: &Prime,
     vals: &mut [u64],
-    lines: &[Vec<Vec<usize>>],
+    (lines, tot, cap): (&[Vec<Vec<usize>>], &[u32], u32),
     invs: &[u64],
     shifts: &[u64],
     buf: &mut Vec<u64>,
 ) {
+    let cut = |line: &'_ [usize]| -> usize {
+        if cap == u32::MAX {
+            return line.len();
+        }
+        let t0 = tot[line[0]];
+        if t0 > cap {
+            0
+        } else {
+            line.len().min((cap - t0) as usize + 1)
+        }
+    };
     for axis in lines {
         for line in axis {
+            let line = &line[..cut(line)];
+            if line.len() < 2 {
+                continue;
+            }
             buf.clear();
             buf.extend(line.iter().map(|&i| vals[i]));
             let m = buf.len();
@@ -388,11 +462,16 @@ fn interpolate_lower_set(
             }
         }
     }
+    let mut scratch = Vec::new();
     for (v, axis) in lines.iter().enumerate() {
         for line in axis {
+            let line = &line[..cut(line)];
+            if line.len() < 2 {
+                continue;
+            }
             buf.clear();
             buf.extend(line.iter().map(|&i| vals[i]));
-            newton_to_monomial(pr, buf, shifts[v]);
+            newton_to_monomial_in(pr, buf, shifts[v], &mut scratch);
             for (&i, &x) in line.iter().zip(buf.iter()) {
                 vals[i] = x;
             }
@@ -402,9 +481,15 @@ fn interpolate_lower_set(
 
 /// Newton coefficients at the nodes $c, c + 1, \dots$ to monomial coefficients, in place.
 fn newton_to_monomial(pr: &Prime, c: &mut [u64], shift: u64) {
+    newton_to_monomial_in(pr, c, shift, &mut Vec::new());
+}
+
+/// [`newton_to_monomial`] with a scratch buffer (no allocation per line).
+fn newton_to_monomial_in(pr: &Prime, c: &mut [u64], shift: u64, p: &mut Vec<u64>) {
     let m = c.len();
     // p = c[m-1]; p = p*(x - c - i) + c[i]
-    let mut p = vec![0u64; m];
+    p.clear();
+    p.resize(m, 0);
     p[0] = c[m - 1];
     for (deg, i) in (0..m - 1).rev().enumerate() {
         let ni = pr.neg(pr.add(shift, i as u64 % pr.p));
@@ -415,7 +500,7 @@ fn newton_to_monomial(pr: &Prime, c: &mut [u64], shift: u64) {
         }
         p[0] = pr.add(p[0], c[i]);
     }
-    c.copy_from_slice(&p);
+    c.copy_from_slice(p);
 }
 
 /// Replaces values on the grid $\{0..s_0-1\} \times \dots$ (last axis fastest; node $t$ of

@@ -109,12 +109,135 @@ fn parse_fraction_in(text: &str, vars: &[&str], allow_div: bool) -> Result<(MPol
             msg: format!("more than {MAX_VARS} variables"),
         });
     }
-    let (mut num, mut den) = evaluate(&Fractions { vars, allow_div }, text, Dialect::POLY)?;
+    let alg = Fractions { vars, allow_div };
+    if let Some(num) = plain_polynomial(text, vars, alg.lim()) {
+        return Ok((num, MPoly::one(vars.len())));
+    }
+    let (mut num, mut den) = evaluate(&alg, text, Dialect::POLY)?;
     if den.lc().is_negative() {
         num = num.neg();
         den = den.neg();
     }
     Ok((num, den))
+}
+
+/// The fast path of [`parse_fraction_in`] for the texts most files hold: a sum of terms
+/// `[-]c`, `[-][c*]x^e*y*...` (integer `c` of at most 18 digits, variables of `vars`,
+/// explicit `*`, exponents at most `lim`), such as `-2 - 1*a + 2*b + 0*c`. Read in one pass
+/// into terms, no tree and no polynomial product per operation. `None` for anything else
+/// (parentheses, `/`, decimals, juxtaposition, `**`, a repeated sign, an unknown or reserved
+/// name, an error): the general reader then gives the value or the error. Where it answers,
+/// the value is the one of the general reader (the same grammar, read left to right: a sign
+/// before a term applies to the whole product, below `^`), and the general reader would not
+/// fail (every degree is at most `lim`, as its checks require).
+fn plain_polynomial(text: &str, vars: &[&str], lim: u32) -> Option<MPoly> {
+    let s = text.as_bytes();
+    let n = vars.len();
+    let mut i = 0usize;
+    let skip = |i: &mut usize| {
+        while *i < s.len() && matches!(s[*i], b' ' | b'\t') {
+            *i += 1;
+        }
+    };
+    // digits at `i` (no leading zero unless alone, at most 18, not followed by a letter,
+    // digit, `_` or `.`): the value and the end
+    let integer = |i: usize| -> Option<(i64, usize)> {
+        let mut j = i;
+        while j < s.len() && s[j].is_ascii_digit() {
+            j += 1;
+        }
+        let len = j - i;
+        if len == 0 || len > 18 || (len > 1 && s[i] == b'0') {
+            return None;
+        }
+        if j < s.len() && (s[j].is_ascii_alphanumeric() || matches!(s[j], b'_' | b'.')) {
+            return None;
+        }
+        std::str::from_utf8(&s[i..j])
+            .ok()?
+            .parse()
+            .ok()
+            .map(|v| (v, j))
+    };
+    let mut terms: Vec<(u128, BigInt)> = Vec::new();
+    skip(&mut i);
+    let mut neg = false;
+    if i < s.len() && s[i] == b'-' {
+        neg = true;
+        i += 1;
+        skip(&mut i);
+    }
+    loop {
+        // one term: a number, or [number '*'] factor ('*' factor)*
+        let mut coef = 1i64;
+        let mut exps = [0u32; super::MAX_VARS];
+        let mut expect_factor = true;
+        if i < s.len() && s[i].is_ascii_digit() {
+            let (v, j) = integer(i)?;
+            coef = v;
+            i = j;
+            skip(&mut i);
+            if i < s.len() && s[i] == b'*' {
+                i += 1;
+                skip(&mut i);
+            } else {
+                expect_factor = false;
+            }
+        }
+        while expect_factor {
+            let start = i;
+            if i >= s.len() || !(s[i].is_ascii_alphabetic() || s[i] == b'_') {
+                return None;
+            }
+            i = identifier_end(s, i);
+            let name = std::str::from_utf8(&s[start..i]).ok()?;
+            if crate::field::expr::reserved_meaning(name).is_some() {
+                return None;
+            }
+            let v = vars.iter().position(|x| *x == name)?;
+            skip(&mut i);
+            let mut e = 1u32;
+            if i < s.len() && s[i] == b'^' {
+                i += 1;
+                skip(&mut i);
+                let (x, j) = integer(i)?;
+                e = u32::try_from(x).ok().filter(|&x| x <= lim)?;
+                i = j;
+                skip(&mut i);
+                if i < s.len() && s[i] == b'^' {
+                    return None;
+                }
+            }
+            exps[v] = exps[v].checked_add(e).filter(|&x| x <= lim)?;
+            if i < s.len() && s[i] == b'*' {
+                i += 1;
+                if i < s.len() && s[i] == b'*' {
+                    return None;
+                }
+                skip(&mut i);
+            } else {
+                expect_factor = false;
+            }
+        }
+        terms.push((
+            super::pack(n, &exps[..n]),
+            BigInt::from(if neg { -coef } else { coef }),
+        ));
+        if i >= s.len() {
+            break;
+        }
+        neg = match s[i] {
+            b'+' => false,
+            b'-' => true,
+            _ => return None,
+        };
+        i += 1;
+        skip(&mut i);
+        if i < s.len() && matches!(s[i], b'+' | b'-') {
+            return None;
+        }
+    }
+    Some(MPoly::from_terms(n, terms))
 }
 
 type Frac = (MPoly, MPoly);
@@ -281,6 +404,96 @@ fn binomial_bound(n: u64, e: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The fast path answers exactly where the general reader gives the same polynomial
+    /// (and a denominator 1), and steps aside for everything else.
+    #[test]
+    fn plain_polynomials_agree_with_the_general_reader() {
+        let vars = ["a", "b", "c", "x2", "_k"];
+        let general = |t: &str| {
+            evaluate(
+                &Fractions {
+                    vars: &vars,
+                    allow_div: true,
+                },
+                t,
+                Dialect::POLY,
+            )
+        };
+        let lim = Fractions {
+            vars: &vars,
+            allow_div: true,
+        }
+        .lim();
+        let fast = [
+            "-2 - 1*a + 2*b + 0*c",
+            "0 - 2*a - 3*b - 2*c",
+            "  5 +2*a+ 5*b -1*c ",
+            "a",
+            "-a",
+            "0",
+            "-0",
+            "7",
+            "a*b*a^2 - 3*c^0 + x2^3*_k",
+            "a ^ 2 * b",
+            "123456789012345678*a - 999999999999999999",
+            "a^10000",
+            "\t3*a\t",
+        ];
+        for t in fast {
+            let got = plain_polynomial(t, &vars, lim).unwrap_or_else(|| panic!("{t}"));
+            let (num, den) = general(t).unwrap();
+            assert!(den.is_one(), "{t}");
+            assert_eq!(got, num, "{t}");
+        }
+        let other = [
+            "",
+            "-",
+            "a -",
+            "+a",
+            "a + -b",
+            "a - -b",
+            "--a",
+            "2a",
+            "2 a",
+            "a b",
+            "2.5*a",
+            "1e3*a",
+            "2e",
+            "02*a",
+            "a^02",
+            "a**2",
+            "a^-1",
+            "a^2^3",
+            "-2^2",
+            "(a + b)",
+            "a/2",
+            "2*3",
+            "a*2",
+            "a*-b",
+            "d",
+            "i",
+            "sqrt(a)",
+            "a^10001",
+            "a^5000*a^5001",
+            "1234567890123456789*a",
+            "a^2.5",
+            "a^2b",
+            "a +",
+            "* a",
+            "a * ",
+            "aé",
+        ];
+        for t in other {
+            assert!(plain_polynomial(t, &vars, lim).is_none(), "{t}");
+        }
+        // where the general reader answers too, the values agree
+        assert_eq!(
+            parse_fraction_in("a - -b", &vars, true).unwrap().0,
+            parse_fraction_in("a + b", &vars, true).unwrap().0
+        );
+    }
+
     #[test]
     fn examples() {
         let (v, f) = parse_mpoly("m*u^2 - 3*cr").unwrap();

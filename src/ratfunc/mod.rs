@@ -369,6 +369,10 @@ fn canonical(num: MPoly, den: MPoly) -> RatFunc {
             den: MPoly::one(n),
         };
     }
+    if den.is_one() {
+        // gcd(num, 1) = 1 and the denominator is positive: canonical as it is
+        return RatFunc { num, den };
+    }
     let g = gcd(&num, &den);
     let (mut a, mut b) = if g.is_one() {
         (num, den)

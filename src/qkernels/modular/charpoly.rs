@@ -58,15 +58,29 @@ pub fn hessenberg_mod_p(pr: &Prime, n: usize, a: &mut [u64]) {
 
 /// Characteristic polynomial of an upper Hessenberg `h` modulo `p`.
 pub fn charpoly_hessenberg_mod_p(pr: &Prime, n: usize, h: &[u64]) -> Vec<u64> {
-    // polys[m] = charpoly of the leading m x m block, low degree first, length m + 1
-    let mut polys: Vec<Vec<u64>> = Vec::with_capacity(n + 1);
-    polys.push(vec![1 % pr.p]);
+    // p_m = charpoly of the leading m x m block (low degree first, length m + 1), all in one
+    // buffer at offset m (m + 1) / 2 (one allocation, not one per m: this runs once per
+    // evaluation point of the Q(p) kernels)
+    let off = |m: usize| m * (m + 1) / 2;
+    let mut buf = vec![0u64; off(n + 1)];
+    buf[0] = 1 % pr.p;
+    // y -= f x: Shoup's products on long rows, plain ones on the short rows of small n
+    let axpy_neg = |y: &mut [u64], x: &[u64], f: u64| {
+        if x.len() >= 16 {
+            pr.axpy_neg(y, x, f);
+        } else {
+            for (yj, &xj) in y.iter_mut().zip(x) {
+                *yj = pr.sub(*yj, pr.mul(f, xj));
+            }
+        }
+    };
     for m in 0..n {
+        let (done, rest) = buf.split_at_mut(off(m + 1));
+        let next = &mut rest[..m + 2];
         // (x - h_mm) p_m
-        let prev = &polys[m];
-        let mut next = vec![0u64; m + 2];
+        let prev = &done[off(m)..];
         next[1..].copy_from_slice(prev);
-        pr.axpy_neg(&mut next[..m + 1], prev, h[m * n + m]);
+        axpy_neg(&mut next[..m + 1], prev, h[m * n + m]);
         // - sum_{i<m} h_{i,m} (prod_{j=i+1}^{m} h_{j,j-1}) p_i
         let mut t = 1u64;
         for i in (0..m).rev() {
@@ -75,11 +89,10 @@ pub fn charpoly_hessenberg_mod_p(pr: &Prime, n: usize, h: &[u64]) -> Vec<u64> {
                 break;
             }
             let c = pr.mul(h[i * n + m], t);
-            pr.axpy_neg(&mut next[..i + 1], &polys[i], c);
+            axpy_neg(&mut next[..i + 1], &done[off(i)..off(i) + i + 1], c);
         }
-        polys.push(next);
     }
-    polys.pop().expect("at least one polynomial")
+    buf.split_off(off(n))
 }
 
 /// $\log_2$ bound of $\max_k |c_k|$ over the coefficients of $\det(xI - B)$.

@@ -51,7 +51,7 @@ use crate::field::KernelTable;
 use crate::mpoly::MPoly;
 use crate::mpoly::gcd::lcm;
 use crate::qkernels::modular::charpoly::charpoly_mod_p;
-use interp::{Bounds, interpolate_zp};
+use interp::{Bounds, interpolate_zp, interpolate_zp_capped};
 
 /// The kernel table of $\mathbb{Q}(p)$.
 pub struct QpKernels;
@@ -71,8 +71,30 @@ pub fn charpoly_zp(nvars: usize, n: usize, b: &[MPoly]) -> Result<Vec<MPoly>> {
     assert_eq!(b.len(), n * n);
     let map = |pr: &crate::qkernels::prime::Prime, a: &mut [u64]| Some(charpoly_mod_p(pr, n, a));
     let bounds = Bounds::of_square(nvars, n, b).probe(b, &map);
-    let out = interpolate_zp(nvars, b, &bounds, n + 1, false, map)?;
+    let out = interpolate_zp_capped(nvars, b, &bounds, &charpoly_caps(n, b), false, map)?;
     Ok(out.expect("the charpoly map is defined at every point"))
+}
+
+/// Total-degree bounds of the coefficients of $\det(xI - B)$, low degree first: the
+/// coefficient of $x^k$ is a sum of principal minors of size $n - k$, each term a product
+/// of entries from $n - k$ distinct rows (and columns), so its degree is at most the sum of
+/// the $n - k$ largest row (column) maxima of the total degrees.
+fn charpoly_caps(n: usize, b: &[MPoly]) -> Vec<u32> {
+    let largest_sums = |deg: &dyn Fn(usize, usize) -> u32| -> Vec<u32> {
+        let mut m: Vec<u32> = (0..n)
+            .map(|i| (0..n).map(|j| deg(i, j)).max().unwrap_or(0))
+            .collect();
+        m.sort_unstable_by(|x, y| y.cmp(x));
+        let mut acc = vec![0u32];
+        for d in m {
+            acc.push(acc.last().copied().unwrap_or(0).saturating_add(d));
+        }
+        acc
+    };
+    let tdeg: Vec<u32> = b.iter().map(MPoly::total_degree).collect();
+    let rows = largest_sums(&|i, j| tdeg[i * n + j]);
+    let cols = largest_sums(&|i, j| tdeg[j * n + i]);
+    (0..=n).map(|k| rows[n - k].min(cols[n - k])).collect()
 }
 
 /// $\det B$ for a square `n x n` matrix over $\mathbb{Z}\lbrack p\rbrack$ (see [`interp`]).

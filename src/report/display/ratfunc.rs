@@ -104,13 +104,20 @@ fn best(vars: &[String], p: &MPoly, latex: bool) -> String {
 /// Text (`latex = false`) or LaTeX display of `a`.
 fn fmt(vars: &[String], a: &RatFunc, latex: bool) -> String {
     let neg = a.num().lc().is_negative();
-    let abs = if neg { a.num().neg() } else { a.num().clone() };
-    let num_abs = best(vars, &abs, latex);
     if a.den().is_one() {
         if !neg {
-            return num_abs;
+            return best(vars, a.num(), latex);
         }
+        // Expanded, `-p` is `direct`: the expanded |p| (its signs flipped: at most one
+        // character shorter) as `-(|p|)` or `-|p|` (one term) is never shorter. Only a
+        // factored |p| can be, so |p| is rendered only when it has one.
         let direct = render(vars, a.num(), latex);
+        let abs = a.num().neg();
+        let Some(f) = factored(vars, &abs, latex) else {
+            return direct;
+        };
+        let e = render(vars, &abs, latex);
+        let num_abs = if f.len() <= e.len() { f } else { e };
         let factored = if is_sum(&num_abs) {
             format!("-({num_abs})")
         } else {
@@ -122,6 +129,8 @@ fn fmt(vars: &[String], a: &RatFunc, latex: bool) -> String {
             direct
         };
     }
+    let abs = if neg { a.num().neg() } else { a.num().clone() };
+    let num_abs = best(vars, &abs, latex);
     let den = best(vars, a.den(), latex);
     let sign = if neg { "-" } else { "" };
     if latex {
