@@ -8,12 +8,10 @@ use crate::io::GroundField;
 use crate::jordan::{JordanForm, jordan_over};
 use crate::matrix::Matrix;
 use crate::pencil::{KroneckerStructure, PencilStructure};
-use crate::poly::Poly;
 use crate::realization::{ControllabilityStructure, DescriptorControllability, DescriptorMinimal};
 use crate::report::{Report, Value};
 use crate::structure::descriptor_zeros::DescriptorZeros;
 use crate::system::discrete::stability::Domain;
-use crate::system::transfer::TransferMatrix;
 
 fn ints(v: &[usize]) -> Value {
     Value::List(v.iter().map(|&x| Value::Int(x as i64)).collect())
@@ -232,94 +230,4 @@ pub fn descriptor_zeros_report<K: GroundField>(
         .with("right_kronecker_indices", ints(&k.right_indices))
         .with("left_kronecker_indices", ints(&k.left_indices))
         .bool("verified", k.verified))
-}
-
-/// The `transfer_matrix` and `zpk` lists of a `tf` report (rows of entries) in the
-/// variable `var`, the latter with the field's zero-pole-gain display `zpk`.
-///
-/// # Errors
-/// From `zpk` (a factorization).
-pub(super) fn transfer_lists<K: Field>(
-    g: &TransferMatrix<K>,
-    var: &str,
-    zpk: impl Fn(&Poly<K>, &Poly<K>, &str) -> Result<String>,
-) -> Result<(Vec<Value>, Vec<Value>)> {
-    let zpk = g
-        .entries
-        .iter()
-        .map(|row| {
-            Ok(Value::List(
-                row.iter()
-                    .map(|f| zpk(&f.num, &f.den, var).map(Value::Str))
-                    .collect::<Result<Vec<_>>>()?,
-            ))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let tm = g
-        .to_strings_var(var)
-        .into_iter()
-        .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
-        .collect();
-    Ok((tm, zpk))
-}
-
-/// One line of zero-pole-gain text that reads one way only: the gain (in parentheses when it
-/// is a fraction or a sum and factors follow), the numerator factors, and `/` followed by the
-/// denominator in parentheses when it has more than one factor: `(-1/1500) / (s (s + 8/3))`,
-/// `10 (s + 1) / (s (s^2 + 2*s + 10))`, `2 / (s + 1)^2`. A factor that is a single symbol
-/// (`s`) is written bare.
-pub(super) fn zpk_text(gain: &str, num: &[(String, usize)], den: &[(String, usize)]) -> String {
-    let factor = |(f, e): &(String, usize)| {
-        let f = if f.chars().all(|c| c.is_alphanumeric()) {
-            f.clone()
-        } else {
-            format!("({f})")
-        };
-        if *e > 1 { format!("{f}^{e}") } else { f }
-    };
-    let product = |fs: &[(String, usize)]| fs.iter().map(factor).collect::<Vec<_>>().join(" ");
-    let compound = gain.contains(['/', ' ', '+']) || gain.get(1..).unwrap_or("").contains('-');
-    let mut s = if compound && !(num.is_empty() && den.is_empty()) {
-        format!("({gain})")
-    } else {
-        gain.to_string()
-    };
-    if !num.is_empty() {
-        s = format!("{s} {}", product(num));
-    }
-    if !den.is_empty() {
-        let d = product(den);
-        s = if den.len() > 1 {
-            format!("{s} / ({d})")
-        } else {
-            format!("{s} / {d}")
-        };
-    }
-    s
-}
-
-#[cfg(test)]
-mod zpk_tests {
-    use super::zpk_text;
-    fn f(s: &str, e: usize) -> (String, usize) {
-        (s.to_string(), e)
-    }
-    #[test]
-    fn zpk_text_reads_one_way() {
-        assert_eq!(
-            zpk_text("-1/1500", &[], &[f("s", 1), f("s + 8/3", 1)]),
-            "(-1/1500) / (s (s + 8/3))"
-        );
-        assert_eq!(
-            zpk_text("10", &[f("s + 1", 1)], &[f("s", 1), f("s^2 + 2*s + 10", 1)]),
-            "10 (s + 1) / (s (s^2 + 2*s + 10))"
-        );
-        assert_eq!(zpk_text("2", &[], &[f("s + 1", 2)]), "2 / (s + 1)^2");
-        assert_eq!(zpk_text("-3", &[f("s", 2)], &[]), "-3 s^2");
-        assert_eq!(zpk_text("1/2", &[], &[]), "1/2");
-        assert_eq!(
-            zpk_text("1 + sqrt(2)", &[f("s - 1", 1)], &[]),
-            "(1 + sqrt(2)) (s - 1)"
-        );
-    }
 }

@@ -129,7 +129,7 @@ pub fn root_items<K: GroundField>(p: &Poly<K>, var: &str) -> Result<(Vec<Value>,
 
 /// Zero-pole-gain display of one rational function over the field in the variable `var`:
 /// `k (factors) / (factors)` with the monic irreducible factors over the field
-/// ([`GroundField::factors`]), assembled by [`super::pencil::zpk_text`]; a field that does
+/// ([`GroundField::factors`]), assembled by [`zpk_text`]; a field that does
 /// not factor keeps the polynomials whole.
 ///
 /// # Errors
@@ -152,11 +152,7 @@ pub fn zpk_string<K: GroundField>(num: &Poly<K>, den: &Poly<K>, var: &str) -> Re
             None => vec![(p.monic().to_string_var(var), 1)],
         })
     };
-    Ok(super::pencil::zpk_text(
-        &gain,
-        &factors(num)?,
-        &factors(den)?,
-    ))
+    Ok(zpk_text(&gain, &factors(num)?, &factors(den)?))
 }
 
 /// `tf` over a numeric ground field, in the variable of `domain`: `field`, `variable`,
@@ -182,7 +178,7 @@ pub fn tf_report<K: GroundField>(
     let (poles, poles_ok) = root_items(&pole_poly, var)?;
     let zeros = crate::structure::descriptor_zeros::descriptor_zeros(sys)?;
     let (tzeros, zeros_ok) = root_items(&zeros.polynomial, var)?;
-    let (tm, zpk) = super::pencil::transfer_lists(g, var, zpk_string::<K>)?;
+    let (tm, zpk) = transfer_lists(g, var, zpk_string::<K>)?;
     let ints = |v: &[usize]| Value::List(v.iter().map(|&x| Value::Int(x as i64)).collect());
     let mut rep = Report::titled("transfer matrix")
         .str("field", k.to_string())
@@ -208,4 +204,94 @@ pub fn tf_report<K: GroundField>(
 
 fn g_field<K: Field>(r: &TransferRealization<K>) -> K {
     r.minimal.system.a.field().clone()
+}
+
+/// The `transfer_matrix` and `zpk` lists of a `tf` report (rows of entries) in the
+/// variable `var`, the latter with the field's zero-pole-gain display `zpk`.
+///
+/// # Errors
+/// From `zpk` (a factorization).
+fn transfer_lists<K: Field>(
+    g: &TransferMatrix<K>,
+    var: &str,
+    zpk: impl Fn(&Poly<K>, &Poly<K>, &str) -> Result<String>,
+) -> Result<(Vec<Value>, Vec<Value>)> {
+    let zpk = g
+        .entries
+        .iter()
+        .map(|row| {
+            Ok(Value::List(
+                row.iter()
+                    .map(|f| zpk(&f.num, &f.den, var).map(Value::Str))
+                    .collect::<Result<Vec<_>>>()?,
+            ))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let tm = g
+        .to_strings_var(var)
+        .into_iter()
+        .map(|row| Value::List(row.into_iter().map(Value::Str).collect()))
+        .collect();
+    Ok((tm, zpk))
+}
+
+/// One line of zero-pole-gain text that reads one way only: the gain (in parentheses when it
+/// is a fraction or a sum and factors follow), the numerator factors, and `/` followed by the
+/// denominator in parentheses when it has more than one factor: `(-1/1500) / (s (s + 8/3))`,
+/// `10 (s + 1) / (s (s^2 + 2*s + 10))`, `2 / (s + 1)^2`. A factor that is a single symbol
+/// (`s`) is written bare.
+fn zpk_text(gain: &str, num: &[(String, usize)], den: &[(String, usize)]) -> String {
+    let factor = |(f, e): &(String, usize)| {
+        let f = if f.chars().all(|c| c.is_alphanumeric()) {
+            f.clone()
+        } else {
+            format!("({f})")
+        };
+        if *e > 1 { format!("{f}^{e}") } else { f }
+    };
+    let product = |fs: &[(String, usize)]| fs.iter().map(factor).collect::<Vec<_>>().join(" ");
+    let compound = gain.contains(['/', ' ', '+']) || gain.get(1..).unwrap_or("").contains('-');
+    let mut s = if compound && !(num.is_empty() && den.is_empty()) {
+        format!("({gain})")
+    } else {
+        gain.to_string()
+    };
+    if !num.is_empty() {
+        s = format!("{s} {}", product(num));
+    }
+    if !den.is_empty() {
+        let d = product(den);
+        s = if den.len() > 1 {
+            format!("{s} / ({d})")
+        } else {
+            format!("{s} / {d}")
+        };
+    }
+    s
+}
+
+#[cfg(test)]
+mod zpk_tests {
+    use super::zpk_text;
+    fn f(s: &str, e: usize) -> (String, usize) {
+        (s.to_string(), e)
+    }
+    #[test]
+    fn zpk_text_reads_one_way() {
+        assert_eq!(
+            zpk_text("-1/1500", &[], &[f("s", 1), f("s + 8/3", 1)]),
+            "(-1/1500) / (s (s + 8/3))"
+        );
+        assert_eq!(
+            zpk_text("10", &[f("s + 1", 1)], &[f("s", 1), f("s^2 + 2*s + 10", 1)]),
+            "10 (s + 1) / (s (s^2 + 2*s + 10))"
+        );
+        assert_eq!(zpk_text("2", &[], &[f("s + 1", 2)]), "2 / (s + 1)^2");
+        assert_eq!(zpk_text("-3", &[f("s", 2)], &[]), "-3 s^2");
+        assert_eq!(zpk_text("1/2", &[], &[]), "1/2");
+        assert_eq!(
+            zpk_text("1 + sqrt(2)", &[f("s - 1", 1)], &[]),
+            "(1 + sqrt(2)) (s - 1)"
+        );
+    }
 }
