@@ -27,6 +27,33 @@ fn approx(a: (f64, f64)) -> Value {
     Value::List(vec![Value::Float(a.0), Value::Float(a.1)])
 }
 
+/// The root of an irreducible factor as a report `value`: exact for a linear factor, else
+/// `a root of f` (in `var`).
+fn root_value<K: Field>(f: &Poly<K>, var: &str) -> Result<String> {
+    if f.deg() != 1 {
+        return Ok(format!("a root of {}", f.to_string_var(var)));
+    }
+    let k = f.field();
+    let root = k
+        .div(&f.coeff(0), &f.coeff(1))
+        .ok_or(Error::DivisionByZero)?;
+    Ok(k.fmt_elem(&k.neg(&root)))
+}
+
+/// Whether $\operatorname{lc}(p) \prod f^e = p$ for the factors `fs`.
+fn is_product<'a, K: Field + 'a>(
+    p: &Poly<K>,
+    fs: impl IntoIterator<Item = (&'a Poly<K>, usize)>,
+) -> bool {
+    let mut prod = Poly::new(p.field().clone(), vec![p.lc()]);
+    for (f, e) in fs {
+        for _ in 0..e {
+            prod = prod.mul(f);
+        }
+    }
+    prod == *p
+}
+
 /// One report item per irreducible factor $f$ over the field of `p`: `factor` (monic, in
 /// `var`), `degree`, `minpoly` (over $\mathbb{Q}$, of the factor's roots), `value` and
 /// `approx` (the exact root of a linear factor; `a root of f` otherwise, with `roots`: each
@@ -39,45 +66,36 @@ pub fn factor_items<F: NumericField>(p: &Poly<F>, var: &str) -> Result<(Vec<Valu
     if p.is_zero() || p.deg() == 0 {
         return Ok((vec![], true));
     }
-    let k = p.field().clone();
-    let monic = p.monic();
-    let mut prod = Poly::new(k.clone(), vec![p.lc()]);
+    let factors = F::eigen_factors(&p.monic())?;
     let mut items = vec![];
-    for (f, e, minpoly, roots) in F::eigen_factors(&monic)? {
-        for _ in 0..e {
-            prod = prod.mul(&f);
-        }
+    for (f, e, minpoly, roots) in &factors {
         let mut r = Report::new()
             .str("factor", f.to_string_var(var))
             .int("degree", f.deg())
-            .str("minpoly", minpoly.to_string());
+            .str("minpoly", minpoly.to_string())
+            .str("value", root_value(f, var)?);
         if f.deg() == 1 {
-            let root = k.neg(
-                &k.div(&f.coeff(0), &f.coeff(1))
-                    .ok_or(Error::DivisionByZero)?,
-            );
             let a = roots.first().map_or((f64::NAN, f64::NAN), |z| z.1);
-            r = r.str("value", k.fmt_elem(&root)).with("approx", approx(a));
+            r = r.with("approx", approx(a));
         } else {
-            r = r
-                .str("value", format!("a root of {}", f.to_string_var(var)))
-                .list(
-                    "roots",
-                    roots
-                        .iter()
-                        .map(|(z, a)| {
-                            Value::Obj(
-                                Report::new()
-                                    .str("value", z.value_string())
-                                    .with("approx", approx(*a)),
-                            )
-                        })
-                        .collect(),
-                );
+            r = r.list(
+                "roots",
+                roots
+                    .iter()
+                    .map(|(z, a)| {
+                        Value::Obj(
+                            Report::new()
+                                .str("value", z.value_string())
+                                .with("approx", approx(*a)),
+                        )
+                    })
+                    .collect(),
+            );
         }
-        items.push(Value::Obj(r.int("algebraic_multiplicity", e)));
+        items.push(Value::Obj(r.int("algebraic_multiplicity", *e)));
     }
-    Ok((items, prod == *p))
+    let ok = is_product(p, factors.iter().map(|(f, e, _, _)| (f, *e)));
+    Ok((items, ok))
 }
 
 /// The roots of `p` as report items: over a numeric field [`factor_items`]; over
@@ -95,36 +113,21 @@ pub fn root_items<K: GroundField>(p: &Poly<K>, var: &str) -> Result<(Vec<Value>,
     if p.is_zero() || p.deg() == 0 {
         return Ok((vec![], true));
     }
-    let k = p.field().clone();
     let fs = match K::factors(p) {
         Some(fs) => fs?,
         None => vec![(p.monic(), 1)],
     };
-    let mut prod = Poly::new(k.clone(), vec![p.lc()]);
     let mut items = vec![];
     for (f, e) in &fs {
-        for _ in 0..*e {
-            prod = prod.mul(f);
-        }
-        let value = if f.deg() == 1 {
-            k.fmt_elem(
-                &k.neg(
-                    &k.div(&f.coeff(0), &f.coeff(1))
-                        .ok_or(Error::DivisionByZero)?,
-                ),
-            )
-        } else {
-            format!("a root of {}", f.to_string_var(var))
-        };
         items.push(Value::Obj(
             Report::new()
                 .str("factor", f.to_string_var(var))
                 .int("degree", f.deg())
-                .str("value", value)
+                .str("value", root_value(f, var)?)
                 .int("algebraic_multiplicity", *e),
         ));
     }
-    Ok((items, prod == *p))
+    Ok((items, is_product(p, fs.iter().map(|(f, e)| (f, *e)))))
 }
 
 /// Zero-pole-gain display of one rational function over the field in the variable `var`:
@@ -172,7 +175,7 @@ pub fn tf_report<K: GroundField>(
 ) -> Result<Report> {
     let sys = &r.minimal.system;
     let var = domain.var();
-    let k = g_field(r);
+    let k = r.minimal.system.a.field().clone();
     let nf = r.minimal.finite_order;
     let pole_poly = sys.a.submatrix(0, nf, 0, nf).charpoly()?;
     let (poles, poles_ok) = root_items(&pole_poly, var)?;
@@ -200,10 +203,6 @@ pub fn tf_report<K: GroundField>(
         "verified",
         r.verified && zeros.pencil.verified && poles_ok && zeros_ok && markov.unwrap_or(true),
     ))
-}
-
-fn g_field<K: Field>(r: &TransferRealization<K>) -> K {
-    r.minimal.system.a.field().clone()
 }
 
 /// The `transfer_matrix` and `zpk` lists of a `tf` report (rows of entries) in the
